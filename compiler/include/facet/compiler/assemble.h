@@ -1,0 +1,36 @@
+// Assembly: template + chunks + the material's surface program -> complete GLSL per stage.
+//
+// Two flavours of the same code: GLSL ES 3.00 for OpenGL ES (what the GL runtime and phones
+// run), and GLSL ES 3.10 with Vulkan layout qualifiers, the input to glslang for SPIR-V and
+// hence MSL. Only the prologue and the interface declarations differ; the bodies are identical.
+#pragma once
+
+#include <string>
+
+#include "facet/compiler/param_layout.h"
+#include "facet/ir/emit_glsl.h"
+#include "facet/ir/module.h"
+#include "facet/permutations/variant_key.h"
+
+namespace facet::compiler {
+
+enum class Flavour { GlslEs300, Vulkan };
+
+struct StageSources {
+  std::string vertex;
+  std::string fragment;
+};
+
+struct AssemblyInput {
+  const ir::Material& material;
+  const ir::SurfaceGlsl& surface;
+  const ParamLayout& params;
+  permutations::VariantKey key;
+  std::string compilerVersion;
+};
+
+// Fails only on a defect of the compiler itself (a template including a missing chunk);
+// the message says which.
+bool assemble(const AssemblyInput& input, Flavour flavour, StageSources* out, std::string* error);
+
+}  // namespace facet::compiler

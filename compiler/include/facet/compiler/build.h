@@ -1,0 +1,39 @@
+// The compile pipeline for one material, stage by stage (DESIGN.md, "Data flow"):
+//   IR -> surface GLSL -> per variant: assemble (two flavours)
+//     GLES flavour  -> glslang check as ES 3.00                      -> package (text)
+//     Vulkan flavour -> glslang -> spirv-val -> spirv-opt -> spirv-val -> package (SPIR-V)
+//                                                      \-> SPIRV-Cross -> package (MSL)
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/ir/module.h"
+#include "facet/package.h"
+#include "facet/permutations/variant_key.h"
+
+namespace facet::compiler {
+
+// "facet-matc <version>"; recorded in every package.
+const std::string& compilerVersion();
+
+struct GeneratedFile {
+  std::string name;  // e.g. "brass.high.dir1.frag.es300.glsl"
+  std::string text;
+};
+
+struct BuildResult {
+  package::Package package;
+  std::vector<GeneratedFile> sources;  // every generated source, for `matc compile --emit-source`
+};
+
+struct BuildOptions {
+  std::vector<permutations::Tier> tiers = permutations::supportedTiers();
+};
+
+// Builds every variant. Returns nullopt with *error set when a backend rejects generated code
+// (a compiler defect: the material itself was already checked).
+std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, std::string* error);
+
+}  // namespace facet::compiler

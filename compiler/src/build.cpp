@@ -1,0 +1,137 @@
+#include "facet/compiler/build.h"
+
+#include <cstring>
+
+#include "facet/compiler/assemble.h"
+#include "facet/compiler/glslang_backend.h"
+#include "facet/compiler/msl_backend.h"
+#include "facet/compiler/param_layout.h"
+#include "facet/compiler/spirv_tools_backend.h"
+#include "facet/ir/emit_glsl.h"
+
+namespace facet::compiler {
+namespace {
+
+std::vector<uint8_t> bytesOf(const std::string& text) { return {text.begin(), text.end()}; }
+
+std::vector<uint8_t> bytesOf(const std::vector<uint32_t>& words) {
+  std::vector<uint8_t> bytes(words.size() * 4);
+  std::memcpy(bytes.data(), words.data(), bytes.size());  // SPIR-V words are stored little-endian
+  return bytes;
+}
+
+package::ParamType packageType(const ir::Param& p) {
+  if (p.isColor) return package::ParamType::Color;
+  switch (p.type) {
+    case ir::Type::Float: return package::ParamType::Float;
+    case ir::Type::Vec2: return package::ParamType::Vec2;
+    case ir::Type::Vec3: return package::ParamType::Vec3;
+    case ir::Type::Vec4: return package::ParamType::Vec4;
+    case ir::Type::Int: return package::ParamType::Int;
+    case ir::Type::Bool: return package::ParamType::Bool;
+  }
+  return package::ParamType::Float;
+}
+
+package::MaterialInfo materialInfo(const ir::Material& m, const ParamLayout& layout) {
+  package::MaterialInfo info;
+  info.name = m.name;
+  info.shading = m.shading;
+  info.blending = m.blending;
+  info.paramBlockSize = layout.blockSize;
+  for (size_t i = 0; i < m.params.size(); ++i) {
+    const ir::Param& p = m.params[i];
+    package::Param out;
+    out.name = p.name;
+    out.type = packageType(p);
+    out.defaultValue = p.defaultValue;
+    out.rangeMin = p.rangeMin;
+    out.rangeMax = p.rangeMax;
+    out.offset = layout.slots[i].offset;
+    out.size = layout.slots[i].size;
+    info.params.push_back(std::move(out));
+  }
+  return info;
+}
+
+// One stage's SPIR-V: validate what glslang produced, optimize, validate again.
+bool finishSpirv(std::vector<uint32_t>* words, const char* stage, std::string* error) {
+  std::string log;
+  if (!validateSpirv(*words, &log)) {
+    *error = std::string("spirv-val rejected the ") + stage + " stage from glslang:\n" + log;
+    return false;
+  }
+  if (!optimizeSpirv(words, &log)) {
+    *error = std::string("spirv-opt failed on the ") + stage + " stage:\n" + log;
+    return false;
+  }
+  if (!validateSpirv(*words, &log)) {
+    *error = std::string("spirv-val rejected the optimized ") + stage + " stage:\n" + log;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+const std::string& compilerVersion() {
+  static const std::string version = std::string("facet-matc ") + FACET_VERSION;
+  return version;
+}
+
+std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, std::string* error) {
+  BuildResult result;
+  ParamLayout layout = layoutParams(material.params);
+  ir::SurfaceGlsl surface = ir::emitSurface(material);
+  result.package.compilerVersion = compilerVersion();
+  result.package.material = materialInfo(material, layout);
+
+  permutations::MaterialNeeds needs;
+  needs.lit = material.shading == "lit";
+  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers)) {
+    const std::string keyText = key.toString();
+    AssemblyInput input{material, surface, layout, key, compilerVersion()};
+    StageSources es, vk;
+    if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return std::nullopt;
+    const std::string stem = material.name + "." + keyText;
+    result.sources.push_back({stem + ".vert.es300.glsl", es.vertex});
+    result.sources.push_back({stem + ".frag.es300.glsl", es.fragment});
+    result.sources.push_back({stem + ".vert.vulkan.glsl", vk.vertex});
+    result.sources.push_back({stem + ".frag.vulkan.glsl", vk.fragment});
+
+    std::string log;
+    if (!checkGlslEs300(es, &log)) {
+      *error = "internal error: generated GLSL ES 3.00 for variant " + keyText + " does not compile:\n" + log;
+      return std::nullopt;
+    }
+    SpirvStages spirv;
+    if (!compileToSpirv(vk, &spirv, &log)) {
+      *error = "internal error: glslang could not compile variant " + keyText + " to SPIR-V:\n" + log;
+      return std::nullopt;
+    }
+    if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return std::nullopt;
+    std::string mslVertex, mslFragment;
+    if (!spirvToMsl(spirv.vertex, &mslVertex, error) || !spirvToMsl(spirv.fragment, &mslFragment, error)) return std::nullopt;
+    result.sources.push_back({stem + ".vert.spvasm", disassembleSpirv(spirv.vertex)});
+    result.sources.push_back({stem + ".frag.spvasm", disassembleSpirv(spirv.fragment)});
+    result.sources.push_back({stem + ".vert.metal", mslVertex});
+    result.sources.push_back({stem + ".frag.metal", mslFragment});
+
+    using package::Stage;
+    using package::Target;
+    package::Variant variant;
+    variant.key = keyText;
+    variant.shaders = {
+        {Stage::Vertex, Target::GlslEs300, bytesOf(es.vertex)},
+        {Stage::Fragment, Target::GlslEs300, bytesOf(es.fragment)},
+        {Stage::Vertex, Target::Spirv, bytesOf(spirv.vertex)},
+        {Stage::Fragment, Target::Spirv, bytesOf(spirv.fragment)},
+        {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
+        {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
+    };
+    result.package.variants.push_back(std::move(variant));
+  }
+  return result;
+}
+
+}  // namespace facet::compiler

@@ -1,0 +1,110 @@
+// The typed IR of a material: parameters, and the surface program as a value graph (a DAG in
+// SSA form: every value is defined once, by an operation on earlier values).
+//
+// Values are interned on creation: building the same operation on the same operands twice
+// returns the first value, so common subexpressions are shared by construction.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/ir/diagnostics.h"
+#include "facet/ir/types.h"
+
+namespace facet::ir {
+
+using ValueId = uint32_t;
+
+enum class Op {
+  Constant,   // constant[0..n)
+  Param,      // material parameter `name`
+  Attribute,  // interpolated vertex attribute `name` (see attributes below)
+  Swizzle,    // name = component letters, args = {vector}
+  Construct,  // vecN(args...) / float(x)
+  Neg, Not,
+  Add, Sub, Mul, Div,
+  Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual,
+  And, Or,
+  Select,     // args = {condition, ifTrue, ifFalse}
+  Builtin,    // name = GLSL built-in function
+};
+
+struct Value {
+  Op op = Op::Constant;
+  Type type = Type::Float;
+  std::vector<ValueId> args;
+  std::array<double, 4> constant{};
+  std::string name;
+  bool operator==(const Value&) const = default;
+};
+
+// Surface attributes a material may read, and the GLSL the templates provide for each.
+struct AttributeInfo {
+  const char* name;      // as written after `vertex.`
+  Type type;
+  const char* glsl;      // expression in the fragment stage
+  bool highp;            // positions and UVs need highp (DESIGN: precision policy)
+};
+const std::vector<AttributeInfo>& attributes();
+const AttributeInfo* findAttribute(std::string_view name);
+
+// Surface outputs, their types and the values they take when the program does not write them.
+struct OutputInfo {
+  const char* name;
+  Type type;
+  std::array<double, 4> defaultValue;
+};
+const std::vector<OutputInfo>& outputs();
+const OutputInfo* findOutput(std::string_view name);
+
+struct Param {
+  std::string name;
+  Type type = Type::Float;
+  bool isColor = false;              // authored in sRGB; defaultValue holds the linear value
+  std::vector<double> defaultValue;  // componentCount(type) values
+  std::optional<double> rangeMin, rangeMax;
+  SourceLoc loc;
+};
+
+class Module {
+ public:
+  // Adds a value, or returns the existing identical one.
+  ValueId add(Value v);
+  ValueId constant(Type t, std::array<double, 4> c);
+
+  const Value& value(ValueId id) const { return values_[id]; }
+  size_t size() const { return values_.size(); }
+
+  // A readable name for a value, from the `let` that bound it (first binding wins).
+  void nameValue(ValueId id, const std::string& name) { names_.emplace(id, name); }
+  const std::string* nameOf(ValueId id) const {
+    auto it = names_.find(id);
+    return it == names_.end() ? nullptr : &it->second;
+  }
+
+  std::map<std::string, ValueId> outputs;  // outputs the surface program writes
+
+ private:
+  struct Hash {
+    size_t operator()(const Value& v) const;
+  };
+  std::vector<Value> values_;
+  std::unordered_map<Value, ValueId, Hash> interned_;
+  std::map<ValueId, std::string> names_;
+};
+
+// A checked material: what every later stage reads.
+struct Material {
+  std::string name;
+  std::string shading;   // "lit" | "unlit"
+  std::string blending;  // "opaque"
+  std::vector<Param> params;
+  Module surface;
+};
+
+}  // namespace facet::ir

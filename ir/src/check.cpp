@@ -1,0 +1,555 @@
+#include "facet/ir/check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "builtins.h"
+#include "facet/ir/parser.h"
+
+namespace facet::ir {
+
+double srgbToLinear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+namespace {
+
+using ast::Expr;
+
+class Checker {
+ public:
+  explicit Checker(Diagnostics& diags) : diags_(diags) {}
+
+  std::optional<Material> run(const ast::Material& src) {
+    material_.name = src.name;
+    checkHeader(src);
+    for (const ast::ParamDecl& p : src.params) checkParam(p);
+    checkSurface(src);
+    for (const Param& p : material_.params)
+      if (!usedParams_.count(p.name))
+        diags_.warning(p.loc, "parameter '" + p.name + "' is never used", "unused-param");
+    if (diags_.hasErrors()) return std::nullopt;
+    return std::move(material_);
+  }
+
+ private:
+  using Result = std::optional<ValueId>;
+
+  void error(SourceLoc loc, std::string message, const char* code = "type") { diags_.error(loc, std::move(message), code); }
+  Type typeOf(ValueId id) const { return module().value(id).type; }
+  Module& module() { return material_.surface; }
+  const Module& module() const { return material_.surface; }
+
+  static std::string suggestion(const std::string& best) { return best.empty() ? "" : "; did you mean '" + best + "'?"; }
+
+  // --- header and parameters ---
+
+  void checkHeader(const ast::Material& src) {
+    static const std::vector<std::string> shadings = {"lit", "unlit"};
+    static const std::vector<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
+    material_.shading = src.shading;
+    material_.blending = src.blending;
+    if (std::find(shadings.begin(), shadings.end(), src.shading) == shadings.end())
+      error(src.shadingLoc, "unknown shading model '" + src.shading + "' (lit or unlit)" +
+                                suggestion(closestMatch(src.shading, shadings)), "unknown-name");
+    if (std::find(blendings.begin(), blendings.end(), src.blending) == blendings.end())
+      error(src.blendingLoc, "unknown blending mode '" + src.blending + "'" + suggestion(closestMatch(src.blending, blendings)),
+            "unknown-name");
+    else if (src.blending != "opaque")
+      error(src.blendingLoc, "blending '" + src.blending + "' is not supported by this compiler version (only opaque)",
+            "unsupported");
+  }
+
+  // Evaluates an expression that must be a compile-time constant (defaults, range bounds).
+  std::optional<Value> constantOf(const Expr& e, const char* what) {
+    constantOnly_ = true;
+    Result r = expr(e);
+    constantOnly_ = false;
+    if (!r) return std::nullopt;
+    const Value& v = module().value(*r);
+    if (v.op != Op::Constant) {
+      error(e.loc, std::string(what) + " must be a constant expression", "constant");
+      return std::nullopt;
+    }
+    for (int i = 0; i < componentCount(v.type); ++i) {
+      if (!std::isfinite(v.constant[size_t(i)])) {
+        error(e.loc, std::string(what) + " is not a finite number", "constant");
+        return std::nullopt;
+      }
+    }
+    return v;
+  }
+
+  void checkParam(const ast::ParamDecl& decl) {
+    for (const Param& p : material_.params) {
+      if (p.name == decl.name) {
+        error(decl.loc, "parameter '" + decl.name + "' is already declared at line " + std::to_string(p.loc.line),
+              "duplicate");
+        return;
+      }
+    }
+    auto parsed = parseTypeName(decl.typeName);
+    if (!parsed) {
+      static const std::vector<std::string> types = {"float", "vec2", "vec3", "vec4", "int", "bool", "color"};
+      error(decl.typeLoc, "unknown parameter type '" + decl.typeName + "'" + suggestion(closestMatch(decl.typeName, types)),
+            "unknown-name");
+      return;
+    }
+    Param p;
+    p.name = decl.name;
+    p.type = parsed->type;
+    p.isColor = parsed->isColor;
+    p.loc = decl.loc;
+    auto def = constantOf(*decl.defaultValue, "a default value");
+    if (!def) return;
+    bool integralFloat = def->type == Type::Float && std::floor(def->constant[0]) == def->constant[0];
+    if (def->type != p.type && !(p.type == Type::Int && integralFloat)) {
+      error(decl.defaultValue->loc, "default value is " + std::string(typeName(def->type)) + " but parameter '" + p.name +
+                                        "' is " + decl.typeName, "type");
+      return;
+    }
+    for (int i = 0; i < componentCount(p.type); ++i) p.defaultValue.push_back(def->constant[size_t(i)]);
+
+    if (decl.rangeMin) {
+      auto lo = constantOf(*decl.rangeMin, "a range bound");
+      auto hi = constantOf(*decl.rangeMax, "a range bound");
+      if (!lo || !hi) return;
+      if (p.type == Type::Bool || lo->type != Type::Float || hi->type != Type::Float) {
+        error(decl.rangeMin->loc, "a range is two numbers and applies to numeric parameters", "type");
+        return;
+      }
+      p.rangeMin = lo->constant[0];
+      p.rangeMax = hi->constant[0];
+      if (*p.rangeMin > *p.rangeMax) {
+        error(decl.rangeMin->loc, "range is empty: minimum is greater than maximum", "range");
+        return;
+      }
+      for (double c : p.defaultValue) {
+        if (c < *p.rangeMin || c > *p.rangeMax) {
+          error(decl.defaultValue->loc, "default value " + formatNumber(c) + " is outside the declared range [" +
+                                            formatNumber(*p.rangeMin) + ", " + formatNumber(*p.rangeMax) + "]", "range");
+          return;
+        }
+      }
+    }
+    if (p.isColor) {
+      for (double& c : p.defaultValue) {
+        if (c < 0.0 || c > 1.0) {
+          error(decl.defaultValue->loc, "colour components are sRGB values in [0, 1]", "range");
+          return;
+        }
+        c = srgbToLinear(c);
+      }
+    }
+    material_.params.push_back(std::move(p));
+  }
+
+  static std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+  }
+
+  // --- surface program ---
+
+  void checkSurface(const ast::Material& src) {
+    std::map<std::string, SourceLoc> letsAhead;
+    for (const ast::Statement& s : src.surface)
+      if (s.isLet) letsAhead.emplace(s.name, s.loc);
+
+    std::map<std::string, SourceLoc> written;
+    for (const ast::Statement& s : src.surface) {
+      letsAhead_ = &letsAhead;
+      Result value = expr(*s.value);
+      if (s.isLet) {
+        if (lets_.count(s.name)) {
+          error(s.loc, "'" + s.name + "' is already defined at line " + std::to_string(lets_[s.name].loc.line), "duplicate");
+        } else if (findOutput(s.name)) {
+          error(s.loc, "'" + s.name + "' is a surface output; choose another name for the let", "duplicate");
+        } else if (s.name == "params" || s.name == "vertex") {
+          error(s.loc, "'" + s.name + "' is reserved", "duplicate");
+        } else if (value) {
+          lets_[s.name] = {*value, s.loc};
+          module().nameValue(*value, s.name);
+        }
+        continue;
+      }
+      const OutputInfo* out = findOutput(s.name);
+      if (!out) {
+        std::vector<std::string> names;
+        for (const OutputInfo& o : outputs()) names.push_back(o.name);
+        std::string hint = suggestion(closestMatch(s.name, names));
+        if (hint.empty() && lets_.count(s.name)) hint = "; use 'let' only once per name";
+        error(s.loc, "unknown surface output '" + s.name + "'" + hint, "unknown-name");
+        continue;
+      }
+      if (auto [it, fresh] = written.emplace(s.name, s.loc); !fresh) {
+        error(s.loc, "output '" + s.name + "' is already written at line " + std::to_string(it->second.line), "duplicate");
+        continue;
+      }
+      if (!value) continue;
+      if (typeOf(*value) != out->type) {
+        error(s.value->loc, "output '" + s.name + "' is " + typeName(out->type) + " but the value is " +
+                                typeName(typeOf(*value)), "type");
+        continue;
+      }
+      module().outputs[s.name] = *value;
+    }
+    letsAhead_ = nullptr;
+  }
+
+  // --- expressions ---
+
+  Result expr(const Expr& e) {
+    switch (e.kind) {
+      case Expr::Kind::Number: return module().constant(Type::Float, {e.number});
+      case Expr::Kind::Bool: return module().constant(Type::Bool, {e.boolean ? 1.0 : 0.0});
+      case Expr::Kind::Name: return name(e);
+      case Expr::Kind::Member: return member(e);
+      case Expr::Kind::Call: return call(e);
+      case Expr::Kind::Unary: return unary(e);
+      case Expr::Kind::Binary: return binary(e);
+      case Expr::Kind::Ternary: return ternary(e);
+    }
+    return std::nullopt;
+  }
+
+  Result name(const Expr& e) {
+    if (e.name == "params" || e.name == "vertex") {
+      error(e.loc, "'" + e.name + "' is a namespace; write " + e.name + ".<name>", "unknown-name");
+      return std::nullopt;
+    }
+    if (auto it = lets_.find(e.name); it != lets_.end()) {
+      if (constantOnly_) {
+        error(e.loc, "'" + e.name + "' cannot be used in a constant expression", "constant");
+        return std::nullopt;
+      }
+      return it->second.value;
+    }
+    if (letsAhead_) {
+      if (auto it = letsAhead_->find(e.name); it != letsAhead_->end()) {
+        error(e.loc, "'" + e.name + "' is used before its definition at line " + std::to_string(it->second.line),
+              "use-before-def");
+        return std::nullopt;
+      }
+    }
+    std::string hint;
+    for (const Param& p : material_.params)
+      if (p.name == e.name) hint = "; did you mean 'params." + p.name + "'?";
+    if (hint.empty()) {
+      std::vector<std::string> names;
+      for (const auto& [n, l] : lets_) names.push_back(n);
+      hint = suggestion(closestMatch(e.name, names));
+    }
+    error(e.loc, "unknown name '" + e.name + "'" + hint, "unknown-name");
+    return std::nullopt;
+  }
+
+  Result member(const Expr& e) {
+    const Expr& object = *e.args[0];
+    if (object.kind == Expr::Kind::Name && object.name == "params") return paramRead(e);
+    if (object.kind == Expr::Kind::Name && object.name == "vertex") return attributeRead(e);
+    Result base = expr(object);
+    if (!base) return std::nullopt;
+    return swizzle(e, *base);
+  }
+
+  Result paramRead(const Expr& e) {
+    if (constantOnly_) {
+      error(e.loc, "parameters cannot be used in a constant expression", "constant");
+      return std::nullopt;
+    }
+    for (const Param& p : material_.params) {
+      if (p.name == e.name) {
+        usedParams_.insert(p.name);
+        Value v;
+        v.op = Op::Param;
+        v.type = p.type;
+        v.name = p.name;
+        return module().add(std::move(v));
+      }
+    }
+    std::vector<std::string> names;
+    for (const Param& p : material_.params) names.push_back(p.name);
+    error(e.loc, "unknown parameter '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
+    return std::nullopt;
+  }
+
+  Result attributeRead(const Expr& e) {
+    if (constantOnly_) {
+      error(e.loc, "vertex attributes cannot be used in a constant expression", "constant");
+      return std::nullopt;
+    }
+    const AttributeInfo* a = findAttribute(e.name);
+    if (!a) {
+      std::vector<std::string> names;
+      for (const AttributeInfo& i : attributes()) names.push_back(i.name);
+      error(e.loc, "unknown vertex attribute '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
+      return std::nullopt;
+    }
+    Value v;
+    v.op = Op::Attribute;
+    v.type = a->type;
+    v.name = a->name;
+    return module().add(std::move(v));
+  }
+
+  Result swizzle(const Expr& e, ValueId base) {
+    Type t = typeOf(base);
+    int n = componentCount(t);
+    if (!isFloatType(t) || t == Type::Float) {
+      error(e.loc, "'." + e.name + "' needs a vector, but the value is " + typeName(t), "type");
+      return std::nullopt;
+    }
+    static const std::string xyzw = "xyzw", rgba = "rgba";
+    const std::string& set = xyzw.find(e.name[0]) != std::string::npos ? xyzw : rgba;
+    if (e.name.size() > 4) {
+      error(e.loc, "a swizzle has at most 4 components", "type");
+      return std::nullopt;
+    }
+    std::string normalized;
+    for (char c : e.name) {
+      size_t i = set.find(c);
+      if (i == std::string::npos || int(i) >= n) {
+        error(e.loc, "'" + e.name + "' is not a swizzle of a " + typeName(t), "type");
+        return std::nullopt;
+      }
+      normalized += xyzw[i];
+    }
+    const Value& b = module().value(base);
+    if (b.op == Op::Constant) {
+      std::array<double, 4> c{};
+      for (size_t i = 0; i < normalized.size(); ++i) c[i] = b.constant[xyzw.find(normalized[i])];
+      return module().constant(floatVector(int(normalized.size())), c);
+    }
+    Value v;
+    v.op = Op::Swizzle;
+    v.type = floatVector(int(normalized.size()));
+    v.name = normalized;
+    v.args = {base};
+    return module().add(std::move(v));
+  }
+
+  // Checks each argument; all are reported even if an early one fails.
+  std::optional<std::vector<ValueId>> arguments(const Expr& e) {
+    std::vector<ValueId> out;
+    bool ok = true;
+    for (const auto& a : e.args) {
+      Result r = expr(*a);
+      if (r) out.push_back(*r);
+      ok = ok && r.has_value();
+    }
+    if (!ok) return std::nullopt;
+    return out;
+  }
+
+  Result call(const Expr& e) {
+    auto args = arguments(e);
+    if (!args) return std::nullopt;
+    std::vector<Type> types;
+    for (ValueId a : *args) types.push_back(typeOf(a));
+
+    if (e.name == "vec2" || e.name == "vec3" || e.name == "vec4" || e.name == "float") return construct(e, *args, types);
+
+    std::string why;
+    auto b = resolveBuiltin(e.name, types, &why);
+    if (!b) {
+      if (!why.empty()) {
+        error(e.loc, why, "type");
+      } else {
+        std::vector<std::string> names = builtinNames();
+        names.insert(names.end(), {"vec2", "vec3", "vec4", "float"});
+        error(e.loc, "unknown function '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
+      }
+      return std::nullopt;
+    }
+    if (constantOnly_) {
+      error(e.loc, "function calls are not allowed in a constant expression", "constant");
+      return std::nullopt;
+    }
+    Value v;
+    v.op = Op::Builtin;
+    v.type = b->result;
+    v.name = b->glsl;
+    v.args = *args;
+    return module().add(std::move(v));
+  }
+
+  Result construct(const Expr& e, const std::vector<ValueId>& args, const std::vector<Type>& types) {
+    int n = e.name == "float" ? 1 : e.name[3] - '0';
+    Type result = floatVector(n);
+    if (n == 1) {
+      if (args.size() != 1 || componentCount(types[0]) != 1) {
+        error(e.loc, "'float' takes one scalar argument", "type");
+        return std::nullopt;
+      }
+      if (types[0] == Type::Float) return args[0];
+    } else {
+      int total = 0;
+      for (Type t : types) {
+        if (!isFloatType(t)) {
+          error(e.loc, "'" + e.name + "' takes float or vector arguments, not " + typeName(t) + "; convert with float()",
+                "type");
+          return std::nullopt;
+        }
+        total += componentCount(t);
+      }
+      bool splat = args.size() == 1 && types[0] == Type::Float;
+      if (!splat && total != n) {
+        error(e.loc, "'" + e.name + "' needs " + std::to_string(n) + " components, but the arguments have " +
+                         std::to_string(total), "type");
+        return std::nullopt;
+      }
+    }
+    // Fold a constructor of constants into one constant.
+    bool allConstant = true;
+    for (ValueId a : args) allConstant = allConstant && module().value(a).op == Op::Constant;
+    if (allConstant) {
+      std::array<double, 4> c{};
+      size_t k = 0;
+      for (ValueId a : args) {
+        const Value& v = module().value(a);
+        for (int i = 0; i < componentCount(v.type) && k < 4; ++i) c[k++] = v.constant[size_t(i)];
+      }
+      if (args.size() == 1 && n > 1) c = {c[0], c[0], c[0], c[0]};
+      return module().constant(result, c);
+    }
+    Value v;
+    v.op = Op::Construct;
+    v.type = result;
+    v.args = args;
+    return module().add(std::move(v));
+  }
+
+  Result unary(const Expr& e) {
+    Result x = expr(*e.args[0]);
+    if (!x) return std::nullopt;
+    Type t = typeOf(*x);
+    const Value& xv = module().value(*x);
+    if (e.op == Tok::Minus) {
+      if (t == Type::Bool) {
+        error(e.loc, "'-' needs a number, but the operand is bool", "type");
+        return std::nullopt;
+      }
+      if (xv.op == Op::Constant) {
+        std::array<double, 4> c = xv.constant;
+        for (double& d : c) d = -d;
+        return module().constant(t, c);
+      }
+      return module().add(Value{Op::Neg, t, {*x}, {}, ""});
+    }
+    if (t != Type::Bool) {
+      error(e.loc, "'!' needs a bool, but the operand is " + std::string(typeName(t)), "type");
+      return std::nullopt;
+    }
+    return module().add(Value{Op::Not, Type::Bool, {*x}, {}, ""});
+  }
+
+  static Op binaryOp(Tok t) {
+    switch (t) {
+      case Tok::Plus: return Op::Add;
+      case Tok::Minus: return Op::Sub;
+      case Tok::Star: return Op::Mul;
+      case Tok::Slash: return Op::Div;
+      case Tok::Less: return Op::Less;
+      case Tok::LessEqual: return Op::LessEqual;
+      case Tok::Greater: return Op::Greater;
+      case Tok::GreaterEqual: return Op::GreaterEqual;
+      case Tok::EqualEqual: return Op::Equal;
+      case Tok::NotEqual: return Op::NotEqual;
+      case Tok::AndAnd: return Op::And;
+      default: return Op::Or;
+    }
+  }
+
+  Result binary(const Expr& e) {
+    Result a = expr(*e.args[0]);
+    Result b = expr(*e.args[1]);
+    if (!a || !b) return std::nullopt;
+    Type ta = typeOf(*a), tb = typeOf(*b);
+    Op op = binaryOp(e.op);
+    auto mismatch = [&] {
+      error(e.loc, std::string("operands of ") + describe(e.op) + " are " + typeName(ta) + " and " + typeName(tb), "type");
+      return std::nullopt;
+    };
+    if (op == Op::And || op == Op::Or) {
+      if (ta != Type::Bool || tb != Type::Bool) return mismatch();
+      return module().add(Value{op, Type::Bool, {*a, *b}, {}, ""});
+    }
+    if (op >= Op::Less && op <= Op::NotEqual) {
+      bool scalar = componentCount(ta) == 1 && ta == tb;
+      bool ordered = op <= Op::GreaterEqual;
+      if (!scalar || (ordered && ta == Type::Bool)) return mismatch();
+      return module().add(Value{op, Type::Bool, {*a, *b}, {}, ""});
+    }
+    // Arithmetic: same type, or a float scalar with a float vector (GLSL broadcasting).
+    Type result;
+    if (ta == tb && ta != Type::Bool) result = ta;
+    else if (ta == Type::Float && isFloatType(tb)) result = tb;
+    else if (tb == Type::Float && isFloatType(ta)) result = ta;
+    else return mismatch();
+    if (auto folded = fold(op, result, *a, *b)) return folded;
+    return module().add(Value{op, result, {*a, *b}, {}, ""});
+  }
+
+  // Constant folding of float arithmetic; results that are not finite stay unfolded (the
+  // division then happens on the GPU, where the author wrote it).
+  Result fold(Op op, Type result, ValueId a, ValueId b) {
+    const Value& va = module().value(a);
+    const Value& vb = module().value(b);
+    if (va.op != Op::Constant || vb.op != Op::Constant || !isFloatType(result)) return std::nullopt;
+    std::array<double, 4> c{};
+    for (int i = 0; i < componentCount(result); ++i) {
+      double x = va.constant[componentCount(va.type) == 1 ? 0 : size_t(i)];
+      double y = vb.constant[componentCount(vb.type) == 1 ? 0 : size_t(i)];
+      double r = op == Op::Add ? x + y : op == Op::Sub ? x - y : op == Op::Mul ? x * y : x / y;
+      if (!std::isfinite(r)) return std::nullopt;
+      c[size_t(i)] = r;
+    }
+    return module().constant(result, c);
+  }
+
+  Result ternary(const Expr& e) {
+    Result c = expr(*e.args[0]);
+    Result a = expr(*e.args[1]);
+    Result b = expr(*e.args[2]);
+    if (!c || !a || !b) return std::nullopt;
+    if (typeOf(*c) != Type::Bool) {
+      error(e.args[0]->loc, "the condition is " + std::string(typeName(typeOf(*c))) + ", not bool", "type");
+      return std::nullopt;
+    }
+    if (typeOf(*a) != typeOf(*b)) {
+      error(e.loc, std::string("the branches are ") + typeName(typeOf(*a)) + " and " + typeName(typeOf(*b)), "type");
+      return std::nullopt;
+    }
+    const Value& cv = module().value(*c);
+    if (cv.op == Op::Constant) return cv.constant[0] != 0.0 ? *a : *b;
+    return module().add(Value{Op::Select, typeOf(*a), {*c, *a, *b}, {}, ""});
+  }
+
+  struct Let {
+    ValueId value;
+    SourceLoc loc;
+  };
+
+  Diagnostics& diags_;
+  Material material_;
+  std::map<std::string, Let> lets_;
+  const std::map<std::string, SourceLoc>* letsAhead_ = nullptr;
+  std::set<std::string> usedParams_;
+  bool constantOnly_ = false;
+};
+
+}  // namespace
+
+std::optional<Material> check(const ast::Material& material, Diagnostics& diags) { return Checker(diags).run(material); }
+
+std::optional<Material> compileSource(const SourceFile& file, Diagnostics& diags) {
+  auto parsed = parse(file, diags);
+  if (!parsed) return std::nullopt;
+  return check(*parsed, diags);
+}
+
+}  // namespace facet::ir

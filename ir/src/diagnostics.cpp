@@ -1,0 +1,89 @@
+#include "facet/ir/diagnostics.h"
+
+#include <algorithm>
+
+namespace facet::ir {
+
+void Diagnostics::error(SourceLoc loc, std::string message, std::string code) {
+  list_.push_back({Severity::Error, loc, std::move(message), std::move(code)});
+  ++errorCount_;
+}
+
+void Diagnostics::warning(SourceLoc loc, std::string message, std::string code) {
+  list_.push_back({Severity::Warning, loc, std::move(message), std::move(code)});
+}
+
+namespace {
+
+// The text of the line holding `offset`, without its newline.
+std::string_view lineAt(std::string_view text, size_t offset) {
+  offset = std::min(offset, text.size());
+  size_t begin = offset == 0 ? std::string_view::npos : text.rfind('\n', offset - 1);
+  begin = (begin == std::string_view::npos) ? 0 : begin + 1;
+  size_t end = text.find('\n', begin);
+  if (end == std::string_view::npos) end = text.size();
+  return text.substr(begin, end - begin);
+}
+
+// Bytes that would make a terminal misbehave are shown as '?', so hostile input prints safely.
+std::string printable(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (unsigned char c : s) out += (c == '\t' || (c >= 0x20 && c != 0x7f)) ? char(c) : '?';
+  return out;
+}
+
+}  // namespace
+
+std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
+  std::string out = file.path + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
+                    ": " + (d.severity == Severity::Error ? "error" : "warning") + ": " + d.message;
+  if (!d.code.empty()) out += " [" + d.code + "]";
+  out += "\n";
+  if (d.loc.line == 0) return out;
+  std::string_view line = lineAt(file.text, d.loc.offset);
+  if (line.size() > 200) return out;  // a minified or binary "line": the position says enough
+  out += "    " + printable(line) + "\n    ";
+  for (uint32_t i = 1; i < d.loc.column && i <= line.size(); ++i) out += (line[i - 1] == '\t') ? '\t' : ' ';
+  out += '^';
+  size_t tail = std::min<size_t>(d.loc.length, line.size() + 1 - std::min<size_t>(d.loc.column, line.size() + 1));
+  for (size_t i = 1; i < tail; ++i) out += '~';
+  out += "\n";
+  return out;
+}
+
+std::string Diagnostics::format() const {
+  std::string out;
+  for (const Diagnostic& d : list_) out += formatDiagnostic(file_, d);
+  return out;
+}
+
+std::string closestMatch(std::string_view name, const std::vector<std::string>& candidates) {
+  // Optimal string alignment distance: Levenshtein plus adjacent transpositions, so "flaot" is
+  // one edit from "float". Suggest only when at most a third of the name differs.
+  auto distance = [](std::string_view a, std::string_view b) {
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      for (size_t j = 1; j <= b.size(); ++j) {
+        size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+        d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+    return d[a.size()][b.size()];
+  };
+  std::string best;
+  size_t bestDistance = name.size() / 3 + 1;
+  for (const std::string& c : candidates) {
+    size_t d = distance(name, c);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+}  // namespace facet::ir

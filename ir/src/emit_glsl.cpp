@@ -1,0 +1,143 @@
+#include "facet/ir/emit_glsl.h"
+
+#include <cstdio>
+#include <map>
+#include <vector>
+
+namespace facet::ir {
+
+namespace {
+
+std::string floatLiteral(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  std::string s = buf;
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string scalarLiteral(Type t, double v) {
+  if (t == Type::Bool) return v != 0.0 ? "true" : "false";
+  if (t == Type::Int) return std::to_string(static_cast<long long>(v));
+  return floatLiteral(v);
+}
+
+const char* infix(Op op) {
+  switch (op) {
+    case Op::Add: return " + ";
+    case Op::Sub: return " - ";
+    case Op::Mul: return " * ";
+    case Op::Div: return " / ";
+    case Op::Less: return " < ";
+    case Op::LessEqual: return " <= ";
+    case Op::Greater: return " > ";
+    case Op::GreaterEqual: return " >= ";
+    case Op::Equal: return " == ";
+    case Op::NotEqual: return " != ";
+    case Op::And: return " && ";
+    case Op::Or: return " || ";
+    default: return nullptr;
+  }
+}
+
+class Emitter {
+ public:
+  explicit Emitter(const Material& m) : m_(m), module_(m.surface) {}
+
+  SurfaceGlsl run() {
+    for (const OutputInfo& o : outputs()) {
+      auto it = module_.outputs.find(o.name);
+      if (it == module_.outputs.end()) continue;
+      std::string value = use(it->second);
+      out_.body += "    material." + std::string(o.name) + " = " + value + ";\n";
+    }
+    return std::move(out_);
+  }
+
+ private:
+  // The GLSL expression that refers to value `id`, emitting its definition first if needed.
+  std::string use(ValueId id) {
+    const Value& v = module_.value(id);
+    switch (v.op) {
+      case Op::Constant: return glslConstant(v.type, v.constant);
+      case Op::Param:
+        out_.params.insert(v.name);
+        return "params." + v.name;
+      case Op::Attribute:
+        out_.attributes.insert(v.name);
+        return findAttribute(v.name)->glsl;
+      default: break;
+    }
+    if (auto it = temps_.find(id); it != temps_.end()) return it->second;
+    std::vector<std::string> a;
+    for (ValueId arg : v.args) a.push_back(use(arg));
+    std::string rhs = define(v, a);
+    std::string name = tempName(id);
+    std::string precision = v.type == Type::Bool ? "" : (isHighp(id) ? "highp " : "mediump ");
+    out_.body += "    " + precision + glslName(v.type) + " " + name + " = " + rhs + ";\n";
+    temps_.emplace(id, name);
+    return name;
+  }
+
+  std::string define(const Value& v, const std::vector<std::string>& a) {
+    if (const char* op = infix(v.op)) return a[0] + op + a[1];
+    switch (v.op) {
+      case Op::Swizzle: return a[0] + "." + v.name;
+      case Op::Neg: return "-" + a[0];
+      case Op::Not: return "!" + a[0];
+      case Op::Select: return a[0] + " ? " + a[1] + " : " + a[2];
+      case Op::Construct: return std::string(glslName(v.type)) + "(" + join(a) + ")";
+      case Op::Builtin:
+        if (v.name == "saturate") return "clamp(" + a[0] + ", 0.0, 1.0)";
+        return v.name + "(" + join(a) + ")";
+      default: return "";
+    }
+  }
+
+  static std::string join(const std::vector<std::string>& a) {
+    std::string s;
+    for (size_t i = 0; i < a.size(); ++i) s += (i ? ", " : "") + a[i];
+    return s;
+  }
+
+  std::string tempName(ValueId id) {
+    if (const std::string* let = module_.nameOf(id)) return "m_" + *let;
+    return "t" + std::to_string(counter_++);
+  }
+
+  // highp where any input is a highp attribute (positions, UVs); mediump otherwise.
+  bool isHighp(ValueId id) {
+    if (auto it = highp_.find(id); it != highp_.end()) return it->second;
+    const Value& v = module_.value(id);
+    bool h = v.op == Op::Attribute && findAttribute(v.name)->highp;
+    for (ValueId a : v.args) h = h || isHighp(a);
+    highp_[id] = h;
+    return h;
+  }
+
+  const Material& m_;
+  const Module& module_;
+  SurfaceGlsl out_;
+  std::map<ValueId, std::string> temps_;
+  std::map<ValueId, bool> highp_;
+  int counter_ = 0;
+};
+
+}  // namespace
+
+std::string glslConstant(Type type, const std::array<double, 4>& c) {
+  int n = componentCount(type);
+  if (n == 1) {
+    std::string s = scalarLiteral(type, c[0]);
+    return c[0] < 0.0 ? "(" + s + ")" : s;
+  }
+  bool same = true;
+  for (int i = 1; i < n; ++i) same = same && c[size_t(i)] == c[0];
+  std::string s = std::string(glslName(type)) + "(";
+  for (int i = 0; i < (same ? 1 : n); ++i) s += (i ? ", " : "") + floatLiteral(c[size_t(i)]);
+  return s + ")";
+}
+
+SurfaceGlsl emitSurface(const Material& material) { return Emitter(material).run(); }
+
+}  // namespace facet::ir

@@ -1,0 +1,76 @@
+#include "facet/ir/module.h"
+
+#include <cstring>
+#include <functional>
+
+namespace facet::ir {
+
+const std::vector<AttributeInfo>& attributes() {
+  static const std::vector<AttributeInfo> list = {
+      {"worldPosition", Type::Vec3, "v_worldPosition", true},
+      {"normal", Type::Vec3, "shading_normal", false},
+      {"uv0", Type::Vec2, "v_uv0", true},
+  };
+  return list;
+}
+
+const AttributeInfo* findAttribute(std::string_view name) {
+  for (const AttributeInfo& a : attributes())
+    if (name == a.name) return &a;
+  return nullptr;
+}
+
+const std::vector<OutputInfo>& outputs() {
+  // Defaults follow Filament's material model: white, dielectric, fully rough, 4 % reflectance.
+  static const std::vector<OutputInfo> list = {
+      {"baseColor", Type::Vec3, {1, 1, 1, 0}},
+      {"alpha", Type::Float, {1, 0, 0, 0}},
+      {"metallic", Type::Float, {0, 0, 0, 0}},
+      {"roughness", Type::Float, {1, 0, 0, 0}},
+      {"reflectance", Type::Float, {0.5, 0, 0, 0}},
+      {"emissive", Type::Vec3, {0, 0, 0, 0}},
+      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}},
+  };
+  return list;
+}
+
+const OutputInfo* findOutput(std::string_view name) {
+  for (const OutputInfo& o : outputs())
+    if (name == o.name) return &o;
+  return nullptr;
+}
+
+size_t Module::Hash::operator()(const Value& v) const {
+  size_t h = std::hash<int>()(int(v.op)) * 31 + std::hash<int>()(int(v.type));
+  for (ValueId a : v.args) h = h * 131 + a;
+  for (double c : v.constant) {
+    uint64_t bits;
+    std::memcpy(&bits, &c, sizeof bits);
+    h = h * 131 + std::hash<uint64_t>()(bits);
+  }
+  return h * 31 + std::hash<std::string>()(v.name);
+}
+
+ValueId Module::add(Value v) {
+  if (v.op == Op::Constant) {
+    for (double& c : v.constant)
+      if (c == 0.0) c = 0.0;  // -0.0 and 0.0 are one constant
+  }
+  auto it = interned_.find(v);
+  if (it != interned_.end()) return it->second;
+  ValueId id = ValueId(values_.size());
+  values_.push_back(v);
+  interned_.emplace(std::move(v), id);
+  return id;
+}
+
+ValueId Module::constant(Type t, std::array<double, 4> c) {
+  Value v;
+  v.op = Op::Constant;
+  v.type = t;
+  for (int i = componentCount(t); i < 4; ++i) c[size_t(i)] = 0.0;
+  v.constant = c;
+  return add(std::move(v));
+}
+
+}  // namespace facet::ir

@@ -1,0 +1,27 @@
+// matc's commands. Each returns the process exit code: 0 success, 1 input errors, 2 usage errors.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace facet::matc {
+
+struct CompileArgs {
+  std::string input;
+  std::string output;      // default: input with .matpkg
+  std::string emitSource;  // folder for every generated source, or ""
+};
+int compileCommand(const CompileArgs& args);
+
+struct InfoArgs {
+  std::string input;
+  std::string variant;  // with stage + target: print that shader
+  std::string stage;
+  std::string target;
+};
+int infoCommand(const InfoArgs& args);
+
+// Prints "matc: error: <message>" to stderr.
+void printError(const std::string& message);
+
+}  // namespace facet::matc

@@ -1,0 +1,89 @@
+#include <cstdio>
+#include <cstring>
+
+#include "commands.h"
+#include "facet/compiler/spirv_tools_backend.h"
+#include "facet/package.h"
+
+namespace facet::matc {
+namespace {
+
+std::string formatValue(const std::vector<double>& v) {
+  std::string s;
+  char buf[32];
+  for (size_t i = 0; i < v.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%s%g", i ? ", " : "", v[i]);
+    s += buf;
+  }
+  return v.size() > 1 ? "(" + s + ")" : s;
+}
+
+void printSummary(const package::ReadResult& r) {
+  const package::Package& pkg = *r.package;
+  const package::MaterialInfo& m = pkg.material;
+  std::printf("material   %s\n", m.name.c_str());
+  std::printf("shading    %s\nblending   %s\n", m.shading.c_str(), m.blending.c_str());
+  std::printf("compiler   %s\n", pkg.compilerVersion.c_str());
+  std::printf("parameters %zu (uniform block MaterialParams, %u bytes std140)\n", m.params.size(), m.paramBlockSize);
+  for (const package::Param& p : m.params) {
+    std::string range;
+    if (p.rangeMin && p.rangeMax) range = " in [" + formatValue({*p.rangeMin}) + ", " + formatValue({*p.rangeMax}) + "]";
+    std::printf("  %-16s %-6s = %s%s  @%u+%u%s\n", p.name.c_str(), package::toString(p.type),
+                formatValue(p.defaultValue).c_str(), range.c_str(), p.offset, p.size,
+                p.type == package::ParamType::Color ? "  (default shown linear)" : "");
+  }
+  std::printf("variants   %zu\n", pkg.variants.size());
+  for (size_t i = 0; i < pkg.variants.size(); ++i) {
+    const package::Variant& v = pkg.variants[i];
+    std::printf("  %s\n", v.key.c_str());
+    for (size_t j = 0; j < v.shaders.size(); ++j) {
+      const package::Shader& s = v.shaders[j];
+      const package::ShaderStats& st = r.stats[i][j];
+      std::printf("    %-8s %-11s %7llu bytes (%llu stored)\n", package::toString(s.stage), package::toString(s.target),
+                  static_cast<unsigned long long>(st.rawSize), static_cast<unsigned long long>(st.storedSize));
+    }
+  }
+}
+
+int printShader(const package::Package& pkg, const InfoArgs& args) {
+  for (const package::Variant& v : pkg.variants) {
+    if (v.key != args.variant) continue;
+    for (const package::Shader& s : v.shaders) {
+      if (args.stage != package::toString(s.stage) || args.target != package::toString(s.target)) continue;
+      if (s.target == package::Target::Spirv) {
+        std::vector<uint32_t> words(s.code.size() / 4);
+        std::memcpy(words.data(), s.code.data(), words.size() * 4);
+        std::fputs(compiler::disassembleSpirv(words).c_str(), stdout);
+      } else {
+        std::fwrite(s.code.data(), 1, s.code.size(), stdout);
+      }
+      return 0;
+    }
+    printError("variant '" + args.variant + "' has no " + args.stage + " shader for target " + args.target);
+    return 1;
+  }
+  std::string keys;
+  for (const package::Variant& v : pkg.variants) keys += (keys.empty() ? "" : ", ") + v.key;
+  printError("package has no variant '" + args.variant + "' (it has: " + keys + ")");
+  return 1;
+}
+
+}  // namespace
+
+int infoCommand(const InfoArgs& args) {
+  bool wantsShader = !args.variant.empty() || !args.stage.empty() || !args.target.empty();
+  if (wantsShader && (args.variant.empty() || args.stage.empty() || args.target.empty())) {
+    printError("to print a shader, give --variant, --stage and --target together");
+    return 2;
+  }
+  package::ReadResult r = package::readFile(args.input);
+  if (!r.package) {
+    std::fprintf(stderr, "%s: error: %s\n", args.input.c_str(), r.error.c_str());
+    return 1;
+  }
+  if (wantsShader) return printShader(*r.package, args);
+  printSummary(r);
+  return 0;
+}
+
+}  // namespace facet::matc

@@ -1,0 +1,38 @@
+// matc: the Facet material compiler's command line. Argument parsing and wiring only; the work
+// happens in the ir, compiler and package libraries.
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"matc: compiles Facet materials (.mat) into shader packages (.matpkg)"};
+  app.require_subcommand(1);
+
+  facet::matc::CompileArgs compile;
+  CLI::App* compileCmd = app.add_subcommand("compile", "compile a material into a .matpkg package");
+  compileCmd->add_option("input", compile.input, "material source (.mat)")->required();
+  compileCmd->add_option("-o,--output", compile.output, "package to write (default: <input>.matpkg)");
+  compileCmd->add_option("--emit-source", compile.emitSource, "also write every generated shader source to this folder");
+
+  facet::matc::InfoArgs info;
+  CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");
+  infoCmd->add_option("input", info.input, "package (.matpkg)")->required();
+  infoCmd->add_option("--variant", info.variant, "variant key, e.g. high.dir1 (with --stage and --target)");
+  infoCmd->add_option("--stage", info.stage, "vertex | fragment")->check(CLI::IsMember({"vertex", "fragment"}));
+  infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
+      ->check(CLI::IsMember({"glsl_es_300", "spirv", "msl"}));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
+  if (infoCmd->parsed()) return facet::matc::infoCommand(info);
+  return 2;
+}

@@ -1,0 +1,102 @@
+// The .matpkg format: what a compiled material ships to an app.
+//
+// A package holds one material: its metadata (parameters, uniform block layout) and, per
+// variant, one shader per (stage, target). matc writes it; apps read it through the runtime.
+// The byte layout is documented in docs/package-format.md.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace facet::package {
+
+inline constexpr uint32_t kFormatVersion = 1;
+
+enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
+
+enum class Target : uint8_t {
+  GlslEs300 = 0,  // GLSL ES 3.00 source for OpenGL ES 3 / WebGL 2 (text)
+  Spirv = 1,      // SPIR-V 1.0 module for Vulkan (little-endian words)
+  Msl = 2,        // Metal Shading Language source (text)
+};
+
+const char* toString(Stage);
+const char* toString(Target);
+
+enum class ParamType : uint8_t { Float, Vec2, Vec3, Vec4, Int, Bool, Color };
+const char* toString(ParamType);
+std::optional<ParamType> paramTypeFromString(std::string_view);
+
+// One material parameter and where it lives in the std140 block "MaterialParams".
+struct Param {
+  std::string name;
+  ParamType type = ParamType::Float;
+  std::vector<double> defaultValue;   // component count of the type; colours stored linear
+  std::optional<double> rangeMin;     // declared range `in [min, max]`, if any
+  std::optional<double> rangeMax;
+  uint32_t offset = 0;                // byte offset in the block
+  uint32_t size = 0;                  // byte size in the block
+  bool operator==(const Param&) const = default;
+};
+
+struct MaterialInfo {
+  std::string name;
+  std::string shading;            // "lit" | "unlit"
+  std::string blending;           // "opaque" | ...
+  std::vector<Param> params;
+  uint32_t paramBlockSize = 0;    // std140 size of "MaterialParams" in bytes (0: no block)
+  bool operator==(const MaterialInfo&) const = default;
+};
+
+struct Shader {
+  Stage stage = Stage::Vertex;
+  Target target = Target::GlslEs300;
+  std::vector<uint8_t> code;      // text for GLSL/MSL, SPIR-V words as bytes
+  bool operator==(const Shader&) const = default;
+};
+
+// One permutation. `key` is the stable variant key string (see permutations/variant_key.h).
+struct Variant {
+  std::string key;
+  std::vector<Shader> shaders;
+  bool operator==(const Variant&) const = default;
+};
+
+struct Package {
+  std::string compilerVersion;
+  MaterialInfo material;
+  std::vector<Variant> variants;
+  bool operator==(const Package&) const = default;
+};
+
+// Same package and compiler version in, same bytes out.
+std::vector<uint8_t> write(const Package& pkg);
+
+// Sizes as stored, for `matc info`.
+struct ShaderStats {
+  uint64_t rawSize = 0;       // bytes of code
+  uint64_t storedSize = 0;    // bytes in the file (compressed, shared if deduplicated)
+};
+
+struct ReadResult {
+  std::optional<Package> package;   // set on success
+  std::string error;                // set on failure: what is wrong, and where (byte offset)
+  // Per variant, per shader (same order as Package::variants[i].shaders).
+  std::vector<std::vector<ShaderStats>> stats;
+};
+
+// Validates every offset, size, count, version and the checksum before use. Never crashes,
+// never allocates more than the input can justify, on any input.
+ReadResult read(std::span<const uint8_t> bytes);
+
+// Reads a whole file; on I/O failure returns a ReadResult with the error set.
+ReadResult readFile(const std::string& path);
+
+// Writes atomically (temporary file + rename), so a failed write never leaves a partial package.
+bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::string* error);
+
+}  // namespace facet::package

@@ -1,0 +1,97 @@
+// Whole-file reads and atomic writes.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+
+#ifdef _WIN32
+#include <process.h>
+#else
+#include <unistd.h>
+#endif
+
+#include "facet/package.h"
+#include "format.h"
+
+namespace facet::package {
+
+namespace {
+
+long processId() {
+#ifdef _WIN32
+  return long(_getpid());
+#else
+  return long(getpid());
+#endif
+}
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+}  // namespace
+
+ReadResult readFile(const std::string& path) {
+  ReadResult result;
+  std::error_code ec;
+  // Ask for the size first, so an oversized file is refused before anything is allocated.
+  uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) {
+    result.error = "cannot read '" + path + "': " + ec.message();
+    return result;
+  }
+  if (size > detail::kMaxFileSize) {
+    result.error = "cannot read '" + path + "': " + std::to_string(size) +
+                   " bytes is larger than the package limit of " +
+                   std::to_string(detail::kMaxFileSize) + " bytes";
+    return result;
+  }
+  File f(std::fopen(path.c_str(), "rb"));
+  if (!f) {
+    result.error = "cannot open '" + path + "': " + std::strerror(errno);
+    return result;
+  }
+  std::vector<uint8_t> bytes(size);
+  size_t got = bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), f.get());
+  // A file that changed size since file_size() is reported rather than half-read.
+  if (got != bytes.size() || std::fgetc(f.get()) != EOF) {
+    result.error = "cannot read '" + path + "': the file changed size while being read";
+    return result;
+  }
+  result = read(bytes);
+  if (!result.package) result.error = path + ": " + result.error;
+  return result;
+}
+
+bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::string* error) {
+  auto fail = [&](const std::string& message) {
+    if (error) *error = message;
+    return false;
+  };
+  // The pid keeps two matc processes writing the same package from sharing a temporary file.
+  const std::string temp = path + ".tmp." + std::to_string(processId());
+  File f(std::fopen(temp.c_str(), "wb"));
+  if (!f) return fail("cannot create '" + temp + "': " + std::strerror(errno));
+  bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f.get()) == bytes.size();
+  int writeErrno = errno;
+  // fclose flushes, so its failure is a write failure too.
+  bool closed = std::fclose(f.release()) == 0;
+  if (!written || !closed) {
+    std::string reason = std::strerror(written ? errno : writeErrno);
+    std::remove(temp.c_str());
+    return fail("cannot write '" + temp + "': " + reason);
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::remove(temp.c_str());
+    return fail("cannot rename '" + temp + "' to '" + path + "': " + ec.message());
+  }
+  return true;
+}
+
+}  // namespace facet::package

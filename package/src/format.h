@@ -1,0 +1,96 @@
+// On-disk constants and layout of a .matpkg file. docs/package-format.md is the byte-by-byte
+// description; keep the two in step.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "facet/package.h"
+
+namespace facet::package::detail {
+
+// PNG-style: the high byte catches 7-bit transfers, CR LF catches newline conversion in either
+// direction, and 0x1A stops `type` on Windows from dumping binary to the console.
+inline constexpr std::array<uint8_t, 8> kMagic = {0x89, 'F', 'P', 'K', 'G', '\r', '\n', 0x1A};
+
+// Header: magic[8], u32 format version, u32 section count, u64 file size, u64 checksum.
+inline constexpr uint64_t kHeaderSize = 32;
+inline constexpr uint64_t kVersionOffset = 8;
+inline constexpr uint64_t kSectionCountOffset = 12;
+inline constexpr uint64_t kFileSizeOffset = 16;
+inline constexpr uint64_t kChecksumOffset = 24;
+
+// TOC entry: u8[4] tag, u32 flags (0), u64 offset, u64 size.
+inline constexpr uint64_t kTocEntrySize = 24;
+inline constexpr uint64_t kSectionAlignment = 8;
+
+constexpr uint32_t fourcc(char a, char b, char c, char d) {
+  return uint32_t(uint8_t(a)) | uint32_t(uint8_t(b)) << 8 | uint32_t(uint8_t(c)) << 16 |
+         uint32_t(uint8_t(d)) << 24;
+}
+
+inline constexpr uint32_t kTagMeta = fourcc('M', 'E', 'T', 'A');       // compiler version + material
+inline constexpr uint32_t kTagVariants = fourcc('V', 'A', 'R', 'S');   // variant table
+inline constexpr uint32_t kTagBlobTable = fourcc('B', 'T', 'A', 'B');  // one entry per blob
+inline constexpr uint32_t kTagBlobData = fourcc('B', 'D', 'A', 'T');   // blob bytes, back to back
+
+// Limits the reader enforces so that a hostile file cannot make it allocate or work without
+// bound. A real package has 4 sections and a few MiB of code.
+inline constexpr uint32_t kMaxSections = 64;
+inline constexpr uint64_t kMaxBlobRawSize = 256ull << 20;
+// Caps both the sum of all blobs' raw sizes and the code materialised into Package::variants,
+// where a shared blob is copied once per shader that uses it.
+inline constexpr uint64_t kMaxTotalCodeSize = 1ull << 30;
+inline constexpr uint64_t kMaxFileSize = 1ull << 30;
+
+// Fixed so output is deterministic. 19 costs a few ms per shader at build time and is paid once;
+// every download and install benefits.
+inline constexpr int kZstdLevel = 19;
+
+enum class Codec : uint32_t { Raw = 0, Zstd = 1 };
+
+// Encoded sizes of fixed-size records, used to check counts against the bytes available.
+inline constexpr uint64_t kShaderRefSize = 8;    // u8 stage, u8 target, u16 reserved, u32 blob
+inline constexpr uint64_t kMinVariantSize = 8;   // u32 key length, u32 shader count
+inline constexpr uint64_t kMinParamSize = 16;    // u32 name length, 4 x u8, u32 offset, u32 size
+inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 reserved
+
+struct BlobEntry {
+  uint64_t contentHash = 0;  // XXH3_64bits of the raw code
+  uint64_t offset = 0;       // from the start of the BDAT section
+  uint64_t storedSize = 0;
+  uint64_t rawSize = 0;
+  Codec codec = Codec::Raw;
+};
+
+struct ShaderRef {
+  Stage stage = Stage::Vertex;
+  Target target = Target::GlslEs300;
+  uint32_t blob = 0;
+};
+
+struct VariantEntry {
+  std::string key;
+  std::vector<ShaderRef> shaders;
+};
+
+// Number of default-value components a parameter of this type carries. Color accepts both RGB
+// and RGBA (the contract says "component count of the type" without fixing it for colours).
+inline bool defaultCountMatches(ParamType type, uint64_t count) {
+  switch (type) {
+    case ParamType::Float:
+    case ParamType::Int:
+    case ParamType::Bool: return count == 1;
+    case ParamType::Vec2: return count == 2;
+    case ParamType::Vec3: return count == 3;
+    case ParamType::Vec4: return count == 4;
+    case ParamType::Color: return count == 3 || count == 4;
+  }
+  return false;
+}
+
+inline constexpr uint8_t kLastParamType = uint8_t(ParamType::Color);
+inline constexpr uint8_t kLastStage = uint8_t(Stage::Fragment);
+inline constexpr uint8_t kLastTarget = uint8_t(Target::Msl);
+
+}  // namespace facet::package::detail

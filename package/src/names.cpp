@@ -1,0 +1,44 @@
+// Names used in `matc info` output and in the compiler's parameter declarations.
+#include "facet/package.h"
+
+namespace facet::package {
+
+const char* toString(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "vertex";
+    case Stage::Fragment: return "fragment";
+  }
+  return "unknown";
+}
+
+const char* toString(Target target) {
+  switch (target) {
+    case Target::GlslEs300: return "glsl_es_300";
+    case Target::Spirv: return "spirv";
+    case Target::Msl: return "msl";
+  }
+  return "unknown";
+}
+
+const char* toString(ParamType type) {
+  switch (type) {
+    case ParamType::Float: return "float";
+    case ParamType::Vec2: return "vec2";
+    case ParamType::Vec3: return "vec3";
+    case ParamType::Vec4: return "vec4";
+    case ParamType::Int: return "int";
+    case ParamType::Bool: return "bool";
+    case ParamType::Color: return "color";
+  }
+  return "unknown";
+}
+
+std::optional<ParamType> paramTypeFromString(std::string_view name) {
+  for (ParamType t : {ParamType::Float, ParamType::Vec2, ParamType::Vec3, ParamType::Vec4,
+                      ParamType::Int, ParamType::Bool, ParamType::Color}) {
+    if (name == toString(t)) return t;
+  }
+  return std::nullopt;
+}
+
+}  // namespace facet::package

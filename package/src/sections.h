@@ -1,0 +1,26 @@
+// Encoding and decoding of each section's payload. Each pair lives in one file so the two sides
+// of the format are read side by side. Decoders report through the ByteReader's sticky error.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "byte_io.h"
+#include "format.h"
+
+namespace facet::package::detail {
+
+// META: compiler version, then the material.
+void encodeMetadata(ByteWriter& out, const std::string& compilerVersion, const MaterialInfo& material);
+void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& material);
+
+// VARS: variant keys and, per shader, which blob holds its code.
+void encodeVariantTable(ByteWriter& out, const std::vector<VariantEntry>& variants);
+void decodeVariantTable(ByteReader& in, std::vector<VariantEntry>& variants);
+
+// BTAB: one fixed-size entry per blob. `dataSize` is the size of BDAT, which the entries must
+// tile exactly.
+void encodeBlobTable(ByteWriter& out, const std::vector<BlobEntry>& blobs);
+void decodeBlobTable(ByteReader& in, uint64_t dataSize, std::vector<BlobEntry>& blobs);
+
+}  // namespace facet::package::detail

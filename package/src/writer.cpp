@@ -1,0 +1,117 @@
+// Package -> bytes. Everything here is a pure function of the Package (and the zstd version), so
+// the same input always gives the same file.
+#include <unordered_map>
+
+#include "blob_codec.h"
+#include "byte_io.h"
+#include "checksum.h"
+#include "format.h"
+#include "sections.h"
+
+namespace facet::package {
+
+using namespace detail;
+
+namespace {
+
+struct Section {
+  uint32_t tag;
+  std::vector<uint8_t> bytes;
+};
+
+// Assigns blob indices in order of first use (variant order, then shader order), storing each
+// distinct code once. Candidates are found by hash and confirmed by comparing bytes, so even a
+// hash collision cannot make two shaders share the wrong code.
+class BlobDeduplicator {
+public:
+  uint32_t add(const std::vector<uint8_t>& code) {
+    uint64_t hash = contentHash(code);
+    std::vector<uint32_t>& candidates = byHash_[hash];
+    for (uint32_t index : candidates) {
+      if (*codes_[index] == code) return index;
+    }
+    uint32_t index = uint32_t(codes_.size());
+    codes_.push_back(&code);
+    hashes_.push_back(hash);
+    candidates.push_back(index);
+    return index;
+  }
+
+  size_t size() const { return codes_.size(); }
+  const std::vector<uint8_t>& code(size_t i) const { return *codes_[i]; }
+  uint64_t hash(size_t i) const { return hashes_[i]; }
+
+private:
+  std::vector<const std::vector<uint8_t>*> codes_;
+  std::vector<uint64_t> hashes_;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> byHash_;
+};
+
+}  // namespace
+
+std::vector<uint8_t> write(const Package& pkg) {
+  BlobDeduplicator blobs;
+  std::vector<VariantEntry> variants;
+  variants.reserve(pkg.variants.size());
+  for (const Variant& v : pkg.variants) {
+    VariantEntry entry{v.key, {}};
+    for (const Shader& s : v.shaders) entry.shaders.push_back({s.stage, s.target, blobs.add(s.code)});
+    variants.push_back(std::move(entry));
+  }
+
+  std::vector<BlobEntry> blobTable;
+  std::vector<uint8_t> blobData;
+  BlobEncoder encoder;
+  std::vector<uint8_t> stored;
+  for (size_t i = 0; i < blobs.size(); ++i) {
+    BlobEntry b;
+    b.contentHash = blobs.hash(i);
+    b.offset = blobData.size();
+    b.rawSize = blobs.code(i).size();
+    b.codec = encoder.encode(blobs.code(i), stored);
+    b.storedSize = stored.size();
+    blobData.insert(blobData.end(), stored.begin(), stored.end());
+    blobTable.push_back(b);
+  }
+
+  std::vector<Section> sections(4);
+  sections[0].tag = kTagMeta;
+  ByteWriter meta(sections[0].bytes);
+  encodeMetadata(meta, pkg.compilerVersion, pkg.material);
+  sections[1].tag = kTagVariants;
+  ByteWriter vars(sections[1].bytes);
+  encodeVariantTable(vars, variants);
+  sections[2].tag = kTagBlobTable;
+  ByteWriter table(sections[2].bytes);
+  encodeBlobTable(table, blobTable);
+  sections[3].tag = kTagBlobData;
+  sections[3].bytes = std::move(blobData);
+
+  std::vector<uint8_t> file;
+  ByteWriter out(file);
+  out.bytes(kMagic);
+  out.u32(kFormatVersion);
+  out.u32(uint32_t(sections.size()));
+  out.u64(0);  // file size, patched below
+  out.u64(0);  // checksum, patched below
+
+  uint64_t offset = kHeaderSize + sections.size() * kTocEntrySize;
+  for (const Section& s : sections) {
+    offset = (offset + kSectionAlignment - 1) / kSectionAlignment * kSectionAlignment;
+    out.u32(s.tag);
+    out.u32(0);
+    out.u64(offset);
+    out.u64(s.bytes.size());
+    offset += s.bytes.size();
+  }
+  for (const Section& s : sections) {
+    out.padTo(kSectionAlignment);
+    out.bytes(s.bytes);
+  }
+
+  storeLE(file.data() + kFileSizeOffset, file.size(), 8);
+  storeLE(file.data() + kChecksumOffset, fileChecksum(file), 8);
+  return file;
+}
+
+}  // namespace facet::package

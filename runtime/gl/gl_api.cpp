@@ -1,0 +1,35 @@
+#include "gl_api.h"
+
+namespace facet::runtime::gl {
+namespace {
+
+const char* glErrorName(GLenum code) {
+  switch (code) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    default: return "unknown GL error";
+  }
+}
+
+}  // namespace
+
+bool checkGlError(const char* phase, std::string* error) {
+  std::string codes;
+  // glGetError returns one flag per call; a bounded loop also ends if the context is lost.
+  for (int i = 0; i < 16; ++i) {
+    const GLenum code = glGetError();
+    if (code == GL_NO_ERROR) break;
+    if (!codes.empty()) codes += ", ";
+    codes += glErrorName(code);
+  }
+  if (codes.empty()) return true;
+  if (error) *error = "GL error " + codes + " after " + phase;
+  return false;
+}
+
+}  // namespace facet::runtime::gl

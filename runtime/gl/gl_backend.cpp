@@ -1,0 +1,287 @@
+// RenderBackend on OpenGL: forward pass into RGBA16F + depth, post pass into RGBA8, readback.
+//
+// Runs "#version 300 es" shaders on Mesa's OSMesa core context (ARB_ES3_compatibility), so the
+// GLES flavour of every material is exercised exactly as a phone would receive it.
+#include <algorithm>
+#include <exception>
+#include <optional>
+#include <unordered_map>
+
+#include "facet/render_backend.h"
+#include "gl_context.h"
+#include "gl_mesh.h"
+#include "gl_program.h"
+#include "gl_targets.h"
+
+namespace facet::runtime {
+namespace {
+
+using gl::checkGlError;
+
+class GlBackend final : public RenderBackend {
+ public:
+  static std::unique_ptr<GlBackend> create(std::string* error);
+  ~GlBackend() override;
+
+  const char* name() const override { return "gl"; }
+  bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
+  const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
+
+ private:
+  struct CachedProgram {
+    std::string vertexSource;  // compared on lookup: a freed ShaderProgram's address may be reused
+    std::string fragmentSource;
+    gl::LinkedProgram linked;
+  };
+
+  GlBackend() = default;
+  bool initialise(std::string* error);
+  bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
+  bool forwardPass(const FrameDesc& frame, std::string* error);
+  bool drawItem(const DrawItem& item, std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes,
+                std::string* error);
+  bool postPass(std::string* error);
+  const gl::LinkedProgram* programFor(const ShaderProgram& program, std::string* error);
+
+  // Declared first so it is destroyed last: every GL object below is deleted in this context.
+  std::unique_ptr<gl::Context> context_;
+  GLint maxTargetSize_ = 0;
+  gl::LinkedProgram post_;
+  gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
+  gl::Buffer frameUniforms_;
+  gl::Buffer objectUniforms_;
+  gl::Buffer materialUniforms_;
+  gl::RenderTargets targets_;
+  std::unordered_map<const ShaderProgram*, CachedProgram> programs_;
+};
+
+std::unique_ptr<GlBackend> GlBackend::create(std::string* error) {
+  std::unique_ptr<GlBackend> backend(new GlBackend());
+  if (!backend->initialise(error)) return nullptr;
+  return backend;
+}
+
+bool GlBackend::initialise(std::string* error) {
+  context_ = gl::Context::create(error);
+  if (!context_) return false;
+
+  GLint maxTexture = 0;
+  GLint maxRenderbuffer = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+  maxTargetSize_ = std::min(maxTexture, maxRenderbuffer);
+
+  // The post program is the same for every frame: build it once, and fail creation (not the
+  // first frame) if the build-time shaders do not compile here.
+  const PostShaders& shaders = postShaders();
+  std::string buildError;
+  std::optional<gl::LinkedProgram> post = gl::buildProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, &buildError);
+  if (!post) {
+    if (error) *error = "GL backend: post-pass shaders: " + buildError;
+    return false;
+  }
+  post_ = std::move(*post);
+  const GLint hdrLocation = glGetUniformLocation(post_.program.id(), "hdrColor");
+  if (hdrLocation < 0) {
+    if (error) *error = "GL backend: post-pass fragment shader has no sampler uniform 'hdrColor'";
+    return false;
+  }
+  // Sampler uniforms are program state, so the unit is set once here.
+  glUseProgram(post_.program.id());
+  glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
+  glUseProgram(0);
+
+  emptyVertexArray_ = gl::VertexArray::generate();
+  frameUniforms_ = gl::Buffer::generate();
+  objectUniforms_ = gl::Buffer::generate();
+  materialUniforms_ = gl::Buffer::generate();
+  return checkGlError("GL backend creation", error);
+}
+
+GlBackend::~GlBackend() {
+  // The members' handles delete their names in the current context, which must be ours.
+  if (context_) context_->makeCurrent(nullptr);
+}
+
+bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string* error) {
+  std::string message;
+  const auto renderFrame = [&] {
+    if (!result) {
+      message = "no FrameResult to fill";
+      return false;
+    }
+    if (!context_->makeCurrent(&message)) return false;
+    if (frame.width == 0 || frame.height == 0 || frame.width > static_cast<uint32_t>(maxTargetSize_) ||
+        frame.height > static_cast<uint32_t>(maxTargetSize_)) {
+      message = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                " is outside 1.." + std::to_string(maxTargetSize_);
+      return false;
+    }
+    // A failed earlier frame may have left an error flag set; it must not be blamed on this one.
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    if (!prepareTargets(frame.width, frame.height, &message)) return false;
+    if (!forwardPass(frame, &message)) return false;
+    if (!postPass(&message)) return false;
+    gl::readRgbaFloat(targets_.hdrFramebuffer.id(), frame.width, frame.height, &result->hdr);
+    gl::readRgba8(targets_.ldrFramebuffer.id(), frame.width, frame.height, &result->ldr);
+    result->width = frame.width;
+    result->height = frame.height;
+    return checkGlError("readback", &message);
+  };
+  // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
+  bool ok = false;
+  try {
+    ok = renderFrame();
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  if (!ok && error) *error = "GL backend: " + message;
+  return ok;
+}
+
+bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
+  if (targets_.width == width && targets_.height == height) return true;
+  return gl::createRenderTargets(width, height, &targets_, error);
+}
+
+bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer.id());
+  glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);  // materials may be two-sided; the ABI carries no winding rule
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);  // also required for the depth clear to take effect
+  glClearBufferfv(GL_COLOR, 0, frame.clearColor);
+  const GLfloat farDepth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farDepth);
+
+  glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &frame.frame, GL_DYNAMIC_DRAW);
+  glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
+  if (!checkGlError("forward pass setup", error)) return false;
+
+  // Meshes live for this frame only: a Mesh pointer says nothing about whether its contents
+  // changed since the last frame. A mesh drawn twice in one frame is uploaded once.
+  std::unordered_map<const Mesh*, gl::MeshBuffers> meshes;
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    std::string drawError;
+    if (!drawItem(frame.draws[i], &meshes, &drawError)) {
+      if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
+      glBindVertexArray(0);
+      return false;
+    }
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+
+  // Depth is dead once the forward pass ends. Invalidating it here, before the framebuffer
+  // switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is never
+  // stored). Colour is kept: the post pass samples it and tests read it back.
+  if (context_->canInvalidateFramebuffer()) {
+    const GLenum depthAttachment = GL_DEPTH_ATTACHMENT;
+    glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &depthAttachment);
+  }
+  return checkGlError("forward pass", error);
+}
+
+bool GlBackend::drawItem(const DrawItem& item, std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes,
+                         std::string* error) {
+  if (!item.mesh || !item.program) {
+    if (error) *error = item.mesh ? "no shader program" : "no mesh";
+    return false;
+  }
+  const gl::LinkedProgram* program = programFor(*item.program, error);
+  if (!program) return false;
+
+  // A block larger than the data bound to it reads past the buffer: refuse rather than draw.
+  if (program->frame.dataSize > static_cast<GLint>(sizeof(abi::FrameUniforms)) ||
+      program->object.dataSize > static_cast<GLint>(sizeof(abi::ObjectUniforms))) {
+    if (error) {
+      *error = "shader's FrameUniforms/ObjectUniforms blocks (" + std::to_string(program->frame.dataSize) + "/" +
+               std::to_string(program->object.dataSize) + " bytes) are larger than the ABI's (" +
+               std::to_string(sizeof(abi::FrameUniforms)) + "/" + std::to_string(sizeof(abi::ObjectUniforms)) + ")";
+    }
+    return false;
+  }
+  if (program->material.present() &&
+      item.materialParams.size() < static_cast<size_t>(program->material.dataSize)) {
+    if (error) {
+      *error = "shader's MaterialParams block is " + std::to_string(program->material.dataSize) +
+               " bytes but the draw supplies " + std::to_string(item.materialParams.size());
+    }
+    return false;
+  }
+
+  auto [entry, inserted] = meshes->try_emplace(item.mesh);
+  if (inserted && !gl::uploadMesh(*item.mesh, &entry->second, error)) {
+    meshes->erase(entry);
+    return false;
+  }
+  const gl::MeshBuffers& mesh = entry->second;
+
+  // One buffer per block, re-specified per draw: glBufferData gives the driver fresh storage
+  // while earlier draws still read the old contents.
+  glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.id());
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &item.object, GL_DYNAMIC_DRAW);
+  glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
+  if (!item.materialParams.empty()) {
+    glBindBuffer(GL_UNIFORM_BUFFER, materialUniforms_.id());
+    glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(item.materialParams.size()),
+                 item.materialParams.data(), GL_DYNAMIC_DRAW);
+    glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialUniforms_.id());
+  }
+
+  glUseProgram(program->program.id());
+  glBindVertexArray(mesh.vertexArray.id());
+  glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  return checkGlError("draw", error);
+}
+
+const gl::LinkedProgram* GlBackend::programFor(const ShaderProgram& program, std::string* error) {
+  auto found = programs_.find(&program);
+  if (found != programs_.end() && found->second.vertexSource == program.vertexGlslEs &&
+      found->second.fragmentSource == program.fragmentGlslEs) {
+    return &found->second.linked;
+  }
+  std::optional<gl::LinkedProgram> linked = gl::buildProgram(program.vertexGlslEs, program.fragmentGlslEs, error);
+  if (!linked) return nullptr;
+  CachedProgram& cached = programs_[&program];
+  cached.vertexSource = program.vertexGlslEs;
+  cached.fragmentSource = program.fragmentGlslEs;
+  cached.linked = std::move(*linked);
+  return &cached.linked;
+}
+
+bool GlBackend::postPass(std::string* error) {
+  // A plain second pass that samples the HDR target. (Framebuffer fetch, which keeps HDR in
+  // tile memory, is a later step.)
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer.id());
+  glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
+  glDisable(GL_DEPTH_TEST);  // the LDR target has no depth; the triangle covers every pixel
+  glUseProgram(post_.program.id());
+  glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
+  glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
+  glBindVertexArray(emptyVertexArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
+  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return checkGlError("post pass", error);
+}
+
+}  // namespace
+
+std::unique_ptr<RenderBackend> createGlBackend(std::string* error) {
+  // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
+  try {
+    return GlBackend::create(error);
+  } catch (const std::exception& e) {
+    if (error) *error = std::string("GL backend: ") + e.what();
+    return nullptr;
+  }
+}
+
+}  // namespace facet::runtime

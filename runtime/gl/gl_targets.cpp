@@ -1,0 +1,104 @@
+#include "gl_targets.h"
+
+#include <algorithm>
+
+namespace facet::runtime::gl {
+namespace {
+
+Texture createColorTexture(GLenum internalFormat, GLenum type, GLsizei width, GLsizei height) {
+  Texture texture = Texture::generate();
+  glBindTexture(GL_TEXTURE_2D, texture.id());
+  // glTexImage2D rather than glTexStorage2D: the 3.3 core fallback may lack texture storage.
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, GL_RGBA, type, nullptr);
+  // The post pass maps pixels one to one: NEAREST keeps HDR values exact, and a single level
+  // makes the texture complete without mipmaps.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return texture;
+}
+
+const char* framebufferStatusName(GLenum status) {
+  switch (status) {
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "incomplete attachment";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "missing attachment";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "unsupported format combination";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "incomplete multisample";
+    default: return "incomplete";
+  }
+}
+
+bool checkComplete(const char* which, std::string* error) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return true;
+  if (error) *error = std::string(which) + " framebuffer is " + framebufferStatusName(status);
+  return false;
+}
+
+// GL's first row is the bottom of the image; the contract's first row is the top.
+template <typename T>
+void flipRows(std::vector<T>* pixels, size_t rowElements, uint32_t height) {
+  if (height < 2) return;
+  for (uint32_t top = 0, bottom = height - 1; top < bottom; ++top, --bottom) {
+    std::swap_ranges(pixels->begin() + static_cast<std::ptrdiff_t>(top * rowElements),
+                     pixels->begin() + static_cast<std::ptrdiff_t>((top + 1) * rowElements),
+                     pixels->begin() + static_cast<std::ptrdiff_t>(bottom * rowElements));
+  }
+}
+
+template <typename T>
+void readRgba(GLuint framebuffer, GLenum type, uint32_t width, uint32_t height, std::vector<T>* pixels) {
+  const size_t rowElements = size_t{width} * 4;
+  pixels->assign(rowElements * height, T{});
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows tightly packed, whatever the width
+  glReadPixels(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height), GL_RGBA, type, pixels->data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  flipRows(pixels, rowElements, height);
+}
+
+}  // namespace
+
+bool createRenderTargets(uint32_t width, uint32_t height, RenderTargets* targets, std::string* error) {
+  const auto w = static_cast<GLsizei>(width);
+  const auto h = static_cast<GLsizei>(height);
+  RenderTargets created;
+  created.width = width;
+  created.height = height;
+
+  created.hdrColor = createColorTexture(GL_RGBA16F, GL_HALF_FLOAT, w, h);
+  created.depth = Renderbuffer::generate();
+  glBindRenderbuffer(GL_RENDERBUFFER, created.depth.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  created.hdrFramebuffer = Framebuffer::generate();
+  glBindFramebuffer(GL_FRAMEBUFFER, created.hdrFramebuffer.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
+  const bool hdrComplete = checkComplete("HDR (RGBA16F + DEPTH32F)", error);
+
+  created.ldrColor = createColorTexture(GL_RGBA8, GL_UNSIGNED_BYTE, w, h);
+  created.ldrFramebuffer = Framebuffer::generate();
+  glBindFramebuffer(GL_FRAMEBUFFER, created.ldrFramebuffer.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.ldrColor.id(), 0);
+  const bool ldrComplete = hdrComplete && checkComplete("LDR (RGBA8)", error);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  if (!ldrComplete || !checkGlError("render target creation", error)) return false;
+  *targets = std::move(created);
+  return true;
+}
+
+void readRgbaFloat(GLuint framebuffer, uint32_t width, uint32_t height, std::vector<float>* pixels) {
+  readRgba(framebuffer, GL_FLOAT, width, height, pixels);
+}
+
+void readRgba8(GLuint framebuffer, uint32_t width, uint32_t height, std::vector<uint8_t>* pixels) {
+  readRgba(framebuffer, GL_UNSIGNED_BYTE, width, height, pixels);
+}
+
+}  // namespace facet::runtime::gl

@@ -1,0 +1,13 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace facet::runtime {
+
+// Writes RGBA8 pixels (rows top to bottom) as PNG, atomically (temporary file + rename).
+bool writePng(const std::string& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba,
+              std::string* error);
+
+}  // namespace facet::runtime

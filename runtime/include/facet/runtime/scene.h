@@ -1,0 +1,56 @@
+// The scene JSON the viewer renders (and, later, the manifest matc reads to build only the
+// variants a scene needs). Format: docs/scene-format.md.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace facet::runtime {
+
+struct Camera {
+  glm::dvec3 position{0, 0, 4};
+  glm::dvec3 target{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double fovYDegrees = 40;
+  double nearPlane = 0.1;
+  double farPlane = 100;
+  // Physical settings: they give the exposure that pre-exposes every light.
+  double aperture = 16;        // f-number
+  double shutterSeconds = 1.0 / 125;
+  double iso = 100;
+};
+
+struct Sun {
+  glm::dvec3 direction{0, -1, 0};  // the direction the light travels (from the sun to the scene)
+  double illuminance = 110000;     // lux, on a surface facing the sun
+  glm::dvec3 color{1, 1, 1};       // linear, multiplies illuminance
+};
+
+struct SceneObject {
+  std::string mesh = "sphere";
+  std::string material;            // package name: <package dir>/<material>.matpkg
+  glm::dvec3 position{0, 0, 0};
+  double radius = 1;
+  std::map<std::string, std::vector<double>> params;
+};
+
+struct Scene {
+  uint32_t width = 256;
+  uint32_t height = 256;
+  std::string tier = "high";
+  Camera camera;
+  std::optional<Sun> sun;
+  double skyLuminance = 0;         // cd/m², a constant ambient sky
+  std::vector<SceneObject> objects;
+};
+
+// Parses scene JSON. Errors read `<path>:<line>:<col>: error: ...` for syntax errors and
+// `<path>: error: <json pointer>: ...` for wrong values.
+std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error);
+std::optional<Scene> loadScene(const std::string& path, std::string* error);
+
+}  // namespace facet::runtime

@@ -1,0 +1,35 @@
+// Turns a scene into a frame a backend can draw: loads each material package once, picks the
+// variant the scene needs, packs parameter blocks, and pre-exposes the lights.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facet/render_backend.h"
+#include "facet/runtime/material.h"
+#include "facet/runtime/scene.h"
+
+namespace facet::runtime {
+
+class SceneFrame {
+ public:
+  // Packages are read from `<packageDir>/<material>.matpkg`.
+  static std::unique_ptr<SceneFrame> prepare(const Scene& scene, const std::string& packageDir, std::string* error);
+
+  const FrameDesc& frame() const { return frame_; }
+  double exposure() const { return exposure_; }
+  // The variant key every object uses, e.g. "high.dir1".
+  const std::string& variantKey() const { return variantKey_; }
+
+ private:
+  SceneFrame() = default;
+  std::vector<std::unique_ptr<LoadedMaterial>> materials_;
+  std::vector<std::unique_ptr<ShaderProgram>> programs_;  // parallel to materials_
+  Mesh sphere_;
+  FrameDesc frame_;
+  double exposure_ = 1;
+  std::string variantKey_;
+};
+
+}  // namespace facet::runtime

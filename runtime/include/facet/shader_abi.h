@@ -1,0 +1,52 @@
+// The binary interface between the shaders in a package and the runtime that draws with them.
+//
+// templates/ declares these blocks and attributes in GLSL; this header mirrors them in C++.
+// tests/test_shader_abi.cpp reflects compiled SPIR-V and checks that both agree, so a change
+// to one side without the other fails the build's tests, not a frame on a phone.
+#pragma once
+
+#include <cstdint>
+
+namespace facet::abi {
+
+// Vertex inputs. One interleaved stream: position, normal, uv0 (8 floats, 32-byte stride).
+inline constexpr uint32_t kAttribPosition = 0;  // vec3, object space
+inline constexpr uint32_t kAttribNormal = 1;    // vec3, object space, unit length
+inline constexpr uint32_t kAttribUv0 = 2;       // vec2
+inline constexpr uint32_t kVertexFloats = 8;
+inline constexpr uint32_t kVertexStride = kVertexFloats * sizeof(float);
+
+// Uniform blocks, std140. Vulkan: descriptor set 0, binding = the value below.
+// GLES 3.00 has no layout(binding): the runtime looks the block up by name and calls
+// glUniformBlockBinding(program, index, value). A block a shader does not use may be absent.
+inline constexpr uint32_t kFrameBinding = 0;     // block "FrameUniforms"
+inline constexpr uint32_t kObjectBinding = 1;    // block "ObjectUniforms"
+inline constexpr uint32_t kMaterialBinding = 2;  // block "MaterialParams" (layout recorded in the package)
+
+// Post pass: the HDR colour of the forward pass, as a combined image sampler at set 0 binding 0
+// (Vulkan) or texture unit 0 (GL, uniform "hdrColor").
+inline constexpr uint32_t kPostHdrBinding = 0;
+
+// Per-frame data. Matrices are column-major, OpenGL clip conventions (right-handed world,
+// clip y up, clip z in [-w, w]); the Vulkan backend converts to its own clip space.
+//
+// Lighting contract (Filament's mobile practice, see docs/lighting-units.md): the CPU multiplies
+// every light by the camera exposure before upload, so the shader sees values near 1 even for a
+// 110 000 lux sun, and mediump (fp16, max 65504) never overflows on light intensities.
+struct FrameUniforms {
+  float viewProjection[16];
+  float cameraPosition[4];  // xyz: world-space eye position; w: unused
+  float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused
+  float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused
+  float ambient[4];         // rgb: constant ambient radiance × exposure (a one-band SH sky); w: unused
+};
+static_assert(sizeof(FrameUniforms) == 128, "std140 layout of FrameUniforms");
+
+// Per-object data.
+struct ObjectUniforms {
+  float model[16];
+  float normalMatrix[16];  // inverse-transpose of model's upper 3×3, stored as a mat4
+};
+static_assert(sizeof(ObjectUniforms) == 128, "std140 layout of ObjectUniforms");
+
+}  // namespace facet::abi

@@ -1,0 +1,117 @@
+#include "facet/runtime/material.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace facet::runtime {
+namespace {
+
+int componentCount(package::ParamType t) {
+  switch (t) {
+    case package::ParamType::Vec2: return 2;
+    case package::ParamType::Vec3:
+    case package::ParamType::Color: return 3;
+    case package::ParamType::Vec4: return 4;
+    default: return 1;
+  }
+}
+
+double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::optional<LoadedMaterial> LoadedMaterial::load(const std::string& path, std::string* error) {
+  package::ReadResult r = package::readFile(path);
+  if (!r.package) {
+    *error = path + ": " + r.error;
+    return std::nullopt;
+  }
+  LoadedMaterial m;
+  m.package_ = std::move(*r.package);
+  return m;
+}
+
+std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std::string* error) const {
+  for (const package::Variant& v : package_.variants) {
+    if (v.key != key) continue;
+    ShaderProgram p;
+    for (const package::Shader& s : v.shaders) {
+      bool vertex = s.stage == package::Stage::Vertex;
+      if (s.target == package::Target::GlslEs300) {
+        (vertex ? p.vertexGlslEs : p.fragmentGlslEs).assign(s.code.begin(), s.code.end());
+      } else if (s.target == package::Target::Spirv) {
+        std::vector<uint32_t>& words = vertex ? p.vertexSpirv : p.fragmentSpirv;
+        words.resize(s.code.size() / 4);
+        std::memcpy(words.data(), s.code.data(), words.size() * 4);
+      }
+    }
+    return p;
+  }
+  std::string keys;
+  for (const package::Variant& v : package_.variants) keys += (keys.empty() ? "" : ", ") + v.key;
+  *error = "material '" + package_.material.name + "' was not built with variant '" + key + "' (built: " + keys +
+           "); recompile it for this scene";
+  return std::nullopt;
+}
+
+std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<std::string, std::vector<double>>& values,
+                                                               std::string* error) const {
+  const package::MaterialInfo& info = package_.material;
+  for (const auto& [name, value] : values) {
+    bool known = false;
+    for (const package::Param& p : info.params) known = known || p.name == name;
+    if (!known) {
+      std::string names;
+      for (const package::Param& p : info.params) names += (names.empty() ? "" : ", ") + p.name;
+      *error = "material '" + info.name + "' has no parameter '" + name + "' (it has: " + names + ")";
+      return std::nullopt;
+    }
+  }
+  std::vector<uint8_t> block(info.paramBlockSize, 0);
+  for (const package::Param& p : info.params) {
+    std::vector<double> v = p.defaultValue;
+    if (auto it = values.find(p.name); it != values.end()) {
+      if (int(it->second.size()) != componentCount(p.type)) {
+        *error = "parameter '" + p.name + "' of material '" + info.name + "' is " + package::toString(p.type) + " (" +
+                 std::to_string(componentCount(p.type)) + " values), but " + std::to_string(it->second.size()) +
+                 " were given";
+        return std::nullopt;
+      }
+      v = it->second;
+      for (double c : v) {
+        bool outside = (p.rangeMin && c < *p.rangeMin) || (p.rangeMax && c > *p.rangeMax) || !std::isfinite(c);
+        if (p.type == package::ParamType::Color) outside = outside || c < 0.0 || c > 1.0;
+        if (outside) {
+          *error = "parameter '" + p.name + "' of material '" + info.name + "' = " + number(c) + " is outside its range" +
+                   (p.rangeMin ? " [" + number(*p.rangeMin) + ", " + number(*p.rangeMax) + "]" : std::string());
+          return std::nullopt;
+        }
+      }
+      if (p.type == package::ParamType::Color)
+        for (double& c : v) c = srgbToLinear(c);
+    }
+    if (p.offset + p.size > block.size() || v.size() * 4 != p.size) {
+      *error = "parameter '" + p.name + "' lies outside the parameter block";  // the reader validates this; defensive
+      return std::nullopt;
+    }
+    for (size_t i = 0; i < v.size(); ++i) {
+      uint8_t* dst = block.data() + p.offset + 4 * i;
+      if (p.type == package::ParamType::Int || p.type == package::ParamType::Bool) {
+        int32_t x = int32_t(std::lround(v[i]));
+        std::memcpy(dst, &x, 4);
+      } else {
+        float x = float(v[i]);
+        std::memcpy(dst, &x, 4);
+      }
+    }
+  }
+  return block;
+}
+
+}  // namespace facet::runtime

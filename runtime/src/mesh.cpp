@@ -1,0 +1,32 @@
+#include "facet/runtime/mesh.h"
+
+#include <cmath>
+
+namespace facet::runtime {
+
+Mesh makeSphere(int rings, int segments) {
+  Mesh mesh;
+  const double pi = 3.14159265358979323846;
+  for (int r = 0; r <= rings; ++r) {
+    double v = double(r) / rings;
+    double theta = v * pi;  // from +y (north pole) down
+    for (int s = 0; s <= segments; ++s) {
+      double u = double(s) / segments;
+      double phi = u * 2.0 * pi;
+      float x = float(std::sin(theta) * std::cos(phi));
+      float y = float(std::cos(theta));
+      float z = float(-std::sin(theta) * std::sin(phi));
+      mesh.vertices.insert(mesh.vertices.end(), {x, y, z, x, y, z, float(u), float(v)});
+    }
+  }
+  const uint32_t stride = uint32_t(segments + 1);
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      uint32_t a = uint32_t(r) * stride + uint32_t(s), b = a + stride;
+      mesh.indices.insert(mesh.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+    }
+  }
+  return mesh;
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,177 @@
+#include "facet/runtime/scene.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace facet::runtime {
+namespace {
+
+using nlohmann::json;
+
+// A wrong value in the scene: thrown inside this file only, turned into an error message.
+struct SceneError {
+  std::string pointer;
+  std::string message;
+};
+
+[[noreturn]] void fail(const std::string& pointer, std::string message) { throw SceneError{pointer, std::move(message)}; }
+
+// Rejects keys this reader does not know: a typo ("ilumination") must not silently fall back
+// to a default.
+void onlyKeys(const json& object, const std::string& pointer, std::initializer_list<const char*> keys) {
+  if (!object.is_object()) fail(pointer, "expected an object");
+  for (const auto& [key, value] : object.items()) {
+    bool known = false;
+    for (const char* k : keys) known = known || key == k;
+    if (!known) fail(pointer + "/" + key, "unknown key '" + key + "'");
+  }
+}
+
+double number(const json& j, const std::string& pointer, double lo, double hi) {
+  if (!j.is_number()) fail(pointer, "expected a number");
+  double v = j.get<double>();
+  if (!std::isfinite(v) || v < lo || v > hi)
+    fail(pointer, "value " + j.dump() + " is outside [" + json(lo).dump() + ", " + json(hi).dump() + "]");
+  return v;
+}
+
+glm::dvec3 vec3(const json& j, const std::string& pointer) {
+  if (!j.is_array() || j.size() != 3) fail(pointer, "expected an array of 3 numbers");
+  return {number(j[0], pointer + "/0", -1e6, 1e6), number(j[1], pointer + "/1", -1e6, 1e6),
+          number(j[2], pointer + "/2", -1e6, 1e6)};
+}
+
+std::string string(const json& j, const std::string& pointer) {
+  if (!j.is_string()) fail(pointer, "expected a string");
+  return j.get<std::string>();
+}
+
+Camera camera(const json& j) {
+  onlyKeys(j, "/camera", {"position", "target", "up", "fovY", "near", "far", "aperture", "shutter", "iso"});
+  Camera c;
+  if (j.contains("position")) c.position = vec3(j["position"], "/camera/position");
+  if (j.contains("target")) c.target = vec3(j["target"], "/camera/target");
+  if (j.contains("up")) c.up = vec3(j["up"], "/camera/up");
+  if (j.contains("fovY")) c.fovYDegrees = number(j["fovY"], "/camera/fovY", 1, 179);
+  if (j.contains("near")) c.nearPlane = number(j["near"], "/camera/near", 1e-4, 1e6);
+  if (j.contains("far")) c.farPlane = number(j["far"], "/camera/far", 1e-3, 1e7);
+  if (j.contains("aperture")) c.aperture = number(j["aperture"], "/camera/aperture", 0.5, 64);
+  if (j.contains("shutter")) c.shutterSeconds = number(j["shutter"], "/camera/shutter", 1e-5, 60);
+  if (j.contains("iso")) c.iso = number(j["iso"], "/camera/iso", 1, 1e6);
+  if (c.farPlane <= c.nearPlane) fail("/camera/far", "must be greater than near");
+  if (glm::dvec3 d = c.target - c.position; d.x == 0 && d.y == 0 && d.z == 0)
+    fail("/camera/target", "must differ from the camera position");
+  return c;
+}
+
+Sun sun(const json& j) {
+  onlyKeys(j, "/sun", {"direction", "illuminance", "color"});
+  Sun s;
+  if (j.contains("direction")) s.direction = vec3(j["direction"], "/sun/direction");
+  if (s.direction.x == 0 && s.direction.y == 0 && s.direction.z == 0) fail("/sun/direction", "must not be zero");
+  if (j.contains("illuminance")) s.illuminance = number(j["illuminance"], "/sun/illuminance", 0, 1e6);
+  if (j.contains("color")) s.color = vec3(j["color"], "/sun/color");
+  return s;
+}
+
+SceneObject object(const json& j, const std::string& pointer) {
+  onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
+  SceneObject o;
+  if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
+  if (o.mesh != "sphere") fail(pointer + "/mesh", "unknown mesh '" + o.mesh + "' (available: sphere)");
+  if (!j.contains("material")) fail(pointer, "missing 'material'");
+  o.material = string(j["material"], pointer + "/material");
+  if (o.material.empty() || o.material.find_first_of("/\\") != std::string::npos || o.material[0] == '.')
+    fail(pointer + "/material", "expected a material name, not a path");
+  if (j.contains("position")) o.position = vec3(j["position"], pointer + "/position");
+  if (j.contains("radius")) o.radius = number(j["radius"], pointer + "/radius", 1e-4, 1e6);
+  if (j.contains("params")) {
+    const json& params = j["params"];
+    if (!params.is_object()) fail(pointer + "/params", "expected an object");
+    for (const auto& [name, value] : params.items()) {
+      std::string p = pointer + "/params/" + name;
+      std::vector<double> v;
+      if (value.is_number()) v.push_back(number(value, p, -1e30, 1e30));
+      else if (value.is_boolean()) v.push_back(value.get<bool>() ? 1 : 0);
+      else if (value.is_array() && !value.empty() && value.size() <= 4)
+        for (size_t i = 0; i < value.size(); ++i) v.push_back(number(value[i], p + "/" + std::to_string(i), -1e30, 1e30));
+      else fail(p, "expected a number, a bool or an array of 1 to 4 numbers");
+      o.params[name] = std::move(v);
+    }
+  }
+  return o;
+}
+
+Scene scene(const json& j) {
+  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "sky", "objects"});
+  Scene s;
+  if (j.contains("width")) s.width = uint32_t(number(j["width"], "/width", 1, 4096));
+  if (j.contains("height")) s.height = uint32_t(number(j["height"], "/height", 1, 4096));
+  if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
+  if (j.contains("camera")) s.camera = camera(j["camera"]);
+  if (j.contains("sun")) s.sun = sun(j["sun"]);
+  if (j.contains("sky")) {
+    onlyKeys(j["sky"], "/sky", {"luminance"});
+    if (j["sky"].contains("luminance")) s.skyLuminance = number(j["sky"]["luminance"], "/sky/luminance", 0, 1e6);
+  }
+  if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");
+  if (j["objects"].size() > 4096) fail("/objects", "more than 4096 objects");
+  for (size_t i = 0; i < j["objects"].size(); ++i)
+    s.objects.push_back(object(j["objects"][i], "/objects/" + std::to_string(i)));
+  return s;
+}
+
+}  // namespace
+
+std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // Byte offset -> line:column for the compiler-style message.
+    size_t offset = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
+    size_t line = 1, column = 1;
+    for (size_t i = 0; i < offset; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    std::string what = e.what();
+    size_t colon = what.find("error: ");
+    *error = path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: invalid JSON: " +
+             (colon == std::string::npos ? what : what.substr(colon + 7));
+    return std::nullopt;
+  }
+  try {
+    return scene(j);
+  } catch (const SceneError& e) {
+    *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
+  } catch (const json::exception& e) {
+    *error = path + ": error: " + e.what();
+  }
+  return std::nullopt;
+}
+
+std::optional<Scene> loadScene(const std::string& path, std::string* error) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    *error = path + ": error: cannot open the scene file";
+    return std::nullopt;
+  }
+  if (std::filesystem::file_size(path, ec) > (16u << 20)) {
+    *error = path + ": error: scene files are limited to 16 MiB";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseScene(path, text.str(), error);
+}
+
+}  // namespace facet::runtime

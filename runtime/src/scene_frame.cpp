@@ -1,0 +1,86 @@
+#include "facet/runtime/scene_frame.h"
+
+#include <cstring>
+#include <filesystem>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "facet/permutations/variant_key.h"
+#include "facet/runtime/exposure.h"
+#include "facet/runtime/mesh.h"
+
+namespace facet::runtime {
+namespace {
+
+void store(float* dst, const glm::mat4& m) { std::memcpy(dst, glm::value_ptr(m), sizeof(float) * 16); }
+void store(float* dst, const glm::dvec3& v, double w = 0) {
+  dst[0] = float(v.x);
+  dst[1] = float(v.y);
+  dst[2] = float(v.z);
+  dst[3] = float(w);
+}
+
+}  // namespace
+
+std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::string& packageDir, std::string* error) {
+  std::unique_ptr<SceneFrame> out(new SceneFrame());
+  auto tier = permutations::tierFromString(scene.tier);
+  if (!tier) {
+    *error = "unknown tier '" + scene.tier + "' (reference, high, mid, low)";
+    return nullptr;
+  }
+  out->variantKey_ = permutations::VariantKey{*tier, scene.sun.has_value()}.toString();
+  out->sphere_ = makeSphere();
+
+  // Lights are multiplied by the exposure here, on the CPU, so shaders see O(1) values
+  // (chunks/precision.glsl: the pre-exposure contract that keeps mediump finite).
+  const Camera& cam = scene.camera;
+  out->exposure_ = exposureFromEv100(ev100(cam.aperture, cam.shutterSeconds, cam.iso));
+  abi::FrameUniforms& f = out->frame_.frame;
+  glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
+  glm::dmat4 projection = glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height,
+                                           cam.nearPlane, cam.farPlane);
+  store(f.viewProjection, glm::mat4(projection * view));
+  store(f.cameraPosition, cam.position, 1);
+  if (scene.sun) {
+    store(f.lightDirection, -glm::normalize(scene.sun->direction));
+    store(f.lightColor, scene.sun->color * scene.sun->illuminance * out->exposure_);
+  }
+  glm::dvec3 sky(scene.skyLuminance * out->exposure_);
+  store(f.ambient, sky);
+  out->frame_.width = scene.width;
+  out->frame_.height = scene.height;
+  for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = float(sky[i]);
+
+  std::map<std::string, size_t> loaded;  // material name -> index in materials_
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    auto [it, fresh] = loaded.emplace(o.material, out->materials_.size());
+    if (fresh) {
+      std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
+      auto material = LoadedMaterial::load(path, error);
+      if (!material) return nullptr;
+      auto program = material->program(out->variantKey_, error);
+      if (!program) return nullptr;
+      out->materials_.push_back(std::make_unique<LoadedMaterial>(std::move(*material)));
+      out->programs_.push_back(std::make_unique<ShaderProgram>(std::move(*program)));
+    }
+    DrawItem draw;
+    draw.mesh = &out->sphere_;
+    draw.program = out->programs_[it->second].get();
+    glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), o.position), glm::dvec3(o.radius));
+    store(draw.object.model, glm::mat4(model));
+    store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
+    auto block = out->materials_[it->second]->paramBlock(o.params, error);
+    if (!block) {
+      *error = "object " + std::to_string(i) + ": " + *error;
+      return nullptr;
+    }
+    draw.materialParams = std::move(*block);
+    out->frame_.draws.push_back(std::move(draw));
+  }
+  return out;
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,605 @@
+// The Vulkan RenderBackend: a headless forward pass into RGBA16F + D32, a post pass into RGBA8,
+// and a readback of both. Everything runs synchronously: render() records one command buffer,
+// submits it and waits on a fence, so between frames the device is idle and resources can be
+// rewritten or recreated without further synchronisation.
+#include <algorithm>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <new>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/render_backend.h"
+#include "vk_check.h"
+#include "vk_context.h"
+#include "vk_convert.h"
+#include "vk_pipeline.h"
+#include "vk_resources.h"
+#include "vk_targets.h"
+
+namespace facet::runtime {
+namespace {
+
+using namespace vulkan;
+
+// A lavapipe frame under ASan and validation takes well under a second; a minute means hung.
+constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
+// Bound to MaterialParams when a draw has no parameter bytes.
+constexpr VkDeviceSize kEmptyMaterialSize = 16;
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+  return (value + alignment - 1) / alignment * alignment;
+}
+
+// Where one draw's data sits in the frame arena.
+struct DrawSlot {
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  VkDeviceSize objectOffset = 0;
+  VkDeviceSize materialOffset = 0;
+  VkDeviceSize materialSize = 0;
+  VkDeviceSize vertexOffset = 0;
+  VkDeviceSize indexOffset = 0;
+  uint32_t vertexCount = 0;
+  uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
+};
+
+// A pipeline built for one ShaderProgram. The SPIR-V is kept so that a different program later
+// allocated at the same address is noticed and gets its own pipeline.
+struct CachedPipeline {
+  std::vector<uint32_t> vertexSpirv;
+  std::vector<uint32_t> fragmentSpirv;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+class VulkanBackend final : public RenderBackend {
+ public:
+  VulkanBackend() = default;
+  ~VulkanBackend() override;
+  VulkanBackend(const VulkanBackend&) = delete;
+  VulkanBackend& operator=(const VulkanBackend&) = delete;
+
+  bool init(const VulkanOptions& options, std::string* error);
+
+  const char* name() const override { return "vulkan"; }
+  bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
+  const std::vector<std::string>& validationErrors() const override {
+    return ctx_.messages.errors;
+  }
+
+ private:
+  bool createFixedObjects(std::string* error);
+  bool checkFrame(const FrameDesc& frame, std::string* error) const;
+  bool ensureTargets(uint32_t width, uint32_t height, std::string* error);
+  bool pipelineFor(const ShaderProgram& program, VkPipeline* out, std::string* error);
+  bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
+  bool ensureArena(VkDeviceSize size, std::string* error);
+  bool allocateDrawSets(std::vector<DrawSlot>* slots, std::string* error);
+  bool recordCommands(const FrameDesc& frame, const std::vector<DrawSlot>& slots,
+                      std::string* error);
+  bool submitAndWait(std::string* error);
+  void readBack(FrameResult* result) const;
+
+  // Declared first so it is destroyed last: the destructor body below destroys everything
+  // created from the device before ~Context destroys the device and the instance.
+  Context ctx_;
+
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+
+  VkRenderPass forwardPass_ = VK_NULL_HANDLE;
+  VkRenderPass postPass_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout forwardSetLayout_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout postSetLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout forwardLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout postLayout_ = VK_NULL_HANDLE;
+  VkPipeline postPipeline_ = VK_NULL_HANDLE;
+  VkSampler hdrSampler_ = VK_NULL_HANDLE;
+
+  // The post pass's one descriptor set, rewritten whenever the HDR image is recreated.
+  VkDescriptorPool postPool_ = VK_NULL_HANDLE;
+  VkDescriptorSet postSet_ = VK_NULL_HANDLE;
+
+  // Per-frame draw descriptor sets: reset every frame, recreated larger when needed.
+  VkDescriptorPool drawPool_ = VK_NULL_HANDLE;
+  uint32_t drawPoolCapacity_ = 0;
+
+  // Uniforms, vertices and indices of one frame, rewritten every frame, grown when needed.
+  HostBuffer arena_;
+
+  RenderTargets targets_;
+  std::unordered_map<const ShaderProgram*, CachedPipeline> pipelines_;
+};
+
+VulkanBackend::~VulkanBackend() {
+  VkDevice device = ctx_.device;
+  if (!device) return;  // nothing below can exist without a device
+  vkDeviceWaitIdle(device);
+  for (auto& entry : pipelines_) {
+    if (entry.second.pipeline) vkDestroyPipeline(device, entry.second.pipeline, nullptr);
+  }
+  destroyRenderTargets(device, &targets_);
+  destroyHostBuffer(device, &arena_);
+  // Destroying a pool frees its sets.
+  if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
+  if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
+  if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
+  if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
+  if (postLayout_) vkDestroyPipelineLayout(device, postLayout_, nullptr);
+  if (forwardLayout_) vkDestroyPipelineLayout(device, forwardLayout_, nullptr);
+  if (postSetLayout_) vkDestroyDescriptorSetLayout(device, postSetLayout_, nullptr);
+  if (forwardSetLayout_) vkDestroyDescriptorSetLayout(device, forwardSetLayout_, nullptr);
+  if (postPass_) vkDestroyRenderPass(device, postPass_, nullptr);
+  if (forwardPass_) vkDestroyRenderPass(device, forwardPass_, nullptr);
+  if (fence_) vkDestroyFence(device, fence_, nullptr);
+  // Destroying the pool frees its command buffer.
+  if (commandPool_) vkDestroyCommandPool(device, commandPool_, nullptr);
+}
+
+bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
+  const bool validation = options.validation || validationRequestedByEnvironment();
+  return ctx_.init(validation, error) && createFixedObjects(error);
+}
+
+// Objects that live as long as the backend and do not depend on the frame.
+bool VulkanBackend::createFixedObjects(std::string* error) {
+  VkDevice device = ctx_.device;
+
+  VkCommandPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = ctx_.queueFamily;
+  if (!check(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool_),
+             "vkCreateCommandPool", error)) {
+    commandPool_ = VK_NULL_HANDLE;
+    return false;
+  }
+  VkCommandBufferAllocateInfo cmdInfo{};
+  cmdInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  cmdInfo.commandPool = commandPool_;
+  cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cmdInfo.commandBufferCount = 1;
+  if (!check(vkAllocateCommandBuffers(device, &cmdInfo, &commandBuffer_),
+             "vkAllocateCommandBuffers", error)) {
+    commandBuffer_ = VK_NULL_HANDLE;
+    return false;
+  }
+  VkFenceCreateInfo fenceInfo{};
+  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  if (!check(vkCreateFence(device, &fenceInfo, nullptr, &fence_), "vkCreateFence", error)) {
+    fence_ = VK_NULL_HANDLE;
+    return false;
+  }
+
+  if (!createForwardRenderPass(device, &forwardPass_, error) ||
+      !createPostRenderPass(device, &postPass_, error) ||
+      !createForwardSetLayout(device, &forwardSetLayout_, error) ||
+      !createPostSetLayout(device, &postSetLayout_, error) ||
+      !createPipelineLayout(device, forwardSetLayout_, &forwardLayout_, error) ||
+      !createPipelineLayout(device, postSetLayout_, &postLayout_, error)) {
+    return false;
+  }
+
+  const PostShaders& post = postShaders();
+  PipelineDesc postDesc;
+  postDesc.kind = PipelineKind::kPost;
+  postDesc.vertexSpirv = &post.vertexSpirv;
+  postDesc.fragmentSpirv = &post.fragmentSpirv;
+  postDesc.layout = postLayout_;
+  postDesc.renderPass = postPass_;
+  postDesc.what = "post pass shaders";
+  if (!createGraphicsPipeline(device, postDesc, &postPipeline_, error)) return false;
+
+  // Nearest + clamp: the post pass reads exactly one HDR texel per output pixel.
+  VkSamplerCreateInfo samplerInfo{};
+  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  samplerInfo.magFilter = VK_FILTER_NEAREST;
+  samplerInfo.minFilter = VK_FILTER_NEAREST;
+  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  samplerInfo.maxLod = 0.0f;
+  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &hdrSampler_), "vkCreateSampler",
+             error)) {
+    hdrSampler_ = VK_NULL_HANDLE;
+    return false;
+  }
+
+  VkDescriptorPoolSize postPoolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+  VkDescriptorPoolCreateInfo postPoolInfo{};
+  postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  postPoolInfo.maxSets = 1;
+  postPoolInfo.poolSizeCount = 1;
+  postPoolInfo.pPoolSizes = &postPoolSize;
+  if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_),
+             "vkCreateDescriptorPool", error)) {
+    postPool_ = VK_NULL_HANDLE;
+    return false;
+  }
+  VkDescriptorSetAllocateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  setInfo.descriptorPool = postPool_;
+  setInfo.descriptorSetCount = 1;
+  setInfo.pSetLayouts = &postSetLayout_;
+  if (!check(vkAllocateDescriptorSets(device, &setInfo, &postSet_), "vkAllocateDescriptorSets",
+             error)) {
+    postSet_ = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  if (!result) {
+    *error = "render: result is null";
+    return false;
+  }
+  // The API promises no exceptions; the only ones possible here are allocation failures.
+  try {
+    std::vector<DrawSlot> slots;
+    if (!checkFrame(frame, error) || !ensureTargets(frame.width, frame.height, error) ||
+        !uploadFrame(frame, &slots, error) || !allocateDrawSets(&slots, error) ||
+        !recordCommands(frame, slots, error) || !submitAndWait(error)) {
+      return false;
+    }
+    readBack(result);
+    return true;
+  } catch (const std::exception& e) {
+    *error = std::string("Vulkan backend: ") + e.what();
+    return false;
+  }
+}
+
+bool VulkanBackend::checkFrame(const FrameDesc& frame, std::string* error) const {
+  const uint32_t maxSize = ctx_.properties.limits.maxImageDimension2D;
+  if (frame.width == 0 || frame.height == 0 || frame.width > maxSize || frame.height > maxSize) {
+    *error = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+             " is outside 1.." + std::to_string(maxSize);
+    return false;
+  }
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
+    const std::string which = "draw " + std::to_string(i) + ": ";
+    if (!draw.mesh || !draw.program) {
+      *error = which + "mesh or program is null";
+      return false;
+    }
+    const size_t floats = draw.mesh->vertices.size();
+    if (floats % abi::kVertexFloats != 0) {
+      *error = which + "vertex data is not a whole number of " +
+               std::to_string(abi::kVertexFloats) + "-float vertices";
+      return false;
+    }
+    const size_t vertexCount = floats / abi::kVertexFloats;
+    for (uint32_t index : draw.mesh->indices) {
+      if (index >= vertexCount) {
+        *error = which + "index " + std::to_string(index) + " is out of range (" +
+                 std::to_string(vertexCount) + " vertices)";
+        return false;
+      }
+    }
+    if (draw.materialParams.size() > ctx_.properties.limits.maxUniformBufferRange) {
+      *error = which + "materialParams is larger than maxUniformBufferRange";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
+  if (targets_.width == width && targets_.height == height) return true;
+  destroyRenderTargets(ctx_.device, &targets_);  // idle: the previous frame was waited for
+  if (!createRenderTargets(ctx_, width, height, forwardPass_, postPass_, &targets_, error)) {
+    return false;
+  }
+  VkDescriptorImageInfo imageInfo{hdrSampler_, targets_.hdr.view,
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{};
+  write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+  write.dstSet = postSet_;
+  write.dstBinding = abi::kPostHdrBinding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &imageInfo;
+  vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
+  return true;
+}
+
+bool VulkanBackend::pipelineFor(const ShaderProgram& program, VkPipeline* out,
+                                std::string* error) {
+  auto found = pipelines_.find(&program);
+  if (found != pipelines_.end()) {
+    CachedPipeline& cached = found->second;
+    if (cached.vertexSpirv == program.vertexSpirv &&
+        cached.fragmentSpirv == program.fragmentSpirv) {
+      *out = cached.pipeline;
+      return true;
+    }
+    // Another program now lives at this address. Safe to destroy: the device is idle.
+    vkDestroyPipeline(ctx_.device, cached.pipeline, nullptr);
+    pipelines_.erase(found);
+  }
+  PipelineDesc desc;
+  desc.kind = PipelineKind::kForward;
+  desc.vertexSpirv = &program.vertexSpirv;
+  desc.fragmentSpirv = &program.fragmentSpirv;
+  desc.layout = forwardLayout_;
+  desc.renderPass = forwardPass_;
+  desc.what = "material shaders";
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  if (!createGraphicsPipeline(ctx_.device, desc, &pipeline, error)) return false;
+  pipelines_[&program] = CachedPipeline{program.vertexSpirv, program.fragmentSpirv, pipeline};
+  *out = pipeline;
+  return true;
+}
+
+bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
+  if (arena_.buffer && arena_.size >= size) return true;
+  destroyHostBuffer(ctx_.device, &arena_);  // idle: the previous frame was waited for
+  VkDeviceSize capacity = 64 * 1024;
+  while (capacity < size) capacity *= 2;
+  return createHostBuffer(ctx_, capacity,
+                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                          &arena_, error);
+}
+
+// Lays the frame's uniforms, vertices and indices out in the arena and copies them in:
+// FrameUniforms first, then per draw ObjectUniforms, MaterialParams, vertices, indices.
+bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots,
+                                std::string* error) {
+  const VkDeviceSize alignment =
+      std::max<VkDeviceSize>(ctx_.properties.limits.minUniformBufferOffsetAlignment, 16);
+  VkDeviceSize size = alignUp(sizeof(abi::FrameUniforms), alignment);
+  slots->resize(frame.draws.size());
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
+    DrawSlot& slot = (*slots)[i];
+    if (!pipelineFor(*draw.program, &slot.pipeline, error)) return false;
+    slot.vertexCount = static_cast<uint32_t>(draw.mesh->vertices.size() / abi::kVertexFloats);
+    slot.indexCount = static_cast<uint32_t>(draw.mesh->indices.size());
+    slot.materialSize = draw.materialParams.empty()
+                            ? kEmptyMaterialSize
+                            : alignUp(draw.materialParams.size(), 16);  // whole std140 vec4s
+    slot.objectOffset = size;
+    size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
+    slot.materialOffset = size;
+    size = alignUp(size + slot.materialSize, alignment);
+    slot.vertexOffset = size;
+    size = alignUp(size + draw.mesh->vertices.size() * sizeof(float), alignment);
+    slot.indexOffset = size;
+    size = alignUp(size + draw.mesh->indices.size() * sizeof(uint32_t), alignment);
+  }
+  if (!ensureArena(size, error)) return false;
+
+  auto* base = static_cast<uint8_t*>(arena_.mapped);
+  abi::FrameUniforms frameUniforms = frame.frame;
+  glToVulkanClip(frame.frame.viewProjection, frameUniforms.viewProjection);
+  std::memcpy(base, &frameUniforms, sizeof(frameUniforms));
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
+    const DrawSlot& slot = (*slots)[i];
+    std::memcpy(base + slot.objectOffset, &draw.object, sizeof(draw.object));
+    std::memset(base + slot.materialOffset, 0, slot.materialSize);
+    if (!draw.materialParams.empty()) {
+      std::memcpy(base + slot.materialOffset, draw.materialParams.data(),
+                  draw.materialParams.size());
+    }
+    if (!draw.mesh->vertices.empty()) {
+      std::memcpy(base + slot.vertexOffset, draw.mesh->vertices.data(),
+                  draw.mesh->vertices.size() * sizeof(float));
+    }
+    if (!draw.mesh->indices.empty()) {
+      std::memcpy(base + slot.indexOffset, draw.mesh->indices.data(),
+                  draw.mesh->indices.size() * sizeof(uint32_t));
+    }
+  }
+  // The memory is host-coherent, and vkQueueSubmit makes host writes visible to the device.
+  return true;
+}
+
+bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* error) {
+  const uint32_t count = static_cast<uint32_t>(slots->size());
+  if (count == 0) return true;
+  VkDevice device = ctx_.device;
+  if (count > drawPoolCapacity_) {
+    if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
+    drawPool_ = VK_NULL_HANDLE;
+    drawPoolCapacity_ = 0;
+    uint32_t capacity = 64;
+    while (capacity < count) capacity *= 2;
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3 * capacity};
+    VkDescriptorPoolCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    info.maxSets = capacity;
+    info.poolSizeCount = 1;
+    info.pPoolSizes = &poolSize;
+    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool_),
+               "vkCreateDescriptorPool", error)) {
+      drawPool_ = VK_NULL_HANDLE;
+      return false;
+    }
+    drawPoolCapacity_ = capacity;
+  } else if (!check(vkResetDescriptorPool(device, drawPool_, 0), "vkResetDescriptorPool",
+                    error)) {
+    return false;
+  }
+
+  std::vector<VkDescriptorSetLayout> layouts(count, forwardSetLayout_);
+  std::vector<VkDescriptorSet> sets(count);
+  VkDescriptorSetAllocateInfo allocInfo{};
+  allocInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  allocInfo.descriptorPool = drawPool_;
+  allocInfo.descriptorSetCount = count;
+  allocInfo.pSetLayouts = layouts.data();
+  if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()),
+             "vkAllocateDescriptorSets", error)) {
+    return false;
+  }
+
+  std::vector<VkDescriptorBufferInfo> buffers(3 * size_t{count});
+  std::vector<VkWriteDescriptorSet> writes(3 * size_t{count});
+  for (uint32_t i = 0; i < count; ++i) {
+    DrawSlot& slot = (*slots)[i];
+    slot.set = sets[i];
+    buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
+    buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
+    buffers[3 * i + 2] = {arena_.buffer, slot.materialOffset, slot.materialSize};
+    const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding,
+                                  abi::kMaterialBinding};
+    for (uint32_t b = 0; b < 3; ++b) {
+      VkWriteDescriptorSet& write = writes[3 * i + b];
+      write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+      write.dstSet = slot.set;
+      write.dstBinding = bindings[b];
+      write.descriptorCount = 1;
+      write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+      write.pBufferInfo = &buffers[3 * i + b];
+    }
+  }
+  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0,
+                         nullptr);
+  return true;
+}
+
+bool VulkanBackend::recordCommands(const FrameDesc& frame, const std::vector<DrawSlot>& slots,
+                                   std::string* error) {
+  VkCommandBuffer cmd = commandBuffer_;
+  if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error)) return false;
+  VkCommandBufferBeginInfo beginInfo{};
+  beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  if (!check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) return false;
+
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(frame.width),
+                            static_cast<float>(frame.height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {frame.width, frame.height}};
+
+  // Forward pass.
+  VkClearValue clears[2]{};
+  for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = frame.clearColor[c];
+  clears[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo passInfo{};
+  passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  passInfo.renderPass = forwardPass_;
+  passInfo.framebuffer = targets_.forwardFramebuffer;
+  passInfo.renderArea = scissor;
+  passInfo.clearValueCount = 2;
+  passInfo.pClearValues = clears;
+  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (const DrawSlot& slot : slots) {
+    if (slot.vertexCount == 0) continue;
+    if (slot.pipeline != bound) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
+      bound = slot.pipeline;
+    }
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, forwardLayout_, 0, 1,
+                            &slot.set, 0, nullptr);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &arena_.buffer, &slot.vertexOffset);
+    if (slot.indexCount > 0) {
+      vkCmdBindIndexBuffer(cmd, arena_.buffer, slot.indexOffset, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, slot.indexCount, 1, 0, 0, 0);
+    } else {
+      vkCmdDraw(cmd, slot.vertexCount, 1, 0, 0);
+    }
+  }
+  vkCmdEndRenderPass(cmd);
+
+  // Post pass: one full-screen triangle reading the HDR image.
+  passInfo.renderPass = postPass_;
+  passInfo.framebuffer = targets_.postFramebuffer;
+  passInfo.clearValueCount = 0;
+  passInfo.pClearValues = nullptr;
+  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, postPipeline_);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, postLayout_, 0, 1, &postSet_, 0,
+                          nullptr);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  vkCmdEndRenderPass(cmd);
+
+  // Readback. The post pass left the LDR image in TRANSFER_SRC_OPTIMAL; the HDR image still
+  // needs its transition, after the post pass's sampling of it.
+  VkImageMemoryBarrier hdrBarrier{};
+  hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  hdrBarrier.srcAccessMask = 0;  // write-after-read only needs the execution dependency
+  hdrBarrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  hdrBarrier.oldLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  hdrBarrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  hdrBarrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  hdrBarrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  hdrBarrier.image = targets_.hdr.image;
+  hdrBarrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                       &hdrBarrier);
+
+  VkBufferImageCopy region{};
+  region.bufferRowLength = 0;  // tightly packed; image row 0 (the top) first
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {frame.width, frame.height, 1};
+  vkCmdCopyImageToBuffer(cmd, targets_.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         targets_.hdrReadback.buffer, 1, &region);
+  vkCmdCopyImageToBuffer(cmd, targets_.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         targets_.ldrReadback.buffer, 1, &region);
+
+  VkMemoryBarrier hostBarrier{};
+  hostBarrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &hostBarrier, 0, nullptr, 0, nullptr);
+
+  return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error);
+}
+
+bool VulkanBackend::submitAndWait(std::string* error) {
+  if (!check(vkResetFences(ctx_.device, 1, &fence_), "vkResetFences", error)) return false;
+  VkSubmitInfo submit{};
+  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commandBuffer_;
+  if (!check(vkQueueSubmit(ctx_.queue, 1, &submit, fence_), "vkQueueSubmit", error)) {
+    return false;
+  }
+  return check(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, kFenceTimeoutNs),
+               "vkWaitForFences", error);
+}
+
+void VulkanBackend::readBack(FrameResult* result) const {
+  const size_t values = size_t{targets_.width} * targets_.height * 4;
+  result->width = targets_.width;
+  result->height = targets_.height;
+  result->hdr.resize(values);
+  const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
+  for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+  result->ldr.resize(values);
+  std::memcpy(result->ldr.data(), targets_.ldrReadback.mapped, values);
+}
+
+}  // namespace
+
+std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options,
+                                                   std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  try {
+    auto backend = std::make_unique<VulkanBackend>();
+    if (!backend->init(options, error)) return nullptr;
+    return backend;
+  } catch (const std::exception& e) {
+    *error = std::string("createVulkanBackend: ") + e.what();
+    return nullptr;
+  }
+}
+
+}  // namespace facet::runtime

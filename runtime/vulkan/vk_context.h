@@ -1,0 +1,56 @@
+// The Vulkan instance, the chosen physical device, the logical device and its graphics queue,
+// and (when validation is on) the debug messenger that collects the validation layer's reports.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace facet::runtime::vulkan {
+
+// What the debug messenger has recorded. Only errors are part of the backend's API; warnings
+// are kept apart so they can be inspected without failing anyone's tests.
+struct DebugMessages {
+  std::vector<std::string> errors;
+  std::vector<std::string> warnings;
+};
+
+class Context {
+ public:
+  Context() = default;
+  ~Context();
+  // The messenger callback holds a pointer to `messages`, so a Context never moves.
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  // Creates everything. On failure returns false with *error set; whatever was created is
+  // destroyed by the destructor.
+  bool init(bool validation, std::string* error);
+
+  // Index of a memory type allowed by typeBits that has all of `required`, or UINT32_MAX.
+  uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const;
+
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties{};
+  VkPhysicalDeviceMemoryProperties memoryProperties{};
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queueFamily = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+  bool validationEnabled = false;
+  DebugMessages messages;
+
+ private:
+  bool createInstance(bool validation, std::string* error);
+  bool pickPhysicalDevice(std::string* error);
+  bool createDevice(std::string* error);
+
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+};
+
+// True when FACET_VK_VALIDATION is set to something other than "" or "0".
+bool validationRequestedByEnvironment();
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,18 @@
+// Pure data conversions between the API-neutral frame description and what Vulkan consumes or
+// produces. No Vulkan calls here, so the arithmetic is easy to check on its own.
+#pragma once
+
+#include <cstdint>
+
+namespace facet::runtime::vulkan {
+
+// clip' = C * m, where C flips y (Vulkan's framebuffer y points down) and maps z from
+// OpenGL's [-w, w] to Vulkan's [0, w]: z' = 0.5 z + 0.5 w. Column-major 4×4, like shader_abi.h.
+// With this, Vulkan's row 0 is the top of the picture, the same picture a GL render shows
+// after its rows are flipped on readback.
+void glToVulkanClip(const float gl[16], float out[16]);
+
+// IEEE 754 binary16 → binary32, exact (normals, subnormals, infinities, NaN).
+float halfToFloat(uint16_t half);
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,310 @@
+#include "vk_pipeline.h"
+
+#include <array>
+
+#include "facet/shader_abi.h"
+#include "vk_check.h"
+
+namespace facet::runtime::vulkan {
+namespace {
+
+bool createShaderModule(VkDevice device, const std::vector<uint32_t>* words, const char* stage,
+                        const char* what, VkShaderModule* out, std::string* error) {
+  if (!words || words->empty()) {
+    *error = std::string(what) + ": no Vulkan " + stage + " SPIR-V";
+    return false;
+  }
+  VkShaderModuleCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  info.codeSize = words->size() * sizeof(uint32_t);
+  info.pCode = words->data();
+  if (!check(vkCreateShaderModule(device, &info, nullptr, out), "vkCreateShaderModule", error)) {
+    *out = VK_NULL_HANDLE;
+    *error = std::string(what) + " (" + stage + "): " + *error;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool createForwardRenderPass(VkDevice device, VkRenderPass* out, std::string* error) {
+  std::array<VkAttachmentDescription, 2> attachments{};
+  VkAttachmentDescription& colour = attachments[0];
+  colour.format = kHdrFormat;
+  colour.samples = VK_SAMPLE_COUNT_1_BIT;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // cleared: old contents don't matter
+  colour.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  VkAttachmentDescription& depth = attachments[1];
+  depth.format = kDepthFormat;
+  depth.samples = VK_SAMPLE_COUNT_1_BIT;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+
+  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colourRef;
+  subpass.pDepthStencilAttachment = &depthRef;
+
+  std::array<VkSubpassDependency, 2> dependencies{};
+  // Before: the previous frame read the HDR image (post pass sampling, readback copy) and
+  // wrote depth. Those must finish before this frame's layout transitions and writes.
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                 VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  // After: the post pass samples the colour.
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+
+  VkRenderPassCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = static_cast<uint32_t>(dependencies.size());
+  info.pDependencies = dependencies.data();
+  if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createPostRenderPass(VkDevice device, VkRenderPass* out, std::string* error) {
+  VkAttachmentDescription colour{};
+  colour.format = kLdrFormat;
+  colour.samples = VK_SAMPLE_COUNT_1_BIT;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the full-screen triangle covers every pixel
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  colour.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+
+  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colourRef;
+
+  std::array<VkSubpassDependency, 2> dependencies{};
+  // Before: the previous frame's readback copy of this image must finish (write after read).
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask =
+      VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].srcAccessMask = 0;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  // After: the readback copies it.
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+
+  VkRenderPassCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+  info.attachmentCount = 1;
+  info.pAttachments = &colour;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = static_cast<uint32_t>(dependencies.size());
+  info.pDependencies = dependencies.data();
+  if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
+  std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
+  const uint32_t numbers[] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
+  for (size_t i = 0; i < bindings.size(); ++i) {
+    bindings[i].binding = numbers[i];
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    bindings[i].descriptorCount = 1;
+    bindings[i].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  }
+  VkDescriptorSetLayoutCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  info.bindingCount = static_cast<uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
+             "vkCreateDescriptorSetLayout", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
+  VkDescriptorSetLayoutBinding binding{};
+  binding.binding = abi::kPostHdrBinding;
+  binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  binding.descriptorCount = 1;
+  binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+  VkDescriptorSetLayoutCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  info.bindingCount = 1;
+  info.pBindings = &binding;
+  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
+             "vkCreateDescriptorSetLayout", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout,
+                          VkPipelineLayout* out, std::string* error) {
+  VkPipelineLayoutCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  info.setLayoutCount = 1;
+  info.pSetLayouts = &setLayout;
+  if (!check(vkCreatePipelineLayout(device, &info, nullptr, out), "vkCreatePipelineLayout",
+             error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out,
+                            std::string* error) {
+  const bool forward = desc.kind == PipelineKind::kForward;
+  VkShaderModule vertex = VK_NULL_HANDLE;
+  VkShaderModule fragment = VK_NULL_HANDLE;
+  if (!createShaderModule(device, desc.vertexSpirv, "vertex", desc.what, &vertex, error)) {
+    return false;
+  }
+  if (!createShaderModule(device, desc.fragmentSpirv, "fragment", desc.what, &fragment, error)) {
+    vkDestroyShaderModule(device, vertex, nullptr);
+    return false;
+  }
+
+  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+  stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vertex;
+  stages[0].pName = "main";
+  stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = fragment;
+  stages[1].pName = "main";
+
+  // The one interleaved vertex stream of shader_abi.h.
+  VkVertexInputBindingDescription binding{0, abi::kVertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
+  const std::array<VkVertexInputAttributeDescription, 3> attributes{{
+      {abi::kAttribPosition, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+      {abi::kAttribNormal, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)},
+      {abi::kAttribUv0, 0, VK_FORMAT_R32G32_SFLOAT, 6 * sizeof(float)},
+  }};
+  VkPipelineVertexInputStateCreateInfo vertexInput{};
+  vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+  if (forward) {
+    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
+    vertexInput.pVertexAttributeDescriptions = attributes.data();
+  }
+
+  VkPipelineInputAssemblyStateCreateInfo inputAssembly{};
+  inputAssembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+  inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+
+  VkPipelineViewportStateCreateInfo viewport{};
+  viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+
+  VkPipelineRasterizationStateCreateInfo raster{};
+  raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  // No culling: the clip-space y flip reverses winding, and materials may be two-sided.
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+
+  VkPipelineMultisampleStateCreateInfo multisample{};
+  multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+  VkPipelineDepthStencilStateCreateInfo depth{};
+  depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = VK_TRUE;
+  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  depth.minDepthBounds = 0.0f;
+  depth.maxDepthBounds = 1.0f;
+
+  VkPipelineColorBlendAttachmentState blendAttachment{};
+  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  VkPipelineColorBlendStateCreateInfo blend{};
+  blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+  blend.attachmentCount = 1;
+  blend.pAttachments = &blendAttachment;
+
+  const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT,
+                                                    VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{};
+  dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+  dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+  dynamic.pDynamicStates = dynamicStates.data();
+
+  VkGraphicsPipelineCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+  info.stageCount = static_cast<uint32_t>(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &inputAssembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = forward ? &depth : nullptr;  // the post pass has no depth attachment
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = desc.layout;
+  info.renderPass = desc.renderPass;
+  info.subpass = 0;
+  VkResult result = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, out);
+  // Modules are only needed while the pipeline is created.
+  vkDestroyShaderModule(device, vertex, nullptr);
+  vkDestroyShaderModule(device, fragment, nullptr);
+  if (!check(result, "vkCreateGraphicsPipelines", error)) {
+    *out = VK_NULL_HANDLE;
+    *error = std::string(desc.what) + ": " + *error;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,45 @@
+// Buffers and images with their memory. Plain structs with explicit create/destroy functions:
+// the backend owns a handful of each and destroys them in its destructor (after waiting for the
+// device), so RAII wrappers would add moves and ownership rules without removing any risk.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+
+namespace facet::runtime::vulkan {
+
+class Context;
+
+// A buffer in host-visible, host-coherent memory, mapped for its whole life. Coherent memory
+// means host writes need no flush and device writes need no invalidate after the fence wait;
+// Vulkan guarantees every device has such a memory type.
+struct HostBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  void* mapped = nullptr;
+  VkDeviceSize size = 0;
+};
+
+bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                      HostBuffer* out, std::string* error);
+// Safe on a default-constructed or partly created buffer; leaves *buffer default-constructed.
+void destroyHostBuffer(VkDevice device, HostBuffer* buffer);
+
+// A 2D image with one mip level and one layer, in device memory, and a view of all of it.
+struct Image {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  uint32_t width = 0;
+  uint32_t height = 0;
+};
+
+bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
+                 VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
+                 std::string* error);
+// Safe on a default-constructed or partly created image; leaves *image default-constructed.
+void destroyImage(VkDevice device, Image* image);
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,79 @@
+#include "vk_targets.h"
+
+#include <array>
+
+#include "vk_check.h"
+#include "vk_context.h"
+#include "vk_pipeline.h"
+
+namespace facet::runtime::vulkan {
+namespace {
+
+bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views,
+                       uint32_t count, uint32_t width, uint32_t height, VkFramebuffer* out,
+                       std::string* error) {
+  VkFramebufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+  info.renderPass = pass;
+  info.attachmentCount = count;
+  info.pAttachments = views;
+  info.width = width;
+  info.height = height;
+  info.layers = 1;
+  if (!check(vkCreateFramebuffer(device, &info, nullptr, out), "vkCreateFramebuffer", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
+                         VkRenderPass forwardPass, VkRenderPass postPass, RenderTargets* targets,
+                         std::string* error) {
+  RenderTargets t;
+  t.width = width;
+  t.height = height;
+  const VkDeviceSize pixels = VkDeviceSize{width} * height;
+  bool ok =
+      createImage(ctx, width, height, kHdrFormat,
+                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                  VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error) &&
+      createImage(ctx, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                  VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error) &&
+      createImage(ctx, width, height, kLdrFormat,
+                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                  VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
+      createHostBuffer(ctx, pixels * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                       &t.hdrReadback, error) &&
+      createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error);
+  if (ok) {
+    const std::array<VkImageView, 2> forwardViews{t.hdr.view, t.depth.view};
+    ok = createFramebuffer(ctx.device, forwardPass, forwardViews.data(), 2, width, height,
+                           &t.forwardFramebuffer, error) &&
+         createFramebuffer(ctx.device, postPass, &t.ldr.view, 1, width, height,
+                           &t.postFramebuffer, error);
+  }
+  if (!ok) {
+    destroyRenderTargets(ctx.device, &t);
+    *targets = RenderTargets{};
+    return false;
+  }
+  *targets = t;
+  return true;
+}
+
+void destroyRenderTargets(VkDevice device, RenderTargets* targets) {
+  if (targets->forwardFramebuffer) vkDestroyFramebuffer(device, targets->forwardFramebuffer, nullptr);
+  if (targets->postFramebuffer) vkDestroyFramebuffer(device, targets->postFramebuffer, nullptr);
+  destroyImage(device, &targets->hdr);
+  destroyImage(device, &targets->depth);
+  destroyImage(device, &targets->ldr);
+  destroyHostBuffer(device, &targets->hdrReadback);
+  destroyHostBuffer(device, &targets->ldrReadback);
+  *targets = RenderTargets{};
+}
+
+}  // namespace facet::runtime::vulkan

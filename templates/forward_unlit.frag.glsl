@@ -1,0 +1,11 @@
+// Forward pass, unlit, fragment stage: the surface program's colour is the pixel's colour.
+#include "math.glsl"
+#include "precision.glsl"
+#include "facet:material"
+
+void main() {
+    shading_normal = normalize(v_normal);
+    MaterialInputs material = material_defaults();
+    evaluate_surface(material);
+    fragColor = vec4(material.baseColor + material.emissive, material.alpha);
+}

@@ -1,0 +1,29 @@
+#version 310 es
+// Test vertex shader for test_vulkan_backend: the ABI's vertex stream and uniform blocks
+// (runtime/include/facet/shader_abi.h), position transformed by viewProjection * model.
+precision highp float;
+
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec2 uv0;
+
+layout(std140, set = 0, binding = 0) uniform FrameUniforms {
+    mat4 viewProjection;
+    vec4 cameraPosition;
+    vec4 lightDirection;
+    vec4 lightColor;
+    vec4 ambient;
+} frame;
+
+layout(std140, set = 0, binding = 1) uniform ObjectUniforms {
+    mat4 model;
+    mat4 normalMatrix;
+} object;
+
+layout(location = 0) out vec2 vUv;
+
+void main() {
+    // normal is consumed (with weight 0) so every attribute of the ABI stream is read.
+    vUv = uv0 + vec2(0.0 * normal.x);
+    gl_Position = frame.viewProjection * object.model * vec4(position, 1.0);
+}

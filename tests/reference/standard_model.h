@@ -1,0 +1,57 @@
+// Double-precision CPU evaluation of chunks/shading_standard.glsl and the chunks it calls, from
+// the same formulas (not the same code): the ground truth the GPU images are checked against.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace facet::reference {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+struct Surface {
+  glm::dvec3 baseColor{1.0};
+  double metallic = 0;
+  double roughness = 1;     // perceptual
+  double reflectance = 0.5;
+  double ambientOcclusion = 1;
+  glm::dvec3 emissive{0.0};
+};
+
+// GGX D in the textbook form (the GPU uses the Lagrange form; equal in exact arithmetic).
+inline double distributionGgx(double alpha, double NoH) {
+  double a2 = alpha * alpha;
+  double d = NoH * NoH * (a2 - 1.0) + 1.0;
+  return a2 / (kPi * d * d);
+}
+
+inline double visibilitySmithGgxCorrelated(double alpha, double NoV, double NoL) {
+  double a2 = alpha * alpha;
+  double lambdaV = NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2);
+  double lambdaL = NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2);
+  return 0.5 / (lambdaV + lambdaL);
+}
+
+inline glm::dvec3 fresnelSchlick(glm::dvec3 f0, double LoH) { return f0 + (1.0 - f0) * std::pow(1.0 - LoH, 5.0); }
+
+// Outgoing pre-exposed radiance towards v, for one directional light (l towards the light,
+// lightColor pre-exposed) and a constant ambient radiance.
+inline glm::dvec3 shadeStandard(const Surface& s, glm::dvec3 n, glm::dvec3 v, glm::dvec3 l, glm::dvec3 lightColor,
+                                glm::dvec3 ambient) {
+  glm::dvec3 baseColor = glm::clamp(s.baseColor, 0.0, 1.0);
+  double metallic = glm::clamp(s.metallic, 0.0, 1.0);
+  double reflectance = glm::clamp(s.reflectance, 0.0, 1.0);
+  glm::dvec3 diffuseColor = (1.0 - metallic) * baseColor;
+  glm::dvec3 f0 = glm::dvec3(0.16 * reflectance * reflectance * (1.0 - metallic)) + metallic * baseColor;
+  double r = glm::clamp(s.roughness, 0.089, 1.0);
+  double alpha = r * r;
+  glm::dvec3 h = glm::normalize(v + l);
+  double NoV = std::max(glm::dot(n, v), 1e-4);
+  double NoL = glm::clamp(glm::dot(n, l), 0.0, 1.0);
+  double NoH = glm::clamp(glm::dot(n, h), 0.0, 1.0);
+  double LoH = glm::clamp(glm::dot(l, h), 0.0, 1.0);
+  glm::dvec3 specular = distributionGgx(alpha, NoH) * visibilitySmithGgxCorrelated(alpha, NoV, NoL) * fresnelSchlick(f0, LoH);
+  glm::dvec3 direct = (diffuseColor / kPi + specular) * lightColor * NoL;
+  return direct + diffuseColor * ambient * glm::clamp(s.ambientOcclusion, 0.0, 1.0) + s.emissive;
+}
+
+}  // namespace facet::reference

@@ -1,0 +1,406 @@
+// The GL backend (OSMesa, llvmpipe) runs "#version 300 es" shaders and honours the shader ABI.
+// OSMesa is a hard dependency of the project: when it is missing these tests fail, not skip.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "../runtime/gl/gl_context.h"
+#include "facet/render_backend.h"
+
+namespace facet::runtime {
+namespace {
+
+constexpr const char* kVertexShader = R"(#version 300 es
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec2 uv0;
+layout(std140) uniform FrameUniforms {
+  mat4 viewProjection;
+  vec4 cameraPosition;
+  vec4 lightDirection;
+  vec4 lightColor;
+  vec4 ambient;
+};
+layout(std140) uniform ObjectUniforms {
+  mat4 model;
+  mat4 normalMatrix;
+};
+out vec2 vUv;
+void main() {
+  vUv = uv0 + normal.xy * 0.0;
+  gl_Position = viewProjection * model * vec4(position, 1.0);
+}
+)";
+
+// Colour = baseColor + emissive, both from the material block.
+constexpr const char* kMaterialFragmentShader = R"(#version 300 es
+precision highp float;
+layout(std140) uniform MaterialParams {
+  vec4 baseColor;
+  vec4 emissive;
+};
+in vec2 vUv;
+layout(location = 0) out vec4 fragColor;
+void main() { fragColor = baseColor + emissive; }
+)";
+
+// Colour = lightColor from the frame block; no material block at all.
+constexpr const char* kLightColourFragmentShader = R"(#version 300 es
+precision highp float;
+layout(std140) uniform FrameUniforms {
+  mat4 viewProjection;
+  vec4 cameraPosition;
+  vec4 lightDirection;
+  vec4 lightColor;
+  vec4 ambient;
+};
+layout(location = 0) out vec4 fragColor;
+void main() { fragColor = lightColor; }
+)";
+
+constexpr const char* kBrokenFragmentShader = R"(#version 300 es
+precision highp float;
+layout(location = 0) out vec4 fragColor;
+void main() { fragColor = this is not glsl; }
+)";
+
+struct Rgba {
+  float r, g, b, a;
+};
+
+void setIdentity(float* m) {
+  std::memset(m, 0, 16 * sizeof(float));
+  m[0] = m[5] = m[10] = m[15] = 1.0f;
+}
+
+// Column-major translation, as the ABI stores matrices.
+void setTranslation(float* m, float x, float y, float z) {
+  setIdentity(m);
+  m[12] = x;
+  m[13] = y;
+  m[14] = z;
+}
+
+FrameDesc makeFrame(uint32_t width, uint32_t height) {
+  FrameDesc frame;
+  frame.width = width;
+  frame.height = height;
+  setIdentity(frame.frame.viewProjection);
+  return frame;
+}
+
+DrawItem makeDraw(const Mesh& mesh, const ShaderProgram& program) {
+  DrawItem draw;
+  draw.mesh = &mesh;
+  draw.program = &program;
+  setIdentity(draw.object.model);
+  setIdentity(draw.object.normalMatrix);
+  return draw;
+}
+
+void addVertex(Mesh* mesh, float x, float y, float z) {
+  mesh->vertices.insert(mesh->vertices.end(), {x, y, z, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f});
+}
+
+Mesh triangle(float x0, float y0, float x1, float y1, float x2, float y2, float z = 0.0f) {
+  Mesh mesh;
+  addVertex(&mesh, x0, y0, z);
+  addVertex(&mesh, x1, y1, z);
+  addVertex(&mesh, x2, y2, z);
+  mesh.indices = {0, 1, 2};
+  return mesh;
+}
+
+Mesh quad(float x0, float y0, float x1, float y1, float z) {
+  Mesh mesh;
+  addVertex(&mesh, x0, y0, z);
+  addVertex(&mesh, x1, y0, z);
+  addVertex(&mesh, x1, y1, z);
+  addVertex(&mesh, x0, y1, z);
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  return mesh;
+}
+
+std::vector<uint8_t> materialBytes(Rgba baseColor, Rgba emissive) {
+  std::vector<uint8_t> bytes(2 * sizeof(Rgba));
+  std::memcpy(bytes.data(), &baseColor, sizeof(Rgba));
+  std::memcpy(bytes.data() + sizeof(Rgba), &emissive, sizeof(Rgba));
+  return bytes;
+}
+
+ShaderProgram program(const char* fragment) {
+  ShaderProgram p;
+  p.vertexGlslEs = kVertexShader;
+  p.fragmentGlslEs = fragment;
+  return p;
+}
+
+Rgba hdrAt(const FrameResult& result, uint32_t row, uint32_t column) {
+  const float* p = &result.hdr[(size_t{row} * result.width + column) * 4];
+  return {p[0], p[1], p[2], p[3]};
+}
+
+const uint8_t* ldrAt(const FrameResult& result, uint32_t row, uint32_t column) {
+  return &result.ldr[(size_t{row} * result.width + column) * 4];
+}
+
+#define EXPECT_RGBA(actual, R, G, B, A) \
+  do {                                  \
+    const Rgba v = (actual);            \
+    EXPECT_EQ(v.r, R);                  \
+    EXPECT_EQ(v.g, G);                  \
+    EXPECT_EQ(v.b, B);                  \
+    EXPECT_EQ(v.a, A);                  \
+  } while (0)
+
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << part << "\" not found in:\n" << text;
+}
+
+::testing::AssertionResult noValidationErrors(const RenderBackend& backend) {
+  if (backend.validationErrors().empty()) return ::testing::AssertionSuccess();
+  auto failure = ::testing::AssertionFailure() << "validation errors:";
+  for (const std::string& message : backend.validationErrors()) failure << "\n  " << message;
+  return failure;
+}
+
+std::unique_ptr<RenderBackend> makeBackend() {
+  std::string error;
+  std::unique_ptr<RenderBackend> backend = createGlBackend(&error);
+  EXPECT_NE(backend, nullptr) << "OSMesa GL backend unavailable: " << error;
+  return backend;
+}
+
+TEST(GlBackend, ClearColourReachesHdrAndLdrTargets) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  // Values are exact in fp16; 8.0 checks the target is float, not clamped to 1.
+  const float levels[] = {0.0f, 0.125f, 0.5f, 2.0f, 8.0f};
+  int previousLdr = -1;
+  for (float level : levels) {
+    FrameDesc frame = makeFrame(16, 8);
+    frame.clearColor[0] = level;
+    frame.clearColor[1] = level * 0.5f;
+    frame.clearColor[2] = level * 0.25f;
+    frame.clearColor[3] = 1.0f;
+    FrameResult result;
+    std::string error;
+    ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+    ASSERT_EQ(result.width, 16u);
+    ASSERT_EQ(result.height, 8u);
+    ASSERT_EQ(result.hdr.size(), 16u * 8u * 4u);
+    ASSERT_EQ(result.ldr.size(), 16u * 8u * 4u);
+
+    for (uint32_t row = 0; row < 8; ++row) {
+      for (uint32_t column = 0; column < 16; ++column) {
+        EXPECT_RGBA(hdrAt(result, row, column), level, level * 0.5f, level * 0.25f, 1.0f);
+        EXPECT_EQ(std::memcmp(ldrAt(result, row, column), ldrAt(result, 0, 0), 4), 0)
+            << "LDR pixel (" << row << ", " << column << ") differs from pixel (0, 0)";
+      }
+    }
+    const int ldrRed = ldrAt(result, 0, 0)[0];
+    EXPECT_GE(ldrRed, previousLdr) << "LDR red decreased as the clear value rose to " << level;
+    EXPECT_EQ(ldrAt(result, 0, 0)[3], 255);
+    previousLdr = ldrRed;
+  }
+  EXPECT_GT(previousLdr, 0);
+}
+
+TEST(GlBackend, TriangleCoversExpectedPixelsUpright) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  // Clip-space triangle in the upper-left quadrant: corners top-left, mid-left, top-mid.
+  const Mesh mesh = triangle(-1.0f, 1.0f, -1.0f, 0.0f, 0.0f, 1.0f);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  FrameDesc frame = makeFrame(64, 48);
+  frame.draws.push_back(makeDraw(mesh, shaders));
+  frame.draws.back().materialParams = materialBytes({1, 0, 0, 1}, {0, 0, 0, 0});
+  FrameResult result;
+  std::string error;
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+
+  // Row 0 is the top of the image.
+  EXPECT_RGBA(hdrAt(result, 1, 1), 1.0f, 0.0f, 0.0f, 1.0f);     // top-left: inside
+  EXPECT_RGBA(hdrAt(result, 1, 62), 0.0f, 0.0f, 0.0f, 1.0f);    // top-right: clear
+  EXPECT_RGBA(hdrAt(result, 46, 1), 0.0f, 0.0f, 0.0f, 1.0f);    // bottom-left: clear
+  EXPECT_RGBA(hdrAt(result, 46, 62), 0.0f, 0.0f, 0.0f, 1.0f);   // bottom-right: clear
+  EXPECT_RGBA(hdrAt(result, 20, 20), 0.0f, 0.0f, 0.0f, 1.0f);   // past the hypotenuse: clear
+  EXPECT_RGBA(hdrAt(result, 5, 5), 1.0f, 0.0f, 0.0f, 1.0f);     // well inside
+
+  // The post pass sees the same image, the same way up.
+  EXPECT_GT(ldrAt(result, 1, 1)[0], 0);
+  EXPECT_EQ(ldrAt(result, 1, 1)[1], 0);
+  EXPECT_EQ(ldrAt(result, 46, 62)[0], 0);
+}
+
+TEST(GlBackend, MaterialParamsReachFragmentShader) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  FrameDesc frame = makeFrame(8, 8);
+  frame.draws.push_back(makeDraw(mesh, shaders));
+  // Both vec4s of the block: the second one checks the std140 offset (16 bytes).
+  frame.draws.back().materialParams = materialBytes({0.25f, 0, 0.5f, 0.5f}, {0, 0.75f, 0.25f, 0.5f});
+  FrameResult result;
+  std::string error;
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_RGBA(hdrAt(result, 4, 4), 0.25f, 0.75f, 0.75f, 1.0f);
+}
+
+TEST(GlBackend, FrameAndObjectUniformsReachShaders) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  // A quad over the lower-left quadrant, moved by the model matrix to the upper-right one.
+  const Mesh mesh = quad(-1, -1, 0, 0, 0);
+  const ShaderProgram shaders = program(kLightColourFragmentShader);
+  FrameDesc frame = makeFrame(32, 32);
+  const float light[4] = {0.5f, 1.5f, 3.0f, 1.0f};
+  std::memcpy(frame.frame.lightColor, light, sizeof(light));
+  frame.draws.push_back(makeDraw(mesh, shaders));  // no MaterialParams: the shader has none
+  setTranslation(frame.draws.back().object.model, 1.0f, 1.0f, 0.0f);
+  FrameResult result;
+  std::string error;
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_RGBA(hdrAt(result, 2, 29), 0.5f, 1.5f, 3.0f, 1.0f);  // upper-right: moved quad
+  EXPECT_RGBA(hdrAt(result, 29, 2), 0.0f, 0.0f, 0.0f, 1.0f);  // lower-left: where it started
+}
+
+TEST(GlBackend, DepthTestKeepsNearestSurface) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  // GL clip z in [-w, w]: smaller z is nearer.
+  const Mesh nearQuad = quad(-1, -1, 1, 1, -0.5f);
+  const Mesh farQuad = quad(-1, -1, 1, 1, 0.5f);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  const std::vector<uint8_t> green = materialBytes({0, 1, 0, 1}, {0, 0, 0, 0});
+  const std::vector<uint8_t> red = materialBytes({1, 0, 0, 1}, {0, 0, 0, 0});
+
+  for (bool nearFirst : {true, false}) {
+    FrameDesc frame = makeFrame(8, 8);
+    DrawItem nearDraw = makeDraw(nearQuad, shaders);
+    nearDraw.materialParams = green;
+    DrawItem farDraw = makeDraw(farQuad, shaders);
+    farDraw.materialParams = red;
+    frame.draws = nearFirst ? std::vector<DrawItem>{nearDraw, farDraw} : std::vector<DrawItem>{farDraw, nearDraw};
+    FrameResult result;
+    std::string error;
+    ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+    SCOPED_TRACE(nearFirst ? "near quad drawn first" : "far quad drawn first");
+    EXPECT_RGBA(hdrAt(result, 4, 4), 0.0f, 1.0f, 0.0f, 1.0f);
+  }
+}
+
+TEST(GlBackend, CompileErrorIsReportedNotFatal) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  const ShaderProgram broken = program(kBrokenFragmentShader);
+  FrameDesc frame = makeFrame(8, 8);
+  frame.draws.push_back(makeDraw(mesh, broken));
+  FrameResult result;
+  std::string error;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_TRUE(contains(error, "draw 0: fragment shader failed to compile"));
+  // The info log itself, not just a status.
+  EXPECT_TRUE(contains(error, "syntax error"));
+  // A bad shader is the caller's error, reported once, not an API validation error.
+  EXPECT_TRUE(noValidationErrors(*backend));
+
+  // The backend stays usable.
+  const ShaderProgram good = program(kMaterialFragmentShader);
+  frame.draws = {makeDraw(mesh, good)};
+  frame.draws.back().materialParams = materialBytes({0, 0, 1, 1}, {0, 0, 0, 0});
+  error.clear();
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_RGBA(hdrAt(result, 4, 4), 0.0f, 0.0f, 1.0f, 1.0f);
+}
+
+TEST(GlBackend, ShortMaterialParamsAreRejected) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  FrameDesc frame = makeFrame(8, 8);
+  frame.draws.push_back(makeDraw(mesh, shaders));
+  frame.draws.back().materialParams.resize(16);  // the block needs 32 bytes
+  FrameResult result;
+  std::string error;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_TRUE(contains(error, "MaterialParams block is 32 bytes but the draw supplies 16"));
+  EXPECT_TRUE(noValidationErrors(*backend));
+}
+
+TEST(GlBackend, DebugOutputRecordsErrors) {
+  // Guards NoDebugOutputErrors against passing because nothing is listening.
+  std::string error;
+  std::unique_ptr<gl::Context> context = gl::Context::create(&error);
+  ASSERT_NE(context, nullptr) << error;
+  ASSERT_TRUE(context->makeCurrent(&error)) << error;
+  ASSERT_TRUE(context->debugOutputEnabled());
+
+  glBindBuffer(0x1234, 0);  // not a buffer target: GL_INVALID_ENUM
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  ASSERT_EQ(context->debugErrors().size(), 1u);
+  EXPECT_TRUE(contains(context->debugErrors()[0], "error"));
+}
+
+TEST(GlBackend, NoDebugOutputErrors) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+
+  const Mesh mesh = triangle(-1, -1, 1, -1, 0, 1);
+  const ShaderProgram material = program(kMaterialFragmentShader);
+  const ShaderProgram light = program(kLightColourFragmentShader);
+  // Two sizes exercise target re-creation; the same mesh twice exercises the per-frame upload.
+  for (uint32_t size : {16u, 32u, 16u}) {
+    FrameDesc frame = makeFrame(size, size);
+    frame.draws.push_back(makeDraw(mesh, material));
+    frame.draws.back().materialParams = materialBytes({0.5f, 0.5f, 0.5f, 1}, {0, 0, 0, 0});
+    frame.draws.push_back(makeDraw(mesh, light));
+    FrameResult result;
+    std::string error;
+    ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  }
+  EXPECT_TRUE(noValidationErrors(*backend));
+}
+
+TEST(GlBackend, TwoBackendsKeepTheirOwnContexts) {
+  auto first = makeBackend();
+  auto second = makeBackend();
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(second, nullptr);
+
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  for (int i = 0; i < 2; ++i) {
+    for (RenderBackend* backend : {first.get(), second.get()}) {
+      FrameDesc frame = makeFrame(4, 4);
+      frame.draws.push_back(makeDraw(mesh, shaders));
+      frame.draws.back().materialParams = materialBytes({0.5f, 0.25f, 0, 1}, {0, 0, 0, 0});
+      FrameResult result;
+      std::string error;
+      ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+      EXPECT_RGBA(hdrAt(result, 2, 2), 0.5f, 0.25f, 0.0f, 1.0f);
+    }
+  }
+  second.reset();  // destroying one backend must not disturb the other
+  FrameDesc frame = makeFrame(4, 4);
+  FrameResult result;
+  std::string error;
+  EXPECT_TRUE(first->render(frame, &result, &error)) << error;
+  EXPECT_TRUE(noValidationErrors(*first));
+}
+
+}  // namespace
+}  // namespace facet::runtime

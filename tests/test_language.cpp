@@ -1,0 +1,143 @@
+// The material language front end: diagnostics users read, and facts about the IR.
+#include <gtest/gtest.h>
+
+#include "facet/ir/check.h"
+#include "facet/ir/emit_glsl.h"
+#include "test_support.h"
+
+using facet::test::diagnosticsFor;
+
+namespace {
+
+std::optional<facet::ir::Material> checkText(const std::string& text, std::string* diagnostics = nullptr) {
+  facet::ir::SourceFile file{"test.mat", text};
+  facet::ir::Diagnostics diags(file);
+  auto m = facet::ir::compileSource(file, diags);
+  if (diagnostics) *diagnostics = diags.format();
+  return m;
+}
+
+const char* kValid = R"(material ok {
+    param roughness: float = 0.5 in [0, 1]
+    surface {
+        roughness = params.roughness
+    }
+}
+)";
+
+}  // namespace
+
+TEST(Language, ValidMaterialHasNoDiagnostics) {
+  std::string d;
+  ASSERT_TRUE(checkText(kValid, &d).has_value());
+  EXPECT_EQ(d, "");
+}
+
+TEST(Language, SyntaxErrorReportsFileLineColumnAndCaret) {
+  std::string d = diagnosticsFor("material m {\n    param x: float = \n}\n", "bad.mat");
+  EXPECT_EQ(d,
+            "bad.mat:3:1: error: expected an expression, found '}' [parse]\n"
+            "    }\n"
+            "    ^\n");
+}
+
+TEST(Language, UnknownParameterSuggestsTheClosestName) {
+  std::string d = diagnosticsFor(
+      "material brick {\n  param roughness: float = 0.5\n  surface {\n    roughness = params.rougness * 0.5\n  }\n}\n",
+      "brick.mat");
+  EXPECT_NE(d.find("brick.mat:4:24: error: unknown parameter 'rougness'; did you mean 'roughness'? [unknown-name]\n"
+                   "        roughness = params.rougness * 0.5\n"
+                   "                           ^~~~~~~~\n"),
+            std::string::npos)
+      << d;
+}
+
+TEST(Language, SeveralErrorsAreReportedInOneRun) {
+  std::string d = diagnosticsFor(R"(material m {
+    param a: flaot = 1.0
+    surface {
+        baseColor = 1.0
+        metalic = 0.0
+        roughness = nope
+    }
+}
+)");
+  EXPECT_NE(d.find("unknown parameter type 'flaot'; did you mean 'float'?"), std::string::npos) << d;
+  EXPECT_NE(d.find("output 'baseColor' is vec3 but the value is float"), std::string::npos) << d;
+  EXPECT_NE(d.find("unknown surface output 'metalic'; did you mean 'metallic'?"), std::string::npos) << d;
+  EXPECT_NE(d.find("unknown name 'nope'"), std::string::npos) << d;
+}
+
+TEST(Language, DefaultOutsideDeclaredRangeIsAnError) {
+  std::string d = diagnosticsFor("material m {\n  param r: float = 1.5 in [0, 1]\n  surface { roughness = params.r }\n}\n");
+  EXPECT_NE(d.find("test.mat:2:20: error: default value 1.5 is outside the declared range [0, 1]"), std::string::npos) << d;
+}
+
+TEST(Language, UseBeforeDefinitionNamesTheLaterLine) {
+  std::string d = diagnosticsFor("material m {\n  surface {\n    roughness = r\n    let r = 0.5\n  }\n}\n");
+  EXPECT_NE(d.find("test.mat:3:17: error: 'r' is used before its definition at line 4"), std::string::npos) << d;
+}
+
+TEST(Language, UnusedParameterIsAWarningNotAnError) {
+  std::string d;
+  ASSERT_TRUE(checkText("material m {\n  param unused: float = 1.0\n  surface { roughness = 0.5 }\n}\n", &d).has_value());
+  EXPECT_NE(d.find("test.mat:2:9: warning: parameter 'unused' is never used [unused-param]"), std::string::npos) << d;
+}
+
+TEST(Language, ColourParametersAreStoredLinear) {
+  auto m = checkText("material m {\n  param c: color = vec3(0.5, 1.0, 0.0)\n  surface { baseColor = params.c }\n}\n");
+  ASSERT_TRUE(m);
+  ASSERT_EQ(m->params[0].defaultValue.size(), 3u);
+  EXPECT_NEAR(m->params[0].defaultValue[0], 0.21404114, 1e-7);  // sRGB 0.5 -> linear
+  EXPECT_DOUBLE_EQ(m->params[0].defaultValue[1], 1.0);
+  EXPECT_DOUBLE_EQ(m->params[0].defaultValue[2], 0.0);
+}
+
+TEST(Language, IdenticalExpressionsShareOneValue) {
+  auto m = checkText(R"(material m {
+    param r: float = 0.5
+    surface {
+        let a = params.r * 2.0
+        let b = params.r * 2.0
+        roughness = a + b
+    }
+}
+)");
+  ASSERT_TRUE(m);
+  std::string glsl = facet::ir::emitSurface(*m).body;
+  // One multiply, reused: the second let names the same value.
+  EXPECT_EQ(glsl.find("params.r * 2.0"), glsl.rfind("params.r * 2.0")) << glsl;
+}
+
+TEST(Language, ConstantsAreFoldedAndUnusedLetsEmitNothing) {
+  auto m = checkText(R"(material m {
+    param r: float = 0.5
+    surface {
+        let unused = sin(params.r)
+        roughness = 0.25 * 2.0
+    }
+}
+)");
+  ASSERT_TRUE(m);
+  std::string glsl = facet::ir::emitSurface(*m).body;
+  EXPECT_EQ(glsl, "    material.roughness = 0.5;\n");
+}
+
+TEST(Language, HostileInputGetsErrorsNotCrashes) {
+  std::string deepParens = "material m { surface { roughness = " + std::string(100000, '(') + "1" + " } }";
+  EXPECT_NE(diagnosticsFor(deepParens).find("error:"), std::string::npos);
+
+  std::string longChain = "material m { surface { roughness = 1";
+  for (int i = 0; i < 100000; ++i) longChain += " + 1";
+  longChain += " } }";
+  EXPECT_NE(diagnosticsFor(longChain).find("operations deep"), std::string::npos);
+
+  std::string binary;
+  for (int i = 0; i < 4096; ++i) binary += char((i * 7919) & 0xff);
+  EXPECT_NE(diagnosticsFor(binary).find("error:"), std::string::npos);
+
+  EXPECT_NE(diagnosticsFor("").find("error: expected 'material'"), std::string::npos);
+  EXPECT_NE(diagnosticsFor(std::string("material m {\0}", 14)).find("byte 0x00"), std::string::npos);
+  EXPECT_NE(diagnosticsFor("material m { param x: float = 1e999 surface { roughness = params.x } }").find("out of range"),
+            std::string::npos);
+}

@@ -1,0 +1,380 @@
+// .matpkg writer and reader: round trip, determinism, deduplication, and rejection of every
+// kind of damaged or hostile input. Byte positions used here are from docs/package-format.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include <unistd.h>
+
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
+#include "facet/package.h"
+
+namespace pkg = facet::package;
+
+#ifdef __SANITIZE_ADDRESS__
+// Turns "allocated far more than the input justifies" into a hard failure under ASan, rather
+// than something overcommit lets pass. The reader's own cap on decoded code is 1 GiB.
+extern "C" const char* __asan_default_options() { return "max_allocation_size_mb=1100"; }
+#endif
+
+namespace {
+
+std::vector<uint8_t> textCode(const std::string& s) { return {s.begin(), s.end()}; }
+
+std::vector<uint8_t> glslSource(const std::string& body) {
+  std::string s = "#version 300 es\nprecision mediump float;\n";
+  for (int i = 0; i < 40; ++i)
+    s += "uniform vec4 u_light" + std::to_string(i) + "; // " + body + "\n";
+  s += "void main() { " + body + " }\n";
+  return textCode(s);
+}
+
+// Pseudo-random words: incompressible, so they exercise the raw codec.
+std::vector<uint8_t> spirvWords(uint32_t seed, size_t words) {
+  std::mt19937 rng(seed);
+  std::vector<uint8_t> code;
+  const uint32_t magic = 0x07230203;
+  for (size_t i = 0; i < words; ++i) {
+    uint32_t w = i == 0 ? magic : uint32_t(rng());
+    for (int b = 0; b < 4; ++b) code.push_back(uint8_t(w >> (8 * b)));
+  }
+  return code;
+}
+
+pkg::Package samplePackage() {
+  pkg::Package p;
+  p.compilerVersion = "matc 0.1.0 (test)";
+  p.material.name = "brick";
+  p.material.shading = "lit";
+  p.material.blending = "opaque";
+  p.material.paramBlockSize = 64;
+  p.material.params = {
+      {"roughness", pkg::ParamType::Float, {0.5}, 0.089, 1.0, 0, 4},
+      {"tint", pkg::ParamType::Color, {0.8, 0.2, 0.1, 1.0}, std::nullopt, std::nullopt, 16, 16},
+      {"offset", pkg::ParamType::Vec3, {-0.0, 1e-300, 3.25}, -10.0, std::nullopt, 32, 12},
+      {"tiles", pkg::ParamType::Int, {4}, std::nullopt, 16.0, 44, 4},
+      {"wet", pkg::ParamType::Bool, {0}, std::nullopt, std::nullopt, 48, 4},
+      {"uv", pkg::ParamType::Vec2, {1, 2}, std::nullopt, std::nullopt, 56, 8},
+  };
+  for (int i = 0; i < 3; ++i) {
+    pkg::Variant v;
+    v.key = "tier=mid;lights=" + std::to_string(i);
+    v.shaders = {
+        {pkg::Stage::Vertex, pkg::Target::GlslEs300, glslSource("gl_Position = vec4(0.0);")},
+        {pkg::Stage::Fragment, pkg::Target::GlslEs300, glslSource("o = vec4(" + std::to_string(i) + ");")},
+        {pkg::Stage::Vertex, pkg::Target::Spirv, spirvWords(100, 64)},
+        {pkg::Stage::Fragment, pkg::Target::Spirv, spirvWords(200 + uint32_t(i), 96)},
+        {pkg::Stage::Fragment, pkg::Target::Msl, textCode("#include <metal_stdlib>\nfragment half4 f() { return 1; }\n")},
+    };
+    p.variants.push_back(std::move(v));
+  }
+  return p;
+}
+
+uint64_t loadLE(const std::vector<uint8_t>& b, size_t at, int n) {
+  uint64_t v = 0;
+  for (int i = 0; i < n; ++i) v |= uint64_t(b[at + size_t(i)]) << (8 * i);
+  return v;
+}
+
+void storeLE(std::vector<uint8_t>& b, size_t at, uint64_t v, int n) {
+  for (int i = 0; i < n; ++i) b[at + size_t(i)] = uint8_t(v >> (8 * i));
+}
+
+// Re-seals a hand-edited file, so the reader gets past the checksum to the check under test.
+void resealChecksum(std::vector<uint8_t>& b) {
+  storeLE(b, 24, 0, 8);
+  storeLE(b, 24, XXH3_64bits(b.data(), b.size()), 8);
+}
+
+// File offset of a section's payload, found through the table of contents.
+size_t sectionOffset(const std::vector<uint8_t>& b, const char* tag) {
+  uint32_t count = uint32_t(loadLE(b, 12, 4));
+  for (uint32_t i = 0; i < count; ++i) {
+    size_t at = 32 + size_t(i) * 24;
+    if (std::memcmp(&b[at], tag, 4) == 0) return size_t(loadLE(b, at + 8, 8));
+  }
+  ADD_FAILURE() << "no section " << tag;
+  return 0;
+}
+
+size_t tocEntry(const std::vector<uint8_t>& b, const char* tag) {
+  uint32_t count = uint32_t(loadLE(b, 12, 4));
+  for (uint32_t i = 0; i < count; ++i) {
+    size_t at = 32 + size_t(i) * 24;
+    if (std::memcmp(&b[at], tag, 4) == 0) return at;
+  }
+  ADD_FAILURE() << "no section " << tag;
+  return 0;
+}
+
+void expectRejected(const std::vector<uint8_t>& bytes, const std::string& expectedPart) {
+  pkg::ReadResult r = pkg::read(bytes);
+  EXPECT_FALSE(r.package.has_value());
+  EXPECT_NE(r.error.find(expectedPart), std::string::npos) << "error was: " << r.error;
+}
+
+std::filesystem::path scratchDir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() /
+             ("facet_test_package_" + std::to_string(getpid()) + "_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+TEST(Package, RoundTripPreservesEverything) {
+  pkg::Package p = samplePackage();
+  pkg::ReadResult r = pkg::read(pkg::write(p));
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_TRUE(r.error.empty());
+  EXPECT_EQ(*r.package, p);
+  EXPECT_TRUE(std::signbit(r.package->material.params[2].defaultValue[0]));  // -0.0 survives
+
+  ASSERT_EQ(r.stats.size(), p.variants.size());
+  for (size_t v = 0; v < p.variants.size(); ++v) {
+    ASSERT_EQ(r.stats[v].size(), p.variants[v].shaders.size());
+    for (size_t s = 0; s < p.variants[v].shaders.size(); ++s)
+      EXPECT_EQ(r.stats[v][s].rawSize, p.variants[v].shaders[s].code.size());
+  }
+}
+
+TEST(Package, EmptyPackageRoundTrips) {
+  pkg::Package p;
+  pkg::ReadResult r = pkg::read(pkg::write(p));
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+}
+
+TEST(Package, OutputIsDeterministic) {
+  pkg::Package p = samplePackage();
+  pkg::Package copy = p;
+  std::vector<uint8_t> a = pkg::write(p);
+  std::vector<uint8_t> b = pkg::write(copy);
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(pkg::write(*pkg::read(a).package), a);  // a read package writes back identically
+}
+
+TEST(Package, IdenticalShadersAreStoredOnce) {
+  pkg::Package p = samplePackage();
+  std::vector<uint8_t> before = pkg::write(p);
+
+  pkg::Variant duplicate = p.variants[0];
+  duplicate.key = "tier=mid;lights=0;copy";
+  size_t codeSize = 0;
+  for (const pkg::Shader& s : duplicate.shaders) codeSize += s.code.size();
+  p.variants.push_back(duplicate);
+  std::vector<uint8_t> after = pkg::write(p);
+
+  // Only the key and the 8-byte shader references are added, not the code.
+  EXPECT_LT(after.size() - before.size(), duplicate.key.size() + 8 + 5 * 8 + 8);
+  EXPECT_LT(after.size() - before.size(), codeSize);
+
+  pkg::ReadResult r = pkg::read(after);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  for (const pkg::ShaderStats& s : r.stats.back()) {
+    EXPECT_GT(s.rawSize, 0u);
+    EXPECT_EQ(s.storedSize, 0u);  // shared: charged to variant 0
+  }
+  for (const pkg::ShaderStats& s : r.stats[0]) EXPECT_GT(s.storedSize, 0u);
+}
+
+TEST(Package, TextIsCompressedAndRandomBytesAreStoredRaw) {
+  pkg::Package p = samplePackage();
+  pkg::ReadResult r = pkg::read(pkg::write(p));
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  const pkg::ShaderStats& glsl = r.stats[0][0];
+  EXPECT_LT(glsl.storedSize * 4, glsl.rawSize);
+  const pkg::ShaderStats& spirv = r.stats[0][3];
+  EXPECT_EQ(spirv.storedSize, spirv.rawSize);
+}
+
+TEST(Package, TruncatedPackageIsRejected) {
+  std::vector<uint8_t> bytes = pkg::write(samplePackage());
+  for (size_t n = 0; n < bytes.size(); ++n) {
+    pkg::ReadResult r = pkg::read(std::span(bytes.data(), n));
+    ASSERT_FALSE(r.package.has_value()) << "accepted " << n << " bytes";
+    ASSERT_FALSE(r.error.empty()) << "no error for " << n << " bytes";
+  }
+  expectRejected({bytes.begin(), bytes.begin() + 100},
+                 "package is truncated: the header declares " + std::to_string(bytes.size()) +
+                     " bytes but the file has 100 bytes");
+}
+
+TEST(Package, FlippedByteIsRejectedWithChecksumError) {
+  std::vector<uint8_t> bytes = pkg::write(samplePackage());
+  for (size_t i = 0; i < bytes.size(); ++i) {
+    std::vector<uint8_t> damaged = bytes;
+    damaged[i] ^= 0x10;
+    pkg::ReadResult r = pkg::read(damaged);
+    ASSERT_FALSE(r.package.has_value()) << "accepted a flip at byte " << i;
+    ASSERT_FALSE(r.error.empty());
+    // Magic, version and size are reported as such; everything else by the checksum.
+    if (i >= 24) {
+      ASSERT_EQ(r.error.rfind("checksum mismatch: file is corrupt", 0), 0u) << r.error;
+    }
+  }
+}
+
+TEST(Package, NewerFormatVersionIsRejectedWithClearError) {
+  std::vector<uint8_t> bytes = pkg::write(samplePackage());
+  storeLE(bytes, 8, pkg::kFormatVersion + 1, 4);
+  resealChecksum(bytes);
+  pkg::ReadResult r = pkg::read(bytes);
+  EXPECT_FALSE(r.package.has_value());
+  EXPECT_EQ(r.error, "package format version " + std::to_string(pkg::kFormatVersion + 1) +
+                         " is newer than this runtime supports (" +
+                         std::to_string(pkg::kFormatVersion) + ")");
+}
+
+TEST(Package, NonPackageIsRejectedByMagic) {
+  expectRejected(textCode("#version 300 es\nvoid main() {}\n"), "not a Facet package");
+  expectRejected({}, "package is truncated");
+}
+
+// Each case has a valid checksum, so the structural check is what must catch it. Under ASan an
+// allocation sized from one of these numbers would abort the test.
+TEST(Package, HostileCountsDoNotAllocate) {
+  const std::vector<uint8_t> good = pkg::write(samplePackage());
+  auto hostile = [&](auto edit, const std::string& expectedPart) {
+    std::vector<uint8_t> b = good;
+    edit(b);
+    resealChecksum(b);
+    expectRejected(b, expectedPart);
+  };
+
+  hostile([](auto& b) { storeLE(b, 12, 0xFFFFFFFF, 4); }, "sections");
+  hostile([](auto& b) { b.resize(100); storeLE(b, 16, 100, 8); },
+          "package is truncated: table of contents ends at byte 128 but the file has 100 bytes");
+  hostile([](auto& b) { storeLE(b, tocEntry(b, "BDAT") + 16, ~uint64_t(0) - 4, 8); }, "past the end");
+  hostile([](auto& b) { storeLE(b, tocEntry(b, "BDAT") + 8, ~uint64_t(0) - 4, 8); }, "past the end");
+  hostile([](auto& b) { storeLE(b, tocEntry(b, "META") + 8, 40, 8); }, "inside the header");
+  hostile([](auto& b) { storeLE(b, tocEntry(b, "VARS") + 8, sectionOffset(b, "META"), 8); }, "overlaps");
+  hostile([](auto& b) { std::memcpy(&b[tocEntry(b, "VARS")], "META", 4); }, "exactly one");
+
+  // Counts and lengths at the start of each section.
+  hostile([](auto& b) { storeLE(b, sectionOffset(b, "BTAB"), 0xFFFFFFFF, 4); }, "blob count 4294967295");
+  hostile([](auto& b) { storeLE(b, sectionOffset(b, "VARS"), 0xFFFFFFFF, 4); }, "variant count 4294967295");
+  hostile([](auto& b) { storeLE(b, sectionOffset(b, "META"), 0xFFFFFFF0, 4); }, "compiler version");
+  hostile([](auto& b) { storeLE(b, sectionOffset(b, "VARS") + 4, 0x7FFFFFFF, 4); }, "variant key");
+
+  // Blob 0's table entry: hash, offset, stored size, raw size, codec, reserved.
+  const size_t blob0 = sectionOffset(good, "BTAB") + 4;
+  hostile([&](auto& b) { storeLE(b, blob0 + 24, uint64_t(1) << 40, 8); }, "raw size");
+  hostile([&](auto& b) { storeLE(b, blob0 + 16, uint64_t(1) << 40, 8); }, "stored bytes");
+  hostile([&](auto& b) { storeLE(b, blob0 + 8, 8, 8); }, "starts at data offset 8");
+  hostile([&](auto& b) { storeLE(b, blob0 + 32, 7, 4); }, "unknown codec 7");
+  hostile([&](auto& b) { b[blob0] ^= 1; }, "content hash mismatch");
+  // A zstd frame whose header disagrees with the table's raw size is refused before allocating.
+  hostile([&](auto& b) { storeLE(b, blob0 + 24, loadLE(b, blob0 + 24, 8) + 1, 8); }, "zstd frame of");
+
+  // First shader of the first variant: stage, target, reserved, blob index.
+  const size_t vars = sectionOffset(good, "VARS");
+  const size_t shader0 = vars + 4 + 4 + loadLE(good, vars + 4, 4) + 4;
+  hostile([&](auto& b) { b[shader0] = 9; }, "unknown stage 9");
+  hostile([&](auto& b) { b[shader0 + 1] = 9; }, "unknown target 9");
+  hostile([&](auto& b) { storeLE(b, shader0 + 4, 0xFFFFFFFF, 4); }, "refers to blob 4294967295");
+}
+
+// Damage anywhere past the header, re-sealed so it reaches the structural checks: whatever the
+// reader makes of it, it must answer with a package or an error, and not crash (ASan checks).
+TEST(Package, RandomDamageWithValidChecksumNeverCrashes) {
+  const std::vector<uint8_t> good = pkg::write(samplePackage());
+  std::mt19937 rng(1234);
+  for (int round = 0; round < 3000; ++round) {
+    std::vector<uint8_t> b = good;
+    int edits = 1 + int(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      size_t at = 32 + rng() % (b.size() - 32);
+      b[at] = (rng() % 2) ? uint8_t(rng()) : uint8_t(b[at] ^ 0xFF);
+    }
+    resealChecksum(b);
+    pkg::ReadResult r = pkg::read(b);
+    ASSERT_NE(r.package.has_value(), !r.error.empty()) << r.error;
+  }
+}
+
+TEST(Package, BadParameterIsRejected) {
+  pkg::Package p = samplePackage();
+  p.material.params[2].defaultValue.pop_back();  // vec3 with two components
+  expectRejected(pkg::write(p), "parameter 'offset' at byte");
+
+  // The type byte follows the first parameter's name (see docs/package-format.md, META).
+  std::vector<uint8_t> b = pkg::write(samplePackage());
+  size_t at = sectionOffset(b, "META");
+  for (int i = 0; i < 4; ++i) at += 4 + loadLE(b, at, 4);  // four strings
+  at += 8;                                                  // block size, parameter count
+  at += 4 + loadLE(b, at, 4);                               // parameter name
+  b[at] = 200;
+  resealChecksum(b);
+  expectRejected(b, "has unknown type 200");
+}
+
+TEST(Package, NamesMatchTheFormatDocument) {
+  EXPECT_STREQ(pkg::toString(pkg::Stage::Vertex), "vertex");
+  EXPECT_STREQ(pkg::toString(pkg::Stage::Fragment), "fragment");
+  EXPECT_STREQ(pkg::toString(pkg::Target::GlslEs300), "glsl_es_300");
+  EXPECT_STREQ(pkg::toString(pkg::Target::Spirv), "spirv");
+  EXPECT_STREQ(pkg::toString(pkg::Target::Msl), "msl");
+  for (const char* name : {"float", "vec2", "vec3", "vec4", "int", "bool", "color"}) {
+    std::optional<pkg::ParamType> t = pkg::paramTypeFromString(name);
+    ASSERT_TRUE(t.has_value()) << name;
+    EXPECT_STREQ(pkg::toString(*t), name);
+  }
+  EXPECT_FALSE(pkg::paramTypeFromString("mat4").has_value());
+  EXPECT_FALSE(pkg::paramTypeFromString("").has_value());
+}
+
+TEST(Package, WriteFileThenReadFileRoundTrips) {
+  auto dir = scratchDir("roundtrip");
+  const std::string path = (dir / "brick.matpkg").string();
+  pkg::Package p = samplePackage();
+  std::string error;
+  ASSERT_TRUE(pkg::writeFile(path, pkg::write(p), &error)) << error;
+  p.material.name = "brick2";  // overwriting an existing package replaces it
+  ASSERT_TRUE(pkg::writeFile(path, pkg::write(p), &error)) << error;
+  pkg::ReadResult r = pkg::readFile(path);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);  // no temp left
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Package, WriteFileIsAtomic) {
+  auto dir = scratchDir("atomic");
+  const std::vector<uint8_t> bytes = pkg::write(samplePackage());
+  std::string error;
+
+  // Directory does not exist: nothing can be created.
+  const auto missing = dir / "missing" / "brick.matpkg";
+  EXPECT_FALSE(pkg::writeFile(missing.string(), bytes, &error));
+  EXPECT_FALSE(error.empty());
+  EXPECT_FALSE(std::filesystem::exists(missing));
+
+  // The temporary file is written but the rename fails (the target is a directory): the
+  // temporary file must be cleaned up and the target left as it was.
+  const auto target = dir / "occupied.matpkg";
+  std::filesystem::create_directory(target);
+  std::filesystem::create_directory(target / "child");
+  error.clear();
+  EXPECT_FALSE(pkg::writeFile(target.string(), bytes, &error));
+  EXPECT_NE(error.find("cannot rename"), std::string::npos) << error;
+  EXPECT_TRUE(std::filesystem::is_directory(target));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Package, ReadFileReportsMissingFile) {
+  pkg::ReadResult r = pkg::readFile("/nonexistent/facet/brick.matpkg");
+  EXPECT_FALSE(r.package.has_value());
+  EXPECT_NE(r.error.find("/nonexistent/facet/brick.matpkg"), std::string::npos) << r.error;
+}

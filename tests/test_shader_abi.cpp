@@ -1,0 +1,122 @@
+// The compiled shaders and the runtime agree on the binary interface: block layouts, bindings
+// and vertex input locations are read back from SPIR-V with SPIRV-Cross and compared with
+// shader_abi.h and with the parameter layout the package records.
+#include <gtest/gtest.h>
+#include <spirv_cross_c.h>
+
+#include <cstddef>
+#include <cstring>
+#include <map>
+
+#include "facet/shader_abi.h"
+#include "test_support.h"
+
+namespace {
+
+struct Member {
+  uint32_t offset;
+};
+struct Block {
+  uint32_t set = ~0u, binding = ~0u;
+  size_t size = 0;
+  std::map<std::string, uint32_t> offsets;
+};
+struct Reflection {
+  std::map<std::string, Block> blocks;          // by block type name
+  std::map<std::string, uint32_t> inputs;       // stage input name -> location
+};
+
+Reflection reflect(const std::vector<uint8_t>& code) {
+  Reflection r;
+  std::vector<uint32_t> words(code.size() / 4);
+  std::memcpy(words.data(), code.data(), words.size() * 4);
+  spvc_context ctx = nullptr;
+  spvc_context_create(&ctx);
+  spvc_parsed_ir ir = nullptr;
+  spvc_compiler compiler = nullptr;
+  spvc_resources resources = nullptr;
+  if (spvc_context_parse_spirv(ctx, words.data(), words.size(), &ir) != SPVC_SUCCESS ||
+      spvc_context_create_compiler(ctx, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) != SPVC_SUCCESS ||
+      spvc_compiler_create_shader_resources(compiler, &resources) != SPVC_SUCCESS) {
+    ADD_FAILURE() << spvc_context_get_last_error_string(ctx);
+    spvc_context_destroy(ctx);
+    return r;
+  }
+  const spvc_reflected_resource* list = nullptr;
+  size_t count = 0;
+  spvc_resources_get_resource_list_for_type(resources, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, &list, &count);
+  for (size_t i = 0; i < count; ++i) {
+    spvc_type type = spvc_compiler_get_type_handle(compiler, list[i].base_type_id);
+    Block b;
+    b.set = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationDescriptorSet);
+    b.binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
+    spvc_compiler_get_declared_struct_size(compiler, type, &b.size);
+    for (unsigned m = 0; m < spvc_type_get_num_member_types(type); ++m) {
+      unsigned offset = 0;
+      spvc_compiler_type_struct_member_offset(compiler, type, m, &offset);
+      b.offsets[spvc_compiler_get_member_name(compiler, list[i].base_type_id, m)] = offset;
+    }
+    r.blocks[spvc_compiler_get_name(compiler, list[i].base_type_id)] = b;
+  }
+  spvc_resources_get_resource_list_for_type(resources, SPVC_RESOURCE_TYPE_STAGE_INPUT, &list, &count);
+  for (size_t i = 0; i < count; ++i)
+    r.inputs[list[i].name] = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationLocation);
+  spvc_context_destroy(ctx);
+  return r;
+}
+
+const std::vector<uint8_t>& spirv(const facet::package::Variant& v, facet::package::Stage stage) {
+  for (const auto& s : v.shaders)
+    if (s.stage == stage && s.target == facet::package::Target::Spirv) return s.code;
+  static const std::vector<uint8_t> none;
+  return none;
+}
+
+}  // namespace
+
+TEST(ShaderAbi, FrameAndObjectBlocksMatchTheRuntimeStructs) {
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  const auto& variant = built->package.variants.at(0);
+  Reflection vs = reflect(spirv(variant, facet::package::Stage::Vertex));
+  Reflection fs = reflect(spirv(variant, facet::package::Stage::Fragment));
+
+  using facet::abi::FrameUniforms;
+  using facet::abi::ObjectUniforms;
+  for (const Reflection* r : {&vs, &fs}) {
+    ASSERT_TRUE(r->blocks.count("FrameUniforms"));
+    const Block& frame = r->blocks.at("FrameUniforms");
+    EXPECT_EQ(frame.set, 0u);
+    EXPECT_EQ(frame.binding, facet::abi::kFrameBinding);
+    EXPECT_EQ(frame.size, sizeof(FrameUniforms));
+    EXPECT_EQ(frame.offsets.at("viewProjection"), offsetof(FrameUniforms, viewProjection));
+    EXPECT_EQ(frame.offsets.at("cameraPosition"), offsetof(FrameUniforms, cameraPosition));
+    EXPECT_EQ(frame.offsets.at("lightDirection"), offsetof(FrameUniforms, lightDirection));
+    EXPECT_EQ(frame.offsets.at("lightColor"), offsetof(FrameUniforms, lightColor));
+    EXPECT_EQ(frame.offsets.at("ambient"), offsetof(FrameUniforms, ambient));
+  }
+  const Block& object = vs.blocks.at("ObjectUniforms");
+  EXPECT_EQ(object.binding, facet::abi::kObjectBinding);
+  EXPECT_EQ(object.size, sizeof(ObjectUniforms));
+  EXPECT_EQ(object.offsets.at("model"), offsetof(ObjectUniforms, model));
+  EXPECT_EQ(object.offsets.at("normalMatrix"), offsetof(ObjectUniforms, normalMatrix));
+
+  EXPECT_EQ(vs.inputs.at("a_position"), facet::abi::kAttribPosition);
+  EXPECT_EQ(vs.inputs.at("a_normal"), facet::abi::kAttribNormal);
+}
+
+TEST(ShaderAbi, MaterialParamsLayoutMatchesThePackageRecord) {
+  for (const std::string& path : facet::test::exampleMaterials()) {
+    SCOPED_TRACE(path);
+    auto built = facet::test::buildFile(path);
+    ASSERT_TRUE(built);
+    const auto& info = built->package.material;
+    Reflection fs = reflect(spirv(built->package.variants.at(0), facet::package::Stage::Fragment));
+    ASSERT_TRUE(fs.blocks.count("MaterialParams"));
+    const Block& block = fs.blocks.at("MaterialParams");
+    EXPECT_EQ(block.binding, facet::abi::kMaterialBinding);
+    // SPIR-V's declared size ends at the last member; std140 rounds the buffer up to 16.
+    EXPECT_EQ((block.size + 15) / 16 * 16, info.paramBlockSize);
+    for (const auto& p : info.params) EXPECT_EQ(block.offsets.at(p.name), p.offset) << p.name;
+  }
+}

@@ -1,0 +1,69 @@
+#include "test_support.h"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace facet::test {
+
+namespace fs = std::filesystem;
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> exampleMaterials() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(examplePath("materials")))
+    if (entry.path().extension() == ".mat") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::optional<compiler::BuildResult> buildFile(const std::string& path) {
+  ir::SourceFile file{path, readText(path)};
+  ir::Diagnostics diags(file);
+  auto material = ir::compileSource(file, diags);
+  EXPECT_TRUE(material.has_value()) << diags.format();
+  if (!material) return std::nullopt;
+  std::string error;
+  auto built = compiler::buildMaterial(*material, {}, &error);
+  EXPECT_TRUE(built.has_value()) << error;
+  return built;
+}
+
+std::string diagnosticsFor(const std::string& text, const std::string& path) {
+  ir::SourceFile file{path, text};
+  ir::Diagnostics diags(file);
+  ir::compileSource(file, diags);
+  return diags.format();
+}
+
+std::string scratchDir(const std::string& name) {
+  fs::path dir = fs::path(FACET_BINARY_DIR) / "test-scratch" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+CommandResult run(const std::string& command) {
+  std::string errFile = scratchDir("run-stderr") + "/stderr.txt";
+  CommandResult r;
+  FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
+  int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = readText(errFile);
+  return r;
+}
+
+}  // namespace facet::test

@@ -1,0 +1,42 @@
+// Helpers shared by Facet's tests: compiling example materials through the library, reading
+// files, running the command-line tools.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/compiler/build.h"
+#include "facet/ir/check.h"
+
+namespace facet::test {
+
+inline std::string sourceDir() { return FACET_SOURCE_DIR; }
+inline std::string examplePath(const std::string& relative) { return sourceDir() + "/examples/" + relative; }
+
+std::string readText(const std::string& path);
+
+// Every examples/materials/*.mat, sorted.
+std::vector<std::string> exampleMaterials();
+
+// Parses, checks and builds a material file; fails the current test on any error.
+std::optional<compiler::BuildResult> buildFile(const std::string& path);
+
+// Parses and checks material text; returns the diagnostics as formatted text.
+std::string diagnosticsFor(const std::string& text, const std::string& path = "test.mat");
+
+// A fresh, empty folder under the build tree, removed at the start of each use.
+std::string scratchDir(const std::string& name);
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+// Runs a shell command with stdout and stderr captured separately.
+CommandResult run(const std::string& command);
+
+}  // namespace facet::test
