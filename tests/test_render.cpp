@@ -27,46 +27,44 @@ std::string compileExamplePackages() {
   return dir;
 }
 
+// The example sphere scene rendered once per test process by both backends. Failures are kept
+// as text and asserted by every test, so a broken setup shows as failed tests, never skipped ones.
+struct SphereRenders {
+  std::string error;
+  std::string packages;
+  facet::runtime::Scene scene;
+  std::unique_ptr<facet::runtime::SceneFrame> frame;
+  FrameResult vulkan, gl;
+};
+
+const SphereRenders& sphereRenders() {
+  static SphereRenders r = [] {
+    SphereRenders out;
+    std::string& error = out.error;
+    out.packages = compileExamplePackages();
+    auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/sphere.json"), &error);
+    if (!scene) return out;
+    out.scene = *scene;
+    out.frame = facet::runtime::SceneFrame::prepare(*scene, out.packages, &error);
+    if (!out.frame) return out;
+    auto vk = facet::runtime::createVulkanBackend({true}, &error);
+    if (!vk || !vk->render(out.frame->frame(), &out.vulkan, &error)) return out;
+    for (const auto& m : vk->validationErrors()) error += "Vulkan validation: " + m + "\n";
+    auto gl = facet::runtime::createGlBackend(&error);
+    if (!gl || !gl->render(out.frame->frame(), &out.gl, &error)) return out;
+    for (const auto& m : gl->validationErrors()) error += "GL debug output: " + m + "\n";
+    if (out.vulkan.ldr.size() != out.gl.ldr.size()) error += "image sizes differ\n";
+    return out;
+  }();
+  return r;
+}
+
 class SphereScene : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    packages_ = compileExamplePackages();
-    auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/sphere.json"), &error);
-    ASSERT_TRUE(scene) << error;
-    scene_ = new facet::runtime::Scene(*scene);
-    auto frame = facet::runtime::SceneFrame::prepare(*scene, packages_, &error);
-    ASSERT_TRUE(frame) << error;
-    frame_ = frame.release();
-
-    auto vk = facet::runtime::createVulkanBackend({true}, &error);
-    ASSERT_TRUE(vk) << error;
-    vulkan_ = new FrameResult();
-    ASSERT_TRUE(vk->render(frame_->frame(), vulkan_, &error)) << error;
-    for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
-
-    auto gl = facet::runtime::createGlBackend(&error);
-    ASSERT_TRUE(gl) << error;
-    gl_ = new FrameResult();
-    ASSERT_TRUE(gl->render(frame_->frame(), gl_, &error)) << error;
-    for (const auto& m : gl->validationErrors()) ADD_FAILURE() << "GL debug output: " << m;
-  }
-  static void TearDownTestSuite() {
-    delete vulkan_;
-    delete gl_;
-    delete frame_;
-    delete scene_;
-  }
-  void SetUp() override {
-    ASSERT_TRUE(vulkan_ && gl_) << "rendering failed in SetUpTestSuite";
-    ASSERT_EQ(vulkan_->ldr.size(), gl_->ldr.size());
-  }
-
-  static inline std::string packages_;
-  static inline facet::runtime::Scene* scene_ = nullptr;
-  static inline facet::runtime::SceneFrame* frame_ = nullptr;
-  static inline FrameResult* vulkan_ = nullptr;
-  static inline FrameResult* gl_ = nullptr;
+  void SetUp() override { ASSERT_EQ(r.error, ""); }
+  const SphereRenders& r = sphereRenders();
+  const FrameResult* vulkan_ = &r.vulkan;
+  const FrameResult* gl_ = &r.gl;
 };
 
 }  // namespace
@@ -93,20 +91,20 @@ TEST_F(SphereScene, VulkanAndGlAgreePixelByPixel) {
 // BRDF for the same light, camera and parameters. Points within 0.25 of grazing are skipped:
 // there a pixel's centre and the tessellated silhouette differ by more than the BRDF does.
 TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
-  const auto& scene = *scene_;
+  const auto& scene = r.scene;
   const auto& cam = scene.camera;
   glm::dmat4 viewProjection = glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height,
                                                cam.nearPlane, cam.farPlane) *
                               glm::lookAt(cam.position, cam.target, cam.up);
   glm::dmat4 inverse = glm::inverse(viewProjection);
-  const auto& f = frame_->frame().frame;
+  const auto& f = r.frame->frame().frame;
   glm::dvec3 l(f.lightDirection[0], f.lightDirection[1], f.lightDirection[2]);
   glm::dvec3 light(f.lightColor[0], f.lightColor[1], f.lightColor[2]);
   glm::dvec3 ambient(f.ambient[0], f.ambient[1], f.ambient[2]);
 
   // red_plastic with its package defaults (colour already linear in the package).
   std::string error;
-  auto material = facet::runtime::LoadedMaterial::load(packages_ + "/red_plastic.matpkg", &error);
+  auto material = facet::runtime::LoadedMaterial::load(r.packages + "/red_plastic.matpkg", &error);
   ASSERT_TRUE(material) << error;
   facet::reference::Surface surface;
   for (const auto& p : material->info().params) {

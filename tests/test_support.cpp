@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -46,7 +47,8 @@ std::string diagnosticsFor(const std::string& text, const std::string& path) {
 }
 
 std::string scratchDir(const std::string& name) {
-  fs::path dir = fs::path(FACET_BINARY_DIR) / "test-scratch" / name;
+  // ctest runs test cases as parallel processes: the pid keeps their folders apart.
+  fs::path dir = fs::path(FACET_BINARY_DIR) / "test-scratch" / (name + "." + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

@@ -118,8 +118,8 @@ uint8_t expectedLdr(float hdr) {
   const float x = std::clamp(hdr, 0.0f, 160.0f);
   const float mapped =
       std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-  const float srgb = mapped < 0.0031308f ? mapped * 12.92f
-                                         : 1.055f * std::pow(mapped, 1.0f / 2.4f) - 0.055f;
+  const float srgb =
+      mapped < 0.0031308f ? mapped * 12.92f : 1.055f * std::pow(mapped, 1.0f / 2.4f) - 0.055f;
   return static_cast<uint8_t>(std::lround(srgb * 255.0f));
 }
 
@@ -168,9 +168,9 @@ TEST(VulkanBackend, TriangleCoversExpectedPixelsUpright) {
   FrameResult result = renderOrFail(*backend, frame);
   ASSERT_EQ(result.hdr.size(), 32u * 32u * 4u);
 
-  expectHdr(result, 9, 9, kRed);    // near the right angle: upper left of the triangle
-  expectHdr(result, 9, 13, kRed);   // along the top edge
-  expectHdr(result, 13, 9, kRed);   // along the left edge
+  expectHdr(result, 9, 9, kRed);      // near the right angle: upper left of the triangle
+  expectHdr(result, 9, 13, kRed);     // along the top edge
+  expectHdr(result, 13, 9, kRed);     // along the left edge
   expectHdr(result, 14, 14, kBlack);  // beyond the hypotenuse
   // Mirror images of (9, 9) in each other quadrant stay clear: no flip in x or y.
   expectHdr(result, 22, 9, kBlack);

@@ -62,9 +62,9 @@ ReadResult readFile(const std::string& path) {
     result.error = "cannot read '" + path + "': the file changed size while being read";
     return result;
   }
-  result = read(bytes);
-  if (!result.package) result.error = path + ": " + result.error;
-  return result;
+  // Callers name the file in their messages ("<path>: error: ..."), so the reader's message
+  // stays about the content.
+  return read(bytes);
 }
 
 bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::string* error) {
@@ -75,7 +75,7 @@ bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::str
   // The pid keeps two matc processes writing the same package from sharing a temporary file.
   const std::string temp = path + ".tmp." + std::to_string(processId());
   File f(std::fopen(temp.c_str(), "wb"));
-  if (!f) return fail("cannot create '" + temp + "': " + std::strerror(errno));
+  if (!f) return fail("cannot write '" + path + "': " + std::strerror(errno));
   bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f.get()) == bytes.size();
   int writeErrno = errno;
   // fclose flushes, so its failure is a write failure too.
@@ -83,13 +83,13 @@ bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::str
   if (!written || !closed) {
     std::string reason = std::strerror(written ? errno : writeErrno);
     std::remove(temp.c_str());
-    return fail("cannot write '" + temp + "': " + reason);
+    return fail("cannot write '" + path + "': " + reason);
   }
   std::error_code ec;
   std::filesystem::rename(temp, path, ec);
   if (ec) {
     std::remove(temp.c_str());
-    return fail("cannot rename '" + temp + "' to '" + path + "': " + ec.message());
+    return fail("cannot write '" + path + "': " + ec.message());
   }
   return true;
 }

@@ -2,18 +2,18 @@
 // and a readback of both. Everything runs synchronously: render() records one command buffer,
 // submits it and waits on a fence, so between frames the device is idle and resources can be
 // rewritten or recreated without further synchronisation.
-#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <memory>
-#include <new>
 #include <unordered_map>
 #include <vector>
 
 #include "facet/render_backend.h"
 #include "vk_check.h"
+#include "vk_commands.h"
 #include "vk_context.h"
 #include "vk_convert.h"
+#include "vk_frame.h"
 #include "vk_pipeline.h"
 #include "vk_resources.h"
 #include "vk_targets.h"
@@ -25,25 +25,6 @@ using namespace vulkan;
 
 // A lavapipe frame under ASan and validation takes well under a second; a minute means hung.
 constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
-// Bound to MaterialParams when a draw has no parameter bytes.
-constexpr VkDeviceSize kEmptyMaterialSize = 16;
-
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
-  return (value + alignment - 1) / alignment * alignment;
-}
-
-// Where one draw's data sits in the frame arena.
-struct DrawSlot {
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VkDescriptorSet set = VK_NULL_HANDLE;
-  VkDeviceSize objectOffset = 0;
-  VkDeviceSize materialOffset = 0;
-  VkDeviceSize materialSize = 0;
-  VkDeviceSize vertexOffset = 0;
-  VkDeviceSize indexOffset = 0;
-  uint32_t vertexCount = 0;
-  uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
-};
 
 // A pipeline built for one ShaderProgram. The SPIR-V is kept so that a different program later
 // allocated at the same address is noticed and gets its own pipeline.
@@ -64,20 +45,15 @@ class VulkanBackend final : public RenderBackend {
 
   const char* name() const override { return "vulkan"; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
-  const std::vector<std::string>& validationErrors() const override {
-    return ctx_.messages.errors;
-  }
+  const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
 
  private:
   bool createFixedObjects(std::string* error);
-  bool checkFrame(const FrameDesc& frame, std::string* error) const;
   bool ensureTargets(uint32_t width, uint32_t height, std::string* error);
   bool pipelineFor(const ShaderProgram& program, VkPipeline* out, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool allocateDrawSets(std::vector<DrawSlot>* slots, std::string* error);
-  bool recordCommands(const FrameDesc& frame, const std::vector<DrawSlot>& slots,
-                      std::string* error);
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
 
@@ -111,6 +87,10 @@ class VulkanBackend final : public RenderBackend {
 
   RenderTargets targets_;
   std::unordered_map<const ShaderProgram*, CachedPipeline> pipelines_;
+
+  // Set when a submission failed or did not finish: the command buffer and fence may still be
+  // in use, so no further frame is attempted. Holds the original error.
+  std::string deviceFailure_;
 };
 
 VulkanBackend::~VulkanBackend() {
@@ -151,8 +131,8 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = ctx_.queueFamily;
-  if (!check(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool_),
-             "vkCreateCommandPool", error)) {
+  if (!check(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool_), "vkCreateCommandPool",
+             error)) {
     commandPool_ = VK_NULL_HANDLE;
     return false;
   }
@@ -239,12 +219,24 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
     *error = "render: result is null";
     return false;
   }
+  if (!deviceFailure_.empty()) {
+    *error = "Vulkan backend unusable after an earlier failure: " + deviceFailure_;
+    return false;
+  }
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
     std::vector<DrawSlot> slots;
-    if (!checkFrame(frame, error) || !ensureTargets(frame.width, frame.height, error) ||
-        !uploadFrame(frame, &slots, error) || !allocateDrawSets(&slots, error) ||
-        !recordCommands(frame, slots, error) || !submitAndWait(error)) {
+    const FrameObjects objects{forwardPass_, postPass_,     forwardLayout_,
+                               postLayout_,  postPipeline_, postSet_};
+    if (!checkFrame(frame, ctx_.properties.limits, error) ||
+        !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
+        !allocateDrawSets(&slots, error) ||
+        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, arena_.buffer, slots,
+                     error)) {
+      return false;
+    }
+    if (!submitAndWait(error)) {
+      deviceFailure_ = *error;
       return false;
     }
     readBack(result);
@@ -253,42 +245,6 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
     *error = std::string("Vulkan backend: ") + e.what();
     return false;
   }
-}
-
-bool VulkanBackend::checkFrame(const FrameDesc& frame, std::string* error) const {
-  const uint32_t maxSize = ctx_.properties.limits.maxImageDimension2D;
-  if (frame.width == 0 || frame.height == 0 || frame.width > maxSize || frame.height > maxSize) {
-    *error = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-             " is outside 1.." + std::to_string(maxSize);
-    return false;
-  }
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
-    const std::string which = "draw " + std::to_string(i) + ": ";
-    if (!draw.mesh || !draw.program) {
-      *error = which + "mesh or program is null";
-      return false;
-    }
-    const size_t floats = draw.mesh->vertices.size();
-    if (floats % abi::kVertexFloats != 0) {
-      *error = which + "vertex data is not a whole number of " +
-               std::to_string(abi::kVertexFloats) + "-float vertices";
-      return false;
-    }
-    const size_t vertexCount = floats / abi::kVertexFloats;
-    for (uint32_t index : draw.mesh->indices) {
-      if (index >= vertexCount) {
-        *error = which + "index " + std::to_string(index) + " is out of range (" +
-                 std::to_string(vertexCount) + " vertices)";
-        return false;
-      }
-    }
-    if (draw.materialParams.size() > ctx_.properties.limits.maxUniformBufferRange) {
-      *error = which + "materialParams is larger than maxUniformBufferRange";
-      return false;
-    }
-  }
-  return true;
 }
 
 bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
@@ -310,8 +266,7 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
   return true;
 }
 
-bool VulkanBackend::pipelineFor(const ShaderProgram& program, VkPipeline* out,
-                                std::string* error) {
+bool VulkanBackend::pipelineFor(const ShaderProgram& program, VkPipeline* out, std::string* error) {
   auto found = pipelines_.find(&program);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
@@ -349,57 +304,19 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
                           &arena_, error);
 }
 
-// Lays the frame's uniforms, vertices and indices out in the arena and copies them in:
-// FrameUniforms first, then per draw ObjectUniforms, MaterialParams, vertices, indices.
+// Builds (or finds) each draw's pipeline, then lays the frame out in the arena and copies it in.
 bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots,
                                 std::string* error) {
-  const VkDeviceSize alignment =
-      std::max<VkDeviceSize>(ctx_.properties.limits.minUniformBufferOffsetAlignment, 16);
-  VkDeviceSize size = alignUp(sizeof(abi::FrameUniforms), alignment);
-  slots->resize(frame.draws.size());
+  const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
   for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
-    DrawSlot& slot = (*slots)[i];
-    if (!pipelineFor(*draw.program, &slot.pipeline, error)) return false;
-    slot.vertexCount = static_cast<uint32_t>(draw.mesh->vertices.size() / abi::kVertexFloats);
-    slot.indexCount = static_cast<uint32_t>(draw.mesh->indices.size());
-    slot.materialSize = draw.materialParams.empty()
-                            ? kEmptyMaterialSize
-                            : alignUp(draw.materialParams.size(), 16);  // whole std140 vec4s
-    slot.objectOffset = size;
-    size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
-    slot.materialOffset = size;
-    size = alignUp(size + slot.materialSize, alignment);
-    slot.vertexOffset = size;
-    size = alignUp(size + draw.mesh->vertices.size() * sizeof(float), alignment);
-    slot.indexOffset = size;
-    size = alignUp(size + draw.mesh->indices.size() * sizeof(uint32_t), alignment);
+    if (!pipelineFor(*frame.draws[i].program, &(*slots)[i].pipeline, error)) {
+      *error = "draw " + std::to_string(i) + ": " + *error;
+      return false;
+    }
   }
   if (!ensureArena(size, error)) return false;
-
-  auto* base = static_cast<uint8_t*>(arena_.mapped);
-  abi::FrameUniforms frameUniforms = frame.frame;
-  glToVulkanClip(frame.frame.viewProjection, frameUniforms.viewProjection);
-  std::memcpy(base, &frameUniforms, sizeof(frameUniforms));
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
-    const DrawSlot& slot = (*slots)[i];
-    std::memcpy(base + slot.objectOffset, &draw.object, sizeof(draw.object));
-    std::memset(base + slot.materialOffset, 0, slot.materialSize);
-    if (!draw.materialParams.empty()) {
-      std::memcpy(base + slot.materialOffset, draw.materialParams.data(),
-                  draw.materialParams.size());
-    }
-    if (!draw.mesh->vertices.empty()) {
-      std::memcpy(base + slot.vertexOffset, draw.mesh->vertices.data(),
-                  draw.mesh->vertices.size() * sizeof(float));
-    }
-    if (!draw.mesh->indices.empty()) {
-      std::memcpy(base + slot.indexOffset, draw.mesh->indices.data(),
-                  draw.mesh->indices.size() * sizeof(uint32_t));
-    }
-  }
-  // The memory is host-coherent, and vkQueueSubmit makes host writes visible to the device.
+  // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
+  writeFrame(frame, *slots, arena_.mapped);
   return true;
 }
 
@@ -419,14 +336,13 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
     info.maxSets = capacity;
     info.poolSizeCount = 1;
     info.pPoolSizes = &poolSize;
-    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool_),
-               "vkCreateDescriptorPool", error)) {
+    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool_), "vkCreateDescriptorPool",
+               error)) {
       drawPool_ = VK_NULL_HANDLE;
       return false;
     }
     drawPoolCapacity_ = capacity;
-  } else if (!check(vkResetDescriptorPool(device, drawPool_, 0), "vkResetDescriptorPool",
-                    error)) {
+  } else if (!check(vkResetDescriptorPool(device, drawPool_, 0), "vkResetDescriptorPool", error)) {
     return false;
   }
 
@@ -437,8 +353,8 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
   allocInfo.descriptorPool = drawPool_;
   allocInfo.descriptorSetCount = count;
   allocInfo.pSetLayouts = layouts.data();
-  if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()),
-             "vkAllocateDescriptorSets", error)) {
+  if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets",
+             error)) {
     return false;
   }
 
@@ -450,8 +366,7 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
     buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
     buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
     buffers[3 * i + 2] = {arena_.buffer, slot.materialOffset, slot.materialSize};
-    const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding,
-                                  abi::kMaterialBinding};
+    const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
     for (uint32_t b = 0; b < 3; ++b) {
       VkWriteDescriptorSet& write = writes[3 * i + b];
       write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -462,104 +377,8 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
       write.pBufferInfo = &buffers[3 * i + b];
     }
   }
-  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0,
-                         nullptr);
+  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
   return true;
-}
-
-bool VulkanBackend::recordCommands(const FrameDesc& frame, const std::vector<DrawSlot>& slots,
-                                   std::string* error) {
-  VkCommandBuffer cmd = commandBuffer_;
-  if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error)) return false;
-  VkCommandBufferBeginInfo beginInfo{};
-  beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  if (!check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) return false;
-
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(frame.width),
-                            static_cast<float>(frame.height), 0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, {frame.width, frame.height}};
-
-  // Forward pass.
-  VkClearValue clears[2]{};
-  for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = frame.clearColor[c];
-  clears[1].depthStencil = {1.0f, 0};
-  VkRenderPassBeginInfo passInfo{};
-  passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-  passInfo.renderPass = forwardPass_;
-  passInfo.framebuffer = targets_.forwardFramebuffer;
-  passInfo.renderArea = scissor;
-  passInfo.clearValueCount = 2;
-  passInfo.pClearValues = clears;
-  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  VkPipeline bound = VK_NULL_HANDLE;
-  for (const DrawSlot& slot : slots) {
-    if (slot.vertexCount == 0) continue;
-    if (slot.pipeline != bound) {
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
-      bound = slot.pipeline;
-    }
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, forwardLayout_, 0, 1,
-                            &slot.set, 0, nullptr);
-    vkCmdBindVertexBuffers(cmd, 0, 1, &arena_.buffer, &slot.vertexOffset);
-    if (slot.indexCount > 0) {
-      vkCmdBindIndexBuffer(cmd, arena_.buffer, slot.indexOffset, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, slot.indexCount, 1, 0, 0, 0);
-    } else {
-      vkCmdDraw(cmd, slot.vertexCount, 1, 0, 0);
-    }
-  }
-  vkCmdEndRenderPass(cmd);
-
-  // Post pass: one full-screen triangle reading the HDR image.
-  passInfo.renderPass = postPass_;
-  passInfo.framebuffer = targets_.postFramebuffer;
-  passInfo.clearValueCount = 0;
-  passInfo.pClearValues = nullptr;
-  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, postPipeline_);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, postLayout_, 0, 1, &postSet_, 0,
-                          nullptr);
-  vkCmdDraw(cmd, 3, 1, 0, 0);
-  vkCmdEndRenderPass(cmd);
-
-  // Readback. The post pass left the LDR image in TRANSFER_SRC_OPTIMAL; the HDR image still
-  // needs its transition, after the post pass's sampling of it.
-  VkImageMemoryBarrier hdrBarrier{};
-  hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
-  hdrBarrier.srcAccessMask = 0;  // write-after-read only needs the execution dependency
-  hdrBarrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-  hdrBarrier.oldLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  hdrBarrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  hdrBarrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  hdrBarrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  hdrBarrier.image = targets_.hdr.image;
-  hdrBarrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                       &hdrBarrier);
-
-  VkBufferImageCopy region{};
-  region.bufferRowLength = 0;  // tightly packed; image row 0 (the top) first
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {frame.width, frame.height, 1};
-  vkCmdCopyImageToBuffer(cmd, targets_.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         targets_.hdrReadback.buffer, 1, &region);
-  vkCmdCopyImageToBuffer(cmd, targets_.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         targets_.ldrReadback.buffer, 1, &region);
-
-  VkMemoryBarrier hostBarrier{};
-  hostBarrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                       &hostBarrier, 0, nullptr, 0, nullptr);
-
-  return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error);
 }
 
 bool VulkanBackend::submitAndWait(std::string* error) {

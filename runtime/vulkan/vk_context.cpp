@@ -46,8 +46,8 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
 VkDebugUtilsMessengerCreateInfoEXT messengerInfo(DebugMessages* messages) {
   VkDebugUtilsMessengerCreateInfoEXT info{};
   info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
-  info.messageSeverity =
-      VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT |
+                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
   info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
@@ -137,8 +137,9 @@ bool Context::createInstance(bool validation, std::string* error) {
   std::vector<const char*> extensions;
   if (validation) {
     if (!layerAvailable(kValidationLayer)) {
-      *error = std::string("Vulkan validation was requested (VulkanOptions::validation or "
-                           "FACET_VK_VALIDATION=1) but ") +
+      *error = std::string(
+                   "Vulkan validation was requested (VulkanOptions::validation or "
+                   "FACET_VK_VALIDATION=1) but ") +
                kValidationLayer + " is not installed (Debian: vulkan-validationlayers)";
       return false;
     }
@@ -181,8 +182,8 @@ bool Context::createInstance(bool validation, std::string* error) {
       *error = "vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT) returned null";
       return false;
     }
-    if (!check(create(instance, &debugInfo, nullptr, &messenger_),
-               "vkCreateDebugUtilsMessengerEXT", error)) {
+    if (!check(create(instance, &debugInfo, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT",
+               error)) {
       messenger_ = VK_NULL_HANDLE;
       return false;
     }

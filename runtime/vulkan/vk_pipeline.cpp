@@ -183,8 +183,8 @@ bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::strin
   return true;
 }
 
-bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout,
-                          VkPipelineLayout* out, std::string* error) {
+bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout, VkPipelineLayout* out,
+                          std::string* error) {
   VkPipelineLayoutCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   info.setLayoutCount = 1;

@@ -24,8 +24,8 @@ bool createPostRenderPass(VkDevice device, VkRenderPass* out, std::string* error
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
 // Set 0 of the post shaders: the HDR colour as a combined image sampler.
 bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
-bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout,
-                          VkPipelineLayout* out, std::string* error);
+bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout, VkPipelineLayout* out,
+                          std::string* error);
 
 enum class PipelineKind {
   kForward,  // abi vertex stream, depth test LESS + write

@@ -37,8 +37,7 @@ bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  if (!check(vkCreateBuffer(ctx.device, &info, nullptr, &buffer.buffer), "vkCreateBuffer",
-             error)) {
+  if (!check(vkCreateBuffer(ctx.device, &info, nullptr, &buffer.buffer), "vkCreateBuffer", error)) {
     return false;
   }
   VkMemoryRequirements requirements{};
@@ -90,10 +89,10 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
   }
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(ctx.device, image.image, &requirements);
-  bool ok = allocate(ctx, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, &image.memory,
-                     error) &&
-            check(vkBindImageMemory(ctx.device, image.image, image.memory, 0),
-                  "vkBindImageMemory", error);
+  bool ok =
+      allocate(ctx, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, &image.memory, error) &&
+      check(vkBindImageMemory(ctx.device, image.image, image.memory, 0), "vkBindImageMemory",
+            error);
   if (ok) {
     VkImageViewCreateInfo viewInfo{};
     viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
@@ -101,8 +100,8 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
     viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = format;
     viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
-    ok = check(vkCreateImageView(ctx.device, &viewInfo, nullptr, &image.view),
-               "vkCreateImageView", error);
+    ok = check(vkCreateImageView(ctx.device, &viewInfo, nullptr, &image.view), "vkCreateImageView",
+               error);
   }
   if (!ok) {
     destroyImage(ctx.device, &image);

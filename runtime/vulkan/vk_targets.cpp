@@ -9,9 +9,8 @@
 namespace facet::runtime::vulkan {
 namespace {
 
-bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views,
-                       uint32_t count, uint32_t width, uint32_t height, VkFramebuffer* out,
-                       std::string* error) {
+bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
+                       uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error) {
   VkFramebufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   info.renderPass = pass;
@@ -53,8 +52,8 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
     const std::array<VkImageView, 2> forwardViews{t.hdr.view, t.depth.view};
     ok = createFramebuffer(ctx.device, forwardPass, forwardViews.data(), 2, width, height,
                            &t.forwardFramebuffer, error) &&
-         createFramebuffer(ctx.device, postPass, &t.ldr.view, 1, width, height,
-                           &t.postFramebuffer, error);
+         createFramebuffer(ctx.device, postPass, &t.ldr.view, 1, width, height, &t.postFramebuffer,
+                           error);
   }
   if (!ok) {
     destroyRenderTargets(ctx.device, &t);
@@ -66,7 +65,8 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
 }
 
 void destroyRenderTargets(VkDevice device, RenderTargets* targets) {
-  if (targets->forwardFramebuffer) vkDestroyFramebuffer(device, targets->forwardFramebuffer, nullptr);
+  if (targets->forwardFramebuffer)
+    vkDestroyFramebuffer(device, targets->forwardFramebuffer, nullptr);
   if (targets->postFramebuffer) vkDestroyFramebuffer(device, targets->postFramebuffer, nullptr);
   destroyImage(device, &targets->hdr);
   destroyImage(device, &targets->depth);

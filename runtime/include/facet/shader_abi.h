@@ -23,6 +23,18 @@ inline constexpr uint32_t kFrameBinding = 0;     // block "FrameUniforms"
 inline constexpr uint32_t kObjectBinding = 1;    // block "ObjectUniforms"
 inline constexpr uint32_t kMaterialBinding = 2;  // block "MaterialParams" (layout recorded in the package)
 
+// Textures: combined image samplers. Vulkan: descriptor set 1 (set 0 holds the uniform blocks),
+// binding = the value below; GL: texture unit = the same value, and the sampler uniform is found
+// by the name the DrawItem / FrameDesc gives.
+//   0..7   frame textures, shared by every draw (lookup tables, environment)
+//   8..15  the material's texture parameters, in declaration order (kMaterialTextureBase + i)
+inline constexpr uint32_t kTextureSet = 1;
+inline constexpr uint32_t kDfgLutBinding = 0;           // "facet_dfgLut": split-sum DFG terms
+inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT
+inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
+inline constexpr uint32_t kMaterialTextureBase = 8;
+inline constexpr uint32_t kMaxMaterialTextures = 8;
+
 // Post pass: the HDR colour of the forward pass, as a combined image sampler at set 0 binding 0
 // (Vulkan) or texture unit 0 (GL, uniform "hdrColor").
 inline constexpr uint32_t kPostHdrBinding = 0;

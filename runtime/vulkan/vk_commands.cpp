@@ -1,0 +1,102 @@
+#include "vk_commands.h"
+
+#include "vk_check.h"
+
+namespace facet::runtime::vulkan {
+
+bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
+                 const float clearColor[4], VkBuffer arena, const std::vector<DrawSlot>& slots,
+                 std::string* error) {
+  if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error)) return false;
+  VkCommandBufferBeginInfo beginInfo{};
+  beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  if (!check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) return false;
+
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(targets.width), static_cast<float>(targets.height),
+      0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {targets.width, targets.height}};
+
+  // Forward pass.
+  VkClearValue clears[2]{};
+  for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = clearColor[c];
+  clears[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo passInfo{};
+  passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  passInfo.renderPass = objects.forwardPass;
+  passInfo.framebuffer = targets.forwardFramebuffer;
+  passInfo.renderArea = scissor;
+  passInfo.clearValueCount = 2;
+  passInfo.pClearValues = clears;
+  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (const DrawSlot& slot : slots) {
+    if (slot.vertexCount == 0) continue;
+    if (slot.pipeline != bound) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
+      bound = slot.pipeline;
+    }
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 1,
+                            &slot.set, 0, nullptr);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &arena, &slot.vertexOffset);
+    if (slot.indexCount > 0) {
+      vkCmdBindIndexBuffer(cmd, arena, slot.indexOffset, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, slot.indexCount, 1, 0, 0, 0);
+    } else {
+      vkCmdDraw(cmd, slot.vertexCount, 1, 0, 0);
+    }
+  }
+  vkCmdEndRenderPass(cmd);
+
+  // Post pass: one full-screen triangle reading the HDR image.
+  passInfo.renderPass = objects.postPass;
+  passInfo.framebuffer = targets.postFramebuffer;
+  passInfo.clearValueCount = 0;
+  passInfo.pClearValues = nullptr;
+  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postPipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postLayout, 0, 1,
+                          &objects.postSet, 0, nullptr);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  vkCmdEndRenderPass(cmd);
+
+  // Readback. The post pass left the LDR image in TRANSFER_SRC_OPTIMAL; the HDR image still
+  // needs its transition, after the post pass's sampling of it.
+  VkImageMemoryBarrier hdrBarrier{};
+  hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  hdrBarrier.srcAccessMask = 0;  // write-after-read only needs the execution dependency
+  hdrBarrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  hdrBarrier.oldLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  hdrBarrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  hdrBarrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  hdrBarrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  hdrBarrier.image = targets.hdr.image;
+  hdrBarrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       0, 0, nullptr, 0, nullptr, 1, &hdrBarrier);
+
+  VkBufferImageCopy region{};
+  region.bufferRowLength = 0;  // tightly packed; image row 0 (the top) first
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {targets.width, targets.height, 1};
+  vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         targets.hdrReadback.buffer, 1, &region);
+  vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         targets.ldrReadback.buffer, 1, &region);
+
+  VkMemoryBarrier hostBarrier{};
+  hostBarrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &hostBarrier, 0, nullptr, 0, nullptr);
+
+  return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error);
+}
+
+}  // namespace facet::runtime::vulkan

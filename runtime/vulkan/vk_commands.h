@@ -1,0 +1,31 @@
+// Recording of one frame's command buffer: forward pass, post pass, readback copies.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <vector>
+
+#include "vk_frame.h"
+#include "vk_targets.h"
+
+namespace facet::runtime::vulkan {
+
+// The long-lived objects a frame's commands refer to.
+struct FrameObjects {
+  VkRenderPass forwardPass = VK_NULL_HANDLE;
+  VkRenderPass postPass = VK_NULL_HANDLE;
+  VkPipelineLayout forwardLayout = VK_NULL_HANDLE;
+  VkPipelineLayout postLayout = VK_NULL_HANDLE;
+  VkPipeline postPipeline = VK_NULL_HANDLE;
+  VkDescriptorSet postSet = VK_NULL_HANDLE;
+};
+
+// Records into cmd (reset first): the forward pass (clear to clearColor and depth 1, then each
+// slot), the post pass, and copies of both colour images into the targets' readback buffers,
+// made visible to the host. arena holds the slots' vertices and indices.
+bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
+                 const float clearColor[4], VkBuffer arena, const std::vector<DrawSlot>& slots,
+                 std::string* error);
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,106 @@
+#include "vk_frame.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "facet/shader_abi.h"
+#include "vk_convert.h"
+
+namespace facet::runtime::vulkan {
+namespace {
+
+constexpr VkDeviceSize kEmptyMaterialSize = 16;
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+  return (value + alignment - 1) / alignment * alignment;
+}
+
+}  // namespace
+
+bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error) {
+  const uint32_t maxSize = limits.maxImageDimension2D;
+  if (frame.width == 0 || frame.height == 0 || frame.width > maxSize || frame.height > maxSize) {
+    *error = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+             " is outside 1.." + std::to_string(maxSize);
+    return false;
+  }
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
+    const std::string which = "draw " + std::to_string(i) + ": ";
+    if (!draw.mesh || !draw.program) {
+      *error = which + "mesh or program is null";
+      return false;
+    }
+    const size_t floats = draw.mesh->vertices.size();
+    if (floats % abi::kVertexFloats != 0) {
+      *error = which + "vertex data is not a whole number of " +
+               std::to_string(abi::kVertexFloats) + "-float vertices";
+      return false;
+    }
+    const size_t vertexCount = floats / abi::kVertexFloats;
+    for (uint32_t index : draw.mesh->indices) {
+      if (index >= vertexCount) {
+        *error = which + "index " + std::to_string(index) + " is out of range (" +
+                 std::to_string(vertexCount) + " vertices)";
+        return false;
+      }
+    }
+    if (draw.materialParams.size() > limits.maxUniformBufferRange) {
+      *error = which + "materialParams is larger than maxUniformBufferRange";
+      return false;
+    }
+  }
+  return true;
+}
+
+VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
+                         std::vector<DrawSlot>* slots) {
+  const VkDeviceSize alignment = std::max<VkDeviceSize>(limits.minUniformBufferOffsetAlignment, 16);
+  VkDeviceSize size = alignUp(sizeof(abi::FrameUniforms), alignment);
+  slots->resize(frame.draws.size());
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
+    DrawSlot& slot = (*slots)[i];
+    slot.vertexCount = static_cast<uint32_t>(draw.mesh->vertices.size() / abi::kVertexFloats);
+    slot.indexCount = static_cast<uint32_t>(draw.mesh->indices.size());
+    slot.materialSize = draw.materialParams.empty()
+                            ? kEmptyMaterialSize
+                            : alignUp(draw.materialParams.size(), 16);  // whole std140 vec4s
+    slot.objectOffset = size;
+    size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
+    slot.materialOffset = size;
+    size = alignUp(size + slot.materialSize, alignment);
+    slot.vertexOffset = size;
+    size = alignUp(size + draw.mesh->vertices.size() * sizeof(float), alignment);
+    slot.indexOffset = size;
+    size = alignUp(size + draw.mesh->indices.size() * sizeof(uint32_t), alignment);
+  }
+  return size;
+}
+
+void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void* arena) {
+  auto* base = static_cast<uint8_t*>(arena);
+  abi::FrameUniforms frameUniforms = frame.frame;
+  glToVulkanClip(frame.frame.viewProjection, frameUniforms.viewProjection);
+  std::memcpy(base, &frameUniforms, sizeof(frameUniforms));
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
+    const DrawSlot& slot = slots[i];
+    std::memcpy(base + slot.objectOffset, &draw.object, sizeof(draw.object));
+    std::memset(base + slot.materialOffset, 0, slot.materialSize);
+    if (!draw.materialParams.empty()) {
+      std::memcpy(base + slot.materialOffset, draw.materialParams.data(),
+                  draw.materialParams.size());
+    }
+    if (!draw.mesh->vertices.empty()) {
+      std::memcpy(base + slot.vertexOffset, draw.mesh->vertices.data(),
+                  draw.mesh->vertices.size() * sizeof(float));
+    }
+    if (!draw.mesh->indices.empty()) {
+      std::memcpy(base + slot.indexOffset, draw.mesh->indices.data(),
+                  draw.mesh->indices.size() * sizeof(uint32_t));
+    }
+  }
+}
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,44 @@
+// One frame's data on the way to the device: checking a FrameDesc, laying its uniforms,
+// vertices and indices out in one host-visible "arena" buffer, and copying them in.
+//
+// Arena layout: FrameUniforms at offset 0, then for each draw its ObjectUniforms,
+// MaterialParams, vertices and indices, each at a multiple of the uniform offset alignment.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "facet/render_backend.h"
+
+namespace facet::runtime::vulkan {
+
+// Where one draw's data sits in the arena, and what it is drawn with.
+struct DrawSlot {
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  VkDeviceSize objectOffset = 0;
+  VkDeviceSize materialOffset = 0;
+  VkDeviceSize materialSize = 0;  // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
+  VkDeviceSize vertexOffset = 0;
+  VkDeviceSize indexOffset = 0;
+  uint32_t vertexCount = 0;
+  uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
+};
+
+// Rejects what the device cannot draw or would read out of bounds: an empty or oversized frame,
+// null meshes or programs, partial vertices, indices past the last vertex, oversized params.
+bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error);
+
+// Fills the offsets and counts of slots (one per draw; pipeline and set are left alone) and
+// returns the arena size the frame needs.
+VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
+                         std::vector<DrawSlot>* slots);
+
+// Copies the frame into the mapped arena at the offsets of layoutFrame, converting the
+// view-projection to Vulkan's clip space on the way.
+void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void* arena);
+
+}  // namespace facet::runtime::vulkan

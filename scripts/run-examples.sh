@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The main job: install dependencies, build Facet, compile the example materials with matc and
+# render the example scenes with both backends (Vulkan on lavapipe, GL on OSMesa) to PNG.
+#   build/release/                     the build
+#   build/examples/packages/*.matpkg   compiled materials (+ sources/ with every generated shader)
+#   build/examples/images/*.png        rendered scenes, one per backend
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/setup-deps.sh
+
+jobs=$(nproc)
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF
+cmake --build build/release --parallel "$jobs" --target matc facet-view
+
+packages=build/examples/packages
+images=build/examples/images
+mkdir -p "$packages" "$images"
+for material in examples/materials/*.mat; do
+  name=$(basename "$material" .mat)
+  build/release/matc/matc compile "$material" -o "$packages/$name.matpkg" --emit-source "$packages/sources"
+done
+for scene in examples/scenes/*.json; do
+  build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
+done
+
+echo
+echo "Packages: $(pwd)/$packages"
+echo "Images:   $(pwd)/$images"
+ls -1 "$images"/*.png

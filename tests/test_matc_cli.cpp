@@ -1,0 +1,100 @@
+// matc as users run it: exit codes, diagnostics on stderr, no partial output on failure.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using facet::test::run;
+
+const std::string kMatc = FACET_MATC;
+
+std::string write(const std::string& dir, const std::string& name, const std::string& text) {
+  std::string path = dir + "/" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+}  // namespace
+
+TEST(MatcCli, CompileWritesAPackageThatInfoDescribes) {
+  std::string dir = facet::test::scratchDir("cli-compile");
+  auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/red.matpkg");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("red_plastic: 1 variant"), std::string::npos) << r.out;
+
+  r = run(kMatc + " info " + dir + "/red.matpkg");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("material   red_plastic"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("roughness        float  = 0.35 in [0, 1]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("high.dir1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fragment msl"), std::string::npos) << r.out;
+}
+
+TEST(MatcCli, InfoPrintsAnyShaderOfAnyTarget) {
+  std::string dir = facet::test::scratchDir("cli-info");
+  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/brushed_gold.mat") + " -o " + dir + "/g.matpkg").exitCode, 0);
+  std::string base = kMatc + " info " + dir + "/g.matpkg --variant high.dir1 --stage fragment --target ";
+  auto spirv = run(base + "spirv");
+  EXPECT_EQ(spirv.exitCode, 0);
+  EXPECT_NE(spirv.out.find("OpEntryPoint Fragment"), std::string::npos);
+  auto glsl = run(base + "glsl_es_300");
+  EXPECT_EQ(glsl.out.rfind("#version 300 es", 0), 0u);
+  auto msl = run(base + "msl");
+  EXPECT_NE(msl.out.find("fragment main0_out main0("), std::string::npos);
+
+  auto missing = run(kMatc + " info " + dir + "/g.matpkg --variant low.dir1 --stage fragment --target msl");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("package has no variant 'low.dir1' (it has: high.dir1)"), std::string::npos) << missing.err;
+}
+
+TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
+  std::string dir = facet::test::scratchDir("cli-emit");
+  auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir +
+               "/r.matpkg --emit-source " + dir + "/src");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm",
+                             "frag.spvasm", "vert.metal", "frag.metal"})
+    EXPECT_TRUE(fs::exists(dir + "/src/red_plastic.high.dir1." + suffix)) << suffix;
+}
+
+TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {
+  std::string dir = facet::test::scratchDir("cli-bad");
+  std::string mat = write(dir, "bad.mat", "material bad {\n  surface {\n    roughness = 0.5 +\n  }\n}\n");
+  auto r = run(kMatc + " compile " + mat + " -o " + dir + "/bad.matpkg");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(mat + ":4:3: error: expected an expression, found '}'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1 error generated."), std::string::npos) << r.err;
+  for (const auto& entry : fs::directory_iterator(dir)) EXPECT_EQ(entry.path().filename(), "bad.mat");
+}
+
+TEST(MatcCli, MissingInputExitsOne) {
+  auto r = run(kMatc + " compile /nonexistent/x.mat");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cannot read '/nonexistent/x.mat': no such file"), std::string::npos) << r.err;
+}
+
+TEST(MatcCli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run(kMatc).exitCode, 2);
+  EXPECT_EQ(run(kMatc + " compile").exitCode, 2);
+  EXPECT_EQ(run(kMatc + " compile a.mat --no-such-flag").exitCode, 2);
+  EXPECT_EQ(run(kMatc + " info x.matpkg --variant high.dir1").exitCode, 2);
+}
+
+TEST(MatcCli, CorruptPackageIsRejectedWithAnError) {
+  std::string dir = facet::test::scratchDir("cli-corrupt");
+  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/r.matpkg").exitCode, 0);
+  fs::resize_file(dir + "/r.matpkg", fs::file_size(dir + "/r.matpkg") / 2);
+  auto r = run(kMatc + " info " + dir + "/r.matpkg");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(dir + "/r.matpkg: error: "), std::string::npos) << r.err;
+
+  write(dir, "garbage.matpkg", std::string(1000, '\x7f'));
+  r = run(kMatc + " info " + dir + "/garbage.matpkg");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
+}
