@@ -3,6 +3,7 @@
 
 #include "facet/ir/check.h"
 #include "facet/ir/emit_glsl.h"
+#include "facet/ir/passes.h"
 #include "test_support.h"
 
 using facet::test::diagnosticsFor;
@@ -119,8 +120,10 @@ TEST(Language, ConstantsAreFoldedAndUnusedLetsEmitNothing) {
 }
 )");
   ASSERT_TRUE(m);
+  facet::ir::optimize(*m);
   std::string glsl = facet::ir::emitSurface(*m).body;
   EXPECT_EQ(glsl, "    material.roughness = 0.5;\n");
+  EXPECT_FALSE(m->params[0].used);
 }
 
 TEST(Language, HostileInputGetsErrorsNotCrashes) {

@@ -117,6 +117,53 @@ TEST(ShaderAbi, MaterialParamsLayoutMatchesThePackageRecord) {
     EXPECT_EQ(block.binding, facet::abi::kMaterialBinding);
     // SPIR-V's declared size ends at the last member; std140 rounds the buffer up to 16.
     EXPECT_EQ((block.size + 15) / 16 * 16, info.paramBlockSize);
-    for (const auto& p : info.params) EXPECT_EQ(block.offsets.at(p.name), p.offset) << p.name;
+    for (const auto& p : info.params) {
+      if (p.size == 0) {
+        EXPECT_EQ(block.offsets.count(p.name), 0u) << p.name << " is unused but has a uniform";
+      } else {
+        ASSERT_EQ(block.offsets.count(p.name), 1u) << p.name;
+        EXPECT_EQ(block.offsets.at(p.name), p.offset) << p.name;
+      }
+    }
   }
+}
+
+// "Model only what a material needs": what the surface program does not read costs no uniform,
+// no attribute and no varying in the shipped SPIR-V.
+TEST(ShaderAbi, UnreadParameterHasNoUniformMember) {
+  auto built = facet::test::buildText(R"(material m {
+    param used: float = 0.5
+    param unused: vec3 = vec3(1.0)
+    surface { roughness = params.used }
+})");
+  ASSERT_TRUE(built);
+  Reflection fs = reflect(spirv(built->package.variants.at(0), facet::package::Stage::Fragment));
+  const Block& block = fs.blocks.at("MaterialParams");
+  EXPECT_EQ(block.offsets.size(), 1u);
+  EXPECT_EQ(block.offsets.count("unused"), 0u);
+  EXPECT_EQ(built->package.material.paramBlockSize, 16u);
+  EXPECT_EQ(built->package.material.params.at(1).size, 0u);  // recorded, but with no slot
+}
+
+TEST(ShaderAbi, MaterialReadingNoParameterHasNoParameterBlock) {
+  auto built = facet::test::buildText(R"(material m {
+    param unused: float = 0.5
+    surface { roughness = 0.25 }
+})");
+  ASSERT_TRUE(built);
+  Reflection fs = reflect(spirv(built->package.variants.at(0), facet::package::Stage::Fragment));
+  EXPECT_EQ(fs.blocks.count("MaterialParams"), 0u);
+  EXPECT_EQ(built->package.material.paramBlockSize, 0u);
+}
+
+TEST(ShaderAbi, Uv0AttributeAndVaryingExistOnlyWhenRead) {
+  auto without = facet::test::buildText("material m { surface { roughness = 0.5 } }");
+  auto with = facet::test::buildText("material m { surface { roughness = fract(vertex.uv0.x * 4.0) } }");
+  ASSERT_TRUE(without && with);
+  const auto& a = without->package.variants.at(0);
+  const auto& b = with->package.variants.at(0);
+  EXPECT_EQ(reflect(spirv(a, facet::package::Stage::Vertex)).inputs.count("a_uv0"), 0u);
+  EXPECT_EQ(reflect(spirv(a, facet::package::Stage::Fragment)).inputs.count("v_uv0"), 0u);
+  EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Vertex)).inputs.at("a_uv0"), facet::abi::kAttribUv0);
+  EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Fragment)).inputs.count("v_uv0"), 1u);
 }

@@ -27,8 +27,10 @@ std::vector<std::string> exampleMaterials() {
   return files;
 }
 
-std::optional<compiler::BuildResult> buildFile(const std::string& path) {
-  ir::SourceFile file{path, readText(path)};
+std::optional<compiler::BuildResult> buildFile(const std::string& path) { return buildText(readText(path), path); }
+
+std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path) {
+  ir::SourceFile file{path, text};
   ir::Diagnostics diags(file);
   auto material = ir::compileSource(file, diags);
   EXPECT_TRUE(material.has_value()) << diags.format();

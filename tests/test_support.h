@@ -25,6 +25,9 @@ std::vector<std::string> exampleMaterials();
 // Parses, checks and builds a material file; fails the current test on any error.
 std::optional<compiler::BuildResult> buildFile(const std::string& path);
 
+// The same for material text held in memory.
+std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path = "test.mat");
+
 // Parses and checks material text; returns the diagnostics as formatted text.
 std::string diagnosticsFor(const std::string& text, const std::string& path = "test.mat");
 

@@ -50,10 +50,15 @@ std::string frameAndObjectBlocks(Flavour flavour) {
 std::string materialBlock(Flavour flavour, const ir::Material& material, const ParamLayout& layout) {
   if (layout.blockSize == 0) return "";
   std::string s = "// std140 offsets as recorded in the package: ";
-  for (size_t i = 0; i < layout.slots.size(); ++i)
-    s += (i ? ", " : "") + layout.slots[i].name + "@" + std::to_string(layout.slots[i].offset);
+  std::string sep;
+  for (const ParamSlot& slot : layout.slots) {
+    if (slot.size == 0) continue;
+    s += sep + slot.name + "@" + std::to_string(slot.offset);
+    sep = ", ";
+  }
   s += "\n" + blockLayout(flavour, 2) + " uniform MaterialParams {\n";
   for (const ir::Param& p : material.params) {
+    if (!p.used) continue;
     const char* precision = p.type == ir::Type::Bool ? "" : "mediump ";
     s += "    " + std::string(precision) + ir::glslName(p.type) + " " + p.name + ";\n";
   }

@@ -8,6 +8,7 @@
 #include "facet/compiler/param_layout.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
+#include "facet/ir/passes.h"
 
 namespace facet::compiler {
 namespace {
@@ -79,8 +80,10 @@ const std::string& compilerVersion() {
   return version;
 }
 
-std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, std::string* error) {
+std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, std::string* error) {
   BuildResult result;
+  ir::Material material = checked;
+  ir::optimize(material);
   ParamLayout layout = layoutParams(material.params);
   ir::SurfaceGlsl surface = ir::emitSurface(material);
   result.package.compilerVersion = compilerVersion();

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "builtins.h"
+#include "evaluate.h"
 #include "facet/ir/parser.h"
 
 namespace facet::ir {
@@ -68,17 +69,15 @@ class Checker {
     Result r = expr(e);
     constantOnly_ = false;
     if (!r) return std::nullopt;
-    const Value& v = module().value(*r);
-    if (v.op != Op::Constant) {
-      error(e.loc, std::string(what) + " must be a constant expression", "constant");
+    auto c = evaluateConstant(module(), *r);
+    if (!c) {
+      error(e.loc, std::string(what) + " is not a finite constant", "constant");
       return std::nullopt;
     }
-    for (int i = 0; i < componentCount(v.type); ++i) {
-      if (!std::isfinite(v.constant[size_t(i)])) {
-        error(e.loc, std::string(what) + " is not a finite number", "constant");
-        return std::nullopt;
-      }
-    }
+    Value v;
+    v.op = Op::Constant;
+    v.type = typeOf(*r);
+    v.constant = *c;
     return v;
   }
 
@@ -202,7 +201,14 @@ class Checker {
 
   // --- expressions ---
 
+  // Checks one expression and records where its value was written.
   Result expr(const Expr& e) {
+    Result r = exprKind(e);
+    if (r) module().setLoc(*r, e.loc);
+    return r;
+  }
+
+  Result exprKind(const Expr& e) {
     switch (e.kind) {
       case Expr::Kind::Number: return module().constant(Type::Float, {e.number});
       case Expr::Kind::Bool: return module().constant(Type::Bool, {e.boolean ? 1.0 : 0.0});
@@ -318,12 +324,6 @@ class Checker {
       }
       normalized += xyzw[i];
     }
-    const Value& b = module().value(base);
-    if (b.op == Op::Constant) {
-      std::array<double, 4> c{};
-      for (size_t i = 0; i < normalized.size(); ++i) c[i] = b.constant[xyzw.find(normalized[i])];
-      return module().constant(floatVector(int(normalized.size())), c);
-    }
     Value v;
     v.op = Op::Swizzle;
     v.type = floatVector(int(normalized.size()));
@@ -365,10 +365,6 @@ class Checker {
       }
       return std::nullopt;
     }
-    if (constantOnly_) {
-      error(e.loc, "function calls are not allowed in a constant expression", "constant");
-      return std::nullopt;
-    }
     Value v;
     v.op = Op::Builtin;
     v.type = b->result;
@@ -403,19 +399,6 @@ class Checker {
         return std::nullopt;
       }
     }
-    // Fold a constructor of constants into one constant.
-    bool allConstant = true;
-    for (ValueId a : args) allConstant = allConstant && module().value(a).op == Op::Constant;
-    if (allConstant) {
-      std::array<double, 4> c{};
-      size_t k = 0;
-      for (ValueId a : args) {
-        const Value& v = module().value(a);
-        for (int i = 0; i < componentCount(v.type) && k < 4; ++i) c[k++] = v.constant[size_t(i)];
-      }
-      if (args.size() == 1 && n > 1) c = {c[0], c[0], c[0], c[0]};
-      return module().constant(result, c);
-    }
     Value v;
     v.op = Op::Construct;
     v.type = result;
@@ -427,16 +410,10 @@ class Checker {
     Result x = expr(*e.args[0]);
     if (!x) return std::nullopt;
     Type t = typeOf(*x);
-    const Value& xv = module().value(*x);
     if (e.op == Tok::Minus) {
       if (t == Type::Bool) {
         error(e.loc, "'-' needs a number, but the operand is bool", "type");
         return std::nullopt;
-      }
-      if (xv.op == Op::Constant) {
-        std::array<double, 4> c = xv.constant;
-        for (double& d : c) d = -d;
-        return module().constant(t, c);
       }
       return module().add(Value{Op::Neg, t, {*x}, {}, ""});
     }
@@ -490,25 +467,7 @@ class Checker {
     else if (ta == Type::Float && isFloatType(tb)) result = tb;
     else if (tb == Type::Float && isFloatType(ta)) result = ta;
     else return mismatch();
-    if (auto folded = fold(op, result, *a, *b)) return folded;
     return module().add(Value{op, result, {*a, *b}, {}, ""});
-  }
-
-  // Constant folding of float arithmetic; results that are not finite stay unfolded (the
-  // division then happens on the GPU, where the author wrote it).
-  Result fold(Op op, Type result, ValueId a, ValueId b) {
-    const Value& va = module().value(a);
-    const Value& vb = module().value(b);
-    if (va.op != Op::Constant || vb.op != Op::Constant || !isFloatType(result)) return std::nullopt;
-    std::array<double, 4> c{};
-    for (int i = 0; i < componentCount(result); ++i) {
-      double x = va.constant[componentCount(va.type) == 1 ? 0 : size_t(i)];
-      double y = vb.constant[componentCount(vb.type) == 1 ? 0 : size_t(i)];
-      double r = op == Op::Add ? x + y : op == Op::Sub ? x - y : op == Op::Mul ? x * y : x / y;
-      if (!std::isfinite(r)) return std::nullopt;
-      c[size_t(i)] = r;
-    }
-    return module().constant(result, c);
   }
 
   Result ternary(const Expr& e) {
@@ -524,8 +483,6 @@ class Checker {
       error(e.loc, std::string("the branches are ") + typeName(typeOf(*a)) + " and " + typeName(typeOf(*b)), "type");
       return std::nullopt;
     }
-    const Value& cv = module().value(*c);
-    if (cv.op == Op::Constant) return cv.constant[0] != 0.0 ? *a : *b;
     return module().add(Value{Op::Select, typeOf(*a), {*c, *a, *b}, {}, ""});
   }
 

@@ -65,6 +65,15 @@ void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& 
               " default components");
       return;
     }
+    // A parameter either has a slot inside the block (size = 4 bytes per component) or none
+    // (size 0: the material never reads it, so the compiler gave it no uniform).
+    const uint64_t slotEnd = uint64_t(p.offset) + p.size;
+    if (p.size != 0 && (p.size != 4u * components || slotEnd > material.paramBlockSize)) {
+      in.fail(what + " occupies bytes " + std::to_string(p.offset) + ".." + std::to_string(slotEnd) +
+              ", which do not fit its type inside the " + std::to_string(material.paramBlockSize) +
+              "-byte parameter block");
+      return;
+    }
     p.defaultValue.resize(components);
     for (double& v : p.defaultValue) v = in.f64();
     if (flags & kHasRangeMin) p.rangeMin = in.f64();

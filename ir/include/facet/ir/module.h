@@ -69,6 +69,7 @@ struct Param {
   std::vector<double> defaultValue;  // componentCount(type) values
   std::optional<double> rangeMin, rangeMax;
   SourceLoc loc;
+  bool used = true;  // false once opt_eliminate_dead_code finds no output depends on it
 };
 
 class Module {
@@ -79,6 +80,13 @@ class Module {
 
   const Value& value(ValueId id) const { return values_[id]; }
   size_t size() const { return values_.size(); }
+
+  // Where in the material source a value was first written (for mapping backend errors back).
+  void setLoc(ValueId id, SourceLoc loc) { locs_.emplace(id, loc); }
+  const SourceLoc* locOf(ValueId id) const {
+    auto it = locs_.find(id);
+    return it == locs_.end() ? nullptr : &it->second;
+  }
 
   // A readable name for a value, from the `let` that bound it (first binding wins).
   void nameValue(ValueId id, const std::string& name) { names_.emplace(id, name); }
@@ -96,6 +104,7 @@ class Module {
   std::vector<Value> values_;
   std::unordered_map<Value, ValueId, Hash> interned_;
   std::map<ValueId, std::string> names_;
+  std::map<ValueId, SourceLoc> locs_;
 };
 
 // A checked material: what every later stage reads.
