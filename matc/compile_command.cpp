@@ -74,12 +74,18 @@ int compileCommand(const CompileArgs& args) {
     return 1;
   }
 
-  std::string error;
-  std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, {}, &error);
+  compiler::BuildError buildError;
+  std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, {}, &buildError);
   if (!built) {
-    printError(error);
+    if (buildError.loc) {
+      std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *buildError.loc, buildError.message, "backend"}).c_str(),
+                 stderr);
+    } else {
+      printError(buildError.message);
+    }
     return 1;
   }
+  std::string error;
   std::string output = args.output;
   if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
   std::vector<uint8_t> bytes = package::write(built->package);

@@ -35,9 +35,9 @@ std::optional<compiler::BuildResult> buildText(const std::string& text, const st
   auto material = ir::compileSource(file, diags);
   EXPECT_TRUE(material.has_value()) << diags.format();
   if (!material) return std::nullopt;
-  std::string error;
+  compiler::BuildError error;
   auto built = compiler::buildMaterial(*material, {}, &error);
-  EXPECT_TRUE(built.has_value()) << error;
+  EXPECT_TRUE(built.has_value()) << error.message;
   return built;
 }
 

@@ -1,5 +1,6 @@
 #include "facet/compiler/assemble.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -169,6 +170,9 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   fs += varyings(in, flavour, "in") + "layout(location = 0) out mediump vec4 fragColor;\n\n";
   fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, error)) return false;
+  const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
+  if (size_t at = fs.find(bodyStart); at != std::string::npos)
+    out->fragmentSurfaceLine = uint32_t(std::count(fs.begin(), fs.begin() + long(at), '\n')) + 2;
 
   out->vertex = std::move(vs);
   out->fragment = std::move(fs);

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "facet/compiler/assemble.h"
+#include "facet/compiler/backend_errors.h"
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/param_layout.h"
@@ -73,6 +74,18 @@ bool finishSpirv(std::vector<uint32_t>* words, const char* stage, std::string* e
   return true;
 }
 
+// A glslang failure on generated code: blamed on the material line that produced it when the
+// error lies in the surface program, else reported as the compiler's own defect.
+void reportGlslangFailure(const std::string& log, const StageSources& sources, const ir::SurfaceGlsl& surface,
+                          const std::string& what, BuildError* failure) {
+  if (auto mapped = mapGlslangErrors(log, sources.fragmentSurfaceLine, surface.lineLocs)) {
+    failure->message = "the shader compiler rejected this expression: " + mapped->message + " (" + what + ")";
+    failure->loc = mapped->loc;
+    return;
+  }
+  failure->message = "internal error: generated " + what + " does not compile:\n" + log;
+}
+
 }  // namespace
 
 const std::string& compilerVersion() {
@@ -80,7 +93,8 @@ const std::string& compilerVersion() {
   return version;
 }
 
-std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, std::string* error) {
+std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
+  std::string* error = &failure->message;
   BuildResult result;
   ir::Material material = checked;
   ir::optimize(material);
@@ -104,12 +118,12 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
 
     std::string log;
     if (!checkGlslEs300(es, &log)) {
-      *error = "internal error: generated GLSL ES 3.00 for variant " + keyText + " does not compile:\n" + log;
+      reportGlslangFailure(log, es, surface, "GLSL ES 3.00 for variant " + keyText, failure);
       return std::nullopt;
     }
     SpirvStages spirv;
     if (!compileToSpirv(vk, &spirv, &log)) {
-      *error = "internal error: glslang could not compile variant " + keyText + " to SPIR-V:\n" + log;
+      reportGlslangFailure(log, vk, surface, "SPIR-V for variant " + keyText, failure);
       return std::nullopt;
     }
     if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return std::nullopt;

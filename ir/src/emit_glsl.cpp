@@ -49,7 +49,7 @@ class Emitter {
       auto it = module_.outputs.find(o.name);
       if (it == module_.outputs.end()) continue;
       std::string value = use(it->second);
-      out_.body += "    material." + std::string(o.name) + " = " + value + ";\n";
+      line("    material." + std::string(o.name) + " = " + value + ";\n", it->second);
     }
     return std::move(out_);
   }
@@ -74,9 +74,16 @@ class Emitter {
     std::string rhs = define(v, a);
     std::string name = tempName(id);
     std::string precision = v.type == Type::Bool ? "" : (isHighp(id) ? "highp " : "mediump ");
-    out_.body += "    " + precision + glslName(v.type) + " " + name + " = " + rhs + ";\n";
+    line("    " + precision + glslName(v.type) + " " + name + " = " + rhs + ";\n", id);
     temps_.emplace(id, name);
     return name;
+  }
+
+  // Appends one line of GLSL, remembering which material source produced it.
+  void line(const std::string& text, ValueId source) {
+    out_.body += text;
+    const SourceLoc* loc = module_.locOf(source);
+    out_.lineLocs.push_back(loc ? *loc : SourceLoc{});
   }
 
   std::string define(const Value& v, const std::vector<std::string>& a) {

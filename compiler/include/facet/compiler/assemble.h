@@ -5,6 +5,7 @@
 // hence MSL. Only the prologue and the interface declarations differ; the bodies are identical.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "facet/compiler/param_layout.h"
@@ -19,6 +20,9 @@ enum class Flavour { GlslEs300, Vulkan };
 struct StageSources {
   std::string vertex;
   std::string fragment;
+  // 1-based line of the fragment text where the surface program's body starts (0: not present);
+  // line k of SurfaceGlsl::body is line fragmentSurfaceLine + k.
+  uint32_t fragmentSurfaceLine = 0;
 };
 
 struct AssemblyInput {

@@ -32,8 +32,14 @@ struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
 };
 
-// Builds every variant. Returns nullopt with *error set when a backend rejects generated code
-// (a compiler defect: the material itself was already checked).
-std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, std::string* error);
+struct BuildError {
+  std::string message;
+  // Set when the failure traces back to a line of the material (a backend rejected code the
+  // surface program produced); unset for the compiler's own defects.
+  std::optional<ir::SourceLoc> loc;
+};
+
+// Builds every variant. Returns nullopt with *error set when a backend rejects generated code.
+std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, BuildError* error);
 
 }  // namespace facet::compiler

@@ -4,6 +4,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "facet/ir/module.h"
 
@@ -13,6 +14,7 @@ struct SurfaceGlsl {
   std::string body;                  // statements, each on its own line, indented 4 spaces
   std::set<std::string> attributes;  // vertex.* attributes the outputs depend on
   std::set<std::string> params;      // parameters the outputs depend on
+  std::vector<SourceLoc> lineLocs;   // per line of `body`: the material source that produced it
 };
 
 // Emits only what the written outputs depend on; unused lets and reads vanish.
