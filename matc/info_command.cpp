@@ -2,6 +2,7 @@
 #include <cstring>
 
 #include "commands.h"
+#include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
 
@@ -16,6 +17,33 @@ std::string formatValue(const std::vector<double>& v) {
     s += buf;
   }
   return v.size() > 1 ? "(" + s + ")" : s;
+}
+
+std::vector<uint32_t> words(const package::Shader& s) {
+  std::vector<uint32_t> w(s.code.size() / 4);
+  std::memcpy(w.data(), s.code.data(), w.size() * 4);
+  return w;
+}
+
+// The static cost table (DESIGN.md, "Measuring"), from each variant's optimised SPIR-V.
+void printCosts(const package::Package& pkg) {
+  std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width)\n");
+  std::printf("  %-14s %-8s %5s %6s %6s %4s %4s %8s %8s\n", "variant", "stage", "alu", "scalar", "transc", "div", "tex",
+              "varyings", "mediump");
+  for (const package::Variant& v : pkg.variants) {
+    for (const package::Shader& s : v.shaders) {
+      if (s.target != package::Target::Spirv) continue;
+      compiler::StageCost c;
+      std::string error;
+      if (!compiler::analyseSpirvCost(words(s), &c, &error)) {
+        std::printf("  %-14s %-8s (%s)\n", v.key.c_str(), package::toString(s.stage), error.c_str());
+        continue;
+      }
+      std::printf("  %-14s %-8s %5u %6u %6u %4u %4u %8u %7.0f%%\n", v.key.c_str(), package::toString(s.stage), c.aluOps,
+                  c.scalarAluOps, c.transcendentalOps, c.divisions, c.textureSamples, c.varyingComponents,
+                  c.relaxedPercent());
+    }
+  }
 }
 
 void printSummary(const package::ReadResult& r) {
@@ -43,6 +71,7 @@ void printSummary(const package::ReadResult& r) {
                   static_cast<unsigned long long>(st.rawSize), static_cast<unsigned long long>(st.storedSize));
     }
   }
+  printCosts(pkg);
 }
 
 int printShader(const package::Package& pkg, const InfoArgs& args) {
@@ -51,9 +80,7 @@ int printShader(const package::Package& pkg, const InfoArgs& args) {
     for (const package::Shader& s : v.shaders) {
       if (args.stage != package::toString(s.stage) || args.target != package::toString(s.target)) continue;
       if (s.target == package::Target::Spirv) {
-        std::vector<uint32_t> words(s.code.size() / 4);
-        std::memcpy(words.data(), s.code.data(), words.size() * 4);
-        std::fputs(compiler::disassembleSpirv(words).c_str(), stdout);
+        std::fputs(compiler::disassembleSpirv(words(s)).c_str(), stdout);
       } else {
         std::fwrite(s.code.data(), 1, s.code.size(), stdout);
       }

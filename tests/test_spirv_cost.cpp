@@ -1,0 +1,61 @@
+// Static cost counts on shaders whose answer is known by construction.
+#include <gtest/gtest.h>
+
+#include "facet/compiler/glslang_backend.h"
+#include "facet/compiler/spirv_cost.h"
+#include "test_support.h"
+
+namespace {
+
+facet::compiler::SpirvStages compile(const std::string& fragmentBody) {
+  facet::compiler::StageSources s;
+  s.vertex = R"(#version 310 es
+layout(location = 0) in highp vec4 a_position;
+layout(location = 0) out highp vec2 v_uv;
+layout(location = 1) out mediump vec3 v_n;
+void main() { v_uv = a_position.xy; v_n = a_position.xyz; gl_Position = a_position; }
+)";
+  s.fragment = "#version 310 es\nprecision mediump float;\nlayout(location = 0) in highp vec2 v_uv;\n"
+               "layout(location = 1) in mediump vec3 v_n;\nlayout(location = 0) out vec4 o;\n" + fragmentBody;
+  facet::compiler::SpirvStages out;
+  std::string log;
+  EXPECT_TRUE(facet::compiler::compileToSpirv(s, &out, &log)) << log;
+  return out;
+}
+
+}  // namespace
+
+TEST(SpirvCost, CountsDivisionsTranscendentalsAndVaryings) {
+  auto spirv = compile(R"(void main() {
+    float a = v_uv.x / v_uv.y;
+    float b = pow(a, 3.1);
+    o = vec4(a / b, sin(b), normalize(v_n).x, 1.0);
+})");
+  facet::compiler::StageCost cost;
+  std::string error;
+  ASSERT_TRUE(facet::compiler::analyseSpirvCost(spirv.fragment, &cost, &error)) << error;
+  EXPECT_EQ(cost.divisions, 2u);
+  EXPECT_EQ(cost.transcendentalOps, 3u);  // pow, sin, normalize
+  EXPECT_EQ(cost.varyingComponents, 5u);  // vec2 + vec3
+  EXPECT_EQ(cost.textureSamples, 0u);
+}
+
+TEST(SpirvCost, MediumpArithmeticIsCountedAsRelaxed) {
+  auto mediump = compile("void main() { mediump float a = v_n.x * v_n.y + v_n.z; o = vec4(a); }");
+  auto highp = compile("void main() { highp float a = v_uv.x * v_uv.y + v_uv.x; o = vec4(a); }");
+  facet::compiler::StageCost m, h;
+  std::string error;
+  ASSERT_TRUE(facet::compiler::analyseSpirvCost(mediump.fragment, &m, &error));
+  ASSERT_TRUE(facet::compiler::analyseSpirvCost(highp.fragment, &h, &error));
+  EXPECT_GT(m.relaxedPercent(), 99.0);
+  EXPECT_LT(h.relaxedPercent(), 1.0);
+  EXPECT_EQ(m.aluOps, 2u);  // one multiply, one add
+}
+
+TEST(SpirvCost, MalformedModuleIsAnErrorNotACrash) {
+  facet::compiler::StageCost cost;
+  std::string error;
+  EXPECT_FALSE(facet::compiler::analyseSpirvCost({1, 2, 3}, &cost, &error));
+  EXPECT_FALSE(facet::compiler::analyseSpirvCost({0x07230203, 0x10000, 0, 10, 0, 0xffff0001}, &cost, &error));
+  EXPECT_NE(error.find("truncated"), std::string::npos);
+}
