@@ -9,29 +9,29 @@
 // fp16: the textbook form computes 1 − (n·h)², which cancels to 0 for n·h within 2^-11 of 1
 // (the whole highlight core of a smooth surface); the cross product keeps those bits. With
 // α ≥ 0.089² the peak 1/(π α²) ≤ 5075 is finite; saturateMediump guards the rest.
-mediump float distribution_ggx(mediump float alpha, mediump float NoH, mediump vec3 n, mediump vec3 h) {
-    mediump vec3 NxH = cross(n, h);
-    mediump float a = NoH * alpha;
-    mediump float k = alpha / (dot(NxH, NxH) + a * a);
-    mediump float d = k * k * INV_PI;
+float distribution_ggx(float alpha, float NoH, vec3 n, vec3 h) {
+    vec3 NxH = cross(n, h);
+    float a = NoH * alpha;
+    float k = alpha / (dot(NxH, NxH) + a * a);
+    float d = k * k * INV_PI;
     return saturateMediump(d);
 }
 
 // Height-correlated Smith visibility V = G₂ / (4 n·l n·v):
 //   V = 0.5 / (n·l √((n·v)²(1 − α²) + α²) + n·v √((n·l)²(1 − α²) + α²))
 // fp16: n·v ≥ MIN_N_DOT_V and α² ≥ 6.27e-5 keep the denominator ≥ ~1e-4·α > 0 when n·l > 0.
-mediump float visibility_smith_ggx_correlated(mediump float alpha, mediump float NoV, mediump float NoL) {
-    mediump float a2 = alpha * alpha;
-    mediump float lambdaV = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
-    mediump float lambdaL = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
+float visibility_smith_ggx_correlated(float alpha, float NoV, float NoL) {
+    float a2 = alpha * alpha;
+    float lambdaV = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
+    float lambdaL = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
     return saturateMediump(0.5 / (lambdaV + lambdaL));
 }
 
 // Schlick's Fresnel F = f0 + (1 − f0)(1 − l·h)⁵ with f90 = 1; the fifth power by three
 // multiplications, not pow(), which costs exp2+log2 on most mobile GPUs.
-mediump vec3 fresnel_schlick(mediump vec3 f0, mediump float LoH) {
-    mediump float f = 1.0 - LoH;
-    mediump float f2 = f * f;
-    mediump float f5 = f2 * f2 * f;
+vec3 fresnel_schlick(vec3 f0, float LoH) {
+    float f = 1.0 - LoH;
+    float f2 = f * f;
+    float f5 = f2 * f2 * f;
     return f0 + (vec3(1.0) - f0) * f5;
 }

@@ -2,6 +2,10 @@
 // normal 2^-14 ≈ 6.1e-5, 11 significant bits). Sources: Filament mobile talk and Filament's
 // "Physically Based Rendering" §4.4 (fp16 considerations); Zioma 2015 on mobile precision.
 //
+// Chunks carry no precision qualifiers: the tier's default float precision applies (mediump for
+// the mobile tiers, highp for `reference`), so one chunk serves both. Values that must stay
+// highp whatever the tier (positions, UVs) say so where they are declared.
+//
 // Contract with the runtime: lights arrive pre-exposed (intensity × camera exposure), so lit
 // values are O(1) and a 110 000 lux sun does not overflow 65504.
 

@@ -4,7 +4,7 @@
 // fp16: the input is pre-exposed (≈1 at middle grey × 5), so x² stays far below 65504 for any
 // x < 160; the clamp keeps a stray very bright value from overflowing the product in mediump.
 // 160 = sqrt(65504 / 2.51), rounded down.
-mediump vec3 tonemap_aces_fitted(mediump vec3 x) {
+vec3 tonemap_aces_fitted(vec3 x) {
     x = clamp(x, 0.0, 160.0);
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }

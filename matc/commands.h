@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace facet::matc {
 
@@ -10,6 +11,8 @@ struct CompileArgs {
   std::string input;
   std::string output;      // default: input with .matpkg
   std::string emitSource;  // folder for every generated source, or ""
+  std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
+  std::string scene;       // scene manifest: build only the variants it asks this material for
 };
 int compileCommand(const CompileArgs& args);
 

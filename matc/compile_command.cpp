@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +9,8 @@
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 #include "facet/package.h"
+#include "facet/permutations/variant_key.h"
+#include "facet/runtime/scene.h"
 
 namespace facet::matc {
 
@@ -60,6 +63,51 @@ bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedF
   return true;
 }
 
+// Tiers from --tiers, and the variants a --scene manifest asks this material for.
+int buildOptions(const CompileArgs& args, const ir::Material& material, compiler::BuildOptions* options) {
+  const auto& supported = permutations::supportedTiers();
+  if (!args.tiers.empty()) {
+    options->tiers.clear();
+    for (const std::string& name : args.tiers) {
+      auto tier = permutations::tierFromString(name);
+      if (!tier) {
+        printError("unknown tier '" + name + "' (reference, high, mid, low)");
+        return 2;
+      }
+      if (std::find(supported.begin(), supported.end(), *tier) == supported.end()) {
+        std::string list;
+        for (permutations::Tier t : supported) list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
+        printError("tier '" + name + "' is not built by this compiler version (supported: " + list + ")");
+        return 2;
+      }
+      options->tiers.push_back(*tier);
+    }
+  }
+  if (args.scene.empty()) return 0;
+  std::string error;
+  auto scene = runtime::loadScene(args.scene, &error);
+  if (!scene) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return 1;
+  }
+  auto tier = permutations::tierFromString(scene->tier);
+  if (!tier || std::find(options->tiers.begin(), options->tiers.end(), *tier) == options->tiers.end()) {
+    printError(args.scene + ": the scene asks for tier '" + scene->tier + "', which this build does not include");
+    return 1;
+  }
+  permutations::SceneNeeds needs;
+  permutations::MaterialNeeds materialNeeds{material.shading == "lit"};
+  for (const runtime::SceneObject& object : scene->objects)
+    if (object.material == material.name)
+      needs.keys.push_back(permutations::requestKey(materialNeeds, *tier, scene->sun.has_value()));
+  if (needs.keys.empty()) {
+    printError(args.scene + ": no object of the scene uses material '" + material.name + "'");
+    return 1;
+  }
+  options->scene = std::move(needs);
+  return 0;
+}
+
 }  // namespace
 
 int compileCommand(const CompileArgs& args) {
@@ -74,8 +122,10 @@ int compileCommand(const CompileArgs& args) {
     return 1;
   }
 
+  compiler::BuildOptions options;
+  if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
-  std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, {}, &buildError);
+  std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
   if (!built) {
     if (buildError.loc) {
       std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *buildError.loc, buildError.message, "backend"}).c_str(),
@@ -94,8 +144,15 @@ int compileCommand(const CompileArgs& args) {
     return 1;
   }
   if (!args.emitSource.empty() && !writeSources(args.emitSource, built->sources)) return 1;
-  std::printf("%s: %zu variant%s, %zu bytes -> %s\n", material->name.c_str(), built->package.variants.size(),
-              built->package.variants.size() == 1 ? "" : "s", bytes.size(), output.c_str());
+  size_t variants = built->package.variants.size();
+  std::string forScene;
+  if (options.scene) {
+    permutations::MaterialNeeds needs{material->shading == "lit"};
+    forScene = " for scene " + args.scene + " (" + std::to_string(permutations::enumerate(needs, options.tiers).size()) +
+               " without it)";
+  }
+  std::printf("%s: %zu variant%s%s, %zu bytes -> %s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
+              forScene.c_str(), bytes.size(), output.c_str());
   return 0;
 }
 

@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   compileCmd->add_option("input", compile.input, "material source (.mat)")->required();
   compileCmd->add_option("-o,--output", compile.output, "package to write (default: <input>.matpkg)");
   compileCmd->add_option("--emit-source", compile.emitSource, "also write every generated shader source to this folder");
+  compileCmd->add_option("--tiers", compile.tiers, "tiers to build (reference, high, ...); default: all supported")
+      ->delimiter(',');
+  compileCmd->add_option("--scene", compile.scene, "scene JSON: build only the variants this scene can request");
 
   facet::matc::InfoArgs info;
   CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");

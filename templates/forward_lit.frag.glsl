@@ -1,10 +1,11 @@
 // Forward pass, lit, fragment stage: evaluate the material's surface program, then shade with
-// one directional light and a constant ambient. Writes pre-exposed linear HDR.
+// a constant ambient and, in dir1 variants, one directional light. Writes pre-exposed linear HDR.
 #include "math.glsl"
 #include "precision.glsl"
 #include "facet:material"
 #include "brdf_ggx.glsl"
 #include "diffuse_lambert.glsl"
+#include "facet:specular"
 #include "shading_standard.glsl"
 
 void main() {
@@ -12,9 +13,12 @@ void main() {
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
 
+    vec3 color = shade_standard_ambient(material, frame.ambient.rgb);
+#if defined(FACET_DIRECTIONAL_LIGHT)
     // The view vector comes from highp positions; only the unit vector drops to mediump.
-    mediump vec3 v = normalize(frame.cameraPosition.xyz - v_worldPosition);
-    mediump vec3 l = normalize(frame.lightDirection.xyz);
-    mediump vec3 color = shade_standard(material, shading_normal, v, l, frame.lightColor.rgb, frame.ambient.rgb);
+    vec3 v = normalize(frame.cameraPosition.xyz - v_worldPosition);
+    vec3 l = normalize(frame.lightDirection.xyz);
+    color += shade_standard_direct(material, shading_normal, v, l, frame.lightColor.rgb);
+#endif
     fragColor = vec4(color + material.emissive, material.alpha);
 }

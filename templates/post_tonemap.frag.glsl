@@ -8,9 +8,9 @@ layout(set = 0, binding = 0) uniform mediump sampler2D hdrColor;
 uniform mediump sampler2D hdrColor;
 #endif
 
-layout(location = 0) out mediump vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
 
 void main() {
-    mediump vec3 hdr = texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb;
+    vec3 hdr = texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb;
     fragColor = vec4(srgb_from_linear(tonemap_aces_fitted(hdr)), 1.0);
 }

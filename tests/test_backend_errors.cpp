@@ -18,7 +18,7 @@ TEST(BackendErrors, GlslangErrorInSurfaceProgramMapsToMaterialLine) {
   surface.body = "    mediump float a = 0.5;\n    material.roughness = undefined_name * a;\n";
   surface.lineLocs = {{3, 5, 40, 1}, {7, 17, 90, 4}};
   facet::compiler::ParamLayout layout;
-  facet::compiler::AssemblyInput input{material, surface, layout, {}, "test"};
+  facet::compiler::AssemblyInput input{material, surface, layout, {}, {}, "test"};
   facet::compiler::StageSources sources;
   std::string error;
   ASSERT_TRUE(facet::compiler::assemble(input, facet::compiler::Flavour::GlslEs300, &sources, &error)) << error;

@@ -25,7 +25,7 @@ TEST(MatcCli, CompileWritesAPackageThatInfoDescribes) {
   std::string dir = facet::test::scratchDir("cli-compile");
   auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/red.matpkg");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("red_plastic: 1 variant"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("red_plastic: 4 variants"), std::string::npos) << r.out;
 
   r = run(kMatc + " info " + dir + "/red.matpkg");
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -49,7 +49,7 @@ TEST(MatcCli, InfoPrintsAnyShaderOfAnyTarget) {
 
   auto missing = run(kMatc + " info " + dir + "/g.matpkg --variant low.dir1 --stage fragment --target msl");
   EXPECT_EQ(missing.exitCode, 1);
-  EXPECT_NE(missing.err.find("package has no variant 'low.dir1' (it has: high.dir1)"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("package has no variant 'low.dir1' (it has: reference.dir0, reference.dir1, high.dir0, high.dir1)"), std::string::npos) << missing.err;
 }
 
 TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
@@ -97,4 +97,30 @@ TEST(MatcCli, CorruptPackageIsRejectedWithAnError) {
   r = run(kMatc + " info " + dir + "/garbage.matpkg");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
+}
+
+TEST(MatcCli, SceneManifestBuildsOnlyTheVariantsItNeeds) {
+  std::string dir = facet::test::scratchDir("cli-scene");
+  std::string scene = facet::test::examplePath("scenes/sphere.json");
+  auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir +
+               "/r.matpkg --scene " + scene);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("red_plastic: 1 variant for scene " + scene + " (4 without it)"), std::string::npos) << r.out;
+  auto info = run(kMatc + " info " + dir + "/r.matpkg");
+  EXPECT_NE(info.out.find("variants   1\n  high.dir1\n"), std::string::npos) << info.out;
+
+  auto unused = run(kMatc + " compile " + facet::test::examplePath("materials/brushed_gold.mat") + " -o " + dir +
+                    "/g.matpkg --scene " + scene);
+  EXPECT_EQ(unused.exitCode, 1);
+  EXPECT_NE(unused.err.find("no object of the scene uses material 'brushed_gold'"), std::string::npos) << unused.err;
+  EXPECT_FALSE(fs::exists(dir + "/g.matpkg"));
+}
+
+TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {
+  std::string dir = facet::test::scratchDir("cli-tiers");
+  std::string mat = facet::test::examplePath("materials/red_plastic.mat");
+  auto r = run(kMatc + " compile " + mat + " -o " + dir + "/r.matpkg --tiers reference");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("red_plastic: 2 variants"), std::string::npos) << r.out;
+  EXPECT_EQ(run(kMatc + " compile " + mat + " -o " + dir + "/r.matpkg --tiers ultra").exitCode, 2);
 }

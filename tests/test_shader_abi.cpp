@@ -65,6 +65,14 @@ Reflection reflect(const std::vector<uint8_t>& code) {
   return r;
 }
 
+// The variant every check below looks at: the mobile tier with its directional light.
+const facet::package::Variant& highDir1(const facet::compiler::BuildResult& built) {
+  for (const auto& v : built.package.variants)
+    if (v.key == "high.dir1") return v;
+  ADD_FAILURE() << "no variant high.dir1";
+  return built.package.variants.at(0);
+}
+
 const std::vector<uint8_t>& spirv(const facet::package::Variant& v, facet::package::Stage stage) {
   for (const auto& s : v.shaders)
     if (s.stage == stage && s.target == facet::package::Target::Spirv) return s.code;
@@ -77,7 +85,7 @@ const std::vector<uint8_t>& spirv(const facet::package::Variant& v, facet::packa
 TEST(ShaderAbi, FrameAndObjectBlocksMatchTheRuntimeStructs) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
-  const auto& variant = built->package.variants.at(0);
+  const auto& variant = highDir1(*built);
   Reflection vs = reflect(spirv(variant, facet::package::Stage::Vertex));
   Reflection fs = reflect(spirv(variant, facet::package::Stage::Fragment));
 
@@ -111,7 +119,7 @@ TEST(ShaderAbi, MaterialParamsLayoutMatchesThePackageRecord) {
     auto built = facet::test::buildFile(path);
     ASSERT_TRUE(built);
     const auto& info = built->package.material;
-    Reflection fs = reflect(spirv(built->package.variants.at(0), facet::package::Stage::Fragment));
+    Reflection fs = reflect(spirv(highDir1(*built), facet::package::Stage::Fragment));
     ASSERT_TRUE(fs.blocks.count("MaterialParams"));
     const Block& block = fs.blocks.at("MaterialParams");
     EXPECT_EQ(block.binding, facet::abi::kMaterialBinding);
@@ -137,7 +145,7 @@ TEST(ShaderAbi, UnreadParameterHasNoUniformMember) {
     surface { roughness = params.used }
 })");
   ASSERT_TRUE(built);
-  Reflection fs = reflect(spirv(built->package.variants.at(0), facet::package::Stage::Fragment));
+  Reflection fs = reflect(spirv(highDir1(*built), facet::package::Stage::Fragment));
   const Block& block = fs.blocks.at("MaterialParams");
   EXPECT_EQ(block.offsets.size(), 1u);
   EXPECT_EQ(block.offsets.count("unused"), 0u);
@@ -151,7 +159,7 @@ TEST(ShaderAbi, MaterialReadingNoParameterHasNoParameterBlock) {
     surface { roughness = 0.25 }
 })");
   ASSERT_TRUE(built);
-  Reflection fs = reflect(spirv(built->package.variants.at(0), facet::package::Stage::Fragment));
+  Reflection fs = reflect(spirv(highDir1(*built), facet::package::Stage::Fragment));
   EXPECT_EQ(fs.blocks.count("MaterialParams"), 0u);
   EXPECT_EQ(built->package.material.paramBlockSize, 0u);
 }
@@ -160,8 +168,8 @@ TEST(ShaderAbi, Uv0AttributeAndVaryingExistOnlyWhenRead) {
   auto without = facet::test::buildText("material m { surface { roughness = 0.5 } }");
   auto with = facet::test::buildText("material m { surface { roughness = fract(vertex.uv0.x * 4.0) } }");
   ASSERT_TRUE(without && with);
-  const auto& a = without->package.variants.at(0);
-  const auto& b = with->package.variants.at(0);
+  const auto& a = highDir1(*without);
+  const auto& b = highDir1(*with);
   EXPECT_EQ(reflect(spirv(a, facet::package::Stage::Vertex)).inputs.count("a_uv0"), 0u);
   EXPECT_EQ(reflect(spirv(a, facet::package::Stage::Fragment)).inputs.count("v_uv0"), 0u);
   EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Vertex)).inputs.at("a_uv0"), facet::abi::kAttribUv0);

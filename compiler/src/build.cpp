@@ -105,9 +105,10 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
 
   permutations::MaterialNeeds needs;
   needs.lit = material.shading == "lit";
-  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers)) {
+  const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
+  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene)) {
     const std::string keyText = key.toString();
-    AssemblyInput input{material, surface, layout, key, compilerVersion()};
+    AssemblyInput input{material, surface, layout, key, permutations::preset(key.tier), compilerVersion()};
     StageSources es, vk;
     if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return std::nullopt;
     const std::string stem = material.name + "." + keyText;

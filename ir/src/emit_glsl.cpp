@@ -73,7 +73,8 @@ class Emitter {
     for (ValueId arg : v.args) a.push_back(use(arg));
     std::string rhs = define(v, a);
     std::string name = tempName(id);
-    std::string precision = v.type == Type::Bool ? "" : (isHighp(id) ? "highp " : "mediump ");
+    // Unqualified values take the tier's default precision; highp inputs keep highp explicitly.
+    std::string precision = v.type != Type::Bool && isHighp(id) ? "highp " : "";
     line("    " + precision + glslName(v.type) + " " + name + " = " + rhs + ";\n", id);
     temps_.emplace(id, name);
     return name;
@@ -112,7 +113,7 @@ class Emitter {
     return "t" + std::to_string(counter_++);
   }
 
-  // highp where any input is a highp attribute (positions, UVs); mediump otherwise.
+  // highp where any input is a highp attribute (positions, UVs); the tier's default otherwise.
   bool isHighp(ValueId id) {
     if (auto it = highp_.find(id); it != highp_.end()) return it->second;
     const Value& v = module_.value(id);

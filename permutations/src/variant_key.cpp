@@ -34,16 +34,23 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
 }
 
 const std::vector<Tier>& supportedTiers() {
-  // The skeleton builds the `high` tier; the other presets arrive with the tiered chunks.
-  static const std::vector<Tier> tiers = {Tier::High};
+  // Tiers whose shading maths this compiler version implements (see tiers.h for the presets).
+  static const std::vector<Tier> tiers = {Tier::Reference, Tier::High};
   return tiers;
 }
 
-std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers) {
+VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight) {
+  return {tier, material.lit && directionalLight};
+}
+
+std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers, const SceneNeeds* scene) {
   std::vector<VariantKey> keys;
   for (Tier t : tiers) {
-    // An unlit material ignores lights: one variant per tier.
-    keys.push_back({t, material.lit});
+    for (bool light : {false, true}) {
+      VariantKey key = requestKey(material, t, light);
+      bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
+      if (wanted) keys.push_back(key);
+    }
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

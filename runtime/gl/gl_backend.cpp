@@ -12,6 +12,7 @@
 #include "gl_mesh.h"
 #include "gl_program.h"
 #include "gl_targets.h"
+#include "gl_textures.h"
 
 namespace facet::runtime {
 namespace {
@@ -32,26 +33,29 @@ class GlBackend final : public RenderBackend {
     std::string vertexSource;  // compared on lookup: a freed ShaderProgram's address may be reused
     std::string fragmentSource;
     gl::LinkedProgram linked;
+    gl::SamplerUnits samplerUnits;  // sampler uniforms already pointed at their units
   };
 
   GlBackend() = default;
   bool initialise(std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
-  bool drawItem(const DrawItem& item, std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes,
-                std::string* error);
+  bool drawItem(const FrameDesc& frame, const DrawItem& item,
+                std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error);
   bool postPass(std::string* error);
-  const gl::LinkedProgram* programFor(const ShaderProgram& program, std::string* error);
+  CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
   std::unique_ptr<gl::Context> context_;
   GLint maxTargetSize_ = 0;
+  GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;
   gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
   gl::Buffer frameUniforms_;
   gl::Buffer objectUniforms_;
   gl::Buffer materialUniforms_;
   gl::RenderTargets targets_;
+  gl::TextureCache textures_;  // kept across frames; see gl_textures.h for the reuse rule
   std::unordered_map<const ShaderProgram*, CachedProgram> programs_;
 };
 
@@ -70,6 +74,7 @@ bool GlBackend::initialise(std::string* error) {
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
   maxTargetSize_ = std::min(maxTexture, maxRenderbuffer);
+  maxTextureSize_ = maxTexture;
 
   // The post program is the same for every frame: build it once, and fail creation (not the
   // first frame) if the build-time shaders do not compile here.
@@ -95,6 +100,10 @@ bool GlBackend::initialise(std::string* error) {
   frameUniforms_ = gl::Buffer::generate();
   objectUniforms_ = gl::Buffer::generate();
   materialUniforms_ = gl::Buffer::generate();
+  if (!textures_.init(error)) {
+    if (error) *error = "GL backend: " + *error;
+    return false;
+  }
   return checkGlError("GL backend creation", error);
 }
 
@@ -120,7 +129,9 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     // A failed earlier frame may have left an error flag set; it must not be blamed on this one.
     while (glGetError() != GL_NO_ERROR) {
     }
+    if (!gl::checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), &message)) return false;
     if (!prepareTargets(frame.width, frame.height, &message)) return false;
+    if (!textures_.prepare(frame, &message)) return false;
     if (!forwardPass(frame, &message)) return false;
     if (!postPass(&message)) return false;
     gl::readRgbaFloat(targets_.hdrFramebuffer.id(), frame.width, frame.height, &result->hdr);
@@ -167,7 +178,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   std::unordered_map<const Mesh*, gl::MeshBuffers> meshes;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     std::string drawError;
-    if (!drawItem(frame.draws[i], &meshes, &drawError)) {
+    if (!drawItem(frame, frame.draws[i], &meshes, &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
       glBindVertexArray(0);
       return false;
@@ -186,14 +197,15 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   return checkGlError("forward pass", error);
 }
 
-bool GlBackend::drawItem(const DrawItem& item, std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes,
-                         std::string* error) {
+bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
+                         std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error) {
   if (!item.mesh || !item.program) {
     if (error) *error = item.mesh ? "no shader program" : "no mesh";
     return false;
   }
-  const gl::LinkedProgram* program = programFor(*item.program, error);
-  if (!program) return false;
+  CachedProgram* cached = programFor(*item.program, error);
+  if (!cached) return false;
+  const gl::LinkedProgram* program = &cached->linked;
 
   // A block larger than the data bound to it reads past the buffer: refuse rather than draw.
   if (program->frame.dataSize > static_cast<GLint>(sizeof(abi::FrameUniforms)) ||
@@ -234,16 +246,20 @@ bool GlBackend::drawItem(const DrawItem& item, std::unordered_map<const Mesh*, g
   }
 
   glUseProgram(program->program.id());
+  // Sampler uniforms are program state (set while the program is in use); units are per draw.
+  gl::assignSamplerUnits(program->program.id(), frame.frameTextures, &cached->samplerUnits);
+  gl::assignSamplerUnits(program->program.id(), item.textures, &cached->samplerUnits);
+  textures_.bind(frame, item);
   glBindVertexArray(mesh.vertexArray.id());
   glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
   return checkGlError("draw", error);
 }
 
-const gl::LinkedProgram* GlBackend::programFor(const ShaderProgram& program, std::string* error) {
+GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, std::string* error) {
   auto found = programs_.find(&program);
   if (found != programs_.end() && found->second.vertexSource == program.vertexGlslEs &&
       found->second.fragmentSource == program.fragmentGlslEs) {
-    return &found->second.linked;
+    return &found->second;
   }
   std::optional<gl::LinkedProgram> linked = gl::buildProgram(program.vertexGlslEs, program.fragmentGlslEs, error);
   if (!linked) return nullptr;
@@ -251,7 +267,8 @@ const gl::LinkedProgram* GlBackend::programFor(const ShaderProgram& program, std
   cached.vertexSource = program.vertexGlslEs;
   cached.fragmentSource = program.fragmentGlslEs;
   cached.linked = std::move(*linked);
-  return &cached.linked;
+  cached.samplerUnits.clear();  // a new program: every sampler uniform starts at unit 0
+  return &cached;
 }
 
 bool GlBackend::postPass(std::string* error) {
@@ -263,6 +280,7 @@ bool GlBackend::postPass(std::string* error) {
   glUseProgram(post_.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
+  textures_.forgetBindings();  // unit 0 no longer holds what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);

@@ -30,7 +30,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     *error = "unknown tier '" + scene.tier + "' (reference, high, mid, low)";
     return nullptr;
   }
-  out->variantKey_ = permutations::VariantKey{*tier, scene.sun.has_value()}.toString();
+  out->variantKey_ = permutations::requestKey({true}, *tier, scene.sun.has_value()).toString();
   out->sphere_ = makeSphere();
 
   // Lights are multiplied by the exposure here, on the CPU, so shaders see O(1) values
@@ -61,7 +61,11 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
       auto material = LoadedMaterial::load(path, error);
       if (!material) return nullptr;
-      auto program = material->program(out->variantKey_, error);
+      // The key this material is asked for: axes it ignores (lights, for unlit) are normalised
+      // the same way the compiler normalised them when it built the package.
+      permutations::MaterialNeeds needs{material->info().shading == "lit"};
+      std::string key = permutations::requestKey(needs, *tier, scene.sun.has_value()).toString();
+      auto program = material->program(key, error);
       if (!program) return nullptr;
       out->materials_.push_back(std::make_unique<LoadedMaterial>(std::move(*material)));
       out->programs_.push_back(std::make_unique<ShaderProgram>(std::move(*program)));

@@ -17,6 +17,7 @@
 #include "vk_pipeline.h"
 #include "vk_resources.h"
 #include "vk_targets.h"
+#include "vk_textures.h"
 
 namespace facet::runtime {
 namespace {
@@ -53,7 +54,8 @@ class VulkanBackend final : public RenderBackend {
   bool pipelineFor(const ShaderProgram& program, VkPipeline* out, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
-  bool allocateDrawSets(std::vector<DrawSlot>* slots, std::string* error);
+  bool prepareTextures(const FrameDesc& frame, std::string* error);
+  bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
 
@@ -69,6 +71,7 @@ class VulkanBackend final : public RenderBackend {
   VkRenderPass postPass_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout forwardSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout postSetLayout_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout textureSetLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout forwardLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout postLayout_ = VK_NULL_HANDLE;
   VkPipeline postPipeline_ = VK_NULL_HANDLE;
@@ -78,9 +81,13 @@ class VulkanBackend final : public RenderBackend {
   VkDescriptorPool postPool_ = VK_NULL_HANDLE;
   VkDescriptorSet postSet_ = VK_NULL_HANDLE;
 
-  // Per-frame draw descriptor sets: reset every frame, recreated larger when needed.
+  // Per-frame draw descriptor sets (two per draw: uniforms and textures): reset every frame,
+  // recreated larger when needed. Capacity counts draws.
   VkDescriptorPool drawPool_ = VK_NULL_HANDLE;
   uint32_t drawPoolCapacity_ = 0;
+
+  // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
+  TextureCache textures_;
 
   // Uniforms, vertices and indices of one frame, rewritten every frame, grown when needed.
   HostBuffer arena_;
@@ -100,6 +107,7 @@ VulkanBackend::~VulkanBackend() {
   for (auto& entry : pipelines_) {
     if (entry.second.pipeline) vkDestroyPipeline(device, entry.second.pipeline, nullptr);
   }
+  textures_.destroy();
   destroyRenderTargets(device, &targets_);
   destroyHostBuffer(device, &arena_);
   // Destroying a pool frees its sets.
@@ -111,6 +119,7 @@ VulkanBackend::~VulkanBackend() {
   if (forwardLayout_) vkDestroyPipelineLayout(device, forwardLayout_, nullptr);
   if (postSetLayout_) vkDestroyDescriptorSetLayout(device, postSetLayout_, nullptr);
   if (forwardSetLayout_) vkDestroyDescriptorSetLayout(device, forwardSetLayout_, nullptr);
+  if (textureSetLayout_) vkDestroyDescriptorSetLayout(device, textureSetLayout_, nullptr);
   if (postPass_) vkDestroyRenderPass(device, postPass_, nullptr);
   if (forwardPass_) vkDestroyRenderPass(device, forwardPass_, nullptr);
   if (fence_) vkDestroyFence(device, fence_, nullptr);
@@ -157,10 +166,13 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
       !createPostRenderPass(device, &postPass_, error) ||
       !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, &postSetLayout_, error) ||
-      !createPipelineLayout(device, forwardSetLayout_, &forwardLayout_, error) ||
-      !createPipelineLayout(device, postSetLayout_, &postLayout_, error)) {
+      !createTextureSetLayout(device, &textureSetLayout_, error) ||
+      !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_,
+                            error) ||
+      !createPipelineLayout(device, {postSetLayout_}, &postLayout_, error)) {
     return false;
   }
+  if (!textures_.init(&ctx_, error)) return false;
 
   const PostShaders& post = postShaders();
   PipelineDesc postDesc;
@@ -230,7 +242,7 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
                                postLayout_,  postPipeline_, postSet_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
-        !allocateDrawSets(&slots, error) ||
+        !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
         !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, arena_.buffer, slots,
                      error)) {
       return false;
@@ -320,7 +332,14 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
   return true;
 }
 
-bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* error) {
+bool VulkanBackend::prepareTextures(const FrameDesc& frame, std::string* error) {
+  if (textures_.prepare(frame, error)) return true;
+  if (textures_.deviceFailed()) deviceFailure_ = *error;
+  return false;
+}
+
+bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots,
+                                     std::string* error) {
   const uint32_t count = static_cast<uint32_t>(slots->size());
   if (count == 0) return true;
   VkDevice device = ctx_.device;
@@ -330,12 +349,14 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
     drawPoolCapacity_ = 0;
     uint32_t capacity = 64;
     while (capacity < count) capacity *= 2;
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3 * capacity};
+    const VkDescriptorPoolSize poolSizes[2] = {
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3 * capacity},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kTextureSlots * capacity}};
     VkDescriptorPoolCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-    info.maxSets = capacity;
-    info.poolSizeCount = 1;
-    info.pPoolSizes = &poolSize;
+    info.maxSets = 2 * capacity;
+    info.poolSizeCount = 2;
+    info.pPoolSizes = poolSizes;
     if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool_), "vkCreateDescriptorPool",
                error)) {
       drawPool_ = VK_NULL_HANDLE;
@@ -346,12 +367,18 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
     return false;
   }
 
-  std::vector<VkDescriptorSetLayout> layouts(count, forwardSetLayout_);
-  std::vector<VkDescriptorSet> sets(count);
+  // Per draw: set 0 then set 1.
+  std::vector<VkDescriptorSetLayout> layouts;
+  layouts.reserve(2 * size_t{count});
+  for (uint32_t i = 0; i < count; ++i) {
+    layouts.push_back(forwardSetLayout_);
+    layouts.push_back(textureSetLayout_);
+  }
+  std::vector<VkDescriptorSet> sets(layouts.size());
   VkDescriptorSetAllocateInfo allocInfo{};
   allocInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   allocInfo.descriptorPool = drawPool_;
-  allocInfo.descriptorSetCount = count;
+  allocInfo.descriptorSetCount = 2 * count;
   allocInfo.pSetLayouts = layouts.data();
   if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets",
              error)) {
@@ -359,10 +386,12 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
   }
 
   std::vector<VkDescriptorBufferInfo> buffers(3 * size_t{count});
-  std::vector<VkWriteDescriptorSet> writes(3 * size_t{count});
+  std::vector<VkDescriptorImageInfo> images(kTextureSlots * size_t{count});
+  std::vector<VkWriteDescriptorSet> writes((3 + kTextureSlots) * size_t{count});
   for (uint32_t i = 0; i < count; ++i) {
     DrawSlot& slot = (*slots)[i];
-    slot.set = sets[i];
+    slot.set = sets[2 * i];
+    slot.textureSet = sets[2 * i + 1];
     buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
     buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
     buffers[3 * i + 2] = {arena_.buffer, slot.materialOffset, slot.materialSize};
@@ -375,6 +404,21 @@ bool VulkanBackend::allocateDrawSets(std::vector<DrawSlot>* slots, std::string* 
       write.descriptorCount = 1;
       write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
       write.pBufferInfo = &buffers[3 * i + b];
+    }
+    // Every binding is written, the unused ones with the dummy texture: Vulkan 1.1 has no
+    // partially bound descriptor sets, and a shader may declare any of the 16.
+    const TextureSlots textureSlots = textures_.slotsFor(frame, frame.draws[i]);
+    for (uint32_t b = 0; b < kTextureSlots; ++b) {
+      VkDescriptorImageInfo& image = images[kTextureSlots * i + b];
+      image = {textureSlots[b].sampler, textureSlots[b].view,
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      VkWriteDescriptorSet& write = writes[3 * size_t{count} + kTextureSlots * i + b];
+      write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+      write.dstSet = slot.textureSet;
+      write.dstBinding = b;
+      write.descriptorCount = 1;
+      write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      write.pImageInfo = &image;
     }
   }
   vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);

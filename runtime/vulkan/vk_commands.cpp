@@ -1,8 +1,11 @@
 #include "vk_commands.h"
 
+#include "facet/shader_abi.h"
 #include "vk_check.h"
 
 namespace facet::runtime::vulkan {
+
+static_assert(abi::kTextureSet == 1, "draws bind sets 0 and 1 with one call");
 
 bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
                  const float clearColor[4], VkBuffer arena, const std::vector<DrawSlot>& slots,
@@ -39,8 +42,9 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
       bound = slot.pipeline;
     }
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 1,
-                            &slot.set, 0, nullptr);
+    const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2,
+                            sets, 0, nullptr);
     vkCmdBindVertexBuffers(cmd, 0, 1, &arena, &slot.vertexOffset);
     if (slot.indexCount > 0) {
       vkCmdBindIndexBuffer(cmd, arena, slot.indexOffset, VK_INDEX_TYPE_UINT32);

@@ -5,6 +5,7 @@
 
 #include "facet/shader_abi.h"
 #include "vk_convert.h"
+#include "vk_textures.h"
 
 namespace facet::runtime::vulkan {
 namespace {
@@ -50,7 +51,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
       return false;
     }
   }
-  return true;
+  return checkFrameTextures(frame, limits.maxImageDimension2D, error);
 }
 
 VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,

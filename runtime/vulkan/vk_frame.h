@@ -18,7 +18,8 @@ namespace facet::runtime::vulkan {
 // Where one draw's data sits in the arena, and what it is drawn with.
 struct DrawSlot {
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VkDescriptorSet set = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;         // set 0: the uniform blocks
+  VkDescriptorSet textureSet = VK_NULL_HANDLE;  // set 1 (abi::kTextureSet): the 16 samplers
   VkDeviceSize objectOffset = 0;
   VkDeviceSize materialOffset = 0;
   VkDeviceSize materialSize = 0;  // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
@@ -29,10 +30,11 @@ struct DrawSlot {
 };
 
 // Rejects what the device cannot draw or would read out of bounds: an empty or oversized frame,
-// null meshes or programs, partial vertices, indices past the last vertex, oversized params.
+// null meshes or programs, partial vertices, indices past the last vertex, oversized params,
+// and malformed texture bindings (checkFrameTextures in vk_textures.h).
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error);
 
-// Fills the offsets and counts of slots (one per draw; pipeline and set are left alone) and
+// Fills the offsets and counts of slots (one per draw; pipeline and sets are left alone) and
 // returns the arena size the frame needs.
 VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
                          std::vector<DrawSlot>* slots);

@@ -183,12 +183,34 @@ bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::strin
   return true;
 }
 
-bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout, VkPipelineLayout* out,
-                          std::string* error) {
+bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
+  std::array<VkDescriptorSetLayoutBinding, abi::kMaterialTextureBase + abi::kMaxMaterialTextures>
+      bindings{};
+  for (uint32_t i = 0; i < bindings.size(); ++i) {
+    bindings[i].binding = i;
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    bindings[i].descriptorCount = 1;
+    // The vertex stage too: per-vertex lighting will sample the lookup tables there.
+    bindings[i].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  }
+  VkDescriptorSetLayoutCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  info.bindingCount = static_cast<uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
+             "vkCreateDescriptorSetLayout", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts,
+                          VkPipelineLayout* out, std::string* error) {
   VkPipelineLayoutCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-  info.setLayoutCount = 1;
-  info.pSetLayouts = &setLayout;
+  info.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
+  info.pSetLayouts = setLayouts.data();
   if (!check(vkCreatePipelineLayout(device, &info, nullptr, out), "vkCreatePipelineLayout",
              error)) {
     *out = VK_NULL_HANDLE;

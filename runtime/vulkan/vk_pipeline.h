@@ -24,8 +24,14 @@ bool createPostRenderPass(VkDevice device, VkRenderPass* out, std::string* error
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
 // Set 0 of the post shaders: the HDR colour as a combined image sampler.
 bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
-bool createPipelineLayout(VkDevice device, VkDescriptorSetLayout setLayout, VkPipelineLayout* out,
-                          std::string* error);
+// Set 1 (abi::kTextureSet) of material shaders: bindings 0..15 (frame textures, then material
+// textures), all combined image samplers visible to both stages. Fixed rather than reflected per
+// shader, so one pipeline layout serves every material; a binding a draw does not provide is
+// bound to a 1x1 dummy texture (partially bound descriptors are not in Vulkan 1.1 core).
+bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
+// setLayouts[i] becomes set i.
+bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts,
+                          VkPipelineLayout* out, std::string* error);
 
 enum class PipelineKind {
   kForward,  // abi vertex stream, depth test LESS + write

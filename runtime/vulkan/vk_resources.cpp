@@ -66,18 +66,19 @@ void destroyHostBuffer(VkDevice device, HostBuffer* buffer) {
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
                  VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
-                 std::string* error) {
+                 std::string* error, uint32_t mipLevels) {
   Image image;
   image.format = format;
   image.width = width;
   image.height = height;
+  image.mipLevels = mipLevels;
 
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = mipLevels;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -99,7 +100,7 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
     viewInfo.image = image.image;
     viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = format;
-    viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
+    viewInfo.subresourceRange = {aspect, 0, mipLevels, 0, 1};
     ok = check(vkCreateImageView(ctx.device, &viewInfo, nullptr, &image.view), "vkCreateImageView",
                error);
   }

@@ -26,7 +26,8 @@ bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
 // Safe on a default-constructed or partly created buffer; leaves *buffer default-constructed.
 void destroyHostBuffer(VkDevice device, HostBuffer* buffer);
 
-// A 2D image with one mip level and one layer, in device memory, and a view of all of it.
+// A 2D image with one layer and mipLevels levels (render targets: one; sampled textures: their
+// whole given chain), in device memory, and a view of all of it.
 struct Image {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -34,11 +35,12 @@ struct Image {
   VkFormat format = VK_FORMAT_UNDEFINED;
   uint32_t width = 0;
   uint32_t height = 0;
+  uint32_t mipLevels = 1;
 };
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
                  VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
-                 std::string* error);
+                 std::string* error, uint32_t mipLevels = 1);
 // Safe on a default-constructed or partly created image; leaves *image default-constructed.
 void destroyImage(VkDevice device, Image* image);
 

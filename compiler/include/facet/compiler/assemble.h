@@ -11,6 +11,7 @@
 #include "facet/compiler/param_layout.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/module.h"
+#include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::compiler {
@@ -30,6 +31,7 @@ struct AssemblyInput {
   const ir::SurfaceGlsl& surface;
   const ParamLayout& params;
   permutations::VariantKey key;
+  permutations::TierConfig tier;  // the maths this variant's tier uses
   std::string compilerVersion;
 };
 

@@ -30,6 +30,7 @@ struct BuildResult {
 
 struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
+  std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
 };
 
 struct BuildError {

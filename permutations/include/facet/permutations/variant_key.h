@@ -27,13 +27,26 @@ struct VariantKey {
   auto operator<=>(const VariantKey&) const = default;
 };
 
-// What a material needs from the permutation space (filled from the IR by the compiler).
+// What a material needs from the permutation space (filled from the IR by the compiler, or
+// from a package's metadata by the runtime).
 struct MaterialNeeds {
   bool lit = true;
 };
 
-// Every variant the given tiers allow for the material, in a stable (sorted) order.
-std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers);
+// The variants a scene asks a material for (filled by matc from a scene manifest).
+struct SceneNeeds {
+  std::vector<VariantKey> keys;
+};
+
+// The key a renderer asks for: the scene's tier, and whether a directional light is present.
+// Axes the material ignores are normalised (an unlit material has only dir0), so compiler and
+// runtime agree on the key without either knowing the other.
+VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight);
+
+// Every variant the given tiers allow for the material, in a stable (sorted) order; with a
+// scene, only those the scene asks for.
+std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
+                                  const SceneNeeds* scene = nullptr);
 
 // Tiers this compiler version builds shaders for.
 const std::vector<Tier>& supportedTiers();

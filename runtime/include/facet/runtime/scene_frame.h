@@ -19,7 +19,7 @@ class SceneFrame {
 
   const FrameDesc& frame() const { return frame_; }
   double exposure() const { return exposure_; }
-  // The variant key every object uses, e.g. "high.dir1".
+  // The variant key lit objects use, e.g. "high.dir1" (unlit ones ignore the light axis).
   const std::string& variantKey() const { return variantKey_; }
 
  private:

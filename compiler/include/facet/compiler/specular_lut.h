@@ -1,0 +1,62 @@
+// compiler/specular_lut.h
+// The 2D table of specular intensity sampled by chunks/specular_lut.glsl (the `lut` tier).
+//
+// What a texel stores: the GGX lobe with the implicit geometric term (G = n·l n·v, so V = 1/4) and
+// no Fresnel (the shader multiplies by f0 and by n·l), written as a function of the cosine between
+// the reflected view vector R and the light L instead of n·h:
+//   S(R·L, r) = D_GGX(α, n·h') / 4,   n·h'² = (1 + R·L) / 2,   α = max(r, 0.089)²
+// n·h' is exact when v = n (then R = n and the angle R–L is twice the angle n–h) and a close
+// match near the highlight otherwise (Karis 2014, "Physically Based Shading on Mobile", via
+// Zioma 2015, "Optimizing PBR", SIGGRAPH: index by R·L, warp the axis, store intensity / 16).
+//
+// Mapping (the chunk inverts it): texel (i, j) of a W × H table holds, quantised to 8 bits,
+//   round(255 · min(S(c_i, r_j) / scale, 1)),  u_i = i / (W − 1),  r_j = j / (H − 1),
+// with c_i = u_i^(1/4) (axis kReflectedCosine4: u = (R·L)⁴) or c_i = u_i (axis kHalfCosine, the
+// n·h table of the talk, kept to measure against; S is then D(α, n·h)/4 with c = n·h).
+// The texel centres sit at (i + 0.5)/W, so the chunk samples at u·(W − 1)/W + 0.5/W to hit u_i
+// exactly at the table's ends (the peak R·L = 1 is the last column, not half a texel short).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace facet::compiler {
+
+enum class SpecularLutAxis {
+  kReflectedCosine4,  // u = max(R·L, 0)⁴ — what chunks/specular_lut.glsl samples
+  kHalfCosine,        // u = n·h — Zioma's first table; measured in docs/specular-tiers.md only
+};
+
+struct SpecularLutOptions {
+  uint32_t width = 128;   // along u (the warped cosine)
+  uint32_t height = 64;   // along perceptual roughness
+  SpecularLutAxis axis = SpecularLutAxis::kReflectedCosine4;
+  // Decoded intensity = texel / 255 · scale. 16/π (π folded into the /16 of the talk): the
+  // rough lobes (S ≤ 1/(4π α²), 0.08 at r = 1) keep π× finer 8-bit steps; the price is a
+  // ceiling of 5.09 instead of 16, reached only inside highlights that tone-map to white anyway.
+  // Chosen by measurement (docs/specular-tiers.md).
+  double scale = 16.0 / 3.14159265358979323846;
+};
+
+// The default table size and scale; chunks/specular_lut.glsl hard-codes the same numbers.
+inline constexpr uint32_t kSpecularLutWidth = 128;
+inline constexpr uint32_t kSpecularLutHeight = 64;
+inline constexpr double kSpecularLutScale = 16.0 / 3.14159265358979323846;
+
+struct SpecularLut {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  double scale = 0;
+  std::vector<uint8_t> texels;  // row-major, row j = roughness r_j, R8 UNORM
+};
+
+/// The unquantised intensity S a texel approximates, for a cosine c on the given axis (R·L or
+/// n·h, clamped to [0, 1]) and perceptual roughness r (clamped to [0.089, 1]).
+double specularLutIntensity(SpecularLutAxis axis, double cosine, double perceptualRoughness);
+
+/// Deterministic: the same options give the same bytes on every platform (the only
+/// floating-point operations are +, −, ×, ÷ and sqrt, correctly rounded by IEEE 754, and
+/// pow(x, 0.25) is taken as sqrt(sqrt(x))).
+SpecularLut generateSpecularLut(const SpecularLutOptions& options = {});
+
+}  // namespace facet::compiler

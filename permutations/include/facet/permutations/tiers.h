@@ -1,0 +1,30 @@
+// Tier presets: the shading maths each GPU tier uses (DESIGN.md, "Tiers").
+#pragma once
+
+#include <string>
+
+#include "facet/permutations/variant_key.h"
+
+namespace facet::permutations {
+
+enum class SpecularModel { GgxSmith, GgxFastV, Zioma, Lut };
+enum class DiffuseModel { Pixel, Vertex };
+enum class ColorSpace { Linear, GammaHack };
+enum class PrecisionPolicy { Highp, Mediump };
+
+struct TierConfig {
+  SpecularModel specular = SpecularModel::GgxSmith;
+  DiffuseModel diffuse = DiffuseModel::Pixel;
+  ColorSpace colorSpace = ColorSpace::Linear;
+  PrecisionPolicy precision = PrecisionPolicy::Mediump;
+  bool operator==(const TierConfig&) const = default;
+};
+
+// reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against.
+// high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
+TierConfig preset(Tier tier);
+
+// e.g. "ggx_smith, pixel diffuse, linear, mediump"
+std::string describe(const TierConfig& config);
+
+}  // namespace facet::permutations

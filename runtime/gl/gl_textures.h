@@ -1,0 +1,84 @@
+// Sampled textures of the forward pass: checking the frame's TextureBindings, uploading Texture
+// data with all its given mip levels, a cache so that a texture seen in an earlier frame is not
+// uploaded again, binding them to texture units (unit = ABI binding), and pointing each
+// program's sampler uniforms, found by name, at their units.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/render_backend.h"
+#include "gl_objects.h"
+
+namespace facet::runtime::gl {
+
+// Units 0..15: frame textures 0..7, material textures 8..15.
+inline constexpr uint32_t kTextureUnits = abi::kMaterialTextureBase + abi::kMaxMaterialTextures;
+
+// Rejects bindings the backend cannot honour: a binding outside 0..15, one given twice to a draw
+// (its own list and the frame's together), a null texture, a zero or oversized size, no levels
+// or more than the full mip chain, or a level whose byte size is not
+// max(1, width >> i) × max(1, height >> i) × bytes per texel.
+bool checkFrameTextures(const FrameDesc& frame, uint32_t maxTextureSize, std::string* error);
+
+// Sampler uniform name → the unit glUniform1i last gave it in one program (-1: the program has
+// no such active uniform). GLSL ES 3.00 has no layout(binding) for samplers, so this is how a
+// sampler reaches its unit; the map makes that once per program and name, not once per draw.
+using SamplerUnits = std::unordered_map<std::string, GLint>;
+
+// Sets the sampler uniforms that `bindings` name to their units. `program` must be in use.
+void assignSamplerUnits(GLuint program, const std::vector<TextureBinding>& bindings,
+                        SamplerUnits* assigned);
+
+// GL textures made from the Textures a backend has drawn with, keyed by the Texture's address.
+//
+// Cache rule: an entry is reused when the Texture at the same address has the same size, format,
+// level sizes, filter and wrap, and the same 64-bit hash of all its level bytes. The hash is one
+// pass over the data per frame; it is what makes a texture edited in place, or a new one
+// allocated at a freed one's address, upload again instead of sampling stale data. An entry
+// unused for kEvictAfterFrames frames is deleted.
+class TextureCache {
+ public:
+  // Creates the 1x1 dummy texture bound to every unit a draw leaves empty.
+  bool init(std::string* error);
+
+  // Uploads every texture of the (already checked) frame that is new or changed, then deletes
+  // the entries that went unused for too long. Changes the current unit's 2D binding.
+  bool prepare(const FrameDesc& frame, std::string* error);
+
+  // Binds units 0..15 for one draw: the frame's textures, the draw's, the dummy elsewhere, so a
+  // texture of an earlier draw never leaks into this one. Skips units already bound right.
+  void bind(const FrameDesc& frame, const DrawItem& draw);
+  // Forgets what bind() left on the units (call when something else rebinds them).
+  void forgetBindings() { bound_.fill(~0u); }
+
+ private:
+  struct Key {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    TextureFormat format = TextureFormat::Rgba8Unorm;
+    bool linearFilter = false;
+    bool repeat = false;
+    std::vector<size_t> levelSizes;
+    uint64_t hash = 0;
+    bool operator==(const Key& other) const = default;
+  };
+  struct Entry {
+    Key key;
+    Texture texture;
+    uint64_t lastUsedFrame = 0;
+  };
+  static constexpr uint64_t kEvictAfterFrames = 16;
+
+  static bool upload(const facet::runtime::Texture& source, Texture* out, std::string* error);
+
+  Texture dummy_;  // 1x1 RGBA8 (0, 0, 0, 1): what GL returns for an incomplete texture too
+  std::unordered_map<const facet::runtime::Texture*, Entry> textures_;
+  std::array<GLuint, kTextureUnits> bound_{};
+  uint64_t frameNumber_ = 0;
+};
+
+}  // namespace facet::runtime::gl

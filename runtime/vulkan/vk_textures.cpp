@@ -1,0 +1,477 @@
+#include "vk_textures.h"
+
+#include <algorithm>
+#include <cstring>
+#include <unordered_set>
+
+#include "vk_check.h"
+#include "vk_context.h"
+
+namespace facet::runtime::vulkan {
+namespace {
+
+// The same bound as the backend's frame fence: a minute means hung.
+constexpr uint64_t kUploadTimeoutNs = 60ull * 1000 * 1000 * 1000;
+// bufferOffset of a copy must be a multiple of 4 and of the texel size; 16 covers every format.
+constexpr VkDeviceSize kStagingAlignment = 16;
+
+uint32_t bytesPerTexel(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::R8Unorm:
+      return 1;
+    case TextureFormat::Rgba16Float:
+      return 8;
+    case TextureFormat::Rgba8Unorm:
+    case TextureFormat::Rgba8Srgb:
+    case TextureFormat::Rg16Float:
+      return 4;
+  }
+  return 0;  // not an enumerator: rejected by checkTexture
+}
+
+VkFormat vulkanFormat(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Rgba8Unorm:
+      return VK_FORMAT_R8G8B8A8_UNORM;
+    case TextureFormat::Rgba8Srgb:
+      return VK_FORMAT_R8G8B8A8_SRGB;
+    case TextureFormat::R8Unorm:
+      return VK_FORMAT_R8_UNORM;
+    case TextureFormat::Rg16Float:
+      return VK_FORMAT_R16G16_SFLOAT;
+    case TextureFormat::Rgba16Float:
+      return VK_FORMAT_R16G16B16A16_SFLOAT;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+uint32_t levelExtent(uint32_t size, size_t level) { return std::max(1u, size >> level); }
+
+// 1 + floor(log2(max(width, height))): the levels down to 1x1.
+size_t fullChainLength(uint32_t width, uint32_t height) {
+  size_t levels = 1;
+  for (uint32_t size = std::max(width, height); size > 1; size >>= 1) ++levels;
+  return levels;
+}
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+  return (value + alignment - 1) / alignment * alignment;
+}
+
+// Word-at-a-time multiply-xor hash of every level (length included, so moving bytes between
+// levels changes it). Not cryptographic: it detects edits, it does not resist adversaries.
+uint64_t hashLevels(const std::vector<std::vector<uint8_t>>& levels) {
+  constexpr uint64_t kMultiplier = 0x9E3779B97F4A7C15ull;
+  uint64_t hash = 0xCBF29CE484222325ull;
+  const auto mix = [&](uint64_t word) {
+    hash = (hash ^ word) * kMultiplier;
+    hash ^= hash >> 29;
+  };
+  for (const std::vector<uint8_t>& level : levels) {
+    mix(level.size());
+    const uint8_t* bytes = level.data();
+    size_t i = 0;
+    for (; i + 8 <= level.size(); i += 8) {
+      uint64_t word = 0;
+      std::memcpy(&word, bytes + i, 8);
+      mix(word);
+    }
+    if (i < level.size()) {
+      uint64_t word = 0;
+      std::memcpy(&word, bytes + i, level.size() - i);
+      mix(word);
+    }
+  }
+  return hash;
+}
+
+bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::string& which,
+                  std::string* error) {
+  if (texture.width == 0 || texture.height == 0 || texture.width > maxImageSize ||
+      texture.height > maxImageSize) {
+    *error = which + ": size " + std::to_string(texture.width) + "x" +
+             std::to_string(texture.height) + " is outside 1.." + std::to_string(maxImageSize);
+    return false;
+  }
+  const uint32_t texelBytes = bytesPerTexel(texture.format);
+  if (texelBytes == 0) {
+    *error = which + ": unknown TextureFormat " + std::to_string(static_cast<int>(texture.format));
+    return false;
+  }
+  const size_t fullChain = fullChainLength(texture.width, texture.height);
+  if (texture.levels.empty() || texture.levels.size() > fullChain) {
+    *error = which + ": " + std::to_string(texture.levels.size()) + " mip levels given, a " +
+             std::to_string(texture.width) + "x" + std::to_string(texture.height) +
+             " texture has 1.." + std::to_string(fullChain);
+    return false;
+  }
+  for (size_t i = 0; i < texture.levels.size(); ++i) {
+    const uint32_t w = levelExtent(texture.width, i);
+    const uint32_t h = levelExtent(texture.height, i);
+    const size_t expected = size_t{w} * h * texelBytes;
+    if (texture.levels[i].size() != expected) {
+      *error = which + ": level " + std::to_string(i) + " has " +
+               std::to_string(texture.levels[i].size()) + " bytes, " + std::to_string(w) + "x" +
+               std::to_string(h) + " texels of " + std::to_string(texelBytes) + " bytes need " +
+               std::to_string(expected);
+      return false;
+    }
+  }
+  return true;
+}
+
+// Checks one list of bindings; `taken` marks the bindings already given to the same draw.
+bool checkBindings(const std::vector<TextureBinding>& bindings, const std::string& owner,
+                   uint32_t maxImageSize, std::array<const char*, kTextureSlots>* taken,
+                   const char* kind, std::string* error) {
+  for (size_t i = 0; i < bindings.size(); ++i) {
+    const TextureBinding& binding = bindings[i];
+    const std::string which = owner + std::string(kind) + " " + std::to_string(i) + " ('" +
+                              binding.glslName + "', binding " + std::to_string(binding.binding) +
+                              ")";
+    if (binding.binding >= kTextureSlots) {
+      *error = which + ": binding is outside 0.." + std::to_string(kTextureSlots - 1);
+      return false;
+    }
+    if ((*taken)[binding.binding]) {
+      *error = which + ": binding " + std::to_string(binding.binding) + " is already given by a " +
+               (*taken)[binding.binding];
+      return false;
+    }
+    (*taken)[binding.binding] = kind;
+    if (!binding.texture) {
+      *error = which + ": texture is null";
+      return false;
+    }
+    if (!checkTexture(*binding.texture, maxImageSize, which, error)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::string* error) {
+  std::array<const char*, kTextureSlots> frameTaken{};
+  if (!checkBindings(frame.frameTextures, "", maxImageSize, &frameTaken, "frame texture", error)) {
+    return false;
+  }
+  for (size_t d = 0; d < frame.draws.size(); ++d) {
+    std::array<const char*, kTextureSlots> taken = frameTaken;
+    if (!checkBindings(frame.draws[d].textures, "draw " + std::to_string(d) + ": ", maxImageSize,
+                       &taken, "draw texture", error)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool TextureCache::init(const Context* ctx, std::string* error) {
+  ctx_ = ctx;
+  VkCommandPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  poolInfo.flags =
+      VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = ctx->queueFamily;
+  if (!check(vkCreateCommandPool(ctx->device, &poolInfo, nullptr, &commandPool_),
+             "vkCreateCommandPool", error)) {
+    commandPool_ = VK_NULL_HANDLE;
+    return false;
+  }
+  VkCommandBufferAllocateInfo cmdInfo{};
+  cmdInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  cmdInfo.commandPool = commandPool_;
+  cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cmdInfo.commandBufferCount = 1;
+  if (!check(vkAllocateCommandBuffers(ctx->device, &cmdInfo, &commandBuffer_),
+             "vkAllocateCommandBuffers", error)) {
+    commandBuffer_ = VK_NULL_HANDLE;
+    return false;
+  }
+  VkFenceCreateInfo fenceInfo{};
+  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  if (!check(vkCreateFence(ctx->device, &fenceInfo, nullptr, &fence_), "vkCreateFence", error)) {
+    fence_ = VK_NULL_HANDLE;
+    return false;
+  }
+
+  dummySource_.width = 1;
+  dummySource_.height = 1;
+  dummySource_.format = TextureFormat::Rgba8Unorm;
+  dummySource_.levels = {{0, 0, 0, 255}};
+  dummySource_.linearFilter = false;
+  Key key{1, 1, TextureFormat::Rgba8Unorm, false, false, {4}, 0};
+  if (!createEntry(dummySource_, key, &dummy_, error)) return false;
+  return upload({&dummySource_}, {&dummy_}, error);
+}
+
+void TextureCache::destroy() {
+  if (!ctx_ || !ctx_->device) return;
+  for (auto& entry : textures_) destroyEntry(&entry.second);
+  textures_.clear();
+  for (Entry& entry : abandoned_) destroyEntry(&entry);
+  abandoned_.clear();
+  destroyEntry(&dummy_);
+  destroyHostBuffer(ctx_->device, &staging_);
+  if (fence_) vkDestroyFence(ctx_->device, fence_, nullptr);
+  fence_ = VK_NULL_HANDLE;
+  // Destroying the pool frees its command buffer.
+  if (commandPool_) vkDestroyCommandPool(ctx_->device, commandPool_, nullptr);
+  commandPool_ = VK_NULL_HANDLE;
+  commandBuffer_ = VK_NULL_HANDLE;
+  ctx_ = nullptr;
+}
+
+void TextureCache::destroyEntry(Entry* entry) {
+  if (entry->sampler) vkDestroySampler(ctx_->device, entry->sampler, nullptr);
+  entry->sampler = VK_NULL_HANDLE;
+  destroyImage(ctx_->device, &entry->image);
+}
+
+bool TextureCache::createEntry(const Texture& texture, const Key& key, Entry* out,
+                               std::string* error) {
+  const VkFormat format = vulkanFormat(texture.format);
+  VkFormatProperties props{};
+  vkGetPhysicalDeviceFormatProperties(ctx_->physicalDevice, format, &props);
+  VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  if (texture.linearFilter) needed |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  if ((props.optimalTilingFeatures & needed) != needed) {
+    *error = "texture format " + std::to_string(static_cast<int>(format)) +
+             " cannot be sampled" + (texture.linearFilter ? " with linear filtering" : "") +
+             " on this device";
+    return false;
+  }
+
+  Entry entry;
+  entry.key = key;
+  entry.lastUsedFrame = frameNumber_;
+  const auto levels = static_cast<uint32_t>(texture.levels.size());
+  if (!createImage(*ctx_, texture.width, texture.height, format,
+                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                   VK_IMAGE_ASPECT_COLOR_BIT, &entry.image, error, levels)) {
+    return false;
+  }
+
+  const VkFilter filter = texture.linearFilter ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  const VkSamplerAddressMode address =
+      texture.repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VkSamplerCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode =
+      texture.linearFilter ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = address;
+  info.addressModeV = address;
+  info.addressModeW = address;
+  info.minLod = 0.0f;
+  info.maxLod = static_cast<float>(levels - 1);
+  if (!check(vkCreateSampler(ctx_->device, &info, nullptr, &entry.sampler), "vkCreateSampler",
+             error)) {
+    entry.sampler = VK_NULL_HANDLE;
+    destroyEntry(&entry);
+    return false;
+  }
+  *out = entry;
+  return true;
+}
+
+bool TextureCache::upload(const std::vector<const Texture*>& sources,
+                          const std::vector<Entry*>& targets, std::string* error) {
+  VkDevice device = ctx_->device;
+  // Staging layout: every level of every texture, each at an aligned offset.
+  std::vector<VkDeviceSize> offsets;
+  VkDeviceSize size = 0;
+  for (const Texture* texture : sources) {
+    for (const std::vector<uint8_t>& level : texture->levels) {
+      size = alignUp(size, kStagingAlignment);
+      offsets.push_back(size);
+      size += level.size();
+    }
+  }
+  if (!createHostBuffer(*ctx_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, &staging_, error)) {
+    return false;
+  }
+  auto* mapped = static_cast<uint8_t*>(staging_.mapped);
+  size_t next = 0;
+  for (const Texture* texture : sources) {
+    for (const std::vector<uint8_t>& level : texture->levels) {
+      std::memcpy(mapped + offsets[next++], level.data(), level.size());
+    }
+  }
+
+  std::vector<VkImageMemoryBarrier> barriers(targets.size());
+  for (size_t t = 0; t < targets.size(); ++t) {
+    VkImageMemoryBarrier& barrier = barriers[t];
+    barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+    barrier.srcAccessMask = 0;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // fresh image: nothing to keep
+    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = targets[t]->image.image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, targets[t]->image.mipLevels, 0, 1};
+  }
+
+  bool ok = check(vkResetCommandBuffer(commandBuffer_, 0), "vkResetCommandBuffer", error);
+  VkCommandBufferBeginInfo beginInfo{};
+  beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  ok = ok && check(vkBeginCommandBuffer(commandBuffer_, &beginInfo), "vkBeginCommandBuffer", error);
+  if (!ok) {
+    destroyHostBuffer(device, &staging_);
+    return false;
+  }
+  vkCmdPipelineBarrier(commandBuffer_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
+                       static_cast<uint32_t>(barriers.size()), barriers.data());
+  next = 0;
+  for (size_t t = 0; t < targets.size(); ++t) {
+    const Texture& texture = *sources[t];
+    std::vector<VkBufferImageCopy> regions(texture.levels.size());
+    for (size_t level = 0; level < regions.size(); ++level) {
+      VkBufferImageCopy& region = regions[level];
+      region.bufferOffset = offsets[next++];
+      // Tightly packed, row 0 first: texel (s, t) of the data lands at image (x, y) = (s, t),
+      // and Vulkan's texture coordinate t = 0 is image row 0, as the contract's rows are.
+      region.bufferRowLength = 0;
+      region.bufferImageHeight = 0;
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), 0, 1};
+      region.imageExtent = {levelExtent(texture.width, level), levelExtent(texture.height, level),
+                            1};
+    }
+    vkCmdCopyBufferToImage(commandBuffer_, staging_.buffer, targets[t]->image.image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           static_cast<uint32_t>(regions.size()), regions.data());
+  }
+  for (VkImageMemoryBarrier& barrier : barriers) {
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  }
+  // The frame's draws are submitted later on the same queue, so this barrier's second scope
+  // covers their shader reads.
+  vkCmdPipelineBarrier(commandBuffer_, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                       0, 0, nullptr, 0, nullptr, static_cast<uint32_t>(barriers.size()),
+                       barriers.data());
+  if (!check(vkEndCommandBuffer(commandBuffer_), "vkEndCommandBuffer", error) ||
+      !check(vkResetFences(device, 1, &fence_), "vkResetFences", error)) {
+    destroyHostBuffer(device, &staging_);
+    return false;
+  }
+
+  VkSubmitInfo submit{};
+  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commandBuffer_;
+  if (!check(vkQueueSubmit(ctx_->queue, 1, &submit, fence_), "vkQueueSubmit (texture upload)",
+             error) ||
+      !check(vkWaitForFences(device, 1, &fence_, VK_TRUE, kUploadTimeoutNs),
+             "vkWaitForFences (texture upload)", error)) {
+    // The staging buffer and images may still be in use: kept until destroy().
+    deviceFailed_ = true;
+    return false;
+  }
+  destroyHostBuffer(device, &staging_);
+  return true;
+}
+
+void TextureCache::releasePending(std::vector<std::pair<const Texture*, Entry>>* pending) {
+  for (auto& item : *pending) {
+    if (deviceFailed_) {
+      abandoned_.push_back(item.second);
+    } else {
+      destroyEntry(&item.second);
+    }
+  }
+  pending->clear();
+}
+
+bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
+  ++frameNumber_;
+  std::vector<const Texture*> used;
+  std::unordered_set<const Texture*> seen;
+  const auto collect = [&](const std::vector<TextureBinding>& bindings) {
+    for (const TextureBinding& binding : bindings) {
+      if (seen.insert(binding.texture).second) used.push_back(binding.texture);
+    }
+  };
+  collect(frame.frameTextures);
+  for (const DrawItem& draw : frame.draws) collect(draw.textures);
+
+  std::vector<std::pair<const Texture*, Entry>> pending;
+  for (const Texture* texture : used) {
+    Key key;
+    key.width = texture->width;
+    key.height = texture->height;
+    key.format = texture->format;
+    key.linearFilter = texture->linearFilter;
+    key.repeat = texture->repeat;
+    for (const std::vector<uint8_t>& level : texture->levels) {
+      key.levelSizes.push_back(level.size());
+    }
+    key.hash = hashLevels(texture->levels);
+
+    auto found = textures_.find(texture);
+    if (found != textures_.end()) {
+      if (found->second.key == key) {
+        found->second.lastUsedFrame = frameNumber_;
+        continue;
+      }
+      // Changed since its upload. Safe to destroy: the device is idle between frames.
+      destroyEntry(&found->second);
+      textures_.erase(found);
+    }
+    Entry entry;
+    if (!createEntry(*texture, key, &entry, error)) {
+      releasePending(&pending);
+      return false;
+    }
+    pending.emplace_back(texture, entry);
+  }
+
+  if (!pending.empty()) {
+    std::vector<const Texture*> sources;
+    std::vector<Entry*> targets;
+    for (auto& item : pending) {
+      sources.push_back(item.first);
+      targets.push_back(&item.second);
+    }
+    if (!upload(sources, targets, error)) {
+      releasePending(&pending);
+      return false;
+    }
+    for (auto& item : pending) textures_.emplace(item.first, item.second);
+  }
+
+  // Eviction: a texture gone from the scene must not hold device memory forever.
+  for (auto it = textures_.begin(); it != textures_.end();) {
+    if (frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames) {
+      destroyEntry(&it->second);
+      it = textures_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  return true;
+}
+
+TextureSlots TextureCache::slotsFor(const FrameDesc& frame, const DrawItem& draw) const {
+  TextureSlots slots;
+  slots.fill(TextureSlot{dummy_.image.view, dummy_.sampler});
+  const auto assign = [&](const std::vector<TextureBinding>& bindings) {
+    for (const TextureBinding& binding : bindings) {
+      auto found = textures_.find(binding.texture);
+      if (found == textures_.end() || binding.binding >= kTextureSlots) continue;  // checked
+      slots[binding.binding] = {found->second.image.view, found->second.sampler};
+    }
+  };
+  assign(frame.frameTextures);
+  assign(draw.textures);
+  return slots;
+}
+
+}  // namespace facet::runtime::vulkan

@@ -1,0 +1,117 @@
+// Sampled textures of the forward pass (descriptor set abi::kTextureSet): checking the frame's
+// TextureBindings, uploading Texture data into device images with all their given mip levels,
+// a sampler per texture, a cache so that a texture seen in an earlier frame is not uploaded
+// again, and the 1x1 dummy texture bound to every slot a draw leaves empty.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/render_backend.h"
+#include "vk_resources.h"
+
+namespace facet::runtime::vulkan {
+
+class Context;
+
+// Bindings 0..15 of set 1: frame textures 0..7, material textures 8..15.
+inline constexpr uint32_t kTextureSlots = abi::kMaterialTextureBase + abi::kMaxMaterialTextures;
+
+// Rejects bindings the backend cannot honour: a binding outside 0..15, one given twice to a draw
+// (its own list and the frame's together), a null texture, a zero or oversized size, no levels
+// or more than the full mip chain, or a level whose byte size is not
+// max(1, width >> i) × max(1, height >> i) × bytes per texel.
+bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::string* error);
+
+// What one descriptor of set 1 points at.
+struct TextureSlot {
+  VkImageView view = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+};
+using TextureSlots = std::array<TextureSlot, kTextureSlots>;
+
+// Device copies of the Textures a backend has drawn with, keyed by the Texture's address.
+//
+// Cache rule: an entry is reused when the Texture at the same address has the same size, format,
+// level sizes, filter and wrap, and the same 64-bit hash of all its level bytes. The hash is one
+// pass over the data per frame (a few ms for a 4 MB texture in a debug build); it is what makes a
+// texture edited in place, or a new one allocated at a freed one's address, upload again instead
+// of sampling stale data. An entry unused for kEvictAfterFrames frames is released.
+//
+// Uploads are synchronous, like the backend's frames: all new textures of a frame go through one
+// staging buffer and one submission, waited for before the frame's own commands are recorded.
+class TextureCache {
+ public:
+  TextureCache() = default;
+  TextureCache(const TextureCache&) = delete;
+  TextureCache& operator=(const TextureCache&) = delete;
+
+  // Creates the upload command buffer and fence and uploads the dummy texture. ctx must outlive
+  // this cache, and destroy() must be called before the device is destroyed.
+  bool init(const Context* ctx, std::string* error);
+  // Releases every image, sampler and upload object. The device must be idle. Safe to call on an
+  // uninitialised or partly initialised cache, and twice.
+  void destroy();
+
+  // Makes every texture of the (already checked) frame resident and uploaded, then releases the
+  // entries that went unused for too long. The device must be idle (between frames).
+  bool prepare(const FrameDesc& frame, std::string* error);
+
+  // The 16 descriptors of one draw: the frame's textures, then the draw's, the dummy elsewhere.
+  // Every texture of frame and draw must have been through prepare().
+  TextureSlots slotsFor(const FrameDesc& frame, const DrawItem& draw) const;
+
+  // True once an upload submission failed or did not finish; the device may still be using the
+  // upload command buffer, so the backend must stop.
+  bool deviceFailed() const { return deviceFailed_; }
+
+ private:
+  // Everything the reuse decision compares (see the class comment).
+  struct Key {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    TextureFormat format = TextureFormat::Rgba8Unorm;
+    bool linearFilter = false;
+    bool repeat = false;
+    std::vector<size_t> levelSizes;
+    uint64_t hash = 0;
+    bool operator==(const Key& other) const = default;
+  };
+  struct Entry {
+    Key key;
+    Image image;
+    VkSampler sampler = VK_NULL_HANDLE;
+    uint64_t lastUsedFrame = 0;
+  };
+  static constexpr uint64_t kEvictAfterFrames = 16;
+
+  bool createEntry(const Texture& texture, const Key& key, Entry* out, std::string* error);
+  // Copies the textures' levels into one staging buffer and into their images, leaving every
+  // level in SHADER_READ_ONLY_OPTIMAL; one submission, waited for.
+  bool upload(const std::vector<const Texture*>& sources, const std::vector<Entry*>& targets,
+              std::string* error);
+  void destroyEntry(Entry* entry);
+  void releasePending(std::vector<std::pair<const Texture*, Entry>>* pending);
+
+  const Context* ctx_ = nullptr;
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  HostBuffer staging_;  // exists only during an upload (or after one that did not finish)
+  bool deviceFailed_ = false;
+
+  Texture dummySource_;  // 1x1 RGBA8 (0, 0, 0, 1): what GL returns for an incomplete texture
+  Entry dummy_;
+  std::unordered_map<const Texture*, Entry> textures_;
+  // Entries of an upload whose submission did not finish: released only in destroy(), after
+  // the backend has waited for the device.
+  std::vector<Entry> abandoned_;
+  uint64_t frameNumber_ = 0;
+};
+
+}  // namespace facet::runtime::vulkan

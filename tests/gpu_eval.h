@@ -1,0 +1,67 @@
+// tests/gpu_eval.h — evaluate GLSL functions on the GPU (lavapipe) for the chunk tests.
+//
+// One compute shader per call: `#version 310 es`, the given default float precision, the chunk
+// sources in order, then a body that reads `vec4 in0, in1` and writes `vec4 result`, once per
+// input. Compiled with glslang, run on its own Vulkan 1.1 instance and device. With
+// FACET_VK_VALIDATION=1 the Khronos validation layer is enabled and any validation error fails
+// the call.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace facet::test {
+
+enum class FloatPrecision { kHighp, kMediump };
+
+// An R8 UNORM 2D texture bound as `uniform mediump sampler2D lut` (linear filtering, clamp to edge,
+// one mip), for chunks that read a table.
+struct GpuR8Texture {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> texels;  // row-major
+};
+
+struct GpuEvalRequest {
+  std::vector<std::string> chunks;  // GLSL function sources, pasted in order
+  std::string body;                 // statements computing `result` from `in0`, `in1`
+  std::vector<glm::vec4> in0, in1;  // one invocation per element; same size
+  FloatPrecision precision = FloatPrecision::kHighp;
+  const GpuR8Texture* lut = nullptr;
+};
+
+struct GpuEvalResult {
+  std::vector<glm::vec4> values;  // one per input
+  std::string error;              // compile log, Vulkan failure or validation messages
+  bool ok() const { return error.empty(); }
+};
+
+class GpuEvaluator {
+ public:
+  GpuEvaluator();   // creates the instance and device; check ready()
+  ~GpuEvaluator();
+  GpuEvaluator(const GpuEvaluator&) = delete;
+  GpuEvaluator& operator=(const GpuEvaluator&) = delete;
+
+  bool ready() const;
+  const std::string& initError() const;
+  std::string deviceName() const;
+
+  GpuEvalResult run(const GpuEvalRequest& request);
+
+  // The full compute shader source a request turns into (for failure messages).
+  static std::string shaderSource(const GpuEvalRequest& request);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Reads a file under FACET_SOURCE_DIR (e.g. "chunks/brdf_ggx.glsl"); empty on failure.
+std::string readSourceFile(const std::string& relativePath);
+
+}  // namespace facet::test
