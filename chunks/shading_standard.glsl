@@ -7,6 +7,8 @@
 //   L_ambient = diffuseColor · L_sky · ao
 // A constant ambient radiance L gives irradiance π·L; times f_d = 1/π this is diffuseColor·L.
 // Source: Filament PBR document §4.8 (parameterization), §4.6 (reflectance remapping).
+// With FACET_VERTEX_DIFFUSE (Zioma 2015's per-vertex diffuse for mid and low tiers), the diffuse
+// irradiance arrives interpolated from the vertex stage and only specular is shaded per pixel.
 // Needs: diffuse_lambert.glsl and the tier's specular_lobe. fp16: inputs are pre-exposed.
 
 vec3 material_diffuse_color(MaterialInputs material) {
@@ -33,5 +35,10 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
     float LoH = clamp(dot(l, h), 0.0, 1.0);
 
     vec3 specular = specular_lobe(alpha, NoV, NoL, NoH, LoH, n, h, f0);
+#if defined(FACET_VERTEX_DIFFUSE)
+    // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
+    return specular * lightColor * NoL;
+#else
     return (material_diffuse_color(material) * diffuse_lambert() + specular) * lightColor * NoL;
+#endif
 }

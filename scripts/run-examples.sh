@@ -23,6 +23,11 @@ done
 for scene in examples/scenes/*.json; do
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
 done
+# The three-material scene once per tier, to compare what each tier's maths looks like.
+for tier in reference high mid; do
+  build/release/runtime/viewer/facet-view examples/scenes/spheres.json --tier "$tier" \
+    --packages "$packages" --out "$images" --validation
+done
 
 echo
 echo "Packages: $(pwd)/$packages"

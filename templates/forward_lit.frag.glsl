@@ -13,7 +13,11 @@ void main() {
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
 
+#if defined(FACET_VERTEX_DIFFUSE)
+    vec3 color = material_diffuse_color(material) * v_diffuseLight * clamp(material.ambientOcclusion, 0.0, 1.0);
+#else
     vec3 color = shade_standard_ambient(material, frame.ambient.rgb);
+#endif
 #if defined(FACET_DIRECTIONAL_LIGHT)
     // The view vector comes from highp positions; only the unit vector drops to mediump.
     vec3 v = normalize(frame.cameraPosition.xyz - v_worldPosition);

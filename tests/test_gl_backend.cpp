@@ -404,3 +404,60 @@ TEST(GlBackend, TwoBackendsKeepTheirOwnContexts) {
 
 }  // namespace
 }  // namespace facet::runtime
+
+namespace facet::runtime {
+namespace {
+
+// A mediump varying whose value differs between binary16 and binary32 storage: 1 + 2^-12 rounds
+// to 1 in fp16 (11 significant bits) but not in fp32. The fragment stage reads it at highp.
+constexpr const char* kMediumpVaryingVertex = R"(#version 300 es
+layout(location = 0) in vec3 position;
+layout(std140) uniform MaterialParams { highp vec4 small; } params;
+out mediump float v_value;
+void main() { v_value = 1.0 + params.small.x; gl_Position = vec4(position, 1.0); }
+)";
+constexpr const char* kMediumpVaryingFragment = R"(#version 300 es
+precision highp float;
+in mediump float v_value;
+layout(location = 0) out vec4 fragColor;
+void main() { fragColor = vec4((v_value - 1.0) * 4096.0, 0.0, 0.0, 1.0); }
+)";
+constexpr const char* kMediumpArithmeticFragment = R"(#version 300 es
+precision mediump float;
+layout(std140) uniform MaterialParams { mediump vec4 small; } params;
+layout(location = 0) out vec4 fragColor;
+void main() {
+    mediump float sum = 1.0 + params.small.x;
+    fragColor = vec4((sum - 1.0) * 4096.0, 0.0, 0.0, 1.0);
+}
+)";
+
+float probe(const char* vertex, const char* fragment) {
+  auto backend = makeBackend();
+  EXPECT_NE(backend, nullptr);
+  if (!backend) return -1;
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  ShaderProgram shaders;
+  shaders.vertexGlslEs = vertex;
+  shaders.fragmentGlslEs = fragment;
+  FrameDesc frame = makeFrame(4, 4);
+  frame.draws.push_back(makeDraw(mesh, shaders));
+  frame.draws.back().materialParams = materialBytes({1.0f / 4096.0f, 0, 0, 0}, {0, 0, 0, 0});
+  FrameResult result;
+  std::string error;
+  EXPECT_TRUE(backend->render(frame, &result, &error)) << error;
+  return hdrAt(result, 2, 2).r;
+}
+
+}  // namespace
+
+// Measured facts about llvmpipe's GL that the tiers' fp16 work relies on: Mesa's GLSL ES path
+// stores mediump varyings as binary16 but computes mediump arithmetic at fp32. So GL renders of
+// the mobile tiers show fp16 rounding of interpolated inputs (normals!), not of arithmetic; the
+// fp16 emulation build exists for the rest.
+TEST(GlBackend, MediumpVaryingsAreFp16AndMediumpArithmeticIsFp32OnLlvmpipe) {
+  EXPECT_EQ(probe(kMediumpVaryingVertex, kMediumpVaryingFragment), 0.0f) << "fp32 storage would give 1";
+  EXPECT_EQ(probe(kVertexShader, kMediumpArithmeticFragment), 1.0f) << "fp16 arithmetic would give 0";
+}
+
+}  // namespace facet::runtime

@@ -154,7 +154,7 @@ TEST(SceneErrors, VariantNotBuiltForTheSceneIsAClearError) {
   ASSERT_TRUE(scene) << error;
   auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
   EXPECT_FALSE(frame);
-  EXPECT_NE(error.find("was not built with variant 'low.dir1' (built: reference.dir0, reference.dir1, high.dir0, high.dir1)"),
+  EXPECT_NE(error.find("was not built with variant 'low.dir1' (built: reference.dir0, reference.dir1, high.dir0, high.dir1, mid.dir0, mid.dir1)"),
             std::string::npos) << error;
 }
 

@@ -23,6 +23,10 @@ const Varying kVaryings[] = {
     {"highp vec2", "v_uv0", "uv0"},
 };
 
+bool vertexDiffuse(const AssemblyInput& in) {
+  return in.tier.diffuse == permutations::DiffuseModel::Vertex && in.material.shading == "lit";
+}
+
 bool needs(const ir::SurfaceGlsl& surface, const Varying& v) {
   return v.attribute == nullptr || surface.attributes.count(v.attribute) > 0;
 }
@@ -84,6 +88,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   for (const Varying& v : kVaryings)
     if (v.attribute && needs(in.surface, v)) s += "#define FACET_VARYING_" + upper(v.attribute) + " 1\n";
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
+  if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
   return s + "\n";
 }
 
@@ -101,6 +106,10 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
     if (type.rfind("highp ", 0) != 0) type = tierPrecision(in.tier) + std::string(" ") + type;
     s += std::string(direction) + " " + type + " " + v.name + ";\n";
     ++location;
+  }
+  if (vertexDiffuse(in)) {  // diffuse irradiance / π, lit per vertex
+    if (flavour == Flavour::Vulkan) s += "layout(location = " + std::to_string(location) + ") ";
+    s += std::string(direction) + " " + tierPrecision(in.tier) + " vec3 v_diffuseLight;\n";
   }
   return s;
 }
@@ -130,9 +139,14 @@ std::string specularChunk(permutations::SpecularModel model) {
   return "";
 }
 
-// Replaces each `#include "name"` line of a template with the named chunk (each chunk once).
-bool expandIncludes(const std::string& text, const AssemblyInput& in, std::string* out, std::string* error) {
-  std::set<std::string> included;
+// Replaces each `#include "name"` line with the named chunk, recursively (a chunk includes what
+// it needs), each chunk once: the first include places it.
+bool expandIncludes(const std::string& text, const AssemblyInput& in, std::set<std::string>& included, int depth,
+                    std::string* out, std::string* error) {
+  if (depth > 8) {
+    *error = "internal error: chunk includes nest deeper than 8";
+    return false;
+  }
   size_t pos = 0;
   while (pos < text.size()) {
     size_t end = text.find('\n', pos);
@@ -145,20 +159,27 @@ bool expandIncludes(const std::string& text, const AssemblyInput& in, std::strin
       continue;
     }
     std::string name = line.substr(directive.size(), line.size() - directive.size() - 1);
+    if (name == "facet:specular") name = specularChunk(in.tier.specular);
     if (!included.insert(name).second) continue;
     if (name == "facet:material") {
       *out += materialSection(in) + "\n";
       continue;
     }
-    if (name == "facet:specular") name = specularChunk(in.tier.specular);
     auto it = glslLibrary().find(name);
     if (it == glslLibrary().end()) {
       *error = "internal error: template includes unknown chunk '" + name + "'";
       return false;
     }
-    *out += "// ---- chunks/" + name + " ----\n" + it->second + "\n";
+    *out += "// ---- chunks/" + name + " ----\n";
+    if (!expandIncludes(it->second, in, included, depth + 1, out, error)) return false;
+    *out += "\n";
   }
   return true;
+}
+
+bool expandIncludes(const std::string& text, const AssemblyInput& in, std::string* out, std::string* error) {
+  std::set<std::string> included;
+  return expandIncludes(text, in, included, 0, out, error);
 }
 
 bool templateText(const char* name, const std::string** text, std::string* error) {

@@ -18,12 +18,13 @@ int fail(const std::string& message) {
 
 int main(int argc, char** argv) {
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
-  std::string scenePath, packageDir = ".", outDir = ".", backendName = "both";
+  std::string scenePath, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
   app.add_option("--out", outDir, "folder for the PNG files");
   app.add_option("--backend", backendName, "vulkan | gl | both")->check(CLI::IsMember({"vulkan", "gl", "both"}));
+  app.add_option("--tier", tier, "render at this tier instead of the scene's (reference, high, mid, low)");
   app.add_flag("--validation", validation, "enable Vulkan validation layers; any validation error fails the run");
   try {
     app.parse(argc, argv);
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
+  if (!tier.empty()) scene->tier = tier;
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -47,6 +49,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(outDir, ec);
   if (ec) return fail("cannot create '" + outDir + "': " + ec.message());
   std::string stem = std::filesystem::path(scenePath).stem().string();
+  if (!tier.empty()) stem += "." + tier;
 
   std::vector<std::string> backends;
   if (backendName == "both" || backendName == "vulkan") backends.push_back("vulkan");
