@@ -127,3 +127,18 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     EXPECT_GT(db, 30.0) << tier;
   }
 }
+
+TEST(Tiers, MetalGetsHalfWhereGlesGetsMediump) {
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  auto msl = [&](const std::string& key) {
+    for (const auto& v : built->package.variants)
+      if (v.key == key)
+        for (const auto& s : v.shaders)
+          if (s.stage == Stage::Fragment && s.target == facet::package::Target::Msl) return std::string(s.code.begin(), s.code.end());
+    return std::string();
+  };
+  EXPECT_NE(msl("high.dir1").find("half "), std::string::npos);
+  EXPECT_NE(msl("mid.dir1").find("half "), std::string::npos);
+  EXPECT_EQ(msl("reference.dir1").find("half"), std::string::npos);
+}

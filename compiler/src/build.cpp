@@ -128,8 +128,14 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
       return std::nullopt;
     }
     if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return std::nullopt;
+    // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
+    std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
+    if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
+      *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + keyText + ":\n" + log;
+      return std::nullopt;
+    }
     std::string mslVertex, mslFragment;
-    if (!spirvToMsl(spirv.vertex, &mslVertex, error) || !spirvToMsl(spirv.fragment, &mslFragment, error)) return std::nullopt;
+    if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return std::nullopt;
     result.sources.push_back({stem + ".vert.spvasm", disassembleSpirv(spirv.vertex)});
     result.sources.push_back({stem + ".frag.spvasm", disassembleSpirv(spirv.fragment)});
     result.sources.push_back({stem + ".vert.metal", mslVertex});

@@ -32,6 +32,19 @@ bool optimizeSpirv(std::vector<uint32_t>* words, std::string* log) {
   return true;
 }
 
+bool convertRelaxedToHalf(std::vector<uint32_t>* words, std::string* log) {
+  spvtools::Optimizer optimizer(kEnv);
+  optimizer.SetMessageConsumer(collectInto(log));
+  optimizer.RegisterPass(spvtools::CreateConvertRelaxedToHalfPass());
+  // The conversion leaves conversions between adjacent ops; the usual clean-up folds them.
+  optimizer.RegisterPass(spvtools::CreateSimplificationPass());
+  optimizer.RegisterPass(spvtools::CreateAggressiveDCEPass());
+  std::vector<uint32_t> converted;
+  if (!optimizer.Run(words->data(), words->size(), &converted)) return false;
+  *words = std::move(converted);
+  return true;
+}
+
 std::string disassembleSpirv(const std::vector<uint32_t>& words) {
   spvtools::SpirvTools tools(kEnv);
   std::string text;
