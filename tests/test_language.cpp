@@ -144,3 +144,20 @@ TEST(Language, HostileInputGetsErrorsNotCrashes) {
   EXPECT_NE(diagnosticsFor("material m { param x: float = 1e999 surface { roughness = params.x } }").find("out of range"),
             std::string::npos);
 }
+
+TEST(Language, TexturesAreOnlyReadThroughSample) {
+  std::string d = diagnosticsFor(R"(material m {
+    param t: texture(srgb) = vec4(1.0)
+    param u: texture = vec4(1.0)
+    surface {
+        baseColor = sample(params.t, 0.5).rgb
+        roughness = (params.t * 2.0).x
+        metallic = sample(params.t, vertex.uv0).x
+    }
+}
+)");
+  EXPECT_NE(d.find("a texture parameter names its colour space: texture(srgb) or texture(linear)"), std::string::npos) << d;
+  EXPECT_NE(d.find("the second argument of 'sample' is a vec2 texture coordinate, not float"), std::string::npos) << d;
+  EXPECT_NE(d.find("a texture can only be read with sample(texture, uv)"), std::string::npos) << d;
+  EXPECT_EQ(d.find("test.mat:7:"), std::string::npos) << "the valid sample() line must not be reported: " << d;
+}

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -182,4 +183,102 @@ TEST(SceneErrors, ParameterOutsideDeclaredRangeIsRejected) {
   EXPECT_NE(error.find("= 1.5 is outside its range [0, 1]"), std::string::npos) << error;
   EXPECT_FALSE(material->paramBlock({{"rougness", {0.5}}}, &error));
   EXPECT_NE(error.find("has no parameter 'rougness'"), std::string::npos) << error;
+}
+
+namespace {
+
+// Renders a scene (JSON text, resolved against examples/scenes/) with the given packages.
+bool renderScene(const std::string& json, const std::string& packages, facet::runtime::RenderBackend& backend,
+                 FrameResult* out, std::string* error) {
+  auto scene = facet::runtime::parseScene(facet::test::examplePath("scenes/inline.json"), json, error);
+  if (!scene) return false;
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, error);
+  return frame && backend.render(frame->frame(), out, error);
+}
+
+int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  int d = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, std::abs(int(a[i]) - int(b[i])));
+  return a.size() == b.size() ? d : 256;
+}
+
+const char* kTwoSpheres = R"({"width": 96, "height": 64, "sun": {"direction": [-0.4, -0.55, -0.73]}, "sky": {"luminance": 6000},
+  "camera": {"position": [0, 0, 6], "fovY": 30},
+  "objects": [{"material": "%s", "position": [-1.1, 0, 0]}, {"material": "%s", "position": [1.1, 0, 0]%s}]})";
+
+std::string twoSpheres(const std::string& material, const std::string& secondParams = "") {
+  char buf[1024];
+  std::snprintf(buf, sizeof buf, kTwoSpheres, material.c_str(), material.c_str(), secondParams.c_str());
+  return buf;
+}
+
+}  // namespace
+
+// An sRGB texture whose texels are C (here the 1×1 default) must shade exactly like a colour
+// parameter C: both arrive linear, one decoded by the sampler, the other by matc.
+TEST(Textures, SrgbTextureShadesLikeTheSameColourParameter) {
+  std::string packages = facet::test::scratchDir("texture-vs-colour");
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"by_colour", "material by_colour { param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }"},
+           {"by_texture", "material by_texture { param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
+                          " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"}}) {
+    auto built = facet::test::buildText(text, name + ".mat");
+    ASSERT_TRUE(built);
+    std::string error;
+    ASSERT_TRUE(facet::package::writeFile(packages + "/" + name + ".matpkg", facet::package::write(built->package), &error));
+  }
+  std::string error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  FrameResult colour, texture;
+  ASSERT_TRUE(renderScene(twoSpheres("by_colour"), packages, *vk, &colour, &error)) << error;
+  ASSERT_TRUE(renderScene(twoSpheres("by_texture"), packages, *vk, &texture, &error)) << error;
+  // 0.8 in sRGB is stored as 204/255 = 0.8000 exactly, 0.4 as 102/255 and 0.2 as 51/255: one
+  // 8-bit step of slack covers the texel quantisation.
+  EXPECT_LE(maxDifference(colour.ldr, texture.ldr), 1);
+  EXPECT_TRUE(vk->validationErrors().empty());
+}
+
+TEST(Textures, TexturedExampleSceneAgreesOnBothBackends) {
+  std::string packages = compileExamplePackages();
+  std::string error;
+  auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/tiles.json"), &error);
+  ASSERT_TRUE(scene) << error;
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+  ASSERT_TRUE(frame) << error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  auto gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(vk && gl) << error;
+  FrameResult a, b;
+  ASSERT_TRUE(vk->render(frame->frame(), &a, &error)) << error;
+  ASSERT_TRUE(gl->render(frame->frame(), &b, &error)) << error;
+  // Trilinear sampling of a high-contrast image: each rasteriser computes its own LOD and filter
+  // weights, so texels at tile edges may differ by a few steps; nearly everything else agrees.
+  size_t within1 = 0;
+  for (size_t i = 0; i < a.ldr.size(); ++i) within1 += std::abs(int(a.ldr[i]) - int(b.ldr[i])) <= 1;
+  double share = double(within1) / double(a.ldr.size());
+  std::printf("tiles.json Vulkan vs GL: max %d steps, %.4f%% of values within 1 step\n", maxDifference(a.ldr, b.ldr),
+              100.0 * share);
+  EXPECT_LE(maxDifference(a.ldr, b.ldr), 6);
+  EXPECT_GE(share, 0.995);
+  EXPECT_TRUE(vk->validationErrors().empty());
+  EXPECT_TRUE(gl->validationErrors().empty());
+}
+
+TEST(Textures, UnreadableImageIsAClearErrorNotACrash) {
+  std::string packages = compileExamplePackages();
+  std::string dir = facet::test::scratchDir("bad-image");
+  { std::ofstream(dir + "/broken.png", std::ios::binary) << std::string("\x89PNG\r\n\x1a\nnot really", 18); }
+  std::string error;
+  auto scene = facet::runtime::parseScene(dir + "/scene.json",
+      R"({"sun": {}, "objects": [{"material": "painted_tiles", "params": {"albedo": "broken.png"}}]})", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
+  EXPECT_NE(error.find("broken.png: cannot read image"), std::string::npos) << error;
+
+  scene = facet::runtime::parseScene(dir + "/scene.json",
+      R"({"sun": {}, "objects": [{"material": "red_plastic", "params": {"roughness": "tiles.png"}}]})", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
+  EXPECT_NE(error.find("has no texture parameter 'roughness'"), std::string::npos) << error;
 }

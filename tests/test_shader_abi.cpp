@@ -175,3 +175,39 @@ TEST(ShaderAbi, Uv0AttributeAndVaryingExistOnlyWhenRead) {
   EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Vertex)).inputs.at("a_uv0"), facet::abi::kAttribUv0);
   EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Fragment)).inputs.count("v_uv0"), 1u);
 }
+
+TEST(ShaderAbi, SampledTextureGetsASamplerAtItsSlotAndAnUnsampledOneNone) {
+  auto built = facet::test::buildText(R"(material m {
+    param unused: texture(linear) = vec4(0.5)
+    param albedo: texture(srgb) = vec4(1.0)
+    surface { baseColor = sample(params.albedo, vertex.uv0).rgb }
+})");
+  ASSERT_TRUE(built);
+  const auto& params = built->package.material.params;
+  EXPECT_EQ(params.at(0).type, facet::package::ParamType::TextureLinear);
+  EXPECT_EQ(params.at(0).offset, facet::package::kNoTextureSlot);
+  EXPECT_EQ(params.at(1).type, facet::package::ParamType::TextureSrgb);
+  EXPECT_EQ(params.at(1).offset, 0u);
+  EXPECT_EQ(built->package.material.paramBlockSize, 0u);  // no numbers read: no block
+
+  // Reflect the fragment stage's samplers: exactly one, at set 1, binding 8 + slot 0.
+  std::vector<uint8_t> code = spirv(highDir1(*built), facet::package::Stage::Fragment);
+  std::vector<uint32_t> words(code.size() / 4);
+  std::memcpy(words.data(), code.data(), words.size() * 4);
+  spvc_context ctx = nullptr;
+  spvc_context_create(&ctx);
+  spvc_parsed_ir ir = nullptr;
+  spvc_compiler compiler = nullptr;
+  spvc_resources resources = nullptr;
+  ASSERT_EQ(spvc_context_parse_spirv(ctx, words.data(), words.size(), &ir), SPVC_SUCCESS);
+  ASSERT_EQ(spvc_context_create_compiler(ctx, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler), SPVC_SUCCESS);
+  ASSERT_EQ(spvc_compiler_create_shader_resources(compiler, &resources), SPVC_SUCCESS);
+  const spvc_reflected_resource* list = nullptr;
+  size_t count = 0;
+  spvc_resources_get_resource_list_for_type(resources, SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, &list, &count);
+  ASSERT_EQ(count, 1u);
+  EXPECT_STREQ(list[0].name, "material_albedo");
+  EXPECT_EQ(spvc_compiler_get_decoration(compiler, list[0].id, SpvDecorationDescriptorSet), facet::abi::kTextureSet);
+  EXPECT_EQ(spvc_compiler_get_decoration(compiler, list[0].id, SpvDecorationBinding), facet::abi::kMaterialTextureBase);
+  spvc_context_destroy(ctx);
+}

@@ -66,7 +66,7 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
   }
   s += "\n" + blockLayout(flavour, 2) + " uniform MaterialParams {\n";
   for (const ir::Param& p : material.params) {
-    if (!p.used) continue;
+    if (!p.used || p.type == ir::Type::Texture2D) continue;
     std::string qualifier = p.type == ir::Type::Bool ? "" : std::string(precision) + " ";
     s += "    " + qualifier + ir::glslName(p.type) + " " + p.name + ";\n";
   }
@@ -75,6 +75,19 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
 
 std::string upper(std::string s) {
   for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// One sampler uniform per texture the material reads. Vulkan: set 1, binding 8 + slot
+// (shader_abi.h); GLES binds by name, so the runtime looks up "material_<name>".
+std::string materialSamplers(Flavour flavour, const ParamLayout& layout, const char* precision) {
+  std::string s;
+  for (const ParamSlot& slot : layout.slots) {
+    if (slot.textureSlot < 0) continue;
+    if (flavour == Flavour::Vulkan)
+      s += "layout(set = 1, binding = " + std::to_string(8 + slot.textureSlot) + ") ";
+    s += "uniform " + std::string(precision) + " sampler2D material_" + slot.name + ";\n";
+  }
   return s;
 }
 
@@ -214,7 +227,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   const char* fragmentPrecision = tierPrecision(in.tier);
   std::string fs = prologue(in, flavour, "fragment", fragmentPrecision);
   fs += varyings(in, flavour, "in") + "layout(location = 0) out " + fragmentPrecision + " vec4 fragColor;\n\n";
-  fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) + "\n";
+  fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) +
+        materialSamplers(flavour, in.params, fragmentPrecision) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, error)) return false;
   const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
   if (size_t at = fs.find(bodyStart); at != std::string::npos)

@@ -25,6 +25,8 @@ std::vector<uint8_t> bytesOf(const std::vector<uint32_t>& words) {
 package::ParamType packageType(const ir::Param& p) {
   if (p.isColor) return package::ParamType::Color;
   switch (p.type) {
+    case ir::Type::Texture2D:
+      return p.textureSpace == ir::TextureSpace::Srgb ? package::ParamType::TextureSrgb : package::ParamType::TextureLinear;
     case ir::Type::Float: return package::ParamType::Float;
     case ir::Type::Vec2: return package::ParamType::Vec2;
     case ir::Type::Vec3: return package::ParamType::Vec3;
@@ -51,6 +53,8 @@ package::MaterialInfo materialInfo(const ir::Material& m, const ParamLayout& lay
     out.rangeMax = p.rangeMax;
     out.offset = layout.slots[i].offset;
     out.size = layout.slots[i].size;
+    if (package::isTexture(out.type))
+      out.offset = layout.slots[i].textureSlot < 0 ? package::kNoTextureSlot : uint32_t(layout.slots[i].textureSlot);
     info.params.push_back(std::move(out));
   }
   return info;

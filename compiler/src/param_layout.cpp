@@ -5,7 +5,12 @@ namespace facet::compiler {
 ParamLayout layoutParams(const std::vector<ir::Param>& params) {
   ParamLayout layout;
   uint32_t offset = 0;
+  int textureSlot = 0;
   for (const ir::Param& p : params) {
+    if (p.type == ir::Type::Texture2D) {  // a sampler, not block bytes
+      layout.slots.push_back({p.name, p.type, 0, 0, p.used ? textureSlot++ : -1});
+      continue;
+    }
     if (!p.used) {  // nothing reads it: no uniform, no bytes
       layout.slots.push_back({p.name, p.type, 0, 0});
       continue;

@@ -89,9 +89,13 @@ class Checker {
         return;
       }
     }
-    auto parsed = parseTypeName(decl.typeName);
+    auto parsed = parseTypeName(decl.typeName, decl.typeArgument);
+    if (!parsed && decl.typeName == "texture") {
+      error(decl.typeLoc, "a texture parameter names its colour space: texture(srgb) or texture(linear)", "type");
+      return;
+    }
     if (!parsed) {
-      static const std::vector<std::string> types = {"float", "vec2", "vec3", "vec4", "int", "bool", "color"};
+      static const std::vector<std::string> types = {"float", "vec2", "vec3", "vec4", "int", "bool", "color", "texture"};
       error(decl.typeLoc, "unknown parameter type '" + decl.typeName + "'" + suggestion(closestMatch(decl.typeName, types)),
             "unknown-name");
       return;
@@ -100,7 +104,12 @@ class Checker {
     p.name = decl.name;
     p.type = parsed->type;
     p.isColor = parsed->isColor;
+    p.textureSpace = parsed->textureSpace;
     p.loc = decl.loc;
+    if (p.type == Type::Texture2D) {
+      checkTextureParam(decl, std::move(p));
+      return;
+    }
     auto def = constantOf(*decl.defaultValue, "a default value");
     if (!def) return;
     bool integralFloat = def->type == Type::Float && std::floor(def->constant[0]) == def->constant[0];
@@ -141,6 +150,35 @@ class Checker {
         }
         c = srgbToLinear(c);
       }
+    }
+    material_.params.push_back(std::move(p));
+  }
+
+  // A texture's default is the RGBA value (as encoded in its colour space) a missing image
+  // samples as; the runtime makes a 1×1 texture of it.
+  void checkTextureParam(const ast::ParamDecl& decl, Param p) {
+    size_t textures = 0;
+    for (const Param& q : material_.params) textures += q.type == Type::Texture2D;
+    if (textures >= kMaxTextureParams) {
+      error(decl.loc, "a material has at most " + std::to_string(kMaxTextureParams) + " texture parameters", "limit");
+      return;
+    }
+    if (decl.rangeMin) {
+      error(decl.rangeMin->loc, "a texture parameter has no range", "type");
+      return;
+    }
+    auto def = constantOf(*decl.defaultValue, "a default value");
+    if (!def) return;
+    if (def->type != Type::Vec4) {
+      error(decl.defaultValue->loc, "the default of a texture is the vec4 a missing image samples as", "type");
+      return;
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (def->constant[size_t(i)] < 0.0 || def->constant[size_t(i)] > 1.0) {
+        error(decl.defaultValue->loc, "texture default components are in [0, 1]", "range");
+        return;
+      }
+      p.defaultValue.push_back(def->constant[size_t(i)]);
     }
     material_.params.push_back(std::move(p));
   }
@@ -352,6 +390,13 @@ class Checker {
     for (ValueId a : *args) types.push_back(typeOf(a));
 
     if (e.name == "vec2" || e.name == "vec3" || e.name == "vec4" || e.name == "float") return construct(e, *args, types);
+    if (e.name == "sample") return sample(e, *args, types);
+    for (size_t i = 0; i < types.size(); ++i) {
+      if (types[i] == Type::Texture2D) {
+        error(e.args[i]->loc, "a texture can only be read with sample(texture, uv)", "type");
+        return std::nullopt;
+      }
+    }
 
     std::string why;
     auto b = resolveBuiltin(e.name, types, &why);
@@ -370,6 +415,35 @@ class Checker {
     v.type = b->result;
     v.name = b->glsl;
     v.args = *args;
+    return module().add(std::move(v));
+  }
+
+  // sample(texture, uv) -> vec4: the texture's filtered RGBA at uv (colour textures decoded to
+  // linear by the sampler).
+  Result sample(const Expr& e, const std::vector<ValueId>& args, const std::vector<Type>& types) {
+    if (args.size() != 2) {
+      error(e.loc, "'sample' takes 2 arguments, not " + std::to_string(args.size()), "type");
+      return std::nullopt;
+    }
+    if (types[0] != Type::Texture2D || module().value(args[0]).op != Op::Param) {
+      error(e.args[0]->loc, "the first argument of 'sample' is a texture parameter, not " + std::string(typeName(types[0])),
+            "type");
+      return std::nullopt;
+    }
+    if (types[1] != Type::Vec2) {
+      error(e.args[1]->loc, "the second argument of 'sample' is a vec2 texture coordinate, not " +
+                                std::string(typeName(types[1])), "type");
+      return std::nullopt;
+    }
+    if (constantOnly_) {
+      error(e.loc, "textures cannot be sampled in a constant expression", "constant");
+      return std::nullopt;
+    }
+    Value v;
+    v.op = Op::Builtin;
+    v.type = Type::Vec4;
+    v.name = "sample";
+    v.args = args;
     return module().add(std::move(v));
   }
 
@@ -411,8 +485,8 @@ class Checker {
     if (!x) return std::nullopt;
     Type t = typeOf(*x);
     if (e.op == Tok::Minus) {
-      if (t == Type::Bool) {
-        error(e.loc, "'-' needs a number, but the operand is bool", "type");
+      if (t == Type::Bool || t == Type::Texture2D) {
+        error(e.loc, "'-' needs a number, but the operand is " + std::string(typeName(t)), "type");
         return std::nullopt;
       }
       return module().add(Value{Op::Neg, t, {*x}, {}, ""});
@@ -451,6 +525,10 @@ class Checker {
       error(e.loc, std::string("operands of ") + describe(e.op) + " are " + typeName(ta) + " and " + typeName(tb), "type");
       return std::nullopt;
     };
+    if (ta == Type::Texture2D || tb == Type::Texture2D) {
+      error(e.loc, "a texture can only be read with sample(texture, uv)", "type");
+      return std::nullopt;
+    }
     if (op == Op::And || op == Op::Or) {
       if (ta != Type::Bool || tb != Type::Bool) return mismatch();
       return module().add(Value{op, Type::Bool, {*a, *b}, {}, ""});

@@ -62,7 +62,8 @@ class Emitter {
       case Op::Constant: return glslConstant(v.type, v.constant);
       case Op::Param:
         out_.params.insert(v.name);
-        return "params." + v.name;
+        // Samplers cannot live in a uniform block: each texture is its own uniform.
+        return (v.type == Type::Texture2D ? "material_" : "params.") + v.name;
       case Op::Attribute:
         out_.attributes.insert(v.name);
         return findAttribute(v.name)->glsl;
@@ -97,6 +98,7 @@ class Emitter {
       case Op::Construct: return std::string(glslName(v.type)) + "(" + join(a) + ")";
       case Op::Builtin:
         if (v.name == "saturate") return "clamp(" + a[0] + ", 0.0, 1.0)";
+        if (v.name == "sample") return "texture(" + a[0] + ", " + a[1] + ")";
         return v.name + "(" + join(a) + ")";
       default: return "";
     }

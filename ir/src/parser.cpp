@@ -140,6 +140,10 @@ class Parser {
     const Token& type = expect(Tok::Identifier, "a parameter type");
     p.typeName = type.text;
     p.typeLoc = type.loc;
+    if (accept(Tok::LParen)) {
+      p.typeArgument = expect(Tok::Identifier, "a colour space (srgb or linear)").text;
+      expect(Tok::RParen, "')' after the colour space");
+    }
     expect(Tok::Assign, "'=' and a default value (every parameter has one)");
     p.defaultValue = expression();
     if (atKeyword("in")) {

@@ -131,6 +131,7 @@ class Analysis {
         return increasing(arg(0, i), [](double x) { return x <= 0 ? -kInf : std::log2(x); });
       });
     if (f == "sin" || f == "cos" || f == "normalize") return each([&](int) { return kSigned; });
+    if (f == "sample") return each([&](int) { return kUnit; });  // 8-bit UNORM / sRGB images
     if (f == "saturate" || f == "step" || f == "smoothstep") return each([&](int i) {
         return f == "saturate" ? clampTo(arg(0, i), kUnit) : kUnit;
       });

@@ -10,13 +10,20 @@ const char* glslName(Type t) {
     case Type::Vec4: return "vec4";
     case Type::Int: return "int";
     case Type::Bool: return "bool";
+    case Type::Texture2D: return "sampler2D";
   }
   return "float";
 }
 
-const char* typeName(Type t) { return glslName(t); }
+const char* typeName(Type t) { return t == Type::Texture2D ? "texture" : glslName(t); }
 
-std::optional<ParsedType> parseTypeName(std::string_view name) {
+std::optional<ParsedType> parseTypeName(std::string_view name, std::string_view argument) {
+  if (name == "texture") {
+    if (argument == "srgb") return ParsedType{Type::Texture2D, false, TextureSpace::Srgb};
+    if (argument == "linear") return ParsedType{Type::Texture2D, false, TextureSpace::Linear};
+    return std::nullopt;
+  }
+  if (!argument.empty()) return std::nullopt;
   if (name == "float") return ParsedType{Type::Float};
   if (name == "vec2") return ParsedType{Type::Vec2};
   if (name == "vec3") return ParsedType{Type::Vec3};

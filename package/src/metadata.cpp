@@ -68,7 +68,11 @@ void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& 
     // A parameter either has a slot inside the block (size = 4 bytes per component) or none
     // (size 0: the material never reads it, so the compiler gave it no uniform).
     const uint64_t slotEnd = uint64_t(p.offset) + p.size;
-    if (p.size != 0 && (p.size != 4u * components || slotEnd > material.paramBlockSize)) {
+    if (isTexture(p.type) && (p.size != 0 || (p.offset >= 8 && p.offset != kNoTextureSlot))) {
+      in.fail(what + " is a texture with sampler slot " + std::to_string(p.offset) + " (0..7, or none)");
+      return;
+    }
+    if (!isTexture(p.type) && p.size != 0 && (p.size != 4u * components || slotEnd > material.paramBlockSize)) {
       in.fail(what + " occupies bytes " + std::to_string(p.offset) + ".." + std::to_string(slotEnd) +
               ", which do not fit its type inside the " + std::to_string(material.paramBlockSize) +
               "-byte parameter block");

@@ -29,13 +29,16 @@ const char* toString(ParamType type) {
     case ParamType::Int: return "int";
     case ParamType::Bool: return "bool";
     case ParamType::Color: return "color";
+    case ParamType::TextureSrgb: return "texture(srgb)";
+    case ParamType::TextureLinear: return "texture(linear)";
   }
   return "unknown";
 }
 
 std::optional<ParamType> paramTypeFromString(std::string_view name) {
   for (ParamType t : {ParamType::Float, ParamType::Vec2, ParamType::Vec3, ParamType::Vec4,
-                      ParamType::Int, ParamType::Bool, ParamType::Color}) {
+                      ParamType::Int, ParamType::Bool, ParamType::Color,
+                      ParamType::TextureSrgb, ParamType::TextureLinear}) {
     if (name == toString(t)) return t;
   }
   return std::nullopt;

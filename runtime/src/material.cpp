@@ -75,6 +75,14 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
   }
   std::vector<uint8_t> block(info.paramBlockSize, 0);
   for (const package::Param& p : info.params) {
+    if (package::isTexture(p.type)) {
+      if (values.count(p.name)) {
+        *error = "parameter '" + p.name + "' of material '" + info.name + "' is a texture: give an image path";
+        return std::nullopt;
+      }
+      continue;
+    }
+    if (p.size == 0) continue;  // never read by the shaders: no bytes to fill
     std::vector<double> v = p.defaultValue;
     if (auto it = values.find(p.name); it != values.end()) {
       if (int(it->second.size()) != componentCount(p.type)) {
@@ -112,6 +120,32 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
     }
   }
   return block;
+}
+
+std::optional<std::vector<LoadedMaterial::SampledTexture>> LoadedMaterial::sampledTextures(
+    const std::map<std::string, std::string>& images, std::string* error) const {
+  const package::MaterialInfo& info = package_.material;
+  for (const auto& [name, path] : images) {
+    bool texture = false;
+    for (const package::Param& p : info.params) texture = texture || (p.name == name && package::isTexture(p.type));
+    if (!texture) {
+      *error = "material '" + info.name + "' has no texture parameter '" + name + "' (given image '" + path + "')";
+      return std::nullopt;
+    }
+  }
+  std::vector<SampledTexture> out;
+  for (const package::Param& p : info.params) {
+    if (!package::isTexture(p.type) || p.offset == package::kNoTextureSlot) continue;
+    SampledTexture t;
+    t.param = p.name;
+    t.slot = p.offset;
+    t.glslName = "material_" + p.name;
+    t.srgb = p.type == package::ParamType::TextureSrgb;
+    if (auto it = images.find(p.name); it != images.end()) t.imagePath = it->second;
+    for (size_t i = 0; i < 4 && i < p.defaultValue.size(); ++i) t.defaultValue[i] = p.defaultValue[i];
+    out.push_back(std::move(t));
+  }
+  return out;
 }
 
 }  // namespace facet::runtime

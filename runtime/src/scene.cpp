@@ -77,7 +77,7 @@ Sun sun(const json& j) {
   return s;
 }
 
-SceneObject object(const json& j, const std::string& pointer) {
+SceneObject object(const json& j, const std::string& pointer, const std::filesystem::path& sceneDir) {
   onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
   SceneObject o;
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
@@ -94,18 +94,22 @@ SceneObject object(const json& j, const std::string& pointer) {
     for (const auto& [name, value] : params.items()) {
       std::string p = pointer + "/params/" + name;
       std::vector<double> v;
+      if (value.is_string()) {  // a texture parameter's image, relative to the scene file
+        o.textures[name] = (sceneDir / value.get<std::string>()).lexically_normal().string();
+        continue;
+      }
       if (value.is_number()) v.push_back(number(value, p, -1e30, 1e30));
       else if (value.is_boolean()) v.push_back(value.get<bool>() ? 1 : 0);
       else if (value.is_array() && !value.empty() && value.size() <= 4)
         for (size_t i = 0; i < value.size(); ++i) v.push_back(number(value[i], p + "/" + std::to_string(i), -1e30, 1e30));
-      else fail(p, "expected a number, a bool or an array of 1 to 4 numbers");
+      else fail(p, "expected a number, a bool, an array of 1 to 4 numbers, or an image path");
       o.params[name] = std::move(v);
     }
   }
   return o;
 }
 
-Scene scene(const json& j) {
+Scene scene(const json& j, const std::filesystem::path& sceneDir) {
   onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "sky", "objects"});
   Scene s;
   if (j.contains("width")) s.width = uint32_t(number(j["width"], "/width", 1, 4096));
@@ -120,7 +124,7 @@ Scene scene(const json& j) {
   if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");
   if (j["objects"].size() > 4096) fail("/objects", "more than 4096 objects");
   for (size_t i = 0; i < j["objects"].size(); ++i)
-    s.objects.push_back(object(j["objects"][i], "/objects/" + std::to_string(i)));
+    s.objects.push_back(object(j["objects"][i], "/objects/" + std::to_string(i), sceneDir));
   return s;
 }
 
@@ -149,7 +153,7 @@ std::optional<Scene> parseScene(const std::string& path, const std::string& text
     return std::nullopt;
   }
   try {
-    return scene(j);
+    return scene(j, std::filesystem::path(path).parent_path());
   } catch (const SceneError& e) {
     *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
   } catch (const json::exception& e) {

@@ -8,6 +8,7 @@
 
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/exposure.h"
+#include "facet/runtime/image_texture.h"
 #include "facet/runtime/mesh.h"
 
 namespace facet::runtime {
@@ -82,9 +83,38 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       return nullptr;
     }
     draw.materialParams = std::move(*block);
+    auto sampled = out->materials_[it->second]->sampledTextures(o.textures, error);
+    if (!sampled) {
+      *error = "object " + std::to_string(i) + ": " + *error;
+      return nullptr;
+    }
+    for (const LoadedMaterial::SampledTexture& t : *sampled) {
+      const Texture* texture = out->texture(t, error);
+      if (!texture) {
+        *error = "object " + std::to_string(i) + ": " + *error;
+        return nullptr;
+      }
+      draw.textures.push_back({abi::kMaterialTextureBase + t.slot, t.glslName, texture});
+    }
     out->frame_.draws.push_back(std::move(draw));
   }
   return out;
+}
+
+const Texture* SceneFrame::texture(const LoadedMaterial::SampledTexture& t, std::string* error) {
+  // One texture per image file (or default colour) and encoding, shared by every object using it.
+  std::string key = (t.srgb ? "srgb:" : "linear:") + t.imagePath;
+  if (t.imagePath.empty())
+    for (double c : t.defaultValue) key += ":" + std::to_string(c);
+  if (auto it = textures_.find(key); it != textures_.end()) return it->second.get();
+  std::optional<Texture> made;
+  if (t.imagePath.empty()) {
+    made = solidTexture(t.defaultValue, t.srgb);
+  } else {
+    made = loadImageTexture(t.imagePath, t.srgb, error);
+    if (!made) return nullptr;
+  }
+  return textures_.emplace(key, std::make_unique<Texture>(std::move(*made))).first->second.get();
 }
 
 }  // namespace facet::runtime

@@ -27,7 +27,12 @@ enum class Target : uint8_t {
 const char* toString(Stage);
 const char* toString(Target);
 
-enum class ParamType : uint8_t { Float, Vec2, Vec3, Vec4, Int, Bool, Color };
+// TextureSrgb / TextureLinear: a 2D texture and how its image is encoded. Its default is the
+// RGBA (as encoded) a missing image samples as; `offset` holds its sampler slot i (binding
+// abi::kMaterialTextureBase + i), or kNoTextureSlot when the material never samples it.
+enum class ParamType : uint8_t { Float, Vec2, Vec3, Vec4, Int, Bool, Color, TextureSrgb, TextureLinear };
+inline constexpr uint32_t kNoTextureSlot = 0xffffffffu;
+inline bool isTexture(ParamType t) { return t == ParamType::TextureSrgb || t == ParamType::TextureLinear; }
 const char* toString(ParamType);
 std::optional<ParamType> paramTypeFromString(std::string_view);
 

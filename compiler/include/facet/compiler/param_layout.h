@@ -14,6 +14,7 @@ struct ParamSlot {
   ir::Type type;
   uint32_t offset;
   uint32_t size;  // 0: not in the block
+  int textureSlot = -1;  // textures: sampler slot i (binding abi::kMaterialTextureBase + i); -1 unused
 };
 
 struct ParamLayout {

@@ -30,6 +30,7 @@ struct ParamDecl {
   std::string name;
   SourceLoc loc;
   std::string typeName;
+  std::string typeArgument;  // texture(srgb): "srgb"
   SourceLoc typeLoc;
   ExprPtr defaultValue;
   ExprPtr rangeMin;  // both set when the declaration has `in [min, max]`

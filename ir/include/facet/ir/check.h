@@ -8,6 +8,9 @@
 
 namespace facet::ir {
 
+// Texture parameters per material: the sampler slots shader_abi.h reserves for a material.
+inline constexpr size_t kMaxTextureParams = 8;
+
 // Checks a parsed material. Reports every error it can find (several per run); returns the IR
 // only when there were none.
 std::optional<Material> check(const ast::Material& material, Diagnostics& diags);

@@ -66,6 +66,8 @@ struct Param {
   std::string name;
   Type type = Type::Float;
   bool isColor = false;              // authored in sRGB; defaultValue holds the linear value
+  TextureSpace textureSpace = TextureSpace::None;  // textures: how the image is encoded; defaultValue
+                                                   // is the RGBA (as encoded) a missing image samples as
   std::vector<double> defaultValue;  // componentCount(type) values
   std::optional<double> rangeMin, rangeMax;
   SourceLoc loc;

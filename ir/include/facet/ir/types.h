@@ -6,7 +6,8 @@
 
 namespace facet::ir {
 
-enum class Type { Float, Vec2, Vec3, Vec4, Int, Bool };
+// Texture2D: a texture parameter; its only use is as the first argument of sample().
+enum class Type { Float, Vec2, Vec3, Vec4, Int, Bool, Texture2D };
 
 inline int componentCount(Type t) {
   switch (t) {
@@ -23,10 +24,14 @@ inline Type floatVector(int n) { return n == 1 ? Type::Float : n == 2 ? Type::Ve
 const char* glslName(Type t);
 // Language spelling; also parses parameter types (`color` maps to Vec3 with isColor set).
 const char* typeName(Type t);
+enum class TextureSpace { None, Srgb, Linear };
+
 struct ParsedType {
   Type type;
   bool isColor = false;
+  TextureSpace textureSpace = TextureSpace::None;
 };
-std::optional<ParsedType> parseTypeName(std::string_view name);
+// `texture` takes its colour space as an argument: texture(srgb) or texture(linear).
+std::optional<ParsedType> parseTypeName(std::string_view name, std::string_view argument = {});
 
 }  // namespace facet::ir

@@ -1,6 +1,7 @@
 // A material package loaded by an app: variant lookup and parameter block packing.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -28,6 +29,19 @@ class LoadedMaterial {
   // wrong component counts and values outside a declared range are errors.
   std::optional<std::vector<uint8_t>> paramBlock(const std::map<std::string, std::vector<double>>& values,
                                                  std::string* error) const;
+
+  struct SampledTexture {
+    std::string param;        // texture parameter name
+    uint32_t slot = 0;        // sampler slot: binding abi::kMaterialTextureBase + slot
+    std::string glslName;     // "material_<param>"
+    std::string imagePath;    // "" when the scene gives none: use defaultValue
+    bool srgb = false;
+    std::array<double, 4> defaultValue{};
+  };
+  // The textures the material samples, with the image a scene gives for each (by parameter
+  // name) or none. Naming an image for a parameter that is not a texture is an error.
+  std::optional<std::vector<SampledTexture>> sampledTextures(const std::map<std::string, std::string>& images,
+                                                             std::string* error) const;
 
  private:
   package::Package package_;

@@ -36,6 +36,7 @@ struct SceneObject {
   glm::dvec3 position{0, 0, 0};
   double radius = 1;
   std::map<std::string, std::vector<double>> params;
+  std::map<std::string, std::string> textures;  // texture parameter -> image path (relative to the scene file, resolved)
 };
 
 struct Scene {

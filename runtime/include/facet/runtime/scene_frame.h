@@ -2,6 +2,7 @@
 // variant the scene needs, packs parameter blocks, and pre-exposes the lights.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,9 +25,11 @@ class SceneFrame {
 
  private:
   SceneFrame() = default;
+  const Texture* texture(const LoadedMaterial::SampledTexture& t, std::string* error);
   std::vector<std::unique_ptr<LoadedMaterial>> materials_;
   std::vector<std::unique_ptr<ShaderProgram>> programs_;  // parallel to materials_
   Mesh sphere_;
+  std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   FrameDesc frame_;
   double exposure_ = 1;
   std::string variantKey_;

@@ -1,0 +1,23 @@
+// Textures from image files, and the 1×1 textures that stand in for images a scene does not give.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "facet/render_backend.h"
+
+namespace facet::runtime {
+
+// Images larger than this on either side are refused rather than decoded.
+inline constexpr int kMaxImageSide = 8192;
+
+// Loads a PNG/JPEG/TGA (stb_image) as RGBA8, with every mip level down to 1×1. `srgb` tags the
+// image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the
+// encoded values (which would darken every level), and the sampler decodes.
+std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error);
+
+// A 1×1 texture of one RGBA value (components in [0, 1], as encoded).
+Texture solidTexture(const std::array<double, 4>& rgba, bool srgb);
+
+}  // namespace facet::runtime

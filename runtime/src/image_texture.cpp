@@ -1,0 +1,94 @@
+#include "facet/runtime/image_texture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_TGA
+#include <stb_image.h>
+
+namespace facet::runtime {
+namespace {
+
+double decode(uint8_t v) {
+  double c = v / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+uint8_t encode(double linear) {
+  double c = linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+  return uint8_t(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
+}
+
+// The next mip level: each texel averages the 2×2 (or 2×1 / 1×2 at odd edges) it covers.
+// Colour channels of sRGB images are averaged in linear light; alpha is always linear.
+std::vector<uint8_t> halve(const std::vector<uint8_t>& src, uint32_t w, uint32_t h, bool srgb) {
+  uint32_t nw = std::max(1u, w / 2), nh = std::max(1u, h / 2);
+  std::vector<uint8_t> dst(size_t(nw) * nh * 4);
+  for (uint32_t y = 0; y < nh; ++y) {
+    for (uint32_t x = 0; x < nw; ++x) {
+      for (int c = 0; c < 4; ++c) {
+        double sum = 0;
+        int n = 0;
+        for (uint32_t dy = 0; dy < 2; ++dy) {
+          for (uint32_t dx = 0; dx < 2; ++dx) {
+            uint32_t sx = std::min(w - 1, x * 2 + dx), sy = std::min(h - 1, y * 2 + dy);
+            uint8_t v = src[(size_t(sy) * w + sx) * 4 + size_t(c)];
+            sum += (srgb && c < 3) ? decode(v) : v / 255.0;
+            ++n;
+          }
+        }
+        double mean = sum / n;
+        dst[(size_t(y) * nw + x) * 4 + size_t(c)] =
+            (srgb && c < 3) ? encode(mean) : uint8_t(std::lround(std::clamp(mean, 0.0, 1.0) * 255.0));
+      }
+    }
+  }
+  return dst;
+}
+
+}  // namespace
+
+std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error) {
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info(path.c_str(), &w, &h, &channels)) {
+    *error = path + ": cannot read image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
+    return std::nullopt;
+  }
+  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
+    *error = path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + "; the limit is " +
+             std::to_string(kMaxImageSide) + " on each side";
+    return std::nullopt;
+  }
+  // stb_image stores the first row (the top of the picture) first; the texture convention puts
+  // t = 0 first, so an image's top row is t = 0, as in glTF and most engines' UV conventions.
+  uint8_t* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  if (!pixels) {
+    *error = path + ": cannot decode image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+    return std::nullopt;
+  }
+  Texture t;
+  t.width = uint32_t(w);
+  t.height = uint32_t(h);
+  t.format = srgb ? TextureFormat::Rgba8Srgb : TextureFormat::Rgba8Unorm;
+  t.repeat = true;
+  t.levels.emplace_back(pixels, pixels + size_t(w) * size_t(h) * 4);
+  stbi_image_free(pixels);
+  for (uint32_t lw = t.width, lh = t.height; lw > 1 || lh > 1; lw = std::max(1u, lw / 2), lh = std::max(1u, lh / 2))
+    t.levels.push_back(halve(t.levels.back(), lw, lh, srgb));
+  return t;
+}
+
+Texture solidTexture(const std::array<double, 4>& rgba, bool srgb) {
+  Texture t;
+  t.width = t.height = 1;
+  t.format = srgb ? TextureFormat::Rgba8Srgb : TextureFormat::Rgba8Unorm;
+  std::vector<uint8_t> texel(4);
+  for (size_t i = 0; i < 4; ++i) texel[i] = uint8_t(std::lround(std::clamp(rgba[i], 0.0, 1.0) * 255.0));
+  t.levels.push_back(std::move(texel));
+  return t;
+}
+
+}  // namespace facet::runtime
