@@ -129,7 +129,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     // A failed earlier frame may have left an error flag set; it must not be blamed on this one.
     while (glGetError() != GL_NO_ERROR) {
     }
-    if (!gl::checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), &message)) return false;
+    if (!checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), &message)) return false;
     if (!prepareTargets(frame.width, frame.height, &message)) return false;
     if (!textures_.prepare(frame, &message)) return false;
     if (!forwardPass(frame, &message)) return false;

@@ -11,18 +11,13 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "facet/texture_checks.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {
 
 // Units 0..15: frame textures 0..7, material textures 8..15.
-inline constexpr uint32_t kTextureUnits = abi::kMaterialTextureBase + abi::kMaxMaterialTextures;
-
-// Rejects bindings the backend cannot honour: a binding outside 0..15, one given twice to a draw
-// (its own list and the frame's together), a null texture, a zero or oversized size, no levels
-// or more than the full mip chain, or a level whose byte size is not
-// max(1, width >> i) × max(1, height >> i) × bytes per texel.
-bool checkFrameTextures(const FrameDesc& frame, uint32_t maxTextureSize, std::string* error);
+inline constexpr uint32_t kTextureUnits = kTextureSlots;  // texture unit = binding
 
 // Sampler uniform name → the unit glUniform1i last gave it in one program (-1: the program has
 // no such active uniform). GLSL ES 3.00 has no layout(binding) for samplers, so this is how a
@@ -56,18 +51,8 @@ class TextureCache {
   void forgetBindings() { bound_.fill(~0u); }
 
  private:
-  struct Key {
-    uint32_t width = 0;
-    uint32_t height = 0;
-    TextureFormat format = TextureFormat::Rgba8Unorm;
-    bool linearFilter = false;
-    bool repeat = false;
-    std::vector<size_t> levelSizes;
-    uint64_t hash = 0;
-    bool operator==(const Key& other) const = default;
-  };
   struct Entry {
-    Key key;
+    TextureIdentity key;
     Texture texture;
     uint64_t lastUsedFrame = 0;
   };

@@ -15,18 +15,8 @@ constexpr uint64_t kUploadTimeoutNs = 60ull * 1000 * 1000 * 1000;
 // bufferOffset of a copy must be a multiple of 4 and of the texel size; 16 covers every format.
 constexpr VkDeviceSize kStagingAlignment = 16;
 
-uint32_t bytesPerTexel(TextureFormat format) {
-  switch (format) {
-    case TextureFormat::R8Unorm:
-      return 1;
-    case TextureFormat::Rgba16Float:
-      return 8;
-    case TextureFormat::Rgba8Unorm:
-    case TextureFormat::Rgba8Srgb:
-    case TextureFormat::Rg16Float:
-      return 4;
-  }
-  return 0;  // not an enumerator: rejected by checkTexture
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+  return (value + alignment - 1) / alignment * alignment;
 }
 
 VkFormat vulkanFormat(TextureFormat format) {
@@ -45,125 +35,7 @@ VkFormat vulkanFormat(TextureFormat format) {
   return VK_FORMAT_UNDEFINED;
 }
 
-uint32_t levelExtent(uint32_t size, size_t level) { return std::max(1u, size >> level); }
-
-// 1 + floor(log2(max(width, height))): the levels down to 1x1.
-size_t fullChainLength(uint32_t width, uint32_t height) {
-  size_t levels = 1;
-  for (uint32_t size = std::max(width, height); size > 1; size >>= 1) ++levels;
-  return levels;
-}
-
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
-  return (value + alignment - 1) / alignment * alignment;
-}
-
-// Word-at-a-time multiply-xor hash of every level (length included, so moving bytes between
-// levels changes it). Not cryptographic: it detects edits, it does not resist adversaries.
-uint64_t hashLevels(const std::vector<std::vector<uint8_t>>& levels) {
-  constexpr uint64_t kMultiplier = 0x9E3779B97F4A7C15ull;
-  uint64_t hash = 0xCBF29CE484222325ull;
-  const auto mix = [&](uint64_t word) {
-    hash = (hash ^ word) * kMultiplier;
-    hash ^= hash >> 29;
-  };
-  for (const std::vector<uint8_t>& level : levels) {
-    mix(level.size());
-    const uint8_t* bytes = level.data();
-    size_t i = 0;
-    for (; i + 8 <= level.size(); i += 8) {
-      uint64_t word = 0;
-      std::memcpy(&word, bytes + i, 8);
-      mix(word);
-    }
-    if (i < level.size()) {
-      uint64_t word = 0;
-      std::memcpy(&word, bytes + i, level.size() - i);
-      mix(word);
-    }
-  }
-  return hash;
-}
-
-bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::string& which,
-                  std::string* error) {
-  if (texture.width == 0 || texture.height == 0 || texture.width > maxImageSize ||
-      texture.height > maxImageSize) {
-    *error = which + ": size " + std::to_string(texture.width) + "x" +
-             std::to_string(texture.height) + " is outside 1.." + std::to_string(maxImageSize);
-    return false;
-  }
-  const uint32_t texelBytes = bytesPerTexel(texture.format);
-  if (texelBytes == 0) {
-    *error = which + ": unknown TextureFormat " + std::to_string(static_cast<int>(texture.format));
-    return false;
-  }
-  const size_t fullChain = fullChainLength(texture.width, texture.height);
-  if (texture.levels.empty() || texture.levels.size() > fullChain) {
-    *error = which + ": " + std::to_string(texture.levels.size()) + " mip levels given, a " +
-             std::to_string(texture.width) + "x" + std::to_string(texture.height) +
-             " texture has 1.." + std::to_string(fullChain);
-    return false;
-  }
-  for (size_t i = 0; i < texture.levels.size(); ++i) {
-    const uint32_t w = levelExtent(texture.width, i);
-    const uint32_t h = levelExtent(texture.height, i);
-    const size_t expected = size_t{w} * h * texelBytes;
-    if (texture.levels[i].size() != expected) {
-      *error = which + ": level " + std::to_string(i) + " has " +
-               std::to_string(texture.levels[i].size()) + " bytes, " + std::to_string(w) + "x" +
-               std::to_string(h) + " texels of " + std::to_string(texelBytes) + " bytes need " +
-               std::to_string(expected);
-      return false;
-    }
-  }
-  return true;
-}
-
-// Checks one list of bindings; `taken` marks the bindings already given to the same draw.
-bool checkBindings(const std::vector<TextureBinding>& bindings, const std::string& owner,
-                   uint32_t maxImageSize, std::array<const char*, kTextureSlots>* taken,
-                   const char* kind, std::string* error) {
-  for (size_t i = 0; i < bindings.size(); ++i) {
-    const TextureBinding& binding = bindings[i];
-    const std::string which = owner + std::string(kind) + " " + std::to_string(i) + " ('" +
-                              binding.glslName + "', binding " + std::to_string(binding.binding) +
-                              ")";
-    if (binding.binding >= kTextureSlots) {
-      *error = which + ": binding is outside 0.." + std::to_string(kTextureSlots - 1);
-      return false;
-    }
-    if ((*taken)[binding.binding]) {
-      *error = which + ": binding " + std::to_string(binding.binding) + " is already given by a " +
-               (*taken)[binding.binding];
-      return false;
-    }
-    (*taken)[binding.binding] = kind;
-    if (!binding.texture) {
-      *error = which + ": texture is null";
-      return false;
-    }
-    if (!checkTexture(*binding.texture, maxImageSize, which, error)) return false;
-  }
-  return true;
-}
-
 }  // namespace
-
-bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::string* error) {
-  std::array<const char*, kTextureSlots> frameTaken{};
-  if (!checkBindings(frame.frameTextures, "", maxImageSize, &frameTaken, "frame texture", error)) {
-    return false;
-  }
-  for (size_t d = 0; d < frame.draws.size(); ++d) {
-    std::array<const char*, kTextureSlots> taken = frameTaken;
-    if (!checkBindings(frame.draws[d].textures, "draw " + std::to_string(d) + ": ", maxImageSize,
-                       &taken, "draw texture", error)) {
-      return false;
-    }
-  }
-  return true;
-}
 
 bool TextureCache::init(const Context* ctx, std::string* error) {
   ctx_ = ctx;
@@ -199,7 +71,7 @@ bool TextureCache::init(const Context* ctx, std::string* error) {
   dummySource_.format = TextureFormat::Rgba8Unorm;
   dummySource_.levels = {{0, 0, 0, 255}};
   dummySource_.linearFilter = false;
-  Key key{1, 1, TextureFormat::Rgba8Unorm, false, false, {4}, 0};
+  TextureIdentity key{1, 1, TextureFormat::Rgba8Unorm, false, false, {4}, 0};
   if (!createEntry(dummySource_, key, &dummy_, error)) return false;
   return upload({&dummySource_}, {&dummy_}, error);
 }
@@ -227,7 +99,7 @@ void TextureCache::destroyEntry(Entry* entry) {
   destroyImage(ctx_->device, &entry->image);
 }
 
-bool TextureCache::createEntry(const Texture& texture, const Key& key, Entry* out,
+bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& key, Entry* out,
                                std::string* error) {
   const VkFormat format = vulkanFormat(texture.format);
   VkFormatProperties props{};
@@ -338,7 +210,7 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
       region.bufferRowLength = 0;
       region.bufferImageHeight = 0;
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), 0, 1};
-      region.imageExtent = {levelExtent(texture.width, level), levelExtent(texture.height, level),
+      region.imageExtent = {mipExtent(texture.width, level), mipExtent(texture.height, level),
                             1};
     }
     vkCmdCopyBufferToImage(commandBuffer_, staging_.buffer, targets[t]->image.image,
@@ -404,16 +276,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
 
   std::vector<std::pair<const Texture*, Entry>> pending;
   for (const Texture* texture : used) {
-    Key key;
-    key.width = texture->width;
-    key.height = texture->height;
-    key.format = texture->format;
-    key.linearFilter = texture->linearFilter;
-    key.repeat = texture->repeat;
-    for (const std::vector<uint8_t>& level : texture->levels) {
-      key.levelSizes.push_back(level.size());
-    }
-    key.hash = hashLevels(texture->levels);
+    TextureIdentity key = TextureIdentity::of(*texture);
 
     auto found = textures_.find(texture);
     if (found != textures_.end()) {

@@ -13,20 +13,15 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "facet/texture_checks.h"
 #include "vk_resources.h"
 
 namespace facet::runtime::vulkan {
 
 class Context;
 
-// Bindings 0..15 of set 1: frame textures 0..7, material textures 8..15.
-inline constexpr uint32_t kTextureSlots = abi::kMaterialTextureBase + abi::kMaxMaterialTextures;
-
-// Rejects bindings the backend cannot honour: a binding outside 0..15, one given twice to a draw
-// (its own list and the frame's together), a null texture, a zero or oversized size, no levels
-// or more than the full mip chain, or a level whose byte size is not
-// max(1, width >> i) × max(1, height >> i) × bytes per texel.
-bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::string* error);
+// Bindings 0..15 of set 1 (kTextureSlots, texture_checks.h): frame textures 0..7, material
+// textures 8..15. checkFrameTextures (texture_checks.h) validates bindings before upload.
 
 // What one descriptor of set 1 points at.
 struct TextureSlot {
@@ -72,25 +67,15 @@ class TextureCache {
 
  private:
   // Everything the reuse decision compares (see the class comment).
-  struct Key {
-    uint32_t width = 0;
-    uint32_t height = 0;
-    TextureFormat format = TextureFormat::Rgba8Unorm;
-    bool linearFilter = false;
-    bool repeat = false;
-    std::vector<size_t> levelSizes;
-    uint64_t hash = 0;
-    bool operator==(const Key& other) const = default;
-  };
   struct Entry {
-    Key key;
+    TextureIdentity key;
     Image image;
     VkSampler sampler = VK_NULL_HANDLE;
     uint64_t lastUsedFrame = 0;
   };
   static constexpr uint64_t kEvictAfterFrames = 16;
 
-  bool createEntry(const Texture& texture, const Key& key, Entry* out, std::string* error);
+  bool createEntry(const Texture& texture, const TextureIdentity& key, Entry* out, std::string* error);
   // Copies the textures' levels into one staging buffer and into their images, leaving every
   // level in SHADER_READ_ONLY_OPTIMAL; one submission, waited for.
   bool upload(const std::vector<const Texture*>& sources, const std::vector<Entry*>& targets,
