@@ -1,3 +1,5 @@
+#include "brdf_ggx.glsl"
+
 // Specular lobe of the `ggx_smith` tiers (reference, high): the full Cook-Torrance product
 //   f_s = D(h) · V(l, v) · F(l·h)
 // with GGX D in its fp16-safe form, height-correlated Smith V and Schlick F (brdf_ggx.glsl,

@@ -3,7 +3,6 @@
 #include "math.glsl"
 #include "precision.glsl"
 #include "facet:material"
-#include "brdf_ggx.glsl"
 #include "diffuse_lambert.glsl"
 #include "facet:specular"
 #include "shading_standard.glsl"

@@ -161,3 +161,24 @@ TEST(Language, TexturesAreOnlyReadThroughSample) {
   EXPECT_NE(d.find("a texture can only be read with sample(texture, uv)"), std::string::npos) << d;
   EXPECT_EQ(d.find("test.mat:7:"), std::string::npos) << "the valid sample() line must not be reported: " << d;
 }
+
+TEST(Language, TierOverridesAreCheckedWhereTheyAreWritten) {
+  std::string d = diagnosticsFor(R"(material m {
+    tier reference { specular = zioma }
+    tier hihg { specular = zioma }
+    tier mid { speculr = zioma }
+    tier mid { diffuse = vertx }
+    tier high { specular = lut }
+    tier high { diffuse = vertex; diffuse = pixel }
+    tier low { specular = zioma }
+    surface { roughness = 0.5 }
+}
+)");
+  EXPECT_NE(d.find("test.mat:2:10: error: the reference tier is the ground truth"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:3:10: error: unknown tier 'hihg'; did you mean 'high'?"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:4:16: error: unknown tier choice 'speculr'; did you mean 'specular'?"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:5:26: error: unknown diffuse option 'vertx'; did you mean 'vertex'?"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:6:28: error: specular 'lut' is not implemented"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:7:35: error: tier 'high' already sets 'diffuse'"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:8:10: warning: tier 'low' is not built by this compiler version"), std::string::npos) << d;
+}

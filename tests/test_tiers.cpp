@@ -142,3 +142,18 @@ TEST(Tiers, MetalGetsHalfWhereGlesGetsMediump) {
   EXPECT_NE(msl("mid.dir1").find("half "), std::string::npos);
   EXPECT_EQ(msl("reference.dir1").find("half"), std::string::npos);
 }
+
+TEST(Tiers, MaterialOverrideReplacesOneChoiceOfOneTier) {
+  auto preset = facet::test::buildText("material m { param r: float = 0.4\n surface { roughness = params.r } }");
+  auto fastv = facet::test::buildText(
+      "material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");
+  ASSERT_TRUE(preset && fastv);
+  // Hammon's V has no square roots: the overridden high tier loses the two of height-correlated
+  // Smith; the mid tier, not overridden, is unchanged.
+  auto transcendentals = [](const facet::compiler::BuildResult& b, const std::string& key) {
+    return costOf(spirvOf(b, key, Stage::Fragment)).transcendentalOps;
+  };
+  EXPECT_EQ(transcendentals(*fastv, "high.dir1") + 2, transcendentals(*preset, "high.dir1"));
+  EXPECT_EQ(transcendentals(*fastv, "mid.dir1"), transcendentals(*preset, "mid.dir1"));
+  EXPECT_EQ(spirvOf(*fastv, "reference.dir1", Stage::Fragment), spirvOf(*preset, "reference.dir1", Stage::Fragment));
+}

@@ -112,7 +112,11 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
   for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene)) {
     const std::string keyText = key.toString();
-    AssemblyInput input{material, surface, layout, key, permutations::preset(key.tier), compilerVersion()};
+    // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+    permutations::TierConfig tier = permutations::preset(key.tier);
+    for (const ir::TierOverride& o : material.tierOverrides)
+      if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
+    AssemblyInput input{material, surface, layout, key, tier, compilerVersion()};
     StageSources es, vk;
     if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return std::nullopt;
     const std::string stem = material.name + "." + keyText;

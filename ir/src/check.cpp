@@ -28,6 +28,7 @@ class Checker {
     checkHeader(src);
     for (const ast::ParamDecl& p : src.params) checkParam(p);
     checkSurface(src);
+    for (const ast::TierOverride& o : src.tierOverrides) checkTierOverride(o);
     for (const Param& p : material_.params)
       if (!usedParams_.count(p.name))
         diags_.warning(p.loc, "parameter '" + p.name + "' is never used", "unused-param");
@@ -61,6 +62,46 @@ class Checker {
     else if (src.blending != "opaque")
       error(src.blendingLoc, "blending '" + src.blending + "' is not supported by this compiler version (only opaque)",
             "unsupported");
+  }
+
+  void checkTierOverride(const ast::TierOverride& o) {
+    const TierChoices& choices = tierChoices();
+    if (std::find(choices.tiers.begin(), choices.tiers.end(), o.tier) == choices.tiers.end()) {
+      error(o.tierLoc, "unknown tier '" + o.tier + "'" + suggestion(closestMatch(o.tier, choices.tiers)), "unknown-name");
+      return;
+    }
+    if (o.tier == "reference") {
+      error(o.tierLoc, "the reference tier is the ground truth every tier is measured against; it has no overrides",
+            "tier");
+      return;
+    }
+    auto axis = choices.options.find(o.axis);
+    if (axis == choices.options.end()) {
+      std::vector<std::string> axes;
+      for (const auto& [name, options] : choices.options) axes.push_back(name);
+      error(o.axisLoc, "unknown tier choice '" + o.axis + "'" + suggestion(closestMatch(o.axis, axes)), "unknown-name");
+      return;
+    }
+    const std::vector<std::string>& options = axis->second;
+    if (std::find(options.begin(), options.end(), o.option) == options.end()) {
+      error(o.optionLoc, "unknown " + o.axis + " option '" + o.option + "'" + suggestion(closestMatch(o.option, options)),
+            "unknown-name");
+      return;
+    }
+    if (std::find(choices.unimplemented.begin(), choices.unimplemented.end(), o.option) != choices.unimplemented.end()) {
+      error(o.optionLoc, o.axis + " '" + o.option + "' is not implemented by this compiler version", "unsupported");
+      return;
+    }
+    for (const TierOverride& earlier : material_.tierOverrides) {
+      if (earlier.tier == o.tier && earlier.axis == o.axis) {
+        error(o.axisLoc, "tier '" + o.tier + "' already sets '" + o.axis + "'", "duplicate");
+        return;
+      }
+    }
+    if (std::find(choices.unbuiltTiers.begin(), choices.unbuiltTiers.end(), o.tier) != choices.unbuiltTiers.end())
+      diags_.warning(o.tierLoc, "tier '" + o.tier + "' is not built by this compiler version; this override has no effect yet",
+                     "tier");
+    material_.tierOverrides.push_back({o.tier, o.axis, o.option});
   }
 
   // Evaluates an expression that must be a compile-time constant (defaults, range bounds).

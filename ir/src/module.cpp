@@ -40,6 +40,16 @@ const OutputInfo* findOutput(std::string_view name) {
   return nullptr;
 }
 
+const TierChoices& tierChoices() {
+  static const TierChoices choices = {
+      {"reference", "high", "mid", "low"},
+      {{"specular", {"ggx_smith", "ggx_fastv", "zioma", "lut"}}, {"diffuse", {"pixel", "vertex"}}},
+      {"lut"},
+      {"low"},
+  };
+  return choices;
+}
+
 size_t Module::Hash::operator()(const Value& v) const {
   size_t h = std::hash<int>()(int(v.op)) * 31 + std::hash<int>()(int(v.type));
   for (ValueId a : v.args) h = h * 131 + a;

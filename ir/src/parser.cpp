@@ -88,7 +88,8 @@ class Parser {
   void syncToItem() {
     int depth = 0;
     while (!at(Tok::End)) {
-      if (depth == 0 && (atKeyword("param") || atKeyword("surface") || atKeyword("shading") || atKeyword("blending")))
+      if (depth == 0 && (atKeyword("param") || atKeyword("surface") || atKeyword("shading") || atKeyword("blending") ||
+                         atKeyword("tier")))
         return;
       if (at(Tok::LBrace)) ++depth;
       if (at(Tok::RBrace)) {
@@ -124,8 +125,11 @@ class Parser {
     } else if (atKeyword("surface")) {
       surface(m);
       return;
+    } else if (atKeyword("tier")) {
+      tier(m);
+      return;
     } else {
-      fail(peek().loc, "expected 'param', 'surface', 'shading' or 'blending', found " + spell(peek()));
+      fail(peek().loc, "expected 'param', 'surface', 'tier', 'shading' or 'blending', found " + spell(peek()));
     }
     accept(Tok::Semicolon);
   }
@@ -155,6 +159,29 @@ class Parser {
       expect(Tok::RBracket, "']' to close the range");
     }
     return p;
+  }
+
+  void tier(ast::Material& m) {
+    advance();
+    const Token& name = expect(Tok::Identifier, "a tier name after 'tier'");
+    std::string tierName = name.text;
+    SourceLoc tierLoc = name.loc;
+    expect(Tok::LBrace, "'{' after the tier name");
+    while (!at(Tok::RBrace) && !at(Tok::End)) {
+      ast::TierOverride o;
+      o.tier = tierName;
+      o.tierLoc = tierLoc;
+      const Token& axis = expect(Tok::Identifier, "a tier choice (specular, diffuse)");
+      o.axis = axis.text;
+      o.axisLoc = axis.loc;
+      expect(Tok::Assign, "'=' after '" + o.axis + "'");
+      const Token& option = expect(Tok::Identifier, "an option for '" + o.axis + "'");
+      o.option = option.text;
+      o.optionLoc = option.loc;
+      accept(Tok::Semicolon);
+      m.tierOverrides.push_back(std::move(o));
+    }
+    expect(Tok::RBrace, "'}' to close the tier block");
   }
 
   void surface(ast::Material& m) {

@@ -12,6 +12,26 @@ TierConfig preset(Tier tier) {
   return {};
 }
 
+bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option) {
+  if (axis == "specular") {
+    const std::pair<const char*, SpecularModel> models[] = {{"ggx_smith", SpecularModel::GgxSmith},
+                                                            {"ggx_fastv", SpecularModel::GgxFastV},
+                                                            {"zioma", SpecularModel::Zioma},
+                                                            {"lut", SpecularModel::Lut}};
+    for (const auto& [name, model] : models) {
+      if (option == name) {
+        config->specular = model;
+        return true;
+      }
+    }
+  }
+  if (axis == "diffuse" && (option == "pixel" || option == "vertex")) {
+    config->diffuse = option == "pixel" ? DiffuseModel::Pixel : DiffuseModel::Vertex;
+    return true;
+  }
+  return false;
+}
+
 std::string describe(const TierConfig& c) {
   const char* specular[] = {"ggx_smith", "ggx_fastv", "zioma", "lut"};
   std::string s = specular[int(c.specular)];

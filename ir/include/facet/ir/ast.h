@@ -44,6 +44,16 @@ struct Statement {
   ExprPtr value;
 };
 
+// `tier high { specular = ggx_fastv }`: one choice of a tier's preset, replaced.
+struct TierOverride {
+  std::string tier;
+  SourceLoc tierLoc;
+  std::string axis;
+  SourceLoc axisLoc;
+  std::string option;
+  SourceLoc optionLoc;
+};
+
 struct Material {
   std::string name;
   SourceLoc loc;
@@ -53,6 +63,7 @@ struct Material {
   SourceLoc blendingLoc;
   std::vector<ParamDecl> params;
   std::vector<Statement> surface;
+  std::vector<TierOverride> tierOverrides;
 };
 
 }  // namespace facet::ir::ast

@@ -109,12 +109,31 @@ class Module {
   std::map<ValueId, SourceLoc> locs_;
 };
 
+// A checked per-tier override of the tier presets (names validated against tierChoices()).
+struct TierOverride {
+  std::string tier;    // reference | high | mid | low
+  std::string axis;    // specular | diffuse
+  std::string option;  // e.g. ggx_fastv
+  bool operator==(const TierOverride&) const = default;
+};
+
+// The language's vocabulary of tier choices: axis -> options it accepts, and the options this
+// compiler version does not implement yet (an error to choose).
+struct TierChoices {
+  std::vector<std::string> tiers;
+  std::map<std::string, std::vector<std::string>> options;
+  std::vector<std::string> unimplemented;
+  std::vector<std::string> unbuiltTiers;  // tiers this compiler version does not build yet
+};
+const TierChoices& tierChoices();
+
 // A checked material: what every later stage reads.
 struct Material {
   std::string name;
   std::string shading;   // "lit" | "unlit"
   std::string blending;  // "opaque"
   std::vector<Param> params;
+  std::vector<TierOverride> tierOverrides;
   Module surface;
 };
 

@@ -24,6 +24,10 @@ struct TierConfig {
 // high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
 TierConfig preset(Tier tier);
 
+// Replaces one choice of a preset by name (axis "specular" | "diffuse", option as in the
+// material language). Returns false for names it does not know.
+bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
+
 // e.g. "ggx_smith, pixel diffuse, linear, mediump"
 std::string describe(const TierConfig& config);
 
