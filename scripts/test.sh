@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Builds and runs the whole test suite, twice, as CI does:
+# Builds and runs the whole test suite, as CI does:
 #   build/test  warnings as errors (-Werror), RelWithDebInfo
-#   build/asan  AddressSanitizer + UndefinedBehaviorSanitizer, Debug
+#   build/fuzz  the material front end fuzzed for FACET_FUZZ_SECONDS (default 90): clang,
+#               libFuzzer + ASan + UBSan (scripts/fuzz.sh); a crash, leak or hang fails the run
+#   build/asan  AddressSanitizer + UndefinedBehaviorSanitizer, Debug (last, so the run closes
+#               with ctest's summary line)
 # Vulkan tests run with the Khronos validation layer on; a validation error fails the test.
 # `scripts/test.sh --quick` runs only the first configuration (for iterating).
 set -euo pipefail
@@ -18,11 +21,14 @@ run_suite() {
 }
 
 run_suite build/test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_WERROR=ON
+[ "${1:-}" = "--quick" ] && exit 0
 
-if [ "${1:-}" != "--quick" ]; then
-  # Mesa's OSMesa keeps a few hundred bytes per context for the process lifetime; those
-  # reports are Mesa's, listed in tests/lsan.supp. Our code gets no suppression.
-  export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0"
-  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-  run_suite build/asan -DCMAKE_BUILD_TYPE=Debug -DFACET_WERROR=ON -DFACET_SANITIZE=ON
-fi
+# The seed corpus and every past finding already ran in the suite above (test_fuzz_regressions);
+# this explores new inputs for a bounded time, well inside CI's 90-minute limit.
+bash scripts/fuzz.sh "${FACET_FUZZ_SECONDS:-90}"
+
+# Mesa's OSMesa keeps a few hundred bytes per context for the process lifetime; those
+# reports are Mesa's, listed in tests/lsan.supp. Our code gets no suppression.
+export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+run_suite build/asan -DCMAKE_BUILD_TYPE=Debug -DFACET_WERROR=ON -DFACET_SANITIZE=ON

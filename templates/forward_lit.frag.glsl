@@ -6,6 +6,7 @@
 #include "diffuse_lambert.glsl"
 #include "facet:specular"
 #include "shading_standard.glsl"
+#include "output_blending.glsl"
 
 void main() {
     shading_normal = normalize(v_normal);
@@ -23,5 +24,5 @@ void main() {
     vec3 l = normalize(frame.lightDirection.xyz);
     color += shade_standard_direct(material, shading_normal, v, l, frame.lightColor.rgb);
 #endif
-    fragColor = vec4(color + material.emissive, material.alpha);
+    fragColor = blend_output(color + material.emissive, material.alpha);
 }

@@ -2,10 +2,11 @@
 #include "math.glsl"
 #include "precision.glsl"
 #include "facet:material"
+#include "output_blending.glsl"
 
 void main() {
     shading_normal = normalize(v_normal);
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
-    fragColor = vec4(material.baseColor + material.emissive, material.alpha);
+    fragColor = blend_output(material.baseColor + material.emissive, material.alpha);
 }

@@ -182,3 +182,12 @@ TEST(Language, TierOverridesAreCheckedWhereTheyAreWritten) {
   EXPECT_NE(d.find("test.mat:7:35: error: tier 'high' already sets 'diffuse'"), std::string::npos) << d;
   EXPECT_NE(d.find("test.mat:8:10: warning: tier 'low' is not built by this compiler version"), std::string::npos) << d;
 }
+
+TEST(Language, AlphaCutoffBelongsToMaskedBlendingAndIsInUnitRange) {
+  EXPECT_EQ(diagnosticsFor("material m { blending masked(0.3) surface { alpha = 0.5 } }"), "");
+  EXPECT_NE(diagnosticsFor("material m { blending masked(1.5) surface { alpha = 0.5 } }").find("a number in [0, 1]"),
+            std::string::npos);
+  EXPECT_NE(diagnosticsFor("material m { blending transparent(0.5) surface { alpha = 0.5 } }")
+                .find("an alpha cutoff applies to 'masked' blending only"),
+            std::string::npos);
+}

@@ -312,7 +312,12 @@ TEST(Package, BadParameterIsRejected) {
   std::vector<uint8_t> b = pkg::write(samplePackage());
   size_t at = sectionOffset(b, "META");
   for (int i = 0; i < 4; ++i) at += 4 + loadLE(b, at, 4);  // four strings
-  at += 8;                                                  // block size, parameter count
+  at += 4;                                                  // block size
+  std::vector<uint8_t> flag = b;                            // the double-sided flag: 0 or 1
+  flag[at] = 2;
+  resealChecksum(flag);
+  expectRejected(flag, "material flag 'double sided' is 2 (0 or 1)");
+  at += 1 + 4;                                              // flag, parameter count
   at += 4 + loadLE(b, at, 4);                               // parameter name
   b[at] = 200;
   resealChecksum(b);

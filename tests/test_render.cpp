@@ -282,3 +282,71 @@ TEST(Textures, UnreadableImageIsAClearErrorNotACrash) {
   EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
   EXPECT_NE(error.find("has no texture parameter 'roughness'"), std::string::npos) << error;
 }
+
+namespace {
+
+struct Rgb {
+  double r, g, b;
+};
+
+// The HDR colour at the centre of a 32×32 render of one unit sphere with `material`.
+Rgb centreOf(facet::runtime::RenderBackend& backend, const std::string& packages, const std::string& material,
+             const std::string& params) {
+  std::string json = R"({"width": 32, "height": 32, "sun": {"direction": [-0.3, -0.5, -0.8]}, "sky": {"luminance": 6000},
+    "camera": {"position": [0, 0, 4], "fovY": 40}, "objects": [{"material": ")" + material + R"(", "params": {)" +
+                     params + "}}]}";
+  std::string error;
+  FrameResult result;
+  EXPECT_TRUE(renderScene(json, packages, backend, &result, &error)) << error;
+  if (result.hdr.empty()) return {-1, -1, -1};
+  const float* p = &result.hdr[(16 * 32 + 16) * 4];
+  return {p[0], p[1], p[2]};
+}
+
+void expectNear(Rgb got, Rgb want, const char* what) {
+  // RGBA16F storage: 2^-11 relative, plus the same again from the blend of two stored values.
+  auto near = [](double a, double b) { return std::abs(a - b) <= 2e-3 * std::abs(b) + 1e-3; };
+  EXPECT_TRUE(near(got.r, want.r) && near(got.g, want.g) && near(got.b, want.b))
+      << what << ": got (" << got.r << ", " << got.g << ", " << got.b << "), want (" << want.r << ", " << want.g << ", "
+      << want.b << ")";
+}
+
+}  // namespace
+
+// Each blending mode composites as its formula says, on both backends: transparent is
+// premultiplied "over", additive adds, masked discards below its cutoff.
+TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
+  std::string packages = facet::test::scratchDir("blending");
+  const std::string surface = "baseColor = vec3(0.8, 0.2, 0.1)\n roughness = 0.6\n";
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"solid", "material solid { surface { " + surface + " } }"},
+           {"glass", "material glass { blending transparent\n param a: float = 0.25 in [0, 1]\n surface { " + surface +
+                         " alpha = params.a } }"},
+           {"glow", "material glow { blending additive\n surface { " + surface + " } }"},
+           {"cutout", "material cutout { blending masked(0.5)\n param a: float = 0 in [0, 1]\n surface { " + surface +
+                          " alpha = params.a } }"}}) {
+    auto built = facet::test::buildText(text, name + ".mat");
+    ASSERT_TRUE(built);
+    std::string error;
+    ASSERT_TRUE(facet::package::writeFile(packages + "/" + name + ".matpkg", facet::package::write(built->package), &error));
+  }
+  std::string error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  auto gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(vk && gl) << error;
+  for (facet::runtime::RenderBackend* backend : {vk.get(), gl.get()}) {
+    SCOPED_TRACE(backend->name());
+    Rgb solid = centreOf(*backend, packages, "solid", "");
+    Rgb background = centreOf(*backend, packages, "cutout", R"("a": 0.0)");  // discarded: the sky shows
+    // The clear colour is the pre-exposed sky: 6000 cd/m² × 2.60e-5 = 0.156.
+    EXPECT_NEAR(background.r, 6000 * 2.604e-5, 1e-3);
+    expectNear(centreOf(*backend, packages, "cutout", R"("a": 1.0)"), solid, "masked above cutoff");
+    expectNear(centreOf(*backend, packages, "glass", ""),
+               {0.25 * solid.r + 0.75 * background.r, 0.25 * solid.g + 0.75 * background.g,
+                0.25 * solid.b + 0.75 * background.b},
+               "transparent");
+    expectNear(centreOf(*backend, packages, "glow", ""),
+               {solid.r + background.r, solid.g + background.g, solid.b + background.b}, "additive");
+    EXPECT_TRUE(backend->validationErrors().empty());
+  }
+}

@@ -101,6 +101,9 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   for (const Varying& v : kVaryings)
     if (v.attribute && needs(in.surface, v)) s += "#define FACET_VARYING_" + upper(v.attribute) + " 1\n";
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
+  if (in.material.blending != "opaque") s += "#define FACET_BLENDING_" + upper(in.material.blending) + " 1\n";
+  if (in.material.blending == "masked")
+    s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";
   if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
   return s + "\n";
 }

@@ -42,6 +42,7 @@ package::MaterialInfo materialInfo(const ir::Material& m, const ParamLayout& lay
   info.name = m.name;
   info.shading = m.shading;
   info.blending = m.blending;
+  info.doubleSided = m.doubleSided;
   info.paramBlockSize = layout.blockSize;
   for (size_t i = 0; i < m.params.size(); ++i) {
     const ir::Param& p = m.params[i];

@@ -27,6 +27,16 @@ class Checker {
     material_.name = src.name;
     checkHeader(src);
     for (const ast::ParamDecl& p : src.params) checkParam(p);
+    if (src.alphaCutoff) {
+      if (src.blending != "masked") {
+        error(src.alphaCutoff->loc, "an alpha cutoff applies to 'masked' blending only", "type");
+      } else if (auto c = constantOf(*src.alphaCutoff, "the alpha cutoff")) {
+        if (c->type != Type::Float || c->constant[0] < 0.0 || c->constant[0] > 1.0)
+          error(src.alphaCutoff->loc, "the alpha cutoff is a number in [0, 1]", "range");
+        else
+          material_.alphaCutoff = c->constant[0];
+      }
+    }
     checkSurface(src);
     for (const ast::TierOverride& o : src.tierOverrides) checkTierOverride(o);
     for (const Param& p : material_.params)
@@ -53,15 +63,14 @@ class Checker {
     static const std::vector<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
     material_.shading = src.shading;
     material_.blending = src.blending;
+    material_.doubleSided = src.doubleSided;
     if (std::find(shadings.begin(), shadings.end(), src.shading) == shadings.end())
       error(src.shadingLoc, "unknown shading model '" + src.shading + "' (lit or unlit)" +
                                 suggestion(closestMatch(src.shading, shadings)), "unknown-name");
     if (std::find(blendings.begin(), blendings.end(), src.blending) == blendings.end())
       error(src.blendingLoc, "unknown blending mode '" + src.blending + "'" + suggestion(closestMatch(src.blending, blendings)),
             "unknown-name");
-    else if (src.blending != "opaque")
-      error(src.blendingLoc, "blending '" + src.blending + "' is not supported by this compiler version (only opaque)",
-            "unsupported");
+
   }
 
   void checkTierOverride(const ast::TierOverride& o) {

@@ -1,6 +1,7 @@
 #include "facet/ir/diagnostics.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace facet::ir {
 
@@ -15,13 +16,24 @@ void Diagnostics::warning(SourceLoc loc, std::string message, std::string code) 
 
 namespace {
 
-// The text of the line holding `offset`, without its newline.
-std::string_view lineAt(std::string_view text, size_t offset) {
+// Longer lines are not quoted: a minified or binary "line", where the position says enough.
+constexpr size_t kMaxQuotedLine = 200;
+
+// The text of the line holding `offset`, without its newline, or nullopt if that line is longer
+// than kMaxQuotedLine. Looks at no more than that many bytes either side of `offset`, so that
+// formatting N diagnostics on one huge line costs O(N), not O(N * line length).
+std::optional<std::string_view> lineAt(std::string_view text, size_t offset) {
   offset = std::min(offset, text.size());
-  size_t begin = offset == 0 ? std::string_view::npos : text.rfind('\n', offset - 1);
-  begin = (begin == std::string_view::npos) ? 0 : begin + 1;
-  size_t end = text.find('\n', begin);
-  if (end == std::string_view::npos) end = text.size();
+  size_t begin = offset;
+  while (begin > 0 && text[begin - 1] != '\n') {
+    if (offset - begin >= kMaxQuotedLine) return std::nullopt;
+    --begin;
+  }
+  size_t end = offset;
+  while (end < text.size() && text[end] != '\n') {
+    if (end - begin >= kMaxQuotedLine) return std::nullopt;
+    ++end;
+  }
   return text.substr(begin, end - begin);
 }
 
@@ -41,8 +53,9 @@ std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
   if (!d.code.empty()) out += " [" + d.code + "]";
   out += "\n";
   if (d.loc.line == 0) return out;
-  std::string_view line = lineAt(file.text, d.loc.offset);
-  if (line.size() > 200) return out;  // a minified or binary "line": the position says enough
+  std::optional<std::string_view> quoted = lineAt(file.text, d.loc.offset);
+  if (!quoted) return out;
+  std::string_view line = *quoted;
   out += "    " + printable(line) + "\n    ";
   for (uint32_t i = 1; i < d.loc.column && i <= line.size(); ++i) out += (line[i - 1] == '\t') ? '\t' : ' ';
   out += '^';

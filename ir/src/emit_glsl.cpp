@@ -56,26 +56,66 @@ class Emitter {
 
  private:
   // The GLSL expression that refers to value `id`, emitting its definition first if needed.
+  // Operands are emitted depth first, left to right, with an explicit stack: a chain of lets
+  // makes the value graph as deep as the file is long, too deep for the call stack.
   std::string use(ValueId id) {
+    struct Pending {
+      ValueId id;
+      size_t next = 0;             // index of the next operand to visit
+      std::vector<std::string> a;  // GLSL of the operands visited so far
+    };
+    std::vector<Pending> stack;
+    std::string result;
+    if (refer(id, &result)) return result;
+    stack.push_back({id});
+    while (!stack.empty()) {
+      const Value& v = module_.value(stack.back().id);
+      if (stack.back().next < v.args.size()) {
+        ValueId arg = v.args[stack.back().next++];
+        if (refer(arg, &result)) stack.back().a.push_back(result);
+        else stack.push_back({arg});
+        continue;
+      }
+      result = emitDefinition(stack.back().id, stack.back().a);
+      stack.pop_back();
+      if (!stack.empty()) stack.back().a.push_back(result);
+    }
+    return result;
+  }
+
+  // The GLSL for a value that needs no new statement (a constant, parameter, attribute or an
+  // already emitted temporary); false if `id` must be defined first.
+  bool refer(ValueId id, std::string* glsl) {
     const Value& v = module_.value(id);
     switch (v.op) {
-      case Op::Constant: return glslConstant(v.type, v.constant);
+      case Op::Constant: *glsl = glslConstant(v.type, v.constant); return true;
       case Op::Param:
         out_.params.insert(v.name);
         // Samplers cannot live in a uniform block: each texture is its own uniform.
-        return (v.type == Type::Texture2D ? "material_" : "params.") + v.name;
+        *glsl = (v.type == Type::Texture2D ? "material_" : "params.") + v.name;
+        return true;
       case Op::Attribute:
         out_.attributes.insert(v.name);
-        return findAttribute(v.name)->glsl;
+        *glsl = findAttribute(v.name)->glsl;
+        return true;
       default: break;
     }
-    if (auto it = temps_.find(id); it != temps_.end()) return it->second;
-    std::vector<std::string> a;
-    for (ValueId arg : v.args) a.push_back(use(arg));
+    if (auto it = temps_.find(id); it != temps_.end()) {
+      *glsl = it->second;
+      return true;
+    }
+    return false;
+  }
+
+  // Emits the statement defining value `id` from its operands' GLSL; returns the temporary's name.
+  std::string emitDefinition(ValueId id, const std::vector<std::string>& a) {
+    const Value& v = module_.value(id);
     std::string rhs = define(v, a);
     std::string name = tempName(id);
     // Unqualified values take the tier's default precision; highp inputs keep highp explicitly.
-    std::string precision = v.type != Type::Bool && isHighp(id) ? "highp " : "";
+    // isHighp is asked for every value (bools too), so it is memoised before any user asks.
+    bool highp = isHighp(id);
+    std::string precision = v.type != Type::Bool && highp ? "highp " : "";
     line("    " + precision + glslName(v.type) + " " + name + " = " + rhs + ";\n", id);
     temps_.emplace(id, name);
     return name;
@@ -116,6 +156,7 @@ class Emitter {
   }
 
   // highp where any input is a highp attribute (positions, UVs); the tier's default otherwise.
+  // Recurses only one level: operands are leaves or were emitted (and memoised) before.
   bool isHighp(ValueId id) {
     if (auto it = highp_.find(id); it != highp_.end()) return it->second;
     const Value& v = module_.value(id);

@@ -89,7 +89,7 @@ class Parser {
     int depth = 0;
     while (!at(Tok::End)) {
       if (depth == 0 && (atKeyword("param") || atKeyword("surface") || atKeyword("shading") || atKeyword("blending") ||
-                         atKeyword("tier")))
+                         atKeyword("tier") || atKeyword("doubleSided")))
         return;
       if (at(Tok::LBrace)) ++depth;
       if (at(Tok::RBrace)) {
@@ -120,6 +120,13 @@ class Parser {
       const Token& t = expect(Tok::Identifier, "a blending mode");
       m.blending = t.text;
       m.blendingLoc = t.loc;
+      if (accept(Tok::LParen)) {
+        m.alphaCutoff = expression();
+        expect(Tok::RParen, "')' after the alpha cutoff");
+      }
+    } else if (atKeyword("doubleSided")) {
+      advance();
+      m.doubleSided = true;
     } else if (atKeyword("param")) {
       m.params.push_back(param());
     } else if (atKeyword("surface")) {

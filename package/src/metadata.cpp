@@ -16,6 +16,7 @@ void encodeMetadata(ByteWriter& out, const std::string& compilerVersion, const M
   out.string(material.shading);
   out.string(material.blending);
   out.u32(material.paramBlockSize);
+  out.u8(material.doubleSided ? 1 : 0);
   out.u32(uint32_t(material.params.size()));
   for (const Param& p : material.params) {
     out.string(p.name);
@@ -37,6 +38,12 @@ void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& 
   material.shading = in.string("shading model");
   material.blending = in.string("blending mode");
   material.paramBlockSize = in.u32();
+  const uint8_t doubleSided = in.u8();
+  if (doubleSided > 1) {
+    in.fail("material flag 'double sided' is " + std::to_string(doubleSided) + " (0 or 1)");
+    return;
+  }
+  material.doubleSided = doubleSided == 1;
   uint32_t count = in.count(kMinParamSize, "parameter count");
   material.params.reserve(count);
   for (uint32_t i = 0; i < count && in.ok(); ++i) {

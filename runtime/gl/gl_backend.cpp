@@ -160,7 +160,8 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer.id());
   glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
   glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);  // materials may be two-sided; the ABI carries no winding rule
+  glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
+  glCullFace(GL_BACK);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);  // also required for the depth clear to take effect
@@ -245,6 +246,17 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialUniforms_.id());
   }
 
+  if (item.cullBackFaces) glEnable(GL_CULL_FACE);
+  else glDisable(GL_CULL_FACE);
+  // Premultiplied colour for the blended modes; they test depth but do not write it.
+  if (item.blending == Blending::Opaque) {
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+  } else {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, item.blending == Blending::Transparent ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE);
+    glDepthMask(GL_FALSE);
+  }
   glUseProgram(program->program.id());
   // Sampler uniforms are program state (set while the program is in use); units are per draw.
   gl::assignSamplerUnits(program->program.id(), frame.frameTextures, &cached->samplerUnits);
@@ -277,6 +289,9 @@ bool GlBackend::postPass(std::string* error) {
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer.id());
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
   glDisable(GL_DEPTH_TEST);  // the LDR target has no depth; the triangle covers every pixel
+  glDisable(GL_BLEND);       // the last forward draw may have been blended
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
   glUseProgram(post_.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());

@@ -1,5 +1,6 @@
 #include "facet/runtime/scene_frame.h"
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -83,6 +84,11 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       return nullptr;
     }
     draw.materialParams = std::move(*block);
+    draw.cullBackFaces = !out->materials_[it->second]->info().doubleSided;
+    const std::string& blending = out->materials_[it->second]->info().blending;
+    draw.blending = blending == "transparent" ? Blending::Transparent
+                    : blending == "additive"  ? Blending::Additive
+                                              : Blending::Opaque;
     auto sampled = out->materials_[it->second]->sampledTextures(o.textures, error);
     if (!sampled) {
       *error = "object " + std::to_string(i) + ": " + *error;
@@ -98,6 +104,18 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     out->frame_.draws.push_back(std::move(draw));
   }
+  // Opaque draws first, in scene order; blended ones after them, far to near, so each blends
+  // over everything behind it (sorted by object centre: exact for the separate spheres here).
+  auto& draws = out->frame_.draws;
+  auto distance = [&](const DrawItem& d) {
+    glm::dvec3 centre(d.object.model[12], d.object.model[13], d.object.model[14]);
+    return glm::length(centre - cam.position);
+  };
+  std::stable_sort(draws.begin(), draws.end(), [&](const DrawItem& a, const DrawItem& b) {
+    bool blendedA = a.blending != Blending::Opaque, blendedB = b.blending != Blending::Opaque;
+    if (blendedA != blendedB) return blendedB;
+    return blendedA && distance(a) > distance(b);
+  });
   return out;
 }
 

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <exception>
 #include <memory>
+#include <map>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -51,7 +53,7 @@ class VulkanBackend final : public RenderBackend {
  private:
   bool createFixedObjects(std::string* error);
   bool ensureTargets(uint32_t width, uint32_t height, std::string* error);
-  bool pipelineFor(const ShaderProgram& program, VkPipeline* out, std::string* error);
+  bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool prepareTextures(const FrameDesc& frame, std::string* error);
@@ -93,7 +95,8 @@ class VulkanBackend final : public RenderBackend {
   HostBuffer arena_;
 
   RenderTargets targets_;
-  std::unordered_map<const ShaderProgram*, CachedPipeline> pipelines_;
+  // Keyed by program and the fixed-function state a draw asks for (blending, culling).
+  std::map<std::tuple<const ShaderProgram*, Blending, bool>, CachedPipeline> pipelines_;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -278,8 +281,10 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
   return true;
 }
 
-bool VulkanBackend::pipelineFor(const ShaderProgram& program, VkPipeline* out, std::string* error) {
-  auto found = pipelines_.find(&program);
+bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out,
+                                std::string* error) {
+  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces);
+  auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
     if (cached.vertexSpirv == program.vertexSpirv &&
@@ -293,6 +298,8 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, VkPipeline* out, s
   }
   PipelineDesc desc;
   desc.kind = PipelineKind::kForward;
+  desc.blending = draw.blending;
+  desc.cullBackFaces = draw.cullBackFaces;
   desc.vertexSpirv = &program.vertexSpirv;
   desc.fragmentSpirv = &program.fragmentSpirv;
   desc.layout = forwardLayout_;
@@ -300,7 +307,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, VkPipeline* out, s
   desc.what = "material shaders";
   VkPipeline pipeline = VK_NULL_HANDLE;
   if (!createGraphicsPipeline(ctx_.device, desc, &pipeline, error)) return false;
-  pipelines_[&program] = CachedPipeline{program.vertexSpirv, program.fragmentSpirv, pipeline};
+  pipelines_[key] = CachedPipeline{program.vertexSpirv, program.fragmentSpirv, pipeline};
   *out = pipeline;
   return true;
 }
@@ -321,7 +328,7 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
                                 std::string* error) {
   const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
   for (size_t i = 0; i < frame.draws.size(); ++i) {
-    if (!pipelineFor(*frame.draws[i].program, &(*slots)[i].pipeline, error)) {
+    if (!pipelineFor(*frame.draws[i].program, frame.draws[i], &(*slots)[i].pipeline, error)) {
       *error = "draw " + std::to_string(i) + ": " + *error;
       return false;
     }

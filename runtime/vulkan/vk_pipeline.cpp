@@ -270,8 +270,11 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   VkPipelineRasterizationStateCreateInfo raster{};
   raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  // No culling: the clip-space y flip reverses winding, and materials may be two-sided.
-  raster.cullMode = VK_CULL_MODE_NONE;
+  // Back faces of single-sided materials are culled. The clip-space y flip (vk_convert) mirrors
+  // framebuffer y, and Vulkan's orientation formula has its own sign for a y-down framebuffer
+  // (spec, "Basic Polygon Rasterization"): the two cancel, so GL's counter-clockwise front
+  // faces stay counter-clockwise here (tested by Blending and SphereScene on both backends).
+  raster.cullMode = forward && desc.cullBackFaces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
 
@@ -282,7 +285,8 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   VkPipelineDepthStencilStateCreateInfo depth{};
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
   depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
+  // Blended surfaces test depth against the opaque ones but do not occlude each other.
+  depth.depthWriteEnable = desc.blending == Blending::Opaque ? VK_TRUE : VK_FALSE;
   depth.depthCompareOp = VK_COMPARE_OP_LESS;
   depth.minDepthBounds = 0.0f;
   depth.maxDepthBounds = 1.0f;
@@ -290,6 +294,18 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   VkPipelineColorBlendAttachmentState blendAttachment{};
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  if (forward && desc.blending != Blending::Opaque) {
+    // Premultiplied colour: "over" is src + (1 − src.a)·dst, additive is src + dst.
+    const VkBlendFactor dst = desc.blending == Blending::Transparent ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA
+                                                                     : VK_BLEND_FACTOR_ONE;
+    blendAttachment.blendEnable = VK_TRUE;
+    blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    blendAttachment.dstColorBlendFactor = dst;
+    blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+    blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blendAttachment.dstAlphaBlendFactor = dst;
+    blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
+  }
   VkPipelineColorBlendStateCreateInfo blend{};
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
   blend.attachmentCount = 1;

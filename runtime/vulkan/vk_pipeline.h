@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "facet/render_backend.h"
+
 namespace facet::runtime::vulkan {
 
 inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -40,6 +42,8 @@ enum class PipelineKind {
 
 struct PipelineDesc {
   PipelineKind kind = PipelineKind::kForward;
+  Blending blending = Blending::Opaque;  // forward pipelines only
+  bool cullBackFaces = false;            // forward pipelines only
   const std::vector<uint32_t>* vertexSpirv = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;
   VkPipelineLayout layout = VK_NULL_HANDLE;

@@ -51,7 +51,8 @@ struct Param {
 struct MaterialInfo {
   std::string name;
   std::string shading;            // "lit" | "unlit"
-  std::string blending;           // "opaque" | ...
+  std::string blending;           // "opaque" | "masked" | "transparent" | "additive"
+  bool doubleSided = false;       // false: the runtime culls back faces (counter-clockwise is front)
   std::vector<Param> params;
   uint32_t paramBlockSize = 0;    // std140 size of "MaterialParams" in bytes (0: no block)
   bool operator==(const MaterialInfo&) const = default;

@@ -54,12 +54,26 @@ struct ShaderProgram {
   std::string fragmentGlslEs;
 };
 
+// How a draw's colour combines with the HDR target. Transparent and Additive shaders output
+// premultiplied colour (rgb already × alpha); both test depth but do not write it, and the
+// caller draws them after the opaque ones, far to near. A masked material draws as Opaque: its
+// shader discards below the cutoff.
+enum class Blending {
+  Opaque,       // replace
+  Transparent,  // premultiplied "over": src + (1 − src.a) · dst
+  Additive,     // src + dst (light-emitting effects)
+};
+
 struct DrawItem {
   const Mesh* mesh = nullptr;
   const ShaderProgram* program = nullptr;
   abi::ObjectUniforms object{};
   std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty)
   std::vector<TextureBinding> textures;  // the material's textures (bindings kMaterialTextureBase + i)
+  Blending blending = Blending::Opaque;
+  // Cull triangles whose vertices run clockwise on screen in GL conventions (the back faces of
+  // a mesh wound counter-clockwise seen from outside). Off: two-sided (every test mesh's default).
+  bool cullBackFaces = false;
 };
 
 struct FrameDesc {

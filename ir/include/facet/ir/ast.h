@@ -61,6 +61,8 @@ struct Material {
   SourceLoc shadingLoc;
   std::string blending = "opaque";
   SourceLoc blendingLoc;
+  ExprPtr alphaCutoff;  // blending masked(cutoff)
+  bool doubleSided = false;
   std::vector<ParamDecl> params;
   std::vector<Statement> surface;
   std::vector<TierOverride> tierOverrides;

@@ -131,7 +131,9 @@ const TierChoices& tierChoices();
 struct Material {
   std::string name;
   std::string shading;   // "lit" | "unlit"
-  std::string blending;  // "opaque"
+  std::string blending;  // opaque | masked | transparent | additive
+  double alphaCutoff = 0.5;  // masked: fragments with alpha below it are discarded
+  bool doubleSided = false;  // false: back faces are culled
   std::vector<Param> params;
   std::vector<TierOverride> tierOverrides;
   Module surface;
