@@ -191,3 +191,30 @@ TEST(Language, AlphaCutoffBelongsToMaskedBlendingAndIsInUnitRange) {
                 .find("an alpha cutoff applies to 'masked' blending only"),
             std::string::npos);
 }
+
+TEST(Language, OneMistakeIsReportedOnceNotAtEveryUse) {
+  std::string d = diagnosticsFor(R"(material m {
+    param r: float = 1.5 in [0, 1]
+    surface {
+        let wave = sin(nope)
+        roughness = params.r * wave
+        metallic = wave
+    }
+}
+)");
+  EXPECT_NE(d.find("default value 1.5 is outside the declared range"), std::string::npos) << d;
+  EXPECT_NE(d.find("unknown name 'nope'"), std::string::npos) << d;
+  EXPECT_EQ(d.find("unknown parameter 'r'"), std::string::npos) << d;
+  EXPECT_EQ(d.find("used before its definition"), std::string::npos) << d;
+}
+
+TEST(Language, ErrorsStopAfterTheLimit) {
+  std::string text = "material m { surface {\n";
+  for (int i = 0; i < 1000; ++i) text += "roughness = nope" + std::to_string(i) + "\n";
+  text += "} }";
+  std::string d = diagnosticsFor(text);
+  size_t errors = 0;
+  for (size_t at = d.find(": error: "); at != std::string::npos; at = d.find(": error: ", at + 1)) ++errors;
+  EXPECT_EQ(errors, facet::ir::kMaxErrors + 1) << "100 errors and the 'stopped' line";
+  EXPECT_NE(d.find("test.mat: error: too many errors; stopped after 100"), std::string::npos);
+}

@@ -131,7 +131,15 @@ class Checker {
     return v;
   }
 
+  // A parameter whose declaration has an error is still known by name, so its uses do not add
+  // "unknown parameter" errors on top of the real one.
   void checkParam(const ast::ParamDecl& decl) {
+    size_t before = material_.params.size();
+    checkParamDecl(decl);
+    if (material_.params.size() == before) rejectedParams_.insert(decl.name);
+  }
+
+  void checkParamDecl(const ast::ParamDecl& decl) {
     for (const Param& p : material_.params) {
       if (p.name == decl.name) {
         error(decl.loc, "parameter '" + decl.name + "' is already declared at line " + std::to_string(p.loc.line),
@@ -260,6 +268,8 @@ class Checker {
         } else if (value) {
           lets_[s.name] = {*value, s.loc};
           module().nameValue(*value, s.name);
+        } else {
+          failedLets_.insert(s.name);  // its error is reported; uses of it stay quiet
         }
         continue;
       }
@@ -315,6 +325,7 @@ class Checker {
       error(e.loc, "'" + e.name + "' is a namespace; write " + e.name + ".<name>", "unknown-name");
       return std::nullopt;
     }
+    if (failedLets_.count(e.name)) return std::nullopt;
     if (auto it = lets_.find(e.name); it != lets_.end()) {
       if (constantOnly_) {
         error(e.loc, "'" + e.name + "' cannot be used in a constant expression", "constant");
@@ -365,6 +376,7 @@ class Checker {
         return module().add(std::move(v));
       }
     }
+    if (rejectedParams_.count(e.name)) return std::nullopt;  // its declaration's error is reported
     std::vector<std::string> names;
     for (const Param& p : material_.params) names.push_back(p.name);
     error(e.loc, "unknown parameter '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
@@ -624,6 +636,8 @@ class Checker {
   std::map<std::string, Let> lets_;
   const std::map<std::string, SourceLoc>* letsAhead_ = nullptr;
   std::set<std::string> usedParams_;
+  std::set<std::string> failedLets_;      // lets whose value had an error
+  std::set<std::string> rejectedParams_;  // parameters whose declaration had an error
   bool constantOnly_ = false;
 };
 

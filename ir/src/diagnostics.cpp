@@ -6,8 +6,7 @@
 namespace facet::ir {
 
 void Diagnostics::error(SourceLoc loc, std::string message, std::string code) {
-  list_.push_back({Severity::Error, loc, std::move(message), std::move(code)});
-  ++errorCount_;
+  if (errorCount_++ < kMaxErrors) list_.push_back({Severity::Error, loc, std::move(message), std::move(code)});
 }
 
 void Diagnostics::warning(SourceLoc loc, std::string message, std::string code) {
@@ -68,6 +67,8 @@ std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
 std::string Diagnostics::format() const {
   std::string out;
   for (const Diagnostic& d : list_) out += formatDiagnostic(file_, d);
+  if (errorCount_ > kMaxErrors)
+    out += file_.path + ": error: too many errors; stopped after " + std::to_string(kMaxErrors) + "\n";
   return out;
 }
 

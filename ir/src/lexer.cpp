@@ -55,6 +55,7 @@ class Lexer {
     }
     for (;;) {
       skipSpaceAndComments();
+      if (diags_.atErrorLimit()) pos_ = text_.size();  // enough: report what we have
       SourceLoc loc = here();
       if (pos_ >= text_.size()) {
         out.push_back({Tok::End, "", loc});

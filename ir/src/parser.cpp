@@ -28,13 +28,14 @@ class Parser {
     } catch (SyntaxError&) {
       return std::nullopt;
     }
-    while (!at(Tok::RBrace) && !at(Tok::End)) {
+    while (!at(Tok::RBrace) && !at(Tok::End) && !diags_.atErrorLimit()) {
       try {
         item(m);
       } catch (SyntaxError&) {
         syncToItem();
       }
     }
+    if (diags_.atErrorLimit()) return std::nullopt;
     if (!at(Tok::End)) {
       advance();  // the closing brace
       if (!at(Tok::End)) error(peek().loc, "unexpected " + spell(peek()) + " after the end of the material");
@@ -194,7 +195,7 @@ class Parser {
   void surface(ast::Material& m) {
     advance();
     expect(Tok::LBrace, "'{' after 'surface'");
-    while (!at(Tok::RBrace) && !at(Tok::End)) {
+    while (!at(Tok::RBrace) && !at(Tok::End) && !diags_.atErrorLimit()) {
       try {
         m.surface.push_back(statement());
         accept(Tok::Semicolon);

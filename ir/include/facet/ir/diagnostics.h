@@ -32,6 +32,10 @@ struct Diagnostic {
 };
 
 // Collects the diagnostics of one source file. Stages report here; they never print or exit.
+// Errors past this many are counted but not kept: one mistake can cascade, and hostile input
+// must not turn into millions of messages. The lexer and parser stop at the limit.
+inline constexpr size_t kMaxErrors = 100;
+
 class Diagnostics {
  public:
   explicit Diagnostics(const SourceFile& file) : file_(file) {}
@@ -40,6 +44,7 @@ class Diagnostics {
   void warning(SourceLoc loc, std::string message, std::string code);
 
   bool hasErrors() const { return errorCount_ > 0; }
+  bool atErrorLimit() const { return errorCount_ >= kMaxErrors; }
   size_t errorCount() const { return errorCount_; }
   const std::vector<Diagnostic>& all() const { return list_; }
   const SourceFile& file() const { return file_; }
