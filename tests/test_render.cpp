@@ -15,18 +15,8 @@ namespace {
 
 using facet::runtime::FrameResult;
 
-// Compiles every example material into a scratch folder, as the main job does with matc.
-std::string compileExamplePackages() {
-  std::string dir = facet::test::scratchDir("render-packages");
-  for (const std::string& path : facet::test::exampleMaterials()) {
-    auto built = facet::test::buildFile(path);
-    if (!built) continue;
-    std::string error;
-    auto bytes = facet::package::write(built->package);
-    EXPECT_TRUE(facet::package::writeFile(dir + "/" + built->package.material.name + ".matpkg", bytes, &error)) << error;
-  }
-  return dir;
-}
+// Every example material compiled into a scratch folder, as the main job does with matc.
+std::string compileExamplePackages() { return facet::test::writeExamplePackages("render-packages"); }
 
 // The example sphere scene rendered once per test process by both backends. Failures are kept
 // as text and asserted by every test, so a broken setup shows as failed tests, never skipped ones.
@@ -217,16 +207,11 @@ std::string twoSpheres(const std::string& material, const std::string& secondPar
 // An sRGB texture whose texels are C (here the 1×1 default) must shade exactly like a colour
 // parameter C: both arrive linear, one decoded by the sampler, the other by matc.
 TEST(Textures, SrgbTextureShadesLikeTheSameColourParameter) {
-  std::string packages = facet::test::scratchDir("texture-vs-colour");
-  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
-           {"by_colour", "material by_colour { param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }"},
-           {"by_texture", "material by_texture { param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
-                          " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"}}) {
-    auto built = facet::test::buildText(text, name + ".mat");
-    ASSERT_TRUE(built);
-    std::string error;
-    ASSERT_TRUE(facet::package::writeFile(packages + "/" + name + ".matpkg", facet::package::write(built->package), &error));
-  }
+  std::string packages = facet::test::writePackagesFromTexts(
+      "texture-vs-colour",
+      {"material by_colour { param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }",
+       "material by_texture { param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
+       " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"});
   std::string error;
   auto vk = facet::runtime::createVulkanBackend({true}, &error);
   ASSERT_TRUE(vk) << error;
@@ -316,20 +301,15 @@ void expectNear(Rgb got, Rgb want, const char* what) {
 // Each blending mode composites as its formula says, on both backends: transparent is
 // premultiplied "over", additive adds, masked discards below its cutoff.
 TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
-  std::string packages = facet::test::scratchDir("blending");
   const std::string surface = "baseColor = vec3(0.8, 0.2, 0.1)\n roughness = 0.6\n";
-  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
-           {"solid", "material solid { surface { " + surface + " } }"},
-           {"glass", "material glass { blending transparent\n param a: float = 0.25 in [0, 1]\n surface { " + surface +
-                         " alpha = params.a } }"},
-           {"glow", "material glow { blending additive\n surface { " + surface + " } }"},
-           {"cutout", "material cutout { blending masked(0.5)\n param a: float = 0 in [0, 1]\n surface { " + surface +
-                          " alpha = params.a } }"}}) {
-    auto built = facet::test::buildText(text, name + ".mat");
-    ASSERT_TRUE(built);
-    std::string error;
-    ASSERT_TRUE(facet::package::writeFile(packages + "/" + name + ".matpkg", facet::package::write(built->package), &error));
-  }
+  std::string packages = facet::test::writePackagesFromTexts(
+      "blending",
+      {"material solid { surface { " + surface + " } }",
+       "material glass { blending transparent\n param a: float = 0.25 in [0, 1]\n surface { " + surface +
+           " alpha = params.a } }",
+       "material glow { blending additive\n surface { " + surface + " } }",
+       "material cutout { blending masked(0.5)\n param a: float = 0 in [0, 1]\n surface { " + surface +
+           " alpha = params.a } }"});
   std::string error;
   auto vk = facet::runtime::createVulkanBackend({true}, &error);
   auto gl = facet::runtime::createGlBackend(&error);

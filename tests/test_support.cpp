@@ -41,6 +41,30 @@ std::optional<compiler::BuildResult> buildText(const std::string& text, const st
   return built;
 }
 
+namespace {
+
+void writePackage(const std::string& dir, const std::optional<compiler::BuildResult>& built) {
+  if (!built) return;
+  std::string error;
+  EXPECT_TRUE(package::writeFile(dir + "/" + built->package.material.name + ".matpkg", package::write(built->package),
+                                 &error))
+      << error;
+}
+
+}  // namespace
+
+std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts) {
+  std::string dir = scratchDir(scratchName);
+  for (const std::string& text : materialTexts) writePackage(dir, buildText(text));
+  return dir;
+}
+
+std::string writeExamplePackages(const std::string& scratchName) {
+  std::string dir = scratchDir(scratchName);
+  for (const std::string& path : exampleMaterials()) writePackage(dir, buildFile(path));
+  return dir;
+}
+
 std::string diagnosticsFor(const std::string& text, const std::string& path) {
   ir::SourceFile file{path, text};
   ir::Diagnostics diags(file);

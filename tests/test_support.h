@@ -28,6 +28,12 @@ std::optional<compiler::BuildResult> buildFile(const std::string& path);
 // The same for material text held in memory.
 std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path = "test.mat");
 
+// Builds each material and writes <scratch dir>/<material name>.matpkg, as matc does; returns
+// the folder. Fails the current test on any error.
+std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts);
+// The same for every examples/materials/*.mat.
+std::string writeExamplePackages(const std::string& scratchName);
+
 // Parses and checks material text; returns the diagnostics as formatted text.
 std::string diagnosticsFor(const std::string& text, const std::string& path = "test.mat");
 

@@ -89,14 +89,7 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
 // The bound is a floor that catches a broken tier, not a quality target; the figures are
 // printed for the record.
 TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
-  std::string packages = facet::test::scratchDir("tier-packages");
-  for (const std::string& path : facet::test::exampleMaterials()) {
-    auto built = facet::test::buildFile(path);
-    ASSERT_TRUE(built);
-    std::string error;
-    ASSERT_TRUE(facet::package::writeFile(packages + "/" + built->package.material.name + ".matpkg",
-                                          facet::package::write(built->package), &error)) << error;
-  }
+  std::string packages = facet::test::writeExamplePackages("tier-packages");
   std::string error;
   auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/spheres.json"), &error);
   ASSERT_TRUE(scene) << error;
