@@ -139,29 +139,8 @@ bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
 bool VulkanBackend::createFixedObjects(std::string* error) {
   VkDevice device = ctx_.device;
 
-  VkCommandPoolCreateInfo poolInfo{};
-  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = ctx_.queueFamily;
-  if (!check(vkCreateCommandPool(device, &poolInfo, nullptr, &commandPool_), "vkCreateCommandPool",
-             error)) {
-    commandPool_ = VK_NULL_HANDLE;
-    return false;
-  }
-  VkCommandBufferAllocateInfo cmdInfo{};
-  cmdInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-  cmdInfo.commandPool = commandPool_;
-  cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  cmdInfo.commandBufferCount = 1;
-  if (!check(vkAllocateCommandBuffers(device, &cmdInfo, &commandBuffer_),
-             "vkAllocateCommandBuffers", error)) {
-    commandBuffer_ = VK_NULL_HANDLE;
-    return false;
-  }
-  VkFenceCreateInfo fenceInfo{};
-  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  if (!check(vkCreateFence(device, &fenceInfo, nullptr, &fence_), "vkCreateFence", error)) {
-    fence_ = VK_NULL_HANDLE;
+  if (!createSubmitRecorder(device, ctx_.queueFamily, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT, &commandPool_,
+                            &commandBuffer_, &fence_, error)) {
     return false;
   }
 

@@ -119,4 +119,32 @@ void destroyImage(VkDevice device, Image* image) {
   *image = Image{};
 }
 
+bool createSubmitRecorder(VkDevice device, uint32_t queueFamily, VkCommandPoolCreateFlags flags, VkCommandPool* pool,
+                          VkCommandBuffer* commandBuffer, VkFence* fence, std::string* error) {
+  VkCommandPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  poolInfo.flags = flags;
+  poolInfo.queueFamilyIndex = queueFamily;
+  if (!check(vkCreateCommandPool(device, &poolInfo, nullptr, pool), "vkCreateCommandPool", error)) {
+    *pool = VK_NULL_HANDLE;
+    return false;
+  }
+  VkCommandBufferAllocateInfo cmdInfo{};
+  cmdInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  cmdInfo.commandPool = *pool;
+  cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cmdInfo.commandBufferCount = 1;
+  if (!check(vkAllocateCommandBuffers(device, &cmdInfo, commandBuffer), "vkAllocateCommandBuffers", error)) {
+    *commandBuffer = VK_NULL_HANDLE;
+    return false;
+  }
+  VkFenceCreateInfo fenceInfo{};
+  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  if (!check(vkCreateFence(device, &fenceInfo, nullptr, fence), "vkCreateFence", error)) {
+    *fence = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
 }  // namespace facet::runtime::vulkan

@@ -44,4 +44,10 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
 // Safe on a default-constructed or partly created image; leaves *image default-constructed.
 void destroyImage(VkDevice device, Image* image);
 
+// A command pool with one primary command buffer and an unsignalled fence: what submit-and-wait
+// work needs (the frame, texture uploads). On failure the handles that were not created stay
+// VK_NULL_HANDLE, so the owner's usual destruction is safe.
+bool createSubmitRecorder(VkDevice device, uint32_t queueFamily, VkCommandPoolCreateFlags flags, VkCommandPool* pool,
+                          VkCommandBuffer* commandBuffer, VkFence* fence, std::string* error);
+
 }  // namespace facet::runtime::vulkan

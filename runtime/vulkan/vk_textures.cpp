@@ -39,30 +39,10 @@ VkFormat vulkanFormat(TextureFormat format) {
 
 bool TextureCache::init(const Context* ctx, std::string* error) {
   ctx_ = ctx;
-  VkCommandPoolCreateInfo poolInfo{};
-  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  poolInfo.flags =
-      VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = ctx->queueFamily;
-  if (!check(vkCreateCommandPool(ctx->device, &poolInfo, nullptr, &commandPool_),
-             "vkCreateCommandPool", error)) {
-    commandPool_ = VK_NULL_HANDLE;
-    return false;
-  }
-  VkCommandBufferAllocateInfo cmdInfo{};
-  cmdInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-  cmdInfo.commandPool = commandPool_;
-  cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  cmdInfo.commandBufferCount = 1;
-  if (!check(vkAllocateCommandBuffers(ctx->device, &cmdInfo, &commandBuffer_),
-             "vkAllocateCommandBuffers", error)) {
-    commandBuffer_ = VK_NULL_HANDLE;
-    return false;
-  }
-  VkFenceCreateInfo fenceInfo{};
-  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  if (!check(vkCreateFence(ctx->device, &fenceInfo, nullptr, &fence_), "vkCreateFence", error)) {
-    fence_ = VK_NULL_HANDLE;
+  // Uploads are recorded into a command buffer of a transient pool and waited on with a fence.
+  if (!createSubmitRecorder(ctx->device, ctx->queueFamily,
+                            VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
+                            &commandPool_, &commandBuffer_, &fence_, error)) {
     return false;
   }
 
