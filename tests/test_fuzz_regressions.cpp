@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -37,8 +36,6 @@ std::vector<std::string> inputs() {
 void replay(const std::string& relative) {
   const std::string path = facet::test::sourceDir() + "/tests/fuzz/" + relative;
   facet::ir::SourceFile file{relative, facet::test::readText(path)};
-  auto start = std::chrono::steady_clock::now();
-
   facet::ir::Diagnostics diags(file);
   std::optional<facet::ir::Material> material = facet::ir::compileSource(file, diags);
   std::string text = diags.format();
@@ -54,10 +51,7 @@ void replay(const std::string& relative) {
     EXPECT_GE(d.loc.column, 1u) << d.message;
     EXPECT_LE(d.loc.offset, file.text.size()) << d.message;
   }
-
-  // The fuzzer's hang limit is 5 s on an optimised build; allow a Debug + ASan build twice that.
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(seconds, 10.0) << "front end took " << seconds << " s";
+  // Hangs are the fuzzer's to find (5 s per input); here ctest's --timeout stops a stuck run.
 }
 
 }  // namespace
@@ -77,18 +71,19 @@ TEST(FuzzInputs, SeedCorpusIsPresent) {
 }
 
 // Found by reading, not by the fuzzer (its inputs are a few KiB): formatting looked up each
-// diagnostic's whole source line, so N errors on one long line cost O(N * line length). A
-// 4 MiB line of bad characters took hours; now it is linear (ir/src/diagnostics.cpp, lineAt).
-TEST(FuzzInputs, ManyErrorsOnOneLongLineFormatInLinearTime) {
+// diagnostic's whole source line, so N errors on one long line cost O(N * line length); a 4 MiB
+// line of bad characters took hours. Two fixes keep the work bounded by construction, not by a
+// timer: lines over 200 bytes are not scanned or quoted (ir/src/diagnostics.cpp, lineAt), and
+// the lexer stops after kMaxErrors errors.
+TEST(FuzzInputs, ManyErrorsOnOneLongLineStopAtTheErrorLimit) {
   facet::ir::SourceFile file{"long-line.mat", std::string(300000, '@')};
-  auto start = std::chrono::steady_clock::now();
   facet::ir::Diagnostics diags(file);
   EXPECT_FALSE(facet::ir::compileSource(file, diags).has_value());
   std::string text = diags.format();
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(diags.errorCount(), 300000u);
+  EXPECT_EQ(diags.errorCount(), facet::ir::kMaxErrors);
+  EXPECT_EQ(diags.all().size(), facet::ir::kMaxErrors);
+  EXPECT_NE(text.find("long-line.mat: error: too many errors; stopped after 100"), std::string::npos);
   EXPECT_EQ(text.find("\n    @@@"), std::string::npos) << "a line over 200 bytes is not quoted";
-  EXPECT_LT(seconds, 20.0) << "300000 diagnostics on one line took " << seconds << " s";
 }
 
 // Found by reading, not by the fuzzer (it needs more input than the fuzzer writes): each let

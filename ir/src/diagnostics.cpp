@@ -67,7 +67,7 @@ std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
 std::string Diagnostics::format() const {
   std::string out;
   for (const Diagnostic& d : list_) out += formatDiagnostic(file_, d);
-  if (errorCount_ > kMaxErrors)
+  if (errorCount_ >= kMaxErrors)
     out += file_.path + ": error: too many errors; stopped after " + std::to_string(kMaxErrors) + "\n";
   return out;
 }
