@@ -218,3 +218,19 @@ TEST(Language, ErrorsStopAfterTheLimit) {
   EXPECT_EQ(errors, facet::ir::kMaxErrors + 1) << "100 errors and the 'stopped' line";
   EXPECT_NE(d.find("test.mat: error: too many errors; stopped after 100"), std::string::npos);
 }
+
+TEST(Language, RecoveryKeepsTheStatementAfterAnUnclosedCall) {
+  // The unclosed call stops at 'reflectance'; recovery must parse that statement, not skip it,
+  // or its own error (line 4) goes unreported.
+  std::string d = diagnosticsFor("material m {\n  surface {\n    alpha = mix(1.0, 2.0\n    reflectance = * 2.0\n  }\n}\n");
+  EXPECT_NE(d.find("test.mat:4:5: error: expected ')' or ',' in the argument list of 'mix'"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:4:19: error: expected an expression, found '*'"), std::string::npos) << d;
+}
+
+TEST(Language, NumbersAreCheckedWhereTheyAreWritten) {
+  EXPECT_NE(diagnosticsFor("material m { surface { roughness = 2e } }").find("test.mat:1:36: error: number '2e' has an exponent with no digits"),
+            std::string::npos);
+  EXPECT_NE(diagnosticsFor("material m { param n: int = 1e30\n surface { roughness = float(params.n) } }")
+                .find("default value does not fit a 32-bit int"),
+            std::string::npos);
+}

@@ -176,6 +176,10 @@ class Checker {
                                         "' is " + decl.typeName, "type");
       return;
     }
+    if (p.type == Type::Int && (def->constant[0] < -2147483648.0 || def->constant[0] > 2147483647.0)) {
+      error(decl.defaultValue->loc, "default value does not fit a 32-bit int", "range");
+      return;
+    }
     for (int i = 0; i < componentCount(p.type); ++i) p.defaultValue.push_back(def->constant[size_t(i)]);
 
     if (decl.rangeMin) {

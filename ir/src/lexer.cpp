@@ -147,15 +147,15 @@ class Lexer {
       digits();
     }
     if (at('e') || at('E')) {
-      size_t save = pos_;
-      uint32_t saveCol = column_;
       advance();
       if (at('+') || at('-')) advance();
       if (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) {
         digits();
-      } else {  // "2e" is a number followed by an identifier, not an exponent
-        pos_ = save;
-        column_ = saveCol;
+      } else {  // "2e" or "2e+": an exponent with no digits is a typo, not 2 followed by a name
+        SourceLoc at = loc;
+        at.length = uint32_t(pos_ - loc.offset);
+        diags_.error(at, "number '" + std::string(text_.substr(loc.offset, pos_ - loc.offset)) +
+                             "' has an exponent with no digits", "lex");
       }
     }
     return finish(Tok::Number, loc, std::string(text_.substr(loc.offset, pos_ - loc.offset)));

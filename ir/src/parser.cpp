@@ -102,11 +102,16 @@ class Parser {
   }
 
   // After an error inside `surface { }`: skip to the next statement start (an identifier
-  // followed by '=' or `let`) or the closing brace.
-  void syncToStatement() {
+  // followed by '=' or `let`) or the closing brace. The token where the error stopped may itself
+  // start the next statement (`alpha = mix(1.0, 2.0` then `reflectance = 0.5`): it is kept.
+  // statement() consumes at least one token from any statement start, so this cannot loop.
+  bool atStatementStart() const { return atKeyword("let") || (at(Tok::Identifier) && peek(1).kind == Tok::Assign); }
+
+  void syncToStatement(size_t errorPos) {
+    if (pos_ > errorPos && atStatementStart()) return;
     while (!at(Tok::End) && !at(Tok::RBrace)) {
       advance();
-      if (atKeyword("let") || (at(Tok::Identifier) && peek(1).kind == Tok::Assign)) return;
+      if (atStatementStart()) return;
     }
   }
 
@@ -196,11 +201,12 @@ class Parser {
     advance();
     expect(Tok::LBrace, "'{' after 'surface'");
     while (!at(Tok::RBrace) && !at(Tok::End) && !diags_.atErrorLimit()) {
+      size_t start = pos_;
       try {
         m.surface.push_back(statement());
         accept(Tok::Semicolon);
       } catch (SyntaxError&) {
-        syncToStatement();
+        syncToStatement(start);
       }
     }
     expect(Tok::RBrace, "'}' to close the surface block");
