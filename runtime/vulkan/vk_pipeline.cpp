@@ -3,6 +3,7 @@
 #include <array>
 
 #include "facet/shader_abi.h"
+#include "facet/texture_checks.h"
 #include "vk_check.h"
 
 namespace facet::runtime::vulkan {
@@ -144,6 +145,24 @@ bool createPostRenderPass(VkDevice device, VkRenderPass* out, std::string* error
   return true;
 }
 
+namespace {
+
+bool createSetLayout(VkDevice device, const VkDescriptorSetLayoutBinding* bindings, uint32_t count,
+                     VkDescriptorSetLayout* out, std::string* error) {
+  VkDescriptorSetLayoutCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  info.bindingCount = count;
+  info.pBindings = bindings;
+  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
+             "vkCreateDescriptorSetLayout", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
   std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
   const uint32_t numbers[] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
@@ -153,16 +172,7 @@ bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::st
     bindings[i].descriptorCount = 1;
     bindings[i].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   }
-  VkDescriptorSetLayoutCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  info.bindingCount = static_cast<uint32_t>(bindings.size());
-  info.pBindings = bindings.data();
-  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
-             "vkCreateDescriptorSetLayout", error)) {
-    *out = VK_NULL_HANDLE;
-    return false;
-  }
-  return true;
+  return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
 bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
@@ -171,21 +181,11 @@ bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::strin
   binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   binding.descriptorCount = 1;
   binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
-  VkDescriptorSetLayoutCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  info.bindingCount = 1;
-  info.pBindings = &binding;
-  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
-             "vkCreateDescriptorSetLayout", error)) {
-    *out = VK_NULL_HANDLE;
-    return false;
-  }
-  return true;
+  return createSetLayout(device, &binding, 1, out, error);
 }
 
 bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
-  std::array<VkDescriptorSetLayoutBinding, abi::kMaterialTextureBase + abi::kMaxMaterialTextures>
-      bindings{};
+  std::array<VkDescriptorSetLayoutBinding, kTextureSlots> bindings{};
   for (uint32_t i = 0; i < bindings.size(); ++i) {
     bindings[i].binding = i;
     bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -193,16 +193,7 @@ bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::st
     // The vertex stage too: per-vertex lighting will sample the lookup tables there.
     bindings[i].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   }
-  VkDescriptorSetLayoutCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  info.bindingCount = static_cast<uint32_t>(bindings.size());
-  info.pBindings = bindings.data();
-  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
-             "vkCreateDescriptorSetLayout", error)) {
-    *out = VK_NULL_HANDLE;
-    return false;
-  }
-  return true;
+  return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
 bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts,
