@@ -56,8 +56,14 @@ void printSummary(const package::ReadResult& r) {
   for (const package::Param& p : m.params) {
     std::string range;
     if (p.rangeMin && p.rangeMax) range = " in [" + formatValue({*p.rangeMin}) + ", " + formatValue({*p.rangeMax}) + "]";
-    std::printf("  %-16s %-6s = %s%s  @%u+%u%s\n", p.name.c_str(), package::toString(p.type),
-                formatValue(p.defaultValue).c_str(), range.c_str(), p.offset, p.size,
+    // Where the value lives: a std140 offset+size in the block, a sampler slot, or nowhere.
+    std::string where;
+    if (package::isTexture(p.type))
+      where = p.offset == package::kNoTextureSlot ? "unsampled" : "sampler slot " + std::to_string(p.offset);
+    else
+      where = p.size == 0 ? "unread" : "@" + std::to_string(p.offset) + "+" + std::to_string(p.size);
+    std::printf("  %-16s %-6s = %s%s  %s%s\n", p.name.c_str(), package::toString(p.type),
+                formatValue(p.defaultValue).c_str(), range.c_str(), where.c_str(),
                 p.type == package::ParamType::Color ? "  (default shown linear)" : "");
   }
   std::printf("variants   %zu\n", pkg.variants.size());

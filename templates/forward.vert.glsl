@@ -10,6 +10,17 @@ void main() {
 #if defined(FACET_VARYING_UV0)
     v_uv0 = a_uv0;
 #endif
+#if defined(FACET_VARYING_UV1)
+    v_uv1 = a_uv1;
+#endif
+#if defined(FACET_VARYING_COLOR)
+    v_color = a_color;
+#endif
+#if defined(FACET_VARYING_TANGENT)
+    // A tangent lies in the surface, so it transforms with the model matrix itself (the normal
+    // matrix is for normals); the handedness sign passes through.
+    v_tangent = vec4(mat3(object.model) * a_tangent.xyz, a_tangent.w);
+#endif
 #if defined(FACET_VERTEX_DIFFUSE)
     // Per-vertex diffuse (Zioma 2015: diffuse varies slowly, so mid and low tiers light it per
     // vertex): irradiance / π from the sky and the directional light. The fragment stage only

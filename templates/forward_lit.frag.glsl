@@ -3,6 +3,9 @@
 #include "math.glsl"
 #include "precision.glsl"
 #include "facet:material"
+#if defined(FACET_MATERIAL_NORMAL)
+#include "normal_mapping.glsl"
+#endif
 #include "diffuse_lambert.glsl"
 #include "facet:specular"
 #include "shading_standard.glsl"
@@ -10,8 +13,15 @@
 
 void main() {
     shading_normal = normalize(v_normal);
+    // The view vector comes from highp positions; only the unit vector drops to mediump.
+    shading_view = normalize(frame.cameraPosition.xyz - v_worldPosition);
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
+#if defined(FACET_MATERIAL_NORMAL)
+    // vertex.normal reads in the surface program saw the interpolated normal; shading uses the
+    // mapped one. Per-vertex diffuse (mid, low) was lit before any map: it keeps the vertex normal.
+    shading_normal = tangent_to_world(material.normal);
+#endif
 
 #if defined(FACET_VERTEX_DIFFUSE)
     vec3 color = material_diffuse_color(material) * v_diffuseLight * clamp(material.ambientOcclusion, 0.0, 1.0);
@@ -19,10 +29,8 @@ void main() {
     vec3 color = shade_standard_ambient(material, frame.ambient.rgb);
 #endif
 #if defined(FACET_DIRECTIONAL_LIGHT)
-    // The view vector comes from highp positions; only the unit vector drops to mediump.
-    vec3 v = normalize(frame.cameraPosition.xyz - v_worldPosition);
     vec3 l = normalize(frame.lightDirection.xyz);
-    color += shade_standard_direct(material, shading_normal, v, l, frame.lightColor.rgb);
+    color += shade_standard_direct(material, shading_normal, shading_view, l, frame.lightColor.rgb);
 #endif
     fragColor = blend_output(color + material.emissive, material.alpha);
 }

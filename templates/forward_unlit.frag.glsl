@@ -6,6 +6,7 @@
 
 void main() {
     shading_normal = normalize(v_normal);
+    shading_view = normalize(frame.cameraPosition.xyz - v_worldPosition);
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
     fragColor = blend_output(material.baseColor + material.emissive, material.alpha);

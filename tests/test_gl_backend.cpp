@@ -8,6 +8,7 @@
 
 #include "../runtime/gl/gl_context.h"
 #include "facet/render_backend.h"
+#include "facet/runtime/mesh.h"
 
 namespace facet::runtime {
 namespace {
@@ -101,7 +102,7 @@ DrawItem makeDraw(const Mesh& mesh, const ShaderProgram& program) {
 }
 
 void addVertex(Mesh* mesh, float x, float y, float z) {
-  mesh->vertices.insert(mesh->vertices.end(), {x, y, z, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f});
+  appendVertex(*mesh, Vertex{{x, y, z}});
 }
 
 Mesh triangle(float x0, float y0, float x1, float y1, float x2, float y2, float z = 0.0f) {

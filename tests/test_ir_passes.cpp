@@ -105,6 +105,18 @@ TEST(Ranges, NormalizeAndTrigonometryAreWithinUnitBounds) {
   expectInterval(outputRange("", "roughness", "dot(vertex.normal, vertex.normal)"), 0.0, 3.0);
 }
 
+// Vertex inputs and textures carry the ranges of their encodings: unit vectors in [-1, 1], vertex
+// colours and colour textures in [0, 1], a normal map's decoded xyz in [-1, 1].
+TEST(Ranges, VertexInputsAndTexturesHaveTheirEncodingRanges) {
+  expectInterval(outputRange("", "roughness", "vertex.viewDirection.z"), -1.0, 1.0);
+  expectInterval(outputRange("", "roughness", "vertex.color.a"), 0.0, 1.0);
+  expectInterval(outputRange("param t: texture(linear) = vec4(1.0)", "roughness", "sample(params.t, vertex.uv0).g"), 0.0, 1.0);
+  expectInterval(outputRange("param n: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)", "roughness",
+                             "sample(params.n, vertex.uv0).x * 0.5"),
+                 -64.0 / 127.0, 0.5);
+  EXPECT_FALSE(outputRange("", "roughness", "vertex.uv1.x").bounded());
+}
+
 TEST(Ranges, MixWithUnitWeightStaysBetweenItsEnds) {
   expectInterval(outputRange("param a: float = 0.2 in [0.1, 0.3]\n param t: float = 0.5 in [0, 1]", "roughness",
                              "mix(params.a, 0.9, params.t)"),

@@ -156,10 +156,36 @@ TEST(Language, TexturesAreOnlyReadThroughSample) {
     }
 }
 )");
-  EXPECT_NE(d.find("a texture parameter names its colour space: texture(srgb) or texture(linear)"), std::string::npos) << d;
+  EXPECT_NE(d.find("a texture parameter names its colour space: texture(srgb), texture(linear) or texture(normal)"), std::string::npos) << d;
   EXPECT_NE(d.find("the second argument of 'sample' is a vec2 texture coordinate, not float"), std::string::npos) << d;
   EXPECT_NE(d.find("a texture can only be read with sample(texture, uv)"), std::string::npos) << d;
   EXPECT_EQ(d.find("test.mat:7:"), std::string::npos) << "the valid sample() line must not be reported: " << d;
+}
+
+// A normal map is read as a decoded tangent-space vec3, never as colour; lit-only outputs of an
+// unlit material are dropped with a warning rather than silently compiled.
+TEST(Language, NormalMapsSampleAsVec3AndUnlitIgnoresLightingOutputs) {
+  std::string d = diagnosticsFor(R"(material m {
+    param n: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)
+    surface {
+        alpha = sample(params.n, vertex.uv0).a
+        normal = sample(params.n, vertex.uv0)
+    }
+}
+)");
+  EXPECT_NE(d.find("test.mat:4:46: error: 'a' is not a swizzle of a vec3"), std::string::npos) << d;
+  EXPECT_EQ(d.find("test.mat:5:"), std::string::npos) << "normal = sample(normal map) is valid: " << d;
+  d = diagnosticsFor(R"(material m {
+    shading unlit
+    surface {
+        baseColor = vertex.color.rgb
+        roughness = 0.5
+    }
+}
+)");
+  EXPECT_NE(d.find("test.mat:5:9: warning: output 'roughness' has no effect on an unlit material [unused-output]"),
+            std::string::npos) << d;
+  EXPECT_EQ(d.find("error"), std::string::npos) << d;
 }
 
 TEST(Language, TierOverridesAreCheckedWhereTheyAreWritten) {

@@ -70,10 +70,11 @@ Reflection reflect(const std::vector<uint8_t>& code) {
   return r;
 }
 
-// The variant every check below looks at: the mobile tier with its directional light.
+// The variant every check below looks at: the mobile tier with its directional light (an unlit
+// material is built without the light: its variants are all dir0).
 const facet::package::Variant& highDir1(const facet::compiler::BuildResult& built) {
   for (const auto& v : built.package.variants)
-    if (v.key == "high.dir1") return v;
+    if (v.key == "high.dir1" || (built.package.material.shading == "unlit" && v.key == "high.dir0")) return v;
   ADD_FAILURE() << "no variant high.dir1";
   return built.package.variants.at(0);
 }
@@ -169,16 +170,60 @@ TEST(ShaderAbi, MaterialReadingNoParameterHasNoParameterBlock) {
   EXPECT_EQ(built->package.material.paramBlockSize, 0u);
 }
 
-TEST(ShaderAbi, Uv0AttributeAndVaryingExistOnlyWhenRead) {
+// Each optional vertex input appears (attribute at its ABI location, and its varying) only in a
+// material whose surface program needs it; a material without a normal map has no tangent.
+TEST(ShaderAbi, OptionalVertexInputsExistOnlyWhenTheMaterialNeedsThem) {
+  struct Case {
+    const char* input;
+    uint32_t location;
+    const char* surface;  // a surface program that needs the input
+  };
+  const Case cases[] = {
+      {"uv0", facet::abi::kAttribUv0, "roughness = fract(vertex.uv0.x * 4.0)"},
+      {"uv1", facet::abi::kAttribUv1, "roughness = fract(vertex.uv1.y * 4.0)"},
+      {"color", facet::abi::kAttribColor, "baseColor = vertex.color.rgb"},
+      {"tangent", facet::abi::kAttribTangent, "normal = normalize(vec3(0.2, 0.1, 1.0))"},
+  };
   auto without = facet::test::buildText("material m { surface { roughness = 0.5 } }");
-  auto with = facet::test::buildText("material m { surface { roughness = fract(vertex.uv0.x * 4.0) } }");
-  ASSERT_TRUE(without && with);
-  const auto& a = highDir1(*without);
-  const auto& b = highDir1(*with);
-  EXPECT_EQ(reflect(spirv(a, facet::package::Stage::Vertex)).inputs.count("a_uv0"), 0u);
-  EXPECT_EQ(reflect(spirv(a, facet::package::Stage::Fragment)).inputs.count("v_uv0"), 0u);
-  EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Vertex)).inputs.at("a_uv0"), facet::abi::kAttribUv0);
-  EXPECT_EQ(reflect(spirv(b, facet::package::Stage::Fragment)).inputs.count("v_uv0"), 1u);
+  ASSERT_TRUE(without);
+  Reflection noneVs = reflect(spirv(highDir1(*without), facet::package::Stage::Vertex));
+  Reflection noneFs = reflect(spirv(highDir1(*without), facet::package::Stage::Fragment));
+  EXPECT_EQ(noneVs.inputs.size(), 2u);  // a_position, a_normal
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.input);
+    const std::string attribute = std::string("a_") + c.input, varying = std::string("v_") + c.input;
+    EXPECT_EQ(noneVs.inputs.count(attribute), 0u);
+    EXPECT_EQ(noneFs.inputs.count(varying), 0u);
+    auto with = facet::test::buildText(std::string("material m { surface { ") + c.surface + " } }");
+    ASSERT_TRUE(with);
+    Reflection vs = reflect(spirv(highDir1(*with), facet::package::Stage::Vertex));
+    Reflection fs = reflect(spirv(highDir1(*with), facet::package::Stage::Fragment));
+    ASSERT_EQ(vs.inputs.count(attribute), 1u);
+    EXPECT_EQ(vs.inputs.at(attribute), c.location);
+    EXPECT_EQ(vs.inputs.size(), 3u) << "only the one input is added";
+    EXPECT_EQ(fs.inputs.count(varying), 1u);
+  }
+}
+
+// A normal map samples a texture(normal) and writes `normal`; an unlit material never shades with
+// a normal, so writing one there adds no tangent either.
+TEST(ShaderAbi, NormalMapNeedsTangentsOnlyWhenLit) {
+  const char* lit = R"(material m {
+    param bumps: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)
+    surface { normal = sample(params.bumps, vertex.uv0) }
+})";
+  const char* unlit = R"(material m {
+    shading unlit
+    param bumps: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)
+    surface { normal = sample(params.bumps, vertex.uv0) baseColor = vec3(1.0) }
+})";
+  auto a = facet::test::buildText(lit), b = facet::test::buildText(unlit);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->package.material.params.at(0).type, facet::package::ParamType::TextureNormal);
+  EXPECT_EQ(reflect(spirv(highDir1(*a), facet::package::Stage::Vertex)).inputs.count("a_tangent"), 1u);
+  EXPECT_EQ(reflect(spirv(highDir1(*a), facet::package::Stage::Fragment)).samplers.size(), 1u);
+  EXPECT_EQ(reflect(spirv(highDir1(*b), facet::package::Stage::Vertex)).inputs.count("a_tangent"), 0u);
+  EXPECT_EQ(reflect(spirv(highDir1(*b), facet::package::Stage::Fragment)).samplers.size(), 0u);
 }
 
 TEST(ShaderAbi, SampledTextureGetsASamplerAtItsSlotAndAnUnsampledOneNone) {

@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
-"""Writes examples/textures/tiles.png: 64x64 sRGB tiles (two glazes, light grout), the image the
-painted_tiles example samples. Standard library only, so the image is reproducible anywhere:
+"""Writes the images the painted_tiles example samples, 64x64 each:
+  examples/textures/tiles.png         sRGB tiles (two glazes, light grout);
+  examples/textures/tiles_normal.png  its tangent-space normal map: each tile is raised above the
+                                      grout with a 2-texel bevel.
+Standard library only, so the images are reproducible anywhere:
     python3 tools/make_example_textures.py
 """
 import pathlib
@@ -9,12 +12,23 @@ import zlib
 
 SIZE, TILE = 64, 16
 GLAZE_A, GLAZE_B, GROUT = (176, 58, 46), (230, 196, 120), (235, 232, 224)
+BEVEL, SLOPE = 2, 0.6
 
 
 def pixel(x, y):
     if x % TILE in (0, TILE - 1) or y % TILE in (0, TILE - 1):
         return GROUT
     return GLAZE_A if (x // TILE + y // TILE) % 2 == 0 else GLAZE_B
+
+
+def normal(x, y):
+    """Facet's normal maps: red = +u, green = +v (down the image: its top row is v = 0), decoded
+    as rgb * 255/127 - 128/127, so 128 is exactly 0."""
+    lx, ly = x % TILE, y % TILE
+    nx = -SLOPE if lx < BEVEL else SLOPE if lx >= TILE - BEVEL else 0.0
+    ny = -SLOPE if ly < BEVEL else SLOPE if ly >= TILE - BEVEL else 0.0
+    length = (nx * nx + ny * ny + 1.0) ** 0.5
+    return tuple(min(255, round(128 + 127 * c / length)) for c in (nx, ny, 1.0))
 
 
 def png(width, height, rows):
@@ -25,6 +39,8 @@ def png(width, height, rows):
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
 
 
-out = pathlib.Path(__file__).resolve().parent.parent / "examples" / "textures" / "tiles.png"
-out.write_bytes(png(SIZE, SIZE, [[pixel(x, y) for x in range(SIZE)] for y in range(SIZE)]))
-print(out)
+folder = pathlib.Path(__file__).resolve().parent.parent / "examples" / "textures"
+for name, texel in (("tiles.png", pixel), ("tiles_normal.png", normal)):
+    out = folder / name
+    out.write_bytes(png(SIZE, SIZE, [[texel(x, y) for x in range(SIZE)] for y in range(SIZE)]))
+    print(out)

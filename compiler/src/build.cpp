@@ -26,7 +26,9 @@ package::ParamType packageType(const ir::Param& p) {
   if (p.isColor) return package::ParamType::Color;
   switch (p.type) {
     case ir::Type::Texture2D:
-      return p.textureSpace == ir::TextureSpace::Srgb ? package::ParamType::TextureSrgb : package::ParamType::TextureLinear;
+      if (p.textureSpace == ir::TextureSpace::Srgb) return package::ParamType::TextureSrgb;
+      if (p.textureSpace == ir::TextureSpace::Normal) return package::ParamType::TextureNormal;
+      return package::ParamType::TextureLinear;
     case ir::Type::Float: return package::ParamType::Float;
     case ir::Type::Vec2: return package::ParamType::Vec2;
     case ir::Type::Vec3: return package::ParamType::Vec3;

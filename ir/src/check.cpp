@@ -149,7 +149,7 @@ class Checker {
     }
     auto parsed = parseTypeName(decl.typeName, decl.typeArgument);
     if (!parsed && decl.typeName == "texture") {
-      error(decl.typeLoc, "a texture parameter names its colour space: texture(srgb) or texture(linear)", "type");
+      error(decl.typeLoc, "a texture parameter names its colour space: texture(srgb), texture(linear) or texture(normal)", "type");
       return;
     }
     if (!parsed) {
@@ -294,6 +294,10 @@ class Checker {
       if (typeOf(*value) != out->type) {
         error(s.value->loc, "output '" + s.name + "' is " + typeName(out->type) + " but the value is " +
                                 typeName(typeOf(*value)), "type");
+        continue;
+      }
+      if (out->litOnly && material_.shading == "unlit") {
+        diags_.warning(s.loc, "output '" + s.name + "' has no effect on an unlit material", "unused-output");
         continue;
       }
       module().outputs[s.name] = *value;
@@ -485,7 +489,9 @@ class Checker {
   }
 
   // sample(texture, uv) -> vec4: the texture's filtered RGBA at uv (colour textures decoded to
-  // linear by the sampler).
+  // linear by the sampler). On a texture(normal) it is `sample_normal` -> vec3: the tangent-space
+  // normal decoded from RGB (not renormalized: the shading normal is normalized once, after the
+  // tangent frame is applied).
   Result sample(const Expr& e, const std::vector<ValueId>& args, const std::vector<Type>& types) {
     if (args.size() != 2) {
       error(e.loc, "'sample' takes 2 arguments, not " + std::to_string(args.size()), "type");
@@ -505,10 +511,13 @@ class Checker {
       error(e.loc, "textures cannot be sampled in a constant expression", "constant");
       return std::nullopt;
     }
+    bool normalMap = false;
+    for (const Param& p : material_.params)
+      if (p.name == module().value(args[0]).name) normalMap = p.textureSpace == TextureSpace::Normal;
     Value v;
     v.op = Op::Builtin;
-    v.type = Type::Vec4;
-    v.name = "sample";
+    v.type = normalMap ? Type::Vec3 : Type::Vec4;
+    v.name = normalMap ? "sample_normal" : "sample";
     v.args = args;
     return module().add(std::move(v));
   }

@@ -139,6 +139,10 @@ class Emitter {
       case Op::Builtin:
         if (v.name == "saturate") return "clamp(" + a[0] + ", 0.0, 1.0)";
         if (v.name == "sample") return "texture(" + a[0] + ", " + a[1] + ")";
+        // 8-bit UNORM has no 127.5: decoding with 255/127 and 128/127 puts a flat texel (128)
+        // at exactly 0, full scale (255) at exactly 1; 0 lands at −1.008, outside any unit normal.
+        if (v.name == "sample_normal")
+          return "texture(" + a[0] + ", " + a[1] + ").xyz * (255.0 / 127.0) - (128.0 / 127.0)";
         return v.name + "(" + join(a) + ")";
       default: return "";
     }
@@ -156,12 +160,15 @@ class Emitter {
   }
 
   // highp where any input is a highp attribute (positions, UVs); the tier's default otherwise.
-  // Recurses only one level: operands are leaves or were emitted (and memoised) before.
+  // A texture read is not: its coordinate needs highp, its 8-bit result does not (it has the
+  // sampler's precision). Recurses only one level: operands are leaves or were emitted before.
   bool isHighp(ValueId id) {
     if (auto it = highp_.find(id); it != highp_.end()) return it->second;
     const Value& v = module_.value(id);
     bool h = v.op == Op::Attribute && findAttribute(v.name)->highp;
-    for (ValueId a : v.args) h = h || isHighp(a);
+    bool textureRead = v.op == Op::Builtin && (v.name == "sample" || v.name == "sample_normal");
+    if (!textureRead)
+      for (ValueId a : v.args) h = h || isHighp(a);
     highp_[id] = h;
     return h;
   }

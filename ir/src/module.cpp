@@ -9,7 +9,10 @@ const std::vector<AttributeInfo>& attributes() {
   static const std::vector<AttributeInfo> list = {
       {"worldPosition", Type::Vec3, "v_worldPosition", true},
       {"normal", Type::Vec3, "shading_normal", false},
+      {"viewDirection", Type::Vec3, "shading_view", false},
       {"uv0", Type::Vec2, "v_uv0", true},
+      {"uv1", Type::Vec2, "v_uv1", true},
+      {"color", Type::Vec4, "v_color", false},
   };
   return list;
 }
@@ -23,13 +26,14 @@ const AttributeInfo* findAttribute(std::string_view name) {
 const std::vector<OutputInfo>& outputs() {
   // Defaults follow Filament's material model: white, dielectric, fully rough, 4 % reflectance.
   static const std::vector<OutputInfo> list = {
-      {"baseColor", Type::Vec3, {1, 1, 1, 0}},
-      {"alpha", Type::Float, {1, 0, 0, 0}},
-      {"metallic", Type::Float, {0, 0, 0, 0}},
-      {"roughness", Type::Float, {1, 0, 0, 0}},
-      {"reflectance", Type::Float, {0.5, 0, 0, 0}},
-      {"emissive", Type::Vec3, {0, 0, 0, 0}},
-      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}},
+      {"baseColor", Type::Vec3, {1, 1, 1, 0}, false},
+      {"alpha", Type::Float, {1, 0, 0, 0}, false},
+      {"metallic", Type::Float, {0, 0, 0, 0}, true},
+      {"roughness", Type::Float, {1, 0, 0, 0}, true},
+      {"reflectance", Type::Float, {0.5, 0, 0, 0}, true},
+      {"normal", Type::Vec3, {0, 0, 1, 0}, true},  // tangent space: (0, 0, 1) is the interpolated normal
+      {"emissive", Type::Vec3, {0, 0, 0, 0}, false},
+      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}, true},
   };
   return list;
 }

@@ -77,7 +77,7 @@ class Analysis {
       case Op::Constant:
         return each([&](int i) { return Interval{v.constant[size_t(i)], v.constant[size_t(i)]}; });
       case Op::Param: return param(v, r);
-      case Op::Attribute: return each([&](int) { return v.name == std::string("normal") ? kSigned : kAny; });
+      case Op::Attribute: return each([&](int) { return attributeRange(v.name); });
       case Op::Swizzle:
         return each([&](int i) { return known[v.args[0]].c[std::string("xyzw").find(v.name[size_t(i)])]; });
       case Op::Construct: {
@@ -96,6 +96,14 @@ class Analysis {
       case Op::Builtin: return builtin(v, r, arg, each);
       default: return each([&](int) { return kUnit; });  // comparisons and logic: bool as 0/1
     }
+  }
+
+  // Unit vectors are in [-1, 1]; vertex colours are UNORM data by the mesh contract
+  // (render_backend.h); positions and UVs are unbounded.
+  static Interval attributeRange(const std::string& name) {
+    if (name == "normal" || name == "viewDirection") return kSigned;
+    if (name == "color") return kUnit;
+    return kAny;
   }
 
   ValueRange param(const Value& v, ValueRange r) {
@@ -131,7 +139,8 @@ class Analysis {
         return increasing(arg(0, i), [](double x) { return x <= 0 ? -kInf : std::log2(x); });
       });
     if (f == "sin" || f == "cos" || f == "normalize") return each([&](int) { return kSigned; });
-    if (f == "sample") return each([&](int) { return kUnit; });  // 8-bit UNORM / sRGB images
+    if (f == "sample") return each([&](int) { return kUnit; });          // 8-bit UNORM / sRGB images
+    if (f == "sample_normal") return each([&](int) { return Interval{-128.0 / 127.0, 1.0}; });  // emit_glsl's decode
     if (f == "saturate" || f == "step" || f == "smoothstep") return each([&](int i) {
         return f == "saturate" ? clampTo(arg(0, i), kUnit) : kUnit;
       });

@@ -21,6 +21,7 @@ std::optional<ParsedType> parseTypeName(std::string_view name, std::string_view 
   if (name == "texture") {
     if (argument == "srgb") return ParsedType{Type::Texture2D, false, TextureSpace::Srgb};
     if (argument == "linear") return ParsedType{Type::Texture2D, false, TextureSpace::Linear};
+    if (argument == "normal") return ParsedType{Type::Texture2D, false, TextureSpace::Normal};
     return std::nullopt;
   }
   if (!argument.empty()) return std::nullopt;

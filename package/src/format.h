@@ -86,12 +86,13 @@ inline bool defaultCountMatches(ParamType type, uint64_t count) {
     case ParamType::Vec4: return count == 4;
     case ParamType::Color: return count == 3 || count == 4;
     case ParamType::TextureSrgb:
-    case ParamType::TextureLinear: return count == 4;
+    case ParamType::TextureLinear:
+    case ParamType::TextureNormal: return count == 4;
   }
   return false;
 }
 
-inline constexpr uint8_t kLastParamType = uint8_t(ParamType::TextureLinear);
+inline constexpr uint8_t kLastParamType = uint8_t(ParamType::TextureNormal);
 inline constexpr uint8_t kLastStage = uint8_t(Stage::Fragment);
 inline constexpr uint8_t kLastTarget = uint8_t(Target::Msl);
 

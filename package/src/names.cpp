@@ -31,6 +31,7 @@ const char* toString(ParamType type) {
     case ParamType::Color: return "color";
     case ParamType::TextureSrgb: return "texture(srgb)";
     case ParamType::TextureLinear: return "texture(linear)";
+    case ParamType::TextureNormal: return "texture(normal)";
   }
   return "unknown";
 }
@@ -38,7 +39,7 @@ const char* toString(ParamType type) {
 std::optional<ParamType> paramTypeFromString(std::string_view name) {
   for (ParamType t : {ParamType::Float, ParamType::Vec2, ParamType::Vec3, ParamType::Vec4,
                       ParamType::Int, ParamType::Bool, ParamType::Color,
-                      ParamType::TextureSrgb, ParamType::TextureLinear}) {
+                      ParamType::TextureSrgb, ParamType::TextureLinear, ParamType::TextureNormal}) {
     if (name == toString(t)) return t;
   }
   return std::nullopt;

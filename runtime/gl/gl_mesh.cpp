@@ -19,7 +19,7 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
   if (mesh.vertices.empty() || mesh.vertices.size() % abi::kVertexFloats != 0) {
     if (error) {
       *error = "mesh has " + std::to_string(mesh.vertices.size()) + " floats, not a positive multiple of " +
-               std::to_string(abi::kVertexFloats) + " (position, normal, uv0)";
+               std::to_string(abi::kVertexFloats) + " (shader_abi.h's vertex layout)";
     }
     return false;
   }
@@ -51,9 +51,8 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, uploaded.indices.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
                mesh.indices.data(), GL_STATIC_DRAW);
-  vertexAttribute(abi::kAttribPosition, 3, 0);
-  vertexAttribute(abi::kAttribNormal, 3, 3 * sizeof(float));
-  vertexAttribute(abi::kAttribUv0, 2, 6 * sizeof(float));
+  for (const abi::VertexAttribute& a : abi::kVertexAttributes)
+    vertexAttribute(a.location, GLint(a.components), a.offsetFloats * sizeof(float));
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 

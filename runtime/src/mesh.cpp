@@ -1,8 +1,15 @@
 #include "facet/runtime/mesh.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace facet::runtime {
+
+void appendVertex(Mesh& mesh, const Vertex& v) {
+  float f[abi::kVertexFloats];
+  std::memcpy(f, &v, sizeof f);  // Vertex is the stream's floats in order (static_assert in mesh.h)
+  mesh.vertices.insert(mesh.vertices.end(), f, f + abi::kVertexFloats);
+}
 
 Mesh makeSphere(int rings, int segments) {
   Mesh mesh;
@@ -16,7 +23,11 @@ Mesh makeSphere(int rings, int segments) {
       float x = float(std::sin(theta) * std::cos(phi));
       float y = float(std::cos(theta));
       float z = float(-std::sin(theta) * std::sin(phi));
-      mesh.vertices.insert(mesh.vertices.end(), {x, y, z, x, y, z, float(u), float(v)});
+      // ∂P/∂u points along (−sin φ, 0, −cos φ) (also at the poles, as a limit). ∂P/∂v points
+      // south (v grows with θ), and cross(n, t) points north, so the bitangent sign w is −1.
+      Vertex vertex{{x, y, z}, {x, y, z}, {float(u), float(v)}, {float(u), float(v)}, {1, 1, 1, 1},
+                    {float(-std::sin(phi)), 0.0f, float(-std::cos(phi)), -1.0f}};
+      appendVertex(mesh, vertex);
     }
   }
   const uint32_t stride = uint32_t(segments + 1);

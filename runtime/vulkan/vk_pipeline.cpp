@@ -1,6 +1,7 @@
 #include "vk_pipeline.h"
 
 #include <array>
+#include <vector>
 
 #include "facet/shader_abi.h"
 #include "facet/texture_checks.h"
@@ -233,13 +234,14 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   stages[1].module = fragment;
   stages[1].pName = "main";
 
-  // The one interleaved vertex stream of shader_abi.h.
+  // The one interleaved vertex stream of shader_abi.h. Attributes the shaders do not read are
+  // allowed by Vulkan (they are simply not fetched).
   VkVertexInputBindingDescription binding{0, abi::kVertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
-  const std::array<VkVertexInputAttributeDescription, 3> attributes{{
-      {abi::kAttribPosition, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-      {abi::kAttribNormal, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)},
-      {abi::kAttribUv0, 0, VK_FORMAT_R32G32_SFLOAT, 6 * sizeof(float)},
-  }};
+  const VkFormat floatFormats[] = {VK_FORMAT_UNDEFINED, VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32_SFLOAT,
+                                   VK_FORMAT_R32G32B32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
+  std::vector<VkVertexInputAttributeDescription> attributes;
+  for (const abi::VertexAttribute& a : abi::kVertexAttributes)
+    attributes.push_back({a.location, 0, floatFormats[a.components], uint32_t(a.offsetFloats * sizeof(float))});
   VkPipelineVertexInputStateCreateInfo vertexInput{};
   vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
   if (forward) {

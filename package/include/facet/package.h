@@ -27,12 +27,15 @@ enum class Target : uint8_t {
 const char* toString(Stage);
 const char* toString(Target);
 
-// TextureSrgb / TextureLinear: a 2D texture and how its image is encoded. Its default is the
+// TextureSrgb / TextureLinear / TextureNormal: a 2D texture and how its image is encoded (a normal
+// map is linear data, RGB = tangent-space xyz * 0.5 + 0.5). Its default is the
 // RGBA (as encoded) a missing image samples as; `offset` holds its sampler slot i (binding
 // abi::kMaterialTextureBase + i), or kNoTextureSlot when the material never samples it.
-enum class ParamType : uint8_t { Float, Vec2, Vec3, Vec4, Int, Bool, Color, TextureSrgb, TextureLinear };
+enum class ParamType : uint8_t { Float, Vec2, Vec3, Vec4, Int, Bool, Color, TextureSrgb, TextureLinear, TextureNormal };
 inline constexpr uint32_t kNoTextureSlot = 0xffffffffu;
-inline bool isTexture(ParamType t) { return t == ParamType::TextureSrgb || t == ParamType::TextureLinear; }
+inline bool isTexture(ParamType t) {
+  return t == ParamType::TextureSrgb || t == ParamType::TextureLinear || t == ParamType::TextureNormal;
+}
 const char* toString(ParamType);
 std::optional<ParamType> paramTypeFromString(std::string_view);
 

@@ -14,7 +14,7 @@
 namespace facet::runtime {
 
 struct Mesh {
-  std::vector<float> vertices;   // abi::kVertexFloats per vertex: position.xyz, normal.xyz, uv0.xy
+  std::vector<float> vertices;   // abi::kVertexFloats per vertex, in shader_abi.h's layout (runtime/mesh.h: Vertex)
   std::vector<uint32_t> indices; // triangle list
 };
 

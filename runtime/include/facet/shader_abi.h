@@ -9,12 +9,31 @@
 
 namespace facet::abi {
 
-// Vertex inputs. One interleaved stream: position, normal, uv0 (8 floats, 32-byte stride).
+// Vertex inputs. One interleaved float stream holding every attribute (18 floats, 72-byte
+// stride); a shader declares only the locations its material reads (the compiler derives them),
+// so an unread attribute costs memory bandwidth in the fetch but no shader work. Production
+// engines split streams per attribute set; one stream keeps this small renderer simple.
 inline constexpr uint32_t kAttribPosition = 0;  // vec3, object space
 inline constexpr uint32_t kAttribNormal = 1;    // vec3, object space, unit length
 inline constexpr uint32_t kAttribUv0 = 2;       // vec2
-inline constexpr uint32_t kVertexFloats = 8;
+inline constexpr uint32_t kAttribUv1 = 3;       // vec2
+inline constexpr uint32_t kAttribColor = 4;     // vec4, linear RGBA in [0, 1]
+inline constexpr uint32_t kAttribTangent = 5;   // vec4: xyz object-space unit tangent (direction of
+                                                // +u), w = ±1 bitangent sign (MikkTSpace convention:
+                                                // bitangent = w · cross(normal, tangent))
+inline constexpr uint32_t kVertexFloats = 18;
 inline constexpr uint32_t kVertexStride = kVertexFloats * sizeof(float);
+// Every attribute of the stream: location, float components, float offset within a vertex.
+// Both backends describe the stream from this table.
+struct VertexAttribute {
+  uint32_t location;
+  uint32_t components;
+  uint32_t offsetFloats;
+};
+inline constexpr VertexAttribute kVertexAttributes[] = {
+    {kAttribPosition, 3, 0}, {kAttribNormal, 3, 3}, {kAttribUv0, 2, 6},
+    {kAttribUv1, 2, 8},      {kAttribColor, 4, 10}, {kAttribTangent, 4, 14},
+};
 
 // Uniform blocks, std140. Vulkan: descriptor set 0, binding = the value below.
 // GLES 3.00 has no layout(binding): the runtime looks the block up by name and calls

@@ -58,6 +58,7 @@ struct OutputInfo {
   const char* name;
   Type type;
   std::array<double, 4> defaultValue;
+  bool litOnly;  // read by lighting only: an unlit material drops it (with a warning)
 };
 const std::vector<OutputInfo>& outputs();
 const OutputInfo* findOutput(std::string_view name);

@@ -24,14 +24,17 @@ inline Type floatVector(int n) { return n == 1 ? Type::Float : n == 2 ? Type::Ve
 const char* glslName(Type t);
 // Language spelling; also parses parameter types (`color` maps to Vec3 with isColor set).
 const char* typeName(Type t);
-enum class TextureSpace { None, Srgb, Linear };
+// Srgb: colour, decoded to linear by the sampler. Linear: data (masks, roughness) read as stored.
+// Normal: a tangent-space normal map, 8-bit RGB with 128 = 0; sample() returns the decoded vec3
+// xyz = rgb · 255/127 − 128/127 (so a flat texel (128, 128, 255) decodes to exactly (0, 0, 1)).
+enum class TextureSpace { None, Srgb, Linear, Normal };
 
 struct ParsedType {
   Type type;
   bool isColor = false;
   TextureSpace textureSpace = TextureSpace::None;
 };
-// `texture` takes its colour space as an argument: texture(srgb) or texture(linear).
+// `texture` takes its colour space as an argument: texture(srgb), texture(linear), texture(normal).
 std::optional<ParsedType> parseTypeName(std::string_view name, std::string_view argument = {});
 
 }  // namespace facet::ir

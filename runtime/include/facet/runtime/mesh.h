@@ -4,9 +4,24 @@
 
 namespace facet::runtime {
 
+// One vertex of shader_abi.h's stream, in its layout. The defaults are what a mesh without the
+// attribute carries: white vertex colour, uv1 = (0, 0), and a tangent along +x with w = +1.
+struct Vertex {
+  float position[3] = {0, 0, 0};
+  float normal[3] = {0, 0, 1};
+  float uv0[2] = {0, 0};
+  float uv1[2] = {0, 0};
+  float color[4] = {1, 1, 1, 1};
+  float tangent[4] = {1, 0, 0, 1};
+};
+static_assert(sizeof(Vertex) == abi::kVertexStride, "Vertex mirrors shader_abi.h's layout");
+
+void appendVertex(Mesh& mesh, const Vertex& v);
+
 // A unit sphere centred at the origin, latitude/longitude tessellated, outward normals, uv0 =
-// (longitude, latitude) in [0, 1]. With 64 × 128 segments the flat facets sit at most
-// 1 − cos(π/128) ≈ 3e-4 of the radius inside the true sphere.
+// (longitude, latitude) in [0, 1], uv1 = uv0, analytic tangents along +u (longitude). With
+// 64 × 128 segments the flat facets sit at most 1 − cos(π/128) ≈ 3e-4 of the radius inside the
+// true sphere.
 Mesh makeSphere(int rings = 64, int segments = 128);
 
 }  // namespace facet::runtime
