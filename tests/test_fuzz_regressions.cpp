@@ -102,3 +102,20 @@ TEST(FuzzInputs, LongChainOfLetsEmitsWithoutDeepRecursion) {
   std::string body = facet::ir::emitSurface(*material).body;
   EXPECT_NE(body.find("highp float m_a" + std::to_string(n - 1) + " = m_a" + std::to_string(n - 2)), std::string::npos);
 }
+
+// Found by reading: every parameter was compared with every earlier one (duplicates) and with
+// all of them again for each misspelt use ("did you mean"), so 40 000 parameters took seconds.
+// A material has at most kMaxParams: past it, one error, and the rest are known by name only.
+TEST(FuzzInputs, ThousandsOfParametersStopAtTheLimitWithOneError) {
+  std::string text = "material m {\n";
+  for (int i = 0; i < 40000; ++i) text += "  param p" + std::to_string(i) + ": float = 0.5\n";
+  text += "  surface { roughness = params.p39999 + params.q }\n}\n";
+  facet::ir::SourceFile file{"params.mat", text};
+  facet::ir::Diagnostics diags(file);
+  EXPECT_FALSE(facet::ir::compileSource(file, diags).has_value());
+  std::string out = diags.format();
+  EXPECT_EQ(diags.errorCount(), 2u) << out.substr(0, 2000);
+  EXPECT_NE(out.find("params.mat:258:9: error: a material has at most 256 parameters [limit]"), std::string::npos)
+      << out.substr(0, 2000);
+  EXPECT_NE(out.find("unknown parameter 'q'"), std::string::npos) << out.substr(0, 2000);
+}

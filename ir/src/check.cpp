@@ -26,7 +26,14 @@ class Checker {
   std::optional<Material> run(const ast::Material& src) {
     material_.name = src.name;
     checkHeader(src);
-    for (const ast::ParamDecl& p : src.params) checkParam(p);
+    for (size_t i = 0; i < src.params.size(); ++i) {
+      if (i == kMaxParams)
+        error(src.params[i].loc, "a material has at most " + std::to_string(kMaxParams) + " parameters", "limit");
+      if (i >= kMaxParams)
+        rejectedParams_.insert(src.params[i].name);  // known by name: uses of it add no errors
+      else
+        checkParam(src.params[i]);
+    }
     if (src.alphaCutoff) {
       if (src.blending != "masked") {
         error(src.alphaCutoff->loc, "an alpha cutoff applies to 'masked' blending only", "type");
@@ -454,8 +461,15 @@ class Checker {
   }
 
   Result call(const Expr& e) {
+    // An unknown name is reported even when an argument has errors of its own: both are mistakes
+    // the author has to fix, and the name is usually the first one they look at.
+    std::vector<std::string> names = builtinNames();
+    names.insert(names.end(), {"vec2", "vec3", "vec4", "float", "sample"});
+    const bool known = std::find(names.begin(), names.end(), e.name) != names.end();
+    if (!known)
+      error(e.loc, "unknown function '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
     auto args = arguments(e);
-    if (!args) return std::nullopt;
+    if (!args || !known) return std::nullopt;
     std::vector<Type> types;
     for (ValueId a : *args) types.push_back(typeOf(a));
 
@@ -471,13 +485,7 @@ class Checker {
     std::string why;
     auto b = resolveBuiltin(e.name, types, &why);
     if (!b) {
-      if (!why.empty()) {
-        error(e.loc, why, "type");
-      } else {
-        std::vector<std::string> names = builtinNames();
-        names.insert(names.end(), {"vec2", "vec3", "vec4", "float"});
-        error(e.loc, "unknown function '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
-      }
+      error(e.loc, why, "type");
       return std::nullopt;
     }
     Value v;

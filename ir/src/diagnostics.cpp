@@ -13,6 +13,24 @@ void Diagnostics::warning(SourceLoc loc, std::string message, std::string code) 
   list_.push_back({Severity::Warning, loc, std::move(message), std::move(code)});
 }
 
+size_t utf8SequenceLength(std::string_view text, size_t i) {
+  auto byte = [&](size_t k) { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
+  const unsigned b0 = byte(0);
+  if (i >= text.size()) return 0;
+  if (b0 < 0x80) return 1;
+  auto continuation = [&](size_t k, unsigned lo = 0x80, unsigned hi = 0xbf) { return byte(k) >= lo && byte(k) <= hi; };
+  if (b0 >= 0xc2 && b0 <= 0xdf) return continuation(1) ? 2 : 0;
+  if (b0 >= 0xe0 && b0 <= 0xef) {
+    unsigned lo = b0 == 0xe0 ? 0xa0 : 0x80, hi = b0 == 0xed ? 0x9f : 0xbf;  // no overlongs, no surrogates
+    return continuation(1, lo, hi) && continuation(2) ? 3 : 0;
+  }
+  if (b0 >= 0xf0 && b0 <= 0xf4) {
+    unsigned lo = b0 == 0xf0 ? 0x90 : 0x80, hi = b0 == 0xf4 ? 0x8f : 0xbf;  // no overlongs, ≤ U+10FFFF
+    return continuation(1, lo, hi) && continuation(2) && continuation(3) ? 4 : 0;
+  }
+  return 0;
+}
+
 namespace {
 
 // Longer lines are not quoted: a minified or binary "line", where the position says enough.
@@ -36,12 +54,30 @@ std::optional<std::string_view> lineAt(std::string_view text, size_t offset) {
   return text.substr(begin, end - begin);
 }
 
-// Bytes that would make a terminal misbehave are shown as '?', so hostile input prints safely.
+// Control characters and invalid UTF-8 bytes are shown as '?', so hostile input prints safely;
+// valid UTF-8 text is kept, so a caret under it lines up character for character.
 std::string printable(std::string_view s) {
   std::string out;
   out.reserve(s.size());
-  for (unsigned char c : s) out += (c == '\t' || (c >= 0x20 && c != 0x7f)) ? char(c) : '?';
+  for (size_t i = 0; i < s.size();) {
+    size_t n = utf8SequenceLength(s, i);
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    if (n > 1) {
+      out.append(s.substr(i, n));
+    } else {
+      out += (c == '\t' || (c >= 0x20 && c < 0x7f)) ? char(c) : '?';
+      n = 1;
+    }
+    i += n;
+  }
   return out;
+}
+
+// Characters (as SourceLoc counts them) in s[0, bytes).
+size_t characters(std::string_view s, size_t bytes) {
+  size_t count = 0;
+  for (size_t i = 0; i < std::min(bytes, s.size()); ++count) i += std::max<size_t>(1, utf8SequenceLength(s, i));
+  return count;
 }
 
 }  // namespace
@@ -56,9 +92,15 @@ std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
   if (!quoted) return out;
   std::string_view line = *quoted;
   out += "    " + printable(line) + "\n    ";
-  for (uint32_t i = 1; i < d.loc.column && i <= line.size(); ++i) out += (line[i - 1] == '\t') ? '\t' : ' ';
+  // One space per character before the caret (tabs kept, so the caret lines up in a terminal).
+  const size_t lineStart = size_t(line.data() - file.text.data());
+  const size_t caretByte = std::min<size_t>(d.loc.offset - lineStart, line.size());
+  for (size_t i = 0; i < caretByte;) {
+    out += line[i] == '\t' ? '\t' : ' ';
+    i += std::max<size_t>(1, utf8SequenceLength(line, i));
+  }
   out += '^';
-  size_t tail = std::min<size_t>(d.loc.length, line.size() + 1 - std::min<size_t>(d.loc.column, line.size() + 1));
+  size_t tail = characters(line.substr(caretByte), d.loc.length);
   for (size_t i = 1; i < tail; ++i) out += '~';
   out += "\n";
   return out;

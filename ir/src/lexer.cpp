@@ -1,5 +1,6 @@
 #include "facet/ir/lexer.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace facet::ir {
@@ -71,6 +72,8 @@ class Lexer {
       } else if (Tok t = punct(); t != Tok::End) {
         loc.length = uint32_t(pos_ - loc.offset);
         out.push_back({t, "", loc});
+      } else if (c >= 0x80) {
+        nonAscii(loc);
       } else {
         std::string shown = (c >= 0x20 && c < 0x7f) ? std::string("'") + char(c) + "'" : "byte 0x" + hex(c);
         diags_.error(loc, "unexpected character " + shown, "lex");
@@ -87,6 +90,8 @@ class Lexer {
 
   SourceLoc here() const { return {line_, column_, uint32_t(pos_), 1}; }
 
+  // Moves past one character: a whole UTF-8 sequence (never containing an ASCII byte, so no
+  // caller looking for '\n', '"' or '*' can miss one), or one byte of anything else.
   void advance() {
     if (text_[pos_] == '\n') {
       ++line_;
@@ -94,7 +99,30 @@ class Lexer {
     } else {
       ++column_;
     }
-    ++pos_;
+    pos_ += std::max<size_t>(1, utf8SequenceLength(text_, pos_));
+  }
+
+  // Non-ASCII outside comments and strings: one error for the whole run of it (a word in another
+  // script is one mistake, not one per byte), quoting it when it is valid UTF-8.
+  void nonAscii(SourceLoc loc) {
+    bool valid = true;
+    std::string bytes;
+    while (pos_ < text_.size() && static_cast<unsigned char>(text_[pos_]) >= 0x80) {
+      size_t n = utf8SequenceLength(text_, pos_);
+      valid = valid && n > 0;
+      if (bytes.size() < 24) bytes += text_.substr(pos_, std::max<size_t>(1, n));
+      advance();
+    }
+    loc.length = uint32_t(pos_ - loc.offset);
+    if (valid) {
+      diags_.error(loc, "unexpected non-ASCII text '" + bytes + "'; outside comments and strings a material is ASCII",
+                   "lex");
+      return;
+    }
+    std::string shown;
+    for (size_t i = 0; i < bytes.size() && i < 8; ++i) shown += " 0x" + hex(static_cast<unsigned char>(bytes[i]));
+    diags_.error(loc, std::string("invalid UTF-8 (") + (loc.length == 1 ? "byte" : "bytes") + shown +
+                          (loc.length > 8 ? " ..." : "") + ")", "lex");
   }
 
   bool at(char c, size_t ahead = 0) const { return pos_ + ahead < text_.size() && text_[pos_ + ahead] == c; }

@@ -14,13 +14,19 @@ struct SourceFile {
   std::string text;
 };
 
-// A span in a source file. Lines and columns count from 1; columns count bytes.
+// A span in a source file. Lines and columns count from 1; columns count characters (a valid
+// UTF-8 sequence is one character, each byte of invalid UTF-8 is one), as editors do.
 struct SourceLoc {
   uint32_t line = 0;
   uint32_t column = 0;
   uint32_t offset = 0;  // byte offset of the first character
   uint32_t length = 1;  // bytes underlined by the caret
 };
+
+// The length in bytes of the well-formed UTF-8 sequence starting at text[i] (1 for ASCII), or 0
+// if none starts there (a stray continuation byte, an overlong form, a surrogate, > U+10FFFF, or
+// a sequence cut short). Follows the Unicode standard's table of well-formed byte sequences.
+size_t utf8SequenceLength(std::string_view text, size_t i);
 
 enum class Severity { Error, Warning };
 
