@@ -127,3 +127,25 @@ TEST(Ranges, UnrangedParametersAndPositionsAreUnbounded) {
   EXPECT_FALSE(outputRange("param s: float = 1.0", "roughness", "params.s").bounded());
   expectInterval(outputRange("param s: float = 1.0", "roughness", "saturate(params.s * vertex.worldPosition.y)"), 0.0, 1.0);
 }
+
+// The precision policy reads the ranges: a value that can leave fp16's finite range (65504) is
+// computed in highp even in a mediump tier; a value proven small, or one with no declared range,
+// takes the tier's precision.
+TEST(PrecisionPolicy, ValuesRangedBeyondFp16StayHighp) {
+  auto m = checked(R"(material m {
+    param distance: float = 1000.0 in [0, 100000]
+    param scale: float = 0.5 in [0, 1]
+    param free: float = 1.0
+    surface {
+        let far = params.distance * 2.0
+        let near = params.scale * 2.0
+        let open = params.free * 2.0
+        roughness = saturate(far / 200000.0 + near + open)
+    }
+})");
+  facet::ir::optimize(m);
+  std::string body = facet::ir::emitSurface(m).body;
+  EXPECT_NE(body.find("    highp float m_far = params.distance * 2.0;"), std::string::npos) << body;
+  EXPECT_NE(body.find("    float m_near = params.scale * 2.0;"), std::string::npos) << body;
+  EXPECT_NE(body.find("    float m_open = params.free * 2.0;"), std::string::npos) << body;
+}

@@ -247,3 +247,23 @@ TEST(ShaderAbi, SampledTextureGetsASamplerAtItsSlotAndAnUnsampledOneNone) {
   EXPECT_EQ(fs.samplers.at("material_albedo").first, facet::abi::kTextureSet);
   EXPECT_EQ(fs.samplers.at("material_albedo").second, facet::abi::kMaterialTextureBase);
 }
+
+// The uniform member of a parameter whose declared range exceeds fp16 is highp in the mediump
+// tiers' fragment stage; one declared within it takes the tier's mediump.
+TEST(ShaderAbi, ParameterRangedBeyondFp16IsAHighpUniform) {
+  auto built = facet::test::buildText(R"(material m {
+    param distance: float = 1000.0 in [0, 100000]
+    param scale: float = 0.5 in [0, 1]
+    surface { roughness = saturate(params.distance / 200000.0 + params.scale) }
+})");
+  ASSERT_TRUE(built);
+  int checked = 0;
+  for (const auto& s : highDir1(*built).shaders) {
+    if (s.target != facet::package::Target::GlslEs300 || s.stage != facet::package::Stage::Fragment) continue;
+    ++checked;
+    std::string glsl(s.code.begin(), s.code.end());
+    EXPECT_NE(glsl.find("    highp float distance;"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("    mediump float scale;"), std::string::npos) << glsl;
+  }
+  EXPECT_EQ(checked, 1);
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
 
 #include "facet/compiler/glsl_library.h"
@@ -77,7 +78,10 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
   s += "\n" + blockLayout(flavour, 2) + " uniform MaterialParams {\n";
   for (const ir::Param& p : material.params) {
     if (!p.used || p.type == ir::Type::Texture2D) continue;
-    std::string qualifier = p.type == ir::Type::Bool ? "" : std::string(precision) + " ";
+    // A declared range beyond fp16's 65504 keeps the member in fp32 (emit_glsl does the same
+    // for values computed from it).
+    bool wide = (p.rangeMin && std::abs(*p.rangeMin) > 65504.0) || (p.rangeMax && std::abs(*p.rangeMax) > 65504.0);
+    std::string qualifier = p.type == ir::Type::Bool ? "" : std::string(wide ? "highp" : precision) + " ";
     s += "    " + qualifier + ir::glslName(p.type) + " " + p.name + ";\n";
   }
   return s + "} params;\n";

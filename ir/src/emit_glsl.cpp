@@ -1,8 +1,12 @@
 #include "facet/ir/emit_glsl.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <vector>
+
+#include "facet/ir/ranges.h"
 
 namespace facet::ir {
 
@@ -42,7 +46,7 @@ const char* infix(Op op) {
 
 class Emitter {
  public:
-  explicit Emitter(const Material& m) : m_(m), module_(m.surface) {}
+  explicit Emitter(const Material& m) : m_(m), module_(m.surface), ranges_(analyse_ranges(m)) {}
 
   SurfaceGlsl run() {
     for (const OutputInfo& o : outputs()) {
@@ -169,12 +173,21 @@ class Emitter {
     bool textureRead = v.op == Op::Builtin && (v.name == "sample" || v.name == "sample_normal");
     if (!textureRead)
       for (ValueId a : v.args) h = h || isHighp(a);
+    // Range analysis proves some values can leave fp16's finite range (|x| > 65504): a
+    // parameter declared `in [0, 100000]`, or a product of ranged values. Those keep fp32 rather
+    // than overflow to inf on a mobile GPU. Unbounded values (unranged parameters) stay at the
+    // tier's precision: their range is a promise the author has not made.
+    Interval r = ranges_.of(id).hull();
+    h = h || (r.bounded() && std::max(std::abs(r.lo), std::abs(r.hi)) > kMediumpMax);
     highp_[id] = h;
     return h;
   }
 
+  static constexpr double kMediumpMax = 65504.0;  // largest finite binary16
+
   const Material& m_;
   const Module& module_;
+  RangeMap ranges_;
   SurfaceGlsl out_;
   std::map<ValueId, std::string> temps_;
   std::map<ValueId, bool> highp_;
