@@ -13,6 +13,7 @@ struct CompileArgs {
   std::string emitSource;  // folder for every generated source, or ""
   std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
   std::string scene;       // scene manifest: build only the variants it asks this material for
+  std::vector<int> pointLights{0};  // point-light permutations to build without a scene
 };
 int compileCommand(const CompileArgs& args);
 

@@ -83,6 +83,7 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
       options->tiers.push_back(*tier);
     }
   }
+  options->pointLightCounts = args.pointLights;
   if (args.scene.empty()) return 0;
   std::string error;
   auto scene = runtime::loadScene(args.scene, &error);
@@ -99,7 +100,8 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   permutations::MaterialNeeds materialNeeds{material.shading == "lit"};
   for (const runtime::SceneObject& object : scene->objects)
     if (object.material == material.name)
-      needs.keys.push_back(permutations::requestKey(materialNeeds, *tier, scene->sun.has_value()));
+      needs.keys.push_back(
+          permutations::requestKey(materialNeeds, *tier, scene->sun.has_value(), int(scene->lights.size())));
   if (needs.keys.empty()) {
     printError(args.scene + ": no object of the scene uses material '" + material.name + "'");
     return 1;
@@ -148,7 +150,8 @@ int compileCommand(const CompileArgs& args) {
   std::string forScene;
   if (options.scene) {
     permutations::MaterialNeeds needs{material->shading == "lit"};
-    forScene = " for scene " + args.scene + " (" + std::to_string(permutations::enumerate(needs, options.tiers).size()) +
+    forScene = " for scene " + args.scene + " (" +
+               std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights).size()) +
                " without it)";
   }
   std::printf("%s: %zu variant%s%s, %zu bytes -> %s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",

@@ -16,6 +16,10 @@ int main(int argc, char** argv) {
   compileCmd->add_option("--tiers", compile.tiers, "tiers to build (reference, high, ...); default: all supported")
       ->delimiter(',');
   compileCmd->add_option("--scene", compile.scene, "scene JSON: build only the variants this scene can request");
+  compileCmd->add_option("--point-lights", compile.pointLights,
+                         "point/spot light counts to build, from 0, 1, 2, 4 (default: 0; a --scene decides its own)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({0, 1, 2, 4}));
 
   facet::matc::InfoArgs info;
   CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");

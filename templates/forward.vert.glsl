@@ -2,6 +2,16 @@
 // fragment stage in highp/mediump as the precision policy says: positions far from the origin
 // need fp32 (a fp16 world position 1 km away has 0.5 m steps).
 #include "math.glsl"
+#if defined(FACET_VERTEX_DIFFUSE) && FACET_POINT_LIGHTS > 0
+#include "light_punctual.glsl"
+
+// Lambert irradiance / π of one punctual light at this vertex.
+vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n) {
+    vec3 l;
+    vec3 illuminance = punctual_light_illuminance(light, worldPosition, l);
+    return illuminance * (clamp(dot(n, l), 0.0, 1.0) * INV_PI);
+}
+#endif
 
 void main() {
     highp vec4 worldPosition = object.model * vec4(a_position, 1.0);
@@ -30,6 +40,16 @@ void main() {
     vec3 irradiance = frame.ambient.rgb;
 #if defined(FACET_DIRECTIONAL_LIGHT)
     irradiance += frame.lightColor.rgb * (clamp(dot(n, normalize(frame.lightDirection.xyz)), 0.0, 1.0) * INV_PI);
+#endif
+#if FACET_POINT_LIGHTS > 0
+    irradiance += punctual_diffuse(frame.punctualLights[0], worldPosition.xyz, n);
+#endif
+#if FACET_POINT_LIGHTS > 1
+    irradiance += punctual_diffuse(frame.punctualLights[1], worldPosition.xyz, n);
+#endif
+#if FACET_POINT_LIGHTS > 2
+    irradiance += punctual_diffuse(frame.punctualLights[2], worldPosition.xyz, n);
+    irradiance += punctual_diffuse(frame.punctualLights[3], worldPosition.xyz, n);
 #endif
     v_diffuseLight = irradiance;
 #endif

@@ -1,5 +1,7 @@
 // Forward pass, lit, fragment stage: evaluate the material's surface program, then shade with
-// a constant ambient and, in dir1 variants, one directional light. Writes pre-exposed linear HDR.
+// a constant ambient, in dir1 variants one directional light, and FACET_POINT_LIGHTS punctual
+// lights, each read from its fixed place in the frame block (unrolled below: no dynamic
+// indexing). Writes pre-exposed linear HDR.
 #include "math.glsl"
 #include "precision.glsl"
 #include "facet:material"
@@ -10,6 +12,15 @@
 #include "facet:specular"
 #include "shading_standard.glsl"
 #include "output_blending.glsl"
+#if FACET_POINT_LIGHTS > 0
+#include "light_punctual.glsl"
+
+vec3 shade_punctual(MaterialInputs material, PunctualLightData light) {
+    vec3 l;
+    vec3 illuminance = punctual_light_illuminance(light, v_worldPosition, l);
+    return shade_standard_direct(material, shading_normal, shading_view, l, illuminance);
+}
+#endif
 
 void main() {
     shading_normal = normalize(v_normal);
@@ -31,6 +42,16 @@ void main() {
 #if defined(FACET_DIRECTIONAL_LIGHT)
     vec3 l = normalize(frame.lightDirection.xyz);
     color += shade_standard_direct(material, shading_normal, shading_view, l, frame.lightColor.rgb);
+#endif
+#if FACET_POINT_LIGHTS > 0
+    color += shade_punctual(material, frame.punctualLights[0]);
+#endif
+#if FACET_POINT_LIGHTS > 1
+    color += shade_punctual(material, frame.punctualLights[1]);
+#endif
+#if FACET_POINT_LIGHTS > 2
+    color += shade_punctual(material, frame.punctualLights[2]);
+    color += shade_punctual(material, frame.punctualLights[3]);
 #endif
     fragColor = blend_output(color + material.emissive, material.alpha);
 }

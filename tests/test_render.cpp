@@ -9,6 +9,7 @@
 #include "facet/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "reference/standard_model.h"
+#include "sphere_pixels.h"
 #include "test_support.h"
 
 namespace {
@@ -83,11 +84,6 @@ TEST_F(SphereScene, VulkanAndGlAgreePixelByPixel) {
 // there a pixel's centre and the tessellated silhouette differ by more than the BRDF does.
 TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
   const auto& scene = r.scene;
-  const auto& cam = scene.camera;
-  glm::dmat4 viewProjection = glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height,
-                                               cam.nearPlane, cam.farPlane) *
-                              glm::lookAt(cam.position, cam.target, cam.up);
-  glm::dmat4 inverse = glm::inverse(viewProjection);
   const auto& f = r.frame->frame().frame;
   glm::dvec3 l(f.lightDirection[0], f.lightDirection[1], f.lightDirection[2]);
   glm::dvec3 light(f.lightColor[0], f.lightColor[1], f.lightColor[2]);
@@ -103,37 +99,19 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
     if (p.name == "roughness") surface.roughness = p.defaultValue[0];
     if (p.name == "reflectance") surface.reflectance = p.defaultValue[0];
   }
-  const glm::dvec3 centre = scene.objects[0].position;
-  const double radius = scene.objects[0].radius;
-
   int checked = 0;
   double worst = 0;
-  for (uint32_t y = 8; y < scene.height; y += 8) {
-    for (uint32_t x = 8; x < scene.width; x += 8) {
-      glm::dvec4 ndcNear((x + 0.5) / scene.width * 2 - 1, 1 - (y + 0.5) / scene.height * 2, -1, 1);
-      glm::dvec4 ndcFar = ndcNear;
-      ndcFar.z = 1;
-      glm::dvec4 a = inverse * ndcNear, b = inverse * ndcFar;
-      glm::dvec3 origin = glm::dvec3(a) / a.w;
-      glm::dvec3 dir = glm::normalize(glm::dvec3(b) / b.w - origin);
-      glm::dvec3 oc = origin - centre;
-      double half = glm::dot(oc, dir), c = glm::dot(oc, oc) - radius * radius, disc = half * half - c;
-      if (disc <= 0) continue;
-      glm::dvec3 p = origin + (-half - std::sqrt(disc)) * dir;
-      glm::dvec3 n = glm::normalize(p - centre);
-      glm::dvec3 v = glm::normalize(cam.position - p);
-      if (glm::dot(n, v) < 0.25) continue;
-      glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient);
-      const float* got = &vulkan_->hdr[(size_t(y) * scene.width + x) * 4];
-      for (int ch = 0; ch < 3; ++ch) {
-        double error_ = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
-        worst = std::max(worst, error_);
-        EXPECT_LE(error_, 0.01) << "pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got[ch] << ", CPU "
-                                << expected[ch];
-      }
-      ++checked;
+  facet::test::forEachSpherePixel(scene, 8, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
+    glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient);
+    const float* got = &vulkan_->hdr[(size_t(y) * scene.width + x) * 4];
+    for (int ch = 0; ch < 3; ++ch) {
+      double error_ = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
+      worst = std::max(worst, error_);
+      EXPECT_LE(error_, 0.01) << "pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got[ch] << ", CPU "
+                              << expected[ch];
     }
-  }
+    ++checked;
+  });
   EXPECT_GT(checked, 200);  // the sphere covers much of the frame; most grid points are checked
   RecordProperty("worst_relative_error_x1e6", int(worst * 1e6));
 }

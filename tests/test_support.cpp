@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -29,14 +30,15 @@ std::vector<std::string> exampleMaterials() {
 
 std::optional<compiler::BuildResult> buildFile(const std::string& path) { return buildText(readText(path), path); }
 
-std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path) {
+std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path,
+                                               const compiler::BuildOptions& options) {
   ir::SourceFile file{path, text};
   ir::Diagnostics diags(file);
   auto material = ir::compileSource(file, diags);
   EXPECT_TRUE(material.has_value()) << diags.format();
   if (!material) return std::nullopt;
   compiler::BuildError error;
-  auto built = compiler::buildMaterial(*material, {}, &error);
+  auto built = compiler::buildMaterial(*material, options, &error);
   EXPECT_TRUE(built.has_value()) << error.message;
   return built;
 }
@@ -53,9 +55,10 @@ void writePackage(const std::string& dir, const std::optional<compiler::BuildRes
 
 }  // namespace
 
-std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts) {
+std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts,
+                                   const compiler::BuildOptions& options) {
   std::string dir = scratchDir(scratchName);
-  for (const std::string& text : materialTexts) writePackage(dir, buildText(text));
+  for (const std::string& text : materialTexts) writePackage(dir, buildText(text, "test.mat", options));
   return dir;
 }
 
@@ -63,6 +66,20 @@ std::string writeExamplePackages(const std::string& scratchName) {
   std::string dir = scratchDir(scratchName);
   for (const std::string& path : exampleMaterials()) writePackage(dir, buildFile(path));
   return dir;
+}
+
+double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    if (i % 4 == 3) continue;
+    double d = double(a[i]) - double(b[i]);
+    sum += d * d;
+    ++n;
+  }
+  double mse = n == 0 ? 0 : sum / double(n);
+  return mse == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
 std::string diagnosticsFor(const std::string& text, const std::string& path) {

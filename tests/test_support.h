@@ -26,11 +26,16 @@ std::vector<std::string> exampleMaterials();
 std::optional<compiler::BuildResult> buildFile(const std::string& path);
 
 // The same for material text held in memory.
-std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path = "test.mat");
+std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path = "test.mat",
+                                               const compiler::BuildOptions& options = {});
 
 // Builds each material and writes <scratch dir>/<material name>.matpkg, as matc does; returns
 // the folder. Fails the current test on any error.
-std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts);
+std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts,
+                                   const compiler::BuildOptions& options = {});
+// 8-bit PSNR between two RGBA8 images of the same size, over RGB (99 dB when identical).
+double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
+
 // The same for every examples/materials/*.mat.
 std::string writeExamplePackages(const std::string& scratchName);
 

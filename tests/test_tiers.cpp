@@ -36,19 +36,7 @@ facet::compiler::StageCost costOf(const std::vector<uint32_t>& words) {
   return cost;
 }
 
-// 8-bit PSNR between two RGBA8 images, over RGB.
-double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (i % 4 == 3) continue;
-    double d = double(a[i]) - double(b[i]);
-    sum += d * d;
-    ++n;
-  }
-  double mse = sum / double(n);
-  return mse == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
-}
+using facet::test::psnr;
 
 }  // namespace
 

@@ -50,12 +50,19 @@ std::string blockLayout(Flavour flavour, uint32_t binding) {
 // The per-frame and per-object blocks, identical text in both stages (GLSL ES requires blocks
 // shared between stages to match member for member, precision included). Mirrors shader_abi.h.
 std::string frameAndObjectBlocks(Flavour flavour) {
-  return blockLayout(flavour, 0) + " uniform FrameUniforms {\n"
+  return "struct PunctualLightData {\n"
+         "    highp vec4 positionFalloff;\n"
+         "    highp vec4 colorIntensity;\n"
+         "    highp vec4 direction;\n"
+         "    highp vec4 spotScaleOffset;\n"
+         "};\n" +
+         blockLayout(flavour, 0) + " uniform FrameUniforms {\n"
          "    highp mat4 viewProjection;\n"
          "    highp vec4 cameraPosition;\n"
          "    highp vec4 lightDirection;\n"
          "    highp vec4 lightColor;\n"
          "    highp vec4 ambient;\n"
+         "    PunctualLightData punctualLights[" + std::to_string(permutations::kMaxPointLights) + "];\n"
          "} frame;\n" +
          blockLayout(flavour, 1) + " uniform ObjectUniforms {\n"
          "    highp mat4 model;\n"
@@ -116,6 +123,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     if (needs(in, v)) s += "#define FACET_VARYING_" + upper(v.name) + " 1\n";
   if (usesNormalOutput(in)) s += "#define FACET_MATERIAL_NORMAL 1\n";
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
+  s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
   if (in.material.blending != "opaque") s += "#define FACET_BLENDING_" + upper(in.material.blending) + " 1\n";
   if (in.material.blending == "masked")
     s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";

@@ -113,7 +113,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   permutations::MaterialNeeds needs;
   needs.lit = material.shading == "lit";
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
-  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene)) {
+  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts)) {
     const std::string keyText = key.toString();
     // The tier's preset, with the material's overrides for that tier (checked by ir::check).
     permutations::TierConfig tier = permutations::preset(key.tier);

@@ -20,17 +20,37 @@ std::optional<Tier> tierFromString(std::string_view s) {
   return std::nullopt;
 }
 
+std::optional<int> pointLightPermutation(int lights) {
+  for (int count : kPointLightCounts)
+    if (lights <= count) return count;
+  return std::nullopt;
+}
+
 std::string VariantKey::toString() const {
-  return std::string(permutations::toString(tier)) + (directionalLight ? ".dir1" : ".dir0");
+  std::string s = std::string(permutations::toString(tier)) + (directionalLight ? ".dir1" : ".dir0");
+  if (pointLights > 0) s += ".pt" + std::to_string(pointLights);
+  return s;
 }
 
 std::optional<VariantKey> VariantKey::parse(std::string_view text) {
-  size_t dot = text.find('.');
-  if (dot == std::string_view::npos) return std::nullopt;
-  auto tier = tierFromString(text.substr(0, dot));
-  std::string_view light = text.substr(dot + 1);
-  if (!tier || (light != "dir0" && light != "dir1")) return std::nullopt;
-  return VariantKey{*tier, light == "dir1"};
+  std::vector<std::string_view> fields;
+  for (size_t start = 0;;) {
+    size_t dot = text.find('.', start);
+    fields.push_back(text.substr(start, dot == std::string_view::npos ? std::string_view::npos : dot - start));
+    if (dot == std::string_view::npos) break;
+    start = dot + 1;
+  }
+  if (fields.size() < 2 || fields.size() > 3) return std::nullopt;
+  auto tier = tierFromString(fields[0]);
+  if (!tier || (fields[1] != "dir0" && fields[1] != "dir1")) return std::nullopt;
+  VariantKey key{*tier, fields[1] == "dir1", 0};
+  if (fields.size() == 3) {
+    bool known = false;
+    for (int count : kPointLightCounts)
+      if (count > 0 && fields[2] == "pt" + std::to_string(count)) key.pointLights = count, known = true;
+    if (!known) return std::nullopt;
+  }
+  return key;
 }
 
 const std::vector<Tier>& supportedTiers() {
@@ -39,17 +59,23 @@ const std::vector<Tier>& supportedTiers() {
   return tiers;
 }
 
-VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight) {
-  return {tier, material.lit && directionalLight};
+VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights) {
+  return {tier, material.lit && directionalLight, material.lit ? pointLightPermutation(pointLights).value_or(0) : 0};
 }
 
-std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers, const SceneNeeds* scene) {
+std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers, const SceneNeeds* scene,
+                                  const std::vector<int>& pointLightCounts) {
   std::vector<VariantKey> keys;
+  // A scene names its own point-light counts; without one, the caller's list applies.
+  std::vector<int> counts = scene ? std::vector<int>(std::begin(kPointLightCounts), std::end(kPointLightCounts))
+                                  : pointLightCounts;
   for (Tier t : tiers) {
     for (bool light : {false, true}) {
-      VariantKey key = requestKey(material, t, light);
-      bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
-      if (wanted) keys.push_back(key);
+      for (int points : counts) {
+        VariantKey key = requestKey(material, t, light, points);
+        bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
+        if (wanted) keys.push_back(key);
+      }
     }
   }
   std::sort(keys.begin(), keys.end());

@@ -77,6 +77,27 @@ Sun sun(const json& j) {
   return s;
 }
 
+PunctualLight light(const json& j, const std::string& pointer) {
+  onlyKeys(j, pointer, {"type", "position", "intensity", "color", "range", "direction", "innerAngle", "outerAngle"});
+  PunctualLight l;
+  std::string type = j.contains("type") ? string(j["type"], pointer + "/type") : "";
+  if (type != "point" && type != "spot") fail(pointer + "/type", "expected \"point\" or \"spot\"");
+  l.spot = type == "spot";
+  if (!l.spot)
+    for (const char* key : {"direction", "innerAngle", "outerAngle"})
+      if (j.contains(key)) fail(pointer + "/" + key, "only a spot light has a " + std::string(key));
+  if (j.contains("position")) l.position = vec3(j["position"], pointer + "/position");
+  if (j.contains("intensity")) l.intensity = number(j["intensity"], pointer + "/intensity", 0, 1e7);
+  if (j.contains("color")) l.color = vec3(j["color"], pointer + "/color");
+  if (j.contains("range")) l.range = number(j["range"], pointer + "/range", 0.01, 1e4);
+  if (j.contains("direction")) l.direction = vec3(j["direction"], pointer + "/direction");
+  if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) fail(pointer + "/direction", "must not be zero");
+  if (j.contains("innerAngle")) l.innerAngleDegrees = number(j["innerAngle"], pointer + "/innerAngle", 0, 90);
+  if (j.contains("outerAngle")) l.outerAngleDegrees = number(j["outerAngle"], pointer + "/outerAngle", 0.5, 90);
+  if (l.innerAngleDegrees >= l.outerAngleDegrees) fail(pointer + "/innerAngle", "must be smaller than outerAngle");
+  return l;
+}
+
 SceneObject object(const json& j, const std::string& pointer, const std::filesystem::path& sceneDir) {
   onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
   SceneObject o;
@@ -110,13 +131,20 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
 }
 
 Scene scene(const json& j, const std::filesystem::path& sceneDir) {
-  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "sky", "objects"});
+  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "objects"});
   Scene s;
   if (j.contains("width")) s.width = uint32_t(number(j["width"], "/width", 1, 4096));
   if (j.contains("height")) s.height = uint32_t(number(j["height"], "/height", 1, 4096));
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
+  if (j.contains("lights")) {
+    if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");
+    if (j["lights"].size() > kMaxSceneLights)
+      fail("/lights", std::to_string(j["lights"].size()) + " lights; a scene has at most " +
+                          std::to_string(kMaxSceneLights) + " point and spot lights");
+    for (size_t i = 0; i < j["lights"].size(); ++i) s.lights.push_back(light(j["lights"][i], "/lights/" + std::to_string(i)));
+  }
   if (j.contains("sky")) {
     onlyKeys(j["sky"], "/sky", {"luminance"});
     if (j["sky"].contains("luminance")) s.skyLuminance = number(j["sky"]["luminance"], "/sky/luminance", 0, 1e6);

@@ -23,6 +23,22 @@ void store(float* dst, const glm::dvec3& v, double w = 0) {
   dst[3] = float(w);
 }
 
+// The frame-block form of a punctual light (shader_abi.h, chunks/light_punctual.glsl). A point
+// light's cone factor is 1 everywhere: scale 0, offset 1.
+void storePunctual(const PunctualLight& light, double exposure, abi::PunctualLightUniforms* out) {
+  store(out->positionFalloff, light.position, 1.0 / (light.range * light.range));
+  store(out->colorIntensity, light.color * light.intensity * exposure);
+  store(out->direction, glm::normalize(light.direction));
+  double scale = 0, offset = 1;
+  if (light.spot) {
+    double cosInner = std::cos(glm::radians(light.innerAngleDegrees));
+    double cosOuter = std::cos(glm::radians(light.outerAngleDegrees));
+    scale = 1.0 / std::max(cosInner - cosOuter, 1e-4);
+    offset = -cosOuter * scale;
+  }
+  store(out->spotScaleOffset, glm::dvec3(scale, offset, 0));
+}
+
 }  // namespace
 
 std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::string& packageDir, std::string* error) {
@@ -32,7 +48,11 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     *error = "unknown tier '" + scene.tier + "' (reference, high, mid, low)";
     return nullptr;
   }
-  out->variantKey_ = permutations::requestKey({true}, *tier, scene.sun.has_value()).toString();
+  static_assert(kMaxSceneLights == size_t(permutations::kMaxPointLights) &&
+                    kMaxSceneLights == abi::kMaxPunctualLights,
+                "the scene, the permutations and the frame block agree on the punctual-light limit");
+  const int lights = int(scene.lights.size());
+  out->variantKey_ = permutations::requestKey({true}, *tier, scene.sun.has_value(), lights).toString();
   out->sphere_ = makeSphere();
 
   // Lights are multiplied by the exposure here, on the CPU, so shaders see O(1) values
@@ -49,6 +69,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     store(f.lightDirection, -glm::normalize(scene.sun->direction));
     store(f.lightColor, scene.sun->color * scene.sun->illuminance * out->exposure_);
   }
+  for (size_t i = 0; i < scene.lights.size(); ++i) storePunctual(scene.lights[i], out->exposure_, &f.punctualLights[i]);
   glm::dvec3 sky(scene.skyLuminance * out->exposure_);
   store(f.ambient, sky);
   out->frame_.width = scene.width;
@@ -66,7 +87,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       // The key this material is asked for: axes it ignores (lights, for unlit) are normalised
       // the same way the compiler normalised them when it built the package.
       permutations::MaterialNeeds needs{material->info().shading == "lit"};
-      std::string key = permutations::requestKey(needs, *tier, scene.sun.has_value()).toString();
+      std::string key = permutations::requestKey(needs, *tier, scene.sun.has_value(), lights).toString();
       auto program = material->program(key, error);
       if (!program) return nullptr;
       out->materials_.push_back(std::make_unique<LoadedMaterial>(std::move(*material)));

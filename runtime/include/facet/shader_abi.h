@@ -64,14 +64,29 @@ inline constexpr uint32_t kPostHdrBinding = 0;
 // Lighting contract (Filament's mobile practice, see docs/lighting-units.md): the CPU multiplies
 // every light by the camera exposure before upload, so the shader sees values near 1 even for a
 // 110 000 lux sun, and mediump (fp16, max 65504) never overflows on light intensities.
+// One punctual (point or spot) light, four vec4s (chunks/light_punctual.glsl reads it). A point
+// light has spotScaleOffset = (0, 1): its cone factor is 1 in every direction.
+struct PunctualLightUniforms {
+  float positionFalloff[4];  // xyz: world-space position; w: 1 / range² (the falloff window's scale)
+  float colorIntensity[4];   // rgb: colour × intensity (candela) × exposure; w: unused
+  float direction[4];        // xyz: spot axis, unit vector the light travels along; w: unused
+  float spotScaleOffset[4];  // x: 1 / (cos inner − cos outer); y: −cos outer · x; zw: unused
+};
+static_assert(sizeof(PunctualLightUniforms) == 64, "std140 layout of PunctualLightUniforms");
+
+// Punctual lights in the frame block. A variant with N of them (VariantKey pointLights) reads
+// entries 0..N-1 at fixed offsets; the runtime zeroes the rest.
+inline constexpr uint32_t kMaxPunctualLights = 4;
+
 struct FrameUniforms {
   float viewProjection[16];
   float cameraPosition[4];  // xyz: world-space eye position; w: unused
   float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused
   float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused
   float ambient[4];         // rgb: constant ambient radiance × exposure (a one-band SH sky); w: unused
+  PunctualLightUniforms punctualLights[kMaxPunctualLights];
 };
-static_assert(sizeof(FrameUniforms) == 128, "std140 layout of FrameUniforms");
+static_assert(sizeof(FrameUniforms) == 384, "std140 layout of FrameUniforms");
 
 // Per-object data.
 struct ObjectUniforms {

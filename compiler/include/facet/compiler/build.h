@@ -31,6 +31,7 @@ struct BuildResult {
 struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
   std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
+  std::vector<int> pointLightCounts{0};  // without a scene: the point-light permutations to build
 };
 
 struct BuildError {

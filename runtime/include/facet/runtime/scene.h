@@ -30,6 +30,23 @@ struct Sun {
   glm::dvec3 color{1, 1, 1};       // linear, multiplies illuminance
 };
 
+// A punctual light: a point light radiating equally in all directions, or a spot light
+// restricted to a cone (Filament's punctual-light model; docs/lighting-units.md).
+struct PunctualLight {
+  bool spot = false;
+  glm::dvec3 position{0, 0, 0};
+  double intensity = 100;          // candela (lumen per steradian)
+  glm::dvec3 color{1, 1, 1};       // linear, multiplies intensity
+  double range = 10;               // metres: the light fades smoothly to 0 at this distance
+  glm::dvec3 direction{0, -1, 0};  // spot: the cone's axis, the direction the light travels
+  double innerAngleDegrees = 20;   // spot: full intensity inside this half-angle
+  double outerAngleDegrees = 30;   // spot: no light outside this half-angle
+};
+
+// Punctual lights per scene: the shaders have fixed-count permutations up to this many
+// (permutations::kMaxPointLights).
+inline constexpr size_t kMaxSceneLights = 4;
+
 struct SceneObject {
   std::string mesh = "sphere";
   std::string material;            // package name: <package dir>/<material>.matpkg
@@ -45,6 +62,7 @@ struct Scene {
   std::string tier = "high";
   Camera camera;
   std::optional<Sun> sun;
+  std::vector<PunctualLight> lights;
   double skyLuminance = 0;         // cd/m², a constant ambient sky
   std::vector<SceneObject> objects;
 };
