@@ -1,0 +1,390 @@
+// Image-based lighting maths (ibl/): every generator against a brute-force quadrature that shares
+// no code with it (reference/dfg_quadrature.h, reference/irradiance_quadrature.h, and the lobe
+// integral below), or against values derived by hand.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+#include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/env_brdf_fits.h"
+#include "facet/ibl/prefilter_environment.h"
+#include "facet/ibl/sphere_quadrature.h"
+#include "facet/ibl/spherical_harmonics.h"
+#include "reference/dfg_quadrature.h"
+#include "reference/env_brdf_error.h"
+#include "reference/irradiance_quadrature.h"
+#include "reference/prefilter_quadrature.h"
+
+namespace {
+
+using namespace facet::ibl;
+namespace ref = facet::reference;
+
+const DfgLut& shippedLut() {
+  static const DfgLut lut = generateDfgLut();
+  return lut;
+}
+
+glm::dvec3 toGlm(Vec3 v) { return {v.x, v.y, v.z}; }
+Vec3 toVec3(glm::dvec3 v) { return {v.x, v.y, v.z}; }
+
+double maxComponent(Vec3 v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+void expectNearVec3(Vec3 got, Vec3 want, double tolerance) {
+  EXPECT_NEAR(got.x, want.x, tolerance);
+  EXPECT_NEAR(got.y, want.y, tolerance);
+  EXPECT_NEAR(got.z, want.z, tolerance);
+}
+
+}  // namespace
+
+// --- split-sum DFG ---
+
+TEST(Dfg, GridQuadratureGivesTheGrazingAlbedoOfTheBrief) {
+  ref::DfgByGrid g = ref::integrateDfgByGrid(1.0 / 64.0, 0.5);
+  EXPECT_NEAR(g.albedo, 0.9737, 1e-4);
+}
+
+TEST(Dfg, VisibleNormalSamplingMatchesTheGridAtGrazingView) {
+  ref::DfgByGrid g = ref::integrateDfgByGrid(1.0 / 64.0, 0.5);
+  DfgTerms t = integrateDfg(1.0 / 64.0, 0.5, kDfgLutSamples);
+  EXPECT_NEAR(t.albedo, 0.9737, 0.002);
+  EXPECT_NEAR(t.albedo, g.albedo, 0.002);
+  EXPECT_NEAR(t.fresnelWeighted, g.fresnelWeighted, 0.002);
+}
+
+TEST(Dfg, GgxNormalSamplingReadsTwoPercentHighAtGrazingView) {
+  // The pitfall dfg_lut.h documents: h ~ D n·h with 1024 points gives 0.9956 here.
+  DfgTerms t = integrateDfg(1.0 / 64.0, 0.5, 1024, DfgSampling::kGgxNormals);
+  EXPECT_GT(t.albedo, 0.99);
+}
+
+TEST(Dfg, MatchesTheGridAcrossViewAndRoughness) {
+  // r ≥ 0.35: where the 1024-row grid itself is exact to 3e-5 (tools/measure_ibl).
+  for (double NoV : {1.0 / 64.0, 0.2, 0.6, 1.0}) {
+    for (double r : {0.35, 0.6, 1.0}) {
+      ref::DfgByGrid g = ref::integrateDfgByGrid(NoV, r);
+      DfgTerms t = integrateDfg(NoV, r, kDfgLutSamples);
+      EXPECT_NEAR(t.albedo, g.albedo, 1e-3) << "n·v " << NoV << " r " << r;
+      EXPECT_NEAR(t.fresnelWeighted, g.fresnelWeighted, 1e-3) << "n·v " << NoV << " r " << r;
+    }
+  }
+}
+
+TEST(Dfg, FullRoughnessAtNormalIncidenceIsOneMinusLn2) {
+  // α = 1: D = 1/π, V = 1/(2 (1 + n·l)) at n·v = 1, so ∫ D V n·l dω = ∫₀¹ μ/(1 + μ) dμ = 1 − ln 2.
+  EXPECT_NEAR(integrateDfg(1.0, 1.0, kDfgLutSamples).albedo, 1.0 - std::log(2.0), 1e-4);
+}
+
+TEST(Dfg, WhiteFurnaceNeverExceedsOne) {
+  const DfgLut& lut = shippedLut();
+  ASSERT_EQ(lut.size, kDfgLutSize);
+  ASSERT_EQ(lut.texels.size(), size_t(kDfgLutSize) * kDfgLutSize * 2);
+  double minAlbedo = 1.0;
+  for (int row = 0; row < lut.size; ++row) {
+    for (int column = 0; column < lut.size; ++column) {
+      DfgTerms t = lut.at(column, row);
+      EXPECT_LE(t.albedo, 1.0 + 1e-6) << column << ", " << row;
+      EXPECT_GE(t.fresnelWeighted, 0.0) << column << ", " << row;
+      EXPECT_LE(t.fresnelWeighted, t.albedo) << column << ", " << row;
+      minAlbedo = std::min(minAlbedo, t.albedo);
+    }
+  }
+  // Smallest at r → 1, n·v → 1, near 1 − ln 2; never the 0 a lost sample would give.
+  EXPECT_GT(minAlbedo, 0.3);
+  EXPECT_LT(minAlbedo, 0.32);
+}
+
+TEST(Dfg, SmoothLimitReflectsEverything) {
+  for (double NoV : {1.0 / 64.0, 0.3, 1.0}) {
+    DfgTerms mirror = integrateDfg(NoV, 0.0, 64);
+    EXPECT_NEAR(mirror.albedo, 1.0, 1e-12);
+    EXPECT_NEAR(mirror.fresnelWeighted, std::pow(1.0 - NoV, 5.0), 1e-12);
+    EXPECT_GT(integrateDfg(NoV, 0.02, kDfgLutSamples).albedo, 0.999) << NoV;
+  }
+  // The table's smoothest row (r = 0.5/64).
+  for (int column = 0; column < kDfgLutSize; ++column) EXPECT_GT(shippedLut().at(column, 0).albedo, 0.999) << column;
+}
+
+TEST(Dfg, TexelHoldsTheTermsAtItsCentre) {
+  DfgLut lut = generateDfgLut(8, 256);
+  for (int row : {0, 3, 7}) {
+    for (int column : {0, 5, 7}) {
+      DfgTerms want = integrateDfg((column + 0.5) / 8.0, (row + 0.5) / 8.0, 256);
+      EXPECT_EQ(lut.at(column, row).fresnelWeighted, float(want.fresnelWeighted));
+      EXPECT_EQ(lut.at(column, row).albedo, float(want.albedo));
+    }
+  }
+  EXPECT_EQ(generateDfgLut(8, 256).texels, lut.texels);  // deterministic
+}
+
+TEST(Dfg, EnvironmentBrdfSplitsIntoF0AndF90Parts) {
+  DfgTerms t = integrateDfg(0.3, 0.6, 512);
+  EXPECT_DOUBLE_EQ(specularEnvironmentBrdf(t, 1.0), t.albedo);
+  EXPECT_DOUBLE_EQ(specularEnvironmentBrdf(t, 0.0), t.fresnelWeighted);
+  EXPECT_DOUBLE_EQ(specularEnvironmentBrdf(t, 0.0, 0.0), 0.0);
+}
+
+TEST(Dfg, MultiScatterCompensationRestoresTheWhiteFurnace) {
+  const DfgLut& lut = shippedLut();
+  for (int row : {10, 40, 63}) {
+    for (int column : {0, 32, 63}) {
+      DfgTerms t = lut.at(column, row);
+      EXPECT_NEAR(specularEnvironmentBrdf(t, 1.0) * multiScatterCompensation(t, 1.0), 1.0, 1e-12);
+      EXPECT_DOUBLE_EQ(multiScatterCompensation(t, 0.0), 1.0);
+      EXPECT_LT(multiScatterCompensation(t, 1.0), 3.3);
+    }
+  }
+}
+
+// --- spherical harmonics ---
+
+TEST(Sh, BasisIsOrthonormal) {
+  std::vector<SphereSample> quadrature = sphereQuadrature(8);
+  for (int i = 0; i < 9; ++i) {
+    for (int j = 0; j < 9; ++j) {
+      double sum = 0;
+      for (const SphereSample& s : quadrature) {
+        std::vector<double> y = shBasis(3, s.direction);
+        sum += y[size_t(i)] * y[size_t(j)] * s.weight;
+      }
+      EXPECT_NEAR(sum, i == j ? 1.0 : 0.0, 1e-12) << i << ", " << j;
+    }
+  }
+}
+
+TEST(Sh, ConstantEnvironmentGivesPiTimesRadianceForEveryNormal) {
+  Vec3 L{0.25, 1.0, 3.0};
+  for (int bands : {2, 3}) {
+    SphericalHarmonics radiance = projectRadiance([&](Vec3) { return L; }, bands);
+    SphericalHarmonics irradiance = radianceToIrradiance(radiance);
+    std::vector<Vec3> shader = shaderIrradianceCoefficients(radiance);
+    for (int i = 0; i < 50; ++i) {
+      Vec3 n = toVec3(ref::fibonacciSphere(i, 50));
+      expectNearVec3(evaluateSh(irradiance, n), L * kPi, 1e-12);
+      expectNearVec3(evaluateShaderIrradiance(shader, n), L, 1e-12);
+    }
+  }
+}
+
+TEST(Sh, LinearEnvironmentIsReproducedExactlyBySh2) {
+  // L(d) = a + b (d·z): E(n) = π a + (2π/3) b (n·z), since ∫ (d·z) max(0, n·d) dω = (2π/3) n·z.
+  Vec3 a{1.0, 2.0, 3.0}, b{0.5, -1.0, 2.0};
+  auto radiance = [&](Vec3 d) { return a + b * d.z; };
+  for (int bands : {2, 3}) {
+    SphericalHarmonics irradiance = radianceToIrradiance(projectRadiance(radiance, bands));
+    std::vector<Vec3> shader = shaderIrradianceCoefficients(projectRadiance(radiance, bands));
+    for (int i = 0; i < 50; ++i) {
+      Vec3 n = toVec3(ref::fibonacciSphere(i, 50));
+      Vec3 exact = a * kPi + b * (2.0 * kPi / 3.0 * n.z);
+      expectNearVec3(evaluateSh(irradiance, n), exact, 1e-12);
+      expectNearVec3(evaluateShaderIrradiance(shader, n) * kPi, exact, 1e-12);
+    }
+  }
+}
+
+TEST(Sh, BrightCapSh3IrradianceIsWithinSixPercentOfPeakAndBeatsSh2) {
+  // Measured (tools/measure_ibl, docs/ibl.md): max error 5.15 % of the peak for SH3, 20.6 % for SH2.
+  auto radiance = [](Vec3 d) { return toVec3(ref::capSkyRadiance(toGlm(d))); };
+  SphericalHarmonics sh2 = radianceToIrradiance(projectRadiance(radiance, 2, 128));
+  SphericalHarmonics sh3 = radianceToIrradiance(projectRadiance(radiance, 3, 128));
+  double peak = 0, worst2 = 0, worst3 = 0, sum2 = 0, sum3 = 0;
+  const int count = 200;
+  for (int i = 0; i < count; ++i) {
+    glm::dvec3 n = ref::fibonacciSphere(i, count);
+    double truth = ref::irradianceByGrid(ref::capSkyRadiance, n, 256).x;
+    double e2 = std::abs(evaluateSh(sh2, toVec3(n)).x - truth);
+    double e3 = std::abs(evaluateSh(sh3, toVec3(n)).x - truth);
+    peak = std::max(peak, truth);
+    worst2 = std::max(worst2, e2);
+    worst3 = std::max(worst3, e3);
+    sum2 += e2;
+    sum3 += e3;
+  }
+  std::printf("cap sky irradiance error / peak: SH2 max %.4f mean %.4f, SH3 max %.4f mean %.4f\n", worst2 / peak,
+              sum2 / count / peak, worst3 / peak, sum3 / count / peak);
+  EXPECT_LT(worst3, 0.06 * peak);
+  EXPECT_LT(worst3, worst2);
+  EXPECT_LT(sum3, sum2);
+}
+
+TEST(Sh, ShaderCoefficientsEvaluateIrradianceOverPi) {
+  auto radiance = [](Vec3 d) { return toVec3(ref::capSkyRadiance(toGlm(d))); };
+  SphericalHarmonics sh = projectRadiance(radiance, 3, 32);
+  SphericalHarmonics irradiance = radianceToIrradiance(sh);
+  std::vector<Vec3> shader = shaderIrradianceCoefficients(sh);
+  ASSERT_EQ(shader.size(), 9u);
+  for (int i = 0; i < 50; ++i) {
+    Vec3 n = toVec3(ref::fibonacciSphere(i, 50));
+    Vec3 e = evaluateSh(irradiance, n);
+    Vec3 clamped{std::max(e.x, 0.0), std::max(e.y, 0.0), std::max(e.z, 0.0)};
+    expectNearVec3(evaluateShaderIrradiance(shader, n) * kPi, clamped, 1e-12 * maxComponent(e));
+  }
+}
+
+TEST(Sh, EquirectProjectionMatchesTheCallbackProjection) {
+  // A smooth sky; the image's midpoint rule converges to the exact projection as 1/height².
+  auto radiance = [](Vec3 d) { return Vec3{1.0 + 0.5 * d.y, 0.2 + d.x * d.x, std::exp(d.z)}; };
+  SphericalHarmonics exact = projectRadiance(radiance, 3, 16);
+  SphericalHarmonics fromImage = projectRadiance(renderEquirect(256, 128, radiance), 3);
+  for (size_t k = 0; k < 9; ++k) expectNearVec3(fromImage.coefficients[k], exact.coefficients[k], 1e-3);
+}
+
+TEST(Sh, RejectsBandCountsOutsideOneToThree) {
+  EXPECT_THROW(shBasis(4, {0, 0, 1}), std::invalid_argument);
+  EXPECT_THROW(projectRadiance([](Vec3) { return Vec3{}; }, 0), std::invalid_argument);
+}
+
+// --- analytic environment BRDFs ---
+
+TEST(EnvBrdf, KarisFitGivesHandComputedValues) {
+  // r = 0, n·v = 1: k = (1, 0.0425, 1.04, −0.04), s = 2^−9.28 + 0.0425 = 0.0441086.
+  EnvBrdfTerms smooth = envBrdfKaris(1.0, 0.0);
+  EXPECT_NEAR(smooth.f0Scale, 0.9941271, 1e-7);
+  EXPECT_NEAR(smooth.bias, 0.0058729, 1e-7);
+  // r = 1, n·v = 0: k = (0, 0.015, 0.468, −0.018), s = 0.015.
+  EnvBrdfTerms rough = envBrdfKaris(0.0, 1.0);
+  EXPECT_NEAR(rough.f0Scale, 0.4524, 1e-12);
+  EXPECT_NEAR(rough.bias, -0.0024, 1e-12);
+}
+
+TEST(EnvBrdf, ZiomaSlideFormExceedsOneForMetalsAndSaturatedFormDoesNot) {
+  EnvBrdfTerms t = envBrdfZioma(0.2, 0.5);
+  EXPECT_EQ(t.f0Scale, 1.0);
+  EXPECT_NEAR(t.bias, 0.125, 1e-15);
+  EXPECT_NEAR(t.apply(1.0), 1.125, 1e-15);
+  EXPECT_EQ(envBrdfZiomaSaturated(1.0, 0.2, 0.5), 1.0);
+  EXPECT_NEAR(envBrdfZiomaSaturated(0.04, 0.2, 0.5), 0.165, 1e-15);
+}
+
+TEST(EnvBrdf, FitErrorsAgainstTheTableStayWithinTheirMeasuredBounds) {
+  // Loose bounds around the numbers of docs/ibl.md (tools/measure_ibl): they catch a wrong
+  // constant or a changed table, not noise.
+  const DfgLut& lut = shippedLut();
+  struct Case {
+    const char* name;
+    double f0;
+    std::function<double(double, double)> fit;
+    double maxBound, meanBound;
+  };
+  auto karis = [](double f0) { return [f0](double NoV, double r) { return envBrdfKaris(NoV, r).apply(f0); }; };
+  auto zioma = [](double f0) { return [f0](double NoV, double r) { return envBrdfZioma(NoV, r).apply(f0); }; };
+  auto ziomaSat = [](double f0) { return [f0](double NoV, double r) { return envBrdfZiomaSaturated(f0, NoV, r); }; };
+  const Case cases[] = {
+      {"Karis", 0.04, karis(0.04), 0.10, 0.02},       {"Karis", 1.0, karis(1.0), 0.55, 0.13},
+      {"Zioma", 0.04, zioma(0.04), 0.25, 0.06},       {"Zioma", 1.0, zioma(1.0), 1.0, 0.30},
+      {"Zioma saturated", 1.0, ziomaSat(1.0), 0.70, 0.19},
+  };
+  for (const Case& c : cases) {
+    ref::EnvBrdfError e = ref::envBrdfError(lut, c.f0, c.fit);
+    std::printf("%-16s f0 = %-4g max %.4f mean %.4f\n", c.name, c.f0, e.max, e.mean);
+    EXPECT_LT(e.max, c.maxBound) << c.name << " f0 " << c.f0;
+    EXPECT_LT(e.mean, c.meanBound) << c.name << " f0 " << c.f0;
+  }
+  // Karis's fit beats Zioma's slide on average, for dielectrics and metals.
+  for (double f0 : {0.04, 1.0})
+    EXPECT_LT(ref::envBrdfError(lut, f0, karis(f0)).mean, ref::envBrdfError(lut, f0, zioma(f0)).mean) << f0;
+}
+
+// --- prefiltered environment ---
+
+namespace {
+
+// A sky brightening towards the zenith and a small bright sun with a smooth (Gaussian-like) edge,
+// so bilinear sampling of a 128 × 64 image represents it without aliasing.
+const Vec3 kSunAxis = normalize(Vec3{0.4, 0.7, -0.3});
+Vec3 sunSkyRadiance(Vec3 d) {
+  double sky = 0.5 + 0.5 * std::max(d.y, 0.0);
+  double sun = 40.0 * std::exp((dot(d, kSunAxis) - 1.0) / 0.004);
+  return Vec3{sky, sky, 1.2 * sky} + Vec3{sun, 0.9 * sun, 0.8 * sun};
+}
+
+const std::vector<EquirectImage>& prefilteredSunSky() {
+  static const std::vector<EquirectImage> levels = prefilterEnvironment(renderEquirect(128, 64, sunSkyRadiance));
+  return levels;
+}
+
+}  // namespace
+
+TEST(Prefilter, LevelsHalveResolutionAndMapRoughnessLinearly) {
+  const std::vector<EquirectImage>& levels = prefilteredSunSky();
+  ASSERT_EQ(levels.size(), 5u);
+  for (int m = 0; m < 5; ++m) {
+    EXPECT_EQ(levels[size_t(m)].width, 128 >> m);
+    EXPECT_EQ(levels[size_t(m)].height, 64 >> m);
+    EXPECT_DOUBLE_EQ(prefilterLevelRoughness(m, 5), m / 4.0);
+  }
+}
+
+TEST(Prefilter, ConstantEnvironmentStaysConstantAtEveryLevel) {
+  Vec3 L{0.5, 2.0, 7.0};
+  for (const EquirectImage& level : prefilterEnvironment(renderEquirect(64, 32, [&](Vec3) { return L; }))) {
+    for (int row = 0; row < level.height; ++row)
+      for (int column = 0; column < level.width; ++column) {
+        Vec3 v = level.texel(column, row);
+        EXPECT_NEAR(v.x / L.x, 1.0, 1e-5);
+        EXPECT_NEAR(v.y / L.y, 1.0, 1e-5);
+        EXPECT_NEAR(v.z / L.z, 1.0, 1e-5);
+      }
+  }
+}
+
+TEST(Prefilter, LevelZeroReproducesTheSource) {
+  EquirectImage source = renderEquirect(128, 64, sunSkyRadiance);
+  const EquirectImage& level0 = prefilteredSunSky()[0];
+  for (int row = 0; row < source.height; ++row)
+    for (int column = 0; column < source.width; ++column) {
+      Vec3 want = source.texel(column, row), got = level0.texel(column, row);
+      EXPECT_NEAR(got.x, want.x, 1e-5 * want.x);
+      EXPECT_NEAR(got.y, want.y, 1e-5 * want.y);
+      EXPECT_NEAR(got.z, want.z, 1e-5 * want.z);
+    }
+}
+
+TEST(Prefilter, EveryLevelKeepsTheMeanRadiance) {
+  // A zonal, normalised lobe leaves the sphere's mean unchanged; what moves it is the discrete
+  // sampling and the mip selection.
+  Vec3 source = meanRadiance(renderEquirect(128, 64, sunSkyRadiance));
+  for (const EquirectImage& level : prefilteredSunSky()) {
+    Vec3 mean = meanRadiance(level);
+    std::printf("level %dx%d mean / source mean: %.4f %.4f %.4f\n", level.width, level.height, mean.x / source.x,
+                mean.y / source.y, mean.z / source.z);
+    EXPECT_NEAR(mean.x / source.x, 1.0, 0.02);
+    EXPECT_NEAR(mean.y / source.y, 1.0, 0.02);
+    EXPECT_NEAR(mean.z / source.z, 1.0, 0.02);
+  }
+}
+
+TEST(Prefilter, RoughLevelsMatchTheLobeIntegral) {
+  // Levels 2 (r = 0.5) and 4 (r = 1) at the texel nearest the sun, one 88° away and one opposite.
+  const std::vector<EquirectImage>& levels = prefilteredSunSky();
+  for (int m : {2, 4}) {
+    const EquirectImage& level = levels[size_t(m)];
+    double r = prefilterLevelRoughness(m, 5);
+    double s, t;
+    Vec3 away = normalize(kSunAxis + Vec3{0.0, -1.2, 0.0});
+    for (Vec3 target : {kSunAxis, away, kSunAxis * -1.0}) {
+      equirectCoordinates(target, &s, &t);
+      int column = std::min(int(s * level.width), level.width - 1), row = std::min(int(t * level.height), level.height - 1);
+      Vec3 want = toVec3(ref::ggxLobeAverageByGrid([](glm::dvec3 d) { return toGlm(sunSkyRadiance(toVec3(d))); },
+                                                    toGlm(equirectDirection(level, column, row)), r * r));
+      Vec3 got = level.texel(column, row);
+      std::printf("level %d texel (%d, %d): prefiltered %.4f, lobe integral %.4f\n", m, column, row, got.x, want.x);
+      EXPECT_NEAR(got.x / want.x, 1.0, 0.02) << "level " << m;
+      EXPECT_NEAR(got.z / want.z, 1.0, 0.02) << "level " << m;
+    }
+  }
+}
+
+TEST(Prefilter, RejectsSourcesThatDoNotHalveEvenly) {
+  EXPECT_THROW(prefilterEnvironment(EquirectImage(96, 24)), std::invalid_argument);  // not 2h × h
+  PrefilterOptions options;
+  options.levels = 5;
+  EXPECT_THROW(prefilterEnvironment(EquirectImage(48, 24), options), std::invalid_argument);  // 24 % 16 ≠ 0
+  options.levels = 0;
+  EXPECT_THROW(prefilterEnvironment(EquirectImage(64, 32), options), std::invalid_argument);
+}
