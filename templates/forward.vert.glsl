@@ -20,6 +20,9 @@ void main() {
 #if defined(FACET_DIRECTIONAL_LIGHT)
     irradiance += frame.lightColor.rgb * (clamp(dot(n, normalize(frame.lightDirection.xyz)), 0.0, 1.0) * INV_PI);
 #endif
+#if defined(FACET_GAMMA_HACK)
+    irradiance = sqrt(irradiance);  // gamma hack: light encoded per vertex, γ = 2 (shading_standard.glsl)
+#endif
     v_diffuseLight = irradiance;
 #endif
     gl_Position = frame.viewProjection * worldPosition;

@@ -27,16 +27,19 @@ std::vector<std::string> exampleMaterials() {
   return files;
 }
 
-std::optional<compiler::BuildResult> buildFile(const std::string& path) { return buildText(readText(path), path); }
+std::optional<compiler::BuildResult> buildFile(const std::string& path, const compiler::BuildOptions& options) {
+  return buildText(readText(path), path, options);
+}
 
-std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path) {
+std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path,
+                                               const compiler::BuildOptions& options) {
   ir::SourceFile file{path, text};
   ir::Diagnostics diags(file);
   auto material = ir::compileSource(file, diags);
   EXPECT_TRUE(material.has_value()) << diags.format();
   if (!material) return std::nullopt;
   compiler::BuildError error;
-  auto built = compiler::buildMaterial(*material, {}, &error);
+  auto built = compiler::buildMaterial(*material, options, &error);
   EXPECT_TRUE(built.has_value()) << error.message;
   return built;
 }
