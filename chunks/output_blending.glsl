@@ -5,7 +5,13 @@
 //   additive     premultiplied (rgb·α, α): the blend unit adds src to dst
 // Premultiplied output lets one blend function serve every alpha, and lets emissive surfaces
 // add light while being see-through (Porter & Duff 1984; Filament's transparent mode).
+// With FACET_GAMMA_HACK (low tier) the colour arrives gamma-encoded with γ = 2 and is squared back
+// to linear first: the HDR target, blending and the post pass (tone map, sRGB encode) all work on
+// linear values, for every tier alike. One multiply per pixel (see shading_standard.glsl).
 vec4 blend_output(vec3 color, float alpha) {
+#if defined(FACET_GAMMA_HACK)
+    color *= color;
+#endif
 #if defined(FACET_BLENDING_MASKED)
     if (alpha < FACET_ALPHA_CUTOFF) discard;
     return vec4(color, 1.0);

@@ -10,12 +10,31 @@
 // With FACET_VERTEX_DIFFUSE (Zioma 2015's per-vertex diffuse for mid and low tiers), the diffuse
 // irradiance arrives interpolated from the vertex stage and only specular is shaded per pixel.
 // Needs: diffuse_lambert.glsl and the tier's specular_lobe. fp16: inputs are pre-exposed.
+//
+// With FACET_GAMMA_HACK (the low tier; R. Zioma, "Optimizing PBR", SIGGRAPH 2015, "Linear/Gamma"):
+// lighting runs on gamma-encoded colours, gamma approximated by 2 (x_γ = √x). The runtime does not
+// linearise colour parameters or sRGB textures for such variants, so baseColor arrives encoded.
+//   diffuse_γ  = diffuseColor_γ · √(irradiance/π)        (√ per vertex with FACET_VERTEX_DIFFUSE)
+//   f0_γ       = 0.4 · reflectance · (1 − metallic) + metallic · baseColor_γ    (√(0.16 r²) = 0.4 r)
+//   specular_γ = √(f_s(f0_γ²) · E_light · n·l)
+// so the specular intensity is computed in linear (roughness, the lobe, n·l and the light are
+// linear quantities) and converted with a square root before it is added to the gamma-space
+// diffuse. For a Fresnel-free lobe (lut) f_s(f0) = S·f0 and this is the talk's
+// √(specIntensity_linear) · specColor_γ, written so that it stays right for lobes with Fresnel.
+// The sum is squared back to linear once, in blend_output (output_blending.glsl), because the
+// HDR target and the post pass expect linear values. Errors of the hack, by design: sums of
+// encoded terms square to more than the sum ((a_γ + b_γ)² = a + b + 2√(ab): highlights over lit
+// diffuse come out brighter), interpolation and surface arithmetic act on encoded values, and
+// sRGB-encoded inputs are decoded with γ = 2 instead of the sRGB curve.
 
 vec3 material_diffuse_color(MaterialInputs material) {
     return (1.0 - clamp(material.metallic, 0.0, 1.0)) * clamp(material.baseColor, 0.0, 1.0);
 }
 
 vec3 shade_standard_ambient(MaterialInputs material, vec3 ambient) {
+#if defined(FACET_GAMMA_HACK)
+    ambient = sqrt(ambient);  // radiance encoded like the colours it multiplies (γ = 2)
+#endif
     return material_diffuse_color(material) * ambient * clamp(material.ambientOcclusion, 0.0, 1.0);
 }
 
@@ -24,7 +43,12 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
     vec3 baseColor = clamp(material.baseColor, 0.0, 1.0);
     float metallic = clamp(material.metallic, 0.0, 1.0);
     float reflectance = clamp(material.reflectance, 0.0, 1.0);
+#if defined(FACET_GAMMA_HACK)
+    vec3 f0Gamma = vec3(0.4 * reflectance * (1.0 - metallic)) + metallic * baseColor;
+    vec3 f0 = f0Gamma * f0Gamma;  // the lobe works in linear
+#else
     vec3 f0 = vec3(0.16 * reflectance * reflectance * (1.0 - metallic)) + metallic * baseColor;
+#endif
     float perceptualRoughness = clamp(material.roughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
     float alpha = perceptualRoughness * perceptualRoughness;
 
@@ -34,8 +58,15 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float LoH = clamp(dot(l, h), 0.0, 1.0);
 
-    vec3 specular = specular_lobe(alpha, NoV, NoL, NoH, LoH, n, h, f0);
+    vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, f0);
+#if defined(FACET_GAMMA_HACK)
+    vec3 specularGamma = sqrt(specular * (lightColor * NoL));
 #if defined(FACET_VERTEX_DIFFUSE)
+    return specularGamma;
+#else
+    return material_diffuse_color(material) * sqrt(lightColor * (NoL * diffuse_lambert())) + specularGamma;
+#endif
+#elif defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
     return specular * lightColor * NoL;
 #else

@@ -10,7 +10,8 @@
 // docs/specular-tiers.md: (R·L)⁴ beats an n·h axis, and folding π into the /16 was chosen there.
 // fp16: RoL ∈ [0, 1] after the clamp, u = RoL⁴ ≥ 2^-14 for RoL ≥ 0.089 (smaller u only matter to
 // the flat tail of the roughest lobes); the mediump coordinate (11 bits) addresses 1/16 of a texel
-// of a 128-wide table. textureLod(…, 0.0): the table has one mip, and implicit derivatives are not
+// of a 128-wide table. The input is the tighter limit: R·L from mediump vectors is good to about
+// 2^-10, which du = 4 RoL³ dRoL makes up to about a texel near the highlight (docs/specular-tiers.md). textureLod(…, 0.0): the table has one mip, and implicit derivatives are not
 // needed (and not available outside fragment shaders).
 // The same 3 numbers are in compiler/specular_lut.h: kSpecularLutWidth, kSpecularLutHeight and
 // kSpecularLutScale (16/π = 5.0929582).

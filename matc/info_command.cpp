@@ -77,6 +77,16 @@ void printSummary(const package::ReadResult& r) {
                   static_cast<unsigned long long>(st.rawSize), static_cast<unsigned long long>(st.storedSize));
     }
   }
+  if (!pkg.textures.empty()) std::printf("textures   %zu\n", pkg.textures.size());
+  for (size_t i = 0; i < pkg.textures.size(); ++i) {
+    const package::Texture& t = pkg.textures[i];
+    std::string users;
+    for (uint32_t v : t.variants) users += (users.empty() ? "" : ", ") + pkg.variants[v].key;
+    std::printf("  %s %s %ux%u, sampled by %s, %llu bytes (%llu stored)\n", t.name.c_str(), package::toString(t.format),
+                t.width, t.height, users.empty() ? "no variant" : users.c_str(),
+                static_cast<unsigned long long>(r.textureStats[i].rawSize),
+                static_cast<unsigned long long>(r.textureStats[i].storedSize));
+  }
   printCosts(pkg);
 }
 

@@ -24,7 +24,7 @@ for scene in examples/scenes/*.json; do
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
 done
 # The three-material scene once per tier, to compare what each tier's maths looks like.
-for tier in reference high mid; do
+for tier in reference high mid low; do
   build/release/runtime/viewer/facet-view examples/scenes/spheres.json --tier "$tier" \
     --packages "$packages" --out "$images" --validation
 done

@@ -51,6 +51,9 @@ void main() {
     irradiance += punctual_diffuse(frame.punctualLights[2], worldPosition.xyz, n);
     irradiance += punctual_diffuse(frame.punctualLights[3], worldPosition.xyz, n);
 #endif
+#if defined(FACET_GAMMA_HACK)
+    irradiance = sqrt(irradiance);  // gamma hack: light encoded per vertex, γ = 2 (shading_standard.glsl)
+#endif
     v_diffuseLight = irradiance;
 #endif
     gl_Position = frame.viewProjection * worldPosition;

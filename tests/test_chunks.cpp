@@ -360,7 +360,7 @@ TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
         if (NoL <= 0.0 || VoH <= 0.0) continue;
         float cos2 = NoH * NoH, t = 1.0 + tanTheta * tanTheta / (alpha * alpha);
         float D = 1.0 / (PI * alpha * alpha * cos2 * cos2 * t * t);
-        vec3 f = specular_lobe(alpha, NoV, NoL, NoH, VoH, n, h, vec3(1.0));
+        vec3 f = specular_lobe(sqrt(alpha), alpha, NoV, NoL, NoH, VoH, n, v, l, h, vec3(1.0));
         sum += f.x * NoL * 4.0 * VoH / (D * NoH);
     }
     result.x = sum / float(N);)";

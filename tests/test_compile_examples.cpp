@@ -35,6 +35,14 @@ TEST(Examples, EveryMaterialCompilesToValidShadersForAllTargets) {
     auto read = facet::package::read(facet::package::write(built->package));
     ASSERT_TRUE(read.package) << read.error;
     ASSERT_FALSE(read.package->variants.empty());
+    // Every supported tier is built by default, the low tier's table with it.
+    for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir0", "low.dir1"}) {
+      bool found = false;
+      for (const auto& variant : read.package->variants) found = found || variant.key == key;
+      EXPECT_TRUE(found) << key;
+    }
+    ASSERT_EQ(read.package->textures.size(), 1u);
+    EXPECT_EQ(read.package->textures[0].texels, built->package.textures[0].texels);
     for (const auto& variant : read.package->variants) {
       SCOPED_TRACE(variant.key);
       for (Stage stage : {Stage::Vertex, Stage::Fragment}) {

@@ -25,7 +25,7 @@ TEST(MatcCli, CompileWritesAPackageThatInfoDescribes) {
   std::string dir = facet::test::scratchDir("cli-compile");
   auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/red.matpkg");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("red_plastic: 6 variants"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("red_plastic: 8 variants"), std::string::npos) << r.out;
 
   r = run(kMatc + " info " + dir + "/red.matpkg");
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -47,9 +47,9 @@ TEST(MatcCli, InfoPrintsAnyShaderOfAnyTarget) {
   auto msl = run(base + "msl");
   EXPECT_NE(msl.out.find("fragment main0_out main0("), std::string::npos);
 
-  auto missing = run(kMatc + " info " + dir + "/g.matpkg --variant low.dir1 --stage fragment --target msl");
+  auto missing = run(kMatc + " info " + dir + "/g.matpkg --variant low.dir2 --stage fragment --target msl");
   EXPECT_EQ(missing.exitCode, 1);
-  EXPECT_NE(missing.err.find("package has no variant 'low.dir1' (it has: reference.dir0, reference.dir1, high.dir0, high.dir1, mid.dir0, mid.dir1)"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("package has no variant 'low.dir2' (it has: reference.dir0, reference.dir1, high.dir0, high.dir1, mid.dir0, mid.dir1, low.dir0, low.dir1)"), std::string::npos) << missing.err;
 }
 
 TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
@@ -105,7 +105,7 @@ TEST(MatcCli, SceneManifestBuildsOnlyTheVariantsItNeeds) {
   auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir +
                "/r.matpkg --scene " + scene);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("red_plastic: 1 variant for scene " + scene + " (6 without it)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("red_plastic: 1 variant for scene " + scene + " (8 without it)"), std::string::npos) << r.out;
   auto info = run(kMatc + " info " + dir + "/r.matpkg");
   EXPECT_NE(info.out.find("variants   1\n  high.dir1\n"), std::string::npos) << info.out;
 
@@ -123,4 +123,13 @@ TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("red_plastic: 2 variants"), std::string::npos) << r.out;
   EXPECT_EQ(run(kMatc + " compile " + mat + " -o " + dir + "/r.matpkg --tiers ultra").exitCode, 2);
+
+  // The low tier alone: its two variants, and the specular table they sample (dir1 only).
+  r = run(kMatc + " compile " + mat + " -o " + dir + "/low.matpkg --tiers low");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("red_plastic: 2 variants"), std::string::npos) << r.out;
+  auto info = run(kMatc + " info " + dir + "/low.matpkg");
+  EXPECT_NE(info.out.find("variants   2\n  low.dir0\n"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("textures   1\n  facet_specularLut r8_unorm 128x64, sampled by low.dir1, 8192 bytes ("),
+            std::string::npos) << info.out;
 }

@@ -75,8 +75,24 @@ pkg::Package samplePackage() {
     };
     p.variants.push_back(std::move(v));
   }
+  // A generated table, sampled by variants 0 and 2 (TEXS section).
+  pkg::Texture lut;
+  lut.name = "facet_specularLut";
+  lut.width = 16;
+  lut.height = 8;
+  for (uint32_t i = 0; i < lut.width * lut.height; ++i) lut.texels.push_back(uint8_t(i * 7 % 256));
+  lut.variants = {0, 2};
+  p.textures.push_back(std::move(lut));
   return p;
 }
+
+// The TEXS payload's first entry, as docs/package-format.md lays it out.
+struct TexsEntry {
+  size_t at;        // the entry's name length
+  size_t width;     // u32 width; height, format, reserved, blob index and variant count follow
+  size_t variants;  // the first variant index
+};
+TexsEntry firstTexture(const std::vector<uint8_t>& b);
 
 uint64_t loadLE(const std::vector<uint8_t>& b, size_t at, int n) {
   uint64_t v = 0;
@@ -113,6 +129,12 @@ size_t tocEntry(const std::vector<uint8_t>& b, const char* tag) {
   }
   ADD_FAILURE() << "no section " << tag;
   return 0;
+}
+
+TexsEntry firstTexture(const std::vector<uint8_t>& b) {
+  size_t at = sectionOffset(b, "TEXS") + 4;
+  size_t width = at + 4 + loadLE(b, at, 4);
+  return {at, width, width + 20};
 }
 
 void expectRejected(const std::vector<uint8_t>& bytes, const std::string& expectedPart) {
@@ -254,7 +276,7 @@ TEST(Package, HostileCountsDoNotAllocate) {
 
   hostile([](auto& b) { storeLE(b, 12, 0xFFFFFFFF, 4); }, "sections");
   hostile([](auto& b) { b.resize(100); storeLE(b, 16, 100, 8); },
-          "package is truncated: table of contents ends at byte 128 but the file has 100 bytes");
+          "package is truncated: table of contents ends at byte 152 but the file has 100 bytes");  // 32 + 5 × 24
   hostile([](auto& b) { storeLE(b, tocEntry(b, "BDAT") + 16, ~uint64_t(0) - 4, 8); }, "past the end");
   hostile([](auto& b) { storeLE(b, tocEntry(b, "BDAT") + 8, ~uint64_t(0) - 4, 8); }, "past the end");
   hostile([](auto& b) { storeLE(b, tocEntry(b, "META") + 8, 40, 8); }, "inside the header");
@@ -382,4 +404,126 @@ TEST(Package, ReadFileReportsMissingFile) {
   pkg::ReadResult r = pkg::readFile("/nonexistent/facet/brick.matpkg");
   EXPECT_FALSE(r.package.has_value());
   EXPECT_NE(r.error.find("/nonexistent/facet/brick.matpkg"), std::string::npos) << r.error;
+}
+
+TEST(Package, TexturesRoundTripAndShareBlobsWithEqualContent) {
+  pkg::Package p = samplePackage();
+  pkg::Texture copy = p.textures[0];
+  copy.name = "second_table";
+  copy.variants = {1};
+  p.textures.push_back(copy);
+  std::vector<uint8_t> bytes = pkg::write(p);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  ASSERT_EQ(r.textureStats.size(), 2u);
+  EXPECT_EQ(r.textureStats[0].rawSize, 128u);
+  EXPECT_GT(r.textureStats[0].storedSize, 0u);
+  EXPECT_EQ(r.textureStats[1].storedSize, 0u);  // same texels: one blob, charged to the first
+  EXPECT_EQ(pkg::write(*r.package), bytes);
+}
+
+// TEXS is written only when there are textures: a package without them keeps the four sections
+// (and the bytes) of the format before TEXS existed.
+TEST(Package, TexturesAreAnOptionalFifthSection) {
+  pkg::Package p = samplePackage();
+  std::vector<uint8_t> with = pkg::write(p);
+  EXPECT_EQ(loadLE(with, 12, 4), 5u);
+  EXPECT_EQ(std::memcmp(&with[32 + 2 * 24], "TEXS", 4), 0);  // META, VARS, TEXS, BTAB, BDAT
+  p.textures.clear();
+  std::vector<uint8_t> without = pkg::write(p);
+  EXPECT_EQ(loadLE(without, 12, 4), 4u);
+  for (uint32_t i = 0; i < 4; ++i) EXPECT_NE(std::memcmp(&without[32 + i * 24], "TEXS", 4), 0);
+  pkg::ReadResult r = pkg::read(without);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_TRUE(r.package->textures.empty());
+}
+
+// docs/package-format.md, "Section TEXS": the example's bytes, pinned.
+TEST(Package, TexsSectionMatchesTheDocumentedExample) {
+  pkg::Package p;
+  p.compilerVersion = "matc 0.1.0";
+  p.material = {"m", "lit", "opaque", false, {}, 0};
+  p.variants = {{"low.dir0", {}}, {"low.dir1", {}}};
+  p.textures = {{"lut", 4, 2, pkg::TexelFormat::R8Unorm, {0, 64, 128, 255, 0, 16, 32, 64}, {1}}};
+  std::vector<uint8_t> b = pkg::write(p);
+  const size_t at = sectionOffset(b, "TEXS");
+  const uint8_t expected[] = {
+      0x01, 0x00, 0x00, 0x00,                          // 1 texture
+      0x03, 0x00, 0x00, 0x00, 'l',  'u',  't',         // name "lut"
+      0x04, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00,  // 4 x 2
+      0x00, 0x00, 0x00, 0x00,                          // r8_unorm, reserved
+      0x00, 0x00, 0x00, 0x00,                          // blob 0
+      0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00,  // 1 variant: index 1 ("low.dir1")
+  };
+  ASSERT_EQ(loadLE(b, tocEntry(b, "TEXS") + 16, 8), sizeof expected);
+  EXPECT_EQ(std::vector<uint8_t>(b.begin() + long(at), b.begin() + long(at + sizeof expected)),
+            std::vector<uint8_t>(std::begin(expected), std::end(expected)));
+  pkg::ReadResult r = pkg::read(b);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+}
+
+// Every field of a TEXS entry is checked; each case has a valid checksum.
+TEST(Package, HostileTextureFieldsAreRejected) {
+  const std::vector<uint8_t> good = pkg::write(samplePackage());
+  auto hostile = [&](auto edit, const std::string& expectedPart) {
+    std::vector<uint8_t> b = good;
+    edit(b);
+    resealChecksum(b);
+    expectRejected(b, expectedPart);
+  };
+  const TexsEntry t = firstTexture(good);
+  const size_t texs = sectionOffset(good, "TEXS");
+  hostile([&](auto& b) { storeLE(b, texs, 0xFFFFFFFF, 4); }, "texture count 4294967295");
+  hostile([&](auto& b) { storeLE(b, texs, 0, 4); }, "unexpected trailing bytes");
+  hostile([&](auto& b) { storeLE(b, t.at, 0x7FFFFFFF, 4); }, "texture name at byte");
+  hostile([&](auto& b) { b[t.at + 4] = '9'; }, "not an identifier");
+  hostile([&](auto& b) { b[t.at + 5] = ' '; }, "not an identifier");
+  hostile([&](auto& b) { storeLE(b, t.width, 0, 4); }, "is 0x8; each side must be 1..16384");
+  hostile([&](auto& b) { storeLE(b, t.width + 4, 16385, 4); }, "is 16x16385");
+  hostile([&](auto& b) { storeLE(b, t.width, 8, 4); }, "needs 64 bytes of texels but blob");
+  hostile([&](auto& b) { b[t.width + 8] = 1; }, "unknown texel format 1");
+  hostile([&](auto& b) { b[t.width + 9] = 1; }, "reserved bits set");
+  hostile([&](auto& b) { b[t.width + 11] = 0x80; }, "reserved bits set");
+  hostile([&](auto& b) { storeLE(b, t.width + 12, 99, 4); }, "refers to blob 99");
+  hostile([&](auto& b) { storeLE(b, t.width + 12, 0, 4); }, "needs 128 bytes of texels but blob 0 holds");
+  hostile([&](auto& b) { storeLE(b, t.width + 16, 0x40000000, 4); }, "variant index count 1073741824");
+  hostile([&](auto& b) { storeLE(b, t.variants, 3, 4); }, "lists variant 3 but the package has 3 variants");
+  hostile([&](auto& b) { storeLE(b, t.variants + 4, 0, 4); }, "lists variant 0 after 0 (indices must increase)");
+}
+
+TEST(Package, TwoTextureSectionsAreRejected) {
+  // Two TEXS entries in the table of contents, both valid on their own: the second is appended
+  // as a copy of the first's bytes after the last section.
+  std::vector<uint8_t> b = pkg::write(samplePackage());
+  const size_t entry = tocEntry(b, "TEXS");
+  const uint64_t offset = loadLE(b, entry + 8, 8), size = loadLE(b, entry + 16, 8);
+  std::vector<uint8_t> payload(b.begin() + long(offset), b.begin() + long(offset + size));
+  // Rebuild: header + 6 TOC entries (the old 5 shifted by 24 bytes) + sections + the copy.
+  uint32_t count = uint32_t(loadLE(b, 12, 4));
+  std::vector<uint8_t> out(b.begin(), b.begin() + 32);
+  for (uint32_t i = 0; i < count; ++i) {
+    std::vector<uint8_t> e(b.begin() + long(32 + i * 24), b.begin() + long(32 + (i + 1) * 24));
+    storeLE(e, 8, loadLE(e, 8, 8) + 24, 8);
+    out.insert(out.end(), e.begin(), e.end());
+  }
+  std::vector<uint8_t> extra(b.begin() + long(entry), b.begin() + long(entry + 24));
+  storeLE(extra, 8, b.size() + 24, 8);
+  out.insert(out.end(), extra.begin(), extra.end());
+  out.insert(out.end(), b.begin() + long(32 + count * 24), b.end());
+  out.insert(out.end(), payload.begin(), payload.end());
+  storeLE(out, 12, count + 1, 4);
+  storeLE(out, 16, out.size(), 8);
+  resealChecksum(out);
+  expectRejected(out, "more than one 'TEXS' section");
+}
+
+TEST(Package, TextureWhoseTexelsDoNotFitItsSizeIsRejected) {
+  pkg::Package p = samplePackage();
+  p.textures[0].texels.pop_back();
+  expectRejected(pkg::write(p), "needs 128 bytes of texels but blob");
+  p = samplePackage();
+  p.textures[0].variants = {2, 0};
+  expectRejected(pkg::write(p), "indices must increase");
 }

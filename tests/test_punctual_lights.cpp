@@ -189,15 +189,15 @@ TEST(PunctualLights, PaddedPermutationAddsUpLikeSeparateLights) {
   EXPECT_TRUE(vk->validationErrors().empty());
 }
 
-// Every tier builds and renders its punctual-light variants; mid lights diffuse per vertex
-// (forward.vert.glsl), so it is measured against reference rather than held to the CPU.
+// Every tier builds and renders its punctual-light variants; mid and low light diffuse per vertex
+// (forward.vert.glsl), so they are measured against reference rather than held to the CPU.
 TEST(PunctualLights, EveryTierRendersAndIsMeasuredAgainstReference) {
   const std::string packages = plasticPackages("point-tiers");
   std::string error;
   auto vk = facet::runtime::createVulkanBackend({true}, &error);
   ASSERT_TRUE(vk) << error;
   std::map<std::string, FrameResult> images;
-  for (const char* tier : {"reference", "high", "mid"}) {
+  for (const char* tier : {"reference", "high", "mid", "low"}) {
     const std::string json = std::string(R"({"width": 96, "height": 96, "tier": ")") + tier + R"(",
       "camera": {"position": [0, 0, 5], "fovY": 30, "aperture": 1.4, "shutter": 0.02}, "sky": {"luminance": 20},
       "lights": [{"type": "point", "position": [1.5, 1.5, 1.5], "intensity": 200},
@@ -207,10 +207,12 @@ TEST(PunctualLights, EveryTierRendersAndIsMeasuredAgainstReference) {
     ASSERT_TRUE(render(json, packages, *vk, &images[tier], &frame, &error)) << tier << ": " << error;
     EXPECT_EQ(frame->variantKey(), std::string(tier) + ".dir0.pt2");
   }
-  for (const char* tier : {"high", "mid"}) {
+  for (const char* tier : {"high", "mid", "low"}) {
     double db = facet::test::psnr(images[tier].ldr, images["reference"].ldr);
     std::printf("punctual lights, tier %-4s vs reference: %.1f dB (8-bit PSNR)\n", tier, db);
-    EXPECT_GT(db, 30.0) << tier;
+    // Measured: high 99 dB (lavapipe runs mediump at fp32), mid 58.7, low 31.2 (LUT specular and
+    // the gamma hack); the floors leave a few dB of margin.
+    EXPECT_GT(db, std::string(tier) == "low" ? 28.0 : 50.0) << tier;
   }
   EXPECT_TRUE(vk->validationErrors().empty());
 }

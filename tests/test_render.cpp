@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <fstream>
 #include <cmath>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "facet/render_backend.h"
+#include "facet/permutations/variant_key.h"
 #include "facet/runtime/scene_frame.h"
+#include "reference/specular_tiers.h"
 #include "reference/standard_model.h"
 #include "sphere_pixels.h"
 #include "test_support.h"
@@ -118,12 +121,18 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
 
 TEST(SceneErrors, VariantNotBuiltForTheSceneIsAClearError) {
   std::string error;
-  std::string packages = compileExamplePackages();
+  // Built for two tiers only, as `matc compile --tiers reference,high` would.
+  facet::compiler::BuildOptions options;
+  options.tiers = {facet::permutations::Tier::Reference, facet::permutations::Tier::High};
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), options);
+  ASSERT_TRUE(built);
+  std::string packages = facet::test::scratchDir("two-tier-packages");
+  ASSERT_TRUE(facet::package::writeFile(packages + "/red_plastic.matpkg", facet::package::write(built->package), &error));
   auto scene = facet::runtime::parseScene("lowend.json", R"({"tier": "low", "sun": {}, "objects": [{"material": "red_plastic"}]})", &error);
   ASSERT_TRUE(scene) << error;
   auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
   EXPECT_FALSE(frame);
-  EXPECT_NE(error.find("was not built with variant 'low.dir1' (built: reference.dir0, reference.dir1, high.dir0, high.dir1, mid.dir0, mid.dir1)"),
+  EXPECT_NE(error.find("was not built with variant 'low.dir1' (built: reference.dir0, reference.dir1, high.dir0, high.dir1)"),
             std::string::npos) << error;
 }
 
@@ -307,4 +316,163 @@ TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
                {solid.r + background.r, solid.g + background.g, solid.b + background.b}, "additive");
     EXPECT_TRUE(backend->validationErrors().empty());
   }
+}
+
+// ---- The low tier: the gamma-hack contract and the LUT decode, end to end ----------------------
+
+namespace {
+
+double linearToSrgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
+
+}  // namespace
+
+// The contract of chunks/shading_standard.glsl and output_blending.glsl: in the low tier colours
+// reach the shader as authored (sRGB-encoded: the runtime neither converts colour parameters nor
+// lets the sampler decode sRGB textures) and the fragment squares its result for the linear HDR
+// target. An unlit surface shows it bare: its HDR value is the authored value squared (γ = 2),
+// where the linear tiers give the sRGB decode. The texture's texels are 204, 102, 51 (0.8, 0.4, 0.2).
+TEST(LowTier, UnlitOutputIsTheAuthoredSrgbValueSquared) {
+  std::string packages = facet::test::writePackagesFromTexts(
+      "low-unlit",
+      {"material flat_colour { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }",
+       "material flat_texture { shading unlit\n param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
+       " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"});
+  std::string error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  auto gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(vk && gl) << error;
+  const auto render = [&](facet::runtime::RenderBackend& backend, const std::string& material, const std::string& tier) {
+    std::string json = R"({"width": 32, "height": 32, "tier": ")" + tier + R"(", "sky": {"luminance": 6000},
+      "camera": {"position": [0, 0, 4], "fovY": 40}, "objects": [{"material": ")" + material + R"("}]})";
+    FrameResult result;
+    EXPECT_TRUE(renderScene(json, packages, backend, &result, &error)) << error;
+    if (result.hdr.empty()) return Rgb{-1, -1, -1};
+    const float* p = &result.hdr[(16 * 32 + 16) * 4];
+    return Rgb{p[0], p[1], p[2]};
+  };
+  for (facet::runtime::RenderBackend* backend : {vk.get(), gl.get()}) {
+    SCOPED_TRACE(backend->name());
+    expectNear(render(*backend, "flat_colour", "low"), {0.64, 0.16, 0.04}, "colour parameter, low");
+    expectNear(render(*backend, "flat_texture", "low"), {0.64, 0.16, 0.04}, "sRGB texture, low");
+    const Rgb linear{std::pow((0.8 + 0.055) / 1.055, 2.4), std::pow((0.4 + 0.055) / 1.055, 2.4),
+                     std::pow((0.2 + 0.055) / 1.055, 2.4)};
+    expectNear(render(*backend, "flat_colour", "high"), linear, "colour parameter, high");
+    expectNear(render(*backend, "flat_texture", "high"), linear, "sRGB texture, high");
+    EXPECT_TRUE(backend->validationErrors().empty());
+  }
+}
+
+TEST(LowTier, ColourParametersStayAsAuthoredForTheGammaHack) {
+  std::string error;
+  std::string packages = compileExamplePackages();
+  auto material = facet::runtime::LoadedMaterial::load(packages + "/red_plastic.matpkg", &error);
+  ASSERT_TRUE(material) << error;
+  // red_plastic: baseColor (0.80, 0.08, 0.06) authored, at offset 0 of its block.
+  auto floats = [](const std::vector<uint8_t>& block) {
+    float f[3];
+    std::memcpy(f, block.data(), sizeof f);
+    return std::vector<double>{f[0], f[1], f[2]};
+  };
+  using facet::runtime::ColorEncoding;
+  auto encoded = material->paramBlock({}, &error, ColorEncoding::Srgb);
+  ASSERT_TRUE(encoded) << error;
+  std::vector<double> defaults = floats(*encoded);
+  EXPECT_NEAR(defaults[0], 0.80, 1e-6);
+  EXPECT_NEAR(defaults[1], 0.08, 1e-6);
+  EXPECT_NEAR(defaults[2], 0.06, 1e-6);
+  auto given = material->paramBlock({{"baseColor", {0.5, 0.25, 1.0}}}, &error, ColorEncoding::Srgb);
+  ASSERT_TRUE(given) << error;
+  EXPECT_EQ(floats(*given), (std::vector<double>{0.5, 0.25, 1.0}));
+  auto linear = material->paramBlock({{"baseColor", {0.5, 0.25, 1.0}}}, &error);
+  ASSERT_TRUE(linear) << error;
+  EXPECT_NEAR(floats(*linear)[0], 0.21404, 1e-5);  // the linear tiers still decode
+}
+
+// The low tier's brushed_gold (a metal: no diffuse, no ambient) against the documented formula in
+// double: HDR = S · f0_γ² · E · n·l with S the table sampled bilinearly at u = max(R·L, 0)⁴,
+// v = roughness, decoded ×16/π, and f0_γ the authored (sRGB) tint; the gamma hack's √ and the
+// final square cancel for a term with nothing added to it. The tessellated sphere's normals differ
+// from the analytic one's and the table is steep in the highlight, so each point accepts the
+// range the formula takes for R·L within ±0.01 of the analytic value, widened by one table step
+// (see `lsb`), ±1 % ± 0.002. A wrong scale, table, f0 encoding or output square fails it.
+TEST(LowTier, MetalPixelsMatchTheLutFormula) {
+  std::string error;
+  std::string packages = compileExamplePackages();
+  auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/sphere.json"), &error);
+  ASSERT_TRUE(scene) << error;
+  scene->tier = "low";
+  scene->objects[0].material = "brushed_gold";
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+  ASSERT_TRUE(frame) << error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  FrameResult image;
+  ASSERT_TRUE(vk->render(frame->frame(), &image, &error)) << error;
+  EXPECT_TRUE(vk->validationErrors().empty());
+
+  auto material = facet::runtime::LoadedMaterial::load(packages + "/brushed_gold.matpkg", &error);
+  ASSERT_TRUE(material) << error;
+  glm::dvec3 f0Gamma(0);
+  double roughness = 0;
+  for (const auto& p : material->info().params) {
+    if (p.name == "tint")
+      f0Gamma = {linearToSrgb(p.defaultValue[0]), linearToSrgb(p.defaultValue[1]), linearToSrgb(p.defaultValue[2])};
+    if (p.name == "roughness") roughness = p.defaultValue[0];
+  }
+  ASSERT_GT(roughness, 0.0);
+  const auto& table = material->package().textures.at(0);
+  ASSERT_EQ(table.name, "facet_specularLut");
+  const double scale = 16.0 / facet::reference::kPi;
+  // lavapipe (like llvmpipe) filters 8-bit UNORM textures in 8-bit arithmetic: each sample comes
+  // back as a whole number of table steps (measured: within 3e-4 of one), the bilinear value
+  // rounded. So one step of slack.
+  const double lsb = scale / 255.0;
+  auto intensity = [&](double RoL) {
+    double c = std::clamp(RoL, 0.0, 1.0);
+    double u = facet::reference::lutTexelCoordinate(c * c * c * c, table.width);
+    double v = facet::reference::lutTexelCoordinate(roughness, table.height);
+    return facet::reference::sampleR8Bilinear(table.texels, table.width, table.height, u, v) * scale;
+  };
+
+  const auto& cam = scene->camera;
+  glm::dmat4 inverse = glm::inverse(glm::perspective(glm::radians(cam.fovYDegrees), double(scene->width) / scene->height,
+                                                     cam.nearPlane, cam.farPlane) *
+                                    glm::lookAt(cam.position, cam.target, cam.up));
+  const auto& f = frame->frame().frame;
+  glm::dvec3 l(f.lightDirection[0], f.lightDirection[1], f.lightDirection[2]);
+  glm::dvec3 light(f.lightColor[0], f.lightColor[1], f.lightColor[2]);
+  int checked = 0, lit = 0;
+  for (uint32_t y = 4; y < scene->height; y += 4) {
+    for (uint32_t x = 4; x < scene->width; x += 4) {
+      glm::dvec4 ndcNear((x + 0.5) / scene->width * 2 - 1, 1 - (y + 0.5) / scene->height * 2, -1, 1);
+      glm::dvec4 ndcFar = ndcNear;
+      ndcFar.z = 1;
+      glm::dvec4 a = inverse * ndcNear, b = inverse * ndcFar;
+      glm::dvec3 origin = glm::dvec3(a) / a.w;
+      glm::dvec3 dir = glm::normalize(glm::dvec3(b) / b.w - origin);
+      double half = glm::dot(origin, dir), c = glm::dot(origin, origin) - 1.0, disc = half * half - c;
+      if (disc <= 0) continue;
+      glm::dvec3 n = glm::normalize(origin + (-half - std::sqrt(disc)) * dir);  // unit sphere at the origin
+      glm::dvec3 v = -dir;
+      if (glm::dot(n, v) < 0.25) continue;
+      double NoL = std::clamp(glm::dot(n, l), 0.0, 1.0);
+      double RoL = glm::dot(glm::reflect(-v, n), l);
+      double lo = 1e30, hi = 0;
+      for (int k = -4; k <= 4; ++k) {
+        double s = intensity(RoL + 0.0025 * k);
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+      }
+      const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
+      for (int ch = 0; ch < 3; ++ch) {
+        double k = f0Gamma[ch] * f0Gamma[ch] * light[ch] * NoL;
+        EXPECT_GE(got[ch], (lo - lsb) * k * 0.99 - 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
+        EXPECT_LE(got[ch], (hi + lsb) * k * 1.01 + 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
+      }
+      ++checked;
+      lit += lo * NoL > 0.5;
+    }
+  }
+  EXPECT_GT(checked, 500);
+  EXPECT_GT(lit, 10);  // the highlight is among the points, not only the black tail
 }

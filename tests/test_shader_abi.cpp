@@ -2,6 +2,8 @@
 // and vertex input locations are read back from SPIR-V with SPIRV-Cross and compared with
 // shader_abi.h and with the parameter layout the package records.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <spirv_cross_c.h>
 
 #include <cstddef>
@@ -9,6 +11,7 @@
 #include <map>
 
 #include "facet/shader_abi.h"
+#include "facet/compiler/assemble.h"
 #include "test_support.h"
 
 namespace {
@@ -266,4 +269,25 @@ TEST(ShaderAbi, ParameterRangedBeyondFp16IsAHighpUniform) {
     EXPECT_NE(glsl.find("    mediump float scale;"), std::string::npos) << glsl;
   }
   EXPECT_EQ(checked, 1);
+}
+
+// The `lut` tier's table: a sampler at set 1, binding kSpecularLutBinding, named as the runtime
+// binds it in GL, in the variants the package lists for it, and in no other.
+TEST(ShaderAbi, SpecularLutSamplerIsAtItsAbiSlotInTheVariantsThatSampleIt) {
+  EXPECT_STREQ(facet::compiler::kSpecularLutSamplerName, facet::abi::kSpecularLutName);
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  ASSERT_EQ(built->package.textures.size(), 1u);
+  const auto& lut = built->package.textures[0];
+  for (uint32_t i = 0; i < built->package.variants.size(); ++i) {
+    const auto& variant = built->package.variants[i];
+    SCOPED_TRACE(variant.key);
+    Reflection fs = reflect(spirv(variant, facet::package::Stage::Fragment));
+    bool listed = std::find(lut.variants.begin(), lut.variants.end(), i) != lut.variants.end();
+    EXPECT_EQ(fs.samplers.count(facet::abi::kSpecularLutName), listed ? 1u : 0u);
+    EXPECT_EQ(listed, variant.key == "low.dir1");
+    if (!listed) continue;
+    EXPECT_EQ(fs.samplers.at(facet::abi::kSpecularLutName).first, facet::abi::kTextureSet);
+    EXPECT_EQ(fs.samplers.at(facet::abi::kSpecularLutName).second, facet::abi::kSpecularLutBinding);
+  }
 }

@@ -28,7 +28,9 @@ std::vector<std::string> exampleMaterials() {
   return files;
 }
 
-std::optional<compiler::BuildResult> buildFile(const std::string& path) { return buildText(readText(path), path); }
+std::optional<compiler::BuildResult> buildFile(const std::string& path, const compiler::BuildOptions& options) {
+  return buildText(readText(path), path, options);
+}
 
 std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path,
                                                const compiler::BuildOptions& options) {

@@ -22,8 +22,9 @@ std::string readText(const std::string& path);
 // Every examples/materials/*.mat, sorted.
 std::vector<std::string> exampleMaterials();
 
-// Parses, checks and builds a material file; fails the current test on any error.
-std::optional<compiler::BuildResult> buildFile(const std::string& path);
+// Parses, checks and builds a material file (every supported tier unless `options` says
+// otherwise); fails the current test on any error.
+std::optional<compiler::BuildResult> buildFile(const std::string& path, const compiler::BuildOptions& options = {});
 
 // The same for material text held in memory.
 std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path = "test.mat",

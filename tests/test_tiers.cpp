@@ -1,6 +1,7 @@
 // The tiers keep the promises the brief makes about their maths, and every tier renders.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -51,6 +52,39 @@ TEST(Tiers, ZiomaSpecularHasOneDivision) {
             costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).aluOps);
 }
 
+// The low tier's specular is one table read: no D, V or F is evaluated, so the whole fragment
+// stage has no division (mid has Zioma's one), one texture sample more than the material's own
+// (red_plastic samples none, painted_tiles one), and fewer ALU ops than mid. Without the light
+// there is no specular, and the table is neither sampled nor listed for the variant.
+TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
+  for (const char* name : {"red_plastic", "painted_tiles"}) {
+    SCOPED_TRACE(name);
+    auto built = facet::test::buildFile(facet::test::examplePath(std::string("materials/") + name + ".mat"));
+    ASSERT_TRUE(built);
+    auto low = costOf(spirvOf(*built, "low.dir1", Stage::Fragment));
+    auto mid = costOf(spirvOf(*built, "mid.dir1", Stage::Fragment));
+    EXPECT_EQ(low.divisions, 0u);
+    EXPECT_EQ(mid.divisions, 1u);
+    EXPECT_EQ(low.textureSamples, mid.textureSamples + 1);
+    EXPECT_LT(low.aluOps, mid.aluOps);
+    EXPECT_EQ(costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).textureSamples,
+              costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).textureSamples);
+
+    const auto& variants = built->package.variants;
+    ASSERT_EQ(built->package.textures.size(), 1u);
+    const auto& lut = built->package.textures[0];
+    EXPECT_EQ(lut.name, "facet_specularLut");
+    ASSERT_EQ(lut.variants.size(), 1u);
+    EXPECT_EQ(variants.at(lut.variants[0]).key, "low.dir1");
+  }
+  // A package with no `lut` variant carries no table.
+  facet::compiler::BuildOptions highOnly;
+  highOnly.tiers = {facet::permutations::Tier::High};
+  auto high = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), highOnly);
+  ASSERT_TRUE(high);
+  EXPECT_TRUE(high->package.textures.empty());
+}
+
 TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
@@ -70,12 +104,49 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
   EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).relaxedOps, 0u);
   EXPECT_GT(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   EXPECT_GT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
+  EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
+}
+
+// How many values of `a` fall outside the range of `b` over the 3×3 pixels around them, widened
+// by kNeighbourhoodSlack 8-bit steps: images that agree up to a one-pixel shift of edges. The
+// `lut` tier needs this: its table is 8-bit, so the specular tail falls in steps (one table step
+// is up to ~60 steps of the image in dark tones), and llvmpipe's GL runs GLSL ES mediump in fp16
+// where lavapipe runs RelaxedPrecision SPIR-V in fp32, so the R·L index differs by up to about a
+// texel and pixels on a step's boundary land on either side. (Measured: with every `mediump`
+// replaced by `highp` in the GL shaders, GL matches Vulkan within 2 steps.) The slack covers the
+// fp16 error inside the steepest part of the highlight (at most 3 steps seen). A step boundary
+// moves by well under a pixel; a wrong table, decode or binding changes whole regions.
+constexpr int kNeighbourhoodSlack = 4;
+int valuesOutsideNeighbourhood(const facet::runtime::FrameResult& a, const facet::runtime::FrameResult& b) {
+  int outside = 0;
+  const int w = int(a.width), h = int(a.height);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        int lo = 255, hi = 0;
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            int xx = std::clamp(x + dx, 0, w - 1), yy = std::clamp(y + dy, 0, h - 1);
+            int v = b.ldr[(size_t(yy) * w + xx) * 4 + c];
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+          }
+        }
+        int v = a.ldr[(size_t(y) * w + x) * 4 + c];
+        if (v < lo - kNeighbourhoodSlack || v > hi + kNeighbourhoodSlack) {
+          std::printf("  (%d, %d) channel %d: %d outside [%d, %d]\n", x, y, c, v, lo, hi);
+          ++outside;
+        }
+      }
+    }
+  }
+  return outside;
 }
 
 // Every supported tier of the example scene renders on both backends with no validation error,
 // the backends agree, and each tier's image is measured against `reference` (8-bit PSNR).
-// The bound is a floor that catches a broken tier, not a quality target; the figures are
-// printed for the record.
+// The bounds are floors that catch a broken tier, not quality targets; the figures are printed
+// for the record (docs/specular-tiers.md quotes them).
 TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
   std::string packages = facet::test::writeExamplePackages("tier-packages");
   std::string error;
@@ -87,7 +158,7 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
   ASSERT_TRUE(gl) << error;
 
   std::map<std::string, facet::runtime::FrameResult> images;
-  for (const char* tier : {"reference", "high", "mid"}) {
+  for (const char* tier : {"reference", "high", "mid", "low"}) {
     SCOPED_TRACE(tier);
     scene->tier = tier;
     auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
@@ -96,17 +167,74 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     ASSERT_TRUE(vk->render(frame->frame(), &a, &error)) << error;
     ASSERT_TRUE(gl->render(frame->frame(), &b, &error)) << error;
     int maxDiff = 0;
-    for (size_t i = 0; i < a.ldr.size(); ++i) maxDiff = std::max(maxDiff, std::abs(int(a.ldr[i]) - int(b.ldr[i])));
-    EXPECT_LE(maxDiff, 1) << "Vulkan and GL differ";
+    size_t within1 = 0;
+    for (size_t i = 0; i < a.ldr.size(); ++i) {
+      int d = std::abs(int(a.ldr[i]) - int(b.ldr[i]));
+      maxDiff = std::max(maxDiff, d);
+      within1 += d <= 1;
+    }
+    if (std::string(tier) != "low") {
+      EXPECT_LE(maxDiff, 1) << "Vulkan and GL differ";
+    } else {
+      double share = double(within1) / double(a.ldr.size());
+      std::printf("low tier Vulkan vs GL: max %d steps, %.2f%% of values within 1 step\n", maxDiff, 100.0 * share);
+      EXPECT_EQ(valuesOutsideNeighbourhood(a, b), 0) << "GL's image is not Vulkan's up to step boundaries";
+      EXPECT_EQ(valuesOutsideNeighbourhood(b, a), 0) << "Vulkan's image is not GL's up to step boundaries";
+      EXPECT_GE(share, 0.99);
+    }
     images[tier] = std::move(a);
   }
   EXPECT_TRUE(vk->validationErrors().empty());
   EXPECT_TRUE(gl->validationErrors().empty());
-  for (const char* tier : {"high", "mid"}) {
+  for (const char* tier : {"high", "mid", "low"}) {
     double db = psnr(images[tier].ldr, images["reference"].ldr);
     std::printf("tier %-5s vs reference: %.1f dB (8-bit PSNR, spheres.json)\n", tier, db);
     EXPECT_GT(db, 30.0) << tier;
   }
+}
+
+// The low tier of the textured example (painted_tiles; spheres.json has the other three
+// materials) renders on both backends: the material's sRGB texture, reaching the shader
+// undecoded, and the package's table sampled together.
+TEST(Tiers, TexturedExampleRendersAtLowOnBothBackends) {
+  std::string packages = facet::test::writeExamplePackages("tier-tiles-packages");
+  std::string error;
+  auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/tiles.json"), &error);
+  ASSERT_TRUE(scene) << error;
+  scene->tier = "low";
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+  ASSERT_TRUE(frame) << error;
+  ASSERT_EQ(frame->frame().draws.size(), 2u);
+  for (const auto& draw : frame->frame().draws) {
+    ASSERT_EQ(draw.textures.size(), 3u);  // the package's table, the material's albedo and normal map
+    EXPECT_EQ(draw.textures[0].binding, facet::abi::kSpecularLutBinding);
+    EXPECT_EQ(draw.textures[0].texture->format, facet::runtime::TextureFormat::R8Unorm);
+    EXPECT_EQ(draw.textures[1].texture->format, facet::runtime::TextureFormat::Rgba8Unorm);  // not decoded
+    EXPECT_EQ(draw.textures[2].texture->format, facet::runtime::TextureFormat::Rgba8Unorm);  // normals: data
+  }
+  EXPECT_EQ(frame->frame().draws[0].textures[0].texture, frame->frame().draws[1].textures[0].texture);  // one per package
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  auto gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(gl) << error;
+  facet::runtime::FrameResult a, b;
+  ASSERT_TRUE(vk->render(frame->frame(), &a, &error)) << error;
+  ASSERT_TRUE(gl->render(frame->frame(), &b, &error)) << error;
+  // As Textures.TexturedExampleSceneAgreesOnBothBackends: trilinear filtering of a high-contrast
+  // image differs at tile edges between the rasterisers.
+  size_t within1 = 0;
+  int maxDiff = 0;
+  for (size_t i = 0; i < a.ldr.size(); ++i) {
+    int d = std::abs(int(a.ldr[i]) - int(b.ldr[i]));
+    within1 += d <= 1;
+    maxDiff = std::max(maxDiff, d);
+  }
+  std::printf("tiles.json at low, Vulkan vs GL: max %d steps, %.4f%% within 1 step\n", maxDiff,
+              100.0 * double(within1) / double(a.ldr.size()));
+  EXPECT_GE(double(within1) / double(a.ldr.size()), 0.995);
+  EXPECT_EQ(valuesOutsideNeighbourhood(a, b), 0);
+  EXPECT_TRUE(vk->validationErrors().empty());
+  EXPECT_TRUE(gl->validationErrors().empty());
 }
 
 TEST(Tiers, MetalGetsHalfWhereGlesGetsMediump) {
@@ -121,6 +249,7 @@ TEST(Tiers, MetalGetsHalfWhereGlesGetsMediump) {
   };
   EXPECT_NE(msl("high.dir1").find("half "), std::string::npos);
   EXPECT_NE(msl("mid.dir1").find("half "), std::string::npos);
+  EXPECT_NE(msl("low.dir1").find("half "), std::string::npos);
   EXPECT_EQ(msl("reference.dir1").find("half"), std::string::npos);
 }
 

@@ -128,6 +128,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   if (in.material.blending == "masked")
     s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";
   if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
+  if (in.tier.colorSpace == permutations::ColorSpace::GammaHack) s += "#define FACET_GAMMA_HACK 1\n";
   return s + "\n";
 }
 
@@ -173,6 +174,16 @@ std::string materialSection(const AssemblyInput& in) {
   s += "// Surface program of material '" + in.material.name + "'.\n";
   s += "void evaluate_surface(inout MaterialInputs material) {\n" + in.surface.body + "}\n";
   return s;
+}
+
+// The `lut` specular table (specular_lut_lobe.glsl): Vulkan set 1, binding 1; GLES by name
+// (shader_abi.h kSpecularLutBinding, "facet_specularLut"). Its texels ship in the package.
+// Declared wherever the lobe is compiled; a variant without the light never calls the lobe, and
+// the unused sampler is dropped (samplesSpecularLut says which variants read it).
+std::string specularLutSampler(const AssemblyInput& in, Flavour flavour, const char* precision) {
+  if (in.tier.specular != permutations::SpecularModel::Lut || in.material.shading != "lit") return "";
+  return std::string(flavour == Flavour::Vulkan ? "layout(set = 1, binding = 1) " : "") + "uniform " + precision +
+         " sampler2D " + kSpecularLutSamplerName + ";\n";
 }
 
 // The chunk that defines specular_lobe() for a tier's specular model.
@@ -241,6 +252,11 @@ bool templateText(const char* name, const std::string** text, std::string* error
 
 }  // namespace
 
+bool samplesSpecularLut(const AssemblyInput& in) {
+  return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" &&
+         in.key.directionalLight;
+}
+
 bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::string* error) {
   const std::string* vertexTemplate = nullptr;
   const std::string* fragmentTemplate = nullptr;
@@ -258,7 +274,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   std::string fs = prologue(in, flavour, "fragment", fragmentPrecision);
   fs += varyings(in, flavour, "in") + "layout(location = 0) out " + fragmentPrecision + " vec4 fragColor;\n\n";
   fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) +
-        materialSamplers(flavour, in.params, fragmentPrecision) + "\n";
+        materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
+        "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, error)) return false;
   const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
   if (size_t at = fs.find(bodyStart); at != std::string::npos)

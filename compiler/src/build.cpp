@@ -7,6 +7,7 @@
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/param_layout.h"
+#include "facet/compiler/specular_lut.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
@@ -113,6 +114,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   permutations::MaterialNeeds needs;
   needs.lit = material.shading == "lit";
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
+  std::vector<uint32_t> lutVariants;  // indices of the variants that sample the specular table
   for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts)) {
     const std::string keyText = key.toString();
     // The tier's preset, with the material's overrides for that tier (checked by ir::check).
@@ -164,7 +166,15 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
         {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
         {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
     };
+    if (samplesSpecularLut(input)) lutVariants.push_back(uint32_t(result.package.variants.size()));
     result.package.variants.push_back(std::move(variant));
+  }
+  // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no
+  // compiler code and the texels always match the chunk that decodes them.
+  if (!lutVariants.empty()) {
+    SpecularLut lut = generateSpecularLut();
+    result.package.textures.push_back({kSpecularLutSamplerName, lut.width, lut.height, package::TexelFormat::R8Unorm,
+                                       std::move(lut.texels), std::move(lutVariants)});
   }
   return result;
 }

@@ -33,6 +33,7 @@ inline constexpr uint32_t kTagMeta = fourcc('M', 'E', 'T', 'A');       // compil
 inline constexpr uint32_t kTagVariants = fourcc('V', 'A', 'R', 'S');   // variant table
 inline constexpr uint32_t kTagBlobTable = fourcc('B', 'T', 'A', 'B');  // one entry per blob
 inline constexpr uint32_t kTagBlobData = fourcc('B', 'D', 'A', 'T');   // blob bytes, back to back
+inline constexpr uint32_t kTagTextures = fourcc('T', 'E', 'X', 'S');   // generated textures (optional)
 
 // Limits the reader enforces so that a hostile file cannot make it allocate or work without
 // bound. A real package has 4 sections and a few MiB of code.
@@ -42,6 +43,10 @@ inline constexpr uint64_t kMaxBlobRawSize = 256ull << 20;
 // where a shared blob is copied once per shader that uses it.
 inline constexpr uint64_t kMaxTotalCodeSize = 1ull << 30;
 inline constexpr uint64_t kMaxFileSize = 1ull << 30;
+// Package textures: a side at most this long (the largest 2D image GLES 3 / Vulkan devices must
+// support is smaller; a lookup table needs far less), a name a GLSL identifier of at most 64 bytes.
+inline constexpr uint32_t kMaxTextureSide = 16384;
+inline constexpr uint32_t kMaxTextureNameLength = 64;
 
 // Fixed so output is deterministic. 19 costs a few ms per shader at build time and is paid once;
 // every download and install benefits.
@@ -54,6 +59,9 @@ inline constexpr uint64_t kShaderRefSize = 8;    // u8 stage, u8 target, u16 res
 inline constexpr uint64_t kMinVariantSize = 8;   // u32 key length, u32 shader count
 inline constexpr uint64_t kMinParamSize = 16;    // u32 name length, 4 x u8, u32 offset, u32 size
 inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 reserved
+// u32 name length, u32 width, u32 height, u8 format, u8 + u16 reserved, u32 blob, u32 variant count
+inline constexpr uint64_t kMinTextureSize = 24;
+inline constexpr uint64_t kVariantIndexSize = 4;
 
 struct BlobEntry {
   uint64_t contentHash = 0;  // XXH3_64bits of the raw code
@@ -72,6 +80,16 @@ struct ShaderRef {
 struct VariantEntry {
   std::string key;
   std::vector<ShaderRef> shaders;
+};
+
+// A TEXS entry: the texture's description, and its texels by blob index.
+struct TextureEntry {
+  std::string name;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  TexelFormat format = TexelFormat::R8Unorm;
+  uint32_t blob = 0;
+  std::vector<uint32_t> variants;
 };
 
 // Number of default-value components a parameter of this type carries. Color accepts both RGB
@@ -95,5 +113,6 @@ inline bool defaultCountMatches(ParamType type, uint64_t count) {
 inline constexpr uint8_t kLastParamType = uint8_t(ParamType::TextureNormal);
 inline constexpr uint8_t kLastStage = uint8_t(Stage::Fragment);
 inline constexpr uint8_t kLastTarget = uint8_t(Target::Msl);
+inline constexpr uint8_t kLastTexelFormat = uint8_t(TexelFormat::R8Unorm);
 
 }  // namespace facet::package::detail

@@ -36,6 +36,13 @@ const char* toString(ParamType type) {
   return "unknown";
 }
 
+const char* toString(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::R8Unorm: return "r8_unorm";
+  }
+  return "unknown";
+}
+
 std::optional<ParamType> paramTypeFromString(std::string_view name) {
   for (ParamType t : {ParamType::Float, ParamType::Vec2, ParamType::Vec3, ParamType::Vec4,
                       ParamType::Int, ParamType::Bool, ParamType::Color,

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <optional>
 
 #include "blob_codec.h"
 #include "byte_io.h"
@@ -87,8 +88,10 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
 }
 
 // Reads the table of contents and returns the four required sections in the order
-// META, VARS, BTAB, BDAT. Unknown tags are skipped so later writers can add sections.
-bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::string& error) {
+// META, VARS, BTAB, BDAT, and the optional TEXS. Unknown tags are skipped so later writers can
+// add sections.
+bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::optional<TocEntry>& textures,
+             std::string& error) {
   const uint64_t size = file.size();
   uint32_t count = uint32_t(loadLE(file.data() + kSectionCountOffset, 4));
   if (count > kMaxSections) {
@@ -161,6 +164,14 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::string
       return false;
     }
   }
+  for (const TocEntry& e : entries) {
+    if (e.tag != kTagTextures) continue;
+    if (textures) {
+      error = "package has more than one '" + tagName(kTagTextures) + "' section; at most one is allowed";
+      return false;
+    }
+    textures = e;
+  }
   return true;
 }
 
@@ -185,7 +196,8 @@ ReadResult readChecked(std::span<const uint8_t> file) {
   std::string error;
   if (!checkHeader(file, error)) return failure(error);
   TocEntry toc[4];
-  if (!readToc(file, toc, error)) return failure(error);
+  std::optional<TocEntry> texs;
+  if (!readToc(file, toc, texs, error)) return failure(error);
   const TocEntry& meta = toc[0];
   const TocEntry& vars = toc[1];
   const TocEntry& table = toc[2];
@@ -198,6 +210,11 @@ ReadResult readChecked(std::span<const uint8_t> file) {
                      [&](ByteReader& in) { decodeMetadata(in, pkg.compilerVersion, pkg.material); }) ||
       !decodeSection(file, vars, error, [&](ByteReader& in) { decodeVariantTable(in, variants); }) ||
       !decodeSection(file, table, error, [&](ByteReader& in) { decodeBlobTable(in, data.size, blobs); }))
+    return failure(error);
+  std::vector<TextureEntry> textures;
+  if (texs && !decodeSection(file, *texs, error, [&](ByteReader& in) {
+        decodeTextureTable(in, variants.size(), blobs, textures);
+      }))
     return failure(error);
 
   // Shared blobs are copied into every shader that uses them, so the copies are what must stay
@@ -218,6 +235,15 @@ ReadResult readChecked(std::span<const uint8_t> file) {
       users[blob].push_back({v, s});
     }
   }
+  // Texels are copied out of their blobs like code, and count towards the same bound.
+  std::vector<std::vector<uint32_t>> textureUsers(blobs.size());
+  for (uint32_t t = 0; t < textures.size(); ++t) {
+    totalCode += blobs[textures[t].blob].rawSize;
+    if (totalCode > kMaxTotalCodeSize)
+      return failure("shaders and textures up to texture '" + textures[t].name + "' hold more than " +
+                     std::to_string(kMaxTotalCodeSize) + " bytes in total");
+    textureUsers[textures[t].blob].push_back(t);
+  }
 
   ReadResult result;
   pkg.variants.resize(variants.size());
@@ -233,6 +259,17 @@ ReadResult readChecked(std::span<const uint8_t> file) {
       result.stats[v][s].rawSize = blobs[ref.blob].rawSize;
     }
   }
+  pkg.textures.resize(textures.size());
+  result.textureStats.resize(textures.size());
+  for (size_t t = 0; t < textures.size(); ++t) {
+    Texture& out = pkg.textures[t];
+    out.name = std::move(textures[t].name);
+    out.width = textures[t].width;
+    out.height = textures[t].height;
+    out.format = textures[t].format;
+    out.variants = std::move(textures[t].variants);
+    result.textureStats[t].rawSize = blobs[textures[t].blob].rawSize;
+  }
 
   std::vector<uint8_t> raw;
   for (uint32_t b = 0; b < blobs.size(); ++b) {
@@ -245,6 +282,11 @@ ReadResult readChecked(std::span<const uint8_t> file) {
       auto [v, s] = users[b][u];
       if (u == 0) result.stats[v][s].storedSize = entry.storedSize;
       pkg.variants[v].shaders[s].code = raw;
+    }
+    for (size_t u = 0; u < textureUsers[b].size(); ++u) {
+      uint32_t t = textureUsers[b][u];
+      if (u == 0 && users[b].empty()) result.textureStats[t].storedSize = entry.storedSize;
+      pkg.textures[t].texels = raw;
     }
   }
 

@@ -23,4 +23,10 @@ void decodeVariantTable(ByteReader& in, std::vector<VariantEntry>& variants);
 void encodeBlobTable(ByteWriter& out, const std::vector<BlobEntry>& blobs);
 void decodeBlobTable(ByteReader& in, uint64_t dataSize, std::vector<BlobEntry>& blobs);
 
+// TEXS: generated textures. Decoded after VARS and BTAB: every entry's variant indices and blob
+// index are checked against them, and the blob's raw size against the texture's size.
+void encodeTextureTable(ByteWriter& out, const std::vector<TextureEntry>& textures);
+void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector<BlobEntry>& blobs,
+                        std::vector<TextureEntry>& textures);
+
 }  // namespace facet::package::detail

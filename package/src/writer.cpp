@@ -58,6 +58,10 @@ std::vector<uint8_t> write(const Package& pkg) {
     for (const Shader& s : v.shaders) entry.shaders.push_back({s.stage, s.target, blobs.add(s.code)});
     variants.push_back(std::move(entry));
   }
+  // Texture blobs follow every shader's, so a package without textures is unchanged.
+  std::vector<TextureEntry> textures;
+  for (const Texture& t : pkg.textures)
+    textures.push_back({t.name, t.width, t.height, t.format, blobs.add(t.texels), t.variants});
 
   std::vector<BlobEntry> blobTable;
   std::vector<uint8_t> blobData;
@@ -74,18 +78,19 @@ std::vector<uint8_t> write(const Package& pkg) {
     blobTable.push_back(b);
   }
 
-  std::vector<Section> sections(4);
-  sections[0].tag = kTagMeta;
-  ByteWriter meta(sections[0].bytes);
-  encodeMetadata(meta, pkg.compilerVersion, pkg.material);
-  sections[1].tag = kTagVariants;
-  ByteWriter vars(sections[1].bytes);
-  encodeVariantTable(vars, variants);
-  sections[2].tag = kTagBlobTable;
-  ByteWriter table(sections[2].bytes);
-  encodeBlobTable(table, blobTable);
-  sections[3].tag = kTagBlobData;
-  sections[3].bytes = std::move(blobData);
+  // META, VARS, [TEXS], BTAB, BDAT. TEXS exists only when there are textures: readers older than
+  // it skip it, and packages without textures keep their earlier bytes.
+  std::vector<Section> sections;
+  auto section = [&](uint32_t tag, const auto& encode) {
+    sections.push_back({tag, {}});
+    ByteWriter out(sections.back().bytes);
+    encode(out);
+  };
+  section(kTagMeta, [&](ByteWriter& out) { encodeMetadata(out, pkg.compilerVersion, pkg.material); });
+  section(kTagVariants, [&](ByteWriter& out) { encodeVariantTable(out, variants); });
+  if (!textures.empty()) section(kTagTextures, [&](ByteWriter& out) { encodeTextureTable(out, textures); });
+  section(kTagBlobTable, [&](ByteWriter& out) { encodeBlobTable(out, blobTable); });
+  sections.push_back({kTagBlobData, std::move(blobData)});
 
   std::vector<uint8_t> file;
   ByteWriter out(file);

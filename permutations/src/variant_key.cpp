@@ -55,7 +55,7 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
 
 const std::vector<Tier>& supportedTiers() {
   // Tiers whose shading maths this compiler version implements (see tiers.h for the presets).
-  static const std::vector<Tier> tiers = {Tier::Reference, Tier::High, Tier::Mid};
+  static const std::vector<Tier> tiers = {Tier::Reference, Tier::High, Tier::Mid, Tier::Low};
   return tiers;
 }
 

@@ -1,5 +1,6 @@
 #include "facet/runtime/material.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -17,6 +18,28 @@ int componentCount(package::ParamType t) {
 }
 
 double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+double linearToSrgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
+
+// Package textures this runtime knows where to bind (shader_abi.h). Frame-texture slots: the
+// shaders declare them at these bindings whatever material they belong to.
+struct GeneratedSlot {
+  const char* name;
+  uint32_t binding;
+};
+constexpr GeneratedSlot kGeneratedSlots[] = {{abi::kSpecularLutName, abi::kSpecularLutBinding}};
+
+// A lookup table, not an image: bilinear within its one level, clamped so that the table's
+// ends (R·L = 1, roughness 1) are not blended with the opposite edge.
+Texture runtimeTexture(const package::Texture& t) {
+  Texture out;
+  out.width = t.width;
+  out.height = t.height;
+  out.format = TextureFormat::R8Unorm;  // the package's only texel format
+  out.levels = {t.texels};
+  out.linearFilter = true;
+  out.repeat = false;
+  return out;
+}
 
 std::string number(double v) {
   char buf[32];
@@ -34,6 +57,7 @@ std::optional<LoadedMaterial> LoadedMaterial::load(const std::string& path, std:
   }
   LoadedMaterial m;
   m.package_ = std::move(*r.package);
+  for (const package::Texture& t : m.package_.textures) m.textures_.push_back(runtimeTexture(t));
   return m;
 }
 
@@ -60,8 +84,29 @@ std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std
   return std::nullopt;
 }
 
+std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(const std::string& variantKey,
+                                                                           std::string* error) const {
+  std::vector<TextureBinding> out;
+  uint32_t index = 0;
+  while (index < package_.variants.size() && package_.variants[index].key != variantKey) ++index;
+  for (size_t i = 0; i < package_.textures.size(); ++i) {
+    const package::Texture& t = package_.textures[i];
+    if (std::find(t.variants.begin(), t.variants.end(), index) == t.variants.end()) continue;
+    const GeneratedSlot* slot = nullptr;
+    for (const GeneratedSlot& s : kGeneratedSlots)
+      if (t.name == s.name) slot = &s;
+    if (!slot) {
+      *error = "material '" + package_.material.name + "' variant '" + variantKey + "' samples texture '" + t.name +
+               "', which this runtime does not know; update the runtime or recompile the material";
+      return std::nullopt;
+    }
+    out.push_back({slot->binding, t.name, &textures_[i]});
+  }
+  return out;
+}
+
 std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<std::string, std::vector<double>>& values,
-                                                               std::string* error) const {
+                                                               std::string* error, ColorEncoding colors) const {
   const package::MaterialInfo& info = package_.material;
   for (const auto& [name, value] : values) {
     bool known = false;
@@ -84,6 +129,9 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
     }
     if (p.size == 0) continue;  // never read by the shaders: no bytes to fill
     std::vector<double> v = p.defaultValue;
+    // Defaults are stored linear; the gamma hack wants them as authored (sRGB-encoded).
+    if (p.type == package::ParamType::Color && colors == ColorEncoding::Srgb)
+      for (double& c : v) c = linearToSrgb(c);
     if (auto it = values.find(p.name); it != values.end()) {
       if (int(it->second.size()) != componentCount(p.type)) {
         *error = "parameter '" + p.name + "' of material '" + info.name + "' is " + package::toString(p.type) + " (" +
@@ -101,7 +149,7 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
           return std::nullopt;
         }
       }
-      if (p.type == package::ParamType::Color)
+      if (p.type == package::ParamType::Color && colors == ColorEncoding::Linear)
         for (double& c : v) c = srgbToLinear(c);
     }
     if (p.offset + p.size > block.size() || v.size() * 4 != p.size) {

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/image_texture.h"
@@ -53,6 +54,11 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
                 "the scene, the permutations and the frame block agree on the punctual-light limit");
   const int lights = int(scene.lights.size());
   out->variantKey_ = permutations::requestKey({true}, *tier, scene.sun.has_value(), lights).toString();
+  // Tiers with the gamma hack light sRGB-encoded colours (chunks/shading_standard.glsl): colour
+  // parameters and sRGB textures reach them undecoded. Material overrides cannot change the colour
+  // space, so the tier decides it for every variant.
+  out->colors_ = permutations::preset(*tier).colorSpace == permutations::ColorSpace::GammaHack ? ColorEncoding::Srgb
+                                                                                               : ColorEncoding::Linear;
   out->sphere_ = makeSphere();
 
   // Lights are multiplied by the exposure here, on the CPU, so shaders see O(1) values
@@ -81,6 +87,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     const SceneObject& o = scene.objects[i];
     auto [it, fresh] = loaded.emplace(o.material, out->materials_.size());
     if (fresh) {
+      out->generated_.emplace_back();
       std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
       auto material = LoadedMaterial::load(path, error);
       if (!material) return nullptr;
@@ -92,6 +99,10 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       if (!program) return nullptr;
       out->materials_.push_back(std::make_unique<LoadedMaterial>(std::move(*material)));
       out->programs_.push_back(std::make_unique<ShaderProgram>(std::move(*program)));
+      // Package textures (the `lut` tier's table): made once per package, at load.
+      auto generated = out->materials_.back()->generatedTextures(key, error);
+      if (!generated) return nullptr;
+      out->generated_.back() = std::move(*generated);
     }
     DrawItem draw;
     draw.mesh = &out->sphere_;
@@ -99,7 +110,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), o.position), glm::dvec3(o.radius));
     store(draw.object.model, glm::mat4(model));
     store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
-    auto block = out->materials_[it->second]->paramBlock(o.params, error);
+    auto block = out->materials_[it->second]->paramBlock(o.params, error, out->colors_);
     if (!block) {
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;
@@ -115,6 +126,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;
     }
+    draw.textures = out->generated_[it->second];
     for (const LoadedMaterial::SampledTexture& t : *sampled) {
       const Texture* texture = out->texture(t, error);
       if (!texture) {
@@ -142,7 +154,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
 
 const Texture* SceneFrame::texture(const LoadedMaterial::SampledTexture& t, std::string* error) {
   // One texture per image file (or default colour) and encoding, shared by every object using it.
-  std::string key = (t.srgb ? "srgb:" : "linear:") + t.imagePath;
+  const bool decode = t.srgb && colors_ == ColorEncoding::Linear;
+  std::string key = (t.srgb ? (decode ? "srgb:" : "srgb-undecoded:") : "linear:") + t.imagePath;
   if (t.imagePath.empty())
     for (double c : t.defaultValue) key += ":" + std::to_string(c);
   if (auto it = textures_.find(key); it != textures_.end()) return it->second.get();
@@ -153,6 +166,8 @@ const Texture* SceneFrame::texture(const LoadedMaterial::SampledTexture& t, std:
     made = loadImageTexture(t.imagePath, t.srgb, error);
     if (!made) return nullptr;
   }
+  // Mip levels were still averaged in linear light; only the sampler's decoding is skipped.
+  if (t.srgb && !decode) made->format = TextureFormat::Rgba8Unorm;
   return textures_.emplace(key, std::make_unique<Texture>(std::move(*made))).first->second.get();
 }
 

@@ -75,10 +75,31 @@ struct Variant {
   bool operator==(const Variant&) const = default;
 };
 
+// How a package texture's texels are encoded.
+enum class TexelFormat : uint8_t {
+  R8Unorm = 0,  // 1 byte per texel: value / 255
+};
+const char* toString(TexelFormat);
+inline uint32_t bytesPerTexel(TexelFormat) { return 1; }  // R8Unorm is the only format so far
+
+// A texture the compiler generated for the shaders, not one the material declares: e.g. the
+// specular table of the `lut` tier. Stored in section TEXS; its texels are a blob, deduplicated
+// and compressed like shader code.
+struct Texture {
+  std::string name;                // the sampler the shaders declare, e.g. "facet_specularLut" (shader_abi.h)
+  uint32_t width = 0;
+  uint32_t height = 0;
+  TexelFormat format = TexelFormat::R8Unorm;
+  std::vector<uint8_t> texels;     // row-major from row 0 (t = 0): width × height × bytes per texel
+  std::vector<uint32_t> variants;  // indices into Package::variants of the variants that sample it, increasing
+  bool operator==(const Texture&) const = default;
+};
+
 struct Package {
   std::string compilerVersion;
   MaterialInfo material;
   std::vector<Variant> variants;
+  std::vector<Texture> textures;  // written (as section TEXS) only when not empty
   bool operator==(const Package&) const = default;
 };
 
@@ -96,6 +117,8 @@ struct ReadResult {
   std::string error;                // set on failure: what is wrong, and where (byte offset)
   // Per variant, per shader (same order as Package::variants[i].shaders).
   std::vector<std::vector<ShaderStats>> stats;
+  // Per texture (same order as Package::textures); a blob shared with a shader is charged there.
+  std::vector<ShaderStats> textureStats;
 };
 
 // Validates every offset, size, count, version and the checksum before use. Never crashes,

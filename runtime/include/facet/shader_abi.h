@@ -49,8 +49,9 @@ inline constexpr uint32_t kMaterialBinding = 2;  // block "MaterialParams" (layo
 //   8..15  the material's texture parameters, in declaration order (kMaterialTextureBase + i)
 inline constexpr uint32_t kTextureSet = 1;
 inline constexpr uint32_t kDfgLutBinding = 0;           // "facet_dfgLut": split-sum DFG terms
-inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT
+inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT (from the package)
 inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
+inline constexpr const char* kSpecularLutName = "facet_specularLut";
 inline constexpr uint32_t kMaterialTextureBase = 8;
 inline constexpr uint32_t kMaxMaterialTextures = 8;
 

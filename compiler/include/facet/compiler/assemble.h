@@ -35,6 +35,13 @@ struct AssemblyInput {
   std::string compilerVersion;
 };
 
+// The sampler name of the `lut` tier's specular table, as the shaders declare it.
+inline constexpr const char* kSpecularLutSamplerName = "facet_specularLut";
+
+// Whether the variant's fragment stage samples the specular table (a lit variant with a light
+// whose tier uses `lut` specular): the package must then carry the table (compiler/specular_lut.h).
+bool samplesSpecularLut(const AssemblyInput& input);
+
 // Fails only on a defect of the compiler itself (a template including a missing chunk);
 // the message says which.
 bool assemble(const AssemblyInput& input, Flavour flavour, StageSources* out, std::string* error);

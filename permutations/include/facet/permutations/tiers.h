@@ -22,6 +22,9 @@ struct TierConfig {
 
 // reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against.
 // high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
+// mid:       Facet's Zioma specular (one division), per-vertex diffuse, mediump.
+// low:       LUT specular (one texture read, no D/V/F), per-vertex diffuse, the gamma hack
+//            (colours stay sRGB-encoded, lighting on encoded values), mediump.
 TierConfig preset(Tier tier);
 
 // Replaces one choice of a preset by name (axis "specular" | "diffuse", option as in the

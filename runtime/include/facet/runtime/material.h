@@ -12,6 +12,11 @@
 
 namespace facet::runtime {
 
+// How colour values reach the shaders. Linear: colour parameters converted from sRGB, sRGB
+// textures decoded by the sampler. Srgb: both left encoded, for the variants that light with
+// the gamma hack (the low tier; chunks/shading_standard.glsl), which square their result back.
+enum class ColorEncoding { Linear, Srgb };
+
 class LoadedMaterial {
  public:
   // Reads and validates a .matpkg; nullopt with *error on any problem with the file.
@@ -27,8 +32,17 @@ class LoadedMaterial {
   // The std140 "MaterialParams" bytes: declared defaults, overridden by `values` (by name;
   // colour values are sRGB-encoded, as authored, and converted to linear here). Unknown names,
   // wrong component counts and values outside a declared range are errors.
+  // With ColorEncoding::Srgb colour values stay as authored, and defaults are encoded back.
   std::optional<std::vector<uint8_t>> paramBlock(const std::map<std::string, std::vector<double>>& values,
-                                                 std::string* error) const;
+                                                 std::string* error,
+                                                 ColorEncoding colors = ColorEncoding::Linear) const;
+
+  // The textures the compiler generated for the variant's shaders (package section TEXS, e.g.
+  // the `lut` tier's specular table), bound at their shader_abi.h slots. The Textures are made
+  // once per package, when it is loaded, and live as long as this LoadedMaterial. A texture this
+  // runtime has no slot for is an error for the variants that sample it.
+  std::optional<std::vector<TextureBinding>> generatedTextures(const std::string& variantKey,
+                                                               std::string* error) const;
 
   struct SampledTexture {
     std::string param;        // texture parameter name
@@ -45,6 +59,7 @@ class LoadedMaterial {
 
  private:
   package::Package package_;
+  std::vector<Texture> textures_;  // parallel to package_.textures
 };
 
 }  // namespace facet::runtime

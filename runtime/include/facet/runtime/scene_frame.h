@@ -28,6 +28,8 @@ class SceneFrame {
   const Texture* texture(const LoadedMaterial::SampledTexture& t, std::string* error);
   std::vector<std::unique_ptr<LoadedMaterial>> materials_;
   std::vector<std::unique_ptr<ShaderProgram>> programs_;  // parallel to materials_
+  std::vector<std::vector<TextureBinding>> generated_;    // parallel to materials_: package textures
+  ColorEncoding colors_ = ColorEncoding::Linear;          // what the scene's tier expects
   Mesh sphere_;
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   FrameDesc frame_;
