@@ -16,9 +16,11 @@ cmake --build build/release --parallel "$jobs" --target matc facet-view
 packages=build/examples/packages
 images=build/examples/images
 mkdir -p "$packages" "$images"
+# Every tier, with and without the sun, with 0 or 2 point/spot lights (lamps.json has two).
 for material in examples/materials/*.mat; do
   name=$(basename "$material" .mat)
-  build/release/matc/matc compile "$material" -o "$packages/$name.matpkg" --emit-source "$packages/sources"
+  build/release/matc/matc compile "$material" -o "$packages/$name.matpkg" --point-lights 0,2 \
+    --emit-source "$packages/sources"
 done
 for scene in examples/scenes/*.json; do
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
