@@ -104,19 +104,12 @@ class Checker {
             "unknown-name");
       return;
     }
-    if (std::find(choices.unimplemented.begin(), choices.unimplemented.end(), o.option) != choices.unimplemented.end()) {
-      error(o.optionLoc, o.axis + " '" + o.option + "' is not implemented by this compiler version", "unsupported");
-      return;
-    }
     for (const TierOverride& earlier : material_.tierOverrides) {
       if (earlier.tier == o.tier && earlier.axis == o.axis) {
         error(o.axisLoc, "tier '" + o.tier + "' already sets '" + o.axis + "'", "duplicate");
         return;
       }
     }
-    if (std::find(choices.unbuiltTiers.begin(), choices.unbuiltTiers.end(), o.tier) != choices.unbuiltTiers.end())
-      diags_.warning(o.tierLoc, "tier '" + o.tier + "' is not built by this compiler version; this override has no effect yet",
-                     "tier");
     material_.tierOverrides.push_back({o.tier, o.axis, o.option});
   }
 

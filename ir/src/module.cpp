@@ -48,8 +48,6 @@ const TierChoices& tierChoices() {
   static const TierChoices choices = {
       {"reference", "high", "mid", "low"},
       {{"specular", {"ggx_smith", "ggx_fastv", "zioma", "lut"}}, {"diffuse", {"pixel", "vertex"}}},
-      {},
-      {},
   };
   return choices;
 }

@@ -118,13 +118,11 @@ struct TierOverride {
   bool operator==(const TierOverride&) const = default;
 };
 
-// The language's vocabulary of tier choices: axis -> options it accepts, and the options this
-// compiler version does not implement yet (an error to choose).
+// The language's vocabulary of tier choices: the tiers, and per axis the options it accepts.
+// permutations/src/tiers.cpp turns a checked choice into shading maths.
 struct TierChoices {
   std::vector<std::string> tiers;
   std::map<std::string, std::vector<std::string>> options;
-  std::vector<std::string> unimplemented;
-  std::vector<std::string> unbuiltTiers;  // tiers this compiler version does not build yet
 };
 const TierChoices& tierChoices();
 
