@@ -13,6 +13,7 @@ struct CompileArgs {
   std::string emitSource;  // folder for every generated source, or ""
   std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
   std::string scene;       // scene manifest: build only the variants it asks this material for
+  bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
 int compileCommand(const CompileArgs& args);
 

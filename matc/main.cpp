@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   compileCmd->add_option("--tiers", compile.tiers, "tiers to build (reference, high, ...); default: all supported")
       ->delimiter(',');
   compileCmd->add_option("--scene", compile.scene, "scene JSON: build only the variants this scene can request");
+  compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
+                       "testing only: round every mediump result to binary16 in the SPIR-V of mediump tiers "
+                       "(docs/fp16-emulation.md); never ship such a package");
 
   facet::matc::InfoArgs info;
   CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");
