@@ -12,7 +12,14 @@
 #define MEDIUMP_FLT_MAX 65504.0
 // Clamps a non-negative value that may overflow fp16 (D and V peaks) to the largest finite one,
 // so a highlight saturates instead of turning into +inf and then NaN in later products.
+// The highp tier (`reference`, FACET_PRECISION_HIGHP) is the ground truth: its values do not
+// overflow at 65504, and clamping there would lose real energy (the grazing glint of a smooth
+// surface has D·V > 65504), so the clamp is Filament's: only where shading runs at mediump.
+#if defined(FACET_PRECISION_HIGHP)
+#define saturateMediump(x) (x)
+#else
 #define saturateMediump(x) min(x, MEDIUMP_FLT_MAX)
+#endif
 
 // D divides by terms of α² = r⁴ (r = perceptual roughness). Keeping r⁴ ≥ 2^-14, the smallest
 // normal fp16 value, needs r ≥ 2^(-14/4) ≈ 0.0884; 0.089 is Filament's mobile floor

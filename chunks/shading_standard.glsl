@@ -59,8 +59,17 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
     float LoH = clamp(dot(l, h), 0.0, 1.0);
 
     vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, f0);
+    // fp16: the lobe is ≤ 65504 (saturated) but the outgoing light need not be: at a grazing
+    // sun glint (n = h, n·v = n·l = c; specular_ggx_smith.glsl) f_s · E · n·l ≈ 1269 E / c at the
+    // roughness floor, 3.6e4 at c = 0.1 and 4.6e5 as c → 0.001 with E = 2.86 (the 110 000 lux
+    // sun pre-exposed for f/16 1/125 s ISO 100) — beyond fp16 and the RGBA16F target in every
+    // tier. E · n·l ≤ E is formed first, so a lobe saturated at a grazing n·l = 0
+    // gives 65504 · 0 = 0, not (65504 · E = +inf) · 0 = NaN; the product, at worst +inf, is then
+    // clamped to 65504. That clamp is the RGBA16F target's limit, so it applies in every tier
+    // (saturateMediump is an identity in the highp `reference`).
+    vec3 irradiance = lightColor * NoL;
 #if defined(FACET_GAMMA_HACK)
-    vec3 specularGamma = sqrt(specular * (lightColor * NoL));
+    vec3 specularGamma = sqrt(specular * irradiance);
 #if defined(FACET_VERTEX_DIFFUSE)
     return specularGamma;
 #else
@@ -68,8 +77,8 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
 #endif
 #elif defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
-    return specular * lightColor * NoL;
+    return min(specular * irradiance, MEDIUMP_FLT_MAX);
 #else
-    return (material_diffuse_color(material) * diffuse_lambert() + specular) * lightColor * NoL;
+    return min((material_diffuse_color(material) * diffuse_lambert() + specular) * irradiance, MEDIUMP_FLT_MAX);
 #endif
 }

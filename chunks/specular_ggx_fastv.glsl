@@ -9,5 +9,7 @@ vec3 specular_lobe(float perceptualRoughness, float alpha, float NoV, float NoL,
                    vec3 n, vec3 v, vec3 l, vec3 h, vec3 f0) {
     float D = distribution_ggx(alpha, NoH, n, h);
     float V = visibility_hammon(alpha, NoV, NoL);
-    return (D * V) * fresnel_schlick(f0, LoH);
+    // fp16: D·V overflows at the grazing mirror as in specular_ggx_smith.glsl (Hammon's V ≈
+    // 0.25 / (α c) there); saturated the same way.
+    return saturateMediump(D * V) * fresnel_schlick(f0, LoH);
 }

@@ -125,6 +125,7 @@ int compileCommand(const CompileArgs& args) {
   }
 
   compiler::BuildOptions options;
+  options.fp16Emulation = args.fp16Emulation;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);

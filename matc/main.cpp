@@ -20,6 +20,9 @@ int main(int argc, char** argv) {
                          "point/spot light counts to build, from 0, 1, 2, 4 (default: 0; a --scene decides its own)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
+  compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
+                       "testing only: round every mediump result to binary16 in the SPIR-V of mediump tiers "
+                       "(docs/fp16-emulation.md); never ship such a package");
 
   facet::matc::InfoArgs info;
   CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");

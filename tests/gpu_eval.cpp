@@ -260,6 +260,10 @@ GpuEvalResult GpuEvaluator::run(const GpuEvalRequest& request) {
   if (request.in0.size() != request.in1.size()) return out.error = "in0 and in1 differ in size", out;
   std::vector<uint32_t> spirv;
   if (!compileCompute(shaderSource(request), &spirv, &out.error)) return out;
+  if (request.transformSpirv && !request.transformSpirv(&spirv, &out.error)) {
+    if (out.error.empty()) out.error = "the SPIR-V transform failed";
+    return out;
+  }
 
   VkDevice device = impl_->device;
   impl_->validationErrors.clear();

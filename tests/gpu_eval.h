@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ struct GpuEvalRequest {
   std::vector<glm::vec4> in0, in1;  // one invocation per element; same size
   FloatPrecision precision = FloatPrecision::kHighp;
   const GpuR8Texture* lut = nullptr;
+  // Optional: rewrites glslang's unoptimized SPIR-V (1.3, Vulkan 1.1) before the pipeline is
+  // created, e.g. a SPIR-V pass under test. Returning false fails the call with *error.
+  std::function<bool(std::vector<uint32_t>* spirv, std::string* error)> transformSpirv;
 };
 
 struct GpuEvalResult {

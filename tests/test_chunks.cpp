@@ -346,6 +346,7 @@ TEST(Reference, WhiteFurnaceGgxSmithIsAtMostOne) {
 TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
   GpuEvalRequest req;
   req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl", "specular_ggx_smith.glsl"});
+  req.chunks.insert(req.chunks.begin(), "#define FACET_PRECISION_HIGHP 1\n");  // as assembly does for `reference`
   req.body = R"(
     float alpha = in0.x, NoV = in0.y;
     vec3 n = vec3(0.0, 0.0, 1.0), v = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);

@@ -128,6 +128,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   if (in.material.blending == "masked")
     s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";
   if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
+  if (in.tier.precision == permutations::PrecisionPolicy::Highp) s += "#define FACET_PRECISION_HIGHP 1\n";
   if (in.tier.colorSpace == permutations::ColorSpace::GammaHack) s += "#define FACET_GAMMA_HACK 1\n";
   return s + "\n";
 }

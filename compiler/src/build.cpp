@@ -11,6 +11,7 @@
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
+#include "lower_relaxed_to_quantized.h"
 
 namespace facet::compiler {
 namespace {
@@ -82,6 +83,16 @@ bool finishSpirv(std::vector<uint32_t>* words, const char* stage, std::string* e
   return true;
 }
 
+// BuildOptions::fp16Emulation: glslang's unoptimized stages with every relaxed float result
+// rounded to binary16, then validated and optimized as usual.
+bool emulateFp16(SpirvStages* stages, std::string* error) {
+  for (auto [words, stage] : {std::pair{&stages->vertex, "fp16-emulated vertex"}, {&stages->fragment, "fp16-emulated fragment"}}) {
+    QuantizeCounts counts;
+    if (!lowerRelaxedToQuantized(words, &counts, error) || !finishSpirv(words, stage, error)) return false;
+  }
+  return true;
+}
+
 // A glslang failure on generated code: blamed on the material line that produced it when the
 // error lies in the surface program, else reported as the compiler's own defect.
 void reportGlslangFailure(const std::string& log, const StageSources& sources, const ir::SurfaceGlsl& surface,
@@ -140,7 +151,14 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
       reportGlslangFailure(log, vk, surface, "SPIR-V for variant " + keyText, failure);
       return std::nullopt;
     }
+    // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
+    std::optional<SpirvStages> emulated;
+    if (options.fp16Emulation && tier.precision == permutations::PrecisionPolicy::Mediump) {
+      emulated = spirv;
+      if (!emulateFp16(&*emulated, error)) return std::nullopt;
+    }
     if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return std::nullopt;
+    const SpirvStages& vulkan = emulated ? *emulated : spirv;
     // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
     std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
     if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
@@ -149,8 +167,8 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     }
     std::string mslVertex, mslFragment;
     if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return std::nullopt;
-    result.sources.push_back({stem + ".vert.spvasm", disassembleSpirv(spirv.vertex)});
-    result.sources.push_back({stem + ".frag.spvasm", disassembleSpirv(spirv.fragment)});
+    result.sources.push_back({stem + ".vert.spvasm", disassembleSpirv(vulkan.vertex)});
+    result.sources.push_back({stem + ".frag.spvasm", disassembleSpirv(vulkan.fragment)});
     result.sources.push_back({stem + ".vert.metal", mslVertex});
     result.sources.push_back({stem + ".frag.metal", mslFragment});
 
@@ -161,8 +179,8 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     variant.shaders = {
         {Stage::Vertex, Target::GlslEs300, bytesOf(es.vertex)},
         {Stage::Fragment, Target::GlslEs300, bytesOf(es.fragment)},
-        {Stage::Vertex, Target::Spirv, bytesOf(spirv.vertex)},
-        {Stage::Fragment, Target::Spirv, bytesOf(spirv.fragment)},
+        {Stage::Vertex, Target::Spirv, bytesOf(vulkan.vertex)},
+        {Stage::Fragment, Target::Spirv, bytesOf(vulkan.fragment)},
         {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
         {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
     };

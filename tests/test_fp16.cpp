@@ -1,0 +1,629 @@
+// fp16 emulation (docs/fp16-emulation.md): the lower_relaxed_to_quantized pass on small shaders
+// run on lavapipe, the build option, and the hard-case scenes of DESIGN.md ("Measuring": fp16
+// stability) rendered with the emulated high and mid tiers against the reference tier.
+// Environment: FACET_FP16_DUMP=<folder> writes the hard cases' 8-bit images; FACET_FP16_DEBUG=1
+// prints the shading sweeps and the first black-where-lit pixels.
+#include <gtest/gtest.h>
+
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "facet/compiler/build.h"
+#include "facet/ir/check.h"
+#include "facet/package.h"
+#include "facet/render_backend.h"
+#include "facet/runtime/png.h"
+#include "facet/runtime/scene.h"
+#include "facet/runtime/scene_frame.h"
+#include "gpu_eval.h"
+#include "lower_relaxed_to_quantized.h"
+#include "reference/standard_model.h"
+#include "test_support.h"
+
+namespace facet {
+namespace {
+
+using test::FloatPrecision;
+using test::GpuEvalRequest;
+
+constexpr spv_target_env kEvalEnv = SPV_ENV_VULKAN_1_1;  // what tests/gpu_eval.cpp compiles for
+
+test::GpuEvaluator& gpu() {
+  static test::GpuEvaluator evaluator;
+  return evaluator;
+}
+
+bool validate(const std::vector<uint32_t>& words, std::string* log) {
+  spvtools::SpirvTools tools(kEvalEnv);
+  tools.SetMessageConsumer([log](spv_message_level_t, const char*, const spv_position_t& p, const char* m) {
+    *log += "word " + std::to_string(p.index) + ": " + m + "\n";
+  });
+  return tools.Validate(words);
+}
+
+// spirv-opt -O, as compiler/src/spirv_tools_backend.cpp runs it (for the Vulkan 1.1 env here).
+bool optimize(std::vector<uint32_t>* words, std::string* log) {
+  spvtools::Optimizer optimizer(kEvalEnv);
+  optimizer.SetMessageConsumer([log](spv_message_level_t, const char*, const spv_position_t&, const char* m) {
+    *log += std::string(m) + "\n";
+  });
+  optimizer.RegisterPerformancePasses();
+  std::vector<uint32_t> out;
+  if (!optimizer.Run(words->data(), words->size(), &out)) return false;
+  *words = std::move(out);
+  return true;
+}
+
+std::string disassemble(const std::vector<uint32_t>& words) {
+  spvtools::SpirvTools tools(kEvalEnv);
+  std::string text;
+  EXPECT_TRUE(tools.Disassemble(words, &text, SPV_BINARY_TO_TEXT_OPTION_NONE));
+  return text;
+}
+
+size_t countOf(const std::string& text, const std::string& needle) {
+  size_t n = 0;
+  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+// An independent reading of the contract, from the disassembly: ids decorated RelaxedPrecision
+// that are 32-bit float scalar/vector values computed in a function, each with its opcode.
+std::map<std::string, std::string> relaxedFloatValues(const std::string& text) {
+  std::set<std::string> relaxed, floatTypes;
+  std::map<std::string, std::string> defs;  // id -> "Op type"
+  std::istringstream lines(text);
+  std::string line;
+  static const std::regex decorate(R"(OpDecorate (%\d+) RelaxedPrecision)");
+  static const std::regex def(R"((%\d+) = (Op\w+) ?(\S*)(.*))");
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, decorate)) relaxed.insert(m[1]);
+    if (!std::regex_search(line, m, def)) continue;
+    const std::string id = m[1], op = m[2], first = m[3], rest = m[4];
+    if (op == "OpTypeFloat" && first == "32") floatTypes.insert(id);
+    if (op == "OpTypeVector" && floatTypes.count(first)) floatTypes.insert(id);
+    defs[id] = op + " " + first;
+  }
+  std::map<std::string, std::string> out;
+  for (const auto& id : relaxed) {
+    auto d = defs.find(id);
+    if (d == defs.end()) continue;
+    std::string op = d->second.substr(0, d->second.find(' ')), type = d->second.substr(d->second.find(' ') + 1);
+    if (!floatTypes.count(type) || op == "OpFunction" || op == "OpPhi" || op.rfind("OpImage", 0) == 0 || op == "OpUndef")
+      continue;
+    out[id] = op;
+  }
+  return out;
+}
+
+// Runs a mediump request with the pass applied to glslang's output (and, with `optimized`,
+// spirv-opt -O after it, as matc does); every stage's SPIR-V must pass spirv-val.
+std::vector<glm::vec4> runEmulated(GpuEvalRequest request, bool optimized) {
+  request.precision = FloatPrecision::kMediump;
+  request.transformSpirv = [optimized](std::vector<uint32_t>* words, std::string* error) {
+    compiler::QuantizeCounts counts;
+    if (!compiler::lowerRelaxedToQuantized(words, &counts, error)) return false;
+    if (!validate(*words, error)) return *error = "spirv-val after the pass:\n" + *error, false;
+    if (optimized && (!optimize(words, error) || !validate(*words, error)))
+      return *error = "spirv-opt or spirv-val after it:\n" + *error, false;
+    return true;
+  };
+  auto result = gpu().run(request);
+  EXPECT_TRUE(result.ok()) << result.error << "\n--- shader ---\n" << test::GpuEvaluator::shaderSource(request);
+  return result.values;
+}
+
+std::vector<glm::vec4> runPlain(GpuEvalRequest request) {
+  request.precision = FloatPrecision::kMediump;
+  auto result = gpu().run(request);
+  EXPECT_TRUE(result.ok()) << result.error;
+  return result.values;
+}
+
+// Values exact in fp32 but not in binary16, computed from mediump inputs (in0, in1) and from
+// literal constants (which reach relaxed maths as non-relaxed operands).
+GpuEvalRequest fp16Probe() {
+  GpuEvalRequest r;
+  r.body = R"(
+        result.x = in0.x + in0.y;      // 1 + 2^-12: half an fp16 ulp above 1, ties to even -> 1
+        result.y = in0.z * in0.w;      // 300 * 300 = 90000 > 65504 -> +inf
+        result.z = in1.x * in1.y;      // 2^-10 * 2^-10 = 2^-20, below 2^-14 -> flushed to 0
+        result.w = in1.z * 70000.0 + in1.w * 0.000001;  // constants: 70000 -> +inf
+  )";
+  r.in0 = {glm::vec4(1.0f, std::ldexp(1.0f, -12), 300.0f, 300.0f)};
+  r.in1 = {glm::vec4(std::ldexp(1.0f, -10), std::ldexp(1.0f, -10), 1.0f, 0.0f)};
+  return r;
+}
+
+void expectBinary16(const glm::vec4& v, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(v.x, 1.0f);
+  EXPECT_TRUE(std::isinf(v.y) && v.y > 0) << v.y;
+  EXPECT_EQ(v.z, 0.0f);
+  EXPECT_TRUE(std::isinf(v.w) && v.w > 0) << v.w;
+}
+
+TEST(Fp16Pass, QuantizesEveryRelaxedFloatResultAndValidates) {
+  GpuEvalRequest r;
+  r.precision = FloatPrecision::kMediump;
+  r.body = R"(
+        vec3 n = normalize(in0.xyz);
+        float d = max(dot(n, in1.xyz), 1e-4);
+        mat2 m = mat2(in0.x, in0.y, in1.x, in1.y);   // a relaxed matrix: skipped, columns used
+        vec2 p = m * in1.zw;
+        float acc = 0.0;
+        for (int i = 0; i < 4; ++i) acc += d * float(i);
+        result = vec4(n * acc, p.x < 0.5 ? p.y : sqrt(abs(p.x)));
+  )";
+  r.in0 = r.in1 = {glm::vec4(0.5f)};
+  std::string before, after, log;
+  compiler::QuantizeCounts counts;
+  r.transformSpirv = [&](std::vector<uint32_t>* words, std::string* error) {
+    before = disassemble(*words);
+    if (!compiler::lowerRelaxedToQuantized(words, &counts, error)) return false;
+    after = disassemble(*words);
+    return validate(*words, error);
+  };
+  auto result = gpu().run(r);
+  ASSERT_TRUE(result.ok()) << result.error;
+
+  auto expected = relaxedFloatValues(before);
+  ASSERT_GT(expected.size(), 20u) << "glslang should decorate mediump maths with RelaxedPrecision";
+  EXPECT_EQ(counts.results, expected.size());
+  EXPECT_EQ(countOf(after, "OpQuantizeToF16"), size_t(counts.results + counts.operands));
+  EXPECT_GT(counts.operands, 0u) << "constants and highp loads feed relaxed maths";
+  EXPECT_GT(counts.skippedMatrices, 0u);
+  // Renamed in place: each of those ids is now defined by the quantize, the original op moved.
+  auto nowDefinedBy = [&](const std::string& id) {
+    std::smatch m;
+    std::regex def(id + R"( = (Op\w+))");
+    return std::regex_search(after, m, def) ? m[1].str() : std::string();
+  };
+  for (const auto& [id, op] : expected) EXPECT_EQ(nowDefinedBy(id), "OpQuantizeToF16") << id << " was " << op;
+}
+
+TEST(Fp16Pass, LavapipeRoundsRelaxedResultsToBinary16) {
+  ASSERT_TRUE(gpu().ready()) << gpu().initError();
+  // Without the pass lavapipe computes mediump in fp32: the probe proves the test can fail.
+  auto plain = runPlain(fp16Probe());
+  ASSERT_EQ(plain.size(), 1u);
+  EXPECT_EQ(plain[0].x, 1.0f + std::ldexp(1.0f, -12));
+  EXPECT_EQ(plain[0].y, 90000.0f);
+  EXPECT_EQ(plain[0].z, std::ldexp(1.0f, -20));
+  EXPECT_EQ(plain[0].w, 70000.0f);
+
+  auto unoptimized = runEmulated(fp16Probe(), false);
+  ASSERT_EQ(unoptimized.size(), 1u);
+  expectBinary16(unoptimized[0], "pass only");
+}
+
+TEST(Fp16Pass, SpirvOptKeepsTheQuantizes) {
+  // matc optimizes after the pass: the quantizes, and spirv-opt's folding of quantized
+  // constants, must keep binary16 semantics.
+  auto optimized = runEmulated(fp16Probe(), true);
+  ASSERT_EQ(optimized.size(), 1u);
+  expectBinary16(optimized[0], "pass + spirv-opt -O");
+
+  std::string after;
+  GpuEvalRequest r = fp16Probe();
+  r.precision = FloatPrecision::kMediump;
+  r.transformSpirv = [&](std::vector<uint32_t>* words, std::string* error) {
+    compiler::QuantizeCounts counts;
+    bool ok = compiler::lowerRelaxedToQuantized(words, &counts, error) && optimize(words, error);
+    after = disassemble(*words);
+    return ok;
+  };
+  ASSERT_TRUE(gpu().run(r).ok());
+  EXPECT_GE(countOf(after, "OpQuantizeToF16"), 6u) << after;
+}
+
+TEST(Fp16Pass, LoopBackEdgeSeesTheQuantizedValue) {
+  // After spirv-opt the accumulator is an OpPhi whose back-edge operand is the add's result id,
+  // which the pass renamed onto the quantize: 1 + 2^-12 rounds back to 1 every iteration.
+  GpuEvalRequest r;
+  r.body = "float acc = in0.x; for (int i = 0; i < 4096; ++i) acc += in0.y; result = vec4(acc);";
+  r.in0 = {glm::vec4(1.0f, std::ldexp(1.0f, -12), 0, 0)};
+  r.in1 = {glm::vec4(0.0f)};
+  auto plain = runPlain(r);
+  ASSERT_EQ(plain.size(), 1u);
+  EXPECT_EQ(plain[0].x, 2.0f);
+  for (bool optimized : {false, true}) {
+    auto out = runEmulated(r, optimized);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].x, 1.0f) << (optimized ? "optimized" : "unoptimized");
+  }
+}
+
+TEST(Fp16Pass, RejectsMalformedInput) {
+  compiler::QuantizeCounts counts;
+  std::string error;
+  std::vector<uint32_t> notSpirv{1, 2, 3};
+  EXPECT_FALSE(compiler::lowerRelaxedToQuantized(&notSpirv, &counts, &error));
+  std::vector<uint32_t> truncated{0x07230203, 0x00010000, 0, 10, 0, (9u << 16) | 17u};
+  error.clear();
+  EXPECT_FALSE(compiler::lowerRelaxedToQuantized(&truncated, &counts, &error));
+  EXPECT_NE(error.find("truncated"), std::string::npos);
+}
+
+// --- the shading chunks at fp16, at the hard cases' worst points ---
+
+// The shipped chunks (includes stripped: gpu_eval pastes them in order) with a minimal
+// MaterialInputs, so shade_standard_direct runs exactly as in forward_lit.frag.glsl.
+std::vector<std::string> shadingChunks(const char* lobe, bool vertexDiffuse) {
+  std::vector<std::string> out;
+  if (vertexDiffuse) out.push_back("#define FACET_VERTEX_DIFFUSE 1");
+  out.push_back("struct MaterialInputs { vec3 baseColor; float metallic; float roughness; float reflectance; float ambientOcclusion; };");
+  std::vector<const char*> files{"math.glsl", "precision.glsl", "diffuse_lambert.glsl"};
+  if (std::string(lobe) == "specular_ggx_smith.glsl") files.push_back("brdf_ggx.glsl");
+  if (std::string(lobe) == "specular_zioma_lobe.glsl") files.push_back("specular_zioma.glsl");
+  files.push_back(lobe);
+  files.push_back("shading_standard.glsl");
+  for (const char* f : files) {
+    std::string text = test::readSourceFile(std::string("chunks/") + f), kept, line;
+    EXPECT_FALSE(text.empty()) << f;
+    std::istringstream lines(text);
+    while (std::getline(lines, line))
+      if (line.rfind("#include", 0) != 0) kept += line + "\n";
+    out.push_back(kept);
+  }
+  return out;
+}
+
+// The mirror configuration at grazing incidence: n = h, n·v = n·l = c. There D is at its peak
+// 1/(π α²) and V grows as 1/c², the largest D·V the GGX/Smith lobe forms (a sun glint on a
+// smooth surface seen near its horizon). Also n·l = 0 with n·v tiny, where h still equals n:
+// the lobe is saturated and the light's n·l is 0.
+// in0 = (perceptual roughness, n·v, pre-exposed light, unused), in1.x = n·l; white metal.
+const char* kMirrorBody = R"(
+        vec3 n = vec3(0.0, 0.0, 1.0);
+        vec3 v = vec3(sqrt(1.0 - in0.y * in0.y), 0.0, in0.y);
+        vec3 l = vec3(-sqrt(1.0 - in1.x * in1.x), 0.0, in1.x);
+        MaterialInputs m = MaterialInputs(vec3(1.0), 1.0, in0.x, 0.5, 1.0);
+        result = vec4(shade_standard_direct(m, n, v, l, vec3(in0.z)), 0.0);
+)";
+
+GpuEvalRequest mirrorSweep(const char* lobe, bool vertexDiffuse) {
+  GpuEvalRequest r;
+  r.chunks = shadingChunks(lobe, vertexDiffuse);
+  r.body = kMirrorBody;
+  const float light = float(110000.0 / (1.2 * 256.0 / 0.008));  // 110 000 lux, f/16 1/125 s ISO 100: 2.86
+  for (double rough : {0.0, 0.089, 0.1, 0.2, 0.4}) {
+    for (double c : {1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001}) {
+      r.in0.push_back(glm::vec4(float(rough), float(c), light, 0.0f));
+      r.in1.push_back(glm::vec4(float(c), 0, 0, 0));
+    }
+    for (double cv : {1e-4, 1e-3}) {  // n·l = 0
+      r.in0.push_back(glm::vec4(float(rough), float(cv), light, 0.0f));
+      r.in1.push_back(glm::vec4(0.0f));
+    }
+  }
+  return r;
+}
+
+// What the precision policy promises there, in double: the lobe's D·V saturated at 65504 and the
+// outgoing light saturated at 65504 (chunks/specular_ggx_smith.glsl, shading_standard.glsl).
+double mirrorExpected(double rough, double cv, double cl, double light) {
+  double alpha = std::pow(std::clamp(rough, 0.089, 1.0), 2.0);
+  double NoV = std::max(cv, 1e-4), NoL = cl;
+  double dv = std::min(reference::distributionGgx(alpha, 1.0) * reference::visibilitySmithGgxCorrelated(alpha, NoV, NoL), 65504.0);
+  double f = reference::fresnelSchlick(glm::dvec3(1.0), cl).x;
+  return std::min(dv * f * light * NoL, 65504.0);
+}
+
+TEST(Fp16Shading, GgxSmithGlintStaysFiniteAtGrazingMirror) {
+  GpuEvalRequest r = mirrorSweep("specular_ggx_smith.glsl", false);
+  auto out = runEmulated(r, true);
+  ASSERT_EQ(out.size(), r.in0.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const double rough = r.in0[i].x, cv = r.in0[i].y, cl = r.in1[i].x;
+    glm::dvec3 v(std::sqrt(1 - cv * cv), 0, cv), l(-std::sqrt(1 - cl * cl), 0, cl);
+    reference::Surface s;
+    s.metallic = 1.0;
+    s.roughness = rough;
+    const double exact = reference::shadeStandard(s, {0, 0, 1}, v, l, glm::dvec3(r.in0[i].z), glm::dvec3(0.0)).x;
+    const double expected = mirrorExpected(rough, cv, cl, r.in0[i].z);
+    if (std::getenv("FACET_FP16_DEBUG"))
+      std::printf("roughness %5.3f n.v %6.4f n.l %6.4f  fp16 %12.5g  policy %12.5g  exact %12.5g\n", rough, cv, cl,
+                  double(out[i].x), expected, exact);
+    if (!std::isfinite(out[i].x)) {
+      ADD_FAILURE() << "roughness " << rough << " n.v " << cv << " n.l " << cl << ": " << out[i].x << " (double: " << exact << ")";
+      continue;
+    }
+    EXPECT_NEAR(out[i].x, expected, 0.02 * expected + 1e-3) << "roughness " << rough << " n.v " << cv << " n.l " << cl;
+  }
+}
+
+TEST(Fp16Shading, ZiomaGlintStaysFiniteAtGrazingMirror) {
+  GpuEvalRequest r = mirrorSweep("specular_zioma_lobe.glsl", true);
+  auto out = runEmulated(r, true);
+  ASSERT_EQ(out.size(), r.in0.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(out[i].x) && out[i].x >= 0.0f && out[i].x <= 65504.0f)
+        << "roughness " << r.in0[i].x << " n.v " << r.in0[i].y << " n.l " << r.in1[i].x << ": " << out[i].x;
+    if (r.in1[i].x > 0.0f) {
+      EXPECT_GT(out[i].x, 0.0f) << "black where lit";
+    }
+  }
+}
+
+// --- the build option ---
+
+const char* kHardCaseMaterial = R"(material hard_case {
+    shading lit
+    param baseColor: color = vec3(0.5, 0.5, 0.5)
+    param metallic: float = 0.0 in [0, 1]
+    param roughness: float = 0.5 in [0, 1]
+    surface {
+        baseColor = params.baseColor
+        metallic = params.metallic
+        roughness = params.roughness
+    }
+})";
+
+std::optional<compiler::BuildResult> build(const std::string& text, bool emulate) {
+  ir::SourceFile file{"hard_case.mat", text};
+  ir::Diagnostics diags(file);
+  auto material = ir::compileSource(file, diags);
+  EXPECT_TRUE(material) << diags.format();
+  if (!material) return std::nullopt;
+  compiler::BuildOptions options;
+  options.fp16Emulation = emulate;
+  compiler::BuildError error;
+  auto built = compiler::buildMaterial(*material, options, &error);
+  EXPECT_TRUE(built) << error.message;
+  return built;
+}
+
+const package::Shader* shaderOf(const compiler::BuildResult& b, const std::string& key, package::Stage stage,
+                                    package::Target target) {
+  for (const auto& v : b.package.variants)
+    if (v.key == key)
+      for (const auto& s : v.shaders)
+        if (s.stage == stage && s.target == target) return &s;
+  ADD_FAILURE() << "no shader for " << key;
+  return nullptr;
+}
+
+TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
+  auto plain = build(kHardCaseMaterial, false), emulated = build(kHardCaseMaterial, true);
+  ASSERT_TRUE(plain && emulated);
+  ASSERT_EQ(plain->package.variants.size(), emulated->package.variants.size());
+  using package::Stage;
+  using package::Target;
+  for (const auto& v : plain->package.variants) {
+    SCOPED_TRACE(v.key);
+    const bool mediump = v.key.rfind("reference.", 0) != 0;
+    for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
+      for (Target target : {Target::GlslEs300, Target::Msl}) {
+        EXPECT_EQ(shaderOf(*plain, v.key, stage, target)->code, shaderOf(*emulated, v.key, stage, target)->code);
+      }
+      const auto* a = shaderOf(*plain, v.key, stage, Target::Spirv);
+      const auto* b = shaderOf(*emulated, v.key, stage, Target::Spirv);
+      std::vector<uint32_t> words(b->code.size() / 4);
+      std::memcpy(words.data(), b->code.data(), b->code.size());
+      const size_t quantizes = countOf(disassemble(words), "OpQuantizeToF16");
+      if (!mediump) {
+        EXPECT_EQ(a->code, b->code) << "the highp reference tier has nothing relaxed";
+      } else if (stage == Stage::Fragment) {
+        EXPECT_GT(quantizes, 10u);
+      }
+      if (!mediump) {
+        EXPECT_EQ(quantizes, 0u);
+      }
+    }
+  }
+}
+
+// --- hard cases ---
+
+struct HardCase {
+  const char* name;
+  const char* scene;  // JSON; "tier" is set per render
+  // dB, emulated tier vs reference: the measured figure (docs/fp16-emulation.md) minus a margin
+  double psnrFloorHigh, psnrFloorMid;
+};
+// Names the case in test listings (gtest would print the struct's bytes, pointers included).
+void PrintTo(const HardCase& c, std::ostream* os) { *os << c.name; }
+
+// Every scene lights with the 110 000 lux sun and exposes with the f/16 1/125 s ISO 100 camera
+// (pre-exposure 2.6e-5: the sun arrives as 2.86, the sky as 0.156).
+#define FACET_CAMERA(pos, target) \
+  "\"camera\": {\"position\": " pos ", \"target\": " target ", \"fovY\": 35, \"aperture\": 16, \"shutter\": 0.008, \"iso\": 100}"
+#define FACET_SUN(dir) "\"sun\": {\"direction\": " dir ", \"illuminance\": 110000, \"color\": [1, 1, 1]}, \"sky\": {\"luminance\": 6000}"
+
+const HardCase kHardCases[] = {
+    // Roughness 0 (clamped to 0.089 by the precision policy), dielectric, metal and coloured metal.
+    {"roughness_zero",
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+       "objects": [
+         {"material": "hard_case", "position": [-1.1, 0, 0], "params": {"roughness": 0, "baseColor": [0.8, 0.8, 0.8]}},
+         {"material": "hard_case", "position": [1.1, 0, 0], "params": {"roughness": 0, "metallic": 1, "baseColor": [1, 0.9, 0.6]}}
+       ]})",
+     65, 58},
+    // NoH -> 1: light travels from the camera, so the highlight centre faces the image centre
+    // (odd size: a pixel centre sits exactly on it). Dielectric at the roughness floor.
+    {"noh_one",
+     R"({"width": 255, "height": 255, )" FACET_CAMERA("[0, 0, 4]", "[0, 0, 0]") ", " FACET_SUN("[0, 0, -1]") R"(,
+       "objects": [{"material": "hard_case", "params": {"roughness": 0, "baseColor": [0.5, 0.5, 0.5]}}]})",
+     60, 62},
+    // Grazing view: a sun from behind and to the left lights the spheres' left rims, where n·v is
+    // small (silhouette) and h lies near the surface.
+    {"grazing",
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.85, 0.2, 0.5]") R"(,
+       "objects": [
+         {"material": "hard_case", "position": [-1.1, 0, 0], "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}},
+         {"material": "hard_case", "position": [1.1, 0, 0], "params": {"roughness": 0.2, "metallic": 1, "baseColor": [1, 1, 1]}}
+       ]})",
+     66, 36},
+    {"grazing_glint",
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+       "objects": [
+         {"material": "hard_case", "position": [0, -1000, 0], "radius": 1000, "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}}
+       ]})",
+     35, 19},
+    // The brightest highlight the contract allows: white metal at the roughness floor, NoH = 1,
+    // 110 000 lux sun: D·V·F·E = 5075 · 0.25 · 1 · 2.86 ≈ 3600, to stay below 65504.
+    {"bright_sun",
+     R"({"width": 255, "height": 255, )" FACET_CAMERA("[0, 0, 4]", "[0, 0, 0]") ", " FACET_SUN("[0, 0, -1]") R"(,
+       "objects": [{"material": "hard_case", "params": {"roughness": 0, "metallic": 1, "baseColor": [1, 1, 1]}}]})",
+     67, 53},
+    // Black and white: baseColor 0 and 1, metallic 0 and 1.
+    {"black_white",
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+       "objects": [
+         {"material": "hard_case", "position": [-1.1, 1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [0, 0, 0], "metallic": 0}},
+         {"material": "hard_case", "position": [1.1, 1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [0, 0, 0], "metallic": 1}},
+         {"material": "hard_case", "position": [-1.1, -1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [1, 1, 1], "metallic": 0}},
+         {"material": "hard_case", "position": [1.1, -1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [1, 1, 1], "metallic": 1}}
+       ]})",
+     60, 27},
+    // Geometry 10 km from the origin, the camera 4 m from it.
+    {"far_from_origin",
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[10000, 0, 4]", "[10000, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+       "objects": [{"material": "hard_case", "position": [10000, 0, 0], "params": {"roughness": 0.3, "baseColor": [0.8, 0.2, 0.1]}}]})",
+     63, 50},
+};
+
+// A reference pixel whose brightest HDR channel reaches kLitThreshold is "lit"; a candidate pixel
+// there whose brightest channel is below a tenth of it is "black where lit". 0.01 (pre-exposed)
+// tone-maps to about 6/255; the darkest lit surface here, the black metal's Fresnel rim, is above.
+constexpr float kLitThreshold = 0.01f;
+
+struct Comparison {
+  double psnr = 0;
+  double maxAbsHdr = 0;
+  size_t nonFinite = 0;
+  size_t blackWhereLit = 0;
+};
+
+double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (i % 4 == 3) continue;
+    double d = double(a[i]) - double(b[i]);
+    sum += d * d;
+    ++n;
+  }
+  double mse = sum / double(n);
+  return mse == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+Comparison compare(const runtime::FrameResult& image, const runtime::FrameResult& reference) {
+  Comparison c;
+  c.psnr = psnr(image.ldr, reference.ldr);
+  for (size_t p = 0; p + 3 < image.hdr.size(); p += 4) {
+    float maxRef = 0, maxImg = 0;
+    for (size_t k = 0; k < 3; ++k) {
+      float v = image.hdr[p + k], r = reference.hdr[p + k];
+      if (!std::isfinite(v)) {
+        ++c.nonFinite;
+        break;
+      }
+      c.maxAbsHdr = std::max(c.maxAbsHdr, double(std::abs(v - r)));
+      maxRef = std::max(maxRef, r);
+      maxImg = std::max(maxImg, v);
+    }
+    if (maxRef >= kLitThreshold && maxImg < 0.1f * kLitThreshold) {
+      if (c.blackWhereLit < 8 && std::getenv("FACET_FP16_DEBUG"))
+        std::printf("  black where lit: pixel (%zu, %zu) reference (%g, %g, %g) image (%g, %g, %g)\n", (p / 4) % image.width,
+                    (p / 4) / image.width, reference.hdr[p], reference.hdr[p + 1], reference.hdr[p + 2], image.hdr[p],
+                    image.hdr[p + 1], image.hdr[p + 2]);
+      ++c.blackWhereLit;
+    }
+  }
+  return c;
+}
+
+class Fp16HardCases : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    plainDir_ = new std::string(test::scratchDir("fp16-plain"));
+    emulatedDir_ = new std::string(test::scratchDir("fp16-emulated"));
+    for (auto [dir, emulate] : {std::pair{plainDir_, false}, {emulatedDir_, true}}) {
+      auto built = build(kHardCaseMaterial, emulate);
+      if (!built) continue;
+      std::string error;
+      EXPECT_TRUE(package::writeFile(*dir + "/hard_case.matpkg", package::write(built->package), &error)) << error;
+    }
+  }
+  static void TearDownTestSuite() {
+    delete plainDir_;
+    delete emulatedDir_;
+  }
+  static std::string* plainDir_;
+  static std::string* emulatedDir_;
+};
+std::string* Fp16HardCases::plainDir_ = nullptr;
+std::string* Fp16HardCases::emulatedDir_ = nullptr;
+
+class Fp16HardCase : public Fp16HardCases, public ::testing::WithParamInterface<HardCase> {};
+
+// Pass = no NaN/Inf in the HDR target, no black pixel where the reference is lit, and the 8-bit
+// PSNR against the reference above the case's floor. Both the emulated (fp16) and the plain
+// (lavapipe fp32) mediump renders are measured, so the table in docs/fp16-emulation.md can tell
+// the error of fp16 from that of the tier's maths.
+TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
+  const HardCase& hc = GetParam();
+  std::string error;
+  auto scene = runtime::parseScene(std::string(hc.name) + ".json", hc.scene, &error);
+  ASSERT_TRUE(scene) << error;
+  auto vk = runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out) {
+    scene->tier = tier;
+    auto frame = runtime::SceneFrame::prepare(*scene, dir, &error);
+    ASSERT_TRUE(frame) << error;
+    ASSERT_TRUE(vk->render(frame->frame(), out, &error)) << error;
+  };
+  runtime::FrameResult reference;
+  render("reference", *plainDir_, &reference);
+  ASSERT_FALSE(HasFatalFailure());
+  Comparison self = compare(reference, reference);
+  EXPECT_EQ(self.nonFinite, 0u) << "the reference itself is not finite";
+  float peak = 0;
+  for (size_t i = 0; i < reference.hdr.size(); ++i) peak = i % 4 == 3 ? peak : std::max(peak, reference.hdr[i]);
+  std::printf("fp16 hard case %-16s reference peak HDR %g\n", hc.name, double(peak));
+  for (const char* tier : {"high", "mid"}) {
+    SCOPED_TRACE(tier);
+    runtime::FrameResult emulated, plain;
+    render(tier, *emulatedDir_, &emulated);
+    render(tier, *plainDir_, &plain);
+    ASSERT_FALSE(HasFatalFailure());
+    Comparison e = compare(emulated, reference), p = compare(plain, reference);
+    if (const char* dump = std::getenv("FACET_FP16_DUMP")) {  // a folder: writes the 8-bit images
+      std::string stem = std::string(dump) + "/" + hc.name + ".";
+      std::string ignored;
+      runtime::writePng(stem + "reference.png", reference.width, reference.height, reference.ldr, &ignored);
+      runtime::writePng(stem + tier + ".fp16.png", emulated.width, emulated.height, emulated.ldr, &ignored);
+      runtime::writePng(stem + tier + ".fp32.png", plain.width, plain.height, plain.ldr, &ignored);
+    }
+    std::printf("fp16 hard case %-16s %-4s fp16-emulated: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu"
+                " | fp32 mediump: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu\n",
+                hc.name, tier, e.psnr, e.maxAbsHdr, e.nonFinite, e.blackWhereLit, p.psnr, p.maxAbsHdr, p.nonFinite,
+                p.blackWhereLit);
+    EXPECT_EQ(e.nonFinite, 0u);
+    // The mid tier's own maths may darken a pixel the reference lights (Zioma's fused V·F has
+    // no n·v: a metal's grazing rim); fp16 must add none.
+    EXPECT_LE(e.blackWhereLit, p.blackWhereLit);
+    EXPECT_GT(e.psnr, std::string(tier) == "high" ? hc.psnrFloorHigh : hc.psnrFloorMid);
+  }
+  for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Fp16HardCase, ::testing::ValuesIn(kHardCases),
+                         [](const ::testing::TestParamInfo<HardCase>& p) { return std::string(p.param.name); });
+
+}  // namespace
+}  // namespace facet
