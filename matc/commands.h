@@ -23,6 +23,7 @@ struct InfoArgs {
   std::string variant;  // with stage + target: print that shader
   std::string stage;
   std::string target;
+  std::string scene;    // check the package has the variant this scene asks for
 };
 int infoCommand(const InfoArgs& args);
 

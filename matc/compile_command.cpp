@@ -11,6 +11,7 @@
 #include "facet/package.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/scene.h"
+#include "scene_keys.h"
 
 namespace facet::matc {
 
@@ -91,22 +92,16 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
-  auto tier = permutations::tierFromString(scene->tier);
-  if (!tier || std::find(options->tiers.begin(), options->tiers.end(), *tier) == options->tiers.end()) {
+  auto key = sceneKeyFor(*scene, args.scene, material.name, material.shading == "lit", &error);
+  if (!key) {
+    printError(error);
+    return 1;
+  }
+  if (std::find(options->tiers.begin(), options->tiers.end(), key->tier) == options->tiers.end()) {
     printError(args.scene + ": the scene asks for tier '" + scene->tier + "', which this build does not include");
     return 1;
   }
-  permutations::SceneNeeds needs;
-  permutations::MaterialNeeds materialNeeds{material.shading == "lit"};
-  for (const runtime::SceneObject& object : scene->objects)
-    if (object.material == material.name)
-      needs.keys.push_back(
-          permutations::requestKey(materialNeeds, *tier, scene->sun.has_value(), int(scene->lights.size())));
-  if (needs.keys.empty()) {
-    printError(args.scene + ": no object of the scene uses material '" + material.name + "'");
-    return 1;
-  }
-  options->scene = std::move(needs);
+  options->scene = permutations::SceneNeeds{{*key}};
   return 0;
 }
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -5,6 +6,8 @@
 #include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
+#include "facet/runtime/scene.h"
+#include "scene_keys.h"
 
 namespace facet::matc {
 namespace {
@@ -28,7 +31,7 @@ std::vector<uint32_t> words(const package::Shader& s) {
 // The static cost table (DESIGN.md, "Measuring"), from each variant's optimised SPIR-V.
 void printCosts(const package::Package& pkg) {
   std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width)\n");
-  std::printf("  %-14s %-8s %5s %6s %6s %4s %4s %8s %8s\n", "variant", "stage", "alu", "scalar", "transc", "div", "tex",
+  std::printf("  %-18s %-8s %5s %6s %6s %4s %4s %8s %8s\n", "variant", "stage", "alu", "scalar", "transc", "div", "tex",
               "varyings", "mediump");
   for (const package::Variant& v : pkg.variants) {
     for (const package::Shader& s : v.shaders) {
@@ -36,10 +39,10 @@ void printCosts(const package::Package& pkg) {
       compiler::StageCost c;
       std::string error;
       if (!compiler::analyseSpirvCost(words(s), &c, &error)) {
-        std::printf("  %-14s %-8s (%s)\n", v.key.c_str(), package::toString(s.stage), error.c_str());
+        std::printf("  %-18s %-8s (%s)\n", v.key.c_str(), package::toString(s.stage), error.c_str());
         continue;
       }
-      std::printf("  %-14s %-8s %5u %6u %6u %4u %4u %8u %7.0f%%\n", v.key.c_str(), package::toString(s.stage), c.aluOps,
+      std::printf("  %-18s %-8s %5u %6u %6u %4u %4u %8u %7.0f%%\n", v.key.c_str(), package::toString(s.stage), c.aluOps,
                   c.scalarAluOps, c.transcendentalOps, c.divisions, c.textureSamples, c.varyingComponents,
                   c.relaxedPercent());
     }
@@ -111,6 +114,30 @@ int printShader(const package::Package& pkg, const InfoArgs& args) {
   return 1;
 }
 
+// Which of the package's variants a scene asks for: the count with and without the scene, and a
+// clear error (exit 1) when the package lacks it.
+int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
+  std::string error;
+  auto scene = runtime::loadScene(scenePath, &error);
+  if (!scene) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return 1;
+  }
+  auto key = sceneKeyFor(*scene, scenePath, pkg.material.name, pkg.material.shading == "lit", &error);
+  if (!key) {
+    printError(error);
+    return 1;
+  }
+  bool built = std::any_of(pkg.variants.begin(), pkg.variants.end(),
+                           [&](const package::Variant& v) { return v.key == key->toString(); });
+  std::printf("%s: scene %s asks for %s; the package has %zu variant%s%s\n", pkg.material.name.c_str(),
+              scenePath.c_str(), key->toString().c_str(), pkg.variants.size(), pkg.variants.size() == 1 ? "" : "s",
+              built ? ", including it" : "");
+  if (built) return 0;
+  printError("the package was not built with " + key->toString() + "; compile with --scene " + scenePath);
+  return 1;
+}
+
 }  // namespace
 
 int infoCommand(const InfoArgs& args) {
@@ -125,6 +152,7 @@ int infoCommand(const InfoArgs& args) {
     return 1;
   }
   if (wantsShader) return printShader(*r.package, args);
+  if (!args.scene.empty()) return printSceneNeeds(*r.package, args.scene);
   printSummary(r);
   return 0;
 }

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");
   infoCmd->add_option("input", info.input, "package (.matpkg)")->required();
   infoCmd->add_option("--variant", info.variant, "variant key, e.g. high.dir1 (with --stage and --target)");
+  infoCmd->add_option("--scene", info.scene, "scene JSON: the variant it asks this material for, and whether it is built");
   infoCmd->add_option("--stage", info.stage, "vertex | fragment")->check(CLI::IsMember({"vertex", "fragment"}));
   infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
       ->check(CLI::IsMember({"glsl_es_300", "spirv", "msl"}));

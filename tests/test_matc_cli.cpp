@@ -116,6 +116,29 @@ TEST(MatcCli, SceneManifestBuildsOnlyTheVariantsItNeeds) {
   EXPECT_FALSE(fs::exists(dir + "/g.matpkg"));
 }
 
+// A scene with point lights asks for a .pt variant: a default build lacks it (info --scene says
+// so, exit 1), --point-lights or --scene builds it.
+TEST(MatcCli, PointLightVariantsAreBuiltOnRequestAndCheckedAgainstAScene) {
+  std::string dir = facet::test::scratchDir("cli-lamps");
+  std::string scene = facet::test::examplePath("scenes/lamps.json");
+  std::string material = facet::test::examplePath("materials/red_plastic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/plain.matpkg").exitCode, 0);
+  auto missing = run(kMatc + " info " + dir + "/plain.matpkg --scene " + scene);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.out.find("asks for high.dir0.pt2; the package has 8 variants\n"), std::string::npos) << missing.out;
+  EXPECT_NE(missing.err.find("not built with high.dir0.pt2"), std::string::npos) << missing.err;
+
+  auto built = run(kMatc + " compile " + material + " -o " + dir + "/lamps.matpkg --point-lights 0,2");
+  ASSERT_EQ(built.exitCode, 0) << built.err;
+  EXPECT_NE(built.out.find("16 variants"), std::string::npos) << built.out;
+  auto found = run(kMatc + " info " + dir + "/lamps.matpkg --scene " + scene);
+  EXPECT_EQ(found.exitCode, 0) << found.err;
+  EXPECT_NE(found.out.find("the package has 16 variants, including it"), std::string::npos) << found.out;
+
+  EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --point-lights 3").exitCode, 2);
+  EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
+}
+
 TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {
   std::string dir = facet::test::scratchDir("cli-tiers");
   std::string mat = facet::test::examplePath("materials/red_plastic.mat");

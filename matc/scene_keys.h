@@ -1,0 +1,19 @@
+// The variant a scene manifest asks a material for: the one place matc turns a scene into a
+// VariantKey (compile --scene builds it, info --scene checks the package has it), with the same
+// requestKey the runtime uses when it renders that scene.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "facet/permutations/variant_key.h"
+#include "facet/runtime/scene.h"
+
+namespace facet::matc {
+
+// Nullopt, with *error set, when the scene's tier is unknown or no object of the scene uses the
+// material.
+std::optional<permutations::VariantKey> sceneKeyFor(const runtime::Scene& scene, const std::string& scenePath,
+                                                    const std::string& material, bool lit, std::string* error);
+
+}  // namespace facet::matc
