@@ -143,6 +143,16 @@ void expectRejected(const std::vector<uint8_t>& bytes, const std::string& expect
   EXPECT_NE(r.error.find(expectedPart), std::string::npos) << "error was: " << r.error;
 }
 
+// `good` with `edit` applied and its checksum made valid again, so the structural checks are
+// what must reject it.
+template <typename Edit>
+void expectEditRejected(const std::vector<uint8_t>& good, Edit edit, const std::string& expectedPart) {
+  std::vector<uint8_t> b = good;
+  edit(b);
+  resealChecksum(b);
+  expectRejected(b, expectedPart);
+}
+
 std::filesystem::path scratchDir(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() /
              ("facet_test_package_" + std::to_string(getpid()) + "_" + name);
@@ -267,12 +277,7 @@ TEST(Package, NonPackageIsRejectedByMagic) {
 // allocation sized from one of these numbers would abort the test.
 TEST(Package, HostileCountsDoNotAllocate) {
   const std::vector<uint8_t> good = pkg::write(samplePackage());
-  auto hostile = [&](auto edit, const std::string& expectedPart) {
-    std::vector<uint8_t> b = good;
-    edit(b);
-    resealChecksum(b);
-    expectRejected(b, expectedPart);
-  };
+  auto hostile = [&](auto edit, const std::string& expectedPart) { expectEditRejected(good, edit, expectedPart); };
 
   hostile([](auto& b) { storeLE(b, 12, 0xFFFFFFFF, 4); }, "sections");
   hostile([](auto& b) { b.resize(100); storeLE(b, 16, 100, 8); },
@@ -467,12 +472,7 @@ TEST(Package, TexsSectionMatchesTheDocumentedExample) {
 // Every field of a TEXS entry is checked; each case has a valid checksum.
 TEST(Package, HostileTextureFieldsAreRejected) {
   const std::vector<uint8_t> good = pkg::write(samplePackage());
-  auto hostile = [&](auto edit, const std::string& expectedPart) {
-    std::vector<uint8_t> b = good;
-    edit(b);
-    resealChecksum(b);
-    expectRejected(b, expectedPart);
-  };
+  auto hostile = [&](auto edit, const std::string& expectedPart) { expectEditRejected(good, edit, expectedPart); };
   const TexsEntry t = firstTexture(good);
   const size_t texs = sectionOffset(good, "TEXS");
   hostile([&](auto& b) { storeLE(b, texs, 0xFFFFFFFF, 4); }, "texture count 4294967295");

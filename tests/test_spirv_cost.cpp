@@ -59,3 +59,20 @@ TEST(SpirvCost, MalformedModuleIsAnErrorNotACrash) {
   EXPECT_FALSE(facet::compiler::analyseSpirvCost({0x07230203, 0x10000, 0, 10, 0, 0xffff0001}, &cost, &error));
   EXPECT_NE(error.find("truncated"), std::string::npos);
 }
+
+// matc info analyses SPIR-V read from a package file: an instruction cut short (a string without
+// its NUL, a type without its operands) is read within its own words, never past them (ASan
+// checks this in the sanitizer suite).
+TEST(SpirvCost, ShortInstructionsAreReadWithinTheirWords) {
+  const uint32_t magic = 0x07230203, version = 0x00010000;
+  const uint32_t glsl = 0x4c534c47;  // "GLSL" with no terminating NUL
+  std::vector<uint32_t> words = {magic, version, 0, 10, 0,
+                                 (3u << 16) | 11u, 1, glsl,  // OpExtInstImport %1 "GLSL…
+                                 (2u << 16) | 23u, 2};       // OpTypeVector %2 (component type and count missing)
+  facet::compiler::StageCost cost;
+  std::string error;
+  EXPECT_TRUE(facet::compiler::analyseSpirvCost(words, &cost, &error)) << error;
+  words.push_back((9u << 16) | 71u);  // an instruction claiming more words than remain
+  EXPECT_FALSE(facet::compiler::analyseSpirvCost(words, &cost, &error));
+  EXPECT_NE(error.find("truncated instruction at word 10"), std::string::npos) << error;
+}

@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 
+#include "spirv_walk.h"
+
 namespace facet::compiler {
 namespace {
 
@@ -59,10 +61,6 @@ std::vector<uint32_t> valueOperands(const uint32_t* w, uint32_t count, uint32_t 
 
 bool lowerRelaxedToQuantized(std::vector<uint32_t>* words, QuantizeCounts* counts, std::string* error) {
   const std::vector<uint32_t>& in = *words;
-  if (in.size() < 5 || in[0] != SpvMagicNumber) {
-    *error = "not a SPIR-V module";
-    return false;
-  }
   *counts = {};
 
   // Pass 1: instruction boundaries, float types, value types, RelaxedPrecision decorations.
@@ -73,30 +71,25 @@ bool lowerRelaxedToQuantized(std::vector<uint32_t>* words, QuantizeCounts* count
   std::set<uint32_t> relaxed;
   uint32_t glslStd = 0;
   bool inFunction = false;
-  for (size_t i = 5; i < in.size();) {
-    uint32_t count = in[i] >> 16, op = in[i] & 0xffff;
-    if (count == 0 || i + count > in.size()) {
-      *error = "truncated instruction at word " + std::to_string(i);
-      return false;
-    }
-    const uint32_t* w = &in[i];
-    instructions.push_back({i, count, op});
+  bool walked = forEachSpirvInstruction(in, [&](const SpirvInstruction& ins) {
+    const uint32_t op = ins.opcode;
+    auto w = [&](uint32_t i) { return ins.operand(i); };
+    instructions.push_back({ins.offset, ins.count, op});
     switch (op) {
       case SpvOpExtInstImport:
-        if (count > 2 && std::string(reinterpret_cast<const char*>(w + 2), (count - 2) * 4).c_str() == std::string("GLSL.std.450"))
-          glslStd = w[1];
+        if (ins.literalString(2) == "GLSL.std.450") glslStd = w(1);
         break;
       case SpvOpTypeFloat:
-        if (count >= 3 && w[2] == 32) shapes[w[1]] = FloatShape::Scalar;
+        if (w(2) == 32) shapes[w(1)] = FloatShape::Scalar;
         break;
       case SpvOpTypeVector:
-        if (count >= 4 && shapes.count(w[2]) && shapes[w[2]] == FloatShape::Scalar) shapes[w[1]] = FloatShape::Vector;
+        if (shapes.count(w(2)) && shapes[w(2)] == FloatShape::Scalar) shapes[w(1)] = FloatShape::Vector;
         break;
       case SpvOpTypeMatrix:
-        if (count >= 4 && shapes.count(w[2]) && shapes[w[2]] == FloatShape::Vector) shapes[w[1]] = FloatShape::Matrix;
+        if (shapes.count(w(2)) && shapes[w(2)] == FloatShape::Vector) shapes[w(1)] = FloatShape::Matrix;
         break;
       case SpvOpDecorate:
-        if (count >= 3 && w[2] == SpvDecorationRelaxedPrecision) relaxed.insert(w[1]);
+        if (w(2) == SpvDecorationRelaxedPrecision) relaxed.insert(w(1));
         break;
       case SpvOpFunction: inFunction = true; break;
       case SpvOpFunctionEnd: inFunction = false; break;
@@ -106,12 +99,12 @@ bool lowerRelaxedToQuantized(std::vector<uint32_t>* words, QuantizeCounts* count
     SpvHasResultAndType(SpvOp(op), &hasResult, &hasType);
     // OpFunction's "result type" is its return type (glslang decorates mediump functions): the
     // function id is not a value, so it is never quantized.
-    if (hasResult && hasType && count >= 3 && op != SpvOpFunction) {
-      typeOf[w[2]] = w[1];
-      if (inFunction) opOf[w[2]] = op;
+    if (hasResult && hasType && ins.count >= 3 && op != SpvOpFunction) {
+      typeOf[w(2)] = w(1);
+      if (inFunction) opOf[w(2)] = op;
     }
-    i += count;
-  }
+  }, error);
+  if (!walked) return false;
   auto shapeOf = [&](uint32_t type) {
     auto it = shapes.find(type);
     return it == shapes.end() ? FloatShape::None : it->second;

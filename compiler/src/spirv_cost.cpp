@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 
+#include "spirv_walk.h"
+
 namespace facet::compiler {
 namespace {
 
@@ -43,10 +45,6 @@ bool isTranscendental(uint32_t ext) {
 }  // namespace
 
 bool analyseSpirvCost(const std::vector<uint32_t>& words, StageCost* cost, std::string* error) {
-  if (words.size() < 5 || words[0] != SpvMagicNumber) {
-    *error = "not a SPIR-V module";
-    return false;
-  }
   std::map<uint32_t, uint32_t> components;  // type id -> scalar components
   std::map<uint32_t, uint32_t> pointee;     // pointer type id -> pointee type id
   std::set<uint32_t> relaxed, builtins;
@@ -55,41 +53,37 @@ bool analyseSpirvCost(const std::vector<uint32_t>& words, StageCost* cost, std::
   bool inFunction = false;
   *cost = {};
 
-  for (size_t i = 5; i < words.size();) {
-    uint32_t count = words[i] >> 16, op = words[i] & 0xffff;
-    if (count == 0 || i + count > words.size()) {
-      *error = "truncated instruction at word " + std::to_string(i);
-      return false;
-    }
-    const uint32_t* w = &words[i];
+  bool walked = forEachSpirvInstruction(words, [&](const SpirvInstruction& ins) {
+    const uint32_t op = ins.opcode;
+    auto w = [&](uint32_t i) { return ins.operand(i); };
     switch (op) {
       case SpvOpExtInstImport:
-        if (std::string(reinterpret_cast<const char*>(w + 2)) == "GLSL.std.450") glslStd = w[1];
+        if (ins.literalString(2) == "GLSL.std.450") glslStd = w(1);
         break;
-      case SpvOpTypeBool: case SpvOpTypeInt: case SpvOpTypeFloat: components[w[1]] = 1; break;
-      case SpvOpTypeVector: components[w[1]] = components[w[2]] * w[3]; break;
-      case SpvOpTypeMatrix: components[w[1]] = components[w[2]] * w[3]; break;
-      case SpvOpTypePointer: pointee[w[1]] = w[3]; break;
+      case SpvOpTypeBool: case SpvOpTypeInt: case SpvOpTypeFloat: components[w(1)] = 1; break;
+      case SpvOpTypeVector: components[w(1)] = components[w(2)] * w(3); break;
+      case SpvOpTypeMatrix: components[w(1)] = components[w(2)] * w(3); break;
+      case SpvOpTypePointer: pointee[w(1)] = w(3); break;
       case SpvOpDecorate:
-        if (w[2] == SpvDecorationRelaxedPrecision) relaxed.insert(w[1]);
-        if (w[2] == SpvDecorationBuiltIn) builtins.insert(w[1]);
+        if (w(2) == SpvDecorationRelaxedPrecision) relaxed.insert(w(1));
+        if (w(2) == SpvDecorationBuiltIn) builtins.insert(w(1));
         break;
       case SpvOpMemberDecorate:
-        if (count > 3 && w[3] == SpvDecorationBuiltIn) builtins.insert(w[1]);  // gl_PerVertex-style blocks
+        if (w(3) == SpvDecorationBuiltIn) builtins.insert(w(1));  // gl_PerVertex-style blocks
         break;
       case SpvOpVariable:
-        if (!inFunction && count >= 4 && w[3] == SpvStorageClassInput) inputs.emplace_back(w[2], w[1]);
+        if (!inFunction && w(3) == SpvStorageClassInput) inputs.emplace_back(w(2), w(1));
         break;
       case SpvOpFunction: inFunction = true; break;
       case SpvOpFunctionEnd: inFunction = false; break;
       default: break;
     }
-    if (inFunction && count >= 3) {
-      uint32_t resultType = w[1], result = w[2];
+    if (inFunction && ins.count >= 3) {
+      uint32_t resultType = w(1), result = w(2);
       uint32_t n = components.count(resultType) ? components[resultType] : 1;
       bool counted = false;
-      if (op == SpvOpExtInst && count >= 5 && w[3] == glslStd) {
-        if (isTranscendental(w[4])) {
+      if (op == SpvOpExtInst && ins.count >= 5 && w(3) == glslStd) {
+        if (isTranscendental(w(4))) {
           ++cost->transcendentalOps;
         } else {
           ++cost->aluOps;
@@ -105,8 +99,8 @@ bool analyseSpirvCost(const std::vector<uint32_t>& words, StageCost* cost, std::
       if (isTextureSample(op)) ++cost->textureSamples;
       if (counted && relaxed.count(result)) ++cost->relaxedOps;
     }
-    i += count;
-  }
+  }, error);
+  if (!walked) return false;
   for (const auto& [variable, pointerType] : inputs) {
     if (builtins.count(variable)) continue;
     uint32_t type = pointee.count(pointerType) ? pointee[pointerType] : 0;
