@@ -14,7 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
-#include <regex>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -77,20 +77,30 @@ size_t countOf(const std::string& text, const std::string& needle) {
   return n;
 }
 
+// The whitespace-separated words of each line of a disassembly.
+std::vector<std::vector<std::string>> disassemblyLines(const std::string& text) {
+  std::vector<std::vector<std::string>> out;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    out.emplace_back(std::istream_iterator<std::string>(words), std::istream_iterator<std::string>());
+  }
+  return out;
+}
+
+// Whether the line is "%id = OpName ...", the definition of a value.
+bool definesValue(const std::vector<std::string>& w) { return w.size() >= 3 && w[0][0] == '%' && w[1] == "="; }
+
 // An independent reading of the contract, from the disassembly: ids decorated RelaxedPrecision
 // that are 32-bit float scalar/vector values computed in a function, each with its opcode.
 std::map<std::string, std::string> relaxedFloatValues(const std::string& text) {
   std::set<std::string> relaxed, floatTypes;
   std::map<std::string, std::string> defs;  // id -> "Op type"
-  std::istringstream lines(text);
-  std::string line;
-  static const std::regex decorate(R"(OpDecorate (%\d+) RelaxedPrecision)");
-  static const std::regex def(R"((%\d+) = (Op\w+) ?(\S*)(.*))");
-  while (std::getline(lines, line)) {
-    std::smatch m;
-    if (std::regex_search(line, m, decorate)) relaxed.insert(m[1]);
-    if (!std::regex_search(line, m, def)) continue;
-    const std::string id = m[1], op = m[2], first = m[3], rest = m[4];
+  for (const auto& w : disassemblyLines(text)) {
+    if (w.size() >= 3 && w[0] == "OpDecorate" && w[2] == "RelaxedPrecision") relaxed.insert(w[1]);
+    if (!definesValue(w)) continue;
+    const std::string id = w[0], op = w[2], first = w.size() > 3 ? w[3] : "";
     if (op == "OpTypeFloat" && first == "32") floatTypes.insert(id);
     if (op == "OpTypeVector" && floatTypes.count(first)) floatTypes.insert(id);
     defs[id] = op + " " + first;
@@ -185,10 +195,11 @@ TEST(Fp16Pass, QuantizesEveryRelaxedFloatResultAndValidates) {
   EXPECT_GT(counts.operands, 0u) << "constants and highp loads feed relaxed maths";
   EXPECT_GT(counts.skippedMatrices, 0u);
   // Renamed in place: each of those ids is now defined by the quantize, the original op moved.
+  const auto afterLines = disassemblyLines(after);
   auto nowDefinedBy = [&](const std::string& id) {
-    std::smatch m;
-    std::regex def(id + R"( = (Op\w+))");
-    return std::regex_search(after, m, def) ? m[1].str() : std::string();
+    for (const auto& w : afterLines)
+      if (definesValue(w) && w[0] == id) return w[2];
+    return std::string();
   };
   for (const auto& [id, op] : expected) EXPECT_EQ(nowDefinedBy(id), "OpQuantizeToF16") << id << " was " << op;
 }
