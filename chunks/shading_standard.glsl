@@ -3,13 +3,19 @@
 //   diffuseColor = (1 − metallic) · baseColor
 //   f0           = 0.16 · reflectance² · (1 − metallic) + metallic · baseColor
 //   α            = r², r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS)
-//   L_direct  = (diffuseColor · f_d + f_s) · E_light · n·l      f_s: the tier's specular_lobe
-//   L_ambient = diffuseColor · L_sky · ao
-// A constant ambient radiance L gives irradiance π·L; times f_d = 1/π this is diffuseColor·L.
+//   L_direct  = (diffuseColor · f_d + f_s · c_ms) · E_light · n·l      f_s: the tier's specular_lobe
+//   L_ambient = (diffuseColor · E_env(n)/π + L_spec,ibl · c_ms) · ao
+// E_env/π comes from SH (ambient_sh.glsl; a constant sky L gives exactly L), L_spec,ibl from the
+// tier's image-based specular (ibl_split_sum.glsl, env_brdf_karis.glsl or ibl_two_mip.glsl), and
+// c_ms is the multiple-scattering compensation (1 except with FACET_ENERGY_COMPENSATION, the
+// reference tier). ao also scales the ambient specular: a cheap stand-in for specular occlusion
+// (Filament derives a separate one from ao, n·v and roughness; not done).
 // Source: Filament PBR document §4.8 (parameterization), §4.6 (reflectance remapping).
 // With FACET_VERTEX_DIFFUSE (Zioma 2015's per-vertex diffuse for mid and low tiers), the diffuse
 // irradiance arrives interpolated from the vertex stage and only specular is shaded per pixel.
-// Needs: diffuse_lambert.glsl and the tier's specular_lobe. fp16: inputs are pre-exposed.
+// This file holds the material terms and the direct term; the ambient term is in
+// shading_ambient.glsl. Needs: diffuse_lambert.glsl and the tier's specular_lobe. fp16: inputs
+// are pre-exposed.
 //
 // With FACET_GAMMA_HACK (the low tier; R. Zioma, "Optimizing PBR", SIGGRAPH 2015, "Linear/Gamma"):
 // lighting runs on gamma-encoded colours, gamma approximated by 2 (x_γ = √x). The runtime does not
@@ -31,25 +37,33 @@ vec3 material_diffuse_color(MaterialInputs material) {
     return (1.0 - clamp(material.metallic, 0.0, 1.0)) * clamp(material.baseColor, 0.0, 1.0);
 }
 
-vec3 shade_standard_ambient(MaterialInputs material, vec3 ambient) {
-#if defined(FACET_GAMMA_HACK)
-    ambient = sqrt(ambient);  // radiance encoded like the colours it multiplies (γ = 2)
-#endif
-    return material_diffuse_color(material) * ambient * clamp(material.ambientOcclusion, 0.0, 1.0);
-}
-
-vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
-                                   vec3 lightColor) {
+// f0 in linear, whatever the colour space (the lobes and the environment BRDFs work in linear).
+vec3 material_f0(MaterialInputs material) {
     vec3 baseColor = clamp(material.baseColor, 0.0, 1.0);
     float metallic = clamp(material.metallic, 0.0, 1.0);
     float reflectance = clamp(material.reflectance, 0.0, 1.0);
 #if defined(FACET_GAMMA_HACK)
     vec3 f0Gamma = vec3(0.4 * reflectance * (1.0 - metallic)) + metallic * baseColor;
-    vec3 f0 = f0Gamma * f0Gamma;  // the lobe works in linear
+    return f0Gamma * f0Gamma;
 #else
-    vec3 f0 = vec3(0.16 * reflectance * reflectance * (1.0 - metallic)) + metallic * baseColor;
+    return vec3(0.16 * reflectance * reflectance * (1.0 - metallic)) + metallic * baseColor;
 #endif
-    float perceptualRoughness = clamp(material.roughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+}
+
+float material_perceptual_roughness(MaterialInputs material) {
+    return clamp(material.roughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+}
+
+#if defined(FACET_ENERGY_COMPENSATION)
+// Set once per pixel by shade_standard_ambient_specular (which reads the DFG terms it needs)
+// before any light is shaded; multiplies every specular term.
+vec3 shading_energy_compensation = vec3(1.0);
+#endif
+
+vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
+                                   vec3 lightColor) {
+    vec3 f0 = material_f0(material);
+    float perceptualRoughness = material_perceptual_roughness(material);
     float alpha = perceptualRoughness * perceptualRoughness;
 
     vec3 h = normalize(v + l);
@@ -59,6 +73,9 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
     float LoH = clamp(dot(l, h), 0.0, 1.0);
 
     vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, f0);
+#if defined(FACET_ENERGY_COMPENSATION)
+    specular *= shading_energy_compensation;
+#endif
     // fp16: the lobe is ≤ 65504 (saturated) but the outgoing light need not be: at a grazing
     // sun glint (n = h, n·v = n·l = c; specular_ggx_smith.glsl) f_s · E · n·l ≈ 1269 E / c at the
     // roughness floor, 3.6e4 at c = 0.1 and 4.6e5 as c → 0.001 with E = 2.86 (the 110 000 lux

@@ -2,6 +2,9 @@
 // fragment stage in highp/mediump as the precision policy says: positions far from the origin
 // need fp32 (a fp16 world position 1 km away has 0.5 m steps).
 #include "math.glsl"
+#if defined(FACET_VERTEX_DIFFUSE)
+#include "ambient_sh.glsl"
+#endif
 #if defined(FACET_VERTEX_DIFFUSE) && FACET_POINT_LIGHTS > 0
 #include "light_punctual.glsl"
 
@@ -33,11 +36,12 @@ void main() {
 #endif
 #if defined(FACET_VERTEX_DIFFUSE)
     // Per-vertex diffuse (Zioma 2015: diffuse varies slowly, so mid and low tiers light it per
-    // vertex): irradiance / π from the sky and the directional light. The fragment stage only
+    // vertex): irradiance / π from the environment's SH and the lights. The fragment stage only
     // multiplies it by the material's diffuse colour. n·l is clamped per vertex, which darkens
-    // the terminator slightly on coarse meshes.
+    // the terminator slightly on coarse meshes. SH irradiance is smooth (at most quadratic in n),
+    // which per-vertex evaluation and interpolation follow closely.
     vec3 n = normalize(v_normal);
-    vec3 irradiance = frame.ambient.rgb;
+    vec3 irradiance = sh_irradiance_over_pi(n);
 #if defined(FACET_DIRECTIONAL_LIGHT)
     irradiance += frame.lightColor.rgb * (clamp(dot(n, normalize(frame.lightDirection.xyz)), 0.0, 1.0) * INV_PI);
 #endif

@@ -1,5 +1,6 @@
 // Forward pass, lit, fragment stage: evaluate the material's surface program, then shade with
-// a constant ambient, in dir1 variants one directional light, and FACET_POINT_LIGHTS punctual
+// image-based ambient light (SH diffuse, unless lit per vertex, and the tier's environment
+// specular), in dir1 variants one directional light, and FACET_POINT_LIGHTS punctual
 // lights, each read from its fixed place in the frame block (unrolled below: no dynamic
 // indexing). Writes pre-exposed linear HDR.
 #include "math.glsl"
@@ -10,7 +11,26 @@
 #endif
 #include "diffuse_lambert.glsl"
 #include "facet:specular"
+#if !defined(FACET_VERTEX_DIFFUSE)
+#include "ambient_sh.glsl"
+#endif
+// The assembler places each chunk once, at its first #include, whatever the #if around it: a
+// chunk shared by several ambient models is included outside the conditionals.
+#include "equirect.glsl"
+#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC)
+#include "ibl_prefiltered.glsl"
+#endif
+#if defined(FACET_IBL_SPLIT_SUM)
+#include "ibl_split_sum.glsl"
+#endif
+#if defined(FACET_IBL_ANALYTIC)
+#include "env_brdf_karis.glsl"
+#endif
+#if defined(FACET_IBL_TWO_MIP)
+#include "ibl_two_mip.glsl"
+#endif
 #include "shading_standard.glsl"
+#include "shading_ambient.glsl"
 #include "output_blending.glsl"
 #if FACET_POINT_LIGHTS > 0
 #include "light_punctual.glsl"
@@ -37,8 +57,10 @@ void main() {
 #if defined(FACET_VERTEX_DIFFUSE)
     vec3 color = material_diffuse_color(material) * v_diffuseLight * clamp(material.ambientOcclusion, 0.0, 1.0);
 #else
-    vec3 color = shade_standard_ambient(material, frame.ambient.rgb);
+    vec3 color = shade_standard_ambient(material, sh_irradiance_over_pi(shading_normal));
 #endif
+    // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
+    color = add_ambient_specular(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
 #if defined(FACET_DIRECTIONAL_LIGHT)
     vec3 l = normalize(frame.lightDirection.xyz);
     color += shade_standard_direct(material, shading_normal, shading_view, l, frame.lightColor.rgb);

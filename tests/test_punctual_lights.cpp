@@ -210,9 +210,10 @@ TEST(PunctualLights, EveryTierRendersAndIsMeasuredAgainstReference) {
   for (const char* tier : {"high", "mid", "low"}) {
     double db = facet::test::psnr(images[tier].ldr, images["reference"].ldr);
     std::printf("punctual lights, tier %-4s vs reference: %.1f dB (8-bit PSNR)\n", tier, db);
-    // Measured: high 99 dB (lavapipe runs mediump at fp32), mid 58.7, low 31.2 (LUT specular and
-    // the gamma hack); the floors leave a few dB of margin.
-    EXPECT_GT(db, std::string(tier) == "low" ? 28.0 : 50.0) << tier;
+    // Measured: high 66.8 dB (lavapipe runs mediump at fp32; what differs is the reference's energy
+    // compensation), mid 47.5 (plus Karis's environment BRDF), low 27.7 (LUT specular, the gamma
+    // hack, two-mip ambient with Zioma's environment BRDF); the floors leave a few dB of margin.
+    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : std::string(tier) == "mid" ? 44.0 : 25.0) << tier;
   }
   EXPECT_TRUE(vk->validationErrors().empty());
 }

@@ -10,6 +10,7 @@
 #include "facet/render_backend.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/scene_frame.h"
+#include "dfg_lookup.h"
 #include "reference/specular_tiers.h"
 #include "reference/standard_model.h"
 #include "sphere_pixels.h"
@@ -106,6 +107,12 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
   double worst = 0;
   facet::test::forEachSpherePixel(scene, 8, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
     glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient);
+    // The constant sky's image-based specular: the environment is `ambient` in every direction and
+    // at every level (exact), so the split-sum term is ambient · (f0·A + B) of the DFG table as
+    // the shader reads it (high tier: no energy compensation).
+    const double f0 = 0.16 * surface.reflectance * surface.reflectance;
+    auto [b, albedo] = facet::test::dfgBilinear(glm::dot(n, v), std::clamp(surface.roughness, 0.089, 1.0));
+    expected += ambient * (f0 * albedo + (1 - f0) * b);
     const float* got = &vulkan_->hdr[(size_t(y) * scene.width + x) * 4];
     for (int ch = 0; ch < 3; ++ch) {
       double error_ = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
@@ -388,7 +395,7 @@ TEST(LowTier, ColourParametersStayAsAuthoredForTheGammaHack) {
   EXPECT_NEAR(floats(*linear)[0], 0.21404, 1e-5);  // the linear tiers still decode
 }
 
-// The low tier's brushed_gold (a metal: no diffuse, no ambient) against the documented formula in
+// The low tier's brushed_gold (a metal: no diffuse; the sky is switched off, so no ambient) against the documented formula in
 // double: HDR = S · f0_γ² · E · n·l with S the table sampled bilinearly at u = max(R·L, 0)⁴,
 // v = roughness, decoded ×16/π, and f0_γ the authored (sRGB) tint; the gamma hack's √ and the
 // final square cancel for a term with nothing added to it. The tessellated sphere's normals differ
@@ -402,6 +409,7 @@ TEST(LowTier, MetalPixelsMatchTheLutFormula) {
   ASSERT_TRUE(scene) << error;
   scene->tier = "low";
   scene->objects[0].material = "brushed_gold";
+  scene->skyLuminance = 0;  // a metal's ambient is all environment specular; this test is the LUT's
   auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
   ASSERT_TRUE(frame) << error;
   auto vk = facet::runtime::createVulkanBackend({true}, &error);

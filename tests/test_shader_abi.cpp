@@ -82,6 +82,13 @@ const facet::package::Variant& highDir1(const facet::compiler::BuildResult& buil
   return built.package.variants.at(0);
 }
 
+// Samplers of the material's own textures ("material_<param>"), leaving out the frame's.
+size_t materialSamplers(const Reflection& r) {
+  size_t n = 0;
+  for (const auto& [name, where] : r.samplers) n += name.rfind("material_", 0) == 0;
+  return n;
+}
+
 const std::vector<uint8_t>& spirv(const facet::package::Variant& v, facet::package::Stage stage) {
   for (const auto& s : v.shaders)
     if (s.stage == stage && s.target == facet::package::Target::Spirv) return s.code;
@@ -111,6 +118,8 @@ TEST(ShaderAbi, FrameAndObjectBlocksMatchTheRuntimeStructs) {
     EXPECT_EQ(frame.offsets.at("lightDirection"), offsetof(FrameUniforms, lightDirection));
     EXPECT_EQ(frame.offsets.at("lightColor"), offsetof(FrameUniforms, lightColor));
     EXPECT_EQ(frame.offsets.at("ambient"), offsetof(FrameUniforms, ambient));
+    EXPECT_EQ(frame.offsets.at("punctualLights"), offsetof(FrameUniforms, punctualLights));
+    EXPECT_EQ(frame.offsets.at("sh"), offsetof(FrameUniforms, sh));
   }
   const Block& object = vs.blocks.at("ObjectUniforms");
   EXPECT_EQ(object.binding, facet::abi::kObjectBinding);
@@ -224,9 +233,9 @@ TEST(ShaderAbi, NormalMapNeedsTangentsOnlyWhenLit) {
   ASSERT_TRUE(a && b);
   EXPECT_EQ(a->package.material.params.at(0).type, facet::package::ParamType::TextureNormal);
   EXPECT_EQ(reflect(spirv(highDir1(*a), facet::package::Stage::Vertex)).inputs.count("a_tangent"), 1u);
-  EXPECT_EQ(reflect(spirv(highDir1(*a), facet::package::Stage::Fragment)).samplers.size(), 1u);
+  EXPECT_EQ(materialSamplers(reflect(spirv(highDir1(*a), facet::package::Stage::Fragment))), 1u);
   EXPECT_EQ(reflect(spirv(highDir1(*b), facet::package::Stage::Vertex)).inputs.count("a_tangent"), 0u);
-  EXPECT_EQ(reflect(spirv(highDir1(*b), facet::package::Stage::Fragment)).samplers.size(), 0u);
+  EXPECT_EQ(reflect(spirv(highDir1(*b), facet::package::Stage::Fragment)).samplers.size(), 0u);  // unlit: no IBL either
 }
 
 TEST(ShaderAbi, SampledTextureGetsASamplerAtItsSlotAndAnUnsampledOneNone) {
@@ -243,9 +252,10 @@ TEST(ShaderAbi, SampledTextureGetsASamplerAtItsSlotAndAnUnsampledOneNone) {
   EXPECT_EQ(params.at(1).offset, 0u);
   EXPECT_EQ(built->package.material.paramBlockSize, 0u);  // no numbers read: no block
 
-  // The fragment stage's samplers: exactly one, at set 1, binding 8 + slot 0.
+  // The fragment stage's material samplers: exactly one, at set 1, binding 8 + slot 0 (the
+  // frame's IBL samplers are checked by IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled).
   Reflection fs = reflect(spirv(highDir1(*built), facet::package::Stage::Fragment));
-  ASSERT_EQ(fs.samplers.size(), 1u);
+  ASSERT_EQ(materialSamplers(fs), 1u);
   ASSERT_EQ(fs.samplers.count("material_albedo"), 1u);
   EXPECT_EQ(fs.samplers.at("material_albedo").first, facet::abi::kTextureSet);
   EXPECT_EQ(fs.samplers.at("material_albedo").second, facet::abi::kMaterialTextureBase);
@@ -289,5 +299,32 @@ TEST(ShaderAbi, SpecularLutSamplerIsAtItsAbiSlotInTheVariantsThatSampleIt) {
     if (!listed) continue;
     EXPECT_EQ(fs.samplers.at(facet::abi::kSpecularLutName).first, facet::abi::kTextureSet);
     EXPECT_EQ(fs.samplers.at(facet::abi::kSpecularLutName).second, facet::abi::kSpecularLutBinding);
+  }
+}
+
+// The image-based lighting textures sit where the runtime binds them (shader_abi.h): the
+// environment in every lit variant, the DFG table only in split-sum tiers (reference, high), and
+// none of them in the vertex stage (vertex-diffuse tiers evaluate SH from the frame block).
+TEST(ShaderAbi, IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled) {
+  EXPECT_EQ(facet::compiler::kEnvironmentLevels, facet::abi::kEnvironmentLevels);
+  EXPECT_STREQ(facet::compiler::kEnvironmentSamplerName, facet::abi::kEnvironmentName);
+  EXPECT_STREQ(facet::compiler::kDfgLutSamplerName, facet::abi::kDfgLutName);
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  const std::pair<uint32_t, uint32_t> environment{facet::abi::kTextureSet, facet::abi::kEnvironmentBinding};
+  const std::pair<uint32_t, uint32_t> dfg{facet::abi::kTextureSet, facet::abi::kDfgLutBinding};
+  for (const auto& v : built->package.variants) {
+    SCOPED_TRACE(v.key);
+    Reflection fs = reflect(spirv(v, facet::package::Stage::Fragment));
+    Reflection vs = reflect(spirv(v, facet::package::Stage::Vertex));
+    ASSERT_TRUE(fs.samplers.count(facet::abi::kEnvironmentName));
+    EXPECT_EQ(fs.samplers.at(facet::abi::kEnvironmentName), environment);
+    bool splitSum = v.key.rfind("reference.", 0) == 0 || v.key.rfind("high.", 0) == 0;
+    EXPECT_EQ(fs.samplers.count(facet::abi::kDfgLutName), splitSum ? 1u : 0u);
+    if (splitSum) {
+      EXPECT_EQ(fs.samplers.at(facet::abi::kDfgLutName), dfg);
+    }
+    EXPECT_TRUE(vs.samplers.empty());
+    EXPECT_EQ(vs.blocks.at("FrameUniforms").size, sizeof(facet::abi::FrameUniforms));
   }
 }

@@ -53,8 +53,8 @@ TEST(Tiers, ZiomaSpecularHasOneDivision) {
 }
 
 // The low tier's specular is one table read: no D, V or F is evaluated, so the whole fragment
-// stage has no division (mid has Zioma's one), one texture sample more than the material's own
-// (red_plastic samples none, painted_tiles one), and fewer ALU ops than mid. Without the light
+// stage has no division (mid has Zioma's one), one texture sample more than mid's (beyond the
+// ambient models' difference), and fewer ALU ops than mid. Without the light
 // there is no specular, and the table is neither sampled nor listed for the variant.
 TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
   for (const char* name : {"red_plastic", "painted_tiles"}) {
@@ -65,10 +65,11 @@ TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
     auto mid = costOf(spirvOf(*built, "mid.dir1", Stage::Fragment));
     EXPECT_EQ(low.divisions, 0u);
     EXPECT_EQ(mid.divisions, 1u);
-    EXPECT_EQ(low.textureSamples, mid.textureSamples + 1);
+    // The table, plus the second environment read of low's two-mip ambient (mid reads it once).
+    EXPECT_EQ(low.textureSamples, mid.textureSamples + 2);
     EXPECT_LT(low.aluOps, mid.aluOps);
     EXPECT_EQ(costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).textureSamples,
-              costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).textureSamples);
+              costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).textureSamples + 1);
 
     const auto& variants = built->package.variants;
     ASSERT_EQ(built->package.textures.size(), 1u);
@@ -85,17 +86,66 @@ TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
   EXPECT_TRUE(high->package.textures.empty());
 }
 
+// How many of the frame block's SH coefficients (member 6, frame.sh[k]) a stage reads: where
+// diffuse ambient light is evaluated.
+int shReads(const std::vector<uint32_t>& words) {
+  const std::string text = facet::compiler::disassembleSpirv(words);
+  int n = 0;
+  for (size_t at = text.find("%frame %int_6 %int_"); at != std::string::npos; at = text.find("%frame %int_6 %int_", at + 1))
+    ++n;
+  return n;
+}
+
 TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
-  // Lambert's 1/π (0.318309873 as a float constant) is where diffuse lighting is evaluated.
+  // Lambert's 1/π (0.318309873 as a float constant) is where the sun's diffuse light is
+  // evaluated; the fragment stages also use it for the environment's equirect mapping, so only
+  // the vertex stages tell. SH irradiance: all nine coefficients read where diffuse is lit, in
+  // the fragment stage for pixel diffuse, in the vertex stage for vertex diffuse (SH3 on mid,
+  // SH2's four on low), never in both.
   auto usesInvPi = [](const std::vector<uint32_t>& words) {
     return facet::compiler::disassembleSpirv(words).find("0.318309873") != std::string::npos;
   };
-  EXPECT_TRUE(usesInvPi(spirvOf(*built, "high.dir1", Stage::Fragment)));
   EXPECT_FALSE(usesInvPi(spirvOf(*built, "high.dir1", Stage::Vertex)));
-  EXPECT_FALSE(usesInvPi(spirvOf(*built, "mid.dir1", Stage::Fragment)));
   EXPECT_TRUE(usesInvPi(spirvOf(*built, "mid.dir1", Stage::Vertex)));
+  for (const char* key : {"reference.dir1", "high.dir1", "high.dir0"}) {
+    EXPECT_EQ(shReads(spirvOf(*built, key, Stage::Fragment)), 9) << key;
+    EXPECT_EQ(shReads(spirvOf(*built, key, Stage::Vertex)), 0) << key;
+  }
+  for (const char* key : {"mid.dir1", "mid.dir0", "low.dir1", "low.dir0"}) {
+    EXPECT_EQ(shReads(spirvOf(*built, key, Stage::Fragment)), 0) << key;
+    EXPECT_EQ(shReads(spirvOf(*built, key, Stage::Vertex)), std::string(key).rfind("low", 0) == 0 ? 4 : 9) << key;
+  }
+}
+
+// The ambient models' texture reads (red_plastic samples no texture of its own): split-sum reads
+// the environment and the DFG table, the analytic model only the environment (Karis's fit
+// replaces the table: a few more ALU ops, one exp2), the two-mip model the environment twice at
+// constant lods; low's dir1 adds its specular LUT. The energy compensation of the reference tier
+// costs one division (1/dfg.y) over high's two of D and V.
+TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  const std::map<std::string, uint32_t> samples = {{"reference.dir0", 2}, {"high.dir0", 2}, {"mid.dir0", 1},
+                                                   {"low.dir0", 2},       {"high.dir1", 2}, {"mid.dir1", 1},
+                                                   {"low.dir1", 3}};
+  for (const auto& [key, expected] : samples)
+    EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).textureSamples, expected) << key;
+  for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
+    EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Vertex)).textureSamples, 0u) << key;
+  EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).divisions, 3u);
+  EXPECT_EQ(costOf(spirvOf(*built, "high.dir0", Stage::Fragment)).divisions, 0u);
+  // Karis's fit: one exp2 more than split-sum's table read, nothing else transcendental added.
+  const auto mid = costOf(spirvOf(*built, "mid.dir0", Stage::Fragment));
+  const auto high = costOf(spirvOf(*built, "high.dir0", Stage::Fragment));
+  EXPECT_EQ(mid.transcendentalOps, high.transcendentalOps + 1);
+  std::printf("dir0 fragment stages (ambient only): high %u ALU / %u transcendental / %u samples, mid %u / %u / %u, "
+              "low %u / %u / %u\n",
+              high.aluOps, high.transcendentalOps, high.textureSamples, mid.aluOps, mid.transcendentalOps,
+              mid.textureSamples, costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).aluOps,
+              costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).transcendentalOps,
+              costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).textureSamples);
 }
 
 TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
@@ -104,7 +154,9 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
   EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).relaxedOps, 0u);
   EXPECT_GT(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   EXPECT_GT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
-  EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
+  // low's fragment stage is the smallest, so the equirect lookup kept highp on purpose (atan,
+  // acos and their scaling: chunks/equirect.glsl) weighs most there: measured 80.9 %.
+  EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 78.0);
 }
 
 // How many values of `a` fall outside the range of `b` over the 3×3 pixels around them, widened
@@ -189,7 +241,10 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
   for (const char* tier : {"high", "mid", "low"}) {
     double db = psnr(images[tier].ldr, images["reference"].ldr);
     std::printf("tier %-5s vs reference: %.1f dB (8-bit PSNR, spheres.json)\n", tier, db);
-    EXPECT_GT(db, 30.0) << tier;
+    // Measured with image-based ambient (a constant sky: every tier's environment is exact, so
+    // the difference is the environment BRDF and, for reference, energy compensation): high 53.1,
+    // mid 36.7 (Karis's fit), low 29.0 (two-mip lerp, Zioma's fit, the gamma hack).
+    EXPECT_GT(db, std::string(tier) == "high" ? 45.0 : std::string(tier) == "mid" ? 32.0 : 26.0) << tier;
   }
 }
 

@@ -63,6 +63,7 @@ std::string frameAndObjectBlocks(Flavour flavour) {
          "    highp vec4 lightColor;\n"
          "    highp vec4 ambient;\n"
          "    PunctualLightData punctualLights[" + std::to_string(permutations::kMaxPointLights) + "];\n"
+         "    highp vec4 sh[9];\n"
          "} frame;\n" +
          blockLayout(flavour, 1) + " uniform ObjectUniforms {\n"
          "    highp mat4 model;\n"
@@ -130,6 +131,19 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
   if (in.tier.precision == permutations::PrecisionPolicy::Highp) s += "#define FACET_PRECISION_HIGHP 1\n";
   if (in.tier.colorSpace == permutations::ColorSpace::GammaHack) s += "#define FACET_GAMMA_HACK 1\n";
+  if (in.material.shading == "lit") {
+    // Image-based ambient (docs/ibl.md, "In the shaders"): the tier's specular model, SH bands for
+    // the diffuse part (evaluated in the vertex stage with FACET_VERTEX_DIFFUSE).
+    switch (in.tier.ambient) {
+      case permutations::AmbientModel::SplitSum: s += "#define FACET_IBL_SPLIT_SUM 1\n"; break;
+      case permutations::AmbientModel::Analytic: s += "#define FACET_IBL_ANALYTIC 1\n"; break;
+      case permutations::AmbientModel::TwoMip: s += "#define FACET_IBL_TWO_MIP 1\n"; break;
+    }
+    if (in.tier.energyCompensation && in.tier.ambient == permutations::AmbientModel::SplitSum)
+      s += "#define FACET_ENERGY_COMPENSATION 1\n";
+    s += "#define FACET_SH_BANDS " + std::to_string(in.tier.shBands == 2 ? 2 : 3) + "\n";
+    s += "#define FACET_ENVIRONMENT_LEVELS " + std::to_string(kEnvironmentLevels) + "\n";
+  }
   return s + "\n";
 }
 
@@ -185,6 +199,20 @@ std::string specularLutSampler(const AssemblyInput& in, Flavour flavour, const c
   if (in.tier.specular != permutations::SpecularModel::Lut || in.material.shading != "lit") return "";
   return std::string(flavour == Flavour::Vulkan ? "layout(set = 1, binding = 1) " : "") + "uniform " + precision +
          " sampler2D " + kSpecularLutSamplerName + ";\n";
+}
+
+// The frame textures of image-based lighting (shader_abi.h): the prefiltered environment in every
+// lit variant, the DFG table in split-sum ones. Vulkan: set 1 at their bindings; GLES by name.
+// Fragment stage only: the vertex stage evaluates SH from the frame block, never a texture.
+std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* precision) {
+  if (in.material.shading != "lit") return "";
+  auto declare = [&](uint32_t binding, const char* name) {
+    return std::string(flavour == Flavour::Vulkan ? "layout(set = 1, binding = " + std::to_string(binding) + ") " : "") +
+           "uniform " + precision + " sampler2D " + name + ";\n";
+  };
+  std::string s = declare(kEnvironmentSamplerBinding, kEnvironmentSamplerName);
+  if (in.tier.ambient == permutations::AmbientModel::SplitSum) s += declare(kDfgLutSamplerBinding, kDfgLutSamplerName);
+  return s;
 }
 
 // The chunk that defines specular_lobe() for a tier's specular model.
@@ -253,6 +281,12 @@ bool templateText(const char* name, const std::string** text, std::string* error
 
 }  // namespace
 
+bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading == "lit"; }
+
+bool samplesDfgLut(const AssemblyInput& in) {
+  return in.material.shading == "lit" && in.tier.ambient == permutations::AmbientModel::SplitSum;
+}
+
 bool samplesSpecularLut(const AssemblyInput& in) {
   return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" &&
          in.key.directionalLight;
@@ -276,7 +310,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   fs += varyings(in, flavour, "in") + "layout(location = 0) out " + fragmentPrecision + " vec4 fragColor;\n\n";
   fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
-        "\n";
+        iblSamplers(in, flavour, fragmentPrecision) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, error)) return false;
   const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
   if (size_t at = fs.find(bodyStart); at != std::string::npos)

@@ -4,10 +4,18 @@ namespace facet::permutations {
 
 TierConfig preset(Tier tier) {
   switch (tier) {
-    case Tier::Reference: return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Highp};
-    case Tier::High: return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Mediump};
-    case Tier::Mid: return {SpecularModel::Zioma, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump};
-    case Tier::Low: return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::GammaHack, PrecisionPolicy::Mediump};
+    case Tier::Reference:
+      return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Highp,
+              AmbientModel::SplitSum, 3, true};
+    case Tier::High:
+      return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Mediump,
+              AmbientModel::SplitSum, 3, false};
+    case Tier::Mid:
+      return {SpecularModel::Zioma, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
+              AmbientModel::Analytic, 3, false};
+    case Tier::Low:
+      return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::GammaHack, PrecisionPolicy::Mediump,
+              AmbientModel::TwoMip, 2, false};
   }
   return {};
 }
@@ -38,6 +46,9 @@ std::string describe(const TierConfig& c) {
   s += c.diffuse == DiffuseModel::Pixel ? ", pixel diffuse" : ", vertex diffuse";
   s += c.colorSpace == ColorSpace::Linear ? ", linear" : ", gamma_hack";
   s += c.precision == PrecisionPolicy::Highp ? ", highp" : ", mediump";
+  const char* ambient[] = {"split_sum", "analytic_env_brdf", "two_mip"};
+  s += std::string(", ") + ambient[int(c.ambient)] + " + sh" + std::to_string(c.shBands);
+  if (c.energyCompensation) s += ", energy compensation";
   return s;
 }
 

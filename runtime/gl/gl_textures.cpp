@@ -73,7 +73,7 @@ bool TextureCache::upload(const SourceTexture& source, Texture* out, std::string
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, source.linearFilter ? GL_LINEAR : GL_NEAREST);
   const GLint wrap = source.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, source.clampT ? GL_CLAMP_TO_EDGE : wrap);
   glBindTexture(GL_TEXTURE_2D, 0);
   if (!checkGlError("texture upload", error)) return false;
   *out = std::move(texture);

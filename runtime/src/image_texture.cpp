@@ -7,6 +7,7 @@
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG
 #define STBI_ONLY_TGA
+#define STBI_ONLY_HDR  // environments (environment.cpp): Radiance .hdr via stbi_loadf
 #include <stb_image.h>
 
 namespace facet::runtime {

@@ -98,6 +98,34 @@ PunctualLight light(const json& j, const std::string& pointer) {
   return l;
 }
 
+glm::dvec3 colour(const json& j, const std::string& pointer) {
+  glm::dvec3 c = vec3(j, pointer);
+  for (int i = 0; i < 3; ++i)
+    if (c[i] < 0 || c[i] > 1e3) fail(pointer + "/" + std::to_string(i), "a colour component must lie in [0, 1000]");
+  return c;
+}
+
+Environment environment(const json& j, const std::filesystem::path& sceneDir) {
+  onlyKeys(j, "/environment", {"image", "sky", "luminance"});
+  Environment e;
+  if (j.contains("image") == j.contains("sky")) fail("/environment", "expected exactly one of 'image' and 'sky'");
+  if (j.contains("image"))
+    e.image = (sceneDir / string(j["image"], "/environment/image")).lexically_normal().string();
+  if (j.contains("luminance")) e.luminance = number(j["luminance"], "/environment/luminance", 0, 1e6);
+  if (j.contains("sky")) {
+    const json& sky = j["sky"];
+    onlyKeys(sky, "/environment/sky", {"zenith", "horizon", "ground", "luminance"});
+    if (sky.contains("luminance")) {
+      if (j.contains("luminance")) fail("/environment/sky/luminance", "give the luminance once");
+      e.luminance = number(sky["luminance"], "/environment/sky/luminance", 0, 1e6);
+    }
+    if (sky.contains("zenith")) e.zenith = colour(sky["zenith"], "/environment/sky/zenith");
+    if (sky.contains("horizon")) e.horizon = colour(sky["horizon"], "/environment/sky/horizon");
+    if (sky.contains("ground")) e.ground = colour(sky["ground"], "/environment/sky/ground");
+  }
+  return e;
+}
+
 SceneObject object(const json& j, const std::string& pointer, const std::filesystem::path& sceneDir) {
   onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
   SceneObject o;
@@ -131,7 +159,7 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
 }
 
 Scene scene(const json& j, const std::filesystem::path& sceneDir) {
-  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "objects"});
+  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects"});
   Scene s;
   if (j.contains("width")) s.width = uint32_t(number(j["width"], "/width", 1, 4096));
   if (j.contains("height")) s.height = uint32_t(number(j["height"], "/height", 1, 4096));
@@ -148,6 +176,11 @@ Scene scene(const json& j, const std::filesystem::path& sceneDir) {
   if (j.contains("sky")) {
     onlyKeys(j["sky"], "/sky", {"luminance"});
     if (j["sky"].contains("luminance")) s.skyLuminance = number(j["sky"]["luminance"], "/sky/luminance", 0, 1e6);
+  }
+  if (j.contains("environment")) {
+    // Two sources of ambient light would leave one of them silently unused.
+    if (j.contains("sky")) fail("/environment", "give either 'sky' (a constant environment) or 'environment', not both");
+    s.environment = environment(j["environment"], sceneDir);
   }
   if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");
   if (j["objects"].size() > 4096) fail("/objects", "more than 4096 objects");

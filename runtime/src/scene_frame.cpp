@@ -9,6 +9,7 @@
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
+#include "facet/runtime/environment.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/mesh.h"
@@ -76,11 +77,23 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     store(f.lightColor, scene.sun->color * scene.sun->illuminance * out->exposure_);
   }
   for (size_t i = 0; i < scene.lights.size(); ++i) storePunctual(scene.lights[i], out->exposure_, &f.punctualLights[i]);
-  glm::dvec3 sky(scene.skyLuminance * out->exposure_);
-  store(f.ambient, sky);
+  // Image-based lighting, pre-exposed like the lights: SH in the frame block, the prefiltered
+  // environment for every lit variant, the DFG table for the tiers whose ambient model reads it.
+  auto lighting = buildEnvironmentLighting(scene, out->exposure_, error);
+  if (!lighting) return nullptr;
+  out->environment_ = std::move(*lighting);
+  for (size_t k = 0; k < abi::kShCoefficients; ++k)
+    for (size_t c = 0; c < 3; ++c) f.sh[k][c] = out->environment_.sh[k][c];
+  const auto& mean = out->environment_.meanRadiance;
+  store(f.ambient, glm::dvec3(mean[0], mean[1], mean[2]));
+  out->environmentTexture_ = std::make_unique<Texture>(environmentTexture(out->environment_));
+  out->frame_.frameTextures.push_back({abi::kEnvironmentBinding, abi::kEnvironmentName, out->environmentTexture_.get()});
+  if (permutations::preset(*tier).ambient == permutations::AmbientModel::SplitSum)
+    out->frame_.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &dfgTexture()});
   out->frame_.width = scene.width;
   out->frame_.height = scene.height;
-  for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = float(sky[i]);
+  // The background is the environment's mean (exact for a constant sky): no backdrop is drawn.
+  for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 
   std::map<std::string, size_t> loaded;  // material name -> index in materials_
   for (size_t i = 0; i < scene.objects.size(); ++i) {

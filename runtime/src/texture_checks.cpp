@@ -129,6 +129,7 @@ TextureIdentity TextureIdentity::of(const Texture& texture) {
   id.format = texture.format;
   id.linearFilter = texture.linearFilter;
   id.repeat = texture.repeat;
+  id.clampT = texture.clampT;
   for (const std::vector<uint8_t>& level : texture.levels) id.levelSizes.push_back(level.size());
   id.hash = hashLevels(texture.levels);
   return id;

@@ -51,7 +51,7 @@ bool TextureCache::init(const Context* ctx, std::string* error) {
   dummySource_.format = TextureFormat::Rgba8Unorm;
   dummySource_.levels = {{0, 0, 0, 255}};
   dummySource_.linearFilter = false;
-  TextureIdentity key{1, 1, TextureFormat::Rgba8Unorm, false, false, {4}, 0};
+  TextureIdentity key{1, 1, TextureFormat::Rgba8Unorm, false, false, false, {4}, 0};
   if (!createEntry(dummySource_, key, &dummy_, error)) return false;
   return upload({&dummySource_}, {&dummy_}, error);
 }
@@ -114,7 +114,7 @@ bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& ke
   info.mipmapMode =
       texture.linearFilter ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = address;
-  info.addressModeV = address;
+  info.addressModeV = texture.clampT ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : address;
   info.addressModeW = address;
   info.minLod = 0.0f;
   info.maxLod = static_cast<float>(levels - 1);

@@ -37,7 +37,9 @@ struct Texture {
   TextureFormat format = TextureFormat::Rgba8Unorm;
   std::vector<std::vector<uint8_t>> levels;
   bool linearFilter = true;   // bilinear within a level, linear between levels (trilinear)
-  bool repeat = false;        // wrap (true) or clamp to edge (false), both axes
+  bool repeat = false;        // wrap (true) or clamp to edge (false) in s, and in t unless clampT
+  bool clampT = false;        // clamp to edge in t whatever `repeat` says: an equirect environment
+                              // wraps in longitude (s) but must not blend its zenith row with the nadir
 };
 
 struct TextureBinding {

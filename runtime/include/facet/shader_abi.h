@@ -52,6 +52,12 @@ inline constexpr uint32_t kDfgLutBinding = 0;           // "facet_dfgLut": split
 inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT (from the package)
 inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
+inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RG16F 64×64, one level (docs/ibl.md layout)
+inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F equirect, kEnvironmentLevels levels
+// Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so
+// the shaders read lod = roughness × (kEnvironmentLevels − 1) (chunks/ibl_split_sum.glsl).
+inline constexpr uint32_t kEnvironmentLevels = 5;
+inline constexpr uint32_t kShCoefficients = 9;  // SH3; SH2 variants read the first 4
 inline constexpr uint32_t kMaterialTextureBase = 8;
 inline constexpr uint32_t kMaxMaterialTextures = 8;
 
@@ -84,10 +90,16 @@ struct FrameUniforms {
   float cameraPosition[4];  // xyz: world-space eye position; w: unused
   float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused
   float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused
-  float ambient[4];         // rgb: constant ambient radiance × exposure (a one-band SH sky); w: unused
+  float ambient[4];         // rgb: the environment's mean radiance × exposure; w: unused. Not read by
+                            // the forward shaders since image-based lighting (sh and the environment
+                            // texture replace it); kept as the frame's clear colour and for apps' own shaders
   PunctualLightUniforms punctualLights[kMaxPunctualLights];
+  // SH irradiance of the environment, pre-folded for the shader (facet::ibl::shaderIrradianceCoefficients:
+  // irradiance / π = Σ sh[k] · p_k(n), docs/ibl.md) and pre-exposed; rgb used, w 0. Index
+  // k = l(l + 1) + m; SH2 variants read 0..3 (the first four of an SH3 projection are the SH2 one).
+  float sh[kShCoefficients][4];
 };
-static_assert(sizeof(FrameUniforms) == 384, "std140 layout of FrameUniforms");
+static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
 
 // Per-object data.
 struct ObjectUniforms {

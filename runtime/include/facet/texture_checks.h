@@ -25,6 +25,7 @@ struct TextureIdentity {
   TextureFormat format = TextureFormat::Rgba8Unorm;
   bool linearFilter = false;
   bool repeat = false;
+  bool clampT = false;
   std::vector<size_t> levelSizes;
   uint64_t hash = 0;
 

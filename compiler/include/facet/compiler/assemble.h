@@ -38,6 +38,19 @@ struct AssemblyInput {
 // The sampler name of the `lut` tier's specular table, as the shaders declare it.
 inline constexpr const char* kSpecularLutSamplerName = "facet_specularLut";
 
+// Frame textures of image-based lighting, as the shaders declare them (shader_abi.h
+// kDfgLutBinding / kEnvironmentBinding and their names; the runtime binds them per frame).
+inline constexpr const char* kDfgLutSamplerName = "facet_dfgLut";
+inline constexpr uint32_t kDfgLutSamplerBinding = 0;
+inline constexpr const char* kEnvironmentSamplerName = "facet_environment";
+inline constexpr uint32_t kEnvironmentSamplerBinding = 2;
+inline constexpr uint32_t kEnvironmentLevels = 5;  // shader_abi.h kEnvironmentLevels
+
+// Whether a variant's fragment stage samples the prefiltered environment (every lit variant) and
+// the DFG table (lit variants of split-sum tiers).
+bool samplesEnvironment(const AssemblyInput& input);
+bool samplesDfgLut(const AssemblyInput& input);
+
 // Whether the variant's fragment stage samples the specular table (a lit variant with a light
 // whose tier uses `lut` specular): the package must then carry the table (compiler/specular_lut.h).
 bool samplesSpecularLut(const AssemblyInput& input);

@@ -11,27 +11,42 @@ enum class SpecularModel { GgxSmith, GgxFastV, Zioma, Lut };
 enum class DiffuseModel { Pixel, Vertex };
 enum class ColorSpace { Linear, GammaHack };
 enum class PrecisionPolicy { Highp, Mediump };
+// Image-based ambient light (docs/ibl.md, "In the shaders"). Diffuse always comes from SH
+// irradiance (per pixel or per vertex, as the diffuse axis says); the models differ in specular:
+//   SplitSum  prefiltered environment at lod = r·(levels − 1), times the DFG table (Karis 2013,
+//             Filament): one environment and one table sample
+//   Analytic  the same environment sample, times Karis's 2014 analytic environment BRDF: no table
+//   TwoMip    two samples of the environment at fixed mips (0 and the last) lerped by roughness,
+//             times Zioma's 2015 environment BRDF (saturated): no variable lod, no table
+enum class AmbientModel { SplitSum, Analytic, TwoMip };
 
 struct TierConfig {
   SpecularModel specular = SpecularModel::GgxSmith;
   DiffuseModel diffuse = DiffuseModel::Pixel;
   ColorSpace colorSpace = ColorSpace::Linear;
   PrecisionPolicy precision = PrecisionPolicy::Mediump;
+  AmbientModel ambient = AmbientModel::SplitSum;
+  int shBands = 3;                  // SH irradiance bands: 3 (9 coefficients) or 2 (4)
+  bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   bool operator==(const TierConfig&) const = default;
 };
 
-// reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against.
-// high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
-// mid:       Facet's Zioma specular (one division), per-vertex diffuse, mediump.
-// low:       LUT specular (one texture read, no D/V/F), per-vertex diffuse, the gamma hack
-//            (colours stay sRGB-encoded, lighting on encoded values), mediump.
+// reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against;
+//            split-sum IBL + SH3, energy compensation on direct and IBL specular.
+// high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl; split-sum
+//            IBL + SH3, no energy compensation.
+// mid:       Facet's Zioma specular (one division), per-vertex diffuse and SH3, mediump;
+//            analytic (Karis) environment BRDF with the prefiltered environment.
+// low:       LUT specular (one texture read, no D/V/F), per-vertex diffuse and SH2, the gamma hack
+//            (colours stay sRGB-encoded, lighting on encoded values), mediump; two-mip
+//            environment lerp.
 TierConfig preset(Tier tier);
 
 // Replaces one choice of a preset by name (axis "specular" | "diffuse", option as in the
 // material language). Returns false for names it does not know.
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
 
-// e.g. "ggx_smith, pixel diffuse, linear, mediump"
+// e.g. "ggx_smith, pixel diffuse, linear, mediump, split_sum + sh3"
 std::string describe(const TierConfig& config);
 
 }  // namespace facet::permutations

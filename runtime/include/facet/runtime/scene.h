@@ -56,6 +56,18 @@ struct SceneObject {
   std::map<std::string, std::string> textures;  // texture parameter -> image path (relative to the scene file, resolved)
 };
 
+// The environment that lights a scene by image-based lighting (docs/scene-format.md,
+// "environment"). Radiance = luminance × the image's (or the sky's) relative value, in cd/m².
+struct Environment {
+  std::string image;               // equirect image path (resolved); empty: the analytic sky below
+  double luminance = 1000;         // cd/m² that a value of 1 in the image or sky colours stands for
+  // Analytic sky (evaluated into an equirect image on the CPU): mix(horizon, zenith, √y) above the
+  // horizon, mix(horizon, ground, √−y) below it, y the direction's up component.
+  glm::dvec3 zenith{0.25, 0.45, 1.0};
+  glm::dvec3 horizon{1.0, 1.0, 1.0};
+  glm::dvec3 ground{0.3, 0.25, 0.2};
+};
+
 struct Scene {
   uint32_t width = 256;
   uint32_t height = 256;
@@ -63,7 +75,8 @@ struct Scene {
   Camera camera;
   std::optional<Sun> sun;
   std::vector<PunctualLight> lights;
-  double skyLuminance = 0;         // cd/m², a constant ambient sky
+  double skyLuminance = 0;         // cd/m², a constant environment (used when `environment` is absent)
+  std::optional<Environment> environment;
   std::vector<SceneObject> objects;
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "facet/runtime/environment.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/scene.h"
 
@@ -22,6 +23,8 @@ class SceneFrame {
   double exposure() const { return exposure_; }
   // The variant key lit objects use, e.g. "high.dir1" (unlit ones ignore the light axis).
   const std::string& variantKey() const { return variantKey_; }
+  // The scene's image-based lighting as uploaded (pre-exposed SH and prefiltered levels).
+  const EnvironmentLighting& environment() const { return environment_; }
 
  private:
   SceneFrame() = default;
@@ -32,6 +35,8 @@ class SceneFrame {
   ColorEncoding colors_ = ColorEncoding::Linear;          // what the scene's tier expects
   Mesh sphere_;
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
+  EnvironmentLighting environment_;
+  std::unique_ptr<Texture> environmentTexture_;
   FrameDesc frame_;
   double exposure_ = 1;
   std::string variantKey_;

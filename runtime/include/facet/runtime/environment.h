@@ -1,0 +1,56 @@
+// Image-based lighting of a scene, computed on the CPU with facet_ibl (docs/ibl.md) and turned into
+// what the shaders read: SH irradiance coefficients for the frame block, the prefiltered
+// environment (RGBA16F, explicit mips) and the split-sum DFG table (RG16F).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/render_backend.h"
+#include "facet/runtime/scene.h"
+
+namespace facet::runtime {
+
+// Level-0 size of a scene's prefiltered environment built from an image or the analytic sky:
+// small on purpose (prefiltering costs ~0.15 s at this size; docs/ibl.md) — the rough levels hold
+// little detail and the mirror level is only as sharp as 128 texels around the horizon.
+inline constexpr int kEnvironmentWidth = 128;
+inline constexpr int kEnvironmentHeight = 64;
+
+// Everything pre-exposed (× the camera exposure), like the lights (docs/lighting-units.md).
+struct EnvironmentLighting {
+  // shaderIrradianceCoefficients of the SH3 projection: irradiance / π = Σ sh[k] p_k(n).
+  std::array<std::array<float, 3>, 9> sh{};
+  std::array<float, 3> meanRadiance{};
+  uint32_t width = 0;                      // level 0; level m is width >> m × height >> m
+  uint32_t height = 0;
+  std::vector<std::vector<float>> levels;  // RGB floats per level, row 0 = zenith (t = 0)
+};
+
+// The scene's environment: its `environment` (image or analytic sky) or, without one, the
+// constant sky of `sky.luminance` (exact: SH band 0 only, every level constant; 0 gives a black
+// environment). Fails with a message on an unreadable or unsuitable image.
+std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, double exposure, std::string* error);
+
+// The prefiltered levels as the texture the shaders sample: RGBA16F (alpha 1), linear filtering
+// within and between levels, repeat in s (longitude), clamp in t.
+Texture environmentTexture(const EnvironmentLighting& lighting);
+
+// The split-sum DFG table: facet::ibl::generateDfgLut(64) (2048 samples per texel, ~1 s on one
+// core), generated on first use and shared by the process. `texels` holds (B, A + B) per texel,
+// column = n·v, row = roughness, both at (i + 0.5)/64.
+struct DfgTable {
+  int size = 0;
+  std::vector<float> texels;
+};
+const DfgTable& dfgTable();
+// The table as RG16F (one level, bilinear, clamp to edge), made once per process.
+const Texture& dfgTexture();
+
+// IEEE binary16 bits of a float, rounded to nearest even; beyond the largest finite half
+// (65504) it saturates there rather than becoming infinity, like the shaders' saturateMediump.
+uint16_t floatToHalf(float value);
+
+}  // namespace facet::runtime

@@ -1,0 +1,223 @@
+#include "facet/runtime/environment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <mutex>
+
+#include <stb_image.h>
+
+#include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/equirect_image.h"
+#include "facet/ibl/prefilter_environment.h"
+#include "facet/ibl/spherical_harmonics.h"
+#include "facet/runtime/image_texture.h"
+#include "facet/shader_abi.h"
+
+namespace facet::runtime {
+namespace {
+
+using ibl::EquirectImage;
+using ibl::Vec3;
+
+double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+
+Vec3 toVec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+// The analytic sky of docs/scene-format.md, relative (× luminance later). √|y| makes the colour
+// change fast near the horizon, as a real sky's does, and keeps it continuous there.
+Vec3 skyRadiance(const Environment& e, Vec3 d) {
+  double y = std::clamp(d.y, -1.0, 1.0);
+  const glm::dvec3& far = y >= 0 ? e.zenith : e.ground;
+  double w = std::sqrt(std::abs(y));
+  return toVec3(e.horizon * (1 - w) + far * w);
+}
+
+// Reads an equirect image as linear RGB: Radiance .hdr as stored, 8-bit formats as sRGB.
+std::optional<EquirectImage> loadEquirect(const std::string& path, std::string* error) {
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info(path.c_str(), &w, &h, &channels)) {
+    *error = path + ": cannot read image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
+    return std::nullopt;
+  }
+  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
+    *error = path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + "; the limit is " +
+             std::to_string(kMaxImageSide) + " on each side";
+    return std::nullopt;
+  }
+  if (w != 2 * h) {
+    *error = path + ": an equirect environment is twice as wide as high; this image is " + std::to_string(w) + "x" +
+             std::to_string(h);
+    return std::nullopt;
+  }
+  EquirectImage image(w, h);
+  if (stbi_is_hdr(path.c_str())) {
+    float* pixels = stbi_loadf(path.c_str(), &w, &h, &channels, 3);
+    if (!pixels) {
+      *error = path + ": cannot decode image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+      return std::nullopt;
+    }
+    std::memcpy(image.rgb.data(), pixels, image.rgb.size() * sizeof(float));
+    stbi_image_free(pixels);
+  } else {
+    uint8_t* pixels = stbi_load(path.c_str(), &w, &h, &channels, 3);
+    if (!pixels) {
+      *error = path + ": cannot decode image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+      return std::nullopt;
+    }
+    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = float(srgbToLinear(pixels[i] / 255.0));
+    stbi_image_free(pixels);
+  }
+  for (float v : image.rgb) {
+    if (!std::isfinite(v) || v < 0) {
+      *error = path + ": the image holds a negative or non-finite value";
+      return std::nullopt;
+    }
+  }
+  return image;
+}
+
+// Brings an equirect image to kEnvironmentWidth × kEnvironmentHeight: halving by solid-angle-
+// weighted means while it is at least twice as large (no energy moves between latitudes), then
+// bilinear resampling for what remains (a non-power-of-two or a smaller source).
+EquirectImage fitEnvironment(EquirectImage image) {
+  while (image.height >= 2 * kEnvironmentHeight && image.height % 2 == 0) image = ibl::downsampleEquirect(image);
+  if (image.width == kEnvironmentWidth && image.height == kEnvironmentHeight) return image;
+  EquirectImage out(kEnvironmentWidth, kEnvironmentHeight);
+  for (int row = 0; row < out.height; ++row)
+    for (int column = 0; column < out.width; ++column)
+      out.setTexel(column, row,
+                   ibl::sampleBilinear(image, (column + 0.5) / out.width, (row + 0.5) / out.height));
+  return out;
+}
+
+void storeLevels(const std::vector<EquirectImage>& levels, double scale, EnvironmentLighting* out) {
+  out->width = uint32_t(levels.at(0).width);
+  out->height = uint32_t(levels.at(0).height);
+  out->levels.clear();
+  for (const EquirectImage& level : levels) {
+    std::vector<float> rgb(level.rgb.size());
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = float(level.rgb[i] * scale);
+    out->levels.push_back(std::move(rgb));
+  }
+}
+
+}  // namespace
+
+uint16_t floatToHalf(float value) {
+  uint32_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  const uint16_t sign = uint16_t((bits >> 16) & 0x8000u);
+  const uint32_t magnitude = bits & 0x7fffffffu;
+  if (magnitude > 0x7f800000u) return uint16_t(sign | 0x7e00u);  // NaN stays NaN
+  if (magnitude >= 0x477ff000u) return uint16_t(sign | 0x7bffu);  // rounds to ≥ 65520: saturate at 65504
+  if (magnitude < 0x38800000u) {                                  // below 2^-14: a subnormal half (or 0)
+    if (magnitude < 0x33000000u) return sign;                     // below half of the smallest subnormal
+    uint32_t mantissa = (magnitude & 0x7fffffu) | 0x800000u;
+    // value = mantissa · 2^(e − 150) = k · 2^-24 with k = mantissa >> (126 − e), e the biased exponent
+    int shift = 126 - int(magnitude >> 23);
+    uint32_t halfMantissa = mantissa >> shift;
+    uint32_t rest = mantissa & ((1u << shift) - 1);
+    uint32_t halfway = 1u << (shift - 1);
+    if (rest > halfway || (rest == halfway && (halfMantissa & 1u))) ++halfMantissa;
+    return uint16_t(sign | halfMantissa);
+  }
+  uint32_t h = ((magnitude - 0x38000000u) >> 13);  // rebias exponent 127 → 15, keep 10 mantissa bits
+  uint32_t rest = magnitude & 0x1fffu;
+  if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) ++h;  // carries into the exponent correctly
+  return uint16_t(sign | h);
+}
+
+std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, double exposure, std::string* error) {
+  EnvironmentLighting out;
+  if (!scene.environment) {
+    // A constant sky L: irradiance is π L for every normal, so irradiance / π = L is the whole SH
+    // (band 0), and prefiltering a constant changes nothing: every level is L, no sampling error.
+    // The levels are as small as the level count allows.
+    const float l = float(scene.skyLuminance * exposure);
+    for (int c = 0; c < 3; ++c) out.sh[0][size_t(c)] = out.meanRadiance[size_t(c)] = l;
+    out.width = 2u << (abi::kEnvironmentLevels - 1);
+    out.height = 1u << (abi::kEnvironmentLevels - 1);
+    for (uint32_t m = 0; m < abi::kEnvironmentLevels; ++m)
+      out.levels.emplace_back(size_t(out.width >> m) * (out.height >> m) * 3, l);
+    return out;
+  }
+  const Environment& e = *scene.environment;
+  EquirectImage source;
+  ibl::SphericalHarmonics radianceSh;
+  if (e.image.empty()) {
+    auto sky = [&](Vec3 d) { return skyRadiance(e, d); };
+    source = ibl::renderEquirect(kEnvironmentWidth, kEnvironmentHeight, sky);
+    // The analytic sky is projected by quadrature of the function itself, not of its 128 × 64 image.
+    radianceSh = ibl::projectRadiance(std::function<Vec3(Vec3)>(sky), 3);
+  } else {
+    auto image = loadEquirect(e.image, error);
+    if (!image) return std::nullopt;
+    source = fitEnvironment(std::move(*image));
+    radianceSh = ibl::projectRadiance(source, 3);
+  }
+  const double scale = e.luminance * exposure;
+  std::vector<Vec3> c = ibl::shaderIrradianceCoefficients(radianceSh);
+  for (size_t k = 0; k < out.sh.size() && k < c.size(); ++k) {
+    out.sh[k] = {float(c[k].x * scale), float(c[k].y * scale), float(c[k].z * scale)};
+  }
+  Vec3 mean = ibl::meanRadiance(source);
+  out.meanRadiance = {float(mean.x * scale), float(mean.y * scale), float(mean.z * scale)};
+  ibl::PrefilterOptions options;
+  options.levels = int(abi::kEnvironmentLevels);
+  storeLevels(ibl::prefilterEnvironment(source, options), scale, &out);
+  return out;
+}
+
+Texture environmentTexture(const EnvironmentLighting& lighting) {
+  Texture t;
+  t.width = lighting.width;
+  t.height = lighting.height;
+  t.format = TextureFormat::Rgba16Float;
+  t.linearFilter = true;
+  t.repeat = true;
+  t.clampT = true;
+  for (const std::vector<float>& rgb : lighting.levels) {
+    std::vector<uint8_t> bytes(rgb.size() / 3 * 8);
+    for (size_t i = 0; i < rgb.size() / 3; ++i) {
+      const uint16_t texel[4] = {floatToHalf(rgb[3 * i]), floatToHalf(rgb[3 * i + 1]), floatToHalf(rgb[3 * i + 2]),
+                                 floatToHalf(1.0f)};
+      for (size_t ch = 0; ch < 4; ++ch) {
+        bytes[8 * i + 2 * ch] = uint8_t(texel[ch] & 0xff);  // little-endian (render_backend.h)
+        bytes[8 * i + 2 * ch + 1] = uint8_t(texel[ch] >> 8);
+      }
+    }
+    t.levels.push_back(std::move(bytes));
+  }
+  return t;
+}
+
+const DfgTable& dfgTable() {
+  static const DfgTable table = [] {
+    ibl::DfgLut lut = ibl::generateDfgLut(ibl::kDfgLutSize);
+    return DfgTable{lut.size, std::move(lut.texels)};
+  }();
+  return table;
+}
+
+const Texture& dfgTexture() {
+  static const Texture texture = [] {
+    const DfgTable& table = dfgTable();
+    Texture t;
+    t.width = t.height = uint32_t(table.size);
+    t.format = TextureFormat::Rg16Float;
+    t.linearFilter = true;
+    t.repeat = false;
+    std::vector<uint8_t> bytes(table.texels.size() * 2);
+    for (size_t i = 0; i < table.texels.size(); ++i) {
+      uint16_t h = floatToHalf(table.texels[i]);
+      bytes[2 * i] = uint8_t(h & 0xff);
+      bytes[2 * i + 1] = uint8_t(h >> 8);
+    }
+    t.levels.push_back(std::move(bytes));
+    return t;
+  }();
+  return texture;
+}
+
+}  // namespace facet::runtime
