@@ -60,24 +60,6 @@ void grazingPoint() {
   std::printf("\n");
 }
 
-// Bilinear RG sample as a GPU does it with clamp-to-edge, texel centres at (i + 0.5)/size.
-DfgTerms sampleLut(const DfgLut& lut, double NoV, double r) {
-  auto axis = [&](double u, int* i0, int* i1, double* f) {
-    double x = std::clamp(u * lut.size - 0.5, 0.0, double(lut.size - 1));
-    *i0 = static_cast<int>(x);
-    *i1 = std::min(*i0 + 1, lut.size - 1);
-    *f = x - *i0;
-  };
-  int c0, c1, r0, r1;
-  double fx, fy;
-  axis(NoV, &c0, &c1, &fx);
-  axis(r, &r0, &r1, &fy);
-  auto lerp = [](DfgTerms a, DfgTerms b, double f) {
-    return DfgTerms{a.fresnelWeighted + (b.fresnelWeighted - a.fresnelWeighted) * f, a.albedo + (b.albedo - a.albedo) * f};
-  };
-  return lerp(lerp(lut.at(c0, r0), lut.at(c1, r0), fx), lerp(lut.at(c0, r1), lut.at(c1, r1), fx), fy);
-}
-
 DfgLut table() {
   std::printf("## The shipped table: %d × %d, %d VNDF samples per texel\n\n", kDfgLutSize, kDfgLutSize, kDfgLutSamples);
   double best = 1e30;
@@ -111,7 +93,7 @@ DfgLut table() {
     for (int column = 0; column + 1 < lut.size; column += 3) {
       double NoV = (column + 1.0) / lut.size;
       DfgTerms exact = integrateDfg(NoV, r, 16384);
-      DfgTerms filtered = sampleLut(lut, NoV, r);
+      DfgTerms filtered = lut.sampleBilinear(NoV, r);
       double e = std::max(std::abs(filtered.albedo - exact.albedo), std::abs(filtered.fresnelWeighted - exact.fresnelWeighted));
       if (column < 3) {
         if (e > worstEdge) worstEdge = e, edgeR = r;

@@ -36,15 +36,7 @@ Vec3 skyRadiance(const Environment& e, Vec3 d) {
 // Reads an equirect image as linear RGB: Radiance .hdr as stored, 8-bit formats as sRGB.
 std::optional<EquirectImage> loadEquirect(const std::string& path, std::string* error) {
   int w = 0, h = 0, channels = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &channels)) {
-    *error = path + ": cannot read image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
-    return std::nullopt;
-  }
-  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
-    *error = path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + "; the limit is " +
-             std::to_string(kMaxImageSide) + " on each side";
-    return std::nullopt;
-  }
+  if (!probeImageSize(path, &w, &h, error)) return std::nullopt;
   if (w != 2 * h) {
     *error = path + ": an equirect environment is twice as wide as high; this image is " + std::to_string(w) + "x" +
              std::to_string(h);
@@ -193,10 +185,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
 }
 
 const DfgTable& dfgTable() {
-  static const DfgTable table = [] {
-    ibl::DfgLut lut = ibl::generateDfgLut(ibl::kDfgLutSize);
-    return DfgTable{lut.size, std::move(lut.texels)};
-  }();
+  static const DfgTable table = ibl::generateDfgLut(ibl::kDfgLutSize);
   return table;
 }
 

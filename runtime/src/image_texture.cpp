@@ -52,17 +52,23 @@ std::vector<uint8_t> halve(const std::vector<uint8_t>& src, uint32_t w, uint32_t
 
 }  // namespace
 
+bool probeImageSize(const std::string& path, int* width, int* height, std::string* error) {
+  int channels = 0;
+  if (!stbi_info(path.c_str(), width, height, &channels)) {
+    *error = path + ": cannot read image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
+    return false;
+  }
+  if (*width <= 0 || *height <= 0 || *width > kMaxImageSide || *height > kMaxImageSide) {
+    *error = path + ": image is " + std::to_string(*width) + "x" + std::to_string(*height) + "; the limit is " +
+             std::to_string(kMaxImageSide) + " on each side";
+    return false;
+  }
+  return true;
+}
+
 std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error) {
   int w = 0, h = 0, channels = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &channels)) {
-    *error = path + ": cannot read image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
-    return std::nullopt;
-  }
-  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
-    *error = path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + "; the limit is " +
-             std::to_string(kMaxImageSide) + " on each side";
-    return std::nullopt;
-  }
+  if (!probeImageSize(path, &w, &h, error)) return std::nullopt;
   // stb_image stores the first row (the top of the picture) first; the texture convention puts
   // t = 0 first, so an image's top row is t = 0, as in glTF and most engines' UV conventions.
   uint8_t* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);

@@ -60,6 +60,9 @@ struct DfgLut {
   std::vector<float> texels;
 
   DfgTerms at(int column, int row) const;
+  // Bilinear between texel centres ((i + 0.5) / size), clamped at the edges: what
+  // texture(facet_dfgLut, vec2(NoV, r)) returns with linear filtering and clamp-to-edge.
+  DfgTerms sampleBilinear(double NoV, double perceptualRoughness) const;
 };
 
 // 2048 VNDF samples per texel: the integration error (max 2.7e-4 against a brute-force grid,

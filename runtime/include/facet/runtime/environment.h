@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/ibl/dfg_lut.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/scene.h"
 
@@ -41,10 +42,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting);
 // The split-sum DFG table: facet::ibl::generateDfgLut(64) (2048 samples per texel, ~1 s on one
 // core), generated on first use and shared by the process. `texels` holds (B, A + B) per texel,
 // column = n·v, row = roughness, both at (i + 0.5)/64.
-struct DfgTable {
-  int size = 0;
-  std::vector<float> texels;
-};
+using DfgTable = ibl::DfgLut;
 const DfgTable& dfgTable();
 // The table as RG16F (one level, bilinear, clamp to edge), made once per process.
 const Texture& dfgTexture();

@@ -12,6 +12,11 @@ namespace facet::runtime {
 // Images larger than this on either side are refused rather than decoded.
 inline constexpr int kMaxImageSide = 8192;
 
+// Reads an image file's size without decoding it; false, with *error naming the file, when it is
+// not an image stb_image reads or is larger than kMaxImageSide on a side. Every loader calls it
+// first, so a hostile header cannot make it decode (and allocate) a huge image.
+bool probeImageSize(const std::string& path, int* width, int* height, std::string* error);
+
 // Loads a PNG/JPEG/TGA (stb_image) as RGBA8, with every mip level down to 1×1. `srgb` tags the
 // image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the
 // encoded values (which would darken every level), and the sampler decodes.
