@@ -66,6 +66,18 @@ std::vector<glm::vec4> run(GpuEvalRequest request) {
   return result.values;
 }
 
+// Runs the request with highp and with mediump as the default float precision and calls
+// check(i, result) for every input i of each run.
+template <typename Check>
+void checkAtBothPrecisions(GpuEvalRequest req, Check check) {
+  for (FloatPrecision p : kPrecisions) {
+    req.precision = p;
+    auto out = run(req);
+    ASSERT_EQ(out.size(), req.in0.size());
+    for (size_t i = 0; i < out.size(); ++i) check(i, out[i]);
+  }
+}
+
 const std::vector<double> kRoughness{0.089, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1.0};
 const std::vector<double> kCosines{1e-4, 0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 0.99, 1.0};
 const std::vector<double> kNoH{0.0, 0.1, 0.3, 0.5, 0.7, 0.8, 0.9, 0.95, 0.99, 0.995, 0.999, 0.9999, 0.99999, 1.0};
@@ -102,38 +114,35 @@ TEST(Chunks, DistributionGgxMatchesReference) {
       req.in0.push_back(glm::vec4(float(r * r), 0, 0, 0));
       req.in1.push_back(glm::vec4(h, 0.0f));
     }
-  for (FloatPrecision p : kPrecisions) {
-    req.precision = p;
-    auto out = run(req);
-    ASSERT_EQ(out.size(), req.in0.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-      glm::dvec3 h(req.in1[i]);
-      double ref = reference::distributionGgx(double(req.in0[i].x), h.z / glm::length(h));
-      expectClose(out[i].x, ref, 1e-5, 0.0, "alpha=" + std::to_string(req.in0[i].x) + " NoH=" + std::to_string(h.z));
-    }
-  }
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    glm::dvec3 h(req.in1[i]);
+    double ref = reference::distributionGgx(double(req.in0[i].x), h.z / glm::length(h));
+    expectClose(result.x, ref, 1e-5, 0.0, "alpha=" + std::to_string(req.in0[i].x) + " NoH=" + std::to_string(h.z));
+  });
+}
+
+// A visibility term V(α, n·v, n·l) over roughness × n·v × n·l, against its double reference
+// saturated at 65504 as the chunks saturate it; 1e-5 relative (each test says why that holds).
+void checkVisibility(const char* chunk, const char* function, double (*exact)(double, double, double)) {
+  GpuEvalRequest req;
+  req.chunks = chunks({"precision.glsl", "math.glsl", chunk});
+  req.body = std::string("result.x = ") + function + "(in0.x, in0.y, in0.z);";
+  for (double r : kRoughness)
+    for (double v : kCosines)
+      for (double l : {0.0, 1e-4, 0.01, 0.1, 0.5, 0.9, 1.0}) req.in0.push_back(glm::vec4(float(r * r), float(v), float(l), 0)), req.in1.push_back({});
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    glm::dvec4 a(req.in0[i]);
+    double ref = std::min(exact(a.x, a.y, a.z), kMediumpMax);
+    expectClose(result.x, ref, 1e-5, 0.0,
+                std::string(function) + " alpha=" + std::to_string(a.x) + " NoV=" + std::to_string(a.y) + " NoL=" + std::to_string(a.z));
+  });
 }
 
 // Height-correlated Smith V. Tolerance 1e-5 relative: no cancellation (every term is ≥ 0), two
 // sqrt (≤ 3 ulp each under Vulkan's rules) and one division (2.5 ulp) in fp32. Where the exact V
 // exceeds 65504 (n·l = 0 with n·v ≤ 0.01) the chunk saturates, so the reference is min(V, 65504).
 TEST(Chunks, VisibilitySmithGgxCorrelatedMatchesReference) {
-  GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl"});
-  req.body = "result.x = visibility_smith_ggx_correlated(in0.x, in0.y, in0.z);";
-  for (double r : kRoughness)
-    for (double v : kCosines)
-      for (double l : {0.0, 1e-4, 0.01, 0.1, 0.5, 0.9, 1.0}) req.in0.push_back(glm::vec4(float(r * r), float(v), float(l), 0)), req.in1.push_back({});
-  for (FloatPrecision p : kPrecisions) {
-    req.precision = p;
-    auto out = run(req);
-    ASSERT_EQ(out.size(), req.in0.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-      glm::dvec4 a(req.in0[i]);
-      double ref = std::min(reference::visibilitySmithGgxCorrelated(a.x, a.y, a.z), kMediumpMax);
-      expectClose(out[i].x, ref, 1e-5, 0.0, "alpha=" + std::to_string(a.x) + " NoV=" + std::to_string(a.y) + " NoL=" + std::to_string(a.z));
-    }
-  }
+  checkVisibility("brdf_ggx.glsl", "visibility_smith_ggx_correlated", reference::visibilitySmithGgxCorrelated);
 }
 
 // Schlick F with f90 = 1, per channel. Tolerance 1e-6 absolute: 1 − LoH is exact in fp32
@@ -144,36 +153,16 @@ TEST(Chunks, FresnelSchlickMatchesReference) {
   req.body = "result.xyz = fresnel_schlick(in0.xyz, in1.x);";
   for (double f0 : {0.0, 0.02, 0.04, 0.5, 1.0})
     for (double lh : kLoH) req.in0.push_back(glm::vec4(float(f0), 0.04f, 0.9f, 0)), req.in1.push_back(glm::vec4(float(lh), 0, 0, 0));
-  for (FloatPrecision p : kPrecisions) {
-    req.precision = p;
-    auto out = run(req);
-    ASSERT_EQ(out.size(), req.in0.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-      glm::dvec3 ref = reference::fresnelSchlick(glm::dvec3(req.in0[i]), double(req.in1[i].x));
-      for (int c = 0; c < 3; ++c) expectClose(out[i][c], ref[c], 0.0, 1e-6, "LoH=" + std::to_string(req.in1[i].x));
-    }
-  }
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    glm::dvec3 ref = reference::fresnelSchlick(glm::dvec3(req.in0[i]), double(req.in1[i].x));
+    for (int c = 0; c < 3; ++c) expectClose(result[c], ref[c], 0.0, 1e-6, "LoH=" + std::to_string(req.in1[i].x));
+  });
 }
 
 // Hammon's V. Tolerance 1e-5 relative: mix(a, b, α) = a + (b − a)α with b ≥ a (no cancellation),
 // 4 ops and one division in fp32. Saturated at 65504 like the chunk (n·l = 0, small n·v).
 TEST(Chunks, VisibilityHammonMatchesReference) {
-  GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx_fastv.glsl"});
-  req.body = "result.x = visibility_hammon(in0.x, in0.y, in0.z);";
-  for (double r : kRoughness)
-    for (double v : kCosines)
-      for (double l : {0.0, 1e-4, 0.01, 0.1, 0.5, 0.9, 1.0}) req.in0.push_back(glm::vec4(float(r * r), float(v), float(l), 0)), req.in1.push_back({});
-  for (FloatPrecision p : kPrecisions) {
-    req.precision = p;
-    auto out = run(req);
-    ASSERT_EQ(out.size(), req.in0.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-      glm::dvec4 a(req.in0[i]);
-      double ref = std::min(reference::visibilityHammon(a.x, a.y, a.z), kMediumpMax);
-      expectClose(out[i].x, ref, 1e-5, 0.0, "alpha=" + std::to_string(a.x) + " NoV=" + std::to_string(a.y) + " NoL=" + std::to_string(a.z));
-    }
-  }
+  checkVisibility("brdf_ggx_fastv.glsl", "visibility_hammon", reference::visibilityHammon);
 }
 
 // The Zioma forms against reference::specularZioma over (α, n·h, l·h). in1.x carries sin θ_h
@@ -196,18 +185,13 @@ void checkZioma(const char* call, const reference::ZiomaCoefficients& k, bool ca
         req.in0.push_back(glm::vec4(float(r * r), noh, float(lh), 0));
         req.in1.push_back(glm::vec4(float(std::sqrt(1.0 - double(noh) * double(noh))), 0, 0, 0));
       }
-  for (FloatPrecision p : kPrecisions) {
-    req.precision = p;
-    auto out = run(req);
-    ASSERT_EQ(out.size(), req.in0.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-      glm::dvec4 a(req.in0[i]);
-      double ref = reference::specularZioma(k, a.x, a.y, a.z);
-      double d = a.y * a.y * (a.x * a.x - 1.0) + 1.0;
-      expectClose(out[i].x, ref, 1e-5 + (cancels ? 6.0 * kUlp1 / d : 0.0), 0.0,
-                  std::string(call) + " alpha=" + std::to_string(a.x) + " NoH=" + std::to_string(a.y) + " LoH=" + std::to_string(a.z));
-    }
-  }
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    glm::dvec4 a(req.in0[i]);
+    double ref = reference::specularZioma(k, a.x, a.y, a.z);
+    double d = a.y * a.y * (a.x * a.x - 1.0) + 1.0;
+    expectClose(result.x, ref, 1e-5 + (cancels ? 6.0 * kUlp1 / d : 0.0), 0.0,
+                std::string(call) + " alpha=" + std::to_string(a.x) + " NoH=" + std::to_string(a.y) + " LoH=" + std::to_string(a.z));
+  });
 }
 
 TEST(Chunks, SpecularZiomaPublishedMatchesReference) {
@@ -241,19 +225,14 @@ TEST(Chunks, SpecularLutMatchesTableSampling) {
     }
   for (double rol : {0.999, 0.9999, 1.0}) req.in0.push_back(glm::vec4(float(rol), 0.089f, 0, 0)), req.in1.push_back({});
   const double lsb = table.scale / 255.0;
-  for (FloatPrecision p : kPrecisions) {
-    req.precision = p;
-    auto out = run(req);
-    ASSERT_EQ(out.size(), req.in0.size());
-    for (size_t i = 0; i < out.size(); ++i) {
-      double rol = std::clamp(double(req.in0[i].x), 0.0, 1.0), r = req.in0[i].y;
-      double u = std::pow(rol, 4.0);
-      double ref = table.scale * reference::sampleR8Bilinear(table.texels, table.width, table.height,
-                                                             reference::lutTexelCoordinate(u, table.width),
-                                                             reference::lutTexelCoordinate(r, table.height));
-      expectClose(out[i].x, ref, 0.0, 2.0 * lsb, "RoL=" + std::to_string(req.in0[i].x) + " r=" + std::to_string(r));
-    }
-  }
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    double rol = std::clamp(double(req.in0[i].x), 0.0, 1.0), r = req.in0[i].y;
+    double u = std::pow(rol, 4.0);
+    double ref = table.scale * reference::sampleR8Bilinear(table.texels, table.width, table.height,
+                                                           reference::lutTexelCoordinate(u, table.width),
+                                                           reference::lutTexelCoordinate(r, table.height));
+    expectClose(result.x, ref, 0.0, 2.0 * lsb, "RoL=" + std::to_string(req.in0[i].x) + " r=" + std::to_string(r));
+  });
 }
 
 // The chunk's hard-coded table size and scale are the generator's defaults.

@@ -42,12 +42,7 @@ void assignSamplerUnits(GLuint program, const std::vector<TextureBinding>& bindi
 }
 
 bool TextureCache::init(std::string* error) {
-  SourceTexture dummy;
-  dummy.width = 1;
-  dummy.height = 1;
-  dummy.format = TextureFormat::Rgba8Unorm;
-  dummy.levels = {{0, 0, 0, 255}};
-  dummy.linearFilter = false;
+  const SourceTexture dummy = emptySlotTexture();
   forgetBindings();
   return upload(dummy, &dummy_, error);
 }

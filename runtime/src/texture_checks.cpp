@@ -106,6 +106,16 @@ bool checkBindings(const std::vector<TextureBinding>& bindings, const std::strin
 
 }  // namespace
 
+Texture emptySlotTexture() {
+  Texture t;
+  t.width = 1;
+  t.height = 1;
+  t.format = TextureFormat::Rgba8Unorm;
+  t.levels = {{0, 0, 0, 255}};
+  t.linearFilter = false;
+  return t;
+}
+
 uint32_t bytesPerTexel(TextureFormat format) {
   switch (format) {
     case TextureFormat::R8Unorm:

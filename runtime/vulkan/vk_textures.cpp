@@ -46,11 +46,7 @@ bool TextureCache::init(const Context* ctx, std::string* error) {
     return false;
   }
 
-  dummySource_.width = 1;
-  dummySource_.height = 1;
-  dummySource_.format = TextureFormat::Rgba8Unorm;
-  dummySource_.levels = {{0, 0, 0, 255}};
-  dummySource_.linearFilter = false;
+  dummySource_ = emptySlotTexture();
   TextureIdentity key{1, 1, TextureFormat::Rgba8Unorm, false, false, false, {4}, 0};
   if (!createEntry(dummySource_, key, &dummy_, error)) return false;
   return upload({&dummySource_}, {&dummy_}, error);

@@ -14,6 +14,10 @@ namespace facet::runtime {
 // Bindings 0..15: frame textures then material textures (shader_abi.h).
 inline constexpr uint32_t kTextureSlots = abi::kMaterialTextureBase + abi::kMaxMaterialTextures;
 
+// The 1×1 opaque black texture both backends bind in slots a draw leaves empty (GLES and Vulkan
+// 1.1 both need every declared sampler to have a texture).
+Texture emptySlotTexture();
+
 uint32_t bytesPerTexel(TextureFormat format);  // 0 for a value that is not an enumerator
 uint32_t mipExtent(uint32_t size, size_t level);
 
