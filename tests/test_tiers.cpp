@@ -8,6 +8,8 @@
 
 #include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
+#include "facet/ir/module.h"
+#include "facet/permutations/tiers.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
@@ -321,4 +323,18 @@ TEST(Tiers, MaterialOverrideReplacesOneChoiceOfOneTier) {
   EXPECT_EQ(transcendentals(*fastv, "high.dir1") + 2, transcendentals(*preset, "high.dir1"));
   EXPECT_EQ(transcendentals(*fastv, "mid.dir1"), transcendentals(*preset, "mid.dir1"));
   EXPECT_EQ(spirvOf(*fastv, "reference.dir1", Stage::Fragment), spirvOf(*preset, "reference.dir1", Stage::Fragment));
+}
+
+// The language's vocabulary of tier choices (ir::tierChoices, which the checker validates
+// against) and the permutations stage that turns a choice into maths are written in two places:
+// every tier and every option the language accepts must mean something downstream.
+TEST(Tiers, EveryChoiceTheLanguageAcceptsIsImplemented) {
+  const auto& choices = facet::ir::tierChoices();
+  for (const std::string& tier : choices.tiers) EXPECT_TRUE(facet::permutations::tierFromString(tier)) << tier;
+  for (const auto& [axis, options] : choices.options) {
+    for (const std::string& option : options) {
+      facet::permutations::TierConfig config = facet::permutations::preset(facet::permutations::Tier::High);
+      EXPECT_TRUE(facet::permutations::applyOverride(&config, axis, option)) << axis << " = " << option;
+    }
+  }
 }
