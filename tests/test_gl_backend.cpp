@@ -9,26 +9,12 @@
 #include "../runtime/gl/gl_context.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
+#include "gl_test_interface.h"
 
 namespace facet::runtime {
 namespace {
 
-constexpr const char* kVertexShader = R"(#version 300 es
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;
-layout(location = 2) in vec2 uv0;
-layout(std140) uniform FrameUniforms {
-  mat4 viewProjection;
-  vec4 cameraPosition;
-  vec4 lightDirection;
-  vec4 lightColor;
-  vec4 ambient;
-};
-layout(std140) uniform ObjectUniforms {
-  mat4 model;
-  mat4 normalMatrix;
-};
-out vec2 vUv;
+constexpr const char* kVertexShader = "#version 300 es\n" FACET_GL_TEST_VERTEX_INTERFACE R"(out vec2 vUv;
 void main() {
   vUv = uv0 + normal.xy * 0.0;
   gl_Position = viewProjection * model * vec4(position, 1.0);
@@ -48,16 +34,7 @@ void main() { fragColor = baseColor + emissive; }
 )";
 
 // Colour = lightColor from the frame block; no material block at all.
-constexpr const char* kLightColourFragmentShader = R"(#version 300 es
-precision highp float;
-layout(std140) uniform FrameUniforms {
-  mat4 viewProjection;
-  vec4 cameraPosition;
-  vec4 lightDirection;
-  vec4 lightColor;
-  vec4 ambient;
-};
-layout(location = 0) out vec4 fragColor;
+constexpr const char* kLightColourFragmentShader = "#version 300 es\nprecision highp float;\n" FACET_GL_TEST_FRAME_BLOCK R"(layout(location = 0) out vec4 fragColor;
 void main() { fragColor = lightColor; }
 )";
 
