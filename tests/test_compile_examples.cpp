@@ -80,3 +80,25 @@ TEST(Examples, CompilationIsDeterministic) {
   ASSERT_TRUE(a && b);
   EXPECT_EQ(facet::package::write(a->package), facet::package::write(b->package));
 }
+
+// A texture's sampler uniform lives in the interface's `facet_` namespace, so a parameter named
+// like a chunk function (material_f0 in shading_standard.glsl) compiles on every target.
+TEST(Examples, TextureNamedLikeAChunkFunctionCompiles) {
+  auto built = facet::test::buildText(R"(material tex {
+    param f0: texture(srgb) = vec4(1.0)
+    surface {
+        baseColor = sample(params.f0, vertex.uv0).rgb
+    }
+}
+)");
+  ASSERT_TRUE(built);
+  EXPECT_FALSE(built->package.variants.empty());
+}
+
+TEST(Examples, NoChunkOrTemplateDeclaresANameInTheMaterialSamplerNamespace) {
+  for (const char* folder : {"chunks", "templates"})
+    for (const auto& entry : std::filesystem::directory_iterator(facet::test::sourceDir() + "/" + folder)) {
+      std::string text = facet::test::readText(entry.path().string());
+      EXPECT_EQ(text.find("facet_material_"), std::string::npos) << entry.path();
+    }
+}

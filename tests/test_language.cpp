@@ -263,3 +263,31 @@ TEST(Language, NumbersAreCheckedWhereTheyAreWritten) {
                 .find("default value does not fit a 32-bit int"),
             std::string::npos);
 }
+
+// Parameter names reach the GLSL as block members and sampler uniforms: a name GLSL reserves is
+// the material's error, at its declaration, not an internal error from the shader compiler.
+TEST(Language, ParameterNamesGlslReservesAreErrorsAtTheirDeclaration) {
+  std::string d = diagnosticsFor(R"(material m {
+    param discard: float = 0.5
+    param gl_FragColor: float = 0.5
+    param sample: float = 0.5
+    param a__b: float = 0.5
+    param texture: float = 0.5
+    param dot: float = 0.5
+    surface {
+        roughness = params.texture * params.dot
+    }
+}
+)");
+  EXPECT_NE(d.find("test.mat:2:11: error: parameter 'discard' cannot be used: 'discard' is a GLSL keyword or reserved word [reserved-name]"),
+            std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:3:11: error: parameter 'gl_FragColor' cannot be used: names starting with 'gl_' are reserved by GLSL [reserved-name]"),
+            std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:4:11: error: parameter 'sample' cannot be used: 'sample' is a GLSL keyword or reserved word"),
+            std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:5:11: error: parameter 'a__b' cannot be used: names containing '__' are reserved by GLSL"),
+            std::string::npos) << d;
+  // Built-in function names are fine: parameters live in the block's member namespace.
+  EXPECT_EQ(d.find("'texture'"), std::string::npos) << d;
+  EXPECT_EQ(d.find("'dot'"), std::string::npos) << d;
+}

@@ -82,10 +82,10 @@ const facet::package::Variant& highDir1(const facet::compiler::BuildResult& buil
   return built.package.variants.at(0);
 }
 
-// Samplers of the material's own textures ("material_<param>"), leaving out the frame's.
+// Samplers of the material's own textures (kMaterialSamplerPrefix + param), leaving out the frame's.
 size_t materialSamplers(const Reflection& r) {
   size_t n = 0;
-  for (const auto& [name, where] : r.samplers) n += name.rfind("material_", 0) == 0;
+  for (const auto& [name, where] : r.samplers) n += name.rfind(facet::abi::kMaterialSamplerPrefix, 0) == 0;
   return n;
 }
 
@@ -256,9 +256,9 @@ TEST(ShaderAbi, SampledTextureGetsASamplerAtItsSlotAndAnUnsampledOneNone) {
   // frame's IBL samplers are checked by IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled).
   Reflection fs = reflect(spirv(highDir1(*built), facet::package::Stage::Fragment));
   ASSERT_EQ(materialSamplers(fs), 1u);
-  ASSERT_EQ(fs.samplers.count("material_albedo"), 1u);
-  EXPECT_EQ(fs.samplers.at("material_albedo").first, facet::abi::kTextureSet);
-  EXPECT_EQ(fs.samplers.at("material_albedo").second, facet::abi::kMaterialTextureBase);
+  ASSERT_EQ(fs.samplers.count("facet_material_albedo"), 1u);
+  EXPECT_EQ(fs.samplers.at("facet_material_albedo").first, facet::abi::kTextureSet);
+  EXPECT_EQ(fs.samplers.at("facet_material_albedo").second, facet::abi::kMaterialTextureBase);
 }
 
 // The uniform member of a parameter whose declared range exceeds fp16 is highp in the mediump

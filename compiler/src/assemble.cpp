@@ -101,14 +101,15 @@ std::string upper(std::string s) {
 }
 
 // One sampler uniform per texture the material reads. Vulkan: set 1, binding 8 + slot
-// (shader_abi.h); GLES binds by name, so the runtime looks up "material_<name>".
+// (shader_abi.h); GLES binds by name, so the runtime looks up "facet_material_<name>"
+// (kMaterialSamplerPrefix).
 std::string materialSamplers(Flavour flavour, const ParamLayout& layout, const char* precision) {
   std::string s;
   for (const ParamSlot& slot : layout.slots) {
     if (slot.textureSlot < 0) continue;
     if (flavour == Flavour::Vulkan)
       s += "layout(set = 1, binding = " + std::to_string(8 + slot.textureSlot) + ") ";
-    s += "uniform " + std::string(precision) + " sampler2D material_" + slot.name + ";\n";
+    s += "uniform " + std::string(precision) + " sampler2D facet_material_" + slot.name + ";\n";
   }
   return s;
 }

@@ -7,6 +7,7 @@
 
 #include "builtins.h"
 #include "evaluate.h"
+#include "reserved_names.h"
 #include "facet/ir/parser.h"
 
 namespace facet::ir {
@@ -140,6 +141,10 @@ class Checker {
   }
 
   void checkParamDecl(const ast::ParamDecl& decl) {
+    if (std::string why = reservedNameReason(decl.name); !why.empty()) {
+      error(decl.loc, "parameter '" + decl.name + "' cannot be used: " + why, "reserved-name");
+      return;
+    }
     for (const Param& p : material_.params) {
       if (p.name == decl.name) {
         error(decl.loc, "parameter '" + decl.name + "' is already declared at line " + std::to_string(p.loc.line),

@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "facet/ir/precision.h"
 #include "facet/ir/ranges.h"
 
 namespace facet::ir {
@@ -46,7 +47,7 @@ const char* infix(Op op) {
 
 class Emitter {
  public:
-  explicit Emitter(const Material& m) : m_(m), module_(m.surface), ranges_(analyse_ranges(m)) {}
+  explicit Emitter(const Material& m) : module_(m.surface), precision_(analyse_precision(m, analyse_ranges(m))) {}
 
   SurfaceGlsl run() {
     for (const OutputInfo& o : outputs()) {
@@ -95,8 +96,10 @@ class Emitter {
       case Op::Constant: *glsl = glslConstant(v.type, v.constant); return true;
       case Op::Param:
         out_.params.insert(v.name);
-        // Samplers cannot live in a uniform block: each texture is its own uniform.
-        *glsl = (v.type == Type::Texture2D ? "material_" : "params.") + v.name;
+        // Samplers cannot live in a uniform block: each texture is its own uniform, named in the
+        // interface's `facet_` namespace (shader_abi.h kMaterialSamplerPrefix) so that no
+        // parameter name can collide with a chunk's function.
+        *glsl = (v.type == Type::Texture2D ? "facet_material_" : "params.") + v.name;
         return true;
       case Op::Attribute:
         out_.attributes.insert(v.name);
@@ -116,10 +119,8 @@ class Emitter {
     const Value& v = module_.value(id);
     std::string rhs = define(v, a);
     std::string name = tempName(id);
-    // Unqualified values take the tier's default precision; highp inputs keep highp explicitly.
-    // isHighp is asked for every value (bools too), so it is memoised before any user asks.
-    bool highp = isHighp(id);
-    std::string precision = v.type != Type::Bool && highp ? "highp " : "";
+    // Unqualified values take the tier's default precision; analyse_precision says which keep highp.
+    std::string precision = v.type != Type::Bool && precision_.highp(id) ? "highp " : "";
     line("    " + precision + glslName(v.type) + " " + name + " = " + rhs + ";\n", id);
     temps_.emplace(id, name);
     return name;
@@ -163,34 +164,10 @@ class Emitter {
     return "t" + std::to_string(counter_++);
   }
 
-  // highp where any input is a highp attribute (positions, UVs); the tier's default otherwise.
-  // A texture read is not: its coordinate needs highp, its 8-bit result does not (it has the
-  // sampler's precision). Recurses only one level: operands are leaves or were emitted before.
-  bool isHighp(ValueId id) {
-    if (auto it = highp_.find(id); it != highp_.end()) return it->second;
-    const Value& v = module_.value(id);
-    bool h = v.op == Op::Attribute && findAttribute(v.name)->highp;
-    bool textureRead = v.op == Op::Builtin && (v.name == "sample" || v.name == "sample_normal");
-    if (!textureRead)
-      for (ValueId a : v.args) h = h || isHighp(a);
-    // Range analysis proves some values can leave fp16's finite range (|x| > 65504): a
-    // parameter declared `in [0, 100000]`, or a product of ranged values. Those keep fp32 rather
-    // than overflow to inf on a mobile GPU. Unbounded values (unranged parameters) stay at the
-    // tier's precision: their range is a promise the author has not made.
-    Interval r = ranges_.of(id).hull();
-    h = h || (r.bounded() && std::max(std::abs(r.lo), std::abs(r.hi)) > kMediumpMax);
-    highp_[id] = h;
-    return h;
-  }
-
-  static constexpr double kMediumpMax = 65504.0;  // largest finite binary16
-
-  const Material& m_;
   const Module& module_;
-  RangeMap ranges_;
+  PrecisionMap precision_;
   SurfaceGlsl out_;
   std::map<ValueId, std::string> temps_;
-  std::map<ValueId, bool> highp_;
   int counter_ = 0;
 };
 

@@ -187,7 +187,7 @@ std::optional<std::vector<LoadedMaterial::SampledTexture>> LoadedMaterial::sampl
     SampledTexture t;
     t.param = p.name;
     t.slot = p.offset;
-    t.glslName = "material_" + p.name;
+    t.glslName = abi::kMaterialSamplerPrefix + p.name;
     t.srgb = p.type == package::ParamType::TextureSrgb;
     if (auto it = images.find(p.name); it != images.end()) t.imagePath = it->second;
     for (size_t i = 0; i < 4 && i < p.defaultValue.size(); ++i) t.defaultValue[i] = p.defaultValue[i];

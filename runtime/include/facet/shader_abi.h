@@ -60,6 +60,11 @@ inline constexpr uint32_t kEnvironmentLevels = 5;
 inline constexpr uint32_t kShCoefficients = 9;  // SH3; SH2 variants read the first 4
 inline constexpr uint32_t kMaterialTextureBase = 8;
 inline constexpr uint32_t kMaxMaterialTextures = 8;
+// A material texture's sampler uniform is this prefix + the parameter's name. The `facet_`
+// namespace is the interface's: no chunk or template declares a name in it, so no parameter name
+// can collide with a chunk function (a texture `f0` once became `material_f0`, a chunk function).
+// ir/src/emit_glsl.cpp and compiler/src/assemble.cpp write the same prefix.
+inline constexpr const char* kMaterialSamplerPrefix = "facet_material_";
 
 // Post pass: the HDR colour of the forward pass, as a combined image sampler at set 0 binding 0
 // (Vulkan) or texture unit 0 (GL, uniform "hdrColor").

@@ -47,7 +47,7 @@ class LoadedMaterial {
   struct SampledTexture {
     std::string param;        // texture parameter name
     uint32_t slot = 0;        // sampler slot: binding abi::kMaterialTextureBase + slot
-    std::string glslName;     // "material_<param>"
+    std::string glslName;     // abi::kMaterialSamplerPrefix + <param>
     std::string imagePath;    // "" when the scene gives none: use defaultValue
     bool srgb = false;
     std::array<double, 4> defaultValue{};
