@@ -27,6 +27,20 @@ struct InfoArgs {
 };
 int infoCommand(const InfoArgs& args);
 
+struct LintArgs {
+  std::vector<std::string> inputs;  // material files, or folders of them
+  std::vector<std::string> tiers;
+  std::vector<int> pointLights{0};
+  std::string config;               // budgets JSON (docs/lint.md), or ""
+  std::string baseline;             // baseline JSON, or ""
+  bool updateBaseline = false;      // rewrite the baseline from this run's figures
+  double tolerancePercent = 5;      // growth over the baseline that is still accepted
+  std::string format = "text";      // text | json | sarif
+  std::string output;               // report file, or "" for stdout
+  bool werror = false;              // warnings fail the run
+};
+int lintCommand(const LintArgs& args);
+
 // Prints "matc: error: <message>" to stderr.
 void printError(const std::string& message);
 

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_inputs.h"
 #include "commands.h"
 #include "facet/compiler/build.h"
 #include "facet/ir/check.h"
@@ -20,31 +21,6 @@ void printError(const std::string& message) { std::fprintf(stderr, "matc: error:
 namespace {
 
 namespace fs = std::filesystem;
-
-// Reads a material file, refusing files over the language's size limit before reading them.
-bool readSource(const std::string& path, ir::SourceFile* out) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    printError("cannot read '" + path + "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
-    return false;
-  }
-  uintmax_t size = fs::file_size(path, ec);
-  if (ec || size > ir::kMaxSourceBytes) {
-    printError("'" + path + "' is " + std::to_string(size) + " bytes; material files are limited to " +
-               std::to_string(ir::kMaxSourceBytes) + " bytes");
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) {
-    printError("cannot read '" + path + "'");
-    return false;
-  }
-  out->path = path;
-  out->text = text.str();
-  return true;
-}
 
 bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedFile>& files) {
   std::error_code ec;
@@ -66,24 +42,7 @@ bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedF
 
 // Tiers from --tiers, and the variants a --scene manifest asks this material for.
 int buildOptions(const CompileArgs& args, const ir::Material& material, compiler::BuildOptions* options) {
-  const auto& supported = permutations::supportedTiers();
-  if (!args.tiers.empty()) {
-    options->tiers.clear();
-    for (const std::string& name : args.tiers) {
-      auto tier = permutations::tierFromString(name);
-      if (!tier) {
-        printError("unknown tier '" + name + "' (reference, high, mid, low)");
-        return 2;
-      }
-      if (std::find(supported.begin(), supported.end(), *tier) == supported.end()) {
-        std::string list;
-        for (permutations::Tier t : supported) list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
-        printError("tier '" + name + "' is not built by this compiler version (supported: " + list + ")");
-        return 2;
-      }
-      options->tiers.push_back(*tier);
-    }
-  }
+  if (int status = parseTiers(args.tiers, &options->tiers); status != 0) return status;
   options->pointLightCounts = args.pointLights;
   if (args.scene.empty()) return 0;
   std::string error;

@@ -33,6 +33,22 @@ int main(int argc, char** argv) {
   infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
       ->check(CLI::IsMember({"glsl_es_300", "spirv", "msl"}));
 
+  facet::matc::LintArgs lint;
+  CLI::App* lintCmd = app.add_subcommand("lint", "check materials' precision and instruction counts (docs/lint.md)");
+  lintCmd->add_option("inputs", lint.inputs, "material files (.mat) or folders of them")->required();
+  lintCmd->add_option("--tiers", lint.tiers, "tiers to build and check; default: all supported")->delimiter(',');
+  lintCmd->add_option("--point-lights", lint.pointLights, "point/spot light counts to check, from 0, 1, 2, 4 (default: 0)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({0, 1, 2, 4}));
+  lintCmd->add_option("--config", lint.config, "budgets per tier and stage (JSON; examples/lint/budgets.json)");
+  lintCmd->add_option("--baseline", lint.baseline, "committed figures: fail when a variant's figure grows past the tolerance");
+  lintCmd->add_flag("--update-baseline", lint.updateBaseline, "rewrite the --baseline file from this run");
+  lintCmd->add_option("--tolerance", lint.tolerancePercent, "growth over the baseline still accepted, in percent (default 5)")
+      ->check(CLI::Range(0.0, 1000.0));
+  lintCmd->add_option("--format", lint.format, "text | json | sarif")->check(CLI::IsMember({"text", "json", "sarif"}));
+  lintCmd->add_option("-o,--output", lint.output, "write the report to this file instead of standard output");
+  lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -45,5 +61,6 @@ int main(int argc, char** argv) {
   }
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
+  if (lintCmd->parsed()) return facet::matc::lintCommand(lint);
   return 2;
 }

@@ -83,8 +83,10 @@ size_t characters(std::string_view s, size_t bytes) {
 }  // namespace
 
 std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
-  std::string out = file.path + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
-                    ": " + (d.severity == Severity::Error ? "error" : "warning") + ": " + d.message;
+  // Line 0: a finding about the whole file (a lint figure of a compiled variant), not a place in it.
+  std::string where = d.loc.line == 0 ? file.path
+                                      : file.path + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column);
+  std::string out = where + ": " + (d.severity == Severity::Error ? "error" : "warning") + ": " + d.message;
   if (!d.code.empty()) out += " [" + d.code + "]";
   out += "\n";
   if (d.loc.line == 0) return out;

@@ -1,0 +1,54 @@
+// `matc lint`: the precision and instruction-count check CI runs on materials
+// (docs/lint.md). One call lints one material: the language's own diagnostics, the precision
+// rules over its IR (precision_rules.h), and per built variant the static cost and interface
+// figures of its optimised SPIR-V against GLES 3.0's limits, the tier budgets and a baseline.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/compiler/spirv_cost.h"
+#include "facet/compiler/spirv_interface.h"
+#include "facet/ir/diagnostics.h"
+#include "facet/lint/budgets.h"
+#include "facet/permutations/variant_key.h"
+
+namespace facet::lint {
+
+struct StageFigures {
+  compiler::StageCost cost;
+  compiler::StageInterface interface;
+};
+
+struct VariantFigures {
+  std::string key;  // e.g. "high.dir1"
+  StageFigures vertex, fragment;
+};
+
+struct LintOptions {
+  std::vector<permutations::Tier> tiers = permutations::supportedTiers();
+  std::vector<int> pointLightCounts{0};
+  const Budgets* budgets = nullptr;    // per-tier limits (budgets.h); none: no budget rules
+  const Baseline* baseline = nullptr;  // committed figures; none: no regression rule
+  double baselineTolerance = 0.05;     // a figure may grow by this fraction over the baseline
+};
+
+struct MaterialLint {
+  std::string material;  // the material's name ("" when it did not parse)
+  // Every finding, in the compiler's diagnostic type; findings about a variant rather than a
+  // line have loc.line == 0 and name the variant in their message.
+  std::vector<ir::Diagnostic> diagnostics;
+  std::vector<VariantFigures> variants;
+  bool hasErrors() const;
+};
+
+// Lints one material file held in memory. Never throws; a material that does not compile yields
+// its diagnostics and no figures.
+MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options);
+
+// The figures a baseline records for a variant stage, by name, in a stable order.
+std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& stage);
+
+}  // namespace facet::lint

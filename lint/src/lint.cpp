@@ -1,0 +1,190 @@
+#include "facet/lint/lint.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "facet/compiler/build.h"
+#include "facet/ir/check.h"
+#include "facet/ir/passes.h"
+#include "facet/lint/precision_rules.h"
+#include "facet/package.h"
+#include "facet/permutations/tiers.h"
+
+namespace facet::lint {
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+const std::vector<uint32_t>* spirvOf(const package::Variant& v, package::Stage stage, std::vector<uint32_t>* storage) {
+  for (const package::Shader& s : v.shaders) {
+    if (s.stage != stage || s.target != package::Target::Spirv) continue;
+    storage->assign(s.code.size() / 4, 0);
+    for (size_t i = 0; i < storage->size(); ++i)
+      (*storage)[i] = uint32_t(s.code[4 * i]) | uint32_t(s.code[4 * i + 1]) << 8 | uint32_t(s.code[4 * i + 2]) << 16 |
+                      uint32_t(s.code[4 * i + 3]) << 24;
+    return storage;
+  }
+  return nullptr;
+}
+
+class Linter {
+ public:
+  Linter(const LintOptions& options, MaterialLint* out) : options_(options), out_(out) {}
+
+  void variant(const package::Variant& v) {
+    VariantFigures figures;
+    figures.key = v.key;
+    for (auto [stage, name, dest] : {std::tuple{package::Stage::Vertex, "vertex", &figures.vertex},
+                                     std::tuple{package::Stage::Fragment, "fragment", &figures.fragment}}) {
+      std::vector<uint32_t> words;
+      std::string error;
+      if (!spirvOf(v, stage, &words) || !compiler::analyseSpirvCost(words, &dest->cost, &error) ||
+          !compiler::analyseStageInterface(words, &dest->interface, &error)) {
+        finding(ir::Severity::Error, "internal error: cannot analyse the " + std::string(name) + " SPIR-V of variant " +
+                                         v.key + (error.empty() ? "" : ": " + error), "backend");
+        return;
+      }
+      glesLimits(v.key, name, *dest);
+      budget(v.key, name, *dest);
+      baseline(v.key, name, *dest);
+    }
+    out_->variants.push_back(std::move(figures));
+  }
+
+ private:
+  void finding(ir::Severity severity, std::string message, std::string rule) {
+    out_->diagnostics.push_back({severity, ir::SourceLoc{}, std::move(message), std::move(rule)});
+  }
+
+  std::string where(const std::string& key, const char* stage) const {
+    return "material '" + out_->material + "' variant " + key + " " + stage + " stage";
+  }
+
+  // GLES 3.0's guaranteed minimums: a variant above one fails to link on some device.
+  void glesLimits(const std::string& key, const char* stage, const StageFigures& f) {
+    using L = compiler::Gles30Limits;
+    bool vertex = std::string(stage) == "vertex";
+    auto check = [&](uint32_t value, uint32_t limit, const char* what) {
+      if (value > limit)
+        finding(ir::Severity::Error,
+                where(key, stage) + " uses " + std::to_string(value) + " " + what + "; GLES 3.0 guarantees only " +
+                    std::to_string(limit),
+                "gles-limit");
+    };
+    check(f.interface.samplers, vertex ? L::kVertexSamplers : L::kFragmentSamplers, "samplers");
+    check(f.interface.uniformVectors, vertex ? L::kVertexUniformVectors : L::kFragmentUniformVectors, "uniform vectors");
+    if (vertex) {
+      check(f.interface.inputVectors, L::kVertexAttribs, "vertex attributes");
+      check(f.interface.outputVectors, L::kVaryingVectors, "varying vectors");
+    } else {
+      check(f.interface.inputVectors, L::kVaryingVectors, "varying vectors");
+    }
+  }
+
+  void budget(const std::string& key, const char* stage, const StageFigures& f) {
+    if (!options_.budgets) return;
+    auto tier = permutations::VariantKey::parse(key);
+    if (!tier) return;
+    auto t = options_.budgets->tiers.find(permutations::toString(tier->tier));
+    if (t == options_.budgets->tiers.end()) return;
+    auto s = t->second.find(stage);
+    if (s == t->second.end()) return;
+    const StageBudget& b = s->second;
+    for (const auto& [name, value] : namedFigures(f)) {
+      auto limit = b.max.find(name);
+      if (limit != b.max.end() && value > limit->second)
+        finding(ir::Severity::Error,
+                where(key, stage) + ": " + name + " " + number(value) + " exceeds the " + t->first + " budget " +
+                    number(limit->second),
+                "budget");
+    }
+    if (b.minRelaxedPercent && f.cost.relaxedPercent() < *b.minRelaxedPercent)
+      finding(ir::Severity::Error,
+              where(key, stage) + ": " + number(f.cost.relaxedPercent()) + " % of float ops in mediump, below the " +
+                  t->first + " budget's " + number(*b.minRelaxedPercent) + " %",
+              "budget");
+  }
+
+  void baseline(const std::string& key, const char* stage, const StageFigures& f) {
+    if (!options_.baseline) return;
+    const FigureLimits* recorded = nullptr;
+    if (auto m = options_.baseline->materials.find(out_->material); m != options_.baseline->materials.end())
+      if (auto v = m->second.find(key); v != m->second.end())
+        if (auto s = v->second.find(stage); s != v->second.end()) recorded = &s->second;
+    if (!recorded) {
+      finding(ir::Severity::Warning, where(key, stage) + " is not in the baseline; record it with --update-baseline",
+              "baseline-missing");
+      return;
+    }
+    for (const auto& [name, value] : namedFigures(f)) {
+      auto was = recorded->find(name);
+      if (was == recorded->end()) continue;
+      // Small figures move by whole ops: allow at least one op of growth, then the tolerance.
+      double allowed = std::max(was->second * (1.0 + options_.baselineTolerance), was->second + 1.0);
+      if (value > allowed)
+        finding(ir::Severity::Error,
+                where(key, stage) + ": " + name + " grew from " + number(was->second) + " to " + number(value) +
+                    " (+" + number(100.0 * (value - was->second) / std::max(was->second, 1.0)) + " %; tolerance " +
+                    number(100.0 * options_.baselineTolerance) + " %)",
+                "baseline-regression");
+    }
+  }
+
+  const LintOptions& options_;
+  MaterialLint* out_;
+};
+
+}  // namespace
+
+bool MaterialLint::hasErrors() const {
+  return std::any_of(diagnostics.begin(), diagnostics.end(), [](const ir::Diagnostic& d) { return d.severity == ir::Severity::Error; });
+}
+
+std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) {
+  return {
+      {"alu", s.cost.aluOps},
+      {"scalar_alu", s.cost.scalarAluOps},
+      {"transcendental", s.cost.transcendentalOps},
+      {"divisions", s.cost.divisions},
+      {"textures", s.cost.textureSamples},
+      {"varying_components", s.cost.varyingComponents},
+      {"uniform_vectors", s.interface.uniformVectors},
+      {"samplers", s.interface.samplers},
+  };
+}
+
+MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options) {
+  MaterialLint out;
+  ir::Diagnostics diags(file);
+  std::optional<ir::Material> checked = ir::compileSource(file, diags);
+  if (checked) {
+    out.material = checked->name;
+    ir::Material optimized = *checked;
+    ir::optimize(optimized);
+    bool mediump = std::any_of(options.tiers.begin(), options.tiers.end(), [](permutations::Tier t) {
+      return permutations::preset(t).precision == permutations::PrecisionPolicy::Mediump;
+    });
+    lint_precision(optimized, mediump, diags);
+  }
+  out.diagnostics = diags.all();
+  if (!checked) return out;
+
+  compiler::BuildOptions build;
+  build.tiers = options.tiers;
+  build.pointLightCounts = options.pointLightCounts;
+  compiler::BuildError error;
+  std::optional<compiler::BuildResult> built = compiler::buildMaterial(*checked, build, &error);
+  if (!built) {
+    out.diagnostics.push_back({ir::Severity::Error, error.loc.value_or(ir::SourceLoc{}), error.message, "backend"});
+    return out;
+  }
+  Linter linter(options, &out);
+  for (const package::Variant& v : built->package.variants) linter.variant(v);
+  return out;
+}
+
+}  // namespace facet::lint

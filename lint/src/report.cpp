@@ -1,0 +1,134 @@
+#include "facet/lint/report.h"
+
+#include <cctype>
+#include <cstdio>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+namespace facet::lint {
+namespace {
+
+using json = nlohmann::json;
+
+const char* severity(const ir::Diagnostic& d) { return d.severity == ir::Severity::Error ? "error" : "warning"; }
+
+// What each lint rule checks, for SARIF's rule metadata (language rules keep the compiler's ids).
+const std::map<std::string, std::string>& lintRules() {
+  static const std::map<std::string, std::string> rules = {
+      {"fp16-constant", "A constant outside binary16's normal range in a mediump expression."},
+      {"fp16-overflow", "A mediump value whose proven range leaves fp16's ±65504."},
+      {"unranged-param", "A float parameter without a declared range, read by a mediump tier."},
+      {"division-bound", "A divisor whose range reaches 0, or below 2^-14 in mediump."},
+      {"domain", "sqrt, log2, pow or smoothstep outside the domain GLSL defines."},
+      {"reserved-name", "A name GLSL reserves."},
+      {"gles-limit", "A variant needs more than OpenGL ES 3.0 guarantees."},
+      {"budget", "A variant exceeds its tier's budget."},
+      {"baseline-regression", "A variant's cost grew over the committed baseline."},
+      {"baseline-missing", "A variant the baseline does not record."},
+      {"backend", "The shader toolchain rejected generated code."},
+  };
+  return rules;
+}
+
+// RFC 3986: keep unreserved characters and '/', percent-encode the rest.
+std::string uriPath(const std::string& path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += char(c);
+    } else {
+      char buf[4];
+      std::snprintf(buf, sizeof buf, "%%%02X", c);
+      out += buf;
+    }
+  }
+  return out;
+}
+
+json figuresJson(const StageFigures& s) {
+  json j = json::object();
+  for (const auto& [name, value] : namedFigures(s)) j[name] = value;
+  j["relaxed_percent"] = s.cost.relaxedPercent();
+  return j;
+}
+
+}  // namespace
+
+std::string formatText(const std::vector<LintedFile>& files) {
+  std::string out;
+  size_t errors = 0, warnings = 0;
+  for (const LintedFile& f : files) {
+    for (const ir::Diagnostic& d : f.result.diagnostics) {
+      out += ir::formatDiagnostic(f.file, d);
+      (d.severity == ir::Severity::Error ? errors : warnings)++;
+    }
+  }
+  for (const LintedFile& f : files) {
+    if (f.result.variants.empty()) continue;
+    out += "\n" + f.file.path + " (" + f.result.material + ")\n";
+    out += "  variant            stage      alu scalar transc  div  tex varyings uniforms samplers  mediump\n";
+    for (const VariantFigures& v : f.result.variants)
+      for (auto [name, s] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}}) {
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-18s %-8s %5u %6u %6u %4u %4u %8u %8u %8u %7.0f%%\n", v.key.c_str(), name,
+                      s->cost.aluOps, s->cost.scalarAluOps, s->cost.transcendentalOps, s->cost.divisions,
+                      s->cost.textureSamples, s->cost.varyingComponents, s->interface.uniformVectors,
+                      s->interface.samplers, s->cost.relaxedPercent());
+        out += line;
+      }
+  }
+  out += "\n" + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") + ", " + std::to_string(warnings) +
+         " warning" + (warnings == 1 ? "" : "s") + "\n";
+  return out;
+}
+
+std::string formatJson(const std::vector<LintedFile>& files) {
+  json root = json::object();
+  root["files"] = json::array();
+  size_t errors = 0, warnings = 0;
+  for (const LintedFile& f : files) {
+    json jf = json::object();
+    jf["path"] = f.file.path;
+    jf["material"] = f.result.material;
+    jf["diagnostics"] = json::array();
+    for (const ir::Diagnostic& d : f.result.diagnostics) {
+      json jd = {{"severity", severity(d)}, {"rule", d.code}, {"message", d.message}};
+      if (d.loc.line) {
+        jd["line"] = d.loc.line;
+        jd["column"] = d.loc.column;
+      }
+      jf["diagnostics"].push_back(jd);
+      (d.severity == ir::Severity::Error ? errors : warnings)++;
+    }
+    jf["variants"] = json::array();
+    for (const VariantFigures& v : f.result.variants)
+      jf["variants"].push_back({{"key", v.key}, {"vertex", figuresJson(v.vertex)}, {"fragment", figuresJson(v.fragment)}});
+    root["files"].push_back(jf);
+  }
+  root["errors"] = errors;
+  root["warnings"] = warnings;
+  return root.dump(2) + "\n";
+}
+
+std::string formatSarif(const std::vector<LintedFile>& files, const std::string& toolVersion) {
+  json rules = json::array();
+  for (const auto& [id, text] : lintRules()) rules.push_back({{"id", id}, {"shortDescription", {{"text", text}}}});
+  json results = json::array();
+  for (const LintedFile& f : files)
+    for (const ir::Diagnostic& d : f.result.diagnostics) {
+      json physical = {{"artifactLocation", {{"uri", uriPath(f.file.path)}}}};
+      if (d.loc.line) physical["region"] = {{"startLine", d.loc.line}, {"startColumn", d.loc.column}};
+      results.push_back({{"ruleId", d.code.empty() ? "matc" : d.code},
+                         {"level", severity(d)},
+                         {"message", {{"text", d.message}}},
+                         {"locations", json::array({{{"physicalLocation", physical}}})}});
+    }
+  json run = {{"tool", {{"driver", {{"name", "matc lint"}, {"version", toolVersion}, {"rules", rules}}}}},
+              {"columnKind", "unicodeCodePoints"},
+              {"results", results}};
+  json root = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", json::array({run})}};
+  return root.dump(2) + "\n";
+}
+
+}  // namespace facet::lint

@@ -1,0 +1,60 @@
+#include "cli_inputs.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "commands.h"
+#include "facet/ir/lexer.h"
+
+namespace facet::matc {
+
+namespace fs = std::filesystem;
+
+bool readSource(const std::string& path, ir::SourceFile* out) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    printError("cannot read '" + path + "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
+    return false;
+  }
+  uintmax_t size = fs::file_size(path, ec);
+  if (ec || size > ir::kMaxSourceBytes) {
+    printError("'" + path + "' is " + std::to_string(size) + " bytes; material files are limited to " +
+               std::to_string(ir::kMaxSourceBytes) + " bytes");
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) {
+    printError("cannot read '" + path + "'");
+    return false;
+  }
+  out->path = path;
+  out->text = text.str();
+  return true;
+}
+
+int parseTiers(const std::vector<std::string>& names, std::vector<permutations::Tier>* tiers) {
+  if (names.empty()) return 0;
+  const auto& supported = permutations::supportedTiers();
+  tiers->clear();
+  for (const std::string& name : names) {
+    auto tier = permutations::tierFromString(name);
+    if (!tier) {
+      printError("unknown tier '" + name + "' (reference, high, mid, low)");
+      return 2;
+    }
+    if (std::find(supported.begin(), supported.end(), *tier) == supported.end()) {
+      std::string list;
+      for (permutations::Tier t : supported) list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
+      printError("tier '" + name + "' is not built by this compiler version (supported: " + list + ")");
+      return 2;
+    }
+    tiers->push_back(*tier);
+  }
+  return 0;
+}
+
+}  // namespace facet::matc

@@ -1,0 +1,138 @@
+// matc lint: wiring of facet_lint (docs/lint.md). Reads the inputs, lints each material, prints
+// the report, and maintains the baseline file.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli_inputs.h"
+#include "commands.h"
+#include "facet/compiler/build.h"
+#include "facet/lint/report.h"
+#include "facet/package.h"
+
+namespace facet::matc {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder stands for every .mat file in it (not recursive), sorted so output is stable.
+bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::string>* files) {
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (!fs::is_directory(input, ec)) {
+      files->push_back(input);
+      continue;
+    }
+    std::vector<std::string> found;
+    for (const auto& entry : fs::directory_iterator(input, ec))
+      if (entry.path().extension() == ".mat" && entry.is_regular_file(ec)) found.push_back(entry.path().string());
+    if (ec) {
+      printError("cannot list '" + input + "': " + ec.message());
+      return false;
+    }
+    if (found.empty()) {
+      printError("'" + input + "' holds no .mat files");
+      return false;
+    }
+    std::sort(found.begin(), found.end());
+    files->insert(files->end(), found.begin(), found.end());
+  }
+  return true;
+}
+
+// package::writeFile writes atomically (a temporary file, then a rename): no partial report.
+bool writeText(const std::string& path, const std::string& text) {
+  std::vector<uint8_t> bytes(text.begin(), text.end());
+  std::string error;
+  if (package::writeFile(path, bytes, &error)) return true;
+  printError(error);
+  return false;
+}
+
+bool readJsonFile(const std::string& path, std::string* text) {
+  ir::SourceFile file;  // the same size and regular-file checks as materials
+  if (!readSource(path, &file)) return false;
+  *text = std::move(file.text);
+  return true;
+}
+
+}  // namespace
+
+int lintCommand(const LintArgs& args) {
+  lint::LintOptions options;
+  if (int status = parseTiers(args.tiers, &options.tiers); status != 0) return status;
+  options.pointLightCounts = args.pointLights;
+  options.baselineTolerance = args.tolerancePercent / 100.0;
+  if (args.updateBaseline && args.baseline.empty()) {
+    printError("--update-baseline needs --baseline FILE: the file to write");
+    return 2;
+  }
+
+  std::optional<lint::Budgets> budgets;
+  if (!args.config.empty()) {
+    std::string text, error;
+    if (!readJsonFile(args.config, &text)) return 1;
+    budgets = lint::parseBudgets(args.config, text, &error);
+    if (!budgets) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return 1;
+    }
+    options.budgets = &*budgets;
+  }
+  std::optional<lint::Baseline> baseline;
+  if (!args.baseline.empty() && fs::exists(args.baseline)) {
+    std::string text, error;
+    if (!readJsonFile(args.baseline, &text)) return 1;
+    baseline = lint::parseBaseline(args.baseline, text, &error);
+    if (!baseline) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return 1;
+    }
+  } else if (!args.baseline.empty() && !args.updateBaseline) {
+    printError("baseline '" + args.baseline + "' does not exist; create it with --update-baseline");
+    return 1;
+  }
+  // While rewriting the baseline, its old figures are not held against the new ones.
+  if (baseline && !args.updateBaseline) options.baseline = &*baseline;
+
+  std::vector<std::string> files;
+  if (!expandInputs(args.inputs, &files)) return 1;
+  std::vector<lint::LintedFile> linted;
+  for (const std::string& path : files) {
+    lint::LintedFile f;
+    if (!readSource(path, &f.file)) return 1;
+    f.result = lint::lintMaterial(f.file, options);
+    linted.push_back(std::move(f));
+  }
+
+  std::string report = args.format == "json"    ? lint::formatJson(linted)
+                       : args.format == "sarif" ? lint::formatSarif(linted, compiler::compilerVersion())
+                                                : lint::formatText(linted);
+  if (args.output.empty()) {
+    std::fputs(report.c_str(), stdout);
+  } else if (!writeText(args.output, report)) {
+    return 1;
+  }
+
+  if (args.updateBaseline) {
+    lint::Baseline updated = baseline.value_or(lint::Baseline{});
+    for (const lint::LintedFile& f : linted) {
+      if (f.result.material.empty() || f.result.variants.empty()) continue;
+      auto& variants = updated.materials[f.result.material];
+      variants.clear();
+      for (const lint::VariantFigures& v : f.result.variants)
+        for (auto [stage, figures] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}})
+          for (const auto& [name, value] : lint::namedFigures(*figures)) variants[v.key][stage][name] = value;
+    }
+    if (!writeText(args.baseline, lint::writeBaseline(updated))) return 1;
+    std::fprintf(stderr, "matc lint: wrote baseline %s\n", args.baseline.c_str());
+  }
+
+  bool failed = false;
+  for (const lint::LintedFile& f : linted)
+    for (const ir::Diagnostic& d : f.result.diagnostics)
+      failed = failed || d.severity == ir::Severity::Error || args.werror;
+  return failed ? 1 : 0;
+}
+
+}  // namespace facet::matc
