@@ -14,8 +14,8 @@ packages=(
   libosmesa6-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   # maths and utility libraries
   libglm-dev libzstd-dev libxxhash-dev nlohmann-json3-dev libcli11-dev libstb-dev
-  # tests
-  googletest libgtest-dev libgmock-dev
+  # tests (python3-jsonschema: the SARIF schema check of matc lint's report)
+  googletest libgtest-dev libgmock-dev python3-jsonschema
   # fuzzing (scripts/fuzz.sh): clang, its libFuzzer/ASan/UBSan runtimes (libclang_rt.fuzzer),
   # and llvm-symbolizer for readable sanitizer stack traces
   clang libclang-rt-14-dev llvm
@@ -31,10 +31,26 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup-deps: all ${#packages[@]} packages already installed"
-  exit 0
+else
+  echo "setup-deps: installing ${#missing[@]} packages: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "setup-deps: installing ${#missing[@]} packages: ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The published SARIF 2.1.0 JSON schema, for the test of matc lint's SARIF report. No Debian
+# package ships it; the npm package @microsoft/jest-sarif does (lib/schemas/sarif-2.1.0-rtm.5.json,
+# the schema SchemaStore serves as sarif-2.1.0.json). Fetched once, pinned by version.
+sarif_schema=/usr/local/share/facet/sarif-schema-2.1.0.json
+if [ ! -s "$sarif_schema" ]; then
+  if ! command -v npm >/dev/null; then
+    $SUDO apt-get update -qq
+    $SUDO apt-get install -y -qq --no-install-recommends npm
+  fi
+  tmp=$(mktemp -d)
+  (cd "$tmp" && npm pack --silent @microsoft/jest-sarif@1.0.0-beta.0 >/dev/null &&
+    tar xzf microsoft-jest-sarif-1.0.0-beta.0.tgz package/lib/schemas/sarif-2.1.0-rtm.5.json)
+  $SUDO install -D -m 644 "$tmp/package/lib/schemas/sarif-2.1.0-rtm.5.json" "$sarif_schema"
+  rm -rf "$tmp"
+  echo "setup-deps: SARIF 2.1.0 schema -> $sarif_schema"
+fi

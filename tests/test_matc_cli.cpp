@@ -156,3 +156,30 @@ TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {
   EXPECT_NE(info.out.find("textures   1\n  facet_specularLut r8_unorm 128x64, sampled by low.dir1, 8192 bytes ("),
             std::string::npos) << info.out;
 }
+
+// matc lint as CI runs it: exit 0 on clean materials, 1 on an error (or on a warning with
+// --werror), 2 on a usage error; the baseline is written, then holds.
+TEST(MatcCli, LintExitCodesAndBaselineRoundTrip) {
+  std::string dir = facet::test::scratchDir("cli-lint");
+  std::string hazards = facet::test::sourceDir() + "/tests/data/lint/hazards.mat";
+  auto r = run(kMatc + " lint " + hazards + " --tiers high");
+  EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("hazards.mat:10:21: error: sqrt of a value that is always negative [-2, -1] is NaN [domain]"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[fp16-constant]"), std::string::npos) << r.out;
+
+  std::string warnOnly = write(dir, "warn.mat", "material warn {\n    param gain: float = 2.0\n    surface {\n        roughness = params.gain\n    }\n}\n");
+  EXPECT_EQ(run(kMatc + " lint " + warnOnly + " --tiers high").exitCode, 0);
+  r = run(kMatc + " lint " + warnOnly + " --tiers high --werror");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.out.find("warn.mat:2:11: warning: parameter 'gain' has no range"), std::string::npos) << r.out;
+
+  EXPECT_EQ(run(kMatc + " lint " + warnOnly + " --update-baseline").exitCode, 2);
+  std::string red = facet::test::examplePath("materials/red_plastic.mat");
+  std::string baseline = dir + "/baseline.json";
+  EXPECT_EQ(run(kMatc + " lint " + red + " --baseline " + baseline).exitCode, 1) << "a missing baseline is an error";
+  ASSERT_EQ(run(kMatc + " lint " + red + " --baseline " + baseline + " --update-baseline").exitCode, 0);
+  r = run(kMatc + " lint " + red + " --baseline " + baseline + " --werror --format json");
+  EXPECT_EQ(r.exitCode, 0) << r.out;
+  EXPECT_NE(r.out.find("\"errors\": 0"), std::string::npos) << r.out;
+}

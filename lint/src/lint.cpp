@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
 
 #include "facet/compiler/build.h"
 #include "facet/ir/check.h"
@@ -31,37 +32,29 @@ const std::vector<uint32_t>* spirvOf(const package::Variant& v, package::Stage s
   return nullptr;
 }
 
-class Linter {
+// The rules over one variant's figures. Findings name the material and variant in their message:
+// they have no line in the material.
+class VariantRules {
  public:
-  Linter(const LintOptions& options, MaterialLint* out) : options_(options), out_(out) {}
+  VariantRules(const std::string& material, const LintOptions& options, std::vector<ir::Diagnostic>* out)
+      : material_(material), options_(options), out_(out) {}
 
-  void variant(const package::Variant& v) {
-    VariantFigures figures;
-    figures.key = v.key;
-    for (auto [stage, name, dest] : {std::tuple{package::Stage::Vertex, "vertex", &figures.vertex},
-                                     std::tuple{package::Stage::Fragment, "fragment", &figures.fragment}}) {
-      std::vector<uint32_t> words;
-      std::string error;
-      if (!spirvOf(v, stage, &words) || !compiler::analyseSpirvCost(words, &dest->cost, &error) ||
-          !compiler::analyseStageInterface(words, &dest->interface, &error)) {
-        finding(ir::Severity::Error, "internal error: cannot analyse the " + std::string(name) + " SPIR-V of variant " +
-                                         v.key + (error.empty() ? "" : ": " + error), "backend");
-        return;
-      }
-      glesLimits(v.key, name, *dest);
-      budget(v.key, name, *dest);
-      baseline(v.key, name, *dest);
+  void run(const VariantFigures& v) {
+    for (auto [name, figures] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}}) {
+      glesLimits(v.key, name, *figures);
+      highpInputs(v.key, name, *figures);
+      budget(v.key, name, *figures);
+      baseline(v.key, name, *figures);
     }
-    out_->variants.push_back(std::move(figures));
   }
 
  private:
   void finding(ir::Severity severity, std::string message, std::string rule) {
-    out_->diagnostics.push_back({severity, ir::SourceLoc{}, std::move(message), std::move(rule)});
+    out_->push_back({severity, ir::SourceLoc{}, std::move(message), std::move(rule)});
   }
 
   std::string where(const std::string& key, const char* stage) const {
-    return "material '" + out_->material + "' variant " + key + " " + stage + " stage";
+    return "material '" + material_ + "' variant " + key + " " + stage + " stage";
   }
 
   // GLES 3.0's guaranteed minimums: a variant above one fails to link on some device.
@@ -83,6 +76,18 @@ class Linter {
     } else {
       check(f.interface.inputVectors, L::kVaryingVectors, "varying vectors");
     }
+  }
+
+  // DESIGN.md's precision policy: positions and texture coordinates stay highp in every tier
+  // (fp16's 11-bit mantissa steps by 1/1024 between 1 and 2: a 2048-texel texture misses every
+  // other texel, a position 1 km away moves in 0.5 m steps). Names are the templates' varyings
+  // and shader_abi.h's attributes.
+  void highpInputs(const std::string& key, const char* stage, const StageFigures& f) {
+    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_uv0", "v_uv1", "a_position", "a_uv0", "a_uv1"};
+    for (const std::string& name : f.interface.relaxedInputs)
+      if (mustBeHighp.count(name))
+        finding(ir::Severity::Error, where(key, stage) + " reads '" + name + "' in mediump; positions and UVs need highp",
+                "highp-required");
   }
 
   void budget(const std::string& key, const char* stage, const StageFigures& f) {
@@ -112,7 +117,7 @@ class Linter {
   void baseline(const std::string& key, const char* stage, const StageFigures& f) {
     if (!options_.baseline) return;
     const FigureLimits* recorded = nullptr;
-    if (auto m = options_.baseline->materials.find(out_->material); m != options_.baseline->materials.end())
+    if (auto m = options_.baseline->materials.find(material_); m != options_.baseline->materials.end())
       if (auto v = m->second.find(key); v != m->second.end())
         if (auto s = v->second.find(stage); s != v->second.end()) recorded = &s->second;
     if (!recorded) {
@@ -134,9 +139,25 @@ class Linter {
     }
   }
 
+  const std::string& material_;
   const LintOptions& options_;
-  MaterialLint* out_;
+  std::vector<ir::Diagnostic>* out_;
 };
+
+// Reads the SPIR-V of both stages into figures; false with *error when it cannot.
+bool variantFigures(const package::Variant& v, VariantFigures* figures, std::string* error) {
+  figures->key = v.key;
+  for (auto [stage, dest] : {std::pair{package::Stage::Vertex, &figures->vertex}, {package::Stage::Fragment, &figures->fragment}}) {
+    std::vector<uint32_t> words;
+    if (!spirvOf(v, stage, &words)) {
+      *error = "no SPIR-V";
+      return false;
+    }
+    if (!compiler::analyseSpirvCost(words, &dest->cost, error) || !compiler::analyseStageInterface(words, &dest->interface, error))
+      return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -182,9 +203,23 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
     out.diagnostics.push_back({ir::Severity::Error, error.loc.value_or(ir::SourceLoc{}), error.message, "backend"});
     return out;
   }
-  Linter linter(options, &out);
-  for (const package::Variant& v : built->package.variants) linter.variant(v);
+  for (const package::Variant& v : built->package.variants) {
+    VariantFigures figures;
+    std::string why;
+    if (!variantFigures(v, &figures, &why)) {
+      out.diagnostics.push_back({ir::Severity::Error, ir::SourceLoc{},
+                                 "internal error: cannot analyse the SPIR-V of variant " + v.key + ": " + why, "backend"});
+      continue;
+    }
+    lintVariant(out.material, figures, options, &out.diagnostics);
+    out.variants.push_back(std::move(figures));
+  }
   return out;
+}
+
+void lintVariant(const std::string& material, const VariantFigures& figures, const LintOptions& options,
+                 std::vector<ir::Diagnostic>* diagnostics) {
+  VariantRules(material, options, diagnostics).run(figures);
 }
 
 }  // namespace facet::lint

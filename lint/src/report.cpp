@@ -22,6 +22,7 @@ const std::map<std::string, std::string>& lintRules() {
       {"division-bound", "A divisor whose range reaches 0, or below 2^-14 in mediump."},
       {"domain", "sqrt, log2, pow or smoothstep outside the domain GLSL defines."},
       {"reserved-name", "A name GLSL reserves."},
+      {"highp-required", "A position or texture coordinate read in mediump."},
       {"gles-limit", "A variant needs more than OpenGL ES 3.0 guarantees."},
       {"budget", "A variant exceeds its tier's budget."},
       {"baseline-regression", "A variant's cost grew over the committed baseline."},

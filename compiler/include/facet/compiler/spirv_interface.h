@@ -13,7 +13,8 @@ struct StageInterface {
   uint32_t samplers = 0;        // combined image samplers (array elements counted)
   uint32_t inputVectors = 0;    // vec4 slots of the stage inputs: vertex attributes, or varyings
   uint32_t outputVectors = 0;   // vec4 slots of the stage outputs: varyings, or colour outputs
-  uint32_t uniformVectors = 0;  // vec4 slots of the uniform blocks and default-block uniforms the stage declares
+  uint32_t uniformVectors = 0;  // vec4 slots of the uniform blocks the stage's code reaches
+  std::vector<std::string> relaxedInputs;  // names of stage inputs decorated RelaxedPrecision (mediump)
 };
 
 // Returns false with *error on SPIR-V SPIRV-Cross cannot parse.

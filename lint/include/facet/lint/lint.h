@@ -48,6 +48,11 @@ struct MaterialLint {
 // its diagnostics and no figures.
 MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options);
 
+// The rules over one compiled variant's figures (GLES limits, highp inputs, budgets, baseline),
+// appended to *diagnostics. lintMaterial calls it for every variant it builds.
+void lintVariant(const std::string& material, const VariantFigures& figures, const LintOptions& options,
+                 std::vector<ir::Diagnostic>* diagnostics);
+
 // The figures a baseline records for a variant stage, by name, in a stable order.
 std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& stage);
 

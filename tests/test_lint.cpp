@@ -1,0 +1,244 @@
+// matc lint: each rule fires on a material written to break it, at the line that broke it, and
+// stays silent on the example materials; budgets, baselines and the report formats.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "facet/lint/lint.h"
+#include "facet/lint/report.h"
+#include "test_support.h"
+
+namespace {
+
+using facet::ir::Severity;
+using facet::lint::LintOptions;
+using facet::lint::MaterialLint;
+
+MaterialLint lintText(const std::string& text, LintOptions options = {}) {
+  facet::ir::SourceFile file{"test.mat", text};
+  if (options.tiers == facet::permutations::supportedTiers()) options.tiers = {facet::permutations::Tier::High};
+  return facet::lint::lintMaterial(file, options);
+}
+
+// "line:col rule" of every finding, for compact assertions.
+std::vector<std::string> where(const MaterialLint& r) {
+  std::vector<std::string> out;
+  for (const auto& d : r.diagnostics)
+    out.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + " " + d.code);
+  return out;
+}
+
+bool has(const MaterialLint& r, const std::string& at) {
+  auto w = where(r);
+  return std::find(w.begin(), w.end(), at) != w.end();
+}
+
+// Line 1 is `material m {`, the parameters follow, then `surface {` and the statements.
+std::string material(const std::string& params, const std::string& surface) {
+  return "material m {\n" + params + "    surface {\n" + surface + "    }\n}\n";
+}
+
+const std::string kRoughness = "    param roughness: float = 0.5 in [0, 1]\n";
+
+std::string dump(const MaterialLint& r) {
+  std::string s;
+  for (const auto& w : where(r)) s += w + "\n";
+  for (const auto& d : r.diagnostics) s += d.message + "\n";
+  return s;
+}
+
+}  // namespace
+
+TEST(Lint, ExampleMaterialsHaveNoFindingsOnAnyTier) {
+  for (const std::string& path : facet::test::exampleMaterials()) {
+    SCOPED_TRACE(path);
+    facet::ir::SourceFile file{path, facet::test::readText(path)};
+    MaterialLint r = facet::lint::lintMaterial(file, LintOptions{});
+    EXPECT_TRUE(r.diagnostics.empty()) << dump(r);
+    EXPECT_EQ(r.variants.size(), 8u);  // 4 tiers × dir0/dir1
+  }
+}
+
+TEST(Lint, ConstantsOutsideFp16NormalRangeInMediumpExpressionsAreFlagged) {
+  // 1e-5 and 7.7e-6 flush to 0, 110000 overflows.
+  MaterialLint r = lintText(material(kRoughness, "        let a = params.roughness * 1e-5\n"
+                                         "        let b = params.roughness + 7.7e-6\n"
+                                         "        let c = min(params.roughness * 110000.0, 1.0)\n"
+                                         "        roughness = a + b + c\n"));
+  EXPECT_TRUE(has(r, "4:36 fp16-constant")) << dump(r);
+  EXPECT_TRUE(has(r, "5:36 fp16-constant")) << dump(r);
+  // 0.5 × 110000 stays below 65504·2: the product's range [0, 110000] is proven beyond fp16, so
+  // the policy computes it in highp: the constant is not in a mediump expression.
+  EXPECT_FALSE(has(r, "6:40 fp16-constant")) << dump(r);
+  // The reference tier is highp: no fp16 rule applies.
+  LintOptions highp;
+  highp.tiers = {facet::permutations::Tier::Reference};
+  EXPECT_TRUE(lintText(material(kRoughness, "        roughness = params.roughness * 1e-5\n"), highp).diagnostics.empty());
+}
+
+TEST(Lint, OutputsBeyondFp16AreFlaggedEvenWhenComputedInHighp) {
+  MaterialLint r = lintText(material("    param sun: float = 1.0 in [0, 100000]\n", "        emissive = vec3(params.sun)\n"));
+  EXPECT_TRUE(has(r, "4:20 fp16-overflow")) << dump(r);
+}
+
+TEST(Lint, UnrangedFloatParametersAreFlaggedAtTheirDeclaration) {
+  MaterialLint r = lintText(material("    param gain: float = 2.0\n    param tint: color = vec3(1.0)\n",
+                                     "        baseColor = params.tint * params.gain\n"));
+  EXPECT_TRUE(has(r, "2:11 unranged-param")) << dump(r);
+  EXPECT_EQ(where(r).size(), 1u) << "a colour is [0, 1] by definition: " << dump(r);
+}
+
+TEST(Lint, DivisionNeedsAProvenLowerBound) {
+  MaterialLint r = lintText(material(kRoughness + "    param size: float = 1.0 in [0, 10]\n    param safe: float = 1.0 in [0.5, 10]\n",
+                                     "        roughness = params.roughness / params.size\n"
+                                     "        metallic = params.roughness / params.safe\n"));
+  EXPECT_TRUE(has(r, "6:38 division-bound")) << dump(r);
+  EXPECT_FALSE(has(r, "7:37 division-bound")) << dump(r);
+  // In mediump, a divisor proven positive but below 2^-14 still flushes to 0.
+  MaterialLint tiny = lintText(material("    param s: float = 0.001 in [0.00001, 1]\n", "        roughness = 1.0 / params.s\n"));
+  EXPECT_TRUE(has(tiny, "4:25 division-bound")) << dump(tiny);
+}
+
+TEST(Lint, SqrtAndLogOutsideTheirDomainAreFlagged) {
+  MaterialLint r = lintText(material(kRoughness, "        let a = sqrt(-1.0)\n"
+                                         "        let b = sqrt(params.roughness - 0.5)\n"
+                                         "        let c = log2(params.roughness)\n"
+                                         "        roughness = a + b + c\n"));
+  EXPECT_TRUE(has(r, "4:17 domain")) << dump(r);
+  EXPECT_TRUE(has(r, "5:17 domain")) << dump(r);
+  EXPECT_TRUE(has(r, "6:17 domain")) << dump(r);
+  // sqrt(-1.0) is NaN wherever it runs: an error, the others warnings.
+  EXPECT_TRUE(r.hasErrors());
+  for (const auto& d : r.diagnostics) EXPECT_EQ(d.severity, d.loc.line == 4 ? Severity::Error : Severity::Warning) << d.message;
+}
+
+TEST(Lint, ReservedNamesAreLanguageErrors) {
+  MaterialLint r = lintText(material("    param discard: float = 0.5 in [0, 1]\n", "        roughness = params.discard\n"));
+  EXPECT_TRUE(has(r, "2:11 reserved-name")) << dump(r);
+  EXPECT_TRUE(r.variants.empty());
+}
+
+TEST(Lint, VariantBeyondGles30UniformVectorsIsAnError) {
+  // 200 vec4 parameters: 200 vectors of MaterialParams on top of the frame and object blocks
+  // exceed the 224 fragment uniform vectors GLES 3.0 guarantees.
+  std::string params, sum = "vec4(0.0)";
+  for (int i = 0; i < 200; ++i) {
+    params += "    param p" + std::to_string(i) + ": vec4 = vec4(0.5) in [0, 1]\n";
+    sum = "(" + sum + " + params.p" + std::to_string(i) + ")";
+  }
+  MaterialLint r = lintText(material(params, "        baseColor = " + sum + ".xyz\n"));
+  bool found = false;
+  for (const auto& d : r.diagnostics)
+    found = found || (d.code == "gles-limit" && d.severity == Severity::Error &&
+                      d.message.find("fragment stage uses") != std::string::npos &&
+                      d.message.find("uniform vectors; GLES 3.0 guarantees only 224") != std::string::npos);
+  EXPECT_TRUE(found) << dump(r);
+}
+
+TEST(Lint, BudgetNamesMaterialVariantFigureAndLimit) {
+  std::string error;
+  auto budgets = facet::lint::parseBudgets("b.json", R"({"tiers": {"high": {"fragment": {"alu": 10, "min_relaxed_percent": 99}}}})", &error);
+  ASSERT_TRUE(budgets) << error;
+  LintOptions options;
+  options.budgets = &*budgets;
+  MaterialLint r = lintText(material(kRoughness, "        roughness = params.roughness\n"), options);
+  bool alu = false, relaxed = false;
+  for (const auto& d : r.diagnostics) {
+    alu = alu || (d.code == "budget" && d.message.find("material 'm' variant high.dir1 fragment stage: alu ") == 0 &&
+                  d.message.find("exceeds the high budget 10") != std::string::npos);
+    relaxed = relaxed || (d.code == "budget" && d.message.find("below the high budget's 99 %") != std::string::npos);
+  }
+  EXPECT_TRUE(alu) << dump(r);
+  EXPECT_TRUE(relaxed) << dump(r);
+}
+
+TEST(Lint, BaselineFailsOnGrowthBeyondToleranceAndRoundTrips) {
+  const std::string text = material(kRoughness, "        roughness = params.roughness\n");
+  MaterialLint first = lintText(text);
+  ASSERT_FALSE(first.variants.empty());
+  facet::lint::Baseline baseline;
+  for (const auto& v : first.variants)
+    for (auto [stage, f] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}})
+      for (const auto& [name, value] : facet::lint::namedFigures(*f)) baseline.materials["m"][v.key][stage][name] = value;
+  std::string error;
+  auto reread = facet::lint::parseBaseline("base.json", facet::lint::writeBaseline(baseline), &error);
+  ASSERT_TRUE(reread) << error;
+
+  LintOptions options;
+  options.baseline = &*reread;
+  EXPECT_TRUE(lintText(text, options).diagnostics.empty()) << dump(lintText(text, options));
+
+  // A heavier surface program grows the fragment stage's ALU count past 5 %.
+  MaterialLint heavier = lintText(material(kRoughness, "        roughness = sqrt(params.roughness) * sin(params.roughness) + "
+                                               "cos(params.roughness * 3.0) * exp2(params.roughness)\n"),
+                                  options);
+  bool grew = false;
+  for (const auto& d : heavier.diagnostics) grew = grew || (d.code == "baseline-regression" && d.severity == Severity::Error);
+  EXPECT_TRUE(grew) << dump(heavier);
+
+  options.tiers = {facet::permutations::Tier::Mid};  // not recorded: a warning, not a failure
+  MaterialLint missing = lintText(text, options);
+  EXPECT_FALSE(missing.hasErrors());
+  EXPECT_FALSE(missing.diagnostics.empty());
+  EXPECT_EQ(missing.diagnostics[0].code, "baseline-missing");
+}
+
+TEST(Lint, BudgetAndBaselineFilesReportTheirJsonPointer) {
+  std::string error;
+  EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"high": {"fragmnt": {}}}})", &error));
+  EXPECT_EQ(error, "b.json: error: /tiers/high/fragmnt: expected \"vertex\" or \"fragment\"");
+  EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"high": {"fragment": {"alu": -1}}}})", &error));
+  EXPECT_EQ(error, "b.json: error: /tiers/high/fragment/alu: expected a finite number ≥ 0");
+  EXPECT_FALSE(facet::lint::parseBaseline("base.json", "{\n  \"materials\": [1,\n", &error));
+  EXPECT_EQ(error.rfind("base.json:3:1: error: invalid JSON", 0), 0u) << error;
+}
+
+TEST(Lint, JsonAndSarifReportsCarryEveryFindingWithItsLocation) {
+  facet::lint::LintedFile f{{"materials/test file.mat", material("", "        roughness = sqrt(-1.0)\n")}, {}};
+  LintOptions options;
+  options.tiers = {facet::permutations::Tier::High};
+  f.result = facet::lint::lintMaterial(f.file, options);
+  ASSERT_FALSE(f.result.diagnostics.empty());
+
+  auto json = nlohmann::json::parse(facet::lint::formatJson({f}));
+  EXPECT_EQ(json["errors"], 1);
+  EXPECT_EQ(json["files"][0]["diagnostics"][0]["rule"], "domain");
+  EXPECT_EQ(json["files"][0]["diagnostics"][0]["line"], 3);  // material() puts the statement on line 3
+  EXPECT_EQ(json["files"][0]["variants"].size(), 2u);
+
+  auto sarif = nlohmann::json::parse(facet::lint::formatSarif({f}, "facet-matc test"));
+  EXPECT_EQ(sarif["version"], "2.1.0");
+  const auto& result = sarif["runs"][0]["results"][0];
+  EXPECT_EQ(result["ruleId"], "domain");
+  EXPECT_EQ(result["level"], "error");
+  EXPECT_EQ(result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"], "materials/test%20file.mat");
+  EXPECT_EQ(result["locations"][0]["physicalLocation"]["region"]["startLine"], 3);
+  EXPECT_EQ(result["locations"][0]["physicalLocation"]["region"]["startColumn"], 21);
+}
+
+TEST(Lint, PositionsAndUvsReadInMediumpAreErrors) {
+  facet::lint::VariantFigures figures;
+  figures.key = "high.dir1";
+  figures.fragment.interface.relaxedInputs = {"v_normal", "v_uv0"};
+  std::vector<facet::ir::Diagnostic> found;
+  facet::lint::lintVariant("m", figures, LintOptions{}, &found);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].code, "highp-required");
+  EXPECT_EQ(found[0].message, "material 'm' variant high.dir1 fragment stage reads 'v_uv0' in mediump; positions and UVs need highp");
+}
+
+// What the GLES-limit and highp rules read: SPIRV-Cross reflection of the compiled stage.
+TEST(Lint, InterfaceFiguresComeFromTheCompiledStage) {
+  facet::ir::SourceFile file{"painted_tiles.mat", facet::test::readText(facet::test::examplePath("materials/painted_tiles.mat"))};
+  LintOptions options;
+  options.tiers = {facet::permutations::Tier::High};
+  MaterialLint r = facet::lint::lintMaterial(file, options);
+  ASSERT_EQ(r.variants.size(), 2u);
+  const auto& f = r.variants[1].fragment.interface;  // high.dir1
+  EXPECT_EQ(r.variants[1].key, "high.dir1");
+  // albedo + relief + the DFG table + the environment
+  EXPECT_EQ(f.samplers, 4u);
+  // Mediump varyings exist (the normal, the tangent); none is a position or UV.
+  EXPECT_FALSE(f.relaxedInputs.empty());
+  for (const std::string& name : f.relaxedInputs) EXPECT_TRUE(name != "v_uv0" && name != "v_worldPosition") << name;
+}
