@@ -173,6 +173,8 @@ std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) 
       {"divisions", s.cost.divisions},
       {"textures", s.cost.textureSamples},
       {"varying_components", s.cost.varyingComponents},
+      {"input_vectors", s.interface.inputVectors},
+      {"output_vectors", s.interface.outputVectors},
       {"uniform_vectors", s.interface.uniformVectors},
       {"samplers", s.interface.samplers},
   };
