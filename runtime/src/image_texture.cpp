@@ -1,6 +1,7 @@
 #include "facet/runtime/image_texture.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -52,10 +53,26 @@ std::vector<uint8_t> halve(const std::vector<uint8_t>& src, uint32_t w, uint32_t
 
 }  // namespace
 
+std::string decodeFailure() {
+  const char* why = stbi_failure_reason();
+  return why && *why ? why : "corrupt or truncated data";
+}
+
 bool probeImageSize(const std::string& path, int* width, int* height, std::string* error) {
+  // stb_image opens whatever it is given: a FIFO or a device would block it forever.
+  std::error_code ec;
+  auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) {
+    *error = path + ": cannot read image: no such file";
+    return false;
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    *error = path + ": cannot read image: not a regular file";
+    return false;
+  }
   int channels = 0;
   if (!stbi_info(path.c_str(), width, height, &channels)) {
-    *error = path + ": cannot read image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format");
+    *error = path + ": cannot read image: " + decodeFailure();
     return false;
   }
   if (*width <= 0 || *height <= 0 || *width > kMaxImageSide || *height > kMaxImageSide) {
@@ -73,7 +90,7 @@ std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std:
   // t = 0 first, so an image's top row is t = 0, as in glTF and most engines' UV conventions.
   uint8_t* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
   if (!pixels) {
-    *error = path + ": cannot decode image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+    *error = path + ": cannot decode image: " + decodeFailure();
     return std::nullopt;
   }
   Texture t;

@@ -106,7 +106,8 @@ std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(con
 }
 
 std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<std::string, std::vector<double>>& values,
-                                                               std::string* error, ColorEncoding colors) const {
+                                                               std::string* error, ColorEncoding colors,
+                                                               const std::set<std::string>& givenAsBool) const {
   const package::MaterialInfo& info = package_.material;
   for (const auto& [name, value] : values) {
     bool known = false;
@@ -140,7 +141,17 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
         return std::nullopt;
       }
       v = it->second;
+      bool isBool = p.type == package::ParamType::Bool;
+      if (isBool != (givenAsBool.count(p.name) > 0)) {
+        *error = "parameter '" + p.name + "' of material '" + info.name + "' is " + package::toString(p.type) +
+                 (isBool ? ": give true or false" : ", not a bool");
+        return std::nullopt;
+      }
       for (double c : v) {
+        if (p.type == package::ParamType::Int && c != std::floor(c)) {
+          *error = "parameter '" + p.name + "' of material '" + info.name + "' is int, not " + number(c);
+          return std::nullopt;
+        }
         bool outside = (p.rangeMin && c < *p.rangeMin) || (p.rangeMax && c > *p.rangeMax) || !std::isfinite(c);
         if (p.type == package::ParamType::Color) outside = outside || c < 0.0 || c > 1.0;
         if (outside) {

@@ -1,10 +1,16 @@
 #include "facet/runtime/scene.h"
 
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <glm/geometric.hpp>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "facet/runtime/json_document.h"
 
 namespace facet::runtime {
 namespace {
@@ -19,6 +25,13 @@ struct SceneError {
 
 [[noreturn]] void fail(const std::string& pointer, std::string message) { throw SceneError{pointer, std::move(message)}; }
 
+bool isIdentifier(const std::string& s) {
+  if (s.empty() || s.size() > 128 || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
 // Rejects keys this reader does not know: a typo ("ilumination") must not silently fall back
 // to a default.
 void onlyKeys(const json& object, const std::string& pointer, std::initializer_list<const char*> keys) {
@@ -26,7 +39,7 @@ void onlyKeys(const json& object, const std::string& pointer, std::initializer_l
   for (const auto& [key, value] : object.items()) {
     bool known = false;
     for (const char* k : keys) known = known || key == k;
-    if (!known) fail(pointer + "/" + key, "unknown key '" + key + "'");
+    if (!known) fail(pointer + "/" + pointerSegment(key), "unknown key '" + pointerSegment(key) + "'");
   }
 }
 
@@ -38,10 +51,27 @@ double number(const json& j, const std::string& pointer, double lo, double hi) {
   return v;
 }
 
+// Sizes and counts: 256.7 pixels is a mistake, not 256.
+uint32_t wholeNumber(const json& j, const std::string& pointer, double lo, double hi) {
+  double v = number(j, pointer, lo, hi);
+  if (v != std::floor(v)) fail(pointer, "expected a whole number, not " + j.dump());
+  return uint32_t(v);
+}
+
 glm::dvec3 vec3(const json& j, const std::string& pointer) {
   if (!j.is_array() || j.size() != 3) fail(pointer, "expected an array of 3 numbers");
   return {number(j[0], pointer + "/0", -1e6, 1e6), number(j[1], pointer + "/1", -1e6, 1e6),
           number(j[2], pointer + "/2", -1e6, 1e6)};
+}
+
+// Directions are normalised by the renderer: a vector too short to normalise in single
+// precision (1e-300, or 0) would become NaN and leave the image empty or unlit.
+constexpr double kMinDirectionLength = 1e-6;
+
+glm::dvec3 direction(const json& j, const std::string& pointer) {
+  glm::dvec3 d = vec3(j, pointer);
+  if (glm::length(d) < kMinDirectionLength) fail(pointer, "a direction needs a length of at least 1e-6");
+  return d;
 }
 
 std::string string(const json& j, const std::string& pointer) {
@@ -49,12 +79,19 @@ std::string string(const json& j, const std::string& pointer) {
   return j.get<std::string>();
 }
 
+glm::dvec3 colour(const json& j, const std::string& pointer) {
+  glm::dvec3 c = vec3(j, pointer);
+  for (int i = 0; i < 3; ++i)
+    if (c[i] < 0 || c[i] > 1e3) fail(pointer + "/" + std::to_string(i), "a colour component must lie in [0, 1000]");
+  return c;
+}
+
 Camera camera(const json& j) {
   onlyKeys(j, "/camera", {"position", "target", "up", "fovY", "near", "far", "aperture", "shutter", "iso"});
   Camera c;
   if (j.contains("position")) c.position = vec3(j["position"], "/camera/position");
   if (j.contains("target")) c.target = vec3(j["target"], "/camera/target");
-  if (j.contains("up")) c.up = vec3(j["up"], "/camera/up");
+  if (j.contains("up")) c.up = direction(j["up"], "/camera/up");
   if (j.contains("fovY")) c.fovYDegrees = number(j["fovY"], "/camera/fovY", 1, 179);
   if (j.contains("near")) c.nearPlane = number(j["near"], "/camera/near", 1e-4, 1e6);
   if (j.contains("far")) c.farPlane = number(j["far"], "/camera/far", 1e-3, 1e7);
@@ -62,18 +99,20 @@ Camera camera(const json& j) {
   if (j.contains("shutter")) c.shutterSeconds = number(j["shutter"], "/camera/shutter", 1e-5, 60);
   if (j.contains("iso")) c.iso = number(j["iso"], "/camera/iso", 1, 1e6);
   if (c.farPlane <= c.nearPlane) fail("/camera/far", "must be greater than near");
-  if (glm::dvec3 d = c.target - c.position; d.x == 0 && d.y == 0 && d.z == 0)
-    fail("/camera/target", "must differ from the camera position");
+  glm::dvec3 view = c.target - c.position;
+  if (glm::length(view) < kMinDirectionLength) fail("/camera/target", "must lie at least 1e-6 from the camera position");
+  // The view basis is built from cross(view, up): parallel vectors leave it undefined.
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-3)
+    fail("/camera/up", "must not be parallel to the view direction (target − position)");
   return c;
 }
 
 Sun sun(const json& j) {
   onlyKeys(j, "/sun", {"direction", "illuminance", "color"});
   Sun s;
-  if (j.contains("direction")) s.direction = vec3(j["direction"], "/sun/direction");
-  if (s.direction.x == 0 && s.direction.y == 0 && s.direction.z == 0) fail("/sun/direction", "must not be zero");
+  if (j.contains("direction")) s.direction = direction(j["direction"], "/sun/direction");
   if (j.contains("illuminance")) s.illuminance = number(j["illuminance"], "/sun/illuminance", 0, 1e6);
-  if (j.contains("color")) s.color = vec3(j["color"], "/sun/color");
+  if (j.contains("color")) s.color = colour(j["color"], "/sun/color");
   return s;
 }
 
@@ -88,21 +127,13 @@ PunctualLight light(const json& j, const std::string& pointer) {
       if (j.contains(key)) fail(pointer + "/" + key, "only a spot light has a " + std::string(key));
   if (j.contains("position")) l.position = vec3(j["position"], pointer + "/position");
   if (j.contains("intensity")) l.intensity = number(j["intensity"], pointer + "/intensity", 0, 1e7);
-  if (j.contains("color")) l.color = vec3(j["color"], pointer + "/color");
+  if (j.contains("color")) l.color = colour(j["color"], pointer + "/color");
   if (j.contains("range")) l.range = number(j["range"], pointer + "/range", 0.01, 1e4);
-  if (j.contains("direction")) l.direction = vec3(j["direction"], pointer + "/direction");
-  if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) fail(pointer + "/direction", "must not be zero");
+  if (j.contains("direction")) l.direction = direction(j["direction"], pointer + "/direction");
   if (j.contains("innerAngle")) l.innerAngleDegrees = number(j["innerAngle"], pointer + "/innerAngle", 0, 90);
   if (j.contains("outerAngle")) l.outerAngleDegrees = number(j["outerAngle"], pointer + "/outerAngle", 0.5, 90);
   if (l.innerAngleDegrees >= l.outerAngleDegrees) fail(pointer + "/innerAngle", "must be smaller than outerAngle");
   return l;
-}
-
-glm::dvec3 colour(const json& j, const std::string& pointer) {
-  glm::dvec3 c = vec3(j, pointer);
-  for (int i = 0; i < 3; ++i)
-    if (c[i] < 0 || c[i] > 1e3) fail(pointer + "/" + std::to_string(i), "a colour component must lie in [0, 1000]");
-  return c;
 }
 
 Environment environment(const json& j, const std::filesystem::path& sceneDir) {
@@ -133,22 +164,27 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
   if (o.mesh != "sphere") fail(pointer + "/mesh", "unknown mesh '" + o.mesh + "' (available: sphere)");
   if (!j.contains("material")) fail(pointer, "missing 'material'");
   o.material = string(j["material"], pointer + "/material");
-  if (o.material.empty() || o.material.find_first_of("/\\") != std::string::npos || o.material[0] == '.')
-    fail(pointer + "/material", "expected a material name, not a path");
+  // A material name is an identifier of the language (what `material NAME {` accepts): no path,
+  // no NUL to cut the file name short, nothing that could open another file.
+  if (!isIdentifier(o.material)) fail(pointer + "/material", "expected a material name (letters, digits, _), not '" + pointerSegment(o.material) + "'");
   if (j.contains("position")) o.position = vec3(j["position"], pointer + "/position");
   if (j.contains("radius")) o.radius = number(j["radius"], pointer + "/radius", 1e-4, 1e6);
   if (j.contains("params")) {
     const json& params = j["params"];
     if (!params.is_object()) fail(pointer + "/params", "expected an object");
     for (const auto& [name, value] : params.items()) {
-      std::string p = pointer + "/params/" + name;
+      std::string p = pointer + "/params/" + pointerSegment(name);
+      if (!isIdentifier(name)) fail(p, "expected a parameter name (letters, digits, _)");
       std::vector<double> v;
       if (value.is_string()) {  // a texture parameter's image, relative to the scene file
         o.textures[name] = (sceneDir / value.get<std::string>()).lexically_normal().string();
         continue;
       }
       if (value.is_number()) v.push_back(number(value, p, -1e30, 1e30));
-      else if (value.is_boolean()) v.push_back(value.get<bool>() ? 1 : 0);
+      else if (value.is_boolean()) {
+        v.push_back(value.get<bool>() ? 1 : 0);
+        o.boolParams.insert(name);  // checked against the parameter's type when the package is known
+      }
       else if (value.is_array() && !value.empty() && value.size() <= 4)
         for (size_t i = 0; i < value.size(); ++i) v.push_back(number(value[i], p + "/" + std::to_string(i), -1e30, 1e30));
       else fail(p, "expected a number, a bool, an array of 1 to 4 numbers, or an image path");
@@ -161,8 +197,8 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
 Scene scene(const json& j, const std::filesystem::path& sceneDir) {
   onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects"});
   Scene s;
-  if (j.contains("width")) s.width = uint32_t(number(j["width"], "/width", 1, 4096));
-  if (j.contains("height")) s.height = uint32_t(number(j["height"], "/height", 1, 4096));
+  if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
+  if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
@@ -192,29 +228,10 @@ Scene scene(const json& j, const std::filesystem::path& sceneDir) {
 }  // namespace
 
 std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error) {
-  json j;
+  std::optional<json> j = parseJsonDocument(path, text, error);
+  if (!j) return std::nullopt;
   try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // Byte offset -> line:column for the compiler-style message.
-    size_t offset = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i < offset; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    std::string what = e.what();
-    size_t colon = what.find("error: ");
-    *error = path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: invalid JSON: " +
-             (colon == std::string::npos ? what : what.substr(colon + 7));
-    return std::nullopt;
-  }
-  try {
-    return scene(j, std::filesystem::path(path).parent_path());
+    return scene(*j, std::filesystem::path(path).parent_path());
   } catch (const SceneError& e) {
     *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
   } catch (const json::exception& e) {
@@ -225,8 +242,14 @@ std::optional<Scene> parseScene(const std::string& path, const std::string& text
 
 std::optional<Scene> loadScene(const std::string& path, std::string* error) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    *error = path + ": error: cannot open the scene file";
+  auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) {
+    *error = path + ": error: cannot open the scene file: no such file";
+    return std::nullopt;
+  }
+  // A FIFO or device would block or never end: only regular files are read.
+  if (!std::filesystem::is_regular_file(status)) {
+    *error = path + ": error: cannot open the scene file: not a regular file";
     return std::nullopt;
   }
   if (std::filesystem::file_size(path, ec) > (16u << 20)) {
@@ -234,8 +257,16 @@ std::optional<Scene> loadScene(const std::string& path, std::string* error) {
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    *error = path + ": error: cannot open the scene file: " + std::strerror(errno);
+    return std::nullopt;
+  }
   std::ostringstream text;
   text << in.rdbuf();
+  if (in.bad()) {
+    *error = path + ": error: cannot read the scene file: " + std::strerror(errno);
+    return std::nullopt;
+  }
   return parseScene(path, text.str(), error);
 }
 

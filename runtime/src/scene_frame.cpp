@@ -104,6 +104,11 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
       auto material = LoadedMaterial::load(path, error);
       if (!material) return nullptr;
+      // A package renamed or copied under another material's name would draw the wrong surface.
+      if (material->info().name != o.material) {
+        *error = path + ": holds material '" + material->info().name + "', not '" + o.material + "' as the scene asks";
+        return nullptr;
+      }
       // The key this material is asked for: axes it ignores (lights, for unlit) are normalised
       // the same way the compiler normalised them when it built the package.
       permutations::MaterialNeeds needs{material->info().shading == "lit"};
@@ -123,7 +128,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), o.position), glm::dvec3(o.radius));
     store(draw.object.model, glm::mat4(model));
     store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
-    auto block = out->materials_[it->second]->paramBlock(o.params, error, out->colors_);
+    auto block = out->materials_[it->second]->paramBlock(o.params, error, out->colors_, o.boolParams);
     if (!block) {
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;

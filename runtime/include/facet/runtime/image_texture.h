@@ -14,8 +14,12 @@ inline constexpr int kMaxImageSide = 8192;
 
 // Reads an image file's size without decoding it; false, with *error naming the file, when it is
 // not an image stb_image reads or is larger than kMaxImageSide on a side. Every loader calls it
-// first, so a hostile header cannot make it decode (and allocate) a huge image.
+// first, so a hostile header cannot make it decode (and allocate) a huge image, and only regular
+// files are opened (a FIFO or a device would block the read forever).
 bool probeImageSize(const std::string& path, int* width, int* height, std::string* error);
+
+// stb_image's reason for its last failure, or "corrupt or truncated data" when it gives none.
+std::string decodeFailure();
 
 // Loads a PNG/JPEG/TGA (stb_image) as RGBA8, with every mip level down to 1×1. `srgb` tags the
 // image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the

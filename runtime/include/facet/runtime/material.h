@@ -4,6 +4,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,12 @@ class LoadedMaterial {
   // colour values are sRGB-encoded, as authored, and converted to linear here). Unknown names,
   // wrong component counts and values outside a declared range are errors.
   // With ColorEncoding::Srgb colour values stay as authored, and defaults are encoded back.
+  // `givenAsBool` names the values the scene wrote as true/false: only a bool parameter takes
+  // one, and a bool parameter takes nothing else; an int parameter takes whole numbers only.
   std::optional<std::vector<uint8_t>> paramBlock(const std::map<std::string, std::vector<double>>& values,
                                                  std::string* error,
-                                                 ColorEncoding colors = ColorEncoding::Linear) const;
+                                                 ColorEncoding colors = ColorEncoding::Linear,
+                                                 const std::set<std::string>& givenAsBool = {}) const;
 
   // The textures the compiler generated for the variant's shaders (package section TEXS, e.g.
   // the `lut` tier's specular table), bound at their shader_abi.h slots. The Textures are made

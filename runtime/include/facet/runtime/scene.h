@@ -4,6 +4,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,7 @@ struct SceneObject {
   glm::dvec3 position{0, 0, 0};
   double radius = 1;
   std::map<std::string, std::vector<double>> params;
+  std::set<std::string> boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
   std::map<std::string, std::string> textures;  // texture parameter -> image path (relative to the scene file, resolved)
 };
 
