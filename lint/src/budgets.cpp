@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "facet/runtime/json_document.h"
+
 namespace facet::lint {
 namespace {
 
@@ -14,24 +16,6 @@ struct Invalid {
 };
 
 [[noreturn]] void fail(const std::string& pointer, const std::string& message) { throw Invalid{pointer, message}; }
-
-std::optional<json> parseJson(const std::string& path, const std::string& text, std::string* error) {
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    size_t offset = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i < offset; ++i) {
-      bool newline = text[i] == '\n';
-      line += newline;
-      column = newline ? 1 : column + 1;
-    }
-    *error = path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: invalid JSON";
-  } catch (const json::exception&) {
-    *error = path + ": error: invalid JSON (a number out of range?)";
-  }
-  return std::nullopt;
-}
 
 const json& object(const json& j, const std::string& pointer) {
   if (!j.is_object()) fail(pointer, "expected an object");
@@ -56,7 +40,7 @@ bool isStage(const std::string& s) { return s == "vertex" || s == "fragment"; }
 }  // namespace
 
 std::optional<Budgets> parseBudgets(const std::string& path, const std::string& text, std::string* error) {
-  std::optional<json> j = parseJson(path, text, error);
+  std::optional<json> j = runtime::parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
     Budgets b;
@@ -82,7 +66,7 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
 }
 
 std::optional<Baseline> parseBaseline(const std::string& path, const std::string& text, std::string* error) {
-  std::optional<json> j = parseJson(path, text, error);
+  std::optional<json> j = runtime::parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
     Baseline b;
