@@ -69,6 +69,9 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
 int compileCommand(const CompileArgs& args) {
   ir::SourceFile source;
   if (!readSource(args.input, &source)) return 1;
+  std::string output = args.output;
+  if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
+  if (!outputSparesInput(args.input, output)) return 1;
 
   ir::Diagnostics diags(source);
   std::optional<ir::Material> material = ir::compileSource(source, diags);
@@ -93,8 +96,6 @@ int compileCommand(const CompileArgs& args) {
     return 1;
   }
   std::string error;
-  std::string output = args.output;
-  if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
   std::vector<uint8_t> bytes = package::write(built->package);
   if (!package::writeFile(output, bytes, &error)) {
     printError(error);

@@ -3,8 +3,11 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "facet/atomic_file.h"
 
 int main(int argc, char** argv) {
+  // Ctrl-C or a build system's kill during a write leaves no temporary file behind.
+  facet::removeTemporaryFilesOnSignals();
   CLI::App app{"matc: compiles Facet materials (.mat) into shader packages (.matpkg)"};
   app.require_subcommand(1);
 

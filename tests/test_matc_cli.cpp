@@ -183,3 +183,20 @@ TEST(MatcCli, LintExitCodesAndBaselineRoundTrip) {
   EXPECT_EQ(r.exitCode, 0) << r.out;
   EXPECT_NE(r.out.find("\"errors\": 0"), std::string::npos) << r.out;
 }
+
+// The output never replaces the material it was compiled from, nor a device node.
+TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
+  std::string dir = facet::test::scratchDir("cli-overwrite");
+  std::string text = facet::test::readText(facet::test::examplePath("materials/red_plastic.mat"));
+  std::string mat = write(dir, "red.mat", text);
+  auto r = run(kMatc + " compile " + mat + " -o " + mat);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("the output '" + mat + "' is the input material"), std::string::npos) << r.err;
+  EXPECT_EQ(facet::test::readText(mat), text);
+  std::string pkgNamed = write(dir, "odd.matpkg", text);  // default output = input with .matpkg
+  EXPECT_EQ(run(kMatc + " compile " + pkgNamed).exitCode, 1);
+  EXPECT_EQ(facet::test::readText(pkgNamed), text);
+  r = run(kMatc + " compile " + mat + " -o /dev/null");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cannot write '/dev/null': it exists and is not a regular file"), std::string::npos) << r.err;
+}

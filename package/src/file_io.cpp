@@ -7,26 +7,13 @@
 #include <string>
 #include <system_error>
 
-#ifdef _WIN32
-#include <process.h>
-#else
-#include <unistd.h>
-#endif
-
+#include "facet/atomic_file.h"
 #include "facet/package.h"
 #include "format.h"
 
 namespace facet::package {
 
 namespace {
-
-long processId() {
-#ifdef _WIN32
-  return long(_getpid());
-#else
-  return long(getpid());
-#endif
-}
 
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
@@ -68,30 +55,11 @@ ReadResult readFile(const std::string& path) {
 }
 
 bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::string* error) {
-  auto fail = [&](const std::string& message) {
-    if (error) *error = message;
-    return false;
-  };
-  // The pid keeps two matc processes writing the same package from sharing a temporary file.
-  const std::string temp = path + ".tmp." + std::to_string(processId());
-  File f(std::fopen(temp.c_str(), "wb"));
-  if (!f) return fail("cannot write '" + path + "': " + std::strerror(errno));
-  bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f.get()) == bytes.size();
-  int writeErrno = errno;
-  // fclose flushes, so its failure is a write failure too.
-  bool closed = std::fclose(f.release()) == 0;
-  if (!written || !closed) {
-    std::string reason = std::strerror(written ? errno : writeErrno);
-    std::remove(temp.c_str());
-    return fail("cannot write '" + path + "': " + reason);
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    std::remove(temp.c_str());
-    return fail("cannot write '" + path + "': " + ec.message());
-  }
-  return true;
+  std::string message;
+  AtomicFile file;
+  if (file.open(path, &message) && file.write(bytes, &message) && file.commit(&message)) return true;
+  if (error) *error = message;
+  return false;
 }
 
 }  // namespace facet::package

@@ -1,11 +1,9 @@
 #include "facet/runtime/png.h"
 
-#include <cstdio>
-#include <filesystem>
-#include <unistd.h>
-
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
+
+#include "facet/package.h"
 
 namespace facet::runtime {
 
@@ -15,20 +13,18 @@ bool writePng(const std::string& path, uint32_t width, uint32_t height, const st
     *error = "writePng: pixel buffer does not match " + std::to_string(width) + "x" + std::to_string(height);
     return false;
   }
-  std::string tmp = path + ".tmp." + std::to_string(getpid());
-  if (!stbi_write_png(tmp.c_str(), int(width), int(height), 4, rgba.data(), int(width * 4))) {
-    std::remove(tmp.c_str());
-    *error = "cannot write '" + path + "'";
+  // Encoded in memory, then written like every other output (package::writeFile: atomically,
+  // only over a regular file).
+  std::vector<uint8_t> png;
+  auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<uint8_t>*>(context);
+    out->insert(out->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
+  };
+  if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba.data(), int(width * 4))) {
+    *error = "cannot encode '" + path + "' as PNG";
     return false;
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    *error = "cannot write '" + path + "': " + ec.message();
-    return false;
-  }
-  return true;
+  return package::writeFile(path, png, error);
 }
 
 }  // namespace facet::runtime

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/atomic_file.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/scene_frame.h"
@@ -17,6 +18,7 @@ int fail(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  facet::removeTemporaryFilesOnSignals();  // an interrupted PNG write leaves nothing behind
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
   std::string scenePath, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false;

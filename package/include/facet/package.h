@@ -128,7 +128,8 @@ ReadResult read(std::span<const uint8_t> bytes);
 // Reads a whole file; on I/O failure returns a ReadResult with the error set.
 ReadResult readFile(const std::string& path);
 
-// Writes atomically (temporary file + rename), so a failed write never leaves a partial package.
+// Writes atomically (AtomicFile: a fresh temporary file, then a rename), so a failed or
+// interrupted write never leaves a partial file, and refuses a destination that is not a regular file.
 bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::string* error);
 
 }  // namespace facet::package
