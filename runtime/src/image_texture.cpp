@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <cmath>
+#include <fstream>
+#include <limits>
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
@@ -83,14 +85,46 @@ bool probeImageSize(const std::string& path, int* width, int* height, std::strin
   return true;
 }
 
-std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error) {
+bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::string* error) {
+  std::error_code ec;
+  auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status) || !std::filesystem::is_regular_file(status)) {
+    *error = path + ": cannot read image: " + (std::filesystem::exists(status) ? "not a regular file" : "no such file");
+    return false;
+  }
+  uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxImageFileBytes) {
+    *error = path + ": cannot read image: " + (ec ? ec.message() : std::to_string(size) + " bytes; the limit is " +
+                                                                  std::to_string(kMaxImageFileBytes));
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  bytes->resize(size_t(size));
+  if (!in.read(reinterpret_cast<char*>(bytes->data()), std::streamsize(size)) || in.peek() != EOF) {
+    *error = path + ": cannot read image: the file could not be read whole";
+    return false;
+  }
+  return true;
+}
+
+std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
+                                          std::string* error) {
   int w = 0, h = 0, channels = 0;
-  if (!probeImageSize(path, &w, &h, error)) return std::nullopt;
+  if (bytes.size() > size_t(std::numeric_limits<int>::max()) ||
+      !stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &channels)) {
+    *error = name + ": cannot read image: " + decodeFailure();
+    return std::nullopt;
+  }
+  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
+    *error = name + ": image is " + std::to_string(w) + "x" + std::to_string(h) + "; the limit is " +
+             std::to_string(kMaxImageSide) + " on each side";
+    return std::nullopt;
+  }
   // stb_image stores the first row (the top of the picture) first; the texture convention puts
   // t = 0 first, so an image's top row is t = 0, as in glTF and most engines' UV conventions.
-  uint8_t* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  uint8_t* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &channels, 4);
   if (!pixels) {
-    *error = path + ": cannot decode image: " + decodeFailure();
+    *error = name + ": cannot decode image: " + decodeFailure();
     return std::nullopt;
   }
   Texture t;
@@ -103,6 +137,12 @@ std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std:
   for (uint32_t lw = t.width, lh = t.height; lw > 1 || lh > 1; lw = std::max(1u, lw / 2), lh = std::max(1u, lh / 2))
     t.levels.push_back(halve(t.levels.back(), lw, lh, srgb));
   return t;
+}
+
+std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error) {
+  std::vector<uint8_t> bytes;
+  if (!readImageFile(path, &bytes, error)) return std::nullopt;
+  return decodeImageTexture(bytes, srgb, path, error);
 }
 
 Texture solidTexture(const std::array<double, 4>& rgba, bool srgb) {

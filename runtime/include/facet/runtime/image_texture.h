@@ -3,6 +3,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "facet/render_backend.h"
@@ -20,6 +21,18 @@ bool probeImageSize(const std::string& path, int* width, int* height, std::strin
 
 // stb_image's reason for its last failure, or "corrupt or truncated data" when it gives none.
 std::string decodeFailure();
+
+// Image files larger than this are refused before they are read.
+inline constexpr uintmax_t kMaxImageFileBytes = 256u << 20;
+
+// Reads a whole image file: a regular file (a FIFO or a device would block), at most
+// kMaxImageFileBytes. False with *error naming the file otherwise.
+bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::string* error);
+
+// Decodes a PNG/JPEG/TGA held in memory (loadImageTexture without the file); `name` is used in
+// messages. The fuzz target fuzz_image drives it with arbitrary bytes.
+std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
+                                          std::string* error);
 
 // Loads a PNG/JPEG/TGA (stb_image) as RGBA8, with every mip level down to 1×1. `srgb` tags the
 // image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the
