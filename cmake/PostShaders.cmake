@@ -12,6 +12,8 @@ set(FACET_POST_FRAGMENT_CHUNKS
 function(_facet_compose out_var flavour stage body chunks)
   if(flavour STREQUAL "vulkan")
     set(text "#version 310 es\n#define FACET_VULKAN 1\n")
+  elseif(flavour STREQUAL "vulkan_fetch")
+    set(text "#version 310 es\n#define FACET_VULKAN 1\n#define FACET_POST_SUBPASS_INPUT 1\n")
   else()
     set(text "#version 300 es\n")
   endif()
@@ -52,6 +54,19 @@ function(facet_post_shaders out_cpp)
       DEPENDS ${gen}/post.vk.${stage} ${gen}/post.es.${stage}
       COMMENT "Compiling post-pass ${stage} shader (SPIR-V, and checking GLSL ES 3.00)")
     list(APPEND headers ${gen}/post_${stage}_spv.h)
+    if(stage STREQUAL "frag")
+      # Merged path: the same body reading its own pixel through a subpass input.
+      _facet_compose(fetch_src vulkan_fetch ${stage} ${body} "${chunks}")
+      file(CONFIGURE OUTPUT ${gen}/post.vk_fetch.${stage} CONTENT "${fetch_src}" @ONLY)
+      add_custom_command(
+        OUTPUT ${gen}/post_${stage}_fetch_spv.h
+        COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.0 --vn facet_post_${stage}_fetch_spv
+                -o ${gen}/post_${stage}_fetch_spv.h ${gen}/post.vk_fetch.${stage}
+        DEPENDS ${gen}/post.vk_fetch.${stage}
+        COMMENT "Compiling post-pass ${stage} shader, subpass-input form (SPIR-V)")
+      list(APPEND headers ${gen}/post_${stage}_fetch_spv.h)
+      string(APPEND cpp "#include \"post_${stage}_fetch_spv.h\"\n")
+    endif()
     string(APPEND cpp "#include \"post_${stage}_spv.h\"\n")
     string(APPEND cpp "static const char kPost_${stage}_es[] = R\"facet_glsl(${es_src})facet_glsl\";\n")
   endforeach()
@@ -60,9 +75,10 @@ namespace facet::runtime {
 const PostShaders& postShaders() {
   static const std::vector<uint32_t> vs(std::begin(facet_post_vert_spv), std::end(facet_post_vert_spv));
   static const std::vector<uint32_t> fs(std::begin(facet_post_frag_spv), std::end(facet_post_frag_spv));
+  static const std::vector<uint32_t> fsFetch(std::begin(facet_post_frag_fetch_spv), std::end(facet_post_frag_fetch_spv));
   static const std::string vsText(kPost_vert_es);
   static const std::string fsText(kPost_frag_es);
-  static const PostShaders shaders{vs, fs, vsText, fsText};
+  static const PostShaders shaders{vs, fs, fsFetch, vsText, fsText};
   return shaders;
 }
 }  // namespace facet::runtime

@@ -117,7 +117,8 @@ std::unique_ptr<RenderBackend> createGlBackend(std::string* error);
 // Shaders of the post pass (templates/post_*.glsl), compiled at build time.
 struct PostShaders {
   const std::vector<uint32_t>& vertexSpirv;
-  const std::vector<uint32_t>& fragmentSpirv;
+  const std::vector<uint32_t>& fragmentSpirv;       // samples the stored HDR texture
+  const std::vector<uint32_t>& fragmentFetchSpirv;  // reads its own pixel through a subpassInput
   const std::string& vertexGlslEs;
   const std::string& fragmentGlslEs;
 };
