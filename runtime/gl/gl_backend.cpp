@@ -25,6 +25,9 @@ class GlBackend final : public RenderBackend {
   ~GlBackend() override;
 
   const char* name() const override { return "gl"; }
+  // GL runs the separate path (post samples the stored HDR texture) and always reads HDR back.
+  PostPath postPath() const override { return PostPath::Separate; }
+  bool readsBackHdr() const override { return true; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/render_path.h"
 #include "facet/shader_abi.h"
 
 namespace facet::runtime {
@@ -91,13 +92,18 @@ struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
-  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F target)
+  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F
+                             // target); empty when the backend does not read HDR back
 };
 
 class RenderBackend {
  public:
   virtual ~RenderBackend() = default;
   virtual const char* name() const = 0;
+  // The render path render() runs (Merged or Separate, never Auto), and the frame graph it was
+  // derived from: buildForwardPostGraph(w, h, postPath(), readsBackHdr()).
+  virtual PostPath postPath() const = 0;
+  virtual bool readsBackHdr() const = 0;
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -108,6 +114,13 @@ class RenderBackend {
 
 struct VulkanOptions {
   bool validation = false;  // enable VK_LAYER_KHRONOS_validation and collect its errors
+  // Auto picks Merged: input attachments are core Vulkan 1.0, so every device supports it.
+  // Separate forces the fallback (post samples the stored HDR texture).
+  PostPath postPath = PostPath::Auto;
+  // Copy HDR back into FrameResult::hdr (tests, eval, debugging). This forces HDR to be stored
+  // (the frame graph sees it read after the frame), so it is not transient even when merged;
+  // false gives the mobile path, where HDR and depth never leave tile memory.
+  bool readBackHdr = true;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
