@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/frame_graph.h"
 #include "facet/render_backend.h"
+#include "facet/render_path.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/scene_frame.h"
 
@@ -19,13 +21,22 @@ int fail(const std::string& message) {
 int main(int argc, char** argv) {
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
   std::string scenePath, packageDir = ".", outDir = ".", backendName = "both", tier;
-  bool validation = false;
+  bool validation = false, stats = false, keepHdr = false;
+  std::string postPathName = "auto";
+  uint32_t width = 0, height = 0;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
   app.add_option("--out", outDir, "folder for the PNG files");
   app.add_option("--backend", backendName, "vulkan | gl | both")->check(CLI::IsMember({"vulkan", "gl", "both"}));
   app.add_option("--tier", tier, "render at this tier instead of the scene's (reference, high, mid, low)");
   app.add_flag("--validation", validation, "enable Vulkan validation layers; any validation error fails the run");
+  app.add_option("--post-path", postPathName,
+                 "auto | merged (post pass reads its own pixel in the same render pass) | separate (post samples the stored HDR)")
+      ->check(CLI::IsMember({"auto", "merged", "separate"}));
+  app.add_flag("--keep-hdr", keepHdr, "Vulkan: also store HDR and read it back (debugging; HDR is then not transient)");
+  app.add_option("--width", width, "render at this width instead of the scene's")->check(CLI::Range(1, 16384));
+  app.add_option("--height", height, "render at this height instead of the scene's")->check(CLI::Range(1, 16384));
+  app.add_flag("--stats", stats, "print the frame graph: render passes, load/store ops, bytes loaded/stored per frame");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -42,6 +53,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (!tier.empty()) scene->tier = tier;
+  if (width) scene->width = width;
+  if (height) scene->height = height;
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -54,9 +67,20 @@ int main(int argc, char** argv) {
   std::vector<std::string> backends;
   if (backendName == "both" || backendName == "vulkan") backends.push_back("vulkan");
   if (backendName == "both" || backendName == "gl") backends.push_back("gl");
+  const facet::runtime::PostPath postPath = postPathName == "merged"     ? facet::runtime::PostPath::Merged
+                                             : postPathName == "separate" ? facet::runtime::PostPath::Separate
+                                                                          : facet::runtime::PostPath::Auto;
   for (const std::string& name : backends) {
-    std::unique_ptr<facet::runtime::RenderBackend> backend =
-        name == "vulkan" ? facet::runtime::createVulkanBackend({validation}, &error) : facet::runtime::createGlBackend(&error);
+    std::unique_ptr<facet::runtime::RenderBackend> backend;
+    if (name == "vulkan") {
+      facet::runtime::VulkanOptions options;
+      options.validation = validation;
+      options.postPath = postPath;
+      options.readBackHdr = keepHdr;
+      backend = facet::runtime::createVulkanBackend(options, &error);
+    } else {
+      backend = facet::runtime::createGlBackend(&error);
+    }
     if (!backend) return fail(name + ": " + error);
     facet::runtime::FrameResult result;
     if (!backend->render(prepared->frame(), &result, &error)) return fail(name + ": " + error);
@@ -66,6 +90,14 @@ int main(int argc, char** argv) {
     if (!facet::runtime::writePng(path, result.width, result.height, result.ldr, &error)) return fail(error);
     std::printf("%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(), result.width, result.height,
                 prepared->variantKey().c_str(), prepared->exposure());
+    if (stats) {
+      const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
+          result.width, result.height, backend->postPath(), backend->readsBackHdr());
+      facet::runtime::fg::CompiledGraph compiled;
+      if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
+      std::printf("%s: %s path, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
+                  result.width, result.height, facet::runtime::fg::describe(graph.graph, compiled).c_str());
+    }
   }
   return 0;
 }
