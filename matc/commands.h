@@ -27,6 +27,13 @@ struct InfoArgs {
 };
 int infoCommand(const InfoArgs& args);
 
+struct PostArgs {
+  std::string cpp;         // generated C++ source for the runtime
+  std::string emitSource;  // folder for every generated shader source, or ""
+  bool acesTonemap = true;
+};
+int postCommand(const PostArgs& args);
+
 // Prints "matc: error: <message>" to stderr.
 void printError(const std::string& message);
 

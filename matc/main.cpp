@@ -33,6 +33,12 @@ int main(int argc, char** argv) {
   infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
       ->check(CLI::IsMember({"glsl_es_300", "spirv", "msl"}));
 
+  facet::matc::PostArgs post;
+  CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
+  postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
+  postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
+  postCmd->add_flag("!--no-tonemap", post.acesTonemap, "leave out the ACES tone curve (HDR clamped to [0, 1])");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -45,5 +51,6 @@ int main(int argc, char** argv) {
   }
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
+  if (postCmd->parsed()) return facet::matc::postCommand(post);
   return 2;
 }

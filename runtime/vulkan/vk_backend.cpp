@@ -205,6 +205,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   postDesc.layout = postLayout_;
   postDesc.renderPass = merged ? forwardPass_ : postPass_;
   postDesc.subpass = merged ? 1 : 0;
+  postDesc.colourSlots = merged ? 2 : 1;
   postDesc.what = "post pass shaders";
   if (!createGraphicsPipeline(device, postDesc, &postPipeline_, error)) return false;
 

@@ -83,7 +83,11 @@ bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps de
   const VkAttachmentReference hdrColour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference hdrInput{0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  const VkAttachmentReference ldrColour{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  // Colour slot 1, not 0: the post shader writes LDR at location 1 in every API, because Metal
+  // and GLES framebuffer fetch read HDR as colour 0 of the same pass (post_tonemap.frag.glsl).
+  const std::array<VkAttachmentReference, 2> postColour{
+      VkAttachmentReference{VK_ATTACHMENT_UNUSED, VK_IMAGE_LAYOUT_UNDEFINED},
+      VkAttachmentReference{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
   std::array<VkSubpassDescription, 2> subpasses{};
   subpasses[0].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpasses[0].colorAttachmentCount = 1;
@@ -92,8 +96,8 @@ bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps de
   subpasses[1].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpasses[1].inputAttachmentCount = 1;
   subpasses[1].pInputAttachments = &hdrInput;
-  subpasses[1].colorAttachmentCount = 1;
-  subpasses[1].pColorAttachments = &ldrColour;
+  subpasses[1].colorAttachmentCount = static_cast<uint32_t>(postColour.size());
+  subpasses[1].pColorAttachments = postColour.data();
 
   std::array<VkSubpassDependency, 4> dependencies{};
   // Before subpass 0: the previous frame's readback copy of HDR and its depth writes must finish
@@ -418,10 +422,13 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
     blendAttachment.dstAlphaBlendFactor = dst;
     blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   }
+  // The merged post subpass has colour slots {unused, LDR}: one state per slot, the same for both.
+  const std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{blendAttachment,
+                                                                            blendAttachment};
   VkPipelineColorBlendStateCreateInfo blend{};
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blendAttachment;
+  blend.attachmentCount = desc.colourSlots;
+  blend.pAttachments = blendAttachments.data();
 
   const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT,
                                                     VK_DYNAMIC_STATE_SCISSOR};

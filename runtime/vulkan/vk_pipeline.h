@@ -33,7 +33,8 @@ bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps d
 bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
                           std::string* error);
 // Merged path: one render pass, attachments 0 HDR, 1 depth, 2 LDR. Subpass 0 is the forward
-// pass (colour HDR, depth); subpass 1 the post pass (input attachment HDR, colour LDR), joined by
+// pass (colour HDR, depth); subpass 1 the post pass (input attachment HDR; colour slots
+// {unused, LDR}, so LDR is location 1 as in the GLES and Metal fetch forms), joined by
 // a BY_REGION dependency so a tiler keeps HDR in tile memory. HDR ends in TRANSFER_SRC_OPTIMAL
 // when it is stored for readback, LDR always does.
 bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
@@ -68,6 +69,7 @@ struct PipelineDesc {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   uint32_t subpass = 0;
+  uint32_t colourSlots = 1;  // colour attachments of that subpass (merged post subpass: 2)
   const char* what = "";  // names the shaders in error messages
 };
 

@@ -127,13 +127,16 @@ struct VulkanOptions {
 std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options, std::string* error);
 std::unique_ptr<RenderBackend> createGlBackend(std::string* error);
 
-// Shaders of the post pass (templates/post_*.glsl), compiled at build time.
+// Shaders of the post pass, compiled at build time by the compiler's post domain (`matc post`,
+// compiler/include/facet/compiler/post.h) into a generated source: the runtime does not link
+// the compiler.
 struct PostShaders {
   const std::vector<uint32_t>& vertexSpirv;
   const std::vector<uint32_t>& fragmentSpirv;       // samples the stored HDR texture
   const std::vector<uint32_t>& fragmentFetchSpirv;  // reads its own pixel through a subpassInput
   const std::string& vertexGlslEs;
-  const std::string& fragmentGlslEs;
+  const std::string& fragmentGlslEs;       // samples the stored HDR texture
+  const std::string& fragmentFetchGlslEs;  // GL_EXT_shader_framebuffer_fetch: HDR inout at 0, LDR at 1
 };
 const PostShaders& postShaders();
 
