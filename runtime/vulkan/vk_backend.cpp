@@ -65,6 +65,7 @@ class VulkanBackend final : public RenderBackend {
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
+  void readTimes(FrameResult* result) const;
 
   // Declared first so it is destroyed last: the destructor body below destroys everything
   // created from the device before ~Context destroys the device and the instance.
@@ -80,6 +81,7 @@ class VulkanBackend final : public RenderBackend {
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;  // null when the queue has no timestamps
 
   VkRenderPass forwardPass_ = VK_NULL_HANDLE;  // merged path: the one render pass
   VkRenderPass postPass_ = VK_NULL_HANDLE;     // separate path only
@@ -137,6 +139,7 @@ VulkanBackend::~VulkanBackend() {
   if (textureSetLayout_) vkDestroyDescriptorSetLayout(device, textureSetLayout_, nullptr);
   if (postPass_) vkDestroyRenderPass(device, postPass_, nullptr);
   if (forwardPass_) vkDestroyRenderPass(device, forwardPass_, nullptr);
+  if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (fence_) vkDestroyFence(device, fence_, nullptr);
   // Destroying the pool frees its command buffer.
   if (commandPool_) vkDestroyCommandPool(device, commandPool_, nullptr);
@@ -196,6 +199,17 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
   if (!textures_.init(&ctx_, error)) return false;
+
+  if (ctx_.timestampValidBits > 0) {
+    VkQueryPoolCreateInfo queryInfo{};
+    queryInfo.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    queryInfo.queryCount = kTimestampCount;
+    if (!check(vkCreateQueryPool(device, &queryInfo, nullptr, &timestamps_), "vkCreateQueryPool", error)) {
+      timestamps_ = VK_NULL_HANDLE;
+      return false;
+    }
+  }
 
   const PostShaders& post = postShaders();
   PipelineDesc postDesc;
@@ -264,7 +278,7 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
   try {
     std::vector<DrawSlot> slots;
     const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_, forwardPass_, postPass_,
-                               forwardLayout_, postLayout_, postPipeline_, postSet_};
+                               forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
         !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
@@ -277,6 +291,7 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
       return false;
     }
     readBack(result);
+    readTimes(result);
     return true;
   } catch (const std::exception& e) {
     *error = std::string("Vulkan backend: ") + e.what();
@@ -486,6 +501,23 @@ void VulkanBackend::readBack(FrameResult* result) const {
   }
   result->ldr.resize(values);
   std::memcpy(result->ldr.data(), targets_.ldrReadback.mapped, values);
+}
+
+// Timestamps are in ticks of timestampPeriod nanoseconds, valid in their low timestampValidBits.
+void VulkanBackend::readTimes(FrameResult* result) const {
+  result->gpuTimes.clear();
+  if (!timestamps_) return;
+  uint64_t ticks[kTimestampCount] = {};
+  if (vkGetQueryPoolResults(ctx_.device, timestamps_, 0, kTimestampCount, sizeof ticks, ticks,
+                            sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
+    return;  // not available: the frame is still valid, only untimed
+  }
+  const uint64_t mask =
+      ctx_.timestampValidBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << ctx_.timestampValidBits) - 1;
+  const double msPerTick = double(ctx_.properties.limits.timestampPeriod) * 1e-6;
+  const auto span = [&](int from, int to) { return double((ticks[to] - ticks[from]) & mask) * msPerTick; };
+  result->gpuTimes.push_back({"forward", span(0, 1)});
+  result->gpuTimes.push_back({"post", span(1, 2)});
 }
 
 }  // namespace

@@ -22,6 +22,10 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
   const VkRect2D scissor{{0, 0}, {targets.width, targets.height}};
 
   // Forward pass.
+  if (objects.timestamps) {
+    vkCmdResetQueryPool(cmd, objects.timestamps, 0, kTimestampCount);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, objects.timestamps, 0);
+  }
   // Indexed by attachment; LDR's (merged path) is unused: its loadOp is DONT_CARE.
   VkClearValue clears[3]{};
   for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = clearColor[c];
@@ -55,10 +59,19 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     }
   }
   // Post pass: one full-screen triangle reading the HDR image (its own pixel when merged).
+  // BOTTOM_OF_PIPE: written once everything recorded before it has finished. Inside the merged
+  // render pass this splits the subpasses on an immediate-mode GPU like lavapipe; on a tiler the
+  // two subpasses interleave per tile and only the total is meaningful.
   if (objects.merged) {
+    if (objects.timestamps) {
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
+    }
     vkCmdNextSubpass(cmd, VK_SUBPASS_CONTENTS_INLINE);
   } else {
     vkCmdEndRenderPass(cmd);
+    if (objects.timestamps) {
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
+    }
     passInfo.renderPass = objects.postPass;
     passInfo.framebuffer = targets.postFramebuffer;
     passInfo.clearValueCount = 0;
@@ -72,6 +85,9 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
                           &objects.postSet, 0, nullptr);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
+  if (objects.timestamps) {
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 2);
+  }
 
   // Readback. The render pass left LDR (and, merged, a stored HDR) in TRANSFER_SRC_OPTIMAL;
   // on the separate path HDR still needs its transition, after the post pass's sampling of it.

@@ -21,7 +21,11 @@ struct FrameObjects {
   VkPipelineLayout postLayout = VK_NULL_HANDLE;
   VkPipeline postPipeline = VK_NULL_HANDLE;
   VkDescriptorSet postSet = VK_NULL_HANDLE;
+  // kTimestampCount timestamps: frame start, forward pass done, post pass done. Null: not timed.
+  VkQueryPool timestamps = VK_NULL_HANDLE;
 };
+
+inline constexpr uint32_t kTimestampCount = 3;
 
 // Records into cmd (reset first): the forward pass (clear to clearColor and depth 1, then each
 // slot), the post pass (a second render pass, or the next subpass when merged), and copies of

@@ -256,6 +256,7 @@ bool Context::pickPhysicalDevice(std::string* error) {
       physicalDevice = candidate;
       properties = props;
       queueFamily = family;
+      timestampValidBits = families[family].timestampValidBits;
     }
   }
   if (!physicalDevice) {

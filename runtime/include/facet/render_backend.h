@@ -88,12 +88,19 @@ struct FrameDesc {
   std::vector<DrawItem> draws;
 };
 
+// GPU time of one pass of a frame, from the API's timer (Vulkan timestamps, GL timer queries).
+struct PassTime {
+  std::string pass;  // "forward", "post"
+  double milliseconds = 0;
+};
+
 struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
   std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F
                              // target); empty when the backend does not read HDR back
+  std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
 class RenderBackend {
@@ -123,9 +130,26 @@ struct VulkanOptions {
   bool readBackHdr = true;
 };
 
+enum class GlContextKind {
+  Auto,     // EGL GLES when available, else OSMesa
+  EglGles,  // a real OpenGL ES 3.2 context, EGL surfaceless (Mesa)
+  OsMesa,   // an OpenGL core context on OSMesa running the "#version 300 es" shaders
+};
+
+struct GlOptions {
+  GlContextKind context = GlContextKind::Auto;
+  // Auto picks Merged when the context offers GL_EXT_shader_framebuffer_fetch: one framebuffer,
+  // HDR colour 0 and LDR colour 1, the post pass reading HDR by framebuffer fetch, then HDR and
+  // depth invalidated. Separate: post samples the HDR texture in a second framebuffer.
+  PostPath postPath = PostPath::Auto;
+  // As VulkanOptions::readBackHdr: keeps HDR (not invalidated) and reads it into FrameResult::hdr.
+  bool readBackHdr = true;
+};
+
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
 std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options, std::string* error);
-std::unique_ptr<RenderBackend> createGlBackend(std::string* error);
+std::unique_ptr<RenderBackend> createGlBackend(const GlOptions& options, std::string* error);
+std::unique_ptr<RenderBackend> createGlBackend(std::string* error);  // default GlOptions
 
 // Shaders of the post pass, compiled at build time by the compiler's post domain (`matc post`,
 // compiler/include/facet/compiler/post.h) into a generated source: the runtime does not link
