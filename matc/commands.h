@@ -40,6 +40,12 @@ struct LintArgs {
   bool werror = false;              // warnings fail the run
 };
 int lintCommand(const LintArgs& args);
+struct PostArgs {
+  std::string cpp;         // generated C++ source for the runtime
+  std::string emitSource;  // folder for every generated shader source, or ""
+  bool acesTonemap = true;
+};
+int postCommand(const PostArgs& args);
 
 // Prints "matc: error: <message>" to stderr.
 void printError(const std::string& message);

@@ -51,6 +51,11 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--format", lint.format, "text | json | sarif")->check(CLI::IsMember({"text", "json", "sarif"}));
   lintCmd->add_option("-o,--output", lint.output, "write the report to this file instead of standard output");
   lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");
+  facet::matc::PostArgs post;
+  CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
+  postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
+  postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
+  postCmd->add_flag("!--no-tonemap", post.acesTonemap, "leave out the ACES tone curve (HDR clamped to [0, 1])");
 
   try {
     app.parse(argc, argv);
@@ -65,5 +70,6 @@ int main(int argc, char** argv) {
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
   if (lintCmd->parsed()) return facet::matc::lintCommand(lint);
+  if (postCmd->parsed()) return facet::matc::postCommand(post);
   return 2;
 }

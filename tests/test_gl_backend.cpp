@@ -322,7 +322,7 @@ TEST(GlBackend, ShortMaterialParamsAreRejected) {
 TEST(GlBackend, DebugOutputRecordsErrors) {
   // Guards NoDebugOutputErrors against passing because nothing is listening.
   std::string error;
-  std::unique_ptr<gl::Context> context = gl::Context::create(&error);
+  std::unique_ptr<gl::Context> context = gl::Context::create(gl::ContextKind::Auto, &error);
   ASSERT_NE(context, nullptr) << error;
   ASSERT_TRUE(context->makeCurrent(&error)) << error;
   ASSERT_TRUE(context->debugOutputEnabled());

@@ -64,9 +64,9 @@ std::string writePackagesFromTexts(const std::string& scratchName, const std::ve
   return dir;
 }
 
-std::string writeExamplePackages(const std::string& scratchName) {
+std::string writeExamplePackages(const std::string& scratchName, const compiler::BuildOptions& options) {
   std::string dir = scratchDir(scratchName);
-  for (const std::string& path : exampleMaterials()) writePackage(dir, buildFile(path));
+  for (const std::string& path : exampleMaterials()) writePackage(dir, buildFile(path, options));
   return dir;
 }
 

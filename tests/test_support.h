@@ -38,7 +38,7 @@ std::string writePackagesFromTexts(const std::string& scratchName, const std::ve
 double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
 
 // The same for every examples/materials/*.mat.
-std::string writeExamplePackages(const std::string& scratchName);
+std::string writeExamplePackages(const std::string& scratchName, const compiler::BuildOptions& options = {});
 
 // Parses and checks material text; returns the diagnostics as formatted text.
 std::string diagnosticsFor(const std::string& text, const std::string& path = "test.mat");

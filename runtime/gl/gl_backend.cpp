@@ -1,7 +1,10 @@
-// RenderBackend on OpenGL: forward pass into RGBA16F + depth, post pass into RGBA8, readback.
+// RenderBackend on OpenGL ES: forward pass into RGBA16F + depth, post pass into RGBA8, readback.
 //
-// Runs "#version 300 es" shaders on Mesa's OSMesa core context (ARB_ES3_compatibility), so the
-// GLES flavour of every material is exercised exactly as a phone would receive it.
+// Runs the "#version 300 es" shaders on a real OpenGL ES 3.2 context (EGL surfaceless) or, where
+// EGL is missing, on Mesa's OSMesa core context (ARB_ES3_compatibility), so the GLES flavour of
+// every material is exercised as a phone would receive it. Render paths (render_path.h): merged
+// (one framebuffer, the post pass reads HDR by GL_EXT_shader_framebuffer_fetch, then HDR and
+// depth are invalidated) or separate (post samples the HDR texture).
 #include <algorithm>
 #include <exception>
 #include <optional>
@@ -21,10 +24,12 @@ using gl::checkGlError;
 
 class GlBackend final : public RenderBackend {
  public:
-  static std::unique_ptr<GlBackend> create(std::string* error);
+  static std::unique_ptr<GlBackend> create(const GlOptions& options, std::string* error);
   ~GlBackend() override;
 
   const char* name() const override { return "gl"; }
+  PostPath postPath() const override { return path_; }
+  bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
 
@@ -37,16 +42,19 @@ class GlBackend final : public RenderBackend {
   };
 
   GlBackend() = default;
-  bool initialise(std::string* error);
+  bool initialise(const GlOptions& options, std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
   bool drawItem(const FrameDesc& frame, const DrawItem& item,
                 std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error);
   bool postPass(std::string* error);
+  bool mergedPostPass(std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
   std::unique_ptr<gl::Context> context_;
+  PostPath path_ = PostPath::Separate;
+  bool readBackHdr_ = true;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;
@@ -56,18 +64,33 @@ class GlBackend final : public RenderBackend {
   gl::Buffer materialUniforms_;
   gl::RenderTargets targets_;
   gl::TextureCache textures_;  // kept across frames; see gl_textures.h for the reuse rule
+  // GL_TIME_ELAPSED queries of the forward and post passes; absent when the context has no
+  // timer queries (GL 3.3 core has them; GLES needs GL_EXT_disjoint_timer_query).
+  bool timed_ = false;
+  gl::Query forwardTimer_, postTimer_;
   std::unordered_map<const ShaderProgram*, CachedProgram> programs_;
 };
 
-std::unique_ptr<GlBackend> GlBackend::create(std::string* error) {
+std::unique_ptr<GlBackend> GlBackend::create(const GlOptions& options, std::string* error) {
   std::unique_ptr<GlBackend> backend(new GlBackend());
-  if (!backend->initialise(error)) return nullptr;
+  if (!backend->initialise(options, error)) return nullptr;
   return backend;
 }
 
-bool GlBackend::initialise(std::string* error) {
-  context_ = gl::Context::create(error);
+bool GlBackend::initialise(const GlOptions& options, std::string* error) {
+  const gl::ContextKind kind = options.context == GlContextKind::EglGles ? gl::ContextKind::EglGles
+                               : options.context == GlContextKind::OsMesa ? gl::ContextKind::OsMesa
+                                                                          : gl::ContextKind::Auto;
+  context_ = gl::Context::create(kind, error);
   if (!context_) return false;
+  readBackHdr_ = options.readBackHdr;
+  const bool canFetch = context_->hasExtension("GL_EXT_shader_framebuffer_fetch");
+  if (options.postPath == PostPath::Merged && !canFetch) {
+    if (error) *error = std::string("GL backend: the merged path needs GL_EXT_shader_framebuffer_fetch, which this ") +
+                        context_->kindName() + " context lacks";
+    return false;
+  }
+  path_ = options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged;
 
   GLint maxTexture = 0;
   GLint maxRenderbuffer = 0;
@@ -80,22 +103,34 @@ bool GlBackend::initialise(std::string* error) {
   // first frame) if the build-time shaders do not compile here.
   const PostShaders& shaders = postShaders();
   std::string buildError;
-  std::optional<gl::LinkedProgram> post = gl::buildProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, &buildError);
+  const bool merged = path_ == PostPath::Merged;
+  std::optional<gl::LinkedProgram> post = gl::buildProgram(
+      shaders.vertexGlslEs, merged ? shaders.fragmentFetchGlslEs : shaders.fragmentGlslEs, &buildError);
   if (!post) {
     if (error) *error = "GL backend: post-pass shaders: " + buildError;
     return false;
   }
   post_ = std::move(*post);
-  const GLint hdrLocation = glGetUniformLocation(post_.program.id(), "hdrColor");
-  if (hdrLocation < 0) {
-    if (error) *error = "GL backend: post-pass fragment shader has no sampler uniform 'hdrColor'";
-    return false;
+  if (!merged) {
+    const GLint hdrLocation = glGetUniformLocation(post_.program.id(), "hdrColor");
+    if (hdrLocation < 0) {
+      if (error) *error = "GL backend: post-pass fragment shader has no sampler uniform 'hdrColor'";
+      return false;
+    }
+    // Sampler uniforms are program state, so the unit is set once here.
+    glUseProgram(post_.program.id());
+    glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
+    glUseProgram(0);
   }
-  // Sampler uniforms are program state, so the unit is set once here.
-  glUseProgram(post_.program.id());
-  glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
-  glUseProgram(0);
 
+  // GLES timer queries (GL_EXT_disjoint_timer_query) are not used: on Mesa 22.3's llvmpipe the
+  // forward pass's elapsed time comes back as a huge value (~2.5e6 ms, measured with facet-view
+  // --stats) while the same code on OSMesa's desktop context gives plausible times.
+  timed_ = !context_->isEs() && context_->queryResult64() != nullptr;
+  if (timed_) {
+    forwardTimer_ = gl::Query::generate();
+    postTimer_ = gl::Query::generate();
+  }
   emptyVertexArray_ = gl::VertexArray::generate();
   frameUniforms_ = gl::Buffer::generate();
   objectUniforms_ = gl::Buffer::generate();
@@ -132,12 +167,42 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     if (!checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), &message)) return false;
     if (!prepareTargets(frame.width, frame.height, &message)) return false;
     if (!textures_.prepare(frame, &message)) return false;
-    if (!forwardPass(frame, &message)) return false;
-    if (!postPass(&message)) return false;
-    gl::readRgbaFloat(targets_.hdrFramebuffer.id(), frame.width, frame.height, &result->hdr);
-    gl::readRgba8(targets_.ldrFramebuffer.id(), frame.width, frame.height, &result->ldr);
+    if (!forwardPass(frame, &message)) {
+      if (timed_) glEndQuery(GL_TIME_ELAPSED);
+      return false;
+    }
+    const bool merged = path_ == PostPath::Merged;
+    result->hdr.clear();
+    // Merged: HDR is read back before the post pass, because Mesa 22.3's llvmpipe writes the
+    // framebuffer-fetch `inout` colour back as zero (measured on these machines, GLES 3.2 and
+    // OSMesa alike, assigned or not). Only this debug readback sees HDR after the pass; the
+    // mobile path invalidates it.
+    const auto readHdr = [&] {
+      gl::readRgbaFloat(targets_.hdrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->hdr);
+    };
+    if (timed_) glEndQuery(GL_TIME_ELAPSED);
+    if (readBackHdr_ && merged) readHdr();
+    if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
+    const bool posted = merged ? mergedPostPass(&message) : postPass(&message);
+    if (timed_) glEndQuery(GL_TIME_ELAPSED);
+    if (!posted) return false;
+    if (readBackHdr_ && !merged) readHdr();
+    if (merged) {
+      gl::readRgba8(targets_.mergedFramebuffer.id(), GL_COLOR_ATTACHMENT1, frame.width, frame.height, &result->ldr);
+    } else {
+      gl::readRgba8(targets_.ldrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
+    }
     result->width = frame.width;
     result->height = frame.height;
+    result->gpuTimes.clear();
+    if (timed_) {
+      // Nanoseconds, waited for (GL_QUERY_RESULT). 64 bits: the 32-bit getter saturates at 4.3 s.
+      GLuint64 forwardNs = 0, postNs = 0;
+      context_->queryResult64()(forwardTimer_.id(), GL_QUERY_RESULT, &forwardNs);
+      context_->queryResult64()(postTimer_.id(), GL_QUERY_RESULT, &postNs);
+      result->gpuTimes.push_back({"forward", double(forwardNs) * 1e-6});
+      result->gpuTimes.push_back({"post", double(postNs) * 1e-6});
+    }
     return checkGlError("readback", &message);
   };
   // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
@@ -153,11 +218,16 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
-  return gl::createRenderTargets(width, height, &targets_, error);
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, &targets_, error);
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer.id());
+  const bool merged = path_ == PostPath::Merged;
+  glBindFramebuffer(GL_FRAMEBUFFER, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id());
+  // Merged: the forward pass writes colour 0 (HDR) only; LDR (colour 1) is the post pass's.
+  const GLenum forwardBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  glDrawBuffers(merged ? 2 : 1, forwardBuffers);
+  if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
   glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
   glDisable(GL_BLEND);
   glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
@@ -188,10 +258,10 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   glBindVertexArray(0);
   glUseProgram(0);
 
-  // Depth is dead once the forward pass ends. Invalidating it here, before the framebuffer
-  // switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is never
-  // stored). Colour is kept: the post pass samples it and tests read it back.
-  if (context_->canInvalidateFramebuffer()) {
+  // Separate path: depth is dead once the forward pass ends. Invalidating it here, before the
+  // framebuffer switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is
+  // never stored). Colour is kept: the post pass samples it. (Merged: the post pass invalidates.)
+  if (!merged && context_->canInvalidateFramebuffer()) {
     const GLenum depthAttachment = GL_DEPTH_ATTACHMENT;
     glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &depthAttachment);
   }
@@ -283,9 +353,31 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   return &cached;
 }
 
+// Merged path: the post pass draws into the same framebuffer, reading each pixel's HDR value by
+// framebuffer fetch (colour 0, declared inout) and writing LDR to colour 1; then HDR (unless read
+// back) and depth are invalidated, so a tiler never writes them to memory.
+bool GlBackend::mergedPostPass(std::string* error) {
+  const GLenum postBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, postBuffers);
+  glDisable(GL_DEPTH_TEST);  // the triangle covers every pixel
+  glDisable(GL_BLEND);       // the last forward draw may have been blended
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+  glUseProgram(post_.program.id());
+  glBindVertexArray(emptyVertexArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
+  glBindVertexArray(0);
+  glUseProgram(0);
+  if (context_->canInvalidateFramebuffer()) {
+    const GLenum dead[2] = {GL_DEPTH_ATTACHMENT, GL_COLOR_ATTACHMENT0};
+    glInvalidateFramebuffer(GL_FRAMEBUFFER, readBackHdr_ ? 1 : 2, dead);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return checkGlError("post pass (framebuffer fetch)", error);
+}
+
 bool GlBackend::postPass(std::string* error) {
-  // A plain second pass that samples the HDR target. (Framebuffer fetch, which keeps HDR in
-  // tile memory, is a later step.)
+  // Separate path: a second pass that samples the stored HDR target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer.id());
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
   glDisable(GL_DEPTH_TEST);  // the LDR target has no depth; the triangle covers every pixel
@@ -307,10 +399,12 @@ bool GlBackend::postPass(std::string* error) {
 
 }  // namespace
 
-std::unique_ptr<RenderBackend> createGlBackend(std::string* error) {
+std::unique_ptr<RenderBackend> createGlBackend(std::string* error) { return createGlBackend(GlOptions{}, error); }
+
+std::unique_ptr<RenderBackend> createGlBackend(const GlOptions& options, std::string* error) {
   // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
   try {
-    return GlBackend::create(error);
+    return GlBackend::create(options, error);
   } catch (const std::exception& e) {
     if (error) *error = std::string("GL backend: ") + e.what();
     return nullptr;

@@ -2,11 +2,19 @@
 
 #include <algorithm>
 
+#if defined(FACET_HAVE_EGL)
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#endif
+
 namespace facet::runtime::gl {
 namespace {
 
 // A shader that loops on an error would otherwise grow the list without bound.
 constexpr size_t kMaxDebugErrors = 256;
+
+// The context this code made current last on this thread (see Context::makeCurrent).
+thread_local const Context* currentContext = nullptr;
 
 OSMesaContext createOsMesaContext(int major, int minor) {
   const int attributes[] = {
@@ -35,21 +43,75 @@ const char* debugSourceName(GLenum source) {
 
 }  // namespace
 
-std::unique_ptr<Context> Context::create(std::string* error) {
+std::unique_ptr<Context> Context::create(ContextKind kind, std::string* error) {
+  std::string eglError;
+  if (kind != ContextKind::OsMesa) {
+    std::unique_ptr<Context> context(new Context());
+    if (context->initialiseEgl(&eglError)) return context;
+    if (kind == ContextKind::EglGles) {
+      if (error) *error = eglError;
+      return nullptr;
+    }
+  }
   std::unique_ptr<Context> context(new Context());
-  if (!context->initialise(error)) return nullptr;
+  if (!context->initialiseOsMesa(error)) {
+    if (error && !eglError.empty()) *error += " (and EGL: " + eglError + ")";
+    return nullptr;
+  }
   return context;
 }
 
-bool Context::initialise(std::string* error) {
+bool Context::initialiseOsMesa(std::string* error) {
   context_ = createOsMesaContext(4, 5);
   if (!context_) context_ = createOsMesaContext(3, 3);
   if (!context_) {
     if (error) *error = "OSMesa refused to create a GL 4.5 or 3.3 core context";
     return false;
   }
-  if (!makeCurrent(error)) return false;
+  return makeCurrent(error) && queryCapabilities(error);
+}
 
+bool Context::initialiseEgl(std::string* error) {
+#if defined(FACET_HAVE_EGL)
+  auto getPlatformDisplay =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (!getPlatformDisplay) {
+    *error = "EGL has no eglGetPlatformDisplayEXT";
+    return false;
+  }
+  EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
+    *error = "EGL surfaceless platform (EGL_MESA_platform_surfaceless) is unavailable";
+    return false;
+  }
+  eglDisplay_ = display;
+  if (!eglBindAPI(EGL_OPENGL_ES_API)) {
+    *error = "EGL cannot bind the OpenGL ES API";
+    return false;
+  }
+  // Surfaceless: no config is needed (EGL_KHR_no_config_context), the backend renders into its
+  // own framebuffer objects.
+  EGLContext context = EGL_NO_CONTEXT;
+  for (EGLint wantMinor : {2, 0}) {
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, wantMinor, EGL_NONE};
+    context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (context != EGL_NO_CONTEXT) break;
+  }
+  if (context == EGL_NO_CONTEXT) {
+    *error = "EGL refused an OpenGL ES 3.2 or 3.0 context";
+    return false;
+  }
+  eglContext_ = context;
+  es_ = true;
+  return makeCurrent(error) && queryCapabilities(error);
+#else
+  *error = "built without EGL";
+  return false;
+#endif
+}
+
+bool Context::queryCapabilities(std::string* error) {
   glGetIntegerv(GL_MAJOR_VERSION, &major_);
   glGetIntegerv(GL_MINOR_VERSION, &minor_);
   GLint count = 0;
@@ -60,7 +122,7 @@ bool Context::initialise(std::string* error) {
   }
 
   // "#version 300 es" shaders on a desktop context need ES 3.0 compatibility.
-  if (!hasExtension("GL_ARB_ES3_compatibility")) {
+  if (!es_ && !hasExtension("GL_ARB_ES3_compatibility")) {
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     if (error) {
       *error = "GL context (" + std::string(renderer ? renderer : "unknown renderer") + ", " +
@@ -69,25 +131,65 @@ bool Context::initialise(std::string* error) {
     }
     return false;
   }
+  // glInvalidateFramebuffer: core in ES 3.0 and GL 4.3. Debug output: core in ES 3.2, GL 4.3.
   const bool atLeast43 = major_ > 4 || (major_ == 4 && minor_ >= 3);
-  canInvalidate_ = atLeast43 || hasExtension("GL_ARB_invalidate_subdata");
-  if (atLeast43 || hasExtension("GL_KHR_debug")) enableDebugOutput();
+  const bool atLeastEs32 = es_ && (major_ > 3 || (major_ == 3 && minor_ >= 2));
+  canInvalidate_ = es_ || atLeast43 || hasExtension("GL_ARB_invalidate_subdata");
+  if (atLeast43 || atLeastEs32 || hasExtension("GL_KHR_debug")) enableDebugOutput();
+#if defined(FACET_HAVE_EGL)
+  if (es_) {
+    queryResult64_ = reinterpret_cast<QueryResult64>(eglGetProcAddress("glGetQueryObjectui64vEXT"));
+  }
+#endif
+  if (!es_) {
+    queryResult64_ = reinterpret_cast<QueryResult64>(OSMesaGetProcAddress("glGetQueryObjectui64v"));
+  }
   return checkGlError("context creation", error);
 }
 
 Context::~Context() {
-  if (!context_) return;
   // Unbind first so the thread is not left pointing at a destroyed context.
-  if (OSMesaGetCurrentContext() == context_) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  const bool current = currentContext == this;
+  if (current) currentContext = nullptr;
+#if defined(FACET_HAVE_EGL)
+  if (eglContext_) {
+    auto display = static_cast<EGLDisplay>(eglDisplay_);
+    if (current) eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display, static_cast<EGLContext>(eglContext_));
+  }
+  // The display is shared by every context of the process (eglGetPlatformDisplay returns the
+  // same one): terminating it here would pull it from under other backends.
+#endif
+  if (!context_) return;
+  if (current) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
   OSMesaDestroyContext(context_);
 }
 
+// One thread may hold OSMesa and EGL contexts at once (several backends), and both drive the same
+// glapi dispatch, so neither API's own idea of "current" can be trusted after the other switched
+// (OSMesaGetCurrentContext even returns EGL's context). The context made current last by this
+// code is tracked here instead; switching always goes through the target API.
 bool Context::makeCurrent(std::string* error) {
-  if (OSMesaGetCurrentContext() == context_) return true;
+  if (currentContext == this) return true;
+#if defined(FACET_HAVE_EGL)
+  if (es_) {
+    if (!eglMakeCurrent(static_cast<EGLDisplay>(eglDisplay_), EGL_NO_SURFACE, EGL_NO_SURFACE,
+                        static_cast<EGLContext>(eglContext_))) {
+      if (error) *error = "eglMakeCurrent failed";
+      return false;
+    }
+    currentContext = this;
+    return true;
+  }
+  if (eglGetCurrentContext() != EGL_NO_CONTEXT) {
+    eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+#endif
   if (!OSMesaMakeCurrent(context_, dummyBuffer_, GL_UNSIGNED_BYTE, kDummySize, kDummySize)) {
     if (error) *error = "OSMesaMakeCurrent failed";
     return false;
   }
+  currentContext = this;
   return true;
 }
 

@@ -10,7 +10,7 @@
 
 namespace facet::runtime::gl {
 
-enum class Kind { Buffer, VertexArray, Texture, Renderbuffer, Framebuffer, Shader, Program };
+enum class Kind { Buffer, VertexArray, Texture, Renderbuffer, Framebuffer, Shader, Program, Query };
 
 template <Kind K>
 class Object {
@@ -39,6 +39,7 @@ class Object {
     if constexpr (K == Kind::Texture) glGenTextures(1, &id);
     if constexpr (K == Kind::Renderbuffer) glGenRenderbuffers(1, &id);
     if constexpr (K == Kind::Framebuffer) glGenFramebuffers(1, &id);
+    if constexpr (K == Kind::Query) glGenQueries(1, &id);
     static_assert(K != Kind::Shader && K != Kind::Program, "use the GLuint constructor");
     return Object(id);
   }
@@ -54,6 +55,7 @@ class Object {
     if constexpr (K == Kind::Framebuffer) glDeleteFramebuffers(1, &id_);
     if constexpr (K == Kind::Shader) glDeleteShader(id_);
     if constexpr (K == Kind::Program) glDeleteProgram(id_);
+    if constexpr (K == Kind::Query) glDeleteQueries(1, &id_);
     id_ = 0;
   }
 
@@ -68,5 +70,6 @@ using Renderbuffer = Object<Kind::Renderbuffer>;
 using Framebuffer = Object<Kind::Framebuffer>;
 using Shader = Object<Kind::Shader>;
 using Program = Object<Kind::Program>;
+using Query = Object<Kind::Query>;
 
 }  // namespace facet::runtime::gl

@@ -50,11 +50,12 @@ void flipRows(std::vector<T>* pixels, size_t rowElements, uint32_t height) {
 }
 
 template <typename T>
-void readRgba(GLuint framebuffer, GLenum type, uint32_t width, uint32_t height, std::vector<T>* pixels) {
+void readRgba(GLuint framebuffer, GLenum attachment, GLenum type, uint32_t width, uint32_t height,
+              std::vector<T>* pixels) {
   const size_t rowElements = size_t{width} * 4;
   pixels->assign(rowElements * height, T{});
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadBuffer(attachment);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows tightly packed, whatever the width
   glReadPixels(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height), GL_RGBA, type, pixels->data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -63,7 +64,7 @@ void readRgba(GLuint framebuffer, GLenum type, uint32_t width, uint32_t height, 
 
 }  // namespace
 
-bool createRenderTargets(uint32_t width, uint32_t height, RenderTargets* targets, std::string* error) {
+bool createRenderTargets(uint32_t width, uint32_t height, bool merged, RenderTargets* targets, std::string* error) {
   const auto w = static_cast<GLsizei>(width);
   const auto h = static_cast<GLsizei>(height);
   RenderTargets created;
@@ -85,7 +86,15 @@ bool createRenderTargets(uint32_t width, uint32_t height, RenderTargets* targets
   created.ldrFramebuffer = Framebuffer::generate();
   glBindFramebuffer(GL_FRAMEBUFFER, created.ldrFramebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.ldrColor.id(), 0);
-  const bool ldrComplete = hdrComplete && checkComplete("LDR (RGBA8)", error);
+  bool ldrComplete = hdrComplete && checkComplete("LDR (RGBA8)", error);
+  if (merged && ldrComplete) {
+    created.mergedFramebuffer = Framebuffer::generate();
+    glBindFramebuffer(GL_FRAMEBUFFER, created.mergedFramebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, created.ldrColor.id(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
+    ldrComplete = checkComplete("merged (RGBA16F + RGBA8 + DEPTH32F)", error);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
   if (!ldrComplete || !checkGlError("render target creation", error)) return false;
@@ -93,12 +102,12 @@ bool createRenderTargets(uint32_t width, uint32_t height, RenderTargets* targets
   return true;
 }
 
-void readRgbaFloat(GLuint framebuffer, uint32_t width, uint32_t height, std::vector<float>* pixels) {
-  readRgba(framebuffer, GL_FLOAT, width, height, pixels);
+void readRgbaFloat(GLuint framebuffer, GLenum attachment, uint32_t width, uint32_t height, std::vector<float>* pixels) {
+  readRgba(framebuffer, attachment, GL_FLOAT, width, height, pixels);
 }
 
-void readRgba8(GLuint framebuffer, uint32_t width, uint32_t height, std::vector<uint8_t>* pixels) {
-  readRgba(framebuffer, GL_UNSIGNED_BYTE, width, height, pixels);
+void readRgba8(GLuint framebuffer, GLenum attachment, uint32_t width, uint32_t height, std::vector<uint8_t>* pixels) {
+  readRgba(framebuffer, attachment, GL_UNSIGNED_BYTE, width, height, pixels);
 }
 
 }  // namespace facet::runtime::gl

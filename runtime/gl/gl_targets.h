@@ -19,13 +19,18 @@ struct RenderTargets {
   // Post pass: RGBA8 colour, the displayable image.
   Texture ldrColor;
   Framebuffer ldrFramebuffer;
+  // Merged path only: HDR at colour 0, LDR at colour 1, depth, in one framebuffer (the
+  // framebuffer-fetch post pass reads colour 0 of the pixel it writes colour 1 of).
+  Framebuffer mergedFramebuffer;
 };
 
-// Creates both framebuffers at width × height and checks their completeness.
-bool createRenderTargets(uint32_t width, uint32_t height, RenderTargets* targets, std::string* error);
+// Creates the framebuffers at width × height (the merged one when `merged`) and checks their
+// completeness.
+bool createRenderTargets(uint32_t width, uint32_t height, bool merged, RenderTargets* targets, std::string* error);
 
-// Reads colour attachment 0 of `framebuffer` with rows top to bottom (GL returns bottom-up).
-void readRgbaFloat(GLuint framebuffer, uint32_t width, uint32_t height, std::vector<float>* pixels);
-void readRgba8(GLuint framebuffer, uint32_t width, uint32_t height, std::vector<uint8_t>* pixels);
+// Reads colour attachment `attachment` (GL_COLOR_ATTACHMENTi) of `framebuffer` with rows top to
+// bottom (GL returns bottom-up).
+void readRgbaFloat(GLuint framebuffer, GLenum attachment, uint32_t width, uint32_t height, std::vector<float>* pixels);
+void readRgba8(GLuint framebuffer, GLenum attachment, uint32_t width, uint32_t height, std::vector<uint8_t>* pixels);
 
 }  // namespace facet::runtime::gl

@@ -4,9 +4,12 @@
 #include <filesystem>
 
 #include "facet/atomic_file.h"
+#include "facet/frame_graph.h"
 #include "facet/render_backend.h"
+#include "facet/render_path.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/scene_frame.h"
+#include "frame_stats.h"
 
 namespace {
 
@@ -21,13 +24,31 @@ int main(int argc, char** argv) {
   facet::removeTemporaryFilesOnSignals();  // an interrupted PNG write leaves nothing behind
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
   std::string scenePath, packageDir = ".", outDir = ".", backendName = "both", tier;
-  bool validation = false;
+  bool validation = false, stats = false, keepHdr = false, json = false;
+  size_t frames = 1, warmup = 2;
+  std::string postPathName = "auto", glContext = "auto";
+  uint32_t width = 0, height = 0;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
   app.add_option("--out", outDir, "folder for the PNG files");
   app.add_option("--backend", backendName, "vulkan | gl | both")->check(CLI::IsMember({"vulkan", "gl", "both"}));
   app.add_option("--tier", tier, "render at this tier instead of the scene's (reference, high, mid, low)");
   app.add_flag("--validation", validation, "enable Vulkan validation layers; any validation error fails the run");
+  app.add_option("--post-path", postPathName,
+                 "auto | merged (post pass reads its own pixel in the same render pass) | separate (post samples the stored HDR)")
+      ->check(CLI::IsMember({"auto", "merged", "separate"}));
+  app.add_flag("--keep-hdr", keepHdr, "also store HDR and read it back (debugging; HDR is then not transient)");
+  app.add_option("--gl-context", glContext, "auto (EGL GLES, else OSMesa) | egl | osmesa")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  app.add_option("--width", width, "render at this width instead of the scene's")->check(CLI::Range(1, 16384));
+  app.add_option("--height", height, "render at this height instead of the scene's")->check(CLI::Range(1, 16384));
+  app.add_flag("--stats", stats,
+               "print per-pass GPU time (median over --frames after --warmup) and the frame graph: render passes, "
+               "load/store ops, bytes loaded/stored per frame");
+  app.add_flag("--json", json, "with --stats: print the statistics as JSON on stdout (other output goes to stderr)");
+  app.add_option("--frames", frames, "frames to render and measure (the PNG is the last one)")->check(CLI::Range(1, 100000));
+  app.add_option("--warmup", warmup, "with --stats: frames rendered first and not measured (default 2)")
+      ->check(CLI::Range(0, 1000));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -44,6 +65,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (!tier.empty()) scene->tier = tier;
+  if (width) scene->width = width;
+  if (height) scene->height = height;
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -56,18 +79,62 @@ int main(int argc, char** argv) {
   std::vector<std::string> backends;
   if (backendName == "both" || backendName == "vulkan") backends.push_back("vulkan");
   if (backendName == "both" || backendName == "gl") backends.push_back("gl");
+  const facet::runtime::PostPath postPath = postPathName == "merged"     ? facet::runtime::PostPath::Merged
+                                             : postPathName == "separate" ? facet::runtime::PostPath::Separate
+                                                                          : facet::runtime::PostPath::Auto;
+  nlohmann::json report = nlohmann::json::array();
   for (const std::string& name : backends) {
-    std::unique_ptr<facet::runtime::RenderBackend> backend =
-        name == "vulkan" ? facet::runtime::createVulkanBackend({validation}, &error) : facet::runtime::createGlBackend(&error);
+    std::unique_ptr<facet::runtime::RenderBackend> backend;
+    if (name == "vulkan") {
+      facet::runtime::VulkanOptions options;
+      options.validation = validation;
+      options.postPath = postPath;
+      options.readBackHdr = keepHdr;
+      backend = facet::runtime::createVulkanBackend(options, &error);
+    } else {
+      facet::runtime::GlOptions options;
+      options.context = glContext == "egl"      ? facet::runtime::GlContextKind::EglGles
+                        : glContext == "osmesa" ? facet::runtime::GlContextKind::OsMesa
+                                                : facet::runtime::GlContextKind::Auto;
+      options.postPath = postPath;
+      options.readBackHdr = keepHdr;
+      backend = facet::runtime::createGlBackend(options, &error);
+    }
     if (!backend) return fail(name + ": " + error);
     facet::runtime::FrameResult result;
-    if (!backend->render(prepared->frame(), &result, &error)) return fail(name + ": " + error);
+    std::vector<std::vector<facet::runtime::PassTime>> times;
+    const size_t total = frames + (stats ? warmup : 0);
+    for (size_t i = 0; i < total; ++i) {
+      if (!backend->render(prepared->frame(), &result, &error)) return fail(name + ": " + error);
+      if (i >= total - frames) times.push_back(result.gpuTimes);
+    }
     for (const std::string& message : backend->validationErrors()) std::fprintf(stderr, "%s validation: %s\n", name.c_str(), message.c_str());
     if (!backend->validationErrors().empty()) return fail(name + ": validation reported errors");
     std::string path = (std::filesystem::path(outDir) / (stem + "." + name + ".png")).string();
     if (!facet::runtime::writePng(path, result.width, result.height, result.ldr, &error)) return fail(error);
-    std::printf("%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(), result.width, result.height,
+    std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(), result.width, result.height,
                 prepared->variantKey().c_str(), prepared->exposure());
+    if (stats) {
+      const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
+          result.width, result.height, backend->postPath(), backend->readsBackHdr());
+      facet::runtime::fg::CompiledGraph compiled;
+      if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
+      const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
+      if (json) {
+        nlohmann::json entry = facet::viewer::statsJson(graph.graph, compiled, medians, times.size());
+        entry["backend"] = name;
+        entry["path"] = facet::runtime::toString(backend->postPath());
+        entry["width"] = result.width;
+        entry["height"] = result.height;
+        entry["scene"] = scenePath;
+        report.push_back(std::move(entry));
+      } else {
+        std::printf("%s: %s path, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
+                    result.width, result.height,
+                    facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
+      }
+    }
   }
+  if (stats && json) std::printf("%s\n", report.dump(2).c_str());
   return 0;
 }

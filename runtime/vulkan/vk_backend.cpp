@@ -1,5 +1,7 @@
 // The Vulkan RenderBackend: a headless forward pass into RGBA16F + D32, a post pass into RGBA8,
-// and a readback of both. Everything runs synchronously: render() records one command buffer,
+// and a readback. The frame graph (render_path.h) decides the render passes: merged (the post
+// pass is subpass 1, reading HDR as an input attachment; HDR and depth transient unless HDR is
+// read back) or separate (two render passes, HDR stored and sampled). Everything runs synchronously: render() records one command buffer,
 // submits it and waits on a fence, so between frames the device is idle and resources can be
 // rewritten or recreated without further synchronisation.
 #include <cstring>
@@ -47,10 +49,13 @@ class VulkanBackend final : public RenderBackend {
   bool init(const VulkanOptions& options, std::string* error);
 
   const char* name() const override { return "vulkan"; }
+  PostPath postPath() const override { return path_; }
+  bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
 
  private:
+  bool planRenderPath(const VulkanOptions& options, std::string* error);
   bool createFixedObjects(std::string* error);
   bool ensureTargets(uint32_t width, uint32_t height, std::string* error);
   bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out, std::string* error);
@@ -60,17 +65,26 @@ class VulkanBackend final : public RenderBackend {
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
+  void readTimes(FrameResult* result) const;
 
   // Declared first so it is destroyed last: the destructor body below destroys everything
   // created from the device before ~Context destroys the device and the instance.
   Context ctx_;
 
+  // Fixed at creation from the options and the frame graph.
+  PostPath path_ = PostPath::Merged;
+  bool readBackHdr_ = true;
+  AttachmentOps hdrOps_, depthOps_, ldrOps_;
+  bool hdrTransient_ = false;
+  bool depthTransient_ = false;
+
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;  // null when the queue has no timestamps
 
-  VkRenderPass forwardPass_ = VK_NULL_HANDLE;
-  VkRenderPass postPass_ = VK_NULL_HANDLE;
+  VkRenderPass forwardPass_ = VK_NULL_HANDLE;  // merged path: the one render pass
+  VkRenderPass postPass_ = VK_NULL_HANDLE;     // separate path only
   VkDescriptorSetLayout forwardSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout postSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout textureSetLayout_ = VK_NULL_HANDLE;
@@ -125,6 +139,7 @@ VulkanBackend::~VulkanBackend() {
   if (textureSetLayout_) vkDestroyDescriptorSetLayout(device, textureSetLayout_, nullptr);
   if (postPass_) vkDestroyRenderPass(device, postPass_, nullptr);
   if (forwardPass_) vkDestroyRenderPass(device, forwardPass_, nullptr);
+  if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (fence_) vkDestroyFence(device, fence_, nullptr);
   // Destroying the pool frees its command buffer.
   if (commandPool_) vkDestroyCommandPool(device, commandPool_, nullptr);
@@ -132,7 +147,31 @@ VulkanBackend::~VulkanBackend() {
 
 bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
-  return ctx_.init(validation, error) && createFixedObjects(error);
+  return planRenderPath(options, error) && ctx_.init(validation, error) &&
+         createFixedObjects(error);
+}
+
+// Derives the render passes' load/store ops and the transient targets from the frame graph.
+// They do not depend on the frame size, so a 1x1 graph decides them once.
+bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* error) {
+  path_ = options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged;
+  readBackHdr_ = options.readBackHdr;
+  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
+  fg::CompiledGraph compiled;
+  if (!g.graph.compile(&compiled, error)) return false;
+  const size_t expected = path_ == PostPath::Merged ? 1 : 2;
+  if (compiled.renderPasses.size() != expected) {
+    *error = std::string("frame graph gave ") + std::to_string(compiled.renderPasses.size()) +
+             " render passes for the " + toString(path_) + " path";
+    return false;
+  }
+  const uint32_t postRenderPass = path_ == PostPath::Merged ? 0 : 1;
+  hdrOps_ = toVulkan(*compiled.attachment(0, g.hdr));
+  depthOps_ = toVulkan(*compiled.attachment(0, g.depth));
+  ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.ldr));
+  hdrTransient_ = compiled.traffic[g.hdr].transient;
+  depthTransient_ = compiled.traffic[g.depth].transient;
+  return true;
 }
 
 // Objects that live as long as the backend and do not depend on the frame.
@@ -144,10 +183,15 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
 
-  if (!createForwardRenderPass(device, &forwardPass_, error) ||
-      !createPostRenderPass(device, &postPass_, error) ||
-      !createForwardSetLayout(device, &forwardSetLayout_, error) ||
-      !createPostSetLayout(device, &postSetLayout_, error) ||
+  const bool merged = path_ == PostPath::Merged;
+  const VkDescriptorType hdrType =
+      merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  const bool passesMade =
+      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, &forwardPass_, error)
+             : createForwardRenderPass(device, hdrOps_, depthOps_, &forwardPass_, error) &&
+                   createPostRenderPass(device, ldrOps_, &postPass_, error);
+  if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
+      !createPostSetLayout(device, hdrType, &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
       !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_,
                             error) ||
@@ -156,13 +200,26 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
   if (!textures_.init(&ctx_, error)) return false;
 
+  if (ctx_.timestampValidBits > 0) {
+    VkQueryPoolCreateInfo queryInfo{};
+    queryInfo.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    queryInfo.queryCount = kTimestampCount;
+    if (!check(vkCreateQueryPool(device, &queryInfo, nullptr, &timestamps_), "vkCreateQueryPool", error)) {
+      timestamps_ = VK_NULL_HANDLE;
+      return false;
+    }
+  }
+
   const PostShaders& post = postShaders();
   PipelineDesc postDesc;
   postDesc.kind = PipelineKind::kPost;
   postDesc.vertexSpirv = &post.vertexSpirv;
-  postDesc.fragmentSpirv = &post.fragmentSpirv;
+  postDesc.fragmentSpirv = merged ? &post.fragmentFetchSpirv : &post.fragmentSpirv;
   postDesc.layout = postLayout_;
-  postDesc.renderPass = postPass_;
+  postDesc.renderPass = merged ? forwardPass_ : postPass_;
+  postDesc.subpass = merged ? 1 : 0;
+  postDesc.colourSlots = merged ? 2 : 1;
   postDesc.what = "post pass shaders";
   if (!createGraphicsPipeline(device, postDesc, &postPipeline_, error)) return false;
 
@@ -182,7 +239,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
 
-  VkDescriptorPoolSize postPoolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+  VkDescriptorPoolSize postPoolSize{hdrType, 1};
   VkDescriptorPoolCreateInfo postPoolInfo{};
   postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   postPoolInfo.maxSets = 1;
@@ -220,8 +277,8 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
     std::vector<DrawSlot> slots;
-    const FrameObjects objects{forwardPass_, postPass_,     forwardLayout_,
-                               postLayout_,  postPipeline_, postSet_};
+    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_, forwardPass_, postPass_,
+                               forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
         !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
@@ -234,6 +291,7 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
       return false;
     }
     readBack(result);
+    readTimes(result);
     return true;
   } catch (const std::exception& e) {
     *error = std::string("Vulkan backend: ") + e.what();
@@ -244,17 +302,24 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
 bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
   destroyRenderTargets(ctx_.device, &targets_);  // idle: the previous frame was waited for
-  if (!createRenderTargets(ctx_, width, height, forwardPass_, postPass_, &targets_, error)) {
-    return false;
-  }
-  VkDescriptorImageInfo imageInfo{hdrSampler_, targets_.hdr.view,
+  TargetConfig config;
+  config.merged = path_ == PostPath::Merged;
+  config.readBackHdr = readBackHdr_;
+  config.hdrTransient = hdrTransient_;
+  config.depthTransient = depthTransient_;
+  config.forwardPass = forwardPass_;
+  config.postPass = postPass_;
+  if (!createRenderTargets(ctx_, width, height, config, &targets_, error)) return false;
+  // An input attachment descriptor ignores the sampler.
+  VkDescriptorImageInfo imageInfo{config.merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet write{};
   write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
   write.dstSet = postSet_;
   write.dstBinding = abi::kPostHdrBinding;
   write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.descriptorType = config.merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT
+                                       : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &imageInfo;
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
   return true;
@@ -428,11 +493,31 @@ void VulkanBackend::readBack(FrameResult* result) const {
   const size_t values = size_t{targets_.width} * targets_.height * 4;
   result->width = targets_.width;
   result->height = targets_.height;
-  result->hdr.resize(values);
-  const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
-  for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+  result->hdr.clear();
+  if (readBackHdr_) {
+    result->hdr.resize(values);
+    const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
+    for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+  }
   result->ldr.resize(values);
   std::memcpy(result->ldr.data(), targets_.ldrReadback.mapped, values);
+}
+
+// Timestamps are in ticks of timestampPeriod nanoseconds, valid in their low timestampValidBits.
+void VulkanBackend::readTimes(FrameResult* result) const {
+  result->gpuTimes.clear();
+  if (!timestamps_) return;
+  uint64_t ticks[kTimestampCount] = {};
+  if (vkGetQueryPoolResults(ctx_.device, timestamps_, 0, kTimestampCount, sizeof ticks, ticks,
+                            sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
+    return;  // not available: the frame is still valid, only untimed
+  }
+  const uint64_t mask =
+      ctx_.timestampValidBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << ctx_.timestampValidBits) - 1;
+  const double msPerTick = double(ctx_.properties.limits.timestampPeriod) * 1e-6;
+  const auto span = [&](int from, int to) { return double((ticks[to] - ticks[from]) & mask) * msPerTick; };
+  result->gpuTimes.push_back({"forward", span(0, 1)});
+  result->gpuTimes.push_back({"post", span(1, 2)});
 }
 
 }  // namespace

@@ -22,7 +22,12 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
   const VkRect2D scissor{{0, 0}, {targets.width, targets.height}};
 
   // Forward pass.
-  VkClearValue clears[2]{};
+  if (objects.timestamps) {
+    vkCmdResetQueryPool(cmd, objects.timestamps, 0, kTimestampCount);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, objects.timestamps, 0);
+  }
+  // Indexed by attachment; LDR's (merged path) is unused: its loadOp is DONT_CARE.
+  VkClearValue clears[3]{};
   for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = clearColor[c];
   clears[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo passInfo{};
@@ -30,7 +35,7 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
   passInfo.renderPass = objects.forwardPass;
   passInfo.framebuffer = targets.forwardFramebuffer;
   passInfo.renderArea = scissor;
-  passInfo.clearValueCount = 2;
+  passInfo.clearValueCount = objects.merged ? 3 : 2;
   passInfo.pClearValues = clears;
   vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
@@ -53,43 +58,61 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
       vkCmdDraw(cmd, slot.vertexCount, 1, 0, 0);
     }
   }
-  vkCmdEndRenderPass(cmd);
-
-  // Post pass: one full-screen triangle reading the HDR image.
-  passInfo.renderPass = objects.postPass;
-  passInfo.framebuffer = targets.postFramebuffer;
-  passInfo.clearValueCount = 0;
-  passInfo.pClearValues = nullptr;
-  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  // Post pass: one full-screen triangle reading the HDR image (its own pixel when merged).
+  // BOTTOM_OF_PIPE: written once everything recorded before it has finished. Inside the merged
+  // render pass this splits the subpasses on an immediate-mode GPU like lavapipe; on a tiler the
+  // two subpasses interleave per tile and only the total is meaningful.
+  if (objects.merged) {
+    if (objects.timestamps) {
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
+    }
+    vkCmdNextSubpass(cmd, VK_SUBPASS_CONTENTS_INLINE);
+  } else {
+    vkCmdEndRenderPass(cmd);
+    if (objects.timestamps) {
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
+    }
+    passInfo.renderPass = objects.postPass;
+    passInfo.framebuffer = targets.postFramebuffer;
+    passInfo.clearValueCount = 0;
+    passInfo.pClearValues = nullptr;
+    vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+  }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postPipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postLayout, 0, 1,
                           &objects.postSet, 0, nullptr);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
+  if (objects.timestamps) {
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 2);
+  }
 
-  // Readback. The post pass left the LDR image in TRANSFER_SRC_OPTIMAL; the HDR image still
-  // needs its transition, after the post pass's sampling of it.
-  VkImageMemoryBarrier hdrBarrier{};
-  hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
-  hdrBarrier.srcAccessMask = 0;  // write-after-read only needs the execution dependency
-  hdrBarrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-  hdrBarrier.oldLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  hdrBarrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  hdrBarrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  hdrBarrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  hdrBarrier.image = targets.hdr.image;
-  hdrBarrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       0, 0, nullptr, 0, nullptr, 1, &hdrBarrier);
-
+  // Readback. The render pass left LDR (and, merged, a stored HDR) in TRANSFER_SRC_OPTIMAL;
+  // on the separate path HDR still needs its transition, after the post pass's sampling of it.
   VkBufferImageCopy region{};
   region.bufferRowLength = 0;  // tightly packed; image row 0 (the top) first
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {targets.width, targets.height, 1};
-  vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         targets.hdrReadback.buffer, 1, &region);
+  if (objects.readBackHdr && !objects.merged) {
+    VkImageMemoryBarrier hdrBarrier{};
+    hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+    hdrBarrier.srcAccessMask = 0;  // write-after-read only needs the execution dependency
+    hdrBarrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    hdrBarrier.oldLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    hdrBarrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    hdrBarrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    hdrBarrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    hdrBarrier.image = targets.hdr.image;
+    hdrBarrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &hdrBarrier);
+  }
+  if (objects.readBackHdr) {
+    vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           targets.hdrReadback.buffer, 1, &region);
+  }
   vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                          targets.ldrReadback.buffer, 1, &region);
 

@@ -151,6 +151,14 @@ bool Context::createInstance(bool validation, std::string* error) {
     }
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    // Synchronization validation finds missing barriers and subpass dependencies (hazards the
+    // core checks cannot see), which the merged render pass depends on getting right.
+    if (!instanceExtensionAvailable(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
+      *error = "Vulkan validation was requested but " VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME
+               " (needed for synchronization validation) is not available";
+      return false;
+    }
+    extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
   }
 
   VkApplicationInfo app{};
@@ -162,9 +170,17 @@ bool Context::createInstance(bool validation, std::string* error) {
   // Chained into the create info too, so that vkCreateInstance/vkDestroyInstance are covered.
   VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(&messages);
 
+  const VkValidationFeatureEnableEXT enabledFeatures[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{};
+  features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
+  features.pNext = &debugInfo;
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enabledFeatures;
+
   VkInstanceCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
-  info.pNext = validation ? &debugInfo : nullptr;
+  info.pNext = validation ? &features : nullptr;
   info.pApplicationInfo = &app;
   info.enabledLayerCount = static_cast<uint32_t>(layers.size());
   info.ppEnabledLayerNames = layers.data();
@@ -240,6 +256,7 @@ bool Context::pickPhysicalDevice(std::string* error) {
       physicalDevice = candidate;
       properties = props;
       queueFamily = family;
+      timestampValidBits = families[family].timestampValidBits;
     }
   }
   if (!physicalDevice) {

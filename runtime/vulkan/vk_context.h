@@ -38,6 +38,7 @@ class Context {
   VkPhysicalDeviceMemoryProperties memoryProperties{};
   VkDevice device = VK_NULL_HANDLE;
   uint32_t queueFamily = 0;
+  uint32_t timestampValidBits = 0;  // of queueFamily; 0: the queue cannot write timestamps
   VkQueue queue = VK_NULL_HANDLE;
   bool validationEnabled = false;
   DebugMessages messages;

@@ -30,13 +30,134 @@ bool createShaderModule(VkDevice device, const std::vector<uint32_t>* words, con
 
 }  // namespace
 
-bool createForwardRenderPass(VkDevice device, VkRenderPass* out, std::string* error) {
+AttachmentOps toVulkan(const fg::Attachment& attachment) {
+  AttachmentOps ops;
+  switch (attachment.load) {
+    case fg::LoadOp::Load: ops.load = VK_ATTACHMENT_LOAD_OP_LOAD; break;
+    case fg::LoadOp::Clear: ops.load = VK_ATTACHMENT_LOAD_OP_CLEAR; break;
+    case fg::LoadOp::DontCare: ops.load = VK_ATTACHMENT_LOAD_OP_DONT_CARE; break;
+  }
+  ops.store = attachment.store == fg::StoreOp::Store ? VK_ATTACHMENT_STORE_OP_STORE
+                                                     : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  return ops;
+}
+
+namespace {
+
+VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops,
+                                           VkImageLayout finalLayout) {
+  VkAttachmentDescription a{};
+  a.format = format;
+  a.samples = VK_SAMPLE_COUNT_1_BIT;
+  a.loadOp = ops.load;
+  a.storeOp = ops.store;
+  a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  // Every frame clears or fully overwrites its targets: old contents never matter.
+  a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  a.finalLayout = finalLayout;
+  return a;
+}
+
+bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRenderPass* out,
+                      std::string* error) {
+  if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+                            AttachmentOps ldr, VkRenderPass* out, std::string* error) {
+  const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
+  const std::array<VkAttachmentDescription, 3> attachments{
+      describeAttachment(kHdrFormat, hdr,
+                         hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
+                                   : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+      describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
+      describeAttachment(kLdrFormat, ldr, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
+
+  const VkAttachmentReference hdrColour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference hdrInput{0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  // Colour slot 1, not 0: the post shader writes LDR at location 1 in every API, because Metal
+  // and GLES framebuffer fetch read HDR as colour 0 of the same pass (post_tonemap.frag.glsl).
+  const std::array<VkAttachmentReference, 2> postColour{
+      VkAttachmentReference{VK_ATTACHMENT_UNUSED, VK_IMAGE_LAYOUT_UNDEFINED},
+      VkAttachmentReference{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+  std::array<VkSubpassDescription, 2> subpasses{};
+  subpasses[0].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpasses[0].colorAttachmentCount = 1;
+  subpasses[0].pColorAttachments = &hdrColour;
+  subpasses[0].pDepthStencilAttachment = &depthRef;
+  subpasses[1].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpasses[1].inputAttachmentCount = 1;
+  subpasses[1].pInputAttachments = &hdrInput;
+  subpasses[1].colorAttachmentCount = static_cast<uint32_t>(postColour.size());
+  subpasses[1].pColorAttachments = postColour.data();
+
+  std::array<VkSubpassDependency, 4> dependencies{};
+  // Before subpass 0: the previous frame's readback copy of HDR and its depth writes must finish
+  // before this frame's layout transitions and writes.
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  // Before subpass 1: the previous frame's readback copy of LDR (write after read).
+  dependencies[1].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].dstSubpass = 1;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[1].srcAccessMask = 0;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  // Forward -> post: each pixel's HDR write before the same pixel's input-attachment read. By
+  // region: a tile's post work waits only for that tile's forward work (the framebuffer fetch).
+  dependencies[2].srcSubpass = 0;
+  dependencies[2].dstSubpass = 1;
+  dependencies[2].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[2].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[2].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  dependencies[2].dstAccessMask = VK_ACCESS_INPUT_ATTACHMENT_READ_BIT;
+  dependencies[2].dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
+  // After: the readback copies LDR (and HDR when stored).
+  dependencies[3].srcSubpass = 1;
+  dependencies[3].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[3].srcStageMask =
+      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  dependencies[3].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[3].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[3].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+
+  VkRenderPassCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = static_cast<uint32_t>(subpasses.size());
+  info.pSubpasses = subpasses.data();
+  info.dependencyCount = static_cast<uint32_t>(dependencies.size());
+  info.pDependencies = dependencies.data();
+  return createRenderPass(device, info, out, error);
+}
+
+bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depthOps,
+                             VkRenderPass* out, std::string* error) {
   std::array<VkAttachmentDescription, 2> attachments{};
   VkAttachmentDescription& colour = attachments[0];
   colour.format = kHdrFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
-  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.loadOp = hdr.load;
+  colour.storeOp = hdr.store;
   colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // cleared: old contents don't matter
@@ -44,8 +165,8 @@ bool createForwardRenderPass(VkDevice device, VkRenderPass* out, std::string* er
   VkAttachmentDescription& depth = attachments[1];
   depth.format = kDepthFormat;
   depth.samples = VK_SAMPLE_COUNT_1_BIT;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.loadOp = depthOps.load;
+  depth.storeOp = depthOps.store;
   depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -97,12 +218,13 @@ bool createForwardRenderPass(VkDevice device, VkRenderPass* out, std::string* er
   return true;
 }
 
-bool createPostRenderPass(VkDevice device, VkRenderPass* out, std::string* error) {
+bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
+                          std::string* error) {
   VkAttachmentDescription colour{};
   colour.format = kLdrFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
-  colour.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the full-screen triangle covers every pixel
-  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.loadOp = ldr.load;  // the graph: never written before, so don't care
+  colour.storeOp = ldr.store;
   colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -176,10 +298,11 @@ bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::st
   return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
-bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
+bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType, VkDescriptorSetLayout* out,
+                         std::string* error) {
   VkDescriptorSetLayoutBinding binding{};
   binding.binding = abi::kPostHdrBinding;
-  binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  binding.descriptorType = hdrType;
   binding.descriptorCount = 1;
   binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
   return createSetLayout(device, &binding, 1, out, error);
@@ -299,10 +422,13 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
     blendAttachment.dstAlphaBlendFactor = dst;
     blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   }
+  // The merged post subpass has colour slots {unused, LDR}: one state per slot, the same for both.
+  const std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{blendAttachment,
+                                                                            blendAttachment};
   VkPipelineColorBlendStateCreateInfo blend{};
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blendAttachment;
+  blend.attachmentCount = desc.colourSlots;
+  blend.pAttachments = blendAttachments.data();
 
   const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT,
                                                     VK_DYNAMIC_STATE_SCISSOR};
@@ -325,7 +451,7 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   info.pDynamicState = &dynamic;
   info.layout = desc.layout;
   info.renderPass = desc.renderPass;
-  info.subpass = 0;
+  info.subpass = desc.subpass;
   VkResult result = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, out);
   // Modules are only needed while the pipeline is created.
   vkDestroyShaderModule(device, vertex, nullptr);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/frame_graph.h"
 #include "facet/render_backend.h"
 
 namespace facet::runtime::vulkan {
@@ -16,16 +17,35 @@ inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
-// Forward pass: RGBA16F colour (cleared, stored, left in SHADER_READ_ONLY_OPTIMAL for the post
-// pass) and D32 depth (cleared, discarded).
-bool createForwardRenderPass(VkDevice device, VkRenderPass* out, std::string* error);
-// Post pass: RGBA8 colour (fully overwritten, stored, left in TRANSFER_SRC_OPTIMAL for readback).
-bool createPostRenderPass(VkDevice device, VkRenderPass* out, std::string* error);
+// Load and store operations of one attachment, as the frame graph derived them.
+struct AttachmentOps {
+  VkAttachmentLoadOp load = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  VkAttachmentStoreOp store = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+};
+AttachmentOps toVulkan(const fg::Attachment& attachment);
+
+// Separate path, render pass 1: the forward pass into RGBA16F colour (left in
+// SHADER_READ_ONLY_OPTIMAL for the post pass to sample) and D32 depth.
+bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+                             VkRenderPass* out, std::string* error);
+// Separate path, render pass 2: the post pass into RGBA8 (left in TRANSFER_SRC_OPTIMAL for
+// readback).
+bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
+                          std::string* error);
+// Merged path: one render pass, attachments 0 HDR, 1 depth, 2 LDR. Subpass 0 is the forward
+// pass (colour HDR, depth); subpass 1 the post pass (input attachment HDR; colour slots
+// {unused, LDR}, so LDR is location 1 as in the GLES and Metal fetch forms), joined by
+// a BY_REGION dependency so a tiler keeps HDR in tile memory. HDR ends in TRANSFER_SRC_OPTIMAL
+// when it is stored for readback, LDR always does.
+bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+                            AttachmentOps ldr, VkRenderPass* out, std::string* error);
 
 // Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
-// Set 0 of the post shaders: the HDR colour as a combined image sampler.
-bool createPostSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
+// Set 0 of the post shaders: the HDR colour, as a combined image sampler (separate path) or an
+// input attachment (merged path).
+bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType, VkDescriptorSetLayout* out,
+                         std::string* error);
 // Set 1 (abi::kTextureSet) of material shaders: bindings 0..15 (frame textures, then material
 // textures), all combined image samplers visible to both stages. Fixed rather than reflected per
 // shader, so one pipeline layout serves every material; a binding a draw does not provide is
@@ -48,6 +68,8 @@ struct PipelineDesc {
   const std::vector<uint32_t>* fragmentSpirv = nullptr;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass renderPass = VK_NULL_HANDLE;
+  uint32_t subpass = 0;
+  uint32_t colourSlots = 1;  // colour attachments of that subpass (merged post subpass: 2)
   const char* what = "";  // names the shaders in error messages
 };
 

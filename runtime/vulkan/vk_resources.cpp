@@ -90,8 +90,16 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
   }
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(ctx.device, image.image, &requirements);
+  // A transient attachment (never loaded or stored: the frame graph's verdict) can live in tile
+  // memory only: lazily allocated memory, where the device offers it, gets no DRAM backing.
+  const bool transient = (usage & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT) != 0;
+  const VkMemoryPropertyFlags preferred =
+      transient ? VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT
+                : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  image.lazilyAllocated =
+      transient && ctx.findMemoryType(requirements.memoryTypeBits, preferred) != UINT32_MAX;
   bool ok =
-      allocate(ctx, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, &image.memory, error) &&
+      allocate(ctx, requirements, preferred, 0, &image.memory, error) &&
       check(vkBindImageMemory(ctx.device, image.image, image.memory, 0), "vkBindImageMemory",
             error);
   if (ok) {

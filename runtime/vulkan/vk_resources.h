@@ -36,6 +36,7 @@ struct Image {
   uint32_t width = 0;
   uint32_t height = 0;
   uint32_t mipLevels = 1;
+  bool lazilyAllocated = false;  // transient usage and the device had a LAZILY_ALLOCATED type
 };
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,

@@ -29,31 +29,40 @@ bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* vi
 }  // namespace
 
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
-                         VkRenderPass forwardPass, VkRenderPass postPass, RenderTargets* targets,
-                         std::string* error) {
+                         const TargetConfig& config, RenderTargets* targets, std::string* error) {
   RenderTargets t;
   t.width = width;
   t.height = height;
   const VkDeviceSize pixels = VkDeviceSize{width} * height;
+  // A transient image may only be used as an attachment (no sampling, no copies).
+  VkImageUsageFlags hdrUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  hdrUsage |= config.merged ? VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT : VK_IMAGE_USAGE_SAMPLED_BIT;
+  if (config.readBackHdr) hdrUsage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  if (config.hdrTransient) hdrUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  if (config.depthTransient) depthUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   bool ok =
-      createImage(ctx, width, height, kHdrFormat,
-                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                  VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error) &&
-      createImage(ctx, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                  VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error) &&
+      createImage(ctx, width, height, kHdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr,
+                  error) &&
+      createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT,
+                  &t.depth, error) &&
       createImage(ctx, width, height, kLdrFormat,
                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                   VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
-      createHostBuffer(ctx, pixels * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                       &t.hdrReadback, error) &&
+      (!config.readBackHdr ||
+       createHostBuffer(ctx, pixels * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        &t.hdrReadback, error)) &&
       createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error);
-  if (ok) {
+  if (ok && config.merged) {
+    const std::array<VkImageView, 3> views{t.hdr.view, t.depth.view, t.ldr.view};
+    ok = createFramebuffer(ctx.device, config.forwardPass, views.data(), 3, width, height,
+                           &t.forwardFramebuffer, error);
+  } else if (ok) {
     const std::array<VkImageView, 2> forwardViews{t.hdr.view, t.depth.view};
-    ok = createFramebuffer(ctx.device, forwardPass, forwardViews.data(), 2, width, height,
+    ok = createFramebuffer(ctx.device, config.forwardPass, forwardViews.data(), 2, width, height,
                            &t.forwardFramebuffer, error) &&
-         createFramebuffer(ctx.device, postPass, &t.ldr.view, 1, width, height, &t.postFramebuffer,
-                           error);
+         createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height,
+                           &t.postFramebuffer, error);
   }
   if (!ok) {
     destroyRenderTargets(ctx.device, &t);

@@ -13,22 +13,31 @@ namespace facet::runtime::vulkan {
 
 class Context;
 
+// How the targets are used, fixed for a backend's life (the frame graph decides it).
+struct TargetConfig {
+  bool merged = false;          // one render pass: HDR is an input attachment, not sampled
+  bool readBackHdr = false;     // HDR is copied to hdrReadback after the frame
+  bool hdrTransient = false;    // never loaded or stored: TRANSIENT_ATTACHMENT usage
+  bool depthTransient = false;
+  VkRenderPass forwardPass = VK_NULL_HANDLE;  // merged: the one render pass
+  VkRenderPass postPass = VK_NULL_HANDLE;     // separate path only
+};
+
 struct RenderTargets {
   uint32_t width = 0;
   uint32_t height = 0;
-  Image hdr;    // RGBA16F: forward colour attachment, sampled by the post pass, copied out
+  Image hdr;    // RGBA16F: forward colour attachment, read by the post pass, maybe copied out
   Image depth;  // D32
   Image ldr;    // RGBA8: post pass output, copied out
-  VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;
-  VkFramebuffer postFramebuffer = VK_NULL_HANDLE;
-  HostBuffer hdrReadback;  // width*height*4 halves, rows top to bottom
+  VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR
+  VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only
+  HostBuffer hdrReadback;  // width*height*4 halves, rows top to bottom (when read back)
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom
 };
 
 // On failure returns false and leaves *targets destroyed (default-constructed).
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
-                         VkRenderPass forwardPass, VkRenderPass postPass, RenderTargets* targets,
-                         std::string* error);
+                         const TargetConfig& config, RenderTargets* targets, std::string* error);
 void destroyRenderTargets(VkDevice device, RenderTargets* targets);
 
 }  // namespace facet::runtime::vulkan

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/render_path.h"
 #include "facet/shader_abi.h"
 
 namespace facet::runtime {
@@ -87,17 +88,29 @@ struct FrameDesc {
   std::vector<DrawItem> draws;
 };
 
+// GPU time of one pass of a frame, from the API's timer (Vulkan timestamps, GL timer queries).
+struct PassTime {
+  std::string pass;  // "forward", "post"
+  double milliseconds = 0;
+};
+
 struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
-  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F target)
+  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F
+                             // target); empty when the backend does not read HDR back
+  std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
 class RenderBackend {
  public:
   virtual ~RenderBackend() = default;
   virtual const char* name() const = 0;
+  // The render path render() runs (Merged or Separate, never Auto), and the frame graph it was
+  // derived from: buildForwardPostGraph(w, h, postPath(), readsBackHdr()).
+  virtual PostPath postPath() const = 0;
+  virtual bool readsBackHdr() const = 0;
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -108,18 +121,46 @@ class RenderBackend {
 
 struct VulkanOptions {
   bool validation = false;  // enable VK_LAYER_KHRONOS_validation and collect its errors
+  // Auto picks Merged: input attachments are core Vulkan 1.0, so every device supports it.
+  // Separate forces the fallback (post samples the stored HDR texture).
+  PostPath postPath = PostPath::Auto;
+  // Copy HDR back into FrameResult::hdr (tests, eval, debugging). This forces HDR to be stored
+  // (the frame graph sees it read after the frame), so it is not transient even when merged;
+  // false gives the mobile path, where HDR and depth never leave tile memory.
+  bool readBackHdr = true;
+};
+
+enum class GlContextKind {
+  Auto,     // EGL GLES when available, else OSMesa
+  EglGles,  // a real OpenGL ES 3.2 context, EGL surfaceless (Mesa)
+  OsMesa,   // an OpenGL core context on OSMesa running the "#version 300 es" shaders
+};
+
+struct GlOptions {
+  GlContextKind context = GlContextKind::Auto;
+  // Auto picks Merged when the context offers GL_EXT_shader_framebuffer_fetch: one framebuffer,
+  // HDR colour 0 and LDR colour 1, the post pass reading HDR by framebuffer fetch, then HDR and
+  // depth invalidated. Separate: post samples the HDR texture in a second framebuffer.
+  PostPath postPath = PostPath::Auto;
+  // As VulkanOptions::readBackHdr: keeps HDR (not invalidated) and reads it into FrameResult::hdr.
+  bool readBackHdr = true;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
 std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options, std::string* error);
-std::unique_ptr<RenderBackend> createGlBackend(std::string* error);
+std::unique_ptr<RenderBackend> createGlBackend(const GlOptions& options, std::string* error);
+std::unique_ptr<RenderBackend> createGlBackend(std::string* error);  // default GlOptions
 
-// Shaders of the post pass (templates/post_*.glsl), compiled at build time.
+// Shaders of the post pass, compiled at build time by the compiler's post domain (`matc post`,
+// compiler/include/facet/compiler/post.h) into a generated source: the runtime does not link
+// the compiler.
 struct PostShaders {
   const std::vector<uint32_t>& vertexSpirv;
-  const std::vector<uint32_t>& fragmentSpirv;
+  const std::vector<uint32_t>& fragmentSpirv;       // samples the stored HDR texture
+  const std::vector<uint32_t>& fragmentFetchSpirv;  // reads its own pixel through a subpassInput
   const std::string& vertexGlslEs;
-  const std::string& fragmentGlslEs;
+  const std::string& fragmentGlslEs;       // samples the stored HDR texture
+  const std::string& fragmentFetchGlslEs;  // GL_EXT_shader_framebuffer_fetch: HDR inout at 0, LDR at 1
 };
 const PostShaders& postShaders();
 

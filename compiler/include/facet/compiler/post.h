@@ -1,0 +1,46 @@
+// The post domain: the full-screen pass after the forward pass (tone mapping, sRGB encoding),
+// compiled through the same pipeline as materials (glslang -> spirv-val -> spirv-opt ->
+// SPIRV-Cross), in every form the runtime's two render paths need:
+//   sampled: the separate path, reading the stored HDR texture;
+//   fetch:   the merged path, reading the pixel's own HDR value in the same render pass
+//            (Vulkan subpassInput; GLES GL_EXT_shader_framebuffer_fetch `inout`; MSL [[color(0)]]).
+// Post variants are keyed by the effects enabled; an effect that is off is not in the shader.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace facet::compiler {
+
+struct PostEffects {
+  bool acesTonemap = true;  // chunks/tonemap_aces.glsl; off: HDR clamped to [0, 1]
+};
+
+// A stable name of the effects, e.g. "aces" or "none": the post variant key.
+std::string postVariantKey(const PostEffects& effects);
+
+struct PostStage {
+  std::vector<uint32_t> spirv;  // Vulkan flavour, optimized, validated
+  std::string glslEs;           // "#version 300 es" text
+  std::string msl;              // Metal (iOS, MSL 2.0)
+};
+
+struct PostShaders {
+  std::string key;
+  PostStage vertex;          // full-screen triangle, shared by both forms
+  PostStage sampledFragment; // separate path
+  // Merged path. glslang 12 rejects the GL_EXT_shader_framebuffer_fetch #extension, so the GLES
+  // text is assembled but not checked here: tests compile it with Mesa (OSMesa / EGL).
+  PostStage fetchFragment;
+};
+
+// Returns false with *error set when a backend rejects the assembled code (a compiler defect).
+bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error);
+
+// C++ source defining facet::runtime::postShaders() (runtime/include/facet/render_backend.h)
+// with these shaders' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
+// without linking the compiler.
+std::string postShadersCpp(const PostShaders& shaders);
+
+}  // namespace facet::compiler

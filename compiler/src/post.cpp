@@ -1,0 +1,164 @@
+#include "facet/compiler/post.h"
+
+#include <cstdio>
+
+#include "facet/compiler/assemble.h"
+#include "facet/compiler/glsl_library.h"
+#include "facet/compiler/glslang_backend.h"
+#include "facet/compiler/msl_backend.h"
+#include "facet/compiler/spirv_tools_backend.h"
+
+namespace facet::compiler {
+namespace {
+
+enum class PostRead { Sampled, SubpassInput, FramebufferFetch };
+
+// Prologue + the chunks the effects need + the template, as materials are assembled: the
+// Vulkan flavour is ES 3.10 with FACET_VULKAN, the GLES flavour ES 3.00.
+bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, const char* templateName,
+                  std::string* out, std::string* error) {
+  const auto& library = glslLibrary();
+  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n" : "#version 300 es\n";
+  if (read == PostRead::FramebufferFetch) text += "#extension GL_EXT_shader_framebuffer_fetch : require\n";
+  if (read == PostRead::SubpassInput) text += "#define FACET_POST_SUBPASS_INPUT 1\n";
+  if (read == PostRead::FramebufferFetch) text += "#define FACET_POST_FRAMEBUFFER_FETCH 1\n";
+  if (effects.acesTonemap) text += "#define FACET_POST_ACES 1\n";
+  text += "precision mediump float;\nprecision highp int;\n";
+  std::vector<std::string> files;
+  if (std::string(templateName).find(".frag.") != std::string::npos) {
+    if (effects.acesTonemap) files.push_back("tonemap_aces.glsl");
+    files.push_back("srgb.glsl");
+  }
+  files.push_back(templateName);
+  for (const std::string& name : files) {
+    auto found = library.find(name);
+    if (found == library.end()) {
+      *error = "internal error: post domain needs '" + name + "', which the compiler does not embed";
+      return false;
+    }
+    text += found->second;
+  }
+  *out = std::move(text);
+  return true;
+}
+
+// glslang's SPIR-V validated, optimized (spirv-opt -O) and validated again.
+bool finishStage(std::vector<uint32_t>* words, const std::string& what, std::string* error) {
+  std::string log;
+  if (!validateSpirv(*words, &log) || !optimizeSpirv(words, &log) || !validateSpirv(*words, &log)) {
+    *error = "post " + what + ": SPIR-V validation/optimization failed:\n" + log;
+    return false;
+  }
+  return true;
+}
+
+// Metal from the optimized SPIR-V, mediump as `half`, as materials get it.
+bool toMsl(const std::vector<uint32_t>& words, const std::string& what, std::string* msl, std::string* error) {
+  std::vector<uint32_t> metal = words;
+  std::string log;
+  if (!convertRelaxedToHalf(&metal, &log)) {
+    *error = "post " + what + ": spirv-opt --convert-relaxed-to-half failed:\n" + log;
+    return false;
+  }
+  return spirvToMsl(metal, msl, error);
+}
+
+// Compiles one fragment form with the vertex stage (glslang links both), checks GLSL ES where
+// glslang can, and fills the fragment's targets (and the vertex's, when asked).
+bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, PostStage* vertex, std::string* error) {
+  StageSources vk, es;
+  const PostRead esRead = read == PostRead::SubpassInput ? PostRead::FramebufferFetch : PostRead::Sampled;
+  if (!assemblePost(effects, Flavour::Vulkan, read, "post_fullscreen.vert.glsl", &vk.vertex, error) ||
+      !assemblePost(effects, Flavour::Vulkan, read, "post_tonemap.frag.glsl", &vk.fragment, error) ||
+      !assemblePost(effects, Flavour::GlslEs300, esRead, "post_fullscreen.vert.glsl", &es.vertex, error) ||
+      !assemblePost(effects, Flavour::GlslEs300, esRead, "post_tonemap.frag.glsl", &es.fragment, error)) {
+    return false;
+  }
+  const std::string what = read == PostRead::Sampled ? "sampled form" : "fetch form";
+  std::string log;
+  if (esRead == PostRead::Sampled && !checkGlslEs300(es, &log)) {
+    *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
+    return false;
+  }
+  SpirvStages spirv;
+  if (!compileToSpirv(vk, &spirv, &log)) {
+    *error = "post " + what + ": glslang failed:\n" + log;
+    return false;
+  }
+  if (!finishStage(&spirv.fragment, what, error) || !toMsl(spirv.fragment, what, &fragment->msl, error)) return false;
+  fragment->spirv = std::move(spirv.fragment);
+  fragment->glslEs = std::move(es.fragment);
+  if (vertex) {
+    if (!finishStage(&spirv.vertex, "vertex stage", error) || !toMsl(spirv.vertex, "vertex stage", &vertex->msl, error)) {
+      return false;
+    }
+    vertex->spirv = std::move(spirv.vertex);
+    vertex->glslEs = std::move(es.vertex);
+  }
+  return true;
+}
+
+void appendWords(std::string* cpp, const char* name, const std::vector<uint32_t>& words) {
+  *cpp += "const uint32_t ";
+  *cpp += name;
+  *cpp += "[] = {";
+  char word[16];
+  for (size_t i = 0; i < words.size(); ++i) {
+    if (i % 8 == 0) *cpp += "\n ";
+    std::snprintf(word, sizeof word, " 0x%08x,", words[i]);
+    *cpp += word;
+  }
+  *cpp += "\n};\n";
+}
+
+void appendText(std::string* cpp, const char* name, const std::string& text) {
+  *cpp += "const char ";
+  *cpp += name;
+  *cpp += "[] = R\"facet_glsl(" + text + ")facet_glsl\";\n";
+}
+
+}  // namespace
+
+std::string postVariantKey(const PostEffects& effects) { return effects.acesTonemap ? "aces" : "none"; }
+
+bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error) {
+  PostShaders shaders;
+  shaders.key = postVariantKey(effects);
+  if (!buildForm(effects, PostRead::Sampled, &shaders.sampledFragment, &shaders.vertex, error) ||
+      !buildForm(effects, PostRead::SubpassInput, &shaders.fetchFragment, nullptr, error)) {
+    return false;
+  }
+  *out = std::move(shaders);
+  return true;
+}
+
+std::string postShadersCpp(const PostShaders& shaders) {
+  std::string cpp =
+      "// Generated by `matc post` (compiler/src/post.cpp) from templates/post_* and chunks/. Do not edit.\n"
+      "// Post variant: " + shaders.key + "\n"
+      "#include <cstdint>\n#include <iterator>\n#include <string>\n#include <vector>\n\n"
+      "#include \"facet/render_backend.h\"\n\nnamespace {\n";
+  appendWords(&cpp, "kVertexSpirv", shaders.vertex.spirv);
+  appendWords(&cpp, "kSampledSpirv", shaders.sampledFragment.spirv);
+  appendWords(&cpp, "kFetchSpirv", shaders.fetchFragment.spirv);
+  appendText(&cpp, "kVertexEs", shaders.vertex.glslEs);
+  appendText(&cpp, "kSampledEs", shaders.sampledFragment.glslEs);
+  appendText(&cpp, "kFetchEs", shaders.fetchFragment.glslEs);
+  cpp +=
+      "}  // namespace\n\n"
+      "namespace facet::runtime {\n"
+      "const PostShaders& postShaders() {\n"
+      "  static const std::vector<uint32_t> vs(std::begin(kVertexSpirv), std::end(kVertexSpirv));\n"
+      "  static const std::vector<uint32_t> fs(std::begin(kSampledSpirv), std::end(kSampledSpirv));\n"
+      "  static const std::vector<uint32_t> fsFetch(std::begin(kFetchSpirv), std::end(kFetchSpirv));\n"
+      "  static const std::string vsText(kVertexEs);\n"
+      "  static const std::string fsText(kSampledEs);\n"
+      "  static const std::string fsFetchText(kFetchEs);\n"
+      "  static const PostShaders shaders{vs, fs, fsFetch, vsText, fsText, fsFetchText};\n"
+      "  return shaders;\n"
+      "}\n"
+      "}  // namespace facet::runtime\n";
+  return cpp;
+}
+
+}  // namespace facet::compiler

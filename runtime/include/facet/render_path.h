@@ -1,0 +1,35 @@
+// The frame Facet renders, as a frame graph: a forward pass into HDR colour + depth, then a post
+// pass writing LDR. How the post pass reads HDR decides the render path: its own pixel (merged:
+// one render pass, HDR and depth never leave tile memory) or the whole texture (separate: HDR is
+// stored and sampled back). Both backends and facet-view build their graph here, so the byte
+// counts they report are those of the path they run.
+#pragma once
+
+#include <cstdint>
+
+#include "facet/frame_graph.h"
+
+namespace facet::runtime {
+
+enum class PostPath {
+  Auto,      // merged when the backend supports it, else separate
+  Merged,    // post reads its own pixel: subpass input (Vulkan) / framebuffer fetch (GLES)
+  Separate,  // post samples the stored HDR texture
+};
+
+const char* toString(PostPath path);
+
+struct ForwardPostGraph {
+  fg::FrameGraph graph;
+  fg::ResourceId hdr = 0;    // RGBA16F
+  fg::ResourceId depth = 0;  // D32
+  fg::ResourceId ldr = 0;    // RGBA8, read after the frame (presented or read back)
+  uint32_t forwardPass = 0;
+  uint32_t postPass = 0;
+};
+
+// path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
+// which forces it to be stored.
+ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr);
+
+}  // namespace facet::runtime

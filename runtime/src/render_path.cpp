@@ -1,0 +1,25 @@
+#include "facet/render_path.h"
+
+namespace facet::runtime {
+
+const char* toString(PostPath path) {
+  switch (path) {
+    case PostPath::Auto: return "auto";
+    case PostPath::Merged: return "merged";
+    case PostPath::Separate: return "separate";
+  }
+  return "?";
+}
+
+ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr) {
+  ForwardPostGraph g;
+  g.hdr = g.graph.addResource({"hdr", width, height, 8, false, readBackHdr});
+  g.depth = g.graph.addResource({"depth", width, height, 4, true, false});
+  g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true});
+  g.forwardPass = g.graph.addPass({"forward", {}, {g.hdr, g.depth}, {g.hdr, g.depth}});
+  const fg::ReadKind read = path == PostPath::Separate ? fg::ReadKind::WholeTexture : fg::ReadKind::OwnPixel;
+  g.postPass = g.graph.addPass({"post", {{g.hdr, read}}, {g.ldr}, {}});
+  return g;
+}
+
+}  // namespace facet::runtime

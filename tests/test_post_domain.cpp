@@ -1,0 +1,75 @@
+// The compiler's post domain: every form of the post pass comes out of the same pipeline as
+// materials, the fetch forms read the pixel in the API's own way, and an effect that is off is
+// absent from the shaders.
+#include <gtest/gtest.h>
+
+#include "facet/compiler/post.h"
+#include "facet/compiler/spirv_tools_backend.h"
+
+namespace {
+
+using namespace facet::compiler;
+
+PostShaders build(const PostEffects& effects) {
+  PostShaders shaders;
+  std::string error;
+  EXPECT_TRUE(buildPostShaders(effects, &shaders, &error)) << error;
+  return shaders;
+}
+
+bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+TEST(PostDomain, EveryFormIsBuiltForEveryTarget) {
+  const PostShaders s = build({});
+  EXPECT_EQ(s.key, "aces");
+  for (const PostStage* stage : {&s.vertex, &s.sampledFragment, &s.fetchFragment}) {
+    std::string log;
+    EXPECT_TRUE(validateSpirv(stage->spirv, &log)) << log;
+    EXPECT_TRUE(contains(stage->glslEs, "#version 300 es"));
+    EXPECT_TRUE(contains(stage->msl, "main0"));
+  }
+}
+
+TEST(PostDomain, FetchFormsReadTheirOwnPixelInEachApi) {
+  const PostShaders s = build({});
+  // Vulkan: a subpass input.
+  EXPECT_TRUE(contains(disassembleSpirv(s.fetchFragment.spirv), "SubpassData"));
+  EXPECT_FALSE(contains(disassembleSpirv(s.sampledFragment.spirv), "SubpassData"));
+  // GLES: the framebuffer-fetch extension, HDR as an inout colour output 0, LDR at 1.
+  EXPECT_TRUE(contains(s.fetchFragment.glslEs, "#extension GL_EXT_shader_framebuffer_fetch : require"));
+  EXPECT_TRUE(contains(s.fetchFragment.glslEs, "#define FACET_POST_FRAMEBUFFER_FETCH"));
+  EXPECT_FALSE(contains(s.sampledFragment.glslEs, "#extension GL_EXT_shader_framebuffer_fetch"));
+  // Metal: HDR is a [[color(0)]] input, LDR the [[color(1)]] output.
+  EXPECT_TRUE(contains(s.fetchFragment.msl, "hdrColor [[color(0)]]")) << s.fetchFragment.msl;
+  EXPECT_TRUE(contains(s.fetchFragment.msl, "fragColor [[color(1)]]")) << s.fetchFragment.msl;
+  EXPECT_FALSE(contains(s.sampledFragment.msl, "[[color(0)]])")) << s.sampledFragment.msl;
+}
+
+TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
+  const PostShaders on = build({});
+  PostEffects noTonemap;
+  noTonemap.acesTonemap = false;
+  const PostShaders off = build(noTonemap);
+  EXPECT_NE(on.key, off.key);
+  // The chunk is not assembled in (its call sits in a preprocessor branch that is off), and
+  // nothing of it reaches the compiled targets.
+  const std::string definition = "vec3 tonemap_aces_fitted(vec3";
+  EXPECT_TRUE(contains(on.sampledFragment.glslEs, definition));
+  EXPECT_TRUE(contains(on.sampledFragment.glslEs, "#define FACET_POST_ACES"));
+  for (const PostStage* stage : {&off.sampledFragment, &off.fetchFragment}) {
+    EXPECT_FALSE(contains(stage->glslEs, definition)) << stage->glslEs;
+    EXPECT_FALSE(contains(stage->glslEs, "#define FACET_POST_ACES")) << stage->glslEs;
+    EXPECT_FALSE(contains(stage->msl, "tonemap_aces"));
+  }
+  // And it costs nothing: the optimized fragment is smaller without it.
+  EXPECT_LT(off.sampledFragment.spirv.size(), on.sampledFragment.spirv.size());
+}
+
+TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {
+  const std::string cpp = postShadersCpp(build({}));
+  EXPECT_TRUE(contains(cpp, "const PostShaders& postShaders()"));
+  EXPECT_TRUE(contains(cpp, "kFetchSpirv"));
+  EXPECT_TRUE(contains(cpp, "GL_EXT_shader_framebuffer_fetch"));
+}
+
+}  // namespace
