@@ -14,6 +14,7 @@ struct CompileArgs {
   std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
   std::string scene;       // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
+  unsigned jobs = 0;       // variants compiled at once; 0: one per hardware thread
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
 int compileCommand(const CompileArgs& args);

@@ -121,6 +121,8 @@ int compileCommand(const CompileArgs& args) {
 
   compiler::BuildOptions options;
   options.fp16Emulation = args.fp16Emulation;
+  options.emitSources = !args.emitSource.empty();
+  options.jobs = args.jobs;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);

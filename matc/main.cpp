@@ -12,7 +12,12 @@ int main(int argc, char** argv) {
   CLI::App* compileCmd = app.add_subcommand("compile", "compile a material into a .matpkg package");
   compileCmd->add_option("input", compile.input, "material source (.mat)")->required();
   compileCmd->add_option("-o,--output", compile.output, "package to write (default: <input>.matpkg)");
-  compileCmd->add_option("--emit-source", compile.emitSource, "also write every generated shader source to this folder");
+  compileCmd->add_option("--emit-source", compile.emitSource,
+                         "also write every generated shader source to this folder (readable GLSL, SPIR-V "
+                         "disassembly: produced only with this option)");
+  compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
+                         "package is byte-identical for any value")
+      ->check(CLI::Range(1u, 256u));
   compileCmd->add_option("--tiers", compile.tiers, "tiers to build (reference, high, ...); default: all supported")
       ->delimiter(',');
   compileCmd->add_option("--scene", compile.scene, "scene JSON: build only the variants this scene can request");

@@ -57,9 +57,18 @@ TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
   auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir +
                "/r.matpkg --emit-source " + dir + "/src");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm",
-                             "frag.spvasm", "vert.metal", "frag.metal"})
+  for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.es300.readable.glsl", "frag.es300.readable.glsl",
+                             "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm", "frag.spvasm", "vert.metal", "frag.metal"})
     EXPECT_TRUE(fs::exists(dir + "/src/red_plastic.high.dir1." + suffix)) << suffix;
+}
+
+TEST(MatcCli, OneAndTwoJobsWriteTheSameBytes) {
+  std::string dir = facet::test::scratchDir("cli-jobs");
+  std::string mat = facet::test::examplePath("materials/banded_ceramic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + mat + " -j 1 -o " + dir + "/one.matpkg").exitCode, 0);
+  ASSERT_EQ(run(kMatc + " compile " + mat + " -j 2 -o " + dir + "/two.matpkg").exitCode, 0);
+  EXPECT_EQ(facet::test::readText(dir + "/one.matpkg"), facet::test::readText(dir + "/two.matpkg"));
+  EXPECT_EQ(run(kMatc + " compile " + mat + " -j 0").exitCode, 2);
 }
 
 TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {

@@ -11,7 +11,9 @@
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
+#include "facet/compiler/minify_glsl.h"
 #include "lower_relaxed_to_quantized.h"
+#include "parallel_for.h"
 
 namespace facet::compiler {
 namespace {
@@ -105,6 +107,114 @@ void reportGlslangFailure(const std::string& log, const StageSources& sources, c
   failure->message = "internal error: generated " + what + " does not compile:\n" + log;
 }
 
+// What every variant of one material shares; read-only while variants build in parallel.
+struct MaterialContext {
+  const ir::Material& material;
+  const ir::SurfaceGlsl& surface;
+  const ParamLayout& layout;
+  const BuildOptions& options;
+};
+
+// One variant's share of the result, written by exactly one job.
+struct VariantBuild {
+  package::Variant variant;
+  std::vector<GeneratedFile> sources;
+  bool samplesSpecularLut = false;
+  BuildError failure;
+};
+
+// The GLSL ES 3.00 the package ships: preprocessed for this variant, then minified
+// (compiler/minify_glsl.h), and checked again as a driver would compile it. The readable text
+// was checked before this, so a failure here is the minifier's defect.
+bool shippedGlslEs(const StageSources& es, const std::string& keyText, StageSources* shipped, std::string* error) {
+  std::string log;
+  StageSources preprocessed;
+  if (!preprocessGlslEs300(es, &preprocessed, &log)) {
+    *error = "internal error: glslang cannot preprocess the GLSL ES 3.00 of variant " + keyText + ":\n" + log;
+    return false;
+  }
+  shipped->vertex = minifyPreprocessedGlsl(preprocessed.vertex);
+  shipped->fragment = minifyPreprocessedGlsl(preprocessed.fragment);
+  if (!checkGlslEs300(*shipped, &log)) {
+    *error = "internal error: minified GLSL ES 3.00 of variant " + keyText + " does not compile:\n" + log;
+    return false;
+  }
+  return true;
+}
+
+// Everything one variant needs, from assembly to its package entry. Runs on any thread.
+bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& key, VariantBuild* out) {
+  const ir::Material& material = ctx.material;
+  std::string* error = &out->failure.message;
+  const std::string keyText = key.toString();
+  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+  permutations::TierConfig tier = permutations::preset(key.tier);
+  for (const ir::TierOverride& o : material.tierOverrides)
+    if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
+  AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
+  StageSources es, vk;
+  if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
+
+  std::string log;
+  if (!checkGlslEs300(es, &log)) {
+    reportGlslangFailure(log, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, &out->failure);
+    return false;
+  }
+  StageSources shipped;
+  if (!shippedGlslEs(es, keyText, &shipped, error)) return false;
+  SpirvStages spirv;
+  if (!compileToSpirv(vk, &spirv, &log)) {
+    reportGlslangFailure(log, vk, ctx.surface, "SPIR-V for variant " + keyText, &out->failure);
+    return false;
+  }
+  // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
+  std::optional<SpirvStages> emulated;
+  if (ctx.options.fp16Emulation && tier.precision == permutations::PrecisionPolicy::Mediump) {
+    emulated = spirv;
+    if (!emulateFp16(&*emulated, error)) return false;
+  }
+  if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return false;
+  const SpirvStages& vulkan = emulated ? *emulated : spirv;
+  // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
+  std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
+  if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
+    *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + keyText + ":\n" + log;
+    return false;
+  }
+  std::string mslVertex, mslFragment;
+  if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return false;
+
+  if (ctx.options.emitSources) {
+    // Debug sources: the readable assembled text of both flavours beside what ships.
+    const std::string stem = material.name + "." + keyText;
+    out->sources = {
+        {stem + ".vert.es300.glsl", shipped.vertex},
+        {stem + ".frag.es300.glsl", shipped.fragment},
+        {stem + ".vert.es300.readable.glsl", es.vertex},
+        {stem + ".frag.es300.readable.glsl", es.fragment},
+        {stem + ".vert.vulkan.glsl", vk.vertex},
+        {stem + ".frag.vulkan.glsl", vk.fragment},
+        {stem + ".vert.spvasm", disassembleSpirv(vulkan.vertex)},
+        {stem + ".frag.spvasm", disassembleSpirv(vulkan.fragment)},
+        {stem + ".vert.metal", mslVertex},
+        {stem + ".frag.metal", mslFragment},
+    };
+  }
+  using package::Stage;
+  using package::Target;
+  out->variant.key = keyText;
+  out->variant.shaders = {
+      {Stage::Vertex, Target::GlslEs300, bytesOf(shipped.vertex)},
+      {Stage::Fragment, Target::GlslEs300, bytesOf(shipped.fragment)},
+      {Stage::Vertex, Target::Spirv, bytesOf(vulkan.vertex)},
+      {Stage::Fragment, Target::Spirv, bytesOf(vulkan.fragment)},
+      {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
+      {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
+  };
+  out->samplesSpecularLut = samplesSpecularLut(input);
+  return true;
+}
+
 }  // namespace
 
 const std::string& compilerVersion() {
@@ -112,8 +222,9 @@ const std::string& compilerVersion() {
   return version;
 }
 
+unsigned defaultJobs() { return defaultJobCount(); }
+
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
-  std::string* error = &failure->message;
   BuildResult result;
   ir::Material material = checked;
   ir::optimize(material);
@@ -125,67 +236,26 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   permutations::MaterialNeeds needs;
   needs.lit = material.shading == "lit";
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
+  const std::vector<permutations::VariantKey> keys = permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
+
+  // Jobs finish in any order; each writes only its own slot, and the slots are read in key order.
+  MaterialContext ctx{material, surface, layout, options};
+  std::vector<VariantBuild> builds(keys.size());
+  std::vector<char> done(keys.size(), 0);
+  parallelFor(keys.size(), options.jobs, [&](size_t i) {
+    done[i] = buildVariant(ctx, keys[i], &builds[i]);
+    return done[i] != 0;
+  });
+
   std::vector<uint32_t> lutVariants;  // indices of the variants that sample the specular table
-  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts)) {
-    const std::string keyText = key.toString();
-    // The tier's preset, with the material's overrides for that tier (checked by ir::check).
-    permutations::TierConfig tier = permutations::preset(key.tier);
-    for (const ir::TierOverride& o : material.tierOverrides)
-      if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
-    AssemblyInput input{material, surface, layout, key, tier, compilerVersion()};
-    StageSources es, vk;
-    if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return std::nullopt;
-    const std::string stem = material.name + "." + keyText;
-    result.sources.push_back({stem + ".vert.es300.glsl", es.vertex});
-    result.sources.push_back({stem + ".frag.es300.glsl", es.fragment});
-    result.sources.push_back({stem + ".vert.vulkan.glsl", vk.vertex});
-    result.sources.push_back({stem + ".frag.vulkan.glsl", vk.fragment});
-
-    std::string log;
-    if (!checkGlslEs300(es, &log)) {
-      reportGlslangFailure(log, es, surface, "GLSL ES 3.00 for variant " + keyText, failure);
+  for (size_t i = 0; i < keys.size(); ++i) {
+    if (!done[i]) {  // the first failure in key order, whatever the job count
+      *failure = std::move(builds[i].failure);
       return std::nullopt;
     }
-    SpirvStages spirv;
-    if (!compileToSpirv(vk, &spirv, &log)) {
-      reportGlslangFailure(log, vk, surface, "SPIR-V for variant " + keyText, failure);
-      return std::nullopt;
-    }
-    // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
-    std::optional<SpirvStages> emulated;
-    if (options.fp16Emulation && tier.precision == permutations::PrecisionPolicy::Mediump) {
-      emulated = spirv;
-      if (!emulateFp16(&*emulated, error)) return std::nullopt;
-    }
-    if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return std::nullopt;
-    const SpirvStages& vulkan = emulated ? *emulated : spirv;
-    // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
-    std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
-    if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
-      *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + keyText + ":\n" + log;
-      return std::nullopt;
-    }
-    std::string mslVertex, mslFragment;
-    if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return std::nullopt;
-    result.sources.push_back({stem + ".vert.spvasm", disassembleSpirv(vulkan.vertex)});
-    result.sources.push_back({stem + ".frag.spvasm", disassembleSpirv(vulkan.fragment)});
-    result.sources.push_back({stem + ".vert.metal", mslVertex});
-    result.sources.push_back({stem + ".frag.metal", mslFragment});
-
-    using package::Stage;
-    using package::Target;
-    package::Variant variant;
-    variant.key = keyText;
-    variant.shaders = {
-        {Stage::Vertex, Target::GlslEs300, bytesOf(es.vertex)},
-        {Stage::Fragment, Target::GlslEs300, bytesOf(es.fragment)},
-        {Stage::Vertex, Target::Spirv, bytesOf(vulkan.vertex)},
-        {Stage::Fragment, Target::Spirv, bytesOf(vulkan.fragment)},
-        {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
-        {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
-    };
-    if (samplesSpecularLut(input)) lutVariants.push_back(uint32_t(result.package.variants.size()));
-    result.package.variants.push_back(std::move(variant));
+    if (builds[i].samplesSpecularLut) lutVariants.push_back(uint32_t(result.package.variants.size()));
+    result.package.variants.push_back(std::move(builds[i].variant));
+    for (GeneratedFile& f : builds[i].sources) result.sources.push_back(std::move(f));
   }
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no
   // compiler code and the texels always match the chunk that decodes them.

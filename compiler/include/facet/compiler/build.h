@@ -25,7 +25,9 @@ struct GeneratedFile {
 
 struct BuildResult {
   package::Package package;
-  std::vector<GeneratedFile> sources;  // every generated source, for `matc compile --emit-source`
+  // With BuildOptions::emitSources: every generated source (`matc compile --emit-source`), in
+  // variant order; empty otherwise.
+  std::vector<GeneratedFile> sources;
 };
 
 struct BuildOptions {
@@ -37,6 +39,12 @@ struct BuildOptions {
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers
   // (`reference`) are unchanged. docs/fp16-emulation.md.
   bool fp16Emulation = false;
+  // Fill BuildResult::sources: the readable assembled GLSL of both flavours and the SPIR-V
+  // disassembly cost time and are only wanted for debugging.
+  bool emitSources = false;
+  // Variants compiled at once; 0: one per hardware thread. The result is byte-identical for any
+  // value.
+  unsigned jobs = 0;
 };
 
 struct BuildError {
@@ -45,6 +53,9 @@ struct BuildError {
   // surface program produced); unset for the compiler's own defects.
   std::optional<ir::SourceLoc> loc;
 };
+
+// The job count BuildOptions::jobs == 0 stands for (the hardware's thread count).
+unsigned defaultJobs();
 
 // Builds every variant. Returns nullopt with *error set when a backend rejects generated code.
 std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, BuildError* error);
