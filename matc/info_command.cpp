@@ -55,6 +55,7 @@ void printSummary(const package::ReadResult& r) {
   std::printf("material   %s\n", m.name.c_str());
   std::printf("shading    %s\nblending   %s\n", m.shading.c_str(), m.blending.c_str());
   std::printf("compiler   %s\n", pkg.compilerVersion.c_str());
+  std::printf("format     %u.%u\n", unsigned(r.formatMajor), unsigned(r.formatMinor));
   std::printf("parameters %zu (uniform block MaterialParams, %u bytes std140)\n", m.params.size(), m.paramBlockSize);
   for (const package::Param& p : m.params) {
     std::string range;
@@ -90,6 +91,9 @@ void printSummary(const package::ReadResult& r) {
                 static_cast<unsigned long long>(r.textureStats[i].rawSize),
                 static_cast<unsigned long long>(r.textureStats[i].storedSize));
   }
+  if (r.dictionaryStoredSize > 0)
+    std::printf("dictionary %llu bytes stored (shared by the shaders compressed against it)\n",
+                static_cast<unsigned long long>(r.dictionaryStoredSize));
   printCosts(pkg);
 }
 
