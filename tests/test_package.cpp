@@ -625,3 +625,33 @@ TEST(Package, TextureWhoseTexelsDoNotFitItsSizeIsRejected) {
   p.textures[0].variants = {2, 0};
   expectRejected(pkg::write(p), "indices must increase");
 }
+
+// The package fuzzer's seeds (real packages) and every finding it ever made
+// (tests/fuzz/package_corpus/, package_regressions/): each is read without crashing, a rejection
+// says why, and what reads writes and reads back to the same package (fuzz_package's invariants).
+TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
+  size_t seeds = 0;
+  for (const char* folder : {"package_corpus", "package_regressions"}) {
+    const std::filesystem::path dir = std::filesystem::path(FACET_SOURCE_DIR) / "tests/fuzz" / folder;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() == ".md") continue;
+      SCOPED_TRACE(entry.path().string());
+      std::ifstream in(entry.path(), std::ios::binary);
+      std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      pkg::ReadResult r = pkg::read(bytes);
+      if (std::string(folder) == "package_corpus") {
+        ++seeds;
+        ASSERT_TRUE(r.package.has_value()) << r.error;
+      }
+      if (!r.package) {
+        EXPECT_FALSE(r.error.empty());
+        continue;
+      }
+      const std::vector<uint8_t> written = pkg::write(*r.package);
+      pkg::ReadResult again = pkg::read(written);
+      ASSERT_TRUE(again.package.has_value()) << again.error;
+      EXPECT_EQ(pkg::write(*again.package), written);
+    }
+  }
+  EXPECT_EQ(seeds, 3u);
+}
