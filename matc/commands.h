@@ -11,6 +11,7 @@ struct CompileArgs {
   std::string input;
   std::string output;      // default: input with .matpkg
   std::string emitSource;  // folder for every generated source, or ""
+  std::string depfile;     // Makefile-syntax dependency file to write, or ""
   std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
   std::string scene;       // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene

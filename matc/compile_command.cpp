@@ -2,10 +2,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "commands.h"
 #include "facet/compiler/build.h"
+#include "facet/compiler/library_sources.h"
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 #include "facet/package.h"
@@ -60,6 +62,40 @@ bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedF
       printError(error);
       return false;
     }
+  }
+  return true;
+}
+
+// A path as a Makefile (and Ninja depfile) word: spaces and '#' escaped with '\\', '$' doubled.
+std::string makeWord(const std::string& path) {
+  std::string out;
+  for (char c : path) {
+    if (c == ' ' || c == '#') out += '\\';
+    if (c == '$') out += '$';
+    out += c;
+  }
+  return out;
+}
+
+// `output: inputs...` for Ninja/Make: the material, the scene, the matc executable (it embeds the
+// templates and chunks) and, while the source tree it was built from exists, every template and
+// chunk a built variant used, so editing one rebuilds the package.
+bool writeDepfile(const std::string& depfile, const std::string& output, const CompileArgs& args,
+                  const std::set<std::string>& libraryFiles) {
+  std::vector<std::string> inputs{args.input};
+  if (!args.scene.empty()) inputs.push_back(args.scene);
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) inputs.push_back(self.string());
+  for (const std::string& name : libraryFiles)
+    if (std::string path = compiler::librarySourcePath(name); !path.empty()) inputs.push_back(path);
+  std::string text = makeWord(output) + ":";
+  for (const std::string& in : inputs) text += " \\\n  " + makeWord(in);
+  text += "\n";
+  std::string error;
+  if (!package::writeFile(depfile, std::vector<uint8_t>(text.begin(), text.end()), &error)) {
+    printError(error);
+    return false;
   }
   return true;
 }
@@ -144,6 +180,7 @@ int compileCommand(const CompileArgs& args) {
     return 1;
   }
   if (!args.emitSource.empty() && !writeSources(args.emitSource, built->sources)) return 1;
+  if (!args.depfile.empty() && !writeDepfile(args.depfile, output, args, built->libraryFiles)) return 1;
   size_t variants = built->package.variants.size();
   std::string forScene;
   if (options.scene) {

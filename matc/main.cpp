@@ -15,6 +15,9 @@ int main(int argc, char** argv) {
   compileCmd->add_option("--emit-source", compile.emitSource,
                          "also write every generated shader source to this folder (readable GLSL, SPIR-V "
                          "disassembly: produced only with this option)");
+  compileCmd->add_option("--depfile", compile.depfile,
+                         "also write a Makefile-syntax depfile (package: material, scene, matc, templates and "
+                         "chunks used) for Ninja/Make");
   compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
                          "package is byte-identical for any value")
       ->check(CLI::Range(1u, 256u));

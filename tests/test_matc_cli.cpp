@@ -71,6 +71,21 @@ TEST(MatcCli, OneAndTwoJobsWriteTheSameBytes) {
   EXPECT_EQ(run(kMatc + " compile " + mat + " -j 0").exitCode, 2);
 }
 
+// Ninja/Make rebuild a package when its material or a template/chunk its variants used changes.
+TEST(MatcCli, DepfileListsTheMaterialAndTheChunksItsVariantsUsed) {
+  std::string dir = facet::test::scratchDir("cli-depfile");
+  std::string mat = facet::test::examplePath("materials/red_plastic.mat");
+  auto r = run(kMatc + " compile " + mat + " --tiers low -o '" + dir + "/my pkg.matpkg' --depfile " + dir + "/pkg.d");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::string depfile = facet::test::readText(dir + "/pkg.d");
+  EXPECT_EQ(depfile.rfind(dir + "/my\\ pkg.matpkg: \\\n", 0), 0u) << depfile;
+  for (const std::string& dep : {mat, facet::test::sourceDir() + "/chunks/specular_lut_lobe.glsl",
+                                 facet::test::sourceDir() + "/templates/forward_lit.frag.glsl"})
+    EXPECT_TRUE(depfile.find("  " + dep + " \\\n") != std::string::npos || depfile.find("  " + dep + "\n") != std::string::npos)
+        << dep << "\n" << depfile;
+  EXPECT_EQ(depfile.find("specular_zioma_lobe.glsl"), std::string::npos) << "another tier's chunk\n" << depfile;
+}
+
 TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {
   std::string dir = facet::test::scratchDir("cli-bad");
   std::string mat = write(dir, "bad.mat", "material bad {\n  surface {\n    roughness = 0.5 +\n  }\n}\n");

@@ -120,6 +120,7 @@ struct VariantBuild {
   package::Variant variant;
   std::vector<GeneratedFile> sources;
   bool samplesSpecularLut = false;
+  std::set<std::string> libraryFiles;
   BuildError failure;
 };
 
@@ -212,6 +213,8 @@ bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& ke
       {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
   };
   out->samplesSpecularLut = samplesSpecularLut(input);
+  out->libraryFiles = es.libraryFiles;
+  out->libraryFiles.insert(vk.libraryFiles.begin(), vk.libraryFiles.end());
   return true;
 }
 
@@ -256,6 +259,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     if (builds[i].samplesSpecularLut) lutVariants.push_back(uint32_t(result.package.variants.size()));
     result.package.variants.push_back(std::move(builds[i].variant));
     for (GeneratedFile& f : builds[i].sources) result.sources.push_back(std::move(f));
+    result.libraryFiles.insert(builds[i].libraryFiles.begin(), builds[i].libraryFiles.end());
   }
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no
   // compiler code and the texels always match the chunk that decodes them.

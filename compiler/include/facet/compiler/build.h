@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct BuildResult {
   // With BuildOptions::emitSources: every generated source (`matc compile --emit-source`), in
   // variant order; empty otherwise.
   std::vector<GeneratedFile> sources;
+  // The templates/ and chunks/ files (glslLibrary() names) any built variant was assembled from.
+  std::set<std::string> libraryFiles;
 };
 
 struct BuildOptions {
