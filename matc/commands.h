@@ -16,6 +16,8 @@ struct CompileArgs {
   std::string scene;       // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
   unsigned jobs = 0;       // variants compiled at once; 0: one per hardware thread
+  std::string cacheDir;    // --cache; "" for the default (defaultCacheDir())
+  bool noCache = false;    // --no-cache
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
 int compileCommand(const CompileArgs& args);

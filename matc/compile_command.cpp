@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -100,6 +101,13 @@ bool writeDepfile(const std::string& depfile, const std::string& output, const C
   return true;
 }
 
+// $XDG_CACHE_HOME/facet/matc, else $HOME/.cache/facet/matc (the XDG base directory default), else none.
+std::string defaultCacheDir() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/facet/matc";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/facet/matc";
+  return "";
+}
+
 // Tiers from --tiers, and the variants a --scene manifest asks this material for.
 int buildOptions(const CompileArgs& args, const ir::Material& material, compiler::BuildOptions* options) {
   const auto& supported = permutations::supportedTiers();
@@ -159,6 +167,7 @@ int compileCommand(const CompileArgs& args) {
   options.fp16Emulation = args.fp16Emulation;
   options.emitSources = !args.emitSource.empty();
   options.jobs = args.jobs;
+  if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
@@ -189,8 +198,10 @@ int compileCommand(const CompileArgs& args) {
                std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights).size()) +
                " without it)";
   }
-  std::printf("%s: %zu variant%s%s, %zu bytes -> %s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
-              forScene.c_str(), bytes.size(), output.c_str());
+  std::string cached;
+  if (built->cacheHits > 0) cached = " (" + std::to_string(built->cacheHits) + " from the cache)";
+  std::printf("%s: %zu variant%s%s, %zu bytes -> %s%s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
+              forScene.c_str(), bytes.size(), output.c_str(), cached.c_str());
   return 0;
 }
 

@@ -18,6 +18,11 @@ int main(int argc, char** argv) {
   compileCmd->add_option("--depfile", compile.depfile,
                          "also write a Makefile-syntax depfile (package: material, scene, matc, templates and "
                          "chunks used) for Ninja/Make");
+  CLI::Option* cacheOption = compileCmd->add_option(
+      "--cache", compile.cacheDir,
+      "cache of compiled variants (default: $XDG_CACHE_HOME/facet/matc or ~/.cache/facet/matc); the package is the same "
+      "bytes with or without it");
+  compileCmd->add_flag("--no-cache", compile.noCache, "neither read nor write the cache")->excludes(cacheOption);
   compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
                          "package is byte-identical for any value")
       ->check(CLI::Range(1u, 256u));

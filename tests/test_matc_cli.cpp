@@ -86,6 +86,21 @@ TEST(MatcCli, DepfileListsTheMaterialAndTheChunksItsVariantsUsed) {
   EXPECT_EQ(depfile.find("specular_zioma_lobe.glsl"), std::string::npos) << "another tier's chunk\n" << depfile;
 }
 
+TEST(MatcCli, CacheOptionsSelectTheCacheAndNoCacheTouchesNone) {
+  std::string dir = facet::test::scratchDir("cli-cache");
+  std::string mat = facet::test::examplePath("materials/brushed_gold.mat");
+  std::string compile = kMatc + " compile " + mat + " --tiers mid -o " + dir + "/g.matpkg";
+  auto cold = run(compile + " --cache " + dir + "/cache");
+  ASSERT_EQ(cold.exitCode, 0) << cold.err;
+  EXPECT_EQ(cold.out.find("from the cache"), std::string::npos) << cold.out;
+  auto warm = run(compile + " --cache " + dir + "/cache");
+  ASSERT_EQ(warm.exitCode, 0) << warm.err;
+  EXPECT_NE(warm.out.find("(2 from the cache)"), std::string::npos) << warm.out;
+  auto none = run(compile + " --no-cache");
+  EXPECT_EQ(none.out.find("from the cache"), std::string::npos) << none.out;
+  EXPECT_EQ(run(compile + " --no-cache --cache " + dir).exitCode, 2);
+}
+
 TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {
   std::string dir = facet::test::scratchDir("cli-bad");
   std::string mat = write(dir, "bad.mat", "material bad {\n  surface {\n    roughness = 0.5 +\n  }\n}\n");

@@ -14,6 +14,7 @@
 #include "facet/compiler/minify_glsl.h"
 #include "lower_relaxed_to_quantized.h"
 #include "parallel_for.h"
+#include "variant_cache.h"
 
 namespace facet::compiler {
 namespace {
@@ -113,6 +114,7 @@ struct MaterialContext {
   const ir::SurfaceGlsl& surface;
   const ParamLayout& layout;
   const BuildOptions& options;
+  const VariantCache& cache;
 };
 
 // One variant's share of the result, written by exactly one job.
@@ -120,6 +122,7 @@ struct VariantBuild {
   package::Variant variant;
   std::vector<GeneratedFile> sources;
   bool samplesSpecularLut = false;
+  bool cacheHit = false;
   std::set<std::string> libraryFiles;
   BuildError failure;
 };
@@ -143,29 +146,26 @@ bool shippedGlslEs(const StageSources& es, const std::string& keyText, StageSour
   return true;
 }
 
-// Everything one variant needs, from assembly to its package entry. Runs on any thread.
-bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& key, VariantBuild* out) {
-  const ir::Material& material = ctx.material;
-  std::string* error = &out->failure.message;
-  const std::string keyText = key.toString();
-  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
-  permutations::TierConfig tier = permutations::preset(key.tier);
-  for (const ir::TierOverride& o : material.tierOverrides)
-    if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
-  AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
-  StageSources es, vk;
-  if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
+std::vector<uint32_t> wordsOf(const std::vector<uint8_t>& bytes) {
+  std::vector<uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), words.size() * 4);
+  return words;
+}
 
+// The glslang, SPIRV-Tools and SPIRV-Cross work of one variant: what the cache saves.
+bool compileVariant(const MaterialContext& ctx, const permutations::TierConfig& tier, const StageSources& es,
+                    const StageSources& vk, const std::string& keyText, CompiledShaders* out, BuildError* failure) {
+  std::string* error = &failure->message;
   std::string log;
   if (!checkGlslEs300(es, &log)) {
-    reportGlslangFailure(log, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, &out->failure);
+    reportGlslangFailure(log, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, failure);
     return false;
   }
   StageSources shipped;
   if (!shippedGlslEs(es, keyText, &shipped, error)) return false;
   SpirvStages spirv;
   if (!compileToSpirv(vk, &spirv, &log)) {
-    reportGlslangFailure(log, vk, ctx.surface, "SPIR-V for variant " + keyText, &out->failure);
+    reportGlslangFailure(log, vk, ctx.surface, "SPIR-V for variant " + keyText, failure);
     return false;
   }
   // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
@@ -184,33 +184,59 @@ bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& ke
   }
   std::string mslVertex, mslFragment;
   if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return false;
+  *out = {bytesOf(shipped.vertex), bytesOf(shipped.fragment), bytesOf(vulkan.vertex),
+          bytesOf(vulkan.fragment), bytesOf(mslVertex),       bytesOf(mslFragment)};
+  return true;
+}
+
+// Everything one variant needs, from assembly to its package entry. Runs on any thread.
+bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& key, VariantBuild* out) {
+  const ir::Material& material = ctx.material;
+  std::string* error = &out->failure.message;
+  const std::string keyText = key.toString();
+  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+  permutations::TierConfig tier = permutations::preset(key.tier);
+  for (const ir::TierOverride& o : material.tierOverrides)
+    if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
+  AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
+  StageSources es, vk;
+  if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
+
+  // The same text compiles to the same code, so a cached variant skips every backend.
+  const std::string cacheKey = variantCacheKey(compilerVersion(), es, vk, ctx.options.fp16Emulation);
+  CompiledShaders shaders;
+  if (std::optional<CompiledShaders> cached = ctx.cache.load(cacheKey)) {
+    shaders = std::move(*cached);
+    out->cacheHit = true;
+  } else {
+    if (!compileVariant(ctx, tier, es, vk, keyText, &shaders, &out->failure)) return false;
+    ctx.cache.store(cacheKey, shaders);
+  }
 
   if (ctx.options.emitSources) {
     // Debug sources: the readable assembled text of both flavours beside what ships.
     const std::string stem = material.name + "." + keyText;
+    auto text = [&](size_t i) { return std::string(shaders[i].begin(), shaders[i].end()); };
     out->sources = {
-        {stem + ".vert.es300.glsl", shipped.vertex},
-        {stem + ".frag.es300.glsl", shipped.fragment},
+        {stem + ".vert.es300.glsl", text(0)},
+        {stem + ".frag.es300.glsl", text(1)},
         {stem + ".vert.es300.readable.glsl", es.vertex},
         {stem + ".frag.es300.readable.glsl", es.fragment},
         {stem + ".vert.vulkan.glsl", vk.vertex},
         {stem + ".frag.vulkan.glsl", vk.fragment},
-        {stem + ".vert.spvasm", disassembleSpirv(vulkan.vertex)},
-        {stem + ".frag.spvasm", disassembleSpirv(vulkan.fragment)},
-        {stem + ".vert.metal", mslVertex},
-        {stem + ".frag.metal", mslFragment},
+        {stem + ".vert.spvasm", disassembleSpirv(wordsOf(shaders[2]))},
+        {stem + ".frag.spvasm", disassembleSpirv(wordsOf(shaders[3]))},
+        {stem + ".vert.metal", text(4)},
+        {stem + ".frag.metal", text(5)},
     };
   }
   using package::Stage;
   using package::Target;
   out->variant.key = keyText;
   out->variant.shaders = {
-      {Stage::Vertex, Target::GlslEs300, bytesOf(shipped.vertex)},
-      {Stage::Fragment, Target::GlslEs300, bytesOf(shipped.fragment)},
-      {Stage::Vertex, Target::Spirv, bytesOf(vulkan.vertex)},
-      {Stage::Fragment, Target::Spirv, bytesOf(vulkan.fragment)},
-      {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
-      {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
+      {Stage::Vertex, Target::GlslEs300, std::move(shaders[0])}, {Stage::Fragment, Target::GlslEs300, std::move(shaders[1])},
+      {Stage::Vertex, Target::Spirv, std::move(shaders[2])},     {Stage::Fragment, Target::Spirv, std::move(shaders[3])},
+      {Stage::Vertex, Target::Msl, std::move(shaders[4])},       {Stage::Fragment, Target::Msl, std::move(shaders[5])},
   };
   out->samplesSpecularLut = samplesSpecularLut(input);
   out->libraryFiles = es.libraryFiles;
@@ -242,7 +268,8 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   const std::vector<permutations::VariantKey> keys = permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
 
   // Jobs finish in any order; each writes only its own slot, and the slots are read in key order.
-  MaterialContext ctx{material, surface, layout, options};
+  VariantCache cache(options.cacheDir);
+  MaterialContext ctx{material, surface, layout, options, cache};
   std::vector<VariantBuild> builds(keys.size());
   std::vector<char> done(keys.size(), 0);
   parallelFor(keys.size(), options.jobs, [&](size_t i) {
@@ -260,6 +287,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     result.package.variants.push_back(std::move(builds[i].variant));
     for (GeneratedFile& f : builds[i].sources) result.sources.push_back(std::move(f));
     result.libraryFiles.insert(builds[i].libraryFiles.begin(), builds[i].libraryFiles.end());
+    result.cacheHits += builds[i].cacheHit ? 1 : 0;
   }
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no
   // compiler code and the texels always match the chunk that decodes them.

@@ -31,6 +31,7 @@ struct BuildResult {
   std::vector<GeneratedFile> sources;
   // The templates/ and chunks/ files (glslLibrary() names) any built variant was assembled from.
   std::set<std::string> libraryFiles;
+  size_t cacheHits = 0;  // variants taken from BuildOptions::cacheDir instead of compiled
 };
 
 struct BuildOptions {
@@ -48,6 +49,9 @@ struct BuildOptions {
   // Variants compiled at once; 0: one per hardware thread. The result is byte-identical for any
   // value.
   unsigned jobs = 0;
+  // Content-addressed cache of compiled variants (compiler/src/variant_cache.h); "" for none.
+  // The package is the same bytes with or without it.
+  std::string cacheDir;
 };
 
 struct BuildError {
