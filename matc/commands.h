@@ -28,6 +28,7 @@ struct InfoArgs {
   std::string stage;
   std::string target;
   std::string scene;    // check the package has the variant this scene asks for
+  bool json = false;    // the summary as JSON
 };
 int infoCommand(const InfoArgs& args);
 

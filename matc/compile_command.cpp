@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -167,10 +168,19 @@ int compileCommand(const CompileArgs& args) {
   options.fp16Emulation = args.fp16Emulation;
   options.emitSources = !args.emitSource.empty();
   options.jobs = args.jobs;
+  // A progress line only where someone watches it: stderr on a terminal, redrawn in place and
+  // erased at the end; logs and pipes stay quiet.
+  const bool progressLine = isatty(fileno(stderr)) != 0;
+  if (progressLine)
+    options.progress = [&](size_t done, size_t total) {
+      std::fprintf(stderr, "\r%s: compiling variants %zu/%zu", material->name.c_str(), done, total);
+      std::fflush(stderr);
+    };
   if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
+  if (progressLine) std::fputs("\r\033[K", stderr);
   if (!built) {
     if (buildError.loc) {
       std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *buildError.loc, buildError.message, "backend"}).c_str(),

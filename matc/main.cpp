@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   infoCmd->add_option("input", info.input, "package (.matpkg)")->required();
   infoCmd->add_option("--variant", info.variant, "variant key, e.g. high.dir1 (with --stage and --target)");
   infoCmd->add_option("--scene", info.scene, "scene JSON: the variant it asks this material for, and whether it is built");
+  infoCmd->add_flag("--json", info.json, "print the summary as JSON (sizes, variants, parameters)");
   infoCmd->add_option("--stage", info.stage, "vertex | fragment")->check(CLI::IsMember({"vertex", "fragment"}));
   infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
       ->check(CLI::IsMember({"glsl_es_300", "spirv", "msl"}));

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "test_support.h"
 
 namespace {
@@ -99,6 +101,30 @@ TEST(MatcCli, CacheOptionsSelectTheCacheAndNoCacheTouchesNone) {
   auto none = run(compile + " --no-cache");
   EXPECT_EQ(none.out.find("from the cache"), std::string::npos) << none.out;
   EXPECT_EQ(run(compile + " --no-cache --cache " + dir).exitCode, 2);
+}
+
+// Without a terminal (as here: a pipe) compile prints no progress line; info --json is one JSON
+// document with what the text summary shows.
+TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
+  std::string dir = facet::test::scratchDir("cli-json");
+  auto c = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " + dir + "/r.matpkg");
+  ASSERT_EQ(c.exitCode, 0) << c.err;
+  EXPECT_EQ(c.err, "");
+  auto r = run(kMatc + " info " + dir + "/r.matpkg --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["material"], "red_plastic");
+  EXPECT_EQ(doc["format"], "1.1");
+  ASSERT_EQ(doc["variants"].size(), 8u);
+  EXPECT_EQ(doc["variants"][3]["key"], "high.dir1");
+  EXPECT_EQ(doc["variants"][3]["shaders"].size(), 6u);
+  uint64_t stored = doc["dictionaryStoredBytes"];
+  for (const auto& v : doc["variants"])
+    for (const auto& s : v["shaders"]) stored += s["storedBytes"].get<uint64_t>();
+  for (const auto& t : doc["textures"]) stored += t["storedBytes"].get<uint64_t>();
+  EXPECT_LT(stored, fs::file_size(dir + "/r.matpkg"));
+  EXPECT_EQ(doc["parameters"][1]["name"], "roughness");
+  EXPECT_EQ(doc["textures"][0]["variants"][0], "low.dir1");
 }
 
 TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {

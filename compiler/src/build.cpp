@@ -1,6 +1,7 @@
 #include "facet/compiler/build.h"
 
 #include <cstring>
+#include <mutex>
 
 #include "facet/compiler/assemble.h"
 #include "facet/compiler/backend_errors.h"
@@ -272,8 +273,14 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   MaterialContext ctx{material, surface, layout, options, cache};
   std::vector<VariantBuild> builds(keys.size());
   std::vector<char> done(keys.size(), 0);
+  std::mutex progressMutex;
+  size_t finished = 0;
   parallelFor(keys.size(), options.jobs, [&](size_t i) {
     done[i] = buildVariant(ctx, keys[i], &builds[i]);
+    if (options.progress) {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      options.progress(++finished, keys.size());
+    }
     return done[i] != 0;
   });
 

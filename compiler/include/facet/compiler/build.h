@@ -5,6 +5,7 @@
 //                                                      \-> SPIRV-Cross -> package (MSL)
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -52,6 +53,9 @@ struct BuildOptions {
   // Content-addressed cache of compiled variants (compiler/src/variant_cache.h); "" for none.
   // The package is the same bytes with or without it.
   std::string cacheDir;
+  // Called after each variant finishes (done of total), one call at a time, from any thread;
+  // matc draws its terminal progress line with it.
+  std::function<void(size_t done, size_t total)> progress;
 };
 
 struct BuildError {
