@@ -129,22 +129,14 @@ struct VariantBuild {
 };
 
 // The GLSL ES 3.00 the package ships: preprocessed for this variant, then minified
-// (compiler/minify_glsl.h), and checked again as a driver would compile it. The readable text
-// was checked before this, so a failure here is the minifier's defect.
-bool shippedGlslEs(const StageSources& es, const std::string& keyText, StageSources* shipped, std::string* error) {
-  std::string log;
+// (compiler/minify_glsl.h), and parsed and linked by glslang as a driver would. False with
+// glslang's log when either step fails.
+bool shippedGlslEs(const StageSources& es, StageSources* shipped, std::string* log) {
   StageSources preprocessed;
-  if (!preprocessGlslEs300(es, &preprocessed, &log)) {
-    *error = "internal error: glslang cannot preprocess the GLSL ES 3.00 of variant " + keyText + ":\n" + log;
-    return false;
-  }
+  if (!preprocessGlslEs300(es, &preprocessed, log)) return false;
   shipped->vertex = minifyPreprocessedGlsl(preprocessed.vertex);
   shipped->fragment = minifyPreprocessedGlsl(preprocessed.fragment);
-  if (!checkGlslEs300(*shipped, &log)) {
-    *error = "internal error: minified GLSL ES 3.00 of variant " + keyText + " does not compile:\n" + log;
-    return false;
-  }
-  return true;
+  return checkGlslEs300(*shipped, log);
 }
 
 std::vector<uint32_t> wordsOf(const std::vector<uint8_t>& bytes) {
@@ -158,12 +150,19 @@ bool compileVariant(const MaterialContext& ctx, const permutations::TierConfig& 
                     const StageSources& vk, const std::string& keyText, CompiledShaders* out, BuildError* failure) {
   std::string* error = &failure->message;
   std::string log;
-  if (!checkGlslEs300(es, &log)) {
-    reportGlslangFailure(log, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, failure);
+  StageSources shipped;
+  if (!shippedGlslEs(es, &shipped, &log)) {
+    // Only on failure is the readable text checked (one glslang parse saved per variant): its
+    // line numbers map an error back to the material; if it compiles, the minifier is at fault.
+    std::string readableLog;
+    if (!checkGlslEs300(es, &readableLog)) {
+      reportGlslangFailure(readableLog, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, failure);
+      return false;
+    }
+    *error = "internal error: the minified GLSL ES 3.00 of variant " + keyText + " does not compile:\n" + log;
     return false;
   }
-  StageSources shipped;
-  if (!shippedGlslEs(es, keyText, &shipped, error)) return false;
+  log.clear();
   SpirvStages spirv;
   if (!compileToSpirv(vk, &spirv, &log)) {
     reportGlslangFailure(log, vk, ctx.surface, "SPIR-V for variant " + keyText, failure);
