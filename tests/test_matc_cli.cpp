@@ -127,6 +127,18 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   EXPECT_EQ(doc["textures"][0]["variants"][0], "low.dir1");
 }
 
+// On a terminal (util-linux `script` gives matc a pseudo-terminal) the progress line counts the
+// variants and is erased before the result line.
+TEST(MatcCli, CompileDrawsAProgressLineOnATerminal) {
+  std::string dir = facet::test::scratchDir("cli-progress");
+  std::string compile = kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " +
+                        dir + "/r.matpkg";
+  auto r = run("script -qec '" + compile + "' /dev/null");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\rred_plastic: compiling variants 8/8\r\033[K"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("red_plastic: 8 variants,"), std::string::npos) << r.out;
+}
+
 TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {
   std::string dir = facet::test::scratchDir("cli-bad");
   std::string mat = write(dir, "bad.mat", "material bad {\n  surface {\n    roughness = 0.5 +\n  }\n}\n");
