@@ -251,8 +251,6 @@ const std::string& compilerVersion() {
   return version;
 }
 
-unsigned defaultJobs() { return defaultJobCount(); }
-
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
   BuildResult result;
   ir::Material material = checked;

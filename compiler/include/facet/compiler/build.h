@@ -65,9 +65,6 @@ struct BuildError {
   std::optional<ir::SourceLoc> loc;
 };
 
-// The job count BuildOptions::jobs == 0 stands for (the hardware's thread count).
-unsigned defaultJobs();
-
 // Builds every variant. Returns nullopt with *error set when a backend rejects generated code.
 std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, BuildError* error);
 
