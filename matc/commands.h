@@ -11,9 +11,13 @@ struct CompileArgs {
   std::string input;
   std::string output;      // default: input with .matpkg
   std::string emitSource;  // folder for every generated source, or ""
+  std::string depfile;     // Makefile-syntax dependency file to write, or ""
   std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
   std::string scene;       // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
+  unsigned jobs = 0;       // variants compiled at once; 0: one per hardware thread
+  std::string cacheDir;    // --cache; "" for the default (defaultCacheDir())
+  bool noCache = false;    // --no-cache
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
 int compileCommand(const CompileArgs& args);
@@ -24,6 +28,7 @@ struct InfoArgs {
   std::string stage;
   std::string target;
   std::string scene;    // check the package has the variant this scene asks for
+  bool json = false;    // the summary as JSON
 };
 int infoCommand(const InfoArgs& args);
 

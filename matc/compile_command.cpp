@@ -1,12 +1,16 @@
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "cli_inputs.h"
 #include "commands.h"
 #include "facet/compiler/build.h"
+#include "facet/compiler/library_sources.h"
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 #include "facet/package.h"
@@ -38,6 +42,47 @@ bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedF
     }
   }
   return true;
+}
+
+// A path as a Makefile (and Ninja depfile) word: spaces and '#' escaped with '\\', '$' doubled.
+std::string makeWord(const std::string& path) {
+  std::string out;
+  for (char c : path) {
+    if (c == ' ' || c == '#') out += '\\';
+    if (c == '$') out += '$';
+    out += c;
+  }
+  return out;
+}
+
+// `output: inputs...` for Ninja/Make: the material, the scene, the matc executable (it embeds the
+// templates and chunks) and, while the source tree it was built from exists, every template and
+// chunk a built variant used, so editing one rebuilds the package.
+bool writeDepfile(const std::string& depfile, const std::string& output, const CompileArgs& args,
+                  const std::set<std::string>& libraryFiles) {
+  std::vector<std::string> inputs{args.input};
+  if (!args.scene.empty()) inputs.push_back(args.scene);
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) inputs.push_back(self.string());
+  for (const std::string& name : libraryFiles)
+    if (std::string path = compiler::librarySourcePath(name); !path.empty()) inputs.push_back(path);
+  std::string text = makeWord(output) + ":";
+  for (const std::string& in : inputs) text += " \\\n  " + makeWord(in);
+  text += "\n";
+  std::string error;
+  if (!package::writeFile(depfile, std::vector<uint8_t>(text.begin(), text.end()), &error)) {
+    printError(error);
+    return false;
+  }
+  return true;
+}
+
+// $XDG_CACHE_HOME/facet/matc, else $HOME/.cache/facet/matc (the XDG base directory default), else none.
+std::string defaultCacheDir() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/facet/matc";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/facet/matc";
+  return "";
 }
 
 // Tiers from --tiers, and the variants a --scene manifest asks this material for.
@@ -83,9 +128,21 @@ int compileCommand(const CompileArgs& args) {
 
   compiler::BuildOptions options;
   options.fp16Emulation = args.fp16Emulation;
+  options.emitSources = !args.emitSource.empty();
+  options.jobs = args.jobs;
+  // A progress line only where someone watches it: stderr on a terminal, redrawn in place and
+  // erased at the end; logs and pipes stay quiet.
+  const bool progressLine = isatty(fileno(stderr)) != 0;
+  if (progressLine)
+    options.progress = [&](size_t done, size_t total) {
+      std::fprintf(stderr, "\r%s: compiling variants %zu/%zu", material->name.c_str(), done, total);
+      std::fflush(stderr);
+    };
+  if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
+  if (progressLine) std::fputs("\r\033[K", stderr);
   if (!built) {
     if (buildError.loc) {
       std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *buildError.loc, buildError.message, "backend"}).c_str(),
@@ -102,6 +159,7 @@ int compileCommand(const CompileArgs& args) {
     return 1;
   }
   if (!args.emitSource.empty() && !writeSources(args.emitSource, built->sources)) return 1;
+  if (!args.depfile.empty() && !writeDepfile(args.depfile, output, args, built->libraryFiles)) return 1;
   size_t variants = built->package.variants.size();
   std::string forScene;
   if (options.scene) {
@@ -110,8 +168,10 @@ int compileCommand(const CompileArgs& args) {
                std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights).size()) +
                " without it)";
   }
-  std::printf("%s: %zu variant%s%s, %zu bytes -> %s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
-              forScene.c_str(), bytes.size(), output.c_str());
+  std::string cached;
+  if (built->cacheHits > 0) cached = " (" + std::to_string(built->cacheHits) + " from the cache)";
+  std::printf("%s: %zu variant%s%s, %zu bytes -> %s%s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
+              forScene.c_str(), bytes.size(), output.c_str(), cached.c_str());
   return 0;
 }
 

@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <nlohmann/json.hpp>
+
 #include "commands.h"
 #include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
@@ -55,6 +57,7 @@ void printSummary(const package::ReadResult& r) {
   std::printf("material   %s\n", m.name.c_str());
   std::printf("shading    %s\nblending   %s\n", m.shading.c_str(), m.blending.c_str());
   std::printf("compiler   %s\n", pkg.compilerVersion.c_str());
+  std::printf("format     %u.%u\n", unsigned(r.formatMajor), unsigned(r.formatMinor));
   std::printf("parameters %zu (uniform block MaterialParams, %u bytes std140)\n", m.params.size(), m.paramBlockSize);
   for (const package::Param& p : m.params) {
     std::string range;
@@ -90,7 +93,63 @@ void printSummary(const package::ReadResult& r) {
                 static_cast<unsigned long long>(r.textureStats[i].rawSize),
                 static_cast<unsigned long long>(r.textureStats[i].storedSize));
   }
+  if (r.dictionaryStoredSize > 0)
+    std::printf("dictionary %llu bytes stored (shared by the shaders compressed against it)\n",
+                static_cast<unsigned long long>(r.dictionaryStoredSize));
   printCosts(pkg);
+}
+
+// The summary as one JSON document, for scripts and build tools: what printSummary shows, minus
+// the static cost table (matc lint's business), with sizes as numbers.
+void printJson(const package::ReadResult& r) {
+  const package::Package& pkg = *r.package;
+  nlohmann::ordered_json doc;
+  doc["material"] = pkg.material.name;
+  doc["shading"] = pkg.material.shading;
+  doc["blending"] = pkg.material.blending;
+  doc["compiler"] = pkg.compilerVersion;
+  doc["format"] = std::to_string(r.formatMajor) + "." + std::to_string(r.formatMinor);
+  doc["paramBlockSize"] = pkg.material.paramBlockSize;
+  doc["parameters"] = nlohmann::ordered_json::array();
+  for (const package::Param& p : pkg.material.params) {
+    nlohmann::ordered_json param{{"name", p.name}, {"type", package::toString(p.type)}, {"default", p.defaultValue}};
+    if (p.rangeMin) param["min"] = *p.rangeMin;
+    if (p.rangeMax) param["max"] = *p.rangeMax;
+    if (package::isTexture(p.type)) {
+      param["samplerSlot"] = p.offset == package::kNoTextureSlot ? nlohmann::ordered_json() : nlohmann::ordered_json(p.offset);
+    } else {
+      param["offset"] = p.offset;
+      param["size"] = p.size;
+    }
+    doc["parameters"].push_back(std::move(param));
+  }
+  doc["variants"] = nlohmann::ordered_json::array();
+  for (size_t i = 0; i < pkg.variants.size(); ++i) {
+    nlohmann::ordered_json shaders = nlohmann::ordered_json::array();
+    for (size_t j = 0; j < pkg.variants[i].shaders.size(); ++j) {
+      const package::Shader& s = pkg.variants[i].shaders[j];
+      shaders.push_back({{"stage", package::toString(s.stage)},
+                         {"target", package::toString(s.target)},
+                         {"bytes", r.stats[i][j].rawSize},
+                         {"storedBytes", r.stats[i][j].storedSize}});
+    }
+    doc["variants"].push_back({{"key", pkg.variants[i].key}, {"shaders", std::move(shaders)}});
+  }
+  doc["textures"] = nlohmann::ordered_json::array();
+  for (size_t i = 0; i < pkg.textures.size(); ++i) {
+    const package::Texture& t = pkg.textures[i];
+    nlohmann::ordered_json users = nlohmann::ordered_json::array();
+    for (uint32_t v : t.variants) users.push_back(pkg.variants[v].key);
+    doc["textures"].push_back({{"name", t.name},
+                               {"format", package::toString(t.format)},
+                               {"width", t.width},
+                               {"height", t.height},
+                               {"variants", std::move(users)},
+                               {"bytes", r.textureStats[i].rawSize},
+                               {"storedBytes", r.textureStats[i].storedSize}});
+  }
+  doc["dictionaryStoredBytes"] = r.dictionaryStoredSize;
+  std::printf("%s\n", doc.dump(2).c_str());
 }
 
 int printShader(const package::Package& pkg, const InfoArgs& args) {
@@ -153,7 +212,11 @@ int infoCommand(const InfoArgs& args) {
   }
   if (wantsShader) return printShader(*r.package, args);
   if (!args.scene.empty()) return printSceneNeeds(*r.package, args.scene);
-  printSummary(r);
+  if (args.json) {
+    printJson(r);
+  } else {
+    printSummary(r);
+  }
   return 0;
 }
 

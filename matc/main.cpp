@@ -15,7 +15,20 @@ int main(int argc, char** argv) {
   CLI::App* compileCmd = app.add_subcommand("compile", "compile a material into a .matpkg package");
   compileCmd->add_option("input", compile.input, "material source (.mat)")->required();
   compileCmd->add_option("-o,--output", compile.output, "package to write (default: <input>.matpkg)");
-  compileCmd->add_option("--emit-source", compile.emitSource, "also write every generated shader source to this folder");
+  compileCmd->add_option("--emit-source", compile.emitSource,
+                         "also write every generated shader source to this folder (readable GLSL, SPIR-V "
+                         "disassembly: produced only with this option)");
+  compileCmd->add_option("--depfile", compile.depfile,
+                         "also write a Makefile-syntax depfile (package: material, scene, matc, templates and "
+                         "chunks used) for Ninja/Make");
+  CLI::Option* cacheOption = compileCmd->add_option(
+      "--cache", compile.cacheDir,
+      "cache of compiled variants (default: $XDG_CACHE_HOME/facet/matc or ~/.cache/facet/matc); the package is the same "
+      "bytes with or without it");
+  compileCmd->add_flag("--no-cache", compile.noCache, "neither read nor write the cache")->excludes(cacheOption);
+  compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
+                         "package is byte-identical for any value")
+      ->check(CLI::Range(1u, 256u));
   compileCmd->add_option("--tiers", compile.tiers, "tiers to build (reference, high, ...); default: all supported")
       ->delimiter(',');
   compileCmd->add_option("--scene", compile.scene, "scene JSON: build only the variants this scene can request");
@@ -32,6 +45,7 @@ int main(int argc, char** argv) {
   infoCmd->add_option("input", info.input, "package (.matpkg)")->required();
   infoCmd->add_option("--variant", info.variant, "variant key, e.g. high.dir1 (with --stage and --target)");
   infoCmd->add_option("--scene", info.scene, "scene JSON: the variant it asks this material for, and whether it is built");
+  infoCmd->add_flag("--json", info.json, "print the summary as JSON (sizes, variants, parameters)");
   infoCmd->add_option("--stage", info.stage, "vertex | fragment")->check(CLI::IsMember({"vertex", "fragment"}));
   infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
       ->check(CLI::IsMember({"glsl_es_300", "spirv", "msl"}));

@@ -1,16 +1,21 @@
 #!/usr/bin/env bash
-# Fuzzes the material front end (lexer, parser, checker, GLSL emission) for a bounded time:
-#   scripts/fuzz.sh [seconds]        default 60
+# Fuzzes the material front end (lexer, parser, checker, GLSL emission), the package reader, the
+# scene loader and the image decoders, each for a bounded time:
+#   scripts/fuzz.sh [seconds]        default 60, per target
 # Builds the clang configuration build/fuzz (-DFACET_FUZZ=ON: libFuzzer + ASan + UBSan) and runs
 # tests/fuzz/fuzz_material from the seed corpus tests/fuzz/corpus/ and every past finding in
-# tests/fuzz/regressions/, with the dictionary tests/fuzz/material.dict. New inputs go to a
-# temporary working corpus, so the committed corpus never churns.
+# tests/fuzz/regressions/, with the dictionary tests/fuzz/material.dict; then
+# tests/fuzz/fuzz_package from real packages (tests/fuzz/package_corpus/) and its past findings
+# (tests/fuzz/package_regressions/), most mutants resealed with a recomputed checksum; then
+# tests/fuzz/fuzz_scene from examples/scenes/ and tests/fuzz/fuzz_image from examples/textures/. New inputs
+# go to a temporary working corpus, so the committed corpus never churns.
 #
 # Fails (non-zero) on any crash, sanitizer report, leak, hang (> 5 s per input) or out-of-memory
 # (> 2 GiB); the input that did it is left in build/fuzz/crashes/. To turn it into a regression:
 #   build/fuzz/tests/fuzz/fuzz_material -minimize_crash=1 -runs=100000 \
 #     -exact_artifact_path=tests/fuzz/regressions/<name>.mat build/fuzz/crashes/<file>
-# then fix the bug; tests/test_fuzz_regressions.cpp replays that folder in every test run.
+# (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg) then fix the bug;
+# tests/test_fuzz_regressions.cpp and tests/test_package.cpp replay those folders in every test run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -25,30 +30,41 @@ bash scripts/setup-deps.sh
 dir=build/fuzz
 CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DFACET_FUZZ=ON -DFACET_BUILD_TESTS=OFF -DFACET_WERROR=OFF >/dev/null
-cmake --build "$dir" --target fuzz_material --parallel "$(nproc)"
-fuzzer=$(pwd)/$dir/tests/fuzz/fuzz_material
-
+cmake --build "$dir" --target fuzz_material fuzz_package fuzz_scene fuzz_image --parallel "$(nproc)"
 mkdir -p "$dir/crashes"
-work=$(mktemp -d "$(pwd)/$dir/work.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-log=$dir/fuzz.log
 
-echo "fuzz: running fuzz_material for ${seconds}s (log: $log)"
-status=0
-# The first corpus folder is the writable working corpus; the committed ones are read only.
-"$fuzzer" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 -print_final_stats=1 \
-  -dict=tests/fuzz/material.dict -artifact_prefix="$(pwd)/$dir/crashes/" \
-  "$work" tests/fuzz/corpus tests/fuzz/regressions >"$log" 2>&1 || status=$?
+# fuzz <target> <dict or ""> <committed corpus folders...>
+fuzz() {
+  local target=$1 dict=$2
+  shift 2
+  local fuzzer=$(pwd)/$dir/tests/fuzz/$target
+  local work
+  work=$(mktemp -d "$(pwd)/$dir/work.XXXXXX")
+  local log=$dir/$target.log
+  echo "fuzz: running $target for ${seconds}s (log: $log)"
+  local status=0
+  # The first corpus folder is the writable working corpus; the committed ones are read only.
+  "$fuzzer" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 -print_final_stats=1 \
+    ${dict:+-dict=$dict} -artifact_prefix="$(pwd)/$dir/crashes/" \
+    "$work" "$@" >"$log" 2>&1 || status=$?
+  rm -rf "$work"
 
-runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
-[ -n "$runs" ] || runs=$(sed -n 's/^#\([0-9]*\).*/\1/p' "$log" | tail -n 1)  # no stats after a crash
-cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1 | tr -dc '0-9' || true)
-features=$(grep -o 'ft: [0-9]*' "$log" | tail -n 1 | tr -dc '0-9' || true)
-if [ "$status" -ne 0 ]; then
-  tail -n 60 "$log"
-  echo "fuzz: FAILED (exit $status) after ${runs:-?} runs; the input is in $dir/crashes/:"
-  ls -t "$dir/crashes" | head -n 5 | sed "s|^|  $dir/crashes/|"
-  echo "fuzz: reproduce with  $dir/tests/fuzz/fuzz_material <input>  (minimise into tests/fuzz/regressions/, see the top of this script)"
-  exit 1
-fi
-echo "fuzz: OK, ${runs:-?} runs in ${seconds}s, coverage ${cov:-?} edges, ${features:-?} features, no crashes"
+  local runs cov features
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  [ -n "$runs" ] || runs=$(sed -n 's/^#\([0-9]*\).*/\1/p' "$log" | tail -n 1)  # no stats after a crash
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1 | tr -dc '0-9' || true)
+  features=$(grep -o 'ft: [0-9]*' "$log" | tail -n 1 | tr -dc '0-9' || true)
+  if [ "$status" -ne 0 ]; then
+    tail -n 60 "$log"
+    echo "fuzz: $target FAILED (exit $status) after ${runs:-?} runs; the input is in $dir/crashes/:"
+    ls -t "$dir/crashes" | head -n 5 | sed "s|^|  $dir/crashes/|"
+    echo "fuzz: reproduce with  $dir/tests/fuzz/$target <input>  (minimise into the regressions folder, see the top of this script)"
+    exit 1
+  fi
+  echo "fuzz: $target OK, ${runs:-?} runs in ${seconds}s, coverage ${cov:-?} edges, ${features:-?} features, no crashes"
+}
+
+fuzz fuzz_material tests/fuzz/material.dict tests/fuzz/corpus tests/fuzz/regressions
+fuzz fuzz_package "" tests/fuzz/package_corpus tests/fuzz/package_regressions
+fuzz fuzz_scene "" examples/scenes
+fuzz fuzz_image "" examples/textures tests/fuzz/image_regressions

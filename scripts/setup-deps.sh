@@ -19,6 +19,9 @@ packages=(
   # fuzzing (scripts/fuzz.sh): clang, its libFuzzer/ASan/UBSan runtimes (libclang_rt.fuzzer),
   # and llvm-symbolizer for readable sanitizer stack traces
   clang libclang-rt-14-dev llvm
+  # compile-path benchmarks (tests/ target bench_compile, not run by ctest): Google Benchmark,
+  # and Filament's matc as the peer it is measured against
+  libbenchmark-dev libfilament-tools
 )
 
 SUDO=""

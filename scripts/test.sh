@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs the whole test suite, as CI does:
 #   build/test  warnings as errors (-Werror), RelWithDebInfo
-#   build/fuzz  the material front end fuzzed for FACET_FUZZ_SECONDS (default 90): clang,
+#   build/fuzz  materials, packages, scenes and images fuzzed for FACET_FUZZ_SECONDS each (default 60): clang,
 #               libFuzzer + ASan + UBSan (scripts/fuzz.sh); a crash, leak or hang fails the run
 #   build/asan  AddressSanitizer + UndefinedBehaviorSanitizer, Debug (last, so the run closes
 #               with ctest's summary line)
@@ -25,7 +25,7 @@ run_suite build/test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_WERROR=ON
 
 # The seed corpus and every past finding already ran in the suite above (test_fuzz_regressions);
 # this explores new inputs for a bounded time, well inside CI's 90-minute limit.
-bash scripts/fuzz.sh "${FACET_FUZZ_SECONDS:-90}"
+bash scripts/fuzz.sh "${FACET_FUZZ_SECONDS:-60}"
 
 # Mesa's OSMesa keeps a few hundred bytes per context for the process lifetime; those
 # reports are Mesa's, listed in tests/lsan.supp. Our code gets no suppression.

@@ -102,3 +102,30 @@ TEST(Examples, NoChunkOrTemplateDeclaresANameInTheMaterialSamplerNamespace) {
       EXPECT_EQ(text.find("facet_material_"), std::string::npos) << entry.path();
     }
 }
+
+// Variants compile on a thread pool; the package may not depend on how many jobs ran.
+TEST(Examples, PackageIsByteIdenticalForOneAndTwoJobs) {
+  const std::string path = facet::test::examplePath("materials/red_plastic.mat");
+  facet::compiler::BuildOptions one, two;
+  one.jobs = 1;
+  two.jobs = 2;
+  one.pointLightCounts = two.pointLightCounts = {0, 1, 2};
+  auto a = facet::test::buildFile(path, one);
+  auto b = facet::test::buildFile(path, two);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(facet::package::write(a->package), facet::package::write(b->package));
+}
+
+// Debug sources (readable GLSL, SPIR-V disassembly) are produced only when asked for.
+TEST(Examples, DebugSourcesOnlyWithEmitSources) {
+  const std::string path = facet::test::examplePath("materials/red_plastic.mat");
+  facet::compiler::BuildOptions quiet, emitting;
+  quiet.tiers = emitting.tiers = {facet::permutations::Tier::High};
+  emitting.emitSources = true;
+  auto a = facet::test::buildFile(path, quiet);
+  auto b = facet::test::buildFile(path, emitting);
+  ASSERT_TRUE(a && b);
+  EXPECT_TRUE(a->sources.empty());
+  EXPECT_EQ(b->sources.size(), 10u * b->package.variants.size());
+  EXPECT_EQ(facet::package::write(a->package), facet::package::write(b->package));
+}

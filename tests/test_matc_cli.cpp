@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "test_support.h"
 
 namespace {
@@ -57,9 +59,84 @@ TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
   auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir +
                "/r.matpkg --emit-source " + dir + "/src");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm",
-                             "frag.spvasm", "vert.metal", "frag.metal"})
+  for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.es300.readable.glsl", "frag.es300.readable.glsl",
+                             "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm", "frag.spvasm", "vert.metal", "frag.metal"})
     EXPECT_TRUE(fs::exists(dir + "/src/red_plastic.high.dir1." + suffix)) << suffix;
+}
+
+TEST(MatcCli, OneAndTwoJobsWriteTheSameBytes) {
+  std::string dir = facet::test::scratchDir("cli-jobs");
+  std::string mat = facet::test::examplePath("materials/banded_ceramic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + mat + " -j 1 -o " + dir + "/one.matpkg").exitCode, 0);
+  ASSERT_EQ(run(kMatc + " compile " + mat + " -j 2 -o " + dir + "/two.matpkg").exitCode, 0);
+  EXPECT_EQ(facet::test::readText(dir + "/one.matpkg"), facet::test::readText(dir + "/two.matpkg"));
+  EXPECT_EQ(run(kMatc + " compile " + mat + " -j 0").exitCode, 2);
+}
+
+// Ninja/Make rebuild a package when its material or a template/chunk its variants used changes.
+TEST(MatcCli, DepfileListsTheMaterialAndTheChunksItsVariantsUsed) {
+  std::string dir = facet::test::scratchDir("cli-depfile");
+  std::string mat = facet::test::examplePath("materials/red_plastic.mat");
+  auto r = run(kMatc + " compile " + mat + " --tiers low -o '" + dir + "/my pkg.matpkg' --depfile " + dir + "/pkg.d");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::string depfile = facet::test::readText(dir + "/pkg.d");
+  EXPECT_EQ(depfile.rfind(dir + "/my\\ pkg.matpkg: \\\n", 0), 0u) << depfile;
+  for (const std::string& dep : {mat, facet::test::sourceDir() + "/chunks/specular_lut_lobe.glsl",
+                                 facet::test::sourceDir() + "/templates/forward_lit.frag.glsl"})
+    EXPECT_TRUE(depfile.find("  " + dep + " \\\n") != std::string::npos || depfile.find("  " + dep + "\n") != std::string::npos)
+        << dep << "\n" << depfile;
+  EXPECT_EQ(depfile.find("specular_zioma_lobe.glsl"), std::string::npos) << "another tier's chunk\n" << depfile;
+}
+
+TEST(MatcCli, CacheOptionsSelectTheCacheAndNoCacheTouchesNone) {
+  std::string dir = facet::test::scratchDir("cli-cache");
+  std::string mat = facet::test::examplePath("materials/brushed_gold.mat");
+  std::string compile = kMatc + " compile " + mat + " --tiers mid -o " + dir + "/g.matpkg";
+  auto cold = run(compile + " --cache " + dir + "/cache");
+  ASSERT_EQ(cold.exitCode, 0) << cold.err;
+  EXPECT_EQ(cold.out.find("from the cache"), std::string::npos) << cold.out;
+  auto warm = run(compile + " --cache " + dir + "/cache");
+  ASSERT_EQ(warm.exitCode, 0) << warm.err;
+  EXPECT_NE(warm.out.find("(2 from the cache)"), std::string::npos) << warm.out;
+  auto none = run(compile + " --no-cache");
+  EXPECT_EQ(none.out.find("from the cache"), std::string::npos) << none.out;
+  EXPECT_EQ(run(compile + " --no-cache --cache " + dir).exitCode, 2);
+}
+
+// Without a terminal (as here: a pipe) compile prints no progress line; info --json is one JSON
+// document with what the text summary shows.
+TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
+  std::string dir = facet::test::scratchDir("cli-json");
+  auto c = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " + dir + "/r.matpkg");
+  ASSERT_EQ(c.exitCode, 0) << c.err;
+  EXPECT_EQ(c.err, "");
+  auto r = run(kMatc + " info " + dir + "/r.matpkg --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["material"], "red_plastic");
+  EXPECT_EQ(doc["format"], "1.1");
+  ASSERT_EQ(doc["variants"].size(), 8u);
+  EXPECT_EQ(doc["variants"][3]["key"], "high.dir1");
+  EXPECT_EQ(doc["variants"][3]["shaders"].size(), 6u);
+  uint64_t stored = doc["dictionaryStoredBytes"];
+  for (const auto& v : doc["variants"])
+    for (const auto& s : v["shaders"]) stored += s["storedBytes"].get<uint64_t>();
+  for (const auto& t : doc["textures"]) stored += t["storedBytes"].get<uint64_t>();
+  EXPECT_LT(stored, fs::file_size(dir + "/r.matpkg"));
+  EXPECT_EQ(doc["parameters"][1]["name"], "roughness");
+  EXPECT_EQ(doc["textures"][0]["variants"][0], "low.dir1");
+}
+
+// On a terminal (util-linux `script` gives matc a pseudo-terminal) the progress line counts the
+// variants and is erased before the result line.
+TEST(MatcCli, CompileDrawsAProgressLineOnATerminal) {
+  std::string dir = facet::test::scratchDir("cli-progress");
+  std::string compile = kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " +
+                        dir + "/r.matpkg";
+  auto r = run("script -qec '" + compile + "' /dev/null");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\rred_plastic: compiling variants 8/8\r\033[K"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("red_plastic: 8 variants,"), std::string::npos) << r.out;
 }
 
 TEST(MatcCli, MalformedMaterialExitsOneWithLocatedErrorAndNoOutput) {

@@ -226,7 +226,8 @@ TEST(Package, TextIsCompressedAndRandomBytesAreStoredRaw) {
   ASSERT_TRUE(r.package.has_value()) << r.error;
   const pkg::ShaderStats& glsl = r.stats[0][0];
   EXPECT_LT(glsl.storedSize * 4, glsl.rawSize);
-  const pkg::ShaderStats& spirv = r.stats[0][3];
+  // Variant 1's random SPIR-V: not the dictionary's representative of its kind (variant 0's is).
+  const pkg::ShaderStats& spirv = r.stats[1][3];
   EXPECT_EQ(spirv.storedSize, spirv.rawSize);
 }
 
@@ -257,15 +258,112 @@ TEST(Package, FlippedByteIsRejectedWithChecksumError) {
   }
 }
 
-TEST(Package, NewerFormatVersionIsRejectedWithClearError) {
+// Format versions (docs/package-format.md, "Format version"): crafted headers, checksum resealed.
+TEST(Package, NewerMinorIsRefusedNamingBothVersionsAndTheRebuildCommand) {
   std::vector<uint8_t> bytes = pkg::write(samplePackage());
-  storeLE(bytes, 8, pkg::kFormatVersion + 1, 4);
+  storeLE(bytes, 10, pkg::kFormatMinor + 1, 2);
   resealChecksum(bytes);
   pkg::ReadResult r = pkg::read(bytes);
   EXPECT_FALSE(r.package.has_value());
-  EXPECT_EQ(r.error, "package format version " + std::to_string(pkg::kFormatVersion + 1) +
-                         " is newer than this runtime supports (" +
-                         std::to_string(pkg::kFormatVersion) + ")");
+  const std::string ours = std::to_string(pkg::kFormatMajor) + "." + std::to_string(pkg::kFormatMinor);
+  const std::string theirs = std::to_string(pkg::kFormatMajor) + "." + std::to_string(pkg::kFormatMinor + 1);
+  EXPECT_EQ(r.error, "package format " + theirs + " is not supported: this reader reads formats " +
+                         std::to_string(pkg::kFormatMajor) + ".0 to " + ours +
+                         " (the package was built by a newer compiler); rebuild it with this release's compiler: "
+                         "matc compile MATERIAL.mat -o PACKAGE.matpkg");
+}
+
+TEST(Package, OtherMajorVersionsAreRefusedAndZeroIsInvalid) {
+  const std::vector<uint8_t> good = pkg::write(samplePackage());
+  expectEditRejected(good, [](auto& b) { storeLE(b, 8, pkg::kFormatMajor + 1, 2); },
+                     "package format " + std::to_string(pkg::kFormatMajor + 1) + ".1 is not supported");
+  expectEditRejected(good, [](auto& b) { storeLE(b, 8, pkg::kFormatMajor + 1, 2); }, "built by a newer compiler");
+  expectEditRejected(good, [](auto& b) { storeLE(b, 8, 0, 2); }, "package format version 0.1 at byte 8 is not valid");
+}
+
+// A package that uses nothing newer than 1.0 is stamped 1.0, so readers from before 1.1 load it;
+// this reader loads it too (an older minor of its own major).
+TEST(Package, PackageWithoutNewerFeaturesIsStampedOneZeroAndLoads) {
+  pkg::Package p = samplePackage();
+  p.variants.resize(1);
+  p.variants[0].shaders.resize(1);
+  p.textures.clear();
+  std::vector<uint8_t> bytes = pkg::write(p);
+  EXPECT_EQ(loadLE(bytes, 8, 2), 1u);
+  EXPECT_EQ(loadLE(bytes, 10, 2), 0u);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  EXPECT_EQ(r.formatMinor, 0u);
+}
+
+// The byte-for-byte example of docs/package-format.md, as the 1.0 writer produced it.
+TEST(Package, FormatOneZeroPackageFromTheFormatDocumentLoads) {
+  const std::vector<uint8_t> bytes = {
+      0x89, 0x46, 0x50, 0x4b, 0x47, 0x0d, 0x0a, 0x1a, 0x01, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x56, 0x01, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x05, 0xae, 0xc1, 0x91, 0xba, 0x48, 0xca, 0x56, 0x4d, 0x45, 0x54, 0x41, 0x00, 0x00,
+      0x00, 0x00, 0x80, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x6b, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x56,
+      0x41, 0x52, 0x53, 0x00, 0x00, 0x00, 0x00, 0xf0, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x24, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x42, 0x54, 0x41, 0x42, 0x00, 0x00, 0x00, 0x00, 0x18, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x2c, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x42, 0x44, 0x41, 0x54, 0x00, 0x00, 0x00, 0x00, 0x48, 0x01,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x0e, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x0a, 0x00, 0x00, 0x00, 0x6d,
+      0x61, 0x74, 0x63, 0x20, 0x30, 0x2e, 0x31, 0x2e, 0x30, 0x09, 0x00, 0x00, 0x00, 0x75, 0x6e, 0x6c, 0x69, 0x74, 0x5f,
+      0x72, 0x65, 0x64, 0x05, 0x00, 0x00, 0x00, 0x75, 0x6e, 0x6c, 0x69, 0x74, 0x06, 0x00, 0x00, 0x00, 0x6f, 0x70, 0x61,
+      0x71, 0x75, 0x65, 0x10, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x74, 0x69, 0x6e,
+      0x74, 0x06, 0x00, 0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0xf0, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0xf0, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x08, 0x00, 0x00,
+      0x00, 0x74, 0x69, 0x65, 0x72, 0x3d, 0x6c, 0x6f, 0x77, 0x02, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x31,
+      0x68, 0x4b, 0xcb, 0x6d, 0x72, 0x64, 0x18, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x0e, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x0e, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x76, 0x6f, 0x69, 0x64, 0x20, 0x6d, 0x61, 0x69, 0x6e, 0x28, 0x29, 0x7b, 0x7d, 0x0a};
+  ASSERT_EQ(bytes.size(), 342u);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(r.formatMinor, 0u);
+  EXPECT_EQ(r.package->material.name, "unlit_red");
+  ASSERT_EQ(r.package->variants.size(), 1u);
+  EXPECT_EQ(textCode("void main(){}\n"), r.package->variants[0].shaders[1].code);
+  // Written again by this writer: the same bytes (nothing in it needs 1.1).
+  EXPECT_EQ(pkg::write(*r.package), bytes);
+}
+
+// Format 1.1: shader blobs compressed against one dictionary blob; each decodes with only it.
+TEST(Package, ShaderBlobsAreCompressedAgainstOneDictionaryBlob) {
+  pkg::Package p = samplePackage();
+  std::vector<uint8_t> bytes = pkg::write(p);
+  EXPECT_EQ(loadLE(bytes, 10, 2), 1u);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  EXPECT_GT(r.dictionaryStoredSize, 0u);
+  const size_t table = sectionOffset(bytes, "BTAB");
+  const uint32_t count = uint32_t(loadLE(bytes, table, 4));
+  size_t dictionaryCoded = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const size_t entry = table + 4 + 40 * i;
+    if (loadLE(bytes, entry + 32, 4) != 2) continue;
+    ++dictionaryCoded;
+    EXPECT_EQ(loadLE(bytes, entry + 36, 4), count - 1) << "blob " << i;  // the dictionary comes last
+  }
+  EXPECT_GE(dictionaryCoded, 3u);
+}
+
+TEST(Package, HostileDictionaryReferencesAreRejected) {
+  const std::vector<uint8_t> good = pkg::write(samplePackage());
+  const size_t table = sectionOffset(good, "BTAB");
+  const uint32_t count = uint32_t(loadLE(good, table, 4));
+  size_t coded = 0;  // the first dictionary-coded blob's table entry
+  for (uint32_t i = 0; i < count && !coded; ++i)
+    if (loadLE(good, table + 4 + 40 * i + 32, 4) == 2) coded = table + 4 + 40 * i;
+  ASSERT_NE(coded, 0u);
+  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 36, count, 4); }, "names dictionary blob");
+  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 36, uint32_t((coded - table - 4) / 40), 4); },
+                     "itself compressed against a dictionary");
+  expectEditRejected(good, [&](auto& b) { storeLE(b, 10, 0, 2); }, "which format 1.0 does not have");
+  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 32, 1, 4); }, "names a dictionary but its codec does not use one");
+  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 32, 3, 4); }, "unknown codec 3");
 }
 
 TEST(Package, NonPackageIsRejectedByMagic) {
@@ -526,4 +624,34 @@ TEST(Package, TextureWhoseTexelsDoNotFitItsSizeIsRejected) {
   p = samplePackage();
   p.textures[0].variants = {2, 0};
   expectRejected(pkg::write(p), "indices must increase");
+}
+
+// The package fuzzer's seeds (real packages) and every finding it ever made
+// (tests/fuzz/package_corpus/, package_regressions/): each is read without crashing, a rejection
+// says why, and what reads writes and reads back to the same package (fuzz_package's invariants).
+TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
+  size_t seeds = 0;
+  for (const char* folder : {"package_corpus", "package_regressions"}) {
+    const std::filesystem::path dir = std::filesystem::path(FACET_SOURCE_DIR) / "tests/fuzz" / folder;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() == ".md") continue;
+      SCOPED_TRACE(entry.path().string());
+      std::ifstream in(entry.path(), std::ios::binary);
+      std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      pkg::ReadResult r = pkg::read(bytes);
+      if (std::string(folder) == "package_corpus") {
+        ++seeds;
+        ASSERT_TRUE(r.package.has_value()) << r.error;
+      }
+      if (!r.package) {
+        EXPECT_FALSE(r.error.empty());
+        continue;
+      }
+      const std::vector<uint8_t> written = pkg::write(*r.package);
+      pkg::ReadResult again = pkg::read(written);
+      ASSERT_TRUE(again.package.has_value()) << again.error;
+      EXPECT_EQ(pkg::write(*again.package), written);
+    }
+  }
+  EXPECT_EQ(seeds, 3u);
 }

@@ -275,8 +275,8 @@ TEST(ShaderAbi, ParameterRangedBeyondFp16IsAHighpUniform) {
     if (s.target != facet::package::Target::GlslEs300 || s.stage != facet::package::Stage::Fragment) continue;
     ++checked;
     std::string glsl(s.code.begin(), s.code.end());
-    EXPECT_NE(glsl.find("    highp float distance;"), std::string::npos) << glsl;
-    EXPECT_NE(glsl.find("    mediump float scale;"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("\nhighp float distance;"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("\nmediump float scale;"), std::string::npos) << glsl;
   }
   EXPECT_EQ(checked, 1);
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -100,6 +101,8 @@ std::string scratchDir(const std::string& name) {
 }
 
 CommandResult run(const std::string& command) {
+  // matc caches compiled variants under $XDG_CACHE_HOME; tests never touch the user's cache.
+  setenv("XDG_CACHE_HOME", (std::string(FACET_BINARY_DIR) + "/test-cache").c_str(), 1);
   std::string errFile = scratchDir("run-stderr") + "/stderr.txt";
   CommandResult r;
   FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");

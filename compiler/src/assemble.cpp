@@ -265,9 +265,13 @@ bool expandIncludes(const std::string& text, const AssemblyInput& in, std::set<s
   return true;
 }
 
-bool expandIncludes(const std::string& text, const AssemblyInput& in, std::string* out, std::string* error) {
+bool expandIncludes(const std::string& text, const AssemblyInput& in, std::string* out, std::set<std::string>* used,
+                    std::string* error) {
   std::set<std::string> included;
-  return expandIncludes(text, in, included, 0, out, error);
+  if (!expandIncludes(text, in, included, 0, out, error)) return false;
+  for (const std::string& name : included)
+    if (name.rfind("facet:", 0) != 0) used->insert(name);
+  return true;
 }
 
 bool templateText(const char* name, const std::string** text, std::string* error) {
@@ -302,7 +306,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
 
   std::string vs = prologue(in, flavour, "vertex", "highp");
   vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameAndObjectBlocks(flavour) + "\n";
-  if (!expandIncludes(*vertexTemplate, in, &vs, error)) return false;
+  out->libraryFiles = {"forward.vert.glsl", fragmentName};
+  if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
 
   // The fragment stage's default float precision is the tier's policy: mediump (fp16 on mobile)
   // with the clamps of precision.glsl, or highp for the reference tier.
@@ -312,7 +317,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
         iblSamplers(in, flavour, fragmentPrecision) + "\n";
-  if (!expandIncludes(*fragmentTemplate, in, &fs, error)) return false;
+  if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;
   const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
   if (size_t at = fs.find(bodyStart); at != std::string::npos)
     out->fragmentSurfaceLine = uint32_t(std::count(fs.begin(), fs.begin() + long(at), '\n')) + 2;

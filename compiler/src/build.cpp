@@ -1,6 +1,7 @@
 #include "facet/compiler/build.h"
 
 #include <cstring>
+#include <mutex>
 
 #include "facet/compiler/assemble.h"
 #include "facet/compiler/backend_errors.h"
@@ -11,7 +12,10 @@
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
+#include "facet/compiler/minify_glsl.h"
 #include "lower_relaxed_to_quantized.h"
+#include "parallel_for.h"
+#include "variant_cache.h"
 
 namespace facet::compiler {
 namespace {
@@ -105,6 +109,141 @@ void reportGlslangFailure(const std::string& log, const StageSources& sources, c
   failure->message = "internal error: generated " + what + " does not compile:\n" + log;
 }
 
+// What every variant of one material shares; read-only while variants build in parallel.
+struct MaterialContext {
+  const ir::Material& material;
+  const ir::SurfaceGlsl& surface;
+  const ParamLayout& layout;
+  const BuildOptions& options;
+  const VariantCache& cache;
+};
+
+// One variant's share of the result, written by exactly one job.
+struct VariantBuild {
+  package::Variant variant;
+  std::vector<GeneratedFile> sources;
+  bool samplesSpecularLut = false;
+  bool cacheHit = false;
+  std::set<std::string> libraryFiles;
+  BuildError failure;
+};
+
+// The GLSL ES 3.00 the package ships: preprocessed for this variant, then minified
+// (compiler/minify_glsl.h), and parsed and linked by glslang as a driver would. False with
+// glslang's log when either step fails.
+bool shippedGlslEs(const StageSources& es, StageSources* shipped, std::string* log) {
+  StageSources preprocessed;
+  if (!preprocessGlslEs300(es, &preprocessed, log)) return false;
+  shipped->vertex = minifyPreprocessedGlsl(preprocessed.vertex);
+  shipped->fragment = minifyPreprocessedGlsl(preprocessed.fragment);
+  return checkGlslEs300(*shipped, log);
+}
+
+std::vector<uint32_t> wordsOf(const std::vector<uint8_t>& bytes) {
+  std::vector<uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), words.size() * 4);
+  return words;
+}
+
+// The glslang, SPIRV-Tools and SPIRV-Cross work of one variant: what the cache saves.
+bool compileVariant(const MaterialContext& ctx, const permutations::TierConfig& tier, const StageSources& es,
+                    const StageSources& vk, const std::string& keyText, CompiledShaders* out, BuildError* failure) {
+  std::string* error = &failure->message;
+  std::string log;
+  StageSources shipped;
+  if (!shippedGlslEs(es, &shipped, &log)) {
+    // Only on failure is the readable text checked (one glslang parse saved per variant): its
+    // line numbers map an error back to the material; if it compiles, the minifier is at fault.
+    std::string readableLog;
+    if (!checkGlslEs300(es, &readableLog)) {
+      reportGlslangFailure(readableLog, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, failure);
+      return false;
+    }
+    *error = "internal error: the minified GLSL ES 3.00 of variant " + keyText + " does not compile:\n" + log;
+    return false;
+  }
+  log.clear();
+  SpirvStages spirv;
+  if (!compileToSpirv(vk, &spirv, &log)) {
+    reportGlslangFailure(log, vk, ctx.surface, "SPIR-V for variant " + keyText, failure);
+    return false;
+  }
+  // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
+  std::optional<SpirvStages> emulated;
+  if (ctx.options.fp16Emulation && tier.precision == permutations::PrecisionPolicy::Mediump) {
+    emulated = spirv;
+    if (!emulateFp16(&*emulated, error)) return false;
+  }
+  if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return false;
+  const SpirvStages& vulkan = emulated ? *emulated : spirv;
+  // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
+  std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
+  if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
+    *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + keyText + ":\n" + log;
+    return false;
+  }
+  std::string mslVertex, mslFragment;
+  if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return false;
+  *out = {bytesOf(shipped.vertex), bytesOf(shipped.fragment), bytesOf(vulkan.vertex),
+          bytesOf(vulkan.fragment), bytesOf(mslVertex),       bytesOf(mslFragment)};
+  return true;
+}
+
+// Everything one variant needs, from assembly to its package entry. Runs on any thread.
+bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& key, VariantBuild* out) {
+  const ir::Material& material = ctx.material;
+  std::string* error = &out->failure.message;
+  const std::string keyText = key.toString();
+  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+  permutations::TierConfig tier = permutations::preset(key.tier);
+  for (const ir::TierOverride& o : material.tierOverrides)
+    if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
+  AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
+  StageSources es, vk;
+  if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
+
+  // The same text compiles to the same code, so a cached variant skips every backend.
+  const std::string cacheKey = variantCacheKey(compilerVersion(), es, vk, ctx.options.fp16Emulation);
+  CompiledShaders shaders;
+  if (std::optional<CompiledShaders> cached = ctx.cache.load(cacheKey)) {
+    shaders = std::move(*cached);
+    out->cacheHit = true;
+  } else {
+    if (!compileVariant(ctx, tier, es, vk, keyText, &shaders, &out->failure)) return false;
+    ctx.cache.store(cacheKey, shaders);
+  }
+
+  if (ctx.options.emitSources) {
+    // Debug sources: the readable assembled text of both flavours beside what ships.
+    const std::string stem = material.name + "." + keyText;
+    auto text = [&](size_t i) { return std::string(shaders[i].begin(), shaders[i].end()); };
+    out->sources = {
+        {stem + ".vert.es300.glsl", text(0)},
+        {stem + ".frag.es300.glsl", text(1)},
+        {stem + ".vert.es300.readable.glsl", es.vertex},
+        {stem + ".frag.es300.readable.glsl", es.fragment},
+        {stem + ".vert.vulkan.glsl", vk.vertex},
+        {stem + ".frag.vulkan.glsl", vk.fragment},
+        {stem + ".vert.spvasm", disassembleSpirv(wordsOf(shaders[2]))},
+        {stem + ".frag.spvasm", disassembleSpirv(wordsOf(shaders[3]))},
+        {stem + ".vert.metal", text(4)},
+        {stem + ".frag.metal", text(5)},
+    };
+  }
+  using package::Stage;
+  using package::Target;
+  out->variant.key = keyText;
+  out->variant.shaders = {
+      {Stage::Vertex, Target::GlslEs300, std::move(shaders[0])}, {Stage::Fragment, Target::GlslEs300, std::move(shaders[1])},
+      {Stage::Vertex, Target::Spirv, std::move(shaders[2])},     {Stage::Fragment, Target::Spirv, std::move(shaders[3])},
+      {Stage::Vertex, Target::Msl, std::move(shaders[4])},       {Stage::Fragment, Target::Msl, std::move(shaders[5])},
+  };
+  out->samplesSpecularLut = samplesSpecularLut(input);
+  out->libraryFiles = es.libraryFiles;
+  out->libraryFiles.insert(vk.libraryFiles.begin(), vk.libraryFiles.end());
+  return true;
+}
+
 }  // namespace
 
 const std::string& compilerVersion() {
@@ -113,7 +252,6 @@ const std::string& compilerVersion() {
 }
 
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
-  std::string* error = &failure->message;
   BuildResult result;
   ir::Material material = checked;
   ir::optimize(material);
@@ -125,67 +263,35 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   permutations::MaterialNeeds needs;
   needs.lit = material.shading == "lit";
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
+  const std::vector<permutations::VariantKey> keys = permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
+
+  // Jobs finish in any order; each writes only its own slot, and the slots are read in key order.
+  VariantCache cache(options.cacheDir);
+  MaterialContext ctx{material, surface, layout, options, cache};
+  std::vector<VariantBuild> builds(keys.size());
+  std::vector<char> done(keys.size(), 0);
+  std::mutex progressMutex;
+  size_t finished = 0;
+  parallelFor(keys.size(), options.jobs, [&](size_t i) {
+    done[i] = buildVariant(ctx, keys[i], &builds[i]);
+    if (options.progress) {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      options.progress(++finished, keys.size());
+    }
+    return done[i] != 0;
+  });
+
   std::vector<uint32_t> lutVariants;  // indices of the variants that sample the specular table
-  for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts)) {
-    const std::string keyText = key.toString();
-    // The tier's preset, with the material's overrides for that tier (checked by ir::check).
-    permutations::TierConfig tier = permutations::preset(key.tier);
-    for (const ir::TierOverride& o : material.tierOverrides)
-      if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
-    AssemblyInput input{material, surface, layout, key, tier, compilerVersion()};
-    StageSources es, vk;
-    if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return std::nullopt;
-    const std::string stem = material.name + "." + keyText;
-    result.sources.push_back({stem + ".vert.es300.glsl", es.vertex});
-    result.sources.push_back({stem + ".frag.es300.glsl", es.fragment});
-    result.sources.push_back({stem + ".vert.vulkan.glsl", vk.vertex});
-    result.sources.push_back({stem + ".frag.vulkan.glsl", vk.fragment});
-
-    std::string log;
-    if (!checkGlslEs300(es, &log)) {
-      reportGlslangFailure(log, es, surface, "GLSL ES 3.00 for variant " + keyText, failure);
+  for (size_t i = 0; i < keys.size(); ++i) {
+    if (!done[i]) {  // the first failure in key order, whatever the job count
+      *failure = std::move(builds[i].failure);
       return std::nullopt;
     }
-    SpirvStages spirv;
-    if (!compileToSpirv(vk, &spirv, &log)) {
-      reportGlslangFailure(log, vk, surface, "SPIR-V for variant " + keyText, failure);
-      return std::nullopt;
-    }
-    // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
-    std::optional<SpirvStages> emulated;
-    if (options.fp16Emulation && tier.precision == permutations::PrecisionPolicy::Mediump) {
-      emulated = spirv;
-      if (!emulateFp16(&*emulated, error)) return std::nullopt;
-    }
-    if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return std::nullopt;
-    const SpirvStages& vulkan = emulated ? *emulated : spirv;
-    // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
-    std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
-    if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
-      *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + keyText + ":\n" + log;
-      return std::nullopt;
-    }
-    std::string mslVertex, mslFragment;
-    if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return std::nullopt;
-    result.sources.push_back({stem + ".vert.spvasm", disassembleSpirv(vulkan.vertex)});
-    result.sources.push_back({stem + ".frag.spvasm", disassembleSpirv(vulkan.fragment)});
-    result.sources.push_back({stem + ".vert.metal", mslVertex});
-    result.sources.push_back({stem + ".frag.metal", mslFragment});
-
-    using package::Stage;
-    using package::Target;
-    package::Variant variant;
-    variant.key = keyText;
-    variant.shaders = {
-        {Stage::Vertex, Target::GlslEs300, bytesOf(es.vertex)},
-        {Stage::Fragment, Target::GlslEs300, bytesOf(es.fragment)},
-        {Stage::Vertex, Target::Spirv, bytesOf(vulkan.vertex)},
-        {Stage::Fragment, Target::Spirv, bytesOf(vulkan.fragment)},
-        {Stage::Vertex, Target::Msl, bytesOf(mslVertex)},
-        {Stage::Fragment, Target::Msl, bytesOf(mslFragment)},
-    };
-    if (samplesSpecularLut(input)) lutVariants.push_back(uint32_t(result.package.variants.size()));
-    result.package.variants.push_back(std::move(variant));
+    if (builds[i].samplesSpecularLut) lutVariants.push_back(uint32_t(result.package.variants.size()));
+    result.package.variants.push_back(std::move(builds[i].variant));
+    for (GeneratedFile& f : builds[i].sources) result.sources.push_back(std::move(f));
+    result.libraryFiles.insert(builds[i].libraryFiles.begin(), builds[i].libraryFiles.end());
+    result.cacheHits += builds[i].cacheHit ? 1 : 0;
   }
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no
   // compiler code and the texels always match the chunk that decodes them.

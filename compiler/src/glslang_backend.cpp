@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <mutex>
+#include <tuple>
 
 namespace facet::compiler {
 namespace {
@@ -70,6 +71,23 @@ bool compileToSpirv(const StageSources& sources, SpirvStages* out, std::string* 
   std::string messages = logger.getAllMessages();
   if (!messages.empty()) *log += messages;
   return !out->vertex.empty() && !out->fragment.empty();
+}
+
+bool preprocessGlslEs300(const StageSources& sources, StageSources* out, std::string* log) {
+  initializeOnce();
+  for (auto [stage, in, result] : {std::tuple{EShLangVertex, &sources.vertex, &out->vertex},
+                                   std::tuple{EShLangFragment, &sources.fragment, &out->fragment}}) {
+    glslang::TShader shader(stage);
+    const char* strings[] = {in->c_str()};
+    shader.setStrings(strings, 1);
+    glslang::TShader::ForbidIncluder includer;
+    if (!shader.preprocess(GetDefaultResources(), 300, EEsProfile, false, false, EShMsgDefault, result, includer)) {
+      *log += std::string(stage == EShLangVertex ? "vertex" : "fragment") + " stage:\n" + shader.getInfoLog();
+      return false;
+    }
+  }
+  out->fragmentSurfaceLine = 0;
+  return true;
 }
 
 bool checkGlslEs300(const StageSources& sources, std::string* log) {

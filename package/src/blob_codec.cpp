@@ -1,6 +1,7 @@
 #include "blob_codec.h"
 
 #include <cstdio>
+#include <memory>
 #include <new>
 
 #include "checksum.h"
@@ -17,8 +18,33 @@ std::string hex(uint64_t v) {
 
 }  // namespace
 
-BlobEncoder::BlobEncoder() : context_(ZSTD_createCCtx(), &ZSTD_freeCCtx) {
-  if (!context_) throw std::bad_alloc();
+BlobEncoder::BlobEncoder()
+    : context_(ZSTD_createCCtx(), &ZSTD_freeCCtx), dictionaryContext_(ZSTD_createCCtx(), &ZSTD_freeCCtx) {
+  if (!context_ || !dictionaryContext_) throw std::bad_alloc();
+}
+
+void BlobEncoder::setDictionary(std::span<const uint8_t> dictionary) {
+  ZSTD_CCtx* c = dictionaryContext_.get();
+  ZSTD_CCtx_reset(c, ZSTD_reset_session_and_parameters);
+  ZSTD_CCtx_setParameter(c, ZSTD_c_compressionLevel, kZstdLevel);
+  // Content size in the frame header (the reader checks it), no zstd checksum (the content hash
+  // covers the code), no dictionary ID (a raw-content dictionary has none).
+  ZSTD_CCtx_setParameter(c, ZSTD_c_contentSizeFlag, 1);
+  ZSTD_CCtx_setParameter(c, ZSTD_c_checksumFlag, 0);
+  // Sticky: zstd builds the dictionary's tables once and reuses them for every frame. Loaded as
+  // raw content because it does not start with kZstdDictionaryMagic (the writer makes sure).
+  ZSTD_CCtx_loadDictionary(c, dictionary.data(), dictionary.size());
+}
+
+Codec BlobEncoder::encodeWithDictionary(std::span<const uint8_t> raw, std::vector<uint8_t>& stored) {
+  stored.resize(ZSTD_compressBound(raw.size()));
+  size_t n = ZSTD_compress2(dictionaryContext_.get(), stored.data(), stored.size(), raw.data(), raw.size());
+  if (!ZSTD_isError(n) && n < raw.size()) {
+    stored.resize(n);
+    return Codec::ZstdDictionary;
+  }
+  stored.assign(raw.begin(), raw.end());
+  return Codec::Raw;
 }
 
 Codec BlobEncoder::encode(std::span<const uint8_t> raw, std::vector<uint8_t>& stored) {
@@ -36,7 +62,8 @@ Codec BlobEncoder::encode(std::span<const uint8_t> raw, std::vector<uint8_t>& st
 }
 
 bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> stored,
-                uint64_t fileOffset, std::vector<uint8_t>& raw, std::string& error) {
+                uint64_t fileOffset, std::span<const uint8_t> dictionary, std::vector<uint8_t>& raw,
+                std::string& error) {
   const std::string where = "blob " + std::to_string(index) + " at byte " + std::to_string(fileOffset);
   if (entry.codec == Codec::Raw) {
     raw.assign(stored.begin(), stored.end());
@@ -59,7 +86,15 @@ bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t>
       return false;
     }
     raw.resize(entry.rawSize);
-    size_t n = ZSTD_decompress(raw.data(), raw.size(), stored.data(), stored.size());
+    size_t n = 0;
+    if (entry.codec == Codec::ZstdDictionary) {
+      std::unique_ptr<ZSTD_DCtx, size_t (*)(ZSTD_DCtx*)> context(ZSTD_createDCtx(), &ZSTD_freeDCtx);
+      if (!context) throw std::bad_alloc();
+      n = ZSTD_decompress_usingDict(context.get(), raw.data(), raw.size(), stored.data(), stored.size(),
+                                    dictionary.data(), dictionary.size());
+    } else {
+      n = ZSTD_decompress(raw.data(), raw.size(), stored.data(), stored.size());
+    }
     if (ZSTD_isError(n) || n != entry.rawSize) {
       error = where + " does not decompress: " +
               (ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong decompressed size");

@@ -13,9 +13,11 @@ namespace facet::package::detail {
 // direction, and 0x1A stops `type` on Windows from dumping binary to the console.
 inline constexpr std::array<uint8_t, 8> kMagic = {0x89, 'F', 'P', 'K', 'G', '\r', '\n', 0x1A};
 
-// Header: magic[8], u32 format version, u32 section count, u64 file size, u64 checksum.
+// Header: magic[8], u16 format major, u16 format minor, u32 section count, u64 file size,
+// u64 checksum. (Format 1.0 described bytes 8..11 as one u32 version 1: the same bytes.)
 inline constexpr uint64_t kHeaderSize = 32;
 inline constexpr uint64_t kVersionOffset = 8;
+inline constexpr uint64_t kMinorOffset = 10;
 inline constexpr uint64_t kSectionCountOffset = 12;
 inline constexpr uint64_t kFileSizeOffset = 16;
 inline constexpr uint64_t kChecksumOffset = 24;
@@ -48,17 +50,21 @@ inline constexpr uint64_t kMaxFileSize = 1ull << 30;
 inline constexpr uint32_t kMaxTextureSide = 16384;
 inline constexpr uint32_t kMaxTextureNameLength = 64;
 
-// Fixed so output is deterministic. 19 costs a few ms per shader at build time and is paid once;
-// every download and install benefits.
-inline constexpr int kZstdLevel = 19;
+// Fixed so output is deterministic. With the package dictionary most of a blob is one long match,
+// and level 9 compresses ten times faster than 19 for 13 % more bytes (docs/package-format.md,
+// "The dictionary"); at 19 compression was 14 % of a compile.
+inline constexpr int kZstdLevel = 9;
 
-enum class Codec : uint32_t { Raw = 0, Zstd = 1 };
+// ZstdDictionary (format 1.1): one zstd frame compressed against the raw bytes of another blob
+// (BlobEntry::dictionary), as a zstd raw-content dictionary.
+enum class Codec : uint32_t { Raw = 0, Zstd = 1, ZstdDictionary = 2 };
+inline constexpr uint16_t kFirstMinorWithDictionary = 1;
 
 // Encoded sizes of fixed-size records, used to check counts against the bytes available.
 inline constexpr uint64_t kShaderRefSize = 8;    // u8 stage, u8 target, u16 reserved, u32 blob
 inline constexpr uint64_t kMinVariantSize = 8;   // u32 key length, u32 shader count
 inline constexpr uint64_t kMinParamSize = 16;    // u32 name length, 4 x u8, u32 offset, u32 size
-inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 reserved
+inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 dictionary blob
 // u32 name length, u32 width, u32 height, u8 format, u8 + u16 reserved, u32 blob, u32 variant count
 inline constexpr uint64_t kMinTextureSize = 24;
 inline constexpr uint64_t kVariantIndexSize = 4;
@@ -69,6 +75,7 @@ struct BlobEntry {
   uint64_t storedSize = 0;
   uint64_t rawSize = 0;
   Codec codec = Codec::Raw;
+  uint32_t dictionary = 0;   // ZstdDictionary: the blob whose raw bytes are the dictionary; else 0
 };
 
 struct ShaderRef {

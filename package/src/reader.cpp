@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <new>
 #include <optional>
 
@@ -56,14 +57,21 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
     return false;
   }
   // The version is checked before anything else it might change the meaning of.
-  uint32_t version = uint32_t(loadLE(file.data() + kVersionOffset, 4));
-  if (version > kFormatVersion) {
-    error = "package format version " + std::to_string(version) +
-            " is newer than this runtime supports (" + std::to_string(kFormatVersion) + ")";
+  const uint16_t major = uint16_t(loadLE(file.data() + kVersionOffset, 2));
+  const uint16_t minor = uint16_t(loadLE(file.data() + kMinorOffset, 2));
+  if (major == 0) {
+    error = "package format version 0." + std::to_string(minor) + " at byte " + std::to_string(kVersionOffset) +
+            " is not valid";
     return false;
   }
-  if (version == 0) {
-    error = "package format version 0 at byte " + std::to_string(kVersionOffset) + " is not valid";
+  if (major != kFormatMajor || minor > kFormatMinor) {
+    const std::string theirs = std::to_string(major) + "." + std::to_string(minor);
+    const std::string ours = std::to_string(kFormatMajor) + "." + std::to_string(kFormatMinor);
+    error = "package format " + theirs + " is not supported: this reader reads formats " + std::to_string(kFormatMajor) +
+            ".0 to " + ours + " (" + (major > kFormatMajor || (major == kFormatMajor && minor > kFormatMinor)
+                                          ? "the package was built by a newer compiler"
+                                          : "the package was built by an older, incompatible compiler") +
+            "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
     return false;
   }
   uint64_t declared = loadLE(file.data() + kFileSizeOffset, 8);
@@ -203,13 +211,14 @@ ReadResult readChecked(std::span<const uint8_t> file) {
   const TocEntry& table = toc[2];
   const TocEntry& data = toc[3];
 
+  const uint16_t minor = uint16_t(loadLE(file.data() + kMinorOffset, 2));
   Package pkg;
   std::vector<VariantEntry> variants;
   std::vector<BlobEntry> blobs;
   if (!decodeSection(file, meta, error,
                      [&](ByteReader& in) { decodeMetadata(in, pkg.compilerVersion, pkg.material); }) ||
       !decodeSection(file, vars, error, [&](ByteReader& in) { decodeVariantTable(in, variants); }) ||
-      !decodeSection(file, table, error, [&](ByteReader& in) { decodeBlobTable(in, data.size, blobs); }))
+      !decodeSection(file, table, error, [&](ByteReader& in) { decodeBlobTable(in, data.size, minor, blobs); }))
     return failure(error);
   std::vector<TextureEntry> textures;
   if (texs && !decodeSection(file, *texs, error, [&](ByteReader& in) {
@@ -271,11 +280,33 @@ ReadResult readChecked(std::span<const uint8_t> file) {
     result.textureStats[t].rawSize = blobs[textures[t].blob].rawSize;
   }
 
+  // Dictionaries first (a dictionary is never itself dictionary-coded: decodeBlobTable), kept
+  // for the blobs that name them.
+  std::map<uint32_t, std::vector<uint8_t>> dictionaries;
+  for (const BlobEntry& entry : blobs)
+    if (entry.codec == Codec::ZstdDictionary) dictionaries.try_emplace(entry.dictionary);
+  auto decode = [&](uint32_t b, std::vector<uint8_t>& raw) {
+    const BlobEntry& entry = blobs[b];
+    const uint64_t at = data.offset + entry.offset;
+    std::span<const uint8_t> dictionary;
+    if (entry.codec == Codec::ZstdDictionary) dictionary = dictionaries.at(entry.dictionary);
+    return decodeBlob(entry, b, file.subspan(at, entry.storedSize), at, dictionary, raw, error);
+  };
+  for (auto& [d, bytes] : dictionaries) {
+    if (!decode(d, bytes)) return failure(error);
+    if (bytes.size() >= 4 && loadLE(bytes.data(), 4) == kZstdDictionaryMagic)
+      return failure("dictionary blob " + std::to_string(d) +
+                     " starts with the zstd dictionary magic; package dictionaries are raw content");
+  }
   std::vector<uint8_t> raw;
   for (uint32_t b = 0; b < blobs.size(); ++b) {
     const BlobEntry& entry = blobs[b];
-    const uint64_t at = data.offset + entry.offset;
-    if (!decodeBlob(entry, b, file.subspan(at, entry.storedSize), at, raw, error)) return failure(error);
+    if (auto it = dictionaries.find(b); it != dictionaries.end()) {
+      raw = it->second;
+    } else if (!decode(b, raw)) {
+      return failure(error);
+    }
+    if (users[b].empty() && textureUsers[b].empty()) result.dictionaryStoredSize += entry.storedSize;
     // The first user is charged the stored bytes, later users share them for free, so summing
     // storedSize over all shaders gives the blob bytes actually in the file.
     for (size_t u = 0; u < users[b].size(); ++u) {
@@ -290,6 +321,8 @@ ReadResult readChecked(std::span<const uint8_t> file) {
     }
   }
 
+  result.formatMajor = kFormatMajor;
+  result.formatMinor = minor;
   result.package = std::move(pkg);
   return result;
 }

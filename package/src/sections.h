@@ -21,7 +21,8 @@ void decodeVariantTable(ByteReader& in, std::vector<VariantEntry>& variants);
 // BTAB: one fixed-size entry per blob. `dataSize` is the size of BDAT, which the entries must
 // tile exactly.
 void encodeBlobTable(ByteWriter& out, const std::vector<BlobEntry>& blobs);
-void decodeBlobTable(ByteReader& in, uint64_t dataSize, std::vector<BlobEntry>& blobs);
+// `minor`: the file's format minor; codecs newer than it are rejected.
+void decodeBlobTable(ByteReader& in, uint64_t dataSize, uint16_t minor, std::vector<BlobEntry>& blobs);
 
 // TEXS: generated textures. Decoded after VARS and BTAB: every entry's variant indices and blob
 // index are checked against them, and the blob's raw size against the texture's size.

@@ -1,5 +1,7 @@
 // Package -> bytes. Everything here is a pure function of the Package (and the zstd version), so
 // the same input always gives the same file.
+#include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "blob_codec.h"
@@ -22,9 +24,13 @@ struct Section {
 // Assigns blob indices in order of first use (variant order, then shader order), storing each
 // distinct code once. Candidates are found by hash and confirmed by comparing bytes, so even a
 // hash collision cannot make two shaders share the wrong code.
+// `kind` is the (stage, target) a blob was first used for, or kTextureKind.
+inline constexpr int kTextureKind = -1;
+int shaderKind(const Shader& s) { return int(s.stage) * (kLastTarget + 1) + int(s.target); }
+
 class BlobDeduplicator {
 public:
-  uint32_t add(const std::vector<uint8_t>& code) {
+  uint32_t add(const std::vector<uint8_t>& code, int kind) {
     uint64_t hash = contentHash(code);
     std::vector<uint32_t>& candidates = byHash_[hash];
     for (uint32_t index : candidates) {
@@ -33,6 +39,7 @@ public:
     uint32_t index = uint32_t(codes_.size());
     codes_.push_back(&code);
     hashes_.push_back(hash);
+    kinds_.push_back(kind);
     candidates.push_back(index);
     return index;
   }
@@ -40,12 +47,37 @@ public:
   size_t size() const { return codes_.size(); }
   const std::vector<uint8_t>& code(size_t i) const { return *codes_[i]; }
   uint64_t hash(size_t i) const { return hashes_[i]; }
+  int kind(size_t i) const { return kinds_[i]; }
 
 private:
   std::vector<const std::vector<uint8_t>*> codes_;
   std::vector<uint64_t> hashes_;
+  std::vector<int> kinds_;
   std::unordered_map<uint64_t, std::vector<uint32_t>> byHash_;
 };
+
+// The package dictionary (format 1.1): the largest shader blob of each (stage, target), first
+// on ties, in kind order. Variants of one material differ in a few functions and defines, so
+// every other blob of a kind is mostly a copy of its representative; compressing against it
+// keeps each blob decodable on its own (it needs only the dictionary) while sharing the text.
+// Measured on red_plastic's 8 variants (docs/package-format.md, "Blob data").
+// Empty when it would not pay: fewer than two shader blobs.
+std::vector<uint8_t> chooseDictionary(const BlobDeduplicator& blobs) {
+  std::map<int, size_t> largest;
+  size_t shaderBlobs = 0;
+  for (size_t i = 0; i < blobs.size(); ++i) {
+    if (blobs.kind(i) == kTextureKind) continue;
+    ++shaderBlobs;
+    auto [it, inserted] = largest.try_emplace(blobs.kind(i), i);
+    if (!inserted && blobs.code(i).size() > blobs.code(it->second).size()) it->second = i;
+  }
+  std::vector<uint8_t> dictionary;
+  if (shaderBlobs < 2) return dictionary;
+  for (auto [kind, index] : largest) dictionary.insert(dictionary.end(), blobs.code(index).begin(), blobs.code(index).end());
+  // zstd would read a dictionary starting with its own magic as a trained one, not raw content.
+  if (dictionary.size() >= 4 && loadLE(dictionary.data(), 4) == kZstdDictionaryMagic) dictionary.clear();
+  return dictionary;
+}
 
 }  // namespace
 
@@ -55,24 +87,36 @@ std::vector<uint8_t> write(const Package& pkg) {
   variants.reserve(pkg.variants.size());
   for (const Variant& v : pkg.variants) {
     VariantEntry entry{v.key, {}};
-    for (const Shader& s : v.shaders) entry.shaders.push_back({s.stage, s.target, blobs.add(s.code)});
+    for (const Shader& s : v.shaders) entry.shaders.push_back({s.stage, s.target, blobs.add(s.code, shaderKind(s))});
     variants.push_back(std::move(entry));
   }
   // Texture blobs follow every shader's, so a package without textures is unchanged.
   std::vector<TextureEntry> textures;
   for (const Texture& t : pkg.textures)
-    textures.push_back({t.name, t.width, t.height, t.format, blobs.add(t.texels), t.variants});
+    textures.push_back({t.name, t.width, t.height, t.format, blobs.add(t.texels, kTextureKind), t.variants});
+  // The dictionary is one more blob, after every other (or an existing blob of equal bytes).
+  const std::vector<uint8_t> dictionaryBytes = chooseDictionary(blobs);
+  const size_t shaderAndTextureBlobs = blobs.size();
+  std::optional<uint32_t> dictionary;
+  if (!dictionaryBytes.empty()) dictionary = blobs.add(dictionaryBytes, kTextureKind);
 
   std::vector<BlobEntry> blobTable;
   std::vector<uint8_t> blobData;
   BlobEncoder encoder;
+  if (dictionary) encoder.setDictionary(dictionaryBytes);
   std::vector<uint8_t> stored;
+  bool usesDictionary = false;
   for (size_t i = 0; i < blobs.size(); ++i) {
     BlobEntry b;
     b.contentHash = blobs.hash(i);
     b.offset = blobData.size();
     b.rawSize = blobs.code(i).size();
-    b.codec = encoder.encode(blobs.code(i), stored);
+    const bool againstDictionary = dictionary && i != *dictionary && i < shaderAndTextureBlobs && blobs.kind(i) != kTextureKind;
+    b.codec = againstDictionary ? encoder.encodeWithDictionary(blobs.code(i), stored) : encoder.encode(blobs.code(i), stored);
+    if (b.codec == Codec::ZstdDictionary) {
+      b.dictionary = *dictionary;
+      usesDictionary = true;
+    }
     b.storedSize = stored.size();
     blobData.insert(blobData.end(), stored.begin(), stored.end());
     blobTable.push_back(b);
@@ -95,7 +139,8 @@ std::vector<uint8_t> write(const Package& pkg) {
   std::vector<uint8_t> file;
   ByteWriter out(file);
   out.bytes(kMagic);
-  out.u32(kFormatVersion);
+  out.u16(kFormatMajor);
+  out.u16(usesDictionary ? kFirstMinorWithDictionary : 0);  // the lowest minor that describes the file
   out.u32(uint32_t(sections.size()));
   out.u64(0);  // file size, patched below
   out.u64(0);  // checksum, patched below

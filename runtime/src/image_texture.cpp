@@ -6,12 +6,7 @@
 #include <fstream>
 #include <limits>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
-#define STBI_ONLY_TGA
-#define STBI_ONLY_HDR  // environments (environment.cpp): Radiance .hdr via stbi_loadf
-#include <stb_image.h>
+#include <stb_image.h>  // implementation: stb_image_impl.cpp
 
 namespace facet::runtime {
 namespace {

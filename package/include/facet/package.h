@@ -14,7 +14,12 @@
 
 namespace facet::package {
 
-inline constexpr uint32_t kFormatVersion = 1;
+// Format version major.minor (docs/package-format.md, "Format version"). A reader reads every
+// minor of its own major up to its own minor; any other version is refused with a message naming
+// both and the command that rebuilds the package. The writer stamps the lowest minor that
+// describes the file, so packages that use no newer feature stay readable by older readers.
+inline constexpr uint16_t kFormatMajor = 1;
+inline constexpr uint16_t kFormatMinor = 1;  // 1.1: shader blobs compressed against a package dictionary
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 
@@ -119,6 +124,10 @@ struct ReadResult {
   std::vector<std::vector<ShaderStats>> stats;
   // Per texture (same order as Package::textures); a blob shared with a shader is charged there.
   std::vector<ShaderStats> textureStats;
+  // Stored bytes of the blob no shader or texture uses itself: the compression dictionary
+  // (format 1.1). The stats above plus this sum to the size of the blob data.
+  uint64_t dictionaryStoredSize = 0;
+  uint16_t formatMajor = 0, formatMinor = 0;  // as stamped in the file
 };
 
 // Validates every offset, size, count, version and the checksum before use. Never crashes,

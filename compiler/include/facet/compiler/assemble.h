@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <string>
 
 #include "facet/compiler/param_layout.h"
@@ -24,6 +25,9 @@ struct StageSources {
   // 1-based line of the fragment text where the surface program's body starts (0: not present);
   // line k of SurfaceGlsl::body is line fragmentSurfaceLine + k.
   uint32_t fragmentSurfaceLine = 0;
+  // The templates/ and chunks/ files (glslLibrary() names) both stages were assembled from: what a
+  // build system must watch (matc compile --depfile).
+  std::set<std::string> libraryFiles;
 };
 
 struct AssemblyInput {

@@ -5,7 +5,9 @@
 //                                                      \-> SPIRV-Cross -> package (MSL)
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,7 +27,12 @@ struct GeneratedFile {
 
 struct BuildResult {
   package::Package package;
-  std::vector<GeneratedFile> sources;  // every generated source, for `matc compile --emit-source`
+  // With BuildOptions::emitSources: every generated source (`matc compile --emit-source`), in
+  // variant order; empty otherwise.
+  std::vector<GeneratedFile> sources;
+  // The templates/ and chunks/ files (glslLibrary() names) any built variant was assembled from.
+  std::set<std::string> libraryFiles;
+  size_t cacheHits = 0;  // variants taken from BuildOptions::cacheDir instead of compiled
 };
 
 struct BuildOptions {
@@ -37,6 +44,18 @@ struct BuildOptions {
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers
   // (`reference`) are unchanged. docs/fp16-emulation.md.
   bool fp16Emulation = false;
+  // Fill BuildResult::sources: the readable assembled GLSL of both flavours and the SPIR-V
+  // disassembly cost time and are only wanted for debugging.
+  bool emitSources = false;
+  // Variants compiled at once; 0: one per hardware thread. The result is byte-identical for any
+  // value.
+  unsigned jobs = 0;
+  // Content-addressed cache of compiled variants (compiler/src/variant_cache.h); "" for none.
+  // The package is the same bytes with or without it.
+  std::string cacheDir;
+  // Called after each variant finishes (done of total), one call at a time, from any thread;
+  // matc draws its terminal progress line with it.
+  std::function<void(size_t done, size_t total)> progress;
 };
 
 struct BuildError {

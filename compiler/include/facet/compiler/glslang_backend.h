@@ -22,4 +22,9 @@ bool compileToSpirv(const StageSources& sources, SpirvStages* out, std::string* 
 // with glslang's log on failure.
 bool checkGlslEs300(const StageSources& sources, std::string* log);
 
+// Runs glslang's preprocessor on both stages as GLSL ES 3.00: #if branches resolved, macros
+// expanded, comments gone; #version and #extension lines stay. Line numbers of the result do not
+// map back to the input (fragmentSurfaceLine is cleared).
+bool preprocessGlslEs300(const StageSources& sources, StageSources* out, std::string* log);
+
 }  // namespace facet::compiler

@@ -1,0 +1,41 @@
+// Content-addressed on-disk cache of compiled variants (matc compile --cache). The key is a hash
+// of everything a variant's compiled output depends on: the compiler version, both flavours of
+// the assembled GLSL (which already contain the material's surface program, the tier's choices
+// and every chunk's text) and the options that change the output. Editing one chunk changes the
+// text, hence the key, of exactly the variants that include it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/compiler/assemble.h"
+
+namespace facet::compiler {
+
+// A variant's six shaders, in package order: GLSL ES vertex, fragment; SPIR-V vertex, fragment;
+// MSL vertex, fragment.
+using CompiledShaders = std::array<std::vector<uint8_t>, 6>;
+
+// 32 hex digits (XXH3-128) naming a variant's compiled output.
+std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
+                            bool fp16Emulation);
+
+// `dir` empty: every load misses and nothing is stored. Entries are files dir/xx/<key>, written to
+// a temporary name and renamed, so concurrent jobs or processes never see half an entry; an
+// entry that does not check (truncated, damaged) is a miss. Safe to use from several threads.
+class VariantCache {
+public:
+  explicit VariantCache(std::string dir) : dir_(std::move(dir)) {}
+  std::optional<CompiledShaders> load(const std::string& key) const;
+  // Best effort: a cache that cannot be written only costs the next build time.
+  void store(const std::string& key, const CompiledShaders& shaders) const;
+
+private:
+  std::string path(const std::string& key) const;
+  std::string dir_;
+};
+
+}  // namespace facet::compiler

@@ -1,0 +1,10 @@
+// stb_image's implementation, in a file of its own so that sanitizer builds can treat it as the
+// third-party code it is: it passes a null pointer to memcpy for zero-length PNG chunks
+// (stbi__getn with an IDAT of length 0; found by fuzz_image), harmless but reported by UBSan's
+// nonnull-attribute check, which runtime/CMakeLists.txt turns off for this file only.
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_TGA
+#define STBI_ONLY_HDR  // environments (environment.cpp): Radiance .hdr via stbi_loadf
+#include <stb_image.h>

@@ -1,0 +1,34 @@
+// libFuzzer target for the image decoders the runtime uses on scene textures
+// (runtime::decodeImageTexture: PNG, JPEG, TGA through stb_image, then the mip chain). Any bytes
+// end in a texture or an error naming the image, never a crash or a sanitizer report.
+// Inputs declaring more than 1024 × 1024 pixels are skipped here only to keep each run fast; the
+// runtime's own limit is kMaxImageSide (8192).
+//
+// Reproduce a finding:  build/fuzz/tests/fuzz/fuzz_image path/to/input
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include <stb_image.h>
+
+#include "facet/runtime/image_texture.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  int w = 0, h = 0, channels = 0;
+  if (stbi_info_from_memory(data, int(size), &w, &h, &channels) && (w > 1024 || h > 1024)) return 0;
+  std::string error;
+  for (bool srgb : {false, true}) {
+    auto texture = facet::runtime::decodeImageTexture({data, size}, srgb, "fuzz.png", &error);
+    if (!texture && error.rfind("fuzz.png: ", 0) != 0) {
+      std::fprintf(stderr, "fuzz_image: rejected without naming the image: %s\n", error.c_str());
+      std::abort();
+    }
+    if (texture && (texture->levels.empty() || texture->levels[0].size() != size_t(texture->width) * texture->height * 4)) {
+      std::fprintf(stderr, "fuzz_image: level 0 does not match %ux%u\n", texture->width, texture->height);
+      std::abort();
+    }
+  }
+  return 0;
+}
