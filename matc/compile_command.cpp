@@ -1,16 +1,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "commands.h"
 #include "facet/compiler/build.h"
-#include "facet/ir/check.h"
-#include "facet/ir/lexer.h"
 #include "facet/package.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/scene.h"
+#include "material_source.h"
 #include "scene_keys.h"
 
 namespace facet::matc {
@@ -20,31 +17,6 @@ void printError(const std::string& message) { std::fprintf(stderr, "matc: error:
 namespace {
 
 namespace fs = std::filesystem;
-
-// Reads a material file, refusing files over the language's size limit before reading them.
-bool readSource(const std::string& path, ir::SourceFile* out) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    printError("cannot read '" + path + "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
-    return false;
-  }
-  uintmax_t size = fs::file_size(path, ec);
-  if (ec || size > ir::kMaxSourceBytes) {
-    printError("'" + path + "' is " + std::to_string(size) + " bytes; material files are limited to " +
-               std::to_string(ir::kMaxSourceBytes) + " bytes");
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) {
-    printError("cannot read '" + path + "'");
-    return false;
-  }
-  out->path = path;
-  out->text = text.str();
-  return true;
-}
 
 bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedFile>& files) {
   std::error_code ec;
@@ -66,24 +38,7 @@ bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedF
 
 // Tiers from --tiers, and the variants a --scene manifest asks this material for.
 int buildOptions(const CompileArgs& args, const ir::Material& material, compiler::BuildOptions* options) {
-  const auto& supported = permutations::supportedTiers();
-  if (!args.tiers.empty()) {
-    options->tiers.clear();
-    for (const std::string& name : args.tiers) {
-      auto tier = permutations::tierFromString(name);
-      if (!tier) {
-        printError("unknown tier '" + name + "' (reference, high, mid, low)");
-        return 2;
-      }
-      if (std::find(supported.begin(), supported.end(), *tier) == supported.end()) {
-        std::string list;
-        for (permutations::Tier t : supported) list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
-        printError("tier '" + name + "' is not built by this compiler version (supported: " + list + ")");
-        return 2;
-      }
-      options->tiers.push_back(*tier);
-    }
-  }
+  if (int status = parseTiers(args.tiers, &options->tiers); status != 0) return status;
   options->pointLightCounts = args.pointLights;
   if (args.scene.empty()) return 0;
   std::string error;
@@ -107,17 +62,31 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
 
 }  // namespace
 
+int parseTiers(const std::vector<std::string>& names, std::vector<permutations::Tier>* tiers) {
+  if (names.empty()) return 0;
+  const auto& supported = permutations::supportedTiers();
+  tiers->clear();
+  for (const std::string& name : names) {
+    auto tier = permutations::tierFromString(name);
+    if (!tier) {
+      printError("unknown tier '" + name + "' (reference, high, mid, low)");
+      return 2;
+    }
+    if (std::find(supported.begin(), supported.end(), *tier) == supported.end()) {
+      std::string list;
+      for (permutations::Tier t : supported) list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
+      printError("tier '" + name + "' is not built by this compiler version (supported: " + list + ")");
+      return 2;
+    }
+    tiers->push_back(*tier);
+  }
+  return 0;
+}
+
 int compileCommand(const CompileArgs& args) {
   ir::SourceFile source;
-  if (!readSource(args.input, &source)) return 1;
-
-  ir::Diagnostics diags(source);
-  std::optional<ir::Material> material = ir::compileSource(source, diags);
-  std::fputs(diags.format().c_str(), stderr);
-  if (!material) {
-    std::fprintf(stderr, "%zu error%s generated.\n", diags.errorCount(), diags.errorCount() == 1 ? "" : "s");
-    return 1;
-  }
+  std::optional<ir::Material> material = loadMaterial(args.input, &source);
+  if (!material) return 1;
 
   compiler::BuildOptions options;
   options.fp16Emulation = args.fp16Emulation;
@@ -125,12 +94,7 @@ int compileCommand(const CompileArgs& args) {
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
   if (!built) {
-    if (buildError.loc) {
-      std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *buildError.loc, buildError.message, "backend"}).c_str(),
-                 stderr);
-    } else {
-      printError(buildError.message);
-    }
+    printBuildError(source, buildError.message, buildError.loc);
     return 1;
   }
   std::string error;

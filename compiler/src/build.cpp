@@ -112,6 +112,15 @@ const std::string& compilerVersion() {
   return version;
 }
 
+permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tierName, const BuildOptions& options) {
+  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+  permutations::TierConfig tier = permutations::preset(tierName);
+  for (const ir::TierOverride& o : material.tierOverrides)
+    if (o.tier == permutations::toString(tierName)) permutations::applyOverride(&tier, o.axis, o.option);
+  if (options.adjustTier) options.adjustTier(tierName, &tier);
+  return tier;
+}
+
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
   std::string* error = &failure->message;
   BuildResult result;
@@ -128,10 +137,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   std::vector<uint32_t> lutVariants;  // indices of the variants that sample the specular table
   for (const permutations::VariantKey& key : permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts)) {
     const std::string keyText = key.toString();
-    // The tier's preset, with the material's overrides for that tier (checked by ir::check).
-    permutations::TierConfig tier = permutations::preset(key.tier);
-    for (const ir::TierOverride& o : material.tierOverrides)
-      if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
+    const permutations::TierConfig tier = tierConfig(material, key.tier, options);
     AssemblyInput input{material, surface, layout, key, tier, compilerVersion()};
     StageSources es, vk;
     if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return std::nullopt;

@@ -5,12 +5,14 @@
 //                                                      \-> SPIRV-Cross -> package (MSL)
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/ir/module.h"
 #include "facet/package.h"
+#include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::compiler {
@@ -37,7 +39,15 @@ struct BuildOptions {
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers
   // (`reference`) are unchanged. docs/fp16-emulation.md.
   bool fp16Emulation = false;
+  // Evaluation only (`matc eval`, docs/eval.md): called with each tier's configuration after the
+  // preset and the material's overrides are applied, to change any choice of it (a single-option
+  // swap). Unset: the preset with the material's overrides, as shipped.
+  std::function<void(permutations::Tier, permutations::TierConfig*)> adjustTier;
 };
+
+// The maths a tier's variants use: the tier's preset, the material's overrides for that tier,
+// then options.adjustTier.
+permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tier, const BuildOptions& options);
 
 struct BuildError {
   std::string message;

@@ -1,0 +1,62 @@
+#include "material_source.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "commands.h"
+#include "facet/ir/check.h"
+#include "facet/ir/lexer.h"
+
+namespace facet::matc {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Reads a material file, refusing files over the language's size limit before reading them.
+bool readSource(const std::string& path, ir::SourceFile* out) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    printError("cannot read '" + path + "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
+    return false;
+  }
+  uintmax_t size = fs::file_size(path, ec);
+  if (ec || size > ir::kMaxSourceBytes) {
+    printError("'" + path + "' is " + std::to_string(size) + " bytes; material files are limited to " +
+               std::to_string(ir::kMaxSourceBytes) + " bytes");
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) {
+    printError("cannot read '" + path + "'");
+    return false;
+  }
+  out->path = path;
+  out->text = text.str();
+  return true;
+}
+
+}  // namespace
+
+std::optional<ir::Material> loadMaterial(const std::string& path, ir::SourceFile* source) {
+  if (!readSource(path, source)) return std::nullopt;
+  ir::Diagnostics diags(*source);
+  std::optional<ir::Material> material = ir::compileSource(*source, diags);
+  std::fputs(diags.format().c_str(), stderr);
+  if (!material)
+    std::fprintf(stderr, "%zu error%s generated.\n", diags.errorCount(), diags.errorCount() == 1 ? "" : "s");
+  return material;
+}
+
+void printBuildError(const ir::SourceFile& source, const std::string& message, const std::optional<ir::SourceLoc>& loc) {
+  if (loc) {
+    std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *loc, message, "backend"}).c_str(), stderr);
+  } else {
+    printError(message);
+  }
+}
+
+}  // namespace facet::matc
