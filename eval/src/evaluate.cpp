@@ -7,14 +7,12 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <limits>
 
 #include "facet/compiler/build.h"
+#include "facet/eval/prepared_frame.h"
 #include "facet/package.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/png.h"
-#include "facet/eval/prepared_frame.h"
-#include "facet/runtime/scene_frame.h"
 
 namespace facet::eval {
 namespace {
@@ -64,17 +62,157 @@ void markPareto(std::vector<ConfigurationResult>* results) {
 }
 
 std::string formatProgress(size_t index, size_t count, const ConfigurationResult& r) {
-  char buf[256];
-  std::string psnr = std::isinf(r.error.psnr) ? "identical" : [&] {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.1f dB", r.error.psnr);
-    return std::string(b);
-  }();
-  std::snprintf(buf, sizeof buf, "[%zu/%zu] %-34s %-10s %5.2f cycles  %6.1f ms%s", index + 1, count,
-                r.configuration.name.c_str(), psnr.c_str(), r.fragment.cycles, 1000.0 * r.seconds,
-                r.sameAs.empty() ? "" : ("  (same maths as " + r.sameAs + ")").c_str());
-  return buf;
+  char psnr[32] = "identical";
+  if (!std::isinf(r.error.psnr)) std::snprintf(psnr, sizeof psnr, "%.1f dB", r.error.psnr);
+  char line[256];
+  std::snprintf(line, sizeof line, "[%zu/%zu] %-34s %-10s %5.2f cycles  %6.1f ms", index + 1, count,
+                r.configuration.name.c_str(), psnr, r.fragment.cycles, 1000.0 * r.seconds);
+  return r.sameAs.empty() ? line : std::string(line) + "  (same maths as " + r.sameAs + ")";
 }
+
+// One evaluation: the views, the Vulkan backend, and what later configurations are measured
+// against (the reference's images, and its first view for paired timing).
+class Evaluation {
+ public:
+  Evaluation(const ir::Material& material, const EvalOptions& options, std::vector<View> views,
+             std::unique_ptr<runtime::RenderBackend> backend, fs::path workDir)
+      : material_(material), options_(options), views_(std::move(views)), backend_(std::move(backend)),
+        workDir_(std::move(workDir)) {}
+
+  // Builds, costs, renders and compares one configuration; the first must be the reference.
+  bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error) {
+    r->configuration = c;
+    std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, &r->variantKey, error);
+    if (!built) return false;
+    const fs::path packageDir = workDir_ / fileStem(c.name);
+    std::error_code ec;
+    fs::create_directories(packageDir, ec);
+    const std::string packagePath = (packageDir / (material_.name + ".matpkg")).string();
+    if (!package::writeFile(packagePath, package::write(built->package), &error->message)) return false;
+
+    // The cost of the variant the (first) view renders, as shipped: an fp16-emulation build's
+    // SPIR-V is quantized before spirv-opt and costs what no device runs, so the cost comes from
+    // the same configuration built without it.
+    std::optional<compiler::BuildResult> shipped;
+    if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
+    if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
+
+    ErrorAccumulator all;
+    for (size_t vi = 0; vi < views_.size(); ++vi) {
+      runtime::Scene scene = views_[vi].scene;
+      scene.tier = permutations::toString(c.tier);
+      std::string message;
+      std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
+      if (!prepared) return fail(c, message, error);
+      const runtime::FrameDesc& frame = prepared->frame();
+      runtime::FrameResult image;
+      for (int w = 0; w < std::max(options_.warmupFrames, 1); ++w)
+        if (!backend_->render(frame, &image, &message)) return fail(c, "render failed: " + message, error);
+      if (vi == 0 && !time(c, frame, r, error)) return false;
+      if (!backend_->validationErrors().empty())
+        return fail(c, "Vulkan validation reported: " + backend_->validationErrors().front(), error);
+
+      ViewResult view;
+      view.name = views_[vi].name;
+      view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
+      if (!runtime::writePng((fs::path(options_.outDir) / view.image).string(), image.width, image.height, image.ldr,
+                             &error->message))
+        return false;
+      if (isReference) {
+        backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
+        referenceImages_.push_back(std::move(image));
+        if (vi == 0) referenceFrame_ = std::move(prepared);  // for the paired timing of the others
+      }
+      const runtime::FrameResult& ref = referenceImages_[vi];
+      const runtime::FrameResult& mine = isReference ? ref : image;
+      std::vector<bool> mask = coverageMask(mine.hdr, ref.hdr, backgrounds_[vi]);
+      ErrorAccumulator one;
+      one.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
+      all.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
+      view.error = one.metrics();
+      r->views.push_back(std::move(view));
+    }
+    r->error = all.metrics();
+    return true;
+  }
+
+ private:
+  static bool fail(const Configuration& c, const std::string& message, EvalError* error) {
+    error->message = c.name + ": " + message;
+    return false;
+  }
+
+  // The configuration's package: its tier only, the variants the views ask for.
+  std::optional<compiler::BuildResult> build(const Configuration& c, bool fp16Emulation, std::string* firstKey,
+                                             EvalError* error) const {
+    compiler::BuildOptions options;
+    options.tiers = {c.tier};
+    options.fp16Emulation = fp16Emulation;
+    options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
+    const permutations::MaterialNeeds needs{material_.shading == "lit"};
+    permutations::SceneNeeds scene;
+    for (const View& v : views_) {
+      auto key = permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size()));
+      if (std::find(scene.keys.begin(), scene.keys.end(), key) == scene.keys.end()) scene.keys.push_back(key);
+    }
+    options.scene = scene;
+    *firstKey = scene.keys[0].toString();
+    compiler::BuildError buildError;
+    auto built = compiler::buildMaterial(material_, options, &buildError);
+    if (!built) {
+      error->message = c.name + ": " + buildError.message;
+      error->loc = buildError.loc;
+    }
+    return built;
+  }
+
+  bool cost(const package::Package& pkg, ConfigurationResult* r, EvalError* error) const {
+    for (const package::Variant& v : pkg.variants) {
+      if (v.key != r->variantKey) continue;
+      for (const package::Shader& s : v.shaders) {
+        if (s.target != package::Target::Spirv) continue;
+        compiler::MobileStageCost* stage = s.stage == package::Stage::Fragment ? &r->fragment : &r->vertex;
+        if (!compiler::estimateMobileCost(wordsOf(s), stage, &error->message, options_.weights))
+          return fail(r->configuration, error->message, error);
+      }
+    }
+    return true;
+  }
+
+  // render() of the first view, timingFrames times, each paired with a render() of the reference's
+  // first view, so that their ratio (the median of the per-pair ratios) sees the same machine
+  // load; the reference alone for the reference.
+  bool time(const Configuration& c, const runtime::FrameDesc& frame, ConfigurationResult* r, EvalError* error) {
+    std::vector<double> own, ratios;
+    runtime::FrameResult scratch;
+    std::string message;
+    auto timed = [&](const runtime::FrameDesc& f, double* seconds) {
+      auto t0 = std::chrono::steady_clock::now();
+      bool ok = backend_->render(f, &scratch, &message);
+      *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return ok;
+    };
+    for (int t = 0; t < options_.timingFrames; ++t) {
+      double mine = 0, reference = 0;
+      if (!timed(frame, &mine) || (referenceFrame_ && !timed(referenceFrame_->frame(), &reference)))
+        return fail(c, "render failed: " + message, error);
+      own.push_back(mine);
+      ratios.push_back(referenceFrame_ && reference > 0 ? mine / reference : 1.0);
+    }
+    r->seconds = median(own);
+    r->timeVsReference = options_.timingFrames > 0 ? median(ratios) : 0.0;
+    return true;
+  }
+
+  const ir::Material& material_;
+  const EvalOptions& options_;
+  std::vector<View> views_;
+  std::unique_ptr<runtime::RenderBackend> backend_;
+  fs::path workDir_;
+  std::vector<runtime::FrameResult> referenceImages_;  // per view
+  std::vector<std::array<float, 3>> backgrounds_;      // per view: the clear colour
+  std::unique_ptr<PreparedFrame> referenceFrame_;      // the reference's first view
+};
 
 }  // namespace
 
@@ -117,7 +255,6 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     error->message = "no Vulkan device to render on (matc eval renders with lavapipe): " + message;
     return std::nullopt;
   }
-
   std::error_code ec;
   const fs::path imageDir = fs::path(options.outDir) / "images";
   fs::create_directories(imageDir, ec);
@@ -125,7 +262,7 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     error->message = "cannot create '" + imageDir.string() + "': " + ec.message();
     return std::nullopt;
   }
-  TempDir work;
+  TempDir work;  // one package per configuration, removed at the end
   work.path = fs::temp_directory_path(ec) / ("facet-eval-" + std::to_string(getpid()));
   fs::remove_all(work.path, ec);
   fs::create_directories(work.path, ec);
@@ -134,152 +271,36 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     return std::nullopt;
   }
 
-
-  // Timing: render() of the first view, timingFrames times, each paired with a render() of the
-  // reference's first view, so that the ratio of the two (the median of the per-pair ratios) sees
-  // the same machine load; the reference alone for the reference.
-  std::unique_ptr<PreparedFrame> referenceFrame;
-  auto timeFrame = [&](const Configuration& c, const runtime::FrameDesc& frame, ConfigurationResult* r, EvalError* failure) {
-    std::vector<double> mine, ratios;
-    runtime::FrameResult scratch;
-    auto timed = [&](const runtime::FrameDesc& f, double* seconds) {
-      auto t0 = std::chrono::steady_clock::now();
-      bool ok = backend->render(f, &scratch, &message);
-      *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (!ok) failure->message = c.name + ": render failed: " + message;
-      return ok;
-    };
-    for (int t = 0; t < report.timingFrames; ++t) {
-      double own = 0, ref = 0;
-      if (!timed(frame, &own)) return false;
-      if (referenceFrame && !timed(referenceFrame->frame(), &ref)) return false;
-      mine.push_back(own);
-      ratios.push_back(referenceFrame && ref > 0 ? own / ref : 1.0);
-    }
-    r->seconds = median(mine);
-    r->timeVsReference = report.timingFrames > 0 ? median(ratios) : 0.0;
-    return true;
-  };
-
+  Evaluation evaluation(material, options, std::move(views), std::move(backend), work.path);
   const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
-  const permutations::MaterialNeeds needs{material.shading == "lit"};
-  std::vector<runtime::FrameResult> referenceFrames;  // per view
-  std::vector<std::array<float, 3>> backgrounds;      // per view: the clear colour
-
   for (size_t i = 0; i < configs.size(); ++i) {
     const Configuration& c = configs[i];
+    // Identical maths (e.g. high with energy compensation = reference in mediump): the same
+    // shaders and images, measured once.
+    auto same = std::find_if(report.results.begin(), report.results.end(), [&](const ConfigurationResult& e) {
+      return e.configuration.config == c.config && e.sameAs.empty();
+    });
     ConfigurationResult r;
-    r.configuration = c;
-    // Identical maths (e.g. high with energy compensation = reference in mediump): the same shaders
-    // and images, measured once.
-    auto same = std::find_if(report.results.begin(), report.results.end(),
-                             [&](const ConfigurationResult& e) { return e.configuration.config == c.config && e.sameAs.empty(); });
     if (same != report.results.end()) {
       r = *same;
       r.configuration = c;
       r.sameAs = same->configuration.name;
-      report.results.push_back(r);
-      if (options.progress) options.progress(formatProgress(i, configs.size(), r));
-      continue;
-    }
-
-    compiler::BuildOptions build;
-    build.tiers = {c.tier};
-    build.fp16Emulation = options.fp16Emulation;
-    build.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
-    permutations::SceneNeeds sceneNeeds;
-    for (const View& v : views) {
-      auto key = permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size()));
-      if (std::find(sceneNeeds.keys.begin(), sceneNeeds.keys.end(), key) == sceneNeeds.keys.end()) sceneNeeds.keys.push_back(key);
-    }
-    build.scene = sceneNeeds;
-    r.variantKey = sceneNeeds.keys[0].toString();
-    compiler::BuildError buildError;
-    auto built = compiler::buildMaterial(material, build, &buildError);
-    if (!built) {
-      error->message = c.name + ": " + buildError.message;
-      error->loc = buildError.loc;
+    } else if (!evaluation.measure(c, i == 0, &r, error)) {
       return std::nullopt;
     }
-    const fs::path packageDir = work.path / fileStem(c.name);
-    fs::create_directories(packageDir, ec);
-    const std::string packagePath = (packageDir / (material.name + ".matpkg")).string();
-    if (!package::writeFile(packagePath, package::write(built->package), &error->message)) return std::nullopt;
-
-    // Cost of the variant the (first) view renders.
-    for (const package::Variant& v : built->package.variants) {
-      if (v.key != r.variantKey) continue;
-      for (const package::Shader& s : v.shaders) {
-        if (s.target != package::Target::Spirv) continue;
-        compiler::MobileStageCost* cost = s.stage == package::Stage::Fragment ? &r.fragment : &r.vertex;
-        if (!compiler::estimateMobileCost(wordsOf(s), cost, &error->message, options.weights)) {
-          error->message = c.name + ": " + error->message;
-          return std::nullopt;
-        }
-      }
-    }
-
-    ErrorAccumulator all;
-    for (size_t vi = 0; vi < views.size(); ++vi) {
-      runtime::Scene scene = views[vi].scene;
-      scene.tier = permutations::toString(c.tier);
-      std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
-      if (!prepared) {
-        error->message = c.name + ": " + message;
-        return std::nullopt;
-      }
-      const runtime::FrameDesc& frame = prepared->frame();
-      runtime::FrameResult image;
-      for (int w = 0; w < report.warmupFrames; ++w) {
-        if (!backend->render(frame, &image, &message)) {
-          error->message = c.name + ": render failed: " + message;
-          return std::nullopt;
-        }
-      }
-      if (vi == 0 && !timeFrame(c, frame, &r, error)) return std::nullopt;
-      if (!backend->validationErrors().empty()) {
-        error->message = c.name + ": Vulkan validation reported: " + backend->validationErrors().front();
-        return std::nullopt;
-      }
-      const std::array<float, 3> background = {frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]};
-      // The reference's first view is kept for the timing of every later configuration.
-      if (i == 0 && vi == 0) referenceFrame = std::move(prepared);
-      ViewResult view;
-      view.name = views[vi].name;
-      view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
-      if (!runtime::writePng((fs::path(options.outDir) / view.image).string(), image.width, image.height, image.ldr,
-                             &message)) {
-        error->message = message;
-        return std::nullopt;
-      }
-      if (i == 0) {
-        backgrounds.push_back(background);
-        referenceFrames.push_back(std::move(image));
-      }
-      const runtime::FrameResult& ref = referenceFrames[vi];
-      const runtime::FrameResult& mine = i == 0 ? referenceFrames[vi] : image;
-      std::vector<bool> mask = coverageMask(mine.hdr, ref.hdr, backgrounds[vi]);
-      ErrorAccumulator one;
-      one.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
-      all.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
-      view.error = one.metrics();
-      r.views.push_back(std::move(view));
-    }
-    r.error = all.metrics();
     report.results.push_back(std::move(r));
     if (options.progress) options.progress(formatProgress(i, configs.size(), report.results.back()));
   }
 
-  // Ratios to the tiers as shipped.
+  // Ratios to the tiers as shipped (configurations() puts reference as shipped first).
   auto shipped = [&](permutations::Tier t) -> const ConfigurationResult* {
     for (const ConfigurationResult& r : report.results)
       if (!r.configuration.swap() && r.configuration.tier == t) return &r;
     return nullptr;
   };
-  const ConfigurationResult* reference = shipped(permutations::Tier::Reference);
   const ConfigurationResult* high = shipped(permutations::Tier::High);
   auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
-  const double referenceCycles = reference->fragment.cycles;
+  const double referenceCycles = report.results[0].fragment.cycles;
   const double highCycles = high ? high->fragment.cycles : 0;
   for (ConfigurationResult& r : report.results) {
     r.cyclesVsReference = ratio(r.fragment.cycles, referenceCycles);

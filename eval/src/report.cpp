@@ -262,6 +262,18 @@ std::string reportSvg(const EvalReport& r) {
     if (!points.count(key)) order.push_back(key);
     points[key].push_back(&c);
   }
+  // Labels go to the first of a few places around their point that overlaps no label or point
+  // placed before (text width estimated at 5.2 px per character of the 9 px font), else to the
+  // right. Pareto points are labelled first, so theirs are the ones that stay readable.
+  struct Box {
+    double x0, y0, x1, y1;
+    bool overlaps(const Box& b) const { return x0 < b.x1 && b.x0 < x1 && y0 < b.y1 && b.y0 < y1; }
+  };
+  std::vector<Box> taken;
+  for (const auto& key : order) taken.push_back({px(key.first) - 4, py(key.second) - 4, px(key.first) + 4, py(key.second) + 4});
+  std::stable_sort(order.begin(), order.end(), [&](const auto& a, const auto& b) {
+    return points[a].front()->pareto && !points[b].front()->pareto;
+  });
   s += "<g font-size=\"9\">\n";
   for (const auto& key : order) {
     const auto& members = points[key];
@@ -271,8 +283,24 @@ std::string reportSvg(const EvalReport& r) {
     const double x = px(key.first), y = py(key.second);
     s += "<circle cx=\"" + fmt("%.1f", x) + "\" cy=\"" + fmt("%.1f", y) + "\" r=\"" + (onFront ? "4.5" : "3.5") +
          "\" fill=\"" + (onFront ? "#d62728" : "#7f7f7f") + "\"><title>" + xmlEscape(label) + "</title></circle>\n";
-    s += "<text x=\"" + fmt("%.1f", x + 6) + "\" y=\"" + fmt("%.1f", y - 4) + "\" fill=\"" + (onFront ? "#a01010" : "#555") +
-         "\">" + xmlEscape(label) + "</text>\n";
+    const double width = 5.2 * double(label.size());
+    // (dx, dy) of the text's baseline start; anchor end when the label sits left of its point.
+    const std::pair<double, double> places[] = {{6, -4}, {6, 10}, {-6, -4}, {-6, 10}, {6, -14}, {6, 20}, {-6, -14}, {-6, 20}};
+    double dx = 6, dy = -4;
+    for (const auto& [cx, cy] : places) {
+      const double start = cx > 0 ? x + cx : x + cx - width;
+      Box box{start, y + cy - 8, start + width, y + cy + 2};
+      if (box.x0 < 0 || box.x1 > W || std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return box.overlaps(b); }))
+        continue;
+      dx = cx;
+      dy = cy;
+      break;
+    }
+    const double start = dx > 0 ? x + dx : x + dx - width;
+    taken.push_back({start, y + dy - 8, start + width, y + dy + 2});
+    s += "<text x=\"" + fmt("%.1f", x + dx) + "\" y=\"" + fmt("%.1f", y + dy) + "\"" +
+         (dx < 0 ? " text-anchor=\"end\"" : "") + " fill=\"" + (onFront ? "#a01010" : "#555") + "\">" +
+         xmlEscape(label) + "</text>\n";
   }
   s += "</g>\n</svg>\n";
   return s;

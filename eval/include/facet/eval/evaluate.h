@@ -26,7 +26,8 @@ struct EvalOptions {
   int timingFrames = 5;         // timed renders of the first view (median), each paired with one of reference's
   int warmupFrames = 1;         // untimed renders first (the first also makes the image)
   bool validation = false;      // Vulkan validation layers (FACET_VK_VALIDATION=1 also turns them on)
-  bool fp16Emulation = false;   // build mediump SPIR-V with binary16 rounding (docs/fp16-emulation.md)
+  bool fp16Emulation = false;   // render mediump SPIR-V with binary16 rounding (docs/fp16-emulation.md);
+                                // the cost is still that of the shaders as shipped
   compiler::MobileCostWeights weights;
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
 };
