@@ -301,6 +301,10 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
   EXPECT_LT(byName["high:specular=lut"]->fragment.cycles, high.fragment.cycles);
   EXPECT_GT(high.timeVsReference, 0.0);
   EXPECT_EQ(high.variantKey, "high.dir1.pt1");
+  // The sun + IBL variant, the one the cost goals name, is costed too: cheaper than with the point light.
+  EXPECT_GT(high.sunIblFragmentCycles, 0.0);
+  EXPECT_LT(high.sunIblFragmentCycles, high.fragment.cycles);
+  EXPECT_DOUBLE_EQ(high.sunIblVsHigh, 1.0);
   // The cheapest configuration is always on the Pareto front.
   auto cheapest = std::min_element(report->results.begin(), report->results.end(),
                                    [](const auto& a, const auto& b) { return a.fragment.cycles < b.fragment.cycles; });
@@ -313,7 +317,8 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
   ASSERT_EQ(json["configurations"].size(), report->results.size());
   for (const auto& c : json["configurations"]) {
     for (const char* key : {"name", "change", "tier_config", "variant", "error", "views", "cost", "cycles_vs_high",
-                            "cycles_vs_reference", "lavapipe_ms", "lavapipe_vs_reference", "pareto"})
+                            "cycles_vs_reference", "sun_ibl_fragment_cycles", "sun_ibl_vs_high", "lavapipe_ms",
+                            "lavapipe_vs_reference", "pareto"})
       EXPECT_TRUE(c.contains(key)) << key;
     for (const char* key : {"psnr_db", "mean_abs_8bit", "p99_abs_8bit", "rel_rmse_hdr"})
       EXPECT_TRUE(c["error"].contains(key)) << key;

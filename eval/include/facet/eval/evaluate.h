@@ -48,6 +48,10 @@ struct ConfigurationResult {
   double seconds = 0;           // lavapipe: median render() time of the first view
   double cyclesVsHigh = 0;      // fragment cycles ÷ high's as shipped (0 when high was not evaluated)
   double cyclesVsReference = 0;
+  // Lit materials: fragment cycles of the sun + IBL variant <tier>.dir1 (no point light), the
+  // variant the tiers' cost goals (and the Mali-G57 measurements) refer to, and its ratio to high's.
+  double sunIblFragmentCycles = 0;
+  double sunIblVsHigh = 0;
   double timeVsReference = 0;   // median over the paired renders of this time ÷ reference's (0: not timed)
   bool pareto = false;          // no other configuration has both fewer cycles and a higher PSNR
 };
