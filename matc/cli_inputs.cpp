@@ -1,16 +1,20 @@
 #include "cli_inputs.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "commands.h"
+#include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 
 namespace facet::matc {
 
 namespace fs = std::filesystem;
+
+void printError(const std::string& message) { std::fprintf(stderr, "matc: error: %s\n", message.c_str()); }
 
 bool readSource(const std::string& path, ir::SourceFile* out) {
   std::error_code ec;
@@ -42,6 +46,24 @@ bool outputSparesInput(const std::string& input, const std::string& output) {
   if (!same) return true;
   printError("the output '" + output + "' is the input material; name another file with -o");
   return false;
+}
+
+std::optional<ir::Material> loadMaterial(const std::string& path, ir::SourceFile* source) {
+  if (!readSource(path, source)) return std::nullopt;
+  ir::Diagnostics diags(*source);
+  std::optional<ir::Material> material = ir::compileSource(*source, diags);
+  std::fputs(diags.format().c_str(), stderr);
+  if (!material)
+    std::fprintf(stderr, "%zu error%s generated.\n", diags.errorCount(), diags.errorCount() == 1 ? "" : "s");
+  return material;
+}
+
+void printBuildError(const ir::SourceFile& source, const std::string& message, const std::optional<ir::SourceLoc>& loc) {
+  if (loc) {
+    std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *loc, message, "backend"}).c_str(), stderr);
+  } else {
+    printError(message);
+  }
 }
 
 int parseTiers(const std::vector<std::string>& names, std::vector<permutations::Tier>* tiers) {

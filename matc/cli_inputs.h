@@ -1,10 +1,13 @@
-// Inputs every matc command reads the same way: material files and --tiers lists.
+// Inputs every matc command reads the same way (material files, --tiers lists), and how it
+// reports a material that does not compile.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/ir/diagnostics.h"
+#include "facet/ir/module.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::matc {
@@ -16,6 +19,13 @@ bool readSource(const std::string& path, ir::SourceFile* out);
 // False (after printing why) when writing `output` would destroy `input`: the same file, by
 // path or through a link (`matc compile x.mat -o x.mat`, or a source named x.matpkg with no -o).
 bool outputSparesInput(const std::string& input, const std::string& output);
+
+// Reads, parses and checks a material file. Prints the diagnostics (warnings too) to stderr;
+// nullopt when the file cannot be read or has errors (the command then exits 1).
+std::optional<ir::Material> loadMaterial(const std::string& path, ir::SourceFile* source);
+
+// A build failure: at the material's line when it traces back to one, else "matc: error: ...".
+void printBuildError(const ir::SourceFile& source, const std::string& message, const std::optional<ir::SourceLoc>& loc);
 
 // --tiers names -> tiers this compiler builds; an empty list keeps *tiers as it is. Prints the
 // error and returns 2 (usage) on an unknown or unsupported name, else 0.

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "facet/permutations/variant_key.h"
+
 namespace facet::matc {
 
 struct CompileArgs {
@@ -51,6 +53,19 @@ struct PostArgs {
   bool acesTonemap = true;
 };
 int postCommand(const PostArgs& args);
+
+struct EvalArgs {
+  std::string input;
+  std::string scene;       // scene file instead of the built-in evaluation grid
+  std::string out;         // default: <input stem>.eval next to the current folder
+  std::vector<std::string> tiers;  // tiers whose configurations are measured; default: all
+  int frames = 5;          // timed frames per view (median); 0: no timing
+  int spherePixels = 64;   // grid: pixels per sphere (the image is columns × rows of these)
+  bool noSwaps = false;    // the tiers as shipped only
+  bool validation = false;
+  bool fp16Emulation = false;
+};
+int evalCommand(const EvalArgs& args);
 
 // Prints "matc: error: <message>" to stderr.
 void printError(const std::string& message);

@@ -20,7 +20,6 @@
 
 namespace facet::matc {
 
-void printError(const std::string& message) { std::fprintf(stderr, "matc: error: %s\n", message.c_str()); }
 
 namespace {
 
@@ -113,18 +112,11 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
 
 int compileCommand(const CompileArgs& args) {
   ir::SourceFile source;
-  if (!readSource(args.input, &source)) return 1;
+  std::optional<ir::Material> material = loadMaterial(args.input, &source);
+  if (!material) return 1;
   std::string output = args.output;
   if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
   if (!outputSparesInput(args.input, output)) return 1;
-
-  ir::Diagnostics diags(source);
-  std::optional<ir::Material> material = ir::compileSource(source, diags);
-  std::fputs(diags.format().c_str(), stderr);
-  if (!material) {
-    std::fprintf(stderr, "%zu error%s generated.\n", diags.errorCount(), diags.errorCount() == 1 ? "" : "s");
-    return 1;
-  }
 
   compiler::BuildOptions options;
   options.fp16Emulation = args.fp16Emulation;
@@ -144,12 +136,7 @@ int compileCommand(const CompileArgs& args) {
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
   if (progressLine) std::fputs("\r\033[K", stderr);
   if (!built) {
-    if (buildError.loc) {
-      std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *buildError.loc, buildError.message, "backend"}).c_str(),
-                 stderr);
-    } else {
-      printError(buildError.message);
-    }
+    printBuildError(source, buildError.message, buildError.loc);
     return 1;
   }
   std::string error;

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
@@ -30,23 +31,26 @@ std::vector<uint32_t> words(const package::Shader& s) {
   return w;
 }
 
-// The static cost table (DESIGN.md, "Measuring"), from each variant's optimised SPIR-V.
+// The static cost table (DESIGN.md, "Measuring"), from each variant's optimised SPIR-V, with the
+// mobile cost model's estimated cycles (docs/eval.md, "The mobile cost model").
 void printCosts(const package::Package& pkg) {
-  std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width)\n");
-  std::printf("  %-18s %-8s %5s %6s %6s %4s %4s %8s %8s\n", "variant", "stage", "alu", "scalar", "transc", "div", "tex",
-              "varyings", "mediump");
+  std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"
+              "Valhall-class cycles per vertex or fragment, docs/eval.md)\n");
+  std::printf("  %-18s %-8s %5s %6s %6s %4s %4s %8s %8s %7s\n", "variant", "stage", "alu", "scalar", "transc", "div", "tex",
+              "varyings", "mediump", "cycles");
   for (const package::Variant& v : pkg.variants) {
     for (const package::Shader& s : v.shaders) {
       if (s.target != package::Target::Spirv) continue;
       compiler::StageCost c;
+      compiler::MobileStageCost m;
       std::string error;
-      if (!compiler::analyseSpirvCost(words(s), &c, &error)) {
+      if (!compiler::analyseSpirvCost(words(s), &c, &error) || !compiler::estimateMobileCost(words(s), &m, &error)) {
         std::printf("  %-18s %-8s (%s)\n", v.key.c_str(), package::toString(s.stage), error.c_str());
         continue;
       }
-      std::printf("  %-18s %-8s %5u %6u %6u %4u %4u %8u %7.0f%%\n", v.key.c_str(), package::toString(s.stage), c.aluOps,
-                  c.scalarAluOps, c.transcendentalOps, c.divisions, c.textureSamples, c.varyingComponents,
-                  c.relaxedPercent());
+      std::printf("  %-18s %-8s %5u %6u %6u %4u %4u %8u %7.0f%% %7.2f\n", v.key.c_str(), package::toString(s.stage),
+                  c.aluOps, c.scalarAluOps, c.transcendentalOps, c.divisions, c.textureSamples, c.varyingComponents,
+                  c.relaxedPercent(), m.cycles);
     }
   }
 }

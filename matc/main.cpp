@@ -70,6 +70,21 @@ int main(int argc, char** argv) {
   postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
   postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
   postCmd->add_flag("!--no-tonemap", post.acesTonemap, "leave out the ACES tone curve (HDR clamped to [0, 1])");
+  facet::matc::EvalArgs eval;
+  CLI::App* evalCmd = app.add_subcommand(
+      "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
+  evalCmd->add_option("input", eval.input, "material source (.mat)")->required();
+  evalCmd->add_option("--scene", eval.scene, "scene JSON to render instead of the built-in evaluation grid");
+  evalCmd->add_option("--out", eval.out, "folder for report.md, report.json, plot.svg and images/ (default: <input stem>.eval)");
+  evalCmd->add_option("--tiers", eval.tiers, "tiers to measure, with their swaps (reference is always measured)")
+      ->delimiter(',');
+  evalCmd->add_option("--frames", eval.frames, "timed frames per view on lavapipe (median; 0: no timing)")
+      ->check(CLI::Range(0, 1000));
+  evalCmd->add_option("--sphere-pixels", eval.spherePixels, "grid: pixels per sphere (default 64)")->check(CLI::Range(8, 512));
+  evalCmd->add_flag("--no-swaps", eval.noSwaps, "measure the tiers as shipped only, not their single-option swaps");
+  evalCmd->add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
+  evalCmd->add_flag("--fp16-emulation", eval.fp16Emulation,
+                    "build mediump SPIR-V with every result rounded to binary16 (docs/fp16-emulation.md)");
 
   try {
     app.parse(argc, argv);
@@ -85,5 +100,6 @@ int main(int argc, char** argv) {
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
   if (lintCmd->parsed()) return facet::matc::lintCommand(lint);
   if (postCmd->parsed()) return facet::matc::postCommand(post);
+  if (evalCmd->parsed()) return facet::matc::evalCommand(eval);
   return 2;
 }

@@ -4,6 +4,7 @@
 #   build/release/                     the build
 #   build/examples/packages/*.matpkg   compiled materials (+ sources/ with every generated shader)
 #   build/examples/images/*.png        rendered scenes, one per backend
+#   build/examples/eval/               matc eval of red_plastic: report.md, report.json, plot.svg, images/
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -31,7 +32,13 @@ for tier in reference high mid low; do
     --packages "$packages" --out "$images" --validation
 done
 
+# Speed against error (docs/eval.md): every tier and single-option swap of one material, rendered
+# on lavapipe and measured against `reference` and by the mobile cost model.
+rm -rf build/examples/eval
+build/release/matc/matc eval examples/materials/red_plastic.mat --out build/examples/eval
+
 echo
 echo "Packages: $(pwd)/$packages"
 echo "Images:   $(pwd)/$images"
 ls -1 "$images"/*.png
+echo "Eval:     $(pwd)/build/examples/eval/report.md (plot.svg, report.json, images/)"

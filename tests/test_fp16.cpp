@@ -518,22 +518,9 @@ struct Comparison {
   size_t blackWhereLit = 0;
 };
 
-double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (i % 4 == 3) continue;
-    double d = double(a[i]) - double(b[i]);
-    sum += d * d;
-    ++n;
-  }
-  double mse = sum / double(n);
-  return mse == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
-}
-
 Comparison compare(const runtime::FrameResult& image, const runtime::FrameResult& reference) {
   Comparison c;
-  c.psnr = psnr(image.ldr, reference.ldr);
+  c.psnr = test::psnr(image.ldr, reference.ldr);
   for (size_t p = 0; p + 3 < image.hdr.size(); p += 4) {
     float maxRef = 0, maxImg = 0;
     for (size_t k = 0; k < 3; ++k) {

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "facet/eval/metrics.h"
+
 namespace facet::test {
 
 namespace fs = std::filesystem;
@@ -73,16 +75,7 @@ std::string writeExamplePackages(const std::string& scratchName, const compiler:
 
 double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
   EXPECT_EQ(a.size(), b.size());
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
-    if (i % 4 == 3) continue;
-    double d = double(a[i]) - double(b[i]);
-    sum += d * d;
-    ++n;
-  }
-  double mse = n == 0 ? 0 : sum / double(n);
-  return mse == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
+  return std::min(eval::psnr8(a, b), 99.0);
 }
 
 std::string diagnosticsFor(const std::string& text, const std::string& path) {

@@ -34,7 +34,8 @@ std::optional<compiler::BuildResult> buildText(const std::string& text, const st
 // the folder. Fails the current test on any error.
 std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts,
                                    const compiler::BuildOptions& options = {});
-// 8-bit PSNR between two RGBA8 images of the same size, over RGB (99 dB when identical).
+// 8-bit PSNR between two RGBA8 images of the same size, over RGB (99 dB when identical):
+// facet::eval::psnr8, capped.
 double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
 
 // The same for every examples/materials/*.mat.

@@ -194,10 +194,7 @@ bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& ke
   const ir::Material& material = ctx.material;
   std::string* error = &out->failure.message;
   const std::string keyText = key.toString();
-  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
-  permutations::TierConfig tier = permutations::preset(key.tier);
-  for (const ir::TierOverride& o : material.tierOverrides)
-    if (o.tier == permutations::toString(key.tier)) permutations::applyOverride(&tier, o.axis, o.option);
+  const permutations::TierConfig tier = tierConfig(material, key.tier, ctx.options);
   AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
   StageSources es, vk;
   if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
@@ -249,6 +246,15 @@ bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& ke
 const std::string& compilerVersion() {
   static const std::string version = std::string("facet-matc ") + FACET_VERSION;
   return version;
+}
+
+permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tierName, const BuildOptions& options) {
+  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+  permutations::TierConfig tier = permutations::preset(tierName);
+  for (const ir::TierOverride& o : material.tierOverrides)
+    if (o.tier == permutations::toString(tierName)) permutations::applyOverride(&tier, o.axis, o.option);
+  if (options.adjustTier) options.adjustTier(tierName, &tier);
+  return tier;
 }
 
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {

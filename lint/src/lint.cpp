@@ -1,6 +1,7 @@
 #include "facet/lint/lint.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -153,7 +154,8 @@ bool variantFigures(const package::Variant& v, VariantFigures* figures, std::str
       *error = "no SPIR-V";
       return false;
     }
-    if (!compiler::analyseSpirvCost(words, &dest->cost, error) || !compiler::analyseStageInterface(words, &dest->interface, error))
+    if (!compiler::estimateMobileCost(words, &dest->mobile, error) || !compiler::analyseSpirvCost(words, &dest->cost, error) ||
+        !compiler::analyseStageInterface(words, &dest->interface, error))
       return false;
   }
   return true;
@@ -166,7 +168,9 @@ bool MaterialLint::hasErrors() const {
 }
 
 std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) {
+  // Cycles in hundredths, as reports print them: a baseline compares what a reader sees.
   return {
+      {"cycles", std::round(s.mobile.cycles * 100.0) / 100.0},
       {"alu", s.cost.aluOps},
       {"scalar_alu", s.cost.scalarAluOps},
       {"transcendental", s.cost.transcendentalOps},

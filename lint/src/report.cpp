@@ -68,12 +68,12 @@ std::string formatText(const std::vector<LintedFile>& files) {
   for (const LintedFile& f : files) {
     if (f.result.variants.empty()) continue;
     out += "\n" + f.file.path + " (" + f.result.material + ")\n";
-    out += "  variant            stage      alu scalar transc  div  tex varyings uniforms samplers  mediump\n";
+    out += "  variant            stage    cycles  alu scalar transc  div  tex varyings uniforms samplers  mediump\n";
     for (const VariantFigures& v : f.result.variants)
       for (auto [name, s] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}}) {
         char line[160];
-        std::snprintf(line, sizeof line, "  %-18s %-8s %5u %6u %6u %4u %4u %8u %8u %8u %7.0f%%\n", v.key.c_str(), name,
-                      s->cost.aluOps, s->cost.scalarAluOps, s->cost.transcendentalOps, s->cost.divisions,
+        std::snprintf(line, sizeof line, "  %-18s %-8s %6.2f %4u %6u %6u %4u %4u %8u %8u %8u %7.0f%%\n", v.key.c_str(),
+                      name, s->mobile.cycles, s->cost.aluOps, s->cost.scalarAluOps, s->cost.transcendentalOps, s->cost.divisions,
                       s->cost.textureSamples, s->cost.varyingComponents, s->interface.uniformVectors,
                       s->interface.samplers, s->cost.relaxedPercent());
         out += line;

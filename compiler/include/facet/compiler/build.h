@@ -13,6 +13,7 @@
 
 #include "facet/ir/module.h"
 #include "facet/package.h"
+#include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::compiler {
@@ -56,7 +57,15 @@ struct BuildOptions {
   // Called after each variant finishes (done of total), one call at a time, from any thread;
   // matc draws its terminal progress line with it.
   std::function<void(size_t done, size_t total)> progress;
+  // Evaluation only (`matc eval`, docs/eval.md): called with each tier's configuration after the
+  // preset and the material's overrides are applied, to change any choice of it (a single-option
+  // swap). Unset: the preset with the material's overrides, as shipped.
+  std::function<void(permutations::Tier, permutations::TierConfig*)> adjustTier;
 };
+
+// The maths a tier's variants use: the tier's preset, the material's overrides for that tier,
+// then options.adjustTier.
+permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tier, const BuildOptions& options);
 
 struct BuildError {
   std::string message;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_interface.h"
 #include "facet/ir/diagnostics.h"
@@ -18,6 +19,7 @@
 namespace facet::lint {
 
 struct StageFigures {
+  compiler::MobileStageCost mobile;  // the mobile cost model (estimated cycles), as `matc eval` reports it
   compiler::StageCost cost;
   compiler::StageInterface interface;
 };

@@ -1,0 +1,44 @@
+// The configurations `matc eval` measures: every tier as shipped (its preset with the material's
+// overrides) and every single-option swap of it, one choice of one axis replaced.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "facet/ir/module.h"
+#include "facet/permutations/tiers.h"
+
+namespace facet::eval {
+
+struct Configuration {
+  std::string name;    // "high" (as shipped) or "high:specular=zioma" (a swap)
+  permutations::Tier tier = permutations::Tier::High;
+  permutations::TierConfig config;  // the maths the variant is built with
+  std::string axis;    // "" as shipped; else specular | diffuse | ambient | sh_bands | color_space | precision | energy_compensation
+  std::string option;  // the option swapped in
+  std::string change;  // "as shipped" or e.g. "specular ggx_smith → zioma"
+  bool swap() const { return !axis.empty(); }
+};
+
+// An axis of TierConfig and its options, by name. The one list `matc eval` swaps through; a new
+// choice in permutations/tiers.h is measured once it is added here.
+struct Axis {
+  const char* name;
+  std::vector<std::string> options;
+  std::string (*get)(const permutations::TierConfig&);
+  void (*set)(permutations::TierConfig*, const std::string&);
+  // Whether the axis means anything for this configuration (energy compensation: split-sum only).
+  bool (*applies)(const permutations::TierConfig&) = nullptr;
+};
+const std::vector<Axis>& axes();
+
+// For each tier (in the order given): the tier as shipped, then each single-option swap in axes()
+// order. `reference` as shipped is always included first, whatever `tiers` says: every error is
+// measured against it. swaps = false gives the tiers as shipped only.
+std::vector<Configuration> configurations(const ir::Material& material, const std::vector<permutations::Tier>& tiers,
+                                          bool swaps = true);
+
+// A name safe for file names: "high:specular=zioma" -> "high.specular-zioma".
+std::string fileStem(const std::string& configurationName);
+
+}  // namespace facet::eval

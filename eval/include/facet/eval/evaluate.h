@@ -1,0 +1,80 @@
+// `matc eval`: every tier and single-option swap of a material, rendered on lavapipe and measured
+// against `reference` (error) and by the mobile cost model and lavapipe's frame time (speed).
+// docs/eval.md describes what is measured and how; report.h writes the result.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/compiler/mobile_cost.h"
+#include "facet/eval/configurations.h"
+#include "facet/eval/grid_scene.h"
+#include "facet/eval/metrics.h"
+#include "facet/ir/module.h"
+#include "facet/permutations/variant_key.h"
+
+namespace facet::eval {
+
+struct EvalOptions {
+  std::vector<permutations::Tier> tiers = permutations::supportedTiers();
+  bool swaps = true;            // also every single-option swap of each tier
+  std::string sceneFile;        // a scene file instead of the built-in grid ("" = the grid)
+  GridOptions grid;
+  std::string outDir;           // images/ (PNG per configuration and view) and packages/ are written here
+  int timingFrames = 5;         // timed renders of the first view (median), each paired with one of reference's
+  int warmupFrames = 1;         // untimed renders first (the first also makes the image)
+  bool validation = false;      // Vulkan validation layers (FACET_VK_VALIDATION=1 also turns them on)
+  bool fp16Emulation = false;   // render mediump SPIR-V with binary16 rounding (docs/fp16-emulation.md);
+                                // the cost is still that of the shaders as shipped
+  compiler::MobileCostWeights weights;
+  std::function<void(const std::string&)> progress;  // one line per configuration, if set
+};
+
+struct ViewResult {
+  std::string name;             // "frontal", "grazing", or the scene file's stem
+  std::string image;            // PNG path relative to outDir
+  ImageMetrics error;
+};
+
+struct ConfigurationResult {
+  Configuration configuration;
+  std::string variantKey;       // e.g. "high.dir1.pt1"
+  std::string sameAs;           // the earlier configuration with identical maths whose results these are
+  compiler::MobileStageCost fragment, vertex;
+  ImageMetrics error;           // all views together
+  std::vector<ViewResult> views;
+  double seconds = 0;           // lavapipe: median render() time of the first view
+  double cyclesVsHigh = 0;      // fragment cycles ÷ high's as shipped (0 when high was not evaluated)
+  double cyclesVsReference = 0;
+  // Lit materials: fragment cycles of the sun + IBL variant <tier>.dir1 (no point light), the
+  // variant the tiers' cost goals (and the Mali-G57 measurements) refer to, and its ratio to high's.
+  double sunIblFragmentCycles = 0;
+  double sunIblVsHigh = 0;
+  double timeVsReference = 0;   // median over the paired renders of this time ÷ reference's (0: not timed)
+  bool pareto = false;          // no other configuration has both fewer cycles and a higher PSNR
+};
+
+struct EvalReport {
+  std::string material;
+  std::string scene;            // "built-in grid" or the scene file
+  std::vector<std::string> sceneNotes;  // the sweep, dropped objects, ...
+  std::vector<std::string> viewNames;
+  uint32_t width = 0, height = 0;       // of the first view
+  int timingFrames = 0, warmupFrames = 0;
+  bool fp16Emulation = false;
+  compiler::MobileCostWeights weights;
+  std::vector<ConfigurationResult> results;  // results[0] is reference as shipped
+};
+
+struct EvalError {
+  std::string message;
+  std::optional<ir::SourceLoc> loc;  // a build error that traces back to a line of the material
+};
+
+// Runs the evaluation. Fails on a build error (with the material's line where known), a scene
+// that cannot be read or rendered, or no Vulkan device.
+std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptions& options, EvalError* error);
+
+}  // namespace facet::eval

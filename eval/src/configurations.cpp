@@ -1,0 +1,98 @@
+#include "facet/eval/configurations.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "facet/compiler/build.h"
+
+namespace facet::eval {
+namespace {
+
+using permutations::AmbientModel;
+using permutations::ColorSpace;
+using permutations::DiffuseModel;
+using permutations::PrecisionPolicy;
+using permutations::SpecularModel;
+using permutations::TierConfig;
+
+const char* const kSpecular[] = {"ggx_smith", "ggx_fastv", "zioma", "lut"};
+const char* const kAmbient[] = {"split_sum", "analytic", "two_mip"};
+
+}  // namespace
+
+const std::vector<Axis>& axes() {
+  static const std::vector<Axis> list = {
+      {"specular", {"ggx_smith", "ggx_fastv", "zioma", "lut"},
+       [](const TierConfig& c) { return std::string(kSpecular[int(c.specular)]); },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "specular", o); }},
+      {"diffuse", {"pixel", "vertex"},
+       [](const TierConfig& c) { return std::string(c.diffuse == DiffuseModel::Pixel ? "pixel" : "vertex"); },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "diffuse", o); }},
+      {"ambient", {"split_sum", "analytic", "two_mip"},
+       [](const TierConfig& c) { return std::string(kAmbient[int(c.ambient)]); },
+       [](TierConfig* c, const std::string& o) {
+         c->ambient = o == "split_sum" ? AmbientModel::SplitSum : o == "analytic" ? AmbientModel::Analytic : AmbientModel::TwoMip;
+       }},
+      {"sh_bands", {"2", "3"}, [](const TierConfig& c) { return std::to_string(c.shBands); },
+       [](TierConfig* c, const std::string& o) { c->shBands = o == "2" ? 2 : 3; }},
+      {"color_space", {"linear", "gamma_hack"},
+       [](const TierConfig& c) { return std::string(c.colorSpace == ColorSpace::Linear ? "linear" : "gamma_hack"); },
+       [](TierConfig* c, const std::string& o) { c->colorSpace = o == "linear" ? ColorSpace::Linear : ColorSpace::GammaHack; }},
+      {"precision", {"highp", "mediump"},
+       [](const TierConfig& c) { return std::string(c.precision == PrecisionPolicy::Highp ? "highp" : "mediump"); },
+       [](TierConfig* c, const std::string& o) { c->precision = o == "highp" ? PrecisionPolicy::Highp : PrecisionPolicy::Mediump; }},
+      {"energy_compensation", {"off", "on"},
+       [](const TierConfig& c) { return std::string(c.energyCompensation ? "on" : "off"); },
+       [](TierConfig* c, const std::string& o) { c->energyCompensation = o == "on"; },
+       [](const TierConfig& c) { return c.ambient == AmbientModel::SplitSum; }},
+  };
+  return list;
+}
+
+std::vector<Configuration> configurations(const ir::Material& material, const std::vector<permutations::Tier>& tiers,
+                                          bool swaps) {
+  std::vector<permutations::Tier> order = {permutations::Tier::Reference};
+  for (permutations::Tier t : tiers)
+    if (std::find(order.begin(), order.end(), t) == order.end()) order.push_back(t);
+  std::vector<Configuration> out;
+  for (permutations::Tier tier : order) {
+    Configuration shipped;
+    shipped.tier = tier;
+    shipped.name = permutations::toString(tier);
+    shipped.config = compiler::tierConfig(material, tier, {});
+    shipped.change = "as shipped";
+    out.push_back(shipped);
+    // The reference is the ground truth, measured only as shipped unless it was asked for.
+    if (!swaps || (tier == permutations::Tier::Reference &&
+                   std::find(tiers.begin(), tiers.end(), permutations::Tier::Reference) == tiers.end()))
+      continue;
+    for (const Axis& axis : axes()) {
+      if (axis.applies && !axis.applies(shipped.config)) continue;
+      const std::string current = axis.get(shipped.config);
+      for (const std::string& option : axis.options) {
+        if (option == current) continue;
+        Configuration c = shipped;
+        axis.set(&c.config, option);
+        if (c.config == shipped.config) continue;
+        c.axis = axis.name;
+        c.option = option;
+        c.name = shipped.name + ":" + axis.name + "=" + option;
+        c.change = std::string(axis.name) + " " + current + " → " + option;
+        out.push_back(c);
+      }
+    }
+  }
+  return out;
+}
+
+std::string fileStem(const std::string& name) {
+  std::string s = name;
+  for (char& ch : s) {
+    if (ch == ':') ch = '.';
+    else if (ch == '=') ch = '-';
+    else if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.' && ch != '-') ch = '_';
+  }
+  return s;
+}
+
+}  // namespace facet::eval

@@ -1,0 +1,320 @@
+#include "facet/eval/evaluate.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include "facet/compiler/build.h"
+#include "facet/eval/prepared_frame.h"
+#include "facet/package.h"
+#include "facet/render_backend.h"
+#include "facet/runtime/png.h"
+
+namespace facet::eval {
+namespace {
+
+namespace fs = std::filesystem;
+using permutations::TierConfig;
+
+struct View {
+  std::string name;
+  runtime::Scene scene;
+};
+
+std::vector<uint32_t> wordsOf(const package::Shader& s) {
+  std::vector<uint32_t> w(s.code.size() / 4);
+  std::memcpy(w.data(), s.code.data(), w.size() * 4);
+  return w;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Removes the folder it names when it goes out of scope.
+struct TempDir {
+  fs::path path;
+  ~TempDir() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
+void markPareto(std::vector<ConfigurationResult>* results) {
+  for (ConfigurationResult& a : *results) {
+    a.pareto = true;
+    for (const ConfigurationResult& b : *results) {
+      const bool noWorse = b.fragment.cycles <= a.fragment.cycles && b.error.psnr >= a.error.psnr;
+      const bool better = b.fragment.cycles < a.fragment.cycles || b.error.psnr > a.error.psnr;
+      if (noWorse && better) {
+        a.pareto = false;
+        break;
+      }
+    }
+  }
+}
+
+std::string formatProgress(size_t index, size_t count, const ConfigurationResult& r) {
+  char psnr[32] = "identical";
+  if (!std::isinf(r.error.psnr)) std::snprintf(psnr, sizeof psnr, "%.1f dB", r.error.psnr);
+  char line[256];
+  std::snprintf(line, sizeof line, "[%zu/%zu] %-34s %-10s %5.2f cycles  %6.1f ms", index + 1, count,
+                r.configuration.name.c_str(), psnr, r.fragment.cycles, 1000.0 * r.seconds);
+  return r.sameAs.empty() ? line : std::string(line) + "  (same maths as " + r.sameAs + ")";
+}
+
+// One evaluation: the views, the Vulkan backend, and what later configurations are measured
+// against (the reference's images, and its first view for paired timing).
+class Evaluation {
+ public:
+  Evaluation(const ir::Material& material, const EvalOptions& options, std::vector<View> views,
+             std::unique_ptr<runtime::RenderBackend> backend, fs::path workDir)
+      : material_(material), options_(options), views_(std::move(views)), backend_(std::move(backend)),
+        workDir_(std::move(workDir)) {}
+
+  // Builds, costs, renders and compares one configuration; the first must be the reference.
+  bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error) {
+    r->configuration = c;
+    std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, &r->variantKey, error);
+    if (!built) return false;
+    const fs::path packageDir = workDir_ / fileStem(c.name);
+    std::error_code ec;
+    fs::create_directories(packageDir, ec);
+    const std::string packagePath = (packageDir / (material_.name + ".matpkg")).string();
+    if (!package::writeFile(packagePath, package::write(built->package), &error->message)) return false;
+
+    // The cost of the variant the (first) view renders, as shipped: an fp16-emulation build's
+    // SPIR-V is quantized before spirv-opt and costs what no device runs, so the cost comes from
+    // the same configuration built without it.
+    std::optional<compiler::BuildResult> shipped;
+    if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
+    if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
+
+    ErrorAccumulator all;
+    for (size_t vi = 0; vi < views_.size(); ++vi) {
+      runtime::Scene scene = views_[vi].scene;
+      scene.tier = permutations::toString(c.tier);
+      std::string message;
+      std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
+      if (!prepared) return fail(c, message, error);
+      const runtime::FrameDesc& frame = prepared->frame();
+      runtime::FrameResult image;
+      for (int w = 0; w < std::max(options_.warmupFrames, 1); ++w)
+        if (!backend_->render(frame, &image, &message)) return fail(c, "render failed: " + message, error);
+      if (vi == 0 && !time(c, frame, r, error)) return false;
+      if (!backend_->validationErrors().empty())
+        return fail(c, "Vulkan validation reported: " + backend_->validationErrors().front(), error);
+
+      ViewResult view;
+      view.name = views_[vi].name;
+      view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
+      if (!runtime::writePng((fs::path(options_.outDir) / view.image).string(), image.width, image.height, image.ldr,
+                             &error->message))
+        return false;
+      if (isReference) {
+        backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
+        referenceImages_.push_back(std::move(image));
+        if (vi == 0) referenceFrame_ = std::move(prepared);  // for the paired timing of the others
+      }
+      const runtime::FrameResult& ref = referenceImages_[vi];
+      const runtime::FrameResult& mine = isReference ? ref : image;
+      std::vector<bool> mask = coverageMask(mine.hdr, ref.hdr, backgrounds_[vi]);
+      ErrorAccumulator one;
+      one.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
+      all.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
+      view.error = one.metrics();
+      r->views.push_back(std::move(view));
+    }
+    r->error = all.metrics();
+    return true;
+  }
+
+ private:
+  static bool fail(const Configuration& c, const std::string& message, EvalError* error) {
+    error->message = c.name + ": " + message;
+    return false;
+  }
+
+  // The configuration's package: its tier only, the variants the views ask for, and (lit
+  // materials) the sun + IBL variant <tier>.dir1 that the cost goals refer to.
+  std::optional<compiler::BuildResult> build(const Configuration& c, bool fp16Emulation, std::string* firstKey,
+                                             EvalError* error) const {
+    compiler::BuildOptions options;
+    options.tiers = {c.tier};
+    options.fp16Emulation = fp16Emulation;
+    options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
+    const permutations::MaterialNeeds needs{material_.shading == "lit"};
+    permutations::SceneNeeds scene;
+    auto add = [&](const permutations::VariantKey& key) {
+      if (std::find(scene.keys.begin(), scene.keys.end(), key) == scene.keys.end()) scene.keys.push_back(key);
+    };
+    for (const View& v : views_) add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
+    *firstKey = scene.keys[0].toString();
+    if (needs.lit) add(permutations::requestKey(needs, c.tier, true, 0));
+    options.scene = scene;
+    compiler::BuildError buildError;
+    auto built = compiler::buildMaterial(material_, options, &buildError);
+    if (!built) {
+      error->message = c.name + ": " + buildError.message;
+      error->loc = buildError.loc;
+    }
+    return built;
+  }
+
+  bool cost(const package::Package& pkg, ConfigurationResult* r, EvalError* error) const {
+    const std::string sunIbl = permutations::requestKey({true}, r->configuration.tier, true, 0).toString();
+    for (const package::Variant& v : pkg.variants) {
+      if (v.key != r->variantKey && v.key != sunIbl) continue;
+      for (const package::Shader& s : v.shaders) {
+        if (s.target != package::Target::Spirv) continue;
+        compiler::MobileStageCost cost;
+        if (!compiler::estimateMobileCost(wordsOf(s), &cost, &error->message, options_.weights))
+          return fail(r->configuration, error->message, error);
+        if (v.key == r->variantKey) (s.stage == package::Stage::Fragment ? r->fragment : r->vertex) = cost;
+        if (v.key == sunIbl && s.stage == package::Stage::Fragment) r->sunIblFragmentCycles = cost.cycles;
+      }
+    }
+    return true;
+  }
+
+  // render() of the first view, timingFrames times, each paired with a render() of the reference's
+  // first view, so that their ratio (the median of the per-pair ratios) sees the same machine
+  // load; the reference alone for the reference.
+  bool time(const Configuration& c, const runtime::FrameDesc& frame, ConfigurationResult* r, EvalError* error) {
+    std::vector<double> own, ratios;
+    runtime::FrameResult scratch;
+    std::string message;
+    auto timed = [&](const runtime::FrameDesc& f, double* seconds) {
+      auto t0 = std::chrono::steady_clock::now();
+      bool ok = backend_->render(f, &scratch, &message);
+      *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return ok;
+    };
+    for (int t = 0; t < options_.timingFrames; ++t) {
+      double mine = 0, reference = 0;
+      if (!timed(frame, &mine) || (referenceFrame_ && !timed(referenceFrame_->frame(), &reference)))
+        return fail(c, "render failed: " + message, error);
+      own.push_back(mine);
+      ratios.push_back(referenceFrame_ && reference > 0 ? mine / reference : 1.0);
+    }
+    r->seconds = median(own);
+    r->timeVsReference = options_.timingFrames > 0 ? median(ratios) : 0.0;
+    return true;
+  }
+
+  const ir::Material& material_;
+  const EvalOptions& options_;
+  std::vector<View> views_;
+  std::unique_ptr<runtime::RenderBackend> backend_;
+  fs::path workDir_;
+  std::vector<runtime::FrameResult> referenceImages_;  // per view
+  std::vector<std::array<float, 3>> backgrounds_;      // per view: the clear colour
+  std::unique_ptr<PreparedFrame> referenceFrame_;      // the reference's first view
+};
+
+}  // namespace
+
+std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptions& options, EvalError* error) {
+  EvalReport report;
+  report.material = material.name;
+  report.timingFrames = std::max(options.timingFrames, 0);
+  report.warmupFrames = std::max(options.warmupFrames, 1);
+  report.fp16Emulation = options.fp16Emulation;
+  report.weights = options.weights;
+
+  // The views: the built-in grid, or the scene file's objects of this material.
+  std::vector<View> views;
+  if (options.sceneFile.empty()) {
+    report.scene = "built-in evaluation grid";
+    for (GridView& v : evaluationGrid(material, options.grid)) views.push_back({v.name, std::move(v.scene)});
+    report.sceneNotes = describeSweep(material, options.grid);
+  } else {
+    report.scene = options.sceneFile;
+    auto scene = runtime::loadScene(options.sceneFile, &error->message);
+    if (!scene) return std::nullopt;
+    const size_t before = scene->objects.size();
+    std::erase_if(scene->objects, [&](const runtime::SceneObject& o) { return o.material != material.name; });
+    if (scene->objects.empty()) {
+      error->message = options.sceneFile + ": no object of the scene uses material '" + material.name + "'";
+      return std::nullopt;
+    }
+    if (scene->objects.size() < before)
+      report.sceneNotes.push_back(std::to_string(before - scene->objects.size()) +
+                                  " object(s) of other materials left out: matc eval renders one material");
+    views.push_back({fs::path(options.sceneFile).stem().string(), std::move(*scene)});
+  }
+  for (const View& v : views) report.viewNames.push_back(v.name);
+  report.width = views[0].scene.width;
+  report.height = views[0].scene.height;
+
+  std::string message;
+  std::unique_ptr<runtime::RenderBackend> backend = runtime::createVulkanBackend({options.validation}, &message);
+  if (!backend) {
+    error->message = "no Vulkan device to render on (matc eval renders with lavapipe): " + message;
+    return std::nullopt;
+  }
+  std::error_code ec;
+  const fs::path imageDir = fs::path(options.outDir) / "images";
+  fs::create_directories(imageDir, ec);
+  if (ec) {
+    error->message = "cannot create '" + imageDir.string() + "': " + ec.message();
+    return std::nullopt;
+  }
+  TempDir work;  // one package per configuration, removed at the end
+  work.path = fs::temp_directory_path(ec) / ("facet-eval-" + std::to_string(getpid()));
+  fs::remove_all(work.path, ec);
+  fs::create_directories(work.path, ec);
+  if (ec) {
+    error->message = "cannot create a temporary folder '" + work.path.string() + "': " + ec.message();
+    return std::nullopt;
+  }
+
+  Evaluation evaluation(material, options, std::move(views), std::move(backend), work.path);
+  const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
+  for (size_t i = 0; i < configs.size(); ++i) {
+    const Configuration& c = configs[i];
+    // Identical maths (e.g. high with energy compensation = reference in mediump): the same
+    // shaders and images, measured once.
+    auto same = std::find_if(report.results.begin(), report.results.end(), [&](const ConfigurationResult& e) {
+      return e.configuration.config == c.config && e.sameAs.empty();
+    });
+    ConfigurationResult r;
+    if (same != report.results.end()) {
+      r = *same;
+      r.configuration = c;
+      r.sameAs = same->configuration.name;
+    } else if (!evaluation.measure(c, i == 0, &r, error)) {
+      return std::nullopt;
+    }
+    report.results.push_back(std::move(r));
+    if (options.progress) options.progress(formatProgress(i, configs.size(), report.results.back()));
+  }
+
+  // Ratios to the tiers as shipped (configurations() puts reference as shipped first).
+  auto shipped = [&](permutations::Tier t) -> const ConfigurationResult* {
+    for (const ConfigurationResult& r : report.results)
+      if (!r.configuration.swap() && r.configuration.tier == t) return &r;
+    return nullptr;
+  };
+  const ConfigurationResult* high = shipped(permutations::Tier::High);
+  auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+  const double referenceCycles = report.results[0].fragment.cycles;
+  const double highCycles = high ? high->fragment.cycles : 0;
+  const double highSunIbl = high ? high->sunIblFragmentCycles : 0;
+  for (ConfigurationResult& r : report.results) {
+    r.cyclesVsReference = ratio(r.fragment.cycles, referenceCycles);
+    r.cyclesVsHigh = ratio(r.fragment.cycles, highCycles);
+    r.sunIblVsHigh = ratio(r.sunIblFragmentCycles, highSunIbl);
+  }
+  markPareto(&report.results);
+  return report;
+}
+
+}  // namespace facet::eval

@@ -1,0 +1,330 @@
+#include "facet/eval/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "facet/package.h"
+
+namespace facet::eval {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string psnrText(const ImageMetrics& m) { return m.identical || std::isinf(m.psnr) ? "∞" : fmt("%.1f", m.psnr); }
+std::string ratioText(double r) { return r > 0 ? fmt("%.2f", r) : "—"; }
+
+Json errorJson(const ImageMetrics& m) {
+  Json j;
+  j["psnr_db"] = std::isinf(m.psnr) ? Json(nullptr) : Json(m.psnr);  // null: identical images
+  j["identical"] = m.identical;
+  j["mean_abs_8bit"] = m.meanAbs;
+  j["p99_abs_8bit"] = m.p99Abs;
+  j["max_abs_8bit"] = m.maxAbs;
+  j["rel_rmse_hdr"] = m.relativeRmse;
+  j["pixels"] = m.pixels;
+  j["non_finite"] = m.nonFinite;
+  return j;
+}
+
+Json costJson(const compiler::MobileStageCost& c) {
+  Json j;
+  j["cycles"] = c.cycles;
+  j["bound"] = c.bound();
+  j["arithmetic_cycles"] = c.arithmeticCycles;
+  j["texture_cycles"] = c.textureCycles;
+  j["varying_cycles"] = c.varyingCycles;
+  j["fma_slots"] = c.fmaSlots;
+  j["cvt_slots"] = c.cvtSlots;
+  j["sfu_ops"] = c.sfuOps;
+  j["texture_samples"] = c.textureSamples;
+  j["varying_channels_16bit"] = c.varyingChannels;
+  j["transcendentals"] = c.transcendentals();
+  j["divisions"] = c.divisions();
+  Json classes = Json::object();
+  for (size_t k = 0; k < compiler::kOpClassCount; ++k)
+    if (c.counts.ops[k] != 0) classes[compiler::toString(compiler::OpClass(k))] = c.counts.ops[k];
+  classes["fma_relaxed"] = c.counts.fmaRelaxed;
+  j["op_classes"] = classes;
+  return j;
+}
+
+Json expansionJson(const compiler::Expansion& e) { return Json{{"fma", e.fma}, {"sfu", e.sfu}}; }
+
+Json weightsJson(const compiler::MobileCostWeights& w) {
+  Json j;
+  j["fma_per_cycle"] = w.fmaPerCycle;
+  j["sfu_fma_slots"] = w.sfuFmaSlots;
+  j["textures_per_cycle"] = w.texturesPerCycle;
+  j["varying_channels_per_cycle"] = w.varyingChannelsPerCycle;
+  j["pipes"] = w.pipes == compiler::ArithmeticPipes::Concurrent ? "concurrent" : "shared";
+  j["relaxed_fma_weight"] = w.relaxedFmaWeight;
+  Json e;
+  e["sfu"] = expansionJson(w.sfu);
+  e["exp_log"] = expansionJson(w.expLog);
+  e["sqrt"] = expansionJson(w.sqrt);
+  e["pow"] = expansionJson(w.pow);
+  e["sin_cos"] = expansionJson(w.sinCos);
+  e["tan"] = expansionJson(w.tan);
+  e["inverse_trig"] = expansionJson(w.inverseTrig);
+  e["atan2"] = expansionJson(w.atan2);
+  e["hyperbolic"] = expansionJson(w.hyperbolic);
+  e["inverse_hyperbolic"] = expansionJson(w.inverseHyperbolic);
+  e["division"] = expansionJson(w.division);
+  e["integer_division"] = expansionJson(w.integerDivision);
+  e["derivative"] = expansionJson(w.derivative);
+  j["expansions"] = e;
+  return j;
+}
+
+std::string xmlEscape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+Json reportJson(const EvalReport& r) {
+  Json j;
+  j["material"] = r.material;
+  j["scene"] = r.scene;
+  j["scene_notes"] = r.sceneNotes;
+  j["views"] = r.viewNames;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["fp16_emulation"] = r.fp16Emulation;
+  j["error_measure"] = "against reference as shipped, over the pixels the material covers in either image, all views together";
+  j["timing"] = Json{{"what", "wall time of RenderBackend::render() of the first view on lavapipe (Mesa's CPU Vulkan "
+                              "driver; not a mobile GPU): median over the frames, and the median of its ratio to a "
+                              "render() of reference's first view paired with each frame"},
+                     {"frames", r.timingFrames},
+                     {"warmup_frames", r.warmupFrames}};
+  j["cost_model"] = weightsJson(r.weights);
+  Json configs = Json::array();
+  for (const ConfigurationResult& c : r.results) {
+    Json k;
+    k["name"] = c.configuration.name;
+    k["tier"] = permutations::toString(c.configuration.tier);
+    k["axis"] = c.configuration.axis;
+    k["option"] = c.configuration.option;
+    k["change"] = c.configuration.change;
+    k["tier_config"] = permutations::describe(c.configuration.config);
+    k["variant"] = c.variantKey;
+    k["same_as"] = c.sameAs;
+    k["error"] = errorJson(c.error);
+    Json views = Json::array();
+    for (const ViewResult& v : c.views)
+      views.push_back(Json{{"name", v.name}, {"image", v.image}, {"error", errorJson(v.error)}});
+    k["views"] = views;
+    k["cost"] = Json{{"fragment", costJson(c.fragment)}, {"vertex", costJson(c.vertex)}};
+    k["cycles_vs_high"] = c.cyclesVsHigh > 0 ? Json(c.cyclesVsHigh) : Json(nullptr);
+    k["cycles_vs_reference"] = c.cyclesVsReference;
+    k["sun_ibl_fragment_cycles"] = c.sunIblFragmentCycles > 0 ? Json(c.sunIblFragmentCycles) : Json(nullptr);
+    k["sun_ibl_vs_high"] = c.sunIblVsHigh > 0 ? Json(c.sunIblVsHigh) : Json(nullptr);
+    k["lavapipe_ms"] = 1000.0 * c.seconds;
+    k["lavapipe_vs_reference"] = c.timeVsReference > 0 ? Json(c.timeVsReference) : Json(nullptr);
+    k["pareto"] = c.pareto;
+    configs.push_back(k);
+  }
+  j["configurations"] = configs;
+  return j;
+}
+
+std::string reportMarkdown(const EvalReport& r) {
+  std::string s = "# `matc eval`: " + r.material + "\n\n";
+  s += "Scene: " + r.scene + ", " + std::to_string(r.width) + "×" + std::to_string(r.height) + " per view; views: ";
+  for (size_t i = 0; i < r.viewNames.size(); ++i) s += (i ? ", " : "") + r.viewNames[i];
+  s += ".";
+  if (r.fp16Emulation) s += " Built with `--fp16-emulation` (mediump SPIR-V rounded to binary16).";
+  s += "\n\n";
+  for (const std::string& note : r.sceneNotes) s += "- " + note + "\n";
+  if (!r.sceneNotes.empty()) s += "\n";
+  s += "**Error** against `reference` as shipped, over the pixels the material covers, all views together: "
+       "PSNR of the tone-mapped 8-bit image, mean and 99th-percentile absolute error in 8-bit steps, relative "
+       "RMSE of the linear HDR image.\n"
+       "**Speed**: estimated Valhall-class cycles per fragment and per vertex from the mobile cost model "
+       "(docs/eval.md), fragment cycles as a ratio to `high` and `reference` as shipped; and the wall time of the "
+       "renderer's `render()` call on lavapipe for the first view, as a ratio to `reference`'s: the median over " +
+       std::to_string(r.timingFrames) +
+       " frames, each paired with a frame of `reference` (after warm-up). lavapipe is Mesa's Vulkan driver "
+       "running on the CPU: its time is not a mobile GPU's, and it includes the draw submission and the read-back "
+       "of both targets.\n"
+       "★: on the Pareto front (no other configuration has both fewer fragment cycles and a higher PSNR).\n\n";
+  s += "| configuration | changes | PSNR dB | mean | p99 | rel. RMSE | frag. cycles | vert. cycles | × high | × reference "
+       "| lavapipe × reference | |\n";
+  s += "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|\n";
+  for (const ConfigurationResult& c : r.results) {
+    std::string change = c.configuration.change;
+    if (!c.sameAs.empty()) change += " (same maths as " + c.sameAs + ")";
+    s += "| " + c.configuration.name + " | " + change + " | " + psnrText(c.error) + " | " + fmt("%.2f", c.error.meanAbs) +
+         " | " + fmt("%.0f", c.error.p99Abs) + " | " + fmt("%.4f", c.error.relativeRmse) + " | " +
+         fmt("%.2f", c.fragment.cycles) + " | " + fmt("%.2f", c.vertex.cycles) + " | " + ratioText(c.cyclesVsHigh) +
+         " | " + ratioText(c.cyclesVsReference) + " | " + ratioText(c.timeVsReference) + " | " + (c.pareto ? "★" : "") +
+         " |\n";
+  }
+  // The cost goals are stated for the sun + IBL variant (no point light): the tiers as shipped.
+  std::string sunIbl;
+  for (const ConfigurationResult& c : r.results) {
+    if (c.configuration.swap() || c.sunIblFragmentCycles <= 0) continue;
+    sunIbl += (sunIbl.empty() ? "" : ", ") + c.configuration.name + " " + fmt("%.2f", c.sunIblFragmentCycles);
+    if (c.sunIblVsHigh > 0) sunIbl += " (" + fmt("%.2f", c.sunIblVsHigh) + "× high)";
+  }
+  if (!sunIbl.empty())
+    s += "\nFragment cycles of the sun + IBL variant (`<tier>.dir1`, no point light; what the tiers' cost goals "
+         "refer to), tiers as shipped: " + sunIbl + ".\n";
+  s += "\nPer view (PSNR dB):\n\n| configuration |";
+  for (const std::string& v : r.viewNames) s += " " + v + " |";
+  s += "\n|---|";
+  for (size_t i = 0; i < r.viewNames.size(); ++i) s += "--:|";
+  s += "\n";
+  for (const ConfigurationResult& c : r.results) {
+    s += "| " + c.configuration.name + " |";
+    for (const ViewResult& v : c.views) s += " " + psnrText(v.error) + " |";
+    s += "\n";
+  }
+  s += "\nImages: `images/<configuration>.<view>.png`; the plot of error against cost: `plot.svg`; the same data: "
+       "`report.json`.\n";
+  return s;
+}
+
+std::string reportSvg(const EvalReport& r) {
+  const double W = 820, H = 520, left = 64, right = 24, top = 40, bottom = 56;
+  double minCycles = 1e9, maxCycles = 0, minPsnr = 1e9, maxPsnr = -1e9;
+  for (const ConfigurationResult& c : r.results) {
+    minCycles = std::min(minCycles, c.fragment.cycles);
+    maxCycles = std::max(maxCycles, c.fragment.cycles);
+    if (!std::isinf(c.error.psnr)) {
+      minPsnr = std::min(minPsnr, c.error.psnr);
+      maxPsnr = std::max(maxPsnr, c.error.psnr);
+    }
+  }
+  if (minPsnr > maxPsnr) minPsnr = maxPsnr = 40;
+  // The cycle axis spans the configurations (with room for labels on the right), in steps of a
+  // round size.
+  const double span = std::max(maxCycles - std::min(minCycles, maxCycles), 0.1);
+  const double step = span > 4 ? 1.0 : span > 2 ? 0.5 : span > 0.8 ? 0.25 : 0.1;
+  const double x0 = std::max(0.0, std::floor((std::min(minCycles, maxCycles) - 0.5 * step) / step) * step);
+  const double x1 = std::ceil((maxCycles + 0.2 * span + 0.5 * step) / step) * step;
+  const double y0 = std::floor((minPsnr - 2) / 5) * 5, y1 = std::ceil((maxPsnr + 2) / 5) * 5;
+  const double plotTop = top + 24;  // identical images ("∞") sit on a band above the finite range
+  auto px = [&](double cycles) { return left + (cycles - x0) / (x1 - x0) * (W - left - right); };
+  auto py = [&](double psnr) {
+    if (std::isinf(psnr)) return top + 8;
+    return plotTop + (y1 - psnr) / (y1 - y0) * (H - plotTop - bottom);
+  };
+  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fmt("%.0f", W) + "\" height=\"" + fmt("%.0f", H) +
+                  "\" viewBox=\"0 0 " + fmt("%.0f", W) + " " + fmt("%.0f", H) + "\" font-family=\"sans-serif\">\n";
+  s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s += "<text x=\"" + fmt("%.0f", left) + "\" y=\"20\" font-size=\"14\">" + xmlEscape(r.material) +
+       ": error against estimated cost (red: Pareto front)</text>\n";
+  // Axes, grid and ticks.
+  s += "<g stroke=\"#ccc\" stroke-width=\"1\">\n";
+  for (double y = y0; y <= y1 + 1e-9; y += 5)
+    s += "<line x1=\"" + fmt("%.1f", left) + "\" y1=\"" + fmt("%.1f", py(y)) + "\" x2=\"" + fmt("%.1f", W - right) +
+         "\" y2=\"" + fmt("%.1f", py(y)) + "\"/>\n";
+  for (double x = x0; x <= x1 + 1e-9; x += step)
+    s += "<line x1=\"" + fmt("%.1f", px(x)) + "\" y1=\"" + fmt("%.1f", plotTop) + "\" x2=\"" + fmt("%.1f", px(x)) +
+         "\" y2=\"" + fmt("%.1f", H - bottom) + "\"/>\n";
+  s += "</g>\n<g font-size=\"11\" fill=\"#333\">\n";
+  for (double y = y0; y <= y1 + 1e-9; y += 5)
+    s += "<text x=\"" + fmt("%.1f", left - 6) + "\" y=\"" + fmt("%.1f", py(y) + 4) + "\" text-anchor=\"end\">" +
+         fmt("%.0f", y) + "</text>\n";
+  s += "<text x=\"" + fmt("%.1f", left - 6) + "\" y=\"" + fmt("%.1f", top + 12) + "\" text-anchor=\"end\">∞</text>\n";
+  for (double x = x0; x <= x1 + 1e-9; x += step)
+    s += "<text x=\"" + fmt("%.1f", px(x)) + "\" y=\"" + fmt("%.1f", H - bottom + 16) + "\" text-anchor=\"middle\">" +
+         fmt(step < 0.25 ? "%.1f" : "%.2f", x) + "</text>\n";
+  s += "<text x=\"" + fmt("%.1f", (left + W - right) / 2) + "\" y=\"" + fmt("%.1f", H - 14) +
+       "\" text-anchor=\"middle\">estimated fragment cycles (mobile cost model, docs/eval.md)</text>\n";
+  s += "<text transform=\"translate(16 " + fmt("%.1f", (plotTop + H - bottom) / 2) +
+       ") rotate(-90)\" text-anchor=\"middle\">PSNR against reference, dB (higher is better)</text>\n</g>\n";
+  // The Pareto front, cheapest first.
+  std::vector<const ConfigurationResult*> front;
+  for (const ConfigurationResult& c : r.results)
+    if (c.pareto) front.push_back(&c);
+  std::sort(front.begin(), front.end(), [](auto* a, auto* b) {
+    return a->fragment.cycles < b->fragment.cycles || (a->fragment.cycles == b->fragment.cycles && a->error.psnr < b->error.psnr);
+  });
+  if (front.size() > 1) {
+    s += "<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"1.5\" points=\"";
+    for (size_t i = 0; i < front.size(); ++i)
+      s += (i ? " " : "") + fmt("%.1f", px(front[i]->fragment.cycles)) + "," + fmt("%.1f", py(front[i]->error.psnr));
+    s += "\"/>\n";
+  }
+  // Points, one per distinct (cost, error); configurations with the same maths share a label.
+  std::map<std::pair<double, double>, std::vector<const ConfigurationResult*>> points;
+  std::vector<std::pair<double, double>> order;
+  for (const ConfigurationResult& c : r.results) {
+    auto key = std::make_pair(c.fragment.cycles, c.error.psnr);
+    if (!points.count(key)) order.push_back(key);
+    points[key].push_back(&c);
+  }
+  // Labels go to the first of a few places around their point that overlaps no label or point
+  // placed before (text width estimated at 5.2 px per character of the 9 px font), else to the
+  // right. Pareto points are labelled first, so theirs are the ones that stay readable.
+  struct Box {
+    double x0, y0, x1, y1;
+    bool overlaps(const Box& b) const { return x0 < b.x1 && b.x0 < x1 && y0 < b.y1 && b.y0 < y1; }
+  };
+  std::vector<Box> taken;
+  for (const auto& key : order) taken.push_back({px(key.first) - 4, py(key.second) - 4, px(key.first) + 4, py(key.second) + 4});
+  std::stable_sort(order.begin(), order.end(), [&](const auto& a, const auto& b) {
+    return points[a].front()->pareto && !points[b].front()->pareto;
+  });
+  s += "<g font-size=\"9\">\n";
+  for (const auto& key : order) {
+    const auto& members = points[key];
+    const bool onFront = members.front()->pareto;
+    std::string label;
+    for (size_t i = 0; i < members.size(); ++i) label += (i ? " = " : "") + members[i]->configuration.name;
+    const double x = px(key.first), y = py(key.second);
+    s += "<circle cx=\"" + fmt("%.1f", x) + "\" cy=\"" + fmt("%.1f", y) + "\" r=\"" + (onFront ? "4.5" : "3.5") +
+         "\" fill=\"" + (onFront ? "#d62728" : "#7f7f7f") + "\"><title>" + xmlEscape(label) + "</title></circle>\n";
+    const double width = 5.2 * double(label.size());
+    // (dx, dy) of the text's baseline start; anchor end when the label sits left of its point.
+    const std::pair<double, double> places[] = {{6, -4}, {6, 10}, {-6, -4}, {-6, 10}, {6, -14}, {6, 20}, {-6, -14}, {-6, 20}};
+    double dx = 6, dy = -4;
+    for (const auto& [cx, cy] : places) {
+      const double start = cx > 0 ? x + cx : x + cx - width;
+      Box box{start, y + cy - 8, start + width, y + cy + 2};
+      if (box.x0 < 0 || box.x1 > W || std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return box.overlaps(b); }))
+        continue;
+      dx = cx;
+      dy = cy;
+      break;
+    }
+    const double start = dx > 0 ? x + dx : x + dx - width;
+    taken.push_back({start, y + dy - 8, start + width, y + dy + 2});
+    s += "<text x=\"" + fmt("%.1f", x + dx) + "\" y=\"" + fmt("%.1f", y + dy) + "\"" +
+         (dx < 0 ? " text-anchor=\"end\"" : "") + " fill=\"" + (onFront ? "#a01010" : "#555") + "\">" +
+         xmlEscape(label) + "</text>\n";
+  }
+  s += "</g>\n</svg>\n";
+  return s;
+}
+
+bool writeReport(const EvalReport& report, const std::string& outDir, std::string* error) {
+  namespace fs = std::filesystem;
+  auto write = [&](const char* name, const std::string& text) {
+    return package::writeFile((fs::path(outDir) / name).string(), std::vector<uint8_t>(text.begin(), text.end()), error);
+  };
+  return write("report.md", reportMarkdown(report)) && write("report.json", reportJson(report).dump(2) + "\n") &&
+         write("plot.svg", reportSvg(report));
+}
+
+}  // namespace facet::eval
