@@ -16,6 +16,8 @@ packages=(
   libglm-dev libzstd-dev libxxhash-dev nlohmann-json3-dev libcli11-dev libstb-dev
   # tests
   googletest libgtest-dev libgmock-dev
+  # tests of tools/mesa_stats (Python, standard library only)
+  python3
   # fuzzing (scripts/fuzz.sh): clang, its libFuzzer/ASan/UBSan runtimes (libclang_rt.fuzzer),
   # and llvm-symbolizer for readable sanitizer stack traces
   clang libclang-rt-14-dev llvm
