@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Collects Mesa's shader-db statistics for every variant of every example material, per GPU,
+beside the static SPIR-V cost counts `matc info` gives for the same variant, into one JSON file
+(the calibration data of docs/mesa-statistics.md).
+
+  tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json
+
+Needs scripts/build-mesa-shader-compilers.sh to have run (exit 2 otherwise).
+"""
+
+import argparse
+import glob
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesa_compile  # noqa: E402
+
+SOURCE_ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+# `matc info` static cost table header -> the StageCost field it prints
+# (compiler/include/facet/compiler/spirv_cost.h).
+COST_COLUMNS = {
+    "alu": "aluOps",
+    "scalar": "scalarAluOps",
+    "transc": "transcendentalOps",
+    "div": "divisions",
+    "tex": "textureSamples",
+    "varyings": "varyingComponents",
+    "mediump": "relaxedPercent",
+}
+
+
+def parse_cost_table(text):
+    """{variant: {stage: {StageCost field: number}}} from `matc info`'s static cost table."""
+    lines = text.splitlines()
+    try:
+        start = next(i for i, l in enumerate(lines) if l.startswith("static cost"))
+    except StopIteration:
+        raise RuntimeError("matc info printed no static cost table")
+    header = lines[start + 1].split()
+    if header[:2] != ["variant", "stage"] or any(h not in COST_COLUMNS for h in header[2:]):
+        raise RuntimeError("unexpected cost table header: %r" % lines[start + 1])
+    costs = {}
+    for line in lines[start + 2:]:
+        if not line.startswith("  "):
+            break
+        cells = line.split()
+        if len(cells) != len(header):
+            raise RuntimeError("unreadable cost table row: %r" % line)
+        row = {}
+        for name, cell in zip(header[2:], cells[2:]):
+            row[COST_COLUMNS[name]] = float(cell.rstrip("%")) if cell.endswith("%") else int(cell)
+        costs.setdefault(cells[0], {})[cells[1]] = row
+    return costs
+
+
+def build_material(matc, mat, work):
+    name = os.path.splitext(os.path.basename(mat))[0]
+    pkg = os.path.join(work, name + ".matpkg")
+    src = os.path.join(work, name)
+    subprocess.run([matc, "compile", mat, "-o", pkg, "--emit-source", src], check=True,
+                   stdout=subprocess.DEVNULL)
+    info = subprocess.run([matc, "info", pkg], check=True, capture_output=True, text=True).stdout
+    costs = parse_cost_table(info)
+    pairs = []
+    for key in costs:
+        vert = os.path.join(src, "%s.%s.vert.es300.glsl" % (name, key))
+        frag = os.path.join(src, "%s.%s.frag.es300.glsl" % (name, key))
+        if not (os.path.exists(vert) and os.path.exists(frag)):
+            raise RuntimeError("matc --emit-source wrote no GLSL ES pair for %s %s" % (name, key))
+        pairs.append({"name": "%s/%s" % (name, key), "vertex": vert, "fragment": frag})
+    return pairs, {"%s/%s" % (name, k): v for k, v in costs.items()}
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--matc", default=os.path.join(SOURCE_ROOT, "build", "test", "matc", "matc"))
+    ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630")
+    ap.add_argument("--prefix", default=mesa_compile.default_prefix())
+    ap.add_argument("-o", "--output", required=True)
+    args = ap.parse_args(argv)
+
+    gpus = [g for g in args.gpu.split(",") if g]
+    reason = mesa_compile.missing_reason(args.prefix, gpus)
+    if reason:
+        sys.stderr.write("collect: %s\n" % reason)
+        return mesa_compile.EXIT_NOT_BUILT
+
+    materials = sorted(glob.glob(os.path.join(SOURCE_ROOT, "examples", "materials", "*.mat")))
+    with tempfile.TemporaryDirectory(prefix="facet-mesa-stats-") as work:
+        pairs, costs = [], {}
+        for mat in materials:
+            p, c = build_material(args.matc, mat, work)
+            pairs += p
+            costs.update(c)
+        try:
+            measured = mesa_compile.collect(args.prefix, gpus, pairs)
+        except RuntimeError as e:
+            sys.stderr.write("collect: %s\n" % e)
+            return 1
+
+    variants = {}
+    for pair in pairs:
+        name = pair["name"]
+        entry = {"spirv_cost": costs[name], "gpus": {}}
+        for gpu in gpus:
+            shaders = measured[gpu]["shaders"][name]
+            entry["gpus"][gpu] = {
+                "vertex": shaders.get("vertex"),
+                "fragment": shaders.get("fragment"),
+                "other": shaders["other"],
+            }
+        variants[name] = entry
+    data = {
+        "generated_by": "tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json",
+        "mesa": "Debian 22.3.6 (scripts/build-mesa-shader-compilers.sh)",
+        "materials": [os.path.relpath(m, SOURCE_ROOT) for m in materials],
+        "gpus": {g: {"renderer": measured[g]["renderer"], "version": measured[g]["version"]} for g in gpus},
+        "variants": variants,
+    }
+    os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
+    with open(args.output, "w") as f:
+        json.dump(data, f, indent=1, sort_keys=True)
+        f.write("\n")
+    sys.stderr.write("collect: %d variants x %d GPUs -> %s\n" % (len(variants), len(gpus), args.output))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

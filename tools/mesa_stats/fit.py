@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Fits per-class weights of Facet's static SPIR-V cost counts to Mali fragment cycles measured by
+Mesa's compiler (tools/calibration/mesa-stats.json), and reports the error before and after.
+
+  tools/mesa_stats/fit.py tools/calibration/mesa-stats.json [-o tools/calibration/mesa-fit.json]
+
+Model: cycles ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops,
+transcendentals, divisions, texture samples, varying components), w_k ≥ 0 (non-negative least
+squares: every subset of classes solved by least squares, the best all-non-negative one kept;
+exact for five classes). "Before" is the a-priori model from ../shared/DESIGN.md's facts and
+Mesa's Valhall rates: max((scalar + 4·transc + 4·div) / 64, tex / 4, varyings / 16).
+Cross-validation: fit on three materials, predict the fourth, for each material in turn.
+
+Standard library only: five unknowns need no numpy, and the calibration test then runs on every
+Python CMake finds.
+"""
+
+import argparse
+import itertools
+import json
+import math
+import sys
+
+CLASSES = ["scalarAluOps", "transcendentalOps", "divisions", "textureSamples", "varyingComponents"]
+TARGETS = ["mali-g57", "mali-g52"]
+
+
+def a_priori_cycles(c):
+    arith = (c["scalarAluOps"] + 4 * c["transcendentalOps"] + 4 * c["divisions"]) / 64.0
+    return max(arith, c["textureSamples"] / 4.0, c["varyingComponents"] / 16.0)
+
+
+def solve(a, b):
+    """Solves the square system a·x = b by Gaussian elimination with partial pivoting; None when
+    singular."""
+    n = len(b)
+    m = [row[:] + [b[i]] for i, row in enumerate(a)]
+    for col in range(n):
+        pivot = max(range(col, n), key=lambda r: abs(m[r][col]))
+        if abs(m[pivot][col]) < 1e-12:
+            return None
+        m[col], m[pivot] = m[pivot], m[col]
+        for r in range(n):
+            if r != col:
+                f = m[r][col] / m[col][col]
+                for k in range(col, n + 1):
+                    m[r][k] -= f * m[col][k]
+    return [m[i][n] / m[i][i] for i in range(n)]
+
+
+def least_squares(rows, y):
+    """argmin ||rows·w − y|| through the normal equations (a few well-scaled unknowns)."""
+    n = len(rows[0])
+    ata = [[sum(r[i] * r[j] for r in rows) for j in range(n)] for i in range(n)]
+    aty = [sum(r[i] * t for r, t in zip(rows, y)) for i in range(n)]
+    return solve(ata, aty)
+
+
+def nnls(rows, y):
+    """Non-negative least squares by enumerating the classes kept (2^5 small systems)."""
+    n = len(rows[0])
+    best, best_err = [0.0] * n, sum(t * t for t in y)
+    for size in range(1, n + 1):
+        for keep in itertools.combinations(range(n), size):
+            w = least_squares([[r[i] for i in keep] for r in rows], y)
+            if w is None or any(v < 0 for v in w):
+                continue
+            full = [0.0] * n
+            for i, v in zip(keep, w):
+                full[i] = v
+            err = sum((predict(full, r) - t) ** 2 for r, t in zip(rows, y))
+            if err < best_err - 1e-15:
+                best, best_err = full, err
+    return best
+
+
+def predict(w, row):
+    return sum(a * b for a, b in zip(w, row))
+
+
+def errors(pred, y):
+    rel = [abs(p - t) / t for p, t in zip(pred, y)]
+    return {
+        "rms_cycles": math.sqrt(sum((p - t) ** 2 for p, t in zip(pred, y)) / len(y)),
+        "mean_abs_relative": sum(rel) / len(rel),
+        "max_abs_relative": max(rel),
+    }
+
+
+def samples(data, gpu):
+    """(material, variant, counts row, measured fragment cycles) for every variant."""
+    out = []
+    for name in sorted(data["variants"]):
+        v = data["variants"][name]
+        frag = v["gpus"][gpu]["fragment"]
+        cost = v["spirv_cost"]["fragment"]
+        out.append((name.split("/")[0], name, [cost[k] for k in CLASSES], frag["cycles"], cost))
+    return out
+
+
+def fit_gpu(data, gpu):
+    s = samples(data, gpu)
+    rows, y = [r for _, _, r, _, _ in s], [t for _, _, _, t, _ in s]
+    w = nnls(rows, y)
+    fitted = [predict(w, r) for r in rows]
+    before = [a_priori_cycles(c) for _, _, _, _, c in s]
+    cv = []
+    for material in sorted({m for m, _, _, _, _ in s}):
+        train = [(r, t) for m, _, r, t, _ in s if m != material]
+        wm = nnls([r for r, _ in train], [t for _, t in train])
+        cv += [(predict(wm, r), t) for m, _, r, t, _ in s if m == material]
+    return {
+        "weights": {k: round(v, 9) for k, v in zip(CLASSES, w)},
+        "samples": len(y),
+        "before": errors(before, y),
+        "after": errors(fitted, y),
+        "cross_validated": errors([p for p, _ in cv], [t for _, t in cv]),
+        "per_variant": {n: {"measured": t, "before": round(b, 6), "after": round(f, 6)}
+                        for (_, n, _, t, _), b, f in zip(s, before, fitted)},
+    }
+
+
+def fit(data):
+    return {gpu: fit_gpu(data, gpu) for gpu in TARGETS if gpu in data["gpus"]}
+
+
+def rounded(obj):
+    if isinstance(obj, float):
+        return round(obj, 6)
+    if isinstance(obj, dict):
+        return {k: rounded(v) for k, v in obj.items()}
+    return obj
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("stats")
+    ap.add_argument("-o", "--output")
+    args = ap.parse_args(argv)
+    with open(args.stats) as f:
+        result = rounded(fit(json.load(f)))
+    for gpu, r in result.items():
+        print("%s fragment cycles, %d variants" % (gpu, r["samples"]))
+        print("  weights (cycles per op): " + ", ".join("%s %.5f" % kv for kv in r["weights"].items()))
+        for label in ("before", "after", "cross_validated"):
+            e = r[label]
+            print("  %-16s rms %.3f cycles, mean |rel| %5.1f %%, max |rel| %5.1f %%"
+                  % (label, e["rms_cycles"], 100 * e["mean_abs_relative"], 100 * e["max_abs_relative"]))
+    if args.output:
+        with open(args.output, "w") as f:
+            json.dump({"generated_by": "tools/mesa_stats/fit.py tools/calibration/mesa-stats.json "
+                                       "-o tools/calibration/mesa-fit.json",
+                       "model": "fragment cycles = sum of weight x SPIR-V cost count (spirv_cost.h), weights >= 0",
+                       "fits": result}, f, indent=1, sort_keys=True)
+            f.write("\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
