@@ -47,11 +47,11 @@ class Calibration(unittest.TestCase):
 
     def test_fit_beats_the_a_priori_weights_on_valhall(self):
         g57 = self.fits["mali-g57"]
-        self.assertLess(g57["after"]["rms_cycles"], g57["before"]["rms_cycles"] / 2)
+        self.assertLess(g57["after"]["rms"], g57["before"]["rms"] / 2)
 
     def test_fit_predicts_unseen_materials_within_ten_percent_on_average(self):
         # Cross-validated: weights fitted on three materials predict the fourth's variants.
-        for gpu in ("mali-g57", "mali-g52"):
+        for gpu in ("mali-g57", "mali-g52", "adreno-630"):
             self.assertLess(self.fits[gpu]["cross_validated"]["mean_abs_relative"], 0.10, gpu)
             self.assertLess(self.fits[gpu]["cross_validated"]["max_abs_relative"], 0.20, gpu)
 

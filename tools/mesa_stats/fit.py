@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Fits per-class weights of Facet's static SPIR-V cost counts to Mali fragment cycles measured by
-Mesa's compiler (tools/calibration/mesa-stats.json), and reports the error before and after.
+"""Fits per-class weights of Facet's static SPIR-V cost counts to the fragment cycles (Mali) and
+instructions (Adreno) measured by Mesa's compilers (tools/calibration/mesa-stats.json), and reports the error before and after.
 
   tools/mesa_stats/fit.py tools/calibration/mesa-stats.json [-o tools/calibration/mesa-fit.json]
 
-Model: cycles ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops,
+Model: measure ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops,
 transcendentals, divisions, texture samples, varying components), w_k ≥ 0 (non-negative least
 squares: every subset of classes solved by least squares, the best all-non-negative one kept;
 exact for five classes). "Before" is the a-priori model from ../shared/DESIGN.md's facts and
@@ -22,7 +22,11 @@ import math
 import sys
 
 CLASSES = ["scalarAluOps", "transcendentalOps", "divisions", "textureSamples", "varyingComponents"]
-TARGETS = ["mali-g57", "mali-g52"]
+# What is fitted per GPU: Mali's cycle bound; ir3 prints no cycles, so its non-nop instruction
+# count (issue slots of one wave) stands in.
+TARGETS = {"mali-g57": "cycles", "mali-g52": "cycles", "adreno-630": "non-nops"}
+# The a-priori model is Valhall's (Mesa's G78 rates); it says nothing about Bifrost's or ir3's scale.
+A_PRIORI = {"mali-g57"}
 
 
 def a_priori_cycles(c):
@@ -81,7 +85,7 @@ def predict(w, row):
 def errors(pred, y):
     rel = [abs(p - t) / t for p, t in zip(pred, y)]
     return {
-        "rms_cycles": math.sqrt(sum((p - t) ** 2 for p, t in zip(pred, y)) / len(y)),
+        "rms": math.sqrt(sum((p - t) ** 2 for p, t in zip(pred, y)) / len(y)),
         "mean_abs_relative": sum(rel) / len(rel),
         "max_abs_relative": max(rel),
     }
@@ -94,7 +98,8 @@ def samples(data, gpu):
         v = data["variants"][name]
         frag = v["gpus"][gpu]["fragment"]
         cost = v["spirv_cost"]["fragment"]
-        out.append((name.split("/")[0], name, [cost[k] for k in CLASSES], frag["cycles"], cost))
+        measured = frag["cycles"] if TARGETS[gpu] == "cycles" else frag["raw"][TARGETS[gpu]]
+        out.append((name.split("/")[0], name, [cost[k] for k in CLASSES], measured, cost))
     return out
 
 
@@ -103,25 +108,27 @@ def fit_gpu(data, gpu):
     rows, y = [r for _, _, r, _, _ in s], [t for _, _, _, t, _ in s]
     w = nnls(rows, y)
     fitted = [predict(w, r) for r in rows]
-    before = [a_priori_cycles(c) for _, _, _, _, c in s]
+    before = [a_priori_cycles(c) for _, _, _, _, c in s] if gpu in A_PRIORI else None
     cv = []
     for material in sorted({m for m, _, _, _, _ in s}):
         train = [(r, t) for m, _, r, t, _ in s if m != material]
         wm = nnls([r for r, _ in train], [t for _, t in train])
         cv += [(predict(wm, r), t) for m, _, r, t, _ in s if m == material]
     return {
+        "measure": "fragment " + TARGETS[gpu],
         "weights": {k: round(v, 9) for k, v in zip(CLASSES, w)},
         "samples": len(y),
-        "before": errors(before, y),
+        "before": errors(before, y) if before else None,
         "after": errors(fitted, y),
         "cross_validated": errors([p for p, _ in cv], [t for _, t in cv]),
-        "per_variant": {n: {"measured": t, "before": round(b, 6), "after": round(f, 6)}
-                        for (_, n, _, t, _), b, f in zip(s, before, fitted)},
+        "per_variant": {n: {"measured": t, "before": round(before[i], 6) if before else None,
+                            "after": round(fitted[i], 6)}
+                        for i, (_, n, _, t, _) in enumerate(s)},
     }
 
 
 def fit(data):
-    return {gpu: fit_gpu(data, gpu) for gpu in TARGETS if gpu in data["gpus"]}
+    return {gpu: fit_gpu(data, gpu) for gpu in sorted(TARGETS) if gpu in data["gpus"]}
 
 
 def rounded(obj):
@@ -140,17 +147,20 @@ def main(argv):
     with open(args.stats) as f:
         result = rounded(fit(json.load(f)))
     for gpu, r in result.items():
-        print("%s fragment cycles, %d variants" % (gpu, r["samples"]))
-        print("  weights (cycles per op): " + ", ".join("%s %.5f" % kv for kv in r["weights"].items()))
+        unit = TARGETS[gpu]
+        print("%s %s, %d variants" % (gpu, r["measure"], r["samples"]))
+        print("  weights (%s per op): " % unit + ", ".join("%s %.5f" % kv for kv in r["weights"].items()))
         for label in ("before", "after", "cross_validated"):
             e = r[label]
-            print("  %-16s rms %.3f cycles, mean |rel| %5.1f %%, max |rel| %5.1f %%"
-                  % (label, e["rms_cycles"], 100 * e["mean_abs_relative"], 100 * e["max_abs_relative"]))
+            if e is None:
+                continue
+            print("  %-16s rms %.3f %s, mean |rel| %5.1f %%, max |rel| %5.1f %%"
+                  % (label, e["rms"], unit, 100 * e["mean_abs_relative"], 100 * e["max_abs_relative"]))
     if args.output:
         with open(args.output, "w") as f:
             json.dump({"generated_by": "tools/mesa_stats/fit.py tools/calibration/mesa-stats.json "
                                        "-o tools/calibration/mesa-fit.json",
-                       "model": "fragment cycles = sum of weight x SPIR-V cost count (spirv_cost.h), weights >= 0",
+                       "model": "fragment measure = sum of weight x SPIR-V cost count (spirv_cost.h), weights >= 0",
                        "fits": result}, f, indent=1, sort_keys=True)
             f.write("\n")
     return 0
