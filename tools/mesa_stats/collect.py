@@ -76,6 +76,16 @@ def build_material(matc, mat, work):
     return pairs, {"%s/%s" % (name, k): v for k, v in costs.items()}
 
 
+def dumps(obj, depth=0, flat_below=4):
+    """JSON with one line per variant and GPU (objects at depth >= flat_below), so the file stays
+    small and a change in one compiler's output is one changed line in a diff."""
+    if not isinstance(obj, dict) or depth >= flat_below or not obj:
+        return json.dumps(obj, sort_keys=True)
+    pad = " " * (depth + 1)
+    items = ["%s%s: %s" % (pad, json.dumps(k), dumps(obj[k], depth + 1, flat_below)) for k in sorted(obj)]
+    return "{\n" + ",\n".join(items) + "\n" + " " * depth + "}"
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--matc", default=os.path.join(SOURCE_ROOT, "build", "test", "matc", "matc"))
@@ -109,11 +119,9 @@ def main(argv):
         entry = {"spirv_cost": costs[name], "gpus": {}}
         for gpu in gpus:
             shaders = measured[gpu]["shaders"][name]
-            entry["gpus"][gpu] = {
-                "vertex": shaders.get("vertex"),
-                "fragment": shaders.get("fragment"),
-                "other": shaders["other"],
-            }
+            # Every stage the driver printed: Mali's vertex shader arrives as its IDVS halves
+            # (vertex_position, vertex_varying), Adreno's with a binning-pass copy.
+            entry["gpus"][gpu] = shaders
         variants[name] = entry
     data = {
         "generated_by": "tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json",
@@ -124,8 +132,7 @@ def main(argv):
     }
     os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
     with open(args.output, "w") as f:
-        json.dump(data, f, indent=1, sort_keys=True)
-        f.write("\n")
+        f.write(dumps(data) + "\n")
     sys.stderr.write("collect: %d variants x %d GPUs -> %s\n" % (len(variants), len(gpus), args.output))
     return 0
 
