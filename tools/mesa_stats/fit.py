@@ -7,7 +7,7 @@ instructions (Adreno) measured by Mesa's compilers (tools/calibration/mesa-stats
 Model: measure ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops,
 transcendentals, divisions, texture samples, varying components), w_k ≥ 0 (non-negative least
 squares: every subset of classes solved by least squares, the best all-non-negative one kept;
-exact for five classes). "Before" is the a-priori model from ../shared/DESIGN.md's facts and
+exact for five classes). "Before" is the a-priori model from DESIGN.md's facts ("Facts measured on mobile GPU compilers") and
 Mesa's Valhall rates: max((scalar + 4·transc + 4·div) / 64, tex / 4, varyings / 16).
 Cross-validation: fit on three materials, predict the fourth, for each material in turn.
 
