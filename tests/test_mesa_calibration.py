@@ -56,5 +56,27 @@ class Calibration(unittest.TestCase):
             self.assertLess(self.fits[gpu]["cross_validated"]["max_abs_relative"], 0.20, gpu)
 
 
+class SingleOperations(unittest.TestCase):
+    """The committed single-operation figures (tools/calibration/mesa-single-ops.json) against
+    the facts docs/mesa-statistics.md draws from them."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.g57 = load("mesa-single-ops.json")["gpus"]["mali-g57"]
+
+    def sfu_ops(self, precision, op):
+        return self.g57[precision][op]["sfu"] * 16  # Mesa: 16 SFU ops per cycle
+
+    def test_valhall_sqrt_and_pow_are_two_sfu_ops_rsq_one(self):
+        for p in ("mediump", "highp"):
+            self.assertAlmostEqual(self.sfu_ops(p, "sqrt"), 2.0, places=3, msg=p)
+            self.assertAlmostEqual(self.sfu_ops(p, "pow"), 2.0, places=3, msg=p)
+            self.assertAlmostEqual(self.sfu_ops(p, "inversesqrt"), 1.0, places=3, msg=p)
+
+    def test_valhall_mediump_multiply_is_half_an_fma_slot(self):
+        self.assertAlmostEqual(self.g57["mediump"]["mul"]["fma"] * 64, 0.5, places=3)
+        self.assertAlmostEqual(self.g57["highp"]["mul"]["fma"] * 64, 1.0, places=3)
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)
