@@ -6,14 +6,15 @@ returns their shader-db statistics as JSON (docs/mesa-statistics.md).
   mesa_compile.py --gpu mali-g57 --vertex a.vert --fragment a.frag
 
 PAIRS.json is a list of {"name", "vertex", "fragment"} (paths to GLSL ES source). Output:
-{"mesa": version, "gpus": {gpu: {name: {stage: stats, "other": [...]}}}},
-stats as tools/mesa_stats/shaderdb.py normalises them. Exit 2 when the compilers are not built
+{"gpus": {gpu: {"renderer", "version", "shaders": {name: {stage: stats, "other": [...]}}}}},
+stats as tools/mesa_stats/shaderdb.py normalises them. The Mesa build is looked for in
+$MESA_PREFIX, else $MESA_CACHE_DIR/install, else the build script's default cache folder. Exit 2 when the compilers are not built
 (scripts/build-mesa-shader-compilers.sh), 1 when a shader does not compile (with the driver's log).
 
 Python with ctypes rather than a C++ tool: the Mesa libraries live in a cache prefix outside the
 project and must be loaded in a fresh process per GPU (LD_PRELOAD of the fake device, driver
 environment), which a script that re-executes itself does in a few lines; no CMake target is
-needed on machines without the compilers, and the calibration fit (numpy) reads the same JSON.
+needed on machines without the compilers, and the calibration fit reads the same JSON.
 """
 
 import argparse
