@@ -8,6 +8,7 @@ import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tools", "mesa_stats"))
+import package_glsl  # noqa: E402
 import shaderdb  # noqa: E402
 
 FIXTURES = os.path.join(HERE, "data", "mesa_stats")
@@ -100,6 +101,34 @@ class Robustness(unittest.TestCase):
     def test_unknown_field_set_is_an_error(self):
         with self.assertRaises(shaderdb.ParseError):
             shaderdb.normalise(shaderdb.parse_line("FRAG shader: 12 inst, 3 widgets"))
+
+
+class MatcCostTable(unittest.TestCase):
+    """tools/mesa_stats/package_glsl.py reads `matc info`'s static cost table (recorded in
+    matc-info-red_plastic.txt) to pair each variant's statistics with the cost counts."""
+
+    def test_recorded_table_reads_every_variant_and_stage(self):
+        with open(os.path.join(FIXTURES, "matc-info-red_plastic.txt")) as f:
+            costs = package_glsl.parse_cost_table(f.read())
+        self.assertEqual(len(costs), 8)
+        self.assertEqual(costs["high.dir1"]["fragment"],
+                         {"aluOps": 90, "scalarAluOps": 170, "transcendentalOps": 8, "divisions": 2,
+                          "textureSamples": 2, "varyingComponents": 6, "relaxedPercent": 89.0})
+
+    def test_two_line_title_and_cycles_column_are_read(self):
+        # The layout matc prints once it adds its mobile cost model's estimate (a `cycles` column).
+        text = ("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"
+                "Valhall-class cycles per vertex or fragment, docs/eval.md)\n"
+                "  variant            stage      alu scalar transc  div  tex varyings  mediump  cycles\n"
+                "  high.dir1          fragment    90    170      8    2    2        6      89%    2.31\n")
+        row = package_glsl.parse_cost_table(text)["high.dir1"]["fragment"]
+        self.assertEqual(row["mobileCostCycles"], 2.31)
+        self.assertEqual(row["scalarAluOps"], 170)
+
+    def test_unknown_column_is_an_error_not_a_silent_drop(self):
+        text = "static cost (x)\n  variant stage alu widgets\n  high.dir1 fragment 1 2\n"
+        with self.assertRaises(RuntimeError):
+            package_glsl.parse_cost_table(text)
 
 
 if __name__ == "__main__":

@@ -18,61 +18,20 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesa_compile  # noqa: E402
+import package_glsl  # noqa: E402
 
 SOURCE_ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
-# `matc info` static cost table header -> the StageCost field it prints
-# (compiler/include/facet/compiler/spirv_cost.h).
-COST_COLUMNS = {
-    "alu": "aluOps",
-    "scalar": "scalarAluOps",
-    "transc": "transcendentalOps",
-    "div": "divisions",
-    "tex": "textureSamples",
-    "varyings": "varyingComponents",
-    "mediump": "relaxedPercent",
-}
-
-
-def parse_cost_table(text):
-    """{variant: {stage: {StageCost field: number}}} from `matc info`'s static cost table."""
-    lines = text.splitlines()
-    try:
-        start = next(i for i, l in enumerate(lines) if l.startswith("static cost"))
-    except StopIteration:
-        raise RuntimeError("matc info printed no static cost table")
-    header = lines[start + 1].split()
-    if header[:2] != ["variant", "stage"] or any(h not in COST_COLUMNS for h in header[2:]):
-        raise RuntimeError("unexpected cost table header: %r" % lines[start + 1])
-    costs = {}
-    for line in lines[start + 2:]:
-        if not line.startswith("  "):
-            break
-        cells = line.split()
-        if len(cells) != len(header):
-            raise RuntimeError("unreadable cost table row: %r" % line)
-        row = {}
-        for name, cell in zip(header[2:], cells[2:]):
-            row[COST_COLUMNS[name]] = float(cell.rstrip("%")) if cell.endswith("%") else int(cell)
-        costs.setdefault(cells[0], {})[cells[1]] = row
-    return costs
-
 
 def build_material(matc, mat, work):
+    """Compiles the material into a package; returns its GLSL ES pairs (read back from the
+    package) and matc info's cost counts, both keyed "<material>/<variant>"."""
     name = os.path.splitext(os.path.basename(mat))[0]
     pkg = os.path.join(work, name + ".matpkg")
-    src = os.path.join(work, name)
-    subprocess.run([matc, "compile", mat, "-o", pkg, "--emit-source", src], check=True,
-                   stdout=subprocess.DEVNULL)
-    info = subprocess.run([matc, "info", pkg], check=True, capture_output=True, text=True).stdout
-    costs = parse_cost_table(info)
-    pairs = []
-    for key in costs:
-        vert = os.path.join(src, "%s.%s.vert.es300.glsl" % (name, key))
-        frag = os.path.join(src, "%s.%s.frag.es300.glsl" % (name, key))
-        if not (os.path.exists(vert) and os.path.exists(frag)):
-            raise RuntimeError("matc --emit-source wrote no GLSL ES pair for %s %s" % (name, key))
-        pairs.append({"name": "%s/%s" % (name, key), "vertex": vert, "fragment": frag})
+    subprocess.run([matc, "compile", mat, "-o", pkg], check=True, stdout=subprocess.DEVNULL)
+    pairs, costs = package_glsl.package_pairs(matc, pkg, os.path.join(work, name))
+    for p in pairs:
+        p["name"] = "%s/%s" % (name, p["name"])
     return pairs, {"%s/%s" % (name, k): v for k, v in costs.items()}
 
 

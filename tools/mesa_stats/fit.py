@@ -114,8 +114,13 @@ def fit_gpu(data, gpu):
         train = [(r, t) for m, _, r, t, _ in s if m != material]
         wm = nnls([r for r, _ in train], [t for _, t in train])
         cv += [(predict(wm, r), t) for m, _, r, t, _ in s if m == material]
+    # matc's own mobile cost model, when the matc that collected the data printed its estimate
+    # (a `cycles` column in `matc info`): its error against the same measure, as it stands.
+    model = [c.get("mobileCostCycles") for _, _, _, _, c in s]
+    matc_model = errors(model, y) if gpu in A_PRIORI and None not in model else None
     return {
         "measure": "fragment " + TARGETS[gpu],
+        "matc_model": matc_model,
         "weights": {k: round(v, 9) for k, v in zip(CLASSES, w)},
         "samples": len(y),
         "before": errors(before, y) if before else None,
@@ -150,7 +155,7 @@ def main(argv):
         unit = TARGETS[gpu]
         print("%s %s, %d variants" % (gpu, r["measure"], r["samples"]))
         print("  weights (%s per op): " % unit + ", ".join("%s %.5f" % kv for kv in r["weights"].items()))
-        for label in ("before", "after", "cross_validated"):
+        for label in ("matc_model", "before", "after", "cross_validated"):
             e = r[label]
             if e is None:
                 continue

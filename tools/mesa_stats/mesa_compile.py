@@ -4,6 +4,7 @@ returns their shader-db statistics as JSON (docs/mesa-statistics.md).
 
   mesa_compile.py --gpu mali-g52[,adreno-630,...] PAIRS.json  > stats.json
   mesa_compile.py --gpu mali-g57 --vertex a.vert --fragment a.frag
+  mesa_compile.py --gpu mali-g57 --matc build/test/matc/matc --package red.matpkg [--variant high.dir1]
 
 PAIRS.json is a list of {"name", "vertex", "fragment"} (paths to GLSL ES source). Output:
 {"gpus": {gpu: {"renderer", "version", "shaders": {name: {stage: stats, "other": [...]}}}}},
@@ -24,8 +25,10 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import package_glsl  # noqa: E402
 import shaderdb  # noqa: E402
 
 # The fake devices. Mali GPU ids as panfrost's drm-shim reads them (PAN_GPU_ID, hex);
@@ -252,6 +255,9 @@ def main(argv):
     ap.add_argument("--prefix", default=default_prefix(), help="Mesa install prefix (default: %(default)s)")
     ap.add_argument("--vertex")
     ap.add_argument("--fragment")
+    ap.add_argument("--package", help="a .matpkg: compile its own GLSL ES (read with matc info)")
+    ap.add_argument("--variant", help="with --package: comma-separated variant keys (default: all)")
+    ap.add_argument("--matc", default="matc", help="matc to read --package with (default: %(default)s)")
     ap.add_argument("--messages", action="store_true",
                     help="print the driver's debug messages as received (statistics fixtures), not JSON")
     ap.add_argument("--child", help=argparse.SUPPRESS)
@@ -263,23 +269,31 @@ def main(argv):
         json.dump(result, sys.stdout)
         return code
 
-    if args.pairs:
-        with open(args.pairs) as f:
-            pairs = json.load(f)
-    elif args.vertex and args.fragment:
-        pairs = [{"name": os.path.basename(args.fragment), "vertex": args.vertex, "fragment": args.fragment}]
-    else:
-        ap.error("give PAIRS.json or --vertex and --fragment")
+    if not (args.package or args.pairs or (args.vertex and args.fragment)):
+        ap.error("give PAIRS.json, --vertex and --fragment, or --package")
     gpus = [g for g in args.gpu.split(",") if g]
     reason = missing_reason(args.prefix, gpus)
     if reason:
         sys.stderr.write("mesa_compile: %s\n" % reason)
         return EXIT_NOT_BUILT
-    try:
-        result = collect(args.prefix, gpus, pairs)
-    except RuntimeError as e:
-        sys.stderr.write("mesa_compile: %s\n" % e)
-        return 1
+    with tempfile.TemporaryDirectory(prefix="facet-mesa-compile-") as work:
+        if args.package:
+            variants = [v for v in args.variant.split(",") if v] if args.variant else None
+            try:
+                pairs, _ = package_glsl.package_pairs(args.matc, args.package, work, variants)
+            except (RuntimeError, OSError, subprocess.CalledProcessError) as e:
+                sys.stderr.write("mesa_compile: %s: error: %s\n" % (args.package, e))
+                return 1
+        elif args.pairs:
+            with open(args.pairs) as f:
+                pairs = json.load(f)
+        else:
+            pairs = [{"name": os.path.basename(args.fragment), "vertex": args.vertex, "fragment": args.fragment}]
+        try:
+            result = collect(args.prefix, gpus, pairs)
+        except RuntimeError as e:
+            sys.stderr.write("mesa_compile: %s\n" % e)
+            return 1
     if args.messages:
         for gpu in gpus:
             for pair in pairs:

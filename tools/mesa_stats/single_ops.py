@@ -11,7 +11,6 @@ scripts/build-mesa-shader-compilers.sh (exit 2 otherwise).
 """
 
 import argparse
-import json
 import os
 import sys
 import tempfile
