@@ -4,14 +4,14 @@ instructions (Adreno) measured by Mesa's compilers (tools/calibration/mesa-stats
 
   tools/mesa_stats/fit.py tools/calibration/mesa-stats.json [-o tools/calibration/mesa-fit.json]
 
-Model: measure ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops,
-transcendentals, divisions, texture samples, varying components), w_k ≥ 0 (non-negative least
-squares: every subset of classes solved by least squares, the best all-non-negative one kept;
-exact for five classes). "Before" is the a-priori model from DESIGN.md's facts ("Facts measured on mobile GPU compilers") and
+Model: measure ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops
+split into mediump and highp, transcendentals, divisions, texture samples, varying components),
+w_k ≥ 0 (non-negative least squares: every subset of classes solved by least squares, the best
+all-non-negative one kept; exact for six classes). "Before" is the a-priori model from DESIGN.md's facts ("Facts measured on mobile GPU compilers") and
 Mesa's Valhall rates: max((scalar + 4·transc + 4·div) / 64, tex / 4, varyings / 16).
 Cross-validation: fit on three materials, predict the fourth, for each material in turn.
 
-Standard library only: five unknowns need no numpy, and the calibration test then runs on every
+Standard library only: six unknowns need no numpy, and the calibration test then runs on every
 Python CMake finds.
 """
 
@@ -21,7 +21,16 @@ import json
 import math
 import sys
 
-CLASSES = ["scalarAluOps", "transcendentalOps", "divisions", "textureSamples", "varyingComponents"]
+# The counts of spirv_cost.h, scalar ALU ops split by precision: mediump work packs two fp16 lanes
+# per slot on Valhall. StageCost has the mediump share of ALU + transcendental ops only
+# (relaxedPercent, printed rounded to 1 %), so the split applies that share to the scalar count.
+CLASSES = ["scalarMediump", "scalarHighp", "transcendentalOps", "divisions", "textureSamples", "varyingComponents"]
+
+
+def features(cost):
+    relaxed = cost["relaxedPercent"] / 100.0
+    derived = {"scalarMediump": cost["scalarAluOps"] * relaxed, "scalarHighp": cost["scalarAluOps"] * (1 - relaxed)}
+    return [derived[k] if k in derived else cost[k] for k in CLASSES]
 # What is fitted per GPU: Mali's cycle bound; ir3 prints no cycles, so its non-nop instruction
 # count (issue slots of one wave) stands in.
 TARGETS = {"mali-g57": "cycles", "mali-g52": "cycles", "adreno-630": "non-nops"}
@@ -61,7 +70,7 @@ def least_squares(rows, y):
 
 
 def nnls(rows, y):
-    """Non-negative least squares by enumerating the classes kept (2^5 small systems)."""
+    """Non-negative least squares by enumerating the classes kept (2^6 small systems)."""
     n = len(rows[0])
     best, best_err = [0.0] * n, sum(t * t for t in y)
     for size in range(1, n + 1):
@@ -99,7 +108,7 @@ def samples(data, gpu):
         frag = v["gpus"][gpu]["fragment"]
         cost = v["spirv_cost"]["fragment"]
         measured = frag["cycles"] if TARGETS[gpu] == "cycles" else frag["raw"][TARGETS[gpu]]
-        out.append((name.split("/")[0], name, [cost[k] for k in CLASSES], measured, cost))
+        out.append((name.split("/")[0], name, features(cost), measured, cost))
     return out
 
 
