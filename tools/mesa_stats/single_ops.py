@@ -33,6 +33,7 @@ OPS = {
     "sqrt": "v = sqrt(v);",
     "exp2": "v = exp2(v);",
     "log2": "v = log2(v);",
+    "log": "v = log(v);",
     "exp": "v = exp(v);",
     # pow(pow(a, b), c) folds to pow(a, b·c) in NIR (ir3 showed it): a multiply between the
     # steps stops that, and the "mul" shader's figures are subtracted (MINUS).
@@ -41,6 +42,7 @@ OPS = {
     "cos": "v = cos(v);",
     "tan": "v = tan(v);",
     "acos": "v = acos(v);",
+    "asin": "v = asin(v);",
     "atan": "v = atan(v);",
     "atan2": "v = atan(v, u[{i}]);",
     "floor": "v = floor(v * u[{i}]);",
