@@ -16,6 +16,8 @@ packages=(
   libglm-dev libzstd-dev libxxhash-dev nlohmann-json3-dev libcli11-dev libstb-dev
   # tests (python3-jsonschema: the SARIF schema check of matc lint's report)
   googletest libgtest-dev libgmock-dev python3-jsonschema
+  # tests of tools/mesa_stats (Python, standard library only)
+  python3
   # fuzzing (scripts/fuzz.sh): clang, its libFuzzer/ASan/UBSan runtimes (libclang_rt.fuzzer),
   # and llvm-symbolizer for readable sanitizer stack traces
   clang libclang-rt-14-dev llvm

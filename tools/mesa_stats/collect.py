@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""Collects Mesa's shader-db statistics for every variant of every example material, per GPU,
+beside the static SPIR-V cost counts `matc info` gives for the same variant, into one JSON file
+(the calibration data of docs/mesa-statistics.md).
+
+  tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json
+
+Needs scripts/build-mesa-shader-compilers.sh to have run (exit 2 otherwise).
+"""
+
+import argparse
+import glob
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesa_compile  # noqa: E402
+import package_glsl  # noqa: E402
+
+SOURCE_ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+
+def build_material(matc, mat, work):
+    """Compiles the material into a package; returns its GLSL ES pairs (read back from the
+    package) and matc info's cost counts, both keyed "<material>/<variant>"."""
+    name = os.path.splitext(os.path.basename(mat))[0]
+    pkg = os.path.join(work, name + ".matpkg")
+    subprocess.run([matc, "compile", mat, "-o", pkg], check=True, stdout=subprocess.DEVNULL)
+    pairs, costs = package_glsl.package_pairs(matc, pkg, os.path.join(work, name))
+    for p in pairs:
+        p["name"] = "%s/%s" % (name, p["name"])
+    return pairs, {"%s/%s" % (name, k): v for k, v in costs.items()}
+
+
+def dumps(obj, depth=0, flat_below=4):
+    """JSON with one line per variant and GPU (objects at depth >= flat_below), so the file stays
+    small and a change in one compiler's output is one changed line in a diff."""
+    if not isinstance(obj, dict) or depth >= flat_below or not obj:
+        return json.dumps(obj, sort_keys=True)
+    pad = " " * (depth + 1)
+    items = ["%s%s: %s" % (pad, json.dumps(k), dumps(obj[k], depth + 1, flat_below)) for k in sorted(obj)]
+    return "{\n" + ",\n".join(items) + "\n" + " " * depth + "}"
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--matc", default=os.path.join(SOURCE_ROOT, "build", "test", "matc", "matc"))
+    ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630")
+    ap.add_argument("--prefix", default=mesa_compile.default_prefix())
+    ap.add_argument("-o", "--output", required=True)
+    args = ap.parse_args(argv)
+
+    gpus = [g for g in args.gpu.split(",") if g]
+    reason = mesa_compile.missing_reason(args.prefix, gpus)
+    if reason:
+        sys.stderr.write("collect: %s\n" % reason)
+        return mesa_compile.EXIT_NOT_BUILT
+
+    materials = sorted(glob.glob(os.path.join(SOURCE_ROOT, "examples", "materials", "*.mat")))
+    with tempfile.TemporaryDirectory(prefix="facet-mesa-stats-") as work:
+        pairs, costs = [], {}
+        for mat in materials:
+            p, c = build_material(args.matc, mat, work)
+            pairs += p
+            costs.update(c)
+        try:
+            measured = mesa_compile.collect(args.prefix, gpus, pairs)
+        except RuntimeError as e:
+            sys.stderr.write("collect: %s\n" % e)
+            return 1
+
+    variants = {}
+    for pair in pairs:
+        name = pair["name"]
+        entry = {"spirv_cost": costs[name], "gpus": {}}
+        for gpu in gpus:
+            shaders = measured[gpu]["shaders"][name]
+            # Every stage the driver printed: Mali's vertex shader arrives as its IDVS halves
+            # (vertex_position, vertex_varying), Adreno's with a binning-pass copy.
+            entry["gpus"][gpu] = shaders
+        variants[name] = entry
+    data = {
+        "generated_by": "tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json",
+        "mesa": "Debian 22.3.6 (scripts/build-mesa-shader-compilers.sh)",
+        "materials": [os.path.relpath(m, SOURCE_ROOT) for m in materials],
+        "gpus": {g: {"renderer": measured[g]["renderer"], "version": measured[g]["version"]} for g in gpus},
+        "variants": variants,
+    }
+    os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
+    with open(args.output, "w") as f:
+        f.write(dumps(data) + "\n")
+    sys.stderr.write("collect: %d variants x %d GPUs -> %s\n" % (len(variants), len(gpus), args.output))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
