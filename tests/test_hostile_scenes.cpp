@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "facet/package.h"
 #include "facet/runtime/image_texture.h"
+#include "facet/runtime/material.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
@@ -142,4 +145,83 @@ TEST(HostileScenes, ParameterValuesMatchTheParameterType) {
   EXPECT_NE(error.find("parameter 'glossy' of material 'switches' is bool: give true or false"), std::string::npos) << error;
   EXPECT_FALSE(prepare(R"({"bands": 2.5})", &error));
   EXPECT_NE(error.find("parameter 'bands' of material 'switches' is int, not 2.5"), std::string::npos) << error;
+}
+
+// Hostile packages: checksum-valid (written by package::write), so every check below is the
+// runtime's, past the byte-level reader.
+namespace {
+
+facet::package::Package examplePackage() {
+  std::string packages = facet::test::writeExamplePackages("hostile-packages-src");
+  auto r = facet::package::readFile(packages + "/red_plastic.matpkg");
+  EXPECT_TRUE(r.package) << r.error;
+  return r.package.value_or(facet::package::Package{});
+}
+
+// Writes `p` as red_plastic.matpkg in a fresh folder and loads it as an app would.
+std::string loadError(const facet::package::Package& p, const std::string& variant = "") {
+  std::string dir = facet::test::scratchDir("hostile-packages");
+  std::string error;
+  EXPECT_TRUE(facet::package::writeFile(dir + "/red_plastic.matpkg", facet::package::write(p), &error)) << error;
+  auto material = facet::runtime::LoadedMaterial::load(dir + "/red_plastic.matpkg", &error);
+  if (material && !variant.empty() && material->program(variant, &error)) return "";
+  return material && variant.empty() ? "" : error;
+}
+
+facet::package::Shader* spirv(facet::package::Package& p, const std::string& key, facet::package::Stage stage) {
+  for (auto& v : p.variants)
+    if (v.key == key)
+      for (auto& s : v.shaders)
+        if (s.stage == stage && s.target == facet::package::Target::Spirv) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(HostilePackages, MalformedSpirvNeverReachesTheDriver) {
+  using facet::package::Stage;
+  facet::package::Package p = examplePackage();
+  ASSERT_EQ(loadError(p, "high.dir1"), "");
+  facet::package::Package truncated = p;
+  auto* s = spirv(truncated, "high.dir1", Stage::Fragment);
+  ASSERT_TRUE(s);
+  s->code.resize(s->code.size() / 2 / 4 * 4);
+  EXPECT_NE(loadError(truncated, "high.dir1").find("variant high.dir1: the fragment shader is invalid SPIR-V"), std::string::npos);
+  facet::package::Package flipped = p;
+  s = spirv(flipped, "high.dir1", Stage::Vertex);
+  s->code[s->code.size() / 2] ^= 0x40;
+  EXPECT_NE(loadError(flipped, "high.dir1").find("the vertex shader is"), std::string::npos);
+  facet::package::Package text = p;
+  s = spirv(text, "high.dir1", Stage::Vertex);
+  s->code.assign({'#', 'v', 'e', 'r', 's', 'i', 'o', 'n', ' ', '3', '0', '0', ' ', 'e', 's', '\n', 'x', 'x', 'x', 'x'});
+  EXPECT_NE(loadError(text).find("the vertex spirv shader of variant 'high.dir1' is not SPIR-V"), std::string::npos);
+  facet::package::Package empty = p;
+  spirv(empty, "high.dir1", Stage::Vertex)->code.clear();
+  EXPECT_NE(loadError(empty).find("is not SPIR-V"), std::string::npos);
+}
+
+TEST(HostilePackages, MeaningIsCheckedNotOnlyBytes) {
+  const facet::package::Package good = examplePackage();
+  auto expectRejected = [&](auto edit, const std::string& why) {
+    facet::package::Package p = good;
+    edit(p);
+    std::string error = loadError(p);
+    EXPECT_NE(error.find(why), std::string::npos) << "expected '" << why << "', got '" << error << "'";
+  };
+  auto& params = good.material.params;
+  ASSERT_GE(params.size(), 2u);
+  expectRejected([](auto& p) { p.material.params[1].defaultValue[0] = std::nan(""); }, "its default is not a finite number");
+  expectRejected([](auto& p) { p.material.params[1].defaultValue[0] = INFINITY; }, "its default is not a finite number");
+  expectRejected([](auto& p) { p.material.shading = "glossy"; }, "unknown shading model 'glossy'");
+  expectRejected([](auto& p) { p.material.blending = "multiply"; }, "unknown blending mode 'multiply'");
+  expectRejected([](auto& p) { p.material.params[1].name = p.material.params[0].name; }, "is declared twice");
+  expectRejected([](auto& p) { p.material.params[0].name = "base.color"; }, "a parameter name is an identifier");
+  expectRejected([](auto& p) { p.material.name = std::string("red\0plastic", 11); }, "is not an identifier");
+  expectRejected([](auto& p) { p.material.params[1].rangeMin = 2.0; p.material.params[1].rangeMax = 1.0; },
+                 "its range is not a finite interval");
+  expectRejected([](auto& p) { p.material.params[1].rangeMin = std::nan(""); p.material.params[1].rangeMax = 1.0; },
+                 "its range is not a finite interval");
+  expectRejected([](auto& p) { p.variants[0].key = "ultra.dir1"; }, "variant key 'ultra.dir1' is not a valid key");
+  expectRejected([](auto& p) { p.variants[1].key = p.variants[0].key; }, "is stored twice");
+  expectRejected([](auto& p) { p.material.paramBlockSize = 0xffffffffu; }, "the parameter block is 4294967295 bytes; the limit is 4096");
 }

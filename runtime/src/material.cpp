@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "untrusted_spirv.h"
+
 namespace facet::runtime {
 namespace {
 
@@ -55,6 +57,10 @@ std::optional<LoadedMaterial> LoadedMaterial::load(const std::string& path, std:
     *error = path + ": " + r.error;
     return std::nullopt;
   }
+  if (std::string why = package::semanticError(*r.package); !why.empty()) {
+    *error = path + ": " + why;
+    return std::nullopt;
+  }
   LoadedMaterial m;
   m.package_ = std::move(*r.package);
   for (const package::Texture& t : m.package_.textures) m.textures_.push_back(runtimeTexture(t));
@@ -72,7 +78,13 @@ std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std
       } else if (s.target == package::Target::Spirv) {
         std::vector<uint32_t>& words = vertex ? p.vertexSpirv : p.fragmentSpirv;
         words.resize(s.code.size() / 4);
-        std::memcpy(words.data(), s.code.data(), words.size() * 4);
+        if (!words.empty()) std::memcpy(words.data(), s.code.data(), words.size() * 4);
+        std::string why;
+        if (!validateUntrustedSpirv(words, &why)) {
+          *error = "material '" + package_.material.name + "' variant " + key + ": the " + package::toString(s.stage) +
+                   " shader is " + why;
+          return std::nullopt;
+        }
       }
     }
     return p;

@@ -134,6 +134,19 @@ struct ReadResult {
 // never allocates more than the input can justify, on any input.
 ReadResult read(std::span<const uint8_t> bytes);
 
+// Limits a package must respect (the compiler's own: ir::kMaxParams, their std140 vec4 slots).
+inline constexpr size_t kMaxParams = 256;
+inline constexpr uint32_t kMaxParamBlockBytes = 256 * 16;
+inline constexpr size_t kMaxNameBytes = 128;
+
+// What a decoded package means, checked for a package the app did not build (the runtime's
+// loader calls it on every package): identifier names, known shading and blending, unique
+// parameters and variants, valid variant keys, finite ordered ranges holding their defaults,
+// sizes within the limits above, and shader blobs of the kind their slot says (SPIR-V words,
+// GLSL ES 3.00 text). "" when it is sound, else what is wrong. read() checks bytes only, so that
+// tools can still open and describe a package whose meaning is wrong.
+std::string semanticError(const Package& pkg);
+
 // Reads a whole file; on I/O failure returns a ReadResult with the error set.
 ReadResult readFile(const std::string& path);
 

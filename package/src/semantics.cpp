@@ -1,0 +1,106 @@
+// What a package means, checked after its bytes (package.h, semanticError): for packages an app
+// did not build (docs/security.md). read() guarantees every offset and size; this guarantees that
+// what they hold is a material the runtime can use, as the compiler would have written it.
+#include "facet/package.h"
+
+#include <cmath>
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "facet/permutations/variant_key.h"
+
+namespace facet::package {
+namespace {
+
+bool isIdentifier(const std::string& s) {
+  if (s.empty() || s.size() > kMaxNameBytes || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+// Names in messages: short, and without bytes that would garble a terminal.
+std::string shown(const std::string& s) {
+  std::string out;
+  for (size_t i = 0; i < s.size() && i < 48; ++i) out += std::isprint(static_cast<unsigned char>(s[i])) ? s[i] : '?';
+  return s.size() > 48 ? out + "..." : out;
+}
+
+std::string paramError(const Param& p) {
+  const std::string what = "parameter '" + shown(p.name) + "'";
+  if (!isIdentifier(p.name)) return what + ": a parameter name is an identifier (letters, digits, _)";
+  for (double v : p.defaultValue)
+    if (!std::isfinite(v)) return what + ": its default is not a finite number";
+  if (p.rangeMin.has_value() != p.rangeMax.has_value()) return what + ": a range has both ends or none";
+  if (p.rangeMin) {
+    if (!std::isfinite(*p.rangeMin) || !std::isfinite(*p.rangeMax) || *p.rangeMin > *p.rangeMax)
+      return what + ": its range is not a finite interval [min, max] with min <= max";
+    if (!isTexture(p.type))
+      for (double v : p.defaultValue)
+        if (v < *p.rangeMin || v > *p.rangeMax) return what + ": its default lies outside its range";
+  }
+  bool unit = p.type == ParamType::Color || isTexture(p.type);
+  for (double v : p.defaultValue) {
+    if (unit && (v < 0.0 || v > 1.0)) return what + ": a colour or texture default lies in [0, 1]";
+    if (p.type == ParamType::Bool && v != 0.0 && v != 1.0) return what + ": a bool default is 0 or 1";
+    if (p.type == ParamType::Int && v != std::floor(v)) return what + ": an int default is a whole number";
+  }
+  return "";
+}
+
+// The shader's kind matches its slot: SPIR-V words in a SPIR-V slot (a driver handed text as
+// SPIR-V fails with VK_ERROR_UNKNOWN at best), text where text is expected.
+std::string shaderError(const Shader& s) {
+  if (s.target == Target::Spirv) {
+    if (s.code.size() < 20 || s.code.size() % 4 != 0 ||
+        !(s.code[0] == 0x03 && s.code[1] == 0x02 && s.code[2] == 0x23 && s.code[3] == 0x07))
+      return "is not SPIR-V (a whole number of little-endian words after the 5-word header, magic 0x07230203)";
+    return "";
+  }
+  for (uint8_t c : s.code)
+    if (c == 0) return "is text with a NUL byte in it";
+  if (s.target == Target::GlslEs300) {
+    static const std::string version = "#version 300 es";
+    if (s.code.size() < version.size() || !std::equal(version.begin(), version.end(), s.code.begin()))
+      return "is not GLSL ES 3.00 (it does not start with '#version 300 es')";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string semanticError(const Package& pkg) {
+  const MaterialInfo& m = pkg.material;
+  if (!isIdentifier(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
+  if (m.shading != "lit" && m.shading != "unlit") return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
+  static const std::set<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
+  if (!blendings.count(m.blending))
+    return "unknown blending mode '" + shown(m.blending) + "' (opaque, masked, transparent, additive)";
+  if (m.paramBlockSize > kMaxParamBlockBytes)
+    return "the parameter block is " + std::to_string(m.paramBlockSize) + " bytes; the limit is " +
+           std::to_string(kMaxParamBlockBytes);
+  if (m.params.size() > kMaxParams)
+    return std::to_string(m.params.size()) + " parameters; the limit is " + std::to_string(kMaxParams);
+  std::set<std::string> names;
+  for (const Param& p : m.params) {
+    if (std::string e = paramError(p); !e.empty()) return e;
+    if (!names.insert(p.name).second) return "parameter '" + shown(p.name) + "' is declared twice";
+  }
+  std::set<std::string> keys;
+  for (const Variant& v : pkg.variants) {
+    auto key = permutations::VariantKey::parse(v.key);
+    if (!key || key->toString() != v.key) return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
+    if (!keys.insert(v.key).second) return "variant '" + v.key + "' is stored twice";
+    std::set<std::pair<Stage, Target>> slots;
+    for (const Shader& s : v.shaders) {
+      if (!slots.insert({s.stage, s.target}).second)
+        return "variant '" + v.key + "' has two " + toString(s.stage) + " " + toString(s.target) + " shaders";
+      if (std::string e = shaderError(s); !e.empty())
+        return "the " + std::string(toString(s.stage)) + " " + toString(s.target) + " shader of variant '" + v.key + "' " + e;
+    }
+  }
+  return "";
+}
+
+}  // namespace facet::package
