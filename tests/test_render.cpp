@@ -106,13 +106,15 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
   int checked = 0;
   double worst = 0;
   facet::test::forEachSpherePixel(scene, 8, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
-    glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient);
     // The constant sky's image-based specular: the environment is `ambient` in every direction and
     // at every level (exact), so the split-sum term is ambient · (f0·A + B) of the DFG table as
-    // the shader reads it (high tier: no energy compensation).
+    // the shader reads it. The high tier's energy compensation 1 + f0 (1/dfg.y − 1), from the
+    // same texel, scales it and the direct specular.
     const double f0 = 0.16 * surface.reflectance * surface.reflectance;
     auto [b, albedo] = facet::test::dfgBilinear(glm::dot(n, v), std::clamp(surface.roughness, 0.089, 1.0));
-    expected += ambient * (f0 * albedo + (1 - f0) * b);
+    const double compensation = 1 + f0 * (1 / albedo - 1);
+    glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient, glm::dvec3(compensation));
+    expected += ambient * (f0 * albedo + (1 - f0) * b) * compensation;
     const float* got = &vulkan_->hdr[(size_t(y) * scene.width + x) * 4];
     for (int ch = 0; ch < 3; ++ch) {
       double error_ = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
