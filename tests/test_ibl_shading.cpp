@@ -11,6 +11,7 @@
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/env_brdf_fits.h"
 #include "facet/ibl/equirect_image.h"
+#include "facet/ibl/octahedral_map.h"
 #include "facet/ibl/sphere_quadrature.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include <stb_image_write.h>
@@ -137,7 +138,7 @@ TEST(IblShading, DiffuseAmbientMatchesShIrradianceOfTheSky) {
   const facet::ibl::SphericalHarmonics irradiance =
       facet::ibl::radianceToIrradiance(facet::ibl::projectRadiance(std::function<Vec3(Vec3)>(testSky), 3));
   const auto& env = frame->environment();
-  facet::ibl::EquirectImage roughest(int(env.width >> 4), int(env.height >> 4));
+  facet::ibl::OctahedralImage roughest(int(env.width >> 4));
   roughest.rgb = env.levels.back();
   // Brute-force irradiance: the cosine-weighted integral of the sky over the hemisphere of n.
   auto bruteForce = [&](Vec3 n) {
@@ -163,9 +164,9 @@ TEST(IblShading, DiffuseAmbientMatchesShIrradianceOfTheSky) {
     Vec3 nn{n.x, n.y, n.z};
     Vec3 diffuse = facet::ibl::evaluateSh(irradiance, nn) * (scale / M_PI);
     glm::dvec3 r = glm::reflect(-v, n);
-    double s = 0, t = 0;
-    facet::ibl::equirectCoordinates({r.x, r.y, r.z}, &s, &t);
-    Vec3 specular = facet::ibl::sampleBilinear(roughest, s, t) * dfgBilinear(glm::dot(n, v), 1.0).first;
+    double u = 0, w = 0;
+    facet::ibl::octahedralCoordinates({r.x, r.y, r.z}, &u, &w);
+    Vec3 specular = facet::ibl::sampleBilinear(roughest, u, w) * dfgBilinear(glm::dot(n, v), 1.0).first;
     const double expected[3] = {diffuse.x + specular.x, diffuse.y + specular.y, diffuse.z + specular.z};
     const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
     for (int ch = 0; ch < 3; ++ch) {
@@ -257,7 +258,8 @@ TEST(IblShading, ConstantSkyIsAnExactEnvironment) {
 }
 
 // An equirect .hdr image (Radiance RGBE, read with stbi_loadf) becomes the environment: a sky
-// brighter above the horizon than below, 256 × 128, halved to the runtime's 128 × 64. Its SH band 0
+// brighter above the horizon than below, 256 × 128, halved to the runtime's 128 × 64 and
+// prefiltered into its 128² octahedral map. Its SH band 0
 // is the mean radiance and band 1's y term carries the up/down difference; every level keeps the
 // mean within 2 % (facet_ibl's prefilter bound, docs/ibl.md) and the luminance scales it all.
 TEST(IblShading, HdrImageEnvironmentIsLoadedScaledAndPrefiltered) {
@@ -275,7 +277,7 @@ TEST(IblShading, HdrImageEnvironmentIsLoadedScaledAndPrefiltered) {
   auto env = facet::runtime::buildEnvironmentLighting(*scene, 0.01, &error);
   ASSERT_TRUE(env) << error;
   EXPECT_EQ(env->width, 128u);
-  EXPECT_EQ(env->height, 64u);
+  EXPECT_EQ(env->height, 128u);
   // Radiance a + b·sign(y), a = 1.25, b = 0.75 (× 100 cd/m² × exposure 0.01 = × 1). Its irradiance
   // / π is exactly a + b·y for SH3: sign(y) is odd (no band 2) and the cosine kernel removes band 3;
   // n = up sees the upper half only, E/π = 2 = a + b. So c_0 = 1.25, c_1 (the y term) = 0.75.
