@@ -173,9 +173,11 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
 // where lavapipe runs RelaxedPrecision SPIR-V in fp32, so the R·L index differs by up to about a
 // texel and pixels on a step's boundary land on either side. (Measured: with every `mediump`
 // replaced by `highp` in the GL shaders, GL matches Vulkan within 2 steps.) The slack covers the
-// fp16 error inside the steepest part of the highlight (at most 3 steps seen). A step boundary
-// moves by well under a pixel; a wrong table, decode or binding changes whole regions.
-constexpr int kNeighbourhoodSlack = 4;
+// fp16 error inside the steepest part of the highlight (at most 3 steps seen), and one step more
+// at a tile edge of tiles.json since the low tier adds each light in linear (add_light: the edge
+// value 186 against GL's neighbourhood maximum 181). A step boundary moves by well under a
+// pixel; a wrong table, decode or binding changes whole regions.
+constexpr int kNeighbourhoodSlack = 5;
 int valuesOutsideNeighbourhood(const facet::runtime::FrameResult& a, const facet::runtime::FrameResult& b) {
   int outside = 0;
   const int w = int(a.width), h = int(a.height);
@@ -249,9 +251,10 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     double db = psnr(images[tier].ldr, images["reference"].ldr);
     std::printf("tier %-5s vs reference: %.1f dB (8-bit PSNR, spheres.json)\n", tier, db);
     // Measured with image-based ambient (a constant sky: every tier's environment is exact, so
-    // the difference is the environment BRDF and, for reference, energy compensation): high 53.1,
-    // mid 36.7 (Karis's fit), low 29.0 (two-mip lerp, Zioma's fit, the gamma hack).
-    EXPECT_GT(db, std::string(tier) == "high" ? 45.0 : std::string(tier) == "mid" ? 32.0 : 26.0) << tier;
+    // the difference is the environment BRDF): high 99.0 (identical: mediump runs at fp32 here,
+    // and high has the reference's energy compensation), mid 36.7 (Karis's fit), low 33.2
+    // (two-mip lerp, Zioma's fit, the gamma hack with lights added in linear; 29.0 before).
+    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : std::string(tier) == "mid" ? 32.0 : 31.0) << tier;
   }
 }
 
