@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/env_brdf_fits.h"
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/sphere_quadrature.h"
@@ -521,4 +522,12 @@ TEST(Octahedral, PrefilteredLevelsMatchTheSourceAndTheLobeIntegral) {
       EXPECT_NEAR(got.z / want.z, 1.0, 0.02) << "level " << m;
     }
   }
+}
+
+// The table the runtime links (computed at build time by ibl/tools/write_dfg_table.cpp) is the
+// generator's output bit for bit: hexadecimal float literals round-trip exactly.
+TEST(Dfg, EmbeddedTableIsTheGeneratedOne) {
+  const DfgLut& embedded = embeddedDfgLut();
+  EXPECT_EQ(embedded.size, kDfgLutSize);
+  EXPECT_EQ(embedded.texels, shippedLut().texels);
 }

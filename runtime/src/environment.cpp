@@ -8,6 +8,7 @@
 #include <stb_image.h>
 
 #include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/equirect_image.h"
 #include "facet/ibl/octahedral_map.h"
 #include "facet/ibl/prefilter_environment.h"
@@ -182,10 +183,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
   return t;
 }
 
-const DfgTable& dfgTable() {
-  static const DfgTable table = ibl::generateDfgLut(ibl::kDfgLutSize);
-  return table;
-}
+const DfgTable& dfgTable() { return ibl::embeddedDfgLut(); }
 
 const Texture& dfgTexture() {
   static const Texture texture = [] {

@@ -44,7 +44,8 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
 Texture environmentTexture(const EnvironmentLighting& lighting);
 
 // The split-sum DFG table: facet::ibl::generateDfgLut(64) (2048 samples per texel, ~1 s on one
-// core), generated on first use and shared by the process. `texels` holds (B, A + B) per texel,
+// core), computed at build time and linked as data (facet::ibl::embeddedDfgLut), so loading it
+// costs no integration. `texels` holds (B, A + B) per texel,
 // column = n·v, row = roughness, both at (i + 0.5)/64.
 using DfgTable = ibl::DfgLut;
 const DfgTable& dfgTable();
