@@ -37,16 +37,18 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     return specular * clamp(material.ambientOcclusion, 0.0, 1.0);
 }
 
-// Adds the ambient specular (linear) to the ambient diffuse. With FACET_GAMMA_HACK the diffuse is
-// encoded (d_γ = √d) and the sum is formed in linear before encoding again: √(d_γ² + s) costs the
-// same square root as encoding s alone, and avoids the hack's cross term ((d_γ + √s)² = d + s +
-// 2√(ds)), which for an environment lighting every pixel both ways would brighten the whole
-// surface, not just highlights (measured: low tier 19.0 dB instead of 27.7 dB against reference in
-// test_punctual_lights' scene).
-vec3 add_ambient_specular(vec3 diffuse, vec3 specular) {
+// Adds linear radiance (the ambient specular, each light's direct term) to the colour so far.
+// With FACET_GAMMA_HACK the colour is encoded (c_γ = √c) and the sum is formed in linear before
+// encoding again: √(c_γ² + x) costs the same square root as encoding x alone, and avoids the
+// hack's cross term ((c_γ + √x)² = c + x + 2√(cx)), which for an environment lighting every
+// pixel both ways would brighten the whole surface (measured: low tier 19.0 dB instead of
+// 27.7 dB against reference in test_punctual_lights' scene) and for a light made its lobe's
+// faint tail over lit diffuse visible (docs/specular-tiers.md). fp16: c_γ² + x is clamped to the
+// mediump range before the √ (c_γ ≤ 256 keeps c_γ² finite; the sum need not be).
+vec3 add_light(vec3 color, vec3 radiance) {
 #if defined(FACET_GAMMA_HACK)
-    return sqrt(diffuse * diffuse + specular);
+    return sqrt(min(color * color + radiance, MEDIUMP_FLT_MAX));
 #else
-    return diffuse + specular;
+    return color + radiance;
 #endif
 }

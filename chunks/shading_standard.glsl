@@ -22,15 +22,15 @@
 // linearise colour parameters or sRGB textures for such variants, so baseColor arrives encoded.
 //   diffuse_γ  = diffuseColor_γ · √(irradiance/π)        (√ per vertex with FACET_VERTEX_DIFFUSE)
 //   f0_γ       = 0.4 · reflectance · (1 − metallic) + metallic · baseColor_γ    (√(0.16 r²) = 0.4 r)
-//   specular_γ = √(f_s(f0_γ²) · E_light · n·l)
+//   specular   = f_s(f0_γ²) · E_light · n·l, linear, added as c_γ ← √(c_γ² + specular)
 // so the specular intensity is computed in linear (roughness, the lobe, n·l and the light are
-// linear quantities) and converted with a square root before it is added to the gamma-space
-// diffuse. For a Fresnel-free lobe (lut) f_s(f0) = S·f0 and this is the talk's
-// √(specIntensity_linear) · specColor_γ, written so that it stays right for lobes with Fresnel.
-// The sum is squared back to linear once, in blend_output (output_blending.glsl), because the
-// HDR target and the post pass expect linear values. Errors of the hack, by design: sums of
-// encoded terms square to more than the sum ((a_γ + b_γ)² = a + b + 2√(ab): highlights over lit
-// diffuse come out brighter), interpolation and surface arithmetic act on encoded values, and
+// linear quantities) and added to the gamma-space sum in linear (add_light): the same √ per light
+// as encoding the term alone, √(specular), which the talk's form √(specIntensity_linear) ·
+// specColor_γ amounts to, plus one multiply-add, and without its cross term (a_γ + b_γ)² = a + b
+// + 2√(ab), which made a lobe's faint tail over lit diffuse 2√(d s) bright (measured in
+// docs/specular-tiers.md). The sum is squared back to linear once, in blend_output
+// (output_blending.glsl), because the HDR target and the post pass expect linear values. Errors
+// of the hack, by design: interpolation and surface arithmetic act on encoded values, and
 // sRGB-encoded inputs are decoded with γ = 2 instead of the sRGB curve.
 
 vec3 material_diffuse_color(MaterialInputs material) {
@@ -85,17 +85,16 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
     // clamped to 65504. That clamp is the RGBA16F target's limit, so it applies in every tier
     // (saturateMediump is an identity in the highp `reference`).
     vec3 irradiance = lightColor * NoL;
-#if defined(FACET_GAMMA_HACK)
-    vec3 specularGamma = sqrt(specular * irradiance);
+    // Linear in every colour space: with FACET_GAMMA_HACK the caller adds it to the encoded sum
+    // with add_light (shading_ambient.glsl), √(c_γ² + x), as the ambient specular.
 #if defined(FACET_VERTEX_DIFFUSE)
-    return specularGamma;
-#else
-    return material_diffuse_color(material) * sqrt(lightColor * (NoL * diffuse_lambert())) + specularGamma;
-#endif
-#elif defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
     return min(specular * irradiance, MEDIUMP_FLT_MAX);
 #else
-    return min((material_diffuse_color(material) * diffuse_lambert() + specular) * irradiance, MEDIUMP_FLT_MAX);
+    vec3 diffuseColor = material_diffuse_color(material);
+#if defined(FACET_GAMMA_HACK)
+    diffuseColor *= diffuseColor;  // encoded with γ = 2: back to linear
+#endif
+    return min((diffuseColor * diffuse_lambert() + specular) * irradiance, MEDIUMP_FLT_MAX);
 #endif
 }

@@ -1,9 +1,13 @@
 // Specular intensity from a 2D table (the `lut` tier, for GPUs with a low ALU:TEX ratio):
 //   spec ≈ S(R·L, r) = D_GGX(α, n·h') / 4,  n·h'² = (1 + R·L)/2,  R = reflect(−v, n)
 // with the implicit geometric term (V = 1/4) and no Fresnel: the caller multiplies by f0 (and
-// by n·l, E_light). The table (compiler/specular_lut.h, generateSpecularLut) stores S · π/16 in
-// R8 UNORM, 128 × 64: u = max(R·L, 0)⁴ across, perceptual roughness down, texel (i, j) holding
-// u_i = i/127, r_j = j/63; this function inverts that mapping.
+// by n·l, E_light). The table (compiler/specular_lut.h, generateSpecularLut) stores √(S · π/16),
+// saturated, in R8 UNORM, 128 × 64: u = max(R·L, 0)⁴ across, perceptual roughness down, texel
+// (i, j) holding u_i = i/127, r_j = j/63; this function inverts that mapping and decodes with a
+// square (one multiply): the √ puts the 8-bit steps in the lobe's tail, where the linear table's
+// steps showed as rings (docs/specular-tiers.md, "The low tier's table"). Bilinear filtering acts
+// on the encoded values: between two texels the decoded value is the square of their lerp, a
+// little below the lerp of the squares (by f(1−f)(√a − √b)², under a step of the table).
 // Source: R. Zioma, "Optimizing PBR", SIGGRAPH 2015 (LUT specular for the low tier: store
 // intensity / 16, index by R·L as suggested by B. Karis, "Physically Based Shading on Mobile",
 // 2014, warp the cosine axis with a power of 4 to give the highlight more texels). Measured in
@@ -24,5 +28,6 @@ float specular_lut(mediump sampler2D lut, float RoL, float perceptualRoughness) 
     vec2 t = vec2(c2 * c2, perceptualRoughness);
     // t ∈ [0, 1]² onto the texel centres: t (n − 1)/n + 0.5/n, so t = 1 samples the last texel.
     vec2 uv = t * ((SPECULAR_LUT_SIZE - 1.0) / SPECULAR_LUT_SIZE) + 0.5 / SPECULAR_LUT_SIZE;
-    return textureLod(lut, uv, 0.0).r * SPECULAR_LUT_SCALE;
+    float encoded = textureLod(lut, uv, 0.0).r;
+    return encoded * encoded * SPECULAR_LUT_SCALE;
 }

@@ -4,7 +4,7 @@
 //   R   = reflect(−v, n) = 2 (n·v) n − v
 //   f_s = S(R·L, r) · f0,   S(c, r) = D_GGX(α, n·h')/4 with n·h'² = (1 + c)/2   (specular_lut.glsl)
 // The table is indexed by u = clamp(R·L, 0, 1)⁴ (the warped cosine) and the perceptual roughness r,
-// and decoded as texel · 16/π (SPECULAR_LUT_SCALE; measured against ×16 in docs/specular-tiers.md).
+// and decoded as texel² · 16/π (√ encoding, SPECULAR_LUT_SCALE; measured in docs/specular-tiers.md).
 // No Fresnel and an implicit geometric term (V = 1/4): f0 multiplies the intensity as it is, the
 // cheap form of the talk. No half vector is needed (R·L instead of n·h), so the h, n·h and l·h the
 // caller computes for other lobes are dead code here and the optimiser drops them. No division.

@@ -16,7 +16,7 @@
 #endif
 // The assembler places each chunk once, at its first #include, whatever the #if around it: a
 // chunk shared by several ambient models is included outside the conditionals.
-#include "equirect.glsl"
+#include "octahedral.glsl"
 #if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC)
 #include "ibl_prefiltered.glsl"
 #endif
@@ -60,20 +60,20 @@ void main() {
     vec3 color = shade_standard_ambient(material, sh_irradiance_over_pi(shading_normal));
 #endif
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
-    color = add_ambient_specular(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
+    color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
 #if defined(FACET_DIRECTIONAL_LIGHT)
     vec3 l = normalize(frame.lightDirection.xyz);
-    color += shade_standard_direct(material, shading_normal, shading_view, l, frame.lightColor.rgb);
+    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view, l, frame.lightColor.rgb));
 #endif
 #if FACET_POINT_LIGHTS > 0
-    color += shade_punctual(material, frame.punctualLights[0]);
+    color = add_light(color, shade_punctual(material, frame.punctualLights[0]));
 #endif
 #if FACET_POINT_LIGHTS > 1
-    color += shade_punctual(material, frame.punctualLights[1]);
+    color = add_light(color, shade_punctual(material, frame.punctualLights[1]));
 #endif
 #if FACET_POINT_LIGHTS > 2
-    color += shade_punctual(material, frame.punctualLights[2]);
-    color += shade_punctual(material, frame.punctualLights[3]);
+    color = add_light(color, shade_punctual(material, frame.punctualLights[2]));
+    color = add_light(color, shade_punctual(material, frame.punctualLights[3]));
 #endif
     fragColor = blend_output(color + material.emissive, material.alpha);
 }

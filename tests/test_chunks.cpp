@@ -205,10 +205,11 @@ TEST(Chunks, SpecularZiomaNxhMatchesReference) {
              reference::kZiomaFacet, false);
 }
 
-// The LUT chunk on the GPU against the same table sampled bilinearly in double on the CPU.
-// Tolerance 2 LSB of the table (2/255 · scale): the GPU quantises the bilinear weights
-// (lavapipe: 8 sub-texel bits), which can move a sample by up to 1/256 of the difference between
-// neighbouring texels per axis — up to ~1 LSB each on the steep flank of a smooth lobe.
+// The LUT chunk on the GPU against the same table sampled bilinearly in double on the CPU, the
+// filtered (√-encoded) value squared. Tolerance 2 LSB of the encoded table, decoded: the GPU
+// quantises the bilinear weights (lavapipe: 8 sub-texel bits), which can move a sample by up to
+// 1/256 of the difference between neighbouring texels per axis — up to ~1 LSB each on the steep
+// flank of a smooth lobe.
 TEST(Chunks, SpecularLutMatchesTableSampling) {
   compiler::SpecularLut table = compiler::generateSpecularLut();
   test::GpuR8Texture texture{table.width, table.height, table.texels};
@@ -224,14 +225,16 @@ TEST(Chunks, SpecularLutMatchesTableSampling) {
       req.in1.push_back({});
     }
   for (double rol : {0.999, 0.9999, 1.0}) req.in0.push_back(glm::vec4(float(rol), 0.089f, 0, 0)), req.in1.push_back({});
-  const double lsb = table.scale / 255.0;
+  ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::kSqrt);
   checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
     double rol = std::clamp(double(req.in0[i].x), 0.0, 1.0), r = req.in0[i].y;
     double u = std::pow(rol, 4.0);
-    double ref = table.scale * reference::sampleR8Bilinear(table.texels, table.width, table.height,
-                                                           reference::lutTexelCoordinate(u, table.width),
-                                                           reference::lutTexelCoordinate(r, table.height));
-    expectClose(result.x, ref, 0.0, 2.0 * lsb, "RoL=" + std::to_string(req.in0[i].x) + " r=" + std::to_string(r));
+    double encoded = reference::sampleR8Bilinear(table.texels, table.width, table.height,
+                                                 reference::lutTexelCoordinate(u, table.width),
+                                                 reference::lutTexelCoordinate(r, table.height));
+    double ref = table.scale * encoded * encoded;
+    double tolerance = table.scale * ((encoded + 2.0 / 255.0) * (encoded + 2.0 / 255.0) - encoded * encoded);
+    expectClose(result.x, ref, 0.0, tolerance, "RoL=" + std::to_string(req.in0[i].x) + " r=" + std::to_string(r));
   });
 }
 
@@ -242,6 +245,7 @@ TEST(SpecularLut, ChunkConstantsMatchGenerator) {
             std::string::npos);
   EXPECT_NE(text.find("SPECULAR_LUT_SCALE = 5.0929582;"), std::string::npos);
   EXPECT_NEAR(compiler::kSpecularLutScale, 5.0929582, 1e-7);
+  EXPECT_NE(text.find("return encoded * encoded * SPECULAR_LUT_SCALE;"), std::string::npos);
   compiler::SpecularLut table = compiler::generateSpecularLut();
   EXPECT_EQ(table.width, compiler::kSpecularLutWidth);
   EXPECT_EQ(table.height, compiler::kSpecularLutHeight);
@@ -252,45 +256,48 @@ TEST(SpecularLut, GenerationIsDeterministic) {
   EXPECT_EQ(compiler::generateSpecularLut().texels, compiler::generateSpecularLut().texels);
 }
 
-// What the table stores against the GGX function it is built from (S = D/4 with n·h'² = (1 + R·L)/2):
-// - at texel centres the only error is 8-bit rounding: ≤ 0.5 LSB of min(S, scale);
-// - between texels, sampled exactly as the chunk does, for r ≥ 0.3 (lobes wider than a few
-//   texels) the bilinear error stays ≤ 10 LSB of the 255 (measured 9.0, the steepest flank of
-//   the r = 0.3 lobe, where bilinear interpolation across roughness rows meets a lobe whose
-//   width changes fast with r); for every r the peak R·L = 1 is exact to 0.5 LSB between
-//   roughness rows (the last column is the peak, by the mapping).
+// What the table stores against the GGX function it is built from (S = D/4 with n·h'² = (1 + R·L)/2),
+// in the encoded domain e = √min(S/scale, 1) (the √ encoding):
+// - at texel centres the only error is 8-bit rounding: ≤ 0.5 LSB of e;
+// - between texels, sampled exactly as the chunk does (lerp of e, then squared), for r ≥ 0.3
+//   (lobes wider than a few texels) the bilinear error stays ≤ 6 LSB of e (measured 4.79, at
+//   r = 0.34, R·L = 0.998: the lobe's steep flank under the ceiling, interpolated across roughness
+//   rows; the linear table measured 9.0 of its own LSB); for every r the peak R·L = 1 is exact to 0.5 LSB
+//   of e between roughness rows (the last column is the peak, by the mapping).
 TEST(SpecularLut, TableMatchesGgxWithinStatedError) {
   compiler::SpecularLut table = compiler::generateSpecularLut();
-  const double lsb = table.scale / 255.0;
-  auto S = [&](double rol, double r) {
-    return std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, rol, r), table.scale);
+  ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::kSqrt);
+  const double lsb = 1.0 / 255.0;
+  auto e = [&](double rol, double r) {
+    return std::sqrt(std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, rol, r) / table.scale, 1.0));
   };
   for (uint32_t j = 0; j < table.height; ++j)
     for (uint32_t i = 0; i < table.width; ++i) {
       double u = double(i) / (table.width - 1), r = double(j) / (table.height - 1);
       double stored = table.texels[j * table.width + i] * lsb;
-      ASSERT_LE(std::abs(stored - S(std::pow(u, 0.25), r)), 0.5 * lsb + 1e-12) << "texel " << i << "," << j;
+      ASSERT_LE(std::abs(stored - e(std::pow(u, 0.25), r)), 0.5 * lsb + 1e-12) << "texel " << i << "," << j;
     }
   double worst = 0.0, atR = 0, atRoL = 0;
   for (int j = 0; j <= 200; ++j) {
     double r = 0.3 + 0.7 * j / 200.0;
     for (int i = 0; i <= 1000; ++i) {
       double rol = i / 1000.0;
-      double sampled = table.scale * reference::sampleR8Bilinear(table.texels, table.width, table.height,
-                                                                 reference::lutTexelCoordinate(std::pow(rol, 4.0), table.width),
-                                                                 reference::lutTexelCoordinate(r, table.height));
-      double e = std::abs(sampled - S(rol, r)) / lsb;
-      if (e > worst) worst = e, atR = r, atRoL = rol;
+      double sampled = reference::sampleR8Bilinear(table.texels, table.width, table.height,
+                                                   reference::lutTexelCoordinate(std::pow(rol, 4.0), table.width),
+                                                   reference::lutTexelCoordinate(r, table.height));
+      double err = std::abs(sampled - e(rol, r)) / lsb;
+      if (err > worst) worst = err, atR = r, atRoL = rol;
     }
   }
-  EXPECT_LE(worst, 10.0) << "at r=" << atR << " RoL=" << atRoL;
+  std::printf("√-encoded table: worst bilinear error %.2f LSB of e at r=%.3f RoL=%.3f\n", worst, atR, atRoL);
+  EXPECT_LE(worst, 6.0) << "at r=" << atR << " RoL=" << atRoL;
   for (int j = 0; j <= 20; ++j) {
     double r = 0.089 + (1.0 - 0.089) * j / 20.0;
-    double peak = table.scale * reference::sampleR8Bilinear(table.texels, table.width, table.height, reference::lutTexelCoordinate(1.0, table.width),
-                                                            reference::lutTexelCoordinate(r, table.height));
-    // Rows are at r_j = j/63; between rows the peak is a lerp of two exact peaks, so compare with that.
+    double peak = reference::sampleR8Bilinear(table.texels, table.width, table.height, reference::lutTexelCoordinate(1.0, table.width),
+                                              reference::lutTexelCoordinate(r, table.height));
+    // Rows are at r_j = j/63; between rows the peak is a lerp of two exact (encoded) peaks.
     double x = r * (table.height - 1), j0 = std::floor(x), f = x - j0;
-    double expected = S(1.0, j0 / (table.height - 1)) * (1 - f) + S(1.0, std::min(j0 + 1, table.height - 1.0) / (table.height - 1)) * f;
+    double expected = e(1.0, j0 / (table.height - 1)) * (1 - f) + e(1.0, std::min(j0 + 1, table.height - 1.0) / (table.height - 1)) * f;
     EXPECT_NEAR(peak, expected, 0.5 * lsb + 1e-9) << "r=" << r;
   }
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/env_brdf_fits.h"
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/sphere_quadrature.h"
@@ -387,4 +388,146 @@ TEST(Prefilter, RejectsSourcesThatDoNotHalveEvenly) {
   EXPECT_THROW(prefilterEnvironment(EquirectImage(48, 24), options), std::invalid_argument);  // 24 % 16 ≠ 0
   options.levels = 0;
   EXPECT_THROW(prefilterEnvironment(EquirectImage(64, 32), options), std::invalid_argument);
+}
+
+// --- octahedral environment map (what the runtime uploads) ---
+
+namespace {
+
+// Directions over the whole sphere: a Fibonacci set plus the axes and the folds' edges.
+std::vector<Vec3> testDirections() {
+  std::vector<Vec3> out = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+                           {1, -1e-9, 1}, {-1, -1e-9, 1}, {0.3, -0.2, -0.7}};
+  const int n = 500;
+  for (int i = 0; i < n; ++i) {
+    double y = 1 - 2 * (i + 0.5) / n, rho = std::sqrt(1 - y * y), phi = i * 2.399963229728653;
+    out.push_back({rho * std::cos(phi), y, rho * std::sin(phi)});
+  }
+  for (Vec3& d : out) d = normalize(d);
+  return out;
+}
+
+const std::vector<OctahedralImage>& prefilteredSunSkyOctahedral() {
+  static const std::vector<OctahedralImage> levels =
+      prefilterEnvironmentOctahedral(renderEquirect(128, 64, sunSkyRadiance), 128);
+  return levels;
+}
+
+}  // namespace
+
+TEST(Octahedral, CoordinatesInvertTheDirectionMapping) {
+  for (Vec3 d : testDirections()) {
+    double u, v;
+    octahedralCoordinates(d, &u, &v);
+    EXPECT_GE(u, 0.0);
+    EXPECT_LE(u, 1.0);
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 1.0);
+    expectNearVec3(octahedralDirection(u, v), d, 1e-12);
+  }
+  expectNearVec3(octahedralDirection(0.5, 0.5), {0, 1, 0}, 1e-15);
+  for (double u : {0.0, 1.0})
+    for (double v : {0.0, 1.0}) expectNearVec3(octahedralDirection(u, v), {0, -1, 0}, 1e-15);
+}
+
+// Each edge point is the direction of its mirror across the edge's midpoint, so the outer texel
+// ring (which holds edge directions) pairs texel i with texel size − 1 − i on every edge.
+TEST(Octahedral, OuterRingTexelsHoldTheSameDirectionAsTheirMirrors) {
+  for (int size : {8, 128}) {
+    for (int i = 0; i < size; ++i) {
+      const int j = size - 1 - i;
+      expectNearVec3(octahedralTexelDirection(size, i, 0), octahedralTexelDirection(size, j, 0), 1e-12);
+      expectNearVec3(octahedralTexelDirection(size, i, size - 1), octahedralTexelDirection(size, j, size - 1), 1e-12);
+      expectNearVec3(octahedralTexelDirection(size, 0, i), octahedralTexelDirection(size, 0, j), 1e-12);
+      expectNearVec3(octahedralTexelDirection(size, size - 1, i), octahedralTexelDirection(size, size - 1, j), 1e-12);
+    }
+    // An inner texel holds its centre's direction.
+    double c = (size / 2 + 0.5) / size;
+    expectNearVec3(octahedralTexelDirection(size, size / 2, 1), octahedralDirection(c, 1.5 / size), 1e-15);
+  }
+}
+
+// Clamp-to-edge bilinear reconstruction of a smooth function is continuous across the folds: two
+// points a hair either side of an edge (mirror images in the map, one direction on the sphere)
+// read the same value, and the map follows the function within its texel size everywhere.
+TEST(Octahedral, BilinearSamplingHasNoSeamAtTheFolds) {
+  auto f = [](Vec3 d) { return Vec3{1.0 + d.x, 2.0 + d.z, 1.5 + d.y + 0.5 * d.x * d.z}; };
+  const int size = 32;
+  OctahedralImage image(size);
+  for (int row = 0; row < size; ++row)
+    for (int column = 0; column < size; ++column) image.setTexel(column, row, f(octahedralTexelDirection(size, column, row)));
+  double worstSeam = 0;
+  for (int i = 0; i <= 100; ++i) {
+    double a = i / 100.0, e = 1e-9;
+    worstSeam = std::max({worstSeam, maxComponent(sampleBilinear(image, a, e) - sampleBilinear(image, 1 - a, e)),
+                          maxComponent(sampleBilinear(image, a, 1 - e) - sampleBilinear(image, 1 - a, 1 - e)),
+                          maxComponent(sampleBilinear(image, e, a) - sampleBilinear(image, e, 1 - a)),
+                          maxComponent(sampleBilinear(image, 1 - e, a) - sampleBilinear(image, 1 - e, 1 - a))});
+  }
+  EXPECT_LT(worstSeam, 1e-6);
+  double worst = 0;
+  for (Vec3 d : testDirections()) {
+    double u, v;
+    octahedralCoordinates(d, &u, &v);
+    worst = std::max(worst, maxComponent(sampleBilinear(image, u, v) - f(d)));
+  }
+  std::printf("octahedral %d²: seam %.2g, worst |bilinear − f| %.4f\n", size, worstSeam, worst);
+  EXPECT_LT(worst, 0.1);  // |∇f| ≤ ~1.5 per radian, texels ~0.1 rad at 32²
+}
+
+TEST(Octahedral, PrefilteredLevelsHalveAndKeepAConstantEnvironment) {
+  const auto& levels = prefilteredSunSkyOctahedral();
+  ASSERT_EQ(levels.size(), 5u);
+  for (int m = 0; m < 5; ++m) EXPECT_EQ(levels[size_t(m)].size, 128 >> m);
+  Vec3 L{0.5, 2.0, 7.0};
+  for (const OctahedralImage& level : prefilterEnvironmentOctahedral(renderEquirect(64, 32, [&](Vec3) { return L; }), 32))
+    for (int row = 0; row < level.size; ++row)
+      for (int column = 0; column < level.size; ++column) {
+        Vec3 v = level.texel(column, row);
+        EXPECT_NEAR(v.x / L.x, 1.0, 1e-5);
+        EXPECT_NEAR(v.z / L.z, 1.0, 1e-5);
+      }
+  EXPECT_THROW(prefilterEnvironmentOctahedral(renderEquirect(64, 32, [&](Vec3) { return L; }), 24), std::invalid_argument);
+  EXPECT_THROW(prefilterEnvironmentOctahedral(renderEquirect(64, 32, [&](Vec3) { return L; }), 16), std::invalid_argument);
+}
+
+// The same checks as the equirect levels (Prefilter.*): level 0 is the source (read bilinearly
+// at each texel's direction), the rough levels are the GGX lobe integral of the radiance
+// function, 2 % (the prefilter's bound, docs/ibl.md).
+TEST(Octahedral, PrefilteredLevelsMatchTheSourceAndTheLobeIntegral) {
+  const auto& levels = prefilteredSunSkyOctahedral();
+  const EquirectImage source = renderEquirect(128, 64, sunSkyRadiance);
+  const OctahedralImage& level0 = levels[0];
+  for (int row = 0; row < level0.size; row += 3)
+    for (int column = 0; column < level0.size; column += 3) {
+      double s, t;
+      equirectCoordinates(octahedralTexelDirection(level0.size, column, row), &s, &t);
+      Vec3 want = sampleBilinear(source, s, t), got = level0.texel(column, row);
+      EXPECT_NEAR(got.x, want.x, 1e-5 * want.x);
+    }
+  Vec3 away = normalize(kSunAxis + Vec3{0.0, -1.2, 0.0});
+  for (int m : {2, 4}) {
+    const OctahedralImage& level = levels[size_t(m)];
+    double r = prefilterLevelRoughness(m, 5);
+    for (Vec3 target : {kSunAxis, away, kSunAxis * -1.0}) {
+      double u, v;
+      octahedralCoordinates(target, &u, &v);
+      int column = std::min(int(u * level.size), level.size - 1), row = std::min(int(v * level.size), level.size - 1);
+      Vec3 want = toVec3(ref::ggxLobeAverageByGrid([](glm::dvec3 d) { return toGlm(sunSkyRadiance(toVec3(d))); },
+                                                    toGlm(octahedralTexelDirection(level.size, column, row)), r * r));
+      Vec3 got = level.texel(column, row);
+      std::printf("octahedral level %d texel (%d, %d): prefiltered %.4f, lobe integral %.4f\n", m, column, row, got.x,
+                  want.x);
+      EXPECT_NEAR(got.x / want.x, 1.0, 0.02) << "level " << m;
+      EXPECT_NEAR(got.z / want.z, 1.0, 0.02) << "level " << m;
+    }
+  }
+}
+
+// The table the runtime links (computed at build time by ibl/tools/write_dfg_table.cpp) is the
+// generator's output bit for bit: hexadecimal float literals round-trip exactly.
+TEST(Dfg, EmbeddedTableIsTheGeneratedOne) {
+  const DfgLut& embedded = embeddedDfgLut();
+  EXPECT_EQ(embedded.size, kDfgLutSize);
+  EXPECT_EQ(embedded.texels, shippedLut().texels);
 }

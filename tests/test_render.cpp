@@ -106,13 +106,15 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
   int checked = 0;
   double worst = 0;
   facet::test::forEachSpherePixel(scene, 8, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
-    glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient);
     // The constant sky's image-based specular: the environment is `ambient` in every direction and
     // at every level (exact), so the split-sum term is ambient · (f0·A + B) of the DFG table as
-    // the shader reads it (high tier: no energy compensation).
+    // the shader reads it. The high tier's energy compensation 1 + f0 (1/dfg.y − 1), from the
+    // same texel, scales it and the direct specular.
     const double f0 = 0.16 * surface.reflectance * surface.reflectance;
     auto [b, albedo] = facet::test::dfgBilinear(glm::dot(n, v), std::clamp(surface.roughness, 0.089, 1.0));
-    expected += ambient * (f0 * albedo + (1 - f0) * b);
+    const double compensation = 1 + f0 * (1 / albedo - 1);
+    glm::dvec3 expected = facet::reference::shadeStandard(surface, n, v, l, light, ambient, glm::dvec3(compensation));
+    expected += ambient * (f0 * albedo + (1 - f0) * b) * compensation;
     const float* got = &vulkan_->hdr[(size_t(y) * scene.width + x) * 4];
     for (int ch = 0; ch < 3; ++ch) {
       double error_ = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
@@ -397,7 +399,7 @@ TEST(LowTier, ColourParametersStayAsAuthoredForTheGammaHack) {
 
 // The low tier's brushed_gold (a metal: no diffuse; the sky is switched off, so no ambient) against the documented formula in
 // double: HDR = S · f0_γ² · E · n·l with S the table sampled bilinearly at u = max(R·L, 0)⁴,
-// v = roughness, decoded ×16/π, and f0_γ the authored (sRGB) tint; the gamma hack's √ and the
+// v = roughness, decoded as its square × 16/π (√ encoding), and f0_γ the authored (sRGB) tint; the gamma hack's √ and the
 // final square cancel for a term with nothing added to it. The tessellated sphere's normals differ
 // from the analytic one's and the table is steep in the highlight, so each point accepts the
 // range the formula takes for R·L within ±0.01 of the analytic value, widened by one table step
@@ -433,14 +435,15 @@ TEST(LowTier, MetalPixelsMatchTheLutFormula) {
   const double scale = 16.0 / facet::reference::kPi;
   // lavapipe (like llvmpipe) filters 8-bit UNORM textures in 8-bit arithmetic: each sample comes
   // back as a whole number of table steps (measured: within 3e-4 of one), the bilinear value
-  // rounded. So one step of slack.
-  const double lsb = scale / 255.0;
-  auto intensity = [&](double RoL) {
+  // rounded. So one step of slack, in the encoded domain (before the square).
+  const double lsb = 1.0 / 255.0;
+  auto encoded = [&](double RoL) {
     double c = std::clamp(RoL, 0.0, 1.0);
     double u = facet::reference::lutTexelCoordinate(c * c * c * c, table.width);
     double v = facet::reference::lutTexelCoordinate(roughness, table.height);
-    return facet::reference::sampleR8Bilinear(table.texels, table.width, table.height, u, v) * scale;
+    return facet::reference::sampleR8Bilinear(table.texels, table.width, table.height, u, v);
   };
+  auto decode = [&](double e) { return std::max(e, 0.0) * std::max(e, 0.0) * scale; };
 
   const auto& cam = scene->camera;
   glm::dmat4 inverse = glm::inverse(glm::perspective(glm::radians(cam.fovYDegrees), double(scene->width) / scene->height,
@@ -467,18 +470,18 @@ TEST(LowTier, MetalPixelsMatchTheLutFormula) {
       double RoL = glm::dot(glm::reflect(-v, n), l);
       double lo = 1e30, hi = 0;
       for (int k = -4; k <= 4; ++k) {
-        double s = intensity(RoL + 0.0025 * k);
+        double s = encoded(RoL + 0.0025 * k);
         lo = std::min(lo, s);
         hi = std::max(hi, s);
       }
       const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
       for (int ch = 0; ch < 3; ++ch) {
         double k = f0Gamma[ch] * f0Gamma[ch] * light[ch] * NoL;
-        EXPECT_GE(got[ch], (lo - lsb) * k * 0.99 - 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
-        EXPECT_LE(got[ch], (hi + lsb) * k * 1.01 + 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
+        EXPECT_GE(got[ch], decode(lo - lsb) * k * 0.99 - 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
+        EXPECT_LE(got[ch], decode(hi + lsb) * k * 1.01 + 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
       }
       ++checked;
-      lit += lo * NoL > 0.5;
+      lit += decode(lo) * NoL > 0.5;
     }
   }
   EXPECT_GT(checked, 500);

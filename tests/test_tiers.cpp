@@ -46,16 +46,19 @@ using facet::test::psnr;
 TEST(Tiers, ZiomaSpecularHasOneDivision) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
-  // The whole mid fragment stage: Zioma's fused term is its only division (per-vertex diffuse
-  // and the precision clamps add none). The GGX/Smith tiers divide twice (D and V).
-  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).divisions, 1u);
-  EXPECT_EQ(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).divisions, 2u);
+  // The whole mid fragment stage: Zioma's fused term is its only division besides the octahedral
+  // environment lookup's 1/L1 norm that every tier has (per-vertex diffuse and the precision
+  // clamps add none). The GGX/Smith tiers divide twice (D and V), and high a third time for its
+  // energy compensation (1/dfg.y).
+  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).divisions, 2u);
+  EXPECT_EQ(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).divisions, 4u);
   EXPECT_LT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).aluOps,
             costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).aluOps);
 }
 
 // The low tier's specular is one table read: no D, V or F is evaluated, so the whole fragment
-// stage has no division (mid has Zioma's one), one texture sample more than mid's (beyond the
+// stage has one division, the octahedral lookup's 1/L1 norm (mid has Zioma's besides), one
+// texture sample more than mid's (beyond the
 // ambient models' difference), and fewer ALU ops than mid. Without the light
 // there is no specular, and the table is neither sampled nor listed for the variant.
 TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
@@ -65,8 +68,8 @@ TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
     ASSERT_TRUE(built);
     auto low = costOf(spirvOf(*built, "low.dir1", Stage::Fragment));
     auto mid = costOf(spirvOf(*built, "mid.dir1", Stage::Fragment));
-    EXPECT_EQ(low.divisions, 0u);
-    EXPECT_EQ(mid.divisions, 1u);
+    EXPECT_EQ(low.divisions, 1u);
+    EXPECT_EQ(mid.divisions, 2u);
     // The table, plus the second environment read of low's two-mip ambient (mid reads it once).
     EXPECT_EQ(low.textureSamples, mid.textureSamples + 2);
     EXPECT_LT(low.aluOps, mid.aluOps);
@@ -102,7 +105,7 @@ TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
   // Lambert's 1/π (0.318309873 as a float constant) is where the sun's diffuse light is
-  // evaluated; the fragment stages also use it for the environment's equirect mapping, so only
+  // evaluated; the fragment stages may use it elsewhere (the equirect lookup did), so only
   // the vertex stages tell. SH irradiance: all nine coefficients read where diffuse is lit, in
   // the fragment stage for pixel diffuse, in the vertex stage for vertex diffuse (SH3 on mid,
   // SH2's four on low), never in both.
@@ -124,8 +127,9 @@ TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
 // The ambient models' texture reads (red_plastic samples no texture of its own): split-sum reads
 // the environment and the DFG table, the analytic model only the environment (Karis's fit
 // replaces the table: a few more ALU ops, one exp2), the two-mip model the environment twice at
-// constant lods; low's dir1 adds its specular LUT. The energy compensation of the reference tier
-// costs one division (1/dfg.y) over high's two of D and V.
+// constant lods; low's dir1 adds its specular LUT. The energy compensation of the reference and
+// high tiers costs one division (1/dfg.y), in the ambient term; the octahedral environment
+// lookup is the other of dir0 (its 1/L1 norm), in every tier.
 TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
@@ -136,8 +140,9 @@ TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
     EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).textureSamples, expected) << key;
   for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
     EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Vertex)).textureSamples, 0u) << key;
-  EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).divisions, 3u);
-  EXPECT_EQ(costOf(spirvOf(*built, "high.dir0", Stage::Fragment)).divisions, 0u);
+  EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).divisions, 4u);
+  EXPECT_EQ(costOf(spirvOf(*built, "high.dir0", Stage::Fragment)).divisions, 2u);
+  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).divisions, 1u);
   // Karis's fit: one exp2 more than split-sum's table read, nothing else transcendental added.
   const auto mid = costOf(spirvOf(*built, "mid.dir0", Stage::Fragment));
   const auto high = costOf(spirvOf(*built, "high.dir0", Stage::Fragment));
@@ -156,9 +161,9 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
   EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).relaxedOps, 0u);
   EXPECT_GT(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   EXPECT_GT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
-  // low's fragment stage is the smallest, so the equirect lookup kept highp on purpose (atan,
-  // acos and their scaling: chunks/equirect.glsl) weighs most there: measured 80.9 %.
-  EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 78.0);
+  // low's fragment stage is the smallest, so what stays highp (the view vector from positions)
+  // weighs most there. Since the environment lookup went octahedral it is mediump too.
+  EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 80.0);
 }
 
 // How many values of `a` fall outside the range of `b` over the 3×3 pixels around them, widened
@@ -168,9 +173,11 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
 // where lavapipe runs RelaxedPrecision SPIR-V in fp32, so the R·L index differs by up to about a
 // texel and pixels on a step's boundary land on either side. (Measured: with every `mediump`
 // replaced by `highp` in the GL shaders, GL matches Vulkan within 2 steps.) The slack covers the
-// fp16 error inside the steepest part of the highlight (at most 3 steps seen). A step boundary
-// moves by well under a pixel; a wrong table, decode or binding changes whole regions.
-constexpr int kNeighbourhoodSlack = 4;
+// fp16 error inside the steepest part of the highlight (at most 3 steps seen), and one step more
+// at a tile edge of tiles.json since the low tier adds each light in linear (add_light: the edge
+// value 186 against GL's neighbourhood maximum 181). A step boundary moves by well under a
+// pixel; a wrong table, decode or binding changes whole regions.
+constexpr int kNeighbourhoodSlack = 5;
 int valuesOutsideNeighbourhood(const facet::runtime::FrameResult& a, const facet::runtime::FrameResult& b) {
   int outside = 0;
   const int w = int(a.width), h = int(a.height);
@@ -244,9 +251,10 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     double db = psnr(images[tier].ldr, images["reference"].ldr);
     std::printf("tier %-5s vs reference: %.1f dB (8-bit PSNR, spheres.json)\n", tier, db);
     // Measured with image-based ambient (a constant sky: every tier's environment is exact, so
-    // the difference is the environment BRDF and, for reference, energy compensation): high 53.1,
-    // mid 36.7 (Karis's fit), low 29.0 (two-mip lerp, Zioma's fit, the gamma hack).
-    EXPECT_GT(db, std::string(tier) == "high" ? 45.0 : std::string(tier) == "mid" ? 32.0 : 26.0) << tier;
+    // the difference is the environment BRDF): high 99.0 (identical: mediump runs at fp32 here,
+    // and high has the reference's energy compensation), mid 36.7 (Karis's fit), low 33.2
+    // (two-mip lerp, Zioma's fit, the gamma hack with lights added in linear; 29.0 before).
+    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : std::string(tier) == "mid" ? 32.0 : 31.0) << tier;
   }
 }
 
@@ -337,4 +345,123 @@ TEST(Tiers, EveryChoiceTheLanguageAcceptsIsImplemented) {
       EXPECT_TRUE(facet::permutations::applyOverride(&config, axis, option)) << axis << " = " << option;
     }
   }
+}
+
+namespace {
+
+// examples/scenes/roughness_grid.json: 3 rows (white dielectric, gold metal, black dielectric)
+// × 6 columns (roughness 0, 0.2, …, 1) of unit spheres 2.4 apart on the plane z = 0, framed so
+// that the image is exactly 6 × 3 cells of 120 × 120 pixels, one sphere centred in each (the
+// camera looks down −z at the grid's centre, so the projection of the plane is a uniform scale).
+constexpr int kGridColumns = 6;
+constexpr int kGridRows = 3;
+
+std::vector<uint8_t> gridCell(const facet::runtime::FrameResult& image, int row, int column) {
+  const uint32_t cellW = image.width / kGridColumns, cellH = image.height / kGridRows;
+  std::vector<uint8_t> cell;
+  for (uint32_t y = uint32_t(row) * cellH; y < uint32_t(row + 1) * cellH; ++y) {
+    const uint8_t* begin = image.ldr.data() + (size_t(y) * image.width + size_t(column) * cellW) * 4;
+    cell.insert(cell.end(), begin, begin + size_t(cellW) * 4);
+  }
+  return cell;
+}
+
+}  // namespace
+
+// The issue's evaluation grid: spheres across roughness 0…1 × (white dielectric, gold metal,
+// black dielectric) under a 110 000 lux sun and an analytic sky, every tier against `reference`
+// on Vulkan. Prints the whole-image PSNR per tier and the per-sphere table (docs/specular-tiers.md
+// quotes both). Rough gold is where single-scattering GGX loses most energy (up to 68 % for a
+// white metal at r = 1): `high` must apply the same multiple-scattering compensation as
+// `reference` (docs/specular-tiers.md, "Multi-scatter energy compensation in high").
+TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy) {
+  std::string packages = facet::test::writeExamplePackages("tier-grid-packages");
+  std::string error;
+  auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/roughness_grid.json"), &error);
+  ASSERT_TRUE(scene) << error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  std::map<std::string, facet::runtime::FrameResult> images;
+  for (const char* tier : {"reference", "high", "mid", "low"}) {
+    SCOPED_TRACE(tier);
+    scene->tier = tier;
+    auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+    ASSERT_TRUE(frame) << error;
+    ASSERT_TRUE(vk->render(frame->frame(), &images[tier], &error)) << error;
+    ASSERT_EQ(images[tier].width % kGridColumns, 0u);
+    ASSERT_EQ(images[tier].height % kGridRows, 0u);
+  }
+  EXPECT_TRUE(vk->validationErrors().empty());
+  const char* rowNames[kGridRows] = {"white", "gold", "black"};
+  std::map<std::string, std::vector<std::vector<double>>> cells;
+  for (const char* tier : {"high", "mid", "low"}) {
+    std::printf("roughness grid, tier %-4s vs reference: %.1f dB (8-bit PSNR, roughness_grid.json)\n", tier,
+                psnr(images[tier].ldr, images["reference"].ldr));
+    auto& table = cells[tier];
+    table.assign(kGridRows, std::vector<double>(kGridColumns));
+    for (int row = 0; row < kGridRows; ++row) {
+      std::printf("  %-4s %-5s r=0..1:", tier, rowNames[row]);
+      for (int column = 0; column < kGridColumns; ++column) {
+        table[row][column] = psnr(gridCell(images[tier], row, column), gridCell(images["reference"], row, column));
+        std::printf(" %5.1f", table[row][column]);
+      }
+      std::printf("\n");
+    }
+  }
+  // Rough gold (r = 0.8 and 1): 23.0 and 17.3 dB without high's compensation, 99 (identical:
+  // lavapipe runs mediump in fp32) with it.
+  EXPECT_GT(cells["high"][1][4], 40.0);
+  EXPECT_GT(cells["high"][1][5], 40.0);
+
+  // The same grid with the mobile tiers' mediump rounded to fp16 (BuildOptions::fp16Emulation,
+  // docs/fp16-emulation.md), against the same reference image: what a GPU with fp16 ALUs shows.
+  facet::compiler::BuildOptions emulated;
+  emulated.fp16Emulation = true;
+  emulated.scene = facet::permutations::SceneNeeds{{{facet::permutations::Tier::High, true, 0},
+                                                    {facet::permutations::Tier::Mid, true, 0},
+                                                    {facet::permutations::Tier::Low, true, 0}}};
+  const std::string emulatedPackages = facet::test::writePackagesFromTexts(
+      "tier-grid-fp16-packages", {facet::test::readText(facet::test::examplePath("materials/red_plastic.mat")),
+                                  facet::test::readText(facet::test::examplePath("materials/brushed_gold.mat"))},
+      emulated);
+  std::map<std::string, double> emulatedDb;
+  for (const char* tier : {"high", "mid", "low"}) {
+    SCOPED_TRACE(tier);
+    scene->tier = tier;
+    auto frame = facet::runtime::SceneFrame::prepare(*scene, emulatedPackages, &error);
+    ASSERT_TRUE(frame) << error;
+    facet::runtime::FrameResult image;
+    ASSERT_TRUE(vk->render(frame->frame(), &image, &error)) << error;
+    emulatedDb[tier] = psnr(image.ldr, images["reference"].ldr);
+    std::printf("roughness grid, tier %-4s fp16-emulated vs reference: %.1f dB (gold r = 1: %.1f dB)\n", tier,
+                emulatedDb[tier], psnr(gridCell(image, 1, 5), gridCell(images["reference"], 1, 5)));
+  }
+  // Measured 65.4 dB: fp16 costs high less than the issue's 50 dB goal allows.
+  EXPECT_GT(emulatedDb["high"], 55.0);
+  EXPECT_TRUE(vk->validationErrors().empty());
+}
+
+// The environment is an octahedral map (chunks/octahedral.glsl): no lit fragment stage of any
+// example material, tier or light set evaluates an inverse trigonometric function, which the
+// equirect lookup did twice per read (highp atan + acos, 0.34 Mali cycles: issue 10).
+TEST(Tiers, NoLitFragmentStageEvaluatesInverseTrigonometry) {
+  facet::compiler::BuildOptions options;
+  options.pointLightCounts = {0, 2};
+  int checked = 0;
+  for (const std::string& path : facet::test::exampleMaterials()) {
+    auto built = facet::test::buildFile(path, options);
+    ASSERT_TRUE(built) << path;
+    for (const auto& v : built->package.variants) {
+      for (const auto& s : v.shaders) {
+        if (s.stage != Stage::Fragment || s.target != facet::package::Target::Spirv) continue;
+        std::vector<uint32_t> words(s.code.size() / 4);
+        std::memcpy(words.data(), s.code.data(), s.code.size());
+        const std::string text = facet::compiler::disassembleSpirv(words);
+        for (const char* op : {" Atan ", " Atan2 ", " Acos ", " Asin "})
+          EXPECT_EQ(text.find(op), std::string::npos) << path << " " << v.key << " uses" << op;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GE(checked, 16);
 }

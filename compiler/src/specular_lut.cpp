@@ -29,6 +29,7 @@ SpecularLut generateSpecularLut(const SpecularLutOptions& options) {
   lut.width = std::max<uint32_t>(options.width, 2);
   lut.height = std::max<uint32_t>(options.height, 2);
   lut.scale = options.scale;
+  lut.encoding = options.encoding;
   lut.texels.resize(size_t{lut.width} * lut.height);
   for (uint32_t j = 0; j < lut.height; ++j) {
     double r = double(j) / double(lut.height - 1);
@@ -36,7 +37,8 @@ SpecularLut generateSpecularLut(const SpecularLutOptions& options) {
       double u = double(i) / double(lut.width - 1);
       double c = options.axis == SpecularLutAxis::kReflectedCosine4 ? std::sqrt(std::sqrt(u)) : u;
       double s = specularLutIntensity(options.axis, c, r) / options.scale;
-      double q = std::round(255.0 * std::clamp(s, 0.0, 1.0));
+      s = std::clamp(s, 0.0, 1.0);
+      double q = std::round(255.0 * (options.encoding == SpecularLutEncoding::kSqrt ? std::sqrt(s) : s));
       lut.texels[size_t{j} * lut.width + i] = static_cast<uint8_t>(q);
     }
   }

@@ -49,30 +49,56 @@ Vec3 sampleTrilinear(const std::vector<EquirectImage>& mips, double s, double t,
   return a * (1.0 - f) + sampleBilinear(mips[size_t(upper)], s, t) * f;
 }
 
+// The lobe average around direction n, read from the source mips (see the header).
+Vec3 prefilterTexel(const std::vector<EquirectImage>& sourceMips, const std::vector<LobeSample>& lobe, Vec3 n) {
+  const EquirectImage& source = sourceMips[0];
+  TangentFrame frame(n);
+  Vec3 sum;
+  double weightSum = 0.0;
+  for (const LobeSample& sample : lobe) {
+    Vec3 l = frame.toWorld(sample.l);
+    double s, t;
+    equirectCoordinates(l, &s, &t);
+    int sourceRow = std::clamp(static_cast<int>(t * source.height), 0, source.height - 1);
+    double lod = sample.lodWithoutTexel - 0.5 * std::log2(equirectTexelSolidAngle(source, sourceRow));
+    sum += sampleTrilinear(sourceMips, s, t, lod) * sample.l.z;
+    weightSum += sample.l.z;
+  }
+  return sum * (1.0 / weightSum);
+}
+
 EquirectImage prefilterLevel(const std::vector<EquirectImage>& sourceMips, int width, int height, double alpha,
                              const PrefilterOptions& options) {
-  const EquirectImage& source = sourceMips[0];
   std::vector<LobeSample> lobe = lobeSamples(alpha, options.samples, options.lodBias);
   EquirectImage out(width, height);
-  for (int row = 0; row < height; ++row) {
-    for (int column = 0; column < width; ++column) {
-      Vec3 n = equirectDirection(out, column, row);
-      TangentFrame frame(n);
-      Vec3 sum;
-      double weightSum = 0.0;
-      for (const LobeSample& sample : lobe) {
-        Vec3 l = frame.toWorld(sample.l);
-        double s, t;
-        equirectCoordinates(l, &s, &t);
-        int sourceRow = std::clamp(static_cast<int>(t * source.height), 0, source.height - 1);
-        double lod = sample.lodWithoutTexel - 0.5 * std::log2(equirectTexelSolidAngle(source, sourceRow));
-        sum += sampleTrilinear(sourceMips, s, t, lod) * sample.l.z;
-        weightSum += sample.l.z;
-      }
-      out.setTexel(column, row, sum * (1.0 / weightSum));
-    }
-  }
+  for (int row = 0; row < height; ++row)
+    for (int column = 0; column < width; ++column)
+      out.setTexel(column, row, prefilterTexel(sourceMips, lobe, equirectDirection(out, column, row)));
   return out;
+}
+
+OctahedralImage prefilterOctahedralLevel(const std::vector<EquirectImage>& sourceMips, int size, double alpha,
+                                         const PrefilterOptions& options) {
+  std::vector<LobeSample> lobe = lobeSamples(alpha, options.samples, options.lodBias);
+  OctahedralImage out(size);
+  for (int row = 0; row < size; ++row)
+    for (int column = 0; column < size; ++column)
+      out.setTexel(column, row, prefilterTexel(sourceMips, lobe, octahedralTexelDirection(size, column, row)));
+  return out;
+}
+
+void checkSource(const EquirectImage& source, int levels) {
+  if (levels < 1 || levels > 30 || source.height < 1 || source.width != 2 * source.height ||
+      source.height % (1 << (levels - 1)) != 0 || source.rgb.size() != size_t(source.width) * size_t(source.height) * 3)
+    throw std::invalid_argument("prefilterEnvironment: source must be 2h x h floats with h divisible by 2^(levels - 1)");
+}
+
+// Source mips for filtered sampling, halving while the result keeps kCoarsestSourceRows rows.
+std::vector<EquirectImage> sourceMipChain(const EquirectImage& source) {
+  std::vector<EquirectImage> sourceMips{source};
+  while (sourceMips.back().height % 2 == 0 && sourceMips.back().height / 2 >= kCoarsestSourceRows)
+    sourceMips.push_back(downsampleEquirect(sourceMips.back()));
+  return sourceMips;
 }
 
 }  // namespace
@@ -80,19 +106,28 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& sourceMips, int w
 double prefilterLevelRoughness(int level, int levels) { return levels > 1 ? double(level) / double(levels - 1) : 0.0; }
 
 std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, const PrefilterOptions& options) {
-  int levels = options.levels;
-  if (levels < 1 || levels > 30 || source.height < 1 || source.width != 2 * source.height ||
-      source.height % (1 << (levels - 1)) != 0 || source.rgb.size() != size_t(source.width) * size_t(source.height) * 3)
-    throw std::invalid_argument("prefilterEnvironment: source must be 2h x h floats with h divisible by 2^(levels - 1)");
-  // Source mips for filtered sampling, halving while the result keeps kCoarsestSourceRows rows.
-  std::vector<EquirectImage> sourceMips{source};
-  while (sourceMips.back().height % 2 == 0 && sourceMips.back().height / 2 >= kCoarsestSourceRows)
-    sourceMips.push_back(downsampleEquirect(sourceMips.back()));
-
+  const int levels = options.levels;
+  checkSource(source, levels);
+  const std::vector<EquirectImage> sourceMips = sourceMipChain(source);
   std::vector<EquirectImage> result;
   for (int m = 0; m < levels; ++m) {
     double r = prefilterLevelRoughness(m, levels);
     result.push_back(prefilterLevel(sourceMips, source.width >> m, source.height >> m, r * r, options));
+  }
+  return result;
+}
+
+std::vector<OctahedralImage> prefilterEnvironmentOctahedral(const EquirectImage& source, int size,
+                                                            const PrefilterOptions& options) {
+  const int levels = options.levels;
+  checkSource(source, levels);
+  if (size < 2 << (levels - 1) || size % (1 << (levels - 1)) != 0)
+    throw std::invalid_argument("prefilterEnvironmentOctahedral: size must be divisible by 2^(levels - 1), last level >= 2");
+  const std::vector<EquirectImage> sourceMips = sourceMipChain(source);
+  std::vector<OctahedralImage> result;
+  for (int m = 0; m < levels; ++m) {
+    double r = prefilterLevelRoughness(m, levels);
+    result.push_back(prefilterOctahedralLevel(sourceMips, size >> m, r * r, options));
   }
   return result;
 }

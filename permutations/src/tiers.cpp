@@ -9,7 +9,7 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum, 3, true};
     case Tier::High:
       return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Mediump,
-              AmbientModel::SplitSum, 3, false};
+              AmbientModel::SplitSum, 3, true};
     case Tier::Mid:
       return {SpecularModel::Zioma, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
               AmbientModel::Analytic, 3, false};

@@ -8,7 +8,9 @@
 #include <stb_image.h>
 
 #include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/equirect_image.h"
+#include "facet/ibl/octahedral_map.h"
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include "facet/runtime/image_texture.h"
@@ -83,11 +85,10 @@ EquirectImage fitEnvironment(EquirectImage image) {
   return out;
 }
 
-void storeLevels(const std::vector<EquirectImage>& levels, double scale, EnvironmentLighting* out) {
-  out->width = uint32_t(levels.at(0).width);
-  out->height = uint32_t(levels.at(0).height);
+void storeLevels(const std::vector<ibl::OctahedralImage>& levels, double scale, EnvironmentLighting* out) {
+  out->width = out->height = uint32_t(levels.at(0).size);
   out->levels.clear();
-  for (const EquirectImage& level : levels) {
+  for (const ibl::OctahedralImage& level : levels) {
     std::vector<float> rgb(level.rgb.size());
     for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = float(level.rgb[i] * scale);
     out->levels.push_back(std::move(rgb));
@@ -128,8 +129,7 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
     // The levels are as small as the level count allows.
     const float l = float(scene.skyLuminance * exposure);
     for (int c = 0; c < 3; ++c) out.sh[0][size_t(c)] = out.meanRadiance[size_t(c)] = l;
-    out.width = 2u << (abi::kEnvironmentLevels - 1);
-    out.height = 1u << (abi::kEnvironmentLevels - 1);
+    out.width = out.height = 2u << (abi::kEnvironmentLevels - 1);
     for (uint32_t m = 0; m < abi::kEnvironmentLevels; ++m)
       out.levels.emplace_back(size_t(out.width >> m) * (out.height >> m) * 3, l);
     return out;
@@ -157,7 +157,7 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
   out.meanRadiance = {float(mean.x * scale), float(mean.y * scale), float(mean.z * scale)};
   ibl::PrefilterOptions options;
   options.levels = int(abi::kEnvironmentLevels);
-  storeLevels(ibl::prefilterEnvironment(source, options), scale, &out);
+  storeLevels(ibl::prefilterEnvironmentOctahedral(source, kEnvironmentMapSize, options), scale, &out);
   return out;
 }
 
@@ -167,8 +167,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
   t.height = lighting.height;
   t.format = TextureFormat::Rgba16Float;
   t.linearFilter = true;
-  t.repeat = true;
-  t.clampT = true;
+  t.repeat = false;  // clamp to edge: the octahedral map's seams are continuous by construction
   for (const std::vector<float>& rgb : lighting.levels) {
     std::vector<uint8_t> bytes(rgb.size() / 3 * 8);
     for (size_t i = 0; i < rgb.size() / 3; ++i) {
@@ -184,10 +183,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
   return t;
 }
 
-const DfgTable& dfgTable() {
-  static const DfgTable table = ibl::generateDfgLut(ibl::kDfgLutSize);
-  return table;
-}
+const DfgTable& dfgTable() { return ibl::embeddedDfgLut(); }
 
 const Texture& dfgTexture() {
   static const Texture texture = [] {

@@ -34,9 +34,10 @@ inline double visibilitySmithGgxCorrelated(double alpha, double NoV, double NoL)
 inline glm::dvec3 fresnelSchlick(glm::dvec3 f0, double LoH) { return f0 + (1.0 - f0) * std::pow(1.0 - LoH, 5.0); }
 
 // Outgoing pre-exposed radiance towards v, for one directional light (l towards the light,
-// lightColor pre-exposed) and a constant ambient radiance.
+// lightColor pre-exposed) and a constant ambient radiance. specularScale is the tier's
+// multiple-scattering compensation, 1 + f0 (1/dfg.y − 1) (chunks/ibl_split_sum.glsl), or 1.
 inline glm::dvec3 shadeStandard(const Surface& s, glm::dvec3 n, glm::dvec3 v, glm::dvec3 l, glm::dvec3 lightColor,
-                                glm::dvec3 ambient) {
+                                glm::dvec3 ambient, glm::dvec3 specularScale = glm::dvec3(1.0)) {
   glm::dvec3 baseColor = glm::clamp(s.baseColor, 0.0, 1.0);
   double metallic = glm::clamp(s.metallic, 0.0, 1.0);
   double reflectance = glm::clamp(s.reflectance, 0.0, 1.0);
@@ -49,7 +50,8 @@ inline glm::dvec3 shadeStandard(const Surface& s, glm::dvec3 n, glm::dvec3 v, gl
   double NoL = glm::clamp(glm::dot(n, l), 0.0, 1.0);
   double NoH = glm::clamp(glm::dot(n, h), 0.0, 1.0);
   double LoH = glm::clamp(glm::dot(l, h), 0.0, 1.0);
-  glm::dvec3 specular = distributionGgx(alpha, NoH) * visibilitySmithGgxCorrelated(alpha, NoV, NoL) * fresnelSchlick(f0, LoH);
+  glm::dvec3 specular = distributionGgx(alpha, NoH) * visibilitySmithGgxCorrelated(alpha, NoV, NoL) * fresnelSchlick(f0, LoH) *
+                        specularScale;
   glm::dvec3 direct = (diffuseColor / kPi + specular) * lightColor * NoL;
   return direct + diffuseColor * ambient * glm::clamp(s.ambientOcclusion, 0.0, 1.0) + s.emissive;
 }

@@ -53,7 +53,7 @@ inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": 
 inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
 inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RG16F 64×64, one level (docs/ibl.md layout)
-inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F equirect, kEnvironmentLevels levels
+inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F octahedral, kEnvironmentLevels levels
 // Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so
 // the shaders read lod = roughness × (kEnvironmentLevels − 1) (chunks/ibl_split_sum.glsl).
 inline constexpr uint32_t kEnvironmentLevels = 5;

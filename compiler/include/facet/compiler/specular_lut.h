@@ -10,7 +10,8 @@
 // Zioma 2015, "Optimizing PBR", SIGGRAPH: index by R·L, warp the axis, store intensity / 16).
 //
 // Mapping (the chunk inverts it): texel (i, j) of a W × H table holds, quantised to 8 bits,
-//   round(255 · min(S(c_i, r_j) / scale, 1)),  u_i = i / (W − 1),  r_j = j / (H − 1),
+//   round(255 · √min(S(c_i, r_j) / scale, 1)),  u_i = i / (W − 1),  r_j = j / (H − 1),
+// (the default kSqrt encoding; kLinear drops the √),
 // with c_i = u_i^(1/4) (axis kReflectedCosine4: u = (R·L)⁴) or c_i = u_i (axis kHalfCosine, the
 // n·h table of the talk, kept to measure against; S is then D(α, n·h)/4 with c = n·h).
 // The texel centres sit at (i + 0.5)/W, so the chunk samples at u·(W − 1)/W + 0.5/W to hit u_i
@@ -27,15 +28,25 @@ enum class SpecularLutAxis {
   kHalfCosine,        // u = n·h — Zioma's first table; measured in docs/specular-tiers.md only
 };
 
+// How a texel's 8 bits hold min(S / scale, 1) = s: linearly (round(255 s)), or as √s
+// (round(255 √s), decoded as the square of the filtered value), which spends the steps where
+// the lobe's tail is: the step at s is 2√s/255 instead of 1/255, so the tail's steps no longer
+// show as rings. Shipped (the chunk decodes kSqrt); measured in docs/specular-tiers.md, "The
+// low tier's table".
+enum class SpecularLutEncoding {
+  kLinear,
+  kSqrt,
+};
+
 struct SpecularLutOptions {
   uint32_t width = 128;   // along u (the warped cosine)
   uint32_t height = 64;   // along perceptual roughness
   SpecularLutAxis axis = SpecularLutAxis::kReflectedCosine4;
-  // Decoded intensity = texel / 255 · scale. 16/π (π folded into the /16 of the talk): the
-  // rough lobes (S ≤ 1/(4π α²), 0.08 at r = 1) keep π× finer 8-bit steps; the price is a
-  // ceiling of 5.09 instead of 16, reached only inside highlights that tone-map to white anyway.
-  // Chosen by measurement (docs/specular-tiers.md).
+  // Decoded intensity = (texel / 255)² · scale (kSqrt; texel / 255 · scale with kLinear). 16/π
+  // (π folded into the /16 of the talk): a ceiling of 5.09, reached only inside highlights that
+  // tone-map to white anyway; 16 measured no better with the √ encoding (docs/specular-tiers.md).
   double scale = 16.0 / 3.14159265358979323846;
+  SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
 };
 
 // The default table size and scale; chunks/specular_lut.glsl hard-codes the same numbers.
@@ -47,6 +58,7 @@ struct SpecularLut {
   uint32_t width = 0;
   uint32_t height = 0;
   double scale = 0;
+  SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
   std::vector<uint8_t> texels;  // row-major, row j = roughness r_j, R8 UNORM
 };
 

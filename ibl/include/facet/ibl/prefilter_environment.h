@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "facet/ibl/equirect_image.h"
+#include "facet/ibl/octahedral_map.h"
 
 namespace facet::ibl {
 
@@ -44,5 +45,12 @@ double prefilterLevelRoughness(int level, int levels);
 /// The mip chain, levels[0] at the source's resolution. The source must be 2h × h with h
 /// divisible by 2^(levels − 1); throws std::invalid_argument otherwise.
 std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, const PrefilterOptions& options = {});
+
+/// The same lobe averages, from the same equirect source, written as octahedral levels (what the
+/// runtime uploads; octahedral_map.h): level m is (size >> m)², each texel the average around
+/// octahedralTexelDirection. size must be divisible by 2^(levels − 1) with a last level of at
+/// least 2 texels, and the source as above; throws std::invalid_argument otherwise.
+std::vector<OctahedralImage> prefilterEnvironmentOctahedral(const EquirectImage& source, int size,
+                                                            const PrefilterOptions& options = {});
 
 }  // namespace facet::ibl

@@ -14,20 +14,24 @@
 
 namespace facet::runtime {
 
-// Level-0 size of a scene's prefiltered environment built from an image or the analytic sky:
-// small on purpose (prefiltering costs ~0.15 s at this size; docs/ibl.md) — the rough levels hold
-// little detail and the mirror level is only as sharp as 128 texels around the horizon.
+// The equirect size an environment image or the analytic sky is brought to before SH projection
+// and prefiltering: small on purpose (docs/ibl.md) — the rough levels hold little detail and the
+// mirror level is only as sharp as 128 texels around the horizon.
 inline constexpr int kEnvironmentWidth = 128;
 inline constexpr int kEnvironmentHeight = 64;
+// Level-0 size of the prefiltered environment the shaders sample, an octahedral map
+// (facet/ibl/octahedral_map.h): at 128² about 360 texels run around the horizon (the equirect
+// source has 128) and the last (r = 1) of the 5 levels keeps 8² texels.
+inline constexpr int kEnvironmentMapSize = 128;
 
 // Everything pre-exposed (× the camera exposure), like the lights (docs/lighting-units.md).
 struct EnvironmentLighting {
   // shaderIrradianceCoefficients of the SH3 projection: irradiance / π = Σ sh[k] p_k(n).
   std::array<std::array<float, 3>, 9> sh{};
   std::array<float, 3> meanRadiance{};
-  uint32_t width = 0;                      // level 0; level m is width >> m × height >> m
+  uint32_t width = 0;                      // level 0, square: level m is width >> m × height >> m
   uint32_t height = 0;
-  std::vector<std::vector<float>> levels;  // RGB floats per level, row 0 = zenith (t = 0)
+  std::vector<std::vector<float>> levels;  // RGB floats per level, octahedral (facet/ibl/octahedral_map.h), row 0 at v = 0
 };
 
 // The scene's environment: its `environment` (image or analytic sky) or, without one, the
@@ -36,11 +40,12 @@ struct EnvironmentLighting {
 std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, double exposure, std::string* error);
 
 // The prefiltered levels as the texture the shaders sample: RGBA16F (alpha 1), linear filtering
-// within and between levels, repeat in s (longitude), clamp in t.
+// within and between levels, clamp to edge (chunks/octahedral.glsl).
 Texture environmentTexture(const EnvironmentLighting& lighting);
 
 // The split-sum DFG table: facet::ibl::generateDfgLut(64) (2048 samples per texel, ~1 s on one
-// core), generated on first use and shared by the process. `texels` holds (B, A + B) per texel,
+// core), computed at build time and linked as data (facet::ibl::embeddedDfgLut), so loading it
+// costs no integration. `texels` holds (B, A + B) per texel,
 // column = n·v, row = roughness, both at (i + 0.5)/64.
 using DfgTable = ibl::DfgLut;
 const DfgTable& dfgTable();
