@@ -55,6 +55,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   if (!r.error.empty()) broken("read succeeded with an error message");
   if (r.stats.size() != r.package->variants.size()) broken("stats do not match the variants");
+  // The runtime's semantic check (what an app runs on an untrusted package) on whatever decoded.
+  (void)pkg::semanticError(*r.package);
   // What was read writes and reads back to a package that writes the same bytes (compared as
   // bytes: a NaN default value is legal and never equals itself).
   const std::vector<uint8_t> written = pkg::write(*r.package);
