@@ -1,6 +1,6 @@
 #include "facet/compiler/spirv_interface.h"
 
-#include <spirv_cross_c.h>
+#include "spirv_cross_session.h"
 
 namespace facet::compiler {
 namespace {
@@ -19,27 +19,15 @@ uint32_t slots(spvc_compiler compiler, spvc_type_id typeId) {
 
 bool analyseStageInterface(const std::vector<uint32_t>& words, StageInterface* out, std::string* error) {
   *out = {};
-  spvc_context context = nullptr;
-  if (spvc_context_create(&context) != SPVC_SUCCESS) {
-    *error = "SPIRV-Cross: cannot create a context";
-    return false;
-  }
-  auto fail = [&](const char* step) {
-    *error = std::string("SPIRV-Cross ") + step + ": " + spvc_context_get_last_error_string(context);
-    spvc_context_destroy(context);
-    return false;
-  };
-  spvc_parsed_ir ir = nullptr;
-  if (spvc_context_parse_spirv(context, words.data(), words.size(), &ir) != SPVC_SUCCESS) return fail("parse");
-  spvc_compiler compiler = nullptr;
-  if (spvc_context_create_compiler(context, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) != SPVC_SUCCESS)
-    return fail("create compiler");
+  SpirvCrossSession session;
+  if (!session.open(words, SPVC_BACKEND_NONE, error)) return false;
+  spvc_compiler compiler = session.compiler();
   // Only what the stage's code reaches counts, as a GLES driver counts active uniforms.
   spvc_set active = nullptr;
   spvc_resources resources = nullptr;
   if (spvc_compiler_get_active_interface_variables(compiler, &active) != SPVC_SUCCESS ||
       spvc_compiler_create_shader_resources_for_active_variables(compiler, &resources, active) != SPVC_SUCCESS)
-    return fail("reflection");
+    return session.fail("reflection", error);
 
   auto each = [&](spvc_resource_type kind, auto&& visit) {
     const spvc_reflected_resource* list = nullptr;
@@ -59,8 +47,7 @@ bool analyseStageInterface(const std::vector<uint32_t>& words, StageInterface* o
               spvc_compiler_get_declared_struct_size(compiler, spvc_compiler_get_type_handle(compiler, r.base_type_id), &bytes);
               out->uniformVectors += uint32_t((bytes + 15) / 16);
             });
-  if (!ok) return fail("resource list");
-  spvc_context_destroy(context);
+  if (!ok) return session.fail("resource list", error);
   return true;
 }
 
