@@ -115,7 +115,12 @@ TEST(HostileScenes, TruncatedImageSaysWhy) {
   std::string path = write(dir + "/cut.png", png.substr(0, png.size() / 2));
   std::string error;
   EXPECT_FALSE(facet::runtime::loadImageTexture(path, true, &error));
-  EXPECT_EQ(error.rfind(path + ": cannot decode image: ", 0), 0u) << error;
+  // Cut inside a chunk: the chunk check names it; either way the message says why.
+  EXPECT_EQ(error.rfind(path + ": cannot read image: PNG chunk at byte ", 0), 0u) << error;
+  std::string cutAtChunkEnd = png.substr(0, 33);  // the header chunk whole, no data, no IEND
+  path = write(dir + "/headeronly.png", cutAtChunkEnd);
+  EXPECT_FALSE(facet::runtime::loadImageTexture(path, true, &error));
+  EXPECT_EQ(error.rfind(path + ": cannot ", 0), 0u) << error;
   EXPECT_GT(error.size(), (path + ": cannot decode image: ").size()) << "no reason given: " << error;
 }
 
@@ -224,4 +229,26 @@ TEST(HostilePackages, MeaningIsCheckedNotOnlyBytes) {
   expectRejected([](auto& p) { p.variants[0].key = "ultra.dir1"; }, "variant key 'ultra.dir1' is not a valid key");
   expectRejected([](auto& p) { p.variants[1].key = p.variants[0].key; }, "is stored twice");
   expectRejected([](auto& p) { p.material.paramBlockSize = 0xffffffffu; }, "the parameter block is 4294967295 bytes; the limit is 4096");
+}
+
+// fuzz_image's finding: a PNG whose chunk declares more bytes than the file holds made
+// stb_image allocate what the header said (2 GB from a 200-byte file).
+TEST(HostileScenes, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
+  std::string bytes = facet::test::readText(facet::test::sourceDir() + "/tests/fuzz/image_regressions/png_chunk_length_beyond_file.png");
+  ASSERT_FALSE(bytes.empty());
+  std::string error;
+  std::vector<uint8_t> data(bytes.begin(), bytes.end());
+  EXPECT_FALSE(facet::runtime::decodeImageTexture(data, true, "x.png", &error));
+  EXPECT_NE(error.find("x.png: cannot read image: PNG chunk at byte "), std::string::npos) << error;
+  EXPECT_NE(error.find("remain in the file"), std::string::npos) << error;
+}
+
+// fuzz_image's JPEG finding (stb_image reads past a Huffman table): JPEG is not decoded at all.
+TEST(HostileScenes, JpegIsRefusedNotDecoded) {
+  std::string bytes = facet::test::readText(facet::test::sourceDir() + "/tests/fuzz/image_regressions/jpeg_huffman_table_overrun.jpg");
+  ASSERT_FALSE(bytes.empty());
+  std::vector<uint8_t> data(bytes.begin(), bytes.end());
+  std::string error;
+  EXPECT_FALSE(facet::runtime::decodeImageTexture(data, true, "x.jpg", &error));
+  EXPECT_EQ(error.rfind("x.jpg: cannot read image: ", 0), 0u) << error;
 }

@@ -48,6 +48,25 @@ std::vector<uint8_t> halve(const std::vector<uint8_t>& src, uint32_t w, uint32_t
   return dst;
 }
 
+// stb_image grows its PNG data buffer to whatever length a chunk header declares before it
+// checks the bytes are there: a 200-byte file declaring a 2 GB IDAT made it allocate 2 GB
+// (fuzz_image). Every chunk must fit in the file: then the buffer is bounded by the file size.
+std::string pngChunkError(std::span<const uint8_t> bytes) {
+  static const uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return "";  // not a PNG
+  size_t at = 8;
+  while (at + 8 <= bytes.size()) {
+    const uint64_t length = uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 | uint64_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
+    if (length + 12 > bytes.size() - at)
+      return "PNG chunk at byte " + std::to_string(at) + " declares " + std::to_string(length) + " bytes; " +
+             std::to_string(bytes.size() - at) + " remain in the file";
+    at += size_t(length) + 12;
+    if (type == "IEND") return "";
+  }
+  return "";  // stb_image reports a missing IEND or a cut chunk header itself
+}
+
 }  // namespace
 
 std::string decodeFailure() {
@@ -104,6 +123,10 @@ bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::st
 
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error) {
+  if (std::string why = pngChunkError(bytes); !why.empty()) {
+    *error = name + ": cannot read image: " + why;
+    return std::nullopt;
+  }
   int w = 0, h = 0, channels = 0;
   if (bytes.size() > size_t(std::numeric_limits<int>::max()) ||
       !stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &channels)) {

@@ -29,12 +29,12 @@ inline constexpr uintmax_t kMaxImageFileBytes = 256u << 20;
 // kMaxImageFileBytes. False with *error naming the file otherwise.
 bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::string* error);
 
-// Decodes a PNG/JPEG/TGA held in memory (loadImageTexture without the file); `name` is used in
+// Decodes a PNG held in memory (loadImageTexture without the file); `name` is used in
 // messages. The fuzz target fuzz_image drives it with arbitrary bytes.
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error);
 
-// Loads a PNG/JPEG/TGA (stb_image) as RGBA8, with every mip level down to 1×1. `srgb` tags the
+// Loads a PNG (stb_image; JPEG and TGA are not decoded: stb_image_impl.cpp) as RGBA8, with every mip level down to 1×1. `srgb` tags the
 // image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the
 // encoded values (which would darken every level), and the sampler decodes.
 std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error);
