@@ -59,6 +59,23 @@ VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops,
   return a;
 }
 
+// The forward pass's first subpass, after the previous frame: that frame's reads of the HDR
+// image (post-pass sampling, readback copy) and its depth writes finish before this frame's
+// layout transitions and writes. One dependency for the merged and the separate render path.
+VkSubpassDependency previousFrameToForwardPass() {
+  VkSubpassDependency d{};
+  d.srcSubpass = VK_SUBPASS_EXTERNAL;
+  d.dstSubpass = 0;
+  d.srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  d.srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  d.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  d.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  return d;
+}
+
 bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRenderPass* out,
                       std::string* error) {
   if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
@@ -100,20 +117,7 @@ bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps de
   subpasses[1].pColorAttachments = postColour.data();
 
   std::array<VkSubpassDependency, 4> dependencies{};
-  // Before subpass 0: the previous frame's readback copy of HDR and its depth writes must finish
-  // before this frame's layout transitions and writes.
-  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  dependencies[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0] = previousFrameToForwardPass();
   // Before subpass 1: the previous frame's readback copy of LDR (write after read).
   dependencies[1].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[1].dstSubpass = 1;
@@ -181,20 +185,7 @@ bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps d
   subpass.pDepthStencilAttachment = &depthRef;
 
   std::array<VkSubpassDependency, 2> dependencies{};
-  // Before: the previous frame read the HDR image (post pass sampling, readback copy) and
-  // wrote depth. Those must finish before this frame's layout transitions and writes.
-  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                                 VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  dependencies[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0] = previousFrameToForwardPass();
   // After: the post pass samples the colour.
   dependencies[1].srcSubpass = 0;
   dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
