@@ -1,4 +1,6 @@
 // Names used in `matc info` output and in the compiler's parameter declarations.
+#include <cctype>
+
 #include "facet/package.h"
 
 namespace facet::package {
@@ -41,6 +43,13 @@ const char* toString(TexelFormat format) {
     case TexelFormat::R8Unorm: return "r8_unorm";
   }
   return "unknown";
+}
+
+bool isValidName(std::string_view s) {
+  if (s.empty() || s.size() > kMaxNameBytes || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
 }
 
 std::optional<ParamType> paramTypeFromString(std::string_view name) {

@@ -13,13 +13,6 @@
 namespace facet::package {
 namespace {
 
-bool isIdentifier(const std::string& s) {
-  if (s.empty() || s.size() > kMaxNameBytes || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
-  for (char c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
-  return true;
-}
-
 // Names in messages: short, and without bytes that would garble a terminal.
 std::string shown(const std::string& s) {
   std::string out;
@@ -29,7 +22,7 @@ std::string shown(const std::string& s) {
 
 std::string paramError(const Param& p) {
   const std::string what = "parameter '" + shown(p.name) + "'";
-  if (!isIdentifier(p.name)) return what + ": a parameter name is an identifier (letters, digits, _)";
+  if (!isValidName(p.name)) return what + ": a parameter name is an identifier (letters, digits, _)";
   for (double v : p.defaultValue)
     if (!std::isfinite(v)) return what + ": its default is not a finite number";
   if (p.rangeMin.has_value() != p.rangeMax.has_value()) return what + ": a range has both ends or none";
@@ -72,7 +65,7 @@ std::string shaderError(const Shader& s) {
 
 std::string semanticError(const Package& pkg) {
   const MaterialInfo& m = pkg.material;
-  if (!isIdentifier(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
+  if (!isValidName(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
   if (m.shading != "lit" && m.shading != "unlit") return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
   static const std::set<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
   if (!blendings.count(m.blending))

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "facet/package.h"
 #include "facet/runtime/json_document.h"
 
 namespace facet::runtime {
@@ -25,12 +26,6 @@ struct SceneError {
 
 [[noreturn]] void fail(const std::string& pointer, std::string message) { throw SceneError{pointer, std::move(message)}; }
 
-bool isIdentifier(const std::string& s) {
-  if (s.empty() || s.size() > 128 || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
-  for (char c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
-  return true;
-}
 
 // Rejects keys this reader does not know: a typo ("ilumination") must not silently fall back
 // to a default.
@@ -166,7 +161,7 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
   o.material = string(j["material"], pointer + "/material");
   // A material name is an identifier of the language (what `material NAME {` accepts): no path,
   // no NUL to cut the file name short, nothing that could open another file.
-  if (!isIdentifier(o.material)) fail(pointer + "/material", "expected a material name (letters, digits, _), not '" + pointerSegment(o.material) + "'");
+  if (!package::isValidName(o.material)) fail(pointer + "/material", "expected a material name (letters, digits, _), not '" + pointerSegment(o.material) + "'");
   if (j.contains("position")) o.position = vec3(j["position"], pointer + "/position");
   if (j.contains("radius")) o.radius = number(j["radius"], pointer + "/radius", 1e-4, 1e6);
   if (j.contains("params")) {
@@ -174,7 +169,7 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
     if (!params.is_object()) fail(pointer + "/params", "expected an object");
     for (const auto& [name, value] : params.items()) {
       std::string p = pointer + "/params/" + pointerSegment(name);
-      if (!isIdentifier(name)) fail(p, "expected a parameter name (letters, digits, _)");
+      if (!package::isValidName(name)) fail(p, "expected a parameter name (letters, digits, _)");
       std::vector<double> v;
       if (value.is_string()) {  // a texture parameter's image, relative to the scene file
         o.textures[name] = (sceneDir / value.get<std::string>()).lexically_normal().string();

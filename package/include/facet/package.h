@@ -139,6 +139,10 @@ inline constexpr size_t kMaxParams = 256;
 inline constexpr uint32_t kMaxParamBlockBytes = 256 * 16;
 inline constexpr size_t kMaxNameBytes = 128;
 
+// A material or parameter name as the language writes it: letters, digits and _, not starting
+// with a digit, at most kMaxNameBytes. Scenes name packages and parameters with the same rule.
+bool isValidName(std::string_view name);
+
 // What a decoded package means, checked for a package the app did not build (the runtime's
 // loader calls it on every package): identifier names, known shading and blending, unique
 // parameters and variants, valid variant keys, finite ordered ranges holding their defaults,
