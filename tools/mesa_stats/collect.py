@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Collects Mesa's shader-db statistics for every variant of every example material, per GPU,
-beside the static SPIR-V cost counts `matc info` gives for the same variant, into one JSON file
+beside the static SPIR-V cost counts `matc info` gives for the same variant and the cost model's
+operation counts (tools/mesa_stats/spirv_op_counts: the calibration's features), into one JSON file
 (the calibration data of docs/mesa-statistics.md).
 
-  tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json
+  cmake --build build/test --target matc spirv_op_counts
+  tools/mesa_stats/collect.py -o tools/calibration/mesa-stats.json
 
 Needs scripts/build-mesa-shader-compilers.sh to have run (exit 2 otherwise).
 """
@@ -23,16 +25,18 @@ import package_glsl  # noqa: E402
 SOURCE_ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
-def build_material(matc, mat, work):
+def build_material(matc, counter, mat, work):
     """Compiles the material into a package; returns its GLSL ES pairs (read back from the
-    package) and matc info's cost counts, both keyed "<material>/<variant>"."""
+    package), matc info's cost counts and the op-class counts, all keyed "<material>/<variant>"."""
     name = os.path.splitext(os.path.basename(mat))[0]
     pkg = os.path.join(work, name + ".matpkg")
     subprocess.run([matc, "compile", mat, "-o", pkg], check=True, stdout=subprocess.DEVNULL)
     pairs, costs = package_glsl.package_pairs(matc, pkg, os.path.join(work, name))
+    ops = json.loads(subprocess.run([counter, pkg], check=True, capture_output=True, text=True).stdout)[pkg]
     for p in pairs:
         p["name"] = "%s/%s" % (name, p["name"])
-    return pairs, {"%s/%s" % (name, k): v for k, v in costs.items()}
+    return (pairs, {"%s/%s" % (name, k): v for k, v in costs.items()},
+            {"%s/%s" % (name, k): v for k, v in ops.items()})
 
 
 def dumps(obj, depth=0, flat_below=4):
@@ -48,6 +52,7 @@ def dumps(obj, depth=0, flat_below=4):
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--matc", default=os.path.join(SOURCE_ROOT, "build", "test", "matc", "matc"))
+    ap.add_argument("--counts", default=os.path.join(SOURCE_ROOT, "build", "test", "tests", "spirv_op_counts"))
     ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630")
     ap.add_argument("--prefix", default=mesa_compile.default_prefix())
     ap.add_argument("-o", "--output", required=True)
@@ -61,11 +66,12 @@ def main(argv):
 
     materials = sorted(glob.glob(os.path.join(SOURCE_ROOT, "examples", "materials", "*.mat")))
     with tempfile.TemporaryDirectory(prefix="facet-mesa-stats-") as work:
-        pairs, costs = [], {}
+        pairs, costs, op_counts = [], {}, {}
         for mat in materials:
-            p, c = build_material(args.matc, mat, work)
+            p, c, o = build_material(args.matc, args.counts, mat, work)
             pairs += p
             costs.update(c)
+            op_counts.update(o)
         try:
             measured = mesa_compile.collect(args.prefix, gpus, pairs)
         except RuntimeError as e:
@@ -75,7 +81,7 @@ def main(argv):
     variants = {}
     for pair in pairs:
         name = pair["name"]
-        entry = {"spirv_cost": costs[name], "gpus": {}}
+        entry = {"spirv_cost": costs[name], "op_counts": op_counts[name], "gpus": {}}
         for gpu in gpus:
             shaders = measured[gpu]["shaders"][name]
             # Every stage the driver printed: Mali's vertex shader arrives as its IDVS halves
@@ -83,7 +89,7 @@ def main(argv):
             entry["gpus"][gpu] = shaders
         variants[name] = entry
     data = {
-        "generated_by": "tools/mesa_stats/collect.py --matc build/test/matc/matc -o tools/calibration/mesa-stats.json",
+        "generated_by": "tools/mesa_stats/collect.py -o tools/calibration/mesa-stats.json",
         "mesa": "Debian 22.3.6 (scripts/build-mesa-shader-compilers.sh)",
         "materials": [os.path.relpath(m, SOURCE_ROOT) for m in materials],
         "gpus": {g: {"renderer": measured[g]["renderer"], "version": measured[g]["version"]} for g in gpus},

@@ -1,46 +1,57 @@
 #!/usr/bin/env python3
-"""Fits per-class weights of Facet's static SPIR-V cost counts to the fragment cycles (Mali) and
-instructions (Adreno) measured by Mesa's compilers (tools/calibration/mesa-stats.json), and reports the error before and after.
+"""Fits the weights of the mobile cost model's operation classes (countOpClasses of
+compiler/mobile_cost.h) to the fragment cycles (Mali) and instructions (Adreno) measured by Mesa's
+compilers, over the example materials' variants (tools/calibration/mesa-stats.json) and the
+single-operation shaders (tools/calibration/mesa-single-ops.json), and reports the error before
+and after, and cross-validated.
 
-  tools/mesa_stats/fit.py tools/calibration/mesa-stats.json [-o tools/calibration/mesa-fit.json]
+  tools/mesa_stats/fit.py -o tools/calibration/mesa-fit.json
 
-Model: measure ≈ Σ_k w_k · count_k over the StageCost classes of spirv_cost.h (scalar ALU ops
-split into mediump and highp, transcendentals, divisions, texture samples, varying components),
-w_k ≥ 0 (non-negative least squares: every subset of classes solved by least squares, the best
-all-non-negative one kept; exact for six classes). "Before" is the a-priori model from DESIGN.md's facts ("Facts measured on mobile GPU compilers") and
-Mesa's Valhall rates: max((scalar + 4·transc + 4·div) / 64, tex / 4, varyings / 16).
-Cross-validation: fit on three materials, predict the fourth, for each material in turn.
+Model: measure ≈ Σ_k w_k · count_k, w_k ≥ 0 (non-negative least squares, Lawson–Hanson), over
+the classes a single-operation shader pins (FEATURES: each has an op whose SPIR-V counts are that
+class alone, or that class plus FMA work). Rows:
+- a variant: its fragment counts against its fragment measure, the error relative to the measure;
+- a single operation (per scalar component, both precisions): its counts against the pipe that
+  bounds every example variant (G57 FMA, G52 arithmetic; Adreno non-nop instructions), scaled
+  to units of one highp FMA-pipe op and weighted by PIN_WEIGHT, so that a class the examples
+  barely use (or never use: pow, tan, atan) still gets its measured weight.
+"Before" is matc's mobile cost model as it stands (its `cycles` figure, G57 only).
+Cross-validation: fit on the single operations and three materials, predict the fourth's
+variants, for each material in turn.
 
-Standard library only: six unknowns need no numpy, and the calibration test then runs on every
-Python CMake finds.
+Standard library only: a dozen unknowns need no numpy, and the calibration test then runs on
+every Python CMake finds.
 """
 
 import argparse
-import itertools
 import json
 import math
+import os
 import sys
 
-# The counts of spirv_cost.h, scalar ALU ops split by precision: mediump work packs two fp16 lanes
-# per slot on Valhall. StageCost has the mediump share of ALU + transcendental ops only
-# (relaxedPercent, printed rounded to 1 %), so the split applies that share to the scalar count.
-CLASSES = ["scalarMediump", "scalarHighp", "transcendentalOps", "divisions", "textureSamples", "varyingComponents"]
+CALIBRATION = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "calibration")
 
-
-def features(cost):
-    relaxed = cost["relaxedPercent"] / 100.0
-    derived = {"scalarMediump": cost["scalarAluOps"] * relaxed, "scalarHighp": cost["scalarAluOps"] * (1 - relaxed)}
-    return [derived[k] if k in derived else cost[k] for k in CLASSES]
-# What is fitted per GPU: Mali's cycle bound; ir3 prints no cycles, so its non-nop instruction
-# count (issue slots of one wave) stands in.
-TARGETS = {"mali-g57": "cycles", "mali-g52": "cycles", "adreno-630": "non-nops"}
-# The a-priori model is Valhall's (Mesa's G78 rates); it says nothing about Bifrost's or ir3's scale.
+# The classes of mobile_cost.h the fit weighs, FMA work split by precision (Valhall packs two fp16
+# lanes per FMA slot). Not here: modifiers and fused adds (free by construction), and classes no
+# single-operation shader isolates (hyperbolic, integer division, derivatives; the examples use none).
+FEATURES = ["fma_mediump", "fma_highp", "convert", "sfu", "exp_log", "sqrt", "pow", "sin_cos", "tan",
+            "inverse_trig", "atan2", "division", "texture_sample"]
+# What is fitted per GPU, for a variant and for a single operation: Mali's cycle bound (every
+# example variant is bound by the FMA pipe on G57 and the arithmetic pipe on G52, so a single
+# operation is measured on that pipe); ir3 prints no cycles, so its non-nop instruction count
+# (issue slots of one wave) stands in.
+TARGETS = {"mali-g57": ("cycles", "fma"), "mali-g52": ("cycles", "arith"), "adreno-630": ("non-nops", "non-nops")}
+# The relative weight of a single-operation row (in highp FMA ops) against a variant row (in
+# relative error): one FMA op of error on a pinned op counts as PIN_WEIGHT relative error on a
+# variant. Chosen by cross-validation over 0.001–1 (docs/mesa-statistics.md).
+PIN_WEIGHT = 0.01
+# matc's own model is Valhall's (Mesa's G78 rates); it says nothing about Bifrost's or ir3's scale.
 A_PRIORI = {"mali-g57"}
 
 
-def a_priori_cycles(c):
-    arith = (c["scalarAluOps"] + 4 * c["transcendentalOps"] + 4 * c["divisions"]) / 64.0
-    return max(arith, c["textureSamples"] / 4.0, c["varyingComponents"] / 16.0)
+def features(counts):
+    derived = {"fma_mediump": counts["fma_relaxed"], "fma_highp": counts["fma"] - counts["fma_relaxed"]}
+    return [derived[k] if k in derived else counts[k] for k in FEATURES]
 
 
 def solve(a, b):
@@ -70,21 +81,35 @@ def least_squares(rows, y):
 
 
 def nnls(rows, y):
-    """Non-negative least squares by enumerating the classes kept (2^6 small systems)."""
+    """Lawson–Hanson non-negative least squares: min ||rows·w − y||, w ≥ 0."""
     n = len(rows[0])
-    best, best_err = [0.0] * n, sum(t * t for t in y)
-    for size in range(1, n + 1):
-        for keep in itertools.combinations(range(n), size):
-            w = least_squares([[r[i] for i in keep] for r in rows], y)
-            if w is None or any(v < 0 for v in w):
-                continue
-            full = [0.0] * n
-            for i, v in zip(keep, w):
-                full[i] = v
-            err = sum((predict(full, r) - t) ** 2 for r, t in zip(rows, y))
-            if err < best_err - 1e-15:
-                best, best_err = full, err
-    return best
+    w, passive = [0.0] * n, []
+
+    def gradient(w):
+        r = [t - predict(w, row) for row, t in zip(rows, y)]
+        return [sum(row[i] * ri for row, ri in zip(rows, r)) for i in range(n)]
+
+    for _ in range(10 * n):
+        g = gradient(w)
+        free = [i for i in range(n) if i not in passive and g[i] > 1e-10]
+        if not free:
+            break
+        passive.append(max(free, key=lambda i: g[i]))
+        while True:
+            z = [0.0] * n
+            sol = least_squares([[row[i] for i in passive] for row in rows], y)
+            if sol is None:
+                passive.pop()
+                break
+            for i, v in zip(passive, sol):
+                z[i] = v
+            if all(z[i] > 0 for i in passive):
+                w = z
+                break
+            alpha = min(w[i] / (w[i] - z[i]) for i in passive if z[i] <= 0)
+            w = [w[i] + alpha * (z[i] - w[i]) for i in range(n)]
+            passive = [i for i in passive if w[i] > 1e-12]
+    return w
 
 
 def predict(w, row):
@@ -101,48 +126,65 @@ def errors(pred, y):
 
 
 def samples(data, gpu):
-    """(material, variant, counts row, measured fragment cycles) for every variant."""
+    """(material, variant, feature row, measured fragment figure, matc's cycles) per variant."""
     out = []
     for name in sorted(data["variants"]):
         v = data["variants"][name]
         frag = v["gpus"][gpu]["fragment"]
-        cost = v["spirv_cost"]["fragment"]
-        measured = frag["cycles"] if TARGETS[gpu] == "cycles" else frag["raw"][TARGETS[gpu]]
-        out.append((name.split("/")[0], name, features(cost), measured, cost))
+        measure = TARGETS[gpu][0]
+        measured = frag["cycles"] if measure == "cycles" else frag["raw"][measure]
+        out.append((name.split("/")[0], name, features(v["op_counts"]["fragment"]), measured,
+                    v["spirv_cost"]["fragment"].get("mobileCostCycles")))
     return out
 
 
-def fit_gpu(data, gpu):
+def pin_rows(single_ops, gpu):
+    """Single-operation rows, scaled to units of one highp FMA-pipe op and by PIN_WEIGHT."""
+    pipe = TARGETS[gpu][1]
+    unit = single_ops["gpus"][gpu]["highp"]["mul"][pipe]
+    rows = []
+    for precision in ("mediump", "highp"):
+        for op in sorted(single_ops["op_counts"][precision]):
+            f = features(single_ops["op_counts"][precision][op])
+            t = single_ops["gpus"][gpu][precision][op][pipe]
+            rows.append(([x / unit * PIN_WEIGHT for x in f], t / unit * PIN_WEIGHT))
+    return rows
+
+
+def weighted_fit(variant_rows, pins):
+    rows = [[x / t for x in r] for r, t in variant_rows] + [r for r, _ in pins]
+    y = [1.0] * len(variant_rows) + [t for _, t in pins]
+    return nnls(rows, y)
+
+
+def fit_gpu(data, single_ops, gpu):
     s = samples(data, gpu)
-    rows, y = [r for _, _, r, _, _ in s], [t for _, _, _, t, _ in s]
-    w = nnls(rows, y)
-    fitted = [predict(w, r) for r in rows]
-    before = [a_priori_cycles(c) for _, _, _, _, c in s] if gpu in A_PRIORI else None
+    pins = pin_rows(single_ops, gpu)
+    y = [t for _, _, _, t, _ in s]
+    w = weighted_fit([(r, t) for _, _, r, t, _ in s], pins)
+    fitted = [predict(w, r) for _, _, r, _, _ in s]
     cv = []
     for material in sorted({m for m, _, _, _, _ in s}):
-        train = [(r, t) for m, _, r, t, _ in s if m != material]
-        wm = nnls([r for r, _ in train], [t for _, t in train])
+        wm = weighted_fit([(r, t) for m, _, r, t, _ in s if m != material], pins)
         cv += [(predict(wm, r), t) for m, _, r, t, _ in s if m == material]
-    # matc's own mobile cost model, when the matc that collected the data printed its estimate
-    # (a `cycles` column in `matc info`): its error against the same measure, as it stands.
-    model = [c.get("mobileCostCycles") for _, _, _, _, c in s]
-    matc_model = errors(model, y) if gpu in A_PRIORI and None not in model else None
+    before = [c for _, _, _, _, c in s]
+    before = before if gpu in A_PRIORI and None not in before else None
     return {
-        "measure": "fragment " + TARGETS[gpu],
-        "matc_model": matc_model,
-        "weights": {k: round(v, 9) for k, v in zip(CLASSES, w)},
+        "measure": "fragment " + TARGETS[gpu][0],
+        "single_op_measure": TARGETS[gpu][1],
+        "weights": {k: round(v, 9) for k, v in zip(FEATURES, w)},
         "samples": len(y),
+        "single_op_rows": len(pins),
         "before": errors(before, y) if before else None,
         "after": errors(fitted, y),
         "cross_validated": errors([p for p, _ in cv], [t for _, t in cv]),
-        "per_variant": {n: {"measured": t, "before": round(before[i], 6) if before else None,
-                            "after": round(fitted[i], 6)}
+        "per_variant": {n: {"measured": t, "before": before[i] if before else None, "after": round(fitted[i], 6)}
                         for i, (_, n, _, t, _) in enumerate(s)},
     }
 
 
-def fit(data):
-    return {gpu: fit_gpu(data, gpu) for gpu in sorted(TARGETS) if gpu in data["gpus"]}
+def fit(data, single_ops):
+    return {gpu: fit_gpu(data, single_ops, gpu) for gpu in sorted(TARGETS) if gpu in data["gpus"]}
 
 
 def rounded(obj):
@@ -153,18 +195,21 @@ def rounded(obj):
     return obj
 
 
+def load(name):
+    with open(os.path.join(CALIBRATION, name)) as f:
+        return json.load(f)
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("stats")
     ap.add_argument("-o", "--output")
     args = ap.parse_args(argv)
-    with open(args.stats) as f:
-        result = rounded(fit(json.load(f)))
+    result = rounded(fit(load("mesa-stats.json"), load("mesa-single-ops.json")))
     for gpu, r in result.items():
-        unit = TARGETS[gpu]
-        print("%s %s, %d variants" % (gpu, r["measure"], r["samples"]))
+        unit = TARGETS[gpu][0]
+        print("%s %s, %d variants + %d single-op rows" % (gpu, r["measure"], r["samples"], r["single_op_rows"]))
         print("  weights (%s per op): " % unit + ", ".join("%s %.5f" % kv for kv in r["weights"].items()))
-        for label in ("matc_model", "before", "after", "cross_validated"):
+        for label in ("before", "after", "cross_validated"):
             e = r[label]
             if e is None:
                 continue
@@ -172,9 +217,9 @@ def main(argv):
                   % (label, e["rms"], unit, 100 * e["mean_abs_relative"], 100 * e["max_abs_relative"]))
     if args.output:
         with open(args.output, "w") as f:
-            json.dump({"generated_by": "tools/mesa_stats/fit.py tools/calibration/mesa-stats.json "
-                                       "-o tools/calibration/mesa-fit.json",
-                       "model": "fragment measure = sum of weight x SPIR-V cost count (spirv_cost.h), weights >= 0",
+            json.dump({"generated_by": "tools/mesa_stats/fit.py -o tools/calibration/mesa-fit.json",
+                       "model": "fragment measure = sum of weight x op-class count (mobile_cost.h countOpClasses), "
+                                "weights >= 0, fitted on the example variants and the single operations",
                        "fits": result}, f, indent=1, sort_keys=True)
             f.write("\n")
     return 0

@@ -5,13 +5,20 @@ operation, divided by N·4 (per scalar component). In mediump and highp.
 
   tools/mesa_stats/single_ops.py -o tools/calibration/mesa-single-ops.json
 
+Beside the statistics, the same difference of the cost model's operation counts
+(tools/mesa_stats/spirv_op_counts, countOpClasses of compiler/mobile_cost.h) over each fragment
+shader's optimised SPIR-V (glslangValidator, then spirv-opt -O, the performance passes matc runs):
+the features of the calibration (fit.py), so each op pins the weight of its class.
+
 The chain's operands are varyings and uniforms, never constants, so the compilers cannot fold
 it; each step depends on the previous one, so nothing is shared between steps. Needs
 scripts/build-mesa-shader-compilers.sh (exit 2 otherwise).
 """
 
 import argparse
+import json
 import os
+import subprocess
 import sys
 import tempfile
 
@@ -85,6 +92,23 @@ def shaders(op, precision, steps):
     return VERTEX.format(p=precision), FRAGMENT.format(p=precision, n=8, body=body)
 
 
+def spirv_counts(counter, frag_paths):
+    """{path: countOpClasses of the fragment shader's optimised SPIR-V}. glslang compiles ES
+    shaders to SPIR-V from version 310 only; `-G` (OpenGL SPIR-V) keeps the plain uniforms."""
+    modules = []
+    for path in frag_paths:
+        source = path + ".310.frag"
+        with open(path) as f, open(source, "w") as out:
+            out.write(f.read().replace("#version 300 es", "#version 310 es", 1))
+        raw, opt = path + ".spv", path + ".opt.spv"
+        subprocess.run(["glslangValidator", "-G", "--auto-map-locations", "--auto-map-bindings", "-S", "frag",
+                        source, "-o", raw], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(["spirv-opt", "-O", raw, "-o", opt], check=True)
+        modules.append(opt)
+    counted = json.loads(subprocess.run([counter] + modules, check=True, capture_output=True, text=True).stdout)
+    return {path: counted[m] for path, m in zip(frag_paths, modules)}
+
+
 def measures(stats):
     """The figures compared per op: Mali pipes (cycles) and instructions, ir3 categories."""
     out = {"instructions": stats["instructions"]}
@@ -100,6 +124,8 @@ def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630")
     ap.add_argument("--prefix", default=mesa_compile.default_prefix())
+    ap.add_argument("--counts", default=os.path.join(collect.SOURCE_ROOT, "build", "test", "tests", "spirv_op_counts"),
+                    help="the spirv_op_counts program (cmake --build build/test --target spirv_op_counts)")
     ap.add_argument("-o", "--output", required=True)
     args = ap.parse_args(argv)
     gpus = [g for g in args.gpu.split(",") if g]
@@ -122,23 +148,29 @@ def main(argv):
                 pairs.append({"name": name, "vertex": base + ".vert", "fragment": base + ".frag"})
         try:
             measured = mesa_compile.collect(args.prefix, gpus, pairs)
-        except RuntimeError as e:
+            counted = spirv_counts(args.counts, [p["fragment"] for p in pairs])
+        except (RuntimeError, OSError, subprocess.CalledProcessError) as e:
             sys.stderr.write("single_ops: %s\n" % e)
             return 1
+        counts_of = {p["name"]: counted[p["fragment"]] for p in pairs}
+
+    def per_component(precision, table):
+        base = table("%s/baseline" % precision)
+        per_op = {}
+        for op in sorted(OPS):
+            m = table("%s/%s" % (precision, op))
+            per_op[op] = {k: (m[k] - base[k]) / (STEPS * 4.0) for k in m}
+        for op, helper in MINUS.items():
+            per_op[op] = {k: v - per_op[helper][k] for k, v in per_op[op].items()}
+        return {op: {k: round(v, 6) for k, v in per.items()} for op, per in per_op.items()}
 
     result = {}
     for gpu in gpus:
         shaders_of = measured[gpu]["shaders"]
         for precision in ("mediump", "highp"):
-            base = measures(shaders_of["%s/baseline" % precision]["fragment"])
-            per_op = {}
-            for op in sorted(OPS):
-                m = measures(shaders_of["%s/%s" % (precision, op)]["fragment"])
-                per_op[op] = {k: (m[k] - base[k]) / (STEPS * 4.0) for k in m}
-            for op, helper in MINUS.items():
-                per_op[op] = {k: v - per_op[helper][k] for k, v in per_op[op].items()}
-            result.setdefault(gpu, {})[precision] = {
-                op: {k: round(v, 6) for k, v in per.items()} for op, per in per_op.items()}
+            result.setdefault(gpu, {})[precision] = per_component(
+                precision, lambda name: measures(shaders_of[name]["fragment"]))
+    op_counts = {p: per_component(p, lambda name: counts_of[name]) for p in ("mediump", "highp")}
     data = {
         "generated_by": "tools/mesa_stats/single_ops.py -o tools/calibration/mesa-single-ops.json",
         "meaning": "fragment statistics per scalar component of one operation: (shader with %d dependent "
@@ -147,6 +179,7 @@ def main(argv):
         "steps": {op: OPS[op] for op in OPS},
         "subtracted": MINUS,
         "gpus": result,
+        "op_counts": op_counts,
     }
     with open(args.output, "w") as f:
         f.write(collect.dumps(data, flat_below=3) + "\n")
