@@ -45,6 +45,8 @@ struct LintArgs {
   std::string format = "text";      // text | json | sarif
   std::string output;               // report file, or "" for stdout
   bool werror = false;              // warnings fail the run
+  std::string gpu;                  // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
+  std::string mesaPrefix;           // the Mesa build, default: mesa_compile.py's (the cache folder)
 };
 int lintCommand(const LintArgs& args);
 struct PostArgs {
@@ -64,6 +66,8 @@ struct EvalArgs {
   bool noSwaps = false;    // the tiers as shipped only
   bool validation = false;
   bool fp16Emulation = false;
+  std::string gpu;         // as LintArgs::gpu
+  std::string mesaPrefix;
 };
 int evalCommand(const EvalArgs& args);
 

@@ -7,6 +7,7 @@
 #include "cli_inputs.h"
 #include "commands.h"
 #include "facet/compiler/build.h"
+#include "facet/gpu_stats/mesa_compile.h"
 #include "facet/lint/report.h"
 #include "facet/package.h"
 
@@ -63,6 +64,14 @@ int lintCommand(const LintArgs& args) {
   if (int status = parseTiers(args.tiers, &options.tiers); status != 0) return status;
   options.pointLightCounts = args.pointLights;
   options.baselineTolerance = args.tolerancePercent / 100.0;
+  if (!args.gpu.empty()) {
+    std::string error;
+    if (!gpu_stats::parseGpuList(args.gpu, &options.gpus, &error)) {
+      printError("--gpu: " + error);
+      return 2;
+    }
+    options.mesaTool.prefix = args.mesaPrefix;
+  }
   if (args.updateBaseline && args.baseline.empty()) {
     printError("--update-baseline needs --baseline FILE: the file to write");
     return 2;

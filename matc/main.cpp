@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--format", lint.format, "text | json | sarif")->check(CLI::IsMember({"text", "json", "sarif"}));
   lintCmd->add_option("-o,--output", lint.output, "write the report to this file instead of standard output");
   lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");
+  lintCmd->add_option("--gpu", lint.gpu, "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");
+  lintCmd->add_option("--mesa-prefix", lint.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
   postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "facet/compiler/build.h"
+#include "facet/gpu_stats/package_pairs.h"
 #include "facet/ir/check.h"
 #include "facet/ir/passes.h"
 #include "facet/lint/precision_rules.h"
@@ -220,6 +221,8 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
     lintVariant(out.material, figures, options, &out.diagnostics);
     out.variants.push_back(std::move(figures));
   }
+  if (!options.gpus.empty())
+    out.gpuStats = gpu_stats::measure(gpu_stats::glslEsPairs(built->package), options.gpus, options.mesaTool);
   return out;
 }
 

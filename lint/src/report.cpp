@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "facet/gpu_stats/report.h"
+
 namespace facet::lint {
 namespace {
 
@@ -78,6 +80,17 @@ std::string formatText(const std::vector<LintedFile>& files) {
                       s->interface.samplers, s->cost.relaxedPercent());
         out += line;
       }
+    if (!f.result.gpuStats.empty()) out += "  " + gpu_stats::sourceNote(f.result.gpuStats) + "\n";
+    for (const gpu_stats::GpuStats& g : f.result.gpuStats) {
+      if (!g.unavailable.empty()) continue;
+      out += "  " + g.gpu + " (" + g.renderer + ")\n";
+      for (const auto& [key, stages] : g.shaders)
+        for (const gpu_stats::StageStats& s : stages) {
+          char head[64];
+          std::snprintf(head, sizeof head, "    %-18s %-16s ", key.c_str(), s.stage.c_str());
+          out += head + gpu_stats::describe(s) + "\n";
+        }
+    }
   }
   out += "\n" + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") + ", " + std::to_string(warnings) +
          " warning" + (warnings == 1 ? "" : "s") + "\n";
@@ -105,6 +118,10 @@ std::string formatJson(const std::vector<LintedFile>& files) {
     jf["variants"] = json::array();
     for (const VariantFigures& v : f.result.variants)
       jf["variants"].push_back({{"key", v.key}, {"vertex", figuresJson(v.vertex)}, {"fragment", figuresJson(v.fragment)}});
+    if (!f.result.gpuStats.empty()) {
+      jf["gpus"] = json::array();
+      for (const gpu_stats::GpuStats& g : f.result.gpuStats) jf["gpus"].push_back(gpu_stats::toJson(g));
+    }
     root["files"].push_back(jf);
   }
   root["errors"] = errors;

@@ -12,6 +12,7 @@
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_interface.h"
+#include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/diagnostics.h"
 #include "facet/lint/budgets.h"
 #include "facet/permutations/variant_key.h"
@@ -35,6 +36,10 @@ struct LintOptions {
   const Budgets* budgets = nullptr;    // per-tier limits (budgets.h); none: no budget rules
   const Baseline* baseline = nullptr;  // committed figures; none: no regression rule
   double baselineTolerance = 0.05;     // a figure may grow by this fraction over the baseline
+  // Per-GPU figures from Mesa's compilers (docs/mesa-statistics.md), e.g. {"mali-g57"}; none:
+  // the cost model's figures only. Informational: no rule reads them.
+  std::vector<std::string> gpus;
+  gpu_stats::MesaTool mesaTool;
 };
 
 struct MaterialLint {
@@ -43,6 +48,7 @@ struct MaterialLint {
   // line have loc.line == 0 and name the variant in their message.
   std::vector<ir::Diagnostic> diagnostics;
   std::vector<VariantFigures> variants;
+  std::vector<gpu_stats::GpuStats> gpuStats;  // one per LintOptions::gpus, same order
   bool hasErrors() const;
 };
 

@@ -1,0 +1,82 @@
+// gpu_stats (matc lint/eval --gpu): the GPU list, and what happens when the compilers or the tool
+// are missing. Needs no Mesa build; the real compile is tests/test_gpu_figures.py (skipped, exit
+// 77, where scripts/build-mesa-shader-compilers.sh has not run).
+#include <gtest/gtest.h>
+
+#include "facet/gpu_stats/mesa_compile.h"
+#include "facet/gpu_stats/report.h"
+
+namespace {
+
+using facet::gpu_stats::GpuStats;
+using facet::gpu_stats::MesaTool;
+
+const std::vector<facet::gpu_stats::ShaderPair> kPair = {
+    {"p", "#version 300 es\nvoid main() { gl_Position = vec4(0.0); }\n",
+     "#version 300 es\nprecision mediump float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n"}};
+
+TEST(GpuList, KeepsOrderDropsRepeatsAndEmptyItems) {
+  std::vector<std::string> gpus;
+  std::string error;
+  ASSERT_TRUE(facet::gpu_stats::parseGpuList("adreno-630,,mali-g52,adreno-630", &gpus, &error)) << error;
+  EXPECT_EQ(gpus, (std::vector<std::string>{"adreno-630", "mali-g52"}));
+}
+
+TEST(GpuList, NamesTheUnknownGpuAndTheKnownOnes) {
+  std::vector<std::string> gpus;
+  std::string error;
+  EXPECT_FALSE(facet::gpu_stats::parseGpuList("mali-g57,mali-g76", &gpus, &error));
+  EXPECT_NE(error.find("unknown GPU 'mali-g76'"), std::string::npos) << error;
+  EXPECT_NE(error.find("mali-g52, mali-g57, adreno-630"), std::string::npos) << error;
+  EXPECT_FALSE(facet::gpu_stats::parseGpuList(",", &gpus, &error));
+  EXPECT_NE(error.find("no GPU"), std::string::npos) << error;
+}
+
+TEST(Measure, CompilersAbsentEveryGpuSaysWhy) {
+  MesaTool tool;
+  tool.prefix = "/nonexistent/facet-mesa";
+  std::vector<GpuStats> got = facet::gpu_stats::measure(kPair, {"mali-g57", "adreno-630"}, tool);
+  ASSERT_EQ(got.size(), 2u);
+  for (const GpuStats& g : got) {
+    EXPECT_NE(g.unavailable.find("no Mesa build at /nonexistent/facet-mesa"), std::string::npos) << g.unavailable;
+    EXPECT_TRUE(g.shaders.empty());
+  }
+  EXPECT_EQ(got[0].gpu, "mali-g57");
+  std::string note = facet::gpu_stats::sourceNote(got);
+  EXPECT_NE(note.find("mobile cost model"), std::string::npos) << note;
+  EXPECT_NE(note.find("mali-g57 not measured: no Mesa build"), std::string::npos) << note;
+  EXPECT_EQ(note.find("per-GPU figures"), std::string::npos) << note;
+}
+
+TEST(Measure, ToolAbsentSaysWhereItLooked) {
+  MesaTool tool;
+  tool.script = "/nonexistent/mesa_compile.py";
+  std::vector<GpuStats> got = facet::gpu_stats::measure(kPair, {"mali-g52"}, tool);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_NE(got[0].unavailable.find("no mesa_compile.py at /nonexistent/mesa_compile.py"), std::string::npos)
+      << got[0].unavailable;
+}
+
+TEST(Measure, PythonAbsentIsAMessageNotACrash) {
+  MesaTool tool;
+  tool.python = "/nonexistent/python3";
+  std::vector<GpuStats> got = facet::gpu_stats::measure(kPair, {"mali-g52"}, tool);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_NE(got[0].unavailable.find("cannot run /nonexistent/python3"), std::string::npos) << got[0].unavailable;
+}
+
+TEST(Report, DescribesMaliAndAdrenoStages) {
+  facet::gpu_stats::StageStats mali{"fragment", 270, 2.421875, "fma", 2, std::nullopt, 0};
+  EXPECT_EQ(facet::gpu_stats::describe(mali), "2.42 cycles (fma), 270 instructions, 2 threads");
+  facet::gpu_stats::StageStats adreno{"fragment", 230, std::nullopt, "", std::nullopt, 16, std::nullopt};
+  EXPECT_EQ(facet::gpu_stats::describe(adreno), "230 instructions, 16 waves");
+  GpuStats g{"mali-g57", "Mali-G57 (Panfrost)", "", {{"high.dir1", {mali}}}};
+  nlohmann::json j = facet::gpu_stats::toJson(g);
+  EXPECT_EQ(j["shaders"]["high.dir1"]["fragment"]["bound"], "fma");
+  EXPECT_FALSE(j.contains("unavailable"));
+  EXPECT_EQ(facet::gpu_stats::sourceNote({g}).find("per-GPU figures: Mesa 22.3's compilers on drm-shim (mali-g57)") !=
+                std::string::npos,
+            true);
+}
+
+}  // namespace
