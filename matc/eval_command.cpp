@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "facet/eval/evaluate.h"
 #include "facet/eval/report.h"
+#include "facet/gpu_stats/report.h"
 #include "cli_inputs.h"
 
 namespace facet::matc {
@@ -12,6 +13,14 @@ namespace facet::matc {
 int evalCommand(const EvalArgs& args) {
   eval::EvalOptions options;
   if (int status = parseTiers(args.tiers, &options.tiers); status != 0) return status;
+  std::vector<std::string> gpus;
+  if (!args.gpu.empty()) {
+    std::string message;
+    if (!gpu_stats::parseGpuList(args.gpu, &gpus, &message)) {
+      printError("--gpu: " + message);
+      return 2;
+    }
+  }
   ir::SourceFile source;
   std::optional<ir::Material> material = loadMaterial(args.input, &source);
   if (!material) return 1;
@@ -32,6 +41,12 @@ int evalCommand(const EvalArgs& args) {
   if (!report) {
     printBuildError(source, error.message, error.loc);
     return 1;
+  }
+  if (!gpus.empty()) {
+    gpu_stats::MesaTool tool;
+    tool.prefix = args.mesaPrefix;
+    eval::addGpuFigures(&*report, gpus, tool);
+    std::printf("%s\n", gpu_stats::sourceNote(report->gpuStats).c_str());
   }
   std::string message;
   if (!eval::writeReport(*report, options.outDir, &message)) {

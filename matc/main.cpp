@@ -83,6 +83,8 @@ int main(int argc, char** argv) {
   evalCmd->add_option("--frames", eval.frames, "timed frames per view on lavapipe (median; 0: no timing)")
       ->check(CLI::Range(0, 1000));
   evalCmd->add_option("--sphere-pixels", eval.spherePixels, "grid: pixels per sphere (default 64)")->check(CLI::Range(8, 512));
+  evalCmd->add_option("--gpu", eval.gpu, "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");
+  evalCmd->add_option("--mesa-prefix", eval.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
   evalCmd->add_flag("--no-swaps", eval.noSwaps, "measure the tiers as shipped only, not their single-option swaps");
   evalCmd->add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
   evalCmd->add_flag("--fp16-emulation", eval.fp16Emulation,

@@ -80,3 +80,49 @@ TEST(Report, DescribesMaliAndAdrenoStages) {
 }
 
 }  // namespace
+
+// The same paths through matc and eval's report, still without a Mesa build.
+#include "facet/eval/evaluate.h"
+#include "facet/eval/report.h"
+#include "test_support.h"
+
+namespace {
+
+std::string matc() { return std::string(FACET_BINARY_DIR) + "/matc/matc"; }
+std::string material() { return std::string(FACET_SOURCE_DIR) + "/examples/materials/red_plastic.mat"; }
+
+TEST(GpuOption, AnUnknownGpuIsAUsageErrorInLintAndEval) {
+  for (const char* command : {"lint", "eval"}) {
+    facet::test::CommandResult r = facet::test::run(matc() + " " + command + " " + material() + " --gpu mali-g57,mali-t880");
+    EXPECT_EQ(r.exitCode, 2) << command << r.err;
+    EXPECT_NE(r.err.find("--gpu: unknown GPU 'mali-t880'"), std::string::npos) << command << r.err;
+  }
+}
+
+TEST(GpuOption, LintWithoutTheCompilersFallsBackToTheCostModelAndSaysSo) {
+  facet::test::CommandResult r = facet::test::run(matc() + " lint " + material() +
+                                                  " --tiers high --gpu mali-g52 --mesa-prefix /nonexistent/facet-mesa");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("cycles: the mobile cost model"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mali-g52 not measured: no Mesa build at /nonexistent/facet-mesa"), std::string::npos) << r.out;
+}
+
+TEST(GpuOption, EvalReportWithoutTheCompilersSaysWhichFiguresItUsed) {
+  facet::eval::EvalReport report;
+  report.material = "m";
+  facet::eval::ConfigurationResult c;
+  c.configuration.name = "high";
+  c.variantKey = "high.dir1";
+  c.glslEs = kPair;
+  report.results.push_back(c);
+  MesaTool tool;
+  tool.prefix = "/nonexistent/facet-mesa";
+  facet::eval::addGpuFigures(&report, {"mali-g57"}, tool);
+  ASSERT_EQ(report.gpuStats.size(), 1u);
+  std::string md = facet::eval::reportMarkdown(report);
+  EXPECT_NE(md.find("mali-g57 not measured: no Mesa build at /nonexistent/facet-mesa"), std::string::npos) << md;
+  EXPECT_EQ(md.find("| configuration | variant | mali-g57 |"), std::string::npos) << md;  // no column without figures
+  EXPECT_EQ(facet::eval::reportJson(report)["gpus"][0]["unavailable"].get<std::string>().rfind("no Mesa build", 0), 0u);
+}
+
+}  // namespace

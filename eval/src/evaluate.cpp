@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "facet/compiler/build.h"
+#include "facet/gpu_stats/package_pairs.h"
 #include "facet/eval/prepared_frame.h"
 #include "facet/package.h"
 #include "facet/render_backend.h"
@@ -181,6 +182,7 @@ class Evaluation {
         if (v.key == sunIbl && s.stage == package::Stage::Fragment) r->sunIblFragmentCycles = cost.cycles;
       }
     }
+    r->glslEs = gpu_stats::glslEsPairs(pkg, {r->variantKey});
     return true;
   }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "facet/gpu_stats/report.h"
 #include "facet/package.h"
 
 namespace facet::eval {
@@ -143,8 +144,48 @@ Json reportJson(const EvalReport& r) {
     configs.push_back(k);
   }
   j["configurations"] = configs;
+  if (!r.gpuStats.empty()) {
+    j["figures"] = gpu_stats::sourceNote(r.gpuStats);
+    Json gpus = Json::array();
+    for (const gpu_stats::GpuStats& g : r.gpuStats) gpus.push_back(Json::parse(gpu_stats::toJson(g).dump()));
+    j["gpus"] = gpus;
+  }
   return j;
 }
+
+namespace {
+
+// The fragment shader of each configuration on each measured GPU (Mali: Mesa's cycle bound and
+// its pipe; Adreno: instructions, as ir3 prints no cycles).
+std::string gpuMarkdown(const EvalReport& r) {
+  std::string s = "\n**Per-GPU figures**: " + gpu_stats::sourceNote(r.gpuStats) +
+                  ". Fragment shader of each configuration's variant (GLSL ES 3.00 as shipped), compiled by Mesa; "
+                  "Mali: Mesa's cycle bound and the pipe that sets it, Adreno: instructions (docs/mesa-statistics.md).\n";
+  std::vector<const gpu_stats::GpuStats*> measured;
+  for (const gpu_stats::GpuStats& g : r.gpuStats)
+    if (g.unavailable.empty()) measured.push_back(&g);
+  if (measured.empty()) return s;
+  s += "\n| configuration | variant |";
+  for (const gpu_stats::GpuStats* g : measured) s += " " + g->gpu + " |";
+  s += "\n|---|---|";
+  for (size_t i = 0; i < measured.size(); ++i) s += "--:|";
+  s += "\n";
+  for (const ConfigurationResult& c : r.results) {
+    s += "| " + c.configuration.name + " | " + c.variantKey + " |";
+    const std::string& name = c.sameAs.empty() ? c.configuration.name : c.sameAs;
+    for (const gpu_stats::GpuStats* g : measured) {
+      const gpu_stats::StageStats* f = g->find(name, "fragment");
+      std::string cell = !f ? "—"
+                         : f->cycles ? fmt("%.2f", *f->cycles) + (f->bound.empty() ? "" : " (" + f->bound + ")")
+                                     : fmt("%.0f", f->instructions) + " instr.";
+      s += " " + cell + " |";
+    }
+    s += "\n";
+  }
+  return s;
+}
+
+}  // namespace
 
 std::string reportMarkdown(const EvalReport& r) {
   std::string s = "# `matc eval`: " + r.material + "\n\n";
@@ -188,6 +229,7 @@ std::string reportMarkdown(const EvalReport& r) {
   if (!sunIbl.empty())
     s += "\nFragment cycles of the sun + IBL variant (`<tier>.dir1`, no point light; what the tiers' cost goals "
          "refer to), tiers as shipped: " + sunIbl + ".\n";
+  if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
   for (const std::string& v : r.viewNames) s += " " + v + " |";
   s += "\n|---|";

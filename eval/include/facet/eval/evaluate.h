@@ -12,6 +12,7 @@
 #include "facet/eval/configurations.h"
 #include "facet/eval/grid_scene.h"
 #include "facet/eval/metrics.h"
+#include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/module.h"
 #include "facet/permutations/variant_key.h"
 
@@ -54,6 +55,9 @@ struct ConfigurationResult {
   double sunIblVsHigh = 0;
   double timeVsReference = 0;   // median over the paired renders of this time ÷ reference's (0: not timed)
   bool pareto = false;          // no other configuration has both fewer cycles and a higher PSNR
+  // The GLSL ES 3.00 pair of variantKey as shipped, for per-GPU figures (addGpuFigures); empty
+  // for a configuration with the same maths as an earlier one.
+  std::vector<gpu_stats::ShaderPair> glslEs;
 };
 
 struct EvalReport {
@@ -66,6 +70,9 @@ struct EvalReport {
   bool fp16Emulation = false;
   compiler::MobileCostWeights weights;
   std::vector<ConfigurationResult> results;  // results[0] is reference as shipped
+  // Per-GPU figures from Mesa's compilers (addGpuFigures), one per GPU asked for; the pairs are
+  // named by configuration. Empty: the cost model's figures only.
+  std::vector<gpu_stats::GpuStats> gpuStats;
 };
 
 struct EvalError {
@@ -76,5 +83,10 @@ struct EvalError {
 // Runs the evaluation. Fails on a build error (with the material's line where known), a scene
 // that cannot be read or rendered, or no Vulkan device.
 std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptions& options, EvalError* error);
+
+// Compiles every measured configuration's shaders (ConfigurationResult::glslEs) with Mesa's
+// compilers for `gpus` (docs/mesa-statistics.md) into report->gpuStats. A GPU that cannot be
+// measured says why there; never fails.
+void addGpuFigures(EvalReport* report, const std::vector<std::string>& gpus, const gpu_stats::MesaTool& tool);
 
 }  // namespace facet::eval
