@@ -6,7 +6,6 @@
 
 #include "commands.h"
 #include "facet/compiler/mobile_cost.h"
-#include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
 #include "facet/runtime/scene.h"
@@ -41,13 +40,13 @@ void printCosts(const package::Package& pkg) {
   for (const package::Variant& v : pkg.variants) {
     for (const package::Shader& s : v.shaders) {
       if (s.target != package::Target::Spirv) continue;
-      compiler::StageCost c;
       compiler::MobileStageCost m;
       std::string error;
-      if (!compiler::analyseSpirvCost(words(s), &c, &error) || !compiler::estimateMobileCost(words(s), &m, &error)) {
+      if (!compiler::estimateMobileCost(words(s), &m, &error)) {
         std::printf("  %-18s %-8s (%s)\n", v.key.c_str(), package::toString(s.stage), error.c_str());
         continue;
       }
+      const compiler::InstructionCounts& c = m.counts.instructions;
       std::printf("  %-18s %-8s %5u %6u %6u %4u %4u %8u %7.0f%% %7.2f\n", v.key.c_str(), package::toString(s.stage),
                   c.aluOps, c.scalarAluOps, c.transcendentalOps, c.divisions, c.textureSamples, c.varyingComponents,
                   c.relaxedPercent(), m.cycles);

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <map>
 
-#include "facet/compiler/spirv_cost.h"
+#include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/module.h"
 #include "facet/permutations/tiers.h"
@@ -32,11 +32,11 @@ std::vector<uint32_t> spirvOf(const facet::compiler::BuildResult& built, const s
   return {};
 }
 
-facet::compiler::StageCost costOf(const std::vector<uint32_t>& words) {
-  facet::compiler::StageCost cost;
+facet::compiler::InstructionCounts costOf(const std::vector<uint32_t>& words) {
+  facet::compiler::OpClassCounts counts;
   std::string error;
-  EXPECT_TRUE(facet::compiler::analyseSpirvCost(words, &cost, &error)) << error;
-  return cost;
+  EXPECT_TRUE(facet::compiler::countOpClasses(words, &counts, &error)) << error;
+  return counts.instructions;
 }
 
 using facet::test::psnr;

@@ -69,6 +69,34 @@ bool isTextureSample(uint32_t op) {
 
 bool isDerivative(uint32_t op) { return op >= SpvOpDPdx && op <= SpvOpFwidthCoarse; }
 
+// InstructionCounts' classes: one SPIR-V instruction each, whatever the model makes of it.
+bool isAluInstruction(uint32_t op) {
+  return (op >= SpvOpConvertFToU && op <= SpvOpQuantizeToF16) ||  // conversions
+         (op >= SpvOpSNegate && op <= SpvOpDot) ||                // arithmetic
+         (op >= SpvOpAny && op <= SpvOpFUnordGreaterThanEqual) || // logic, select, comparisons
+         (op >= SpvOpShiftRightLogical && op <= SpvOpNot);        // bit operations
+}
+
+bool isDivisionInstruction(uint32_t op) {
+  return op == SpvOpFDiv || op == SpvOpSDiv || op == SpvOpUDiv || op == SpvOpFRem || op == SpvOpFMod ||
+         op == SpvOpSRem || op == SpvOpSMod || op == SpvOpUMod;
+}
+
+// GLSL.std.450 instructions that run on the special-function unit (or contain such an op:
+// normalize and length take an inverse square root or a square root).
+bool isTranscendentalInstruction(uint32_t ext) {
+  switch (ext) {
+    case GLSLstd450Sin: case GLSLstd450Cos: case GLSLstd450Tan: case GLSLstd450Asin: case GLSLstd450Acos:
+    case GLSLstd450Atan: case GLSLstd450Sinh: case GLSLstd450Cosh: case GLSLstd450Tanh: case GLSLstd450Asinh:
+    case GLSLstd450Acosh: case GLSLstd450Atanh: case GLSLstd450Atan2: case GLSLstd450Pow: case GLSLstd450Exp:
+    case GLSLstd450Log: case GLSLstd450Exp2: case GLSLstd450Log2: case GLSLstd450Sqrt: case GLSLstd450InverseSqrt:
+    case GLSLstd450Length: case GLSLstd450Distance: case GLSLstd450Normalize: case GLSLstd450Refract:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // The module's types, constants and decorations: what the body instructions refer to.
 struct ModuleFacts {
   std::unordered_map<uint32_t, uint32_t> components;  // type id -> scalar components
@@ -106,6 +134,33 @@ float wordAsFloat(uint32_t w) {
 class Counter {
  public:
   Counter(const ModuleFacts& facts, OpClassCounts* counts) : facts_(facts), c_(*counts) {}
+
+  // InstructionCounts of the body: the instructions as written, no fusion or expansion.
+  void countInstructions(const std::vector<BodyInstruction>& body) {
+    InstructionCounts& k = c_.instructions;
+    for (const BodyInstruction& ins : body) {
+      const uint32_t op = ins.opcode;
+      if (ins.words.size() < 3) continue;
+      const uint32_t n = facts_.componentsOf(ins.operand(1)), result = ins.operand(2);
+      bool counted = false;
+      if (op == SpvOpExtInst && ins.words.size() >= 5 && ins.operand(3) == facts_.glslStd) {
+        if (isTranscendentalInstruction(ins.operand(4))) {
+          ++k.transcendentalOps;
+        } else {
+          ++k.aluOps;
+          k.scalarAluOps += n;
+        }
+        counted = true;
+      } else if (isAluInstruction(op)) {
+        ++k.aluOps;
+        k.scalarAluOps += n;
+        counted = true;
+      }
+      if (isDivisionInstruction(op)) ++k.divisions;
+      if (isTextureSample(op)) ++k.textureSamples;
+      if (counted && facts_.relaxed.count(result)) ++k.relaxedOps;
+    }
+  }
 
   void count(const std::vector<BodyInstruction>& body) {
     // How often each value is used: a multiply used once, by an add, fuses into an FMA.
@@ -428,8 +483,18 @@ bool countOpClasses(const std::vector<uint32_t>& words, OpClassCounts* counts, s
     if (inFunction && op != SpvOpFunction) body.push_back({op, std::vector<uint32_t>(ins.words, ins.words + ins.count)});
   }, error);
   if (!walked) return false;
-  Counter(facts, counts).count(body);
+  Counter counter(facts, counts);
+  counter.count(body);
+  counter.countInstructions(body);
   counts->fragment = facts.fragment;
+  for (const auto& [variable, pointerType] : facts.inputs) {
+    if (facts.builtins.count(variable)) continue;
+    auto pointee = facts.pointee.find(pointerType);
+    const uint32_t type = pointee == facts.pointee.end() ? 0 : pointee->second;
+    if (facts.builtins.count(type)) continue;
+    auto n = facts.components.find(type);  // an input block or array of them: no scalar components counted
+    counts->instructions.varyingComponents += n == facts.components.end() ? 0 : n->second;
+  }
   if (facts.fragment) {
     for (const auto& [variable, pointerType] : facts.inputs) {
       if (facts.builtins.count(variable)) continue;

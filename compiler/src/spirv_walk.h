@@ -1,5 +1,5 @@
 // Bounds-checked iteration over the instructions of a SPIR-V module, shared by the passes that
-// read raw words (spirv_cost, lower_relaxed_to_quantized). The words may come from a package
+// read raw words (mobile_cost, lower_relaxed_to_quantized). The words may come from a package
 // file, so no operand is read past its instruction and no string past its words.
 #pragma once
 

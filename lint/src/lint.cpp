@@ -109,9 +109,9 @@ class VariantRules {
                     number(limit->second),
                 "budget");
     }
-    if (b.minRelaxedPercent && f.cost.relaxedPercent() < *b.minRelaxedPercent)
+    if (b.minRelaxedPercent && f.instructions().relaxedPercent() < *b.minRelaxedPercent)
       finding(ir::Severity::Error,
-              where(key, stage) + ": " + number(f.cost.relaxedPercent()) + " % of float ops in mediump, below the " +
+              where(key, stage) + ": " + number(f.instructions().relaxedPercent()) + " % of float ops in mediump, below the " +
                   t->first + " budget's " + number(*b.minRelaxedPercent) + " %",
               "budget");
   }
@@ -155,8 +155,7 @@ bool variantFigures(const package::Variant& v, VariantFigures* figures, std::str
       *error = "no SPIR-V";
       return false;
     }
-    if (!compiler::estimateMobileCost(words, &dest->mobile, error) || !compiler::analyseSpirvCost(words, &dest->cost, error) ||
-        !compiler::analyseStageInterface(words, &dest->interface, error))
+    if (!compiler::estimateMobileCost(words, &dest->mobile, error) || !compiler::analyseStageInterface(words, &dest->interface, error))
       return false;
   }
   return true;
@@ -172,12 +171,12 @@ std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) 
   // Cycles in hundredths, as reports print them: a baseline compares what a reader sees.
   return {
       {"cycles", std::round(s.mobile.cycles * 100.0) / 100.0},
-      {"alu", s.cost.aluOps},
-      {"scalar_alu", s.cost.scalarAluOps},
-      {"transcendental", s.cost.transcendentalOps},
-      {"divisions", s.cost.divisions},
-      {"textures", s.cost.textureSamples},
-      {"varying_components", s.cost.varyingComponents},
+      {"alu", s.instructions().aluOps},
+      {"scalar_alu", s.instructions().scalarAluOps},
+      {"transcendental", s.instructions().transcendentalOps},
+      {"divisions", s.instructions().divisions},
+      {"textures", s.instructions().textureSamples},
+      {"varying_components", s.instructions().varyingComponents},
       {"input_vectors", s.interface.inputVectors},
       {"output_vectors", s.interface.outputVectors},
       {"uniform_vectors", s.interface.uniformVectors},

@@ -52,7 +52,7 @@ std::string uriPath(const std::string& path) {
 json figuresJson(const StageFigures& s) {
   json j = json::object();
   for (const auto& [name, value] : namedFigures(s)) j[name] = value;
-  j["relaxed_percent"] = s.cost.relaxedPercent();
+  j["relaxed_percent"] = s.instructions().relaxedPercent();
   return j;
 }
 
@@ -75,9 +75,9 @@ std::string formatText(const std::vector<LintedFile>& files) {
       for (auto [name, s] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}}) {
         char line[160];
         std::snprintf(line, sizeof line, "  %-18s %-8s %6.2f %4u %6u %6u %4u %4u %8u %8u %8u %7.0f%%\n", v.key.c_str(),
-                      name, s->mobile.cycles, s->cost.aluOps, s->cost.scalarAluOps, s->cost.transcendentalOps, s->cost.divisions,
-                      s->cost.textureSamples, s->cost.varyingComponents, s->interface.uniformVectors,
-                      s->interface.samplers, s->cost.relaxedPercent());
+                      name, s->mobile.cycles, s->instructions().aluOps, s->instructions().scalarAluOps, s->instructions().transcendentalOps, s->instructions().divisions,
+                      s->instructions().textureSamples, s->instructions().varyingComponents, s->interface.uniformVectors,
+                      s->interface.samplers, s->instructions().relaxedPercent());
         out += line;
       }
     if (!f.result.gpuStats.empty()) out += "  " + gpu_stats::sourceNote(f.result.gpuStats) + "\n";

@@ -4,8 +4,8 @@
 import os
 import subprocess
 
-# `matc info` static cost table header -> the StageCost field it prints
-# (compiler/include/facet/compiler/spirv_cost.h).
+# `matc info` static cost table header -> the InstructionCounts field it prints
+# (compiler/include/facet/compiler/mobile_cost.h); the data files keep them under "spirv_cost".
 COST_COLUMNS = {
     "alu": "aluOps",
     "scalar": "scalarAluOps",
@@ -19,7 +19,7 @@ COST_COLUMNS = {
 
 
 def parse_cost_table(text):
-    """{variant: {stage: {StageCost field: number}}} from `matc info`'s static cost table (its
+    """{variant: {stage: {InstructionCounts field: number}}} from `matc info`'s static cost table (its
     title may span lines; the header row starts with "variant stage")."""
     lines = text.splitlines()
     try:

@@ -44,12 +44,32 @@ enum class OpClass {
 inline constexpr size_t kOpClassCount = size_t(OpClass::kCount);
 const char* toString(OpClass c);
 
+// The stage's SPIR-V instructions as they are, before the model classes or weighs them (DESIGN.md,
+// "Measuring"): the op counts `matc info` prints and `matc lint`'s budgets and baselines read.
+// One per instruction (a vec3 multiply is 1 ALU op, 3 scalar ones); counted by the same walk as
+// the op classes.
+struct InstructionCounts {
+  uint32_t aluOps = 0;            // arithmetic, logic, comparison, conversion instructions
+  uint32_t scalarAluOps = 0;      // the same, weighted by result components (scalar-ALU cost)
+  uint32_t transcendentalOps = 0; // exp/log/pow/sin/cos/sqrt/inversesqrt (incl. inside normalize, length)
+  uint32_t divisions = 0;         // float and integer divisions and remainders
+  uint32_t textureSamples = 0;    // sample, fetch and gather instructions
+  uint32_t varyingComponents = 0; // scalar components of the stage's non-built-in inputs (any stage)
+  uint32_t relaxedOps = 0;        // ALU + transcendental results decorated RelaxedPrecision (mediump)
+
+  double relaxedPercent() const {
+    uint32_t all = aluOps + transcendentalOps;
+    return all == 0 ? 0.0 : 100.0 * relaxedOps / all;
+  }
+};
+
 struct OpClassCounts {
   std::array<double, kOpClassCount> ops{};  // indexed by OpClass
   double fmaRelaxed = 0;                   // the part of ops[Fma] whose result is RelaxedPrecision (mediump)
   uint32_t varyingComponents = 0;          // fragment stage: scalar components of highp inputs
   uint32_t varyingComponentsRelaxed = 0;   // ... and of mediump (RelaxedPrecision) inputs
   bool fragment = false;                   // the module's entry point is a fragment shader
+  InstructionCounts instructions;
 
   double& operator[](OpClass c) { return ops[size_t(c)]; }
   double operator[](OpClass c) const { return ops[size_t(c)]; }

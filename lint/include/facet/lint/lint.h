@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "facet/compiler/mobile_cost.h"
-#include "facet/compiler/spirv_cost.h"
 #include "facet/compiler/spirv_interface.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/diagnostics.h"
@@ -21,7 +20,8 @@ namespace facet::lint {
 
 struct StageFigures {
   compiler::MobileStageCost mobile;  // the mobile cost model (estimated cycles), as `matc eval` reports it
-  compiler::StageCost cost;
+  // The stage's instruction counts, from the same walk of its SPIR-V as the model's op classes.
+  const compiler::InstructionCounts& instructions() const { return mobile.counts.instructions; }
   compiler::StageInterface interface;
 };
 
