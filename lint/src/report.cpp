@@ -73,11 +73,12 @@ std::string formatText(const std::vector<LintedFile>& files) {
     out += "  variant            stage    cycles  alu scalar transc  div  tex varyings uniforms samplers  mediump\n";
     for (const VariantFigures& v : f.result.variants)
       for (auto [name, s] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}}) {
+        const compiler::InstructionCounts& k = s->instructions();
         char line[160];
         std::snprintf(line, sizeof line, "  %-18s %-8s %6.2f %4u %6u %6u %4u %4u %8u %8u %8u %7.0f%%\n", v.key.c_str(),
-                      name, s->mobile.cycles, s->instructions().aluOps, s->instructions().scalarAluOps, s->instructions().transcendentalOps, s->instructions().divisions,
-                      s->instructions().textureSamples, s->instructions().varyingComponents, s->interface.uniformVectors,
-                      s->interface.samplers, s->instructions().relaxedPercent());
+                      name, s->mobile.cycles, k.aluOps, k.scalarAluOps, k.transcendentalOps, k.divisions,
+                      k.textureSamples, k.varyingComponents, s->interface.uniformVectors, s->interface.samplers,
+                      k.relaxedPercent());
         out += line;
       }
     if (!f.result.gpuStats.empty()) out += "  " + gpu_stats::sourceNote(f.result.gpuStats) + "\n";
