@@ -9,8 +9,8 @@
 #include <filesystem>
 
 #include "facet/compiler/build.h"
-#include "facet/gpu_stats/package_pairs.h"
 #include "facet/eval/prepared_frame.h"
+#include "facet/gpu_stats/package_pairs.h"
 #include "facet/package.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/png.h"
