@@ -39,6 +39,12 @@ class Calibration(unittest.TestCase):
     def test_committed_fit_is_what_the_committed_data_gives(self):
         self.assertClose(self.fits, load("mesa-fit.json")["fits"])
 
+    def test_committed_cpp_weights_are_what_fit_py_generates(self):
+        # compiler/src/mesa_calibration.cpp: matc's calibrated estimate (test_mobile_cost checks
+        # the C++ features against per_variant).
+        with open(os.path.join(ROOT, "compiler", "src", "mesa_calibration.cpp")) as f:
+            self.assertEqual(f.read(), fit.cpp_source(self.fits))
+
     def test_every_example_variant_was_measured_on_every_gpu(self):
         self.assertEqual(len(self.data["variants"]), 32)  # 4 materials x 4 tiers x 2 light counts
         for name, v in self.data["variants"].items():

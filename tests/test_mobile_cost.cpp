@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/mobile_cost.h"
@@ -209,4 +212,35 @@ TEST(MobileCost, RedPlasticTiersRankAsOnMali) {
   EXPECT_GT(cycles("mid.dir1"), cycles("low.dir1"));
   EXPECT_GT(cycles("high.dir0"), cycles("mid.dir0"));
   EXPECT_GT(cycles("high.dir0"), cycles("low.dir0"));
+}
+
+// The C++ side of the calibration (compiler/src/mesa_calibration.cpp) gives what fit.py's fit
+// gives, for every example variant of the committed data on every GPU: the same features, in
+// the same order, and weights as committed. (tests/test_mesa_calibration.py checks that the
+// file is what fit.py generates.)
+TEST(MobileCost, CalibratedEstimateIsTheCommittedFit) {
+  auto load = [](const std::string& name) {
+    std::ifstream in(std::string(FACET_SOURCE_DIR) + "/tools/calibration/" + name);
+    return nlohmann::json::parse(in);
+  };
+  const nlohmann::json stats = load("mesa-stats.json"), fits = load("mesa-fit.json")["fits"];
+  ASSERT_EQ(facet::compiler::gpuCalibrations().size(), fits.size());
+  size_t checked = 0;
+  for (const auto& [gpu, fit] : fits.items()) {
+    const facet::compiler::GpuCalibration* calibration = facet::compiler::findGpuCalibration(gpu);
+    ASSERT_NE(calibration, nullptr) << gpu;
+    EXPECT_DOUBLE_EQ(calibration->crossValidatedMaxError, fit["cross_validated"]["max_abs_relative"].get<double>());
+    for (const auto& [variant, figures] : fit["per_variant"].items()) {
+      const nlohmann::json& ops = stats["variants"][variant]["op_counts"]["fragment"];
+      facet::compiler::OpClassCounts counts;
+      for (size_t k = 0; k < facet::compiler::kOpClassCount; ++k)
+        counts.ops[k] = ops.at(facet::compiler::toString(OpClass(k))).get<double>();
+      counts.fmaRelaxed = ops.at("fma_relaxed").get<double>();
+      const double want = figures["after"].get<double>();
+      EXPECT_NEAR(facet::compiler::calibratedEstimate(counts, *calibration), want, 1e-3 * want) << gpu << " " << variant;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 3u * 32u);
+  EXPECT_EQ(facet::compiler::findGpuCalibration("mali-t880"), nullptr);
 }

@@ -546,6 +546,23 @@ MobileStageCost weighMobileCost(const OpClassCounts& counts, const MobileCostWei
   return cost;
 }
 
+const GpuCalibration* findGpuCalibration(const std::string& gpu) {
+  for (const GpuCalibration& c : gpuCalibrations())
+    if (gpu == c.gpu) return &c;
+  return nullptr;
+}
+
+double calibratedEstimate(const OpClassCounts& f, const GpuCalibration& c) {
+  // The features of tools/mesa_stats/fit.py (FEATURES), in CalibratedClass order.
+  const std::array<double, kCalibratedClassCount> features = {
+      f.fmaRelaxed, f[OpClass::Fma] - f.fmaRelaxed, f[OpClass::Convert], f[OpClass::Sfu], f[OpClass::ExpLog],
+      f[OpClass::Sqrt], f[OpClass::Pow], f[OpClass::SinCos], f[OpClass::Tan], f[OpClass::InverseTrig],
+      f[OpClass::Atan2], f[OpClass::Division], f[OpClass::TextureSample]};
+  double sum = 0;
+  for (size_t k = 0; k < kCalibratedClassCount; ++k) sum += c.weights[k] * features[k];
+  return sum;
+}
+
 bool estimateMobileCost(const std::vector<uint32_t>& words, MobileStageCost* cost, std::string* error,
                         const MobileCostWeights& weights) {
   OpClassCounts counts;
