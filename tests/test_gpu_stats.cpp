@@ -105,6 +105,15 @@ TEST(GpuOption, LintWithoutTheCompilersFallsBackToTheCostModelAndSaysSo) {
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("cycles: the mobile cost model"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("mali-g52 not measured: no Mesa build at /nonexistent/facet-mesa"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mali-g52: calibrated estimate of fragment cycles from the op counts instead"), std::string::npos)
+      << r.out;
+  facet::test::CommandResult j = facet::test::run(matc() + " lint " + material() +
+                                                  " --tiers high --gpu mali-g52 --mesa-prefix /nonexistent/facet-mesa --format json");
+  ASSERT_EQ(j.exitCode, 0) << j.err;
+  const nlohmann::json gpu = nlohmann::json::parse(j.out)["files"][0]["gpus"][0];
+  EXPECT_EQ(gpu["calibrated_estimate"]["measure"], "fragment cycles");
+  EXPECT_GT(gpu["calibrated_estimate"]["variants"]["high.dir1"].get<double>(),
+            gpu["calibrated_estimate"]["variants"]["high.dir0"].get<double>());  // a sun costs more than none
 }
 
 TEST(GpuOption, EvalReportWithoutTheCompilersSaysWhichFiguresItUsed) {

@@ -49,6 +49,18 @@ std::string uriPath(const std::string& path) {
   return out;
 }
 
+// A GPU Mesa could not measure: the calibrated estimate of each variant's fragment figure
+// (compiler/mobile_cost.h, calibratedEstimate), or nullptr when the GPU has no calibration.
+const compiler::GpuCalibration* estimateFor(const gpu_stats::GpuStats& g) {
+  return g.unavailable.empty() ? nullptr : compiler::findGpuCalibration(g.gpu);
+}
+
+std::string percent(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f %%", 100.0 * fraction);
+  return buf;
+}
+
 json figuresJson(const StageFigures& s) {
   json j = json::object();
   for (const auto& [name, value] : namedFigures(s)) j[name] = value;
@@ -83,6 +95,17 @@ std::string formatText(const std::vector<LintedFile>& files) {
       }
     if (!f.result.gpuStats.empty()) out += "  " + gpu_stats::sourceNote(f.result.gpuStats) + "\n";
     for (const gpu_stats::GpuStats& g : f.result.gpuStats) {
+      if (const compiler::GpuCalibration* c = estimateFor(g)) {
+        out += "  " + g.gpu + ": calibrated estimate of " + c->measure + " from the op counts instead (cross-validated error " +
+               percent(c->crossValidatedMeanError) + " mean, " + percent(c->crossValidatedMaxError) +
+               " max; docs/mesa-statistics.md)\n";
+        for (const VariantFigures& v : f.result.variants) {
+          char line[96];
+          std::snprintf(line, sizeof line, "    %-18s fragment         %.2f\n", v.key.c_str(),
+                        compiler::calibratedEstimate(v.fragment.mobile.counts, *c));
+          out += line;
+        }
+      }
       if (!g.unavailable.empty()) continue;
       out += "  " + g.gpu + " (" + g.renderer + ")\n";
       for (const auto& [key, stages] : g.shaders)
@@ -121,7 +144,17 @@ std::string formatJson(const std::vector<LintedFile>& files) {
       jf["variants"].push_back({{"key", v.key}, {"vertex", figuresJson(v.vertex)}, {"fragment", figuresJson(v.fragment)}});
     if (!f.result.gpuStats.empty()) {
       jf["gpus"] = json::array();
-      for (const gpu_stats::GpuStats& g : f.result.gpuStats) jf["gpus"].push_back(gpu_stats::toJson(g));
+      for (const gpu_stats::GpuStats& g : f.result.gpuStats) {
+        json jg = gpu_stats::toJson(g);
+        if (const compiler::GpuCalibration* c = estimateFor(g)) {
+          json estimate = {{"measure", c->measure}, {"cross_validated_mean_error", c->crossValidatedMeanError},
+                           {"cross_validated_max_error", c->crossValidatedMaxError}, {"variants", json::object()}};
+          for (const VariantFigures& v : f.result.variants)
+            estimate["variants"][v.key] = compiler::calibratedEstimate(v.fragment.mobile.counts, *c);
+          jg["calibrated_estimate"] = estimate;
+        }
+        jf["gpus"].push_back(jg);
+      }
     }
     root["files"].push_back(jf);
   }
