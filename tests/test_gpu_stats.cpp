@@ -123,6 +123,8 @@ TEST(GpuOption, EvalReportWithoutTheCompilersSaysWhichFiguresItUsed) {
   c.configuration.name = "high";
   c.variantKey = "high.dir1";
   c.glslEs = kPair;
+  c.fragment.counts[facet::compiler::OpClass::Fma] = 100;
+  c.fragment.counts.fmaRelaxed = 100;
   report.results.push_back(c);
   MesaTool tool;
   tool.prefix = "/nonexistent/facet-mesa";
@@ -130,7 +132,13 @@ TEST(GpuOption, EvalReportWithoutTheCompilersSaysWhichFiguresItUsed) {
   ASSERT_EQ(report.gpuStats.size(), 1u);
   std::string md = facet::eval::reportMarkdown(report);
   EXPECT_NE(md.find("mali-g57 not measured: no Mesa build at /nonexistent/facet-mesa"), std::string::npos) << md;
-  EXPECT_EQ(md.find("| configuration | variant | mali-g57 |"), std::string::npos) << md;  // no column without figures
+  EXPECT_EQ(md.find("| configuration | variant | mali-g57 |"), std::string::npos) << md;  // no measured column
+  EXPECT_NE(md.find("| configuration | variant | mali-g57 (estimate) |"), std::string::npos) << md;
+  char cell[64];
+  std::snprintf(cell, sizeof cell, "| high | high.dir1 | %.2f |",
+                facet::compiler::calibratedEstimate(c.fragment.counts, *facet::compiler::findGpuCalibration("mali-g57")));
+  EXPECT_NE(md.find(cell), std::string::npos) << md;
+  EXPECT_NE(std::string(cell), "| high | high.dir1 | 0.00 |");
   EXPECT_EQ(facet::eval::reportJson(report)["gpus"][0]["unavailable"].get<std::string>().rfind("no Mesa build", 0), 0u);
 }
 

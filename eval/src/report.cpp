@@ -147,7 +147,18 @@ Json reportJson(const EvalReport& r) {
   if (!r.gpuStats.empty()) {
     j["figures"] = gpu_stats::sourceNote(r.gpuStats);
     Json gpus = Json::array();
-    for (const gpu_stats::GpuStats& g : r.gpuStats) gpus.push_back(Json::parse(gpu_stats::toJson(g).dump()));
+    for (const gpu_stats::GpuStats& g : r.gpuStats) {
+      Json jg = Json::parse(gpu_stats::toJson(g).dump());
+      const compiler::GpuCalibration* c = g.unavailable.empty() ? nullptr : compiler::findGpuCalibration(g.gpu);
+      if (c) {
+        Json estimate{{"measure", c->measure}, {"cross_validated_mean_error", c->crossValidatedMeanError},
+                      {"cross_validated_max_error", c->crossValidatedMaxError}, {"configurations", Json::object()}};
+        for (const ConfigurationResult& k : r.results)
+          estimate["configurations"][k.configuration.name] = compiler::calibratedEstimate(k.fragment.counts, *c);
+        jg["calibrated_estimate"] = estimate;
+      }
+      gpus.push_back(jg);
+    }
     j["gpus"] = gpus;
   }
   return j;
@@ -160,21 +171,36 @@ namespace {
 std::string gpuMarkdown(const EvalReport& r) {
   std::string s = "\n**Per-GPU figures**: " + gpu_stats::sourceNote(r.gpuStats) +
                   ". Fragment shader of each configuration's variant (GLSL ES 3.00 as shipped), compiled by Mesa; "
-                  "Mali: Mesa's cycle bound and the pipe that sets it, Adreno: instructions (docs/mesa-statistics.md).\n";
-  std::vector<const gpu_stats::GpuStats*> measured;
-  for (const gpu_stats::GpuStats& g : r.gpuStats)
-    if (g.unavailable.empty()) measured.push_back(&g);
-  if (measured.empty()) return s;
+                  "Mali: Mesa's cycle bound and the pipe that sets it, Adreno: instructions (docs/mesa-statistics.md). "
+                  "A GPU Mesa could not measure gets the calibrated estimate from the op counts instead (\"estimate\": "
+                  "Mali cycles, Adreno non-nop instructions; docs/mesa-statistics.md, \"Calibration\").\n";
+  struct Column {
+    const gpu_stats::GpuStats* measured = nullptr;
+    const compiler::GpuCalibration* estimate = nullptr;
+    std::string title;
+  };
+  std::vector<Column> columns;
+  for (const gpu_stats::GpuStats& g : r.gpuStats) {
+    if (g.unavailable.empty())
+      columns.push_back({&g, nullptr, g.gpu});
+    else if (const compiler::GpuCalibration* c = compiler::findGpuCalibration(g.gpu))
+      columns.push_back({nullptr, c, g.gpu + " (estimate)"});
+  }
+  if (columns.empty()) return s;
   s += "\n| configuration | variant |";
-  for (const gpu_stats::GpuStats* g : measured) s += " " + g->gpu + " |";
+  for (const Column& col : columns) s += " " + col.title + " |";
   s += "\n|---|---|";
-  for (size_t i = 0; i < measured.size(); ++i) s += "--:|";
+  for (size_t i = 0; i < columns.size(); ++i) s += "--:|";
   s += "\n";
   for (const ConfigurationResult& c : r.results) {
     s += "| " + c.configuration.name + " | " + c.variantKey + " |";
     const std::string& name = c.sameAs.empty() ? c.configuration.name : c.sameAs;
-    for (const gpu_stats::GpuStats* g : measured) {
-      const gpu_stats::StageStats* f = g->find(name, "fragment");
+    for (const Column& col : columns) {
+      if (col.estimate) {
+        s += " " + fmt("%.2f", compiler::calibratedEstimate(c.fragment.counts, *col.estimate)) + " |";
+        continue;
+      }
+      const gpu_stats::StageStats* f = col.measured->find(name, "fragment");
       std::string cell = !f ? "—"
                          : f->cycles ? fmt("%.2f", *f->cycles) + (f->bound.empty() ? "" : " (" + f->bound + ")")
                                      : fmt("%.0f", f->instructions) + " instr.";
