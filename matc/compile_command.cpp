@@ -90,7 +90,7 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   options->pointLightCounts = args.pointLights;
   if (args.scene.empty()) return 0;
   std::string error;
-  auto scene = runtime::loadScene(args.scene, &error);
+  auto scene = loadSceneManifest(args.scene, &error);
   if (!scene) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;

@@ -9,6 +9,7 @@
 
 #include "facet/package.h"
 #include "facet/runtime/image_texture.h"
+#include "facet/runtime/json_document.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/scene_frame.h"
@@ -111,7 +112,7 @@ TEST(HostileScenes, OnlyRegularFilesAreRead) {
 
 TEST(HostileScenes, TruncatedImageSaysWhy) {
   std::string dir = facet::test::scratchDir("hostile-png");
-  std::string png = facet::test::readText(facet::test::examplePath("textures/tiles.png"));
+  std::string png = facet::test::readText(facet::test::examplePath("scenes/textures/tiles.png"));
   std::string path = write(dir + "/cut.png", png.substr(0, png.size() / 2));
   std::string error;
   EXPECT_FALSE(facet::runtime::loadImageTexture(path, true, &error));
@@ -251,4 +252,40 @@ TEST(HostileScenes, JpegIsRefusedNotDecoded) {
   std::string error;
   EXPECT_FALSE(facet::runtime::decodeImageTexture(data, true, "x.jpg", &error));
   EXPECT_EQ(error.rfind("x.jpg: cannot read image: ", 0), 0u) << error;
+}
+
+// A scene names images relative to its folder and may not leave it (by `..`, an absolute path or
+// a symbolic link), unless the app widens the asset root.
+TEST(HostileScenes, ImagesOutsideTheSceneFolderAreRefused) {
+  namespace fs = std::filesystem;
+  std::string dir = facet::test::scratchDir("hostile-paths");
+  fs::create_directories(dir + "/scene/textures");
+  write(dir + "/secret.png", "not an image");
+  write(dir + "/scene/textures/inside.png", "not an image");
+  std::error_code ec;
+  fs::remove(dir + "/scene/textures/link.png", ec);
+  fs::create_symlink(dir + "/secret.png", dir + "/scene/textures/link.png");
+  const std::string scenePath = dir + "/scene/s.json";
+  auto sceneNaming = [](const std::string& image) {
+    return R"({"environment": {"image": ")" + image + R"("}, "objects": [{"material": "m", "params": {"albedo": ")" +
+           image + R"("}}]})";
+  };
+  for (const std::string& image : {std::string("../secret.png"), dir + "/secret.png", std::string("textures/link.png"),
+                                   std::string("textures/../../secret.png")}) {
+    std::string error;
+    EXPECT_FALSE(facet::runtime::parseScene(scenePath, sceneNaming(image), &error)) << image;
+    EXPECT_NE(error.find(": error: /environment/image: '" + facet::runtime::shownValue(image) + "' is outside the folder this scene may read images from"),
+              std::string::npos) << error;
+    error.clear();
+    EXPECT_FALSE(facet::runtime::parseScene(scenePath,
+        R"({"objects": [{"material": "m", "params": {"albedo": ")" + image + R"("}}]})", &error)) << image;
+    EXPECT_NE(error.find("/objects/0/params/albedo: '"), std::string::npos) << error;
+  }
+  std::string error;
+  auto inside = facet::runtime::parseScene(scenePath, sceneNaming("textures/inside.png"), &error);
+  ASSERT_TRUE(inside) << error;
+  EXPECT_EQ(inside->objects.at(0).textures.at("albedo"), dir + "/scene/textures/inside.png");
+  auto widened = facet::runtime::parseScene(scenePath, sceneNaming("../secret.png"), &error, {.assetRoot = dir});
+  ASSERT_TRUE(widened) << error;
+  EXPECT_EQ(widened->environment->image, dir + "/secret.png");
 }

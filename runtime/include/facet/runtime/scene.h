@@ -82,9 +82,18 @@ struct Scene {
   std::vector<SceneObject> objects;
 };
 
+// Which files a scene may name (texture and environment images). By default only those under the
+// scene file's folder, so that a scene from elsewhere cannot make the app read (and, through a
+// rendered image, reveal) other files of the machine: `../`, absolute paths and symbolic links that
+// lead out of the folder are errors. An app that trusts its scenes widens it (facet-view --asset-root).
+struct SceneReadOptions {
+  std::string assetRoot;  // "": the scene file's folder
+};
+
 // Parses scene JSON. Errors read `<path>:<line>:<col>: error: ...` for syntax errors and
 // `<path>: error: <json pointer>: ...` for wrong values.
-std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error);
-std::optional<Scene> loadScene(const std::string& path, std::string* error);
+std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
+                                const SceneReadOptions& options = {});
+std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options = {});
 
 }  // namespace facet::runtime
