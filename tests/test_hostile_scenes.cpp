@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <filesystem>
 #include <fstream>
 
 #include "facet/package.h"
+#include "facet/runtime/environment.h"
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/json_document.h"
 #include "facet/runtime/material.h"
@@ -23,6 +26,25 @@ std::string parseError(const std::string& json) {
   EXPECT_FALSE(scene) << "accepted: " << json;
   return error;
 }
+
+// A width × height Radiance .hdr of one colour, RGBE (128, 64, 32, 129) = (1, 0.5, 0.25): flat
+// pixels, or run-length scanlines (the form encoders write for 8 <= width < 32768).
+std::string radianceFile(int width, int height, bool runLength) {
+  std::string file = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+  const char rgbe[4] = {char(128), char(64), char(32), char(129)};
+  for (int row = 0; row < height; ++row) {
+    if (!runLength) {
+      for (int x = 0; x < width; ++x) file.append(rgbe, 4);
+      continue;
+    }
+    file += {char(2), char(2), char(width >> 8), char(width & 255)};
+    for (char channel : rgbe)
+      for (int left = width; left > 0; left -= std::min(left, 127)) file += {char(128 + std::min(left, 127)), channel};
+  }
+  return file;
+}
+
+std::span<const uint8_t> bytesOf(const std::string& s) { return {reinterpret_cast<const uint8_t*>(s.data()), s.size()}; }
 
 std::string write(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
@@ -105,8 +127,8 @@ TEST(HostileScenes, OnlyRegularFilesAreRead) {
   EXPECT_EQ(error, fifo + ": error: cannot open the scene file: not a regular file");
   EXPECT_FALSE(facet::runtime::loadScene(dir, &error));
   EXPECT_EQ(error, dir + ": error: cannot open the scene file: not a regular file");
-  int w = 0, h = 0;
-  EXPECT_FALSE(facet::runtime::probeImageSize(fifo, &w, &h, &error));  // every texture and environment load calls it first
+  std::vector<uint8_t> bytes;
+  EXPECT_FALSE(facet::runtime::readImageFile(fifo, &bytes, &error));  // every texture and environment load reads through it
   EXPECT_EQ(error, fifo + ": cannot read image: not a regular file");
 }
 
@@ -288,4 +310,47 @@ TEST(HostileScenes, ImagesOutsideTheSceneFolderAreRefused) {
   auto widened = facet::runtime::parseScene(scenePath, sceneNaming("../secret.png"), &error, {.assetRoot = dir});
   ASSERT_TRUE(widened) << error;
   EXPECT_EQ(widened->environment->image, dir + "/secret.png");
+}
+
+// stb_image decodes a Radiance file cut short as if the missing pixels were black; the runtime
+// refuses it and says where it ends.
+TEST(HostileScenes, TruncatedRadianceImageIsRefused) {
+  for (bool runLength : {true, false}) {
+    const int width = runLength ? 16 : 4, height = width / 2;
+    const std::string whole = radianceFile(width, height, runLength);
+    std::string error;
+    auto image = facet::runtime::decodeEquirectImage(bytesOf(whole), "sky.hdr", &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_EQ(image->rgb.at(0), 1.0f);
+    EXPECT_EQ(image->rgb.at(image->rgb.size() - 2), 0.5f);
+    EXPECT_EQ(image->rgb.back(), 0.25f);
+    const size_t pixelBytes = whole.size() - (whole.find('\n', whole.find("+X")) + 1);  // after the resolution line
+    for (size_t cut : {size_t(1), size_t(2), pixelBytes / 2, pixelBytes}) {
+      const std::string truncated = whole.substr(0, whole.size() - cut);
+      EXPECT_FALSE(facet::runtime::decodeEquirectImage(bytesOf(truncated), "sky.hdr", &error)) << cut;
+      EXPECT_EQ(error.rfind("sky.hdr: cannot read image: Radiance pixel data ends at byte " + std::to_string(truncated.size()), 0), 0u) << error;
+      EXPECT_NE(error.find("(the file is truncated)"), std::string::npos) << error;
+    }
+  }
+  // Through a scene: the message names the file.
+  std::string dir = facet::test::scratchDir("hostile-hdr");
+  const std::string sky = radianceFile(16, 8, true);
+  write(dir + "/cut.hdr", sky.substr(0, sky.size() - 3));
+  std::string error;
+  auto scene = facet::runtime::parseScene(dir + "/s.json", R"({"environment": {"image": "cut.hdr"}, "objects": []})", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::buildEnvironmentLighting(*scene, 1.0, &error));
+  EXPECT_EQ(error.rfind(dir + "/cut.hdr: cannot read image: Radiance pixel data ends", 0), 0u) << error;
+}
+
+// The fuzzer's Radiance seeds are valid files (flat and run-length coded), so fuzzing starts from
+// inputs that reach the pixel decoder.
+TEST(HostileScenes, RadianceFuzzSeedsDecode) {
+  for (const auto& entry : std::filesystem::directory_iterator(facet::test::sourceDir() + "/tests/fuzz/image_corpus")) {
+    std::string bytes = facet::test::readText(entry.path().string());
+    std::string error;
+    auto image = facet::runtime::decodeEquirectImage(bytesOf(bytes), entry.path().filename().string(), &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_GT(*std::max_element(image->rgb.begin(), image->rgb.end()), 0.0f) << entry.path();
+  }
 }
