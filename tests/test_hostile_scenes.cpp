@@ -354,3 +354,51 @@ TEST(HostileScenes, RadianceFuzzSeedsDecode) {
     EXPECT_GT(*std::max_element(image->rgb.begin(), image->rgb.end()), 0.0f) << entry.path();
   }
 }
+
+namespace {
+
+// The start of a PNG of width × height RGBA8: signature and header chunk only (enough for a size
+// probe; a decoder fails on it).
+std::string pngHeader(uint32_t width, uint32_t height) {
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0d", 4) + "IHDR";
+  for (uint32_t v : {width, height})
+    for (int shift = 24; shift >= 0; shift -= 8) png += char((v >> shift) & 0xff);
+  png += std::string("\x08\x06\0\0\0", 5) + std::string(4, '\0');  // 8-bit RGBA, CRC (not checked)
+  return png;
+}
+
+}  // namespace
+
+// Each image is within its own limit, but a scene's images together are bounded before any is
+// decoded (eight distinct 8192² textures used to take 8.5 GB).
+TEST(HostileScenes, SceneImageMemoryIsBoundedBeforeDecoding) {
+  std::string packages = facet::test::writePackagesFromTexts("hostile-budget-packages", {R"(material textured {
+    param albedo: texture(srgb) = vec4(0.5, 0.5, 0.5, 1.0)
+    surface {
+        baseColor = sample(params.albedo, vertex.uv0).rgb
+    }
+}
+)"});
+  std::string dir = facet::test::scratchDir("hostile-budget");
+  std::string objects;
+  for (int i = 0; i < 3; ++i) {
+    write(dir + "/big" + std::to_string(i) + ".png", pngHeader(8192, 8192));
+    objects += std::string(i ? ", " : "") + R"({"material": "textured", "params": {"albedo": "big)" +
+               std::to_string(i) + R"(.png"}})";
+  }
+  std::string error;
+  auto scene = facet::runtime::parseScene(dir + "/s.json", R"({"sun": {}, "objects": [)" + objects + "]}", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
+  // 3 × (8192² × 4 bytes and its mip chain, 4/3 of it) = 1024 MiB.
+  EXPECT_EQ(error.rfind("the scene's images decode to 1024 MiB (3 images; largest: " + dir + "/big", 0), 0u) << error;
+  EXPECT_NE(error.find("a scene may use at most 512 MiB of decoded images"), std::string::npos) << error;
+
+  // One of them is within the budget: the decoder then reports the file itself.
+  scene = facet::runtime::parseScene(dir + "/s.json",
+      R"({"sun": {}, "objects": [{"material": "textured", "params": {"albedo": "big0.png"}}]})", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
+  EXPECT_EQ(error.rfind("object 0: " + dir + "/big0.png: cannot decode image", 0), 0u) << error;
+}
