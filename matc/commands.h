@@ -1,10 +1,12 @@
 // matc's commands. Each returns the process exit code: 0 success, 1 input errors, 2 usage errors.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "facet/compiler/build.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::matc {
@@ -20,6 +22,7 @@ struct CompileArgs {
   unsigned jobs = 0;       // variants compiled at once; 0: one per hardware thread
   std::string cacheDir;    // --cache; "" for the default (defaultCacheDir())
   bool noCache = false;    // --no-cache
+  uint32_t cacheMaxMiB = uint32_t(compiler::kDefaultCacheMaxBytes >> 20);  // --cache-max-size
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
 int compileCommand(const CompileArgs& args);

@@ -131,6 +131,7 @@ int compileCommand(const CompileArgs& args) {
       std::fflush(stderr);
     };
   if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
+  options.cacheMaxBytes = uint64_t(args.cacheMaxMiB) << 20;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);

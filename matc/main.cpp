@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
       "cache of compiled variants (default: $XDG_CACHE_HOME/facet/matc or ~/.cache/facet/matc); the package is the same "
       "bytes with or without it");
   compileCmd->add_flag("--no-cache", compile.noCache, "neither read nor write the cache")->excludes(cacheOption);
+  compileCmd->add_option("--cache-max-size", compile.cacheMaxMiB,
+                         "bound on the cache in MiB: least recently used variants are removed after each compile "
+                         "(default 512; 0: no bound)")
+      ->check(CLI::Range(0u, 1u << 20));
   compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
                          "package is byte-identical for any value")
       ->check(CLI::Range(1u, 256u));
