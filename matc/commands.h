@@ -9,6 +9,10 @@
 #include "facet/compiler/build.h"
 #include "facet/permutations/variant_key.h"
 
+namespace CLI {
+class App;
+}
+
 namespace facet::matc {
 
 struct CompileArgs {
@@ -53,8 +57,11 @@ int lintCommand(const LintArgs& args);
 struct PostArgs {
   std::string cpp;         // generated C++ source for the runtime
   std::string emitSource;  // folder for every generated shader source, or ""
-  bool acesTonemap = true;
+  std::string toneCurve = "aces";  // compiler::ToneCurve by name
+  bool dither = false;
 };
+// The options of `matc post`, shared with facet_post_compiler (the same command, built alone).
+void addPostOptions(CLI::App* command, PostArgs* args);
 int postCommand(const PostArgs& args);
 
 struct EvalArgs {

@@ -71,9 +71,7 @@ int main(int argc, char** argv) {
   lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
-  postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
-  postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
-  postCmd->add_flag("!--no-tonemap", post.acesTonemap, "leave out the ACES tone curve (HDR clamped to [0, 1])");
+  facet::matc::addPostOptions(postCmd, &post);
   facet::matc::EvalArgs eval;
   CLI::App* evalCmd = app.add_subcommand(
       "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");

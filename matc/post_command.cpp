@@ -1,5 +1,6 @@
 // matc post: the runtime's post pass, compiled by the compiler's post domain and written as C++
 // source the runtime builds in (runtime/CMakeLists.txt runs this at build time).
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 
@@ -9,9 +10,21 @@
 
 namespace facet::matc {
 
+void addPostOptions(CLI::App* command, PostArgs* args) {
+  command->add_option("--cpp", args->cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
+  command->add_option("--emit-source", args->emitSource, "also write every generated shader source to this folder");
+  command
+      ->add_option("--tone-curve", args->toneCurve,
+                   "aces (filmic, default) | neutral (Khronos PBR Neutral: keeps hue below its knee) | none (HDR "
+                   "clamped to [0, 1])")
+      ->check(CLI::IsMember({"aces", "neutral", "none"}));
+  command->add_flag("--dither", args->dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
+}
+
 int postCommand(const PostArgs& args) {
   compiler::PostEffects effects;
-  effects.acesTonemap = args.acesTonemap;
+  effects.toneCurve = *compiler::toneCurveFromString(args.toneCurve);  // CLI11 checked the name
+  effects.dither = args.dither;
   compiler::PostShaders shaders;
   std::string error;
   if (!compiler::buildPostShaders(effects, &shaders, &error)) {

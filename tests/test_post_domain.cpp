@@ -48,7 +48,7 @@ TEST(PostDomain, FetchFormsReadTheirOwnPixelInEachApi) {
 TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
   const PostShaders on = build({});
   PostEffects noTonemap;
-  noTonemap.acesTonemap = false;
+  noTonemap.toneCurve = ToneCurve::None;
   const PostShaders off = build(noTonemap);
   EXPECT_NE(on.key, off.key);
   // The chunk is not assembled in (its call sits in a preprocessor branch that is off), and
@@ -63,6 +63,30 @@ TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
   }
   // And it costs nothing: the optimized fragment is smaller without it.
   EXPECT_LT(off.sampledFragment.spirv.size(), on.sampledFragment.spirv.size());
+}
+
+TEST(PostDomain, KeysNameTheEffectsAndEachEffectOnlyItsOwnCode) {
+  PostEffects neutral;
+  neutral.toneCurve = ToneCurve::Neutral;
+  PostEffects dithered = neutral;
+  dithered.dither = true;
+  const PostShaders n = build(neutral), d = build(dithered);
+  EXPECT_EQ(n.key, "neutral");
+  EXPECT_EQ(d.key, "neutral+dither");
+  EXPECT_EQ(postVariantKey({}), "aces");
+  for (const PostStage* stage : {&n.sampledFragment, &n.fetchFragment, &d.sampledFragment, &d.fetchFragment}) {
+    EXPECT_TRUE(contains(stage->glslEs, "vec3 tonemap_khronos_neutral(vec3"));
+    EXPECT_FALSE(contains(stage->glslEs, "vec3 tonemap_aces_fitted(vec3"));
+  }
+  EXPECT_FALSE(contains(n.sampledFragment.glslEs, "vec3 dither_triangular_8bit(vec3"));
+  EXPECT_FALSE(contains(n.fetchFragment.glslEs, "#define FACET_POST_DITHER"));
+  EXPECT_TRUE(contains(d.fetchFragment.glslEs, "#define FACET_POST_DITHER"));
+  EXPECT_TRUE(contains(d.sampledFragment.glslEs, "dither_triangular_8bit(encoded, gl_FragCoord.xy)"));
+  // The noise needs highp (pixel coordinates beyond fp16's integers): Metal computes it in float.
+  EXPECT_TRUE(contains(d.sampledFragment.msl, "fract(")) << d.sampledFragment.msl;
+  EXPECT_GT(d.sampledFragment.spirv.size(), n.sampledFragment.spirv.size());
+  EXPECT_EQ(toneCurveFromString("neutral"), ToneCurve::Neutral);
+  EXPECT_FALSE(toneCurveFromString("filmic"));
 }
 
 TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {

@@ -22,12 +22,16 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   if (read == PostRead::FramebufferFetch) text += "#extension GL_EXT_shader_framebuffer_fetch : require\n";
   if (read == PostRead::SubpassInput) text += "#define FACET_POST_SUBPASS_INPUT 1\n";
   if (read == PostRead::FramebufferFetch) text += "#define FACET_POST_FRAMEBUFFER_FETCH 1\n";
-  if (effects.acesTonemap) text += "#define FACET_POST_ACES 1\n";
+  if (effects.toneCurve == ToneCurve::Aces) text += "#define FACET_POST_ACES 1\n";
+  if (effects.toneCurve == ToneCurve::Neutral) text += "#define FACET_POST_NEUTRAL 1\n";
+  if (effects.dither) text += "#define FACET_POST_DITHER 1\n";
   text += "precision mediump float;\nprecision highp int;\n";
   std::vector<std::string> files;
   if (std::string(templateName).find(".frag.") != std::string::npos) {
-    if (effects.acesTonemap) files.push_back("tonemap_aces.glsl");
+    if (effects.toneCurve == ToneCurve::Aces) files.push_back("tonemap_aces.glsl");
+    if (effects.toneCurve == ToneCurve::Neutral) files.push_back("tonemap_neutral.glsl");
     files.push_back("srgb.glsl");
+    if (effects.dither) files.push_back("dither.glsl");
   }
   files.push_back(templateName);
   for (const std::string& name : files) {
@@ -119,7 +123,24 @@ void appendText(std::string* cpp, const char* name, const std::string& text) {
 
 }  // namespace
 
-std::string postVariantKey(const PostEffects& effects) { return effects.acesTonemap ? "aces" : "none"; }
+const char* toString(ToneCurve curve) {
+  switch (curve) {
+    case ToneCurve::None: return "none";
+    case ToneCurve::Aces: return "aces";
+    case ToneCurve::Neutral: return "neutral";
+  }
+  return "?";
+}
+
+std::optional<ToneCurve> toneCurveFromString(std::string_view name) {
+  for (ToneCurve c : {ToneCurve::None, ToneCurve::Aces, ToneCurve::Neutral})
+    if (name == toString(c)) return c;
+  return std::nullopt;
+}
+
+std::string postVariantKey(const PostEffects& effects) {
+  return std::string(toString(effects.toneCurve)) + (effects.dither ? "+dither" : "");
+}
 
 bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error) {
   PostShaders shaders;

@@ -8,16 +8,27 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace facet::compiler {
 
+enum class ToneCurve {
+  None,     // HDR clamped to [0, 1]
+  Aces,     // chunks/tonemap_aces.glsl: filmic (Narkowicz's ACES fit)
+  Neutral,  // chunks/tonemap_neutral.glsl: Khronos PBR Neutral, hue-preserving below its knee
+};
+const char* toString(ToneCurve curve);
+std::optional<ToneCurve> toneCurveFromString(std::string_view name);
+
 struct PostEffects {
-  bool acesTonemap = true;  // chunks/tonemap_aces.glsl; off: HDR clamped to [0, 1]
+  ToneCurve toneCurve = ToneCurve::Aces;
+  bool dither = false;  // chunks/dither.glsl: triangular noise of ±1 step before 8-bit quantisation
 };
 
-// A stable name of the effects, e.g. "aces" or "none": the post variant key.
+// A stable name of the effects, e.g. "aces", "neutral+dither" or "none": the post variant key.
 std::string postVariantKey(const PostEffects& effects);
 
 struct PostStage {
