@@ -59,6 +59,7 @@ struct PostArgs {
   std::string emitSource;  // folder for every generated shader source, or ""
   std::string toneCurve = "aces";  // compiler::ToneCurve by name
   bool dither = false;
+  bool everyVariant = false;       // every combination of effects (what the runtime embeds)
 };
 // The options of `matc post`, shared with facet_post_compiler (the same command, built alone).
 void addPostOptions(CLI::App* command, PostArgs* args);

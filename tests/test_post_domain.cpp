@@ -90,9 +90,13 @@ TEST(PostDomain, KeysNameTheEffectsAndEachEffectOnlyItsOwnCode) {
 }
 
 TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {
-  const std::string cpp = postShadersCpp(build({}));
-  EXPECT_TRUE(contains(cpp, "const PostShaders& postShaders()"));
-  EXPECT_TRUE(contains(cpp, "kFetchSpirv"));
+  PostEffects neutral;
+  neutral.toneCurve = ToneCurve::Neutral;
+  const std::string cpp = postShadersCpp({build({}), build(neutral)});
+  EXPECT_TRUE(contains(cpp, "const std::vector<PostShaders>& postVariants()"));
+  EXPECT_TRUE(contains(cpp, "kFetchSpirv1"));
+  EXPECT_TRUE(contains(cpp, "{{\"neutral\", false}, vs1,"));
+  EXPECT_EQ(everyPostEffects().size(), 6u);
   EXPECT_TRUE(contains(cpp, "GL_EXT_shader_framebuffer_fetch"));
 }
 

@@ -224,13 +224,31 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
   return o;
 }
 
+// The effects of the post pass. The tone curves are those the runtime embeds a post variant for
+// (compiler/post.h ToneCurve; a backend refuses any other).
+PostSettings post(const json& j) {
+  onlyKeys(j, "/post", {"toneCurve", "dither"});
+  PostSettings p;
+  if (j.contains("toneCurve")) {
+    p.toneCurve = string(j["toneCurve"], "/post/toneCurve");
+    if (p.toneCurve != "aces" && p.toneCurve != "neutral" && p.toneCurve != "none")
+      fail("/post/toneCurve", "expected \"aces\", \"neutral\" or \"none\", not '" + shownValue(p.toneCurve) + "'");
+  }
+  if (j.contains("dither")) {
+    if (!j["dither"].is_boolean()) fail("/post/dither", "expected true or false");
+    p.dither = j["dither"].get<bool>();
+  }
+  return p;
+}
+
 Scene scene(const json& j, const AssetPaths& assets) {
-  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects"});
+  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
+  if (j.contains("post")) s.post = post(j["post"]);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");

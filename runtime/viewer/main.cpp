@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
       options.validation = validation;
       options.postPath = postPath;
       options.readBackHdr = keepHdr;
+      options.post = scene->post;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
                                                 : facet::runtime::GlContextKind::Auto;
       options.postPath = postPath;
       options.readBackHdr = keepHdr;
+      options.post = scene->post;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);

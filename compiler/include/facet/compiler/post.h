@@ -39,6 +39,7 @@ struct PostStage {
 
 struct PostShaders {
   std::string key;
+  PostEffects effects;
   PostStage vertex;          // full-screen triangle, shared by both forms
   PostStage sampledFragment; // separate path
   // Merged path. glslang 12 rejects the GL_EXT_shader_framebuffer_fetch #extension, so the GLES
@@ -49,9 +50,12 @@ struct PostShaders {
 // Returns false with *error set when a backend rejects the assembled code (a compiler defect).
 bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error);
 
-// C++ source defining facet::runtime::postShaders() (runtime/include/facet/render_backend.h)
-// with these shaders' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
+// Every combination of effects: what the runtime embeds.
+std::vector<PostEffects> everyPostEffects();
+
+// C++ source defining facet::runtime::postVariants() (runtime/include/facet/render_backend.h)
+// with these variants' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
 // without linking the compiler.
-std::string postShadersCpp(const PostShaders& shaders);
+std::string postShadersCpp(const std::vector<PostShaders>& variants);
 
 }  // namespace facet::compiler

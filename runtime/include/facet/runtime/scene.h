@@ -10,6 +10,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "facet/render_path.h"
+
 namespace facet::runtime {
 
 struct Camera {
@@ -80,6 +82,7 @@ struct Scene {
   double skyLuminance = 0;         // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
   std::vector<SceneObject> objects;
+  PostSettings post;               // the post pass's tone curve and dithering (docs/scene-format.md)
 };
 
 // Which files a scene may name (texture and environment images). By default only those under the
