@@ -1,11 +1,17 @@
 // matc's commands. Each returns the process exit code: 0 success, 1 input errors, 2 usage errors.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "facet/compiler/build.h"
 #include "facet/permutations/variant_key.h"
+
+namespace CLI {
+class App;
+}
 
 namespace facet::matc {
 
@@ -20,6 +26,7 @@ struct CompileArgs {
   unsigned jobs = 0;       // variants compiled at once; 0: one per hardware thread
   std::string cacheDir;    // --cache; "" for the default (defaultCacheDir())
   bool noCache = false;    // --no-cache
+  uint32_t cacheMaxMiB = uint32_t(compiler::kDefaultCacheMaxBytes >> 20);  // --cache-max-size
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
 int compileCommand(const CompileArgs& args);
@@ -52,8 +59,12 @@ int lintCommand(const LintArgs& args);
 struct PostArgs {
   std::string cpp;         // generated C++ source for the runtime
   std::string emitSource;  // folder for every generated shader source, or ""
-  bool acesTonemap = true;
+  std::string toneCurve = "aces";  // compiler::ToneCurve by name
+  bool dither = false;
+  bool everyVariant = false;       // every combination of effects (what the runtime embeds)
 };
+// The options of `matc post`, shared with facet_post_compiler (the same command, built alone).
+void addPostOptions(CLI::App* command, PostArgs* args);
 int postCommand(const PostArgs& args);
 
 struct EvalArgs {

@@ -90,7 +90,7 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   options->pointLightCounts = args.pointLights;
   if (args.scene.empty()) return 0;
   std::string error;
-  auto scene = runtime::loadScene(args.scene, &error);
+  auto scene = loadSceneManifest(args.scene, &error);
   if (!scene) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
@@ -131,6 +131,7 @@ int compileCommand(const CompileArgs& args) {
       std::fflush(stderr);
     };
   if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
+  options.cacheMaxBytes = uint64_t(args.cacheMaxMiB) << 20;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);

@@ -180,7 +180,7 @@ int printShader(const package::Package& pkg, const InfoArgs& args) {
 // clear error (exit 1) when the package lacks it.
 int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
   std::string error;
-  auto scene = runtime::loadScene(scenePath, &error);
+  auto scene = loadSceneManifest(scenePath, &error);
   if (!scene) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;

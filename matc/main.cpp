@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
       "cache of compiled variants (default: $XDG_CACHE_HOME/facet/matc or ~/.cache/facet/matc); the package is the same "
       "bytes with or without it");
   compileCmd->add_flag("--no-cache", compile.noCache, "neither read nor write the cache")->excludes(cacheOption);
+  compileCmd->add_option("--cache-max-size", compile.cacheMaxMiB,
+                         "bound on the cache in MiB: least recently used variants are removed after each compile "
+                         "(default 512; 0: no bound)")
+      ->check(CLI::Range(0u, 1u << 20));
   compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
                          "package is byte-identical for any value")
       ->check(CLI::Range(1u, 256u));
@@ -69,9 +73,7 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--mesa-prefix", lint.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
-  postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
-  postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
-  postCmd->add_flag("!--no-tonemap", post.acesTonemap, "leave out the ACES tone curve (HDR clamped to [0, 1])");
+  facet::matc::addPostOptions(postCmd, &post);
   facet::matc::EvalArgs eval;
   CLI::App* evalCmd = app.add_subcommand(
       "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");

@@ -1,5 +1,6 @@
 // matc post: the runtime's post pass, compiled by the compiler's post domain and written as C++
 // source the runtime builds in (runtime/CMakeLists.txt runs this at build time).
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 
@@ -9,14 +10,32 @@
 
 namespace facet::matc {
 
+void addPostOptions(CLI::App* command, PostArgs* args) {
+  command->add_option("--cpp", args->cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
+  command->add_option("--emit-source", args->emitSource, "also write every generated shader source to this folder");
+  command
+      ->add_option("--tone-curve", args->toneCurve,
+                   "aces (filmic, default) | neutral (Khronos PBR Neutral: keeps hue below its knee) | none (HDR "
+                   "clamped to [0, 1])")
+      ->check(CLI::IsMember({"aces", "neutral", "none"}));
+  command->add_flag("--dither", args->dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
+  command->add_flag("--every-variant", args->everyVariant,
+                    "build every combination of effects into the C++ source (the runtime's build does)");
+}
+
 int postCommand(const PostArgs& args) {
-  compiler::PostEffects effects;
-  effects.acesTonemap = args.acesTonemap;
-  compiler::PostShaders shaders;
+  compiler::PostEffects chosen;
+  chosen.toneCurve = *compiler::toneCurveFromString(args.toneCurve);  // CLI11 checked the name
+  chosen.dither = args.dither;
+  const std::vector<compiler::PostEffects> effects =
+      args.everyVariant ? compiler::everyPostEffects() : std::vector<compiler::PostEffects>{chosen};
+  std::vector<compiler::PostShaders> variants(effects.size());
   std::string error;
-  if (!compiler::buildPostShaders(effects, &shaders, &error)) {
-    printError(error);
-    return 1;
+  for (size_t i = 0; i < effects.size(); ++i) {
+    if (!compiler::buildPostShaders(effects[i], &variants[i], &error)) {
+      printError(error);
+      return 1;
+    }
   }
   auto write = [&](const std::string& path, const std::string& text) {
     const std::vector<uint8_t> bytes(text.begin(), text.end());
@@ -32,18 +51,22 @@ int postCommand(const PostArgs& args) {
       printError("cannot create '" + args.emitSource + "': " + ec.message());
       return 1;
     }
-    const std::string stem = (fs::path(args.emitSource) / ("post." + shaders.key)).string();
-    if (!write(stem + ".vert.es300.glsl", shaders.vertex.glslEs) || !write(stem + ".vert.metal", shaders.vertex.msl) ||
-        !write(stem + ".frag.es300.glsl", shaders.sampledFragment.glslEs) ||
-        !write(stem + ".frag.metal", shaders.sampledFragment.msl) ||
-        !write(stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs) ||
-        !write(stem + ".fetch.frag.metal", shaders.fetchFragment.msl)) {
-      return 1;
+    for (const compiler::PostShaders& shaders : variants) {
+      const std::string stem = (fs::path(args.emitSource) / ("post." + shaders.key)).string();
+      if (!write(stem + ".vert.es300.glsl", shaders.vertex.glslEs) || !write(stem + ".vert.metal", shaders.vertex.msl) ||
+          !write(stem + ".frag.es300.glsl", shaders.sampledFragment.glslEs) ||
+          !write(stem + ".frag.metal", shaders.sampledFragment.msl) ||
+          !write(stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs) ||
+          !write(stem + ".fetch.frag.metal", shaders.fetchFragment.msl)) {
+        return 1;
+      }
     }
   }
-  if (!write(args.cpp, compiler::postShadersCpp(shaders))) return 1;
-  std::printf("post %s: %zu + %zu + %zu SPIR-V words -> %s\n", shaders.key.c_str(), shaders.vertex.spirv.size(),
-              shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size(), args.cpp.c_str());
+  if (!write(args.cpp, compiler::postShadersCpp(variants))) return 1;
+  for (const compiler::PostShaders& shaders : variants)
+    std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", shaders.key.c_str(), shaders.vertex.spirv.size(),
+                shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());
+  std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }
 

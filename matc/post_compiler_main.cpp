@@ -8,9 +8,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"facet_post_compiler: compiles the runtime's post pass into C++ source (as `matc post`)"};
   facet::matc::PostArgs post;
-  app.add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
-  app.add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
-  app.add_flag("!--no-tonemap", post.acesTonemap, "leave out the ACES tone curve (HDR clamped to [0, 1])");
+  facet::matc::addPostOptions(&app, &post);
   CLI11_PARSE(app, argc, argv);
   return facet::matc::postCommand(post);
 }

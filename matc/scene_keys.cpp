@@ -4,6 +4,10 @@
 
 namespace facet::matc {
 
+std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::string* error) {
+  return runtime::loadScene(path, error, runtime::SceneReadOptions{.assetRoot = "/"});
+}
+
 std::optional<permutations::VariantKey> sceneKeyFor(const runtime::Scene& scene, const std::string& scenePath,
                                                     const std::string& material, bool lit, std::string* error) {
   auto tier = permutations::tierFromString(scene.tier);

@@ -11,6 +11,10 @@
 
 namespace facet::matc {
 
+// Reads a scene as a manifest: which materials, tier and lights it uses. matc never opens the
+// images a scene names, so it does not confine them to the scene's folder as a renderer must.
+std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::string* error);
+
 // Nullopt, with *error set, when the scene's tier is unknown or no object of the scene uses the
 // material.
 std::optional<permutations::VariantKey> sceneKeyFor(const runtime::Scene& scene, const std::string& scenePath,

@@ -7,7 +7,8 @@
 # tests/fuzz/regressions/, with the dictionary tests/fuzz/material.dict; then
 # tests/fuzz/fuzz_package from real packages (tests/fuzz/package_corpus/) and its past findings
 # (tests/fuzz/package_regressions/), most mutants resealed with a recomputed checksum; then
-# tests/fuzz/fuzz_scene from examples/scenes/ and tests/fuzz/fuzz_image from examples/textures/. New inputs
+# tests/fuzz/fuzz_scene from examples/scenes/ and tests/fuzz/fuzz_image from examples/scenes/textures/ and
+# tests/fuzz/image_corpus/ (Radiance files). New inputs
 # go to a temporary working corpus, so the committed corpus never churns.
 #
 # Fails (non-zero) on any crash, sanitizer report, leak, hang (> 5 s per input) or out-of-memory
@@ -67,4 +68,4 @@ fuzz() {
 fuzz fuzz_material tests/fuzz/material.dict tests/fuzz/corpus tests/fuzz/regressions
 fuzz fuzz_package "" tests/fuzz/package_corpus tests/fuzz/package_regressions
 fuzz fuzz_scene "" examples/scenes
-fuzz fuzz_image "" examples/textures tests/fuzz/image_regressions
+fuzz fuzz_image "" examples/scenes/textures tests/fuzz/image_corpus tests/fuzz/image_regressions

@@ -1,5 +1,5 @@
-// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB for an RGBA8
-// UNORM target. Lights were pre-exposed on the CPU, so no exposure multiply happens here.
+// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, dither, for an
+// RGBA8 UNORM target. Each effect is compiled in only when enabled (compiler/post.h PostEffects). Lights were pre-exposed on the CPU, so no exposure multiply happens here.
 // Assembled by the compiler's post domain (compiler/src/post.cpp), which defines one way to read
 // the pixel:
 //   FACET_POST_SUBPASS_INPUT       merged path, Vulkan (and MSL [[color(0)]] via SPIRV-Cross):
@@ -33,8 +33,14 @@ void main() {
     vec3 hdr = FACET_POST_HDR();
 #if defined(FACET_POST_ACES)
     vec3 display = tonemap_aces_fitted(hdr);
+#elif defined(FACET_POST_NEUTRAL)
+    vec3 display = tonemap_khronos_neutral(hdr);
 #else
     vec3 display = hdr;  // no tone curve: srgb_from_linear clamps to [0, 1]
 #endif
-    fragColor = vec4(srgb_from_linear(display), 1.0);
+    vec3 encoded = srgb_from_linear(display);
+#if defined(FACET_POST_DITHER)
+    encoded = dither_triangular_8bit(encoded, gl_FragCoord.xy);  // last, on the value the target quantises
+#endif
+    fragColor = vec4(encoded, 1.0);
 }

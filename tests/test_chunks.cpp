@@ -399,5 +399,91 @@ TEST(Zioma, FacetFormConservesEnergy) {
   EXPECT_LE(worst, 1.0) << "at r=" << atR << " NoV=" << atV;
 }
 
+// --- post pass chunks ---
+
+namespace {
+
+// Khronos PBR Neutral in double, from the formulas in chunks/tonemap_neutral.glsl's header.
+glm::dvec3 khronosNeutral(glm::dvec3 c) {
+  const double start = 0.76, knee = 0.24;
+  c = glm::clamp(c, 0.0, 1024.0);
+  const double low = std::min(c.r, std::min(c.g, c.b));
+  c -= low < 0.08 ? low - 6.25 * low * low : 0.04;
+  const double peak = std::max(c.r, std::max(c.g, c.b));
+  if (peak < start) return c;
+  const double compressed = 1.0 - knee * knee / (peak + knee - start);
+  c *= compressed / peak;
+  const double toWhite = 1.0 - 1.0 / (0.15 * (peak - compressed) + 1.0);
+  return c * (1.0 - toWhite) + glm::dvec3(compressed) * toWhite;
+}
+
+}  // namespace
+
+// The neutral curve keeps colours below its knee (hue and saturation as authored, minus the
+// black-level offset) and compresses above it, continuously. Tolerance 2e-6 absolute: no
+// cancellation beyond 1 − d²/(…) near 1, each op correctly rounded in fp32.
+TEST(PostChunks, KhronosNeutralToneCurveMatchesReference) {
+  GpuEvalRequest req;
+  req.chunks = chunks({"tonemap_neutral.glsl"});
+  req.body = "result.xyz = tonemap_khronos_neutral(in0.xyz);";
+  for (double v : {0.0, 0.01, 0.05, 0.079, 0.081, 0.2, 0.5, 0.75, 0.77, 1.0, 2.0, 10.0, 100.0, 1e4})
+    for (glm::dvec3 tint : {glm::dvec3(1, 1, 1), glm::dvec3(1, 0.5, 0.2), glm::dvec3(0.1, 0.3, 1)}) {
+      req.in0.push_back(glm::vec4(glm::vec3(tint * v), 0));
+      req.in1.push_back({});
+    }
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    const glm::dvec3 ref = khronosNeutral(glm::dvec3(req.in0[i]));
+    for (int c = 0; c < 3; ++c) expectClose(result[c], ref[c], 0.0, 2e-6, "in " + std::to_string(req.in0[i][c]));
+  });
+  // Below the knee, a colour keeps its ratios (after the 0.04 offset): what the curve is for.
+  const glm::dvec3 mid = khronosNeutral({0.5, 0.25, 0.125});
+  EXPECT_NEAR((mid.r) / (mid.g), (0.5 - 0.04) / (0.25 - 0.04), 1e-12);
+}
+
+// Dither noise: triangular over (−1, 1) 8-bit steps, zero mean; a gradient flatter than one step
+// per pixel keeps its local mean (no bands) with it, and bands without it.
+TEST(PostChunks, TriangularDitherRemovesBandingFromASlowGradient) {
+  constexpr int kWidth = 256, kHeight = 64;
+  GpuEvalRequest req;
+  req.chunks = chunks({"dither.glsl"});
+  // in0.x: the encoded value; in1.xy: the pixel. result.x: dithered, result.y: the noise in steps.
+  req.body = "result.x = dither_triangular_8bit(vec3(in0.x), in1.xy).x;\n"
+             "result.y = (dither_triangular_8bit(vec3(0.5), in1.xy).x - 0.5) * 255.0;";
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      // Four 8-bit steps over 256 pixels: 1/64 of a step per pixel.
+      req.in0.push_back(glm::vec4(float((100.0 + 4.0 * x / kWidth) / 255.0), 0, 0, 0));
+      req.in1.push_back(glm::vec4(x + 0.5f, y + 0.5f, 0, 0));
+    }
+  req.precision = FloatPrecision::kMediump;
+  const auto out = run(req);
+  ASSERT_EQ(out.size(), req.in0.size());
+  double sum = 0, nearZero = 0;
+  for (const glm::vec4& r : out) {
+    EXPECT_GT(r.y, -1.0f);
+    EXPECT_LT(r.y, 1.0f);
+    sum += r.y;
+    nearZero += std::abs(r.y) < 0.5f ? 1 : 0;
+  }
+  EXPECT_NEAR(sum / double(out.size()), 0.0, 0.02);
+  EXPECT_NEAR(nearZero / double(out.size()), 0.75, 0.05) << "a triangular PDF puts 3/4 within half a step";
+  // Each column's mean 8-bit value against the gradient: within 0.15 step with dither; without
+  // it the columns between two levels are off by up to half a step (bands).
+  double worstDithered = 0, worstPlain = 0;
+  for (int x = 0; x < kWidth; ++x) {
+    double dithered = 0, plain = 0;
+    for (int y = 0; y < kHeight; ++y) {
+      const size_t i = size_t(y) * kWidth + size_t(x);
+      dithered += std::round(std::clamp(double(out[i].x), 0.0, 1.0) * 255.0);
+      plain += std::round(double(req.in0[i].x) * 255.0);
+    }
+    const double exact = 100.0 + 4.0 * x / kWidth;
+    worstDithered = std::max(worstDithered, std::abs(dithered / kHeight - exact));
+    worstPlain = std::max(worstPlain, std::abs(plain / kHeight - exact));
+  }
+  EXPECT_LT(worstDithered, 0.15);
+  EXPECT_GT(worstPlain, 0.45);
+}
+
 }  // namespace
 }  // namespace facet

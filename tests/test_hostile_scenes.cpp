@@ -3,12 +3,16 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <filesystem>
 #include <fstream>
 
 #include "facet/package.h"
+#include "facet/runtime/environment.h"
 #include "facet/runtime/image_texture.h"
+#include "facet/runtime/json_document.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/scene_frame.h"
@@ -22,6 +26,25 @@ std::string parseError(const std::string& json) {
   EXPECT_FALSE(scene) << "accepted: " << json;
   return error;
 }
+
+// A width × height Radiance .hdr of one colour, RGBE (128, 64, 32, 129) = (1, 0.5, 0.25): flat
+// pixels, or run-length scanlines (the form encoders write for 8 <= width < 32768).
+std::string radianceFile(int width, int height, bool runLength) {
+  std::string file = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+  const char rgbe[4] = {char(128), char(64), char(32), char(129)};
+  for (int row = 0; row < height; ++row) {
+    if (!runLength) {
+      for (int x = 0; x < width; ++x) file.append(rgbe, 4);
+      continue;
+    }
+    file += {char(2), char(2), char(width >> 8), char(width & 255)};
+    for (char channel : rgbe)
+      for (int left = width; left > 0; left -= std::min(left, 127)) file += {char(128 + std::min(left, 127)), channel};
+  }
+  return file;
+}
+
+std::span<const uint8_t> bytesOf(const std::string& s) { return {reinterpret_cast<const uint8_t*>(s.data()), s.size()}; }
 
 std::string write(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
@@ -104,14 +127,14 @@ TEST(HostileScenes, OnlyRegularFilesAreRead) {
   EXPECT_EQ(error, fifo + ": error: cannot open the scene file: not a regular file");
   EXPECT_FALSE(facet::runtime::loadScene(dir, &error));
   EXPECT_EQ(error, dir + ": error: cannot open the scene file: not a regular file");
-  int w = 0, h = 0;
-  EXPECT_FALSE(facet::runtime::probeImageSize(fifo, &w, &h, &error));  // every texture and environment load calls it first
+  std::vector<uint8_t> bytes;
+  EXPECT_FALSE(facet::runtime::readImageFile(fifo, &bytes, &error));  // every texture and environment load reads through it
   EXPECT_EQ(error, fifo + ": cannot read image: not a regular file");
 }
 
 TEST(HostileScenes, TruncatedImageSaysWhy) {
   std::string dir = facet::test::scratchDir("hostile-png");
-  std::string png = facet::test::readText(facet::test::examplePath("textures/tiles.png"));
+  std::string png = facet::test::readText(facet::test::examplePath("scenes/textures/tiles.png"));
   std::string path = write(dir + "/cut.png", png.substr(0, png.size() / 2));
   std::string error;
   EXPECT_FALSE(facet::runtime::loadImageTexture(path, true, &error));
@@ -251,4 +274,131 @@ TEST(HostileScenes, JpegIsRefusedNotDecoded) {
   std::string error;
   EXPECT_FALSE(facet::runtime::decodeImageTexture(data, true, "x.jpg", &error));
   EXPECT_EQ(error.rfind("x.jpg: cannot read image: ", 0), 0u) << error;
+}
+
+// A scene names images relative to its folder and may not leave it (by `..`, an absolute path or
+// a symbolic link), unless the app widens the asset root.
+TEST(HostileScenes, ImagesOutsideTheSceneFolderAreRefused) {
+  namespace fs = std::filesystem;
+  std::string dir = facet::test::scratchDir("hostile-paths");
+  fs::create_directories(dir + "/scene/textures");
+  write(dir + "/secret.png", "not an image");
+  write(dir + "/scene/textures/inside.png", "not an image");
+  std::error_code ec;
+  fs::remove(dir + "/scene/textures/link.png", ec);
+  fs::create_symlink(dir + "/secret.png", dir + "/scene/textures/link.png");
+  const std::string scenePath = dir + "/scene/s.json";
+  auto sceneNaming = [](const std::string& image) {
+    return R"({"environment": {"image": ")" + image + R"("}, "objects": [{"material": "m", "params": {"albedo": ")" +
+           image + R"("}}]})";
+  };
+  for (const std::string& image : {std::string("../secret.png"), dir + "/secret.png", std::string("textures/link.png"),
+                                   std::string("textures/../../secret.png")}) {
+    std::string error;
+    EXPECT_FALSE(facet::runtime::parseScene(scenePath, sceneNaming(image), &error)) << image;
+    EXPECT_NE(error.find(": error: /environment/image: '" + facet::runtime::shownValue(image) + "' is outside the folder this scene may read images from"),
+              std::string::npos) << error;
+    error.clear();
+    EXPECT_FALSE(facet::runtime::parseScene(scenePath,
+        R"({"objects": [{"material": "m", "params": {"albedo": ")" + image + R"("}}]})", &error)) << image;
+    EXPECT_NE(error.find("/objects/0/params/albedo: '"), std::string::npos) << error;
+  }
+  std::string error;
+  auto inside = facet::runtime::parseScene(scenePath, sceneNaming("textures/inside.png"), &error);
+  ASSERT_TRUE(inside) << error;
+  EXPECT_EQ(inside->objects.at(0).textures.at("albedo"), dir + "/scene/textures/inside.png");
+  auto widened = facet::runtime::parseScene(scenePath, sceneNaming("../secret.png"), &error, {.assetRoot = dir});
+  ASSERT_TRUE(widened) << error;
+  EXPECT_EQ(widened->environment->image, dir + "/secret.png");
+}
+
+// stb_image decodes a Radiance file cut short as if the missing pixels were black; the runtime
+// refuses it and says where it ends.
+TEST(HostileScenes, TruncatedRadianceImageIsRefused) {
+  for (bool runLength : {true, false}) {
+    const int width = runLength ? 16 : 4, height = width / 2;
+    const std::string whole = radianceFile(width, height, runLength);
+    std::string error;
+    auto image = facet::runtime::decodeEquirectImage(bytesOf(whole), "sky.hdr", &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_EQ(image->rgb.at(0), 1.0f);
+    EXPECT_EQ(image->rgb.at(image->rgb.size() - 2), 0.5f);
+    EXPECT_EQ(image->rgb.back(), 0.25f);
+    const size_t pixelBytes = whole.size() - (whole.find('\n', whole.find("+X")) + 1);  // after the resolution line
+    for (size_t cut : {size_t(1), size_t(2), pixelBytes / 2, pixelBytes}) {
+      const std::string truncated = whole.substr(0, whole.size() - cut);
+      EXPECT_FALSE(facet::runtime::decodeEquirectImage(bytesOf(truncated), "sky.hdr", &error)) << cut;
+      EXPECT_EQ(error.rfind("sky.hdr: cannot read image: Radiance pixel data ends at byte " + std::to_string(truncated.size()), 0), 0u) << error;
+      EXPECT_NE(error.find("(the file is truncated)"), std::string::npos) << error;
+    }
+  }
+  // Through a scene: the message names the file.
+  std::string dir = facet::test::scratchDir("hostile-hdr");
+  const std::string sky = radianceFile(16, 8, true);
+  write(dir + "/cut.hdr", sky.substr(0, sky.size() - 3));
+  std::string error;
+  auto scene = facet::runtime::parseScene(dir + "/s.json", R"({"environment": {"image": "cut.hdr"}, "objects": []})", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::buildEnvironmentLighting(*scene, 1.0, &error));
+  EXPECT_EQ(error.rfind(dir + "/cut.hdr: cannot read image: Radiance pixel data ends", 0), 0u) << error;
+}
+
+// The fuzzer's Radiance seeds are valid files (flat and run-length coded), so fuzzing starts from
+// inputs that reach the pixel decoder.
+TEST(HostileScenes, RadianceFuzzSeedsDecode) {
+  for (const auto& entry : std::filesystem::directory_iterator(facet::test::sourceDir() + "/tests/fuzz/image_corpus")) {
+    std::string bytes = facet::test::readText(entry.path().string());
+    std::string error;
+    auto image = facet::runtime::decodeEquirectImage(bytesOf(bytes), entry.path().filename().string(), &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_GT(*std::max_element(image->rgb.begin(), image->rgb.end()), 0.0f) << entry.path();
+  }
+}
+
+namespace {
+
+// The start of a PNG of width × height RGBA8: signature and header chunk only (enough for a size
+// probe; a decoder fails on it).
+std::string pngHeader(uint32_t width, uint32_t height) {
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0d", 4) + "IHDR";
+  for (uint32_t v : {width, height})
+    for (int shift = 24; shift >= 0; shift -= 8) png += char((v >> shift) & 0xff);
+  png += std::string("\x08\x06\0\0\0", 5) + std::string(4, '\0');  // 8-bit RGBA, CRC (not checked)
+  return png;
+}
+
+}  // namespace
+
+// Each image is within its own limit, but a scene's images together are bounded before any is
+// decoded (eight distinct 8192² textures used to take 8.5 GB).
+TEST(HostileScenes, SceneImageMemoryIsBoundedBeforeDecoding) {
+  std::string packages = facet::test::writePackagesFromTexts("hostile-budget-packages", {R"(material textured {
+    param albedo: texture(srgb) = vec4(0.5, 0.5, 0.5, 1.0)
+    surface {
+        baseColor = sample(params.albedo, vertex.uv0).rgb
+    }
+}
+)"});
+  std::string dir = facet::test::scratchDir("hostile-budget");
+  std::string objects;
+  for (int i = 0; i < 3; ++i) {
+    write(dir + "/big" + std::to_string(i) + ".png", pngHeader(8192, 8192));
+    objects += std::string(i ? ", " : "") + R"({"material": "textured", "params": {"albedo": "big)" +
+               std::to_string(i) + R"(.png"}})";
+  }
+  std::string error;
+  auto scene = facet::runtime::parseScene(dir + "/s.json", R"({"sun": {}, "objects": [)" + objects + "]}", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
+  // 3 × (8192² × 4 bytes and its mip chain, 4/3 of it) = 1024 MiB.
+  EXPECT_EQ(error.rfind("the scene's images decode to 1024 MiB (3 images; largest: " + dir + "/big", 0), 0u) << error;
+  EXPECT_NE(error.find("a scene may use at most 512 MiB of decoded images"), std::string::npos) << error;
+
+  // One of them is within the budget: the decoder then reports the file itself.
+  scene = facet::runtime::parseScene(dir + "/s.json",
+      R"({"sun": {}, "objects": [{"material": "textured", "params": {"albedo": "big0.png"}}]})", &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
+  EXPECT_EQ(error.rfind("object 0: " + dir + "/big0.png: cannot decode image", 0), 0u) << error;
 }

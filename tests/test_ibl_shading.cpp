@@ -231,7 +231,7 @@ TEST(IblShading, EnvironmentKeysAreChecked) {
   EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"environment": {"sky": {"zenit": [1, 1, 1]}}, "objects": []})", &error));
   EXPECT_NE(error.find("/environment/sky/zenit: unknown key"), std::string::npos) << error;
   auto scene = facet::runtime::parseScene(facet::test::examplePath("scenes/inline.json"),
-                                          R"({"environment": {"image": "../textures/tiles.png"}, "objects": []})", &error);
+                                          R"({"environment": {"image": "textures/tiles.png"}, "objects": []})", &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(facet::runtime::buildEnvironmentLighting(*scene, 1.0, &error));
   EXPECT_NE(error.find("tiles.png: an equirect environment is twice as wide as high"), std::string::npos) << error;

@@ -48,7 +48,7 @@ TEST(PostDomain, FetchFormsReadTheirOwnPixelInEachApi) {
 TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
   const PostShaders on = build({});
   PostEffects noTonemap;
-  noTonemap.acesTonemap = false;
+  noTonemap.toneCurve = ToneCurve::None;
   const PostShaders off = build(noTonemap);
   EXPECT_NE(on.key, off.key);
   // The chunk is not assembled in (its call sits in a preprocessor branch that is off), and
@@ -65,10 +65,38 @@ TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
   EXPECT_LT(off.sampledFragment.spirv.size(), on.sampledFragment.spirv.size());
 }
 
+TEST(PostDomain, KeysNameTheEffectsAndEachEffectOnlyItsOwnCode) {
+  PostEffects neutral;
+  neutral.toneCurve = ToneCurve::Neutral;
+  PostEffects dithered = neutral;
+  dithered.dither = true;
+  const PostShaders n = build(neutral), d = build(dithered);
+  EXPECT_EQ(n.key, "neutral");
+  EXPECT_EQ(d.key, "neutral+dither");
+  EXPECT_EQ(postVariantKey({}), "aces");
+  for (const PostStage* stage : {&n.sampledFragment, &n.fetchFragment, &d.sampledFragment, &d.fetchFragment}) {
+    EXPECT_TRUE(contains(stage->glslEs, "vec3 tonemap_khronos_neutral(vec3"));
+    EXPECT_FALSE(contains(stage->glslEs, "vec3 tonemap_aces_fitted(vec3"));
+  }
+  EXPECT_FALSE(contains(n.sampledFragment.glslEs, "vec3 dither_triangular_8bit(vec3"));
+  EXPECT_FALSE(contains(n.fetchFragment.glslEs, "#define FACET_POST_DITHER"));
+  EXPECT_TRUE(contains(d.fetchFragment.glslEs, "#define FACET_POST_DITHER"));
+  EXPECT_TRUE(contains(d.sampledFragment.glslEs, "dither_triangular_8bit(encoded, gl_FragCoord.xy)"));
+  // The noise needs highp (pixel coordinates beyond fp16's integers): Metal computes it in float.
+  EXPECT_TRUE(contains(d.sampledFragment.msl, "fract(")) << d.sampledFragment.msl;
+  EXPECT_GT(d.sampledFragment.spirv.size(), n.sampledFragment.spirv.size());
+  EXPECT_EQ(toneCurveFromString("neutral"), ToneCurve::Neutral);
+  EXPECT_FALSE(toneCurveFromString("filmic"));
+}
+
 TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {
-  const std::string cpp = postShadersCpp(build({}));
-  EXPECT_TRUE(contains(cpp, "const PostShaders& postShaders()"));
-  EXPECT_TRUE(contains(cpp, "kFetchSpirv"));
+  PostEffects neutral;
+  neutral.toneCurve = ToneCurve::Neutral;
+  const std::string cpp = postShadersCpp({build({}), build(neutral)});
+  EXPECT_TRUE(contains(cpp, "const std::vector<PostShaders>& postVariants()"));
+  EXPECT_TRUE(contains(cpp, "kFetchSpirv1"));
+  EXPECT_TRUE(contains(cpp, "{{\"neutral\", false}, vs1,"));
+  EXPECT_EQ(everyPostEffects().size(), 6u);
   EXPECT_TRUE(contains(cpp, "GL_EXT_shader_framebuffer_fetch"));
 }
 

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <chrono>
 #include <fstream>
+#include <thread>
 
 #include "facet/compiler/build.h"
 #include "facet/package.h"
@@ -82,4 +84,49 @@ TEST(VariantCache, DamagedEntriesAreCompiledAgain) {
   auto warm = facet::test::buildText(kMaterial, "test.mat", withCache(dir));
   ASSERT_TRUE(warm);
   EXPECT_EQ(warm->cacheHits, warm->package.variants.size());
+}
+
+namespace {
+
+uint64_t cacheBytes(const std::string& dir) {
+  uint64_t total = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) total += entry.file_size();
+  return total;
+}
+
+}  // namespace
+
+// The cache is bounded: least recently used entries go first, so the material just rebuilt keeps
+// its variants; temporary files of a killed process are removed once stale.
+TEST(VariantCache, TrimKeepsTheMostRecentlyUsedVariantsWithinTheBound) {
+  const std::string dir = facet::test::scratchDir("variant-cache-trim");
+  std::string other = kMaterial;
+  other.replace(other.find("roughness = params.roughness"), 28, "roughness = params.roughness * 0.5");  // other shader text
+  auto a = facet::test::buildText(kMaterial, "test.mat", withCache(dir));
+  ASSERT_TRUE(a);
+  const uint64_t oneMaterial = cacheBytes(dir);
+  ASSERT_TRUE(facet::test::buildText(other, "other.mat", withCache(dir)));
+  ASSERT_GT(cacheBytes(dir), oneMaterial);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));  // file times must order the uses
+  const std::string stale = dir + "/ab/stale.tmp.1.2.3", fresh = dir + "/ab/fresh.tmp.1.2.3";
+  fs::create_directories(dir + "/ab");
+  std::ofstream(stale) << "partial";
+  std::ofstream(fresh) << "partial";
+  fs::last_write_time(stale, fs::file_time_type::clock::now() - std::chrono::hours(2));
+
+  facet::compiler::BuildOptions bounded = withCache(dir);
+  bounded.cacheMaxBytes = oneMaterial + 100;  // room for one material's variants (and the fresh temporary)
+  auto again = facet::test::buildText(kMaterial, "test.mat", bounded);  // hits refresh its entries, then trims
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->cacheHits, again->package.variants.size());
+  EXPECT_LE(cacheBytes(dir), bounded.cacheMaxBytes);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(fresh));
+  auto warm = facet::test::buildText(kMaterial, "test.mat", withCache(dir));
+  ASSERT_TRUE(warm);
+  EXPECT_EQ(warm->cacheHits, warm->package.variants.size()) << "the recently used material was trimmed";
+  auto otherAgain = facet::test::buildText(other, "other.mat", withCache(dir));
+  ASSERT_TRUE(otherAgain);
+  EXPECT_LT(otherAgain->cacheHits, otherAgain->package.variants.size()) << "nothing of the older material was trimmed";
 }

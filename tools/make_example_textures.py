@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the images the painted_tiles example samples, 64x64 each:
-  examples/textures/tiles.png         sRGB tiles (two glazes, light grout);
-  examples/textures/tiles_normal.png  its tangent-space normal map: each tile is raised above the
+  examples/scenes/textures/tiles.png         sRGB tiles (two glazes, light grout);
+  examples/scenes/textures/tiles_normal.png  its tangent-space normal map: each tile is raised above the
                                       grout with a 2-texel bevel.
 Standard library only, so the images are reproducible anywhere:
     python3 tools/make_example_textures.py
@@ -39,7 +39,7 @@ def png(width, height, rows):
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
 
 
-folder = pathlib.Path(__file__).resolve().parent.parent / "examples" / "textures"
+folder = pathlib.Path(__file__).resolve().parent.parent / "examples" / "scenes" / "textures"
 for name, texel in (("tiles.png", pixel), ("tiles_normal.png", normal)):
     out = folder / name
     out.write_bytes(png(SIZE, SIZE, [[texel(x, y) for x in range(SIZE)] for y in range(SIZE)]))

@@ -299,6 +299,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     result.libraryFiles.insert(builds[i].libraryFiles.begin(), builds[i].libraryFiles.end());
     result.cacheHits += builds[i].cacheHit ? 1 : 0;
   }
+  if (options.cacheMaxBytes > 0) cache.trim(options.cacheMaxBytes);
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no
   // compiler code and the texels always match the chunk that decodes them.
   if (!lutVariants.empty()) {

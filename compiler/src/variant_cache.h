@@ -1,5 +1,6 @@
 // Content-addressed on-disk cache of compiled variants (matc compile --cache). The key is a hash
-// of everything a variant's compiled output depends on: the compiler version, both flavours of
+// of everything a variant's compiled output depends on: the compiler version and build identity
+// (below), both flavours of
 // the assembled GLSL (which already contain the material's surface program, the tier's choices
 // and every chunk's text) and the options that change the output. Editing one chunk changes the
 // text, hence the key, of exactly the variants that include it.
@@ -19,6 +20,12 @@ namespace facet::compiler {
 // MSL vertex, fragment.
 using CompiledShaders = std::array<std::vector<uint8_t>, 6>;
 
+// What else a compiled variant depends on: a hash of the compiler's own code taken at build time
+// (cmake/HashSources.cmake) and the versions of glslang, SPIRV-Tools and SPIRV-Cross. Without it
+// a rebuilt compiler (or an upgraded Debian library) would reuse variants an older one compiled
+// from the same GLSL text.
+const std::string& compilerBuildIdentity();
+
 // 32 hex digits (XXH3-128) naming a variant's compiled output.
 std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
                             bool fp16Emulation);
@@ -32,6 +39,12 @@ public:
   std::optional<CompiledShaders> load(const std::string& key) const;
   // Best effort: a cache that cannot be written only costs the next build time.
   void store(const std::string& key, const CompiledShaders& shaders) const;
+
+  // Bounds the cache: removes entries least recently used first (a hit refreshes an entry's
+  // modification time) until at most maxBytes remain, and temporary files more than an hour old
+  // (left by a process that was killed mid-store). Concurrent builds may trim at once: a removed
+  // entry is only a miss for whoever wanted it. Returns the bytes removed.
+  uint64_t trim(uint64_t maxBytes) const;
 
 private:
   std::string path(const std::string& key) const;

@@ -101,7 +101,9 @@ bool GlBackend::initialise(const GlOptions& options, std::string* error) {
 
   // The post program is the same for every frame: build it once, and fail creation (not the
   // first frame) if the build-time shaders do not compile here.
-  const PostShaders& shaders = postShaders();
+  const PostShaders* chosen = findPostShaders(options.post, error);
+  if (!chosen) return false;
+  const PostShaders& shaders = *chosen;
   std::string buildError;
   const bool merged = path_ == PostPath::Merged;
   std::optional<gl::LinkedProgram> post = gl::buildProgram(

@@ -5,8 +5,6 @@
 #include <cstring>
 #include <mutex>
 
-#include <stb_image.h>
-
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/equirect_image.h"
@@ -22,8 +20,6 @@ namespace {
 using ibl::EquirectImage;
 using ibl::Vec3;
 
-double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
 Vec3 toVec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 // The analytic sky of docs/scene-format.md, relative (× luminance later). √|y| makes the colour
@@ -33,42 +29,6 @@ Vec3 skyRadiance(const Environment& e, Vec3 d) {
   const glm::dvec3& far = y >= 0 ? e.zenith : e.ground;
   double w = std::sqrt(std::abs(y));
   return toVec3(e.horizon * (1 - w) + far * w);
-}
-
-// Reads an equirect image as linear RGB: Radiance .hdr as stored, 8-bit formats as sRGB.
-std::optional<EquirectImage> loadEquirect(const std::string& path, std::string* error) {
-  int w = 0, h = 0, channels = 0;
-  if (!probeImageSize(path, &w, &h, error)) return std::nullopt;
-  if (w != 2 * h) {
-    *error = path + ": an equirect environment is twice as wide as high; this image is " + std::to_string(w) + "x" +
-             std::to_string(h);
-    return std::nullopt;
-  }
-  EquirectImage image(w, h);
-  if (stbi_is_hdr(path.c_str())) {
-    float* pixels = stbi_loadf(path.c_str(), &w, &h, &channels, 3);
-    if (!pixels) {
-      *error = path + ": cannot decode image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
-      return std::nullopt;
-    }
-    std::memcpy(image.rgb.data(), pixels, image.rgb.size() * sizeof(float));
-    stbi_image_free(pixels);
-  } else {
-    uint8_t* pixels = stbi_load(path.c_str(), &w, &h, &channels, 3);
-    if (!pixels) {
-      *error = path + ": cannot decode image: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
-      return std::nullopt;
-    }
-    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = float(srgbToLinear(pixels[i] / 255.0));
-    stbi_image_free(pixels);
-  }
-  for (float v : image.rgb) {
-    if (!std::isfinite(v) || v < 0) {
-      *error = path + ": the image holds a negative or non-finite value";
-      return std::nullopt;
-    }
-  }
-  return image;
 }
 
 // Brings an equirect image to kEnvironmentWidth × kEnvironmentHeight: halving by solid-angle-
@@ -143,7 +103,9 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
     // The analytic sky is projected by quadrature of the function itself, not of its 128 × 64 image.
     radianceSh = ibl::projectRadiance(std::function<Vec3(Vec3)>(sky), 3);
   } else {
-    auto image = loadEquirect(e.image, error);
+    std::vector<uint8_t> bytes;
+    if (!readImageFile(e.image, &bytes, error)) return std::nullopt;
+    auto image = decodeEquirectImage(bytes, e.image, error);
     if (!image) return std::nullopt;
     source = fitEnvironment(std::move(*image));
     radianceSh = ibl::projectRadiance(source, 3);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <limits>
 
@@ -67,6 +69,64 @@ std::string pngChunkError(std::span<const uint8_t> bytes) {
   return "";  // stb_image reports a missing IEND or a cut chunk header itself
 }
 
+// stb_image decodes a Radiance .hdr whose pixel block is cut short as if the missing bytes were
+// zeros (its reader returns 0 at the end of the input): the environment comes out partly black,
+// with no error. This walks the pixel block as stb_image does (Ward's RGBE: flat 4-byte pixels,
+// or per-scanline run-length coding when 8 <= width < 32768) and says where it ends early.
+// Headers it cannot parse are left to stb_image, which reports them itself.
+std::string radianceHdrError(std::span<const uint8_t> bytes) {
+  size_t at = 0;
+  auto line = [&] {  // stb_image's token: up to a newline, at most 1023 characters kept
+    std::string text;
+    while (at < bytes.size() && bytes[at] != '\n') {
+      if (text.size() < 1023) text += char(bytes[at]);
+      ++at;
+    }
+    if (at < bytes.size()) ++at;
+    return text;
+  };
+  const std::string id = line();
+  if (id != "#?RADIANCE" && id != "#?RGBE") return "";  // not a Radiance file
+  bool rgbe = false;
+  for (std::string text = line(); !text.empty(); text = line()) rgbe = rgbe || text == "FORMAT=32-bit_rle_rgbe";
+  const std::string resolution = line();
+  long height = 0, width = 0;
+  if (!rgbe || std::sscanf(resolution.c_str(), "-Y %ld +X %ld", &height, &width) != 2 || width <= 0 || height <= 0)
+    return "";
+  const uint64_t pixels = uint64_t(width) * uint64_t(height);
+  auto cut = [&](const std::string& where) {
+    return "Radiance pixel data ends at byte " + std::to_string(bytes.size()) + ", " + where + " of a " +
+           std::to_string(width) + "x" + std::to_string(height) + " picture (the file is truncated)";
+  };
+  auto flatFrom = [&](size_t from) -> std::string {
+    return bytes.size() - from < pixels * 4 ? cut("within its flat pixels") : "";
+  };
+  if (width < 8 || width >= 32768) return flatFrom(at);
+  for (long row = 0; row < height; ++row) {
+    const std::string inRow = "in scanline " + std::to_string(row);
+    if (bytes.size() - at < 4) return cut(inRow);
+    // A scanline that does not start with the run-length header makes stb_image read the whole
+    // picture as flat pixels from here.
+    if (bytes[at] != 2 || bytes[at + 1] != 2 || (bytes[at + 2] & 0x80)) return flatFrom(at);
+    if ((long(bytes[at + 2]) << 8 | bytes[at + 3]) != width) return "";  // stb_image reports the length
+    at += 4;
+    for (int channel = 0; channel < 4; ++channel) {
+      for (long filled = 0; filled < width;) {
+        if (at >= bytes.size()) return cut(inRow);
+        long count = bytes[at++];
+        const bool run = count > 128;
+        if (run) count -= 128;
+        if (count > width - filled) return "";  // stb_image reports bad RLE data
+        const size_t need = run ? 1 : size_t(count);
+        if (bytes.size() - at < need) return cut(inRow);
+        at += need;
+        filled += count;
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string decodeFailure() {
@@ -74,25 +134,21 @@ std::string decodeFailure() {
   return why && *why ? why : "corrupt or truncated data";
 }
 
-bool probeImageSize(const std::string& path, int* width, int* height, std::string* error) {
-  // stb_image opens whatever it is given: a FIFO or a device would block it forever.
-  std::error_code ec;
-  auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) {
-    *error = path + ": cannot read image: no such file";
-    return false;
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    *error = path + ": cannot read image: not a regular file";
+bool probeImage(std::span<const uint8_t> bytes, const std::string& name, int* width, int* height, std::string* error) {
+  std::string why = pngChunkError(bytes);
+  if (why.empty()) why = radianceHdrError(bytes);
+  if (!why.empty()) {
+    *error = name + ": cannot read image: " + why;
     return false;
   }
   int channels = 0;
-  if (!stbi_info(path.c_str(), width, height, &channels)) {
-    *error = path + ": cannot read image: " + decodeFailure();
+  if (bytes.size() > size_t(std::numeric_limits<int>::max()) ||
+      !stbi_info_from_memory(bytes.data(), int(bytes.size()), width, height, &channels)) {
+    *error = name + ": cannot read image: " + decodeFailure();
     return false;
   }
   if (*width <= 0 || *height <= 0 || *width > kMaxImageSide || *height > kMaxImageSide) {
-    *error = path + ": image is " + std::to_string(*width) + "x" + std::to_string(*height) + "; the limit is " +
+    *error = name + ": image is " + std::to_string(*width) + "x" + std::to_string(*height) + "; the limit is " +
              std::to_string(kMaxImageSide) + " on each side";
     return false;
   }
@@ -123,21 +179,8 @@ bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::st
 
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error) {
-  if (std::string why = pngChunkError(bytes); !why.empty()) {
-    *error = name + ": cannot read image: " + why;
-    return std::nullopt;
-  }
   int w = 0, h = 0, channels = 0;
-  if (bytes.size() > size_t(std::numeric_limits<int>::max()) ||
-      !stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &channels)) {
-    *error = name + ": cannot read image: " + decodeFailure();
-    return std::nullopt;
-  }
-  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
-    *error = name + ": image is " + std::to_string(w) + "x" + std::to_string(h) + "; the limit is " +
-             std::to_string(kMaxImageSide) + " on each side";
-    return std::nullopt;
-  }
+  if (!probeImage(bytes, name, &w, &h, error)) return std::nullopt;
   // stb_image stores the first row (the top of the picture) first; the texture convention puts
   // t = 0 first, so an image's top row is t = 0, as in glTF and most engines' UV conventions.
   uint8_t* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &channels, 4);
@@ -161,6 +204,43 @@ std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std:
   std::vector<uint8_t> bytes;
   if (!readImageFile(path, &bytes, error)) return std::nullopt;
   return decodeImageTexture(bytes, srgb, path, error);
+}
+
+std::optional<ibl::EquirectImage> decodeEquirectImage(std::span<const uint8_t> bytes, const std::string& name,
+                                                 std::string* error) {
+  int w = 0, h = 0, channels = 0;
+  if (!probeImage(bytes, name, &w, &h, error)) return std::nullopt;
+  if (w != 2 * h) {
+    *error = name + ": an equirect environment is twice as wide as high; this image is " + std::to_string(w) + "x" +
+             std::to_string(h);
+    return std::nullopt;
+  }
+  ibl::EquirectImage image(w, h);
+  const int size = int(bytes.size());  // probeImage bounds it
+  if (stbi_is_hdr_from_memory(bytes.data(), size)) {
+    float* pixels = stbi_loadf_from_memory(bytes.data(), size, &w, &h, &channels, 3);
+    if (!pixels) {
+      *error = name + ": cannot decode image: " + decodeFailure();
+      return std::nullopt;
+    }
+    std::memcpy(image.rgb.data(), pixels, image.rgb.size() * sizeof(float));
+    stbi_image_free(pixels);
+  } else {
+    uint8_t* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 3);
+    if (!pixels) {
+      *error = name + ": cannot decode image: " + decodeFailure();
+      return std::nullopt;
+    }
+    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = float(decode(pixels[i]));
+    stbi_image_free(pixels);
+  }
+  for (float v : image.rgb) {
+    if (!std::isfinite(v) || v < 0) {
+      *error = name + ": the image holds a negative or non-finite value";
+      return std::nullopt;
+    }
+  }
+  return image;
 }
 
 Texture solidTexture(const std::array<double, 4>& rgba, bool srgb) {

@@ -82,14 +82,18 @@ std::string reason(const json::exception& e) {
 
 }  // namespace
 
-std::string pointerSegment(std::string_view key) {
+namespace {
+
+// At most kShown characters of `text`, control characters escaped, and (for a pointer segment)
+// ~ and / escaped as RFC 6901 says.
+std::string shortened(std::string_view text, bool pointerEscapes) {
   constexpr size_t kShown = 48;
   std::string out;
   size_t shown = 0;
-  for (char c : key) {
+  for (char c : text) {
     if (shown++ == kShown) break;
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
+    if (pointerEscapes && c == '~') out += "~0";
+    else if (pointerEscapes && c == '/') out += "~1";
     else if (static_cast<unsigned char>(c) < 0x20) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
@@ -98,9 +102,15 @@ std::string pointerSegment(std::string_view key) {
       out += c;
     }
   }
-  if (key.size() > kShown) out += "...(" + std::to_string(key.size()) + " bytes)";
+  if (text.size() > kShown) out += "...(" + std::to_string(text.size()) + " bytes)";
   return out;
 }
+
+}  // namespace
+
+std::string pointerSegment(std::string_view key) { return shortened(key, true); }
+
+std::string shownValue(std::string_view value) { return shortened(value, false); }
 
 std::optional<nlohmann::json> parseJsonDocument(const std::string& path, const std::string& text, std::string* error) {
   try {

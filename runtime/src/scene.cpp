@@ -1,5 +1,6 @@
 #include "facet/runtime/scene.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -52,6 +53,40 @@ uint32_t wholeNumber(const json& j, const std::string& pointer, double lo, doubl
   if (v != std::floor(v)) fail(pointer, "expected a whole number, not " + j.dump());
   return uint32_t(v);
 }
+
+// Resolves the image paths a scene names: relative to the scene's folder, and only under the
+// asset root (SceneReadOptions). Containment is decided on the real paths (symbolic links
+// followed as far as they exist), so a link inside the folder cannot point out of it.
+class AssetPaths {
+ public:
+  AssetPaths(std::filesystem::path sceneDir, const std::string& assetRoot)
+      : sceneDir_(std::move(sceneDir)), root_(realPath(assetRoot.empty() ? sceneDir_ : std::filesystem::path(assetRoot))) {}
+
+  std::string resolve(const json& j, const std::string& pointer) const {
+    if (!j.is_string()) fail(pointer, "expected an image path");
+    const std::string given = j.get<std::string>();
+    if (given.empty() || given.find('\0') != std::string::npos) fail(pointer, "expected an image path");
+    const std::filesystem::path path = (sceneDir_ / given).lexically_normal();
+    const std::filesystem::path real = realPath(path);
+    auto [rootEnd, realEnd] = std::mismatch(root_.begin(), root_.end(), real.begin(), real.end());
+    if (rootEnd != root_.end() || root_.empty() || real.empty())
+      fail(pointer, "'" + shownValue(given) + "' is outside the folder this scene may read images from (" +
+                        root_.string() + "); an app that trusts the scene can allow another (facet-view --asset-root)");
+    return path.string();
+  }
+
+ private:
+  // Absolute, with every existing symbolic link resolved; "" when the file system refuses.
+  static std::filesystem::path realPath(const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::path real = std::filesystem::weakly_canonical(std::filesystem::absolute(path.empty() ? "." : path, ec), ec);
+    if (ec) return {};
+    return real.has_filename() ? real : real.parent_path();  // "/a/b/" -> "/a/b": no empty last element
+  }
+
+  std::filesystem::path sceneDir_;
+  std::filesystem::path root_;
+};
 
 glm::dvec3 vec3(const json& j, const std::string& pointer) {
   if (!j.is_array() || j.size() != 3) fail(pointer, "expected an array of 3 numbers");
@@ -131,12 +166,12 @@ PunctualLight light(const json& j, const std::string& pointer) {
   return l;
 }
 
-Environment environment(const json& j, const std::filesystem::path& sceneDir) {
+Environment environment(const json& j, const AssetPaths& assets) {
   onlyKeys(j, "/environment", {"image", "sky", "luminance"});
   Environment e;
   if (j.contains("image") == j.contains("sky")) fail("/environment", "expected exactly one of 'image' and 'sky'");
   if (j.contains("image"))
-    e.image = (sceneDir / string(j["image"], "/environment/image")).lexically_normal().string();
+    e.image = assets.resolve(j["image"], "/environment/image");
   if (j.contains("luminance")) e.luminance = number(j["luminance"], "/environment/luminance", 0, 1e6);
   if (j.contains("sky")) {
     const json& sky = j["sky"];
@@ -152,7 +187,7 @@ Environment environment(const json& j, const std::filesystem::path& sceneDir) {
   return e;
 }
 
-SceneObject object(const json& j, const std::string& pointer, const std::filesystem::path& sceneDir) {
+SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
   onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
   SceneObject o;
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
@@ -172,7 +207,7 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
       if (!package::isValidName(name)) fail(p, "expected a parameter name (letters, digits, _)");
       std::vector<double> v;
       if (value.is_string()) {  // a texture parameter's image, relative to the scene file
-        o.textures[name] = (sceneDir / value.get<std::string>()).lexically_normal().string();
+        o.textures[name] = assets.resolve(value, p);
         continue;
       }
       if (value.is_number()) v.push_back(number(value, p, -1e30, 1e30));
@@ -189,13 +224,31 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
   return o;
 }
 
-Scene scene(const json& j, const std::filesystem::path& sceneDir) {
-  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects"});
+// The effects of the post pass. The tone curves are those the runtime embeds a post variant for
+// (compiler/post.h ToneCurve; a backend refuses any other).
+PostSettings post(const json& j) {
+  onlyKeys(j, "/post", {"toneCurve", "dither"});
+  PostSettings p;
+  if (j.contains("toneCurve")) {
+    p.toneCurve = string(j["toneCurve"], "/post/toneCurve");
+    if (p.toneCurve != "aces" && p.toneCurve != "neutral" && p.toneCurve != "none")
+      fail("/post/toneCurve", "expected \"aces\", \"neutral\" or \"none\", not '" + shownValue(p.toneCurve) + "'");
+  }
+  if (j.contains("dither")) {
+    if (!j["dither"].is_boolean()) fail("/post/dither", "expected true or false");
+    p.dither = j["dither"].get<bool>();
+  }
+  return p;
+}
+
+Scene scene(const json& j, const AssetPaths& assets) {
+  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
+  if (j.contains("post")) s.post = post(j["post"]);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");
@@ -211,22 +264,23 @@ Scene scene(const json& j, const std::filesystem::path& sceneDir) {
   if (j.contains("environment")) {
     // Two sources of ambient light would leave one of them silently unused.
     if (j.contains("sky")) fail("/environment", "give either 'sky' (a constant environment) or 'environment', not both");
-    s.environment = environment(j["environment"], sceneDir);
+    s.environment = environment(j["environment"], assets);
   }
   if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");
   if (j["objects"].size() > 4096) fail("/objects", "more than 4096 objects");
   for (size_t i = 0; i < j["objects"].size(); ++i)
-    s.objects.push_back(object(j["objects"][i], "/objects/" + std::to_string(i), sceneDir));
+    s.objects.push_back(object(j["objects"][i], "/objects/" + std::to_string(i), assets));
   return s;
 }
 
 }  // namespace
 
-std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error) {
+std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
+                                const SceneReadOptions& options) {
   std::optional<json> j = parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
-    return scene(*j, std::filesystem::path(path).parent_path());
+    return scene(*j, AssetPaths(std::filesystem::path(path).parent_path(), options.assetRoot));
   } catch (const SceneError& e) {
     *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
   } catch (const json::exception& e) {
@@ -235,7 +289,7 @@ std::optional<Scene> parseScene(const std::string& path, const std::string& text
   return std::nullopt;
 }
 
-std::optional<Scene> loadScene(const std::string& path, std::string* error) {
+std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options) {
   std::error_code ec;
   auto status = std::filesystem::status(path, ec);
   if (!std::filesystem::exists(status)) {
@@ -262,7 +316,7 @@ std::optional<Scene> loadScene(const std::string& path, std::string* error) {
     *error = path + ": error: cannot read the scene file: " + std::strerror(errno);
     return std::nullopt;
   }
-  return parseScene(path, text.str(), error);
+  return parseScene(path, text.str(), error, options);
 }
 
 }  // namespace facet::runtime

@@ -10,6 +10,7 @@
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/environment.h"
+#include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/mesh.h"
@@ -44,6 +45,7 @@ void storePunctual(const PunctualLight& light, double exposure, abi::PunctualLig
 }  // namespace
 
 std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::string& packageDir, std::string* error) {
+  if (!checkSceneImageBudget(scene, error)) return nullptr;  // before any image is decoded
   std::unique_ptr<SceneFrame> out(new SceneFrame());
   auto tier = permutations::tierFromString(scene.tier);
   if (!tier) {

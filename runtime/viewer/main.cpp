@@ -23,13 +23,15 @@ int fail(const std::string& message) {
 int main(int argc, char** argv) {
   facet::removeTemporaryFilesOnSignals();  // an interrupted PNG write leaves nothing behind
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
-  std::string scenePath, packageDir = ".", outDir = ".", backendName = "both", tier;
+  std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false, stats = false, keepHdr = false, json = false;
   size_t frames = 1, warmup = 2;
   std::string postPathName = "auto", glContext = "auto";
   uint32_t width = 0, height = 0;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
+  app.add_option("--asset-root", assetRoot,
+                 "folder the scene's images may come from (default: the scene's folder; images elsewhere are refused)");
   app.add_option("--out", outDir, "folder for the PNG files");
   app.add_option("--backend", backendName, "vulkan | gl | both")->check(CLI::IsMember({"vulkan", "gl", "both"}));
   app.add_option("--tier", tier, "render at this tier instead of the scene's (reference, high, mid, low)");
@@ -59,7 +61,7 @@ int main(int argc, char** argv) {
   }
 
   std::string error;
-  auto scene = facet::runtime::loadScene(scenePath, &error);
+  auto scene = facet::runtime::loadScene(scenePath, &error, {.assetRoot = assetRoot});
   if (!scene) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
@@ -90,6 +92,7 @@ int main(int argc, char** argv) {
       options.validation = validation;
       options.postPath = postPath;
       options.readBackHdr = keepHdr;
+      options.post = scene->post;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -98,6 +101,7 @@ int main(int argc, char** argv) {
                                                 : facet::runtime::GlContextKind::Auto;
       options.postPath = postPath;
       options.readBackHdr = keepHdr;
+      options.post = scene->post;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);

@@ -73,6 +73,7 @@ class VulkanBackend final : public RenderBackend {
 
   // Fixed at creation from the options and the frame graph.
   PostPath path_ = PostPath::Merged;
+  const PostShaders* post_ = nullptr;  // the post variant VulkanOptions::post chose
   bool readBackHdr_ = true;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
@@ -156,6 +157,8 @@ bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
 bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* error) {
   path_ = options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged;
   readBackHdr_ = options.readBackHdr;
+  post_ = findPostShaders(options.post, error);
+  if (!post_) return false;
   const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
@@ -211,7 +214,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     }
   }
 
-  const PostShaders& post = postShaders();
+  const PostShaders& post = *post_;
   PipelineDesc postDesc;
   postDesc.kind = PipelineKind::kPost;
   postDesc.vertexSpirv = &post.vertexSpirv;

@@ -1,6 +1,8 @@
-// libFuzzer target for the image decoders the runtime uses on scene textures
-// (runtime::decodeImageTexture: PNG, JPEG, TGA through stb_image, then the mip chain). Any bytes
-// end in a texture or an error naming the image, never a crash or a sanitizer report.
+// libFuzzer target for the image decoders the runtime uses on scene images: textures
+// (runtime::decodeImageTexture: PNG through stb_image, then the mip chain) and environments
+// (runtime::decodeEquirectImage: Radiance .hdr or PNG). Any bytes end in an image or an error
+// naming it, never a crash, a hang or a sanitizer report. Seeds: examples/scenes/textures/ and
+// tests/fuzz/image_corpus/ (small Radiance files, flat and run-length coded).
 // Inputs declaring more than 1024 × 1024 pixels are skipped here only to keep each run fast; the
 // runtime's own limit is kMaxImageSide (8192).
 //
@@ -29,6 +31,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       std::fprintf(stderr, "fuzz_image: level 0 does not match %ux%u\n", texture->width, texture->height);
       std::abort();
     }
+  }
+  auto environment = facet::runtime::decodeEquirectImage({data, size}, "fuzz.hdr", &error);
+  if (!environment && error.rfind("fuzz.hdr: ", 0) != 0) {
+    std::fprintf(stderr, "fuzz_image: environment rejected without naming the image: %s\n", error.c_str());
+    std::abort();
+  }
+  if (environment && environment->rgb.size() != size_t(environment->width) * size_t(environment->height) * 3) {
+    std::fprintf(stderr, "fuzz_image: environment holds %zu floats for %dx%d\n", environment->rgb.size(), environment->width,
+                 environment->height);
+    std::abort();
   }
   return 0;
 }

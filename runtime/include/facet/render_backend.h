@@ -128,6 +128,7 @@ struct VulkanOptions {
   // (the frame graph sees it read after the frame), so it is not transient even when merged;
   // false gives the mobile path, where HDR and depth never leave tile memory.
   bool readBackHdr = true;
+  PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
 };
 
 enum class GlContextKind {
@@ -144,6 +145,7 @@ struct GlOptions {
   PostPath postPath = PostPath::Auto;
   // As VulkanOptions::readBackHdr: keeps HDR (not invalidated) and reads it into FrameResult::hdr.
   bool readBackHdr = true;
+  PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
@@ -155,6 +157,7 @@ std::unique_ptr<RenderBackend> createGlBackend(std::string* error);  // default 
 // compiler/include/facet/compiler/post.h) into a generated source: the runtime does not link
 // the compiler.
 struct PostShaders {
+  PostSettings effects;  // what this variant runs
   const std::vector<uint32_t>& vertexSpirv;
   const std::vector<uint32_t>& fragmentSpirv;       // samples the stored HDR texture
   const std::vector<uint32_t>& fragmentFetchSpirv;  // reads its own pixel through a subpassInput
@@ -162,6 +165,9 @@ struct PostShaders {
   const std::string& fragmentGlslEs;       // samples the stored HDR texture
   const std::string& fragmentFetchGlslEs;  // GL_EXT_shader_framebuffer_fetch: HDR inout at 0, LDR at 1
 };
-const PostShaders& postShaders();
+// Every post variant the runtime embeds (each tone curve, with and without dithering).
+const std::vector<PostShaders>& postVariants();
+// The variant running `settings`, or nullptr with *error listing the embedded ones.
+const PostShaders* findPostShaders(const PostSettings& settings, std::string* error);
 
 }  // namespace facet::runtime

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "facet/frame_graph.h"
 
@@ -18,6 +19,14 @@ enum class PostPath {
 };
 
 const char* toString(PostPath path);
+
+// The effects a backend's post pass runs: a post variant compiled in at build time (compiler/post.h
+// PostEffects, docs/runtime.md). Per renderer, not per frame: a pipeline is built for it once.
+struct PostSettings {
+  std::string toneCurve = "aces";  // "aces" (filmic) | "neutral" (Khronos PBR Neutral) | "none"
+  bool dither = false;             // triangular noise of ±1 step before 8-bit quantisation
+  bool operator==(const PostSettings&) const = default;
+};
 
 struct ForwardPostGraph {
   fg::FrameGraph graph;

@@ -36,6 +36,10 @@ struct BuildResult {
   size_t cacheHits = 0;  // variants taken from BuildOptions::cacheDir instead of compiled
 };
 
+// matc compile's bound on the variant cache: about 21,000 variants of the example materials
+// (24.5 KB each, docs/build-integration.md).
+inline constexpr uint64_t kDefaultCacheMaxBytes = uint64_t(512) << 20;
+
 struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
   std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
@@ -54,6 +58,9 @@ struct BuildOptions {
   // Content-addressed cache of compiled variants (compiler/src/variant_cache.h); "" for none.
   // The package is the same bytes with or without it.
   std::string cacheDir;
+  // After the build, the least recently used entries are removed until the cache holds at most
+  // this many bytes (0: no bound). matc's default is kDefaultCacheMaxBytes.
+  uint64_t cacheMaxBytes = 0;
   // Called after each variant finishes (done of total), one call at a time, from any thread;
   // matc draws its terminal progress line with it.
   std::function<void(size_t done, size_t total)> progress;

@@ -8,16 +8,27 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace facet::compiler {
 
+enum class ToneCurve {
+  None,     // HDR clamped to [0, 1]
+  Aces,     // chunks/tonemap_aces.glsl: filmic (Narkowicz's ACES fit)
+  Neutral,  // chunks/tonemap_neutral.glsl: Khronos PBR Neutral, hue-preserving below its knee
+};
+const char* toString(ToneCurve curve);
+std::optional<ToneCurve> toneCurveFromString(std::string_view name);
+
 struct PostEffects {
-  bool acesTonemap = true;  // chunks/tonemap_aces.glsl; off: HDR clamped to [0, 1]
+  ToneCurve toneCurve = ToneCurve::Aces;
+  bool dither = false;  // chunks/dither.glsl: triangular noise of ±1 step before 8-bit quantisation
 };
 
-// A stable name of the effects, e.g. "aces" or "none": the post variant key.
+// A stable name of the effects, e.g. "aces", "neutral+dither" or "none": the post variant key.
 std::string postVariantKey(const PostEffects& effects);
 
 struct PostStage {
@@ -28,6 +39,7 @@ struct PostStage {
 
 struct PostShaders {
   std::string key;
+  PostEffects effects;
   PostStage vertex;          // full-screen triangle, shared by both forms
   PostStage sampledFragment; // separate path
   // Merged path. glslang 12 rejects the GL_EXT_shader_framebuffer_fetch #extension, so the GLES
@@ -38,9 +50,12 @@ struct PostShaders {
 // Returns false with *error set when a backend rejects the assembled code (a compiler defect).
 bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error);
 
-// C++ source defining facet::runtime::postShaders() (runtime/include/facet/render_backend.h)
-// with these shaders' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
+// Every combination of effects: what the runtime embeds.
+std::vector<PostEffects> everyPostEffects();
+
+// C++ source defining facet::runtime::postVariants() (runtime/include/facet/render_backend.h)
+// with these variants' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
 // without linking the compiler.
-std::string postShadersCpp(const PostShaders& shaders);
+std::string postShadersCpp(const std::vector<PostShaders>& variants);
 
 }  // namespace facet::compiler

@@ -5,7 +5,9 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
+#include "facet/ibl/equirect_image.h"
 #include "facet/render_backend.h"
 
 namespace facet::runtime {
@@ -13,11 +15,12 @@ namespace facet::runtime {
 // Images larger than this on either side are refused rather than decoded.
 inline constexpr int kMaxImageSide = 8192;
 
-// Reads an image file's size without decoding it; false, with *error naming the file, when it is
-// not an image stb_image reads or is larger than kMaxImageSide on a side. Every loader calls it
-// first, so a hostile header cannot make it decode (and allocate) a huge image, and only regular
-// files are opened (a FIFO or a device would block the read forever).
-bool probeImageSize(const std::string& path, int* width, int* height, std::string* error);
+// Reads the size of an image held in memory without decoding it (`name` is used in messages);
+// false, with *error naming it, when stb_image cannot read it, it is larger than kMaxImageSide
+// on a side, or its container is unsafe or incomplete: a PNG chunk declaring more bytes than the
+// file holds (stb_image would allocate what it declares), a Radiance .hdr whose pixel block is
+// cut short (stb_image would decode the missing pixels as black). Every decoder calls it first.
+bool probeImage(std::span<const uint8_t> bytes, const std::string& name, int* width, int* height, std::string* error);
 
 // stb_image's reason for its last failure, or "corrupt or truncated data" when it gives none.
 std::string decodeFailure();
@@ -38,6 +41,12 @@ std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool s
 // image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the
 // encoded values (which would darken every level), and the sampler decodes.
 std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error);
+
+// An equirect environment image held in memory (`name` is used in messages), as linear RGB: a
+// Radiance .hdr as stored, a PNG decoded from sRGB. Checked by probeImage first; 2:1, finite and
+// non-negative. The fuzz target fuzz_image drives it with arbitrary bytes.
+std::optional<ibl::EquirectImage> decodeEquirectImage(std::span<const uint8_t> bytes, const std::string& name,
+                                                      std::string* error);
 
 // A 1×1 texture of one RGBA value (components in [0, 1], as encoded).
 Texture solidTexture(const std::array<double, 4>& rgba, bool srgb);

@@ -22,4 +22,8 @@ std::optional<nlohmann::json> parseJsonDocument(const std::string& path, const s
 // key must not be echoed in full, and a NUL must not cut the message short.
 std::string pointerSegment(std::string_view key);
 
+// A string value from the file, for a message: shortened and escaped as pointerSegment, but with
+// ~ and / as written (a path stays readable).
+std::string shownValue(std::string_view value);
+
 }  // namespace facet::runtime

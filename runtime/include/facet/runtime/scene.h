@@ -10,6 +10,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "facet/render_path.h"
+
 namespace facet::runtime {
 
 struct Camera {
@@ -80,11 +82,21 @@ struct Scene {
   double skyLuminance = 0;         // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
   std::vector<SceneObject> objects;
+  PostSettings post;               // the post pass's tone curve and dithering (docs/scene-format.md)
+};
+
+// Which files a scene may name (texture and environment images). By default only those under the
+// scene file's folder, so that a scene from elsewhere cannot make the app read (and, through a
+// rendered image, reveal) other files of the machine: `../`, absolute paths and symbolic links that
+// lead out of the folder are errors. An app that trusts its scenes widens it (facet-view --asset-root).
+struct SceneReadOptions {
+  std::string assetRoot;  // "": the scene file's folder
 };
 
 // Parses scene JSON. Errors read `<path>:<line>:<col>: error: ...` for syntax errors and
 // `<path>: error: <json pointer>: ...` for wrong values.
-std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error);
-std::optional<Scene> loadScene(const std::string& path, std::string* error);
+std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
+                                const SceneReadOptions& options = {});
+std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options = {});
 
 }  // namespace facet::runtime
