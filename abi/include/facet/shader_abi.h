@@ -1,11 +1,13 @@
-// The binary interface between the shaders in a package and the runtime that draws with them.
-//
-// templates/ declares these blocks and attributes in GLSL; this header mirrors them in C++.
-// tests/test_shader_abi.cpp reflects compiled SPIR-V and checks that both agree, so a change
-// to one side without the other fails the build's tests, not a frame on a phone.
+// The binary interface between the shaders in a package and the runtime that draws with them:
+// one owner (library facet_shader_abi, header only), included by the compiler, which prints the
+// shaders' declarations from the tables at the end of this file, and by the runtime, which binds
+// by the same numbers. tests/test_shader_abi.cpp reflects compiled SPIR-V and checks it against
+// these tables and the C++ structs, so a change to one side fails the tests, not a frame on a phone.
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <string_view>
 
 namespace facet::abi {
 
@@ -23,17 +25,24 @@ inline constexpr uint32_t kAttribTangent = 5;   // vec4: xyz object-space unit t
                                                 // bitangent = w · cross(normal, tangent))
 inline constexpr uint32_t kVertexFloats = 18;
 inline constexpr uint32_t kVertexStride = kVertexFloats * sizeof(float);
-// Every attribute of the stream: location, float components, float offset within a vertex.
-// Both backends describe the stream from this table.
+// Every attribute of the stream: location, float components, float offset within a vertex, and
+// its name: the shaders declare `in highp vecN a_<name>` (N = components). Both backends describe
+// the stream from this table; the compiler declares the inputs from it.
 struct VertexAttribute {
   uint32_t location;
   uint32_t components;
   uint32_t offsetFloats;
+  std::string_view name;
 };
 inline constexpr VertexAttribute kVertexAttributes[] = {
-    {kAttribPosition, 3, 0}, {kAttribNormal, 3, 3}, {kAttribUv0, 2, 6},
-    {kAttribUv1, 2, 8},      {kAttribColor, 4, 10}, {kAttribTangent, 4, 14},
+    {kAttribPosition, 3, 0, "position"}, {kAttribNormal, 3, 3, "normal"}, {kAttribUv0, 2, 6, "uv0"},
+    {kAttribUv1, 2, 8, "uv1"},           {kAttribColor, 4, 10, "color"},  {kAttribTangent, 4, 14, "tangent"},
 };
+constexpr const VertexAttribute& vertexAttribute(uint32_t location) {
+  for (const VertexAttribute& a : kVertexAttributes)
+    if (a.location == location) return a;
+  return kVertexAttributes[0];  // unreachable for the kAttrib* constants (a static_assert below checks them)
+}
 
 // Uniform blocks, std140. Vulkan: descriptor set 0, binding = the value below.
 // GLES 3.00 has no layout(binding): the runtime looks the block up by name and calls
@@ -112,5 +121,101 @@ struct ObjectUniforms {
   float normalMatrix[16];  // inverse-transpose of model's upper 3×3, stored as a mat4
 };
 static_assert(sizeof(ObjectUniforms) == 128, "std140 layout of ObjectUniforms");
+
+// ---------------------------------------------------------------------------------------------
+// The interface as data. The compiler prints the shaders' declarations from these tables
+// (compiler/src/assemble.cpp), the runtime binds by the same numbers, and the MSL backend pins
+// Metal's argument slots from them (compiler/src/msl_backend.cpp), so every number above is
+// written once. The same arrangement as Filament's filabridge (libs/filabridge: the uniform
+// interface blocks and sampler bindings its material compiler generates from and its engine binds
+// by), reduced to what Facet's shaders declare.
+
+// A uniform block member, printed as `<type> <name>[arraySize];` (arraySize 0: not an array).
+// Types carry their precision: a block shared by both stages must match member for member.
+struct MemberDesc {
+  std::string_view type;
+  std::string_view name;
+  uint32_t arraySize = 0;
+};
+
+// A struct type declared before the blocks that hold it.
+struct StructDesc {
+  std::string_view name;
+  std::span<const MemberDesc> members;
+};
+
+// A std140 uniform block: Vulkan set/binding; GLES binds it by `name` (glUniformBlockBinding to
+// `binding`). An empty `members` list means the members are the material's (package layout).
+struct BlockDesc {
+  std::string_view name;      // block type name, e.g. "FrameUniforms"
+  std::string_view instance;  // the instance name the chunks read through, e.g. "frame"
+  uint32_t set = 0;
+  uint32_t binding = 0;
+  std::span<const MemberDesc> members;
+  uint32_t std140Size = 0;    // 0: the material's (MaterialInfo::paramBlockSize)
+};
+
+inline constexpr uint32_t kBlockSet = 0;
+
+inline constexpr MemberDesc kPunctualLightMembers[] = {
+    {"highp vec4", "positionFalloff"},
+    {"highp vec4", "colorIntensity"},
+    {"highp vec4", "direction"},
+    {"highp vec4", "spotScaleOffset"},
+};
+inline constexpr StructDesc kPunctualLightStruct{"PunctualLightData", kPunctualLightMembers};
+
+inline constexpr MemberDesc kFrameMembers[] = {
+    {"highp mat4", "viewProjection"},
+    {"highp vec4", "cameraPosition"},
+    {"highp vec4", "lightDirection"},
+    {"highp vec4", "lightColor"},
+    {"highp vec4", "ambient"},
+    {"PunctualLightData", "punctualLights", kMaxPunctualLights},
+    {"highp vec4", "sh", kShCoefficients},
+};
+inline constexpr MemberDesc kObjectMembers[] = {
+    {"highp mat4", "model"},
+    {"highp mat4", "normalMatrix"},
+};
+
+inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame", kBlockSet, kFrameBinding, kFrameMembers,
+                                       uint32_t(sizeof(FrameUniforms))};
+inline constexpr BlockDesc kObjectBlock{"ObjectUniforms", "object", kBlockSet, kObjectBinding, kObjectMembers,
+                                        uint32_t(sizeof(ObjectUniforms))};
+inline constexpr BlockDesc kMaterialBlock{"MaterialParams", "params", kBlockSet, kMaterialBinding, {}, 0};
+inline constexpr BlockDesc kBlocks[] = {kFrameBlock, kObjectBlock, kMaterialBlock};
+
+// A combined image sampler of the frame (every draw binds the same texture).
+struct SamplerDesc {
+  std::string_view name;
+  uint32_t set = 0;
+  uint32_t binding = 0;
+};
+inline constexpr SamplerDesc kDfgLutSampler{kDfgLutName, kTextureSet, kDfgLutBinding};
+inline constexpr SamplerDesc kSpecularLutSampler{kSpecularLutName, kTextureSet, kSpecularLutBinding};
+inline constexpr SamplerDesc kEnvironmentSampler{kEnvironmentName, kTextureSet, kEnvironmentBinding};
+inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSampler, kEnvironmentSampler};
+// The material's texture parameter in sampler slot i: kMaterialSamplerPrefix + name, set
+// kTextureSet, binding materialTextureBinding(i).
+constexpr uint32_t materialTextureBinding(uint32_t slot) { return kMaterialTextureBase + slot; }
+
+// Attachments of the forward pass and of the post pass that reads its colour.
+inline constexpr uint32_t kForwardColorLocation = 0;  // `fragColor`: linear pre-exposed HDR (RGBA16F)
+inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;  // merged post pass: subpassInput hdrColor
+
+
+// Metal (MSL) argument slots, pinned by the MSL backend from the tables above so that every
+// variant of every material uses the same ones (SPIRV-Cross otherwise numbers resources in order
+// of use, per shader): a block at [[buffer(binding)]]; a sampler of set kTextureSet at
+// [[texture(binding)]] and [[sampler(binding)]] (bindings 0..15 fit iOS's 16 samplers). The
+// vertex stream (stage_in) should use buffer index kMslVertexBufferIndex, clear of the blocks.
+// The package records these slots (section MSLB, docs/package-format.md).
+constexpr uint32_t mslBufferIndex(const BlockDesc& block) { return block.binding; }
+constexpr uint32_t mslTextureIndex(uint32_t textureBinding) { return textureBinding; }
+inline constexpr uint32_t kMslVertexBufferIndex = 30;
+
+static_assert(vertexAttribute(kAttribTangent).location == kAttribTangent && vertexAttribute(kAttribUv0).components == 2,
+              "kVertexAttributes lists every kAttrib* location");
 
 }  // namespace facet::abi
