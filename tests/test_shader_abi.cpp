@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstring>
 #include <map>
+#include <regex>
+#include <set>
 
 #include "facet/shader_abi.h"
 #include "facet/compiler/assemble.h"
@@ -371,3 +373,54 @@ TEST(ShaderAbi, IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled) {
   }
 }
 
+// A Metal app binds fixed slots: the MSL of every variant of every example material declares
+// each block and sampler at one slot, the one the package records (section MSLB) and shader_abi.h
+// gives. Before the slots were pinned, facet_environment was texture(0) in red_plastic.high.dir1
+// and texture(2) / texture(3) in painted_tiles' variants.
+TEST(ShaderAbi, MslSlotOfEverySamplerAndBlockIsTheSameInEveryVariantAndMaterial) {
+  // "constant FrameUniforms& frame [[buffer(1)]]", "texture2d<half> name [[texture(2)]]",
+  // "sampler nameSmplr [[sampler(2)]]".
+  const std::regex buffer(R"((\w+)& \w+ \[\[buffer\((\d+)\)\]\])");
+  const std::regex texture(R"((\w+) \[\[texture\((\d+)\)\]\])");
+  const std::regex sampler(R"((\w+)Smplr \[\[sampler\((\d+)\)\]\])");
+  std::map<std::pair<std::string, std::string>, uint32_t> everywhere;  // (kind, name) -> slot, over all materials
+  size_t declarations = 0;
+  for (const std::string& path : facet::test::exampleMaterials()) {
+    auto built = facet::test::buildFile(path);
+    ASSERT_TRUE(built);
+    std::map<std::pair<std::string, std::string>, uint32_t> recorded;
+    for (const facet::package::MslBinding& b : built->package.mslBindings) {
+      if (b.kind == facet::package::MslResource::Buffer) {
+        recorded[{"buffer", b.name}] = b.index;
+        EXPECT_EQ(b.binding, b.index) << b.name;
+      } else {
+        recorded[{"texture", b.name}] = b.index;
+        recorded[{"sampler", b.name}] = b.index;
+      }
+    }
+    ASSERT_EQ(recorded.at({"buffer", "FrameUniforms"}), facet::abi::mslBufferIndex(facet::abi::kFrameBlock));
+    for (const auto& v : built->package.variants) {
+      for (const auto& shader : v.shaders) {
+        if (shader.target != facet::package::Target::Msl) continue;
+        SCOPED_TRACE(path + " " + v.key + " " + facet::package::toString(shader.stage));
+        const std::string msl(shader.code.begin(), shader.code.end());
+        using Pattern = std::pair<const char*, const std::regex*>;
+        for (auto [kind, pattern] : {Pattern{"buffer", &buffer}, Pattern{"texture", &texture}, Pattern{"sampler", &sampler}}) {
+          for (std::sregex_iterator it(msl.begin(), msl.end(), *pattern), end; it != end; ++it) {
+            const std::pair<std::string, std::string> resource{kind, (*it)[1].str()};
+            const uint32_t slot = uint32_t(std::stoul((*it)[2].str()));
+            ++declarations;
+            ASSERT_TRUE(recorded.count(resource)) << kind << " " << resource.second << " is not in the package's record";
+            EXPECT_EQ(slot, recorded.at(resource)) << kind << " " << resource.second;
+            auto known = everywhere.emplace(resource, slot).first;
+            EXPECT_EQ(known->second, slot) << kind << " " << resource.second << " moved between materials";
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(declarations, 0u);
+  EXPECT_EQ(everywhere.at({"texture", facet::abi::kEnvironmentName}), facet::abi::kEnvironmentBinding);
+  EXPECT_EQ(everywhere.at({"sampler", facet::abi::kEnvironmentName}), facet::abi::kEnvironmentBinding);
+  EXPECT_EQ(everywhere.at({"buffer", "MaterialParams"}), facet::abi::kMaterialBinding);
+}

@@ -60,7 +60,7 @@ bool toMsl(const std::vector<uint32_t>& words, const std::string& what, std::str
     *error = "post " + what + ": spirv-opt --convert-relaxed-to-half failed:\n" + log;
     return false;
   }
-  return spirvToMsl(metal, msl, error);
+  return spirvToMsl(metal, {}, msl, error);
 }
 
 // Compiles one fragment form with the vertex stage (glslang links both), checks GLSL ES where

@@ -102,7 +102,7 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
 // META, VARS, BTAB, BDAT, and the optional TEXS. Unknown tags are skipped so later writers can
 // add sections.
 bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::optional<TocEntry>& textures,
-             std::string& error) {
+             std::optional<TocEntry>& mslBindings, std::string& error) {
   const uint64_t size = file.size();
   uint32_t count = uint32_t(loadLE(file.data() + kSectionCountOffset, 4));
   if (count > kMaxSections) {
@@ -176,12 +176,13 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
     }
   }
   for (const TocEntry& e : entries) {
-    if (e.tag != kTagTextures) continue;
-    if (textures) {
-      error = "package has more than one '" + tagName(kTagTextures) + "' section; at most one is allowed";
+    std::optional<TocEntry>* optional = e.tag == kTagTextures ? &textures : e.tag == kTagMslBindings ? &mslBindings : nullptr;
+    if (!optional) continue;
+    if (*optional) {
+      error = "package has more than one '" + tagName(e.tag) + "' section; at most one is allowed";
       return false;
     }
-    textures = e;
+    *optional = e;
   }
   return true;
 }
@@ -207,6 +208,7 @@ struct PackageReader::State {
   MaterialInfo material;
   std::vector<VariantInfo> variants;
   std::vector<TextureInfo> textures;
+  std::vector<MslBinding> mslBindings;
   std::vector<BlobEntry> entries;
   std::vector<BlobInfo> blobs;
   uint64_t dataOffset = 0;  // BDAT's offset in the file
@@ -225,8 +227,8 @@ struct PackageReader::State {
 bool PackageReader::State::parse(std::string& error) {
   if (!checkHeader(file, error)) return false;
   TocEntry toc[4];
-  std::optional<TocEntry> texs;
-  if (!readToc(file, toc, texs, error)) return false;
+  std::optional<TocEntry> texs, mslb;
+  if (!readToc(file, toc, texs, mslb, error)) return false;
   const TocEntry& meta = toc[0];
   const TocEntry& vars = toc[1];
   const TocEntry& table = toc[2];
@@ -244,6 +246,14 @@ bool PackageReader::State::parse(std::string& error) {
         decodeTextureTable(in, variantEntries.size(), entries, textureEntries);
       }))
     return false;
+  if (mslb) {
+    if (minor < kFirstMinorWithMslBindings) {
+      error = "package format 1." + std::to_string(minor) + " has a '" + tagName(kTagMslBindings) +
+              "' section, which only format 1." + std::to_string(kFirstMinorWithMslBindings) + " and later have";
+      return false;
+    }
+    if (!decodeSection(file, *mslb, error, [&](ByteReader& in) { decodeMslBindings(in, mslBindings); })) return false;
+  }
 
   variants.reserve(variantEntries.size());
   for (VariantEntry& v : variantEntries) {
@@ -342,6 +352,7 @@ const MaterialInfo& PackageReader::material() const { return state_->material; }
 const std::vector<VariantInfo>& PackageReader::variants() const { return state_->variants; }
 const std::vector<TextureInfo>& PackageReader::textures() const { return state_->textures; }
 const std::vector<BlobInfo>& PackageReader::blobs() const { return state_->blobs; }
+const std::vector<MslBinding>& PackageReader::mslBindings() const { return state_->mslBindings; }
 
 const Param* PackageReader::findParam(std::string_view name) const {
   for (const Param& p : state_->material.params)

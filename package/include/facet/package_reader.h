@@ -80,6 +80,9 @@ class PackageReader {
   const VariantInfo* findVariant(std::string_view key) const;
   const std::vector<TextureInfo>& textures() const;
   const std::vector<BlobInfo>& blobs() const;
+  // Where a Metal app binds each block and sampler of the MSL shaders, the same in every
+  // variant (format 1.2; empty in older packages).
+  const std::vector<MslBinding>& mslBindings() const;
 
   // What a package means, for one the app did not build: package::semanticError's checks of the
   // metadata and variant table, without decoding any code. The code of each shader is checked
