@@ -7,11 +7,33 @@
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/spirv_tools_backend.h"
+#include "facet/shader_abi.h"
 
 namespace facet::compiler {
 namespace {
 
 enum class PostRead { Sampled, SubpassInput, FramebufferFetch };
+
+// The post fragment stage's interface, printed from shader_abi.h's attachment constants: where
+// the HDR colour of the forward pass is read from, and where the LDR result goes.
+std::string postInterface(Flavour flavour, PostRead read) {
+  const std::string hdr(abi::kPostHdrName);
+  const std::string setBinding =
+      "set = " + std::to_string(abi::kPostHdrSet) + ", binding = " + std::to_string(abi::kPostHdrBinding);
+  auto ldr = [](uint32_t location) { return "layout(location = " + std::to_string(location) + ") out vec4 fragColor;\n"; };
+  switch (read) {
+    case PostRead::SubpassInput:
+      return "layout(input_attachment_index = " + std::to_string(abi::kPostHdrInputAttachmentIndex) + ", " + setBinding +
+             ") uniform mediump subpassInput " + hdr + ";\n" + ldr(abi::kPostMergedLdrLocation);
+    case PostRead::FramebufferFetch:
+      return "layout(location = " + std::to_string(abi::kPostHdrColorLocation) + ") inout mediump vec4 " + hdr + ";\n" +
+             ldr(abi::kPostMergedLdrLocation);
+    case PostRead::Sampled:
+      return (flavour == Flavour::Vulkan ? "layout(" + setBinding + ") " : std::string()) + "uniform mediump sampler2D " +
+             hdr + ";\n" + ldr(abi::kPostSeparateLdrLocation);
+  }
+  return "";
+}
 
 // Prologue + the chunks the effects need + the template, as materials are assembled: the
 // Vulkan flavour is ES 3.10 with FACET_VULKAN, the GLES flavour ES 3.00.
@@ -26,6 +48,7 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   text += "precision mediump float;\nprecision highp int;\n";
   std::vector<std::string> files;
   if (std::string(templateName).find(".frag.") != std::string::npos) {
+    text += postInterface(flavour, read);
     if (effects.acesTonemap) files.push_back("tonemap_aces.glsl");
     files.push_back("srgb.glsl");
   }

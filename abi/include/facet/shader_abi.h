@@ -200,9 +200,19 @@ inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSam
 // kTextureSet, binding materialTextureBinding(i).
 constexpr uint32_t materialTextureBinding(uint32_t slot) { return kMaterialTextureBase + slot; }
 
-// Attachments of the forward pass and of the post pass that reads its colour.
-inline constexpr uint32_t kForwardColorLocation = 0;  // `fragColor`: linear pre-exposed HDR (RGBA16F)
-inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;  // merged post pass: subpassInput hdrColor
+// Attachments of the forward pass and of the post pass that reads its colour. The forward pass
+// writes `fragColor` (linear pre-exposed HDR, RGBA16F). The post pass reads it as `hdrColor`:
+// merged path, input attachment 0 at set kPostHdrSet / binding kPostHdrBinding (Vulkan; Metal
+// [[color(0)]]) or colour output 0 declared inout (GLES framebuffer fetch), LDR written to colour
+// 1; separate path, a sampler at the same set and binding (GL: texture unit kPostHdrBinding), LDR
+// written to colour 0. The post compiler (compiler/src/post.cpp) prints these declarations.
+inline constexpr uint32_t kForwardColorLocation = 0;
+inline constexpr std::string_view kPostHdrName = "hdrColor";
+inline constexpr uint32_t kPostHdrSet = 0;
+inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;
+inline constexpr uint32_t kPostHdrColorLocation = 0;     // merged path: HDR is colour 0 of the pass
+inline constexpr uint32_t kPostMergedLdrLocation = 1;    // merged path: LDR is colour 1
+inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR is the only colour
 
 
 // Metal (MSL) argument slots, pinned by the MSL backend from the tables above so that every
