@@ -114,7 +114,7 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["material"], "red_plastic");
-  EXPECT_EQ(doc["format"], "1.1");
+  EXPECT_EQ(doc["format"], "1.2");  // 1.2: the Metal slots are recorded (section MSLB)
   ASSERT_EQ(doc["variants"].size(), 8u);
   EXPECT_EQ(doc["variants"][3]["key"], "high.dir1");
   EXPECT_EQ(doc["variants"][3]["shaders"].size(), 6u);

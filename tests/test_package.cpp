@@ -655,3 +655,47 @@ TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
   }
   EXPECT_EQ(seeds, 3u);
 }
+
+// Format 1.2: the Metal argument slots (section MSLB), written only when there are some, and
+// then stamped 1.2 so that readers from before it refuse the package rather than lose the slots.
+TEST(Package, MetalSlotsRoundTripAndStampFormatOneTwo) {
+  pkg::Package p = samplePackage();
+  const std::vector<uint8_t> without = pkg::write(p);
+  EXPECT_EQ(loadLE(without, 10, 2), 1u);
+  p.mslBindings = {{"FrameUniforms", pkg::MslResource::Buffer, 0, 0, 0},
+                   {"facet_environment", pkg::MslResource::Texture, 1, 2, 2}};
+  const std::vector<uint8_t> bytes = pkg::write(p);
+  EXPECT_EQ(loadLE(bytes, 10, 2), 2u);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  EXPECT_EQ(r.formatMinor, 2u);
+  EXPECT_EQ(pkg::write(*r.package), bytes);
+}
+
+TEST(Package, HostileMetalSlotsAreRejected) {
+  pkg::Package p = samplePackage();
+  p.mslBindings = {{"FrameUniforms", pkg::MslResource::Buffer, 0, 0, 0},
+                   {"facet_environment", pkg::MslResource::Texture, 1, 2, 2}};
+  const std::vector<uint8_t> good = pkg::write(p);
+  const size_t mslb = sectionOffset(good, "MSLB");
+  const size_t first = mslb + 4;                          // u32 count, then entries
+  const size_t firstKind = first + 4 + 13;                // after "FrameUniforms"
+  const size_t second = firstKind + 4 + 12;               // kind, reserved, set, binding, index
+  const size_t secondIndex = second + 4 + 17 + 4 + 8;     // after "facet_environment", kind + reserved, set, binding
+  auto hostile = [&](auto edit, const std::string& expectedPart) { expectEditRejected(good, edit, expectedPart); };
+  hostile([&](auto& b) { storeLE(b, mslb, 0xFFFFFFFF, 4); }, "Metal binding count 4294967295");
+  hostile([&](auto& b) { b[firstKind] = 7; }, "unknown kind 7");
+  hostile([&](auto& b) { b[firstKind + 1] = 1; }, "reserved bits");
+  hostile([&](auto& b) { b[first + 4] = '1'; }, "not an identifier");
+  hostile([&](auto& b) { storeLE(b, secondIndex, 16, 4); }, "uses texture slot 16; Metal has 16");
+  hostile([&](auto& b) { storeLE(b, 10, 1, 2); }, "only format 1.2 and later have");
+  pkg::Package twice = p;
+  twice.mslBindings[1].name = "FrameUniforms";
+  twice.mslBindings[1].kind = pkg::MslResource::Buffer;
+  expectRejected(pkg::write(twice), "names 'FrameUniforms' a second time");
+  pkg::Package shared = p;
+  shared.mslBindings[1].kind = pkg::MslResource::Buffer;
+  shared.mslBindings[1].index = 0;
+  expectRejected(pkg::write(shared), "reuses buffer slot 0");
+}

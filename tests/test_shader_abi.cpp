@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstring>
 #include <map>
+#include <regex>
+#include <set>
 
 #include "facet/shader_abi.h"
 #include "facet/compiler/assemble.h"
@@ -23,6 +25,7 @@ struct Block {
   uint32_t set = ~0u, binding = ~0u;
   size_t size = 0;
   std::map<std::string, uint32_t> offsets;
+  std::vector<std::string> members;  // in declaration order
 };
 struct Reflection {
   std::map<std::string, Block> blocks;          // by block type name
@@ -59,6 +62,7 @@ Reflection reflect(const std::vector<uint8_t>& code) {
       unsigned offset = 0;
       spvc_compiler_type_struct_member_offset(compiler, type, m, &offset);
       b.offsets[spvc_compiler_get_member_name(compiler, list[i].base_type_id, m)] = offset;
+      b.members.push_back(spvc_compiler_get_member_name(compiler, list[i].base_type_id, m));
     }
     r.blocks[spvc_compiler_get_name(compiler, list[i].base_type_id)] = b;
   }
@@ -129,6 +133,48 @@ TEST(ShaderAbi, FrameAndObjectBlocksMatchTheRuntimeStructs) {
 
   EXPECT_EQ(vs.inputs.at("a_position"), facet::abi::kAttribPosition);
   EXPECT_EQ(vs.inputs.at("a_normal"), facet::abi::kAttribNormal);
+}
+
+// The compiler prints the blocks from shader_abi.h's tables: what SPIR-V declares is the table,
+// member for member, at the table's set and binding and std140 size, in every variant of every
+// example material (a block a stage does not use may be absent).
+TEST(ShaderAbi, BlocksAndSamplersMatchTheTableMemberForMember) {
+  for (const std::string& path : facet::test::exampleMaterials()) {
+    auto built = facet::test::buildFile(path);
+    ASSERT_TRUE(built);
+    for (const auto& v : built->package.variants) {
+      SCOPED_TRACE(path + " " + v.key);
+      for (auto stage : {facet::package::Stage::Vertex, facet::package::Stage::Fragment}) {
+        Reflection r = reflect(spirv(v, stage));
+        for (const facet::abi::BlockDesc& desc : facet::abi::kBlocks) {
+          auto it = r.blocks.find(std::string(desc.name));
+          if (it == r.blocks.end()) continue;
+          EXPECT_EQ(it->second.set, desc.set) << desc.name;
+          EXPECT_EQ(it->second.binding, desc.binding) << desc.name;
+          if (desc.members.empty()) continue;  // MaterialParams: the package's layout (next test)
+          EXPECT_EQ(it->second.size, desc.std140Size) << desc.name;
+          std::vector<std::string> expected;
+          for (const facet::abi::MemberDesc& m : desc.members) expected.emplace_back(m.name);
+          EXPECT_EQ(it->second.members, expected) << desc.name;
+        }
+        EXPECT_TRUE(r.blocks.count("FrameUniforms") || stage == facet::package::Stage::Fragment);
+        for (const auto& [name, where] : r.samplers) {
+          bool known = name.rfind(facet::abi::kMaterialSamplerPrefix, 0) == 0;
+          for (const facet::abi::SamplerDesc& desc : facet::abi::kFrameSamplers) {
+            if (name != desc.name) continue;
+            known = true;
+            EXPECT_EQ(where, std::make_pair(desc.set, desc.binding)) << name;
+          }
+          EXPECT_TRUE(known) << "sampler " << name << " is not in shader_abi.h's tables";
+        }
+      }
+      Reflection vs = reflect(spirv(v, facet::package::Stage::Vertex));
+      for (const auto& [name, location] : vs.inputs) {
+        ASSERT_EQ(name.rfind("a_", 0), 0u) << name;
+        EXPECT_EQ(facet::abi::vertexAttribute(location).name, name.substr(2)) << name;
+      }
+    }
+  }
 }
 
 TEST(ShaderAbi, MaterialParamsLayoutMatchesThePackageRecord) {
@@ -307,8 +353,6 @@ TEST(ShaderAbi, SpecularLutSamplerIsAtItsAbiSlotInTheVariantsThatSampleIt) {
 // none of them in the vertex stage (vertex-diffuse tiers evaluate SH from the frame block).
 TEST(ShaderAbi, IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled) {
   EXPECT_EQ(facet::compiler::kEnvironmentLevels, facet::abi::kEnvironmentLevels);
-  EXPECT_STREQ(facet::compiler::kEnvironmentSamplerName, facet::abi::kEnvironmentName);
-  EXPECT_STREQ(facet::compiler::kDfgLutSamplerName, facet::abi::kDfgLutName);
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
   const std::pair<uint32_t, uint32_t> environment{facet::abi::kTextureSet, facet::abi::kEnvironmentBinding};
@@ -327,4 +371,56 @@ TEST(ShaderAbi, IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled) {
     EXPECT_TRUE(vs.samplers.empty());
     EXPECT_EQ(vs.blocks.at("FrameUniforms").size, sizeof(facet::abi::FrameUniforms));
   }
+}
+
+// A Metal app binds fixed slots: the MSL of every variant of every example material declares
+// each block and sampler at one slot, the one the package records (section MSLB) and shader_abi.h
+// gives. Before the slots were pinned, facet_environment was texture(0) in red_plastic.high.dir1
+// and texture(2) / texture(3) in painted_tiles' variants.
+TEST(ShaderAbi, MslSlotOfEverySamplerAndBlockIsTheSameInEveryVariantAndMaterial) {
+  // "constant FrameUniforms& frame [[buffer(1)]]", "texture2d<half> name [[texture(2)]]",
+  // "sampler nameSmplr [[sampler(2)]]".
+  const std::regex buffer(R"((\w+)& \w+ \[\[buffer\((\d+)\)\]\])");
+  const std::regex texture(R"((\w+) \[\[texture\((\d+)\)\]\])");
+  const std::regex sampler(R"((\w+)Smplr \[\[sampler\((\d+)\)\]\])");
+  std::map<std::pair<std::string, std::string>, uint32_t> everywhere;  // (kind, name) -> slot, over all materials
+  size_t declarations = 0;
+  for (const std::string& path : facet::test::exampleMaterials()) {
+    auto built = facet::test::buildFile(path);
+    ASSERT_TRUE(built);
+    std::map<std::pair<std::string, std::string>, uint32_t> recorded;
+    for (const facet::package::MslBinding& b : built->package.mslBindings) {
+      if (b.kind == facet::package::MslResource::Buffer) {
+        recorded[{"buffer", b.name}] = b.index;
+        EXPECT_EQ(b.binding, b.index) << b.name;
+      } else {
+        recorded[{"texture", b.name}] = b.index;
+        recorded[{"sampler", b.name}] = b.index;
+      }
+    }
+    ASSERT_EQ(recorded.at({"buffer", "FrameUniforms"}), facet::abi::mslBufferIndex(facet::abi::kFrameBlock));
+    for (const auto& v : built->package.variants) {
+      for (const auto& shader : v.shaders) {
+        if (shader.target != facet::package::Target::Msl) continue;
+        SCOPED_TRACE(path + " " + v.key + " " + facet::package::toString(shader.stage));
+        const std::string msl(shader.code.begin(), shader.code.end());
+        using Pattern = std::pair<const char*, const std::regex*>;
+        for (auto [kind, pattern] : {Pattern{"buffer", &buffer}, Pattern{"texture", &texture}, Pattern{"sampler", &sampler}}) {
+          for (std::sregex_iterator it(msl.begin(), msl.end(), *pattern), end; it != end; ++it) {
+            const std::pair<std::string, std::string> resource{kind, (*it)[1].str()};
+            const uint32_t slot = uint32_t(std::stoul((*it)[2].str()));
+            ++declarations;
+            ASSERT_TRUE(recorded.count(resource)) << kind << " " << resource.second << " is not in the package's record";
+            EXPECT_EQ(slot, recorded.at(resource)) << kind << " " << resource.second;
+            auto known = everywhere.emplace(resource, slot).first;
+            EXPECT_EQ(known->second, slot) << kind << " " << resource.second << " moved between materials";
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(declarations, 0u);
+  EXPECT_EQ(everywhere.at({"texture", facet::abi::kEnvironmentName}), facet::abi::kEnvironmentBinding);
+  EXPECT_EQ(everywhere.at({"sampler", facet::abi::kEnvironmentName}), facet::abi::kEnvironmentBinding);
+  EXPECT_EQ(everywhere.at({"buffer", "MaterialParams"}), facet::abi::kMaterialBinding);
 }

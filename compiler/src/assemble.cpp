@@ -6,26 +6,30 @@
 #include <set>
 
 #include "facet/compiler/glsl_library.h"
+#include "facet/shader_abi.h"
 
 namespace facet::compiler {
 namespace {
 
-// An optional vertex input and the varying that carries it to the fragment stage. Locations
-// are shader_abi.h's kAttrib*. Precision follows DESIGN.md's policy: positions and UVs highp
-// always; colours and directions at the tier's precision.
+static_assert(permutations::kMaxPointLights == abi::kMaxPunctualLights,
+              "a variant's punctual lights are read from the frame block's fixed array");
+
+// An optional vertex input (shader_abi.h's attribute at `location`: its name a vertex.* attribute,
+// or "tangent", needed by the normal output) and the varying that carries it to the fragment
+// stage. Precision follows DESIGN.md's policy: positions and UVs highp always; colours and
+// directions at the tier's precision.
 struct OptionalInput {
-  const char* name;           // a vertex.* attribute, or "tangent" (needed by the normal output)
   uint32_t location;
-  const char* attributeType;  // the vertex input, always highp (it is read as stored)
-  const char* varyingType;    // with "highp " when it must stay highp whatever the tier
+  const char* varyingType;  // with "highp " when it must stay highp whatever the tier
   const char* varying;
+  std::string_view name() const { return abi::vertexAttribute(location).name; }
 };
 
 const OptionalInput kOptionalInputs[] = {
-    {"uv0", 2, "vec2", "highp vec2", "v_uv0"},
-    {"uv1", 3, "vec2", "highp vec2", "v_uv1"},
-    {"color", 4, "vec4", "vec4", "v_color"},
-    {"tangent", 5, "vec4", "vec4", "v_tangent"},
+    {abi::kAttribUv0, "highp vec2", "v_uv0"},
+    {abi::kAttribUv1, "highp vec2", "v_uv1"},
+    {abi::kAttribColor, "vec4", "v_color"},
+    {abi::kAttribTangent, "vec4", "v_tangent"},
 };
 
 bool vertexDiffuse(const AssemblyInput& in) {
@@ -38,37 +42,47 @@ bool usesNormalOutput(const AssemblyInput& in) {
 }
 
 bool needs(const AssemblyInput& in, const OptionalInput& v) {
-  if (std::string(v.name) == "tangent") return usesNormalOutput(in);
-  return in.surface.attributes.count(v.name) > 0;
+  if (v.location == abi::kAttribTangent) return usesNormalOutput(in);
+  return in.surface.attributes.count(std::string(v.name())) > 0;
 }
 
-std::string blockLayout(Flavour flavour, uint32_t binding) {
+// Declarations printed from shader_abi.h's tables, the one place the numbers are written.
+// GLSL ES 3.00 has no layout(binding): the runtime binds blocks and samplers by name there.
+std::string blockLayout(Flavour flavour, const abi::BlockDesc& block) {
   if (flavour == Flavour::GlslEs300) return "layout(std140)";
-  return "layout(std140, set = 0, binding = " + std::to_string(binding) + ")";
+  return "layout(std140, set = " + std::to_string(block.set) + ", binding = " + std::to_string(block.binding) + ")";
+}
+
+std::string members(std::span<const abi::MemberDesc> list) {
+  std::string s;
+  for (const abi::MemberDesc& m : list) {
+    s += "    " + std::string(m.type) + " " + std::string(m.name);
+    if (m.arraySize != 0) s += "[" + std::to_string(m.arraySize) + "]";
+    s += ";\n";
+  }
+  return s;
+}
+
+std::string fixedBlock(Flavour flavour, const abi::BlockDesc& block) {
+  return blockLayout(flavour, block) + " uniform " + std::string(block.name) + " {\n" + members(block.members) + "} " +
+         std::string(block.instance) + ";\n";
+}
+
+std::string samplerLayout(Flavour flavour, uint32_t set, uint32_t binding) {
+  if (flavour != Flavour::Vulkan) return "";
+  return "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(binding) + ") ";
+}
+
+std::string frameSampler(Flavour flavour, const abi::SamplerDesc& sampler, const char* precision) {
+  return samplerLayout(flavour, sampler.set, sampler.binding) + "uniform " + precision + " sampler2D " +
+         std::string(sampler.name) + ";\n";
 }
 
 // The per-frame and per-object blocks, identical text in both stages (GLSL ES requires blocks
-// shared between stages to match member for member, precision included). Mirrors shader_abi.h.
+// shared between stages to match member for member, precision included).
 std::string frameAndObjectBlocks(Flavour flavour) {
-  return "struct PunctualLightData {\n"
-         "    highp vec4 positionFalloff;\n"
-         "    highp vec4 colorIntensity;\n"
-         "    highp vec4 direction;\n"
-         "    highp vec4 spotScaleOffset;\n"
-         "};\n" +
-         blockLayout(flavour, 0) + " uniform FrameUniforms {\n"
-         "    highp mat4 viewProjection;\n"
-         "    highp vec4 cameraPosition;\n"
-         "    highp vec4 lightDirection;\n"
-         "    highp vec4 lightColor;\n"
-         "    highp vec4 ambient;\n"
-         "    PunctualLightData punctualLights[" + std::to_string(permutations::kMaxPointLights) + "];\n"
-         "    highp vec4 sh[9];\n"
-         "} frame;\n" +
-         blockLayout(flavour, 1) + " uniform ObjectUniforms {\n"
-         "    highp mat4 model;\n"
-         "    highp mat4 normalMatrix;\n"
-         "} object;\n";
+  return "struct " + std::string(abi::kPunctualLightStruct.name) + " {\n" + members(abi::kPunctualLightStruct.members) +
+         "};\n" + fixedBlock(flavour, abi::kFrameBlock) + fixedBlock(flavour, abi::kObjectBlock);
 }
 
 // Parameters are read at the tier's precision: a block member needs an explicit qualifier (the
@@ -83,7 +97,7 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
     s += sep + slot.name + "@" + std::to_string(slot.offset);
     sep = ", ";
   }
-  s += "\n" + blockLayout(flavour, 2) + " uniform MaterialParams {\n";
+  s += "\n" + blockLayout(flavour, abi::kMaterialBlock) + " uniform " + std::string(abi::kMaterialBlock.name) + " {\n";
   for (const ir::Param& p : material.params) {
     if (!p.used || p.type == ir::Type::Texture2D) continue;
     // A declared range beyond fp16's 65504 keeps the member in fp32 (emit_glsl does the same
@@ -92,7 +106,7 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
     std::string qualifier = p.type == ir::Type::Bool ? "" : std::string(wide ? "highp" : precision) + " ";
     s += "    " + qualifier + ir::glslName(p.type) + " " + p.name + ";\n";
   }
-  return s + "} params;\n";
+  return s + "} " + std::string(abi::kMaterialBlock.instance) + ";\n";
 }
 
 std::string upper(std::string s) {
@@ -100,16 +114,14 @@ std::string upper(std::string s) {
   return s;
 }
 
-// One sampler uniform per texture the material reads. Vulkan: set 1, binding 8 + slot
-// (shader_abi.h); GLES binds by name, so the runtime looks up "facet_material_<name>"
-// (kMaterialSamplerPrefix).
+// One sampler uniform per texture the material reads, at its slot's binding (shader_abi.h
+// materialTextureBinding); GLES binds by name, kMaterialSamplerPrefix + the parameter's.
 std::string materialSamplers(Flavour flavour, const ParamLayout& layout, const char* precision) {
   std::string s;
   for (const ParamSlot& slot : layout.slots) {
     if (slot.textureSlot < 0) continue;
-    if (flavour == Flavour::Vulkan)
-      s += "layout(set = 1, binding = " + std::to_string(8 + slot.textureSlot) + ") ";
-    s += "uniform " + std::string(precision) + " sampler2D facet_material_" + slot.name + ";\n";
+    s += samplerLayout(flavour, abi::kTextureSet, abi::materialTextureBinding(uint32_t(slot.textureSlot)));
+    s += "uniform " + std::string(precision) + " sampler2D " + abi::kMaterialSamplerPrefix + slot.name + ";\n";
   }
   return s;
 }
@@ -122,7 +134,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   s += std::string("precision ") + floatPrecision + " float;\nprecision highp int;\n";
   s += "// Tier " + std::string(permutations::toString(in.key.tier)) + ": " + permutations::describe(in.tier) + ".\n";
   for (const OptionalInput& v : kOptionalInputs)
-    if (needs(in, v)) s += "#define FACET_VARYING_" + upper(v.name) + " 1\n";
+    if (needs(in, v)) s += "#define FACET_VARYING_" + upper(std::string(v.name())) + " 1\n";
   if (usesNormalOutput(in)) s += "#define FACET_MATERIAL_NORMAL 1\n";
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
@@ -168,12 +180,18 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
   return s;
 }
 
-// The vertex inputs the variant reads, at shader_abi.h's locations.
+// The vertex inputs the variant reads, from shader_abi.h's attribute table: always highp (read as
+// stored), vecN for N components, named a_<name>.
+std::string vertexInput(uint32_t location) {
+  const abi::VertexAttribute& a = abi::vertexAttribute(location);
+  return "layout(location = " + std::to_string(a.location) + ") in highp vec" + std::to_string(a.components) + " a_" +
+         std::string(a.name) + ";\n";
+}
+
 std::string vertexInputs(const AssemblyInput& in) {
-  std::string s = "layout(location = 0) in highp vec3 a_position;\nlayout(location = 1) in highp vec3 a_normal;\n";
+  std::string s = vertexInput(abi::kAttribPosition) + vertexInput(abi::kAttribNormal);
   for (const OptionalInput& v : kOptionalInputs)
-    if (needs(in, v))
-      s += "layout(location = " + std::to_string(v.location) + ") in highp " + v.attributeType + " a_" + v.name + ";\n";
+    if (needs(in, v)) s += vertexInput(v.location);
   return s;
 }
 
@@ -192,27 +210,22 @@ std::string materialSection(const AssemblyInput& in) {
   return s;
 }
 
-// The `lut` specular table (specular_lut_lobe.glsl): Vulkan set 1, binding 1; GLES by name
-// (shader_abi.h kSpecularLutBinding, "facet_specularLut"). Its texels ship in the package.
+// The `lut` specular table (specular_lut_lobe.glsl), shader_abi.h kSpecularLutSampler. Its texels
+// ship in the package.
 // Declared wherever the lobe is compiled; a variant without the light never calls the lobe, and
 // the unused sampler is dropped (samplesSpecularLut says which variants read it).
 std::string specularLutSampler(const AssemblyInput& in, Flavour flavour, const char* precision) {
   if (in.tier.specular != permutations::SpecularModel::Lut || in.material.shading != "lit") return "";
-  return std::string(flavour == Flavour::Vulkan ? "layout(set = 1, binding = 1) " : "") + "uniform " + precision +
-         " sampler2D " + kSpecularLutSamplerName + ";\n";
+  return frameSampler(flavour, abi::kSpecularLutSampler, precision);
 }
 
 // The frame textures of image-based lighting (shader_abi.h): the prefiltered environment in every
-// lit variant, the DFG table in split-sum ones. Vulkan: set 1 at their bindings; GLES by name.
+// lit variant, the DFG table in split-sum ones.
 // Fragment stage only: the vertex stage evaluates SH from the frame block, never a texture.
 std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* precision) {
   if (in.material.shading != "lit") return "";
-  auto declare = [&](uint32_t binding, const char* name) {
-    return std::string(flavour == Flavour::Vulkan ? "layout(set = 1, binding = " + std::to_string(binding) + ") " : "") +
-           "uniform " + precision + " sampler2D " + name + ";\n";
-  };
-  std::string s = declare(kEnvironmentSamplerBinding, kEnvironmentSamplerName);
-  if (in.tier.ambient == permutations::AmbientModel::SplitSum) s += declare(kDfgLutSamplerBinding, kDfgLutSamplerName);
+  std::string s = frameSampler(flavour, abi::kEnvironmentSampler, precision);
+  if (in.tier.ambient == permutations::AmbientModel::SplitSum) s += frameSampler(flavour, abi::kDfgLutSampler, precision);
   return s;
 }
 
@@ -313,7 +326,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   // with the clamps of precision.glsl, or highp for the reference tier.
   const char* fragmentPrecision = tierPrecision(in.tier);
   std::string fs = prologue(in, flavour, "fragment", fragmentPrecision);
-  fs += varyings(in, flavour, "in") + "layout(location = 0) out " + fragmentPrecision + " vec4 fragColor;\n\n";
+  fs += varyings(in, flavour, "in") + "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out " +
+        fragmentPrecision + " vec4 fragColor;\n\n";
   fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
         iblSamplers(in, flavour, fragmentPrecision) + "\n";

@@ -116,6 +116,7 @@ struct MaterialContext {
   const ParamLayout& layout;
   const BuildOptions& options;
   const VariantCache& cache;
+  const std::vector<package::MslBinding>& mslBindings;  // Metal slots, the same for every variant
 };
 
 // One variant's share of the result, written by exactly one job.
@@ -183,7 +184,9 @@ bool compileVariant(const MaterialContext& ctx, const permutations::TierConfig& 
     return false;
   }
   std::string mslVertex, mslFragment;
-  if (!spirvToMsl(metalVertex, &mslVertex, error) || !spirvToMsl(metalFragment, &mslFragment, error)) return false;
+  if (!spirvToMsl(metalVertex, ctx.mslBindings, &mslVertex, error) ||
+      !spirvToMsl(metalFragment, ctx.mslBindings, &mslFragment, error))
+    return false;
   *out = {bytesOf(shipped.vertex), bytesOf(shipped.fragment), bytesOf(vulkan.vertex),
           bytesOf(vulkan.fragment), bytesOf(mslVertex),       bytesOf(mslFragment)};
   return true;
@@ -273,7 +276,8 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
 
   // Jobs finish in any order; each writes only its own slot, and the slots are read in key order.
   VariantCache cache(options.cacheDir);
-  MaterialContext ctx{material, surface, layout, options, cache};
+  result.package.mslBindings = materialMslBindings(result.package.material);
+  MaterialContext ctx{material, surface, layout, options, cache, result.package.mslBindings};
   std::vector<VariantBuild> builds(keys.size());
   std::vector<char> done(keys.size(), 0);
   std::mutex progressMutex;

@@ -7,11 +7,33 @@
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/spirv_tools_backend.h"
+#include "facet/shader_abi.h"
 
 namespace facet::compiler {
 namespace {
 
 enum class PostRead { Sampled, SubpassInput, FramebufferFetch };
+
+// The post fragment stage's interface, printed from shader_abi.h's attachment constants: where
+// the HDR colour of the forward pass is read from, and where the LDR result goes.
+std::string postInterface(Flavour flavour, PostRead read) {
+  const std::string hdr(abi::kPostHdrName);
+  const std::string setBinding =
+      "set = " + std::to_string(abi::kPostHdrSet) + ", binding = " + std::to_string(abi::kPostHdrBinding);
+  auto ldr = [](uint32_t location) { return "layout(location = " + std::to_string(location) + ") out vec4 fragColor;\n"; };
+  switch (read) {
+    case PostRead::SubpassInput:
+      return "layout(input_attachment_index = " + std::to_string(abi::kPostHdrInputAttachmentIndex) + ", " + setBinding +
+             ") uniform mediump subpassInput " + hdr + ";\n" + ldr(abi::kPostMergedLdrLocation);
+    case PostRead::FramebufferFetch:
+      return "layout(location = " + std::to_string(abi::kPostHdrColorLocation) + ") inout mediump vec4 " + hdr + ";\n" +
+             ldr(abi::kPostMergedLdrLocation);
+    case PostRead::Sampled:
+      return (flavour == Flavour::Vulkan ? "layout(" + setBinding + ") " : std::string()) + "uniform mediump sampler2D " +
+             hdr + ";\n" + ldr(abi::kPostSeparateLdrLocation);
+  }
+  return "";
+}
 
 // Prologue + the chunks the effects need + the template, as materials are assembled: the
 // Vulkan flavour is ES 3.10 with FACET_VULKAN, the GLES flavour ES 3.00.
@@ -28,6 +50,7 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   text += "precision mediump float;\nprecision highp int;\n";
   std::vector<std::string> files;
   if (std::string(templateName).find(".frag.") != std::string::npos) {
+    text += postInterface(flavour, read);
     if (effects.toneCurve == ToneCurve::Aces) files.push_back("tonemap_aces.glsl");
     if (effects.toneCurve == ToneCurve::Neutral) files.push_back("tonemap_neutral.glsl");
     files.push_back("srgb.glsl");
@@ -64,7 +87,7 @@ bool toMsl(const std::vector<uint32_t>& words, const std::string& what, std::str
     *error = "post " + what + ": spirv-opt --convert-relaxed-to-half failed:\n" + log;
     return false;
   }
-  return spirvToMsl(metal, msl, error);
+  return spirvToMsl(metal, {}, msl, error);
 }
 
 // Compiles one fragment form with the vertex stage (glslang links both), checks GLSL ES where

@@ -101,10 +101,15 @@ bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t>
       return false;
     }
   }
+  return checkContentHash(entry, index, raw, fileOffset, error);
+}
+
+bool checkContentHash(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> raw, uint64_t fileOffset,
+                      std::string& error) {
   uint64_t computed = contentHash(raw);
   if (computed != entry.contentHash) {
-    error = where + " content hash mismatch (expected " + hex(entry.contentHash) + ", computed " +
-            hex(computed) + ")";
+    error = "blob " + std::to_string(index) + " at byte " + std::to_string(fileOffset) +
+            " content hash mismatch (expected " + hex(entry.contentHash) + ", computed " + hex(computed) + ")";
     return false;
   }
   return true;

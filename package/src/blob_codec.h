@@ -46,4 +46,9 @@ bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t>
                 uint64_t fileOffset, std::span<const uint8_t> dictionary, std::vector<uint8_t>& raw,
                 std::string& error);
 
+// The content hash of a blob's raw bytes against its table entry; what decodeBlob checks last,
+// and all the lazy reader checks for a blob stored raw (served without a copy).
+bool checkContentHash(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> raw, uint64_t fileOffset,
+                      std::string& error);
+
 }  // namespace facet::package::detail

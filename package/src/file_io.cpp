@@ -9,6 +9,7 @@
 
 #include "facet/atomic_file.h"
 #include "facet/package.h"
+#include "file_io.h"
 #include "format.h"
 
 namespace facet::package {
@@ -22,33 +23,42 @@ using File = std::unique_ptr<std::FILE, FileCloser>;
 
 }  // namespace
 
-ReadResult readFile(const std::string& path) {
-  ReadResult result;
+namespace detail {
+
+bool readWholeFile(const std::string& path, std::vector<uint8_t>& bytes, std::string& error) {
   std::error_code ec;
   // Ask for the size first, so an oversized file is refused before anything is allocated.
   uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec) {
-    result.error = "cannot read '" + path + "': " + ec.message();
-    return result;
+    error = "cannot read '" + path + "': " + ec.message();
+    return false;
   }
-  if (size > detail::kMaxFileSize) {
-    result.error = "cannot read '" + path + "': " + std::to_string(size) +
-                   " bytes is larger than the package limit of " +
-                   std::to_string(detail::kMaxFileSize) + " bytes";
-    return result;
+  if (size > kMaxFileSize) {
+    error = "cannot read '" + path + "': " + std::to_string(size) + " bytes is larger than the package limit of " +
+            std::to_string(kMaxFileSize) + " bytes";
+    return false;
   }
   File f(std::fopen(path.c_str(), "rb"));
   if (!f) {
-    result.error = "cannot open '" + path + "': " + std::strerror(errno);
-    return result;
+    error = "cannot open '" + path + "': " + std::strerror(errno);
+    return false;
   }
-  std::vector<uint8_t> bytes(size);
+  bytes.assign(size, 0);
   size_t got = bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), f.get());
   // A file that changed size since file_size() is reported rather than half-read.
   if (got != bytes.size() || std::fgetc(f.get()) != EOF) {
-    result.error = "cannot read '" + path + "': the file changed size while being read";
-    return result;
+    error = "cannot read '" + path + "': the file changed size while being read";
+    return false;
   }
+  return true;
+}
+
+}  // namespace detail
+
+ReadResult readFile(const std::string& path) {
+  ReadResult result;
+  std::vector<uint8_t> bytes;
+  if (!detail::readWholeFile(path, bytes, result.error)) return result;
   // Callers name the file in their messages ("<path>: error: ..."), so the reader's message
   // stays about the content.
   return read(bytes);

@@ -36,6 +36,8 @@ inline constexpr uint32_t kTagVariants = fourcc('V', 'A', 'R', 'S');   // varian
 inline constexpr uint32_t kTagBlobTable = fourcc('B', 'T', 'A', 'B');  // one entry per blob
 inline constexpr uint32_t kTagBlobData = fourcc('B', 'D', 'A', 'T');   // blob bytes, back to back
 inline constexpr uint32_t kTagTextures = fourcc('T', 'E', 'X', 'S');   // generated textures (optional)
+inline constexpr uint32_t kTagMslBindings = fourcc('M', 'S', 'L', 'B');  // Metal argument slots (optional, 1.2)
+inline constexpr uint16_t kFirstMinorWithMslBindings = 2;
 
 // Limits the reader enforces so that a hostile file cannot make it allocate or work without
 // bound. A real package has 4 sections and a few MiB of code.
@@ -49,6 +51,8 @@ inline constexpr uint64_t kMaxFileSize = 1ull << 30;
 // support is smaller; a lookup table needs far less), a name a GLSL identifier of at most 64 bytes.
 inline constexpr uint32_t kMaxTextureSide = 16384;
 inline constexpr uint32_t kMaxTextureNameLength = 64;
+// An MSLB name: a block name or a sampler's, "facet_material_" + a parameter name (≤ kMaxNameBytes).
+inline constexpr uint32_t kMaxMslNameLength = 192;
 
 // Fixed so output is deterministic. With the package dictionary most of a blob is one long match,
 // and level 9 compresses ten times faster than 19 for 13 % more bytes (docs/package-format.md,
@@ -68,6 +72,9 @@ inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 dict
 // u32 name length, u32 width, u32 height, u8 format, u8 + u16 reserved, u32 blob, u32 variant count
 inline constexpr uint64_t kMinTextureSize = 24;
 inline constexpr uint64_t kVariantIndexSize = 4;
+// u32 name length, u8 kind, u8 + u16 reserved, u32 set, u32 binding, u32 index
+inline constexpr uint64_t kMinMslBindingSize = 20;
+inline constexpr uint8_t kLastMslResource = uint8_t(MslResource::Texture);
 
 struct BlobEntry {
   uint64_t contentHash = 0;  // XXH3_64bits of the raw code

@@ -38,6 +38,14 @@ const char* toString(ParamType type) {
   return "unknown";
 }
 
+const char* toString(MslResource kind) {
+  switch (kind) {
+    case MslResource::Buffer: return "buffer";
+    case MslResource::Texture: return "texture";
+  }
+  return "unknown";
+}
+
 const char* toString(TexelFormat format) {
   switch (format) {
     case TexelFormat::R8Unorm: return "r8_unorm";

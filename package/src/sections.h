@@ -10,6 +10,10 @@
 
 namespace facet::package::detail {
 
+// A GLSL identifier of at most maxLength bytes: what shaders call a sampler or block, and what a
+// GL or Metal runtime looks up.
+bool isGlslIdentifier(const std::string& s, size_t maxLength);
+
 // META: compiler version, then the material.
 void encodeMetadata(ByteWriter& out, const std::string& compilerVersion, const MaterialInfo& material);
 void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& material);
@@ -29,5 +33,10 @@ void decodeBlobTable(ByteReader& in, uint64_t dataSize, uint16_t minor, std::vec
 void encodeTextureTable(ByteWriter& out, const std::vector<TextureEntry>& textures);
 void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector<BlobEntry>& blobs,
                         std::vector<TextureEntry>& textures);
+
+// MSLB: the Metal argument slots of the package's MSL (format 1.2). Each slot index within
+// Metal's table for its kind; names GLSL identifiers like texture names.
+void encodeMslBindings(ByteWriter& out, const std::vector<MslBinding>& bindings);
+void decodeMslBindings(ByteReader& in, std::vector<MslBinding>& bindings);
 
 }  // namespace facet::package::detail

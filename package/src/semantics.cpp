@@ -2,6 +2,7 @@
 // did not build (docs/security.md). read() guarantees every offset and size; this guarantees that
 // what they hold is a material the runtime can use, as the compiler would have written it.
 #include "facet/package.h"
+#include "facet/package_reader.h"
 
 #include <cmath>
 #include <algorithm>
@@ -42,29 +43,28 @@ std::string paramError(const Param& p) {
   return "";
 }
 
-// The shader's kind matches its slot: SPIR-V words in a SPIR-V slot (a driver handed text as
-// SPIR-V fails with VK_ERROR_UNKNOWN at best), text where text is expected.
-std::string shaderError(const Shader& s) {
-  if (s.target == Target::Spirv) {
-    if (s.code.size() < 20 || s.code.size() % 4 != 0 ||
-        !(s.code[0] == 0x03 && s.code[1] == 0x02 && s.code[2] == 0x23 && s.code[3] == 0x07))
+}  // namespace
+
+std::string shaderCodeError(Target target, std::span<const uint8_t> code) {
+  // The shader's kind matches its slot: SPIR-V words in a SPIR-V slot (a driver handed text as
+  // SPIR-V fails with VK_ERROR_UNKNOWN at best), text where text is expected.
+  if (target == Target::Spirv) {
+    if (code.size() < 20 || code.size() % 4 != 0 ||
+        !(code[0] == 0x03 && code[1] == 0x02 && code[2] == 0x23 && code[3] == 0x07))
       return "is not SPIR-V (a whole number of little-endian words after the 5-word header, magic 0x07230203)";
     return "";
   }
-  for (uint8_t c : s.code)
+  for (uint8_t c : code)
     if (c == 0) return "is text with a NUL byte in it";
-  if (s.target == Target::GlslEs300) {
+  if (target == Target::GlslEs300) {
     static const std::string version = "#version 300 es";
-    if (s.code.size() < version.size() || !std::equal(version.begin(), version.end(), s.code.begin()))
+    if (code.size() < version.size() || !std::equal(version.begin(), version.end(), code.begin()))
       return "is not GLSL ES 3.00 (it does not start with '#version 300 es')";
   }
   return "";
 }
 
-}  // namespace
-
-std::string semanticError(const Package& pkg) {
-  const MaterialInfo& m = pkg.material;
+std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants) {
   if (!isValidName(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
   if (m.shading != "lit" && m.shading != "unlit") return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
   static const std::set<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
@@ -81,18 +81,30 @@ std::string semanticError(const Package& pkg) {
     if (!names.insert(p.name).second) return "parameter '" + shown(p.name) + "' is declared twice";
   }
   std::set<std::string> keys;
-  for (const Variant& v : pkg.variants) {
+  for (const VariantInfo& v : variants) {
     auto key = permutations::VariantKey::parse(v.key);
     if (!key || key->toString() != v.key) return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
     if (!keys.insert(v.key).second) return "variant '" + v.key + "' is stored twice";
     std::set<std::pair<Stage, Target>> slots;
-    for (const Shader& s : v.shaders) {
+    for (const ShaderInfo& s : v.shaders)
       if (!slots.insert({s.stage, s.target}).second)
         return "variant '" + v.key + "' has two " + toString(s.stage) + " " + toString(s.target) + " shaders";
-      if (std::string e = shaderError(s); !e.empty())
-        return "the " + std::string(toString(s.stage)) + " " + toString(s.target) + " shader of variant '" + v.key + "' " + e;
-    }
   }
+  return "";
+}
+
+std::string semanticError(const Package& pkg) {
+  std::vector<VariantInfo> variants;
+  for (const Variant& v : pkg.variants) {
+    VariantInfo& info = variants.emplace_back();
+    info.key = v.key;
+    for (const Shader& s : v.shaders) info.shaders.push_back({s.stage, s.target, 0});
+  }
+  if (std::string e = semanticError(pkg.material, variants); !e.empty()) return e;
+  for (const Variant& v : pkg.variants)
+    for (const Shader& s : v.shaders)
+      if (std::string e = shaderCodeError(s.target, s.code); !e.empty())
+        return "the " + std::string(toString(s.stage)) + " " + toString(s.target) + " shader of variant '" + v.key + "' " + e;
   return "";
 }
 

@@ -6,17 +6,12 @@
 
 namespace facet::package::detail {
 
-namespace {
-
-// A GLSL identifier: what the shaders call the sampler, and what a GL runtime looks up.
-bool isIdentifier(const std::string& s) {
-  if (s.empty() || s.size() > kMaxTextureNameLength) return false;
+bool isGlslIdentifier(const std::string& s, size_t maxLength) {
+  if (s.empty() || s.size() > maxLength) return false;
   auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
   if (!letter(s[0])) return false;
   return std::all_of(s.begin(), s.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9'); });
 }
-
-}  // namespace
 
 void encodeTextureTable(ByteWriter& out, const std::vector<TextureEntry>& textures) {
   out.u32(uint32_t(textures.size()));
@@ -49,7 +44,7 @@ void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector
     t.blob = in.u32();
     if (!in.ok()) return;
     const std::string what = "texture " + std::to_string(i) + " (entry at byte " + std::to_string(at) + ")";
-    if (!isIdentifier(t.name))
+    if (!isGlslIdentifier(t.name, kMaxTextureNameLength))
       return in.fail(what + " has name '" + t.name + "', not an identifier of 1.." +
                      std::to_string(kMaxTextureNameLength) + " letters, digits and '_'");
     for (const TextureEntry& earlier : textures)

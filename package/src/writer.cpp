@@ -122,8 +122,8 @@ std::vector<uint8_t> write(const Package& pkg) {
     blobTable.push_back(b);
   }
 
-  // META, VARS, [TEXS], BTAB, BDAT. TEXS exists only when there are textures: readers older than
-  // it skip it, and packages without textures keep their earlier bytes.
+  // META, VARS, [TEXS], [MSLB], BTAB, BDAT. TEXS and MSLB exist only when not empty, so packages
+  // without them keep their earlier bytes.
   std::vector<Section> sections;
   auto section = [&](uint32_t tag, const auto& encode) {
     sections.push_back({tag, {}});
@@ -133,6 +133,7 @@ std::vector<uint8_t> write(const Package& pkg) {
   section(kTagMeta, [&](ByteWriter& out) { encodeMetadata(out, pkg.compilerVersion, pkg.material); });
   section(kTagVariants, [&](ByteWriter& out) { encodeVariantTable(out, variants); });
   if (!textures.empty()) section(kTagTextures, [&](ByteWriter& out) { encodeTextureTable(out, textures); });
+  if (!pkg.mslBindings.empty()) section(kTagMslBindings, [&](ByteWriter& out) { encodeMslBindings(out, pkg.mslBindings); });
   section(kTagBlobTable, [&](ByteWriter& out) { encodeBlobTable(out, blobTable); });
   sections.push_back({kTagBlobData, std::move(blobData)});
 
@@ -140,7 +141,8 @@ std::vector<uint8_t> write(const Package& pkg) {
   ByteWriter out(file);
   out.bytes(kMagic);
   out.u16(kFormatMajor);
-  out.u16(usesDictionary ? kFirstMinorWithDictionary : 0);  // the lowest minor that describes the file
+  // The lowest minor that describes the file.
+  out.u16(!pkg.mslBindings.empty() ? kFirstMinorWithMslBindings : usesDictionary ? kFirstMinorWithDictionary : 0);
   out.u32(uint32_t(sections.size()));
   out.u64(0);  // file size, patched below
   out.u64(0);  // checksum, patched below

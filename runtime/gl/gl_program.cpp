@@ -1,5 +1,6 @@
 #include "gl_program.h"
 
+#include <string>
 #include <vector>
 
 #include "facet/shader_abi.h"
@@ -45,11 +46,12 @@ std::optional<Shader> compileStage(GLenum stage, const std::string& source, std:
   return shader;
 }
 
-UniformBlock bindBlock(GLuint program, const char* name, GLuint binding) {
+// GLES 3.00 shaders carry no binding: the block is found by the table's name, bound to its binding.
+UniformBlock bindBlock(GLuint program, const abi::BlockDesc& desc) {
   UniformBlock block;
-  block.index = glGetUniformBlockIndex(program, name);
+  block.index = glGetUniformBlockIndex(program, std::string(desc.name).c_str());
   if (!block.present()) return block;  // the shader does not use this block
-  glUniformBlockBinding(program, block.index, binding);
+  glUniformBlockBinding(program, block.index, desc.binding);
   glGetActiveUniformBlockiv(program, block.index, GL_UNIFORM_BLOCK_DATA_SIZE, &block.dataSize);
   return block;
 }
@@ -79,9 +81,9 @@ std::optional<LinkedProgram> buildProgram(const std::string& vertexSource,
   glDetachShader(program, vertex->id());
   glDetachShader(program, fragment->id());
 
-  linked.frame = bindBlock(program, "FrameUniforms", abi::kFrameBinding);
-  linked.object = bindBlock(program, "ObjectUniforms", abi::kObjectBinding);
-  linked.material = bindBlock(program, "MaterialParams", abi::kMaterialBinding);
+  linked.frame = bindBlock(program, abi::kFrameBlock);
+  linked.object = bindBlock(program, abi::kObjectBlock);
+  linked.material = bindBlock(program, abi::kMaterialBlock);
   if (!checkGlError("program link", error)) return std::nullopt;
   return linked;
 }

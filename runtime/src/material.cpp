@@ -32,12 +32,12 @@ constexpr GeneratedSlot kGeneratedSlots[] = {{abi::kSpecularLutName, abi::kSpecu
 
 // A lookup table, not an image: bilinear within its one level, clamped so that the table's
 // ends (R·L = 1, roughness 1) are not blended with the opposite edge.
-Texture runtimeTexture(const package::Texture& t) {
+Texture runtimeTexture(const package::TextureInfo& t, std::span<const uint8_t> texels) {
   Texture out;
   out.width = t.width;
   out.height = t.height;
   out.format = TextureFormat::R8Unorm;  // the package's only texel format
-  out.levels = {t.texels};
+  out.levels = {std::vector<uint8_t>(texels.begin(), texels.end())};
   out.linearFilter = true;
   out.repeat = false;
   return out;
@@ -51,68 +51,101 @@ std::string number(double v) {
 
 }  // namespace
 
+LoadedMaterial::LoadedMaterial(package::PackageReader reader) : reader_(std::move(reader)) {
+  textures_.resize(reader_.textures().size());
+}
+
+std::optional<LoadedMaterial> LoadedMaterial::checked(std::optional<package::PackageReader> reader,
+                                                      const std::string& name, std::string* error) {
+  if (!reader) {
+    *error = name + ": " + *error;
+    return std::nullopt;
+  }
+  // The tables' meaning now; each shader's code when program() first decodes it.
+  if (std::string why = reader->semanticError(); !why.empty()) {
+    *error = name + ": " + why;
+    return std::nullopt;
+  }
+  return LoadedMaterial(std::move(*reader));
+}
+
 std::optional<LoadedMaterial> LoadedMaterial::load(const std::string& path, std::string* error) {
-  package::ReadResult r = package::readFile(path);
-  if (!r.package) {
-    *error = path + ": " + r.error;
-    return std::nullopt;
-  }
-  if (std::string why = package::semanticError(*r.package); !why.empty()) {
-    *error = path + ": " + why;
-    return std::nullopt;
-  }
-  LoadedMaterial m;
-  m.package_ = std::move(*r.package);
-  for (const package::Texture& t : m.package_.textures) m.textures_.push_back(runtimeTexture(t));
-  return m;
+  return checked(package::PackageReader::openFile(path, error), path, error);
+}
+
+std::optional<LoadedMaterial> LoadedMaterial::loadFromMemory(std::span<const uint8_t> bytes, const std::string& name,
+                                                             std::string* error) {
+  return checked(package::PackageReader::open(bytes, error), name, error);
 }
 
 std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std::string* error) const {
-  for (const package::Variant& v : package_.variants) {
-    if (v.key != key) continue;
-    ShaderProgram p;
-    for (const package::Shader& s : v.shaders) {
-      bool vertex = s.stage == package::Stage::Vertex;
-      if (s.target == package::Target::GlslEs300) {
-        (vertex ? p.vertexGlslEs : p.fragmentGlslEs).assign(s.code.begin(), s.code.end());
-      } else if (s.target == package::Target::Spirv) {
-        std::vector<uint32_t>& words = vertex ? p.vertexSpirv : p.fragmentSpirv;
-        words.resize(s.code.size() / 4);
-        if (!words.empty()) std::memcpy(words.data(), s.code.data(), words.size() * 4);
-        std::string why;
-        if (!validateUntrustedSpirv(words, &why)) {
-          *error = "material '" + package_.material.name + "' variant " + key + ": the " + package::toString(s.stage) +
-                   " shader is " + why;
-          return std::nullopt;
-        }
+  const package::VariantInfo* variant = reader_.findVariant(key);
+  if (!variant) {
+    std::string keys;
+    for (const package::VariantInfo& v : reader_.variants()) keys += (keys.empty() ? "" : ", ") + v.key;
+    *error = "material '" + info().name + "' was not built with variant '" + key + "' (built: " + keys +
+             "); recompile it for this scene";
+    return std::nullopt;
+  }
+  ShaderProgram p;
+  for (const package::ShaderInfo& s : variant->shaders) {
+    // Metal is not a backend of this runtime: its code stays compressed.
+    if (s.target == package::Target::Msl) continue;
+    const std::string what = "material '" + info().name + "' variant " + key + ": the " + package::toString(s.stage) +
+                             " shader";
+    std::optional<std::span<const uint8_t>> code = reader_.blob(s.blob, error);
+    if (!code) {
+      *error = what + ": " + *error;
+      return std::nullopt;
+    }
+    if (std::string why = package::shaderCodeError(s.target, *code); !why.empty()) {
+      *error = "material '" + info().name + "': the " + package::toString(s.stage) + " " +
+               package::toString(s.target) + " shader of variant '" + key + "' " + why;
+      return std::nullopt;
+    }
+    bool vertex = s.stage == package::Stage::Vertex;
+    if (s.target == package::Target::GlslEs300) {
+      (vertex ? p.vertexGlslEs : p.fragmentGlslEs).assign(code->begin(), code->end());
+    } else if (s.target == package::Target::Spirv) {
+      std::vector<uint32_t>& words = vertex ? p.vertexSpirv : p.fragmentSpirv;
+      words.resize(code->size() / 4);
+      if (!words.empty()) std::memcpy(words.data(), code->data(), words.size() * 4);
+      std::string why;
+      if (!validateUntrustedSpirv(words, &why)) {
+        *error = what + " is " + why;
+        return std::nullopt;
       }
     }
-    return p;
   }
-  std::string keys;
-  for (const package::Variant& v : package_.variants) keys += (keys.empty() ? "" : ", ") + v.key;
-  *error = "material '" + package_.material.name + "' was not built with variant '" + key + "' (built: " + keys +
-           "); recompile it for this scene";
-  return std::nullopt;
+  return p;
 }
 
 std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(const std::string& variantKey,
                                                                            std::string* error) const {
   std::vector<TextureBinding> out;
+  const std::vector<package::VariantInfo>& variants = reader_.variants();
   uint32_t index = 0;
-  while (index < package_.variants.size() && package_.variants[index].key != variantKey) ++index;
-  for (size_t i = 0; i < package_.textures.size(); ++i) {
-    const package::Texture& t = package_.textures[i];
+  while (index < variants.size() && variants[index].key != variantKey) ++index;
+  for (size_t i = 0; i < reader_.textures().size(); ++i) {
+    const package::TextureInfo& t = reader_.textures()[i];
     if (std::find(t.variants.begin(), t.variants.end(), index) == t.variants.end()) continue;
     const GeneratedSlot* slot = nullptr;
     for (const GeneratedSlot& s : kGeneratedSlots)
       if (t.name == s.name) slot = &s;
     if (!slot) {
-      *error = "material '" + package_.material.name + "' variant '" + variantKey + "' samples texture '" + t.name +
+      *error = "material '" + info().name + "' variant '" + variantKey + "' samples texture '" + t.name +
                "', which this runtime does not know; update the runtime or recompile the material";
       return std::nullopt;
     }
-    out.push_back({slot->binding, t.name, &textures_[i]});
+    if (!textures_[i]) {
+      std::optional<std::span<const uint8_t>> texels = reader_.texels(i, error);
+      if (!texels) {
+        *error = "material '" + info().name + "' texture '" + t.name + "': " + *error;
+        return std::nullopt;
+      }
+      textures_[i] = std::make_unique<Texture>(runtimeTexture(t, *texels));
+    }
+    out.push_back({slot->binding, t.name, textures_[i].get()});
   }
   return out;
 }
@@ -120,7 +153,7 @@ std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(con
 std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<std::string, std::vector<double>>& values,
                                                                std::string* error, ColorEncoding colors,
                                                                const std::set<std::string>& givenAsBool) const {
-  const package::MaterialInfo& info = package_.material;
+  const package::MaterialInfo& info = reader_.material();
   for (const auto& [name, value] : values) {
     bool known = false;
     for (const package::Param& p : info.params) known = known || p.name == name;
@@ -195,7 +228,7 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
 
 std::optional<std::vector<LoadedMaterial::SampledTexture>> LoadedMaterial::sampledTextures(
     const std::map<std::string, std::string>& images, std::string* error) const {
-  const package::MaterialInfo& info = package_.material;
+  const package::MaterialInfo& info = reader_.material();
   for (const auto& [name, path] : images) {
     bool texture = false;
     for (const package::Param& p : info.params) texture = texture || (p.name == name && package::isTexture(p.type));

@@ -1,5 +1,5 @@
-// libFuzzer target for the package reader (package::read), the code apps run on files they did
-// not build. Built only in the clang configuration of scripts/fuzz.sh (-DFACET_FUZZ=ON), with
+// libFuzzer target for the package readers: package::read and the lazy PackageReader apps use
+// (open, then each blob on request), the code apps run on files they did not build. Built only in the clang configuration of scripts/fuzz.sh (-DFACET_FUZZ=ON), with
 // ASan + UBSan; a crash, a sanitizer report, a leak, a hang or a broken invariant below is a
 // finding.
 //
@@ -14,10 +14,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
+#include <optional>
 #include <span>
+#include <string>
 
 #include "checksum.h"
 #include "facet/package.h"
+#include "facet/package_reader.h"
 #include "format.h"
 
 extern "C" size_t LLVMFuzzerMutate(uint8_t* data, size_t size, size_t maxSize);
@@ -46,9 +50,58 @@ extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max
   return size;
 }
 
+namespace {
+
+// The lazy path: open, the semantic check on the tables, then every shader and texture on
+// request. Agrees with package::read: where read succeeded every request succeeds with the same
+// bytes; where it failed, open or some request fails.
+void checkLazyReader(std::span<const uint8_t> bytes, const facet::package::ReadResult& whole) {
+  namespace pkg = facet::package;
+  std::string error;
+  std::optional<pkg::PackageReader> reader = pkg::PackageReader::open(bytes, &error);
+  if (!reader) {
+    if (error.empty()) broken("PackageReader::open failed without an error message");
+    if (whole.package) broken("PackageReader::open refused a package read() accepted");
+    return;
+  }
+  if (reader->bytesDecompressed() != 0) broken("PackageReader::open decompressed a blob");
+  (void)reader->semanticError();
+  bool allDecoded = true;
+  for (size_t v = 0; v < reader->variants().size(); ++v) {
+    const pkg::VariantInfo& variant = reader->variants()[v];
+    for (size_t s = 0; s < variant.shaders.size(); ++s) {
+      const pkg::ShaderInfo& shader = variant.shaders[s];
+      error.clear();
+      std::optional<std::span<const uint8_t>> code = reader->blob(shader.blob, &error);
+      if (!code) {
+        if (error.empty()) broken("a blob request failed without an error message");
+        allDecoded = false;
+        continue;
+      }
+      if (code->size() != reader->blobs()[shader.blob].rawSize) broken("a decoded blob is not its declared size");
+      if (whole.package) {
+        const std::vector<uint8_t>& expected = whole.package->variants[v].shaders[s].code;
+        if (!std::equal(code->begin(), code->end(), expected.begin(), expected.end()))
+          broken("the lazy reader and read() disagree on a shader's code");
+      }
+    }
+  }
+  for (size_t t = 0; t < reader->textures().size(); ++t) {
+    error.clear();
+    if (!reader->texels(t, &error)) {
+      if (error.empty()) broken("a texture request failed without an error message");
+      allDecoded = false;
+    }
+  }
+  if (whole.package && !allDecoded) broken("the lazy reader failed a blob read() decoded");
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace pkg = facet::package;
   pkg::ReadResult r = pkg::read(std::span<const uint8_t>(data, size));
+  checkLazyReader(std::span<const uint8_t>(data, size), r);
   if (!r.package) {
     if (r.error.empty()) broken("read failed without an error message");
     return 0;

@@ -19,7 +19,8 @@ namespace facet::package {
 // both and the command that rebuilds the package. The writer stamps the lowest minor that
 // describes the file, so packages that use no newer feature stay readable by older readers.
 inline constexpr uint16_t kFormatMajor = 1;
-inline constexpr uint16_t kFormatMinor = 1;  // 1.1: shader blobs compressed against a package dictionary
+inline constexpr uint16_t kFormatMinor = 2;  // 1.1: shader blobs compressed against a package dictionary;
+                                             // 1.2: the Metal argument slots (section MSLB)
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 
@@ -100,11 +101,30 @@ struct Texture {
   bool operator==(const Texture&) const = default;
 };
 
+// Where a Metal app binds one resource of the MSL shaders: the same slot in every variant
+// (pinned from shader_abi.h by the compiler). A Buffer is a uniform block at [[buffer(index)]];
+// a Texture is a combined sampler at [[texture(index)]] and [[sampler(index)]]. `set`/`binding`
+// are its Vulkan descriptor, so an engine can map one to the other.
+enum class MslResource : uint8_t { Buffer = 0, Texture = 1 };
+const char* toString(MslResource);
+struct MslBinding {
+  std::string name;  // block type name ("FrameUniforms") or sampler name ("facet_environment")
+  MslResource kind = MslResource::Buffer;
+  uint32_t set = 0;
+  uint32_t binding = 0;
+  uint32_t index = 0;  // Metal argument table index
+  bool operator==(const MslBinding&) const = default;
+};
+// Metal's argument tables: 31 buffers; 16 samplers on iOS (a Texture uses a texture and a sampler).
+inline constexpr uint32_t kMslBufferSlots = 31;
+inline constexpr uint32_t kMslSamplerSlots = 16;
+
 struct Package {
   std::string compilerVersion;
   MaterialInfo material;
   std::vector<Variant> variants;
   std::vector<Texture> textures;  // written (as section TEXS) only when not empty
+  std::vector<MslBinding> mslBindings;  // written (as section MSLB, format 1.2) only when not empty
   bool operator==(const Package&) const = default;
 };
 

@@ -14,6 +14,7 @@
 #include "facet/ir/module.h"
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
+#include "facet/shader_abi.h"
 
 namespace facet::compiler {
 
@@ -39,16 +40,9 @@ struct AssemblyInput {
   std::string compilerVersion;
 };
 
-// The sampler name of the `lut` tier's specular table, as the shaders declare it.
-inline constexpr const char* kSpecularLutSamplerName = "facet_specularLut";
-
-// Frame textures of image-based lighting, as the shaders declare them (shader_abi.h
-// kDfgLutBinding / kEnvironmentBinding and their names; the runtime binds them per frame).
-inline constexpr const char* kDfgLutSamplerName = "facet_dfgLut";
-inline constexpr uint32_t kDfgLutSamplerBinding = 0;
-inline constexpr const char* kEnvironmentSamplerName = "facet_environment";
-inline constexpr uint32_t kEnvironmentSamplerBinding = 2;
-inline constexpr uint32_t kEnvironmentLevels = 5;  // shader_abi.h kEnvironmentLevels
+// Names the compiler's other stages use, from the shader interface (shader_abi.h owns them).
+inline constexpr const char* kSpecularLutSamplerName = abi::kSpecularLutName;
+inline constexpr uint32_t kEnvironmentLevels = abi::kEnvironmentLevels;
 
 // Whether a variant's fragment stage samples the prefiltered environment (every lit variant) and
 // the DFG table (lit variants of split-sum tiers).

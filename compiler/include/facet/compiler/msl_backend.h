@@ -2,12 +2,23 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "facet/package.h"
+
 namespace facet::compiler {
 
-// MSL 2.0 for the iOS platform. SPIRV-Cross names the entry point "main0".
-bool spirvToMsl(const std::vector<uint32_t>& words, std::string* msl, std::string* error);
+// MSL 2.0 for the iOS platform. SPIRV-Cross names the entry point "main0". Each resource in
+// `slots` (by its Vulkan set and binding) is pinned to its Metal index; others are numbered by
+// SPIRV-Cross in order of use (the post pass passes none).
+bool spirvToMsl(const std::vector<uint32_t>& words, std::span<const package::MslBinding> slots, std::string* msl,
+                std::string* error);
+
+// The Metal slots of a material's shaders, from shader_abi.h: the frame and object blocks, the
+// material's block when it has one, the frame samplers of lit materials, and one sampler per
+// texture parameter with a sampler slot. The same for every variant; recorded in the package.
+std::vector<package::MslBinding> materialMslBindings(const package::MaterialInfo& material);
 
 }  // namespace facet::compiler

@@ -3,12 +3,15 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "facet/package.h"
+#include "facet/package_reader.h"
 #include "facet/render_backend.h"
 
 namespace facet::runtime {
@@ -20,14 +23,20 @@ enum class ColorEncoding { Linear, Srgb };
 
 class LoadedMaterial {
  public:
-  // Reads and validates a .matpkg; nullopt with *error on any problem with the file.
+  // Reads and validates a .matpkg (its tables and meaning; no shader is decompressed until
+  // program() asks for its variant); nullopt with *error on any problem with the file.
   static std::optional<LoadedMaterial> load(const std::string& path, std::string* error);
+  // The same from bytes the app owns, which must outlive the LoadedMaterial: shaders stored
+  // uncompressed are used in place. `name` prefixes messages as the path does for load().
+  static std::optional<LoadedMaterial> loadFromMemory(std::span<const uint8_t> bytes, const std::string& name,
+                                                      std::string* error);
 
-  const package::MaterialInfo& info() const { return package_.material; }
-  const package::Package& package() const { return package_; }
+  const package::MaterialInfo& info() const { return reader_.material(); }
+  const package::PackageReader& reader() const { return reader_; }
 
-  // The shaders of one variant, for every API. A key the package was not built with is an
-  // error that lists the keys it has (the compiler builds only what a scene asks for).
+  // The shaders of one variant, for every API, decompressed on the first request for the
+  // variant. A key the package was not built with is an error that lists the keys it has (the
+  // compiler builds only what a scene asks for).
   std::optional<ShaderProgram> program(const std::string& variantKey, std::string* error) const;
 
   // The std140 "MaterialParams" bytes: declared defaults, overridden by `values` (by name;
@@ -43,8 +52,9 @@ class LoadedMaterial {
 
   // The textures the compiler generated for the variant's shaders (package section TEXS, e.g.
   // the `lut` tier's specular table), bound at their shader_abi.h slots. The Textures are made
-  // once per package, when it is loaded, and live as long as this LoadedMaterial. A texture this
+  // once per package and live as long as this LoadedMaterial. A texture this
   // runtime has no slot for is an error for the variants that sample it.
+  // A texture is decompressed on the first request for a variant that samples it.
   std::optional<std::vector<TextureBinding>> generatedTextures(const std::string& variantKey,
                                                                std::string* error) const;
 
@@ -62,8 +72,14 @@ class LoadedMaterial {
                                                              std::string* error) const;
 
  private:
-  package::Package package_;
-  std::vector<Texture> textures_;  // parallel to package_.textures
+  explicit LoadedMaterial(package::PackageReader reader);
+  static std::optional<LoadedMaterial> checked(std::optional<package::PackageReader> reader, const std::string& name,
+                                               std::string* error);
+
+  package::PackageReader reader_;
+  // Parallel to reader_.textures(), made on first use; unique_ptr so that the Texture pointers
+  // generatedTextures() hands out survive a move of the LoadedMaterial.
+  mutable std::vector<std::unique_ptr<Texture>> textures_;
 };
 
 }  // namespace facet::runtime
