@@ -27,6 +27,7 @@ class PreparedFrame {
                                                 const permutations::TierConfig& config, std::string* error);
 
   const runtime::FrameDesc& frame() const { return frame_; }
+  double exposure() const { return scene_->exposure(); }  // what light values were multiplied by
 
  private:
   PreparedFrame() = default;
