@@ -10,11 +10,11 @@
 // surface finite: 1/d² ≤ 10⁴, so E⊥ stays below fp16's 65504 for pre-exposed I < 6.5; brighter
 // lights that close saturate at 65504 (saturateMediump) instead of overflowing to inf.
 // Precision: the surface-to-light vector and d² come from highp positions (a mediump position
-// 100 m from the origin has 6 cm steps); the unit vector and the result drop to the tier's
-// precision. Needs: PunctualLightData (declared with the frame block).
+// 100 m from the origin has 6 cm steps), and so does the unit vector (the half vector needs it
+// highp: shading_standard.glsl, half_vector); the result drops to the tier's precision. Needs: PunctualLightData (declared with the frame block).
 
 // Illuminance on a surface facing the light, and the unit vector towards it in *l.
-vec3 punctual_light_illuminance(PunctualLightData light, highp vec3 worldPosition, out vec3 l) {
+vec3 punctual_light_illuminance(PunctualLightData light, highp vec3 worldPosition, out highp vec3 l) {
     highp vec3 toLight = light.positionFalloff.xyz - worldPosition;
     highp float distanceSquared = dot(toLight, toLight);
     l = toLight * inversesqrt(max(distanceSquared, 1e-8));

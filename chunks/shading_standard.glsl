@@ -60,13 +60,46 @@ float material_perceptual_roughness(MaterialInputs material) {
 vec3 shading_energy_compensation = vec3(1.0);
 #endif
 
-vec3 shade_standard_direct(MaterialInputs material, vec3 n, vec3 v, vec3 l,
+// The half vector h = (v + l)/|v + l|, summed and normalized in highp where the lobe asks for it
+// (SPECULAR_HALF_VECTOR_HIGHP: the GGX/Smith lobes of reference and high), returned at the tier's
+// precision. Why: |v + l| = 2 l·h, so where the light faces the eye (a glint at grazing
+// incidence, v ≈ −l) the sum cancels. With v and l rounded to binary16 (unit roundoff
+// u = 2^-11, |δv|, |δl| ≤ u) the sum is off by up to 2u and h tilts by up to
+// 2u / |v + l| = u / l·h radians. At the roughness floor (α = 0.089² = 0.0079) the GGX lobe
+// falls to half its peak 0.64 α = 0.0051 rad from its axis ((α² + θ²)² = 2α⁴), so the tilt
+// must stay well below that: l·h ≫ u / 0.0051 ≈ 0.1, i.e. v and l more than ~11° from
+// opposite. In fp32 (u = 2^-24) the bound is l·h ≫ 1.2e-5, and the result rounded to binary16
+// is a unit vector off by ≤ u = 4.9e-4 rad, a tenth of the lobe, as everywhere else
+// (Fp16Shading.HalfVectorStaysExactWhereTheLightFacesTheEye: 0.04 at mediump, 2e-4 here).
+// Filament keeps its view vector highp on mobile for the same reason (Filament PBR document
+// §4.4's precision notes). Cost: the add, dot and scale in fp32 instead of fp16, +0.07
+// estimated cycles (docs/eval.md's model). mid's Zioma lobe, whose fused V·F already misses a
+// grazing glint by far more (26 dB on grazing_glint in fp32 and fp16 alike), keeps the mediump
+// sum: measured no worse there (docs/fp16-emulation.md).
+#if defined(SPECULAR_HALF_VECTOR_HIGHP)
+vec3 half_vector(highp vec3 v, highp vec3 l) {
+    return normalize(v + l);
+}
+#else
+vec3 half_vector(vec3 v, vec3 l) {
+    return normalize(v + l);
+}
+#endif
+
+// v and l arrive highp (the half vector may need them so, above); every other use is mediump.
+vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp,
                                    vec3 lightColor) {
     vec3 f0 = material_f0(material);
     float perceptualRoughness = material_perceptual_roughness(material);
     float alpha = perceptualRoughness * perceptualRoughness;
 
-    vec3 h = normalize(v + l);
+    vec3 v = viewHighp;
+    vec3 l = lightHighp;
+#if defined(SPECULAR_HALF_VECTOR_HIGHP)
+    vec3 h = half_vector(viewHighp, lightHighp);
+#else
+    vec3 h = half_vector(v, l);
+#endif
     float NoV = max(dot(n, v), MIN_N_DOT_V);
     float NoL = clamp(dot(n, l), 0.0, 1.0);
     float NoH = clamp(dot(n, h), 0.0, 1.0);

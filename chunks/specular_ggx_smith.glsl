@@ -11,6 +11,9 @@
 // factor is 0 (measured: tests/test_fp16.cpp, Fp16Shading). D, V ≥ 0 are finite, so their
 // product is at worst +inf and saturateMediump brings it back to 65504, far above the tone
 // mapper's white.
+// Resolves the roughness floor's narrow lobe, so its half vector is formed at highp
+// (shading_standard.glsl, half_vector).
+#define SPECULAR_HALF_VECTOR_HIGHP 1
 vec3 specular_lobe(float perceptualRoughness, float alpha, float NoV, float NoL, float NoH, float LoH,
                    vec3 n, vec3 v, vec3 l, vec3 h, vec3 f0) {
     float D = distribution_ggx(alpha, NoH, n, h);

@@ -10,7 +10,7 @@
 
 // Lambert irradiance / π of one punctual light at this vertex.
 vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n) {
-    vec3 l;
+    highp vec3 l;
     vec3 illuminance = punctual_light_illuminance(light, worldPosition, l);
     return illuminance * (clamp(dot(n, l), 0.0, 1.0) * INV_PI);
 }
@@ -19,7 +19,12 @@ vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n)
 void main() {
     highp vec4 worldPosition = object.model * vec4(a_position, 1.0);
     v_worldPosition = worldPosition.xyz;
-    v_normal = mat3(object.normalMatrix) * a_normal;
+    // Normalized before it becomes a mediump varying: the normal matrix carries the inverse of
+    // the object's scale (a 1000 m sphere's normals come out 1/1000 long), and a binary16
+    // component below 2^-14 ≈ 6.1e-5 is flushed to 0 (subnormal) or keeps few bits, so such a
+    // normal lost every tilt below 0.061 rad (the grazing_glint hard case, docs/fp16-emulation.md).
+    // A unit normal keeps 11 significant bits in every component ≥ 2^-14: tilts ≥ 6.1e-5 rad.
+    v_normal = normalize(mat3(object.normalMatrix) * a_normal);
 #if defined(FACET_VARYING_UV0)
     v_uv0 = a_uv0;
 #endif
@@ -40,7 +45,7 @@ void main() {
     // multiplies it by the material's diffuse colour. n·l is clamped per vertex, which darkens
     // the terminator slightly on coarse meshes. SH irradiance is smooth (at most quadratic in n),
     // which per-vertex evaluation and interpolation follow closely.
-    vec3 n = normalize(v_normal);
+    vec3 n = v_normal;  // unit length (above)
     vec3 irradiance = sh_irradiance_over_pi(n);
 #if defined(FACET_DIRECTIONAL_LIGHT)
     irradiance += frame.lightColor.rgb * (clamp(dot(n, normalize(frame.lightDirection.xyz)), 0.0, 1.0) * INV_PI);

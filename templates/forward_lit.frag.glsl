@@ -32,20 +32,25 @@
 #include "shading_standard.glsl"
 #include "shading_ambient.glsl"
 #include "output_blending.glsl"
+// The view vector at highp, for the half vector of each light (shading_standard.glsl,
+// half_vector: at a grazing glint v ≈ −l and v + l cancels in fp16).
+highp vec3 shading_view_highp;
 #if FACET_POINT_LIGHTS > 0
 #include "light_punctual.glsl"
 
 vec3 shade_punctual(MaterialInputs material, PunctualLightData light) {
-    vec3 l;
+    highp vec3 l;
     vec3 illuminance = punctual_light_illuminance(light, v_worldPosition, l);
-    return shade_standard_direct(material, shading_normal, shading_view, l, illuminance);
+    return shade_standard_direct(material, shading_normal, shading_view_highp, l, illuminance);
 }
 #endif
 
 void main() {
     shading_normal = normalize(v_normal);
-    // The view vector comes from highp positions; only the unit vector drops to mediump.
-    shading_view = normalize(frame.cameraPosition.xyz - v_worldPosition);
+    // The view vector comes from highp positions; the surface program and the ambient terms read
+    // it at the tier's precision, the lights' half vectors at highp.
+    shading_view_highp = normalize(frame.cameraPosition.xyz - v_worldPosition);
+    shading_view = shading_view_highp;
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
 #if defined(FACET_MATERIAL_NORMAL)
@@ -62,8 +67,8 @@ void main() {
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
 #if defined(FACET_DIRECTIONAL_LIGHT)
-    vec3 l = normalize(frame.lightDirection.xyz);
-    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view, l, frame.lightColor.rgb));
+    highp vec3 l = normalize(frame.lightDirection.xyz);
+    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
 #endif
 #if FACET_POINT_LIGHTS > 0
     color = add_light(color, shade_punctual(material, frame.punctualLights[0]));

@@ -368,6 +368,52 @@ TEST(Fp16Shading, ZiomaGlintStaysFiniteAtGrazingMirror) {
   }
 }
 
+// The half vector where the light faces the eye (shading_standard.glsl, half_vector): v and l
+// nearly opposite, |v + l| = 2 l·h from 0.2 down to 0.002, the pair rotated about an oblique axis
+// so that their components do not round alike. v and l arrive highp as the templates pass them
+// (the view vector from highp positions, the light direction from the highp frame block); the
+// result may only carry the rounding of a unit vector to binary16, ≤ 2^-11 per component.
+// Summed at mediump instead, the cancellation tilts h by up to 2^-11 / l·h: 0.24 rad at
+// l·h = 0.002, far beyond the roughness floor's lobe (half width 0.0051 rad).
+TEST(Fp16Shading, HalfVectorStaysExactWhereTheLightFacesTheEye) {
+  GpuEvalRequest r;
+  r.chunks = shadingChunks("specular_ggx_smith.glsl", false);
+  r.body = R"(
+        highp vec3 v = inputs[2u * index].xyz;
+        highp vec3 l = inputs[2u * index + 1u].xyz;
+        result = vec4(half_vector(v, l), 0.0);
+)";
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.37, 0.81, -0.45));
+  const glm::dvec3 side = glm::normalize(glm::cross(axis, glm::dvec3(0.0, 0.0, 1.0)));
+  std::vector<glm::dvec3> vs, ls;
+  for (double LoH : {0.2, 0.05, 0.02, 0.01, 0.005, 0.002}) {
+    for (double turn : {0.0, 0.7, 1.9, 2.6}) {
+      // v and l symmetric about h = the axis turned by `turn` about `side`, each at angle
+      // acos(l·h) from it.
+      const glm::dvec3 h = axis * std::cos(turn) + glm::cross(side, axis) * std::sin(turn);
+      const glm::dvec3 t = glm::normalize(glm::cross(h, side));
+      const double s = std::sqrt(1.0 - LoH * LoH);
+      vs.push_back(h * LoH + t * s);
+      ls.push_back(h * LoH - t * s);
+      r.in0.push_back(glm::vec4(glm::vec3(vs.back()), 0.0f));
+      r.in1.push_back(glm::vec4(glm::vec3(ls.back()), 0.0f));
+    }
+  }
+  auto out = runEmulated(r, true);
+  ASSERT_EQ(out.size(), r.in0.size());
+  double worst = 0;
+  for (size_t i = 0; i < out.size(); ++i) {
+    // The exact half vector of the inputs as the GPU received them (fp32).
+    const glm::dvec3 exact = glm::normalize(glm::dvec3(r.in0[i]) + glm::dvec3(r.in1[i]));
+    const glm::dvec3 got(out[i]);
+    const double error = glm::length(got - exact);
+    worst = std::max(worst, error);
+    EXPECT_LT(error, 2.0 * std::ldexp(1.0, -11)) << "l·h " << glm::dot(exact, glm::dvec3(r.in1[i]));
+  }
+  std::printf("half vector at l·h 0.2 ... 0.002, fp16-emulated: worst |h - exact| %.3g (2^-11 = %.3g)\n", worst,
+              std::ldexp(1.0, -11));
+}
+
 // --- the build option ---
 
 const char* kHardCaseMaterial = R"(material hard_case {
@@ -441,8 +487,10 @@ TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
 struct HardCase {
   const char* name;
   const char* scene;  // JSON; "tier" is set per render
-  // dB, emulated tier vs reference: the measured figure (docs/fp16-emulation.md) minus 3 dB
-  double psnrFloorHigh, psnrFloorMid;
+  // dB, emulated tier vs reference: the measured figure (docs/fp16-emulation.md) minus 3 dB.
+  // grazing_glint's high floor (47; measured 50.6) fails without the unit normal varying of
+  // forward.vert.glsl (44.0 dB).
+  double psnrFloorHigh, psnrFloorMid, psnrFloorLow;
 };
 // Names the case in test listings (gtest would print the struct's bytes, pointers included).
 void PrintTo(const HardCase& c, std::ostream* os) { *os << c.name; }
@@ -461,13 +509,13 @@ const HardCase kHardCases[] = {
          {"material": "hard_case", "position": [-1.1, 0, 0], "params": {"roughness": 0, "baseColor": [0.8, 0.8, 0.8]}},
          {"material": "hard_case", "position": [1.1, 0, 0], "params": {"roughness": 0, "metallic": 1, "baseColor": [1, 0.9, 0.6]}}
        ]})",
-     64, 40},
+     64, 61, 38},
     // NoH -> 1: light travels from the camera, so the highlight centre faces the image centre
     // (odd size: a pixel centre sits exactly on it). Dielectric at the roughness floor.
     {"noh_one",
      R"({"width": 255, "height": 255, )" FACET_CAMERA("[0, 0, 4]", "[0, 0, 0]") ", " FACET_SUN("[0, 0, -1]") R"(,
        "objects": [{"material": "hard_case", "params": {"roughness": 0, "baseColor": [0.5, 0.5, 0.5]}}]})",
-     62, 45},
+     62, 63, 27},
     // Grazing view: a sun from behind and to the left lights the spheres' left rims, where n·v is
     // small (silhouette) and h lies near the surface.
     {"grazing",
@@ -476,19 +524,19 @@ const HardCase kHardCases[] = {
          {"material": "hard_case", "position": [-1.1, 0, 0], "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}},
          {"material": "hard_case", "position": [1.1, 0, 0], "params": {"roughness": 0.2, "metallic": 1, "baseColor": [1, 1, 1]}}
        ]})",
-     52, 32},
+     52, 45, 33},
     {"grazing_glint",
      R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
        "objects": [
          {"material": "hard_case", "position": [0, -1000, 0], "radius": 1000, "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}}
        ]})",
-     40, 21},
+     47, 23, 23},
     // The brightest highlight the contract allows: white metal at the roughness floor, NoH = 1,
     // 110 000 lux sun: D·V·F·E = 5075 · 0.25 · 1 · 2.86 ≈ 3600, to stay below 65504.
     {"bright_sun",
      R"({"width": 255, "height": 255, )" FACET_CAMERA("[0, 0, 4]", "[0, 0, 0]") ", " FACET_SUN("[0, 0, -1]") R"(,
        "objects": [{"material": "hard_case", "params": {"roughness": 0, "metallic": 1, "baseColor": [1, 1, 1]}}]})",
-     60, 35},
+     60, 62, 51},
     // Black and white: baseColor 0 and 1, metallic 0 and 1.
     {"black_white",
      R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
@@ -498,12 +546,12 @@ const HardCase kHardCases[] = {
          {"material": "hard_case", "position": [-1.1, -1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [1, 1, 1], "metallic": 0}},
          {"material": "hard_case", "position": [1.1, -1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [1, 1, 1], "metallic": 1}}
        ]})",
-     39, 26},
+     39, 36, 34},
     // Geometry 10 km from the origin, the camera 4 m from it.
     {"far_from_origin",
      R"({"width": 256, "height": 256, )" FACET_CAMERA("[10000, 0, 4]", "[10000, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
        "objects": [{"material": "hard_case", "position": [10000, 0, 0], "params": {"roughness": 0.3, "baseColor": [0.8, 0.2, 0.1]}}]})",
-     63, 42},
+     63, 53, 37},
 };
 
 // A reference pixel whose brightest HDR channel reaches kLitThreshold is "lit"; a candidate pixel
@@ -593,7 +641,7 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
   float peak = 0;
   for (size_t i = 0; i < reference.hdr.size(); ++i) peak = i % 4 == 3 ? peak : std::max(peak, reference.hdr[i]);
   std::printf("fp16 hard case %-16s reference peak HDR %g\n", hc.name, double(peak));
-  for (const char* tier : {"high", "mid"}) {
+  for (const char* tier : {"high", "mid", "low"}) {
     SCOPED_TRACE(tier);
     runtime::FrameResult emulated, plain;
     render(tier, *emulatedDir_, &emulated);
@@ -615,7 +663,8 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
     // The mid tier's own maths may darken a pixel the reference lights (Zioma's fused V·F has
     // no n·v: a metal's grazing rim); fp16 must add none.
     EXPECT_LE(e.blackWhereLit, p.blackWhereLit);
-    EXPECT_GT(e.psnr, std::string(tier) == "high" ? hc.psnrFloorHigh : hc.psnrFloorMid);
+    const std::string t = tier;
+    EXPECT_GT(e.psnr, t == "high" ? hc.psnrFloorHigh : t == "mid" ? hc.psnrFloorMid : hc.psnrFloorLow);
   }
   for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
 }

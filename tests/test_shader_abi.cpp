@@ -349,27 +349,37 @@ TEST(ShaderAbi, SpecularLutSamplerIsAtItsAbiSlotInTheVariantsThatSampleIt) {
 }
 
 // The image-based lighting textures sit where the runtime binds them (shader_abi.h): the
-// environment in every lit variant, the DFG table only in split-sum tiers (reference, high), and
-// none of them in the vertex stage (vertex-diffuse tiers evaluate SH from the frame block).
+// environment in every lit variant, the DFG table only in split-sum variants (every tier as
+// shipped since issue 10; here mid is also built with the analytic model, which has no table),
+// and none of them in the vertex stage (vertex-diffuse tiers evaluate SH from the frame block).
 TEST(ShaderAbi, IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled) {
   EXPECT_EQ(facet::compiler::kEnvironmentLevels, facet::abi::kEnvironmentLevels);
-  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
-  ASSERT_TRUE(built);
+  facet::compiler::BuildOptions analyticMid;
+  analyticMid.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
+    if (tier != facet::permutations::Tier::Mid) return;
+    config->ambient = facet::permutations::AmbientModel::Analytic;
+    config->energyCompensation = false;
+  };
   const std::pair<uint32_t, uint32_t> environment{facet::abi::kTextureSet, facet::abi::kEnvironmentBinding};
   const std::pair<uint32_t, uint32_t> dfg{facet::abi::kTextureSet, facet::abi::kDfgLutBinding};
-  for (const auto& v : built->package.variants) {
-    SCOPED_TRACE(v.key);
-    Reflection fs = reflect(spirv(v, facet::package::Stage::Fragment));
-    Reflection vs = reflect(spirv(v, facet::package::Stage::Vertex));
-    ASSERT_TRUE(fs.samplers.count(facet::abi::kEnvironmentName));
-    EXPECT_EQ(fs.samplers.at(facet::abi::kEnvironmentName), environment);
-    bool splitSum = v.key.rfind("reference.", 0) == 0 || v.key.rfind("high.", 0) == 0;
-    EXPECT_EQ(fs.samplers.count(facet::abi::kDfgLutName), splitSum ? 1u : 0u);
-    if (splitSum) {
-      EXPECT_EQ(fs.samplers.at(facet::abi::kDfgLutName), dfg);
+  for (bool shipped : {true, false}) {
+    auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"),
+                                        shipped ? facet::compiler::BuildOptions{} : analyticMid);
+    ASSERT_TRUE(built);
+    for (const auto& v : built->package.variants) {
+      SCOPED_TRACE(v.key + (shipped ? " as shipped" : " with mid analytic"));
+      Reflection fs = reflect(spirv(v, facet::package::Stage::Fragment));
+      Reflection vs = reflect(spirv(v, facet::package::Stage::Vertex));
+      ASSERT_TRUE(fs.samplers.count(facet::abi::kEnvironmentName));
+      EXPECT_EQ(fs.samplers.at(facet::abi::kEnvironmentName), environment);
+      const bool splitSum = shipped || v.key.rfind("mid.", 0) != 0;
+      EXPECT_EQ(fs.samplers.count(facet::abi::kDfgLutName), splitSum ? 1u : 0u);
+      if (splitSum) {
+        EXPECT_EQ(fs.samplers.at(facet::abi::kDfgLutName), dfg);
+      }
+      EXPECT_TRUE(vs.samplers.empty());
+      EXPECT_EQ(vs.blocks.at("FrameUniforms").size, sizeof(facet::abi::FrameUniforms));
     }
-    EXPECT_TRUE(vs.samplers.empty());
-    EXPECT_EQ(vs.blocks.at("FrameUniforms").size, sizeof(facet::abi::FrameUniforms));
   }
 }
 

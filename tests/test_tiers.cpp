@@ -47,20 +47,22 @@ TEST(Tiers, ZiomaSpecularHasOneDivision) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
   // The whole mid fragment stage: Zioma's fused term is its only division besides the octahedral
-  // environment lookup's 1/L1 norm that every tier has (per-vertex diffuse and the precision
-  // clamps add none). The GGX/Smith tiers divide twice (D and V), and high a third time for its
-  // energy compensation (1/dfg.y).
-  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).divisions, 2u);
+  // environment lookup's 1/L1 norm that every tier has and the energy compensation's 1/dfg.y
+  // that every split-sum tier with compensation has (per-vertex diffuse and the precision clamps
+  // add none). The GGX/Smith tiers divide twice for the light (D and V).
+  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).divisions, 3u);
+  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).divisions, 2u);
   EXPECT_EQ(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).divisions, 4u);
   EXPECT_LT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).aluOps,
             costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).aluOps);
 }
 
 // The low tier's specular is one table read: no D, V or F is evaluated, so the whole fragment
-// stage has one division, the octahedral lookup's 1/L1 norm (mid has Zioma's besides), one
-// texture sample more than mid's (beyond the
-// ambient models' difference), and fewer ALU ops than mid. Without the light
-// there is no specular, and the table is neither sampled nor listed for the variant.
+// stage has two divisions, the octahedral lookup's 1/L1 norm and the energy compensation's
+// 1/dfg.y (mid has Zioma's besides), one texture sample more than mid's (both read the
+// environment and the DFG table for their split-sum ambient), and fewer ALU ops than mid.
+// Without the light there is no specular, and the table is neither sampled nor listed for the
+// variant.
 TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
   for (const char* name : {"red_plastic", "painted_tiles"}) {
     SCOPED_TRACE(name);
@@ -68,13 +70,12 @@ TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
     ASSERT_TRUE(built);
     auto low = costOf(spirvOf(*built, "low.dir1", Stage::Fragment));
     auto mid = costOf(spirvOf(*built, "mid.dir1", Stage::Fragment));
-    EXPECT_EQ(low.divisions, 1u);
-    EXPECT_EQ(mid.divisions, 2u);
-    // The table, plus the second environment read of low's two-mip ambient (mid reads it once).
-    EXPECT_EQ(low.textureSamples, mid.textureSamples + 2);
+    EXPECT_EQ(low.divisions, 2u);
+    EXPECT_EQ(mid.divisions, 3u);
+    EXPECT_EQ(low.textureSamples, mid.textureSamples + 1);  // the table
     EXPECT_LT(low.aluOps, mid.aluOps);
     EXPECT_EQ(costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).textureSamples,
-              costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).textureSamples + 1);
+              costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).textureSamples);
 
     const auto& variants = built->package.variants;
     ASSERT_EQ(built->package.textures.size(), 1u);
@@ -127,32 +128,53 @@ TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
 // The ambient models' texture reads (red_plastic samples no texture of its own): split-sum reads
 // the environment and the DFG table, the analytic model only the environment (Karis's fit
 // replaces the table: a few more ALU ops, one exp2), the two-mip model the environment twice at
-// constant lods; low's dir1 adds its specular LUT. The energy compensation of the reference and
-// high tiers costs one division (1/dfg.y), in the ambient term; the octahedral environment
-// lookup is the other of dir0 (its 1/L1 norm), in every tier.
+// constant lods; low's dir1 adds its specular LUT. Every tier ships split-sum with energy
+// compensation, which costs one division (1/dfg.y) in the ambient term; the octahedral
+// environment lookup is the other of dir0 (its 1/L1 norm), in every tier. The analytic and
+// two-mip models are measured as mid and low used them before (no compensation: it needs the
+// table's dfg.y).
 TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
+  using facet::permutations::AmbientModel;
+  using facet::permutations::Tier;
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
-  const std::map<std::string, uint32_t> samples = {{"reference.dir0", 2}, {"high.dir0", 2}, {"mid.dir0", 1},
-                                                   {"low.dir0", 2},       {"high.dir1", 2}, {"mid.dir1", 1},
+  const std::map<std::string, uint32_t> samples = {{"reference.dir0", 2}, {"high.dir0", 2}, {"mid.dir0", 2},
+                                                   {"low.dir0", 2},       {"high.dir1", 2}, {"mid.dir1", 2},
                                                    {"low.dir1", 3}};
   for (const auto& [key, expected] : samples)
     EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).textureSamples, expected) << key;
   for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
     EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Vertex)).textureSamples, 0u) << key;
   EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).divisions, 4u);
-  EXPECT_EQ(costOf(spirvOf(*built, "high.dir0", Stage::Fragment)).divisions, 2u);
-  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).divisions, 1u);
-  // Karis's fit: one exp2 more than split-sum's table read, nothing else transcendental added.
-  const auto mid = costOf(spirvOf(*built, "mid.dir0", Stage::Fragment));
+  for (const char* key : {"high.dir0", "mid.dir0", "low.dir0"})
+    EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).divisions, 2u) << key;
+
+  facet::compiler::BuildOptions options;
+  options.adjustTier = [](Tier tier, facet::permutations::TierConfig* config) {
+    if (tier == Tier::Mid) config->ambient = AmbientModel::Analytic;
+    if (tier == Tier::Low) config->ambient = AmbientModel::TwoMip;
+    if (tier == Tier::Mid || tier == Tier::Low) config->energyCompensation = false;
+  };
+  auto other = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), options);
+  ASSERT_TRUE(other);
+  const auto analytic = costOf(spirvOf(*other, "mid.dir0", Stage::Fragment));
+  const auto twoMip = costOf(spirvOf(*other, "low.dir0", Stage::Fragment));
   const auto high = costOf(spirvOf(*built, "high.dir0", Stage::Fragment));
-  EXPECT_EQ(mid.transcendentalOps, high.transcendentalOps + 1);
-  std::printf("dir0 fragment stages (ambient only): high %u ALU / %u transcendental / %u samples, mid %u / %u / %u, "
-              "low %u / %u / %u\n",
+  EXPECT_EQ(analytic.textureSamples, 1u);
+  EXPECT_EQ(twoMip.textureSamples, 2u);
+  EXPECT_EQ(costOf(spirvOf(*other, "low.dir1", Stage::Fragment)).textureSamples, 3u);
+  EXPECT_EQ(analytic.divisions, 1u);
+  EXPECT_EQ(twoMip.divisions, 1u);
+  // Karis's fit: one exp2 more than split-sum's table read, nothing else transcendental added.
+  EXPECT_EQ(analytic.transcendentalOps, high.transcendentalOps + 1);
+  const auto mid = costOf(spirvOf(*built, "mid.dir0", Stage::Fragment));
+  const auto low = costOf(spirvOf(*built, "low.dir0", Stage::Fragment));
+  std::printf("dir0 fragment stages (ambient only), ALU / transcendental / samples: high %u / %u / %u, "
+              "mid %u / %u / %u (analytic: %u / %u / %u), low %u / %u / %u (two-mip: %u / %u / %u)\n",
               high.aluOps, high.transcendentalOps, high.textureSamples, mid.aluOps, mid.transcendentalOps,
-              mid.textureSamples, costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).aluOps,
-              costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).transcendentalOps,
-              costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).textureSamples);
+              mid.textureSamples, analytic.aluOps, analytic.transcendentalOps, analytic.textureSamples, low.aluOps,
+              low.transcendentalOps, low.textureSamples, twoMip.aluOps, twoMip.transcendentalOps,
+              twoMip.textureSamples);
 }
 
 TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
@@ -235,7 +257,10 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
       within1 += d <= 1;
     }
     if (std::string(tier) != "low") {
-      EXPECT_LE(maxDiff, 1) << "Vulkan and GL differ";
+      // llvmpipe's GL runs GLSL ES mediump in fp16, lavapipe in fp32: one value of high's
+      // 806 400 lands 2 steps apart since its half vector is formed at highp (measured).
+      EXPECT_LE(maxDiff, 2) << "Vulkan and GL differ";
+      EXPECT_GE(within1, a.ldr.size() - 8) << "Vulkan and GL differ";
     } else {
       double share = double(within1) / double(a.ldr.size());
       std::printf("low tier Vulkan vs GL: max %d steps, %.2f%% of values within 1 step\n", maxDiff, 100.0 * share);
@@ -252,9 +277,10 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     std::printf("tier %-5s vs reference: %.1f dB (8-bit PSNR, spheres.json)\n", tier, db);
     // Measured with image-based ambient (a constant sky: every tier's environment is exact, so
     // the difference is the environment BRDF): high 99.0 (identical: mediump runs at fp32 here,
-    // and high has the reference's energy compensation), mid 36.7 (Karis's fit), low 33.2
-    // (two-mip lerp, Zioma's fit, the gamma hack with lights added in linear; 29.0 before).
-    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : std::string(tier) == "mid" ? 32.0 : 31.0) << tier;
+    // and high has the reference's energy compensation), mid 49.8 and low 40.5 with split-sum and
+    // the same compensation (issue 10; 36.7 with Karis's fit and 33.2 with the two-mip lerp and
+    // Zioma's fit before: these floors fail without it).
+    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : std::string(tier) == "mid" ? 45.0 : 37.0) << tier;
   }
 }
 
@@ -412,6 +438,11 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
   // lavapipe runs mediump in fp32) with it.
   EXPECT_GT(cells["high"][1][4], 40.0);
   EXPECT_GT(cells["high"][1][5], 40.0);
+  // mid and low apply it too since issue 10 (split-sum ambient, the DFG table's dfg.y): rough
+  // gold at r = 1 measured mid 28.4 / low 26.0 dB, against 18.9 / 19.1 with Karis's fit and
+  // the two-mip lerp, neither of which has the energy they lose.
+  EXPECT_GT(cells["mid"][1][5], 24.0);
+  EXPECT_GT(cells["low"][1][5], 23.0);
 
   // The same grid with the mobile tiers' mediump rounded to fp16 (BuildOptions::fp16Emulation,
   // docs/fp16-emulation.md), against the same reference image: what a GPU with fp16 ALUs shows.

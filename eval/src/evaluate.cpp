@@ -134,10 +134,32 @@ class Evaluation {
       r->views.push_back(std::move(view));
     }
     r->error = all.metrics();
-    return true;
+    return material_.shading != "lit" || furnace(c, packageDir, r, error);
   }
 
  private:
+  // The white furnace: the first view's spheres, no sun and no point light, in a constant sky of
+  // kFurnaceLuminance; the brightest value the spheres cover (the pixels that differ from the
+  // background, which is the sky) ÷ the sky's pre-exposed radiance.
+  static constexpr double kFurnaceLuminance = 5000;  // cd/m², about a bright overcast sky
+  bool furnace(const Configuration& c, const fs::path& packageDir, ConfigurationResult* r, EvalError* error) {
+    runtime::Scene scene = views_[0].scene;
+    scene.tier = permutations::toString(c.tier);
+    scene.sun.reset();
+    scene.lights.clear();
+    scene.environment.reset();
+    scene.skyLuminance = kFurnaceLuminance;
+    std::string message;
+    std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
+    if (!prepared) return fail(c, "white furnace: " + message, error);
+    runtime::FrameResult image;
+    if (!backend_->render(prepared->frame(), &image, &message)) return fail(c, "white furnace: render failed: " + message, error);
+    const float* clear = prepared->frame().clearColor;
+    const std::vector<bool> covered = coverageMask(image.hdr, image.hdr, {clear[0], clear[1], clear[2]});
+    r->furnaceGain = furnaceGain(image.hdr, kFurnaceLuminance * prepared->exposure(), covered);
+    return true;
+  }
+
   static bool fail(const Configuration& c, const std::string& message, EvalError* error) {
     error->message = c.name + ": " + message;
     return false;
@@ -159,6 +181,7 @@ class Evaluation {
     for (const View& v : views_) add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
     *firstKey = scene.keys[0].toString();
     if (needs.lit) add(permutations::requestKey(needs, c.tier, true, 0));
+    if (needs.lit) add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace
     options.scene = scene;
     compiler::BuildError buildError;
     auto built = compiler::buildMaterial(material_, options, &buildError);

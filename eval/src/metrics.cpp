@@ -83,4 +83,15 @@ std::vector<bool> coverageMask(const std::vector<float>& hdr, const std::vector<
   return mask;
 }
 
+double furnaceGain(const std::vector<float>& hdr, double radiance, const std::vector<bool>& mask) {
+  double brightest = 0;
+  for (size_t i = 0; i < hdr.size(); ++i) {
+    if (i % 4 == 3) continue;  // alpha
+    if (!mask.empty() && (i / 4 >= mask.size() || !mask[i / 4])) continue;
+    if (!std::isfinite(hdr[i])) return std::numeric_limits<double>::infinity();
+    brightest = std::max(brightest, double(hdr[i]));
+  }
+  return brightest / radiance;
+}
+
 }  // namespace facet::eval

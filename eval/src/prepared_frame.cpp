@@ -3,7 +3,6 @@
 #include <cmath>
 #include <filesystem>
 
-#include "facet/runtime/environment.h"
 #include "facet/runtime/material.h"
 
 namespace facet::eval {
@@ -41,9 +40,6 @@ std::unique_ptr<PreparedFrame> PreparedFrame::prepare(const runtime::Scene& scen
 
 bool PreparedFrame::adapt(const runtime::Scene& scene, const std::string& packageDir, const TierConfig& preset,
                           const TierConfig& config, std::string* error) {
-  using permutations::AmbientModel;
-  if (config.ambient == AmbientModel::SplitSum && preset.ambient != AmbientModel::SplitSum)
-    frame_.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &runtime::dfgTexture()});
   if (encoding(config) == encoding(preset)) return true;
   const bool wantSrgb = encoding(config) == runtime::ColorEncoding::Srgb;
   std::map<std::string, std::unique_ptr<runtime::LoadedMaterial>> materials;

@@ -141,6 +141,7 @@ Json reportJson(const EvalReport& r) {
     k["lavapipe_ms"] = 1000.0 * c.seconds;
     k["lavapipe_vs_reference"] = c.timeVsReference > 0 ? Json(c.timeVsReference) : Json(nullptr);
     k["pareto"] = c.pareto;
+    k["white_furnace_gain"] = c.furnaceGain > 0 ? Json(c.furnaceGain) : Json(nullptr);
     configs.push_back(k);
   }
   j["configurations"] = configs;
@@ -255,6 +256,20 @@ std::string reportMarkdown(const EvalReport& r) {
   if (!sunIbl.empty())
     s += "\nFragment cycles of the sun + IBL variant (`<tier>.dir1`, no point light; what the tiers' cost goals "
          "refer to), tiers as shipped: " + sunIbl + ".\n";
+  // The white furnace (lit materials): the configurations that gain energy, and the largest gain.
+  std::string gains;
+  double largest = 0;
+  const double referenceGain = r.results.empty() ? 0.0 : r.results[0].furnaceGain;
+  for (const ConfigurationResult& c : r.results) {
+    largest = std::max(largest, c.furnaceGain);
+    if (furnaceGainsEnergy(c.furnaceGain, referenceGain))
+      gains += (gains.empty() ? "" : ", ") + c.configuration.name + " " + fmt("%.3f", c.furnaceGain);
+  }
+  if (largest > 0)
+    s += "\nWhite furnace (the first view's spheres in a constant sky, no lights; the brightest value they cover ÷ "
+         "the sky's radiance; energy gain: above " + fmt("%.2f", kFurnaceGainLimit) + " and above reference's by that "
+         "factor): reference " + fmt("%.3f", referenceGain) + ", largest " + fmt("%.3f", largest) + "; " +
+         (gains.empty() ? std::string("no configuration gains energy") : "energy gain: " + gains) + ".\n";
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
   for (const std::string& v : r.viewNames) s += " " + v + " |";

@@ -12,10 +12,10 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum, 3, true};
     case Tier::Mid:
       return {SpecularModel::Zioma, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
-              AmbientModel::Analytic, 3, false};
+              AmbientModel::SplitSum, 3, true};
     case Tier::Low:
       return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::GammaHack, PrecisionPolicy::Mediump,
-              AmbientModel::TwoMip, 2, false};
+              AmbientModel::SplitSum, 2, true};
   }
   return {};
 }

@@ -54,11 +54,27 @@ struct ConfigurationResult {
   double sunIblFragmentCycles = 0;
   double sunIblVsHigh = 0;
   double timeVsReference = 0;   // median over the paired renders of this time ÷ reference's (0: not timed)
+  // Lit materials: the white furnace — the grid's first view with no sun and no point light in a
+  // constant sky, the brightest value the spheres cover ÷ the sky's radiance (furnaceGain). Above
+  // 1 the surface reflects more than it receives; `reference` itself does on bright dielectrics
+  // (Filament's standard model adds the diffuse and the Fresnel-weighted specular without
+  // coupling them), so a configuration gains energy when it exceeds both kFurnaceGainLimit and
+  // reference's gain by that factor (furnaceGainsEnergy). 0 for unlit materials.
+  double furnaceGain = 0;
   bool pareto = false;          // no other configuration has both fewer cycles and a higher PSNR
   // The GLSL ES 3.00 pair of variantKey as shipped, for per-GPU figures (addGpuFigures); empty
   // for a configuration with the same maths as an earlier one.
   std::vector<gpu_stats::ShaderPair> glslEs;
 };
+
+// A furnace gain above this factor is flagged as energy gain: the RGBA16F target and the
+// environment's fp16 texels round L by up to 2^-11 each, and mediump shading adds a few such
+// roundings.
+inline constexpr double kFurnaceGainLimit = 1.01;
+// Energy gain: above the limit and above reference's own gain by the same factor.
+inline bool furnaceGainsEnergy(double gain, double referenceGain) {
+  return gain > kFurnaceGainLimit && gain > referenceGain * kFurnaceGainLimit;
+}
 
 struct EvalReport {
   std::string material;

@@ -50,4 +50,11 @@ class ErrorAccumulator {
 std::vector<bool> coverageMask(const std::vector<float>& hdr, const std::vector<float>& referenceHdr,
                                const std::array<float, 3>& background);
 
+// The white furnace (docs/eval.md): in a constant environment of radiance L, no surface may
+// reflect more than L (energy conservation; a white metal with multiple-scattering compensation
+// reflects exactly L). Returns the brightest RGB value of an RGBA float image over the masked
+// pixels (empty mask: all) divided by L (pre-exposed, as the image), +inf if such a value is not
+// finite, 0 when no pixel is masked.
+double furnaceGain(const std::vector<float>& hdr, double radiance, const std::vector<bool>& mask = {});
+
 }  // namespace facet::eval

@@ -1,8 +1,10 @@
 // A scene prepared for rendering with a package built from a configuration that may differ from
 // its tier's preset (a `matc eval` swap). runtime::SceneFrame prepares by the tier's *preset*:
 // the colour encoding of parameters and sRGB textures (the gamma hack lights sRGB-encoded values)
-// and the DFG table (split-sum ambient) follow the preset, since an app only ever ships presets.
-// This makes the frame match the configuration instead; runtime/ is left as it is.
+// follows the preset, since an app only ever ships presets. This makes the frame match the
+// configuration instead; runtime/ is left as it is. (The DFG table also follows the preset; every
+// preset's ambient is split-sum since issue 10, so it is bound for every tier, and a swap to an
+// ambient model without the table leaves it unused.)
 #pragma once
 
 #include <deque>
@@ -25,6 +27,7 @@ class PreparedFrame {
                                                 const permutations::TierConfig& config, std::string* error);
 
   const runtime::FrameDesc& frame() const { return frame_; }
+  double exposure() const { return scene_->exposure(); }  // what light values were multiplied by
 
  private:
   PreparedFrame() = default;

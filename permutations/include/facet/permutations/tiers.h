@@ -33,13 +33,14 @@ struct TierConfig {
 
 // reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against;
 //            split-sum IBL + SH3, energy compensation on direct and IBL specular.
-// high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl; split-sum
-//            IBL + SH3, no energy compensation.
+// high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
 // mid:       Facet's Zioma specular (one division), per-vertex diffuse and SH3, mediump;
-//            analytic (Karis) environment BRDF with the prefiltered environment.
+//            split-sum IBL with energy compensation (issue 10: +13 dB on the spheres scene and
+//            rough gold 18.9 → 28.4 dB against Karis's analytic fit, for +0.04 cycles).
 // low:       LUT specular (one texture read, no D/V/F), per-vertex diffuse and SH2, the gamma hack
-//            (colours stay sRGB-encoded, lighting on encoded values), mediump; two-mip
-//            environment lerp.
+//            (colours stay sRGB-encoded, lighting on encoded values), mediump; split-sum IBL with
+//            energy compensation (issue 10: against the two-mip lerp, +7 dB on the spheres scene).
+// docs/specular-tiers.md has the measurements.
 TierConfig preset(Tier tier);
 
 // Replaces one choice of a preset by name (axis "specular" | "diffuse", option as in the
