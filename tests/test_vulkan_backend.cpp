@@ -276,6 +276,45 @@ TEST(VulkanBackend, ValidationReportsNoErrors) {
       << (backend->validationErrors().empty() ? "" : backend->validationErrors().front());
 }
 
+// 2,000 objects sharing one mesh: one mesh buffer on the device, uploaded once across frames,
+// and every object drawn where its own transform puts it with its own colour. A mesh edited in
+// place is uploaded again.
+TEST(VulkanBackend, TwoThousandDrawsShareOneMeshBuffer) {
+  auto backend = makeBackend(/*validation=*/true);
+  ASSERT_NE(backend, nullptr);
+  constexpr uint32_t kColumns = 50, kRows = 40;  // 2,000 cells of 2x2 pixels
+  const float cellW = 2.0f / kColumns, cellH = 2.0f / kRows;
+  Mesh cell;  // one cell-sized square at the clip-space origin, two triangles
+  for (const auto& p : {std::pair{0.0f, 0.0f}, {cellW, 0.0f}, {cellW, cellH}, {0.0f, cellH}})
+    appendVertex(cell, Vertex{{p.first, p.second, 0}});
+  cell.indices = {0, 1, 2, 0, 2, 3};
+  FrameDesc frame = emptyFrame(2 * kColumns, 2 * kRows, kBlack);
+  for (uint32_t i = 0; i < kColumns * kRows; ++i) {
+    DrawItem draw = solidDraw(cell, i % 3 == 0 ? kGreen : kRed);
+    draw.object.model[12] = -1.0f + float(i % kColumns) * cellW;
+    draw.object.model[13] = -1.0f + float(i / kColumns) * cellH;
+    frame.draws.push_back(draw);
+  }
+  FrameResult result = renderOrFail(*backend, frame);
+  renderOrFail(*backend, frame);
+  EXPECT_EQ(backend->resources().meshBuffers, 1u);
+  EXPECT_EQ(backend->resources().meshUploads, 1u);
+  for (uint32_t i = 0; i < kColumns * kRows; ++i) {
+    // Cell row r (from the bottom in clip space) covers image rows from the top 2(kRows-1-r)..+1.
+    const uint32_t row = 2 * (kRows - 1 - i / kColumns), col = 2 * (i % kColumns);
+    const Rgba want = i % 3 == 0 ? kGreen : kRed;
+    const Rgba got = hdrAt(result, row, col);
+    ASSERT_TRUE(got.r == want.r && got.g == want.g) << "object " << i << " at row " << row << " col " << col;
+  }
+  // Edited in place: same address, new bytes.
+  cell.vertices[0] = -cellW;
+  renderOrFail(*backend, frame);
+  EXPECT_EQ(backend->resources().meshBuffers, 1u);
+  EXPECT_EQ(backend->resources().meshUploads, 2u);
+  EXPECT_TRUE(backend->validationErrors().empty())
+      << (backend->validationErrors().empty() ? "" : backend->validationErrors().front());
+}
+
 TEST(VulkanBackend, InvalidFrameFailsWithMessage) {
   auto backend = makeBackend();
   ASSERT_NE(backend, nullptr);

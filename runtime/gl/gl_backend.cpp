@@ -32,6 +32,7 @@ class GlBackend final : public RenderBackend {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
+  ResourceCounts resources() const override { return {meshes_.residentCount(), meshes_.uploadCount()}; }
 
  private:
   struct CachedProgram {
@@ -45,8 +46,7 @@ class GlBackend final : public RenderBackend {
   bool initialise(const GlOptions& options, std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
-  bool drawItem(const FrameDesc& frame, const DrawItem& item,
-                std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error);
+  bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
   bool postPass(std::string* error);
   bool mergedPostPass(std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
@@ -64,6 +64,7 @@ class GlBackend final : public RenderBackend {
   gl::Buffer materialUniforms_;
   gl::RenderTargets targets_;
   gl::TextureCache textures_;  // kept across frames; see gl_textures.h for the reuse rule
+  gl::MeshCache meshes_;       // kept across frames, shared by every draw of a mesh (gl_mesh.h)
   // GL_TIME_ELAPSED queries of the forward and post passes; absent when the context has no
   // timer queries (GL 3.3 core has them; GLES needs GL_EXT_disjoint_timer_query).
   bool timed_ = false;
@@ -244,12 +245,10 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
   if (!checkGlError("forward pass setup", error)) return false;
 
-  // Meshes live for this frame only: a Mesh pointer says nothing about whether its contents
-  // changed since the last frame. A mesh drawn twice in one frame is uploaded once.
-  std::unordered_map<const Mesh*, gl::MeshBuffers> meshes;
+  meshes_.beginFrame();
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     std::string drawError;
-    if (!drawItem(frame, frame.draws[i], &meshes, &drawError)) {
+    if (!drawItem(frame, frame.draws[i], &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
       glBindVertexArray(0);
       return false;
@@ -257,6 +256,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  meshes_.endFrame();
 
   // Separate path: depth is dead once the forward pass ends. Invalidating it here, before the
   // framebuffer switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is
@@ -268,8 +268,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   return checkGlError("forward pass", error);
 }
 
-bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
-                         std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error) {
+bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error) {
   if (!item.mesh || !item.program) {
     if (error) *error = item.mesh ? "no shader program" : "no mesh";
     return false;
@@ -297,12 +296,8 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
     return false;
   }
 
-  auto [entry, inserted] = meshes->try_emplace(item.mesh);
-  if (inserted && !gl::uploadMesh(*item.mesh, &entry->second, error)) {
-    meshes->erase(entry);
-    return false;
-  }
-  const gl::MeshBuffers& mesh = entry->second;
+  const gl::MeshBuffers* mesh = meshes_.resident(*item.mesh, error);
+  if (!mesh) return false;
 
   // One buffer per block, re-specified per draw: glBufferData gives the driver fresh storage
   // while earlier draws still read the old contents.
@@ -332,8 +327,8 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
   gl::assignSamplerUnits(program->program.id(), frame.frameTextures, &cached->samplerUnits);
   gl::assignSamplerUnits(program->program.id(), item.textures, &cached->samplerUnits);
   textures_.bind(frame, item);
-  glBindVertexArray(mesh.vertexArray.id());
-  glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(mesh->vertexArray.id());
+  glDrawElements(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr);
   return checkGlError("draw", error);
 }
 

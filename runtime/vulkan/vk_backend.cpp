@@ -53,6 +53,7 @@ class VulkanBackend final : public RenderBackend {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
+  ResourceCounts resources() const override { return {meshes_.residentCount(), meshes_.uploadCount()}; }
 
  private:
   bool planRenderPath(const VulkanOptions& options, std::string* error);
@@ -105,7 +106,10 @@ class VulkanBackend final : public RenderBackend {
   // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
   TextureCache textures_;
 
-  // Uniforms, vertices and indices of one frame, rewritten every frame, grown when needed.
+  // Meshes, uploaded once and shared by every draw of them; see vk_meshes.h.
+  MeshCache meshes_;
+
+  // Uniforms of one frame, rewritten every frame, grown when needed.
   HostBuffer arena_;
 
   RenderTargets targets_;
@@ -125,6 +129,7 @@ VulkanBackend::~VulkanBackend() {
     if (entry.second.pipeline) vkDestroyPipeline(device, entry.second.pipeline, nullptr);
   }
   textures_.destroy();
+  meshes_.destroy();
   destroyRenderTargets(device, &targets_);
   destroyHostBuffer(device, &arena_);
   // Destroying a pool frees its sets.
@@ -199,6 +204,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
   if (!textures_.init(&ctx_, error)) return false;
+  meshes_.init(&ctx_);
 
   if (ctx_.timestampValidBits > 0) {
     VkQueryPoolCreateInfo queryInfo{};
@@ -282,7 +288,7 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
         !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
-        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, arena_.buffer, slots,
+        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots,
                      error)) {
       return false;
     }
@@ -362,12 +368,11 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
   VkDeviceSize capacity = 64 * 1024;
   while (capacity < size) capacity *= 2;
   return createHostBuffer(ctx_, capacity,
-                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                          &arena_, error);
+                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena_, error);
 }
 
-// Builds (or finds) each draw's pipeline, then lays the frame out in the arena and copies it in.
+// Builds (or finds) each draw's pipeline, makes its mesh resident, then lays the frame's
+// uniforms out in the arena and copies them in.
 bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots,
                                 std::string* error) {
   const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
@@ -377,6 +382,8 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
       return false;
     }
   }
+  if (!meshes_.prepare(frame, error)) return false;
+  for (size_t i = 0; i < frame.draws.size(); ++i) (*slots)[i].mesh = meshes_.locate(frame.draws[i].mesh);
   if (!ensureArena(size, error)) return false;
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
   writeFrame(frame, *slots, arena_.mapped);

@@ -8,7 +8,7 @@ namespace facet::runtime::vulkan {
 static_assert(abi::kTextureSet == 1, "draws bind sets 0 and 1 with one call");
 
 bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
-                 const float clearColor[4], VkBuffer arena, const std::vector<DrawSlot>& slots,
+                 const float clearColor[4], const std::vector<DrawSlot>& slots,
                  std::string* error) {
   if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error)) return false;
   VkCommandBufferBeginInfo beginInfo{};
@@ -42,7 +42,7 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   VkPipeline bound = VK_NULL_HANDLE;
   for (const DrawSlot& slot : slots) {
-    if (slot.vertexCount == 0) continue;
+    if (slot.mesh.vertexCount == 0) continue;
     if (slot.pipeline != bound) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
       bound = slot.pipeline;
@@ -50,12 +50,13 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2,
                             sets, 0, nullptr);
-    vkCmdBindVertexBuffers(cmd, 0, 1, &arena, &slot.vertexOffset);
-    if (slot.indexCount > 0) {
-      vkCmdBindIndexBuffer(cmd, arena, slot.indexOffset, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, slot.indexCount, 1, 0, 0, 0);
+    const VkDeviceSize vertexOffset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &slot.mesh.buffer, &vertexOffset);
+    if (slot.mesh.indexCount > 0) {
+      vkCmdBindIndexBuffer(cmd, slot.mesh.buffer, slot.mesh.indexOffset, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, slot.mesh.indexCount, 1, 0, 0, 0);
     } else {
-      vkCmdDraw(cmd, slot.vertexCount, 1, 0, 0);
+      vkCmdDraw(cmd, slot.mesh.vertexCount, 1, 0, 0);
     }
   }
   // Post pass: one full-screen triangle reading the HDR image (its own pixel when merged).

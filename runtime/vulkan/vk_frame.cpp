@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <unordered_set>
 
 #include "facet/shader_abi.h"
 #include "vk_convert.h"
@@ -25,6 +26,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
              " is outside 1.." + std::to_string(maxSize);
     return false;
   }
+  std::unordered_set<const Mesh*> checkedMeshes;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     const std::string which = "draw " + std::to_string(i) + ": ";
@@ -32,6 +34,12 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
       *error = which + "mesh or program is null";
       return false;
     }
+    if (draw.materialParams.size() > limits.maxUniformBufferRange) {
+      *error = which + "materialParams is larger than maxUniformBufferRange";
+      return false;
+    }
+    // A mesh shared by many draws is checked once, at its first draw.
+    if (!checkedMeshes.insert(draw.mesh).second) continue;
     const size_t floats = draw.mesh->vertices.size();
     if (floats % abi::kVertexFloats != 0) {
       *error = which + "vertex data is not a whole number of " +
@@ -46,10 +54,6 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
         return false;
       }
     }
-    if (draw.materialParams.size() > limits.maxUniformBufferRange) {
-      *error = which + "materialParams is larger than maxUniformBufferRange";
-      return false;
-    }
   }
   return checkFrameTextures(frame, limits.maxImageDimension2D, error);
 }
@@ -62,8 +66,6 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     DrawSlot& slot = (*slots)[i];
-    slot.vertexCount = static_cast<uint32_t>(draw.mesh->vertices.size() / abi::kVertexFloats);
-    slot.indexCount = static_cast<uint32_t>(draw.mesh->indices.size());
     slot.materialSize = draw.materialParams.empty()
                             ? kEmptyMaterialSize
                             : alignUp(draw.materialParams.size(), 16);  // whole std140 vec4s
@@ -71,10 +73,6 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
     size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
     slot.materialOffset = size;
     size = alignUp(size + slot.materialSize, alignment);
-    slot.vertexOffset = size;
-    size = alignUp(size + draw.mesh->vertices.size() * sizeof(float), alignment);
-    slot.indexOffset = size;
-    size = alignUp(size + draw.mesh->indices.size() * sizeof(uint32_t), alignment);
   }
   return size;
 }
@@ -92,14 +90,6 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void
     if (!draw.materialParams.empty()) {
       std::memcpy(base + slot.materialOffset, draw.materialParams.data(),
                   draw.materialParams.size());
-    }
-    if (!draw.mesh->vertices.empty()) {
-      std::memcpy(base + slot.vertexOffset, draw.mesh->vertices.data(),
-                  draw.mesh->vertices.size() * sizeof(float));
-    }
-    if (!draw.mesh->indices.empty()) {
-      std::memcpy(base + slot.indexOffset, draw.mesh->indices.data(),
-                  draw.mesh->indices.size() * sizeof(uint32_t));
     }
   }
 }

@@ -103,6 +103,13 @@ struct FrameResult {
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
+// GPU resources a backend keeps across frames: what tests and budgets query instead of timing.
+struct ResourceCounts {
+  size_t meshBuffers = 0;    // meshes resident on the GPU: one per distinct Mesh drawn recently,
+                             // however many draws share it
+  uint64_t meshUploads = 0;  // mesh uploads since creation (a new mesh, or one whose bytes changed)
+};
+
 class RenderBackend {
  public:
   virtual ~RenderBackend() = default;
@@ -117,6 +124,7 @@ class RenderBackend {
   // Messages of severity error reported by the API's validation (Vulkan validation layers,
   // GL debug output). Tests require this to be empty.
   virtual const std::vector<std::string>& validationErrors() const = 0;
+  virtual ResourceCounts resources() const = 0;
 };
 
 struct VulkanOptions {
