@@ -16,6 +16,7 @@
 #include "gl_program.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
+#include "gl_uniform_blocks.h"
 
 namespace facet::runtime {
 namespace {
@@ -32,7 +33,10 @@ class GlBackend final : public RenderBackend {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
-  ResourceCounts resources() const override { return {meshes_.residentCount(), meshes_.uploadCount()}; }
+  ResourceCounts resources() const override {
+    return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
+            materialBlocks_.uploadCount()};
+  }
 
  private:
   struct CachedProgram {
@@ -65,6 +69,7 @@ class GlBackend final : public RenderBackend {
   gl::RenderTargets targets_;
   gl::TextureCache textures_;  // kept across frames; see gl_textures.h for the reuse rule
   gl::MeshCache meshes_;       // kept across frames, shared by every draw of a mesh (gl_mesh.h)
+  gl::UniformBlockCache materialBlocks_;  // material instances' blocks (gl_uniform_blocks.h)
   // GL_TIME_ELAPSED queries of the forward and post passes; absent when the context has no
   // timer queries (GL 3.3 core has them; GLES needs GL_EXT_disjoint_timer_query).
   bool timed_ = false;
@@ -246,6 +251,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   if (!checkGlError("forward pass setup", error)) return false;
 
   meshes_.beginFrame();
+  materialBlocks_.beginFrame();
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     std::string drawError;
     if (!drawItem(frame, frame.draws[i], &drawError)) {
@@ -257,6 +263,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   glBindVertexArray(0);
   glUseProgram(0);
   meshes_.endFrame();
+  materialBlocks_.endFrame();
 
   // Separate path: depth is dead once the forward pass ends. Invalidating it here, before the
   // framebuffer switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is
@@ -288,10 +295,10 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
     return false;
   }
   if (program->material.present() &&
-      item.materialParams.size() < static_cast<size_t>(program->material.dataSize)) {
+      materialBytes(item).size() < static_cast<size_t>(program->material.dataSize)) {
     if (error) {
       *error = "shader's MaterialParams block is " + std::to_string(program->material.dataSize) +
-               " bytes but the draw supplies " + std::to_string(item.materialParams.size());
+               " bytes but the draw supplies " + std::to_string(materialBytes(item).size());
     }
     return false;
   }
@@ -304,7 +311,9 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.id());
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &item.object, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
-  if (!item.materialParams.empty()) {
+  if (item.materialBlock && !item.materialBlock->bytes.empty()) {
+    glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialBlocks_.resident(*item.materialBlock));
+  } else if (!item.materialParams.empty()) {
     glBindBuffer(GL_UNIFORM_BUFFER, materialUniforms_.id());
     glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(item.materialParams.size()),
                  item.materialParams.data(), GL_DYNAMIC_DRAW);

@@ -22,6 +22,7 @@
 #include "vk_resources.h"
 #include "vk_targets.h"
 #include "vk_textures.h"
+#include "vk_uniform_blocks.h"
 
 namespace facet::runtime {
 namespace {
@@ -53,7 +54,10 @@ class VulkanBackend final : public RenderBackend {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
-  ResourceCounts resources() const override { return {meshes_.residentCount(), meshes_.uploadCount()}; }
+  ResourceCounts resources() const override {
+    return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
+            materialBlocks_.uploadCount()};
+  }
 
  private:
   bool planRenderPath(const VulkanOptions& options, std::string* error);
@@ -108,6 +112,8 @@ class VulkanBackend final : public RenderBackend {
 
   // Meshes, uploaded once and shared by every draw of them; see vk_meshes.h.
   MeshCache meshes_;
+  // Material instances' parameter blocks, uploaded when changed; see vk_uniform_blocks.h.
+  UniformBlockCache materialBlocks_;
 
   // Uniforms of one frame, rewritten every frame, grown when needed.
   HostBuffer arena_;
@@ -130,6 +136,7 @@ VulkanBackend::~VulkanBackend() {
   }
   textures_.destroy();
   meshes_.destroy();
+  materialBlocks_.destroy();
   destroyRenderTargets(device, &targets_);
   destroyHostBuffer(device, &arena_);
   // Destroying a pool frees its sets.
@@ -205,6 +212,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
   if (!textures_.init(&ctx_, error)) return false;
   meshes_.init(&ctx_);
+  materialBlocks_.init(&ctx_);
 
   if (ctx_.timestampValidBits > 0) {
     VkQueryPoolCreateInfo queryInfo{};
@@ -382,9 +390,15 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
       return false;
     }
   }
-  if (!meshes_.prepare(frame, error)) return false;
-  for (size_t i = 0; i < frame.draws.size(); ++i) (*slots)[i].mesh = meshes_.locate(frame.draws[i].mesh);
-  if (!ensureArena(size, error)) return false;
+  if (!meshes_.prepare(frame, error) || !materialBlocks_.prepare(frame, error) || !ensureArena(size, error)) {
+    return false;
+  }
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    DrawSlot& slot = (*slots)[i];
+    slot.mesh = meshes_.locate(frame.draws[i].mesh);
+    slot.materialBuffer =
+        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : arena_.buffer;
+  }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
   writeFrame(frame, *slots, arena_.mapped);
   return true;
@@ -452,7 +466,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     slot.textureSet = sets[2 * i + 1];
     buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
     buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
-    buffers[3 * i + 2] = {arena_.buffer, slot.materialOffset, slot.materialSize};
+    buffers[3 * i + 2] = {slot.materialBuffer, slot.materialOffset, slot.materialSize};
     const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
     for (uint32_t b = 0; b < 3; ++b) {
       VkWriteDescriptorSet& write = writes[3 * i + b];

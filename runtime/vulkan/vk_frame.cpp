@@ -7,11 +7,10 @@
 #include "facet/shader_abi.h"
 #include "vk_convert.h"
 #include "vk_textures.h"
+#include "vk_uniform_blocks.h"
 
 namespace facet::runtime::vulkan {
 namespace {
-
-constexpr VkDeviceSize kEmptyMaterialSize = 16;
 
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
   return (value + alignment - 1) / alignment * alignment;
@@ -34,7 +33,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
       *error = which + "mesh or program is null";
       return false;
     }
-    if (draw.materialParams.size() > limits.maxUniformBufferRange) {
+    if (materialBytes(draw).size() > limits.maxUniformBufferRange) {
       *error = which + "materialParams is larger than maxUniformBufferRange";
       return false;
     }
@@ -66,11 +65,11 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     DrawSlot& slot = (*slots)[i];
-    slot.materialSize = draw.materialParams.empty()
-                            ? kEmptyMaterialSize
-                            : alignUp(draw.materialParams.size(), 16);  // whole std140 vec4s
+    slot.materialSize = materialRange(materialBytes(draw).size());
     slot.objectOffset = size;
     size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
+    // A persistent block (material instance) lives in its own buffer, not the arena.
+    if (draw.materialBlock) continue;
     slot.materialOffset = size;
     size = alignUp(size + slot.materialSize, alignment);
   }
@@ -86,6 +85,7 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void
     const DrawItem& draw = frame.draws[i];
     const DrawSlot& slot = slots[i];
     std::memcpy(base + slot.objectOffset, &draw.object, sizeof(draw.object));
+    if (draw.materialBlock) continue;
     std::memset(base + slot.materialOffset, 0, slot.materialSize);
     if (!draw.materialParams.empty()) {
       std::memcpy(base + slot.materialOffset, draw.materialParams.data(),

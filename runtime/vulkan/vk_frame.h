@@ -3,7 +3,9 @@
 // in MeshCache's buffers (vk_meshes.h), uploaded once and shared by every draw of them.
 //
 // Arena layout: FrameUniforms at offset 0, then for each draw its ObjectUniforms and
-// MaterialParams, each at a multiple of the uniform offset alignment.
+// MaterialParams (unless the draw's parameters are a persistent UniformBlock, kept in
+// UniformBlockCache's buffers, vk_uniform_blocks.h), each at a multiple of the uniform offset
+// alignment.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -23,7 +25,8 @@ struct DrawSlot {
   VkDescriptorSet set = VK_NULL_HANDLE;         // set 0: the uniform blocks
   VkDescriptorSet textureSet = VK_NULL_HANDLE;  // set 1 (abi::kTextureSet): the 16 samplers
   VkDeviceSize objectOffset = 0;
-  VkDeviceSize materialOffset = 0;
+  VkBuffer materialBuffer = VK_NULL_HANDLE;  // a persistent block's buffer; null: the arena
+  VkDeviceSize materialOffset = 0;           // in the arena; 0 in a persistent block's buffer
   VkDeviceSize materialSize = 0;  // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
   MeshLocation mesh;  // the draw's mesh buffer (MeshCache), filled by the backend
 };
@@ -33,7 +36,8 @@ struct DrawSlot {
 // and malformed texture bindings (checkFrameTextures in vk_textures.h).
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error);
 
-// Fills the uniform offsets of slots (one per draw; pipeline, sets and mesh are left alone) and
+// Fills the uniform offsets of slots (one per draw; pipeline, sets, mesh and materialBuffer are
+// left alone; draws with a persistent materialBlock get no material space in the arena) and
 // returns the arena size the frame needs.
 VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
                          std::vector<DrawSlot>* slots);

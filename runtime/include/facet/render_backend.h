@@ -67,17 +67,35 @@ enum class Blending {
   Additive,     // src + dst (light-emitting effects)
 };
 
+// Uniform bytes that persist across frames: a material instance's parameters
+// (runtime/material_instance.h). A backend keeps one GPU buffer per block and uploads it again
+// only when `generation` changes. Generations come from nextUniformGeneration(), unique in the
+// process, so a new block at a freed block's address never matches a stale GPU copy.
+struct UniformBlock {
+  std::vector<uint8_t> bytes;  // std140
+  uint64_t generation = 0;
+};
+uint64_t nextUniformGeneration();
+
 struct DrawItem {
   const Mesh* mesh = nullptr;
   const ShaderProgram* program = nullptr;
   abi::ObjectUniforms object{};
-  std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty)
+  std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty),
+                                        // copied into this frame's uniforms
+  const UniformBlock* materialBlock = nullptr;  // when set, "MaterialParams" instead of
+                                                // materialParams, from its persistent GPU buffer
   std::vector<TextureBinding> textures;  // the material's textures (bindings kMaterialTextureBase + i)
   Blending blending = Blending::Opaque;
   // Cull triangles whose vertices run clockwise on screen in GL conventions (the back faces of
   // a mesh wound counter-clockwise seen from outside). Off: two-sided (every test mesh's default).
   bool cullBackFaces = false;
 };
+
+// The bytes a draw's "MaterialParams" block receives.
+inline const std::vector<uint8_t>& materialBytes(const DrawItem& draw) {
+  return draw.materialBlock ? draw.materialBlock->bytes : draw.materialParams;
+}
 
 struct FrameDesc {
   uint32_t width = 0;
@@ -108,6 +126,8 @@ struct ResourceCounts {
   size_t meshBuffers = 0;    // meshes resident on the GPU: one per distinct Mesh drawn recently,
                              // however many draws share it
   uint64_t meshUploads = 0;  // mesh uploads since creation (a new mesh, or one whose bytes changed)
+  size_t materialBuffers = 0;    // persistent UniformBlocks resident on the GPU
+  uint64_t materialUploads = 0;  // UniformBlock uploads since creation (new, or generation changed)
 };
 
 class RenderBackend {
