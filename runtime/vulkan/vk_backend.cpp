@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "facet/vulkan_backend.h"
 #include "vk_check.h"
 #include "vk_commands.h"
 #include "vk_context.h"
@@ -48,6 +49,7 @@ class VulkanBackend final : public RenderBackend {
   VulkanBackend& operator=(const VulkanBackend&) = delete;
 
   bool init(const VulkanOptions& options, std::string* error);
+  bool initOn(const AppDevice& device, const VulkanOptions& options, std::string* error);
 
   const char* name() const override { return "vulkan"; }
   PostPath postPath() const override { return path_; }
@@ -161,6 +163,10 @@ bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
   return planRenderPath(options, error) && ctx_.init(validation, error) &&
          createFixedObjects(error);
+}
+
+bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options, std::string* error) {
+  return planRenderPath(options, error) && ctx_.adopt(device, error) && createFixedObjects(error);
 }
 
 // Derives the render passes' load/store ops and the transient targets from the frame graph.
@@ -550,6 +556,20 @@ std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options,
   try {
     auto backend = std::make_unique<VulkanBackend>();
     if (!backend->init(options, error)) return nullptr;
+    return backend;
+  } catch (const std::exception& e) {
+    *error = std::string("createVulkanBackend: ") + e.what();
+    return nullptr;
+  }
+}
+
+std::unique_ptr<RenderBackend> createVulkanBackend(const AppDevice& device, const VulkanOptions& options,
+                                                   std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  try {
+    auto backend = std::make_unique<VulkanBackend>();
+    if (!backend->initOn(device, options, error)) return nullptr;
     return backend;
   } catch (const std::exception& e) {
     *error = std::string("createVulkanBackend: ") + e.what();
