@@ -1,6 +1,6 @@
 // An engine's view of Facet: the app owns the Vulkan instance and device, loads one material
 // package, makes two instances of it with different parameters, renders a few frames with the
-// runtime on its device, and writes the last one as PNG. It links facet_runtime_core and
+// runtime on its device into its own image, and writes the last one as PNG. It links facet_runtime_core and
 // facet_runtime_vulkan only: no GL, no OSMesa, no scene reader (ctest example_app_link_weight).
 //
 //   facet-app-example <red_plastic.matpkg> <out.png>
@@ -146,6 +146,123 @@ struct AppVulkan {
   }
 };
 
+uint32_t memoryType(VkPhysicalDevice physicalDevice, uint32_t typeBits, VkMemoryPropertyFlags flags) {
+  VkPhysicalDeviceMemoryProperties props{};
+  vkGetPhysicalDeviceMemoryProperties(physicalDevice, &props);
+  for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
+    if ((typeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & flags) == flags) return i;
+  return UINT32_MAX;
+}
+
+// The engine's own render target (its swapchain image, say) and, to write the PNG, the engine's
+// own copy of it into host memory: the runtime renders into the image and reads nothing back.
+struct AppTarget {
+  const AppVulkan* vk = nullptr;
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory imageMemory = VK_NULL_HANDLE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory bufferMemory = VK_NULL_HANDLE;
+  VkCommandPool pool = VK_NULL_HANDLE;
+
+  bool create(const AppVulkan& app, uint32_t width, uint32_t height, std::string* error) {
+    vk = &app;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = VK_FORMAT_R8G8B8A8_UNORM;
+    info.extent = {width, height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    VkBufferCreateInfo bufferInfo{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    bufferInfo.size = VkDeviceSize(width) * height * 4;
+    bufferInfo.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    if (vkCreateImage(app.device, &info, nullptr, &image) != VK_SUCCESS ||
+        vkCreateBuffer(app.device, &bufferInfo, nullptr, &buffer) != VK_SUCCESS) {
+      *error = "cannot create the app's image";
+      return false;
+    }
+    VkMemoryRequirements imageNeeds{}, bufferNeeds{};
+    vkGetImageMemoryRequirements(app.device, image, &imageNeeds);
+    vkGetBufferMemoryRequirements(app.device, buffer, &bufferNeeds);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = imageNeeds.size;
+    alloc.memoryTypeIndex = memoryType(app.physicalDevice, imageNeeds.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    if (vkAllocateMemory(app.device, &alloc, nullptr, &imageMemory) != VK_SUCCESS ||
+        vkBindImageMemory(app.device, image, imageMemory, 0) != VK_SUCCESS) {
+      *error = "cannot allocate the app's image";
+      return false;
+    }
+    alloc.allocationSize = bufferNeeds.size;
+    alloc.memoryTypeIndex = memoryType(app.physicalDevice, bufferNeeds.memoryTypeBits,
+                                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    if (vkAllocateMemory(app.device, &alloc, nullptr, &bufferMemory) != VK_SUCCESS ||
+        vkBindBufferMemory(app.device, buffer, bufferMemory, 0) != VK_SUCCESS) {
+      *error = "cannot allocate the app's readback buffer";
+      return false;
+    }
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.queueFamilyIndex = app.queueFamily;
+    if (vkCreateCommandPool(app.device, &poolInfo, nullptr, &pool) != VK_SUCCESS) {
+      *error = "cannot create the app's command pool";
+      return false;
+    }
+    return true;
+  }
+
+  // The image (left in TRANSFER_SRC_OPTIMAL by renderToImage) into host memory, rows top first.
+  bool read(uint32_t width, uint32_t height, std::vector<uint8_t>* rgba, std::string* error) {
+    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocInfo.commandPool = pool;
+    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocInfo.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    if (vkAllocateCommandBuffers(vk->device, &allocInfo, &cmd) != VK_SUCCESS) {
+      *error = "cannot allocate a command buffer";
+      return false;
+    }
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &begin);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr,
+                         0, nullptr);
+    vkEndCommandBuffer(cmd);
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    if (vkQueueSubmit(vk->queue, 1, &submit, VK_NULL_HANDLE) != VK_SUCCESS || vkQueueWaitIdle(vk->queue) != VK_SUCCESS) {
+      *error = "the app's readback failed";
+      return false;
+    }
+    void* mapped = nullptr;
+    if (vkMapMemory(vk->device, bufferMemory, 0, VK_WHOLE_SIZE, 0, &mapped) != VK_SUCCESS) {
+      *error = "cannot map the app's readback buffer";
+      return false;
+    }
+    rgba->resize(size_t(width) * height * 4);
+    std::memcpy(rgba->data(), mapped, rgba->size());
+    vkUnmapMemory(vk->device, bufferMemory);
+    return true;
+  }
+
+  ~AppTarget() {
+    if (!vk) return;
+    if (pool) vkDestroyCommandPool(vk->device, pool, nullptr);
+    if (buffer) vkDestroyBuffer(vk->device, buffer, nullptr);
+    if (bufferMemory) vkFreeMemory(vk->device, bufferMemory, nullptr);
+    if (image) vkDestroyImage(vk->device, image, nullptr);
+    if (imageMemory) vkFreeMemory(vk->device, imageMemory, nullptr);
+  }
+};
+
 void store(float* dst, const glm::vec3& v, float w = 0) {
   dst[0] = v.x;
   dst[1] = v.y;
@@ -223,15 +340,19 @@ int main(int argc, char** argv) {
     frame.frameTextures.push_back({facet::abi::kEnvironmentBinding, facet::abi::kEnvironmentName, &environment});
     frame.frameTextures.push_back({facet::abi::kDfgLutBinding, facet::abi::kDfgLutName, &dfgTexture()});
 
-    // One sphere mesh, uploaded once, drawn by both instances.
+    // One sphere mesh, uploaded once, drawn by both instances, into the app's own image.
     const Mesh sphere = makeSphere();
-    FrameResult result;
+    AppTarget target;
+    if (!target.create(vk, width, height, &error)) return fail(error);
+    AppImage image{target.image, VK_FORMAT_R8G8B8A8_UNORM, width, height, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     const int kFrames = 4;
     for (int i = 0; i < kFrames; ++i) {
       // An animated parameter: only `rough`'s block is uploaded again each frame.
       if (!rough->setParameter(*roughness, 0.55f + 0.05f * float(i), &error)) return fail(error);
       frame.draws = {glossy->draw(sphere, modelAt(-1.15f)), rough->draw(sphere, modelAt(1.15f))};
-      if (!renderer->render(frame, &result, &error)) return fail(error);
+      if (!renderer->renderToImage(frame, image, &error)) return fail(error);
+      image.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;  // where the last frame left it
     }
     const ResourceCounts counts = renderer->resources();
     std::printf("%d frames %ux%u: %zu mesh buffer(s), %llu mesh upload(s), %zu material block(s), "
@@ -243,7 +364,20 @@ int main(int argc, char** argv) {
         counts.materialUploads != uint64_t(2 + kFrames - 1)) {
       return fail("unexpected GPU resource counts");
     }
-    if (!writePng(argv[2], width, height, result.ldr, &error)) return fail(error);
+    std::vector<uint8_t> pixels;
+    if (!target.read(width, height, &pixels, &error) || !writePng(argv[2], width, height, pixels, &error)) {
+      return fail(error);
+    }
+    // The instances differ where it shows: the glossy one is red, the rough one blue (the centres
+    // project about 88 pixels either side of the middle).
+    const auto at = [&](uint32_t x, uint32_t y) { return &pixels[(size_t(y) * width + x) * 4]; };
+    const uint8_t* left = at(width / 2 - 88, height / 2);
+    const uint8_t* right = at(width / 2 + 88, height / 2);
+    if (!(left[0] > left[2] + 64 && right[2] > right[0] + 64)) {
+      return fail("the two instances did not draw as set (left rgb " + std::to_string(left[0]) + "," +
+                  std::to_string(left[1]) + "," + std::to_string(left[2]) + ", right " + std::to_string(right[0]) +
+                  "," + std::to_string(right[1]) + "," + std::to_string(right[2]) + ")");
+    }
   }
   if (validationErrors > 0) return fail(std::to_string(validationErrors) + " Vulkan validation error(s)");
   std::printf("wrote %s\n", argv[2]);

@@ -41,7 +41,7 @@ struct CachedPipeline {
   VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-class VulkanBackend final : public RenderBackend {
+class VulkanBackend final : public VulkanRenderer {
  public:
   VulkanBackend() = default;
   ~VulkanBackend() override;
@@ -55,6 +55,7 @@ class VulkanBackend final : public RenderBackend {
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
+  bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
     return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
@@ -70,6 +71,7 @@ class VulkanBackend final : public RenderBackend {
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool prepareTextures(const FrameDesc& frame, std::string* error);
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
+  bool renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result, std::string* error);
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
@@ -290,6 +292,24 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
     *error = "render: result is null";
     return false;
   }
+  return renderFrame(frame, nullptr, result, error);
+}
+
+bool VulkanBackend::renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  if (!target.image || target.width != frame.width || target.height != frame.height ||
+      (target.format != VK_FORMAT_R8G8B8A8_UNORM && target.format != VK_FORMAT_R8G8B8A8_SRGB)) {
+    *error = "renderToImage: the app's image must be RGBA8 (UNORM or SRGB) and the frame's size " +
+             std::to_string(frame.width) + "x" + std::to_string(frame.height);
+    return false;
+  }
+  return renderFrame(frame, &target, nullptr, error);
+}
+
+// result: read back into (render); null when the frame goes into appImage (renderToImage).
+bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result,
+                                std::string* error) {
   if (!deviceFailure_.empty()) {
     *error = "Vulkan backend unusable after an earlier failure: " + deviceFailure_;
     return false;
@@ -297,21 +317,22 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
     std::vector<DrawSlot> slots;
-    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_, forwardPass_, postPass_,
+    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_ && result, forwardPass_, postPass_,
                                forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
         !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
-        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots,
-                     error)) {
+        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots, appImage, error)) {
       return false;
     }
     if (!submitAndWait(error)) {
       deviceFailure_ = *error;
       return false;
     }
-    readBack(result);
-    readTimes(result);
+    if (result) {
+      readBack(result);
+      readTimes(result);
+    }
     return true;
   } catch (const std::exception& e) {
     *error = std::string("Vulkan backend: ") + e.what();
@@ -563,8 +584,8 @@ std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options,
   }
 }
 
-std::unique_ptr<RenderBackend> createVulkanBackend(const AppDevice& device, const VulkanOptions& options,
-                                                   std::string* error) {
+std::unique_ptr<VulkanRenderer> createVulkanBackend(const AppDevice& device, const VulkanOptions& options,
+                                                    std::string* error) {
   std::string scratch;
   if (!error) error = &scratch;
   try {

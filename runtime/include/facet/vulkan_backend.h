@@ -25,10 +25,30 @@ struct AppDevice {
   VkQueue queue = VK_NULL_HANDLE;
 };
 
+// An image of the app's that a frame's tone-mapped, sRGB-encoded result is copied into:
+// VK_FORMAT_R8G8B8A8_UNORM (bytes as encoded) or _SRGB (the same bytes, decoded when sampled),
+// the frame's size, one mip level and layer, created with VK_IMAGE_USAGE_TRANSFER_DST_BIT.
+struct AppImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // its layout now (UNDEFINED: contents discarded)
+  VkImageLayout newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;  // left in this layout
+};
+
+class VulkanRenderer : public RenderBackend {
+ public:
+  // Renders the frame into the app's image instead of reading it back: FrameResult's pixels
+  // are not filled. Synchronous like render(): the copy has finished when this returns, and the
+  // image is in target.newLayout, visible to all later commands on the device.
+  virtual bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) = 0;
+};
+
 // nullptr with *error when the device cannot run Facet. VulkanOptions::validation is ignored:
 // the app's instance decides which layers run, and reports to the app's messenger
 // (validationErrors() stays empty).
-std::unique_ptr<RenderBackend> createVulkanBackend(const AppDevice& device, const VulkanOptions& options,
-                                                   std::string* error);
+std::unique_ptr<VulkanRenderer> createVulkanBackend(const AppDevice& device, const VulkanOptions& options,
+                                                    std::string* error);
 
 }  // namespace facet::runtime
