@@ -156,7 +156,17 @@ SceneObject object(const json& j, const std::string& pointer, const std::filesys
   onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
   SceneObject o;
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
-  if (o.mesh != "sphere") fail(pointer + "/mesh", "unknown mesh '" + o.mesh + "' (available: sphere)");
+  if (o.mesh != "sphere") {
+    // A glTF 2.0 file, relative to the scene's folder and inside it (runtime/gltf_mesh.h).
+    const std::filesystem::path file(o.mesh);
+    const std::string extension = file.extension().string();
+    if (extension != ".gltf" && extension != ".glb")
+      fail(pointer + "/mesh", "unknown mesh '" + pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
+    const std::filesystem::path relative = file.lexically_normal();
+    if (file.is_absolute() || relative.empty() || *relative.begin() == "..")
+      fail(pointer + "/mesh", "a mesh file must lie in the scene's folder or below, not '" + pointerSegment(o.mesh) + "'");
+    o.mesh = (sceneDir / relative).string();
+  }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
   o.material = string(j["material"], pointer + "/material");
   // A material name is an identifier of the language (what `material NAME {` accepts): no path,

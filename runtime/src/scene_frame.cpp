@@ -11,6 +11,7 @@
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/exposure.h"
+#include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/mesh.h"
 
@@ -124,6 +125,20 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     DrawItem draw;
     draw.mesh = &out->sphere_;
+    if (o.mesh != "sphere") {
+      // One Mesh per file, shared by every object that names it (and so one GPU buffer).
+      auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
+      if (added) {
+        auto gltf = loadGltfMesh(o.mesh, error);
+        if (!gltf) {
+          out->meshes_.erase(mesh);
+          *error = "object " + std::to_string(i) + ": " + *error;
+          return nullptr;
+        }
+        mesh->second = std::make_unique<Mesh>(std::move(*gltf));
+      }
+      draw.mesh = mesh->second.get();
+    }
     draw.program = out->programs_[it->second].get();
     glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), o.position), glm::dvec3(o.radius));
     store(draw.object.model, glm::mat4(model));

@@ -49,7 +49,7 @@ struct PunctualLight {
 inline constexpr size_t kMaxSceneLights = 4;
 
 struct SceneObject {
-  std::string mesh = "sphere";
+  std::string mesh = "sphere";     // or a .gltf/.glb path (resolved, inside the scene's folder)
   std::string material;            // package name: <package dir>/<material>.matpkg
   glm::dvec3 position{0, 0, 0};
   double radius = 1;

@@ -34,6 +34,7 @@ class SceneFrame {
   std::vector<std::vector<TextureBinding>> generated_;    // parallel to materials_: package textures
   ColorEncoding colors_ = ColorEncoding::Linear;          // what the scene's tier expects
   Mesh sphere_;
+  std::map<std::string, std::unique_ptr<Mesh>> meshes_;  // glTF meshes by resolved path
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   EnvironmentLighting environment_;
   std::unique_ptr<Texture> environmentTexture_;
