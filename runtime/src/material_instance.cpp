@@ -43,7 +43,8 @@ std::shared_ptr<Material> Material::create(LoadedMaterial loaded, const VariantR
   m->defaults_ = std::move(*defaults);
   auto generated = m->loaded_.generatedTextures(m->variantKey_, error);
   if (!generated) return nullptr;
-  m->defaultTextures_ = std::move(*generated);
+  m->generated_ = std::move(*generated);
+  m->defaultTextures_ = m->generated_;
   auto sampled = m->loaded_.sampledTextures({}, error);
   if (!sampled) return nullptr;
   m->textureOfParam_.assign(info.params.size(), -1);

@@ -49,6 +49,10 @@ class Material : public std::enable_shared_from_this<Material> {
   const std::string& variantKey() const { return variantKey_; }
   const ShaderProgram& program() const { return program_; }
   ColorEncoding colors() const { return colors_; }
+  Blending blending() const { return blending_; }
+  bool doubleSided() const { return doubleSided_; }
+  // The package textures the variant samples (LoadedMaterial::generatedTextures), made once.
+  const std::vector<TextureBinding>& generatedTextures() const { return generated_; }
 
   // nullopt when the material has no parameter of that name.
   std::optional<ParameterHandle> parameter(std::string_view name) const;
@@ -66,6 +70,7 @@ class Material : public std::enable_shared_from_this<Material> {
   Blending blending_ = Blending::Opaque;
   bool doubleSided_ = false;
   std::vector<uint8_t> defaults_;                    // std140 block of the declared defaults
+  std::vector<TextureBinding> generated_;            // package textures of the variant
   std::vector<TextureBinding> defaultTextures_;      // package textures, then one per texture param
   std::vector<std::unique_ptr<Texture>> solidTextures_;  // the texture params' default colours
   std::vector<int> textureOfParam_;  // per parameter: its index in defaultTextures_, or -1
