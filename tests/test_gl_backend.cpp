@@ -268,6 +268,46 @@ TEST(GlBackend, TwoThousandDrawsShareOneMeshBuffer) {
   EXPECT_TRUE(noValidationErrors(*backend));
 }
 
+// The app's own OpenGL ES context: a backend that owns an EGL context stands in for the app (its
+// context is current after it renders); a second backend adopts that context, renders the same
+// frame to the same pixels, refuses to render when another context is current, and leaves the
+// context alive when destroyed.
+TEST(GlBackend, RendersOnTheAppsCurrentContext) {
+  std::string error;
+  GlOptions appOptions;
+  appOptions.context = GlContextKind::EglGles;
+  auto app = createGlBackend(appOptions, &error);
+  ASSERT_NE(app, nullptr) << "EGL GLES (libegl-mesa0, scripts/setup-deps.sh): " << error;
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  FrameDesc frame = makeFrame(8, 8);
+  frame.draws.push_back(makeDraw(mesh, shaders));
+  frame.draws.back().materialParams = materialBytes({0.25f, 0, 0.5f, 1}, {0, 0.75f, 0, 0});
+  FrameResult own, adopted;
+  ASSERT_TRUE(app->render(frame, &own, &error)) << error;  // leaves the app's context current
+
+  GlOptions options;
+  options.context = GlContextKind::AppCurrent;
+  auto embedded = createGlBackend(options, &error);
+  ASSERT_NE(embedded, nullptr) << error;
+  ASSERT_TRUE(embedded->render(frame, &adopted, &error)) << error;
+  EXPECT_EQ(adopted.hdr, own.hdr);
+  EXPECT_EQ(adopted.ldr, own.ldr);
+
+  // Another context current (an OSMesa backend's): refused, not drawn into the wrong context.
+  auto other = createGlBackend(GlOptions{GlContextKind::OsMesa}, &error);
+  ASSERT_NE(other, nullptr) << error;
+  ASSERT_TRUE(other->render(frame, &own, &error)) << error;
+  EXPECT_FALSE(embedded->render(frame, &adopted, &error));
+  EXPECT_NE(error.find("the app's GL context is not current"), std::string::npos) << error;
+
+  // Destroyed with the app's context current; the app's backend still renders on it.
+  ASSERT_TRUE(app->render(frame, &own, &error)) << error;
+  embedded.reset();
+  ASSERT_TRUE(app->render(frame, &own, &error)) << error;
+  EXPECT_TRUE(noValidationErrors(*app));
+}
+
 TEST(GlBackend, FrameAndObjectUniformsReachShaders) {
   auto backend = makeBackend();
   ASSERT_NE(backend, nullptr);

@@ -84,9 +84,10 @@ std::unique_ptr<GlBackend> GlBackend::create(const GlOptions& options, std::stri
 }
 
 bool GlBackend::initialise(const GlOptions& options, std::string* error) {
-  const gl::ContextKind kind = options.context == GlContextKind::EglGles ? gl::ContextKind::EglGles
-                               : options.context == GlContextKind::OsMesa ? gl::ContextKind::OsMesa
-                                                                          : gl::ContextKind::Auto;
+  const gl::ContextKind kind = options.context == GlContextKind::EglGles      ? gl::ContextKind::EglGles
+                               : options.context == GlContextKind::OsMesa     ? gl::ContextKind::OsMesa
+                               : options.context == GlContextKind::AppCurrent ? gl::ContextKind::AppCurrent
+                                                                              : gl::ContextKind::Auto;
   context_ = gl::Context::create(kind, error);
   if (!context_) return false;
   readBackHdr_ = options.readBackHdr;

@@ -162,6 +162,12 @@ enum class GlContextKind {
   Auto,     // EGL GLES when available, else OSMesa
   EglGles,  // a real OpenGL ES 3.2 context, EGL surfaceless (Mesa)
   OsMesa,   // an OpenGL core context on OSMesa running the "#version 300 es" shaders
+  // The app's OpenGL ES 3.x context, current on the calling thread (EGL) when the backend is
+  // created, and again whenever it renders or is destroyed: the backend never switches contexts,
+  // never destroys it, and leaves its debug callback alone (validationErrors() stays empty).
+  // GL entry points still come from libOSMesa, which dispatches to Mesa's current context: Mesa
+  // drivers only, for now.
+  AppCurrent,
 };
 
 struct GlOptions {
