@@ -2,6 +2,7 @@
 //
 // A backend receives everything already resolved: meshes as interleaved vertices, uniform block
 // bytes in std140, and shader code for its API. It knows nothing about packages or scenes.
+// The app's-own-device entry points of the Vulkan backend are in vulkan_backend.h.
 #pragma once
 
 #include <cstdint>
@@ -78,7 +79,8 @@ struct UniformBlock {
 uint64_t nextUniformGeneration();
 
 struct DrawItem {
-  const Mesh* mesh = nullptr;
+  const Mesh* mesh = nullptr;  // shared by draws: one GPU copy per distinct Mesh, kept across frames
+                               // and re-uploaded when its bytes change (ResourceCounts)
   const ShaderProgram* program = nullptr;
   abi::ObjectUniforms object{};
   std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty),
