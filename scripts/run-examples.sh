@@ -5,6 +5,7 @@
 #   build/examples/packages/*.matpkg   compiled materials (+ sources/ with every generated shader)
 #   build/examples/images/*.png        rendered scenes, one per backend
 #   build/examples/eval/               matc eval of red_plastic: report.md, report.json, plot.svg, images/
+#   build/examples/images/app.png      examples/app: the runtime embedded on the app's own Vulkan device
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,7 +13,7 @@ bash scripts/setup-deps.sh
 
 jobs=$(nproc)
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF
-cmake --build build/release --parallel "$jobs" --target matc facet-view
+cmake --build build/release --parallel "$jobs" --target matc facet-view facet-app-example
 
 packages=build/examples/packages
 images=build/examples/images
@@ -31,6 +32,11 @@ for tier in reference high mid low; do
   build/release/runtime/viewer/facet-view examples/scenes/spheres.json --tier "$tier" \
     --packages "$packages" --out "$images" --validation
 done
+
+# examples/app: an engine's use of the runtime (its own Vulkan device, two material instances),
+# with validation on: any validation error fails it.
+FACET_VK_VALIDATION=1 build/release/examples/app/facet-app-example \
+  build/release/examples/app/red_plastic.matpkg "$images/app.png"
 
 # Speed against error (docs/eval.md): every tier and single-option swap of one material, rendered
 # on lavapipe and measured against `reference` and by the mobile cost model.

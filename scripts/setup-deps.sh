@@ -14,6 +14,8 @@ packages=(
   libosmesa6-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   # maths and utility libraries
   libglm-dev libzstd-dev libxxhash-dev nlohmann-json3-dev libcli11-dev libstb-dev
+  # glTF 2.0 meshes in scenes (runtime/src/gltf_mesh.cpp)
+  libtinygltf-dev
   # tests (python3-jsonschema: the SARIF schema check of matc lint's report)
   googletest libgtest-dev libgmock-dev python3-jsonschema
   # tests of tools/mesa_stats (Python, standard library only)

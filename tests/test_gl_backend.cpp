@@ -232,6 +232,82 @@ TEST(GlBackend, MaterialParamsReachFragmentShader) {
   EXPECT_RGBA(hdrAt(result, 4, 4), 0.25f, 0.75f, 0.75f, 1.0f);
 }
 
+// 2,000 objects sharing one mesh: one set of mesh buffers, uploaded once across frames, every
+// object where its transform puts it with its own colour; a mesh edited in place is uploaded again.
+TEST(GlBackend, TwoThousandDrawsShareOneMeshBuffer) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+  constexpr uint32_t kColumns = 50, kRows = 40;  // 2,000 cells of 2x2 pixels
+  const float cellW = 2.0f / kColumns, cellH = 2.0f / kRows;
+  Mesh cell = quad(0, 0, cellW, cellH, 0);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  FrameDesc frame = makeFrame(2 * kColumns, 2 * kRows);
+  for (uint32_t i = 0; i < kColumns * kRows; ++i) {
+    frame.draws.push_back(makeDraw(cell, shaders));
+    setTranslation(frame.draws.back().object.model, -1.0f + float(i % kColumns) * cellW,
+                   -1.0f + float(i / kColumns) * cellH, 0);
+    const Rgba colour = i % 3 == 0 ? Rgba{0, 1, 0, 1} : Rgba{1, 0, 0, 1};
+    frame.draws.back().materialParams = materialBytes(colour, {0, 0, 0, 0});
+  }
+  FrameResult result;
+  std::string error;
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_EQ(backend->resources().meshBuffers, 1u);
+  EXPECT_EQ(backend->resources().meshUploads, 1u);
+  for (uint32_t i = 0; i < kColumns * kRows; ++i) {
+    const uint32_t row = 2 * (kRows - 1 - i / kColumns), col = 2 * (i % kColumns);
+    const Rgba got = hdrAt(result, row, col);
+    ASSERT_TRUE(got.r == (i % 3 == 0 ? 0.0f : 1.0f) && got.g == (i % 3 == 0 ? 1.0f : 0.0f))
+        << "object " << i << " at row " << row << " col " << col;
+  }
+  cell.vertices[0] = -cellW;  // edited in place: same address, new bytes
+  ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_EQ(backend->resources().meshBuffers, 1u);
+  EXPECT_EQ(backend->resources().meshUploads, 2u);
+  EXPECT_TRUE(noValidationErrors(*backend));
+}
+
+// The app's own OpenGL ES context: a backend that owns an EGL context stands in for the app (its
+// context is current after it renders); a second backend adopts that context, renders the same
+// frame to the same pixels, refuses to render when another context is current, and leaves the
+// context alive when destroyed.
+TEST(GlBackend, RendersOnTheAppsCurrentContext) {
+  std::string error;
+  GlOptions appOptions;
+  appOptions.context = GlContextKind::EglGles;
+  auto app = createGlBackend(appOptions, &error);
+  ASSERT_NE(app, nullptr) << "EGL GLES (libegl-mesa0, scripts/setup-deps.sh): " << error;
+  const Mesh mesh = quad(-1, -1, 1, 1, 0);
+  const ShaderProgram shaders = program(kMaterialFragmentShader);
+  FrameDesc frame = makeFrame(8, 8);
+  frame.draws.push_back(makeDraw(mesh, shaders));
+  frame.draws.back().materialParams = materialBytes({0.25f, 0, 0.5f, 1}, {0, 0.75f, 0, 0});
+  FrameResult own, adopted;
+  ASSERT_TRUE(app->render(frame, &own, &error)) << error;  // leaves the app's context current
+
+  GlOptions options;
+  options.context = GlContextKind::AppCurrent;
+  auto embedded = createGlBackend(options, &error);
+  ASSERT_NE(embedded, nullptr) << error;
+  ASSERT_TRUE(embedded->render(frame, &adopted, &error)) << error;
+  EXPECT_EQ(adopted.hdr, own.hdr);
+  EXPECT_EQ(adopted.ldr, own.ldr);
+
+  // Another context current (an OSMesa backend's): refused, not drawn into the wrong context.
+  auto other = createGlBackend(GlOptions{GlContextKind::OsMesa}, &error);
+  ASSERT_NE(other, nullptr) << error;
+  ASSERT_TRUE(other->render(frame, &own, &error)) << error;
+  EXPECT_FALSE(embedded->render(frame, &adopted, &error));
+  EXPECT_NE(error.find("the app's GL context is not current"), std::string::npos) << error;
+
+  // Destroyed with the app's context current; the app's backend still renders on it.
+  ASSERT_TRUE(app->render(frame, &own, &error)) << error;
+  embedded.reset();
+  ASSERT_TRUE(app->render(frame, &own, &error)) << error;
+  EXPECT_TRUE(noValidationErrors(*app));
+}
+
 TEST(GlBackend, FrameAndObjectUniformsReachShaders) {
   auto backend = makeBackend();
   ASSERT_NE(backend, nullptr);

@@ -297,7 +297,7 @@ TEST(HostileScenes, ImagesOutsideTheSceneFolderAreRefused) {
                                    std::string("textures/../../secret.png")}) {
     std::string error;
     EXPECT_FALSE(facet::runtime::parseScene(scenePath, sceneNaming(image), &error)) << image;
-    EXPECT_NE(error.find(": error: /environment/image: '" + facet::runtime::shownValue(image) + "' is outside the folder this scene may read images from"),
+    EXPECT_NE(error.find(": error: /environment/image: '" + facet::runtime::shownValue(image) + "' is outside the folder this scene may read files from"),
               std::string::npos) << error;
     error.clear();
     EXPECT_FALSE(facet::runtime::parseScene(scenePath,

@@ -16,6 +16,7 @@
 #include "gl_program.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
+#include "gl_uniform_blocks.h"
 
 namespace facet::runtime {
 namespace {
@@ -32,6 +33,10 @@ class GlBackend final : public RenderBackend {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
+  ResourceCounts resources() const override {
+    return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
+            materialBlocks_.uploadCount()};
+  }
 
  private:
   struct CachedProgram {
@@ -45,8 +50,7 @@ class GlBackend final : public RenderBackend {
   bool initialise(const GlOptions& options, std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
-  bool drawItem(const FrameDesc& frame, const DrawItem& item,
-                std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error);
+  bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
   bool postPass(std::string* error);
   bool mergedPostPass(std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
@@ -64,6 +68,8 @@ class GlBackend final : public RenderBackend {
   gl::Buffer materialUniforms_;
   gl::RenderTargets targets_;
   gl::TextureCache textures_;  // kept across frames; see gl_textures.h for the reuse rule
+  gl::MeshCache meshes_;       // kept across frames, shared by every draw of a mesh (gl_mesh.h)
+  gl::UniformBlockCache materialBlocks_;  // material instances' blocks (gl_uniform_blocks.h)
   // GL_TIME_ELAPSED queries of the forward and post passes; absent when the context has no
   // timer queries (GL 3.3 core has them; GLES needs GL_EXT_disjoint_timer_query).
   bool timed_ = false;
@@ -78,9 +84,10 @@ std::unique_ptr<GlBackend> GlBackend::create(const GlOptions& options, std::stri
 }
 
 bool GlBackend::initialise(const GlOptions& options, std::string* error) {
-  const gl::ContextKind kind = options.context == GlContextKind::EglGles ? gl::ContextKind::EglGles
-                               : options.context == GlContextKind::OsMesa ? gl::ContextKind::OsMesa
-                                                                          : gl::ContextKind::Auto;
+  const gl::ContextKind kind = options.context == GlContextKind::EglGles      ? gl::ContextKind::EglGles
+                               : options.context == GlContextKind::OsMesa     ? gl::ContextKind::OsMesa
+                               : options.context == GlContextKind::AppCurrent ? gl::ContextKind::AppCurrent
+                                                                              : gl::ContextKind::Auto;
   context_ = gl::Context::create(kind, error);
   if (!context_) return false;
   readBackHdr_ = options.readBackHdr;
@@ -246,12 +253,11 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
   if (!checkGlError("forward pass setup", error)) return false;
 
-  // Meshes live for this frame only: a Mesh pointer says nothing about whether its contents
-  // changed since the last frame. A mesh drawn twice in one frame is uploaded once.
-  std::unordered_map<const Mesh*, gl::MeshBuffers> meshes;
+  meshes_.beginFrame();
+  materialBlocks_.beginFrame();
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     std::string drawError;
-    if (!drawItem(frame, frame.draws[i], &meshes, &drawError)) {
+    if (!drawItem(frame, frame.draws[i], &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
       glBindVertexArray(0);
       return false;
@@ -259,6 +265,8 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  meshes_.endFrame();
+  materialBlocks_.endFrame();
 
   // Separate path: depth is dead once the forward pass ends. Invalidating it here, before the
   // framebuffer switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is
@@ -270,8 +278,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
   return checkGlError("forward pass", error);
 }
 
-bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
-                         std::unordered_map<const Mesh*, gl::MeshBuffers>* meshes, std::string* error) {
+bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error) {
   if (!item.mesh || !item.program) {
     if (error) *error = item.mesh ? "no shader program" : "no mesh";
     return false;
@@ -291,27 +298,25 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
     return false;
   }
   if (program->material.present() &&
-      item.materialParams.size() < static_cast<size_t>(program->material.dataSize)) {
+      materialBytes(item).size() < static_cast<size_t>(program->material.dataSize)) {
     if (error) {
       *error = "shader's MaterialParams block is " + std::to_string(program->material.dataSize) +
-               " bytes but the draw supplies " + std::to_string(item.materialParams.size());
+               " bytes but the draw supplies " + std::to_string(materialBytes(item).size());
     }
     return false;
   }
 
-  auto [entry, inserted] = meshes->try_emplace(item.mesh);
-  if (inserted && !gl::uploadMesh(*item.mesh, &entry->second, error)) {
-    meshes->erase(entry);
-    return false;
-  }
-  const gl::MeshBuffers& mesh = entry->second;
+  const gl::MeshBuffers* mesh = meshes_.resident(*item.mesh, error);
+  if (!mesh) return false;
 
   // One buffer per block, re-specified per draw: glBufferData gives the driver fresh storage
   // while earlier draws still read the old contents.
   glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.id());
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &item.object, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
-  if (!item.materialParams.empty()) {
+  if (item.materialBlock && !item.materialBlock->bytes.empty()) {
+    glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialBlocks_.resident(*item.materialBlock));
+  } else if (!item.materialParams.empty()) {
     glBindBuffer(GL_UNIFORM_BUFFER, materialUniforms_.id());
     glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(item.materialParams.size()),
                  item.materialParams.data(), GL_DYNAMIC_DRAW);
@@ -334,8 +339,8 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item,
   gl::assignSamplerUnits(program->program.id(), frame.frameTextures, &cached->samplerUnits);
   gl::assignSamplerUnits(program->program.id(), item.textures, &cached->samplerUnits);
   textures_.bind(frame, item);
-  glBindVertexArray(mesh.vertexArray.id());
-  glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(mesh->vertexArray.id());
+  glDrawElements(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr);
   return checkGlError("draw", error);
 }
 

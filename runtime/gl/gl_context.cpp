@@ -44,6 +44,13 @@ const char* debugSourceName(GLenum source) {
 }  // namespace
 
 std::unique_ptr<Context> Context::create(ContextKind kind, std::string* error) {
+  if (kind == ContextKind::AppCurrent) {
+    std::unique_ptr<Context> context(new Context());
+    std::string why;
+    if (context->adoptCurrentEgl(&why)) return context;
+    if (error) *error = why;
+    return nullptr;
+  }
   std::string eglError;
   if (kind != ContextKind::OsMesa) {
     std::unique_ptr<Context> context(new Context());
@@ -111,6 +118,31 @@ bool Context::initialiseEgl(std::string* error) {
 #endif
 }
 
+// The app's context as it is: no API is bound, no context created or made current. It must be an
+// OpenGL ES 3.x context (the GLSL ES 3.00 shaders and the ES entry points the backend uses).
+bool Context::adoptCurrentEgl(std::string* error) {
+#if defined(FACET_HAVE_EGL)
+  adopted_ = true;
+  eglDisplay_ = eglGetCurrentDisplay();
+  eglContext_ = eglGetCurrentContext();
+  if (eglContext_ == EGL_NO_CONTEXT) {
+    *error = "no EGL context is current on this thread: make the app's OpenGL ES 3 context current first";
+    return false;
+  }
+  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  if (!version || std::string(version).rfind("OpenGL ES 3", 0) != 0) {
+    *error = std::string("the current context is not OpenGL ES 3.x (GL_VERSION '") + (version ? version : "none") + "')";
+    return false;
+  }
+  es_ = true;
+  currentContext = this;
+  return queryCapabilities(error);
+#else
+  *error = "built without EGL: the app's current context cannot be adopted";
+  return false;
+#endif
+}
+
 bool Context::queryCapabilities(std::string* error) {
   glGetIntegerv(GL_MAJOR_VERSION, &major_);
   glGetIntegerv(GL_MINOR_VERSION, &minor_);
@@ -135,7 +167,8 @@ bool Context::queryCapabilities(std::string* error) {
   const bool atLeast43 = major_ > 4 || (major_ == 4 && minor_ >= 3);
   const bool atLeastEs32 = es_ && (major_ > 3 || (major_ == 3 && minor_ >= 2));
   canInvalidate_ = es_ || atLeast43 || hasExtension("GL_ARB_invalidate_subdata");
-  if (atLeast43 || atLeastEs32 || hasExtension("GL_KHR_debug")) enableDebugOutput();
+  // The app's context keeps the app's own debug callback, if it has one.
+  if (!adopted_ && (atLeast43 || atLeastEs32 || hasExtension("GL_KHR_debug"))) enableDebugOutput();
 #if defined(FACET_HAVE_EGL)
   if (es_) {
     queryResult64_ = reinterpret_cast<QueryResult64>(eglGetProcAddress("glGetQueryObjectui64vEXT"));
@@ -151,6 +184,7 @@ Context::~Context() {
   // Unbind first so the thread is not left pointing at a destroyed context.
   const bool current = currentContext == this;
   if (current) currentContext = nullptr;
+  if (adopted_) return;  // the app's context: the app destroys it
 #if defined(FACET_HAVE_EGL)
   if (eglContext_) {
     auto display = static_cast<EGLDisplay>(eglDisplay_);
@@ -170,6 +204,17 @@ Context::~Context() {
 // (OSMesaGetCurrentContext even returns EGL's context). The context made current last by this
 // code is tracked here instead; switching always goes through the target API.
 bool Context::makeCurrent(std::string* error) {
+#if defined(FACET_HAVE_EGL)
+  if (adopted_) {
+    // Never switched by the backend: the app makes its context current before calling it.
+    if (eglGetCurrentContext() != static_cast<EGLContext>(eglContext_)) {
+      if (error) *error = "the app's GL context is not current on this thread";
+      return false;
+    }
+    currentContext = this;
+    return true;
+  }
+#endif
   if (currentContext == this) return true;
 #if defined(FACET_HAVE_EGL)
   if (es_) {

@@ -22,6 +22,7 @@ enum class ContextKind {
   Auto,    // EGL GLES when available, else OSMesa
   EglGles, // OpenGL ES 3.2 (3.0 if refused), EGL surfaceless
   OsMesa,  // OpenGL 4.5 core (3.3 if refused) with ARB_ES3_compatibility
+  AppCurrent,  // the app's OpenGL ES 3.x context, current (through EGL) when created: adopted, not owned
 };
 
 class Context {
@@ -58,6 +59,7 @@ class Context {
   Context() = default;
   bool initialiseOsMesa(std::string* error);
   bool initialiseEgl(std::string* error);
+  bool adoptCurrentEgl(std::string* error);
   bool queryCapabilities(std::string* error);
   void enableDebugOutput();
   static void APIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
@@ -67,6 +69,7 @@ class Context {
   OSMesaContext context_ = nullptr;
   void* eglDisplay_ = nullptr;  // EGLDisplay / EGLContext, kept opaque so EGL stays optional
   void* eglContext_ = nullptr;
+  bool adopted_ = false;  // the app's context: checked to be current, never made current or destroyed
   // OSMesaMakeCurrent requires a colour buffer; the backend renders into its own framebuffer
   // objects, so the default framebuffer only needs to exist.
   static constexpr int kDummySize = 4;

@@ -61,4 +61,31 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
   return true;
 }
 
+const MeshBuffers* MeshCache::resident(const Mesh& mesh, std::string* error) {
+  auto found = meshes_.find(&mesh);
+  // Already seen this frame: its identity was checked by the first draw of it.
+  if (found != meshes_.end() && found->second.lastUsedFrame == frameNumber_) return &found->second.buffers;
+  MeshIdentity key = MeshIdentity::of(mesh);
+  if (found != meshes_.end() && found->second.key == key) {
+    found->second.lastUsedFrame = frameNumber_;
+    return &found->second.buffers;
+  }
+  Entry entry;
+  entry.key = key;
+  entry.lastUsedFrame = frameNumber_;
+  if (!uploadMesh(mesh, &entry.buffers, error)) return nullptr;
+  ++uploads_;
+  // A changed mesh's old buffers are deleted here; earlier draws that used them keep their
+  // contents (GL orphans storage still referenced by queued commands).
+  Entry& stored = meshes_[&mesh];
+  stored = std::move(entry);
+  return &stored.buffers;
+}
+
+void MeshCache::endFrame() {
+  for (auto it = meshes_.begin(); it != meshes_.end();) {
+    it = frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames ? meshes_.erase(it) : std::next(it);
+  }
+}
+
 }  // namespace facet::runtime::gl

@@ -1,9 +1,12 @@
 // A Mesh uploaded into GL buffers with the ABI's vertex layout.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 
 #include "facet/render_backend.h"
+#include "facet/runtime/mesh.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {
@@ -18,5 +21,33 @@ struct MeshBuffers {
 // Checks the mesh (whole vertices, indices in range) and uploads it. Returns false with *error
 // set on a malformed mesh: an out-of-range index would read past the buffer in the driver.
 bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error);
+
+// GL buffers of the Meshes a backend has drawn with, keyed by the Mesh's address, shared by every
+// draw of a mesh in this frame and later ones. Cache rule as vulkan::MeshCache's (vk_meshes.h):
+// reused while the MeshIdentity (sizes, hash of the bytes; hashed once per mesh per frame) is
+// unchanged, deleted after kEvictAfterFrames frames unused.
+class MeshCache {
+ public:
+  void beginFrame() { ++frameNumber_; }
+  // The mesh's buffers, uploaded if new or changed; nullptr with *error set on a malformed mesh.
+  const MeshBuffers* resident(const Mesh& mesh, std::string* error);
+  // Deletes the entries unused for too long.
+  void endFrame();
+
+  size_t residentCount() const { return meshes_.size(); }
+  uint64_t uploadCount() const { return uploads_; }
+
+ private:
+  struct Entry {
+    MeshIdentity key;
+    MeshBuffers buffers;
+    uint64_t lastUsedFrame = 0;
+  };
+  static constexpr uint64_t kEvictAfterFrames = 16;
+
+  std::unordered_map<const Mesh*, Entry> meshes_;
+  uint64_t frameNumber_ = 0;
+  uint64_t uploads_ = 0;
+};
 
 }  // namespace facet::runtime::gl

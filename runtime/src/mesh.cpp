@@ -3,12 +3,23 @@
 #include <cmath>
 #include <cstring>
 
+#include "facet/content_hash.h"
+
 namespace facet::runtime {
 
 void appendVertex(Mesh& mesh, const Vertex& v) {
   float f[abi::kVertexFloats];
   std::memcpy(f, &v, sizeof f);  // Vertex is the stream's floats in order (static_assert in mesh.h)
   mesh.vertices.insert(mesh.vertices.end(), f, f + abi::kVertexFloats);
+}
+
+MeshIdentity MeshIdentity::of(const Mesh& mesh) {
+  MeshIdentity id;
+  id.vertexFloats = mesh.vertices.size();
+  id.indexCount = mesh.indices.size();
+  id.hash = hashBytes(mesh.vertices.data(), mesh.vertices.size() * sizeof(float));
+  id.hash = hashBytes(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t), id.hash);
+  return id;
 }
 
 Mesh makeSphere(int rings, int segments) {

@@ -54,7 +54,7 @@ uint32_t wholeNumber(const json& j, const std::string& pointer, double lo, doubl
   return uint32_t(v);
 }
 
-// Resolves the image paths a scene names: relative to the scene's folder, and only under the
+// Resolves the file paths a scene names (images, glTF meshes): relative to the scene's folder, and only under the
 // asset root (SceneReadOptions). Containment is decided on the real paths (symbolic links
 // followed as far as they exist), so a link inside the folder cannot point out of it.
 class AssetPaths {
@@ -63,14 +63,14 @@ class AssetPaths {
       : sceneDir_(std::move(sceneDir)), root_(realPath(assetRoot.empty() ? sceneDir_ : std::filesystem::path(assetRoot))) {}
 
   std::string resolve(const json& j, const std::string& pointer) const {
-    if (!j.is_string()) fail(pointer, "expected an image path");
+    if (!j.is_string()) fail(pointer, "expected a file path");
     const std::string given = j.get<std::string>();
-    if (given.empty() || given.find('\0') != std::string::npos) fail(pointer, "expected an image path");
+    if (given.empty() || given.find('\0') != std::string::npos) fail(pointer, "expected a file path");
     const std::filesystem::path path = (sceneDir_ / given).lexically_normal();
     const std::filesystem::path real = realPath(path);
     auto [rootEnd, realEnd] = std::mismatch(root_.begin(), root_.end(), real.begin(), real.end());
     if (rootEnd != root_.end() || root_.empty() || real.empty())
-      fail(pointer, "'" + shownValue(given) + "' is outside the folder this scene may read images from (" +
+      fail(pointer, "'" + shownValue(given) + "' is outside the folder this scene may read files from (" +
                         root_.string() + "); an app that trusts the scene can allow another (facet-view --asset-root)");
     return path.string();
   }
@@ -191,7 +191,14 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
   onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
   SceneObject o;
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
-  if (o.mesh != "sphere") fail(pointer + "/mesh", "unknown mesh '" + o.mesh + "' (available: sphere)");
+  if (o.mesh != "sphere") {
+    // A glTF 2.0 file, relative to the scene's folder and inside the asset root, as images are
+    // (runtime/gltf_mesh.h).
+    const std::string extension = std::filesystem::path(o.mesh).extension().string();
+    if (extension != ".gltf" && extension != ".glb")
+      fail(pointer + "/mesh", "unknown mesh '" + pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
+    o.mesh = assets.resolve(j["mesh"], pointer + "/mesh");
+  }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
   o.material = string(j["material"], pointer + "/material");
   // A material name is an identifier of the language (what `material NAME {` accepts): no path,

@@ -12,7 +12,9 @@
 #include "facet/runtime/environment.h"
 #include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/exposure.h"
+#include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/image_texture.h"
+#include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
 
 namespace facet::runtime {
@@ -102,51 +104,56 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     const SceneObject& o = scene.objects[i];
     auto [it, fresh] = loaded.emplace(o.material, out->materials_.size());
     if (fresh) {
-      out->generated_.emplace_back();
       std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
-      auto material = LoadedMaterial::load(path, error);
-      if (!material) return nullptr;
+      auto loadedMaterial = LoadedMaterial::load(path, error);
+      if (!loadedMaterial) return nullptr;
       // A package renamed or copied under another material's name would draw the wrong surface.
-      if (material->info().name != o.material) {
-        *error = path + ": holds material '" + material->info().name + "', not '" + o.material + "' as the scene asks";
+      if (loadedMaterial->info().name != o.material) {
+        *error = path + ": holds material '" + loadedMaterial->info().name + "', not '" + o.material +
+                 "' as the scene asks";
         return nullptr;
       }
-      // The key this material is asked for: axes it ignores (lights, for unlit) are normalised
-      // the same way the compiler normalised them when it built the package.
-      permutations::MaterialNeeds needs{material->info().shading == "lit"};
-      std::string key = permutations::requestKey(needs, *tier, scene.sun.has_value(), lights).toString();
-      auto program = material->program(key, error);
-      if (!program) return nullptr;
-      out->materials_.push_back(std::make_unique<LoadedMaterial>(std::move(*material)));
-      out->programs_.push_back(std::make_unique<ShaderProgram>(std::move(*program)));
-      // Package textures (the `lut` tier's table): made once per package, at load.
-      auto generated = out->materials_.back()->generatedTextures(key, error);
-      if (!generated) return nullptr;
-      out->generated_.back() = std::move(*generated);
+      // The variant, its shaders and package textures, the colour encoding: as for an app's
+      // Material (runtime/material_instance.h).
+      auto material = Material::create(std::move(*loadedMaterial), {scene.tier, scene.sun.has_value(), lights}, error);
+      if (!material) return nullptr;
+      out->materials_.push_back(std::move(material));
     }
+    const Material& material = *out->materials_[it->second];
     DrawItem draw;
     draw.mesh = &out->sphere_;
-    draw.program = out->programs_[it->second].get();
+    if (o.mesh != "sphere") {
+      // One Mesh per file, shared by every object that names it (and so one GPU buffer).
+      auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
+      if (added) {
+        auto gltf = loadGltfMesh(o.mesh, error);
+        if (!gltf) {
+          out->meshes_.erase(mesh);
+          *error = "object " + std::to_string(i) + ": " + *error;
+          return nullptr;
+        }
+        mesh->second = std::make_unique<Mesh>(std::move(*gltf));
+      }
+      draw.mesh = mesh->second.get();
+    }
+    draw.program = &material.program();
     glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), o.position), glm::dvec3(o.radius));
     store(draw.object.model, glm::mat4(model));
     store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
-    auto block = out->materials_[it->second]->paramBlock(o.params, error, out->colors_, o.boolParams);
+    auto block = material.loaded().paramBlock(o.params, error, out->colors_, o.boolParams);
     if (!block) {
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;
     }
     draw.materialParams = std::move(*block);
-    draw.cullBackFaces = !out->materials_[it->second]->info().doubleSided;
-    const std::string& blending = out->materials_[it->second]->info().blending;
-    draw.blending = blending == "transparent" ? Blending::Transparent
-                    : blending == "additive"  ? Blending::Additive
-                                              : Blending::Opaque;
-    auto sampled = out->materials_[it->second]->sampledTextures(o.textures, error);
+    draw.cullBackFaces = !material.doubleSided();
+    draw.blending = material.blending();
+    auto sampled = material.loaded().sampledTextures(o.textures, error);
     if (!sampled) {
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;
     }
-    draw.textures = out->generated_[it->second];
+    draw.textures = material.generatedTextures();
     for (const LoadedMaterial::SampledTexture& t : *sampled) {
       const Texture* texture = out->texture(t, error);
       if (!texture) {

@@ -1,5 +1,7 @@
 #include "facet/texture_checks.h"
 
+#include "facet/content_hash.h"
+
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -14,30 +16,11 @@ size_t fullChainLength(uint32_t width, uint32_t height) {
   return levels;
 }
 
-// Word-at-a-time multiply-xor hash of every level (length included, so moving bytes between
-// levels changes it). Not cryptographic: it detects edits, it does not resist adversaries.
+// Every level through hashBytes (which mixes in the length, so moving bytes between levels
+// changes the hash).
 uint64_t hashLevels(const std::vector<std::vector<uint8_t>>& levels) {
-  constexpr uint64_t kMultiplier = 0x9E3779B97F4A7C15ull;
-  uint64_t hash = 0xCBF29CE484222325ull;
-  const auto mix = [&](uint64_t word) {
-    hash = (hash ^ word) * kMultiplier;
-    hash ^= hash >> 29;
-  };
-  for (const std::vector<uint8_t>& level : levels) {
-    mix(level.size());
-    const uint8_t* bytes = level.data();
-    size_t i = 0;
-    for (; i + 8 <= level.size(); i += 8) {
-      uint64_t word = 0;
-      std::memcpy(&word, bytes + i, 8);
-      mix(word);
-    }
-    if (i < level.size()) {
-      uint64_t word = 0;
-      std::memcpy(&word, bytes + i, level.size() - i);
-      mix(word);
-    }
-  }
+  uint64_t hash = kContentHashSeed;
+  for (const std::vector<uint8_t>& level : levels) hash = hashBytes(level.data(), level.size(), hash);
   return hash;
 }
 

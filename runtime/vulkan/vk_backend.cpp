@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "facet/vulkan_backend.h"
 #include "vk_check.h"
 #include "vk_commands.h"
 #include "vk_context.h"
@@ -22,6 +23,7 @@
 #include "vk_resources.h"
 #include "vk_targets.h"
 #include "vk_textures.h"
+#include "vk_uniform_blocks.h"
 
 namespace facet::runtime {
 namespace {
@@ -39,7 +41,7 @@ struct CachedPipeline {
   VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-class VulkanBackend final : public RenderBackend {
+class VulkanBackend final : public VulkanRenderer {
  public:
   VulkanBackend() = default;
   ~VulkanBackend() override;
@@ -47,12 +49,18 @@ class VulkanBackend final : public RenderBackend {
   VulkanBackend& operator=(const VulkanBackend&) = delete;
 
   bool init(const VulkanOptions& options, std::string* error);
+  bool initOn(const AppDevice& device, const VulkanOptions& options, std::string* error);
 
   const char* name() const override { return "vulkan"; }
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
+  bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
+  ResourceCounts resources() const override {
+    return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
+            materialBlocks_.uploadCount()};
+  }
 
  private:
   bool planRenderPath(const VulkanOptions& options, std::string* error);
@@ -63,6 +71,7 @@ class VulkanBackend final : public RenderBackend {
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool prepareTextures(const FrameDesc& frame, std::string* error);
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
+  bool renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result, std::string* error);
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
@@ -106,7 +115,12 @@ class VulkanBackend final : public RenderBackend {
   // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
   TextureCache textures_;
 
-  // Uniforms, vertices and indices of one frame, rewritten every frame, grown when needed.
+  // Meshes, uploaded once and shared by every draw of them; see vk_meshes.h.
+  MeshCache meshes_;
+  // Material instances' parameter blocks, uploaded when changed; see vk_uniform_blocks.h.
+  UniformBlockCache materialBlocks_;
+
+  // Uniforms of one frame, rewritten every frame, grown when needed.
   HostBuffer arena_;
 
   RenderTargets targets_;
@@ -126,6 +140,8 @@ VulkanBackend::~VulkanBackend() {
     if (entry.second.pipeline) vkDestroyPipeline(device, entry.second.pipeline, nullptr);
   }
   textures_.destroy();
+  meshes_.destroy();
+  materialBlocks_.destroy();
   destroyRenderTargets(device, &targets_);
   destroyHostBuffer(device, &arena_);
   // Destroying a pool frees its sets.
@@ -150,6 +166,10 @@ bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
   return planRenderPath(options, error) && ctx_.init(validation, error) &&
          createFixedObjects(error);
+}
+
+bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options, std::string* error) {
+  return planRenderPath(options, error) && ctx_.adopt(device, error) && createFixedObjects(error);
 }
 
 // Derives the render passes' load/store ops and the transient targets from the frame graph.
@@ -202,6 +222,8 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
   if (!textures_.init(&ctx_, error)) return false;
+  meshes_.init(&ctx_);
+  materialBlocks_.init(&ctx_);
 
   if (ctx_.timestampValidBits > 0) {
     VkQueryPoolCreateInfo queryInfo{};
@@ -273,6 +295,24 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
     *error = "render: result is null";
     return false;
   }
+  return renderFrame(frame, nullptr, result, error);
+}
+
+bool VulkanBackend::renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  if (!target.image || target.width != frame.width || target.height != frame.height ||
+      (target.format != VK_FORMAT_R8G8B8A8_UNORM && target.format != VK_FORMAT_R8G8B8A8_SRGB)) {
+    *error = "renderToImage: the app's image must be RGBA8 (UNORM or SRGB) and the frame's size " +
+             std::to_string(frame.width) + "x" + std::to_string(frame.height);
+    return false;
+  }
+  return renderFrame(frame, &target, nullptr, error);
+}
+
+// result: read back into (render); null when the frame goes into appImage (renderToImage).
+bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result,
+                                std::string* error) {
   if (!deviceFailure_.empty()) {
     *error = "Vulkan backend unusable after an earlier failure: " + deviceFailure_;
     return false;
@@ -280,21 +320,22 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
     std::vector<DrawSlot> slots;
-    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_, forwardPass_, postPass_,
+    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_ && result, forwardPass_, postPass_,
                                forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
         !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
-        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, arena_.buffer, slots,
-                     error)) {
+        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots, appImage, error)) {
       return false;
     }
     if (!submitAndWait(error)) {
       deviceFailure_ = *error;
       return false;
     }
-    readBack(result);
-    readTimes(result);
+    if (result) {
+      readBack(result);
+      readTimes(result);
+    }
     return true;
   } catch (const std::exception& e) {
     *error = std::string("Vulkan backend: ") + e.what();
@@ -365,12 +406,11 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
   VkDeviceSize capacity = 64 * 1024;
   while (capacity < size) capacity *= 2;
   return createHostBuffer(ctx_, capacity,
-                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                          &arena_, error);
+                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena_, error);
 }
 
-// Builds (or finds) each draw's pipeline, then lays the frame out in the arena and copies it in.
+// Builds (or finds) each draw's pipeline, makes its mesh resident, then lays the frame's
+// uniforms out in the arena and copies them in.
 bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots,
                                 std::string* error) {
   const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
@@ -380,7 +420,15 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
       return false;
     }
   }
-  if (!ensureArena(size, error)) return false;
+  if (!meshes_.prepare(frame, error) || !materialBlocks_.prepare(frame, error) || !ensureArena(size, error)) {
+    return false;
+  }
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    DrawSlot& slot = (*slots)[i];
+    slot.mesh = meshes_.locate(frame.draws[i].mesh);
+    slot.materialBuffer =
+        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : arena_.buffer;
+  }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
   writeFrame(frame, *slots, arena_.mapped);
   return true;
@@ -448,7 +496,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     slot.textureSet = sets[2 * i + 1];
     buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
     buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
-    buffers[3 * i + 2] = {arena_.buffer, slot.materialOffset, slot.materialSize};
+    buffers[3 * i + 2] = {slot.materialBuffer, slot.materialOffset, slot.materialSize};
     const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
     for (uint32_t b = 0; b < 3; ++b) {
       VkWriteDescriptorSet& write = writes[3 * i + b];
@@ -532,6 +580,20 @@ std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options,
   try {
     auto backend = std::make_unique<VulkanBackend>();
     if (!backend->init(options, error)) return nullptr;
+    return backend;
+  } catch (const std::exception& e) {
+    *error = std::string("createVulkanBackend: ") + e.what();
+    return nullptr;
+  }
+}
+
+std::unique_ptr<VulkanRenderer> createVulkanBackend(const AppDevice& device, const VulkanOptions& options,
+                                                    std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  try {
+    auto backend = std::make_unique<VulkanBackend>();
+    if (!backend->initOn(device, options, error)) return nullptr;
     return backend;
   } catch (const std::exception& e) {
     *error = std::string("createVulkanBackend: ") + e.what();

@@ -8,7 +8,7 @@ namespace facet::runtime::vulkan {
 static_assert(abi::kTextureSet == 1, "draws bind sets 0 and 1 with one call");
 
 bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
-                 const float clearColor[4], VkBuffer arena, const std::vector<DrawSlot>& slots,
+                 const float clearColor[4], const std::vector<DrawSlot>& slots, const AppImage* appImage,
                  std::string* error) {
   if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error)) return false;
   VkCommandBufferBeginInfo beginInfo{};
@@ -42,7 +42,7 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   VkPipeline bound = VK_NULL_HANDLE;
   for (const DrawSlot& slot : slots) {
-    if (slot.vertexCount == 0) continue;
+    if (slot.mesh.vertexCount == 0) continue;
     if (slot.pipeline != bound) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
       bound = slot.pipeline;
@@ -50,12 +50,13 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2,
                             sets, 0, nullptr);
-    vkCmdBindVertexBuffers(cmd, 0, 1, &arena, &slot.vertexOffset);
-    if (slot.indexCount > 0) {
-      vkCmdBindIndexBuffer(cmd, arena, slot.indexOffset, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, slot.indexCount, 1, 0, 0, 0);
+    const VkDeviceSize vertexOffset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &slot.mesh.buffer, &vertexOffset);
+    if (slot.mesh.indexCount > 0) {
+      vkCmdBindIndexBuffer(cmd, slot.mesh.buffer, slot.mesh.indexOffset, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, slot.mesh.indexCount, 1, 0, 0, 0);
     } else {
-      vkCmdDraw(cmd, slot.vertexCount, 1, 0, 0);
+      vkCmdDraw(cmd, slot.mesh.vertexCount, 1, 0, 0);
     }
   }
   // Post pass: one full-screen triangle reading the HDR image (its own pixel when merged).
@@ -113,8 +114,38 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            targets.hdrReadback.buffer, 1, &region);
   }
-  vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         targets.ldrReadback.buffer, 1, &region);
+  if (appImage) {
+    // Into the app's image: to TRANSFER_DST (after whatever the app did with it), copy, then to
+    // the layout the app asked for, visible to any later command.
+    VkImageMemoryBarrier toCopy{};
+    toCopy.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+    toCopy.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    toCopy.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toCopy.oldLayout = appImage->oldLayout;
+    toCopy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    toCopy.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    toCopy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    toCopy.image = appImage->image;
+    toCopy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &toCopy);
+    VkImageCopy copy{};
+    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.extent = {targets.width, targets.height, 1};
+    vkCmdCopyImage(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, appImage->image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    VkImageMemoryBarrier done = toCopy;
+    done.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    done.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    done.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    done.newLayout = appImage->newLayout;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &done);
+  } else {
+    vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           targets.ldrReadback.buffer, 1, &region);
+  }
 
   VkMemoryBarrier hostBarrier{};
   hostBarrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/vulkan_backend.h"
 #include "vk_frame.h"
 #include "vk_targets.h"
 
@@ -29,9 +30,10 @@ inline constexpr uint32_t kTimestampCount = 3;
 
 // Records into cmd (reset first): the forward pass (clear to clearColor and depth 1, then each
 // slot), the post pass (a second render pass, or the next subpass when merged), and copies of
-// LDR (and HDR when read back) into the targets' readback buffers, made visible to the host. arena holds the slots' vertices and indices.
+// LDR (and HDR when read back) into the targets' readback buffers, made visible to the host. Each slot draws its own mesh buffer.
+// With appImage, LDR is copied into the app's image (vulkan_backend.h) instead of the readback buffer.
 bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
-                 const float clearColor[4], VkBuffer arena, const std::vector<DrawSlot>& slots,
+                 const float clearColor[4], const std::vector<DrawSlot>& slots, const AppImage* appImage,
                  std::string* error);
 
 }  // namespace facet::runtime::vulkan

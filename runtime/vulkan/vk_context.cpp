@@ -99,12 +99,26 @@ int deviceRank(VkPhysicalDeviceType type) {
 
 }  // namespace
 
+static std::string unusableReason(VkPhysicalDevice candidate, const VkPhysicalDeviceProperties& props) {
+  std::string why;
+  if (props.apiVersion < VK_API_VERSION_1_1) why = "Vulkan 1.1 not supported";
+  for (const RequiredFormat& required : kRequiredFormats) {
+    VkFormatProperties formatProps{};
+    vkGetPhysicalDeviceFormatProperties(candidate, required.format, &formatProps);
+    if ((formatProps.optimalTilingFeatures & required.features) != required.features) {
+      why = "format " + std::to_string(static_cast<int>(required.format)) + " lacks features";
+    }
+  }
+  return why;
+}
+
 bool validationRequestedByEnvironment() {
   const char* value = std::getenv("FACET_VK_VALIDATION");
   return value && value[0] != '\0' && std::strcmp(value, "0") != 0;
 }
 
 Context::~Context() {
+  if (!owned_) return;  // the app's device and instance: the app destroys them
   if (device) {
     vkDeviceWaitIdle(device);
     vkDestroyDevice(device, nullptr);
@@ -119,6 +133,35 @@ Context::~Context() {
 
 bool Context::init(bool validation, std::string* error) {
   return createInstance(validation, error) && pickPhysicalDevice(error) && createDevice(error);
+}
+
+bool Context::adopt(const AppDevice& app, std::string* error) {
+  owned_ = false;
+  if (!app.instance || !app.physicalDevice || !app.device || !app.queue) {
+    *error = "the app's Vulkan device is incomplete: instance, physical device, device and queue are all required";
+    return false;
+  }
+  instance = app.instance;
+  physicalDevice = app.physicalDevice;
+  device = app.device;
+  queue = app.queue;
+  queueFamily = app.queueFamily;
+  vkGetPhysicalDeviceProperties(physicalDevice, &properties);
+  if (std::string why = unusableReason(physicalDevice, properties); !why.empty()) {
+    *error = std::string("the app's Vulkan device ") + properties.deviceName + " cannot run Facet: " + why;
+    return false;
+  }
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, families.data());
+  if (queueFamily >= familyCount || !(families[queueFamily].queueFlags & VK_QUEUE_GRAPHICS_BIT)) {
+    *error = "the app's queue family " + std::to_string(queueFamily) + " is not a graphics queue family";
+    return false;
+  }
+  timestampValidBits = families[queueFamily].timestampValidBits;
+  vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memoryProperties);
+  return true;
 }
 
 bool Context::createInstance(bool validation, std::string* error) {
@@ -225,15 +268,7 @@ bool Context::pickPhysicalDevice(std::string* error) {
   for (VkPhysicalDevice candidate : devices) {
     VkPhysicalDeviceProperties props{};
     vkGetPhysicalDeviceProperties(candidate, &props);
-    std::string why;
-    if (props.apiVersion < VK_API_VERSION_1_1) why = "Vulkan 1.1 not supported";
-    for (const RequiredFormat& required : kRequiredFormats) {
-      VkFormatProperties formatProps{};
-      vkGetPhysicalDeviceFormatProperties(candidate, required.format, &formatProps);
-      if ((formatProps.optimalTilingFeatures & required.features) != required.features) {
-        why = "format " + std::to_string(static_cast<int>(required.format)) + " lacks features";
-      }
-    }
+    std::string why = unusableReason(candidate, props);
     uint32_t familyCount = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(candidate, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);

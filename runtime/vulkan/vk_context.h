@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "facet/vulkan_backend.h"
+
 namespace facet::runtime::vulkan {
 
 // What the debug messenger has recorded. Only errors are part of the backend's API; warnings
@@ -28,6 +30,10 @@ class Context {
   // Creates everything. On failure returns false with *error set; whatever was created is
   // destroyed by the destructor.
   bool init(bool validation, std::string* error);
+  // Uses the app's instance, device and queue instead (vulkan_backend.h), checking that the
+  // device can run Facet; destroys none of them. Validation is the app's instance's business:
+  // its layers report to the app's messenger, and `messages` stays empty.
+  bool adopt(const AppDevice& app, std::string* error);
 
   // Index of a memory type allowed by typeBits that has all of `required`, or UINT32_MAX.
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const;
@@ -49,6 +55,7 @@ class Context {
   bool createDevice(std::string* error);
 
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  bool owned_ = true;  // false: the app's device and instance (adopt)
 };
 
 // True when FACET_VK_VALIDATION is set to something other than "" or "0".

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cstring>
+#include <unordered_set>
 
 #include "facet/shader_abi.h"
 #include "vk_convert.h"
 #include "vk_textures.h"
+#include "vk_uniform_blocks.h"
 
 namespace facet::runtime::vulkan {
 namespace {
-
-constexpr VkDeviceSize kEmptyMaterialSize = 16;
 
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
   return (value + alignment - 1) / alignment * alignment;
@@ -25,6 +25,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
              " is outside 1.." + std::to_string(maxSize);
     return false;
   }
+  std::unordered_set<const Mesh*> checkedMeshes;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     const std::string which = "draw " + std::to_string(i) + ": ";
@@ -32,6 +33,12 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
       *error = which + "mesh or program is null";
       return false;
     }
+    if (materialBytes(draw).size() > limits.maxUniformBufferRange) {
+      *error = which + "materialParams is larger than maxUniformBufferRange";
+      return false;
+    }
+    // A mesh shared by many draws is checked once, at its first draw.
+    if (!checkedMeshes.insert(draw.mesh).second) continue;
     const size_t floats = draw.mesh->vertices.size();
     if (floats % abi::kVertexFloats != 0) {
       *error = which + "vertex data is not a whole number of " +
@@ -46,10 +53,6 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
         return false;
       }
     }
-    if (draw.materialParams.size() > limits.maxUniformBufferRange) {
-      *error = which + "materialParams is larger than maxUniformBufferRange";
-      return false;
-    }
   }
   return checkFrameTextures(frame, limits.maxImageDimension2D, error);
 }
@@ -62,19 +65,13 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     DrawSlot& slot = (*slots)[i];
-    slot.vertexCount = static_cast<uint32_t>(draw.mesh->vertices.size() / abi::kVertexFloats);
-    slot.indexCount = static_cast<uint32_t>(draw.mesh->indices.size());
-    slot.materialSize = draw.materialParams.empty()
-                            ? kEmptyMaterialSize
-                            : alignUp(draw.materialParams.size(), 16);  // whole std140 vec4s
+    slot.materialSize = materialRange(materialBytes(draw).size());
     slot.objectOffset = size;
     size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
+    // A persistent block (material instance) lives in its own buffer, not the arena.
+    if (draw.materialBlock) continue;
     slot.materialOffset = size;
     size = alignUp(size + slot.materialSize, alignment);
-    slot.vertexOffset = size;
-    size = alignUp(size + draw.mesh->vertices.size() * sizeof(float), alignment);
-    slot.indexOffset = size;
-    size = alignUp(size + draw.mesh->indices.size() * sizeof(uint32_t), alignment);
   }
   return size;
 }
@@ -88,18 +85,11 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void
     const DrawItem& draw = frame.draws[i];
     const DrawSlot& slot = slots[i];
     std::memcpy(base + slot.objectOffset, &draw.object, sizeof(draw.object));
+    if (draw.materialBlock) continue;
     std::memset(base + slot.materialOffset, 0, slot.materialSize);
     if (!draw.materialParams.empty()) {
       std::memcpy(base + slot.materialOffset, draw.materialParams.data(),
                   draw.materialParams.size());
-    }
-    if (!draw.mesh->vertices.empty()) {
-      std::memcpy(base + slot.vertexOffset, draw.mesh->vertices.data(),
-                  draw.mesh->vertices.size() * sizeof(float));
-    }
-    if (!draw.mesh->indices.empty()) {
-      std::memcpy(base + slot.indexOffset, draw.mesh->indices.data(),
-                  draw.mesh->indices.size() * sizeof(uint32_t));
     }
   }
 }

@@ -1,8 +1,11 @@
-// One frame's data on the way to the device: checking a FrameDesc, laying its uniforms,
-// vertices and indices out in one host-visible "arena" buffer, and copying them in.
+// One frame's data on the way to the device: checking a FrameDesc, laying its uniforms out in
+// one host-visible "arena" buffer, and copying them in. Meshes are not in the arena: they live
+// in MeshCache's buffers (vk_meshes.h), uploaded once and shared by every draw of them.
 //
-// Arena layout: FrameUniforms at offset 0, then for each draw its ObjectUniforms,
-// MaterialParams, vertices and indices, each at a multiple of the uniform offset alignment.
+// Arena layout: FrameUniforms at offset 0, then for each draw its ObjectUniforms and
+// MaterialParams (unless the draw's parameters are a persistent UniformBlock, kept in
+// UniformBlockCache's buffers, vk_uniform_blocks.h), each at a multiple of the uniform offset
+// alignment.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "vk_meshes.h"
 
 namespace facet::runtime::vulkan {
 
@@ -21,12 +25,10 @@ struct DrawSlot {
   VkDescriptorSet set = VK_NULL_HANDLE;         // set 0: the uniform blocks
   VkDescriptorSet textureSet = VK_NULL_HANDLE;  // set 1 (abi::kTextureSet): the 16 samplers
   VkDeviceSize objectOffset = 0;
-  VkDeviceSize materialOffset = 0;
+  VkBuffer materialBuffer = VK_NULL_HANDLE;  // a persistent block's buffer; null: the arena
+  VkDeviceSize materialOffset = 0;           // in the arena; 0 in a persistent block's buffer
   VkDeviceSize materialSize = 0;  // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
-  VkDeviceSize vertexOffset = 0;
-  VkDeviceSize indexOffset = 0;
-  uint32_t vertexCount = 0;
-  uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
+  MeshLocation mesh;  // the draw's mesh buffer (MeshCache), filled by the backend
 };
 
 // Rejects what the device cannot draw or would read out of bounds: an empty or oversized frame,
@@ -34,7 +36,8 @@ struct DrawSlot {
 // and malformed texture bindings (checkFrameTextures in vk_textures.h).
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error);
 
-// Fills the offsets and counts of slots (one per draw; pipeline and sets are left alone) and
+// Fills the uniform offsets of slots (one per draw; pipeline, sets, mesh and materialBuffer are
+// left alone; draws with a persistent materialBlock get no material space in the arena) and
 // returns the arena size the frame needs.
 VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
                          std::vector<DrawSlot>* slots);

@@ -2,6 +2,7 @@
 //
 // A backend receives everything already resolved: meshes as interleaved vertices, uniform block
 // bytes in std140, and shader code for its API. It knows nothing about packages or scenes.
+// The app's-own-device entry points of the Vulkan backend are in vulkan_backend.h.
 #pragma once
 
 #include <cstdint>
@@ -67,17 +68,36 @@ enum class Blending {
   Additive,     // src + dst (light-emitting effects)
 };
 
+// Uniform bytes that persist across frames: a material instance's parameters
+// (runtime/material_instance.h). A backend keeps one GPU buffer per block and uploads it again
+// only when `generation` changes. Generations come from nextUniformGeneration(), unique in the
+// process, so a new block at a freed block's address never matches a stale GPU copy.
+struct UniformBlock {
+  std::vector<uint8_t> bytes;  // std140
+  uint64_t generation = 0;
+};
+uint64_t nextUniformGeneration();
+
 struct DrawItem {
-  const Mesh* mesh = nullptr;
+  const Mesh* mesh = nullptr;  // shared by draws: one GPU copy per distinct Mesh, kept across frames
+                               // and re-uploaded when its bytes change (ResourceCounts)
   const ShaderProgram* program = nullptr;
   abi::ObjectUniforms object{};
-  std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty)
+  std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty),
+                                        // copied into this frame's uniforms
+  const UniformBlock* materialBlock = nullptr;  // when set, "MaterialParams" instead of
+                                                // materialParams, from its persistent GPU buffer
   std::vector<TextureBinding> textures;  // the material's textures (bindings kMaterialTextureBase + i)
   Blending blending = Blending::Opaque;
   // Cull triangles whose vertices run clockwise on screen in GL conventions (the back faces of
   // a mesh wound counter-clockwise seen from outside). Off: two-sided (every test mesh's default).
   bool cullBackFaces = false;
 };
+
+// The bytes a draw's "MaterialParams" block receives.
+inline const std::vector<uint8_t>& materialBytes(const DrawItem& draw) {
+  return draw.materialBlock ? draw.materialBlock->bytes : draw.materialParams;
+}
 
 struct FrameDesc {
   uint32_t width = 0;
@@ -103,6 +123,15 @@ struct FrameResult {
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
+// GPU resources a backend keeps across frames: what tests and budgets query instead of timing.
+struct ResourceCounts {
+  size_t meshBuffers = 0;    // meshes resident on the GPU: one per distinct Mesh drawn recently,
+                             // however many draws share it
+  uint64_t meshUploads = 0;  // mesh uploads since creation (a new mesh, or one whose bytes changed)
+  size_t materialBuffers = 0;    // persistent UniformBlocks resident on the GPU
+  uint64_t materialUploads = 0;  // UniformBlock uploads since creation (new, or generation changed)
+};
+
 class RenderBackend {
  public:
   virtual ~RenderBackend() = default;
@@ -117,6 +146,7 @@ class RenderBackend {
   // Messages of severity error reported by the API's validation (Vulkan validation layers,
   // GL debug output). Tests require this to be empty.
   virtual const std::vector<std::string>& validationErrors() const = 0;
+  virtual ResourceCounts resources() const = 0;
 };
 
 struct VulkanOptions {
@@ -135,6 +165,12 @@ enum class GlContextKind {
   Auto,     // EGL GLES when available, else OSMesa
   EglGles,  // a real OpenGL ES 3.2 context, EGL surfaceless (Mesa)
   OsMesa,   // an OpenGL core context on OSMesa running the "#version 300 es" shaders
+  // The app's OpenGL ES 3.x context, current on the calling thread (EGL) when the backend is
+  // created, and again whenever it renders or is destroyed: the backend never switches contexts,
+  // never destroys it, and leaves its debug callback alone (validationErrors() stays empty).
+  // GL entry points still come from libOSMesa, which dispatches to Mesa's current context: Mesa
+  // drivers only, for now.
+  AppCurrent,
 };
 
 struct GlOptions {

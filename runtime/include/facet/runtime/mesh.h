@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+
 #include "facet/render_backend.h"
 
 namespace facet::runtime {
@@ -17,6 +20,19 @@ struct Vertex {
 static_assert(sizeof(Vertex) == abi::kVertexStride, "Vertex mirrors shader_abi.h's layout");
 
 void appendVertex(Mesh& mesh, const Vertex& v);
+
+// What a backend's uploaded copy of a mesh depends on: sizes and a hash of every vertex and
+// index (facet/content_hash.h). Backends key their mesh buffers by the Mesh's address and upload
+// again when this changes, so a mesh edited in place, or a new one at a freed address, is not
+// drawn stale. Computed once per distinct mesh per frame, not once per object.
+struct MeshIdentity {
+  size_t vertexFloats = 0;
+  size_t indexCount = 0;
+  uint64_t hash = 0;
+
+  static MeshIdentity of(const Mesh& mesh);
+  bool operator==(const MeshIdentity&) const = default;
+};
 
 // A unit sphere centred at the origin, latitude/longitude tessellated, outward normals, uv0 =
 // (longitude, latitude) in [0, 1], uv1 = uv0, analytic tangents along +u (longitude). With

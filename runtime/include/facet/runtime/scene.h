@@ -51,7 +51,7 @@ struct PunctualLight {
 inline constexpr size_t kMaxSceneLights = 4;
 
 struct SceneObject {
-  std::string mesh = "sphere";
+  std::string mesh = "sphere";     // or a .gltf/.glb path (resolved, inside the scene's folder)
   std::string material;            // package name: <package dir>/<material>.matpkg
   glm::dvec3 position{0, 0, 0};
   double radius = 1;
@@ -85,10 +85,11 @@ struct Scene {
   PostSettings post;               // the post pass's tone curve and dithering (docs/scene-format.md)
 };
 
-// Which files a scene may name (texture and environment images). By default only those under the
-// scene file's folder, so that a scene from elsewhere cannot make the app read (and, through a
-// rendered image, reveal) other files of the machine: `../`, absolute paths and symbolic links that
-// lead out of the folder are errors. An app that trusts its scenes widens it (facet-view --asset-root).
+// Which files a scene may name (texture and environment images, glTF meshes). By default only
+// those under the scene file's folder, so that a scene from elsewhere cannot make the app read
+// (and, through a rendered image, reveal) other files of the machine: `../`, absolute paths and
+// symbolic links that lead out of the folder are errors. An app that trusts its scenes widens it
+// (facet-view --asset-root).
 struct SceneReadOptions {
   std::string assetRoot;  // "": the scene file's folder
 };

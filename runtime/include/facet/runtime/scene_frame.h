@@ -10,6 +10,7 @@
 #include "facet/render_backend.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/material.h"
+#include "facet/runtime/material_instance.h"
 #include "facet/runtime/scene.h"
 
 namespace facet::runtime {
@@ -29,11 +30,10 @@ class SceneFrame {
  private:
   SceneFrame() = default;
   const Texture* texture(const LoadedMaterial::SampledTexture& t, std::string* error);
-  std::vector<std::unique_ptr<LoadedMaterial>> materials_;
-  std::vector<std::unique_ptr<ShaderProgram>> programs_;  // parallel to materials_
-  std::vector<std::vector<TextureBinding>> generated_;    // parallel to materials_: package textures
+  std::vector<std::shared_ptr<Material>> materials_;  // one per package the scene names
   ColorEncoding colors_ = ColorEncoding::Linear;          // what the scene's tier expects
   Mesh sphere_;
+  std::map<std::string, std::unique_ptr<Mesh>> meshes_;  // glTF meshes by resolved path
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   EnvironmentLighting environment_;
   std::unique_ptr<Texture> environmentTexture_;

@@ -1,0 +1,79 @@
+#include "vk_meshes.h"
+
+#include <cstring>
+
+#include "vk_context.h"
+
+namespace facet::runtime::vulkan {
+
+void MeshCache::destroy() {
+  if (!ctx_) return;
+  for (auto& [mesh, entry] : meshes_) destroyHostBuffer(ctx_->device, &entry.buffer);
+  meshes_.clear();
+}
+
+bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
+  const VkDeviceSize vertexBytes = mesh.vertices.size() * sizeof(float);
+  const VkDeviceSize indexBytes = mesh.indices.size() * sizeof(uint32_t);
+  entry->location.vertexCount = static_cast<uint32_t>(mesh.vertices.size() / abi::kVertexFloats);
+  entry->location.indexCount = static_cast<uint32_t>(mesh.indices.size());
+  // A whole number of 64-byte vertices keeps the indices at the 4-byte offset
+  // vkCmdBindIndexBuffer requires for UINT32.
+  entry->location.indexOffset = vertexBytes;
+  if (vertexBytes == 0) return true;
+  if (!createHostBuffer(*ctx_, vertexBytes + indexBytes,
+                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, &entry->buffer,
+                        error)) {
+    return false;
+  }
+  // Host-coherent memory, and the frame's vkQueueSubmit makes host writes visible to the device.
+  auto* mapped = static_cast<uint8_t*>(entry->buffer.mapped);
+  std::memcpy(mapped, mesh.vertices.data(), vertexBytes);
+  if (indexBytes) std::memcpy(mapped + vertexBytes, mesh.indices.data(), indexBytes);
+  entry->location.buffer = entry->buffer.buffer;
+  ++uploads_;
+  return true;
+}
+
+bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
+  ++frameNumber_;
+  for (const DrawItem& draw : frame.draws) {
+    auto found = meshes_.find(draw.mesh);
+    // Already seen this frame: its identity was checked by the first draw of it.
+    if (found != meshes_.end() && found->second.lastUsedFrame == frameNumber_) continue;
+    MeshIdentity key = MeshIdentity::of(*draw.mesh);
+    if (found != meshes_.end()) {
+      if (found->second.key == key) {
+        found->second.lastUsedFrame = frameNumber_;
+        continue;
+      }
+      destroyHostBuffer(ctx_->device, &found->second.buffer);  // edited in place, or a new mesh
+      meshes_.erase(found);
+    }
+    Entry entry;
+    entry.key = key;
+    entry.lastUsedFrame = frameNumber_;
+    if (!upload(*draw.mesh, &entry, error)) {
+      destroyHostBuffer(ctx_->device, &entry.buffer);
+      return false;
+    }
+    meshes_.emplace(draw.mesh, entry);
+  }
+  // Eviction: a mesh gone from the scene must not hold memory forever.
+  for (auto it = meshes_.begin(); it != meshes_.end();) {
+    if (frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames) {
+      destroyHostBuffer(ctx_->device, &it->second.buffer);
+      it = meshes_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  return true;
+}
+
+MeshLocation MeshCache::locate(const Mesh* mesh) const {
+  auto found = meshes_.find(mesh);
+  return found == meshes_.end() ? MeshLocation{} : found->second.location;
+}
+
+}  // namespace facet::runtime::vulkan
