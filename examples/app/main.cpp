@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <memory>
@@ -277,6 +279,13 @@ std::array<float, 16> modelAt(float x) {
   return m;
 }
 
+bool readWholeFile(const char* path, std::vector<uint8_t>* bytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  bytes->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return !in.bad();
+}
+
 int fail(const std::string& message) {
   std::fprintf(stderr, "facet-app-example: error: %s\n", message.c_str());
   return 1;
@@ -300,12 +309,17 @@ int main(int argc, char** argv) {
                                         options, &error);
     if (!renderer) return fail(error);
 
-    // One material, made once; two instances with their own parameters.
-    // Until the loader API (packages from memory) lands, the package is opened by path.
-    auto loaded = LoadedMaterial::load(argv[1], &error);
+    // One material, made once, from package bytes the app already holds (an asset system, an
+    // APK): they must outlive the material; only the variant drawn is decompressed.
+    std::vector<uint8_t> packageBytes;
+    if (!readWholeFile(argv[1], &packageBytes)) return fail(std::string("cannot read ") + argv[1]);
+    auto loaded = LoadedMaterial::loadFromMemory(packageBytes, argv[1], &error);
     if (!loaded) return fail(error);
     auto material = Material::create(std::move(*loaded), {"high", true, 0}, &error);
     if (!material) return fail(error);
+    std::printf("package: %zu bytes, %llu decompressed to draw variant %s\n", packageBytes.size(),
+                static_cast<unsigned long long>(material->loaded().reader().bytesDecompressed()),
+                material->variantKey().c_str());
     auto glossy = material->createInstance();
     auto rough = material->createInstance();
     const auto roughness = material->parameter("roughness");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "facet/ir/precision.h"
+#include "facet/shader_abi.h"
 #include "facet/ir/ranges.h"
 
 namespace facet::ir {
@@ -99,7 +100,7 @@ class Emitter {
         // Samplers cannot live in a uniform block: each texture is its own uniform, named in the
         // interface's `facet_` namespace (shader_abi.h kMaterialSamplerPrefix) so that no
         // parameter name can collide with a chunk's function.
-        *glsl = (v.type == Type::Texture2D ? "facet_material_" : "params.") + v.name;
+        *glsl = (v.type == Type::Texture2D ? std::string(abi::kMaterialSamplerPrefix) : "params.") + v.name;
         return true;
       case Op::Attribute:
         out_.attributes.insert(v.name);

@@ -121,9 +121,9 @@ bool GlBackend::initialise(const GlOptions& options, std::string* error) {
   }
   post_ = std::move(*post);
   if (!merged) {
-    const GLint hdrLocation = glGetUniformLocation(post_.program.id(), "hdrColor");
+    const GLint hdrLocation = glGetUniformLocation(post_.program.id(), std::string(abi::kPostHdrName).c_str());
     if (hdrLocation < 0) {
-      if (error) *error = "GL backend: post-pass fragment shader has no sampler uniform 'hdrColor'";
+      if (error) *error = "GL backend: post-pass fragment shader has no sampler uniform '" + std::string(abi::kPostHdrName) + "'";
       return false;
     }
     // Sampler uniforms are program state, so the unit is set once here.
