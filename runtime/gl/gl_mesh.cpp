@@ -83,9 +83,7 @@ const MeshBuffers* MeshCache::resident(const Mesh& mesh, std::string* error) {
 }
 
 void MeshCache::endFrame() {
-  for (auto it = meshes_.begin(); it != meshes_.end();) {
-    it = frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames ? meshes_.erase(it) : std::next(it);
-  }
+  evictUnusedEntries(meshes_, frameNumber_, [](auto&) {});  // GL objects delete themselves
 }
 
 }  // namespace facet::runtime::gl

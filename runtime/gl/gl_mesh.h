@@ -8,6 +8,7 @@
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "gl_objects.h"
+#include "facet/frame_eviction.h"
 
 namespace facet::runtime::gl {
 
@@ -43,7 +44,6 @@ class MeshCache {
     MeshBuffers buffers;
     uint64_t lastUsedFrame = 0;
   };
-  static constexpr uint64_t kEvictAfterFrames = 16;
 
   std::unordered_map<const Mesh*, Entry> meshes_;
   uint64_t frameNumber_ = 0;

@@ -102,9 +102,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
     if (!refresh(draw.textures)) return false;
   }
   // Eviction: a texture gone from the scene must not hold memory forever.
-  for (auto it = textures_.begin(); it != textures_.end();) {
-    it = frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames ? textures_.erase(it) : std::next(it);
-  }
+  evictUnusedEntries(textures_, frameNumber_, [](auto&) {});  // GL objects delete themselves
   return true;
 }
 

@@ -13,6 +13,7 @@
 #include "facet/render_backend.h"
 #include "facet/texture_checks.h"
 #include "gl_objects.h"
+#include "facet/frame_eviction.h"
 
 namespace facet::runtime::gl {
 
@@ -56,7 +57,6 @@ class TextureCache {
     Texture texture;
     uint64_t lastUsedFrame = 0;
   };
-  static constexpr uint64_t kEvictAfterFrames = 16;
 
   static bool upload(const facet::runtime::Texture& source, Texture* out, std::string* error);
 

@@ -16,9 +16,7 @@ GLuint UniformBlockCache::resident(const facet::runtime::UniformBlock& block) {
 }
 
 void UniformBlockCache::endFrame() {
-  for (auto it = blocks_.begin(); it != blocks_.end();) {
-    it = frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames ? blocks_.erase(it) : std::next(it);
-  }
+  evictUnusedEntries(blocks_, frameNumber_, [](auto&) {});  // GL objects delete themselves
 }
 
 }  // namespace facet::runtime::gl

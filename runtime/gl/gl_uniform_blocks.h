@@ -7,6 +7,7 @@
 
 #include "facet/render_backend.h"
 #include "gl_objects.h"
+#include "facet/frame_eviction.h"
 
 namespace facet::runtime::gl {
 
@@ -28,7 +29,6 @@ class UniformBlockCache {
     Buffer buffer;
     uint64_t lastUsedFrame = 0;
   };
-  static constexpr uint64_t kEvictAfterFrames = 16;
 
   std::unordered_map<const facet::runtime::UniformBlock*, Entry> blocks_;
   uint64_t frameNumber_ = 0;

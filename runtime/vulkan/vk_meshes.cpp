@@ -60,14 +60,7 @@ bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
     meshes_.emplace(draw.mesh, entry);
   }
   // Eviction: a mesh gone from the scene must not hold memory forever.
-  for (auto it = meshes_.begin(); it != meshes_.end();) {
-    if (frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames) {
-      destroyHostBuffer(ctx_->device, &it->second.buffer);
-      it = meshes_.erase(it);
-    } else {
-      ++it;
-    }
-  }
+  evictUnusedEntries(meshes_, frameNumber_, [&](auto& entry) { destroyHostBuffer(ctx_->device, &entry.buffer); });
   return true;
 }
 

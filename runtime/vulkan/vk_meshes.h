@@ -11,6 +11,7 @@
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "vk_resources.h"
+#include "facet/frame_eviction.h"
 
 namespace facet::runtime::vulkan {
 
@@ -59,7 +60,6 @@ class MeshCache {
     MeshLocation location;
     uint64_t lastUsedFrame = 0;
   };
-  static constexpr uint64_t kEvictAfterFrames = 16;
 
   bool upload(const Mesh& mesh, Entry* entry, std::string* error);
 

@@ -287,14 +287,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
   }
 
   // Eviction: a texture gone from the scene must not hold device memory forever.
-  for (auto it = textures_.begin(); it != textures_.end();) {
-    if (frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames) {
-      destroyEntry(&it->second);
-      it = textures_.erase(it);
-    } else {
-      ++it;
-    }
-  }
+  evictUnusedEntries(textures_, frameNumber_, [&](auto& entry) { destroyEntry(&entry); });
   return true;
 }
 

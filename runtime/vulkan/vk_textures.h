@@ -15,6 +15,7 @@
 #include "facet/render_backend.h"
 #include "facet/texture_checks.h"
 #include "vk_resources.h"
+#include "facet/frame_eviction.h"
 
 namespace facet::runtime::vulkan {
 
@@ -73,7 +74,6 @@ class TextureCache {
     VkSampler sampler = VK_NULL_HANDLE;
     uint64_t lastUsedFrame = 0;
   };
-  static constexpr uint64_t kEvictAfterFrames = 16;
 
   bool createEntry(const Texture& texture, const TextureIdentity& key, Entry* out, std::string* error);
   // Copies the textures' levels into one staging buffer and into their images, leaving every

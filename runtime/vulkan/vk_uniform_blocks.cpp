@@ -38,14 +38,7 @@ bool UniformBlockCache::prepare(const FrameDesc& frame, std::string* error) {
     entry.generation = block->generation;
     ++uploads_;
   }
-  for (auto it = blocks_.begin(); it != blocks_.end();) {
-    if (frameNumber_ - it->second.lastUsedFrame >= kEvictAfterFrames) {
-      destroyHostBuffer(ctx_->device, &it->second.buffer);
-      it = blocks_.erase(it);
-    } else {
-      ++it;
-    }
-  }
+  evictUnusedEntries(blocks_, frameNumber_, [&](auto& entry) { destroyHostBuffer(ctx_->device, &entry.buffer); });
   return true;
 }
 

@@ -10,6 +10,7 @@
 
 #include "facet/render_backend.h"
 #include "vk_resources.h"
+#include "facet/frame_eviction.h"
 
 namespace facet::runtime::vulkan {
 
@@ -45,7 +46,6 @@ class UniformBlockCache {
     HostBuffer buffer;
     uint64_t lastUsedFrame = 0;
   };
-  static constexpr uint64_t kEvictAfterFrames = 16;
 
   const Context* ctx_ = nullptr;
   std::unordered_map<const UniformBlock*, Entry> blocks_;
