@@ -403,3 +403,19 @@ TEST(HostileScenes, SceneImageMemoryIsBoundedBeforeDecoding) {
   EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
   EXPECT_EQ(error.rfind("object 0: " + dir + "/big0.png: cannot decode image", 0), 0u) << error;
 }
+
+// Every input fuzz_image ever found (stb_image crashes, allocations, a spin in its Radiance
+// run-length loop) ends in an error naming the image, as a texture and as an environment.
+TEST(HostileScenes, ImageFuzzFindingsEndInErrors) {
+  size_t inputs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(facet::test::sourceDir() + "/tests/fuzz/image_regressions")) {
+    const std::string bytes = facet::test::readText(entry.path().string());
+    std::string error;
+    EXPECT_FALSE(facet::runtime::decodeImageTexture(bytesOf(bytes), true, "finding", &error)) << entry.path();
+    EXPECT_EQ(error.rfind("finding: cannot ", 0), 0u) << error;
+    EXPECT_FALSE(facet::runtime::decodeEquirectImage(bytesOf(bytes), "finding", &error)) << entry.path();
+    EXPECT_EQ(error.rfind("finding: ", 0), 0u) << error;
+    ++inputs;
+  }
+  EXPECT_GE(inputs, 4u);
+}

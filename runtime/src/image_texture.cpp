@@ -53,9 +53,13 @@ std::vector<uint8_t> halve(const std::vector<uint8_t>& src, uint32_t w, uint32_t
 // stb_image grows its PNG data buffer to whatever length a chunk header declares before it
 // checks the bytes are there: a 200-byte file declaring a 2 GB IDAT made it allocate 2 GB
 // (fuzz_image). Every chunk must fit in the file: then the buffer is bounded by the file size.
-std::string pngChunkError(std::span<const uint8_t> bytes) {
+bool isPng(std::span<const uint8_t> bytes) {
   static const uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return "";  // not a PNG
+  return bytes.size() >= 8 && std::equal(kSignature, kSignature + 8, bytes.begin());
+}
+
+std::string pngChunkError(std::span<const uint8_t> bytes) {
+  if (!isPng(bytes)) return "";
   size_t at = 8;
   while (at + 8 <= bytes.size()) {
     const uint64_t length = uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 | uint64_t(bytes[at + 2]) << 8 | bytes[at + 3];
@@ -73,26 +77,32 @@ std::string pngChunkError(std::span<const uint8_t> bytes) {
 // zeros (its reader returns 0 at the end of the input): the environment comes out partly black,
 // with no error. This walks the pixel block as stb_image does (Ward's RGBE: flat 4-byte pixels,
 // or per-scanline run-length coding when 8 <= width < 32768) and says where it ends early.
-// Headers it cannot parse are left to stb_image, which reports them itself.
 std::string radianceHdrError(std::span<const uint8_t> bytes) {
   size_t at = 0;
-  auto line = [&] {  // stb_image's token: up to a newline, at most 1023 characters kept
+  bool oddLine = false;  // a NUL byte, or longer than stb_image's 1023-character token
+  auto line = [&] {
     std::string text;
     while (at < bytes.size() && bytes[at] != '\n') {
-      if (text.size() < 1023) text += char(bytes[at]);
-      ++at;
+      oddLine = oddLine || bytes[at] == 0 || text.size() == 1023;
+      text += char(bytes[at++]);
     }
     if (at < bytes.size()) ++at;
     return text;
   };
   const std::string id = line();
   if (id != "#?RADIANCE" && id != "#?RGBE") return "";  // not a Radiance file
+  // stb_image will decode this file, so its header must be one this walk reads exactly as
+  // stb_image does (it compares lines as C strings, cut at 1023 characters): a header it read
+  // otherwise could take it into its run-length loop past the data, where it spins forever
+  // (found by fuzz_image). Anything else is refused, not left to stb_image.
   bool rgbe = false;
   for (std::string text = line(); !text.empty(); text = line()) rgbe = rgbe || text == "FORMAT=32-bit_rle_rgbe";
   const std::string resolution = line();
   long height = 0, width = 0;
-  if (!rgbe || std::sscanf(resolution.c_str(), "-Y %ld +X %ld", &height, &width) != 2 || width <= 0 || height <= 0)
-    return "";
+  if (oddLine) return "Radiance header: a line holds a NUL byte or is longer than 1023 characters";
+  if (!rgbe) return "Radiance header: no FORMAT=32-bit_rle_rgbe line (the only pixel format read)";
+  if (std::sscanf(resolution.c_str(), "-Y %ld +X %ld", &height, &width) != 2 || width <= 0 || height <= 0)
+    return "Radiance header: the resolution line is not \"-Y <height> +X <width>\" with sizes above 0";
   const uint64_t pixels = uint64_t(width) * uint64_t(height);
   auto cut = [&](const std::string& where) {
     return "Radiance pixel data ends at byte " + std::to_string(bytes.size()) + ", " + where + " of a " +
@@ -179,6 +189,11 @@ bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::st
 
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error) {
+  // stb_image here also reads Radiance files (for environments); a texture is PNG only.
+  if (!isPng(bytes)) {
+    *error = name + ": cannot read image: textures are PNG files (no PNG signature)";
+    return std::nullopt;
+  }
   int w = 0, h = 0, channels = 0;
   if (!probeImage(bytes, name, &w, &h, error)) return std::nullopt;
   // stb_image stores the first row (the top of the picture) first; the texture convention puts
