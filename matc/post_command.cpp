@@ -52,7 +52,7 @@ int postCommand(const PostArgs& args) {
       return 1;
     }
     for (const compiler::PostShaders& shaders : variants) {
-      const std::string stem = (fs::path(args.emitSource) / ("post." + shaders.key)).string();
+      const std::string stem = (fs::path(args.emitSource) / ("post." + compiler::postVariantKey(shaders.effects))).string();
       if (!write(stem + ".vert.es300.glsl", shaders.vertex.glslEs) || !write(stem + ".vert.metal", shaders.vertex.msl) ||
           !write(stem + ".frag.es300.glsl", shaders.sampledFragment.glslEs) ||
           !write(stem + ".frag.metal", shaders.sampledFragment.msl) ||
@@ -64,7 +64,7 @@ int postCommand(const PostArgs& args) {
   }
   if (!write(args.cpp, compiler::postShadersCpp(variants))) return 1;
   for (const compiler::PostShaders& shaders : variants)
-    std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", shaders.key.c_str(), shaders.vertex.spirv.size(),
+    std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
                 shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;

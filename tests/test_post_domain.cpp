@@ -21,7 +21,7 @@ bool contains(const std::string& text, const std::string& what) { return text.fi
 
 TEST(PostDomain, EveryFormIsBuiltForEveryTarget) {
   const PostShaders s = build({});
-  EXPECT_EQ(s.key, "aces");
+  EXPECT_EQ(postVariantKey(s.effects), "aces");
   for (const PostStage* stage : {&s.vertex, &s.sampledFragment, &s.fetchFragment}) {
     std::string log;
     EXPECT_TRUE(validateSpirv(stage->spirv, &log)) << log;
@@ -50,7 +50,7 @@ TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
   PostEffects noTonemap;
   noTonemap.toneCurve = ToneCurve::None;
   const PostShaders off = build(noTonemap);
-  EXPECT_NE(on.key, off.key);
+  EXPECT_NE(postVariantKey(on.effects), postVariantKey(off.effects));
   // The chunk is not assembled in (its call sits in a preprocessor branch that is off), and
   // nothing of it reaches the compiled targets.
   const std::string definition = "vec3 tonemap_aces_fitted(vec3";
@@ -71,8 +71,8 @@ TEST(PostDomain, KeysNameTheEffectsAndEachEffectOnlyItsOwnCode) {
   PostEffects dithered = neutral;
   dithered.dither = true;
   const PostShaders n = build(neutral), d = build(dithered);
-  EXPECT_EQ(n.key, "neutral");
-  EXPECT_EQ(d.key, "neutral+dither");
+  EXPECT_EQ(postVariantKey(n.effects), "neutral");
+  EXPECT_EQ(postVariantKey(d.effects), "neutral+dither");
   EXPECT_EQ(postVariantKey({}), "aces");
   for (const PostStage* stage : {&n.sampledFragment, &n.fetchFragment, &d.sampledFragment, &d.fetchFragment}) {
     EXPECT_TRUE(contains(stage->glslEs, "vec3 tonemap_khronos_neutral(vec3"));

@@ -167,7 +167,6 @@ std::string postVariantKey(const PostEffects& effects) {
 
 bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error) {
   PostShaders shaders;
-  shaders.key = postVariantKey(effects);
   shaders.effects = effects;
   if (!buildForm(effects, PostRead::Sampled, &shaders.sampledFragment, &shaders.vertex, error) ||
       !buildForm(effects, PostRead::SubpassInput, &shaders.fetchFragment, nullptr, error)) {
@@ -192,7 +191,7 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants) {
   for (size_t i = 0; i < variants.size(); ++i) {
     const PostShaders& shaders = variants[i];
     const std::string n = std::to_string(i);
-    cpp += "// Post variant " + n + ": " + shaders.key + "\n";
+    cpp += "// Post variant " + n + ": " + postVariantKey(shaders.effects) + "\n";
     appendWords(&cpp, ("kVertexSpirv" + n).c_str(), shaders.vertex.spirv);
     appendWords(&cpp, ("kSampledSpirv" + n).c_str(), shaders.sampledFragment.spirv);
     appendWords(&cpp, ("kFetchSpirv" + n).c_str(), shaders.fetchFragment.spirv);

@@ -62,9 +62,6 @@ std::string variantCacheKey(const std::string& compilerVersion, const StageSourc
     input += *field;
   }
   input += fp16Emulation ? '1' : '0';
-  // What the backends make of the same sources, for entries written by earlier builds of the
-  // same version: 2 = MSL resource slots pinned from shader_abi.h.
-  input += "backends 2";
   XXH128_hash_t h = XXH3_128bits(input.data(), input.size());
   char hex[33];
   std::snprintf(hex, sizeof hex, "%016llx%016llx", static_cast<unsigned long long>(h.high64),

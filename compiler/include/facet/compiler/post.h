@@ -38,8 +38,7 @@ struct PostStage {
 };
 
 struct PostShaders {
-  std::string key;
-  PostEffects effects;
+  PostEffects effects;  // postVariantKey(effects) names the variant
   PostStage vertex;          // full-screen triangle, shared by both forms
   PostStage sampledFragment; // separate path
   // Merged path. glslang 12 rejects the GL_EXT_shader_framebuffer_fetch #extension, so the GLES
