@@ -53,15 +53,12 @@ def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--matc", default=os.path.join(SOURCE_ROOT, "build", "test", "matc", "matc"))
     ap.add_argument("--counts", default=os.path.join(SOURCE_ROOT, "build", "test", "tests", "spirv_op_counts"))
-    ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630")
-    ap.add_argument("--prefix", default=mesa_compile.default_prefix())
+    mesa_compile.add_gpu_arguments(ap)
     ap.add_argument("-o", "--output", required=True)
     args = ap.parse_args(argv)
 
-    gpus = [g for g in args.gpu.split(",") if g]
-    reason = mesa_compile.missing_reason(args.prefix, gpus)
-    if reason:
-        sys.stderr.write("collect: %s\n" % reason)
+    gpus = mesa_compile.gpus_to_collect(args, "collect")
+    if gpus is None:
         return mesa_compile.EXIT_NOT_BUILT
 
     materials = sorted(glob.glob(os.path.join(SOURCE_ROOT, "examples", "materials", "*.mat")))

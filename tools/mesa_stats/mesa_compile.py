@@ -66,6 +66,22 @@ def missing_reason(prefix, gpus):
     return None
 
 
+def add_gpu_arguments(parser):
+    """--gpu and --prefix, as every collecting tool takes them."""
+    parser.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630", help="comma-separated: " + ", ".join(sorted(GPUS)))
+    parser.add_argument("--prefix", default=default_prefix(), help="Mesa install prefix (default: %(default)s)")
+
+
+def gpus_to_collect(args, tool):
+    """The GPUs of --gpu, or None after saying on stderr why their compilers cannot run."""
+    gpus = [g for g in args.gpu.split(",") if g]
+    reason = missing_reason(args.prefix, gpus)
+    if reason:
+        sys.stderr.write("%s: %s\n" % (tool, reason))
+        return None
+    return gpus
+
+
 def child_environment(prefix, gpu):
     env = dict(os.environ)
     lib = os.path.join(prefix, "lib")
@@ -251,8 +267,7 @@ def collect(prefix, gpus, pairs):
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630", help="comma-separated: " + ", ".join(sorted(GPUS)))
-    ap.add_argument("--prefix", default=default_prefix(), help="Mesa install prefix (default: %(default)s)")
+    add_gpu_arguments(ap)
     ap.add_argument("--vertex")
     ap.add_argument("--fragment")
     ap.add_argument("--package", help="a .matpkg: compile its own GLSL ES (read with matc info)")
@@ -271,10 +286,8 @@ def main(argv):
 
     if not (args.package or args.pairs or (args.vertex and args.fragment)):
         ap.error("give PAIRS.json, --vertex and --fragment, or --package")
-    gpus = [g for g in args.gpu.split(",") if g]
-    reason = missing_reason(args.prefix, gpus)
-    if reason:
-        sys.stderr.write("mesa_compile: %s\n" % reason)
+    gpus = gpus_to_collect(args, "mesa_compile")
+    if gpus is None:
         return EXIT_NOT_BUILT
     with tempfile.TemporaryDirectory(prefix="facet-mesa-compile-") as work:
         if args.package:

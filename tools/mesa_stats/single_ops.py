@@ -122,16 +122,13 @@ def measures(stats):
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--gpu", default="mali-g52,mali-g57,adreno-630")
-    ap.add_argument("--prefix", default=mesa_compile.default_prefix())
+    mesa_compile.add_gpu_arguments(ap)
     ap.add_argument("--counts", default=os.path.join(collect.SOURCE_ROOT, "build", "test", "tests", "spirv_op_counts"),
                     help="the spirv_op_counts program (cmake --build build/test --target spirv_op_counts)")
     ap.add_argument("-o", "--output", required=True)
     args = ap.parse_args(argv)
-    gpus = [g for g in args.gpu.split(",") if g]
-    reason = mesa_compile.missing_reason(args.prefix, gpus)
-    if reason:
-        sys.stderr.write("single_ops: %s\n" % reason)
+    gpus = mesa_compile.gpus_to_collect(args, "single_ops")
+    if gpus is None:
         return mesa_compile.EXIT_NOT_BUILT
 
     pairs = []
