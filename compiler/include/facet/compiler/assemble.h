@@ -57,4 +57,9 @@ bool samplesSpecularLut(const AssemblyInput& input);
 // the message says which.
 bool assemble(const AssemblyInput& input, Flavour flavour, StageSources* out, std::string* error);
 
+// One specular option's lobe on its own: `specular_lobe(...)` and the chunks it needs, includes
+// resolved (matc eval's BRDF-domain sweep runs it in a compute shader). The LUT lobe reads the
+// sampler `facet_specularLut` (kSpecularLutSamplerName), which the caller declares.
+bool specularLobeSource(permutations::SpecularModel model, std::string* out, std::string* error);
+
 }  // namespace facet::compiler
