@@ -1,5 +1,7 @@
 #include "gl_api.h"
 
+#include <type_traits>
+
 namespace facet::runtime::gl {
 namespace {
 
@@ -17,6 +19,21 @@ const char* glErrorName(GLenum code) {
 }
 
 }  // namespace
+
+namespace detail {
+thread_local const Functions* current = nullptr;
+}  // namespace detail
+
+bool Functions::load(const std::function<void*(const char*)>& getProcAddress, std::string* error) {
+  std::string missing;
+  forEach([&](auto& member, const char* name) {
+    member = reinterpret_cast<std::remove_reference_t<decltype(member)>>(getProcAddress(name));
+    if (!member) missing += missing.empty() ? name : std::string(", ") + name;
+  });
+  if (missing.empty()) return true;
+  if (error) *error = "the GL context's getProcAddress resolves no " + missing;
+  return false;
+}
 
 bool checkGlError(const char* phase, std::string* error) {
   std::string codes;
