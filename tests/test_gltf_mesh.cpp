@@ -238,6 +238,29 @@ TEST(GltfMesh, SparseAccessorsSubstituteTheirElements) {
       << error;
 }
 
+// A few hundred bytes may not make the loader build gigabytes: a sparse accessor without data
+// declares a million (zero) vertices, five nodes place it. Refused from the declared counts,
+// before any vertex is read.
+TEST(GltfMesh, PlacedVertexTotalIsBounded) {
+  const std::string dir = test::scratchDir("gltf-bounded");
+  std::vector<uint8_t> bin;
+  append<uint16_t>(&bin, {0, 0});
+  append<float>(&bin, {0, 0, 0});
+  writeBytes(dir + "/one.bin", bin);
+  writeText(dir + "/many.gltf", R"({"asset": {"version": "2.0"},
+    "buffers": [{"uri": "one.bin", "byteLength": 16}],
+    "bufferViews": [{"buffer": 0, "byteLength": 16}],
+    "accessors": [{"componentType": 5126, "count": 1048575, "type": "VEC3",
+      "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5123}, "values": {"bufferView": 0, "byteOffset": 4}}}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "nodes": [{"mesh": 0}, {"mesh": 0}, {"mesh": 0}, {"mesh": 0}, {"mesh": 0}],
+    "scenes": [{"nodes": [0, 1, 2, 3, 4]}]})");
+  std::string error;
+  EXPECT_FALSE(loadGltfMesh(dir + "/many.gltf", &error));
+  EXPECT_NE(error.find("many.gltf: error: /nodes/4/mesh: the file places more than 4194304 vertices"), std::string::npos)
+      << error;
+}
+
 TEST(GltfMesh, BadFilesGiveErrorsNamingTheFileAndField) {
   const std::string dir = test::scratchDir("gltf-errors");
   std::string error;

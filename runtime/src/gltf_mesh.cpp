@@ -212,6 +212,42 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
   return true;
 }
 
+// A mesh as one node places it.
+struct Instance {
+  int mesh;
+  Placement placement;
+  std::string from;  // the JSON pointer naming the mesh, for errors
+};
+
+// A small file can place one large mesh many times (or a sparse accessor without data can
+// declare a million vertices): the totals are checked from the accessors' declared counts before
+// anything is read. 4 M vertices are 302 MB of runtime vertices (18 floats each).
+constexpr uint64_t kMaxVertices = uint64_t(1) << 22;
+constexpr uint64_t kMaxIndices = uint64_t(1) << 24;
+
+bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& instances, std::string* error) {
+  uint64_t vertices = 0, indices = 0;
+  const auto declared = [&](int accessor) {
+    return accessor >= 0 && size_t(accessor) < model.accessors.size() ? uint64_t(model.accessors[size_t(accessor)].count) : 0;
+  };
+  for (const Instance& instance : instances) {
+    if (instance.mesh < 0 || size_t(instance.mesh) >= model.meshes.size()) continue;  // appendMesh names it
+    for (const tinygltf::Primitive& p : model.meshes[size_t(instance.mesh)].primitives) {
+      const auto position = p.attributes.find("POSITION");
+      const uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
+      vertices += std::min(count, kMaxVertices + 1);
+      indices += std::min(p.indices >= 0 ? declared(p.indices) : count, kMaxIndices + 1);
+      if (vertices > kMaxVertices || indices > kMaxIndices) {
+        *error = instance.from + ": the file places more than " +
+                 std::to_string(vertices > kMaxVertices ? kMaxVertices : kMaxIndices) +
+                 (vertices > kMaxVertices ? " vertices" : " indices") + " (counting every node's copy)";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool appendMesh(const tinygltf::Model& model, int index, const std::string& from, const Placement& placement,
                 Mesh* mesh, std::string* error) {
   if (index < 0 || size_t(index) >= model.meshes.size()) {
@@ -268,10 +304,10 @@ bool localTransform(const tinygltf::Node& node, const std::string& pointer, glm:
   return true;
 }
 
-// The meshes of the default scene's node trees, each placed by its node's world transform.
+// The meshes of the default scene's node trees, each with its node's world transform.
 // Iterative (a file may nest thousands of nodes); each node at most once, as glTF requires
 // (a node reached twice would be a cycle or a shared child).
-bool appendScene(const tinygltf::Model& model, int sceneIndex, Mesh* mesh, std::string* error) {
+bool collectScene(const tinygltf::Model& model, int sceneIndex, std::vector<Instance>* instances, std::string* error) {
   struct Pending {
     int node;
     glm::dmat4 parent;
@@ -299,7 +335,7 @@ bool appendScene(const tinygltf::Model& model, int sceneIndex, Mesh* mesh, std::
     glm::dmat4 local;
     if (!localTransform(node, pointer, &local, error)) return false;
     const glm::dmat4 world = pending.parent * local;
-    if (node.mesh >= 0 && !appendMesh(model, node.mesh, pointer + "/mesh", placementOf(world), mesh, error)) return false;
+    if (node.mesh >= 0) instances->push_back({node.mesh, placementOf(world), pointer + "/mesh"});
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
       stack.push_back({*it, world, pointer + "/children"});
   }
@@ -347,12 +383,16 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error) {
     return std::nullopt;
   }
   const int scene = model.defaultScene >= 0 ? model.defaultScene : model.scenes.empty() ? -1 : 0;
+  std::vector<Instance> instances;
   bool ok = true;
   if (scene >= 0) {
-    ok = appendScene(model, scene, &mesh, &why);
+    ok = collectScene(model, scene, &instances, &why);
   } else {
-    for (size_t m = 0; ok && m < model.meshes.size(); ++m) ok = appendMesh(model, int(m), "/meshes", Placement{}, &mesh, &why);
+    for (size_t m = 0; m < model.meshes.size(); ++m) instances.push_back({int(m), Placement{}, "/meshes"});
   }
+  ok = ok && checkTotals(model, instances, &why);
+  for (size_t i = 0; ok && i < instances.size(); ++i)
+    ok = appendMesh(model, instances[i].mesh, instances[i].from, instances[i].placement, &mesh, &why);
   if (!ok) {
     *error = path + ": error: " + why;
     return std::nullopt;

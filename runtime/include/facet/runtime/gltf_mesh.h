@@ -18,7 +18,9 @@ namespace facet::runtime {
 // Node transforms are applied (matrix, or T · R · S, parents first): positions by the world
 // matrix, normals by its inverse transpose, tangents by its 3×3; a mirroring node flips the
 // winding and the tangent's w so triangles stay front-facing. A mesh used by two nodes appears
-// twice. Texture coordinates are as stored (glTF: origin at the image's first row).
+// twice; all copies together hold at most 4 Mi vertices and 16 Mi indices, checked from the
+// declared counts before reading. Texture coordinates are as stored (glTF: origin at the image's
+// first row).
 //
 // Only regular files are read: the file itself and the buffers it names, which must lie in its
 // folder or below (data: URIs are decoded). Errors name the file and the glTF field, e.g.
