@@ -311,6 +311,19 @@ TEST(GlBackend, RendersOnTheAppsCurrentContext) {
   embedded.reset();
   ASSERT_TRUE(app->render(frame, &own, &error)) << error;
   EXPECT_TRUE(noValidationErrors(*app));
+
+  // Destroyed while another context is current: its names are not deleted in that context (GL
+  // names are per context: they would be the other backend's buffers and textures), which goes
+  // on rendering the same pixels without a GL error.
+  auto late = createGlBackend(appContext, GlOptions{}, &error);
+  ASSERT_NE(late, nullptr) << error;
+  ASSERT_TRUE(late->render(frame, &adopted, &error)) << error;
+  FrameResult before, after;
+  ASSERT_TRUE(other->render(frame, &before, &error)) << error;  // OSMesa current now
+  late.reset();
+  ASSERT_TRUE(other->render(frame, &after, &error)) << error;
+  EXPECT_EQ(after.ldr, before.ldr);
+  EXPECT_TRUE(noValidationErrors(*other));
 }
 
 // What an app gets wrong when handing over its context is an error naming it, not a crash.

@@ -18,10 +18,31 @@ const char* glErrorName(GLenum code) {
   }
 }
 
+// A no-op of the same signature as a GL entry point.
+template <typename F>
+struct NoOp;
+template <typename R, typename... Args>
+struct NoOp<R(APIENTRY*)(Args...)> {
+  static R APIENTRY call(Args...) { return R(); }
+};
+template <typename... Args>
+struct NoOp<void(APIENTRY*)(Args...)> {
+  static void APIENTRY call(Args...) {}
+};
+
 }  // namespace
 
+const Functions& Functions::noContext() {
+  static const Functions table = [] {
+    Functions f;
+    f.forEach([](auto& member, const char*) { member = &NoOp<std::remove_reference_t<decltype(member)>>::call; });
+    return f;
+  }();
+  return table;
+}
+
 namespace detail {
-thread_local const Functions* current = nullptr;
+thread_local const Functions* current = &Functions::noContext();
 }  // namespace detail
 
 bool Functions::load(const std::function<void*(const char*)>& getProcAddress, std::string* error) {

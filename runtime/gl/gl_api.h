@@ -111,10 +111,16 @@ struct Functions {
   // Resolves every entry point through getProcAddress. Returns false and sets *error naming the
   // ones that did not resolve.
   bool load(const std::function<void*(const char*)>& getProcAddress, std::string* error);
+
+  // Every entry a no-op returning zero (glGetError: GL_NO_ERROR): what the names call while no
+  // context of the backend's is current, so a backend destroyed on the wrong thread or with the
+  // app's context not current deletes nothing in someone else's context and does not crash.
+  static const Functions& noContext();
 };
 
 namespace detail {
-// The table of the context made current last by this code on this thread (null before any).
+// The table of the context made current last by this code on this thread; noContext() before
+// any, and after a failed makeCurrent.
 extern thread_local const Functions* current;
 }  // namespace detail
 

@@ -84,11 +84,14 @@ bool Context::queryCapabilities(std::string* error) {
 
 Context::~Context() {
   // gl_api.h's names must not keep pointing at a table that is gone.
-  if (detail::current == &functions_) detail::current = nullptr;
+  if (detail::current == &functions_) detail::current = &Functions::noContext();
 }
 
 bool Context::makeCurrent(std::string* error) {
-  if (!host_->makeCurrent(error)) return false;
+  if (!host_->makeCurrent(error)) {
+    detail::current = &Functions::noContext();  // whatever is current is not ours to draw into
+    return false;
+  }
   detail::current = &functions_;
   return true;
 }
