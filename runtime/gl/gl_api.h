@@ -92,7 +92,7 @@ namespace facet::runtime::gl {
   X(PFNGLUNIFORMBLOCKBINDINGPROC, glUniformBlockBinding) \
   X(PFNGLUSEPROGRAMPROC, glUseProgram) \
   X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer) \
-  X(PFNGLVIEWPORTPROC, glViewport) \
+  X(PFNGLVIEWPORTPROC, glViewport)
 
 struct Functions {
 #define FACET_GL_MEMBER(type, name) type name = nullptr;
