@@ -54,6 +54,22 @@ void printCosts(const package::Package& pkg) {
   }
 }
 
+// Where a Metal app binds each block and sampler (section MSLB): pinned from the shader ABI, so
+// one table holds for every variant. Blocks at [[buffer(n)]]; a sampler at [[texture(n)]] and
+// [[sampler(n)]]. The Vulkan set/binding of the same resource lets an engine map one to the other.
+void printMslSlots(const package::Package& pkg) {
+  if (pkg.mslBindings.empty()) {
+    std::printf("msl slots  none recorded (a package before format 1.2)\n");
+    return;
+  }
+  std::printf("msl slots  %zu (every variant: blocks at [[buffer(n)]], samplers at [[texture(n)]] + [[sampler(n)]])\n",
+              pkg.mslBindings.size());
+  for (const package::MslBinding& b : pkg.mslBindings) {
+    const std::string slot = std::string(package::toString(b.kind)) + "(" + std::to_string(b.index) + ")";
+    std::printf("  %-28s %-12s Vulkan set %u binding %u\n", b.name.c_str(), slot.c_str(), b.set, b.binding);
+  }
+}
+
 void printSummary(const package::ReadResult& r) {
   const package::Package& pkg = *r.package;
   const package::MaterialInfo& m = pkg.material;
@@ -99,6 +115,7 @@ void printSummary(const package::ReadResult& r) {
   if (r.dictionaryStoredSize > 0)
     std::printf("dictionary %llu bytes stored (shared by the shaders compressed against it)\n",
                 static_cast<unsigned long long>(r.dictionaryStoredSize));
+  printMslSlots(pkg);
   printCosts(pkg);
 }
 
@@ -152,6 +169,11 @@ void printJson(const package::ReadResult& r) {
                                {"storedBytes", r.textureStats[i].storedSize}});
   }
   doc["dictionaryStoredBytes"] = r.dictionaryStoredSize;
+  doc["mslSlots"] = nlohmann::ordered_json::array();
+  for (const package::MslBinding& b : pkg.mslBindings) {
+    doc["mslSlots"].push_back(
+        {{"name", b.name}, {"kind", package::toString(b.kind)}, {"index", b.index}, {"set", b.set}, {"binding", b.binding}});
+  }
   std::printf("%s\n", doc.dump(2).c_str());
 }
 

@@ -6,6 +6,7 @@
 #   build/examples/images/*.png        rendered scenes, one per backend
 #   build/examples/eval/               matc eval of red_plastic: report.md, report.json, plot.svg, images/
 #   build/examples/images/app.png      examples/app: the runtime embedded on the app's own Vulkan device
+#   build/examples/images/app_gl.png   examples/app_gl: the same on the app's own OpenGL ES context
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,7 +14,7 @@ bash scripts/setup-deps.sh
 
 jobs=$(nproc)
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF
-cmake --build build/release --parallel "$jobs" --target matc facet-view facet-app-example
+cmake --build build/release --parallel "$jobs" --target matc facet-view facet-app-example facet-app-gl-example
 
 packages=build/examples/packages
 images=build/examples/images
@@ -37,6 +38,8 @@ done
 # with validation on: any validation error fails it.
 FACET_VK_VALIDATION=1 build/release/examples/app/facet-app-example \
   build/release/examples/app/red_plastic.matpkg "$images/app.png"
+# examples/app_gl: the same on the app's own OpenGL ES context (EGL), the runtime linking no OSMesa.
+build/release/examples/app_gl/facet-app-gl-example build/release/examples/app/red_plastic.matpkg "$images/app_gl.png"
 
 # Speed against error (docs/eval.md): every tier and single-option swap of one material, rendered
 # on lavapipe and measured against `reference` and by the mobile cost model.

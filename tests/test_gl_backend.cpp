@@ -6,7 +6,11 @@
 #include <string>
 #include <vector>
 
+#include <EGL/egl.h>
+
 #include "../runtime/gl/gl_context.h"
+#include "../runtime/gl/headless/headless_context.h"
+#include "facet/gl_backend.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "gl_test_interface.h"
@@ -269,9 +273,9 @@ TEST(GlBackend, TwoThousandDrawsShareOneMeshBuffer) {
 }
 
 // The app's own OpenGL ES context: a backend that owns an EGL context stands in for the app (its
-// context is current after it renders); a second backend adopts that context, renders the same
-// frame to the same pixels, refuses to render when another context is current, and leaves the
-// context alive when destroyed.
+// context is current after it renders); a second backend adopts that context through the app's
+// eglGetProcAddress (no OSMesa involved), renders the same frame to the same pixels, refuses to
+// render when another context is current, and leaves the context alive when destroyed.
 TEST(GlBackend, RendersOnTheAppsCurrentContext) {
   std::string error;
   GlOptions appOptions;
@@ -286,9 +290,10 @@ TEST(GlBackend, RendersOnTheAppsCurrentContext) {
   FrameResult own, adopted;
   ASSERT_TRUE(app->render(frame, &own, &error)) << error;  // leaves the app's context current
 
-  GlOptions options;
-  options.context = GlContextKind::AppCurrent;
-  auto embedded = createGlBackend(options, &error);
+  GlAppContext appContext;
+  appContext.getProcAddress = [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); };
+  appContext.currentContext = eglGetCurrentContext;
+  auto embedded = createGlBackend(appContext, GlOptions{}, &error);
   ASSERT_NE(embedded, nullptr) << error;
   ASSERT_TRUE(embedded->render(frame, &adopted, &error)) << error;
   EXPECT_EQ(adopted.hdr, own.hdr);
@@ -306,6 +311,40 @@ TEST(GlBackend, RendersOnTheAppsCurrentContext) {
   embedded.reset();
   ASSERT_TRUE(app->render(frame, &own, &error)) << error;
   EXPECT_TRUE(noValidationErrors(*app));
+
+  // Destroyed while another context is current: its names are not deleted in that context (GL
+  // names are per context: they would be the other backend's buffers and textures), which goes
+  // on rendering the same pixels without a GL error.
+  auto late = createGlBackend(appContext, GlOptions{}, &error);
+  ASSERT_NE(late, nullptr) << error;
+  ASSERT_TRUE(late->render(frame, &adopted, &error)) << error;
+  FrameResult before, after;
+  ASSERT_TRUE(other->render(frame, &before, &error)) << error;  // OSMesa current now
+  late.reset();
+  ASSERT_TRUE(other->render(frame, &after, &error)) << error;
+  EXPECT_EQ(after.ldr, before.ldr);
+  EXPECT_TRUE(noValidationErrors(*other));
+}
+
+// What an app gets wrong when handing over its context is an error naming it, not a crash.
+TEST(GlBackend, AppContextMistakesAreErrors) {
+  std::string error;
+  EXPECT_EQ(createGlBackend(GlAppContext{}, GlOptions{}, &error), nullptr);
+  EXPECT_NE(error.find("getProcAddress is required"), std::string::npos) << error;
+
+  // No context current (the handle callback says so).
+  GlAppContext none;
+  none.getProcAddress = [](const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); };
+  none.currentContext = []() -> void* { return nullptr; };
+  EXPECT_EQ(createGlBackend(none, GlOptions{}, &error), nullptr);
+  EXPECT_NE(error.find("no GL context is current"), std::string::npos) << error;
+
+  // A loader that resolves nothing: every missing entry point is named.
+  GlAppContext empty;
+  empty.getProcAddress = [](const char*) -> void* { return nullptr; };
+  EXPECT_EQ(createGlBackend(empty, GlOptions{}, &error), nullptr);
+  EXPECT_NE(error.find("resolves no glActiveTexture"), std::string::npos) << error;
+  EXPECT_NE(error.find("glViewport"), std::string::npos) << error;
 }
 
 TEST(GlBackend, FrameAndObjectUniformsReachShaders) {
@@ -398,7 +437,8 @@ TEST(GlBackend, ShortMaterialParamsAreRejected) {
 TEST(GlBackend, DebugOutputRecordsErrors) {
   // Guards NoDebugOutputErrors against passing because nothing is listening.
   std::string error;
-  std::unique_ptr<gl::Context> context = gl::Context::create(gl::ContextKind::Auto, &error);
+  std::unique_ptr<gl::Context> context =
+      gl::Context::create(gl::createHeadlessContext(GlContextKind::Auto, &error), &error);
   ASSERT_NE(context, nullptr) << error;
   ASSERT_TRUE(context->makeCurrent(&error)) << error;
   ASSERT_TRUE(context->debugOutputEnabled());

@@ -31,10 +31,8 @@ void append(std::vector<uint8_t>* bytes, std::initializer_list<T> values) {
   }
 }
 
-// A unit quad in z = 0 facing +z, every attribute the runtime reads, in quad.bin beside it:
-// positions, normals, tangents (float), uv0 (float), uv1 (normalised ushort), colour (normalised
-// ubyte VEC4), indices (ushort).
-std::string writeQuad(const std::string& dir, const std::string& binUri = "quad.bin") {
+// The bytes of quad.bin (below).
+std::vector<uint8_t> quadBin() {
   std::vector<uint8_t> bin;
   append<float>(&bin, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});                           // 0: 48
   append<float>(&bin, {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});                               // 48: 48
@@ -43,9 +41,14 @@ std::string writeQuad(const std::string& dir, const std::string& binUri = "quad.
   append<uint16_t>(&bin, {0, 0, 65535, 0, 65535, 65535, 0, 65535});                        // 192: 16
   append<uint8_t>(&bin, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 51});  // 208: 16
   append<uint16_t>(&bin, {0, 1, 2, 0, 2, 3});                                              // 224: 12
-  writeBytes(dir + "/quad.bin", bin);
-  const std::string gltf = R"({"asset": {"version": "2.0"},
-  "buffers": [{"uri": ")" + binUri + R"(", "byteLength": 236}],
+  return bin;
+}
+
+// quad.gltf's JSON: `buffer` is its buffer's object, `scene` what follows the meshes.
+constexpr const char* kQuadScene = R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0)";
+std::string quadJson(const std::string& buffer, const std::string& scene = kQuadScene) {
+  return R"({"asset": {"version": "2.0"},
+  "buffers": [)" + buffer + R"(],
   "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 224}, {"buffer": 0, "byteOffset": 224, "byteLength": 12}],
   "accessors": [
     {"bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
@@ -57,9 +60,34 @@ std::string writeQuad(const std::string& dir, const std::string& binUri = "quad.
     {"bufferView": 1, "byteOffset": 0, "componentType": 5123, "count": 6, "type": "SCALAR"}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TANGENT": 2, "TEXCOORD_0": 3,
     "TEXCOORD_1": 4, "COLOR_0": 5}, "indices": 6}]}],
-  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
-  writeText(dir + "/quad.gltf", gltf);
-  return dir + "/quad.gltf";
+  )" + scene + "}";
+}
+
+// A unit quad in z = 0 facing +z, every attribute the runtime reads, in quad.bin beside it:
+// positions, normals, tangents (float), uv0 (float), uv1 (normalised ushort), colour (normalised
+// ubyte VEC4), indices (ushort). `scene`: the node part of the JSON.
+std::string writeQuad(const std::string& dir, const std::string& binUri = "quad.bin",
+                      const std::string& scene = kQuadScene, const std::string& name = "quad.gltf") {
+  writeBytes(dir + "/quad.bin", quadBin());
+  writeText(dir + "/" + name, quadJson(R"({"uri": ")" + binUri + R"(", "byteLength": 236})", scene));
+  return dir + "/" + name;
+}
+
+// The same quad as one binary .glb (glTF 2.0 §4.4): 12-byte header, a JSON chunk padded with
+// spaces and a BIN chunk padded with zeros to 4 bytes, the buffer without a uri.
+std::string writeQuadGlb(const std::string& dir) {
+  std::string json = quadJson(R"({"byteLength": 236})");
+  while (json.size() % 4) json += ' ';
+  std::vector<uint8_t> bin = quadBin();
+  while (bin.size() % 4) bin.push_back(0);
+  std::vector<uint8_t> glb;
+  append<uint32_t>(&glb, {0x46546C67u, 2u, uint32_t(12 + 8 + json.size() + 8 + bin.size())});  // "glTF"
+  append<uint32_t>(&glb, {uint32_t(json.size()), 0x4E4F534Au});                                // "JSON"
+  glb.insert(glb.end(), json.begin(), json.end());
+  append<uint32_t>(&glb, {uint32_t(bin.size()), 0x004E4942u});                                 // "BIN\0"
+  glb.insert(glb.end(), bin.begin(), bin.end());
+  writeBytes(dir + "/quad.glb", glb);
+  return dir + "/quad.glb";
 }
 
 Vertex vertexAt(const Mesh& mesh, size_t i) {
@@ -87,6 +115,150 @@ TEST(GltfMesh, ReadsEveryAttributeIntoTheVertexLayout) {
   EXPECT_EQ(v2.color[2], 1.0f);  // 255, normalised
   EXPECT_EQ(v2.color[0], 0.0f);
   EXPECT_FLOAT_EQ(v3.color[3], 0.2f);  // 51 / 255
+}
+
+TEST(GltfMesh, BinaryGlbReadsLikeItsGltf) {
+  const std::string dir = test::scratchDir("gltf-glb");
+  std::string error;
+  auto glb = loadGltfMesh(writeQuadGlb(dir), &error);
+  ASSERT_TRUE(glb) << error;
+  auto gltf = loadGltfMesh(writeQuad(dir), &error);
+  ASSERT_TRUE(gltf) << error;
+  EXPECT_EQ(glb->vertices, gltf->vertices);
+  EXPECT_EQ(glb->indices, gltf->indices);
+  // A .glb cut short is an error naming the file, not a read past its end.
+  std::ifstream in(dir + "/quad.glb", std::ios::binary);
+  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  bytes.resize(bytes.size() - 40);
+  writeBytes(dir + "/short.glb", bytes);
+  EXPECT_FALSE(loadGltfMesh(dir + "/short.glb", &error));
+  EXPECT_NE(error.find("short.glb: error: "), std::string::npos) << error;
+}
+
+// Node transforms (glTF 2.0 §3.5.3): a parent with translation, rotation and scale, a child with a
+// matrix; the mesh is placed by parent · child. Normals follow the inverse transpose.
+TEST(GltfMesh, NodeHierarchyPlacesTheMesh) {
+  const std::string dir = test::scratchDir("gltf-nodes");
+  // Parent: translate (10, 0, 0), rotate 90° about +y (x, y, z, w), scale 2. Child: a matrix
+  // (column-major) translating by (0, 3, 0) and scaling z by 5 (the quad's z is 0: no effect on
+  // positions, but the normal +z must stay unit length).
+  const std::string scene = R"("nodes": [
+      {"children": [1], "translation": [10, 0, 0], "rotation": [0, 0.70710678, 0, 0.70710678], "scale": [2, 2, 2]},
+      {"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,5,0, 0,3,0,1]},
+      {"mesh": 0}],
+    "scenes": [{"nodes": [0]}], "scene": 0)";
+  std::string error;
+  auto mesh = loadGltfMesh(writeQuad(dir, "quad.bin", scene), &error);
+  ASSERT_TRUE(mesh) << error;
+  // Only the scene's tree is drawn: node 2 (not in the scene) adds nothing.
+  ASSERT_EQ(mesh->vertices.size(), 4 * abi::kVertexFloats);
+  // Vertex 2 is (1, 1, 0): child → (1, 4, 0); scale 2 → (2, 8, 0); rotate 90° about y sends +x
+  // to −z → (0, 8, −2); translate → (10, 8, −2).
+  const Vertex v2 = vertexAt(*mesh, 2);
+  EXPECT_NEAR(v2.position[0], 10.0f, 1e-5f);
+  EXPECT_NEAR(v2.position[1], 8.0f, 1e-5f);
+  EXPECT_NEAR(v2.position[2], -2.0f, 1e-5f);
+  // Normal +z: rotated to +x, unit length despite both scales.
+  EXPECT_NEAR(v2.normal[0], 1.0f, 1e-6f);
+  EXPECT_NEAR(v2.normal[1], 0.0f, 1e-6f);
+  EXPECT_NEAR(v2.normal[2], 0.0f, 1e-6f);
+  // Tangent +x: rotated to −z, handedness kept.
+  EXPECT_NEAR(v2.tangent[2], -1.0f, 1e-6f);
+  EXPECT_EQ(v2.tangent[3], 1.0f);
+  EXPECT_EQ(mesh->indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
+
+  // A mirror (scale −1 in x) keeps triangles front-facing: the winding and the tangent's
+  // handedness flip.
+  auto mirrored = loadGltfMesh(
+      writeQuad(dir, "quad.bin", R"("nodes": [{"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0]}])", "m.gltf"),
+      &error);
+  ASSERT_TRUE(mirrored) << error;
+  EXPECT_EQ(mirrored->indices, (std::vector<uint32_t>{0, 2, 1, 0, 3, 2}));
+  EXPECT_EQ(vertexAt(*mirrored, 2).position[0], -1.0f);
+  EXPECT_EQ(vertexAt(*mirrored, 2).tangent[0], -1.0f);
+  EXPECT_EQ(vertexAt(*mirrored, 2).tangent[3], -1.0f);
+  EXPECT_EQ(vertexAt(*mirrored, 2).normal[2], 1.0f);
+
+  // A node reached twice (here a cycle) is an error naming it, not an endless walk.
+  EXPECT_FALSE(loadGltfMesh(writeQuad(dir, "quad.bin",
+                                      R"("nodes": [{"children": [1]}, {"mesh": 0, "children": [0]}], "scenes": [{"nodes": [0]}])",
+                                      "cycle.gltf"),
+                            &error));
+  EXPECT_NE(error.find("cycle.gltf: error: /nodes/0: reached twice"), std::string::npos) << error;
+}
+
+// Sparse accessors (glTF 2.0 §3.6.2.3): listed elements replace the base values, which come from
+// a buffer view or, without one, are zeros.
+TEST(GltfMesh, SparseAccessorsSubstituteTheirElements) {
+  const std::string dir = test::scratchDir("gltf-sparse");
+  std::vector<uint8_t> bin;
+  append<float>(&bin, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});  // 0: the quad's positions
+  append<uint16_t>(&bin, {0, 1, 2, 0, 2, 3, 0, 0});                // 48: indices, padding
+  append<uint16_t>(&bin, {2, 0});                                  // 64: sparse index 2, padding
+  append<float>(&bin, {5, 6, 0});                                  // 68: its value
+  append<uint32_t>(&bin, {0, 1, 2, 3});                            // 80: sparse indices 0..3
+  append<float>(&bin, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});  // 96: their values
+  writeBytes(dir + "/sparse.bin", bin);
+  // bufferView 0: positions, 1: indices, 2: the sparse data (offsets above minus 64).
+  const auto write = [&](const std::string& name, const std::string& positions) {
+    writeText(dir + "/" + name, R"({"asset": {"version": "2.0"},
+      "buffers": [{"uri": "sparse.bin", "byteLength": 144}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                      {"buffer": 0, "byteOffset": 64, "byteLength": 80}],
+      "accessors": [)" + positions + R"(,
+                    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}]})");
+    return dir + "/" + name;
+  };
+  std::string error;
+  // Base from the buffer view, element 2 replaced by (5, 6, 0).
+  auto over = loadGltfMesh(write("over.gltf", R"({"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+      "sparse": {"count": 1, "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 2, "byteOffset": 4}}})"),
+                           &error);
+  ASSERT_TRUE(over) << error;
+  EXPECT_EQ(vertexAt(*over, 1).position[0], 1.0f);
+  EXPECT_EQ(vertexAt(*over, 2).position[0], 5.0f);
+  EXPECT_EQ(vertexAt(*over, 2).position[1], 6.0f);
+  // No buffer view: zeros, here every element replaced: the plain quad.
+  auto zeros = loadGltfMesh(write("zeros.gltf", R"({"componentType": 5126, "count": 4, "type": "VEC3",
+      "sparse": {"count": 4, "indices": {"bufferView": 2, "byteOffset": 16, "componentType": 5125},
+                 "values": {"bufferView": 2, "byteOffset": 32}}})"),
+                            &error);
+  ASSERT_TRUE(zeros) << error;
+  const float quad[4][3] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  for (size_t v = 0; v < 4; ++v)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(vertexAt(*zeros, v).position[c], quad[v][c]) << v << " " << c;
+  // A sparse index past the accessor's elements is refused, naming the accessor.
+  EXPECT_FALSE(loadGltfMesh(write("past.gltf", R"({"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3",
+      "sparse": {"count": 1, "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 2, "byteOffset": 4}}})"),
+                            &error));
+  EXPECT_NE(error.find("past.gltf: error: /meshes/0/primitives/0/attributes/POSITION: accessor 0 sparse index 2 (entry 0) "
+                       "is past the elements"),
+            std::string::npos)
+      << error;
+}
+
+// A few hundred bytes may not make the loader build gigabytes: a sparse accessor without data
+// declares a million (zero) vertices, five nodes place it. Refused from the declared counts,
+// before any vertex is read.
+TEST(GltfMesh, PlacedVertexTotalIsBounded) {
+  const std::string dir = test::scratchDir("gltf-bounded");
+  std::vector<uint8_t> bin;
+  append<uint16_t>(&bin, {0, 0});
+  append<float>(&bin, {0, 0, 0});
+  writeBytes(dir + "/one.bin", bin);
+  writeText(dir + "/many.gltf", R"({"asset": {"version": "2.0"},
+    "buffers": [{"uri": "one.bin", "byteLength": 16}],
+    "bufferViews": [{"buffer": 0, "byteLength": 16}],
+    "accessors": [{"componentType": 5126, "count": 1048575, "type": "VEC3",
+      "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5123}, "values": {"bufferView": 0, "byteOffset": 4}}}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "nodes": [{"mesh": 0}, {"mesh": 0}, {"mesh": 0}, {"mesh": 0}, {"mesh": 0}],
+    "scenes": [{"nodes": [0, 1, 2, 3, 4]}]})");
+  std::string error;
+  EXPECT_FALSE(loadGltfMesh(dir + "/many.gltf", &error));
+  EXPECT_NE(error.find("many.gltf: error: /nodes/4/mesh: the file places more than 4194304 vertices"), std::string::npos)
+      << error;
 }
 
 TEST(GltfMesh, BadFilesGiveErrorsNamingTheFileAndField) {

@@ -5,6 +5,9 @@
 #include <fstream>
 
 #include <nlohmann/json.hpp>
+#include <regex>
+
+#include "facet/shader_abi.h"
 
 #include "test_support.h"
 
@@ -125,6 +128,48 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   EXPECT_LT(stored, fs::file_size(dir + "/r.matpkg"));
   EXPECT_EQ(doc["parameters"][1]["name"], "roughness");
   EXPECT_EQ(doc["textures"][0]["variants"][0], "low.dir1");
+}
+
+// The Metal slots recorded in the package (section MSLB) are shown in text and JSON, are the shader
+// ABI's, and are the ones every variant's MSL declares (painted_tiles: blocks, frame and
+// material samplers; the low tier adds the specular LUT).
+TEST(MatcCli, InfoShowsTheMslSlotsTheShadersDeclare) {
+  std::string dir = facet::test::scratchDir("cli-msl-slots");
+  const std::string package = dir + "/p.matpkg";
+  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/painted_tiles.mat") + " -o " + package).exitCode, 0);
+  auto text = run(kMatc + " info " + package);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  const size_t environmentLine = text.out.find("\n  facet_environment ");
+  ASSERT_NE(environmentLine, std::string::npos) << text.out;
+  const std::string line = text.out.substr(environmentLine + 1, text.out.find('\n', environmentLine + 1) - environmentLine - 1);
+  const std::string environmentSlot = "texture(" + std::to_string(facet::abi::mslTextureIndex(facet::abi::kEnvironmentBinding)) + ")";
+  EXPECT_NE(line.find(environmentSlot), std::string::npos) << line;
+  EXPECT_NE(line.find("Vulkan set 1 binding " + std::to_string(facet::abi::kEnvironmentBinding)), std::string::npos) << line;
+
+  auto json = run(kMatc + " info " + package + " --json");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json doc = nlohmann::json::parse(json.out);
+  ASSERT_GE(doc["mslSlots"].size(), 6u);
+  for (const std::string variant : {"high.dir1", "low.dir1"}) {
+    auto msl = run(kMatc + " info " + package + " --variant " + variant + " --stage fragment --target msl");
+    ASSERT_EQ(msl.exitCode, 0) << msl.err;
+    size_t declared = 0;
+    for (const auto& slot : doc["mslSlots"]) {
+      const std::string name = slot["name"], index = std::to_string(slot["index"].get<uint32_t>());
+      if (slot["kind"] == "buffer") {
+        const std::regex pattern(name + R"(& \w+ \[\[buffer\((\d+)\)\]\])");
+        std::smatch match;
+        if (!std::regex_search(msl.out, match, pattern)) continue;  // a block this stage does not read
+        EXPECT_EQ(match[1].str(), index) << variant << " " << name;
+      } else {
+        if (msl.out.find(" " + name + " [[texture(") == std::string::npos) continue;
+        EXPECT_NE(msl.out.find(" " + name + " [[texture(" + index + ")]]"), std::string::npos) << variant << " " << name;
+        EXPECT_NE(msl.out.find(" " + name + "Smplr [[sampler(" + index + ")]]"), std::string::npos) << variant << " " << name;
+      }
+      ++declared;
+    }
+    EXPECT_GE(declared, 5u) << variant;  // frame and material blocks, the environment, both material textures
+  }
 }
 
 // On a terminal (util-linux `script` gives matc a pseudo-terminal) the progress line counts the

@@ -1,5 +1,7 @@
 #include "gl_api.h"
 
+#include <type_traits>
+
 namespace facet::runtime::gl {
 namespace {
 
@@ -16,7 +18,43 @@ const char* glErrorName(GLenum code) {
   }
 }
 
+// A no-op of the same signature as a GL entry point.
+template <typename F>
+struct NoOp;
+template <typename R, typename... Args>
+struct NoOp<R(APIENTRY*)(Args...)> {
+  static R APIENTRY call(Args...) { return R(); }
+};
+template <typename... Args>
+struct NoOp<void(APIENTRY*)(Args...)> {
+  static void APIENTRY call(Args...) {}
+};
+
 }  // namespace
+
+const Functions& Functions::noContext() {
+  static const Functions table = [] {
+    Functions f;
+    f.forEach([](auto& member, const char*) { member = &NoOp<std::remove_reference_t<decltype(member)>>::call; });
+    return f;
+  }();
+  return table;
+}
+
+namespace detail {
+thread_local const Functions* current = &Functions::noContext();
+}  // namespace detail
+
+bool Functions::load(const std::function<void*(const char*)>& getProcAddress, std::string* error) {
+  std::string missing;
+  forEach([&](auto& member, const char* name) {
+    member = reinterpret_cast<std::remove_reference_t<decltype(member)>>(getProcAddress(name));
+    if (!member) missing += missing.empty() ? name : std::string(", ") + name;
+  });
+  if (missing.empty()) return true;
+  if (error) *error = "the GL context's getProcAddress resolves no " + missing;
+  return false;
+}
 
 bool checkGlError(const char* phase, std::string* error) {
   std::string codes;

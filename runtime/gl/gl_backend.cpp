@@ -1,8 +1,9 @@
 // RenderBackend on OpenGL ES: forward pass into RGBA16F + depth, post pass into RGBA8, readback.
 //
-// Runs the "#version 300 es" shaders on a real OpenGL ES 3.2 context (EGL surfaceless) or, where
-// EGL is missing, on Mesa's OSMesa core context (ARB_ES3_compatibility), so the GLES flavour of
-// every material is exercised as a phone would receive it. Render paths (render_path.h): merged
+// Runs the "#version 300 es" shaders on the context it is given (gl_backend.h): the app's, or in
+// tests a real OpenGL ES 3.2 context (EGL surfaceless) or Mesa's OSMesa core context
+// (ARB_ES3_compatibility), so the GLES flavour of every material is exercised as a phone would
+// receive it. Render paths (render_path.h): merged
 // (one framebuffer, the post pass reads HDR by GL_EXT_shader_framebuffer_fetch, then HDR and
 // depth are invalidated) or separate (post samples the HDR texture).
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "facet/gl_backend.h"
 #include "facet/render_backend.h"
 #include "gl_context.h"
 #include "gl_mesh.h"
@@ -25,7 +27,8 @@ using gl::checkGlError;
 
 class GlBackend final : public RenderBackend {
  public:
-  static std::unique_ptr<GlBackend> create(const GlOptions& options, std::string* error);
+  static std::unique_ptr<GlBackend> create(std::unique_ptr<GlContext> host, const GlOptions& options,
+                                           std::string* error);
   ~GlBackend() override;
 
   const char* name() const override { return "gl"; }
@@ -47,7 +50,7 @@ class GlBackend final : public RenderBackend {
   };
 
   GlBackend() = default;
-  bool initialise(const GlOptions& options, std::string* error);
+  bool initialise(std::unique_ptr<GlContext> host, const GlOptions& options, std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
   bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
@@ -77,18 +80,15 @@ class GlBackend final : public RenderBackend {
   std::unordered_map<const ShaderProgram*, CachedProgram> programs_;
 };
 
-std::unique_ptr<GlBackend> GlBackend::create(const GlOptions& options, std::string* error) {
+std::unique_ptr<GlBackend> GlBackend::create(std::unique_ptr<GlContext> host, const GlOptions& options,
+                                             std::string* error) {
   std::unique_ptr<GlBackend> backend(new GlBackend());
-  if (!backend->initialise(options, error)) return nullptr;
+  if (!backend->initialise(std::move(host), options, error)) return nullptr;
   return backend;
 }
 
-bool GlBackend::initialise(const GlOptions& options, std::string* error) {
-  const gl::ContextKind kind = options.context == GlContextKind::EglGles      ? gl::ContextKind::EglGles
-                               : options.context == GlContextKind::OsMesa     ? gl::ContextKind::OsMesa
-                               : options.context == GlContextKind::AppCurrent ? gl::ContextKind::AppCurrent
-                                                                              : gl::ContextKind::Auto;
-  context_ = gl::Context::create(kind, error);
+bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& options, std::string* error) {
+  context_ = gl::Context::create(std::move(host), error);
   if (!context_) return false;
   readBackHdr_ = options.readBackHdr;
   const bool canFetch = context_->hasExtension("GL_EXT_shader_framebuffer_fetch");
@@ -406,12 +406,11 @@ bool GlBackend::postPass(std::string* error) {
 
 }  // namespace
 
-std::unique_ptr<RenderBackend> createGlBackend(std::string* error) { return createGlBackend(GlOptions{}, error); }
-
-std::unique_ptr<RenderBackend> createGlBackend(const GlOptions& options, std::string* error) {
+std::unique_ptr<RenderBackend> createGlBackend(std::unique_ptr<GlContext> context, const GlOptions& options,
+                                               std::string* error) {
   // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
   try {
-    return GlBackend::create(options, error);
+    return GlBackend::create(std::move(context), options, error);
   } catch (const std::exception& e) {
     if (error) *error = std::string("GL backend: ") + e.what();
     return nullptr;

@@ -9,7 +9,13 @@
 #include <fstream>
 #include <iterator>
 
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
 #include "facet/runtime/mesh.h"
+#include "gltf_accessor.h"
 
 namespace facet::runtime {
 namespace {
@@ -65,101 +71,35 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
-// One accessor's elements as floats, bounds-checked against its buffer.
-class AccessorReader {
- public:
-  // `allowed`: component types accepted (float, or normalised unsigned integers).
-  static std::optional<AccessorReader> open(const tinygltf::Model& model, int index, std::initializer_list<int> types,
-                                            std::initializer_list<int> components, bool integers,
-                                            const std::string& field, std::string* error) {
-    if (index < 0 || size_t(index) >= model.accessors.size()) {
-      *error = field + ": accessor " + std::to_string(index) + " does not exist";
-      return std::nullopt;
-    }
-    const tinygltf::Accessor& a = model.accessors[size_t(index)];
-    if (std::find(types.begin(), types.end(), a.type) == types.end() ||
-        std::find(components.begin(), components.end(), a.componentType) == components.end() ||
-        (!integers && a.normalized != (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT))) {
-      *error = field + ": accessor " + std::to_string(index) + " has a type or component type this attribute cannot have";
-      return std::nullopt;
-    }
-    if (a.sparse.isSparse) {
-      *error = field + ": sparse accessors are not supported";
-      return std::nullopt;
-    }
-    if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) {
-      *error = field + ": accessor " + std::to_string(index) + " has no buffer view";
-      return std::nullopt;
-    }
-    const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) {
-      *error = field + ": buffer view " + std::to_string(a.bufferView) + " names no buffer";
-      return std::nullopt;
-    }
-    const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
-    AccessorReader r;
-    r.count_ = a.count;
-    r.components_ = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    r.componentType_ = a.componentType;
-    r.componentSize_ = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
-    const int stride = a.ByteStride(view);
-    // Everything in size_t: a declared offset or count near 2^32 must not wrap the check.
-    const size_t elementSize = r.componentSize_ * size_t(r.components_);
-    const size_t start = view.byteOffset + a.byteOffset;
-    const size_t viewEnd = view.byteOffset + view.byteLength;
-    if (stride <= 0 || size_t(stride) < elementSize || viewEnd > data.size() ||
-        (a.count > 0 && start + size_t(stride) * (a.count - 1) + elementSize > viewEnd)) {
-      *error = field + ": accessor " + std::to_string(index) + " reaches past its buffer view or buffer";
-      return std::nullopt;
-    }
-    r.base_ = data.data() + start;
-    r.stride_ = size_t(stride);
-    return r;
-  }
-
-  size_t count() const { return count_; }
-  int components() const { return components_; }
-
-  // Component c of element e: floats as stored, unsigned integers normalised to [0, 1] (or, for
-  // indices, as integers when normalise is false).
-  double get(size_t e, int c, bool normalise = true) const {
-    const unsigned char* p = base_ + e * stride_ + size_t(c) * componentSize_;
-    switch (componentType_) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-        float f;
-        std::memcpy(&f, p, 4);
-        return f;
-      }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalise ? p[0] / 255.0 : p[0];
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t v;
-        std::memcpy(&v, p, 2);
-        return normalise ? v / 65535.0 : v;
-      }
-      default: {  // UNSIGNED_INT, indices only
-        uint32_t v;
-        std::memcpy(&v, p, 4);
-        return v;
-      }
-    }
-  }
-
- private:
-  const unsigned char* base_ = nullptr;
-  size_t stride_ = 0;
-  size_t count_ = 0;
-  int components_ = 0;
-  int componentType_ = 0;
-  size_t componentSize_ = 0;
-};
+using gltf::AccessorReader;
 
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
 constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
 constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 
+// A node's world transform, and what it does to normals and tangents.
+struct Placement {
+  glm::dmat4 world{1.0};
+  glm::dmat3 normalMatrix{1.0};  // inverse transpose of world's upper 3×3
+  bool mirrors = false;          // negative determinant: winding and tangent handedness flip
+};
+
+Placement placementOf(const glm::dmat4& world) {
+  Placement p;
+  p.world = world;
+  p.normalMatrix = glm::inverseTranspose(glm::dmat3(world));
+  p.mirrors = glm::determinant(glm::dmat3(world)) < 0;
+  return p;
+}
+
+glm::dvec3 normalised(const glm::dvec3& v, const glm::dvec3& fallback) {
+  const double length = glm::length(v);
+  return length > 0 && std::isfinite(length) ? v / length : fallback;
+}
+
 bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const std::string& pointer,
-                     Mesh* mesh, std::string* error) {
+                     const Placement& placement, Mesh* mesh, std::string* error) {
   if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) {
     *error = pointer + "/mode: only triangle lists (4) are supported, not " + std::to_string(primitive.mode);
     return false;
@@ -208,11 +148,21 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
   }
   for (size_t v = 0; v < count; ++v) {
     Vertex vertex;
-    for (int c = 0; c < 3; ++c) vertex.position[c] = float(positions->get(v, c));
-    if (normals)
-      for (int c = 0; c < 3; ++c) vertex.normal[c] = float(normals->get(v, c));
-    if (tangents)
-      for (int c = 0; c < 4; ++c) vertex.tangent[c] = float(tangents->get(v, c));
+    const glm::dvec4 position = placement.world * glm::dvec4(positions->get(v, 0), positions->get(v, 1), positions->get(v, 2), 1);
+    for (int c = 0; c < 3; ++c) vertex.position[c] = float(position[c]);
+    if (normals) {
+      const glm::dvec3 n(normals->get(v, 0), normals->get(v, 1), normals->get(v, 2));
+      const glm::dvec3 placed = normalised(placement.normalMatrix * n, n);
+      for (int c = 0; c < 3; ++c) vertex.normal[c] = float(placed[c]);
+    }
+    if (tangents) {
+      // Tangents move with the surface (world's 3×3); w gives the bitangent's side, which a
+      // mirroring transform flips (glTF 2.0 §3.7.2.1: bitangent = cross(normal, tangent.xyz) · w).
+      const glm::dvec3 t(tangents->get(v, 0), tangents->get(v, 1), tangents->get(v, 2));
+      const glm::dvec3 placed = normalised(glm::dmat3(placement.world) * t, t);
+      for (int c = 0; c < 3; ++c) vertex.tangent[c] = float(placed[c]);
+      vertex.tangent[3] = float(tangents->get(v, 3) * (placement.mirrors ? -1.0 : 1.0));
+    }
     if (uv0)
       for (int c = 0; c < 2; ++c) vertex.uv0[c] = float(uv0->get(v, c));
     if (uv1)
@@ -227,12 +177,19 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
     }
     appendVertex(*mesh, vertex);
   }
+  // A mirroring transform turns counter-clockwise triangles clockwise: swap two corners back.
+  const size_t firstIndex = mesh->indices.size();
+  const auto flipWinding = [&] {
+    if (!placement.mirrors) return;
+    for (size_t i = firstIndex; i + 2 < mesh->indices.size(); i += 3) std::swap(mesh->indices[i + 1], mesh->indices[i + 2]);
+  };
   if (primitive.indices < 0) {
     if (count % 3 != 0) {
       *error = attributes + "POSITION: " + std::to_string(count) + " vertices without indices are not whole triangles";
       return false;
     }
     for (size_t v = 0; v < count; ++v) mesh->indices.push_back(uint32_t(firstVertex + v));
+    flipWinding();
     return true;
   }
   auto indices = AccessorReader::open(model, primitive.indices, {TINYGLTF_TYPE_SCALAR}, {kUByte, kUShort, kUInt}, true,
@@ -250,6 +207,137 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
       return false;
     }
     mesh->indices.push_back(uint32_t(firstVertex + size_t(index)));
+  }
+  flipWinding();
+  return true;
+}
+
+// A mesh as one node places it.
+struct Instance {
+  int mesh;
+  Placement placement;
+  std::string from;  // the JSON pointer naming the mesh, for errors
+};
+
+// A small file can place one large mesh many times (or a sparse accessor without data can
+// declare a million vertices): the totals are checked from the accessors' declared counts before
+// anything is read. 4 M vertices are 302 MB of runtime vertices (18 floats each).
+constexpr uint64_t kMaxVertices = uint64_t(1) << 22;
+constexpr uint64_t kMaxIndices = uint64_t(1) << 24;
+
+bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& instances, std::string* error) {
+  uint64_t vertices = 0, indices = 0;
+  const auto declared = [&](int accessor) {
+    return accessor >= 0 && size_t(accessor) < model.accessors.size() ? uint64_t(model.accessors[size_t(accessor)].count) : 0;
+  };
+  for (const Instance& instance : instances) {
+    if (instance.mesh < 0 || size_t(instance.mesh) >= model.meshes.size()) continue;  // appendMesh names it
+    for (const tinygltf::Primitive& p : model.meshes[size_t(instance.mesh)].primitives) {
+      const auto position = p.attributes.find("POSITION");
+      const uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
+      vertices += std::min(count, kMaxVertices + 1);
+      indices += std::min(p.indices >= 0 ? declared(p.indices) : count, kMaxIndices + 1);
+      if (vertices > kMaxVertices || indices > kMaxIndices) {
+        *error = instance.from + ": the file places more than " +
+                 std::to_string(vertices > kMaxVertices ? kMaxVertices : kMaxIndices) +
+                 (vertices > kMaxVertices ? " vertices" : " indices") + " (counting every node's copy)";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool appendMesh(const tinygltf::Model& model, int index, const std::string& from, const Placement& placement,
+                Mesh* mesh, std::string* error) {
+  if (index < 0 || size_t(index) >= model.meshes.size()) {
+    *error = from + ": mesh " + std::to_string(index) + " does not exist";
+    return false;
+  }
+  const tinygltf::Mesh& m = model.meshes[size_t(index)];
+  for (size_t p = 0; p < m.primitives.size(); ++p) {
+    const std::string pointer = "/meshes/" + std::to_string(index) + "/primitives/" + std::to_string(p);
+    if (!appendPrimitive(model, m.primitives[p], pointer, placement, mesh, error)) return false;
+  }
+  return true;
+}
+
+// A node's transform relative to its parent: `matrix` (column-major), else T · R · S.
+bool localTransform(const tinygltf::Node& node, const std::string& pointer, glm::dmat4* out, std::string* error) {
+  glm::dmat4 local(1.0);
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16) {
+      *error = pointer + "/matrix: expected 16 numbers";
+      return false;
+    }
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 4; ++row) local[column][row] = node.matrix[size_t(column * 4 + row)];
+  } else {
+    if ((!node.translation.empty() && node.translation.size() != 3) ||
+        (!node.rotation.empty() && node.rotation.size() != 4) || (!node.scale.empty() && node.scale.size() != 3)) {
+      *error = pointer + ": translation and scale need 3 numbers, rotation 4";
+      return false;
+    }
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
+    if (!node.translation.empty()) t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1);
+    if (!node.rotation.empty()) {
+      // Stored x, y, z, w; glm's constructor takes w first. Unit length by the spec: normalised
+      // here so a rounding in the file does not scale the mesh.
+      const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+      const double length = glm::length(q);
+      if (!(length > 0) || !std::isfinite(length)) {
+        *error = pointer + "/rotation: not a rotation quaternion";
+        return false;
+      }
+      r = glm::mat4_cast(q / length);
+    }
+    if (!node.scale.empty()) s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    local = t * r * s;
+  }
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row)
+      if (!std::isfinite(local[column][row])) {
+        *error = pointer + ": transform is not finite";
+        return false;
+      }
+  *out = local;
+  return true;
+}
+
+// The meshes of the default scene's node trees, each with its node's world transform.
+// Iterative (a file may nest thousands of nodes); each node at most once, as glTF requires
+// (a node reached twice would be a cycle or a shared child).
+bool collectScene(const tinygltf::Model& model, int sceneIndex, std::vector<Instance>* instances, std::string* error) {
+  struct Pending {
+    int node;
+    glm::dmat4 parent;
+    std::string from;
+  };
+  std::vector<bool> visited(model.nodes.size(), false);
+  std::vector<Pending> stack;
+  const std::vector<int>& roots = model.scenes[size_t(sceneIndex)].nodes;
+  const std::string scenePointer = "/scenes/" + std::to_string(sceneIndex) + "/nodes";
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, glm::dmat4(1.0), scenePointer});
+  while (!stack.empty()) {
+    Pending pending = std::move(stack.back());
+    stack.pop_back();
+    if (pending.node < 0 || size_t(pending.node) >= model.nodes.size()) {
+      *error = pending.from + ": node " + std::to_string(pending.node) + " does not exist";
+      return false;
+    }
+    const std::string pointer = "/nodes/" + std::to_string(pending.node);
+    if (visited[size_t(pending.node)]) {
+      *error = pointer + ": reached twice (the node hierarchy must be a tree)";
+      return false;
+    }
+    visited[size_t(pending.node)] = true;
+    const tinygltf::Node& node = model.nodes[size_t(pending.node)];
+    glm::dmat4 local;
+    if (!localTransform(node, pointer, &local, error)) return false;
+    const glm::dmat4 world = pending.parent * local;
+    if (node.mesh >= 0) instances->push_back({node.mesh, placementOf(world), pointer + "/mesh"});
+    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+      stack.push_back({*it, world, pointer + "/children"});
   }
   return true;
 }
@@ -287,18 +375,30 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error) {
     return std::nullopt;
   }
   Mesh mesh;
-  for (size_t m = 0; m < model.meshes.size(); ++m) {
-    for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
-      const std::string pointer = "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p);
-      std::string why;
-      if (!appendPrimitive(model, model.meshes[m].primitives[p], pointer, &mesh, &why)) {
-        *error = path + ": error: " + why;
-        return std::nullopt;
-      }
-    }
+  std::string why;
+  // The scene the file asks for (glTF: `scene`, else the first); a file without scenes is a
+  // library of meshes, each drawn as stored.
+  if (model.defaultScene >= 0 && size_t(model.defaultScene) >= model.scenes.size()) {
+    *error = path + ": error: /scene: scene " + std::to_string(model.defaultScene) + " does not exist";
+    return std::nullopt;
+  }
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : model.scenes.empty() ? -1 : 0;
+  std::vector<Instance> instances;
+  bool ok = true;
+  if (scene >= 0) {
+    ok = collectScene(model, scene, &instances, &why);
+  } else {
+    for (size_t m = 0; m < model.meshes.size(); ++m) instances.push_back({int(m), Placement{}, "/meshes"});
+  }
+  ok = ok && checkTotals(model, instances, &why);
+  for (size_t i = 0; ok && i < instances.size(); ++i)
+    ok = appendMesh(model, instances[i].mesh, instances[i].from, instances[i].placement, &mesh, &why);
+  if (!ok) {
+    *error = path + ": error: " + why;
+    return std::nullopt;
   }
   if (mesh.indices.empty()) {
-    *error = path + ": error: /meshes: no triangles";
+    *error = path + ": error: " + (scene >= 0 ? "/scenes/" + std::to_string(scene) + ": no triangles" : "/meshes: no triangles");
     return std::nullopt;
   }
   return mesh;

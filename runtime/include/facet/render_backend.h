@@ -161,20 +161,16 @@ struct VulkanOptions {
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
 };
 
+// The headless context createGlBackend(const GlOptions&, ...) creates for tests, the viewer and
+// eval (facet_runtime_gl_headless). An app renders on its own context instead: gl_backend.h.
 enum class GlContextKind {
   Auto,     // EGL GLES when available, else OSMesa
   EglGles,  // a real OpenGL ES 3.2 context, EGL surfaceless (Mesa)
   OsMesa,   // an OpenGL core context on OSMesa running the "#version 300 es" shaders
-  // The app's OpenGL ES 3.x context, current on the calling thread (EGL) when the backend is
-  // created, and again whenever it renders or is destroyed: the backend never switches contexts,
-  // never destroys it, and leaves its debug callback alone (validationErrors() stays empty).
-  // GL entry points still come from libOSMesa, which dispatches to Mesa's current context: Mesa
-  // drivers only, for now.
-  AppCurrent,
 };
 
 struct GlOptions {
-  GlContextKind context = GlContextKind::Auto;
+  GlContextKind context = GlContextKind::Auto;  // headless creation only
   // Auto picks Merged when the context offers GL_EXT_shader_framebuffer_fetch: one framebuffer,
   // HDR colour 0 and LDR colour 1, the post pass reading HDR by framebuffer fetch, then HDR and
   // depth invalidated. Separate: post samples the HDR texture in a second framebuffer.
@@ -186,6 +182,8 @@ struct GlOptions {
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
 std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options, std::string* error);
+// On a headless context of its own (options.context): defined by facet_runtime_gl_headless, which
+// links EGL and OSMesa. On the app's context: gl_backend.h (facet_runtime_gl alone).
 std::unique_ptr<RenderBackend> createGlBackend(const GlOptions& options, std::string* error);
 std::unique_ptr<RenderBackend> createGlBackend(std::string* error);  // default GlOptions
 
