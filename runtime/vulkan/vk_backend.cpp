@@ -14,6 +14,7 @@
 
 #include "facet/render_backend.h"
 #include "facet/vulkan_backend.h"
+#include "vk_app_images.h"
 #include "vk_check.h"
 #include "vk_commands.h"
 #include "vk_context.h"
@@ -21,6 +22,7 @@
 #include "vk_frame.h"
 #include "vk_pipeline.h"
 #include "vk_resources.h"
+#include "vk_retire.h"
 #include "vk_targets.h"
 #include "vk_textures.h"
 #include "vk_uniform_blocks.h"
@@ -56,6 +58,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
+  void forgetImage(VkImage image) override { appImages_.forget(image); }
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
     return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
@@ -72,6 +75,8 @@ class VulkanBackend final : public VulkanRenderer {
   bool prepareTextures(const FrameDesc& frame, std::string* error);
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result, std::string* error);
+  bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
+  TargetConfig targetConfig() const;
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
@@ -95,6 +100,9 @@ class VulkanBackend final : public VulkanRenderer {
 
   VkRenderPass forwardPass_ = VK_NULL_HANDLE;  // merged path: the one render pass
   VkRenderPass postPass_ = VK_NULL_HANDLE;     // separate path only
+  // The same passes with the app's image as LDR (vk_pipeline.h, kAppImageLdrLayouts): the
+  // merged pass, or the separate path's post pass. Compatible with the ones above.
+  VkRenderPass appImagePass_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout forwardSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout postSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout textureSetLayout_ = VK_NULL_HANDLE;
@@ -124,6 +132,11 @@ class VulkanBackend final : public VulkanRenderer {
   HostBuffer arena_;
 
   RenderTargets targets_;
+  // Views and framebuffers of the app's images the post pass writes directly.
+  AppImageCache appImages_;
+  // What frames in flight may still use; see vk_retire.h.
+  RetireQueue retire_;
+  uint64_t frameNumber_ = 0;
   // Keyed by program and the fixed-function state a draw asks for (blending, culling).
   std::map<std::tuple<const ShaderProgram*, Blending, bool>, CachedPipeline> pipelines_;
 
@@ -139,6 +152,8 @@ VulkanBackend::~VulkanBackend() {
   for (auto& entry : pipelines_) {
     if (entry.second.pipeline) vkDestroyPipeline(device, entry.second.pipeline, nullptr);
   }
+  retire_.releaseAll();
+  appImages_.destroy();
   textures_.destroy();
   meshes_.destroy();
   materialBlocks_.destroy();
@@ -155,6 +170,7 @@ VulkanBackend::~VulkanBackend() {
   if (forwardSetLayout_) vkDestroyDescriptorSetLayout(device, forwardSetLayout_, nullptr);
   if (textureSetLayout_) vkDestroyDescriptorSetLayout(device, textureSetLayout_, nullptr);
   if (postPass_) vkDestroyRenderPass(device, postPass_, nullptr);
+  if (appImagePass_) vkDestroyRenderPass(device, appImagePass_, nullptr);
   if (forwardPass_) vkDestroyRenderPass(device, forwardPass_, nullptr);
   if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (fence_) vkDestroyFence(device, fence_, nullptr);
@@ -210,9 +226,12 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, &forwardPass_, error)
+      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_, error) &&
+                   createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, kAppImageLdrLayouts,
+                                          &appImagePass_, error)
              : createForwardRenderPass(device, hdrOps_, depthOps_, &forwardPass_, error) &&
-                   createPostRenderPass(device, ldrOps_, &postPass_, error);
+                   createPostRenderPass(device, ldrOps_, LdrLayouts{}, &postPass_, error) &&
+                   createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
@@ -222,6 +241,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
   if (!textures_.init(&ctx_, error)) return false;
+  appImages_.init(device, &retire_);
   meshes_.init(&ctx_);
   materialBlocks_.init(&ctx_);
 
@@ -301,12 +321,7 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
 bool VulkanBackend::renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) {
   std::string scratch;
   if (!error) error = &scratch;
-  if (!target.image || target.width != frame.width || target.height != frame.height ||
-      (target.format != VK_FORMAT_R8G8B8A8_UNORM && target.format != VK_FORMAT_R8G8B8A8_SRGB)) {
-    *error = "renderToImage: the app's image must be RGBA8 (UNORM or SRGB) and the frame's size " +
-             std::to_string(frame.width) + "x" + std::to_string(frame.height);
-    return false;
-  }
+  if (!checkAppImage(frame, target, "renderToImage", error)) return false;
   return renderFrame(frame, &target, nullptr, error);
 }
 
@@ -319,19 +334,39 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
   }
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
+    retire_.beginFrame(++frameNumber_);
     std::vector<DrawSlot> slots;
-    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_ && result, forwardPass_, postPass_,
-                               forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
+    FrameOutput output;
+    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_, postSet_,
+                               timestamps_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
         !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
-        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots, appImage, error)) {
+        !outputFor(appImage, &output, error)) {
       return false;
     }
+    VkCommandBuffer cmd = commandBuffer_;
+    VkCommandBufferBeginInfo beginInfo{};
+    beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error) ||
+        !check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) {
+      return false;
+    }
+    recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
+    if (!appImage) {
+      recordReadback(cmd, objects.merged, readBackHdr_, targets_);
+    } else if (!output.directImage) {
+      recordCopyToAppImage(cmd, targets_, *appImage);
+    }
+    if (!check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error)) return false;
     if (!submitAndWait(error)) {
       deviceFailure_ = *error;
       return false;
     }
+    // Waited for: this frame and everything submitted before it on the queue has finished.
+    retire_.releaseAll();
+    appImages_.evictUnused(frameNumber_);
     if (result) {
       readBack(result);
       readTimes(result);
@@ -343,9 +378,24 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
   }
 }
 
-bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
-  if (targets_.width == width && targets_.height == height) return true;
-  destroyRenderTargets(ctx_.device, &targets_);  // idle: the previous frame was waited for
+// The backend's own LDR target (render, and renderToImage into an image it cannot render to),
+// or the app's image as the LDR attachment.
+bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std::string* error) {
+  const bool merged = path_ == PostPath::Merged;
+  output->forwardPass = forwardPass_;
+  output->postPass = postPass_;
+  output->framebuffers = {targets_.forwardFramebuffer, targets_.postFramebuffer};
+  if (!appImage || !rendersDirectly(*appImage)) return true;
+  output->directImage = appImage;
+  if (merged) {
+    output->forwardPass = appImagePass_;
+  } else {
+    output->postPass = appImagePass_;
+  }
+  return appImages_.framebuffersFor(*appImage, targets_, targetConfig(), frameNumber_, &output->framebuffers, error);
+}
+
+TargetConfig VulkanBackend::targetConfig() const {
   TargetConfig config;
   config.merged = path_ == PostPath::Merged;
   config.readBackHdr = readBackHdr_;
@@ -353,6 +403,19 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
   config.depthTransient = depthTransient_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
+  return config;
+}
+
+bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
+  if (targets_.width == width && targets_.height == height) return true;
+  // Frames in flight may still render into the old targets.
+  appImages_.dropAll();
+  if (targets_.width != 0) {
+    VkDevice device = ctx_.device;
+    retire_.retire([device, old = targets_]() mutable { destroyRenderTargets(device, &old); });
+    targets_ = RenderTargets{};
+  }
+  const TargetConfig config = targetConfig();
   if (!createRenderTargets(ctx_, width, height, config, &targets_, error)) return false;
   // An input attachment descriptor ignores the sampler.
   VkDescriptorImageInfo imageInfo{config.merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,

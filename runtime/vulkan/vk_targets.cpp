@@ -7,7 +7,6 @@
 #include "vk_pipeline.h"
 
 namespace facet::runtime::vulkan {
-namespace {
 
 bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
                        uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error) {
@@ -25,8 +24,6 @@ bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* vi
   }
   return true;
 }
-
-}  // namespace
 
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
                          const TargetConfig& config, RenderTargets* targets, std::string* error) {

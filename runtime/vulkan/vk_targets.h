@@ -35,6 +35,10 @@ struct RenderTargets {
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom
 };
 
+// A framebuffer of `count` views for `pass` (or any render pass compatible with it).
+bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
+                       uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error);
+
 // On failure returns false and leaves *targets destroyed (default-constructed).
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
                          const TargetConfig& config, RenderTargets* targets, std::string* error);

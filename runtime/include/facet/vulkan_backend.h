@@ -25,9 +25,19 @@ struct AppDevice {
   VkQueue queue = VK_NULL_HANDLE;
 };
 
-// An image of the app's that a frame's tone-mapped, sRGB-encoded result is copied into:
+// An image of the app's that a frame's tone-mapped, sRGB-encoded result goes into:
 // VK_FORMAT_R8G8B8A8_UNORM (bytes as encoded) or _SRGB (the same bytes, decoded when sampled),
-// the frame's size, one mip level and layer, created with VK_IMAGE_USAGE_TRANSFER_DST_BIT.
+// the frame's size, one mip level and layer. Describe it as it was created:
+// - `usage` with VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT: the post pass writes the image itself (its
+//   LDR attachment is a view of it; no copy). An _SRGB image also needs `createFlags` with
+//   VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT, because the post shader writes encoded bytes through a
+//   UNORM view (an _SRGB view would encode them twice).
+// - otherwise `usage` must have VK_IMAGE_USAGE_TRANSFER_DST_BIT: the backend renders into its
+//   own LDR target and copies it in (one extra RGBA8 copy per frame). Kept for images an app
+//   cannot make renderable (an _SRGB swapchain without a mutable format, a storage-only image).
+// The backend keeps a view and framebuffer per image it rendered into directly, released when
+// the image goes unused for kEvictAfterFrames frames (frame_eviction.h), or by forgetImage(),
+// which an app must call before destroying such an image (a new image may get the old handle).
 struct AppImage {
   VkImage image = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
@@ -35,14 +45,19 @@ struct AppImage {
   uint32_t height = 0;
   VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // its layout now (UNDEFINED: contents discarded)
   VkImageLayout newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;  // left in this layout
+  VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // as created
+  VkImageCreateFlags createFlags = 0;                         // as created
 };
 
 class VulkanRenderer : public RenderBackend {
  public:
   // Renders the frame into the app's image instead of reading it back: FrameResult's pixels
-  // are not filled. Synchronous like render(): the copy has finished when this returns, and the
+  // are not filled. Synchronous like render(): the frame has finished when this returns, and the
   // image is in target.newLayout, visible to all later commands on the device.
   virtual bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) = 0;
+  // Releases what the backend keeps for `image` (see AppImage). The app calls it before
+  // destroying an image it rendered into, once no submitted frame uses the image any more.
+  virtual void forgetImage(VkImage image) = 0;
 };
 
 // nullptr with *error when the device cannot run Facet. VulkanOptions::validation is ignored:
