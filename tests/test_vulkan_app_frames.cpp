@@ -3,6 +3,7 @@
 // with validation and synchronization validation on the app's instance; an error fails it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -130,6 +131,103 @@ TEST(VulkanAppImage, ImageWithoutAttachmentOrTransferUsageIsRefused) {
   EXPECT_FALSE(f.renderer->renderToImage(frame, target, &error));
   EXPECT_NE(error.find("MUTABLE_FORMAT"), std::string::npos) << error;
   f.expectNoValidationErrors();
+}
+
+// What changes between the recorded frames: the small triangle's colour (a persistent material
+// block, as a material instance's) and its mesh (edited in place). Frame i's state.
+struct ChangingScene {
+  TestScene scene;
+  UniformBlock block;
+  void apply(int i) {
+    const Rgba colours[3] = {kRed, {0.1f, 0.2f, 0.9f, 1.0f}, {3.0f, 2.0f, 0.0f, 1.0f}};
+    block.bytes = materialBytes(colours[i % 3]);
+    block.generation = nextUniformGeneration();
+    const float x = i % 2 ? 0.9f : -0.5f;  // the right-angle vertex moves
+    scene.small.vertices[0] = x;
+  }
+  FrameDesc frame() const {
+    FrameDesc f = scene.frame(kRed);
+    f.draws[1].materialParams.clear();
+    f.draws[1].materialBlock = &block;
+    return f;
+  }
+};
+
+// Frames recorded into the app's command buffers, two in flight as the app's fences allow
+// (VulkanOptions::framesInFlight = 2), with the material block and a mesh changing every frame:
+// each image equals what render() gives for that frame's state, on both render paths, with
+// validation and synchronization validation clean.
+TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
+  constexpr int kFrames = 6;
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    AppFixture f(path, /*readBackHdr=*/false);
+    ASSERT_NE(f.renderer, nullptr);
+    ChangingScene changing;
+    std::vector<std::vector<uint8_t>> want;
+    {
+      std::string error;
+      VulkanOptions options;
+      options.postPath = path;
+      auto reference = createVulkanBackend(f.app.appDevice(), options, &error);
+      ASSERT_NE(reference, nullptr) << error;
+      for (int i = 0; i < kFrames; ++i) {
+        changing.apply(i);
+        FrameResult result;
+        ASSERT_TRUE(reference->render(changing.frame(), &result, &error)) << error;
+        want.push_back(result.ldr);
+      }
+    }
+    const FrameDesc shape = changing.frame();
+    VkCommandBuffer cmds[2] = {f.app.allocateCommandBuffer(), f.app.allocateCommandBuffer()};
+    VkFence fences[2] = {f.app.createFence(), f.app.createFence()};
+    std::vector<VkImage> images;
+    for (int i = 0; i < kFrames; ++i) {
+      const int ring = i % 2;
+      if (i >= 2) {  // the app's side of the rule: frame i - 2 has finished before frame i is recorded
+        ASSERT_EQ(vkWaitForFences(f.app.device, 1, &fences[ring], VK_TRUE, UINT64_MAX), VK_SUCCESS);
+        ASSERT_EQ(vkResetFences(f.app.device, 1, &fences[ring]), VK_SUCCESS);
+      }
+      changing.apply(i);
+      const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+      images.push_back(f.app.createImage(VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height, usage));
+      ASSERT_NE(images.back(), VK_NULL_HANDLE);
+      const AppImage target{images.back(), VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height,
+                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, usage};
+      ASSERT_EQ(vkResetCommandBuffer(cmds[ring], 0), VK_SUCCESS);
+      VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+      begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+      ASSERT_EQ(vkBeginCommandBuffer(cmds[ring], &begin), VK_SUCCESS);
+      std::string error;
+      ASSERT_TRUE(f.renderer->recordFrame(changing.frame(), target, cmds[ring], &error)) << error;
+      ASSERT_EQ(vkEndCommandBuffer(cmds[ring]), VK_SUCCESS);
+      ASSERT_TRUE(f.app.submit(cmds[ring], fences[ring]));
+    }
+    ASSERT_EQ(vkWaitForFences(f.app.device, 2, fences, VK_TRUE, UINT64_MAX), VK_SUCCESS);
+    for (int i = 0; i < kFrames; ++i) {
+      SCOPED_TRACE("frame " + std::to_string(i));
+      expectSameImage(f.app.read(images[size_t(i)], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shape.width, shape.height),
+                      want[size_t(i)], "recorded frame");
+    }
+    // The frames differ from each other, so a frame showing another's state would be caught.
+    EXPECT_NE(want[0], want[1]);
+    EXPECT_NE(want[1], want[2]);
+    f.expectNoValidationErrors();
+  }
+}
+
+TEST(VulkanAppFrames, NullCommandBufferIsAnError) {
+  AppFixture f;
+  ASSERT_NE(f.renderer, nullptr);
+  TestScene scene;
+  const FrameDesc frame = scene.frame(kRed);
+  VkImage image = f.app.createImage(VK_FORMAT_R8G8B8A8_UNORM, frame.width, frame.height,
+                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  const AppImage target{image, VK_FORMAT_R8G8B8A8_UNORM, frame.width, frame.height, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT};
+  std::string error;
+  EXPECT_FALSE(f.renderer->recordFrame(frame, target, VK_NULL_HANDLE, &error));
+  EXPECT_NE(error.find("command buffer is null"), std::string::npos) << error;
 }
 
 }  // namespace

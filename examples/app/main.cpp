@@ -1,6 +1,7 @@
 // An engine's view of Facet: the app owns the Vulkan instance and device, loads one material
 // package, makes two instances of it with different parameters, renders a few frames with the
-// runtime on its device into its own image, and writes the last one as PNG. It links facet_runtime_core and
+// runtime on its device into its own image (the first frames synchronously, the last ones recorded
+// into the app's own command buffers, two in flight), and writes the last one as PNG. It links facet_runtime_core and
 // facet_runtime_vulkan only: no GL, no OSMesa, no scene reader (ctest example_app_link_weight).
 //
 //   facet-app-example <red_plastic.matpkg> <out.png>
@@ -156,6 +157,9 @@ uint32_t memoryType(VkPhysicalDevice physicalDevice, uint32_t typeBits, VkMemory
   return UINT32_MAX;
 }
 
+// COLOR_ATTACHMENT: the runtime's post pass writes the image itself; TRANSFER_SRC: read() below.
+constexpr VkImageUsageFlags kImageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+
 // The engine's own render target (its swapchain image, say) and, to write the PNG, the engine's
 // own copy of it into host memory: the runtime renders into the image and reads nothing back.
 struct AppTarget {
@@ -165,6 +169,8 @@ struct AppTarget {
   VkBuffer buffer = VK_NULL_HANDLE;
   VkDeviceMemory bufferMemory = VK_NULL_HANDLE;
   VkCommandPool pool = VK_NULL_HANDLE;
+  std::array<VkCommandBuffer, 2> frameCommands{};  // the engine's per-frame command buffers
+  std::array<VkFence, 2> frameFences{};
 
   bool create(const AppVulkan& app, uint32_t width, uint32_t height, std::string* error) {
     vk = &app;
@@ -176,7 +182,7 @@ struct AppTarget {
     info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    info.usage = kImageUsage;
     VkBufferCreateInfo bufferInfo{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     bufferInfo.size = VkDeviceSize(width) * height * 4;
     bufferInfo.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -206,14 +212,58 @@ struct AppTarget {
     }
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.queueFamilyIndex = app.queueFamily;
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     if (vkCreateCommandPool(app.device, &poolInfo, nullptr, &pool) != VK_SUCCESS) {
       *error = "cannot create the app's command pool";
+      return false;
+    }
+    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocInfo.commandPool = pool;
+    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocInfo.commandBufferCount = 2;
+    if (vkAllocateCommandBuffers(app.device, &allocInfo, frameCommands.data()) != VK_SUCCESS) {
+      *error = "cannot allocate the app's command buffers";
+      return false;
+    }
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // as if an earlier frame had finished
+    for (VkFence& fence : frameFences) {
+      if (vkCreateFence(app.device, &fenceInfo, nullptr, &fence) != VK_SUCCESS) {
+        *error = "cannot create the app's fences";
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // The engine's frame loop: wait until the frame that last used this command buffer has
+  // finished (VulkanOptions::framesInFlight is 2, as this ring), record the runtime's frame into
+  // it, submit it. The runtime submits nothing for it.
+  bool recordAndSubmit(VulkanRenderer& renderer, const FrameDesc& frame, const AppImage& into, int index,
+                       std::string* error) {
+    const size_t ring = size_t(index) % frameCommands.size();
+    VkCommandBuffer cmd = frameCommands[ring];
+    if (vkWaitForFences(vk->device, 1, &frameFences[ring], VK_TRUE, UINT64_MAX) != VK_SUCCESS ||
+        vkResetFences(vk->device, 1, &frameFences[ring]) != VK_SUCCESS || vkResetCommandBuffer(cmd, 0) != VK_SUCCESS) {
+      *error = "the app's frame fence failed";
+      return false;
+    }
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &begin);
+    if (!renderer.recordFrame(frame, into, cmd, error)) return false;
+    vkEndCommandBuffer(cmd);
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    if (vkQueueSubmit(vk->queue, 1, &submit, frameFences[ring]) != VK_SUCCESS) {
+      *error = "the app's frame submission failed";
       return false;
     }
     return true;
   }
 
-  // The image (left in TRANSFER_SRC_OPTIMAL by renderToImage) into host memory, rows top first.
+  // The image (left in TRANSFER_SRC_OPTIMAL by the last frame) into host memory, rows top first.
   bool read(uint32_t width, uint32_t height, std::vector<uint8_t>* rgba, std::string* error) {
     VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocInfo.commandPool = pool;
@@ -257,6 +307,9 @@ struct AppTarget {
 
   ~AppTarget() {
     if (!vk) return;
+    vkDeviceWaitIdle(vk->device);
+    for (VkFence fence : frameFences)
+      if (fence) vkDestroyFence(vk->device, fence, nullptr);
     if (pool) vkDestroyCommandPool(vk->device, pool, nullptr);
     if (buffer) vkDestroyBuffer(vk->device, buffer, nullptr);
     if (bufferMemory) vkFreeMemory(vk->device, bufferMemory, nullptr);
@@ -359,13 +412,17 @@ int main(int argc, char** argv) {
     AppTarget target;
     if (!target.create(vk, width, height, &error)) return fail(error);
     AppImage image{target.image, VK_FORMAT_R8G8B8A8_UNORM, width, height, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kImageUsage};
     const int kFrames = 4;
     for (int i = 0; i < kFrames; ++i) {
       // An animated parameter: only `rough`'s block is uploaded again each frame.
       if (!rough->setParameter(*roughness, 0.55f + 0.05f * float(i), &error)) return fail(error);
       frame.draws = {glossy->draw(sphere, modelAt(-1.15f)), rough->draw(sphere, modelAt(1.15f))};
-      if (!renderer->renderToImage(frame, image, &error)) return fail(error);
+      // The first two frames the runtime submits and waits for; the last two go into the app's
+      // command buffers, the second recorded while the first may still run.
+      const bool ok = i < 2 ? renderer->renderToImage(frame, image, &error)
+                            : target.recordAndSubmit(*renderer, frame, image, i, &error);
+      if (!ok) return fail(error);
       image.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;  // where the last frame left it
     }
     const ResourceCounts counts = renderer->resources();

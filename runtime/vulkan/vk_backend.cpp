@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "facet/frame_eviction.h"
 #include "facet/render_backend.h"
 #include "facet/vulkan_backend.h"
 #include "vk_app_images.h"
@@ -31,6 +32,9 @@ namespace facet::runtime {
 namespace {
 
 using namespace vulkan;
+
+// A frame in flight may use what a cache evicts only if it is younger than the eviction age.
+static_assert(kMaxFramesInFlight <= kEvictAfterFrames, "evicted entries must not be in use by frames in flight");
 
 // A lavapipe frame under ASan and validation takes well under a second; a minute means hung.
 constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
@@ -58,6 +62,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
+  bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd, std::string* error) override;
   void forgetImage(VkImage image) override { appImages_.forget(image); }
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
@@ -75,6 +80,9 @@ class VulkanBackend final : public VulkanRenderer {
   bool prepareTextures(const FrameDesc& frame, std::string* error);
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result, std::string* error);
+  bool prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots,
+                    FrameOutput* output, std::string* error);
+  void writePostSet();
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
   bool submitAndWait(std::string* error);
@@ -89,6 +97,7 @@ class VulkanBackend final : public VulkanRenderer {
   PostPath path_ = PostPath::Merged;
   const PostShaders* post_ = nullptr;  // the post variant VulkanOptions::post chose
   bool readBackHdr_ = true;
+  uint32_t framesInFlight_ = 2;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
@@ -111,14 +120,21 @@ class VulkanBackend final : public VulkanRenderer {
   VkPipeline postPipeline_ = VK_NULL_HANDLE;
   VkSampler hdrSampler_ = VK_NULL_HANDLE;
 
-  // The post pass's one descriptor set, rewritten whenever the HDR image is recreated.
+  // What one frame writes and the next frames in flight must not: its uniforms, its draw
+  // descriptor sets and the post pass's set. Frame n uses slots_[n % framesInFlight]; when it is
+  // prepared, the frame that used the slot before has finished (render() waits for every frame;
+  // recordFrame's caller promises it, vulkan_backend.h), so the slot is rewritten in place.
+  struct FrameSlot {
+    HostBuffer arena;  // uniforms of one frame (vk_frame.h's layout), grown when needed
+    // Draw descriptor sets (two per draw: uniforms and textures): reset every use, recreated
+    // larger when needed. Capacity counts draws.
+    VkDescriptorPool drawPool = VK_NULL_HANDLE;
+    uint32_t drawPoolCapacity = 0;
+    VkDescriptorSet postSet = VK_NULL_HANDLE;  // from postPool_, written every use (HDR view)
+  };
+  std::vector<FrameSlot> slots_;
+  FrameSlot* slot_ = nullptr;  // the frame being prepared
   VkDescriptorPool postPool_ = VK_NULL_HANDLE;
-  VkDescriptorSet postSet_ = VK_NULL_HANDLE;
-
-  // Per-frame draw descriptor sets (two per draw: uniforms and textures): reset every frame,
-  // recreated larger when needed. Capacity counts draws.
-  VkDescriptorPool drawPool_ = VK_NULL_HANDLE;
-  uint32_t drawPoolCapacity_ = 0;
 
   // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
   TextureCache textures_;
@@ -129,7 +145,6 @@ class VulkanBackend final : public VulkanRenderer {
   UniformBlockCache materialBlocks_;
 
   // Uniforms of one frame, rewritten every frame, grown when needed.
-  HostBuffer arena_;
 
   RenderTargets targets_;
   // Views and framebuffers of the app's images the post pass writes directly.
@@ -158,9 +173,11 @@ VulkanBackend::~VulkanBackend() {
   meshes_.destroy();
   materialBlocks_.destroy();
   destroyRenderTargets(device, &targets_);
-  destroyHostBuffer(device, &arena_);
   // Destroying a pool frees its sets.
-  if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
+  for (FrameSlot& slot : slots_) {
+    destroyHostBuffer(device, &slot.arena);
+    if (slot.drawPool) vkDestroyDescriptorPool(device, slot.drawPool, nullptr);
+  }
   if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
   if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
   if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
@@ -193,6 +210,12 @@ bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options
 bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* error) {
   path_ = options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged;
   readBackHdr_ = options.readBackHdr;
+  if (options.framesInFlight < 1 || options.framesInFlight > kMaxFramesInFlight) {
+    *error = "VulkanOptions::framesInFlight must be 1.." + std::to_string(kMaxFramesInFlight) + ", not " +
+             std::to_string(options.framesInFlight);
+    return false;
+  }
+  framesInFlight_ = options.framesInFlight;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
   const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
@@ -240,10 +263,10 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
       !createPipelineLayout(device, {postSetLayout_}, &postLayout_, error)) {
     return false;
   }
-  if (!textures_.init(&ctx_, error)) return false;
+  if (!textures_.init(&ctx_, &retire_, error)) return false;
   appImages_.init(device, &retire_);
-  meshes_.init(&ctx_);
-  materialBlocks_.init(&ctx_);
+  meshes_.init(&ctx_, &retire_);
+  materialBlocks_.init(&ctx_, &retire_);
 
   if (ctx_.timestampValidBits > 0) {
     VkQueryPoolCreateInfo queryInfo{};
@@ -284,10 +307,12 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
 
-  VkDescriptorPoolSize postPoolSize{hdrType, 1};
+  slots_.resize(framesInFlight_);
+  const auto slotCount = static_cast<uint32_t>(slots_.size());
+  VkDescriptorPoolSize postPoolSize{hdrType, slotCount};
   VkDescriptorPoolCreateInfo postPoolInfo{};
   postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-  postPoolInfo.maxSets = 1;
+  postPoolInfo.maxSets = slotCount;
   postPoolInfo.poolSizeCount = 1;
   postPoolInfo.pPoolSizes = &postPoolSize;
   if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_),
@@ -295,16 +320,18 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     postPool_ = VK_NULL_HANDLE;
     return false;
   }
+  const std::vector<VkDescriptorSetLayout> postLayouts(slotCount, postSetLayout_);
+  std::vector<VkDescriptorSet> postSets(slotCount);
   VkDescriptorSetAllocateInfo setInfo{};
   setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   setInfo.descriptorPool = postPool_;
-  setInfo.descriptorSetCount = 1;
-  setInfo.pSetLayouts = &postSetLayout_;
-  if (!check(vkAllocateDescriptorSets(device, &setInfo, &postSet_), "vkAllocateDescriptorSets",
+  setInfo.descriptorSetCount = slotCount;
+  setInfo.pSetLayouts = postLayouts.data();
+  if (!check(vkAllocateDescriptorSets(device, &setInfo, postSets.data()), "vkAllocateDescriptorSets",
              error)) {
-    postSet_ = VK_NULL_HANDLE;
     return false;
   }
+  for (uint32_t i = 0; i < slotCount; ++i) slots_[i].postSet = postSets[i];
   return true;
 }
 
@@ -325,6 +352,55 @@ bool VulkanBackend::renderToImage(const FrameDesc& frame, const AppImage& target
   return renderFrame(frame, &target, nullptr, error);
 }
 
+bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd,
+                                std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  if (!cmd) {
+    *error = "recordFrame: the command buffer is null";
+    return false;
+  }
+  if (!checkAppImage(frame, target, "recordFrame", error)) return false;
+  if (!deviceFailure_.empty()) {
+    *error = "Vulkan backend unusable after an earlier failure: " + deviceFailure_;
+    return false;
+  }
+  try {
+    // The caller's promise: frame frameNumber_ + 1 - framesInFlight_ and all before it have
+    // finished, so what was retired while preparing them is free (vk_retire.h).
+    const uint64_t next = frameNumber_ + 1;
+    if (next > framesInFlight_) retire_.releaseThrough(next - framesInFlight_);
+    std::vector<DrawSlot> slots;
+    FrameOutput output;
+    if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
+    // Not timed: the query pool would be shared by frames in flight.
+    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
+                               slot_->postSet, VK_NULL_HANDLE};
+    recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
+    if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
+    appImages_.evictUnused(frameNumber_);
+    return true;
+  } catch (const std::exception& e) {
+    *error = std::string("Vulkan backend: ") + e.what();
+    return false;
+  }
+}
+
+// Everything before recording: the frame checked, the targets, pipelines, meshes, uniforms,
+// textures and descriptor sets ready in this frame's slot, and where the passes write.
+bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots,
+                                 FrameOutput* output, std::string* error) {
+  retire_.beginFrame(++frameNumber_);
+  slot_ = &slots_[frameNumber_ % slots_.size()];
+  if (!checkFrame(frame, ctx_.properties.limits, error) || !ensureTargets(frame.width, frame.height, error) ||
+      !uploadFrame(frame, slots, error) || !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) ||
+      !outputFor(appImage, output, error)) {
+    return false;
+  }
+  writePostSet();
+  return true;
+}
+
 // result: read back into (render); null when the frame goes into appImage (renderToImage).
 bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result,
                                 std::string* error) {
@@ -334,17 +410,11 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
   }
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
-    retire_.beginFrame(++frameNumber_);
     std::vector<DrawSlot> slots;
     FrameOutput output;
-    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_, postSet_,
-                               timestamps_};
-    if (!checkFrame(frame, ctx_.properties.limits, error) ||
-        !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
-        !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
-        !outputFor(appImage, &output, error)) {
-      return false;
-    }
+    if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
+    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
+                               slot_->postSet, timestamps_};
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -416,20 +486,23 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
     targets_ = RenderTargets{};
   }
   const TargetConfig config = targetConfig();
-  if (!createRenderTargets(ctx_, width, height, config, &targets_, error)) return false;
+  return createRenderTargets(ctx_, width, height, config, &targets_, error);
+}
+
+// The post pass reads this frame's HDR image through the slot's set.
+void VulkanBackend::writePostSet() {
+  const bool merged = path_ == PostPath::Merged;
   // An input attachment descriptor ignores the sampler.
-  VkDescriptorImageInfo imageInfo{config.merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,
+  VkDescriptorImageInfo imageInfo{merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet write{};
   write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-  write.dstSet = postSet_;
+  write.dstSet = slot_->postSet;
   write.dstBinding = abi::kPostHdrBinding;
   write.descriptorCount = 1;
-  write.descriptorType = config.merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT
-                                       : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.descriptorType = merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &imageInfo;
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
-  return true;
 }
 
 bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out,
@@ -443,8 +516,9 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
       *out = cached.pipeline;
       return true;
     }
-    // Another program now lives at this address. Safe to destroy: the device is idle.
-    vkDestroyPipeline(ctx_.device, cached.pipeline, nullptr);
+    // Another program now lives at this address; frames in flight may still draw with it.
+    VkDevice device = ctx_.device;
+    retire_.retire([device, pipeline = cached.pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
     pipelines_.erase(found);
   }
   PipelineDesc desc;
@@ -464,12 +538,13 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
 }
 
 bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
-  if (arena_.buffer && arena_.size >= size) return true;
-  destroyHostBuffer(ctx_.device, &arena_);  // idle: the previous frame was waited for
+  HostBuffer& arena = slot_->arena;
+  if (arena.buffer && arena.size >= size) return true;
+  destroyHostBuffer(ctx_.device, &arena);  // the slot's previous frame has finished
   VkDeviceSize capacity = 64 * 1024;
   while (capacity < size) capacity *= 2;
   return createHostBuffer(ctx_, capacity,
-                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena_, error);
+                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena, error);
 }
 
 // Builds (or finds) each draw's pipeline, makes its mesh resident, then lays the frame's
@@ -490,10 +565,10 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
     DrawSlot& slot = (*slots)[i];
     slot.mesh = meshes_.locate(frame.draws[i].mesh);
     slot.materialBuffer =
-        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : arena_.buffer;
+        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : slot_->arena.buffer;
   }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
-  writeFrame(frame, *slots, arena_.mapped);
+  writeFrame(frame, *slots, slot_->arena.mapped);
   return true;
 }
 
@@ -508,10 +583,12 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   const uint32_t count = static_cast<uint32_t>(slots->size());
   if (count == 0) return true;
   VkDevice device = ctx_.device;
-  if (count > drawPoolCapacity_) {
-    if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
-    drawPool_ = VK_NULL_HANDLE;
-    drawPoolCapacity_ = 0;
+  VkDescriptorPool& drawPool = slot_->drawPool;
+  if (count > slot_->drawPoolCapacity) {
+    // The slot's previous frame has finished: its sets are no longer in use.
+    if (drawPool) vkDestroyDescriptorPool(device, drawPool, nullptr);
+    drawPool = VK_NULL_HANDLE;
+    slot_->drawPoolCapacity = 0;
     uint32_t capacity = 64;
     while (capacity < count) capacity *= 2;
     const VkDescriptorPoolSize poolSizes[2] = {
@@ -522,13 +599,13 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     info.maxSets = 2 * capacity;
     info.poolSizeCount = 2;
     info.pPoolSizes = poolSizes;
-    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool_), "vkCreateDescriptorPool",
+    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool), "vkCreateDescriptorPool",
                error)) {
-      drawPool_ = VK_NULL_HANDLE;
+      drawPool = VK_NULL_HANDLE;
       return false;
     }
-    drawPoolCapacity_ = capacity;
-  } else if (!check(vkResetDescriptorPool(device, drawPool_, 0), "vkResetDescriptorPool", error)) {
+    slot_->drawPoolCapacity = capacity;
+  } else if (!check(vkResetDescriptorPool(device, drawPool, 0), "vkResetDescriptorPool", error)) {
     return false;
   }
 
@@ -542,7 +619,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   std::vector<VkDescriptorSet> sets(layouts.size());
   VkDescriptorSetAllocateInfo allocInfo{};
   allocInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  allocInfo.descriptorPool = drawPool_;
+  allocInfo.descriptorPool = drawPool;
   allocInfo.descriptorSetCount = 2 * count;
   allocInfo.pSetLayouts = layouts.data();
   if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets",
@@ -557,8 +634,8 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     DrawSlot& slot = (*slots)[i];
     slot.set = sets[2 * i];
     slot.textureSet = sets[2 * i + 1];
-    buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
-    buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
+    buffers[3 * i + 0] = {slot_->arena.buffer, 0, sizeof(abi::FrameUniforms)};
+    buffers[3 * i + 1] = {slot_->arena.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
     buffers[3 * i + 2] = {slot.materialBuffer, slot.materialOffset, slot.materialSize};
     const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
     for (uint32_t b = 0; b < 3; ++b) {

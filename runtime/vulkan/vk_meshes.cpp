@@ -12,6 +12,11 @@ void MeshCache::destroy() {
   meshes_.clear();
 }
 
+void MeshCache::release(const Entry& entry) {
+  VkDevice device = ctx_->device;
+  retire_->retire([device, buffer = entry.buffer]() mutable { destroyHostBuffer(device, &buffer); });
+}
+
 bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
   const VkDeviceSize vertexBytes = mesh.vertices.size() * sizeof(float);
   const VkDeviceSize indexBytes = mesh.indices.size() * sizeof(uint32_t);
@@ -47,7 +52,7 @@ bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
         found->second.lastUsedFrame = frameNumber_;
         continue;
       }
-      destroyHostBuffer(ctx_->device, &found->second.buffer);  // edited in place, or a new mesh
+      release(found->second);  // edited in place, or a new mesh
       meshes_.erase(found);
     }
     Entry entry;
@@ -60,7 +65,7 @@ bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
     meshes_.emplace(draw.mesh, entry);
   }
   // Eviction: a mesh gone from the scene must not hold memory forever.
-  evictUnusedEntries(meshes_, frameNumber_, [&](auto& entry) { destroyHostBuffer(ctx_->device, &entry.buffer); });
+  evictUnusedEntries(meshes_, frameNumber_, [&](const Entry& entry) { release(entry); });
   return true;
 }
 

@@ -10,8 +10,9 @@
 
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
-#include "vk_resources.h"
 #include "facet/frame_eviction.h"
+#include "vk_resources.h"
+#include "vk_retire.h"
 
 namespace facet::runtime::vulkan {
 
@@ -38,14 +39,17 @@ class MeshCache {
   MeshCache(const MeshCache&) = delete;
   MeshCache& operator=(const MeshCache&) = delete;
 
-  // ctx must outlive this cache, and destroy() must be called before the device is destroyed.
-  void init(const Context* ctx) { ctx_ = ctx; }
+  // ctx and retire must outlive this cache, and destroy() must be called before the device is
+  // destroyed. Replaced and evicted buffers go through `retire`: frames in flight may use them.
+  void init(const Context* ctx, RetireQueue* retire) {
+    ctx_ = ctx;
+    retire_ = retire;
+  }
   // Releases every buffer. The device must be idle. Safe to call twice.
   void destroy();
 
   // Makes every mesh of the (already checked) frame resident, then releases the entries unused
-  // for too long. The device must be idle (between frames): a changed mesh's old buffer is
-  // destroyed here.
+  // for too long. A changed mesh gets a new buffer; the old one is retired.
   bool prepare(const FrameDesc& frame, std::string* error);
   // The location of a mesh that went through prepare() this frame.
   MeshLocation locate(const Mesh* mesh) const;
@@ -63,7 +67,10 @@ class MeshCache {
 
   bool upload(const Mesh& mesh, Entry* entry, std::string* error);
 
+  void release(const Entry& entry);
+
   const Context* ctx_ = nullptr;
+  RetireQueue* retire_ = nullptr;
   std::unordered_map<const Mesh*, Entry> meshes_;
   uint64_t frameNumber_ = 0;
   uint64_t uploads_ = 0;

@@ -14,6 +14,11 @@ void UniformBlockCache::destroy() {
   blocks_.clear();
 }
 
+void UniformBlockCache::release(const Entry& entry) {
+  VkDevice device = ctx_->device;
+  retire_->retire([device, buffer = entry.buffer]() mutable { destroyHostBuffer(device, &buffer); });
+}
+
 bool UniformBlockCache::prepare(const FrameDesc& frame, std::string* error) {
   ++frameNumber_;
   for (const DrawItem& draw : frame.draws) {
@@ -23,22 +28,21 @@ bool UniformBlockCache::prepare(const FrameDesc& frame, std::string* error) {
     entry.lastUsedFrame = frameNumber_;
     if (entry.buffer.buffer && entry.generation == block->generation) continue;
     const VkDeviceSize size = materialRange(block->bytes.size());
-    if (entry.buffer.size != size) {
-      destroyHostBuffer(ctx_->device, &entry.buffer);
-      if (!createHostBuffer(*ctx_, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &entry.buffer, error)) {
-        blocks_.erase(block);
-        return false;
-      }
+    if (entry.buffer.buffer) release(entry);
+    entry.buffer = HostBuffer{};
+    if (!createHostBuffer(*ctx_, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &entry.buffer, error)) {
+      blocks_.erase(block);
+      return false;
     }
-    // Coherent memory, the device idle between frames, and the frame's vkQueueSubmit makes the
-    // host writes visible.
+    // Coherent memory, a buffer no submitted frame reads yet, and the frame's vkQueueSubmit
+    // makes the host writes visible.
     auto* mapped = static_cast<uint8_t*>(entry.buffer.mapped);
     std::memset(mapped, 0, size);
     if (!block->bytes.empty()) std::memcpy(mapped, block->bytes.data(), block->bytes.size());
     entry.generation = block->generation;
     ++uploads_;
   }
-  evictUnusedEntries(blocks_, frameNumber_, [&](auto& entry) { destroyHostBuffer(ctx_->device, &entry.buffer); });
+  evictUnusedEntries(blocks_, frameNumber_, [&](const Entry& entry) { release(entry); });
   return true;
 }
 

@@ -159,7 +159,11 @@ struct VulkanOptions {
   // false gives the mobile path, where HDR and depth never leave tile memory.
   bool readBackHdr = true;
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
+  // Frames an app may have recorded (VulkanRenderer::recordFrame) and not yet seen finish: the
+  // backend keeps this many copies of what a frame writes (uniforms, descriptor sets). 1..8.
+  uint32_t framesInFlight = 2;
 };
+inline constexpr uint32_t kMaxFramesInFlight = 8;
 
 enum class GlContextKind {
   Auto,     // EGL GLES when available, else OSMesa

@@ -55,6 +55,28 @@ class VulkanRenderer : public RenderBackend {
   // are not filled. Synchronous like render(): the frame has finished when this returns, and the
   // image is in target.newLayout, visible to all later commands on the device.
   virtual bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) = 0;
+  // Records the frame into the app's command buffer instead of submitting it: `cmd` is a primary
+  // command buffer the app has begun, outside a render pass, from a pool of AppDevice::queueFamily.
+  // The app ends it and submits it to AppDevice::queue itself. The image needs no other
+  // synchronisation from the app: the recorded barriers order it after the app's earlier work
+  // on the queue (from target.oldLayout) and leave it in target.newLayout for later work.
+  // FrameDesc and what it points to may be freed when this returns (uniforms are copied, meshes
+  // and textures uploaded). Not timed (FrameResult::gpuTimes is render()'s).
+  //
+  // Lifetime rule, with N = VulkanOptions::framesInFlight:
+  // - the app submits the recorded command buffers once each, to AppDevice::queue, in the order
+  //   they were recorded, and before its next render()/renderToImage() call (which wait for the
+  //   queue and then release what earlier frames used);
+  // - before recording frame k + N, frame k has finished on the device (the app waited for the
+  //   fence of its submission): the backend keeps N copies of a frame's uniforms and descriptor
+  //   sets, and frame k + N reuses frame k's; buffers, pipelines and framebuffers it replaces
+  //   (a changed mesh, a material block, a resized target) are destroyed N frames later;
+  // - target.image stays alive until its frame's fence; the backend stays alive until every
+  //   recorded frame has finished (its destructor waits for the device to be idle).
+  // Texture uploads (a texture seen for the first time or changed) are still submitted by the
+  // backend to AppDevice::queue and waited for during this call.
+  virtual bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd,
+                           std::string* error) = 0;
   // Releases what the backend keeps for `image` (see AppImage). The app calls it before
   // destroying an image it rendered into, once no submitted frame uses the image any more.
   virtual void forgetImage(VkImage image) = 0;
