@@ -39,7 +39,7 @@ struct AppFixture {
   TestAppDevice app;
   std::unique_ptr<VulkanRenderer> renderer;
 
-  explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true) {
+  explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true, bool stageBufferUploads = false) {
     std::string error;
     if (!app.create(&error)) {
       ADD_FAILURE() << error;
@@ -48,6 +48,7 @@ struct AppFixture {
     VulkanOptions options;
     options.postPath = path;
     options.readBackHdr = readBackHdr;
+    options.stageBufferUploads = stageBufferUploads;
     renderer = createVulkanBackend(app.appDevice(), options, &error);
     EXPECT_NE(renderer, nullptr) << error;
   }
@@ -156,12 +157,14 @@ struct ChangingScene {
 // Frames recorded into the app's command buffers, two in flight as the app's fences allow
 // (VulkanOptions::framesInFlight = 2), with the material block and a mesh changing every frame:
 // each image equals what render() gives for that frame's state, on both render paths, with
+// uploads written directly and staged (copies recorded into the app's command buffer), with
 // validation and synchronization validation clean.
 TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
   constexpr int kFrames = 6;
-  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
-    SCOPED_TRACE(toString(path));
-    AppFixture f(path, /*readBackHdr=*/false);
+  for (const auto& [path, staged] : {std::pair{PostPath::Merged, false}, {PostPath::Separate, false},
+                                     {PostPath::Merged, true}}) {
+    SCOPED_TRACE(std::string(toString(path)) + (staged ? ", staged uploads" : ""));
+    AppFixture f(path, /*readBackHdr=*/false, staged);
     ASSERT_NE(f.renderer, nullptr);
     ChangingScene changing;
     std::vector<std::vector<uint8_t>> want;
@@ -212,6 +215,7 @@ TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
     // The frames differ from each other, so a frame showing another's state would be caught.
     EXPECT_NE(want[0], want[1]);
     EXPECT_NE(want[1], want[2]);
+    EXPECT_EQ(f.renderer->resources().stagedUploadBytes > 0, staged);
     f.expectNoValidationErrors();
   }
 }

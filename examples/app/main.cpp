@@ -427,9 +427,10 @@ int main(int argc, char** argv) {
     }
     const ResourceCounts counts = renderer->resources();
     std::printf("%d frames %ux%u: %zu mesh buffer(s), %llu mesh upload(s), %zu material block(s), "
-                "%llu block upload(s)\n",
+                "%llu block upload(s), %llu vkAllocateMemory call(s)\n",
                 kFrames, width, height, counts.meshBuffers, static_cast<unsigned long long>(counts.meshUploads),
-                counts.materialBuffers, static_cast<unsigned long long>(counts.materialUploads));
+                counts.materialBuffers, static_cast<unsigned long long>(counts.materialUploads),
+                static_cast<unsigned long long>(counts.memoryAllocations));
     // 1 sphere; 2 blocks: both on the first frame, then `rough` once per later frame.
     if (counts.meshBuffers != 1 || counts.meshUploads != 1 || counts.materialBuffers != 2 ||
         counts.materialUploads != uint64_t(2 + kFrames - 1)) {

@@ -21,12 +21,14 @@
 #include "vk_context.h"
 #include "vk_convert.h"
 #include "vk_frame.h"
+#include "vk_memory.h"
 #include "vk_pipeline.h"
 #include "vk_resources.h"
 #include "vk_retire.h"
 #include "vk_targets.h"
 #include "vk_textures.h"
 #include "vk_uniform_blocks.h"
+#include "vk_uploads.h"
 
 namespace facet::runtime {
 namespace {
@@ -67,7 +69,7 @@ class VulkanBackend final : public VulkanRenderer {
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
     return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
-            materialBlocks_.uploadCount()};
+            materialBlocks_.uploadCount(), ctx_.memoryAllocations, uploads_.stagedBytes()};
   }
 
  private:
@@ -139,6 +141,10 @@ class VulkanBackend final : public VulkanRenderer {
   // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
   TextureCache textures_;
 
+  // Device memory of meshes and material blocks (vk_memory.h), and their uploads (vk_uploads.h).
+  BufferAllocator allocator_;
+  UploadQueue uploads_;
+  bool stageBufferUploads_ = false;
   // Meshes, uploaded once and shared by every draw of them; see vk_meshes.h.
   MeshCache meshes_;
   // Material instances' parameter blocks, uploaded when changed; see vk_uniform_blocks.h.
@@ -172,6 +178,7 @@ VulkanBackend::~VulkanBackend() {
   textures_.destroy();
   meshes_.destroy();
   materialBlocks_.destroy();
+  allocator_.destroy();  // after everything sub-allocated from it was released
   destroyRenderTargets(device, &targets_);
   // Destroying a pool frees its sets.
   for (FrameSlot& slot : slots_) {
@@ -216,6 +223,7 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
     return false;
   }
   framesInFlight_ = options.framesInFlight;
+  stageBufferUploads_ = options.stageBufferUploads;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
   const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
@@ -265,8 +273,10 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
   if (!textures_.init(&ctx_, &retire_, error)) return false;
   appImages_.init(device, &retire_);
-  meshes_.init(&ctx_, &retire_);
-  materialBlocks_.init(&ctx_, &retire_);
+  allocator_.init(&ctx_, stageBufferUploads_);
+  uploads_.init(&allocator_, &retire_);
+  meshes_.init(&allocator_, &uploads_, &retire_);
+  materialBlocks_.init(&allocator_, &uploads_, &retire_);
 
   if (ctx_.timestampValidBits > 0) {
     VkQueryPoolCreateInfo queryInfo{};
@@ -376,6 +386,7 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     // Not timed: the query pool would be shared by frames in flight.
     const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
                                slot_->postSet, VK_NULL_HANDLE};
+    if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
     appImages_.evictUnused(frameNumber_);
@@ -423,6 +434,7 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
         !check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) {
       return false;
     }
+    if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!appImage) {
       recordReadback(cmd, objects.merged, readBackHdr_, targets_);

@@ -11,12 +11,11 @@
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "facet/frame_eviction.h"
-#include "vk_resources.h"
+#include "vk_memory.h"
 #include "vk_retire.h"
+#include "vk_uploads.h"
 
 namespace facet::runtime::vulkan {
-
-class Context;
 
 // Where a resident mesh is. buffer is null for a mesh without vertices (nothing is drawn).
 struct MeshLocation {
@@ -26,23 +25,25 @@ struct MeshLocation {
   uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
 };
 
-// Device buffers of the Meshes a backend has drawn with, keyed by the Mesh's address.
+// Device buffers of the Meshes a backend has drawn with, keyed by the Mesh's address: each its
+// own VkBuffer, sub-allocated from shared device-local memory (vk_memory.h).
 //
 // Cache rule (as TextureCache's): an entry is reused while the Mesh at that address has the same
 // MeshIdentity (sizes and a hash of its bytes, hashed once per distinct mesh per frame); one
-// unused for kEvictAfterFrames frames is released. The buffers are host-visible and coherent,
-// written once at creation: on the unified memory of phones (and lavapipe) that is device
-// memory; a discrete GPU would want a staging copy into device-local memory (not done).
+// unused for kEvictAfterFrames frames is released. A buffer is written once, at creation,
+// through UploadQueue: directly where device-local memory is host-visible (phones, lavapipe),
+// else by a staging copy recorded before the frame's passes.
 class MeshCache {
  public:
   MeshCache() = default;
   MeshCache(const MeshCache&) = delete;
   MeshCache& operator=(const MeshCache&) = delete;
 
-  // ctx and retire must outlive this cache, and destroy() must be called before the device is
-  // destroyed. Replaced and evicted buffers go through `retire`: frames in flight may use them.
-  void init(const Context* ctx, RetireQueue* retire) {
-    ctx_ = ctx;
+  // The three must outlive this cache, and destroy() must be called before the allocator's.
+  // Replaced and evicted buffers go through `retire`: frames in flight may use them.
+  void init(BufferAllocator* allocator, UploadQueue* uploads, RetireQueue* retire) {
+    allocator_ = allocator;
+    uploads_ = uploads;
     retire_ = retire;
   }
   // Releases every buffer. The device must be idle. Safe to call twice.
@@ -55,12 +56,12 @@ class MeshCache {
   MeshLocation locate(const Mesh* mesh) const;
 
   size_t residentCount() const { return meshes_.size(); }
-  uint64_t uploadCount() const { return uploads_; }
+  uint64_t uploadCount() const { return uploadCount_; }
 
  private:
   struct Entry {
     MeshIdentity key;
-    HostBuffer buffer;  // empty for a mesh without vertices
+    BufferAllocation buffer;  // empty for a mesh without vertices
     MeshLocation location;
     uint64_t lastUsedFrame = 0;
   };
@@ -69,11 +70,12 @@ class MeshCache {
 
   void release(const Entry& entry);
 
-  const Context* ctx_ = nullptr;
+  BufferAllocator* allocator_ = nullptr;
+  UploadQueue* uploads_ = nullptr;
   RetireQueue* retire_ = nullptr;
   std::unordered_map<const Mesh*, Entry> meshes_;
   uint64_t frameNumber_ = 0;
-  uint64_t uploads_ = 0;
+  uint64_t uploadCount_ = 0;
 };
 
 }  // namespace facet::runtime::vulkan

@@ -23,6 +23,7 @@ bool allocate(const Context& ctx, const VkMemoryRequirements& requirements,
     *memory = VK_NULL_HANDLE;
     return false;
   }
+  ++ctx.memoryAllocations;
   return true;
 }
 
