@@ -1,9 +1,12 @@
 // The Vulkan RenderBackend: a headless forward pass into RGBA16F + D32, a post pass into RGBA8,
 // and a readback. The frame graph (render_path.h) decides the render passes: merged (the post
 // pass is subpass 1, reading HDR as an input attachment; HDR and depth transient unless HDR is
-// read back) or separate (two render passes, HDR stored and sampled). Everything runs synchronously: render() records one command buffer,
-// submits it and waits on a fence, so between frames the device is idle and resources can be
-// rewritten or recreated without further synchronisation.
+// read back) or separate (two render passes, HDR stored and sampled). render() and
+// renderToImage() record the backend's own command buffer, submit it and wait on a fence;
+// recordFrame() records into the app's, which the app submits, with up to framesInFlight frames
+// unfinished. So what a frame writes exists once per frame in flight (FrameSlot), and what it
+// replaces is retired, not destroyed (vk_retire.h); the LDR attachment is the backend's own
+// target or a view of the app's image (vk_app_images.h).
 #include <cstring>
 #include <exception>
 #include <memory>

@@ -14,8 +14,9 @@ namespace facet::runtime {
 
 // The app's Vulkan objects. The device must be Vulkan 1.1 with RGBA16F, D32F and RGBA8 colour
 // attachments; queueFamily must support graphics. The backend submits to `queue` from the
-// thread that calls render() and waits for its own work with a fence: the app must not use the
-// queue from another thread meanwhile (Vulkan's external synchronisation rule for queues).
+// thread that calls render(), renderToImage() or recordFrame() (frames; texture uploads) and
+// waits for its own work with a fence: the app must not use the queue from another thread
+// meanwhile (Vulkan's external synchronisation rule for queues).
 // Everything must outlive the backend; the backend destroys none of it.
 struct AppDevice {
   VkInstance instance = VK_NULL_HANDLE;
