@@ -11,13 +11,15 @@
 
 #include "facet/render_backend.h"
 #include "facet/vulkan_backend.h"
-#include "vk_test_app_device.h"
+#include "app_vulkan.h"
 #include "vk_test_frames.h"
 
 namespace facet::runtime {
 namespace {
 
 using namespace testing;
+using example::AppTarget;
+using example::AppVulkan;
 
 constexpr Rgba kClear{0.25f, 0.5f, 2.0f, 1.0f};
 constexpr Rgba kRed{1.0f, 0.0f, 0.0f, 1.0f};
@@ -35,13 +37,14 @@ struct TestScene {
   }
 };
 
+// The app's device (examples/app/app_vulkan.h) with validation and synchronization validation.
 struct AppFixture {
-  TestAppDevice app;
+  AppVulkan app;
   std::unique_ptr<VulkanRenderer> renderer;
 
   explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true, bool stageBufferUploads = false) {
     std::string error;
-    if (!app.create(&error)) {
+    if (!app.create(/*validation=*/true, &error)) {
       ADD_FAILURE() << error;
       return;
     }
@@ -58,9 +61,24 @@ struct AppFixture {
     EXPECT_TRUE(renderer->render(frame, &result, &error)) << error;
     return result.ldr;
   }
+  // An image of the app's the test reads back.
+  std::unique_ptr<AppTarget> image(VkFormat format, uint32_t width, uint32_t height, VkImageUsageFlags usage,
+                                   VkImageCreateFlags flags = 0) {
+    auto target = std::make_unique<AppTarget>();
+    std::string error;
+    EXPECT_TRUE(target->create(app, format, width, height, usage, flags, &error)) << error;
+    return target;
+  }
+  std::vector<uint8_t> read(AppTarget& target) {
+    std::vector<uint8_t> rgba;
+    std::string error;
+    EXPECT_TRUE(target.read(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, &rgba, &error)) << error;
+    return rgba;
+  }
   void expectNoValidationErrors() const {
-    EXPECT_TRUE(app.errors().empty()) << app.errors().size() << " validation errors, first: "
-                                      << (app.errors().empty() ? "" : app.errors().front());
+    const auto& errors = app.validationErrors;
+    EXPECT_TRUE(errors.empty()) << errors.size() << " validation errors, first: "
+                                << (errors.empty() ? "" : errors.front());
   }
 };
 
@@ -82,12 +100,10 @@ struct ImageKind {
 // same bytes as render()'s readback, on both render paths.
 TEST(VulkanAppImage, PostPassWritesTheAppsImageAsRenderReadsBack) {
   const ImageKind kinds[] = {
-      {"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM,
-       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 0},
-      {"SRGB mutable attachment", VK_FORMAT_R8G8B8A8_SRGB,
-       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT},
-      {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB,
-       VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 0},
+      {"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0},
+      {"SRGB mutable attachment", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+       VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT},
+      {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0},
   };
   for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
     SCOPED_TRACE(toString(path));
@@ -98,19 +114,16 @@ TEST(VulkanAppImage, PostPassWritesTheAppsImageAsRenderReadsBack) {
     const std::vector<uint8_t> want = f.renderLdr(frame);
     for (const ImageKind& kind : kinds) {
       SCOPED_TRACE(kind.name);
-      VkImage image = f.app.createImage(kind.format, frame.width, frame.height, kind.usage, kind.flags);
-      ASSERT_NE(image, VK_NULL_HANDLE);
-      AppImage target{image, kind.format, frame.width, frame.height, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kind.usage, kind.flags};
+      auto image = f.image(kind.format, frame.width, frame.height, kind.usage, kind.flags);
+      AppImage target = image->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
       std::string error;
       // Twice: the second frame reuses the image's cached framebuffer, from the layout the first left.
       ASSERT_TRUE(f.renderer->renderToImage(frame, target, &error)) << error;
       target.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
       ASSERT_TRUE(f.renderer->renderToImage(frame, target, &error)) << error;
-      expectSameImage(f.app.read(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.width, frame.height), want,
-                      kind.name);
-      f.renderer->forgetImage(image);
-      f.app.destroyImage(image);
+      expectSameImage(f.read(*image), want, kind.name);
+      f.renderer->forgetImage(image->image);  // before the app destroys it
+      image.reset();
     }
     f.expectNoValidationErrors();
   }
@@ -121,13 +134,10 @@ TEST(VulkanAppImage, ImageWithoutAttachmentOrTransferUsageIsRefused) {
   ASSERT_NE(f.renderer, nullptr);
   TestScene scene;
   const FrameDesc frame = scene.frame(kRed);
-  VkImage image = f.app.createImage(VK_FORMAT_R8G8B8A8_SRGB, frame.width, frame.height,
-                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
-  ASSERT_NE(image, VK_NULL_HANDLE);
+  auto image = f.image(VK_FORMAT_R8G8B8A8_SRGB, frame.width, frame.height,
+                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   // _SRGB without MUTABLE_FORMAT cannot take the UNORM view, and it has no TRANSFER_DST either.
-  AppImage target{image, VK_FORMAT_R8G8B8A8_SRGB, frame.width, frame.height, VK_IMAGE_LAYOUT_UNDEFINED,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                  VK_IMAGE_USAGE_SAMPLED_BIT};
+  AppImage target = image->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   std::string error;
   EXPECT_FALSE(f.renderer->renderToImage(frame, target, &error));
   EXPECT_NE(error.find("MUTABLE_FORMAT"), std::string::npos) << error;
@@ -182,35 +192,21 @@ TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
       }
     }
     const FrameDesc shape = changing.frame();
-    VkCommandBuffer cmds[2] = {f.app.allocateCommandBuffer(), f.app.allocateCommandBuffer()};
-    VkFence fences[2] = {f.app.createFence(), f.app.createFence()};
-    std::vector<VkImage> images;
+    // The app's frame loop (AppVulkan::recordAndSubmit): before recording frame i it waits for
+    // the fence of frame i - 2, the rule for VulkanOptions::framesInFlight = 2. Frame i + 1 is
+    // recorded and submitted while frame i may still run.
+    std::vector<std::unique_ptr<AppTarget>> images;
     for (int i = 0; i < kFrames; ++i) {
-      const int ring = i % 2;
-      if (i >= 2) {  // the app's side of the rule: frame i - 2 has finished before frame i is recorded
-        ASSERT_EQ(vkWaitForFences(f.app.device, 1, &fences[ring], VK_TRUE, UINT64_MAX), VK_SUCCESS);
-        ASSERT_EQ(vkResetFences(f.app.device, 1, &fences[ring]), VK_SUCCESS);
-      }
       changing.apply(i);
-      const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-      images.push_back(f.app.createImage(VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height, usage));
-      ASSERT_NE(images.back(), VK_NULL_HANDLE);
-      const AppImage target{images.back(), VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height,
-                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, usage};
-      ASSERT_EQ(vkResetCommandBuffer(cmds[ring], 0), VK_SUCCESS);
-      VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-      begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-      ASSERT_EQ(vkBeginCommandBuffer(cmds[ring], &begin), VK_SUCCESS);
+      images.push_back(f.image(VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT));
+      const AppImage target = images.back()->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
       std::string error;
-      ASSERT_TRUE(f.renderer->recordFrame(changing.frame(), target, cmds[ring], &error)) << error;
-      ASSERT_EQ(vkEndCommandBuffer(cmds[ring]), VK_SUCCESS);
-      ASSERT_TRUE(f.app.submit(cmds[ring], fences[ring]));
+      ASSERT_TRUE(f.app.recordAndSubmit(*f.renderer, changing.frame(), target, i, &error)) << error;
     }
-    ASSERT_EQ(vkWaitForFences(f.app.device, 2, fences, VK_TRUE, UINT64_MAX), VK_SUCCESS);
+    ASSERT_TRUE(f.app.waitIdle());
     for (int i = 0; i < kFrames; ++i) {
       SCOPED_TRACE("frame " + std::to_string(i));
-      expectSameImage(f.app.read(images[size_t(i)], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shape.width, shape.height),
-                      want[size_t(i)], "recorded frame");
+      expectSameImage(f.read(*images[size_t(i)]), want[size_t(i)], "recorded frame");
     }
     // The frames differ from each other, so a frame showing another's state would be caught.
     EXPECT_NE(want[0], want[1]);
@@ -225,10 +221,8 @@ TEST(VulkanAppFrames, NullCommandBufferIsAnError) {
   ASSERT_NE(f.renderer, nullptr);
   TestScene scene;
   const FrameDesc frame = scene.frame(kRed);
-  VkImage image = f.app.createImage(VK_FORMAT_R8G8B8A8_UNORM, frame.width, frame.height,
-                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
-  const AppImage target{image, VK_FORMAT_R8G8B8A8_UNORM, frame.width, frame.height, VK_IMAGE_LAYOUT_UNDEFINED,
-                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT};
+  auto image = f.image(VK_FORMAT_R8G8B8A8_UNORM, frame.width, frame.height, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  const AppImage target = image->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   std::string error;
   EXPECT_FALSE(f.renderer->recordFrame(frame, target, VK_NULL_HANDLE, &error));
   EXPECT_NE(error.find("command buffer is null"), std::string::npos) << error;
