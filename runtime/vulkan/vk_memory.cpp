@@ -4,6 +4,7 @@
 
 #include "vk_check.h"
 #include "vk_context.h"
+#include "vk_resources.h"
 
 namespace facet::runtime::vulkan {
 namespace {
@@ -67,14 +68,8 @@ bool BufferAllocator::create(VkDeviceSize size, VkBufferUsageFlags usage, Buffer
                              std::string* error) {
   BufferAllocation allocation;
   allocation.size = size;
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-  info.size = size;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  if (!check(vkCreateBuffer(ctx_->device, &info, nullptr, &allocation.buffer), "vkCreateBuffer", error)) return false;
   VkMemoryRequirements needs{};
-  vkGetBufferMemoryRequirements(ctx_->device, allocation.buffer, &needs);
+  if (!createBufferObject(ctx_->device, size, usage, &allocation.buffer, &needs, error)) return false;
   bool mappable = true;
   const uint32_t type = chooseType(needs.memoryTypeBits, use, &mappable);
   if (type == UINT32_MAX) {
