@@ -1,6 +1,7 @@
 #include "vk_memory.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include "vk_check.h"
 #include "vk_context.h"
@@ -80,32 +81,30 @@ bool BufferAllocator::create(VkDeviceSize size, VkBufferUsageFlags usage, Buffer
   // The first block of this type with room, else a new one.
   uint32_t index = UINT32_MAX;
   VkDeviceSize offset = 0;
-  for (uint32_t i = 0; i < blocks_.size(); ++i) {
-    const Block& b = blocks_[i];
+  Range held{};
+  for (uint32_t i = 0; i < blocks_.size() && index == UINT32_MAX; ++i) {
+    Block& b = blocks_[i];
     if (!b.memory || b.memoryType != type || (b.mapped != nullptr) != mappable) continue;
-    const VkDeviceSize at = alignUp(b.top, needs.alignment);
-    if (at + needs.size <= b.size) {
-      index = i;
-      offset = at;
-      break;
-    }
+    if (take(&b, needs.size, needs.alignment, &offset, &held)) index = i;
   }
   if (index == UINT32_MAX) {
     if (!newBlock(type, std::max(kBlockSize, alignUp(needs.size, kBlockSize)), mappable, &index, error)) {
       vkDestroyBuffer(ctx_->device, allocation.buffer, nullptr);
       return false;
     }
-    offset = 0;
+    take(&blocks_[index], needs.size, needs.alignment, &offset, &held);
   }
   Block& block = blocks_[index];
   if (!check(vkBindBufferMemory(ctx_->device, allocation.buffer, block.memory, offset), "vkBindBufferMemory",
              error)) {
     vkDestroyBuffer(ctx_->device, allocation.buffer, nullptr);
+    giveBack(&block, held);
     return false;
   }
-  block.top = offset + needs.size;
   ++block.live;
   allocation.block = index;
+  allocation.offset = held.offset;
+  allocation.reserved = held.size;
   if (block.mapped) allocation.mapped = static_cast<uint8_t*>(block.mapped) + offset;
   *out = allocation;
   return true;
@@ -115,8 +114,10 @@ void BufferAllocator::release(BufferAllocation* allocation) {
   if (allocation->buffer) vkDestroyBuffer(ctx_->device, allocation->buffer, nullptr);
   if (allocation->block < blocks_.size()) {
     Block& block = blocks_[allocation->block];
+    giveBack(&block, {allocation->offset, allocation->reserved});
     if (--block.live == 0) {
       block.top = 0;  // empty: starts over
+      block.released.clear();
       // Keep one empty block per memory type and mapping for reuse; free the others.
       const bool spare = std::any_of(blocks_.begin(), blocks_.end(), [&](const Block& b) {
         return &b != &block && b.memory && b.live == 0 && b.memoryType == block.memoryType &&
@@ -129,6 +130,54 @@ void BufferAllocator::release(BufferAllocation* allocation) {
     }
   }
   *allocation = BufferAllocation{};
+}
+
+bool BufferAllocator::take(Block* block, VkDeviceSize size, VkDeviceSize alignment, VkDeviceSize* at, Range* held) {
+  for (auto it = block->released.begin(); it != block->released.end(); ++it) {
+    const VkDeviceSize start = alignUp(it->offset, alignment);
+    if (start + size > it->offset + it->size) continue;
+    *at = start;
+    *held = {it->offset, start + size - it->offset};
+    it->offset += held->size;
+    it->size -= held->size;
+    if (it->size == 0) block->released.erase(it);
+    return true;
+  }
+  const VkDeviceSize start = alignUp(block->top, alignment);
+  if (start + size > block->size) return false;
+  *at = start;
+  *held = {block->top, start + size - block->top};
+  block->top = start + size;
+  return true;
+}
+
+void BufferAllocator::giveBack(Block* block, Range range) {
+  auto& released = block->released;
+  auto next = std::lower_bound(released.begin(), released.end(), range.offset,
+                               [](const Range& r, VkDeviceSize offset) { return r.offset < offset; });
+  if (next != released.end() && range.offset + range.size == next->offset) {  // merge with the next
+    range.size += next->size;
+    next = released.erase(next);
+  }
+  if (next != released.begin()) {  // merge with the previous
+    auto previous = std::prev(next);
+    if (previous->offset + previous->size == range.offset) {
+      range.offset = previous->offset;
+      range.size += previous->size;
+      next = released.erase(previous);
+    }
+  }
+  if (range.offset + range.size == block->top) {
+    block->top = range.offset;  // the top comes down instead of keeping a range below it
+  } else {
+    released.insert(next, range);
+  }
+}
+
+VkDeviceSize BufferAllocator::bytesBelowTops() const {
+  VkDeviceSize total = 0;
+  for (const Block& block : blocks_) total += block.top;
+  return total;
 }
 
 void BufferAllocator::destroy() {

@@ -2,12 +2,13 @@
 // allocations (maxMemoryAllocationCount, 4096 on many mobile drivers) and each one costs a
 // kernel call, so thousands of material instances must not mean thousands of allocations.
 //
-// Each buffer is its own VkBuffer bound at an offset of a shared block. A block is a linear
-// (bump) allocator: space is handed out in order and reclaimed only when every buffer in the
-// block has been released, when the block starts over (one empty block per memory type is kept
-// for reuse, others are freed). That suits what lives here: meshes and material blocks that stay
-// resident for many frames, and staging buffers released a few frames after their copy. Debian
-// 12 packages no Vulkan Memory Allocator (libvulkan-memory-allocator-dev is not in bookworm).
+// Each buffer is its own VkBuffer bound at an offset of a shared block. A block hands out space
+// from the first released range that fits, else from its top (a bump pointer); a released range
+// merges with its neighbours and, at the top, lowers it. So a material block replaced every frame
+// (a new buffer each time, vk_uniform_blocks.h) reuses the space of the one released frames
+// before instead of creeping through the block. An empty block starts over; one empty block per
+// memory type is kept for reuse, others are freed. Debian 12 packages no Vulkan Memory
+// Allocator (libvulkan-memory-allocator-dev is not in bookworm), hence this small one.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -32,6 +33,8 @@ struct BufferAllocation {
   // copy (device-local memory the host cannot map, or BufferAllocator's forced staging).
   void* mapped = nullptr;
   uint32_t block = UINT32_MAX;
+  VkDeviceSize offset = 0;    // the block range it holds, alignment padding included
+  VkDeviceSize reserved = 0;
 };
 
 class BufferAllocator {
@@ -58,8 +61,14 @@ class BufferAllocator {
   void destroy();
 
   size_t blockCount() const;
+  // Bytes below the blocks' tops, in use or released: how far the blocks have been filled.
+  VkDeviceSize bytesBelowTops() const;
 
  private:
+  struct Range {
+    VkDeviceSize offset;
+    VkDeviceSize size;
+  };
   struct Block {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     uint32_t memoryType = 0;
@@ -67,7 +76,11 @@ class BufferAllocator {
     VkDeviceSize top = 0;   // first free byte
     uint32_t live = 0;      // buffers bound in it
     void* mapped = nullptr;  // the whole block, when its memory is host-visible
+    std::vector<Range> released;  // below top, sorted by offset, never adjacent to each other
   };
+  // Takes `size` bytes at `alignment` from the block, or returns false when it has no room.
+  static bool take(Block* block, VkDeviceSize size, VkDeviceSize alignment, VkDeviceSize* at, Range* held);
+  static void giveBack(Block* block, Range range);
   uint32_t chooseType(uint32_t typeBits, BufferUse use, bool* mappable) const;
   bool newBlock(uint32_t type, VkDeviceSize size, bool map, uint32_t* index, std::string* error);
 
