@@ -216,6 +216,26 @@ TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
   }
 }
 
+// Frames that go straight into the app's image need no LDR target of the backend's own; a later
+// render() (which reads one back) adds it, and both give the same image.
+TEST(VulkanAppFrames, RenderAfterRecordedFramesGivesTheSameImage) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    AppFixture f(path);
+    ASSERT_NE(f.renderer, nullptr);
+    TestScene scene;
+    const FrameDesc frame = scene.frame(kRed);
+    auto image = f.image(VK_FORMAT_R8G8B8A8_UNORM, frame.width, frame.height, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+    const AppImage target = image->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    std::string error;
+    ASSERT_TRUE(f.app.recordAndSubmit(*f.renderer, frame, target, 0, &error)) << error;
+    ASSERT_TRUE(f.app.recordAndSubmit(*f.renderer, frame, target, 1, &error)) << error;
+    const std::vector<uint8_t> rendered = f.renderLdr(frame);  // after both submissions, on the same queue
+    expectSameImage(f.read(*image), rendered, "recorded, then rendered");
+    f.expectNoValidationErrors();
+  }
+}
+
 TEST(VulkanAppFrames, NullCommandBufferIsAnError) {
   AppFixture f;
   ASSERT_NE(f.renderer, nullptr);

@@ -78,7 +78,7 @@ class VulkanBackend final : public VulkanRenderer {
  private:
   bool planRenderPath(const VulkanOptions& options, std::string* error);
   bool createFixedObjects(std::string* error);
-  bool ensureTargets(uint32_t width, uint32_t height, std::string* error);
+  bool ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error);
   bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
@@ -153,14 +153,15 @@ class VulkanBackend final : public VulkanRenderer {
   // Material instances' parameter blocks, uploaded when changed; see vk_uniform_blocks.h.
   UniformBlockCache materialBlocks_;
 
-  // Uniforms of one frame, rewritten every frame, grown when needed.
-
   RenderTargets targets_;
   // Views and framebuffers of the app's images the post pass writes directly.
   AppImageCache appImages_;
   // What frames in flight may still use; see vk_retire.h.
   RetireQueue retire_;
   uint64_t frameNumber_ = 0;
+  // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
+  // the queue before reusing a frame slot that one of them may still read.
+  bool recordedSinceIdle_ = false;
   // Keyed by program and the fixed-function state a draw asks for (blending, culling).
   std::map<std::tuple<const ShaderProgram*, Blending, bool>, CachedPipeline> pipelines_;
 
@@ -393,6 +394,7 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
     appImages_.evictUnused(frameNumber_);
+    recordedSinceIdle_ = true;
     return true;
   } catch (const std::exception& e) {
     *error = std::string("Vulkan backend: ") + e.what();
@@ -406,7 +408,10 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
                                  FrameOutput* output, std::string* error) {
   retire_.beginFrame(++frameNumber_);
   slot_ = &slots_[frameNumber_ % slots_.size()];
-  if (!checkFrame(frame, ctx_.properties.limits, error) || !ensureTargets(frame.width, frame.height, error) ||
+  // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput).
+  const bool ownOutput = !appImage || !rendersDirectly(*appImage);
+  if (!checkFrame(frame, ctx_.properties.limits, error) ||
+      !ensureTargets(frame.width, frame.height, ownOutput, error) ||
       !uploadFrame(frame, slots, error) || !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) ||
       !outputFor(appImage, output, error)) {
     return false;
@@ -424,6 +429,16 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
   }
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
+    if (recordedSinceIdle_) {
+      // The app has submitted its recorded frames (the rule in vulkan_backend.h); this frame's
+      // slot and what they retired are free once they have finished.
+      if (!check(vkQueueWaitIdle(ctx_.queue), "vkQueueWaitIdle", error)) {
+        deviceFailure_ = *error;
+        return false;
+      }
+      retire_.releaseAll();
+      recordedSinceIdle_ = false;
+    }
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
@@ -491,8 +506,11 @@ TargetConfig VulkanBackend::targetConfig() const {
   return config;
 }
 
-bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
-  if (targets_.width == width && targets_.height == height) return true;
+// Recreated for a new size, or to add the own output a frame needs (kept once made: render() and
+// recordFrame() may alternate).
+bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error) {
+  const bool haveOwnOutput = targets_.ldr.image != VK_NULL_HANDLE;
+  if (targets_.width == width && targets_.height == height && (haveOwnOutput || !ownOutput)) return true;
   // Frames in flight may still render into the old targets.
   appImages_.dropAll();
   if (targets_.width != 0) {
@@ -500,7 +518,8 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
     retire_.retire([device, old = targets_]() mutable { destroyRenderTargets(device, &old); });
     targets_ = RenderTargets{};
   }
-  const TargetConfig config = targetConfig();
+  TargetConfig config = targetConfig();
+  config.ownOutput = ownOutput;
   return createRenderTargets(ctx_, width, height, config, &targets_, error);
 }
 

@@ -66,8 +66,8 @@ class VulkanRenderer : public RenderBackend {
   //
   // Lifetime rule, with N = VulkanOptions::framesInFlight:
   // - the app submits the recorded command buffers once each, to AppDevice::queue, in the order
-  //   they were recorded, and before its next render()/renderToImage() call (which wait for the
-  //   queue and then release what earlier frames used);
+  //   they were recorded, and before its next render()/renderToImage() call (which first waits
+  //   for the queue to be idle, then reuses what earlier frames used);
   // - before recording frame k + N, frame k has finished on the device (the app waited for the
   //   fence of its submission): the backend keeps N copies of a frame's uniforms and descriptor
   //   sets, and frame k + N reuses frame k's; buffers, pipelines and framebuffers it replaces
