@@ -167,13 +167,23 @@ struct ChangingScene {
 // Frames recorded into the app's command buffers, two in flight as the app's fences allow
 // (VulkanOptions::framesInFlight = 2), with the material block and a mesh changing every frame:
 // each image equals what render() gives for that frame's state, on both render paths, with
-// uploads written directly and staged (copies recorded into the app's command buffer), with
-// validation and synchronization validation clean.
+// uploads written directly and staged (copies recorded into the app's command buffer), into
+// images rendered to and copied to, with validation and synchronization validation clean.
 TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
   constexpr int kFrames = 6;
-  for (const auto& [path, staged] : {std::pair{PostPath::Merged, false}, {PostPath::Separate, false},
-                                     {PostPath::Merged, true}}) {
-    SCOPED_TRACE(std::string(toString(path)) + (staged ? ", staged uploads" : ""));
+  struct Run {
+    PostPath path;
+    bool staged;  // uploads through staging copies recorded into the app's command buffer
+    VkImageUsageFlags usage;  // COLOR_ATTACHMENT: rendered into; TRANSFER_DST: copied into
+  };
+  constexpr VkImageUsageFlags kRendered = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  constexpr VkImageUsageFlags kCopied = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  for (const Run& run : {Run{PostPath::Merged, false, kRendered}, Run{PostPath::Separate, false, kRendered},
+                         Run{PostPath::Merged, true, kRendered}, Run{PostPath::Separate, false, kCopied}}) {
+    const PostPath path = run.path;
+    const bool staged = run.staged;
+    SCOPED_TRACE(std::string(toString(path)) + (staged ? ", staged uploads" : "") +
+                 (run.usage == kCopied ? ", copied" : ""));
     AppFixture f(path, /*readBackHdr=*/false, staged);
     ASSERT_NE(f.renderer, nullptr);
     ChangingScene changing;
@@ -198,7 +208,7 @@ TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
     std::vector<std::unique_ptr<AppTarget>> images;
     for (int i = 0; i < kFrames; ++i) {
       changing.apply(i);
-      images.push_back(f.image(VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT));
+      images.push_back(f.image(VK_FORMAT_R8G8B8A8_UNORM, shape.width, shape.height, run.usage));
       const AppImage target = images.back()->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
       std::string error;
       ASSERT_TRUE(f.app.recordAndSubmit(*f.renderer, changing.frame(), target, i, &error)) << error;
