@@ -1,9 +1,12 @@
 // The Vulkan RenderBackend: a headless forward pass into RGBA16F + D32, a post pass into RGBA8,
 // and a readback. The frame graph (render_path.h) decides the render passes: merged (the post
 // pass is subpass 1, reading HDR as an input attachment; HDR and depth transient unless HDR is
-// read back) or separate (two render passes, HDR stored and sampled). Everything runs synchronously: render() records one command buffer,
-// submits it and waits on a fence, so between frames the device is idle and resources can be
-// rewritten or recreated without further synchronisation.
+// read back) or separate (two render passes, HDR stored and sampled). render() and
+// renderToImage() record the backend's own command buffer, submit it and wait on a fence;
+// recordFrame() records into the app's, which the app submits, with up to framesInFlight frames
+// unfinished. So what a frame writes exists once per frame in flight (FrameSlot), and what it
+// replaces is retired, not destroyed (vk_retire.h); the LDR attachment is the backend's own
+// target or a view of the app's image (vk_app_images.h).
 #include <cstring>
 #include <exception>
 #include <memory>
@@ -12,23 +15,31 @@
 #include <unordered_map>
 #include <vector>
 
+#include "facet/frame_eviction.h"
 #include "facet/render_backend.h"
 #include "facet/vulkan_backend.h"
+#include "vk_app_images.h"
 #include "vk_check.h"
 #include "vk_commands.h"
 #include "vk_context.h"
 #include "vk_convert.h"
 #include "vk_frame.h"
+#include "vk_memory.h"
 #include "vk_pipeline.h"
 #include "vk_resources.h"
+#include "vk_retire.h"
 #include "vk_targets.h"
 #include "vk_textures.h"
 #include "vk_uniform_blocks.h"
+#include "vk_uploads.h"
 
 namespace facet::runtime {
 namespace {
 
 using namespace vulkan;
+
+// A frame in flight may use what a cache evicts only if it is younger than the eviction age.
+static_assert(kMaxFramesInFlight <= kEvictAfterFrames, "evicted entries must not be in use by frames in flight");
 
 // A lavapipe frame under ASan and validation takes well under a second; a minute means hung.
 constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
@@ -56,22 +67,29 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
+  bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd, std::string* error) override;
+  void forgetImage(VkImage image) override { appImages_.forget(image); }
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
     return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
-            materialBlocks_.uploadCount()};
+            materialBlocks_.uploadCount(), ctx_.memoryAllocations, uploads_.stagedBytes()};
   }
 
  private:
   bool planRenderPath(const VulkanOptions& options, std::string* error);
   bool createFixedObjects(std::string* error);
-  bool ensureTargets(uint32_t width, uint32_t height, std::string* error);
+  bool ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error);
   bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool prepareTextures(const FrameDesc& frame, std::string* error);
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result, std::string* error);
+  bool prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots,
+                    FrameOutput* output, std::string* error);
+  void writePostSet();
+  bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
+  TargetConfig targetConfig() const;
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
@@ -84,6 +102,7 @@ class VulkanBackend final : public VulkanRenderer {
   PostPath path_ = PostPath::Merged;
   const PostShaders* post_ = nullptr;  // the post variant VulkanOptions::post chose
   bool readBackHdr_ = true;
+  uint32_t framesInFlight_ = 2;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
@@ -95,6 +114,9 @@ class VulkanBackend final : public VulkanRenderer {
 
   VkRenderPass forwardPass_ = VK_NULL_HANDLE;  // merged path: the one render pass
   VkRenderPass postPass_ = VK_NULL_HANDLE;     // separate path only
+  // The same passes with the app's image as LDR (vk_pipeline.h, kAppImageLdrLayouts): the
+  // merged pass, or the separate path's post pass. Compatible with the ones above.
+  VkRenderPass appImagePass_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout forwardSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout postSetLayout_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout textureSetLayout_ = VK_NULL_HANDLE;
@@ -103,27 +125,43 @@ class VulkanBackend final : public VulkanRenderer {
   VkPipeline postPipeline_ = VK_NULL_HANDLE;
   VkSampler hdrSampler_ = VK_NULL_HANDLE;
 
-  // The post pass's one descriptor set, rewritten whenever the HDR image is recreated.
+  // What one frame writes and the next frames in flight must not: its uniforms, its draw
+  // descriptor sets and the post pass's set. Frame n uses slots_[n % framesInFlight]; when it is
+  // prepared, the frame that used the slot before has finished (render() waits for every frame;
+  // recordFrame's caller promises it, vulkan_backend.h), so the slot is rewritten in place.
+  struct FrameSlot {
+    HostBuffer arena;  // uniforms of one frame (vk_frame.h's layout), grown when needed
+    // Draw descriptor sets (two per draw: uniforms and textures): reset every use, recreated
+    // larger when needed. Capacity counts draws.
+    VkDescriptorPool drawPool = VK_NULL_HANDLE;
+    uint32_t drawPoolCapacity = 0;
+    VkDescriptorSet postSet = VK_NULL_HANDLE;  // from postPool_, written every use (HDR view)
+  };
+  std::vector<FrameSlot> slots_;
+  FrameSlot* slot_ = nullptr;  // the frame being prepared
   VkDescriptorPool postPool_ = VK_NULL_HANDLE;
-  VkDescriptorSet postSet_ = VK_NULL_HANDLE;
-
-  // Per-frame draw descriptor sets (two per draw: uniforms and textures): reset every frame,
-  // recreated larger when needed. Capacity counts draws.
-  VkDescriptorPool drawPool_ = VK_NULL_HANDLE;
-  uint32_t drawPoolCapacity_ = 0;
 
   // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
   TextureCache textures_;
 
+  // Device memory of meshes and material blocks (vk_memory.h), and their uploads (vk_uploads.h).
+  BufferAllocator allocator_;
+  UploadQueue uploads_;
+  bool stageBufferUploads_ = false;
   // Meshes, uploaded once and shared by every draw of them; see vk_meshes.h.
   MeshCache meshes_;
   // Material instances' parameter blocks, uploaded when changed; see vk_uniform_blocks.h.
   UniformBlockCache materialBlocks_;
 
-  // Uniforms of one frame, rewritten every frame, grown when needed.
-  HostBuffer arena_;
-
   RenderTargets targets_;
+  // Views and framebuffers of the app's images the post pass writes directly.
+  AppImageCache appImages_;
+  // What frames in flight may still use; see vk_retire.h.
+  RetireQueue retire_;
+  uint64_t frameNumber_ = 0;
+  // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
+  // the queue before reusing a frame slot that one of them may still read.
+  bool recordedSinceIdle_ = false;
   // Keyed by program and the fixed-function state a draw asks for (blending, culling).
   std::map<std::tuple<const ShaderProgram*, Blending, bool>, CachedPipeline> pipelines_;
 
@@ -139,13 +177,18 @@ VulkanBackend::~VulkanBackend() {
   for (auto& entry : pipelines_) {
     if (entry.second.pipeline) vkDestroyPipeline(device, entry.second.pipeline, nullptr);
   }
+  retire_.releaseAll();
+  appImages_.destroy();
   textures_.destroy();
   meshes_.destroy();
   materialBlocks_.destroy();
+  allocator_.destroy();  // after everything sub-allocated from it was released
   destroyRenderTargets(device, &targets_);
-  destroyHostBuffer(device, &arena_);
   // Destroying a pool frees its sets.
-  if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
+  for (FrameSlot& slot : slots_) {
+    destroyHostBuffer(device, &slot.arena);
+    if (slot.drawPool) vkDestroyDescriptorPool(device, slot.drawPool, nullptr);
+  }
   if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
   if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
   if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
@@ -155,6 +198,7 @@ VulkanBackend::~VulkanBackend() {
   if (forwardSetLayout_) vkDestroyDescriptorSetLayout(device, forwardSetLayout_, nullptr);
   if (textureSetLayout_) vkDestroyDescriptorSetLayout(device, textureSetLayout_, nullptr);
   if (postPass_) vkDestroyRenderPass(device, postPass_, nullptr);
+  if (appImagePass_) vkDestroyRenderPass(device, appImagePass_, nullptr);
   if (forwardPass_) vkDestroyRenderPass(device, forwardPass_, nullptr);
   if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (fence_) vkDestroyFence(device, fence_, nullptr);
@@ -177,6 +221,13 @@ bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options
 bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* error) {
   path_ = options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged;
   readBackHdr_ = options.readBackHdr;
+  if (options.framesInFlight < 1 || options.framesInFlight > kMaxFramesInFlight) {
+    *error = "VulkanOptions::framesInFlight must be 1.." + std::to_string(kMaxFramesInFlight) + ", not " +
+             std::to_string(options.framesInFlight);
+    return false;
+  }
+  framesInFlight_ = options.framesInFlight;
+  stageBufferUploads_ = options.stageBufferUploads;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
   const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
@@ -210,9 +261,12 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, &forwardPass_, error)
+      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_, error) &&
+                   createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, kAppImageLdrLayouts,
+                                          &appImagePass_, error)
              : createForwardRenderPass(device, hdrOps_, depthOps_, &forwardPass_, error) &&
-                   createPostRenderPass(device, ldrOps_, &postPass_, error);
+                   createPostRenderPass(device, ldrOps_, LdrLayouts{}, &postPass_, error) &&
+                   createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
@@ -221,9 +275,12 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
       !createPipelineLayout(device, {postSetLayout_}, &postLayout_, error)) {
     return false;
   }
-  if (!textures_.init(&ctx_, error)) return false;
-  meshes_.init(&ctx_);
-  materialBlocks_.init(&ctx_);
+  if (!textures_.init(&ctx_, &retire_, error)) return false;
+  appImages_.init(device, &retire_);
+  allocator_.init(&ctx_, stageBufferUploads_);
+  uploads_.init(&allocator_, &retire_);
+  meshes_.init(&allocator_, &uploads_, &retire_);
+  materialBlocks_.init(&allocator_, &uploads_, &retire_);
 
   if (ctx_.timestampValidBits > 0) {
     VkQueryPoolCreateInfo queryInfo{};
@@ -264,10 +321,12 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
 
-  VkDescriptorPoolSize postPoolSize{hdrType, 1};
+  slots_.resize(framesInFlight_);
+  const auto slotCount = static_cast<uint32_t>(slots_.size());
+  VkDescriptorPoolSize postPoolSize{hdrType, slotCount};
   VkDescriptorPoolCreateInfo postPoolInfo{};
   postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-  postPoolInfo.maxSets = 1;
+  postPoolInfo.maxSets = slotCount;
   postPoolInfo.poolSizeCount = 1;
   postPoolInfo.pPoolSizes = &postPoolSize;
   if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_),
@@ -275,16 +334,18 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     postPool_ = VK_NULL_HANDLE;
     return false;
   }
+  const std::vector<VkDescriptorSetLayout> postLayouts(slotCount, postSetLayout_);
+  std::vector<VkDescriptorSet> postSets(slotCount);
   VkDescriptorSetAllocateInfo setInfo{};
   setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   setInfo.descriptorPool = postPool_;
-  setInfo.descriptorSetCount = 1;
-  setInfo.pSetLayouts = &postSetLayout_;
-  if (!check(vkAllocateDescriptorSets(device, &setInfo, &postSet_), "vkAllocateDescriptorSets",
+  setInfo.descriptorSetCount = slotCount;
+  setInfo.pSetLayouts = postLayouts.data();
+  if (!check(vkAllocateDescriptorSets(device, &setInfo, postSets.data()), "vkAllocateDescriptorSets",
              error)) {
-    postSet_ = VK_NULL_HANDLE;
     return false;
   }
+  for (uint32_t i = 0; i < slotCount; ++i) slots_[i].postSet = postSets[i];
   return true;
 }
 
@@ -301,13 +362,62 @@ bool VulkanBackend::render(const FrameDesc& frame, FrameResult* result, std::str
 bool VulkanBackend::renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) {
   std::string scratch;
   if (!error) error = &scratch;
-  if (!target.image || target.width != frame.width || target.height != frame.height ||
-      (target.format != VK_FORMAT_R8G8B8A8_UNORM && target.format != VK_FORMAT_R8G8B8A8_SRGB)) {
-    *error = "renderToImage: the app's image must be RGBA8 (UNORM or SRGB) and the frame's size " +
-             std::to_string(frame.width) + "x" + std::to_string(frame.height);
+  if (!checkAppImage(frame, target, "renderToImage", error)) return false;
+  return renderFrame(frame, &target, nullptr, error);
+}
+
+bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd,
+                                std::string* error) {
+  std::string scratch;
+  if (!error) error = &scratch;
+  if (!cmd) {
+    *error = "recordFrame: the command buffer is null";
     return false;
   }
-  return renderFrame(frame, &target, nullptr, error);
+  if (!checkAppImage(frame, target, "recordFrame", error)) return false;
+  if (!deviceFailure_.empty()) {
+    *error = "Vulkan backend unusable after an earlier failure: " + deviceFailure_;
+    return false;
+  }
+  try {
+    // The caller's promise: frame frameNumber_ + 1 - framesInFlight_ and all before it have
+    // finished, so what was retired while preparing them is free (vk_retire.h).
+    const uint64_t next = frameNumber_ + 1;
+    if (next > framesInFlight_) retire_.releaseThrough(next - framesInFlight_);
+    std::vector<DrawSlot> slots;
+    FrameOutput output;
+    if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
+    // Not timed: the query pool would be shared by frames in flight.
+    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
+                               slot_->postSet, VK_NULL_HANDLE};
+    if (!uploads_.record(cmd, error)) return false;
+    recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
+    if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
+    appImages_.evictUnused(frameNumber_);
+    recordedSinceIdle_ = true;
+    return true;
+  } catch (const std::exception& e) {
+    *error = std::string("Vulkan backend: ") + e.what();
+    return false;
+  }
+}
+
+// Everything before recording: the frame checked, the targets, pipelines, meshes, uniforms,
+// textures and descriptor sets ready in this frame's slot, and where the passes write.
+bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots,
+                                 FrameOutput* output, std::string* error) {
+  retire_.beginFrame(++frameNumber_);
+  slot_ = &slots_[frameNumber_ % slots_.size()];
+  // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput).
+  const bool ownOutput = !appImage || !rendersDirectly(*appImage);
+  if (!checkFrame(frame, ctx_.properties.limits, error) ||
+      !ensureTargets(frame.width, frame.height, ownOutput, error) ||
+      !uploadFrame(frame, slots, error) || !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) ||
+      !outputFor(appImage, output, error)) {
+    return false;
+  }
+  writePostSet();
+  return true;
 }
 
 // result: read back into (render); null when the frame goes into appImage (renderToImage).
@@ -319,19 +429,44 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
   }
   // The API promises no exceptions; the only ones possible here are allocation failures.
   try {
+    if (recordedSinceIdle_) {
+      // The app has submitted its recorded frames (the rule in vulkan_backend.h); this frame's
+      // slot and what they retired are free once they have finished.
+      if (!check(vkQueueWaitIdle(ctx_.queue), "vkQueueWaitIdle", error)) {
+        deviceFailure_ = *error;
+        return false;
+      }
+      retire_.releaseAll();
+      recordedSinceIdle_ = false;
+    }
     std::vector<DrawSlot> slots;
-    const FrameObjects objects{path_ == PostPath::Merged, readBackHdr_ && result, forwardPass_, postPass_,
-                               forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
-    if (!checkFrame(frame, ctx_.properties.limits, error) ||
-        !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
-        !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
-        !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots, appImage, error)) {
+    FrameOutput output;
+    if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
+    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
+                               slot_->postSet, timestamps_};
+    VkCommandBuffer cmd = commandBuffer_;
+    VkCommandBufferBeginInfo beginInfo{};
+    beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error) ||
+        !check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) {
       return false;
     }
+    if (!uploads_.record(cmd, error)) return false;
+    recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
+    if (!appImage) {
+      recordReadback(cmd, objects.merged, readBackHdr_, targets_);
+    } else if (!output.directImage) {
+      recordCopyToAppImage(cmd, targets_, *appImage);
+    }
+    if (!check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error)) return false;
     if (!submitAndWait(error)) {
       deviceFailure_ = *error;
       return false;
     }
+    // Waited for: this frame and everything submitted before it on the queue has finished.
+    retire_.releaseAll();
+    appImages_.evictUnused(frameNumber_);
     if (result) {
       readBack(result);
       readTimes(result);
@@ -343,9 +478,24 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
   }
 }
 
-bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* error) {
-  if (targets_.width == width && targets_.height == height) return true;
-  destroyRenderTargets(ctx_.device, &targets_);  // idle: the previous frame was waited for
+// The backend's own LDR target (render, and renderToImage into an image it cannot render to),
+// or the app's image as the LDR attachment.
+bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std::string* error) {
+  const bool merged = path_ == PostPath::Merged;
+  output->forwardPass = forwardPass_;
+  output->postPass = postPass_;
+  output->framebuffers = {targets_.forwardFramebuffer, targets_.postFramebuffer};
+  if (!appImage || !rendersDirectly(*appImage)) return true;
+  output->directImage = appImage;
+  if (merged) {
+    output->forwardPass = appImagePass_;
+  } else {
+    output->postPass = appImagePass_;
+  }
+  return appImages_.framebuffersFor(*appImage, targets_, targetConfig(), frameNumber_, &output->framebuffers, error);
+}
+
+TargetConfig VulkanBackend::targetConfig() const {
   TargetConfig config;
   config.merged = path_ == PostPath::Merged;
   config.readBackHdr = readBackHdr_;
@@ -353,20 +503,40 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
   config.depthTransient = depthTransient_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
-  if (!createRenderTargets(ctx_, width, height, config, &targets_, error)) return false;
+  return config;
+}
+
+// Recreated for a new size, or to add the own output a frame needs (kept once made: render() and
+// recordFrame() may alternate).
+bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error) {
+  const bool haveOwnOutput = targets_.ldr.image != VK_NULL_HANDLE;
+  if (targets_.width == width && targets_.height == height && (haveOwnOutput || !ownOutput)) return true;
+  // Frames in flight may still render into the old targets.
+  appImages_.dropAll();
+  if (targets_.width != 0) {
+    VkDevice device = ctx_.device;
+    retire_.retire([device, old = targets_]() mutable { destroyRenderTargets(device, &old); });
+    targets_ = RenderTargets{};
+  }
+  TargetConfig config = targetConfig();
+  config.ownOutput = ownOutput;
+  return createRenderTargets(ctx_, width, height, config, &targets_, error);
+}
+
+// The post pass reads this frame's HDR image through the slot's set.
+void VulkanBackend::writePostSet() {
+  const bool merged = path_ == PostPath::Merged;
   // An input attachment descriptor ignores the sampler.
-  VkDescriptorImageInfo imageInfo{config.merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,
+  VkDescriptorImageInfo imageInfo{merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet write{};
   write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-  write.dstSet = postSet_;
+  write.dstSet = slot_->postSet;
   write.dstBinding = abi::kPostHdrBinding;
   write.descriptorCount = 1;
-  write.descriptorType = config.merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT
-                                       : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.descriptorType = merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &imageInfo;
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
-  return true;
 }
 
 bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out,
@@ -380,8 +550,9 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
       *out = cached.pipeline;
       return true;
     }
-    // Another program now lives at this address. Safe to destroy: the device is idle.
-    vkDestroyPipeline(ctx_.device, cached.pipeline, nullptr);
+    // Another program now lives at this address; frames in flight may still draw with it.
+    VkDevice device = ctx_.device;
+    retire_.retire([device, pipeline = cached.pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
     pipelines_.erase(found);
   }
   PipelineDesc desc;
@@ -401,12 +572,13 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
 }
 
 bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
-  if (arena_.buffer && arena_.size >= size) return true;
-  destroyHostBuffer(ctx_.device, &arena_);  // idle: the previous frame was waited for
+  HostBuffer& arena = slot_->arena;
+  if (arena.buffer && arena.size >= size) return true;
+  destroyHostBuffer(ctx_.device, &arena);  // the slot's previous frame has finished
   VkDeviceSize capacity = 64 * 1024;
   while (capacity < size) capacity *= 2;
   return createHostBuffer(ctx_, capacity,
-                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena_, error);
+                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena, error);
 }
 
 // Builds (or finds) each draw's pipeline, makes its mesh resident, then lays the frame's
@@ -427,10 +599,10 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
     DrawSlot& slot = (*slots)[i];
     slot.mesh = meshes_.locate(frame.draws[i].mesh);
     slot.materialBuffer =
-        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : arena_.buffer;
+        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : slot_->arena.buffer;
   }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
-  writeFrame(frame, *slots, arena_.mapped);
+  writeFrame(frame, *slots, slot_->arena.mapped);
   return true;
 }
 
@@ -445,10 +617,12 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   const uint32_t count = static_cast<uint32_t>(slots->size());
   if (count == 0) return true;
   VkDevice device = ctx_.device;
-  if (count > drawPoolCapacity_) {
-    if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
-    drawPool_ = VK_NULL_HANDLE;
-    drawPoolCapacity_ = 0;
+  VkDescriptorPool& drawPool = slot_->drawPool;
+  if (count > slot_->drawPoolCapacity) {
+    // The slot's previous frame has finished: its sets are no longer in use.
+    if (drawPool) vkDestroyDescriptorPool(device, drawPool, nullptr);
+    drawPool = VK_NULL_HANDLE;
+    slot_->drawPoolCapacity = 0;
     uint32_t capacity = 64;
     while (capacity < count) capacity *= 2;
     const VkDescriptorPoolSize poolSizes[2] = {
@@ -459,13 +633,13 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     info.maxSets = 2 * capacity;
     info.poolSizeCount = 2;
     info.pPoolSizes = poolSizes;
-    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool_), "vkCreateDescriptorPool",
+    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool), "vkCreateDescriptorPool",
                error)) {
-      drawPool_ = VK_NULL_HANDLE;
+      drawPool = VK_NULL_HANDLE;
       return false;
     }
-    drawPoolCapacity_ = capacity;
-  } else if (!check(vkResetDescriptorPool(device, drawPool_, 0), "vkResetDescriptorPool", error)) {
+    slot_->drawPoolCapacity = capacity;
+  } else if (!check(vkResetDescriptorPool(device, drawPool, 0), "vkResetDescriptorPool", error)) {
     return false;
   }
 
@@ -479,7 +653,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   std::vector<VkDescriptorSet> sets(layouts.size());
   VkDescriptorSetAllocateInfo allocInfo{};
   allocInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  allocInfo.descriptorPool = drawPool_;
+  allocInfo.descriptorPool = drawPool;
   allocInfo.descriptorSetCount = 2 * count;
   allocInfo.pSetLayouts = layouts.data();
   if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets",
@@ -494,8 +668,8 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     DrawSlot& slot = (*slots)[i];
     slot.set = sets[2 * i];
     slot.textureSet = sets[2 * i + 1];
-    buffers[3 * i + 0] = {arena_.buffer, 0, sizeof(abi::FrameUniforms)};
-    buffers[3 * i + 1] = {arena_.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
+    buffers[3 * i + 0] = {slot_->arena.buffer, 0, sizeof(abi::FrameUniforms)};
+    buffers[3 * i + 1] = {slot_->arena.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
     buffers[3 * i + 2] = {slot.materialBuffer, slot.materialOffset, slot.materialSize};
     const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
     for (uint32_t b = 0; b < 3; ++b) {

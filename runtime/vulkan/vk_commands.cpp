@@ -1,25 +1,45 @@
 #include "vk_commands.h"
 
 #include "facet/shader_abi.h"
-#include "vk_check.h"
 
 namespace facet::runtime::vulkan {
+namespace {
 
 static_assert(abi::kTextureSet == 1, "draws bind sets 0 and 1 with one call");
 
-bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
-                 const float clearColor[4], const std::vector<DrawSlot>& slots, const AppImage* appImage,
-                 std::string* error) {
-  if (!check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", error)) return false;
-  VkCommandBufferBeginInfo beginInfo{};
-  beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  if (!check(vkBeginCommandBuffer(cmd, &beginInfo), "vkBeginCommandBuffer", error)) return false;
+// A layout transition of the app's image between whatever the app does with it (any stage, any
+// access) and the stage and access given.
+VkImageMemoryBarrier appImageBarrier(const AppImage& image, VkImageLayout from, VkImageLayout to,
+                                     VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+  VkImageMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image.image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  return barrier;
+}
 
-  const VkViewport viewport{
-      0.0f, 0.0f, static_cast<float>(targets.width), static_cast<float>(targets.height),
-      0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, {targets.width, targets.height}};
+constexpr VkAccessFlags kAnyAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+
+}  // namespace
+
+void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, uint32_t width,
+                  uint32_t height, const float clearColor[4], const std::vector<DrawSlot>& slots) {
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {width, height}};
+
+  if (output.directImage) {
+    const VkImageMemoryBarrier toAttachment =
+        appImageBarrier(*output.directImage, output.directImage->oldLayout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
+                         0, nullptr, 0, nullptr, 1, &toAttachment);
+  }
 
   // Forward pass.
   if (objects.timestamps) {
@@ -32,8 +52,8 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
   clears[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo passInfo{};
   passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-  passInfo.renderPass = objects.forwardPass;
-  passInfo.framebuffer = targets.forwardFramebuffer;
+  passInfo.renderPass = output.forwardPass;
+  passInfo.framebuffer = output.framebuffers.forward;
   passInfo.renderArea = scissor;
   passInfo.clearValueCount = objects.merged ? 3 : 2;
   passInfo.pClearValues = clears;
@@ -73,8 +93,8 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     if (objects.timestamps) {
       vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
     }
-    passInfo.renderPass = objects.postPass;
-    passInfo.framebuffer = targets.postFramebuffer;
+    passInfo.renderPass = output.postPass;
+    passInfo.framebuffer = output.framebuffers.post;
     passInfo.clearValueCount = 0;
     passInfo.pClearValues = nullptr;
     vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
@@ -90,13 +110,23 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 2);
   }
 
-  // Readback. The render pass left LDR (and, merged, a stored HDR) in TRANSFER_SRC_OPTIMAL;
-  // on the separate path HDR still needs its transition, after the post pass's sampling of it.
+  if (output.directImage) {
+    const VkImageMemoryBarrier done =
+        appImageBarrier(*output.directImage, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, output.directImage->newLayout,
+                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kAnyAccess);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0,
+                         0, nullptr, 0, nullptr, 1, &done);
+  }
+}
+
+void recordReadback(VkCommandBuffer cmd, bool merged, bool readBackHdr, const RenderTargets& targets) {
+  // The render pass left LDR (and, merged, a stored HDR) in TRANSFER_SRC_OPTIMAL; on the
+  // separate path HDR still needs its transition, after the post pass's sampling of it.
   VkBufferImageCopy region{};
   region.bufferRowLength = 0;  // tightly packed; image row 0 (the top) first
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {targets.width, targets.height, 1};
-  if (objects.readBackHdr && !objects.merged) {
+  if (readBackHdr && !merged) {
     VkImageMemoryBarrier hdrBarrier{};
     hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
     hdrBarrier.srcAccessMask = 0;  // write-after-read only needs the execution dependency
@@ -110,51 +140,37 @@ bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderT
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                          VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &hdrBarrier);
   }
-  if (objects.readBackHdr) {
+  if (readBackHdr) {
     vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            targets.hdrReadback.buffer, 1, &region);
   }
-  if (appImage) {
-    // Into the app's image: to TRANSFER_DST (after whatever the app did with it), copy, then to
-    // the layout the app asked for, visible to any later command.
-    VkImageMemoryBarrier toCopy{};
-    toCopy.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
-    toCopy.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-    toCopy.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toCopy.oldLayout = appImage->oldLayout;
-    toCopy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    toCopy.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toCopy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toCopy.image = appImage->image;
-    toCopy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                         nullptr, 1, &toCopy);
-    VkImageCopy copy{};
-    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.extent = {targets.width, targets.height, 1};
-    vkCmdCopyImage(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, appImage->image,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    VkImageMemoryBarrier done = toCopy;
-    done.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    done.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-    done.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    done.newLayout = appImage->newLayout;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
-                         nullptr, 1, &done);
-  } else {
-    vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           targets.ldrReadback.buffer, 1, &region);
-  }
-
+  vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         targets.ldrReadback.buffer, 1, &region);
   VkMemoryBarrier hostBarrier{};
   hostBarrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                        &hostBarrier, 0, nullptr, 0, nullptr);
+}
 
-  return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error);
+void recordCopyToAppImage(VkCommandBuffer cmd, const RenderTargets& targets, const AppImage& image) {
+  // To TRANSFER_DST (after whatever the app did with it), copy, then to the layout the app
+  // asked for, visible to any later command.
+  const VkImageMemoryBarrier toCopy = appImageBarrier(image, image.oldLayout, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                                      kAnyAccess, VK_ACCESS_TRANSFER_WRITE_BIT);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &toCopy);
+  VkImageCopy copy{};
+  copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.extent = {targets.width, targets.height, 1};
+  vkCmdCopyImage(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  const VkImageMemoryBarrier done = appImageBarrier(image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, image.newLayout,
+                                                    VK_ACCESS_TRANSFER_WRITE_BIT, kAnyAccess);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &done);
 }
 
 }  // namespace facet::runtime::vulkan

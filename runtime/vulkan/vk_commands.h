@@ -1,4 +1,6 @@
-// Recording of one frame's command buffer: forward pass, post pass, readback copies.
+// Recording of one frame's commands: forward pass, post pass, readback copies, and the barriers
+// around the app's image. The caller begins and ends the command buffer: the backend's own
+// (render, renderToImage) or the app's (recordFrame).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "facet/vulkan_backend.h"
+#include "vk_app_images.h"
 #include "vk_frame.h"
 #include "vk_targets.h"
 
@@ -14,10 +17,7 @@ namespace facet::runtime::vulkan {
 
 // The long-lived objects a frame's commands refer to.
 struct FrameObjects {
-  bool merged = false;       // forwardPass is the one render pass; the post pass is its subpass 1
-  bool readBackHdr = false;  // copy HDR to the targets' hdrReadback
-  VkRenderPass forwardPass = VK_NULL_HANDLE;
-  VkRenderPass postPass = VK_NULL_HANDLE;  // separate path only
+  bool merged = false;  // the forward render pass is the one render pass; the post pass its subpass 1
   VkPipelineLayout forwardLayout = VK_NULL_HANDLE;
   VkPipelineLayout postLayout = VK_NULL_HANDLE;
   VkPipeline postPipeline = VK_NULL_HANDLE;
@@ -26,14 +26,31 @@ struct FrameObjects {
   VkQueryPool timestamps = VK_NULL_HANDLE;
 };
 
+// Where the passes write: render passes and framebuffers, and, when the LDR attachment is the
+// app's image (AppImage, rendersDirectly), that image for its layout transitions.
+struct FrameOutput {
+  VkRenderPass forwardPass = VK_NULL_HANDLE;
+  VkRenderPass postPass = VK_NULL_HANDLE;  // separate path only
+  Framebuffers framebuffers;
+  const AppImage* directImage = nullptr;
+};
+
 inline constexpr uint32_t kTimestampCount = 3;
 
-// Records into cmd (reset first): the forward pass (clear to clearColor and depth 1, then each
-// slot), the post pass (a second render pass, or the next subpass when merged), and copies of
-// LDR (and HDR when read back) into the targets' readback buffers, made visible to the host. Each slot draws its own mesh buffer.
-// With appImage, LDR is copied into the app's image (vulkan_backend.h) instead of the readback buffer.
-bool recordFrame(VkCommandBuffer cmd, const FrameObjects& objects, const RenderTargets& targets,
-                 const float clearColor[4], const std::vector<DrawSlot>& slots, const AppImage* appImage,
-                 std::string* error);
+// The forward pass (clear to clearColor and depth 1, then each slot, each with its own mesh
+// buffer) and the post pass (a second render pass, or the next subpass when merged). With
+// output.directImage, the image goes from its oldLayout to COLOR_ATTACHMENT_OPTIMAL after
+// whatever the app did with it before, and to its newLayout afterwards, visible to any later
+// command.
+void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, uint32_t width,
+                  uint32_t height, const float clearColor[4], const std::vector<DrawSlot>& slots);
+
+// After recordPasses into the targets' own LDR: copies LDR (and HDR with readBackHdr) into the
+// targets' readback buffers, made visible to the host.
+void recordReadback(VkCommandBuffer cmd, bool merged, bool readBackHdr, const RenderTargets& targets);
+
+// After recordPasses into the targets' own LDR: copies it into the app's image (which has
+// TRANSFER_DST usage), leaving that in its newLayout, visible to any later command.
+void recordCopyToAppImage(VkCommandBuffer cmd, const RenderTargets& targets, const AppImage& image);
 
 }  // namespace facet::runtime::vulkan

@@ -48,6 +48,9 @@ class Context {
   VkQueue queue = VK_NULL_HANDLE;
   bool validationEnabled = false;
   DebugMessages messages;
+  // vkAllocateMemory calls made for the backend so far (ResourceCounts::memoryAllocations);
+  // counted where memory is allocated, which takes the Context as const.
+  mutable uint64_t memoryAllocations = 0;
 
  private:
   bool createInstance(bool validation, std::string* error);

@@ -1,15 +1,15 @@
 #include "vk_meshes.h"
 
-#include <cstring>
-
-#include "vk_context.h"
-
 namespace facet::runtime::vulkan {
 
 void MeshCache::destroy() {
-  if (!ctx_) return;
-  for (auto& [mesh, entry] : meshes_) destroyHostBuffer(ctx_->device, &entry.buffer);
+  if (!allocator_) return;
+  for (auto& [mesh, entry] : meshes_) allocator_->release(&entry.buffer);
   meshes_.clear();
+}
+
+void MeshCache::release(const Entry& entry) {
+  retire_->retire([allocator = allocator_, buffer = entry.buffer]() mutable { allocator->release(&buffer); });
 }
 
 bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
@@ -21,17 +21,16 @@ bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
   // vkCmdBindIndexBuffer requires for UINT32.
   entry->location.indexOffset = vertexBytes;
   if (vertexBytes == 0) return true;
-  if (!createHostBuffer(*ctx_, vertexBytes + indexBytes,
-                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, &entry->buffer,
-                        error)) {
+  if (!allocator_->create(vertexBytes + indexBytes,
+                          VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                          BufferUse::DeviceRead, &entry->buffer, error)) {
     return false;
   }
-  // Host-coherent memory, and the frame's vkQueueSubmit makes host writes visible to the device.
-  auto* mapped = static_cast<uint8_t*>(entry->buffer.mapped);
-  std::memcpy(mapped, mesh.vertices.data(), vertexBytes);
-  if (indexBytes) std::memcpy(mapped + vertexBytes, mesh.indices.data(), indexBytes);
+  uploads_->write(entry->buffer, 0, mesh.vertices.data(), vertexBytes);
+  uploads_->write(entry->buffer, vertexBytes, mesh.indices.data(), indexBytes);
   entry->location.buffer = entry->buffer.buffer;
-  ++uploads_;
+  ++uploadCount_;
   return true;
 }
 
@@ -47,20 +46,20 @@ bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
         found->second.lastUsedFrame = frameNumber_;
         continue;
       }
-      destroyHostBuffer(ctx_->device, &found->second.buffer);  // edited in place, or a new mesh
+      release(found->second);  // edited in place, or a new mesh
       meshes_.erase(found);
     }
     Entry entry;
     entry.key = key;
     entry.lastUsedFrame = frameNumber_;
     if (!upload(*draw.mesh, &entry, error)) {
-      destroyHostBuffer(ctx_->device, &entry.buffer);
+      allocator_->release(&entry.buffer);
       return false;
     }
     meshes_.emplace(draw.mesh, entry);
   }
   // Eviction: a mesh gone from the scene must not hold memory forever.
-  evictUnusedEntries(meshes_, frameNumber_, [&](auto& entry) { destroyHostBuffer(ctx_->device, &entry.buffer); });
+  evictUnusedEntries(meshes_, frameNumber_, [&](const Entry& entry) { release(entry); });
   return true;
 }
 

@@ -10,12 +10,12 @@
 
 #include "facet/render_backend.h"
 #include "facet/runtime/mesh.h"
-#include "vk_resources.h"
 #include "facet/frame_eviction.h"
+#include "vk_memory.h"
+#include "vk_retire.h"
+#include "vk_uploads.h"
 
 namespace facet::runtime::vulkan {
-
-class Context;
 
 // Where a resident mesh is. buffer is null for a mesh without vertices (nothing is drawn).
 struct MeshLocation {
@@ -25,48 +25,57 @@ struct MeshLocation {
   uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
 };
 
-// Device buffers of the Meshes a backend has drawn with, keyed by the Mesh's address.
+// Device buffers of the Meshes a backend has drawn with, keyed by the Mesh's address: each its
+// own VkBuffer, sub-allocated from shared device-local memory (vk_memory.h).
 //
 // Cache rule (as TextureCache's): an entry is reused while the Mesh at that address has the same
 // MeshIdentity (sizes and a hash of its bytes, hashed once per distinct mesh per frame); one
-// unused for kEvictAfterFrames frames is released. The buffers are host-visible and coherent,
-// written once at creation: on the unified memory of phones (and lavapipe) that is device
-// memory; a discrete GPU would want a staging copy into device-local memory (not done).
+// unused for kEvictAfterFrames frames is released. A buffer is written once, at creation,
+// through UploadQueue: directly where device-local memory is host-visible (phones, lavapipe),
+// else by a staging copy recorded before the frame's passes.
 class MeshCache {
  public:
   MeshCache() = default;
   MeshCache(const MeshCache&) = delete;
   MeshCache& operator=(const MeshCache&) = delete;
 
-  // ctx must outlive this cache, and destroy() must be called before the device is destroyed.
-  void init(const Context* ctx) { ctx_ = ctx; }
+  // The three must outlive this cache, and destroy() must be called before the allocator's.
+  // Replaced and evicted buffers go through `retire`: frames in flight may use them.
+  void init(BufferAllocator* allocator, UploadQueue* uploads, RetireQueue* retire) {
+    allocator_ = allocator;
+    uploads_ = uploads;
+    retire_ = retire;
+  }
   // Releases every buffer. The device must be idle. Safe to call twice.
   void destroy();
 
   // Makes every mesh of the (already checked) frame resident, then releases the entries unused
-  // for too long. The device must be idle (between frames): a changed mesh's old buffer is
-  // destroyed here.
+  // for too long. A changed mesh gets a new buffer; the old one is retired.
   bool prepare(const FrameDesc& frame, std::string* error);
   // The location of a mesh that went through prepare() this frame.
   MeshLocation locate(const Mesh* mesh) const;
 
   size_t residentCount() const { return meshes_.size(); }
-  uint64_t uploadCount() const { return uploads_; }
+  uint64_t uploadCount() const { return uploadCount_; }
 
  private:
   struct Entry {
     MeshIdentity key;
-    HostBuffer buffer;  // empty for a mesh without vertices
+    BufferAllocation buffer;  // empty for a mesh without vertices
     MeshLocation location;
     uint64_t lastUsedFrame = 0;
   };
 
   bool upload(const Mesh& mesh, Entry* entry, std::string* error);
 
-  const Context* ctx_ = nullptr;
+  void release(const Entry& entry);
+
+  BufferAllocator* allocator_ = nullptr;
+  UploadQueue* uploads_ = nullptr;
+  RetireQueue* retire_ = nullptr;
   std::unordered_map<const Mesh*, Entry> meshes_;
   uint64_t frameNumber_ = 0;
-  uint64_t uploads_ = 0;
+  uint64_t uploadCount_ = 0;
 };
 
 }  // namespace facet::runtime::vulkan

@@ -88,14 +88,15 @@ bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRen
 }  // namespace
 
 bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
-                            AttachmentOps ldr, VkRenderPass* out, std::string* error) {
+                            AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error) {
   const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
-  const std::array<VkAttachmentDescription, 3> attachments{
+  std::array<VkAttachmentDescription, 3> attachments{
       describeAttachment(kHdrFormat, hdr,
                          hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
                                    : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
       describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
-      describeAttachment(kLdrFormat, ldr, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
+      describeAttachment(kLdrFormat, ldr, layouts.final)};
+  attachments[2].initialLayout = layouts.initial;
 
   const VkAttachmentReference hdrColour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
@@ -209,7 +210,7 @@ bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps d
   return true;
 }
 
-bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
+bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out,
                           std::string* error) {
   VkAttachmentDescription colour{};
   colour.format = kLdrFormat;
@@ -218,8 +219,8 @@ bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
   colour.storeOp = ldr.store;
   colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  colour.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  colour.initialLayout = layouts.initial;
+  colour.finalLayout = layouts.final;
 
   VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};

@@ -28,17 +28,28 @@ AttachmentOps toVulkan(const fg::Attachment& attachment);
 // SHADER_READ_ONLY_OPTIMAL for the post pass to sample) and D32 depth.
 bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
                              VkRenderPass* out, std::string* error);
-// Separate path, render pass 2: the post pass into RGBA8 (left in TRANSFER_SRC_OPTIMAL for
-// readback).
-bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
+// Where the LDR attachment starts and ends. The backend's own LDR target: undefined (every pixel
+// is written) to TRANSFER_SRC_OPTIMAL for readback. The app's image (vulkan_backend.h):
+// COLOR_ATTACHMENT_OPTIMAL throughout, the transitions from and to the app's layouts being
+// barriers recorded around the pass (vk_commands.h). Layouts do not enter render pass
+// compatibility, so the pipelines and framebuffers of one serve the other.
+struct LdrLayouts {
+  VkImageLayout initial = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImageLayout final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+};
+inline constexpr LdrLayouts kAppImageLdrLayouts{VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+
+// Separate path, render pass 2: the post pass into RGBA8.
+bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out,
                           std::string* error);
 // Merged path: one render pass, attachments 0 HDR, 1 depth, 2 LDR. Subpass 0 is the forward
 // pass (colour HDR, depth); subpass 1 the post pass (input attachment HDR; colour slots
 // {unused, LDR}, so LDR is location 1 as in the GLES and Metal fetch forms), joined by
 // a BY_REGION dependency so a tiler keeps HDR in tile memory. HDR ends in TRANSFER_SRC_OPTIMAL
-// when it is stored for readback, LDR always does.
+// when it is stored for readback; LDR as `layouts` say.
 bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
-                            AttachmentOps ldr, VkRenderPass* out, std::string* error);
+                            AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error);
 
 // Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);

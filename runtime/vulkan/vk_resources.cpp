@@ -23,25 +23,33 @@ bool allocate(const Context& ctx, const VkMemoryRequirements& requirements,
     *memory = VK_NULL_HANDLE;
     return false;
   }
+  ++ctx.memoryAllocations;
   return true;
 }
 
 }  // namespace
 
-bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
-                      HostBuffer* out, std::string* error) {
-  HostBuffer buffer;
-  buffer.size = size;
+bool createBufferObject(VkDevice device, VkDeviceSize size, VkBufferUsageFlags usage, VkBuffer* out,
+                        VkMemoryRequirements* needs, std::string* error) {
   VkBufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  if (!check(vkCreateBuffer(ctx.device, &info, nullptr, &buffer.buffer), "vkCreateBuffer", error)) {
+  if (!check(vkCreateBuffer(device, &info, nullptr, out), "vkCreateBuffer", error)) {
+    *out = VK_NULL_HANDLE;
     return false;
   }
+  vkGetBufferMemoryRequirements(device, *out, needs);
+  return true;
+}
+
+bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                      HostBuffer* out, std::string* error) {
+  HostBuffer buffer;
+  buffer.size = size;
   VkMemoryRequirements requirements{};
-  vkGetBufferMemoryRequirements(ctx.device, buffer.buffer, &requirements);
+  if (!createBufferObject(ctx.device, size, usage, &buffer.buffer, &requirements, error)) return false;
   constexpr VkMemoryPropertyFlags kHost =
       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   bool ok = allocate(ctx, requirements, kHost, kHost, &buffer.memory, error) &&

@@ -23,6 +23,9 @@ struct HostBuffer {
 
 bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
                       HostBuffer* out, std::string* error);
+// An exclusive VkBuffer without memory, and what memory it needs. On failure *out stays null.
+bool createBufferObject(VkDevice device, VkDeviceSize size, VkBufferUsageFlags usage, VkBuffer* out,
+                        VkMemoryRequirements* needs, std::string* error);
 // Safe on a default-constructed or partly created buffer; leaves *buffer default-constructed.
 void destroyHostBuffer(VkDevice device, HostBuffer* buffer);
 

@@ -7,7 +7,6 @@
 #include "vk_pipeline.h"
 
 namespace facet::runtime::vulkan {
-namespace {
 
 bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
                        uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error) {
@@ -26,8 +25,6 @@ bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* vi
   return true;
 }
 
-}  // namespace
-
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
                          const TargetConfig& config, RenderTargets* targets, std::string* error) {
   RenderTargets t;
@@ -41,28 +38,31 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
   if (config.hdrTransient) hdrUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   if (config.depthTransient) depthUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  const bool own = config.ownOutput;
   bool ok =
       createImage(ctx, width, height, kHdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr,
                   error) &&
       createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT,
                   &t.depth, error) &&
-      createImage(ctx, width, height, kLdrFormat,
-                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                  VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
-      (!config.readBackHdr ||
-       createHostBuffer(ctx, pixels * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                        &t.hdrReadback, error)) &&
-      createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error);
+      (!own ||
+       (createImage(ctx, width, height, kLdrFormat,
+                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                    VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
+        (!config.readBackHdr ||
+         createHostBuffer(ctx, pixels * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                          &t.hdrReadback, error)) &&
+        createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
   if (ok && config.merged) {
+    // Without an own output, each app image has its own framebuffer (vk_app_images.h).
     const std::array<VkImageView, 3> views{t.hdr.view, t.depth.view, t.ldr.view};
-    ok = createFramebuffer(ctx.device, config.forwardPass, views.data(), 3, width, height,
-                           &t.forwardFramebuffer, error);
+    ok = !own || createFramebuffer(ctx.device, config.forwardPass, views.data(), 3, width, height,
+                                   &t.forwardFramebuffer, error);
   } else if (ok) {
     const std::array<VkImageView, 2> forwardViews{t.hdr.view, t.depth.view};
     ok = createFramebuffer(ctx.device, config.forwardPass, forwardViews.data(), 2, width, height,
                            &t.forwardFramebuffer, error) &&
-         createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height,
-                           &t.postFramebuffer, error);
+         (!own || createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height,
+                                    &t.postFramebuffer, error));
   }
   if (!ok) {
     destroyRenderTargets(ctx.device, &t);

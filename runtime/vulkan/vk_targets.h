@@ -19,6 +19,10 @@ struct TargetConfig {
   bool readBackHdr = false;     // HDR is copied to hdrReadback after the frame
   bool hdrTransient = false;    // never loaded or stored: TRANSIENT_ATTACHMENT usage
   bool depthTransient = false;
+  // The backend's own LDR target, its readback buffers and the framebuffers holding it: needed
+  // by render() and by copies into app images it cannot render to, not when every frame goes
+  // straight into the app's image (then they would be an unused RGBA8 image and buffer).
+  bool ownOutput = true;
   VkRenderPass forwardPass = VK_NULL_HANDLE;  // merged: the one render pass
   VkRenderPass postPass = VK_NULL_HANDLE;     // separate path only
 };
@@ -28,12 +32,16 @@ struct RenderTargets {
   uint32_t height = 0;
   Image hdr;    // RGBA16F: forward colour attachment, read by the post pass, maybe copied out
   Image depth;  // D32
-  Image ldr;    // RGBA8: post pass output, copied out
-  VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR
-  VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only
-  HostBuffer hdrReadback;  // width*height*4 halves, rows top to bottom (when read back)
-  HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom
+  Image ldr;    // RGBA8: post pass output, copied out (ownOutput only)
+  VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR (ownOutput only)
+  VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only (ownOutput only)
+  HostBuffer hdrReadback;  // width*height*4 halves, rows top to bottom (when read back; ownOutput only)
+  HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom (ownOutput only)
 };
+
+// A framebuffer of `count` views for `pass` (or any render pass compatible with it).
+bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
+                       uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error);
 
 // On failure returns false and leaves *targets destroyed (default-constructed).
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,

@@ -37,8 +37,9 @@ VkFormat vulkanFormat(TextureFormat format) {
 
 }  // namespace
 
-bool TextureCache::init(const Context* ctx, std::string* error) {
+bool TextureCache::init(const Context* ctx, RetireQueue* retire, std::string* error) {
   ctx_ = ctx;
+  retire_ = retire;
   // Uploads are recorded into a command buffer of a transient pool and waited on with a fence.
   if (!createSubmitRecorder(ctx->device, ctx->queueFamily,
                             VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
@@ -73,6 +74,14 @@ void TextureCache::destroyEntry(Entry* entry) {
   if (entry->sampler) vkDestroySampler(ctx_->device, entry->sampler, nullptr);
   entry->sampler = VK_NULL_HANDLE;
   destroyImage(ctx_->device, &entry->image);
+}
+
+void TextureCache::retireEntry(const Entry& entry) {
+  VkDevice device = ctx_->device;
+  retire_->retire([device, sampler = entry.sampler, image = entry.image]() mutable {
+    if (sampler) vkDestroySampler(device, sampler, nullptr);
+    destroyImage(device, &image);
+  });
 }
 
 bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& key, Entry* out,
@@ -260,8 +269,8 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
         found->second.lastUsedFrame = frameNumber_;
         continue;
       }
-      // Changed since its upload. Safe to destroy: the device is idle between frames.
-      destroyEntry(&found->second);
+      // Changed since its upload; frames in flight may still sample the old copy.
+      retireEntry(found->second);
       textures_.erase(found);
     }
     Entry entry;
@@ -287,7 +296,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
   }
 
   // Eviction: a texture gone from the scene must not hold device memory forever.
-  evictUnusedEntries(textures_, frameNumber_, [&](auto& entry) { destroyEntry(&entry); });
+  evictUnusedEntries(textures_, frameNumber_, [&](const Entry& entry) { retireEntry(entry); });
   return true;
 }
 

@@ -14,8 +14,9 @@
 
 #include "facet/render_backend.h"
 #include "facet/texture_checks.h"
-#include "vk_resources.h"
 #include "facet/frame_eviction.h"
+#include "vk_resources.h"
+#include "vk_retire.h"
 
 namespace facet::runtime::vulkan {
 
@@ -47,15 +48,16 @@ class TextureCache {
   TextureCache(const TextureCache&) = delete;
   TextureCache& operator=(const TextureCache&) = delete;
 
-  // Creates the upload command buffer and fence and uploads the dummy texture. ctx must outlive
-  // this cache, and destroy() must be called before the device is destroyed.
-  bool init(const Context* ctx, std::string* error);
+  // Creates the upload command buffer and fence and uploads the dummy texture. ctx and retire
+  // must outlive this cache, and destroy() must be called before the device is destroyed.
+  // Replaced and evicted textures go through `retire`: frames in flight may sample them.
+  bool init(const Context* ctx, RetireQueue* retire, std::string* error);
   // Releases every image, sampler and upload object. The device must be idle. Safe to call on an
   // uninitialised or partly initialised cache, and twice.
   void destroy();
 
   // Makes every texture of the (already checked) frame resident and uploaded, then releases the
-  // entries that went unused for too long. The device must be idle (between frames).
+  // entries that went unused for too long.
   bool prepare(const FrameDesc& frame, std::string* error);
 
   // The 16 descriptors of one draw: the frame's textures, then the draw's, the dummy elsewhere.
@@ -81,9 +83,11 @@ class TextureCache {
   bool upload(const std::vector<const Texture*>& sources, const std::vector<Entry*>& targets,
               std::string* error);
   void destroyEntry(Entry* entry);
+  void retireEntry(const Entry& entry);
   void releasePending(std::vector<std::pair<const Texture*, Entry>>* pending);
 
   const Context* ctx_ = nullptr;
+  RetireQueue* retire_ = nullptr;
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;

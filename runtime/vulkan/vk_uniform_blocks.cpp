@@ -1,17 +1,20 @@
 #include "vk_uniform_blocks.h"
 
-#include <cstring>
-
-#include "vk_context.h"
+#include <algorithm>
+#include <vector>
 
 namespace facet::runtime::vulkan {
 
 VkDeviceSize materialRange(size_t bytes) { return bytes == 0 ? 16 : (VkDeviceSize(bytes) + 15) / 16 * 16; }
 
 void UniformBlockCache::destroy() {
-  if (!ctx_) return;
-  for (auto& [block, entry] : blocks_) destroyHostBuffer(ctx_->device, &entry.buffer);
+  if (!allocator_) return;
+  for (auto& [block, entry] : blocks_) allocator_->release(&entry.buffer);
   blocks_.clear();
+}
+
+void UniformBlockCache::release(const Entry& entry) {
+  retire_->retire([allocator = allocator_, buffer = entry.buffer]() mutable { allocator->release(&buffer); });
 }
 
 bool UniformBlockCache::prepare(const FrameDesc& frame, std::string* error) {
@@ -23,22 +26,21 @@ bool UniformBlockCache::prepare(const FrameDesc& frame, std::string* error) {
     entry.lastUsedFrame = frameNumber_;
     if (entry.buffer.buffer && entry.generation == block->generation) continue;
     const VkDeviceSize size = materialRange(block->bytes.size());
-    if (entry.buffer.size != size) {
-      destroyHostBuffer(ctx_->device, &entry.buffer);
-      if (!createHostBuffer(*ctx_, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &entry.buffer, error)) {
-        blocks_.erase(block);
-        return false;
-      }
+    if (entry.buffer.buffer) release(entry);
+    entry.buffer = BufferAllocation{};
+    if (!allocator_->create(size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            BufferUse::DeviceRead, &entry.buffer, error)) {
+      blocks_.erase(block);
+      return false;
     }
-    // Coherent memory, the device idle between frames, and the frame's vkQueueSubmit makes the
-    // host writes visible.
-    auto* mapped = static_cast<uint8_t*>(entry.buffer.mapped);
-    std::memset(mapped, 0, size);
-    if (!block->bytes.empty()) std::memcpy(mapped, block->bytes.data(), block->bytes.size());
+    // A buffer no submitted frame reads yet: the bytes, zero-padded to the bound range.
+    std::vector<uint8_t> padded(size, 0);
+    std::copy(block->bytes.begin(), block->bytes.end(), padded.begin());
+    uploads_->write(entry.buffer, 0, padded.data(), size);
     entry.generation = block->generation;
-    ++uploads_;
+    ++uploadCount_;
   }
-  evictUnusedEntries(blocks_, frameNumber_, [&](auto& entry) { destroyHostBuffer(ctx_->device, &entry.buffer); });
+  evictUnusedEntries(blocks_, frameNumber_, [&](const Entry& entry) { release(entry); });
   return true;
 }
 

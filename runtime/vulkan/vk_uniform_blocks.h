@@ -9,25 +9,30 @@
 #include <unordered_map>
 
 #include "facet/render_backend.h"
-#include "vk_resources.h"
 #include "facet/frame_eviction.h"
+#include "vk_memory.h"
+#include "vk_retire.h"
+#include "vk_uploads.h"
 
 namespace facet::runtime::vulkan {
 
-class Context;
-
-// Keyed by the UniformBlock's address; an entry whose generation differs from the block's is
-// rewritten (in place when the size is unchanged). Generations are unique in the process
+// Keyed by the UniformBlock's address; an entry whose generation differs from the block's gets
+// a new buffer, the old one retired (frames in flight may still read it: never rewritten in
+// place). Generations are unique in the process
 // (nextUniformGeneration), so a block at a freed one's address is never taken for it. An entry
-// unused for kEvictAfterFrames frames is released. Buffers are host-visible and coherent and are
-// written only between frames, when the device is idle.
+// unused for kEvictAfterFrames frames is released. Buffers are sub-allocated device-local memory
+// (vk_memory.h), written once through UploadQueue before any frame reads them.
 class UniformBlockCache {
  public:
   UniformBlockCache() = default;
   UniformBlockCache(const UniformBlockCache&) = delete;
   UniformBlockCache& operator=(const UniformBlockCache&) = delete;
 
-  void init(const Context* ctx) { ctx_ = ctx; }
+  void init(BufferAllocator* allocator, UploadQueue* uploads, RetireQueue* retire) {
+    allocator_ = allocator;
+    uploads_ = uploads;
+    retire_ = retire;
+  }
   // Releases every buffer. The device must be idle. Safe to call twice.
   void destroy();
 
@@ -38,19 +43,23 @@ class UniformBlockCache {
   VkBuffer locate(const UniformBlock* block) const;
 
   size_t residentCount() const { return blocks_.size(); }
-  uint64_t uploadCount() const { return uploads_; }
+  uint64_t uploadCount() const { return uploadCount_; }
 
  private:
   struct Entry {
     uint64_t generation = 0;
-    HostBuffer buffer;
+    BufferAllocation buffer;
     uint64_t lastUsedFrame = 0;
   };
 
-  const Context* ctx_ = nullptr;
+  void release(const Entry& entry);
+
+  BufferAllocator* allocator_ = nullptr;
+  UploadQueue* uploads_ = nullptr;
+  RetireQueue* retire_ = nullptr;
   std::unordered_map<const UniformBlock*, Entry> blocks_;
   uint64_t frameNumber_ = 0;
-  uint64_t uploads_ = 0;
+  uint64_t uploadCount_ = 0;
 };
 
 // The bytes a "MaterialParams" binding covers: whole std140 vec4s, and 16 for an empty block

@@ -130,6 +130,12 @@ struct ResourceCounts {
   uint64_t meshUploads = 0;  // mesh uploads since creation (a new mesh, or one whose bytes changed)
   size_t materialBuffers = 0;    // persistent UniformBlocks resident on the GPU
   uint64_t materialUploads = 0;  // UniformBlock uploads since creation (new, or generation changed)
+  // Vulkan only (0 on GL): vkAllocateMemory calls since creation. Meshes and material blocks are
+  // sub-allocated from shared blocks, so this does not grow with the number of objects.
+  uint64_t memoryAllocations = 0;
+  // Vulkan only: bytes of meshes and material blocks copied through a staging buffer (device-local
+  // memory the host cannot map, or VulkanOptions::stageBufferUploads); 0 where written directly.
+  uint64_t stagedUploadBytes = 0;
 };
 
 class RenderBackend {
@@ -159,7 +165,15 @@ struct VulkanOptions {
   // false gives the mobile path, where HDR and depth never leave tile memory.
   bool readBackHdr = true;
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
+  // Frames an app may have recorded (VulkanRenderer::recordFrame) and not yet seen finish: the
+  // backend keeps this many copies of what a frame writes (uniforms, descriptor sets). 1..8.
+  uint32_t framesInFlight = 2;
+  // Upload meshes and material blocks through a staging copy even where device-local memory is
+  // host-visible (lavapipe, phones): the discrete-GPU path, for tests. Off: the memory type
+  // query decides.
+  bool stageBufferUploads = false;
 };
+inline constexpr uint32_t kMaxFramesInFlight = 8;
 
 // The headless context createGlBackend(const GlOptions&, ...) creates for tests, the viewer and
 // eval (facet_runtime_gl_headless). An app renders on its own context instead: gl_backend.h.
