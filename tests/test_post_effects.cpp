@@ -8,13 +8,16 @@
 #include <cstdlib>
 
 #include "facet/render_backend.h"
+#include "facet/runtime/color_grading.h"
 #include "facet/runtime/scene.h"
+#include "facet/runtime/vignette.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 
 namespace {
 
 using facet::runtime::FrameResult;
+using facet::runtime::PostPath;
 using facet::runtime::PostSettings;
 
 struct Frame {
@@ -38,18 +41,37 @@ const Frame& sphere() {
   return f;
 }
 
-FrameResult renderVulkan(const PostSettings& post) {
-  facet::runtime::VulkanOptions options;
-  options.validation = true;
-  options.post = post;
+enum class Api { Vulkan, Gles };
+
+// One frame through a backend created for `post` on the given API and path, validation on.
+FrameResult render(Api api, const PostSettings& post, const facet::runtime::FrameDesc& frame,
+                   PostPath path = PostPath::Auto) {
   std::string error;
-  auto backend = facet::runtime::createVulkanBackend(options, &error);
+  std::unique_ptr<facet::runtime::RenderBackend> backend;
+  if (api == Api::Vulkan) {
+    facet::runtime::VulkanOptions options;
+    options.validation = true;
+    options.post = post;
+    options.postPath = path;
+    backend = facet::runtime::createVulkanBackend(options, &error);
+  } else {
+    facet::runtime::GlOptions options;
+    options.context = facet::runtime::GlContextKind::EglGles;
+    options.post = post;
+    options.postPath = path;
+    backend = facet::runtime::createGlBackend(options, &error);
+  }
   FrameResult result;
   EXPECT_TRUE(backend) << error;
-  if (!backend || !sphere().frame) return result;
-  EXPECT_TRUE(backend->render(sphere().frame->frame(), &result, &error)) << error;
-  EXPECT_TRUE(backend->validationErrors().empty());
+  if (!backend) return result;
+  EXPECT_TRUE(backend->render(frame, &result, &error)) << error;
+  for (const std::string& message : backend->validationErrors()) ADD_FAILURE() << "validation: " << message;
   return result;
+}
+
+FrameResult renderVulkan(const PostSettings& post) {
+  if (!sphere().frame) return {};
+  return render(Api::Vulkan, post, sphere().frame->frame());
 }
 
 int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
@@ -114,7 +136,8 @@ TEST(PostEffects, AnEffectNotBuiltInIsRefusedAtCreation) {
   facet::runtime::VulkanOptions vk;
   vk.post.toneCurve = "filmic";
   EXPECT_FALSE(facet::runtime::createVulkanBackend(vk, &error));
-  EXPECT_NE(error.find("no post variant with tone curve 'filmic' (built in: aces, aces with dithering, neutral"),
+  EXPECT_NE(error.find("no post variant with tone curve 'filmic' (built in: tone curves aces, neutral, none, each with any of "
+                       "colour grading, vignette and dithering)"),
             std::string::npos) << error;
   facet::runtime::GlOptions gl;
   gl.post.toneCurve = "filmic";
@@ -126,10 +149,100 @@ TEST(PostEffects, SceneNamesThePostEffects) {
   std::string error;
   auto scene = facet::runtime::parseScene("s.json", R"({"post": {"toneCurve": "neutral", "dither": true}, "objects": []})", &error);
   ASSERT_TRUE(scene) << error;
-  EXPECT_EQ(scene->post, (PostSettings{"neutral", true}));
+  EXPECT_EQ(scene->post, (PostSettings{"neutral", true, false, false}));
   EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"post": {"toneCurve": "filmic"}, "objects": []})", &error));
   EXPECT_NE(error.find("s.json: error: /post/toneCurve: expected \"aces\", \"neutral\" or \"none\", not 'filmic'"),
             std::string::npos) << error;
   EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"post": {"dither": 1}, "objects": []})", &error));
   EXPECT_NE(error.find("/post/dither: expected true or false"), std::string::npos) << error;
+}
+
+// Grading through the identity table changes nothing beyond the LUT's RGBA16F rounding and the
+// filter's fixed-point weights: within one 8-bit step, on both APIs and both paths.
+TEST(PostEffects, IdentityLutGivesTheUngradedImage) {
+  ASSERT_TRUE(sphere().frame);
+  const facet::runtime::ColorLutTexels identity = facet::runtime::colorLutTexels(facet::runtime::buildColorLut({}));
+  facet::runtime::FrameDesc graded = sphere().frame->frame();
+  graded.colorLut = &identity;
+  for (Api api : {Api::Vulkan, Api::Gles})
+    for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+      SCOPED_TRACE(std::string(api == Api::Vulkan ? "Vulkan " : "GLES ") + facet::runtime::toString(path));
+      const FrameResult plain = render(api, {"aces", false}, sphere().frame->frame(), path);
+      const FrameResult lut = render(api, {"aces", false, true}, graded, path);
+      ASSERT_FALSE(plain.ldr.empty());
+      ASSERT_EQ(plain.ldr.size(), lut.ldr.size());
+      EXPECT_LE(maxDifference(plain.ldr, lut.ldr), 1);
+    }
+}
+
+// A .cube that swaps red and blue swaps them in the image: the texels' order (red fastest), the
+// 3D texture's axes and the shader's coordinates agree.
+TEST(PostEffects, CubeFileThatSwapsRedAndBlueSwapsThemInTheImage) {
+  ASSERT_TRUE(sphere().frame);
+  std::string cube = "TITLE \"swap red and blue\"\nLUT_3D_SIZE 2\n";
+  for (int b = 0; b < 2; ++b)
+    for (int g = 0; g < 2; ++g)
+      for (int r = 0; r < 2; ++r) cube += std::to_string(b) + " " + std::to_string(g) + " " + std::to_string(r) + "\n";
+  std::string error;
+  const auto lut = facet::runtime::parseCubeLut("swap.cube", cube, &error);
+  ASSERT_TRUE(lut) << error;
+  const facet::runtime::ColorLutTexels texels = facet::runtime::colorLutTexels(*lut);
+  facet::runtime::FrameDesc graded = sphere().frame->frame();
+  graded.colorLut = &texels;
+  for (Api api : {Api::Vulkan, Api::Gles}) {
+    SCOPED_TRACE(api == Api::Vulkan ? "Vulkan" : "GLES");
+    const FrameResult plain = render(api, {"aces", false}, sphere().frame->frame());
+    const FrameResult swapped = render(api, {"aces", false, true}, graded);
+    ASSERT_FALSE(plain.ldr.empty());
+    ASSERT_EQ(plain.ldr.size(), swapped.ldr.size());
+    int worst = 0, redVsBlue = 0;
+    for (size_t i = 0; i < plain.ldr.size(); i += 4) {
+      worst = std::max({worst, std::abs(swapped.ldr[i] - plain.ldr[i + 2]), std::abs(swapped.ldr[i + 2] - plain.ldr[i]),
+                        std::abs(swapped.ldr[i + 1] - plain.ldr[i + 1])});
+      redVsBlue = std::max(redVsBlue, std::abs(plain.ldr[i] - plain.ldr[i + 2]));
+    }
+    EXPECT_GT(redVsBlue, 100) << "the red sphere makes the swap visible";
+    EXPECT_LE(worst, 1);
+  }
+}
+
+TEST(PostEffects, GradingVariantWithoutALutIsAnErrorNotACrash) {
+  ASSERT_TRUE(sphere().frame);
+  std::string error;
+  facet::runtime::VulkanOptions options;
+  options.post = {"aces", false, true};
+  auto backend = facet::runtime::createVulkanBackend(options, &error);
+  ASSERT_TRUE(backend) << error;
+  FrameResult result;
+  EXPECT_FALSE(backend->render(sphere().frame->frame(), &result, &error));
+  EXPECT_NE(error.find("the post variant grades colour, so the frame needs a colorLut of 32³ RGBA16F texels"), std::string::npos)
+      << error;
+}
+
+// The vignette keeps the centre as it was and scales the corners' encoded value by
+// 1 − intensity (|p| = √2 there, past radius + smoothness), on both APIs and both paths.
+TEST(PostEffects, VignetteDarkensTheCornersAndNotTheCentre) {
+  ASSERT_TRUE(sphere().frame);
+  facet::runtime::FrameDesc frame = sphere().frame->frame();
+  const uint32_t w = frame.width, h = frame.height;
+  frame.postUniforms = facet::runtime::postUniforms({0.6, 0.5, 0.5, 1}, w, h);
+  for (Api api : {Api::Vulkan, Api::Gles})
+    for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+      SCOPED_TRACE(std::string(api == Api::Vulkan ? "Vulkan " : "GLES ") + facet::runtime::toString(path));
+      const FrameResult plain = render(api, {"aces", false}, sphere().frame->frame(), path);
+      const FrameResult dark = render(api, {"aces", false, false, true}, frame, path);
+      ASSERT_EQ(plain.ldr.size(), size_t(w) * h * 4);
+      ASSERT_EQ(plain.ldr.size(), dark.ldr.size());
+      auto at = [&](const FrameResult& r, uint32_t x, uint32_t y, int c) { return int(r.ldr[(size_t(y) * w + x) * 4 + size_t(c)]); };
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(at(dark, w / 2, h / 2, c), at(plain, w / 2, h / 2, c));
+        for (auto [x, y] : {std::pair{0u, 0u}, {w - 1, 0u}, {0u, h - 1}, {w - 1, h - 1}}) {
+          const int before = at(plain, x, y, c);
+          if (c == 0) {
+            EXPECT_GT(before, 40) << "a corner bright enough to see the vignette";
+          }
+          EXPECT_NEAR(at(dark, x, y, c), 0.4 * before, 1.5) << "corner " << x << "," << y;
+        }
+      }
+    }
 }

@@ -341,4 +341,6 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   return true;
 }
 
+std::string uniformBlockDeclaration(Flavour flavour, const abi::BlockDesc& block) { return fixedBlock(flavour, block); }
+
 }  // namespace facet::compiler

@@ -13,6 +13,7 @@
 #include "facet/render_backend.h"
 #include "gl_context.h"
 #include "gl_mesh.h"
+#include "gl_post_inputs.h"
 #include "gl_program.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
@@ -51,8 +52,8 @@ class GlBackend final : public RenderBackend {
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
   bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
-  bool postPass(std::string* error);
-  bool mergedPostPass(std::string* error);
+  bool postPass(const FrameDesc& frame, std::string* error);
+  bool mergedPostPass(const FrameDesc& frame, std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
@@ -62,6 +63,7 @@ class GlBackend final : public RenderBackend {
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;
+  gl::PostInputs postInputs_;  // the grading LUT and the post uniforms, when the variant reads them
   gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
   gl::Buffer frameUniforms_;
   gl::Buffer objectUniforms_;
@@ -131,6 +133,10 @@ bool GlBackend::initialise(const GlOptions& options, std::string* error) {
     glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
     glUseProgram(0);
   }
+  if (!postInputs_.init(post_.program.id(), shaders.effects, error)) {
+    if (error) *error = "GL backend: " + *error;
+    return false;
+  }
 
   // GLES timer queries (GL_EXT_disjoint_timer_query) are not used: on Mesa 22.3's llvmpipe the
   // forward pass's elapsed time comes back as a huge value (~2.5e6 ms, measured with facet-view
@@ -192,7 +198,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (readBackHdr_ && merged) readHdr();
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
-    const bool posted = merged ? mergedPostPass(&message) : postPass(&message);
+    const bool posted = merged ? mergedPostPass(frame, &message) : postPass(frame, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!posted) return false;
     if (readBackHdr_ && !merged) readHdr();
@@ -363,7 +369,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
 // Merged path: the post pass draws into the same framebuffer, reading each pixel's HDR value by
 // framebuffer fetch (colour 0, declared inout) and writing LDR to colour 1; then HDR (unless read
 // back) and depth are invalidated, so a tiler never writes them to memory.
-bool GlBackend::mergedPostPass(std::string* error) {
+bool GlBackend::mergedPostPass(const FrameDesc& frame, std::string* error) {
   const GLenum postBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, postBuffers);
   glDisable(GL_DEPTH_TEST);  // the triangle covers every pixel
@@ -371,6 +377,8 @@ bool GlBackend::mergedPostPass(std::string* error) {
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
   glUseProgram(post_.program.id());
+  if (!postInputs_.bind(frame, error)) return false;
+  textures_.forgetBindings();  // the LUT's unit is a forward texture's too
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);
@@ -383,7 +391,7 @@ bool GlBackend::mergedPostPass(std::string* error) {
   return checkGlError("post pass (framebuffer fetch)", error);
 }
 
-bool GlBackend::postPass(std::string* error) {
+bool GlBackend::postPass(const FrameDesc& frame, std::string* error) {
   // Separate path: a second pass that samples the stored HDR target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer.id());
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
@@ -394,7 +402,8 @@ bool GlBackend::postPass(std::string* error) {
   glUseProgram(post_.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
-  textures_.forgetBindings();  // unit 0 no longer holds what the last draw bound
+  if (!postInputs_.bind(frame, error)) return false;
+  textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);

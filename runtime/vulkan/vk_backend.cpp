@@ -20,6 +20,7 @@
 #include "vk_convert.h"
 #include "vk_frame.h"
 #include "vk_pipeline.h"
+#include "vk_post_inputs.h"
 #include "vk_resources.h"
 #include "vk_targets.h"
 #include "vk_textures.h"
@@ -106,6 +107,7 @@ class VulkanBackend final : public VulkanRenderer {
   // The post pass's one descriptor set, rewritten whenever the HDR image is recreated.
   VkDescriptorPool postPool_ = VK_NULL_HANDLE;
   VkDescriptorSet postSet_ = VK_NULL_HANDLE;
+  PostInputs postInputs_;  // the grading LUT and the post uniforms, when the variant reads them
 
   // Per-frame draw descriptor sets (two per draw: uniforms and textures): reset every frame,
   // recreated larger when needed. Capacity counts draws.
@@ -147,6 +149,7 @@ VulkanBackend::~VulkanBackend() {
   // Destroying a pool frees its sets.
   if (drawPool_) vkDestroyDescriptorPool(device, drawPool_, nullptr);
   if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
+  postInputs_.destroy();
   if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
   if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
   if (postLayout_) vkDestroyPipelineLayout(device, postLayout_, nullptr);
@@ -214,7 +217,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
              : createForwardRenderPass(device, hdrOps_, depthOps_, &forwardPass_, error) &&
                    createPostRenderPass(device, ldrOps_, &postPass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
-      !createPostSetLayout(device, hdrType, &postSetLayout_, error) ||
+      !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
       !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_,
                             error) ||
@@ -264,12 +267,14 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
 
-  VkDescriptorPoolSize postPoolSize{hdrType, 1};
+  if (!postInputs_.init(&ctx_, post_->effects, error)) return false;
+  std::vector<VkDescriptorPoolSize> postPoolSizes{{hdrType, 1}};
+  for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects)) postPoolSizes.push_back({b.descriptorType, 1});
   VkDescriptorPoolCreateInfo postPoolInfo{};
   postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   postPoolInfo.maxSets = 1;
-  postPoolInfo.poolSizeCount = 1;
-  postPoolInfo.pPoolSizes = &postPoolSize;
+  postPoolInfo.poolSizeCount = uint32_t(postPoolSizes.size());
+  postPoolInfo.pPoolSizes = postPoolSizes.data();
   if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_),
              "vkCreateDescriptorPool", error)) {
     postPool_ = VK_NULL_HANDLE;
@@ -324,7 +329,8 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
                                forwardLayout_, postLayout_, postPipeline_, postSet_, timestamps_};
     if (!checkFrame(frame, ctx_.properties.limits, error) ||
         !ensureTargets(frame.width, frame.height, error) || !uploadFrame(frame, &slots, error) ||
-        !prepareTextures(frame, error) || !allocateDrawSets(frame, &slots, error) ||
+        !prepareTextures(frame, error) || !postInputs_.prepare(frame, postSet_, error) ||
+        !allocateDrawSets(frame, &slots, error) ||
         !recordFrame(commandBuffer_, objects, targets_, frame.clearColor, slots, appImage, error)) {
       return false;
     }

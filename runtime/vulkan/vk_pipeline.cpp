@@ -289,14 +289,16 @@ bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::st
   return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
-bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType, VkDescriptorSetLayout* out,
+bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType,
+                         const std::vector<VkDescriptorSetLayoutBinding>& effectBindings, VkDescriptorSetLayout* out,
                          std::string* error) {
-  VkDescriptorSetLayoutBinding binding{};
-  binding.binding = abi::kPostHdrBinding;
-  binding.descriptorType = hdrType;
-  binding.descriptorCount = 1;
-  binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
-  return createSetLayout(device, &binding, 1, out, error);
+  std::vector<VkDescriptorSetLayoutBinding> bindings(1);
+  bindings[0].binding = abi::kPostHdrBinding;
+  bindings[0].descriptorType = hdrType;
+  bindings[0].descriptorCount = 1;
+  bindings[0].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+  bindings.insert(bindings.end(), effectBindings.begin(), effectBindings.end());
+  return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
 bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {

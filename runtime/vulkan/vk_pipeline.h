@@ -43,8 +43,9 @@ bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps de
 // Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
 // Set 0 of the post shaders: the HDR colour, as a combined image sampler (separate path) or an
-// input attachment (merged path).
-bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType, VkDescriptorSetLayout* out,
+// input attachment (merged path), and the bindings of the variant's effects (vk_post_inputs.h).
+bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType,
+                         const std::vector<VkDescriptorSetLayoutBinding>& effectBindings, VkDescriptorSetLayout* out,
                          std::string* error);
 // Set 1 (abi::kTextureSet) of material shaders: bindings 0..15 (frame textures, then material
 // textures), all combined image samplers visible to both stages. Fixed rather than reflected per

@@ -99,6 +99,14 @@ inline const std::vector<uint8_t>& materialBytes(const DrawItem& draw) {
   return draw.materialBlock ? draw.materialBlock->bytes : draw.materialParams;
 }
 
+// The colour-grading LUT as the post pass samples it (chunks/color_grading.glsl): abi::kColorLutSize³
+// RGBA16F texels (IEEE binary16 bits, alpha 1), red fastest, then green, then blue; texel (r, g, b)
+// is the graded sRGB-encoded colour of the input (r, g, b) / (kColorLutSize − 1).
+// runtime/color_grading.h builds one from settings or a .cube file.
+struct ColorLutTexels {
+  std::vector<uint16_t> rgba;
+};
+
 struct FrameDesc {
   uint32_t width = 0;
   uint32_t height = 0;
@@ -106,6 +114,10 @@ struct FrameDesc {
   float clearColor[4] = {0, 0, 0, 1};   // linear, pre-exposed HDR value
   std::vector<TextureBinding> frameTextures;  // shared by every draw (bindings 0..7)
   std::vector<DrawItem> draws;
+  // Inputs of the post effects the backend's variant runs (PostSettings), ignored otherwise:
+  // colorGrading needs colorLut (uploaded when its bytes change), vignette reads postUniforms.
+  const ColorLutTexels* colorLut = nullptr;
+  abi::PostUniforms postUniforms{};
 };
 
 // GPU time of one pass of a frame, from the API's timer (Vulkan timestamps, GL timer queries).

@@ -25,6 +25,8 @@ const char* toString(PostPath path);
 struct PostSettings {
   std::string toneCurve = "aces";  // "aces" (filmic) | "neutral" (Khronos PBR Neutral) | "none"
   bool dither = false;             // triangular noise of ±1 step before 8-bit quantisation
+  bool colorGrading = false;       // the encoded colour through FrameDesc::colorLut (3D LUT)
+  bool vignette = false;           // darker corners, from FrameDesc::postUniforms
   bool operator==(const PostSettings&) const = default;
 };
 
