@@ -32,6 +32,7 @@ class GlBackend final : public RenderBackend {
   const char* name() const override { return "gl"; }
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
+  HdrFormat hdrFormat() const override { return hdrFormat_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
   ResourceCounts resources() const override {
@@ -60,6 +61,7 @@ class GlBackend final : public RenderBackend {
   std::unique_ptr<gl::Context> context_;
   PostPath path_ = PostPath::Separate;
   bool readBackHdr_ = true;
+  HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;
@@ -93,6 +95,7 @@ bool GlBackend::initialise(const GlOptions& options, std::string* error) {
   context_ = gl::Context::create(kind, error);
   if (!context_) return false;
   readBackHdr_ = options.readBackHdr;
+  hdrFormat_ = options.hdrFormat;
   const bool canFetch = context_->hasExtension("GL_EXT_shader_framebuffer_fetch");
   if (options.postPath == PostPath::Merged && !canFetch) {
     if (error) *error = std::string("GL backend: the merged path needs GL_EXT_shader_framebuffer_fetch, which this ") +
@@ -233,7 +236,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
-  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, &targets_, error);
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, &targets_, error);
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {

@@ -55,6 +55,7 @@ class VulkanBackend final : public VulkanRenderer {
   const char* name() const override { return "vulkan"; }
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
+  HdrFormat hdrFormat() const override { return hdrFormat_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
@@ -85,6 +86,8 @@ class VulkanBackend final : public VulkanRenderer {
   PostPath path_ = PostPath::Merged;
   const PostShaders* post_ = nullptr;  // the post variant VulkanOptions::post chose
   bool readBackHdr_ = true;
+  HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
+  VkFormat hdrVkFormat_ = kHdrFormat;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
@@ -180,9 +183,11 @@ bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options
 bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* error) {
   path_ = options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged;
   readBackHdr_ = options.readBackHdr;
+  hdrFormat_ = options.hdrFormat;
+  hdrVkFormat_ = hdrFormat_ == HdrFormat::R11G11B10Float ? VK_FORMAT_B10G11R11_UFLOAT_PACK32 : kHdrFormat;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
-  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
+  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
   const size_t expected = path_ == PostPath::Merged ? 1 : 2;
@@ -210,11 +215,23 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
 
   const bool merged = path_ == PostPath::Merged;
+  // RGBA16F is checked with the context's required formats; R11G11B10F's colour-attachment use is
+  // optional in Vulkan (supported on lavapipe and current mobile GPUs), so it is checked here.
+  VkFormatProperties hdrProperties{};
+  vkGetPhysicalDeviceFormatProperties(ctx_.physicalDevice, hdrVkFormat_, &hdrProperties);
+  const VkFormatFeatureFlags hdrNeeds = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+                                        (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) |
+                                        (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0);
+  if ((hdrProperties.optimalTilingFeatures & hdrNeeds) != hdrNeeds) {
+    *error = std::string("the device cannot use ") + toString(hdrFormat_) + " as the HDR target (format features " +
+             std::to_string(hdrProperties.optimalTilingFeatures) + ", needs " + std::to_string(hdrNeeds) + ")";
+    return false;
+  }
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, &forwardPass_, error)
-             : createForwardRenderPass(device, hdrOps_, depthOps_, &forwardPass_, error) &&
+      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, &forwardPass_, error)
+             : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, &forwardPass_, error) &&
                    createPostRenderPass(device, ldrOps_, &postPass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
@@ -357,6 +374,7 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, std::string* 
   config.readBackHdr = readBackHdr_;
   config.hdrTransient = hdrTransient_;
   config.depthTransient = depthTransient_;
+  config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
   if (!createRenderTargets(ctx_, width, height, config, &targets_, error)) return false;
@@ -553,8 +571,16 @@ void VulkanBackend::readBack(FrameResult* result) const {
   result->hdr.clear();
   if (readBackHdr_) {
     result->hdr.resize(values);
-    const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
-    for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+    if (hdrFormat_ == HdrFormat::R11G11B10Float) {
+      const auto* texels = static_cast<const uint32_t*>(targets_.hdrReadback.mapped);
+      for (size_t i = 0; i < values / 4; ++i) {
+        unpackB10G11R11(texels[i], &result->hdr[4 * i]);
+        result->hdr[4 * i + 3] = 1.0f;  // no alpha stored: what a sampler returns for it
+      }
+    } else {
+      const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
+      for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+    }
   }
   result->ldr.resize(values);
   std::memcpy(result->ldr.data(), targets_.ldrReadback.mapped, values);

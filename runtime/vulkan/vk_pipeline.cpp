@@ -87,11 +87,11 @@ bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRen
 
 }  // namespace
 
-bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                             AttachmentOps ldr, VkRenderPass* out, std::string* error) {
   const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
   const std::array<VkAttachmentDescription, 3> attachments{
-      describeAttachment(kHdrFormat, hdr,
+      describeAttachment(hdrFormat, hdr,
                          hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
                                    : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
       describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
@@ -154,11 +154,11 @@ bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps de
   return createRenderPass(device, info, out, error);
 }
 
-bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depthOps,
+bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depthOps,
                              VkRenderPass* out, std::string* error) {
   std::array<VkAttachmentDescription, 2> attachments{};
   VkAttachmentDescription& colour = attachments[0];
-  colour.format = kHdrFormat;
+  colour.format = hdrFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
   colour.loadOp = hdr.load;
   colour.storeOp = hdr.store;

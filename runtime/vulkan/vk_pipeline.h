@@ -13,7 +13,7 @@
 
 namespace facet::runtime::vulkan {
 
-inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // VulkanOptions::hdrFormat's default
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
@@ -26,7 +26,7 @@ AttachmentOps toVulkan(const fg::Attachment& attachment);
 
 // Separate path, render pass 1: the forward pass into RGBA16F colour (left in
 // SHADER_READ_ONLY_OPTIMAL for the post pass to sample) and D32 depth.
-bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                              VkRenderPass* out, std::string* error);
 // Separate path, render pass 2: the post pass into RGBA8 (left in TRANSFER_SRC_OPTIMAL for
 // readback).
@@ -37,7 +37,7 @@ bool createPostRenderPass(VkDevice device, AttachmentOps ldr, VkRenderPass* out,
 // {unused, LDR}, so LDR is location 1 as in the GLES and Metal fetch forms), joined by
 // a BY_REGION dependency so a tiler keeps HDR in tile memory. HDR ends in TRANSFER_SRC_OPTIMAL
 // when it is stored for readback, LDR always does.
-bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                             AttachmentOps ldr, VkRenderPass* out, std::string* error);
 
 // Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).

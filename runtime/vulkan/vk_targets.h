@@ -19,6 +19,7 @@ struct TargetConfig {
   bool readBackHdr = false;     // HDR is copied to hdrReadback after the frame
   bool hdrTransient = false;    // never loaded or stored: TRANSIENT_ATTACHMENT usage
   bool depthTransient = false;
+  VkFormat hdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // or VK_FORMAT_B10G11R11_UFLOAT_PACK32
   VkRenderPass forwardPass = VK_NULL_HANDLE;  // merged: the one render pass
   VkRenderPass postPass = VK_NULL_HANDLE;     // separate path only
 };
@@ -26,12 +27,12 @@ struct TargetConfig {
 struct RenderTargets {
   uint32_t width = 0;
   uint32_t height = 0;
-  Image hdr;    // RGBA16F: forward colour attachment, read by the post pass, maybe copied out
+  Image hdr;    // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
   Image depth;  // D32
   Image ldr;    // RGBA8: post pass output, copied out
   VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR
   VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only
-  HostBuffer hdrReadback;  // width*height*4 halves, rows top to bottom (when read back)
+  HostBuffer hdrReadback;  // width*height texels as stored (8 or 4 bytes), rows top to bottom (when read back)
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom
 };
 

@@ -130,8 +130,9 @@ struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
-  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F
-                             // target); empty when the backend does not read HDR back
+  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F or
+                             // R11G11B10F target, alpha 1 for the latter); empty when the backend
+                             // does not read HDR back
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
@@ -152,6 +153,7 @@ class RenderBackend {
   // derived from: buildForwardPostGraph(w, h, postPath(), readsBackHdr()).
   virtual PostPath postPath() const = 0;
   virtual bool readsBackHdr() const = 0;
+  virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -171,6 +173,8 @@ struct VulkanOptions {
   // false gives the mobile path, where HDR and depth never leave tile memory.
   bool readBackHdr = true;
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
+  // The HDR target's format; creation fails when the device cannot render to, read and sample it.
+  HdrFormat hdrFormat = HdrFormat::Rgba16Float;
 };
 
 enum class GlContextKind {
@@ -194,6 +198,8 @@ struct GlOptions {
   // As VulkanOptions::readBackHdr: keeps HDR (not invalidated) and reads it into FrameResult::hdr.
   bool readBackHdr = true;
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
+  // The HDR target's format; creation fails when the context cannot render to it.
+  HdrFormat hdrFormat = HdrFormat::Rgba16Float;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
