@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 
 #include "facet/render_backend.h"
 #include "facet/runtime/color_grading.h"
+#include "facet/runtime/material_instance.h"
+#include "facet/runtime/mesh.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/vignette.h"
 #include "facet/runtime/scene_frame.h"
@@ -274,4 +277,107 @@ TEST(PostEffects, GradedExampleSceneGivesTheSameImageOnBothPathsAndBothApis) {
       EXPECT_LE(maxDifference(merged.ldr, vulkan.ldr), 3);
     }
   }
+}
+
+namespace {
+
+// A full-frame unlit quad whose HDR value rises from `lo` to `hi` across the frame (uv0.x).
+struct GradientFrame {
+  std::shared_ptr<facet::runtime::Material> material;
+  std::unique_ptr<facet::runtime::MaterialInstance> instance;
+  facet::runtime::Mesh quad;
+  facet::runtime::FrameDesc frame;
+};
+
+std::unique_ptr<GradientFrame> slowGradient(uint32_t width, uint32_t height) {
+  const std::string packages = facet::test::writePackagesFromTexts(
+      "post-gradient", {"material gradient { shading unlit\n param lo: float = 0.5 in [0, 16]\n param hi: float = 0.9 in [0, 16]\n"
+                        " surface { baseColor = vec3(params.lo + (params.hi - params.lo) * vertex.uv0.x) } }"});
+  std::string error;
+  auto loaded = facet::runtime::LoadedMaterial::load(packages + "/gradient.matpkg", &error);
+  EXPECT_TRUE(loaded) << error;
+  if (!loaded) return nullptr;
+  auto g = std::make_unique<GradientFrame>();
+  g->material = facet::runtime::Material::create(std::move(*loaded), {"high", true, 0}, &error);
+  EXPECT_TRUE(g->material) << error;
+  if (!g->material) return nullptr;
+  g->instance = g->material->createInstance();
+  for (const auto& c : {std::array<float, 2>{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+    facet::runtime::Vertex v{{c[0], c[1], 0}};
+    v.uv0[0] = (c[0] + 1) / 2;
+    facet::runtime::appendVertex(g->quad, v);
+  }
+  g->quad.indices = {0, 1, 2, 0, 2, 3};
+  g->frame.width = width;
+  g->frame.height = height;
+  for (int i = 0; i < 16; ++i) g->frame.frame.viewProjection[i] = i % 5 == 0 ? 1.0f : 0.0f;
+  g->frame.draws.push_back(g->instance->draw(g->quad, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}));
+  return g;
+}
+
+// Per channel: the 8-bit values between the channel's smallest and largest that no pixel has.
+std::array<int, 3> emptyBins(const std::vector<uint8_t>& ldr) {
+  std::array<int, 3> empty{};
+  for (int c = 0; c < 3; ++c) {
+    std::array<size_t, 256> histogram{};
+    for (size_t i = size_t(c); i < ldr.size(); i += 4) ++histogram[ldr[i]];
+    int lo = 0, hi = 255;
+    while (lo < 255 && histogram[size_t(lo)] == 0) ++lo;
+    while (hi > 0 && histogram[size_t(hi)] == 0) --hi;
+    for (int v = lo; v < hi; ++v) empty[size_t(c)] += histogram[size_t(v)] == 0 ? 1 : 0;
+  }
+  return empty;
+}
+
+}  // namespace
+
+// Issue 8's dithering test, on a full-frame render: the 8-bit histogram of a slow HDR gradient
+// (0.5 to 0.9 over 256 columns, no tone curve: 56 output steps, under a quarter step per column)
+// has no empty bin between its ends with dithering on. Without dithering it has empty bins when
+// the HDR target is R11G11B10F: its 6-bit (red, green) and 5-bit (blue) mantissas step by 2^-7
+// and 2^-6 there, 0.9 to 2.6 output steps; triangular noise of ±1 step fills every gap of up to
+// two bins. An RGBA16F target steps by 2^-11 (under 0.2 output steps), so its histogram has no
+// gap either way: what dithering removes there is the banding of tests/test_chunks.cpp
+// (PostChunks.TriangularDitherRemovesBandingFromASlowGradient), not missing values.
+TEST(PostEffects, DitheringLeavesNoEmptyBinInTheHistogramOfASlowGradient) {
+  auto gradient = slowGradient(256, 128);
+  ASSERT_TRUE(gradient);
+  using facet::runtime::HdrFormat;
+  for (Api api : {Api::Vulkan, Api::Gles})
+    for (HdrFormat format : {HdrFormat::Rgba16Float, HdrFormat::R11G11B10Float})
+      for (bool dither : {false, true}) {
+        SCOPED_TRACE(std::string(api == Api::Vulkan ? "Vulkan " : "GLES ") + facet::runtime::toString(format) +
+                     (dither ? " dithered" : " plain"));
+        std::string error;
+        std::unique_ptr<facet::runtime::RenderBackend> backend;
+        const PostSettings post{"none", dither};
+        if (api == Api::Vulkan) {
+          facet::runtime::VulkanOptions options;
+          options.validation = true;
+          options.post = post;
+          options.hdrFormat = format;
+          backend = facet::runtime::createVulkanBackend(options, &error);
+        } else {
+          facet::runtime::GlOptions options;
+          options.context = facet::runtime::GlContextKind::EglGles;
+          options.post = post;
+          options.hdrFormat = format;
+          backend = facet::runtime::createGlBackend(options, &error);
+        }
+        ASSERT_TRUE(backend) << error;
+        FrameResult image;
+        ASSERT_TRUE(backend->render(gradient->frame, &image, &error)) << error;
+        ASSERT_EQ(image.ldr.size(), 256u * 128 * 4);
+        EXPECT_LT(int(image.ldr[0]) + 40, int(image.ldr[255 * 4])) << "the gradient spans about 56 steps";
+        const std::array<int, 3> empty = emptyBins(image.ldr);
+        std::printf("%s %s %s: empty bins between the ends r %d, g %d, b %d\n", api == Api::Vulkan ? "Vulkan" : "GLES",
+                    facet::runtime::toString(format), dither ? "dithered" : "plain", empty[0], empty[1], empty[2]);
+        if (dither || format == HdrFormat::Rgba16Float) {
+          EXPECT_EQ(empty, (std::array<int, 3>{0, 0, 0}));
+        } else {
+          for (int c = 0; c < 3; ++c) EXPECT_GT(empty[size_t(c)], 2) << "channel " << c;
+          EXPECT_GT(empty[2], 20) << "blue keeps 5 mantissa bits";
+        }
+        for (const std::string& message : backend->validationErrors()) ADD_FAILURE() << "validation: " << message;
+      }
 }
