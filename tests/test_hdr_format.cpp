@@ -18,14 +18,6 @@ namespace {
 
 using namespace facet::runtime;
 
-std::vector<std::string> exampleScenes() {
-  std::vector<std::string> scenes;
-  for (const auto& entry : std::filesystem::directory_iterator(facet::test::examplePath("scenes")))
-    if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
-  std::sort(scenes.begin(), scenes.end());
-  return scenes;
-}
-
 struct Difference {
   double psnr = 0;  // dB over the RGB channels of the 8-bit output
   int worst = 0;    // largest difference in 8-bit steps
@@ -71,7 +63,7 @@ TEST(HdrFormat, R11G11B10FRendersEveryExampleSceneWithBoundedError) {
   build.pointLightCounts = {0, 1, 2, 4};
   const std::string packages = facet::test::writeExamplePackages("hdr-format-packages", build);
   std::string error;
-  for (const std::string& path : exampleScenes()) {
+  for (const std::string& path : facet::test::exampleScenes()) {
     SCOPED_TRACE(path);
     auto scene = loadScene(path, &error);
     ASSERT_TRUE(scene) << error;
