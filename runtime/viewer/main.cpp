@@ -134,13 +134,14 @@ int main(int argc, char** argv) {
         nlohmann::json entry = facet::viewer::statsJson(graph.graph, compiled, medians, times.size());
         entry["backend"] = name;
         entry["path"] = facet::runtime::toString(backend->postPath());
+        entry["hdrFormat"] = facet::runtime::toString(backend->hdrFormat());
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
-                    result.width, result.height,
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
+                    facet::runtime::toString(backend->hdrFormat()), result.width, result.height,
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
       }
     }
