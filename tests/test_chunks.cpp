@@ -13,32 +13,33 @@
 #include <vector>
 
 #include "facet/compiler/specular_lut.h"
-#include "gpu_eval.h"
+#include "facet/eval/compute_evaluator.h"
 #include "reference/specular_tiers.h"
-#include "reference/standard_model.h"
+#include "test_support.h"
+#include "facet/eval/standard_model.h"
 
 namespace facet {
 namespace {
 
 using reference::kPi;
-using test::FloatPrecision;
-using test::GpuEvalRequest;
+using eval::FloatPrecision;
+using eval::GpuEvalRequest;
 
 constexpr double kMediumpMax = 65504.0;           // saturateMediump's ceiling (precision.glsl)
 constexpr double kUlp1 = 1.0 / 16777216.0;          // 2^-24: half an fp32 ulp at 1
 const FloatPrecision kPrecisions[] = {FloatPrecision::kHighp, FloatPrecision::kMediump};
 
-test::GpuEvaluator& gpu() {
-  static test::GpuEvaluator evaluator;
+eval::GpuEvaluator& gpu() {
+  static eval::GpuEvaluator evaluator;
   return evaluator;
 }
 
 // The named chunks' text, in order. `#include` lines are dropped: the list names every chunk a
-// test needs, in dependency order (matc's assembly resolves includes; gpu_eval pastes text).
+// test needs, in dependency order (matc's assembly resolves includes; the compute evaluator pastes text).
 std::vector<std::string> chunks(std::initializer_list<const char*> names) {
   std::vector<std::string> out;
   for (const char* name : names) {
-    std::string text = test::readSourceFile(std::string("chunks/") + name);
+    std::string text = test::readText(test::sourceDir() + "/chunks/" + name);
     EXPECT_FALSE(text.empty()) << "cannot read chunks/" << name;
     std::string kept;
     for (size_t pos = 0; pos < text.size();) {
@@ -60,7 +61,7 @@ std::vector<glm::vec4> run(GpuEvalRequest request) {
   }
   auto result = gpu().run(request);
   if (!result.ok()) {
-    ADD_FAILURE() << result.error << "\n--- shader ---\n" << test::GpuEvaluator::shaderSource(request);
+    ADD_FAILURE() << result.error << "\n--- shader ---\n" << eval::GpuEvaluator::shaderSource(request);
     return {};
   }
   return result.values;
@@ -212,7 +213,7 @@ TEST(Chunks, SpecularZiomaNxhMatchesReference) {
 // flank of a smooth lobe.
 TEST(Chunks, SpecularLutMatchesTableSampling) {
   compiler::SpecularLut table = compiler::generateSpecularLut();
-  test::GpuR8Texture texture{table.width, table.height, table.texels};
+  eval::GpuR8Texture texture{table.width, table.height, table.texels};
   GpuEvalRequest req;
   req.chunks = chunks({"precision.glsl", "math.glsl", "specular_lut.glsl"});
   req.lut = &texture;
@@ -240,7 +241,7 @@ TEST(Chunks, SpecularLutMatchesTableSampling) {
 
 // The chunk's hard-coded table size and scale are the generator's defaults.
 TEST(SpecularLut, ChunkConstantsMatchGenerator) {
-  std::string text = test::readSourceFile("chunks/specular_lut.glsl");
+  std::string text = test::readText(test::sourceDir() + "/chunks/specular_lut.glsl");
   EXPECT_NE(text.find("vec2(" + std::to_string(compiler::kSpecularLutWidth) + ".0, " + std::to_string(compiler::kSpecularLutHeight) + ".0)"),
             std::string::npos);
   EXPECT_NE(text.find("SPECULAR_LUT_SCALE = 5.0929582;"), std::string::npos);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -339,6 +340,10 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
     EXPECT_TRUE(c["cost"]["vertex"]["cycles"].is_number());
     for (const auto& v : c["views"]) EXPECT_TRUE(fs::exists(out + "/" + v["image"].get<std::string>())) << v["image"];
   }
+  // The BRDF-domain sweep: one row per (lobe, precision) the configurations use.
+  ASSERT_FALSE(report->brdfSweep.empty());
+  ASSERT_TRUE(json.contains("brdf_domain"));
+  EXPECT_EQ(json["brdf_domain"]["lobes"].size(), report->brdfSweep.size());
   EXPECT_TRUE(json["configurations"][0]["error"]["psnr_db"].is_null());  // identical: JSON has no infinity
   EXPECT_TRUE(json["configurations"][0]["error"]["identical"].get<bool>());
 
@@ -346,6 +351,7 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
   EXPECT_NE(md.find("| configuration | changes | PSNR dB | mean | p99 | rel. RMSE | frag. cycles"), std::string::npos);
   for (const auto& r : report->results) EXPECT_NE(md.find("| " + r.configuration.name + " |"), std::string::npos);
   EXPECT_NE(md.find("lavapipe"), std::string::npos);
+  EXPECT_NE(md.find("**BRDF domain**"), std::string::npos);
   // The white furnace: a constant sky, no lights. reference's bright dielectric reflects more
   // than the sky at its rims (diffuse plus a specular rim near 1: 1.170 measured); the tiers as
   // shipped do not exceed it, the two-mip ambient (Zioma's saturated fit, brighter at grazing
@@ -384,6 +390,37 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
   for (const char* name : {"reference", "high"})
     EXPECT_EQ(untimed(facet::eval::reportJson(*report), name), untimed(facet::eval::reportJson(*second), name)) << name;
   EXPECT_EQ(facet::test::readText(out + "/images/high.grazing.png"), facet::test::readText(again + "/images/high.grazing.png"));
+}
+
+// Each lobe over the whole domain against the double model: the full GGX/Smith/Schlick product at
+// highp is the model itself up to fp32 rounding; every cheaper lobe, and fp16, is further off;
+// no lobe overflows (saturateMediump) anywhere, the roughness floor at grazing included.
+TEST(EvalBrdfSweep, TheFullLobeMatchesTheModelAndCheaperLobesAreFurtherOff) {
+  auto material = example("red_plastic");
+  facet::eval::GpuEvaluator gpu(/*validation=*/true);
+  ASSERT_TRUE(gpu.ready()) << gpu.initError();
+  std::vector<facet::eval::BrdfSweepRow> rows;
+  std::string error;
+  auto configs = facet::eval::configurations(material, {Tier::High, Tier::Mid, Tier::Low});
+  ASSERT_TRUE(facet::eval::sweepBrdfDomain(gpu, configs, facet::eval::BrdfSweepDomain{}, &rows, &error)) << error;
+  std::map<std::string, const facet::eval::BrdfSweepRow*> byName;
+  for (const auto& r : rows) {
+    byName[r.lobe + "/" + r.precision] = &r;
+    EXPECT_EQ(r.nonFinite, 0) << r.lobe << " " << r.precision;
+    EXPECT_EQ(r.rowRelativeRmse.size(), r.roughness.size());
+  }
+  const auto* exact = byName["ggx_smith/highp (fp32)"];
+  const auto* exactHalf = byName["ggx_smith/mediump (fp16 emulated)"];
+  ASSERT_TRUE(exact && exactHalf);
+  EXPECT_EQ(exact->configurations.front(), "reference");
+  EXPECT_LT(exact->worstRelativeRmse, 1e-4);
+  EXPECT_GT(exactHalf->meanRelativeRmse, exact->meanRelativeRmse);  // binary16 rounding shows
+  EXPECT_LT(exactHalf->worstRelativeRmse, 0.02);                    // ... and stays small
+  for (const char* cheaper : {"ggx_fastv", "zioma", "lut"}) {
+    const auto* row = byName[std::string(cheaper) + "/mediump (fp16 emulated)"];
+    ASSERT_TRUE(row) << cheaper;
+    EXPECT_GT(row->meanRelativeRmse, exactHalf->meanRelativeRmse) << cheaper;
+  }
 }
 
 TEST(Eval, ASceneFileReplacesTheGridAndOtherMaterialsAreLeftOut) {

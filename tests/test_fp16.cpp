@@ -25,21 +25,21 @@
 #include "facet/runtime/png.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/scene_frame.h"
-#include "gpu_eval.h"
-#include "lower_relaxed_to_quantized.h"
-#include "reference/standard_model.h"
+#include "facet/eval/compute_evaluator.h"
+#include "facet/compiler/lower_relaxed_to_quantized.h"
+#include "facet/eval/standard_model.h"
 #include "test_support.h"
 
 namespace facet {
 namespace {
 
-using test::FloatPrecision;
-using test::GpuEvalRequest;
+using eval::FloatPrecision;
+using eval::GpuEvalRequest;
 
-constexpr spv_target_env kEvalEnv = SPV_ENV_VULKAN_1_1;  // what tests/gpu_eval.cpp compiles for
+constexpr spv_target_env kEvalEnv = SPV_ENV_VULKAN_1_1;  // what eval/src/compute_evaluator.cpp compiles for
 
-test::GpuEvaluator& gpu() {
-  static test::GpuEvaluator evaluator;
+eval::GpuEvaluator& gpu() {
+  static eval::GpuEvaluator evaluator;
   return evaluator;
 }
 
@@ -130,7 +130,7 @@ std::vector<glm::vec4> runEmulated(GpuEvalRequest request, bool optimized) {
     return true;
   };
   auto result = gpu().run(request);
-  EXPECT_TRUE(result.ok()) << result.error << "\n--- shader ---\n" << test::GpuEvaluator::shaderSource(request);
+  EXPECT_TRUE(result.ok()) << result.error << "\n--- shader ---\n" << eval::GpuEvaluator::shaderSource(request);
   return result.values;
 }
 
@@ -269,7 +269,7 @@ TEST(Fp16Pass, RejectsMalformedInput) {
 
 // --- the shading chunks at fp16, at the hard cases' worst points ---
 
-// The shipped chunks (includes stripped: gpu_eval pastes them in order) with a minimal
+// The shipped chunks (includes stripped: the compute evaluator pastes them in order) with a minimal
 // MaterialInputs, so shade_standard_direct runs exactly as in forward_lit.frag.glsl.
 std::vector<std::string> shadingChunks(const char* lobe, bool vertexDiffuse) {
   std::vector<std::string> out;
@@ -281,7 +281,7 @@ std::vector<std::string> shadingChunks(const char* lobe, bool vertexDiffuse) {
   files.push_back(lobe);
   files.push_back("shading_standard.glsl");
   for (const char* f : files) {
-    std::string text = test::readSourceFile(std::string("chunks/") + f), kept, line;
+    std::string text = test::readText(test::sourceDir() + "/chunks/" + f), kept, line;
     EXPECT_FALSE(text.empty()) << f;
     std::istringstream lines(text);
     while (std::getline(lines, line))

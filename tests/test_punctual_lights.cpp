@@ -11,7 +11,7 @@
 #include "facet/permutations/variant_key.h"
 #include "facet/render_backend.h"
 #include "facet/runtime/scene_frame.h"
-#include "reference/standard_model.h"
+#include "facet/eval/standard_model.h"
 #include "sphere_pixels.h"
 #include "test_support.h"
 

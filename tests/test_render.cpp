@@ -12,7 +12,7 @@
 #include "facet/runtime/scene_frame.h"
 #include "dfg_lookup.h"
 #include "reference/specular_tiers.h"
-#include "reference/standard_model.h"
+#include "facet/eval/standard_model.h"
 #include "sphere_pixels.h"
 #include "test_support.h"
 

@@ -343,4 +343,16 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
 
 std::string uniformBlockDeclaration(Flavour flavour, const abi::BlockDesc& block) { return fixedBlock(flavour, block); }
 
+bool specularLobeSource(permutations::SpecularModel model, std::string* out, std::string* error) {
+  // The lobe chunks read nothing of the material: an empty one stands in for it.
+  static const ir::Material noMaterial;
+  static const ir::SurfaceGlsl noSurface;
+  static const ParamLayout noParams;
+  AssemblyInput in{noMaterial, noSurface, noParams, {}, {}, ""};
+  in.tier.specular = model;
+  std::set<std::string> used;
+  return expandIncludes("#include \"precision.glsl\"\n#include \"math.glsl\"\n#include \"facet:specular\"\n", in, out,
+                        &used, error);
+}
+
 }  // namespace facet::compiler

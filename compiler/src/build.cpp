@@ -13,7 +13,7 @@
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
 #include "facet/compiler/minify_glsl.h"
-#include "lower_relaxed_to_quantized.h"
+#include "facet/compiler/lower_relaxed_to_quantized.h"
 #include "parallel_for.h"
 #include "variant_cache.h"
 

@@ -1,4 +1,4 @@
-#include "lower_relaxed_to_quantized.h"
+#include "facet/compiler/lower_relaxed_to_quantized.h"
 
 #define SPV_ENABLE_UTILITY_CODE
 #include <spirv/unified1/spirv.h>

@@ -339,6 +339,16 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     r.sunIblVsHigh = ratio(r.sunIblFragmentCycles, highSunIbl);
   }
   markPareto(&report.results);
+
+  // The lobes on their own, over the whole BRDF domain (lit materials: unlit ones have no lobe).
+  if (options.brdfSweep && material.shading == "lit") {
+    GpuEvaluator gpu(options.validation);
+    if (!gpu.ready()) {
+      error->message = "no Vulkan device for the BRDF-domain sweep: " + gpu.initError();
+      return std::nullopt;
+    }
+    if (!sweepBrdfDomain(gpu, configs, BrdfSweepDomain{}, &report.brdfSweep, &error->message)) return std::nullopt;
+  }
   return report;
 }
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "reference/standard_model.h"
+#include "facet/eval/standard_model.h"
 
 namespace facet::reference {
 

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "reference/standard_model.h"
+#include "facet/eval/standard_model.h"
 
 namespace facet::reference {
 

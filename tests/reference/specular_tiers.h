@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "reference/standard_model.h"
+#include "facet/eval/standard_model.h"
 
 namespace facet::reference {
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "facet/compiler/mobile_cost.h"
+#include "facet/eval/brdf_sweep.h"
 #include "facet/eval/configurations.h"
 #include "facet/eval/grid_scene.h"
 #include "facet/eval/metrics.h"
@@ -30,6 +31,7 @@ struct EvalOptions {
   bool fp16Emulation = false;   // render mediump SPIR-V with binary16 rounding (docs/fp16-emulation.md);
                                 // the cost is still that of the shaders as shipped
   compiler::MobileCostWeights weights;
+  bool brdfSweep = true;        // also each lobe over the BRDF domain (brdf_sweep.h; lit materials)
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
 };
 
@@ -89,6 +91,9 @@ struct EvalReport {
   // Per-GPU figures from Mesa's compilers (addGpuFigures), one per GPU asked for; the pairs are
   // named by configuration. Empty: the cost model's figures only.
   std::vector<gpu_stats::GpuStats> gpuStats;
+  // Each (specular lobe, precision) of the configurations over the BRDF domain; empty for unlit
+  // materials or with EvalOptions::brdfSweep off.
+  std::vector<BrdfSweepRow> brdfSweep;
 };
 
 struct EvalError {

@@ -1,4 +1,4 @@
-#include "gpu_eval.h"
+#include "facet/eval/compute_evaluator.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -7,12 +7,11 @@
 
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <mutex>
 #include <sstream>
 
-namespace facet::test {
+namespace facet::eval {
 namespace {
 
 constexpr uint32_t kLocalSize = 64;
@@ -68,13 +67,6 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFl
 
 }  // namespace
 
-std::string readSourceFile(const std::string& relativePath) {
-  std::ifstream in(std::string(FACET_SOURCE_DIR) + "/" + relativePath, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 struct GpuEvaluator::Impl {
   VkInstance instance = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
@@ -87,15 +79,15 @@ struct GpuEvaluator::Impl {
   std::string initError;
   std::string deviceName;
 
-  bool init();
+  bool init(bool validationOption);
   ~Impl();
   uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags flags) const;
   bool makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, VkBuffer* buffer, VkDeviceMemory* memory, void** mapped,
                   Cleanup* cleanup, std::string* error);
 };
 
-bool GpuEvaluator::Impl::init() {
-  bool validation = validationRequested();
+bool GpuEvaluator::Impl::init(bool validationOption) {
+  bool validation = validationOption || validationRequested();
   std::vector<const char*> layers, extensions;
   if (validation) {
     uint32_t count = 0;
@@ -227,7 +219,7 @@ bool GpuEvaluator::Impl::makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage,
   return true;
 }
 
-GpuEvaluator::GpuEvaluator() : impl_(std::make_unique<Impl>()) { impl_->init(); }
+GpuEvaluator::GpuEvaluator(bool validation) : impl_(std::make_unique<Impl>()) { impl_->init(validation); }
 GpuEvaluator::~GpuEvaluator() = default;
 bool GpuEvaluator::ready() const { return impl_->initError.empty() && impl_->commandPool != VK_NULL_HANDLE; }
 const std::string& GpuEvaluator::initError() const { return impl_->initError; }
@@ -245,8 +237,8 @@ std::string GpuEvaluator::shaderSource(const GpuEvalRequest& request) {
   for (const auto& chunk : request.chunks) s << chunk << "\n";
   s << "void main() {\n"
     << "    uint index = gl_GlobalInvocationID.x;\n"
-    << "    vec4 in0 = inputs[2u * index];\n"
-    << "    vec4 in1 = inputs[2u * index + 1u];\n"
+    << "    " << (request.highpInputs ? "highp " : "") << "vec4 in0 = inputs[2u * index];\n"
+    << "    " << (request.highpInputs ? "highp " : "") << "vec4 in1 = inputs[2u * index + 1u];\n"
     << "    vec4 result = vec4(0.0);\n"
     << "    {\n" << request.body << "\n    }\n"
     << "    outputs[index] = result;\n"
@@ -471,4 +463,4 @@ GpuEvalResult GpuEvaluator::run(const GpuEvalRequest& request) {
   return out;
 }
 
-}  // namespace facet::test
+}  // namespace facet::eval

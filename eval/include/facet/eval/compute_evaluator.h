@@ -1,4 +1,5 @@
-// tests/gpu_eval.h — evaluate GLSL functions on the GPU (lavapipe) for the chunk tests.
+// Evaluates GLSL functions on the GPU (lavapipe): the chunk tests' harness, and `matc eval`'s
+// BRDF-domain sweep (brdf_sweep.h).
 //
 // One compute shader per call: `#version 310 es`, the given default float precision, the chunk
 // sources in order, then a body that reads `vec4 in0, in1` and writes `vec4 result`, once per
@@ -15,7 +16,7 @@
 
 #include <glm/vec4.hpp>
 
-namespace facet::test {
+namespace facet::eval {
 
 enum class FloatPrecision { kHighp, kMediump };
 
@@ -32,6 +33,10 @@ struct GpuEvalRequest {
   std::string body;                 // statements computing `result` from `in0`, `in1`
   std::vector<glm::vec4> in0, in1;  // one invocation per element; same size
   FloatPrecision precision = FloatPrecision::kHighp;
+  // in0 and in1 declared highp whatever `precision` says (inputs a shader forms at highp, e.g.
+  // geometry); otherwise they are at the default precision (rounded to binary16 under fp16
+  // emulation, as a mediump input would be).
+  bool highpInputs = false;
   const GpuR8Texture* lut = nullptr;
   // Optional: rewrites glslang's unoptimized SPIR-V (1.3, Vulkan 1.1) before the pipeline is
   // created, e.g. a SPIR-V pass under test. Returning false fails the call with *error.
@@ -46,7 +51,9 @@ struct GpuEvalResult {
 
 class GpuEvaluator {
  public:
-  GpuEvaluator();   // creates the instance and device; check ready()
+  // Creates the instance and device; check ready(). Validation: the Khronos layer on, any error
+  // fails the call (also on when FACET_VK_VALIDATION=1).
+  explicit GpuEvaluator(bool validation = false);
   ~GpuEvaluator();
   GpuEvaluator(const GpuEvaluator&) = delete;
   GpuEvaluator& operator=(const GpuEvaluator&) = delete;
@@ -65,7 +72,4 @@ class GpuEvaluator {
   std::unique_ptr<Impl> impl_;
 };
 
-// Reads a file under FACET_SOURCE_DIR (e.g. "chunks/brdf_ggx.glsl"); empty on failure.
-std::string readSourceFile(const std::string& relativePath);
-
-}  // namespace facet::test
+}  // namespace facet::eval

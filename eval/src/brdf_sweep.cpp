@@ -1,0 +1,181 @@
+#include "facet/eval/brdf_sweep.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "facet/compiler/assemble.h"
+#include "facet/compiler/lower_relaxed_to_quantized.h"
+#include "facet/compiler/specular_lut.h"
+#include "facet/eval/standard_model.h"
+
+namespace facet::eval {
+namespace {
+
+using permutations::PrecisionPolicy;
+using permutations::SpecularModel;
+
+// The shading floor of chunks/precision.glsl (MIN_PERCEPTUAL_ROUGHNESS): the lobe never sees less.
+constexpr double kMinPerceptualRoughness = 0.089;
+// binary16's largest finite value (MEDIUMP_FLT_MAX of chunks/precision.glsl).
+constexpr double kMediumpMax = 65504.0;
+
+std::string axisValue(const char* axisName, const permutations::TierConfig& config) {
+  for (const Axis& axis : axes())
+    if (std::string(axis.name) == axisName) return axis.get(config);
+  return "";
+}
+
+// The geometry is built at highp from the sampled cosines, as the forward shader forms v, l and
+// h at highp (shading_standard.glsl, half_vector); the lobe runs at the default precision.
+// n = +z, v in the xz plane, l at azimuth φ from v's.
+constexpr const char* kSweepBody = R"(
+    highp float NoV = in0.x, NoL = in0.y, phi = in0.z;
+    highp vec3 n = vec3(0.0, 0.0, 1.0);
+    highp vec3 v = vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV);
+    highp float sinL = sqrt(max(1.0 - NoL * NoL, 0.0));
+    highp vec3 l = vec3(sinL * cos(phi), sinL * sin(phi), NoL);
+    highp vec3 h = normalize(v + l);
+    float r = in0.w;
+    result.xyz = specular_lobe(r, r * r, NoV, NoL, clamp(h.z, 0.0, 1.0), clamp(dot(l, h), 0.0, 1.0), n, v, l, h,
+                               vec3(in1.x)) * NoL;
+)";
+
+struct Sample {
+  float NoV, NoL, phi, roughness, f0;
+  int row;
+};
+
+// f_s of the exact single-scattering lobe, in double, at the inputs as the GPU sees them.
+double referenceLobe(const Sample& s) {
+  double NoV = s.NoV, NoL = s.NoL, phi = s.phi;
+  glm::dvec3 v(std::sqrt(std::max(1.0 - NoV * NoV, 0.0)), 0.0, NoV);
+  double sinL = std::sqrt(std::max(1.0 - NoL * NoL, 0.0));
+  glm::dvec3 l(sinL * std::cos(phi), sinL * std::sin(phi), NoL);
+  glm::dvec3 h = glm::normalize(v + l);
+  double alpha = double(s.roughness) * double(s.roughness);
+  double LoH = std::clamp(glm::dot(l, h), 0.0, 1.0);
+  return reference::distributionGgx(alpha, std::clamp(h.z, 0.0, 1.0)) *
+         reference::visibilitySmithGgxCorrelated(alpha, NoV, NoL) * reference::fresnelSchlick(glm::dvec3(s.f0), LoH).x;
+}
+
+std::vector<Sample> samples(const BrdfSweepDomain& d, std::vector<double>* roughness) {
+  std::vector<Sample> out;
+  roughness->clear();
+  for (int k = 0; k < d.roughnesses; ++k) {
+    double r = d.roughnesses == 1 ? 1.0 : kMinPerceptualRoughness + (1.0 - kMinPerceptualRoughness) * k / (d.roughnesses - 1);
+    roughness->push_back(r);
+    for (double f0 : d.f0)
+      for (double phi : d.azimuths)
+        for (int i = 0; i < d.cosines; ++i)
+          for (int j = 0; j < d.cosines; ++j)
+            out.push_back({float((i + 0.5) / d.cosines), float((j + 0.5) / d.cosines), float(phi), float(r), float(f0), k});
+  }
+  return out;
+}
+
+bool sweepOne(GpuEvaluator& gpu, SpecularModel model, PrecisionPolicy precision, const BrdfSweepDomain& domain,
+              BrdfSweepRow* row, std::string* error) {
+  std::string lobe;
+  if (!compiler::specularLobeSource(model, &lobe, error)) return false;
+  GpuEvalRequest request;
+  request.precision = precision == PrecisionPolicy::Highp ? FloatPrecision::kHighp : FloatPrecision::kMediump;
+  std::string defines = std::string("#define ") + compiler::kSpecularLutSamplerName + " lut\n";
+  if (precision == PrecisionPolicy::Highp) defines += "#define FACET_PRECISION_HIGHP 1\n";
+  request.chunks = {defines, lobe};
+  request.body = kSweepBody;
+  request.highpInputs = true;  // the sampled geometry is exact; only the lobe runs at mediump
+  GpuR8Texture lut;
+  if (model == SpecularModel::Lut) {
+    compiler::SpecularLut table = compiler::generateSpecularLut();
+    lut = {table.width, table.height, std::move(table.texels)};
+    request.lut = &lut;
+  }
+  // mediump on lavapipe computes in fp32: the fp16 emulation pass rounds every relaxed result to
+  // binary16 as a mobile GPU would (docs/fp16-emulation.md).
+  if (precision == PrecisionPolicy::Mediump)
+    request.transformSpirv = [](std::vector<uint32_t>* words, std::string* e) {
+      compiler::QuantizeCounts counts;
+      return compiler::lowerRelaxedToQuantized(words, &counts, e);
+    };
+  std::vector<Sample> grid = samples(domain, &row->roughness);
+  for (const Sample& s : grid) {
+    request.in0.push_back(glm::vec4(s.NoV, s.NoL, s.phi, s.roughness));
+    request.in1.push_back(glm::vec4(s.f0, 0.0f, 0.0f, 0.0f));
+  }
+  GpuEvalResult result = gpu.run(request);
+  if (!result.ok()) {
+    *error = "BRDF sweep of the " + row->lobe + " lobe: " + result.error;
+    return false;
+  }
+  // Per row: [0] every sample alike, [1] weighed by n·v (screen-weighted: a sphere's pixels per
+  // solid angle of view directions go as n·v, so grazing views cover few pixels).
+  const size_t rowCount = row->roughness.size();
+  std::vector<std::array<double, 2>> squaredError(rowCount, {0.0, 0.0}), squaredReference(rowCount, {0.0, 0.0});
+  for (size_t i = 0; i < grid.size(); ++i) {
+    double value = result.values[i].x;
+    if (!std::isfinite(value)) {
+      ++row->nonFinite;
+      continue;
+    }
+    const double exactLobe = referenceLobe(grid[i]);
+    // Beyond binary16's range (the roughness floor near the grazing mirror: D·V ≈ 1.4e6 at
+    // n·v = n·l = 0.03): every mediump lobe saturates at 65504 there by design
+    // (specular_ggx_smith.glsl), a value far above any tone mapper's white. Left out of every row
+    // alike, and counted.
+    if (exactLobe > kMediumpMax) {
+      ++row->beyondHalf;
+      continue;
+    }
+    const double expected = exactLobe * double(grid[i].NoL);
+    const double weights[2] = {1.0, double(grid[i].NoV)};
+    for (size_t w = 0; w < 2; ++w) {
+      squaredError[size_t(grid[i].row)][w] += weights[w] * (value - expected) * (value - expected);
+      squaredReference[size_t(grid[i].row)][w] += weights[w] * expected * expected;
+    }
+  }
+  for (size_t k = 0; k < rowCount; ++k) {
+    auto rmse = [&](size_t w) {
+      return squaredReference[k][w] > 0 ? std::sqrt(squaredError[k][w] / squaredReference[k][w]) : 0.0;
+    };
+    row->rowRelativeRmse.push_back(rmse(0));
+    row->rowScreenRmse.push_back(rmse(1));
+    row->meanRelativeRmse += rmse(0) / double(rowCount);
+    row->meanScreenRmse += rmse(1) / double(rowCount);
+    if (rmse(0) >= row->worstRelativeRmse) {
+      row->worstRelativeRmse = rmse(0);
+      row->worstRoughness = row->roughness[k];
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool sweepBrdfDomain(GpuEvaluator& gpu, const std::vector<Configuration>& configurations, const BrdfSweepDomain& domain,
+                     std::vector<BrdfSweepRow>* rows, std::string* error) {
+  rows->clear();
+  struct Key {
+    SpecularModel specular;
+    PrecisionPolicy precision;
+  };
+  std::vector<Key> keys;
+  for (const Configuration& c : configurations) {
+    auto same = [&](const Key& k) { return k.specular == c.config.specular && k.precision == c.config.precision; };
+    auto it = std::find_if(keys.begin(), keys.end(), same);
+    if (it != keys.end()) {
+      (*rows)[size_t(it - keys.begin())].configurations.push_back(c.name);
+      continue;
+    }
+    BrdfSweepRow row;
+    row.lobe = axisValue("specular", c.config);
+    row.precision = c.config.precision == PrecisionPolicy::Highp ? "highp (fp32)" : "mediump (fp16 emulated)";
+    row.configurations.push_back(c.name);
+    if (!sweepOne(gpu, c.config.specular, c.config.precision, domain, &row, error)) return false;
+    keys.push_back({c.config.specular, c.config.precision});
+    rows->push_back(std::move(row));
+  }
+  return true;
+}
+
+}  // namespace facet::eval
