@@ -8,13 +8,15 @@
 // evenly in perceived lightness (on linear input half of the 32 points would go to the
 // brightest stop and the shadows would get four), which is also how .cube files for SDR
 // displays are authored (sRGB/Rec.709-encoded in and out).
-// Lookup: one hardware-trilinear sample. Lattice point i lies at the texel centre (i + 0.5) / N,
+// Texture: a sampler3D (core in GLES 3.0 and Vulkan), so the lookup is one hardware-trilinear
+// fetch; a 2D strip of N slices would need two bilinear fetches and a blend between slices.
+// Lookup: lattice point i lies at the texel centre (i + 0.5) / N,
 // so [0, 1] maps onto [0.5/N, 1 − 0.5/N]: coord = c·(N − 1)/N + 0.5/N (J. Selan, "Using Lookup
 // Tables to Accelerate Color Transformations", GPU Gems 2, ch. 24, 2005).
 // fp16: the coordinate's error (2^-11 near 1 in mediump) is 1/64 of a texel at N = 32; texels are
-// RGBA16F (2^-11 relative, 1/8 of an 8-bit step). Filtering weights are the GPU's fixed-point
-// sub-texel precision (8 bits on lavapipe and current mobile GPUs): a linear LUT is interpolated
-// to within 1/256 of a lattice step, 1/8000 of the range.
+// RGBA16F (2^-11 relative, 1/8 of an 8-bit step). Filtering weights have the GPU's fixed-point
+// subTexelPrecisionBits (8 on lavapipe, queried; Vulkan guarantees 4): with 8, a linear LUT is
+// interpolated to within 1/256 of a lattice step, 1/8000 of the range; with 4, 1/500 (half a step).
 vec3 grade_color_lut(mediump sampler3D lut, vec3 encoded) {
     const float n = float(FACET_COLOR_LUT_SIZE);
     vec3 coord = clamp(encoded, 0.0, 1.0) * ((n - 1.0) / n) + 0.5 / n;
