@@ -61,6 +61,8 @@ struct PostArgs {
   std::string emitSource;  // folder for every generated shader source, or ""
   std::string toneCurve = "aces";  // compiler::ToneCurve by name
   bool dither = false;
+  bool grading = false;            // 3D LUT colour grading
+  bool vignette = false;
   bool everyVariant = false;       // every combination of effects (what the runtime embeds)
 };
 // The options of `matc post`, shared with facet_post_compiler (the same command, built alone).

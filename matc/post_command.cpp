@@ -19,6 +19,8 @@ void addPostOptions(CLI::App* command, PostArgs* args) {
                    "clamped to [0, 1])")
       ->check(CLI::IsMember({"aces", "neutral", "none"}));
   command->add_flag("--dither", args->dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
+  command->add_flag("--grading", args->grading, "grade the encoded colour through a 3D LUT (the frame gives the LUT)");
+  command->add_flag("--vignette", args->vignette, "darken the corners (the frame gives the vignette's uniforms)");
   command->add_flag("--every-variant", args->everyVariant,
                     "build every combination of effects into the C++ source (the runtime's build does)");
 }
@@ -27,6 +29,8 @@ int postCommand(const PostArgs& args) {
   compiler::PostEffects chosen;
   chosen.toneCurve = *compiler::toneCurveFromString(args.toneCurve);  // CLI11 checked the name
   chosen.dither = args.dither;
+  chosen.colorGrading = args.grading;
+  chosen.vignette = args.vignette;
   const std::vector<compiler::PostEffects> effects =
       args.everyVariant ? compiler::everyPostEffects() : std::vector<compiler::PostEffects>{chosen};
   std::vector<compiler::PostShaders> variants(effects.size());

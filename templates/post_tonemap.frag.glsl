@@ -1,5 +1,6 @@
-// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, dither, for an
-// RGBA8 UNORM target. Each effect is compiled in only when enabled (compiler/post.h PostEffects).
+// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, grade
+// through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
+// when enabled (compiler/post.h PostEffects).
 // Lights were pre-exposed on the CPU, so no exposure multiply happens here.
 // Assembled by the compiler's post domain (compiler/src/post.cpp), which declares `hdrColor` and
 // `fragColor` from shader_abi.h's attachment constants and defines one way to read the pixel:
@@ -30,6 +31,12 @@ void main() {
     vec3 display = hdr;  // no tone curve: srgb_from_linear clamps to [0, 1]
 #endif
     vec3 encoded = srgb_from_linear(display);
+#if defined(FACET_POST_COLOR_GRADING)
+    encoded = grade_color_lut(facet_colorLut, encoded);  // display-referred, encoded: see the chunk
+#endif
+#if defined(FACET_POST_VIGNETTE)
+    encoded *= vignette_factor(gl_FragCoord.xy, post.viewport, post.vignette);
+#endif
 #if defined(FACET_POST_DITHER)
     encoded = dither_triangular_8bit(encoded, gl_FragCoord.xy);  // last, on the value the target quantises
 #endif

@@ -27,6 +27,21 @@ TEST(FacetView, RendersAnExampleSceneOnVulkanWithValidation) {
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
+// The graded example scene runs its own post variant (LUT and vignette) on both APIs, and
+// --hdr-format r11g11b10f reaches the backend and the frame graph's byte counts.
+TEST(FacetView, RendersTheGradedSceneWithAPackedHdrTarget) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-graded-out");
+  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/cube_look.json") + " --packages " + packages + " --out " +
+               out + " --backend both --validation --hdr-format r11g11b10f --post-path separate --stats --frames 1 --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_TRUE(fs::is_regular_file(out + "/cube_look.vulkan.png")) << r.out;
+  EXPECT_TRUE(fs::is_regular_file(out + "/cube_look.gl.png")) << r.out;
+  EXPECT_NE(r.out.find("vulkan: separate path, r11g11b10f HDR, frame graph at 384x256"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total: loaded 0 B, stored 786432 B, sampled 393216 B per frame"), std::string::npos)
+      << "HDR at 4 bytes per pixel, stored and sampled\n" << r.out;
+}
+
 TEST(FacetView, ABrokenSceneIsALocatedErrorAndWritesNothing) {
   std::string dir = facet::test::scratchDir("view-broken");
   std::ofstream(dir + "/broken.json") << "{\n  \"objects\": [\n    {\"material\": }\n  ]\n}\n";

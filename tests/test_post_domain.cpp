@@ -95,9 +95,49 @@ TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {
   const std::string cpp = postShadersCpp({build({}), build(neutral)});
   EXPECT_TRUE(contains(cpp, "const std::vector<PostShaders>& postVariants()"));
   EXPECT_TRUE(contains(cpp, "kFetchSpirv1"));
-  EXPECT_TRUE(contains(cpp, "{{\"neutral\", false}, vs1,"));
-  EXPECT_EQ(everyPostEffects().size(), 6u);
+  EXPECT_TRUE(contains(cpp, "{{\"neutral\", false, false, false}, vs1,"));
+  EXPECT_EQ(everyPostEffects().size(), 24u);  // 3 tone curves × grading × vignette × dither
   EXPECT_TRUE(contains(cpp, "GL_EXT_shader_framebuffer_fetch"));
 }
 
 }  // namespace
+
+TEST(PostDomain, GradingAndVignetteAreCompiledOutWhenOffAndBoundFromTheAbiWhenOn) {
+  PostEffects graded;
+  graded.colorGrading = true;
+  PostEffects vignetted;
+  vignetted.vignette = true;
+  const PostShaders off = build({}), g = build(graded), v = build(vignetted);
+  EXPECT_EQ(postVariantKey(g.effects), "aces+grading");
+  EXPECT_EQ(postVariantKey({ToneCurve::Neutral, true, true, true}), "neutral+grading+vignette+dither");
+  // Off: no LUT sampler, no 3D image type, no uniform block, in any form or target (the
+  // template's calls sit in preprocessor branches that are off).
+  for (const PostStage* stage : {&off.sampledFragment, &off.fetchFragment, &v.sampledFragment, &v.fetchFragment}) {
+    EXPECT_FALSE(contains(stage->glslEs, "sampler3D")) << stage->glslEs;
+    EXPECT_FALSE(contains(stage->glslEs, "vec3 grade_color_lut("));
+    EXPECT_FALSE(contains(stage->glslEs, "#define FACET_POST_COLOR_GRADING"));
+    EXPECT_FALSE(contains(disassembleSpirv(stage->spirv), " 3D ")) << "no 3D image type";
+    EXPECT_FALSE(contains(stage->msl, "texture3d"));
+  }
+  for (const PostStage* stage : {&off.sampledFragment, &off.fetchFragment, &g.sampledFragment, &g.fetchFragment}) {
+    EXPECT_FALSE(contains(stage->glslEs, "PostUniforms"));
+    EXPECT_FALSE(contains(stage->glslEs, "float vignette_factor("));
+    EXPECT_FALSE(contains(stage->glslEs, "#define FACET_POST_VIGNETTE"));
+    EXPECT_FALSE(contains(stage->msl, "PostUniforms"));
+  }
+  // On: the sampler and the block at shader_abi.h's binding in SPIR-V and Metal, by name in GLSL ES.
+  for (const PostStage* stage : {&g.sampledFragment, &g.fetchFragment}) {
+    EXPECT_TRUE(contains(stage->glslEs, "uniform mediump sampler3D facet_colorLut;"));
+    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %facet_colorLut Binding 1")) << disassembleSpirv(stage->spirv);
+    EXPECT_TRUE(contains(stage->msl, "texture3d<float> facet_colorLut [[texture(1)]]")) << stage->msl;
+  }
+  for (const PostStage* stage : {&v.sampledFragment, &v.fetchFragment}) {
+    EXPECT_TRUE(contains(stage->glslEs, "layout(std140) uniform PostUniforms"));
+    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %post Binding 3")) << disassembleSpirv(stage->spirv);
+    EXPECT_TRUE(contains(stage->msl, "constant PostUniforms& post [[buffer(3)]]")) << stage->msl;
+  }
+  EXPECT_LT(off.sampledFragment.spirv.size(), g.sampledFragment.spirv.size());
+  EXPECT_LT(off.sampledFragment.spirv.size(), v.sampledFragment.spirv.size());
+  EXPECT_EQ(postMslBindings({}).size(), 1u);
+  EXPECT_EQ(postMslBindings({ToneCurve::Aces, false, true, true}).size(), 3u);
+}

@@ -22,15 +22,6 @@ struct Backend {
   VulkanOptions options;
 };
 
-std::vector<std::string> exampleScenes() {
-  std::vector<std::string> scenes;
-  for (const auto& entry : std::filesystem::directory_iterator(facet::test::examplePath("scenes"))) {
-    if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
-  }
-  std::sort(scenes.begin(), scenes.end());
-  return scenes;
-}
-
 int maxLdrDifference(const FrameResult& a, const FrameResult& b) {
   int worst = 0;
   for (size_t i = 0; i < a.ldr.size(); ++i) worst = std::max(worst, std::abs(int(a.ldr[i]) - int(b.ldr[i])));
@@ -66,7 +57,7 @@ TEST(RenderPath, MergedAndSeparatePathsGiveTheSameImageOnEveryExampleScene) {
   ASSERT_TRUE(transientBackend) << error;
   EXPECT_FALSE(transientBackend->readsBackHdr());
 
-  const std::vector<std::string> scenes = exampleScenes();
+  const std::vector<std::string> scenes = facet::test::exampleScenes();
   ASSERT_GE(scenes.size(), 5u);
   for (const std::string& path : scenes) {
     SCOPED_TRACE(path);
@@ -118,7 +109,7 @@ TEST(RenderPath, GlesMergedAndSeparatePathsGiveTheSameImageOnEveryExampleSceneAn
   auto vulkan = createVulkanBackend({true, PostPath::Merged, false}, &error);
   ASSERT_TRUE(vulkan) << error;
 
-  for (const std::string& path : exampleScenes()) {
+  for (const std::string& path : facet::test::exampleScenes()) {
     SCOPED_TRACE(path);
     auto scene = loadScene(path, &error);
     ASSERT_TRUE(scene) << error;

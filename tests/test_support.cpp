@@ -16,6 +16,14 @@ namespace facet::test {
 
 namespace fs = std::filesystem;
 
+std::vector<std::string> exampleScenes() {
+  std::vector<std::string> scenes;
+  for (const auto& entry : fs::directory_iterator(examplePath("scenes")))
+    if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
+
 std::string readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;

@@ -16,6 +16,8 @@ namespace facet::test {
 
 inline std::string sourceDir() { return FACET_SOURCE_DIR; }
 inline std::string examplePath(const std::string& relative) { return sourceDir() + "/examples/" + relative; }
+// Every examples/scenes/*.json, sorted.
+std::vector<std::string> exampleScenes();
 
 std::string readText(const std::string& path);
 

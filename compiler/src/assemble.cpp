@@ -341,6 +341,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   return true;
 }
 
+std::string uniformBlockDeclaration(Flavour flavour, const abi::BlockDesc& block) { return fixedBlock(flavour, block); }
+
 bool specularLobeSource(permutations::SpecularModel model, std::string* out, std::string* error) {
   // The lobe chunks read nothing of the material: an empty one stands in for it.
   static const ir::Material noMaterial;

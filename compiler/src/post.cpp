@@ -1,6 +1,7 @@
 #include "facet/compiler/post.h"
 
 #include <cstdio>
+#include <span>
 
 #include "facet/compiler/assemble.h"
 #include "facet/compiler/glsl_library.h"
@@ -35,6 +36,21 @@ std::string postInterface(Flavour flavour, PostRead read) {
   return "";
 }
 
+// The effects' own inputs, also from shader_abi.h: the grading LUT (sampler3D has no default
+// precision in GLSL ES, so it is given) and the PostUniforms block.
+std::string effectInputs(Flavour flavour, const PostEffects& effects) {
+  std::string text;
+  if (effects.colorGrading) {
+    const abi::SamplerDesc& lut = abi::kPostColorLutSampler;
+    text += "#define FACET_COLOR_LUT_SIZE " + std::to_string(abi::kColorLutSize) + "\n";
+    if (flavour == Flavour::Vulkan)
+      text += "layout(set = " + std::to_string(lut.set) + ", binding = " + std::to_string(lut.binding) + ") ";
+    text += "uniform mediump sampler3D " + std::string(lut.name) + ";\n";
+  }
+  if (effects.vignette) text += uniformBlockDeclaration(flavour, abi::kPostBlock);
+  return text;
+}
+
 // Prologue + the chunks the effects need + the template, as materials are assembled: the
 // Vulkan flavour is ES 3.10 with FACET_VULKAN, the GLES flavour ES 3.00.
 bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, const char* templateName,
@@ -47,13 +63,17 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   if (effects.toneCurve == ToneCurve::Aces) text += "#define FACET_POST_ACES 1\n";
   if (effects.toneCurve == ToneCurve::Neutral) text += "#define FACET_POST_NEUTRAL 1\n";
   if (effects.dither) text += "#define FACET_POST_DITHER 1\n";
+  if (effects.colorGrading) text += "#define FACET_POST_COLOR_GRADING 1\n";
+  if (effects.vignette) text += "#define FACET_POST_VIGNETTE 1\n";
   text += "precision mediump float;\nprecision highp int;\n";
   std::vector<std::string> files;
   if (std::string(templateName).find(".frag.") != std::string::npos) {
-    text += postInterface(flavour, read);
+    text += postInterface(flavour, read) + effectInputs(flavour, effects);
     if (effects.toneCurve == ToneCurve::Aces) files.push_back("tonemap_aces.glsl");
     if (effects.toneCurve == ToneCurve::Neutral) files.push_back("tonemap_neutral.glsl");
     files.push_back("srgb.glsl");
+    if (effects.colorGrading) files.push_back("color_grading.glsl");
+    if (effects.vignette) files.push_back("vignette.glsl");
     if (effects.dither) files.push_back("dither.glsl");
   }
   files.push_back(templateName);
@@ -80,14 +100,15 @@ bool finishStage(std::vector<uint32_t>* words, const std::string& what, std::str
 }
 
 // Metal from the optimized SPIR-V, mediump as `half`, as materials get it.
-bool toMsl(const std::vector<uint32_t>& words, const std::string& what, std::string* msl, std::string* error) {
+bool toMsl(const std::vector<uint32_t>& words, std::span<const package::MslBinding> slots, const std::string& what,
+           std::string* msl, std::string* error) {
   std::vector<uint32_t> metal = words;
   std::string log;
   if (!convertRelaxedToHalf(&metal, &log)) {
     *error = "post " + what + ": spirv-opt --convert-relaxed-to-half failed:\n" + log;
     return false;
   }
-  return spirvToMsl(metal, {}, msl, error);
+  return spirvToMsl(metal, slots, msl, error);
 }
 
 // Compiles one fragment form with the vertex stage (glslang links both), checks GLSL ES where
@@ -112,11 +133,12 @@ bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, P
     *error = "post " + what + ": glslang failed:\n" + log;
     return false;
   }
-  if (!finishStage(&spirv.fragment, what, error) || !toMsl(spirv.fragment, what, &fragment->msl, error)) return false;
+  if (!finishStage(&spirv.fragment, what, error) || !toMsl(spirv.fragment, postMslBindings(effects), what, &fragment->msl, error))
+    return false;
   fragment->spirv = std::move(spirv.fragment);
   fragment->glslEs = std::move(es.fragment);
   if (vertex) {
-    if (!finishStage(&spirv.vertex, "vertex stage", error) || !toMsl(spirv.vertex, "vertex stage", &vertex->msl, error)) {
+    if (!finishStage(&spirv.vertex, "vertex stage", error) || !toMsl(spirv.vertex, {}, "vertex stage", &vertex->msl, error)) {
       return false;
     }
     vertex->spirv = std::move(spirv.vertex);
@@ -162,7 +184,23 @@ std::optional<ToneCurve> toneCurveFromString(std::string_view name) {
 }
 
 std::string postVariantKey(const PostEffects& effects) {
-  return std::string(toString(effects.toneCurve)) + (effects.dither ? "+dither" : "");
+  return std::string(toString(effects.toneCurve)) + (effects.colorGrading ? "+grading" : "") +
+         (effects.vignette ? "+vignette" : "") + (effects.dither ? "+dither" : "");
+}
+
+std::vector<package::MslBinding> postMslBindings(const PostEffects& effects) {
+  // The sampled form's HDR texture; the fetch form reads [[color(0)]] instead and ignores it.
+  std::vector<package::MslBinding> slots{{std::string(abi::kPostHdrName), package::MslResource::Texture, abi::kPostHdrSet,
+                                          abi::kPostHdrBinding, abi::mslTextureIndex(abi::kPostHdrBinding)}};
+  if (effects.colorGrading) {
+    const abi::SamplerDesc& lut = abi::kPostColorLutSampler;
+    slots.push_back({std::string(lut.name), package::MslResource::Texture, lut.set, lut.binding, abi::mslTextureIndex(lut.binding)});
+  }
+  if (effects.vignette) {
+    const abi::BlockDesc& block = abi::kPostBlock;
+    slots.push_back({std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)});
+  }
+  return slots;
 }
 
 bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error) {
@@ -179,7 +217,9 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
 std::vector<PostEffects> everyPostEffects() {
   std::vector<PostEffects> all;
   for (ToneCurve curve : {ToneCurve::Aces, ToneCurve::Neutral, ToneCurve::None})
-    for (bool dither : {false, true}) all.push_back({curve, dither});
+    for (bool grading : {false, true})
+      for (bool vignette : {false, true})
+        for (bool dither : {false, true}) all.push_back({curve, dither, grading, vignette});
   return all;
 }
 
@@ -215,8 +255,9 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants) {
   for (size_t i = 0; i < variants.size(); ++i) {
     const std::string n = std::to_string(i);
     const PostEffects& e = variants[i].effects;
-    cpp += std::string("      {{\"") + toString(e.toneCurve) + "\", " + (e.dither ? "true" : "false") + "}, vs" + n + ", fs" + n +
-           ", fsFetch" + n + ", vsText" + n + ", fsText" + n + ", fsFetchText" + n + "},\n";
+    auto flag = [](bool on) { return on ? ", true" : ", false"; };
+    cpp += std::string("      {{\"") + toString(e.toneCurve) + "\"" + flag(e.dither) + flag(e.colorGrading) + flag(e.vignette) +
+           "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" + n + ", fsFetchText" + n + "},\n";
   }
   cpp +=
       "  };\n"

@@ -33,6 +33,7 @@ namespace facet::runtime::gl {
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray) \
   X(PFNGLBLENDFUNCPROC, glBlendFunc) \
   X(PFNGLBUFFERDATAPROC, glBufferData) \
+  X(PFNGLBUFFERSUBDATAPROC, glBufferSubData) \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus) \
   X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv) \
   X(PFNGLCOMPILESHADERPROC, glCompileShader) \
@@ -86,8 +87,10 @@ namespace facet::runtime::gl {
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage) \
   X(PFNGLSHADERSOURCEPROC, glShaderSource) \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D) \
+  X(PFNGLTEXIMAGE3DPROC, glTexImage3D) \
   X(PFNGLTEXPARAMETERIPROC, glTexParameteri) \
   X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D) \
+  X(PFNGLTEXSUBIMAGE3DPROC, glTexSubImage3D) \
   X(PFNGLUNIFORM1IPROC, glUniform1i) \
   X(PFNGLUNIFORMBLOCKBINDINGPROC, glUniformBlockBinding) \
   X(PFNGLUSEPROGRAMPROC, glUseProgram) \
@@ -142,6 +145,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glBindVertexArray         (::facet::runtime::gl::detail::current->glBindVertexArray)
 #define glBlendFunc               (::facet::runtime::gl::detail::current->glBlendFunc)
 #define glBufferData              (::facet::runtime::gl::detail::current->glBufferData)
+#define glBufferSubData           (::facet::runtime::gl::detail::current->glBufferSubData)
 #define glCheckFramebufferStatus  (::facet::runtime::gl::detail::current->glCheckFramebufferStatus)
 #define glClearBufferfv           (::facet::runtime::gl::detail::current->glClearBufferfv)
 #define glCompileShader           (::facet::runtime::gl::detail::current->glCompileShader)
@@ -195,8 +199,10 @@ bool checkGlError(const char* phase, std::string* error);
 #define glRenderbufferStorage     (::facet::runtime::gl::detail::current->glRenderbufferStorage)
 #define glShaderSource            (::facet::runtime::gl::detail::current->glShaderSource)
 #define glTexImage2D              (::facet::runtime::gl::detail::current->glTexImage2D)
+#define glTexImage3D              (::facet::runtime::gl::detail::current->glTexImage3D)
 #define glTexParameteri           (::facet::runtime::gl::detail::current->glTexParameteri)
 #define glTexStorage2D            (::facet::runtime::gl::detail::current->glTexStorage2D)
+#define glTexSubImage3D           (::facet::runtime::gl::detail::current->glTexSubImage3D)
 #define glUniform1i               (::facet::runtime::gl::detail::current->glUniform1i)
 #define glUniformBlockBinding     (::facet::runtime::gl::detail::current->glUniformBlockBinding)
 #define glUseProgram              (::facet::runtime::gl::detail::current->glUseProgram)

@@ -15,6 +15,7 @@
 #include "facet/render_backend.h"
 #include "gl_context.h"
 #include "gl_mesh.h"
+#include "gl_post_inputs.h"
 #include "gl_program.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
@@ -34,6 +35,7 @@ class GlBackend final : public RenderBackend {
   const char* name() const override { return "gl"; }
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
+  HdrFormat hdrFormat() const override { return hdrFormat_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
   ResourceCounts resources() const override {
@@ -54,17 +56,19 @@ class GlBackend final : public RenderBackend {
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
   bool forwardPass(const FrameDesc& frame, std::string* error);
   bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
-  bool postPass(std::string* error);
-  bool mergedPostPass(std::string* error);
+  bool postPass(const FrameDesc& frame, std::string* error);
+  bool mergedPostPass(const FrameDesc& frame, std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
   std::unique_ptr<gl::Context> context_;
   PostPath path_ = PostPath::Separate;
   bool readBackHdr_ = true;
+  HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;
+  gl::PostInputs postInputs_;  // the grading LUT and the post uniforms, when the variant reads them
   gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
   gl::Buffer frameUniforms_;
   gl::Buffer objectUniforms_;
@@ -91,6 +95,7 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   context_ = gl::Context::create(std::move(host), error);
   if (!context_) return false;
   readBackHdr_ = options.readBackHdr;
+  hdrFormat_ = options.hdrFormat;
   const bool canFetch = context_->hasExtension("GL_EXT_shader_framebuffer_fetch");
   if (options.postPath == PostPath::Merged && !canFetch) {
     if (error) *error = std::string("GL backend: the merged path needs GL_EXT_shader_framebuffer_fetch, which this ") +
@@ -130,6 +135,10 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
     glUseProgram(post_.program.id());
     glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
     glUseProgram(0);
+  }
+  if (!postInputs_.init(post_.program.id(), shaders.effects, error)) {
+    if (error) *error = "GL backend: " + *error;
+    return false;
   }
 
   // GLES timer queries (GL_EXT_disjoint_timer_query) are not used: on Mesa 22.3's llvmpipe the
@@ -192,7 +201,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (readBackHdr_ && merged) readHdr();
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
-    const bool posted = merged ? mergedPostPass(&message) : postPass(&message);
+    const bool posted = merged ? mergedPostPass(frame, &message) : postPass(frame, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!posted) return false;
     if (readBackHdr_ && !merged) readHdr();
@@ -227,7 +236,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
-  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, &targets_, error);
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, &targets_, error);
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
@@ -363,7 +372,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
 // Merged path: the post pass draws into the same framebuffer, reading each pixel's HDR value by
 // framebuffer fetch (colour 0, declared inout) and writing LDR to colour 1; then HDR (unless read
 // back) and depth are invalidated, so a tiler never writes them to memory.
-bool GlBackend::mergedPostPass(std::string* error) {
+bool GlBackend::mergedPostPass(const FrameDesc& frame, std::string* error) {
   const GLenum postBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, postBuffers);
   glDisable(GL_DEPTH_TEST);  // the triangle covers every pixel
@@ -371,6 +380,8 @@ bool GlBackend::mergedPostPass(std::string* error) {
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
   glUseProgram(post_.program.id());
+  if (!postInputs_.bind(frame, error)) return false;
+  textures_.forgetBindings();  // the LUT's unit is a forward texture's too
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);
@@ -383,7 +394,7 @@ bool GlBackend::mergedPostPass(std::string* error) {
   return checkGlError("post pass (framebuffer fetch)", error);
 }
 
-bool GlBackend::postPass(std::string* error) {
+bool GlBackend::postPass(const FrameDesc& frame, std::string* error) {
   // Separate path: a second pass that samples the stored HDR target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer.id());
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
@@ -394,7 +405,8 @@ bool GlBackend::postPass(std::string* error) {
   glUseProgram(post_.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
-  textures_.forgetBindings();  // unit 0 no longer holds what the last draw bound
+  if (!postInputs_.bind(frame, error)) return false;
+  textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);

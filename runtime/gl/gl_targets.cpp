@@ -5,11 +5,11 @@
 namespace facet::runtime::gl {
 namespace {
 
-Texture createColorTexture(GLenum internalFormat, GLenum type, GLsizei width, GLsizei height) {
+Texture createColorTexture(GLenum internalFormat, GLenum format, GLenum type, GLsizei width, GLsizei height) {
   Texture texture = Texture::generate();
   glBindTexture(GL_TEXTURE_2D, texture.id());
   // glTexImage2D rather than glTexStorage2D: the 3.3 core fallback may lack texture storage.
-  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, GL_RGBA, type, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format, type, nullptr);
   // The post pass maps pixels one to one: NEAREST keeps HDR values exact, and a single level
   // makes the texture complete without mipmaps.
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -64,14 +64,17 @@ void readRgba(GLuint framebuffer, GLenum attachment, GLenum type, uint32_t width
 
 }  // namespace
 
-bool createRenderTargets(uint32_t width, uint32_t height, bool merged, RenderTargets* targets, std::string* error) {
+bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, RenderTargets* targets,
+                         std::string* error) {
   const auto w = static_cast<GLsizei>(width);
   const auto h = static_cast<GLsizei>(height);
   RenderTargets created;
   created.width = width;
   created.height = height;
 
-  created.hdrColor = createColorTexture(GL_RGBA16F, GL_HALF_FLOAT, w, h);
+  const bool packed = hdrFormat == HdrFormat::R11G11B10Float;
+  created.hdrColor = packed ? createColorTexture(GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV, w, h)
+                            : createColorTexture(GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, w, h);
   created.depth = Renderbuffer::generate();
   glBindRenderbuffer(GL_RENDERBUFFER, created.depth.id());
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
@@ -80,9 +83,9 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, RenderTar
   glBindFramebuffer(GL_FRAMEBUFFER, created.hdrFramebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
-  const bool hdrComplete = checkComplete("HDR (RGBA16F + DEPTH32F)", error);
+  const bool hdrComplete = checkComplete(packed ? "HDR (R11F_G11F_B10F + DEPTH32F)" : "HDR (RGBA16F + DEPTH32F)", error);
 
-  created.ldrColor = createColorTexture(GL_RGBA8, GL_UNSIGNED_BYTE, w, h);
+  created.ldrColor = createColorTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
   created.ldrFramebuffer = Framebuffer::generate();
   glBindFramebuffer(GL_FRAMEBUFFER, created.ldrFramebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.ldrColor.id(), 0);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/render_path.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {
@@ -24,9 +25,10 @@ struct RenderTargets {
   Framebuffer mergedFramebuffer;
 };
 
-// Creates the framebuffers at width × height (the merged one when `merged`) and checks their
-// completeness.
-bool createRenderTargets(uint32_t width, uint32_t height, bool merged, RenderTargets* targets, std::string* error);
+// Creates the framebuffers at width × height (the merged one when `merged`) with an HDR colour
+// target of `hdrFormat` and checks their completeness.
+bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, RenderTargets* targets,
+                         std::string* error);
 
 // Reads colour attachment `attachment` (GL_COLOR_ATTACHMENTi) of `framebuffer` with rows top to
 // bottom (GL returns bottom-up).

@@ -8,12 +8,13 @@ const PostShaders* findPostShaders(const PostSettings& settings, std::string* er
   std::string available;
   for (const PostShaders& variant : postVariants()) {
     if (variant.effects == settings) return &variant;
-    available += std::string(available.empty() ? "" : ", ") + variant.effects.toneCurve +
-                 (variant.effects.dither ? " with dithering" : "");
+    if (variant.effects.dither || variant.effects.colorGrading || variant.effects.vignette) continue;  // listed by tone curve
+    available += std::string(available.empty() ? "" : ", ") + variant.effects.toneCurve;
   }
   if (error)
-    *error = "no post variant with tone curve '" + settings.toneCurve + "'" + (settings.dither ? " and dithering" : "") +
-             " (built in: " + available + ")";
+    *error = "no post variant with tone curve '" + settings.toneCurve + "'" + (settings.colorGrading ? ", colour grading" : "") +
+             (settings.vignette ? ", vignette" : "") + (settings.dither ? ", dithering" : "") + " (built in: tone curves " +
+             available + ", each with any of colour grading, vignette and dithering)";
   return nullptr;
 }
 

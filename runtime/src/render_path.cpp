@@ -11,9 +11,13 @@ const char* toString(PostPath path) {
   return "?";
 }
 
-ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr) {
+const char* toString(HdrFormat format) { return format == HdrFormat::R11G11B10Float ? "r11g11b10f" : "rgba16f"; }
+
+uint32_t bytesPerPixel(HdrFormat format) { return format == HdrFormat::R11G11B10Float ? 4 : 8; }
+
+ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr, HdrFormat hdrFormat) {
   ForwardPostGraph g;
-  g.hdr = g.graph.addResource({"hdr", width, height, 8, false, readBackHdr});
+  g.hdr = g.graph.addResource({"hdr", width, height, bytesPerPixel(hdrFormat), false, readBackHdr});
   g.depth = g.graph.addResource({"depth", width, height, 4, true, false});
   g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true});
   g.forwardPass = g.graph.addPass({"forward", {}, {g.hdr, g.depth}, {g.hdr, g.depth}});

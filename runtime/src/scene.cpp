@@ -1,6 +1,7 @@
 #include "facet/runtime/scene.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -231,11 +232,42 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
   return o;
 }
 
+std::array<double, 3> perChannel(const json& j, const std::string& pointer, double lo, double hi) {
+  if (!j.is_array() || j.size() != 3) fail(pointer, "expected an array of 3 numbers (red, green, blue)");
+  return {number(j[0], pointer + "/0", lo, hi), number(j[1], pointer + "/1", lo, hi), number(j[2], pointer + "/2", lo, hi)};
+}
+
+// Colour grading: settings, or a .cube file instead (one LUT either way; mixing them would leave
+// the reader guessing the order).
+void grading(const json& j, const AssetPaths& assets, Scene* s) {
+  onlyKeys(j, "/post/grading", {"temperature", "tint", "contrast", "saturation", "lift", "gamma", "gain", "lut"});
+  ColorGradingSettings& g = s->grading;
+  if (j.contains("lut")) {
+    if (j.size() != 1) fail("/post/grading/lut", "give either a .cube file or grading settings, not both");
+    s->gradingLut = assets.resolve(j["lut"], "/post/grading/lut");
+  }
+  if (j.contains("temperature")) g.temperature = number(j["temperature"], "/post/grading/temperature", -1, 1);
+  if (j.contains("tint")) g.tint = number(j["tint"], "/post/grading/tint", -1, 1);
+  if (j.contains("contrast")) g.contrast = number(j["contrast"], "/post/grading/contrast", 0.1, 4);
+  if (j.contains("saturation")) g.saturation = number(j["saturation"], "/post/grading/saturation", 0, 4);
+  if (j.contains("lift")) g.lift = perChannel(j["lift"], "/post/grading/lift", -1, 1);
+  if (j.contains("gamma")) g.gamma = perChannel(j["gamma"], "/post/grading/gamma", 0.1, 10);
+  if (j.contains("gain")) g.gain = perChannel(j["gain"], "/post/grading/gain", 0, 10);
+}
+
+void vignette(const json& j, VignetteSettings* v) {
+  onlyKeys(j, "/post/vignette", {"intensity", "radius", "smoothness", "roundness"});
+  if (j.contains("intensity")) v->intensity = number(j["intensity"], "/post/vignette/intensity", 0, 1);
+  if (j.contains("radius")) v->radius = number(j["radius"], "/post/vignette/radius", 0, 4);
+  if (j.contains("smoothness")) v->smoothness = number(j["smoothness"], "/post/vignette/smoothness", 0, 4);
+  if (j.contains("roundness")) v->roundness = number(j["roundness"], "/post/vignette/roundness", 0, 1);
+}
+
 // The effects of the post pass. The tone curves are those the runtime embeds a post variant for
-// (compiler/post.h ToneCurve; a backend refuses any other).
-PostSettings post(const json& j) {
-  onlyKeys(j, "/post", {"toneCurve", "dither"});
-  PostSettings p;
+// (compiler/post.h ToneCurve; a backend refuses any other); grading and vignette are on when given.
+void post(const json& j, const AssetPaths& assets, Scene* s) {
+  onlyKeys(j, "/post", {"toneCurve", "dither", "grading", "vignette"});
+  PostSettings& p = s->post;
   if (j.contains("toneCurve")) {
     p.toneCurve = string(j["toneCurve"], "/post/toneCurve");
     if (p.toneCurve != "aces" && p.toneCurve != "neutral" && p.toneCurve != "none")
@@ -245,7 +277,14 @@ PostSettings post(const json& j) {
     if (!j["dither"].is_boolean()) fail("/post/dither", "expected true or false");
     p.dither = j["dither"].get<bool>();
   }
-  return p;
+  if (j.contains("grading")) {
+    grading(j["grading"], assets, s);
+    p.colorGrading = true;
+  }
+  if (j.contains("vignette")) {
+    vignette(j["vignette"], &s->vignette);
+    p.vignette = true;
+  }
 }
 
 Scene scene(const json& j, const AssetPaths& assets) {
@@ -255,7 +294,7 @@ Scene scene(const json& j, const AssetPaths& assets) {
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
-  if (j.contains("post")) s.post = post(j["post"]);
+  if (j.contains("post")) post(j["post"], assets, &s);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");

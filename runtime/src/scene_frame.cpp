@@ -96,6 +96,13 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     out->frame_.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &dfgTexture()});
   out->frame_.width = scene.width;
   out->frame_.height = scene.height;
+  if (scene.post.colorGrading) {
+    std::optional<ColorLut> lut = scene.gradingLut.empty() ? buildColorLut(scene.grading) : loadCubeLut(scene.gradingLut, error);
+    if (!lut) return nullptr;
+    out->colorLut_ = colorLutTexels(*lut);
+    out->frame_.colorLut = &out->colorLut_;
+  }
+  if (scene.post.vignette) out->frame_.postUniforms = postUniforms(scene.vignette, scene.width, scene.height);
   // The background is the environment's mean (exact for a constant sky): no backdrop is drawn.
   for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 

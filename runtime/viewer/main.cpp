@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false, stats = false, keepHdr = false, json = false;
   size_t frames = 1, warmup = 2;
-  std::string postPathName = "auto", glContext = "auto";
+  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
   uint32_t width = 0, height = 0;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
   app.add_option("--post-path", postPathName,
                  "auto | merged (post pass reads its own pixel in the same render pass) | separate (post samples the stored HDR)")
       ->check(CLI::IsMember({"auto", "merged", "separate"}));
+  app.add_option("--hdr-format", hdrFormatName, "rgba16f (default) | r11g11b10f (half the bytes, 6/6/5 mantissa bits)")
+      ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
   app.add_flag("--keep-hdr", keepHdr, "also store HDR and read it back (debugging; HDR is then not transient)");
   app.add_option("--gl-context", glContext, "auto (EGL GLES, else OSMesa) | egl | osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
@@ -84,6 +86,8 @@ int main(int argc, char** argv) {
   const facet::runtime::PostPath postPath = postPathName == "merged"     ? facet::runtime::PostPath::Merged
                                              : postPathName == "separate" ? facet::runtime::PostPath::Separate
                                                                           : facet::runtime::PostPath::Auto;
+  const facet::runtime::HdrFormat hdrFormat =
+      hdrFormatName == "r11g11b10f" ? facet::runtime::HdrFormat::R11G11B10Float : facet::runtime::HdrFormat::Rgba16Float;
   nlohmann::json report = nlohmann::json::array();
   for (const std::string& name : backends) {
     std::unique_ptr<facet::runtime::RenderBackend> backend;
@@ -93,6 +97,7 @@ int main(int argc, char** argv) {
       options.postPath = postPath;
       options.readBackHdr = keepHdr;
       options.post = scene->post;
+      options.hdrFormat = hdrFormat;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -102,6 +107,7 @@ int main(int argc, char** argv) {
       options.postPath = postPath;
       options.readBackHdr = keepHdr;
       options.post = scene->post;
+      options.hdrFormat = hdrFormat;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);
@@ -120,7 +126,7 @@ int main(int argc, char** argv) {
                 prepared->variantKey().c_str(), prepared->exposure());
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
-          result.width, result.height, backend->postPath(), backend->readsBackHdr());
+          result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
@@ -128,13 +134,14 @@ int main(int argc, char** argv) {
         nlohmann::json entry = facet::viewer::statsJson(graph.graph, compiled, medians, times.size());
         entry["backend"] = name;
         entry["path"] = facet::runtime::toString(backend->postPath());
+        entry["hdrFormat"] = facet::runtime::toString(backend->hdrFormat());
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
-                    result.width, result.height,
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
+                    facet::runtime::toString(backend->hdrFormat()), result.width, result.height,
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
       }
     }

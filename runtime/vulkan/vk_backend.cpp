@@ -26,6 +26,7 @@
 #include "vk_frame.h"
 #include "vk_memory.h"
 #include "vk_pipeline.h"
+#include "vk_post_inputs.h"
 #include "vk_resources.h"
 #include "vk_retire.h"
 #include "vk_targets.h"
@@ -65,6 +66,7 @@ class VulkanBackend final : public VulkanRenderer {
   const char* name() const override { return "vulkan"; }
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
+  HdrFormat hdrFormat() const override { return hdrFormat_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
   bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd, std::string* error) override;
@@ -103,6 +105,8 @@ class VulkanBackend final : public VulkanRenderer {
   const PostShaders* post_ = nullptr;  // the post variant VulkanOptions::post chose
   bool readBackHdr_ = true;
   uint32_t framesInFlight_ = 2;
+  HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
+  VkFormat hdrVkFormat_ = kHdrFormat;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
@@ -140,6 +144,7 @@ class VulkanBackend final : public VulkanRenderer {
   std::vector<FrameSlot> slots_;
   FrameSlot* slot_ = nullptr;  // the frame being prepared
   VkDescriptorPool postPool_ = VK_NULL_HANDLE;
+  PostInputs postInputs_;  // the grading LUT and the post uniforms, when the variant reads them
 
   // Sampled textures, kept across frames; see vk_textures.h for the reuse rule.
   TextureCache textures_;
@@ -190,6 +195,7 @@ VulkanBackend::~VulkanBackend() {
     if (slot.drawPool) vkDestroyDescriptorPool(device, slot.drawPool, nullptr);
   }
   if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
+  postInputs_.destroy();
   if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
   if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
   if (postLayout_) vkDestroyPipelineLayout(device, postLayout_, nullptr);
@@ -228,9 +234,11 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   }
   framesInFlight_ = options.framesInFlight;
   stageBufferUploads_ = options.stageBufferUploads;
+  hdrFormat_ = options.hdrFormat;
+  hdrVkFormat_ = hdrFormat_ == HdrFormat::R11G11B10Float ? VK_FORMAT_B10G11R11_UFLOAT_PACK32 : kHdrFormat;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
-  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_);
+  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
   const size_t expected = path_ == PostPath::Merged ? 1 : 2;
@@ -258,17 +266,29 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
 
   const bool merged = path_ == PostPath::Merged;
+  // RGBA16F is checked with the context's required formats; R11G11B10F's colour-attachment use is
+  // optional in Vulkan (supported on lavapipe and current mobile GPUs), so it is checked here.
+  VkFormatProperties hdrProperties{};
+  vkGetPhysicalDeviceFormatProperties(ctx_.physicalDevice, hdrVkFormat_, &hdrProperties);
+  const VkFormatFeatureFlags hdrNeeds = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+                                        (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) |
+                                        (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0);
+  if ((hdrProperties.optimalTilingFeatures & hdrNeeds) != hdrNeeds) {
+    *error = std::string("the device cannot use ") + toString(hdrFormat_) + " as the HDR target (format features " +
+             std::to_string(hdrProperties.optimalTilingFeatures) + ", needs " + std::to_string(hdrNeeds) + ")";
+    return false;
+  }
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_, error) &&
-                   createMergedRenderPass(device, hdrOps_, depthOps_, ldrOps_, kAppImageLdrLayouts,
+      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_, error) &&
+                   createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, kAppImageLdrLayouts,
                                           &appImagePass_, error)
-             : createForwardRenderPass(device, hdrOps_, depthOps_, &forwardPass_, error) &&
+             : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, &forwardPass_, error) &&
                    createPostRenderPass(device, ldrOps_, LdrLayouts{}, &postPass_, error) &&
                    createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
-      !createPostSetLayout(device, hdrType, &postSetLayout_, error) ||
+      !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
       !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_,
                             error) ||
@@ -323,12 +343,15 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
 
   slots_.resize(framesInFlight_);
   const auto slotCount = static_cast<uint32_t>(slots_.size());
-  VkDescriptorPoolSize postPoolSize{hdrType, slotCount};
+  if (!postInputs_.init(&ctx_, post_->effects, slotCount, error)) return false;
+  std::vector<VkDescriptorPoolSize> postPoolSizes{{hdrType, slotCount}};
+  for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects))
+    postPoolSizes.push_back({b.descriptorType, slotCount});
   VkDescriptorPoolCreateInfo postPoolInfo{};
   postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   postPoolInfo.maxSets = slotCount;
-  postPoolInfo.poolSizeCount = 1;
-  postPoolInfo.pPoolSizes = &postPoolSize;
+  postPoolInfo.poolSizeCount = uint32_t(postPoolSizes.size());
+  postPoolInfo.pPoolSizes = postPoolSizes.data();
   if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_),
              "vkCreateDescriptorPool", error)) {
     postPool_ = VK_NULL_HANDLE;
@@ -417,7 +440,7 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
     return false;
   }
   writePostSet();
-  return true;
+  return postInputs_.prepare(frame, slot_->postSet, size_t(frameNumber_ % slots_.size()), error);
 }
 
 // result: read back into (render); null when the frame goes into appImage (renderToImage).
@@ -501,6 +524,7 @@ TargetConfig VulkanBackend::targetConfig() const {
   config.readBackHdr = readBackHdr_;
   config.hdrTransient = hdrTransient_;
   config.depthTransient = depthTransient_;
+  config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
   return config;
@@ -721,8 +745,16 @@ void VulkanBackend::readBack(FrameResult* result) const {
   result->hdr.clear();
   if (readBackHdr_) {
     result->hdr.resize(values);
-    const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
-    for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+    if (hdrFormat_ == HdrFormat::R11G11B10Float) {
+      const auto* texels = static_cast<const uint32_t*>(targets_.hdrReadback.mapped);
+      for (size_t i = 0; i < values / 4; ++i) {
+        unpackB10G11R11(texels[i], &result->hdr[4 * i]);
+        result->hdr[4 * i + 3] = 1.0f;  // no alpha stored: what a sampler returns for it
+      }
+    } else {
+      const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
+      for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+    }
   }
   result->ldr.resize(values);
   std::memcpy(result->ldr.data(), targets_.ldrReadback.mapped, values);

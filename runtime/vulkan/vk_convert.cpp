@@ -33,4 +33,20 @@ float halfToFloat(uint16_t half) {
   return negative ? -value : value;
 }
 
+namespace {
+// An unsigned float of 5 exponent bits (bias 15) and `mantissaBits`, as binary16 without sign.
+float smallFloat(uint32_t bits, int mantissaBits) {
+  const uint32_t exponent = bits >> mantissaBits, mantissa = bits & ((1u << mantissaBits) - 1);
+  if (exponent == 31) return mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+  if (exponent == 0) return std::ldexp(float(mantissa), -14 - mantissaBits);
+  return std::ldexp(float(mantissa | (1u << mantissaBits)), int(exponent) - 15 - mantissaBits);
+}
+}  // namespace
+
+void unpackB10G11R11(uint32_t texel, float rgb[3]) {
+  rgb[0] = smallFloat(texel & 0x7ffu, 6);
+  rgb[1] = smallFloat((texel >> 11) & 0x7ffu, 6);
+  rgb[2] = smallFloat(texel >> 22, 5);
+}
+
 }  // namespace facet::runtime::vulkan

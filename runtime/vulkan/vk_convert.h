@@ -15,4 +15,8 @@ void glToVulkanClip(const float gl[16], float out[16]);
 // IEEE 754 binary16 → binary32, exact (normals, subnormals, infinities, NaN).
 float halfToFloat(uint16_t half);
 
+// One VK_FORMAT_B10G11R11_UFLOAT_PACK32 texel → RGB: red bits 0..10 and green 11..21 (5-bit
+// exponent, 6-bit mantissa), blue 22..31 (5-bit exponent, 5-bit mantissa), unsigned, bias 15.
+void unpackB10G11R11(uint32_t texel, float rgb[3]);
+
 }  // namespace facet::runtime::vulkan

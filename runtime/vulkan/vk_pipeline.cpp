@@ -87,11 +87,11 @@ bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRen
 
 }  // namespace
 
-bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                             AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error) {
   const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
   std::array<VkAttachmentDescription, 3> attachments{
-      describeAttachment(kHdrFormat, hdr,
+      describeAttachment(hdrFormat, hdr,
                          hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
                                    : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
       describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
@@ -155,11 +155,11 @@ bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps de
   return createRenderPass(device, info, out, error);
 }
 
-bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depthOps,
+bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depthOps,
                              VkRenderPass* out, std::string* error) {
   std::array<VkAttachmentDescription, 2> attachments{};
   VkAttachmentDescription& colour = attachments[0];
-  colour.format = kHdrFormat;
+  colour.format = hdrFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
   colour.loadOp = hdr.load;
   colour.storeOp = hdr.store;
@@ -290,14 +290,16 @@ bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::st
   return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
-bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType, VkDescriptorSetLayout* out,
+bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType,
+                         const std::vector<VkDescriptorSetLayoutBinding>& effectBindings, VkDescriptorSetLayout* out,
                          std::string* error) {
-  VkDescriptorSetLayoutBinding binding{};
-  binding.binding = abi::kPostHdrBinding;
-  binding.descriptorType = hdrType;
-  binding.descriptorCount = 1;
-  binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
-  return createSetLayout(device, &binding, 1, out, error);
+  std::vector<VkDescriptorSetLayoutBinding> bindings(1);
+  bindings[0].binding = abi::kPostHdrBinding;
+  bindings[0].descriptorType = hdrType;
+  bindings[0].descriptorCount = 1;
+  bindings[0].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+  bindings.insert(bindings.end(), effectBindings.begin(), effectBindings.end());
+  return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
 bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {

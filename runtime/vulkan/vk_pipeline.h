@@ -13,7 +13,7 @@
 
 namespace facet::runtime::vulkan {
 
-inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // VulkanOptions::hdrFormat's default
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
@@ -26,7 +26,7 @@ AttachmentOps toVulkan(const fg::Attachment& attachment);
 
 // Separate path, render pass 1: the forward pass into RGBA16F colour (left in
 // SHADER_READ_ONLY_OPTIMAL for the post pass to sample) and D32 depth.
-bool createForwardRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                              VkRenderPass* out, std::string* error);
 // Where the LDR attachment starts and ends. The backend's own LDR target: undefined (every pixel
 // is written) to TRANSFER_SRC_OPTIMAL for readback. The app's image (vulkan_backend.h):
@@ -48,14 +48,15 @@ bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts
 // {unused, LDR}, so LDR is location 1 as in the GLES and Metal fetch forms), joined by
 // a BY_REGION dependency so a tiler keeps HDR in tile memory. HDR ends in TRANSFER_SRC_OPTIMAL
 // when it is stored for readback; LDR as `layouts` say.
-bool createMergedRenderPass(VkDevice device, AttachmentOps hdr, AttachmentOps depth,
+bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                             AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error);
 
 // Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
 // Set 0 of the post shaders: the HDR colour, as a combined image sampler (separate path) or an
-// input attachment (merged path).
-bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType, VkDescriptorSetLayout* out,
+// input attachment (merged path), and the bindings of the variant's effects (vk_post_inputs.h).
+bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType,
+                         const std::vector<VkDescriptorSetLayoutBinding>& effectBindings, VkDescriptorSetLayout* out,
                          std::string* error);
 // Set 1 (abi::kTextureSet) of material shaders: bindings 0..15 (frame textures, then material
 // textures), all combined image samplers visible to both stages. Fixed rather than reflected per

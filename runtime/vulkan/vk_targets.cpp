@@ -40,7 +40,7 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
   if (config.depthTransient) depthUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   const bool own = config.ownOutput;
   bool ok =
-      createImage(ctx, width, height, kHdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr,
+      createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr,
                   error) &&
       createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT,
                   &t.depth, error) &&
@@ -49,7 +49,7 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                     VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
         (!config.readBackHdr ||
-         createHostBuffer(ctx, pixels * 4 * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+         createHostBuffer(ctx, pixels * (config.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           &t.hdrReadback, error)) &&
         createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
   if (ok && config.merged) {

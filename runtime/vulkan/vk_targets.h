@@ -23,6 +23,7 @@ struct TargetConfig {
   // by render() and by copies into app images it cannot render to, not when every frame goes
   // straight into the app's image (then they would be an unused RGBA8 image and buffer).
   bool ownOutput = true;
+  VkFormat hdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // or VK_FORMAT_B10G11R11_UFLOAT_PACK32
   VkRenderPass forwardPass = VK_NULL_HANDLE;  // merged: the one render pass
   VkRenderPass postPass = VK_NULL_HANDLE;     // separate path only
 };
@@ -30,12 +31,12 @@ struct TargetConfig {
 struct RenderTargets {
   uint32_t width = 0;
   uint32_t height = 0;
-  Image hdr;    // RGBA16F: forward colour attachment, read by the post pass, maybe copied out
+  Image hdr;    // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
   Image depth;  // D32
   Image ldr;    // RGBA8: post pass output, copied out (ownOutput only)
   VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR (ownOutput only)
   VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only (ownOutput only)
-  HostBuffer hdrReadback;  // width*height*4 halves, rows top to bottom (when read back; ownOutput only)
+  HostBuffer hdrReadback;  // width*height texels as stored (8 or 4 bytes), rows top to bottom (when read back; ownOutput only)
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom (ownOutput only)
 };
 

@@ -78,6 +78,17 @@ inline constexpr const char* kMaterialSamplerPrefix = "facet_material_";
 // Post pass: the HDR colour of the forward pass, as a combined image sampler at set 0 binding 0
 // (Vulkan) or texture unit 0 (GL, uniform "hdrColor").
 inline constexpr uint32_t kPostHdrBinding = 0;
+// Colour grading (post variants with grading only): a 3D lookup table of kColorLutSize³ RGBA16F
+// texels, trilinear, clamped; set kPostHdrSet binding kPostColorLutBinding (Vulkan), texture unit
+// kPostColorLutBinding (GL), [[texture(kPostColorLutBinding)]] (Metal). Texel (r, g, b) holds the
+// graded sRGB-encoded colour of the input (r, g, b) / (N − 1) (runtime/color_grading.h).
+inline constexpr uint32_t kPostColorLutBinding = 1;
+inline constexpr const char* kPostColorLutName = "facet_colorLut";
+inline constexpr uint32_t kColorLutSize = 32;
+// The post pass's uniform block (post variants with a vignette only): Vulkan set kPostHdrSet,
+// binding kPostUniformsBinding; GL uniform buffer binding point kPostUniformsBinding (clear of the
+// forward blocks' 0..2); Metal [[buffer(kPostUniformsBinding)]].
+inline constexpr uint32_t kPostUniformsBinding = 3;
 
 // Per-frame data. Matrices are column-major, OpenGL clip conventions (right-handed world,
 // clip y up, clip z in [-w, w]); the Vulkan backend converts to its own clip space.
@@ -121,6 +132,16 @@ struct ObjectUniforms {
   float normalMatrix[16];  // inverse-transpose of model's upper 3×3, stored as a mat4
 };
 static_assert(sizeof(ObjectUniforms) == 128, "std140 layout of ObjectUniforms");
+
+// Per-frame data of the post pass (block "PostUniforms", chunks/vignette.glsl reads it).
+struct PostUniforms {
+  // x: intensity (0: none, 1: black at the corners), y: radius where darkening starts, z: the
+  // width of the transition, w: roundness (1: a circle on screen, 0: an ellipse fitting the frame).
+  // Distances are in units of half the frame's height from its centre (runtime/post_uniforms.h).
+  float vignette[4];
+  float viewport[4];  // x: 1 / width, y: 1 / height (pixels), z: width / height, w: unused
+};
+static_assert(sizeof(PostUniforms) == 32, "std140 layout of PostUniforms");
 
 // ---------------------------------------------------------------------------------------------
 // The interface as data. The compiler prints the shaders' declarations from these tables
@@ -213,6 +234,14 @@ inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;
 inline constexpr uint32_t kPostHdrColorLocation = 0;     // merged path: HDR is colour 0 of the pass
 inline constexpr uint32_t kPostMergedLdrLocation = 1;    // merged path: LDR is colour 1
 inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR is the only colour
+// The post pass's block and grading sampler, at the HDR input's set.
+inline constexpr MemberDesc kPostMembers[] = {
+    {"mediump vec4", "vignette"},
+    {"highp vec4", "viewport"},
+};
+inline constexpr BlockDesc kPostBlock{"PostUniforms", "post", kPostHdrSet, kPostUniformsBinding, kPostMembers,
+                                      uint32_t(sizeof(PostUniforms))};
+inline constexpr SamplerDesc kPostColorLutSampler{kPostColorLutName, kPostHdrSet, kPostColorLutBinding};
 
 
 // Metal (MSL) argument slots, pinned by the MSL backend from the tables above so that every

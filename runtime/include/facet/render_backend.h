@@ -99,6 +99,14 @@ inline const std::vector<uint8_t>& materialBytes(const DrawItem& draw) {
   return draw.materialBlock ? draw.materialBlock->bytes : draw.materialParams;
 }
 
+// The colour-grading LUT as the post pass samples it (chunks/color_grading.glsl): abi::kColorLutSize³
+// RGBA16F texels (IEEE binary16 bits, alpha 1), red fastest, then green, then blue; texel (r, g, b)
+// is the graded sRGB-encoded colour of the input (r, g, b) / (kColorLutSize − 1).
+// runtime/color_grading.h builds one from settings or a .cube file.
+struct ColorLutTexels {
+  std::vector<uint16_t> rgba;
+};
+
 struct FrameDesc {
   uint32_t width = 0;
   uint32_t height = 0;
@@ -106,6 +114,10 @@ struct FrameDesc {
   float clearColor[4] = {0, 0, 0, 1};   // linear, pre-exposed HDR value
   std::vector<TextureBinding> frameTextures;  // shared by every draw (bindings 0..7)
   std::vector<DrawItem> draws;
+  // Inputs of the post effects the backend's variant runs (PostSettings), ignored otherwise:
+  // colorGrading needs colorLut (uploaded when its bytes change), vignette reads postUniforms.
+  const ColorLutTexels* colorLut = nullptr;
+  abi::PostUniforms postUniforms{};
 };
 
 // GPU time of one pass of a frame, from the API's timer (Vulkan timestamps, GL timer queries).
@@ -118,8 +130,9 @@ struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
-  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F
-                             // target); empty when the backend does not read HDR back
+  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F or
+                             // R11G11B10F target, alpha 1 for the latter); empty when the backend
+                             // does not read HDR back
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
@@ -146,6 +159,7 @@ class RenderBackend {
   // derived from: buildForwardPostGraph(w, h, postPath(), readsBackHdr()).
   virtual PostPath postPath() const = 0;
   virtual bool readsBackHdr() const = 0;
+  virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -172,6 +186,8 @@ struct VulkanOptions {
   // host-visible (lavapipe, phones): the discrete-GPU path, for tests. Off: the memory type
   // query decides.
   bool stageBufferUploads = false;
+  // The HDR target's format; creation fails when the device cannot render to, read and sample it.
+  HdrFormat hdrFormat = HdrFormat::Rgba16Float;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -192,6 +208,8 @@ struct GlOptions {
   // As VulkanOptions::readBackHdr: keeps HDR (not invalidated) and reads it into FrameResult::hdr.
   bool readBackHdr = true;
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
+  // The HDR target's format; creation fails when the context cannot render to it.
+  HdrFormat hdrFormat = HdrFormat::Rgba16Float;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).

@@ -20,17 +20,30 @@ enum class PostPath {
 
 const char* toString(PostPath path);
 
+// The HDR target's format. R11G11B10F halves the bytes per pixel (4 instead of 8, no alpha) for
+// 6 (red, green) and 5 (blue) mantissa bits instead of 10: the error it costs is measured in
+// docs/runtime.md ("HDR format"). Both need float colour render targets (core Vulkan formats,
+// GLES 3.2 or EXT_color_buffer_float) that can be read as input attachments / by framebuffer fetch.
+enum class HdrFormat {
+  Rgba16Float,     // VK_FORMAT_R16G16B16A16_SFLOAT / GL_RGBA16F
+  R11G11B10Float,  // VK_FORMAT_B10G11R11_UFLOAT_PACK32 / GL_R11F_G11F_B10F: unsigned, no alpha
+};
+const char* toString(HdrFormat format);  // "rgba16f", "r11g11b10f"
+uint32_t bytesPerPixel(HdrFormat format);
+
 // The effects a backend's post pass runs: a post variant compiled in at build time (compiler/post.h
 // PostEffects, docs/runtime.md). Per renderer, not per frame: a pipeline is built for it once.
 struct PostSettings {
   std::string toneCurve = "aces";  // "aces" (filmic) | "neutral" (Khronos PBR Neutral) | "none"
   bool dither = false;             // triangular noise of ±1 step before 8-bit quantisation
+  bool colorGrading = false;       // the encoded colour through FrameDesc::colorLut (3D LUT)
+  bool vignette = false;           // darker corners, from FrameDesc::postUniforms
   bool operator==(const PostSettings&) const = default;
 };
 
 struct ForwardPostGraph {
   fg::FrameGraph graph;
-  fg::ResourceId hdr = 0;    // RGBA16F
+  fg::ResourceId hdr = 0;    // RGBA16F or R11G11B10F
   fg::ResourceId depth = 0;  // D32
   fg::ResourceId ldr = 0;    // RGBA8, read after the frame (presented or read back)
   uint32_t forwardPass = 0;
@@ -39,6 +52,7 @@ struct ForwardPostGraph {
 
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
 // which forces it to be stored.
-ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr);
+ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
+                                      HdrFormat hdrFormat = HdrFormat::Rgba16Float);
 
 }  // namespace facet::runtime

@@ -57,6 +57,10 @@ bool samplesSpecularLut(const AssemblyInput& input);
 // the message says which.
 bool assemble(const AssemblyInput& input, Flavour flavour, StageSources* out, std::string* error);
 
+// A fixed block of shader_abi.h as GLSL: std140, with its set and binding on the Vulkan flavour
+// (GLSL ES 3.00 has none: the runtime binds blocks by name). The post domain declares its block so.
+std::string uniformBlockDeclaration(Flavour flavour, const abi::BlockDesc& block);
+
 // One specular option's lobe on its own: `specular_lobe(...)` and the chunks it needs, includes
 // resolved (matc eval's BRDF-domain sweep runs it in a compute shader). The LUT lobe reads the
 // sampler `facet_specularLut` (kSpecularLutSamplerName), which the caller declares.

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "facet/package.h"
+
 namespace facet::compiler {
 
 enum class ToneCurve {
@@ -26,9 +28,14 @@ std::optional<ToneCurve> toneCurveFromString(std::string_view name);
 struct PostEffects {
   ToneCurve toneCurve = ToneCurve::Aces;
   bool dither = false;  // chunks/dither.glsl: triangular noise of ±1 step before 8-bit quantisation
+  // chunks/color_grading.glsl: the encoded colour through a 3D LUT (shader_abi.h kPostColorLutBinding)
+  bool colorGrading = false;
+  // chunks/vignette.glsl: darker corners, from the PostUniforms block (shader_abi.h kPostBlock)
+  bool vignette = false;
 };
 
-// A stable name of the effects, e.g. "aces", "neutral+dither" or "none": the post variant key.
+// A stable name of the effects, e.g. "aces", "neutral+dither" or "aces+grading+vignette+dither":
+// the post variant key (tone curve, then grading, vignette, dither when on).
 std::string postVariantKey(const PostEffects& effects);
 
 struct PostStage {
@@ -51,6 +58,10 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
 
 // Every combination of effects: what the runtime embeds.
 std::vector<PostEffects> everyPostEffects();
+
+// Where a Metal app binds the post fragment stage's resources (HDR texture when sampled, the
+// grading LUT, the PostUniforms block): pinned from shader_abi.h like a material's slots.
+std::vector<package::MslBinding> postMslBindings(const PostEffects& effects);
 
 // C++ source defining facet::runtime::postVariants() (runtime/include/facet/render_backend.h)
 // with these variants' SPIR-V words and GLSL ES texts: how the runtime gets its post pass

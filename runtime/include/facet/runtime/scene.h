@@ -11,6 +11,8 @@
 #include <glm/vec3.hpp>
 
 #include "facet/render_path.h"
+#include "facet/runtime/color_grading.h"
+#include "facet/runtime/vignette.h"
 
 namespace facet::runtime {
 
@@ -82,7 +84,12 @@ struct Scene {
   double skyLuminance = 0;         // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
   std::vector<SceneObject> objects;
-  PostSettings post;               // the post pass's tone curve and dithering (docs/scene-format.md)
+  PostSettings post;               // the post pass's effects (docs/scene-format.md "post")
+  // Their settings, read when post.colorGrading / post.vignette are on: grading from settings, or
+  // from a .cube file (resolved, under the asset root) when gradingLut is not empty.
+  ColorGradingSettings grading;
+  std::string gradingLut;
+  VignetteSettings vignette;
 };
 
 // Which files a scene may name (texture and environment images, glTF meshes). By default only

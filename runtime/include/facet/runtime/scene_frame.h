@@ -37,6 +37,7 @@ class SceneFrame {
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   EnvironmentLighting environment_;
   std::unique_ptr<Texture> environmentTexture_;
+  ColorLutTexels colorLut_;  // the scene's grading, when it has some
   FrameDesc frame_;
   double exposure_ = 1;
   std::string variantKey_;

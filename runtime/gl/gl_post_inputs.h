@@ -1,0 +1,32 @@
+// What the GL post pass reads besides HDR, for the effects its variant runs (PostSettings): the
+// colour-grading LUT, a GL_TEXTURE_3D RGBA16F sampled trilinearly on unit
+// abi::kPostColorLutBinding, and the PostUniforms block at uniform buffer binding
+// abi::kPostUniformsBinding. The LUT is uploaded when the frame's bytes differ from the last
+// upload's (content hash); the block is rewritten every frame.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "facet/render_backend.h"
+#include "gl_objects.h"
+
+namespace facet::runtime::gl {
+
+class PostInputs {
+ public:
+  // Points the linked post program's LUT sampler and block at their units/bindings and creates
+  // the texture and buffer its effects need. Fails when the program lacks one of them.
+  bool init(GLuint program, const PostSettings& effects, std::string* error);
+  // Uploads what changed and binds both for the post pass's draw. Changes the active texture unit.
+  bool bind(const FrameDesc& frame, std::string* error);
+
+ private:
+  PostSettings effects_;
+  Texture lut_;
+  Buffer uniforms_;
+  uint64_t lutHash_ = 0;
+  bool lutUploaded_ = false;
+};
+
+}  // namespace facet::runtime::gl

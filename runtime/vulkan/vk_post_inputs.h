@@ -1,0 +1,57 @@
+// What the post pass reads besides HDR, for the effects its variant runs (PostSettings): the
+// colour-grading LUT, a 3D RGBA16F image sampled trilinearly (binding abi::kPostColorLutBinding of
+// the post set), and the PostUniforms block (binding abi::kPostUniformsBinding). The LUT is
+// uploaded when the frame's bytes differ from the last upload's (content hash), after the queue
+// is idle (a frame in flight may still sample the old one); the block exists once per frame slot
+// (VulkanOptions::framesInFlight) and is rewritten when its slot is reused, by which time the
+// frame that used it has finished (vulkan_backend.h's rule).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "facet/render_backend.h"
+#include "vk_resources.h"
+
+namespace facet::runtime::vulkan {
+
+class Context;
+
+class PostInputs {
+ public:
+  PostInputs() = default;
+  PostInputs(const PostInputs&) = delete;
+  PostInputs& operator=(const PostInputs&) = delete;
+
+  // The post set's bindings besides HDR, for the layout and the pool.
+  static std::vector<VkDescriptorSetLayoutBinding> bindings(const PostSettings& effects);
+
+  // Creates the LUT image and sampler and the uniform buffers (one per frame slot) the effects
+  // need. ctx must outlive this, and destroy() must run before the device is destroyed.
+  bool init(const Context* ctx, const PostSettings& effects, uint32_t slots, std::string* error);
+  // Safe twice and on a partly initialised object. The device must be idle.
+  void destroy();
+
+  // Uploads the frame's LUT if it changed, writes its uniforms into `slot`'s buffer, and points
+  // `set` (that slot's post set) at both.
+  bool prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slot, std::string* error);
+
+ private:
+  bool uploadLut(const ColorLutTexels& lut, std::string* error);
+
+  const Context* ctx_ = nullptr;
+  PostSettings effects_;
+  VkImage lutImage_ = VK_NULL_HANDLE;
+  VkDeviceMemory lutMemory_ = VK_NULL_HANDLE;
+  VkImageView lutView_ = VK_NULL_HANDLE;
+  VkSampler lutSampler_ = VK_NULL_HANDLE;
+  uint64_t lutHash_ = 0;
+  bool lutUploaded_ = false;
+  std::vector<HostBuffer> uniforms_;  // one per frame slot
+  bool deviceFailed_ = false;                 // an upload did not finish: stop
+};
+
+}  // namespace facet::runtime::vulkan
