@@ -83,6 +83,11 @@ class PackageReader {
   // Where a Metal app binds each block and sampler of the MSL shaders, the same in every
   // variant (format 1.2; empty in older packages).
   const std::vector<MslBinding>& mslBindings() const;
+  // The preshader (format 1.3; empty in older packages), each program checked by
+  // package::preshaderError, and the program of one variant (nullptr: the variant computes its
+  // inputs per pixel from the parameter block alone).
+  const Preshader& preshader() const;
+  const PreshaderProgram* preshaderProgram(std::string_view key) const;
 
   // What a package means, for one the app did not build: package::semanticError's checks of the
   // metadata and variant table, without decoding any code. The code of each shader is checked

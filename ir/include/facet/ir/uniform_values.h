@@ -1,0 +1,19 @@
+// Which values of a surface program are the same at every pixel of a draw: those computed from
+// parameters (textures excepted) and constants alone. The compiler moves such shading inputs out
+// of the fragment stage into the preshader (compiler/preshader.h), computed once on the CPU.
+#pragma once
+
+#include <optional>
+
+#include "facet/ir/module.h"
+
+namespace facet::ir {
+
+// True when `id` and everything it depends on reads no vertex attribute and no texture.
+bool isUniformOnly(const Material& material, ValueId id);
+
+// The value a surface output takes: what the program writes, or nullopt when it keeps its
+// default (a constant: uniform too).
+std::optional<ValueId> outputValue(const Material& material, std::string_view output);
+
+}  // namespace facet::ir
