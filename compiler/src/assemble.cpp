@@ -107,8 +107,13 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
     s += "    " + qualifier + ir::glslName(p.type) + " " + p.name + ";\n";
   }
   if (preshade) {
-    // The preshader's derived inputs (compiler/preshader.h), written by the runtime on the CPU.
-    // std140 places the first at blockSize: the parameter block's size is a multiple of 16.
+    // The preshader's derived inputs (compiler/preshader.h), written by the runtime on the CPU,
+    // start at the parameter block's size: floats pad the parameters' last vec4 up to it (a float
+    // member would otherwise pack into it).
+    uint32_t end = 0;
+    for (const ParamSlot& slot : layout.slots) end = std::max(end, slot.offset + slot.size);
+    for (uint32_t at = end; at < layout.blockSize; at += 4)
+      s += "    " + std::string(precision) + " float facet_pad" + std::to_string(at) + ";\n";
     for (const PreshadedMember& m : preshade->members)
       s += "    " + std::string(precision) + " " + m.type + " " + m.name + ";  // @" + std::to_string(m.offset) + ", preshaded\n";
   }

@@ -182,6 +182,12 @@ struct Inputs {
   std::optional<uint8_t> baseColor, metallic, reflectance, roughness;
 };
 
+// Whether the output reads a parameter (a default or a constant expression does not).
+bool readsParameter(const ir::Material& material, const char* name) {
+  auto id = ir::outputValue(material, name);
+  return id && ir::readsParameter(material, *id);
+}
+
 Inputs clampedInputs(ProgramBuilder& b, const ir::Material& material) {
   Inputs in;
   auto clamped = [&](const char* name, float lo) -> std::optional<uint8_t> {
@@ -230,9 +236,15 @@ PreshadeLayout planPreshade(const ir::Material& material, const ParamLayout& par
   if (material.shading != "lit") return layout;
   ProgramBuilder b(material, params);
   const Inputs in = clampedInputs(b, material);
-  layout.diffuseColor = in.baseColor && in.metallic;
-  layout.f0 = in.baseColor && in.metallic && in.reflectance;
-  layout.roughness = in.roughness.has_value();
+  // Inputs made of constants alone stay in the shader, where the compiler folds them.
+  auto reads = [&](std::initializer_list<const char*> names) {
+    for (const char* n : names)
+      if (readsParameter(material, n)) return true;
+    return false;
+  };
+  layout.diffuseColor = in.baseColor && in.metallic && reads({"baseColor", "metallic"});
+  layout.f0 = in.baseColor && in.metallic && in.reflectance && reads({"baseColor", "metallic", "reflectance"});
+  layout.roughness = in.roughness && reads({"roughness"});
   if (!layout.diffuseColor && !layout.f0 && !layout.roughness) return layout;
   uint32_t offset = params.blockSize;
   if (layout.diffuseColor) addMember(layout, &offset, "vec3", "facet_diffuseColor", 3);

@@ -22,6 +22,21 @@ bool isUniformOnly(const Material& material, ValueId id) {
   return true;
 }
 
+bool readsParameter(const Material& material, ValueId id) {
+  const Module& m = material.surface;
+  std::vector<ValueId> pending{id};
+  std::vector<bool> seen(m.size(), false);
+  while (!pending.empty()) {
+    const ValueId v = pending.back();
+    pending.pop_back();
+    if (v >= m.size() || seen[v]) continue;
+    seen[v] = true;
+    if (m.value(v).op == Op::Param) return true;
+    pending.insert(pending.end(), m.value(v).args.begin(), m.value(v).args.end());
+  }
+  return false;
+}
+
 std::optional<ValueId> outputValue(const Material& material, std::string_view output) {
   auto it = material.surface.outputs.find(std::string(output));
   if (it == material.surface.outputs.end()) return std::nullopt;

@@ -12,6 +12,10 @@ namespace facet::ir {
 // True when `id` and everything it depends on reads no vertex attribute and no texture.
 bool isUniformOnly(const Material& material, ValueId id);
 
+// True when `id` depends on at least one parameter: a uniform-only value that does not is a
+// constant, which the shader compiler folds better than any preshader.
+bool readsParameter(const Material& material, ValueId id);
+
 // The value a surface output takes: what the program writes, or nullopt when it keeps its
 // default (a constant: uniform too).
 std::optional<ValueId> outputValue(const Material& material, std::string_view output);
