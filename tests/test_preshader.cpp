@@ -160,7 +160,8 @@ TEST(PreshaderPackage, HostileSectionsAreRefusedByTheReader) {
 }
 
 // Which inputs each example material preshades follows from what its surface program reads:
-// parameters only (red_plastic, brushed_gold: everything), a texture for the base colour
+// parameters only (red_plastic: everything; brushed_gold: all but its diffuse colour, constant 0),
+// a texture for the base colour
 // (painted_tiles: roughness only), world position for all (banded_ceramic: nothing).
 TEST(PreshaderCompiler, ExampleMaterialsPreshadeExactlyTheirUniformInputs) {
   std::map<std::string, std::string> defines;
@@ -179,7 +180,8 @@ TEST(PreshaderCompiler, ExampleMaterialsPreshadeExactlyTheirUniformInputs) {
   }
   const std::string all = "FACET_PRESHADED_DIFFUSE_COLOR FACET_PRESHADED_F0 FACET_PRESHADED_ROUGHNESS ";
   EXPECT_EQ(defines["red_plastic"], all);
-  EXPECT_EQ(defines["brushed_gold"], all);
+  // metallic = 1.0: the diffuse colour is the constant 0, which the shader compiler folds away.
+  EXPECT_EQ(defines["brushed_gold"], "FACET_PRESHADED_F0 FACET_PRESHADED_ROUGHNESS ");
   EXPECT_EQ(defines["painted_tiles"], "FACET_PRESHADED_ROUGHNESS ");
   EXPECT_EQ(defines["banded_ceramic"], "");
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 
 #include "facet/render_backend.h"
 #include "facet/runtime/material_instance.h"
@@ -124,4 +125,30 @@ TEST(PreshaderRender, AnInstancesParameterChangeRerunsThePreshader) {
   ASSERT_TRUE(backend->render(desc, &rough, &error)) << error;
   EXPECT_GT(maxDifference(glossy.ldr, rough.ldr), 40) << "a rougher sphere loses its sharp highlight";
   EXPECT_TRUE(backend->validationErrors().empty());
+}
+
+// Old packages keep working: red_plastic as the 1.2 compiler wrote it (no PRSH: every input per
+// pixel, a 32-byte block) loads and draws the sphere as today's preshaded package does.
+TEST(PreshaderRender, APackageWithoutPreshaderDrawsAsBefore) {
+  const std::string dir = facet::test::scratchDir("preshader-1.2");
+  std::filesystem::copy_file(facet::test::sourceDir() + "/tests/fuzz/package_corpus/red_plastic_high_1_2.matpkg",
+                             dir + "/red_plastic.matpkg");
+  std::string error;
+  auto loaded = facet::runtime::LoadedMaterial::load(dir + "/red_plastic.matpkg", &error);
+  ASSERT_TRUE(loaded) << error;
+  EXPECT_EQ(loaded->reader().formatMinor(), 2);
+  auto material = facet::runtime::Material::create(std::move(*loaded), {"high", true, 0}, &error);
+  ASSERT_NE(material, nullptr) << error;
+  EXPECT_EQ(material->createInstance()->block().bytes.size(), 32u);
+
+  auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/sphere.json"), &error);
+  ASSERT_TRUE(scene) << error;
+  scene->width = scene->height = 128;
+  auto backend = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_NE(backend, nullptr) << error;
+  const std::vector<uint8_t> old = render(*backend, *scene, dir, &error);
+  ASSERT_FALSE(old.empty()) << error;
+  const std::vector<uint8_t> now = render(*backend, *scene, packages().preshaded, &error);
+  ASSERT_FALSE(now.empty()) << error;
+  EXPECT_LE(maxDifference(old, now), 1);
 }
