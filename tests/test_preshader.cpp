@@ -144,19 +144,30 @@ TEST(PreshaderPackage, ProgramsRoundTripAndStampFormat13) {
   EXPECT_LT(pkg::read(pkg::write(without)).formatMinor, 3) << "no preshader: the file stays readable by 1.2 readers";
 }
 
-TEST(PreshaderPackage, HostileSectionsAreRefusedByTheReader) {
-  EXPECT_NE(pkg::read(pkg::write(preshadedPackage({store(0, 8, 1)}))).error.find("preshader program 0: preshader op 0 (store) writes bytes 8..12"),
-            std::string::npos);
+// The section's bytes (counts, variant indices, block size) are the reader's; whether the
+// programs stay inside the block is meaning, which the loader checks (semanticError) before any
+// program runs.
+TEST(PreshaderPackage, HostileSectionsAreRefused) {
   EXPECT_NE(pkg::read(pkg::write(preshadedPackage({}, {1}))).error.find("lists variant 1 but the package has 1 variants"),
             std::string::npos);
   pkg::Package p = preshadedPackage({});
-  p.preshader.blockSize = 16;  // no room for derived members
-  EXPECT_NE(pkg::read(pkg::write(p)).error.find("the preshaded block is 16 bytes"), std::string::npos);
   p.preshader.blockSize = 24;
   EXPECT_NE(pkg::read(pkg::write(p)).error.find("a multiple of 16"), std::string::npos);
   p = preshadedPackage({});
   p.preshader.programs.push_back({{0}, {}});
   EXPECT_NE(pkg::read(pkg::write(p)).error.find("lists variant 0, which has a program"), std::string::npos);
+
+  auto meaning = [](const pkg::Package& hostile) {
+    const pkg::ReadResult r = pkg::read(pkg::write(hostile));
+    EXPECT_TRUE(r.package) << r.error;
+    return r.package ? pkg::semanticError(*r.package) : r.error;
+  };
+  EXPECT_NE(meaning(preshadedPackage({store(0, 8, 1)})).find("preshader program 0: preshader op 0 (store) writes bytes 8..12"),
+            std::string::npos);
+  p = preshadedPackage({});
+  p.preshader.blockSize = 16;  // no room for derived members
+  EXPECT_NE(meaning(p).find("the preshaded block is 16 bytes, not above the parameter block's 16"), std::string::npos);
+  EXPECT_EQ(meaning(preshadedPackage({store(0, 16, 4)})), "");
 }
 
 // Which inputs each example material preshades follows from what its surface program reads:

@@ -265,7 +265,7 @@ bool PackageReader::State::parse(std::string& error) {
       return false;
     }
     if (!decodeSection(file, *prsh, error, [&](ByteReader& in) {
-          decodePreshader(in, material.paramBlockSize, variantEntries.size(), preshader);
+          decodePreshader(in, variantEntries.size(), preshader);
         }))
       return false;
   }
@@ -390,7 +390,7 @@ const VariantInfo* PackageReader::findVariant(std::string_view key) const {
 }
 
 std::string PackageReader::semanticError() const {
-  return package::semanticError(state_->material, state_->variants);
+  return package::semanticError(state_->material, state_->variants, state_->preshader);
 }
 
 std::optional<std::span<const uint8_t>> PackageReader::blob(uint32_t index, std::string* error) const {

@@ -55,6 +55,17 @@ std::string preshaderError(std::span<const PreshaderOp> ops, uint32_t paramBlock
   return "";
 }
 
+std::string preshaderSemanticError(const MaterialInfo& material, const Preshader& preshader) {
+  if (preshader.programs.empty()) return "";
+  if (preshader.blockSize <= material.paramBlockSize)
+    return "the preshaded block is " + std::to_string(preshader.blockSize) + " bytes, not above the parameter block's " +
+           std::to_string(material.paramBlockSize);
+  for (size_t i = 0; i < preshader.programs.size(); ++i)
+    if (std::string e = preshaderError(preshader.programs[i].ops, material.paramBlockSize, preshader.blockSize); !e.empty())
+      return "preshader program " + std::to_string(i) + ": " + e;
+  return "";
+}
+
 namespace detail {
 
 void encodePreshader(ByteWriter& out, const Preshader& preshader) {
@@ -76,13 +87,13 @@ void encodePreshader(ByteWriter& out, const Preshader& preshader) {
   }
 }
 
-void decodePreshader(ByteReader& in, uint32_t paramBlockSize, uint64_t variantCount, Preshader& preshader) {
+void decodePreshader(ByteReader& in, uint64_t variantCount, Preshader& preshader) {
   preshader.blockSize = in.u32();
   if (!in.ok()) return;
-  if (preshader.blockSize % 16 != 0 || preshader.blockSize <= paramBlockSize || preshader.blockSize > kMaxParamBlockBytes)
+  // The block against the parameters, and each op, are meaning: package::semanticError.
+  if (preshader.blockSize == 0 || preshader.blockSize % 16 != 0 || preshader.blockSize > kMaxParamBlockBytes)
     return in.fail("the preshaded block is " + std::to_string(preshader.blockSize) +
-                   " bytes: it must be a multiple of 16 above the parameter block's " + std::to_string(paramBlockSize) +
-                   " and at most " + std::to_string(kMaxParamBlockBytes));
+                   " bytes: it must be a multiple of 16 in 16.." + std::to_string(kMaxParamBlockBytes));
   const uint32_t count = in.count(kMinPreshaderProgramSize, "preshader program count");
   if (!in.ok()) return;
   if (count == 0) return in.fail("a preshader section without programs");
@@ -123,9 +134,6 @@ void decodePreshader(ByteReader& in, uint32_t paramBlockSize, uint64_t variantCo
       op.code = PreshaderOpcode(code);
       p.ops.push_back(op);
     }
-    if (!in.ok()) return;
-    if (std::string e = preshaderError(p.ops, paramBlockSize, preshader.blockSize); !e.empty())
-      return in.fail(what + ": " + e);
     preshader.programs.push_back(std::move(p));
   }
   in.expectEnd();

@@ -167,6 +167,9 @@ inline constexpr size_t kMaxPreshaderOps = 256;
 // finite constants, at most kMaxPreshaderOps ops. Nothing a program does can then reach memory
 // outside the block or overwrite a parameter.
 std::string preshaderError(std::span<const PreshaderOp> ops, uint32_t paramBlockSize, uint32_t blockSize);
+// The package's preshader against its material: a block above the parameters, every program
+// sound by preshaderError. "" when there is no preshader. Part of semanticError.
+std::string preshaderSemanticError(const MaterialInfo& material, const Preshader& preshader);
 
 struct Package {
   std::string compilerVersion;
@@ -216,7 +219,8 @@ bool isValidName(std::string_view name);
 // What a decoded package means, checked for a package the app did not build (the runtime's
 // loader calls it on every package): identifier names, known shading and blending, unique
 // parameters and variants, valid variant keys, finite ordered ranges holding their defaults,
-// sizes within the limits above, and shader blobs of the kind their slot says (SPIR-V words,
+// sizes within the limits above, preshader programs that stay inside the block
+// (preshaderSemanticError), and shader blobs of the kind their slot says (SPIR-V words,
 // GLSL ES 3.00 text). "" when it is sound, else what is wrong. read() checks bytes only, so that
 // tools can still open and describe a package whose meaning is wrong.
 std::string semanticError(const Package& pkg);
