@@ -3,10 +3,11 @@
 #include <vector>
 
 namespace facet::ir {
+namespace {
 
-bool isUniformOnly(const Material& material, ValueId id) {
-  const Module& m = material.surface;
-  // Operands precede their users (SSA, module.h), so one walk over the reachable values suffices.
+// Whether `id` or any value it depends on satisfies `found`.
+template <class Predicate>
+bool anyDependency(const Module& m, ValueId id, Predicate found) {
   std::vector<ValueId> pending{id};
   std::vector<bool> seen(m.size(), false);
   while (!pending.empty()) {
@@ -14,27 +15,22 @@ bool isUniformOnly(const Material& material, ValueId id) {
     pending.pop_back();
     if (v >= m.size() || seen[v]) continue;
     seen[v] = true;
-    const Value& value = m.value(v);
-    if (value.op == Op::Attribute) return false;
-    if (value.op == Op::Param && value.type == Type::Texture2D) return false;
-    pending.insert(pending.end(), value.args.begin(), value.args.end());
-  }
-  return true;
-}
-
-bool readsParameter(const Material& material, ValueId id) {
-  const Module& m = material.surface;
-  std::vector<ValueId> pending{id};
-  std::vector<bool> seen(m.size(), false);
-  while (!pending.empty()) {
-    const ValueId v = pending.back();
-    pending.pop_back();
-    if (v >= m.size() || seen[v]) continue;
-    seen[v] = true;
-    if (m.value(v).op == Op::Param) return true;
+    if (found(m.value(v))) return true;
     pending.insert(pending.end(), m.value(v).args.begin(), m.value(v).args.end());
   }
   return false;
+}
+
+}  // namespace
+
+bool isUniformOnly(const Material& material, ValueId id) {
+  return !anyDependency(material.surface, id, [](const Value& v) {
+    return v.op == Op::Attribute || (v.op == Op::Param && v.type == Type::Texture2D);
+  });
+}
+
+bool readsParameter(const Material& material, ValueId id) {
+  return anyDependency(material.surface, id, [](const Value& v) { return v.op == Op::Param; });
 }
 
 std::optional<ValueId> outputValue(const Material& material, std::string_view output) {
