@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
@@ -151,4 +152,20 @@ TEST(PreshaderRender, APackageWithoutPreshaderDrawsAsBefore) {
   const std::vector<uint8_t> now = render(*backend, *scene, packages().preshaded, &error);
   ASSERT_FALSE(now.empty()) << error;
   EXPECT_LE(maxDifference(old, now), 1);
+}
+
+// The forward shaders read FrameUniforms::lightDirection as a unit vector (shader_abi.h): the
+// scene's sun direction may have any length, the frame block's is normalized on the CPU.
+TEST(PreshaderRender, TheSunDirectionReachesTheShadersNormalized) {
+  std::string error;
+  auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/sphere.json"), &error);
+  ASSERT_TRUE(scene) << error;
+  ASSERT_TRUE(scene->sun);
+  scene->sun->direction = {0.0, -30.0, -40.0};
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages().preshaded, &error);
+  ASSERT_TRUE(frame) << error;
+  const float* l = frame->frame().frame.lightDirection;
+  EXPECT_NEAR(std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]), 1.0f, 1e-6f);
+  EXPECT_NEAR(l[1], 0.6f, 1e-6f);
+  EXPECT_NEAR(l[2], 0.8f, 1e-6f);
 }
