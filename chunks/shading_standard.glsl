@@ -33,12 +33,25 @@
 // of the hack, by design: interpolation and surface arithmetic act on encoded values, and
 // sRGB-encoded inputs are decoded with γ = 2 instead of the sRGB curve.
 
+// With FACET_PRESHADED_DIFFUSE_COLOR, FACET_PRESHADED_F0 and FACET_PRESHADED_ROUGHNESS the
+// inputs depend only on parameters: the preshader (compiler/preshader.h, Unreal's term) computes
+// these same formulas once on the CPU when the parameters change, in fp32, and the runtime writes
+// them into the parameter block (members facet_*, after the parameters). The forms below are then
+// what the preshader implements, and what variants with per-pixel inputs (textures, vertex
+// attributes) still run.
 vec3 material_diffuse_color(MaterialInputs material) {
+#if defined(FACET_PRESHADED_DIFFUSE_COLOR)
+    return params.facet_diffuseColor;
+#else
     return (1.0 - clamp(material.metallic, 0.0, 1.0)) * clamp(material.baseColor, 0.0, 1.0);
+#endif
 }
 
 // f0 in linear, whatever the colour space (the lobes and the environment BRDFs work in linear).
 vec3 material_f0(MaterialInputs material) {
+#if defined(FACET_PRESHADED_F0)
+    return params.facet_f0;
+#else
     vec3 baseColor = clamp(material.baseColor, 0.0, 1.0);
     float metallic = clamp(material.metallic, 0.0, 1.0);
     float reflectance = clamp(material.reflectance, 0.0, 1.0);
@@ -48,10 +61,25 @@ vec3 material_f0(MaterialInputs material) {
 #else
     return vec3(0.16 * reflectance * reflectance * (1.0 - metallic)) + metallic * baseColor;
 #endif
+#endif
 }
 
 float material_perceptual_roughness(MaterialInputs material) {
+#if defined(FACET_PRESHADED_ROUGHNESS)
+    return params.facet_perceptualRoughness;
+#else
     return clamp(material.roughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+#endif
+}
+
+// α = r² (Filament PBR document §4.8: perceptual roughness remapped to the lobes' α).
+float material_alpha(MaterialInputs material) {
+#if defined(FACET_PRESHADED_ROUGHNESS)
+    return params.facet_alpha;
+#else
+    float perceptualRoughness = material_perceptual_roughness(material);
+    return perceptualRoughness * perceptualRoughness;
+#endif
 }
 
 #if defined(FACET_ENERGY_COMPENSATION)
@@ -91,7 +119,7 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
                                    vec3 lightColor) {
     vec3 f0 = material_f0(material);
     float perceptualRoughness = material_perceptual_roughness(material);
-    float alpha = perceptualRoughness * perceptualRoughness;
+    float alpha = material_alpha(material);
 
     vec3 v = viewHighp;
     vec3 l = lightHighp;

@@ -91,6 +91,13 @@ void printSummary(const package::ReadResult& r) {
                 formatValue(p.defaultValue).c_str(), range.c_str(), where.c_str(),
                 p.type == package::ParamType::Color ? "  (default shown linear)" : "");
   }
+  // The preshader (format 1.3): which variants read derived members, and how many ops compute them.
+  for (const package::PreshaderProgram& program : pkg.preshader.programs) {
+    std::string users;
+    for (uint32_t v : program.variants) users += (users.empty() ? "" : ", ") + pkg.variants[v].key;
+    std::printf("preshader  %zu ops, block %u bytes with the derived inputs, for %s\n", program.ops.size(),
+                pkg.preshader.blockSize, users.c_str());
+  }
   std::printf("variants   %zu\n", pkg.variants.size());
   for (size_t i = 0; i < pkg.variants.size(); ++i) {
     const package::Variant& v = pkg.variants[i];
@@ -167,6 +174,14 @@ void printJson(const package::ReadResult& r) {
                                {"variants", std::move(users)},
                                {"bytes", r.textureStats[i].rawSize},
                                {"storedBytes", r.textureStats[i].storedSize}});
+  }
+  // The preshader (format 1.3): the block with the derived inputs, and each program's users.
+  doc["preshadedBlockSize"] = pkg.preshader.programs.empty() ? pkg.material.paramBlockSize : pkg.preshader.blockSize;
+  doc["preshaderPrograms"] = nlohmann::ordered_json::array();
+  for (const package::PreshaderProgram& program : pkg.preshader.programs) {
+    nlohmann::ordered_json users = nlohmann::ordered_json::array();
+    for (uint32_t v : program.variants) users.push_back(pkg.variants[v].key);
+    doc["preshaderPrograms"].push_back({{"ops", program.ops.size()}, {"variants", std::move(users)}});
   }
   doc["dictionaryStoredBytes"] = r.dictionaryStoredSize;
   doc["mslSlots"] = nlohmann::ordered_json::array();

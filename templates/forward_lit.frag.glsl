@@ -67,7 +67,9 @@ void main() {
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
 #if defined(FACET_DIRECTIONAL_LIGHT)
-    highp vec3 l = normalize(frame.lightDirection.xyz);
+    // A unit vector by the ABI (shader_abi.h FrameUniforms::lightDirection): the runtime
+    // normalizes it once per frame on the CPU instead of every pixel doing so.
+    highp vec3 l = frame.lightDirection.xyz;
     color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
 #endif
 #if FACET_POINT_LIGHTS > 0

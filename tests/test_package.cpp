@@ -653,7 +653,7 @@ TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
       EXPECT_EQ(pkg::write(*again.package), written);
     }
   }
-  EXPECT_EQ(seeds, 3u);
+  EXPECT_EQ(seeds, 4u);
 }
 
 // Format 1.2: the Metal argument slots (section MSLB), written only when there are some, and

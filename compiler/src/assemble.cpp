@@ -88,8 +88,8 @@ std::string frameAndObjectBlocks(Flavour flavour) {
 // Parameters are read at the tier's precision: a block member needs an explicit qualifier (the
 // block could be declared in a stage with another default), and it is the tier's own.
 std::string materialBlock(Flavour flavour, const ir::Material& material, const ParamLayout& layout,
-                          const char* precision) {
-  if (layout.blockSize == 0) return "";
+                          const PreshadeLayout* preshade, const char* precision) {
+  if (layout.blockSize == 0 && !preshade) return "";
   std::string s = "// std140 offsets as recorded in the package: ";
   std::string sep;
   for (const ParamSlot& slot : layout.slots) {
@@ -105,6 +105,17 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
     bool wide = (p.rangeMin && std::abs(*p.rangeMin) > 65504.0) || (p.rangeMax && std::abs(*p.rangeMax) > 65504.0);
     std::string qualifier = p.type == ir::Type::Bool ? "" : std::string(wide ? "highp" : precision) + " ";
     s += "    " + qualifier + ir::glslName(p.type) + " " + p.name + ";\n";
+  }
+  if (preshade) {
+    // The preshader's derived inputs (compiler/preshader.h), written by the runtime on the CPU,
+    // start at the parameter block's size: floats pad the parameters' last vec4 up to it (a float
+    // member would otherwise pack into it).
+    uint32_t end = 0;
+    for (const ParamSlot& slot : layout.slots) end = std::max(end, slot.offset + slot.size);
+    for (uint32_t at = end; at < layout.blockSize; at += 4)
+      s += "    " + std::string(precision) + " float facet_pad" + std::to_string(at) + ";\n";
+    for (const PreshadedMember& m : preshade->members)
+      s += "    " + std::string(precision) + " " + m.type + " " + m.name + ";  // @" + std::to_string(m.offset) + ", preshaded\n";
   }
   return s + "} " + std::string(abi::kMaterialBlock.instance) + ";\n";
 }
@@ -144,6 +155,11 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
   if (in.tier.precision == permutations::PrecisionPolicy::Highp) s += "#define FACET_PRECISION_HIGHP 1\n";
   if (in.tier.colorSpace == permutations::ColorSpace::GammaHack) s += "#define FACET_GAMMA_HACK 1\n";
+  if (in.preshade) {
+    if (in.preshade->diffuseColor) s += "#define FACET_PRESHADED_DIFFUSE_COLOR 1\n";
+    if (in.preshade->f0) s += "#define FACET_PRESHADED_F0 1\n";
+    if (in.preshade->roughness) s += "#define FACET_PRESHADED_ROUGHNESS 1\n";
+  }
   if (in.material.shading == "lit") {
     // Image-based ambient (docs/ibl.md, "In the shaders"): the tier's specular model, SH bands for
     // the diffuse part (evaluated in the vertex stage with FACET_VERTEX_DIFFUSE).
@@ -328,7 +344,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   std::string fs = prologue(in, flavour, "fragment", fragmentPrecision);
   fs += varyings(in, flavour, "in") + "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out " +
         fragmentPrecision + " vec4 fragColor;\n\n";
-  fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, fragmentPrecision) +
+  fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, in.preshade, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
         iblSamplers(in, flavour, fragmentPrecision) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;

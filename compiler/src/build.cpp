@@ -1,5 +1,6 @@
 #include "facet/compiler/build.h"
 
+#include <algorithm>
 #include <cstring>
 #include <mutex>
 
@@ -8,6 +9,7 @@
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/param_layout.h"
+#include "facet/compiler/preshader.h"
 #include "facet/compiler/specular_lut.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
@@ -114,6 +116,7 @@ struct MaterialContext {
   const ir::Material& material;
   const ir::SurfaceGlsl& surface;
   const ParamLayout& layout;
+  const PreshadeLayout& preshade;
   const BuildOptions& options;
   const VariantCache& cache;
   const std::vector<package::MslBinding>& mslBindings;  // Metal slots, the same for every variant
@@ -124,6 +127,7 @@ struct VariantBuild {
   package::Variant variant;
   std::vector<GeneratedFile> sources;
   bool samplesSpecularLut = false;
+  std::vector<package::PreshaderOp> preshader;  // empty: the variant preshades nothing
   bool cacheHit = false;
   std::set<std::string> libraryFiles;
   BuildError failure;
@@ -199,6 +203,8 @@ bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& ke
   const std::string keyText = key.toString();
   const permutations::TierConfig tier = tierConfig(material, key.tier, ctx.options);
   AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
+  out->preshader = preshaderProgram(material, ctx.layout, ctx.preshade, tier);
+  if (!out->preshader.empty()) input.preshade = &ctx.preshade;
   StageSources es, vk;
   if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
 
@@ -265,6 +271,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   ir::Material material = checked;
   ir::optimize(material);
   ParamLayout layout = layoutParams(material.params);
+  const PreshadeLayout preshade = options.preshader ? planPreshade(material, layout) : PreshadeLayout{};
   ir::SurfaceGlsl surface = ir::emitSurface(material);
   result.package.compilerVersion = compilerVersion();
   result.package.material = materialInfo(material, layout);
@@ -277,7 +284,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   // Jobs finish in any order; each writes only its own slot, and the slots are read in key order.
   VariantCache cache(options.cacheDir);
   result.package.mslBindings = materialMslBindings(result.package.material);
-  MaterialContext ctx{material, surface, layout, options, cache, result.package.mslBindings};
+  MaterialContext ctx{material, surface, layout, preshade, options, cache, result.package.mslBindings};
   std::vector<VariantBuild> builds(keys.size());
   std::vector<char> done(keys.size(), 0);
   std::mutex progressMutex;
@@ -297,7 +304,20 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
       *failure = std::move(builds[i].failure);
       return std::nullopt;
     }
-    if (builds[i].samplesSpecularLut) lutVariants.push_back(uint32_t(result.package.variants.size()));
+    const uint32_t index = uint32_t(result.package.variants.size());
+    if (builds[i].samplesSpecularLut) lutVariants.push_back(index);
+    if (!builds[i].preshader.empty()) {
+      // Variants with the same program (every tier but the gamma hack's, say) share one entry.
+      std::vector<package::PreshaderProgram>& programs = result.package.preshader.programs;
+      auto same = std::find_if(programs.begin(), programs.end(),
+                               [&](const package::PreshaderProgram& p) { return p.ops == builds[i].preshader; });
+      if (same == programs.end()) {
+        programs.push_back({{}, std::move(builds[i].preshader)});
+        same = programs.end() - 1;
+      }
+      same->variants.push_back(index);
+      result.package.preshader.blockSize = preshade.blockSize;
+    }
     result.package.variants.push_back(std::move(builds[i].variant));
     for (GeneratedFile& f : builds[i].sources) result.sources.push_back(std::move(f));
     result.libraryFiles.insert(builds[i].libraryFiles.begin(), builds[i].libraryFiles.end());

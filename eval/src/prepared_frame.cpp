@@ -56,12 +56,14 @@ bool PreparedFrame::adapt(const runtime::Scene& scene, const std::string& packag
         if (!loaded) return false;
         material = std::make_unique<runtime::LoadedMaterial>(std::move(*loaded));
       }
+      // Both blocks completed by the variant's preshader, as SceneFrame completes its own.
+      const std::string& key = scene_->variantKey();
       auto prepared = material->paramBlock(o.params, error, encoding(preset));
-      if (!prepared) return false;
+      if (!prepared || !material->preshade(key, &*prepared, error)) return false;
       if (*prepared != draw.materialParams) continue;
       auto wanted = material->paramBlock(o.params, error, encoding(config));
       auto sampled = material->sampledTextures(o.textures, error);
-      if (!wanted || !sampled) return false;
+      if (!wanted || !sampled || !material->preshade(key, &*wanted, error)) return false;
       draw.materialParams = std::move(*wanted);
       for (const auto& t : *sampled) {
         if (!t.srgb) continue;

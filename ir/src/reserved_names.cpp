@@ -45,6 +45,9 @@ std::string reservedNameReason(std::string_view name) {
   if (glslKeywords().count(name)) return "'" + std::string(name) + "' is a GLSL keyword or reserved word";
   if (name.substr(0, 3) == "gl_") return "names starting with 'gl_' are reserved by GLSL";
   if (name.find("__") != std::string_view::npos) return "names containing '__' are reserved by GLSL";
+  // The compiler's own members of the parameter block (the preshader's derived inputs) and
+  // samplers are named facet_*: a parameter of that name could collide with them.
+  if (name.substr(0, 6) == "facet_") return "names starting with 'facet_' are reserved for the compiler's own uniforms";
   return "";
 }
 

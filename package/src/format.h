@@ -38,6 +38,8 @@ inline constexpr uint32_t kTagBlobData = fourcc('B', 'D', 'A', 'T');   // blob b
 inline constexpr uint32_t kTagTextures = fourcc('T', 'E', 'X', 'S');   // generated textures (optional)
 inline constexpr uint32_t kTagMslBindings = fourcc('M', 'S', 'L', 'B');  // Metal argument slots (optional, 1.2)
 inline constexpr uint16_t kFirstMinorWithMslBindings = 2;
+inline constexpr uint32_t kTagPreshader = fourcc('P', 'R', 'S', 'H');  // preshader programs (optional, 1.3)
+inline constexpr uint16_t kFirstMinorWithPreshader = 3;
 
 // Limits the reader enforces so that a hostile file cannot make it allocate or work without
 // bound. A real package has 4 sections and a few MiB of code.
@@ -75,6 +77,10 @@ inline constexpr uint64_t kVariantIndexSize = 4;
 // u32 name length, u8 kind, u8 + u16 reserved, u32 set, u32 binding, u32 index
 inline constexpr uint64_t kMinMslBindingSize = 20;
 inline constexpr uint8_t kLastMslResource = uint8_t(MslResource::Texture);
+// PRSH: u32 variant count (then the indices), u32 op count; an op is u8 code, dst, a, b, u32
+// offset, u32 count, 4 x f32.
+inline constexpr uint64_t kMinPreshaderProgramSize = 8;
+inline constexpr uint64_t kPreshaderOpSize = 28;
 
 struct BlobEntry {
   uint64_t contentHash = 0;  // XXH3_64bits of the raw code

@@ -102,7 +102,7 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
 // META, VARS, BTAB, BDAT, and the optional TEXS. Unknown tags are skipped so later writers can
 // add sections.
 bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::optional<TocEntry>& textures,
-             std::optional<TocEntry>& mslBindings, std::string& error) {
+             std::optional<TocEntry>& mslBindings, std::optional<TocEntry>& preshader, std::string& error) {
   const uint64_t size = file.size();
   uint32_t count = uint32_t(loadLE(file.data() + kSectionCountOffset, 4));
   if (count > kMaxSections) {
@@ -176,7 +176,10 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
     }
   }
   for (const TocEntry& e : entries) {
-    std::optional<TocEntry>* optional = e.tag == kTagTextures ? &textures : e.tag == kTagMslBindings ? &mslBindings : nullptr;
+    std::optional<TocEntry>* optional = e.tag == kTagTextures      ? &textures
+                                        : e.tag == kTagMslBindings ? &mslBindings
+                                        : e.tag == kTagPreshader   ? &preshader
+                                                                   : nullptr;
     if (!optional) continue;
     if (*optional) {
       error = "package has more than one '" + tagName(e.tag) + "' section; at most one is allowed";
@@ -209,6 +212,7 @@ struct PackageReader::State {
   std::vector<VariantInfo> variants;
   std::vector<TextureInfo> textures;
   std::vector<MslBinding> mslBindings;
+  Preshader preshader;
   std::vector<BlobEntry> entries;
   std::vector<BlobInfo> blobs;
   uint64_t dataOffset = 0;  // BDAT's offset in the file
@@ -227,8 +231,8 @@ struct PackageReader::State {
 bool PackageReader::State::parse(std::string& error) {
   if (!checkHeader(file, error)) return false;
   TocEntry toc[4];
-  std::optional<TocEntry> texs, mslb;
-  if (!readToc(file, toc, texs, mslb, error)) return false;
+  std::optional<TocEntry> texs, mslb, prsh;
+  if (!readToc(file, toc, texs, mslb, prsh, error)) return false;
   const TocEntry& meta = toc[0];
   const TocEntry& vars = toc[1];
   const TocEntry& table = toc[2];
@@ -253,6 +257,17 @@ bool PackageReader::State::parse(std::string& error) {
       return false;
     }
     if (!decodeSection(file, *mslb, error, [&](ByteReader& in) { decodeMslBindings(in, mslBindings); })) return false;
+  }
+  if (prsh) {
+    if (minor < kFirstMinorWithPreshader) {
+      error = "package format 1." + std::to_string(minor) + " has a '" + tagName(kTagPreshader) +
+              "' section, which only format 1." + std::to_string(kFirstMinorWithPreshader) + " and later have";
+      return false;
+    }
+    if (!decodeSection(file, *prsh, error, [&](ByteReader& in) {
+          decodePreshader(in, variantEntries.size(), preshader);
+        }))
+      return false;
   }
 
   variants.reserve(variantEntries.size());
@@ -353,6 +368,14 @@ const std::vector<VariantInfo>& PackageReader::variants() const { return state_-
 const std::vector<TextureInfo>& PackageReader::textures() const { return state_->textures; }
 const std::vector<BlobInfo>& PackageReader::blobs() const { return state_->blobs; }
 const std::vector<MslBinding>& PackageReader::mslBindings() const { return state_->mslBindings; }
+const Preshader& PackageReader::preshader() const { return state_->preshader; }
+
+const PreshaderProgram* PackageReader::preshaderProgram(std::string_view key) const {
+  for (const PreshaderProgram& p : state_->preshader.programs)
+    for (uint32_t v : p.variants)
+      if (state_->variants[v].key == key) return &p;
+  return nullptr;
+}
 
 const Param* PackageReader::findParam(std::string_view name) const {
   for (const Param& p : state_->material.params)
@@ -367,7 +390,7 @@ const VariantInfo* PackageReader::findVariant(std::string_view key) const {
 }
 
 std::string PackageReader::semanticError() const {
-  return package::semanticError(state_->material, state_->variants);
+  return package::semanticError(state_->material, state_->variants, state_->preshader);
 }
 
 std::optional<std::span<const uint8_t>> PackageReader::blob(uint32_t index, std::string* error) const {

@@ -55,6 +55,7 @@ ReadResult readChecked(std::span<const uint8_t> file) {
   pkg.compilerVersion = reader->compilerVersion();
   pkg.material = reader->material();
   pkg.mslBindings = reader->mslBindings();
+  pkg.preshader = reader->preshader();
   pkg.variants.resize(variants.size());
   result.stats.resize(variants.size());
   for (size_t v = 0; v < variants.size(); ++v) {

@@ -39,4 +39,9 @@ void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector
 void encodeMslBindings(ByteWriter& out, const std::vector<MslBinding>& bindings);
 void decodeMslBindings(ByteReader& in, std::vector<MslBinding>& bindings);
 
+// PRSH: the preshader (format 1.3). Decoded after VARS: variant indices are checked against the
+// variant table; the block against the parameters and each op are meaning (semanticError).
+void encodePreshader(ByteWriter& out, const Preshader& preshader);
+void decodePreshader(ByteReader& in, uint64_t variantCount, Preshader& preshader);
+
 }  // namespace facet::package::detail

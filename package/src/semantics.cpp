@@ -64,7 +64,7 @@ std::string shaderCodeError(Target target, std::span<const uint8_t> code) {
   return "";
 }
 
-std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants) {
+std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants, const Preshader& preshader) {
   if (!isValidName(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
   if (m.shading != "lit" && m.shading != "unlit") return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
   static const std::set<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
@@ -90,7 +90,7 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
       if (!slots.insert({s.stage, s.target}).second)
         return "variant '" + v.key + "' has two " + toString(s.stage) + " " + toString(s.target) + " shaders";
   }
-  return "";
+  return preshaderSemanticError(m, preshader);
 }
 
 std::string semanticError(const Package& pkg) {
@@ -100,7 +100,7 @@ std::string semanticError(const Package& pkg) {
     info.key = v.key;
     for (const Shader& s : v.shaders) info.shaders.push_back({s.stage, s.target, 0});
   }
-  if (std::string e = semanticError(pkg.material, variants); !e.empty()) return e;
+  if (std::string e = semanticError(pkg.material, variants, pkg.preshader); !e.empty()) return e;
   for (const Variant& v : pkg.variants)
     for (const Shader& s : v.shaders)
       if (std::string e = shaderCodeError(s.target, s.code); !e.empty())

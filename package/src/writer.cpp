@@ -122,8 +122,8 @@ std::vector<uint8_t> write(const Package& pkg) {
     blobTable.push_back(b);
   }
 
-  // META, VARS, [TEXS], [MSLB], BTAB, BDAT. TEXS and MSLB exist only when not empty, so packages
-  // without them keep their earlier bytes.
+  // META, VARS, [TEXS], [MSLB], [PRSH], BTAB, BDAT. TEXS, MSLB and PRSH exist only when not
+  // empty, so packages without them keep their earlier bytes.
   std::vector<Section> sections;
   auto section = [&](uint32_t tag, const auto& encode) {
     sections.push_back({tag, {}});
@@ -134,6 +134,8 @@ std::vector<uint8_t> write(const Package& pkg) {
   section(kTagVariants, [&](ByteWriter& out) { encodeVariantTable(out, variants); });
   if (!textures.empty()) section(kTagTextures, [&](ByteWriter& out) { encodeTextureTable(out, textures); });
   if (!pkg.mslBindings.empty()) section(kTagMslBindings, [&](ByteWriter& out) { encodeMslBindings(out, pkg.mslBindings); });
+  const bool preshaded = !pkg.preshader.programs.empty();
+  if (preshaded) section(kTagPreshader, [&](ByteWriter& out) { encodePreshader(out, pkg.preshader); });
   section(kTagBlobTable, [&](ByteWriter& out) { encodeBlobTable(out, blobTable); });
   sections.push_back({kTagBlobData, std::move(blobData)});
 
@@ -142,7 +144,10 @@ std::vector<uint8_t> write(const Package& pkg) {
   out.bytes(kMagic);
   out.u16(kFormatMajor);
   // The lowest minor that describes the file.
-  out.u16(!pkg.mslBindings.empty() ? kFirstMinorWithMslBindings : usesDictionary ? kFirstMinorWithDictionary : 0);
+  out.u16(preshaded                  ? kFirstMinorWithPreshader
+          : !pkg.mslBindings.empty() ? kFirstMinorWithMslBindings
+          : usesDictionary           ? kFirstMinorWithDictionary
+                                     : 0);
   out.u32(uint32_t(sections.size()));
   out.u64(0);  // file size, patched below
   out.u64(0);  // checksum, patched below

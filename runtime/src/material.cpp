@@ -1,4 +1,5 @@
 #include "facet/runtime/material.h"
+#include "facet/runtime/preshader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,6 +119,21 @@ std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std
     }
   }
   return p;
+}
+
+bool LoadedMaterial::preshade(const std::string& variantKey, std::vector<uint8_t>* block, std::string* error) const {
+  const package::PreshaderProgram* program = reader_.preshaderProgram(variantKey);
+  if (!program) return true;
+  const uint32_t params = reader_.material().paramBlockSize;
+  if (block->size() < params) {
+    *error = "a parameter block of " + std::to_string(block->size()) + " bytes for material '" + info().name +
+             "', whose parameters take " + std::to_string(params);
+    return false;
+  }
+  block->resize(reader_.preshader().blockSize, 0);
+  if (runPreshader(program->ops, params, *block, error)) return true;
+  *error = "material '" + info().name + "', variant '" + variantKey + "': " + *error;
+  return false;
 }
 
 std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(const std::string& variantKey,

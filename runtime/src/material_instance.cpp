@@ -38,7 +38,7 @@ std::shared_ptr<Material> Material::create(LoadedMaterial loaded, const VariantR
                                                 : Blending::Opaque;
   m->doubleSided_ = info.doubleSided;
   auto defaults = m->loaded_.paramBlock({}, error, m->colors_);
-  if (!defaults) return nullptr;
+  if (!defaults || !m->loaded_.preshade(m->variantKey_, &*defaults, error)) return nullptr;
   m->defaults_ = std::move(*defaults);
   auto generated = m->loaded_.generatedTextures(m->variantKey_, error);
   if (!generated) return nullptr;
@@ -103,10 +103,15 @@ bool MaterialInstance::set(ParameterHandle handle, std::vector<double> values, b
   auto packed = material_->loaded_.paramBlock({{p.name, std::move(values)}}, error, material_->colors_, asBool);
   if (!packed) return false;
   if (p.size == 0) return true;  // never read by the shaders
-  uint8_t* dst = block_.bytes.data() + p.offset;
+  const uint8_t* dst = block_.bytes.data() + p.offset;
   const uint8_t* src = packed->data() + p.offset;
   if (std::memcmp(dst, src, p.size) == 0) return true;
-  std::memcpy(dst, src, p.size);
+  // The preshader's derived members follow from the parameters: recomputed on a copy, so a
+  // refused program leaves the instance as it was.
+  std::vector<uint8_t> bytes = block_.bytes;
+  std::memcpy(bytes.data() + p.offset, src, p.size);
+  if (!material_->loaded_.preshade(material_->variantKey_, &bytes, error)) return false;
+  block_.bytes = std::move(bytes);
   block_.generation = nextUniformGeneration();
   return true;
 }

@@ -148,7 +148,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     store(draw.object.model, glm::mat4(model));
     store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
     auto block = material.loaded().paramBlock(o.params, error, out->colors_, o.boolParams);
-    if (!block) {
+    if (!block || !material.loaded().preshade(material.variantKey(), &*block, error)) {
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;
     }

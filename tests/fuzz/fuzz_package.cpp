@@ -1,5 +1,6 @@
 // libFuzzer target for the package readers: package::read and the lazy PackageReader apps use
-// (open, then each blob on request), the code apps run on files they did not build. Built only in the clang configuration of scripts/fuzz.sh (-DFACET_FUZZ=ON), with
+// (open, then each blob on request), the code apps run on files they did not build, and the
+// runtime's preshader interpreter on every program a package carries. Built only in the clang configuration of scripts/fuzz.sh (-DFACET_FUZZ=ON), with
 // ASan + UBSan; a crash, a sanitizer report, a leak, a hang or a broken invariant below is a
 // finding.
 //
@@ -22,6 +23,7 @@
 #include "checksum.h"
 #include "facet/package.h"
 #include "facet/package_reader.h"
+#include "facet/runtime/preshader.h"
 #include "format.h"
 
 extern "C" size_t LLVMFuzzerMutate(uint8_t* data, size_t size, size_t maxSize);
@@ -110,6 +112,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (r.stats.size() != r.package->variants.size()) broken("stats do not match the variants");
   // The runtime's semantic check (what an app runs on an untrusted package) on whatever decoded.
   (void)pkg::semanticError(*r.package);
+  // Every preshader program of a package whose meaning is sound runs (the runtime's interpreter,
+  // on a block whose parameters are the input's own bytes: any float bits, NaN and infinities
+  // included). The loader never runs one of a package whose meaning is not.
+  const bool sound = pkg::preshaderSemanticError(r.package->material, r.package->preshader).empty();
+  for (const pkg::PreshaderProgram& program : r.package->preshader.programs) {
+    if (!sound) break;
+    std::vector<uint8_t> block(r.package->preshader.blockSize, 0);
+    std::memcpy(block.data(), data, std::min<size_t>(size, r.package->material.paramBlockSize));
+    std::string error;
+    if (!facet::runtime::runPreshader(program.ops, r.package->material.paramBlockSize, block, &error))
+      broken("the interpreter refused a preshader program semanticError accepted");
+  }
   // What was read writes and reads back to a package that writes the same bytes (compared as
   // bytes: a NaN default value is legal and never equals itself).
   const std::vector<uint8_t> written = pkg::write(*r.package);

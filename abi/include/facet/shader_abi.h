@@ -113,7 +113,10 @@ inline constexpr uint32_t kMaxPunctualLights = 4;
 struct FrameUniforms {
   float viewProjection[16];
   float cameraPosition[4];  // xyz: world-space eye position; w: unused
-  float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused
+  float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused.
+                            // Unit length is a guarantee the shaders rely on (they no longer
+                            // normalize it per pixel): SceneFrame normalizes the scene's sun; an
+                            // app filling the block itself must normalize too
   float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused
   float ambient[4];         // rgb: the environment's mean radiance × exposure; w: unused. Not read by
                             // the forward shaders since image-based lighting (sh and the environment

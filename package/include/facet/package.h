@@ -5,6 +5,7 @@
 // The byte layout is documented in docs/package-format.md.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -19,8 +20,9 @@ namespace facet::package {
 // both and the command that rebuilds the package. The writer stamps the lowest minor that
 // describes the file, so packages that use no newer feature stay readable by older readers.
 inline constexpr uint16_t kFormatMajor = 1;
-inline constexpr uint16_t kFormatMinor = 2;  // 1.1: shader blobs compressed against a package dictionary;
-                                             // 1.2: the Metal argument slots (section MSLB)
+inline constexpr uint16_t kFormatMinor = 3;  // 1.1: shader blobs compressed against a package dictionary;
+                                             // 1.2: the Metal argument slots (section MSLB);
+                                             // 1.3: the preshader (section PRSH)
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 
@@ -119,12 +121,63 @@ struct MslBinding {
 inline constexpr uint32_t kMslBufferSlots = 31;
 inline constexpr uint32_t kMslSamplerSlots = 16;
 
+// The preshader (Unreal's term; format 1.3, section PRSH): shading inputs that depend only on
+// parameters (f0, diffuse colour, clamped roughness, α), computed once on the CPU when an
+// instance's parameters change and written into the uniform block as members after the
+// parameters, instead of per pixel. A program is data: ops on kPreshaderRegisters vec4
+// registers (all zero at the start) that read the parameter bytes and write the derived ones.
+// The runtime interprets it without knowing what it computes (docs/package-format.md, "PRSH").
+enum class PreshaderOpcode : uint8_t {
+  LoadParam = 0,  // r[dst] = `count` floats at block byte `offset` (in the parameters); count 1 broadcasts
+  Constant = 1,   // r[dst] = k
+  Add = 2,        // r[dst] = r[a] + r[b], per component
+  Sub = 3,        // r[dst] = r[a] - r[b]
+  Mul = 4,        // r[dst] = r[a] * r[b]
+  Clamp = 5,      // r[dst] = min(max(r[a], k[0]), k[1]); NaN becomes k[0]
+  Swizzle = 6,    // r[dst][i] = r[a][(offset >> 2i) & 3]
+  Store = 7,      // `count` floats of r[a] to block byte `offset` (after the parameters)
+};
+inline constexpr uint8_t kLastPreshaderOpcode = uint8_t(PreshaderOpcode::Store);
+const char* toString(PreshaderOpcode);
+struct PreshaderOp {
+  PreshaderOpcode code = PreshaderOpcode::Constant;
+  uint8_t dst = 0, a = 0, b = 0;  // registers
+  uint32_t offset = 0;
+  uint32_t count = 0;
+  std::array<float, 4> k{};
+  bool operator==(const PreshaderOp&) const = default;
+};
+struct PreshaderProgram {
+  std::vector<uint32_t> variants;  // indices into Package::variants, increasing; each in one program at most
+  std::vector<PreshaderOp> ops;
+  bool operator==(const PreshaderProgram&) const = default;
+};
+struct Preshader {
+  // Bytes of "MaterialParams" with the derived members: paramBlockSize < blockSize, a multiple
+  // of 16. Variants without a program declare and upload paramBlockSize bytes, as before 1.3.
+  uint32_t blockSize = 0;
+  std::vector<PreshaderProgram> programs;  // empty: no PRSH section
+  bool operator==(const Preshader&) const = default;
+};
+inline constexpr uint32_t kPreshaderRegisters = 64;
+inline constexpr size_t kMaxPreshaderOps = 256;
+// What is wrong with a program run over a block of `blockSize` bytes whose first
+// `paramBlockSize` are the parameters, or "": known opcodes, registers in range, 1..4 components,
+// 4-byte aligned offsets, loads inside the parameters, stores after them and inside the block,
+// finite constants, at most kMaxPreshaderOps ops. Nothing a program does can then reach memory
+// outside the block or overwrite a parameter.
+std::string preshaderError(std::span<const PreshaderOp> ops, uint32_t paramBlockSize, uint32_t blockSize);
+// The package's preshader against its material: a block above the parameters, every program
+// sound by preshaderError. "" when there is no preshader. Part of semanticError.
+std::string preshaderSemanticError(const MaterialInfo& material, const Preshader& preshader);
+
 struct Package {
   std::string compilerVersion;
   MaterialInfo material;
   std::vector<Variant> variants;
   std::vector<Texture> textures;  // written (as section TEXS) only when not empty
   std::vector<MslBinding> mslBindings;  // written (as section MSLB, format 1.2) only when not empty
+  Preshader preshader;                  // written (as section PRSH, format 1.3) only with programs
   bool operator==(const Package&) const = default;
 };
 
@@ -166,7 +219,8 @@ bool isValidName(std::string_view name);
 // What a decoded package means, checked for a package the app did not build (the runtime's
 // loader calls it on every package): identifier names, known shading and blending, unique
 // parameters and variants, valid variant keys, finite ordered ranges holding their defaults,
-// sizes within the limits above, and shader blobs of the kind their slot says (SPIR-V words,
+// sizes within the limits above, preshader programs that stay inside the block
+// (preshaderSemanticError), and shader blobs of the kind their slot says (SPIR-V words,
 // GLSL ES 3.00 text). "" when it is sound, else what is wrong. read() checks bytes only, so that
 // tools can still open and describe a package whose meaning is wrong.
 std::string semanticError(const Package& pkg);

@@ -53,7 +53,8 @@ struct BlobInfo {
 // package::semanticError in two parts, for a reader that has not decoded any code: the material
 // and the variant table ("" when sound), and one shader's code for its slot's kind (SPIR-V words,
 // GLSL ES 3.00 text): "" or what it is not, e.g. "is not SPIR-V (...)".
-std::string semanticError(const MaterialInfo& material, const std::vector<VariantInfo>& variants);
+std::string semanticError(const MaterialInfo& material, const std::vector<VariantInfo>& variants,
+                          const Preshader& preshader = {});
 std::string shaderCodeError(Target target, std::span<const uint8_t> code);
 
 class PackageReader {
@@ -83,6 +84,11 @@ class PackageReader {
   // Where a Metal app binds each block and sampler of the MSL shaders, the same in every
   // variant (format 1.2; empty in older packages).
   const std::vector<MslBinding>& mslBindings() const;
+  // The preshader (format 1.3; empty in older packages; its programs are checked against the
+  // block by semanticError(), package::preshaderError), and the program of one variant (nullptr: the variant computes its
+  // inputs per pixel from the parameter block alone).
+  const Preshader& preshader() const;
+  const PreshaderProgram* preshaderProgram(std::string_view key) const;
 
   // What a package means, for one the app did not build: package::semanticError's checks of the
   // metadata and variant table, without decoding any code. The code of each shader is checked

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "facet/compiler/param_layout.h"
+#include "facet/compiler/preshader.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/module.h"
 #include "facet/permutations/tiers.h"
@@ -38,6 +39,9 @@ struct AssemblyInput {
   permutations::VariantKey key;
   permutations::TierConfig tier;  // the maths this variant's tier uses
   std::string compilerVersion;
+  // Set when the variant reads preshaded inputs (compiler/preshader.h): the block declares the
+  // derived members after the parameters and FACET_PRESHADED_* is defined per input.
+  const PreshadeLayout* preshade = nullptr;
 };
 
 // Names the compiler's other stages use, from the shader interface (shader_abi.h owns them).

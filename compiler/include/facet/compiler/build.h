@@ -64,6 +64,10 @@ struct BuildOptions {
   // Called after each variant finishes (done of total), one call at a time, from any thread;
   // matc draws its terminal progress line with it.
   std::function<void(size_t done, size_t total)> progress;
+  // Compute the inputs that depend only on parameters once on the CPU (compiler/preshader.h).
+  // false: every variant computes them per pixel, as packages before format 1.3 did (tests and
+  // `matc eval`'s before/after).
+  bool preshader = true;
   // Evaluation only (`matc eval`, docs/eval.md): called with each tier's configuration after the
   // preset and the material's overrides are applied, to change any choice of it (a single-option
   // swap). Unset: the preset with the material's overrides, as shipped.

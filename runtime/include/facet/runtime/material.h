@@ -50,6 +50,12 @@ class LoadedMaterial {
                                                  ColorEncoding colors = ColorEncoding::Linear,
                                                  const std::set<std::string>& givenAsBool = {}) const;
 
+  // Completes a paramBlock() for a variant: with a preshader program (format 1.3), the block
+  // grows to the preshaded size and the program writes the derived members after the parameters
+  // (runtime/preshader.h); without one the block is left as it is. Run it after every change of
+  // the parameters. False with *error when the program is refused.
+  bool preshade(const std::string& variantKey, std::vector<uint8_t>* block, std::string* error) const;
+
   // The textures the compiler generated for the variant's shaders (package section TEXS, e.g.
   // the `lut` tier's specular table), bound at their shader_abi.h slots. The Textures are made
   // once per package and live as long as this LoadedMaterial. A texture this
