@@ -37,17 +37,12 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     return specular * clamp(material.ambientOcclusion, 0.0, 1.0);
 }
 
-// Adds linear radiance (the ambient specular, each light's direct term) to the colour so far.
-// With FACET_GAMMA_HACK the colour is encoded (c_γ = √c) and the sum is formed in linear before
-// encoding again: √(c_γ² + x) costs the same square root as encoding x alone, and avoids the
-// hack's cross term ((c_γ + √x)² = c + x + 2√(cx)), which for an environment lighting every
-// pixel both ways would brighten the whole surface (measured: low tier 19.0 dB instead of
-// 27.7 dB against reference in test_punctual_lights' scene) and for a light made its lobe's
-// faint tail over lit diffuse visible (docs/specular-tiers.md). fp16: c_γ² + x is clamped to the
-// mediump range before the √ (c_γ ≤ 256 keeps c_γ² finite; the sum need not be).
+// Adds linear radiance to the linear sum (with FACET_GAMMA_HACK the encoded diffuse was decoded
+// first: linear_from_shading_space, output_blending.glsl). fp16: each term is ≤ 65504; the gamma
+// hack's sum keeps the saturation its earlier encoded form had (min before its √).
 vec3 add_light(vec3 color, vec3 radiance) {
 #if defined(FACET_GAMMA_HACK)
-    return sqrt(min(color * color + radiance, MEDIUMP_FLT_MAX));
+    return min(color + radiance, MEDIUMP_FLT_MAX);
 #else
     return color + radiance;
 #endif

@@ -22,16 +22,15 @@
 // linearise colour parameters or sRGB textures for such variants, so baseColor arrives encoded.
 //   diffuse_γ  = diffuseColor_γ · √(irradiance/π)        (√ per vertex with FACET_VERTEX_DIFFUSE)
 //   f0_γ       = 0.4 · reflectance · (1 − metallic) + metallic · baseColor_γ    (√(0.16 r²) = 0.4 r)
-//   specular   = f_s(f0_γ²) · E_light · n·l, linear, added as c_γ ← √(c_γ² + specular)
+//   specular   = f_s(f0_γ²) · E_light · n·l, linear, added to c = diffuse_γ² in linear
 // so the specular intensity is computed in linear (roughness, the lobe, n·l and the light are
-// linear quantities) and added to the gamma-space sum in linear (add_light): the same √ per light
-// as encoding the term alone, √(specular), which the talk's form √(specIntensity_linear) ·
-// specColor_γ amounts to, plus one multiply-add, and without its cross term (a_γ + b_γ)² = a + b
-// + 2√(ab), which made a lobe's faint tail over lit diffuse 2√(d s) bright (measured in
-// docs/specular-tiers.md). The sum is squared back to linear once, in blend_output
-// (output_blending.glsl), because the HDR target and the post pass expect linear values. Errors
-// of the hack, by design: interpolation and surface arithmetic act on encoded values, and
-// sRGB-encoded inputs are decoded with γ = 2 instead of the sRGB curve.
+// linear quantities) and summed in linear after the encoded diffuse is squared back once
+// (linear_from_shading_space in output_blending.glsl, add_light in shading_ambient.glsl): no √ at
+// all, where the talk's form √(specIntensity_linear) · specColor_γ costs one per light, and
+// without that form's cross term (a_γ + b_γ)² = a + b + 2√(ab), which made a lobe's faint tail
+// over lit diffuse 2√(d s) bright (measured in docs/specular-tiers.md). Errors of the hack, by
+// design: interpolation and surface arithmetic act on encoded values, and sRGB-encoded inputs are
+// decoded with γ = 2 instead of the sRGB curve.
 
 // With FACET_PRESHADED_DIFFUSE_COLOR, FACET_PRESHADED_F0 and FACET_PRESHADED_ROUGHNESS the
 // inputs depend only on parameters: the preshader (compiler/preshader.h, Unreal's term) computes
@@ -146,8 +145,8 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     // clamped to 65504. That clamp is the RGBA16F target's limit, so it applies in every tier
     // (saturateMediump is an identity in the highp `reference`).
     vec3 irradiance = lightColor * NoL;
-    // Linear in every colour space: with FACET_GAMMA_HACK the caller adds it to the encoded sum
-    // with add_light (shading_ambient.glsl), √(c_γ² + x), as the ambient specular.
+    // Linear in every colour space: with FACET_GAMMA_HACK the caller adds it to the linear sum
+    // with add_light (shading_ambient.glsl), as the ambient specular.
 #if defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
     return min(specular * irradiance, MEDIUMP_FLT_MAX);

@@ -64,6 +64,9 @@ void main() {
 #else
     vec3 color = shade_standard_ambient(material, sh_irradiance_over_pi(shading_normal));
 #endif
+    // The one term formed in the tier's colour space (encoded with FACET_GAMMA_HACK); the rest is
+    // summed in linear (shading_ambient.glsl).
+    color = linear_from_shading_space(color);
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
 #if defined(FACET_DIRECTIONAL_LIGHT)
@@ -82,5 +85,5 @@ void main() {
     color = add_light(color, shade_punctual(material, frame.punctualLights[2]));
     color = add_light(color, shade_punctual(material, frame.punctualLights[3]));
 #endif
-    fragColor = blend_output(color + material.emissive, material.alpha);
+    fragColor = blend_output(add_light(color, linear_from_shading_space(material.emissive)), material.alpha);
 }

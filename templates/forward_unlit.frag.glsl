@@ -9,5 +9,5 @@ void main() {
     shading_view = normalize(frame.cameraPosition.xyz - v_worldPosition);
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
-    fragColor = blend_output(material.baseColor + material.emissive, material.alpha);
+    fragColor = blend_output(linear_from_shading_space(material.baseColor + material.emissive), material.alpha);
 }
