@@ -125,6 +125,25 @@ TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
   }
 }
 
+// The gamma hack's lit terms are summed in linear (linear_from_shading_space, add_light): the
+// fragment stage of red_plastic's low tier takes no square root (the encoding √ is per vertex),
+// where re-encoding the sum after each term took a vec3 √ per term (docs/eval.md, "The gamma
+// hack's sum").
+TEST(Tiers, GammaHackSumsLitTermsWithoutASquareRootPerTerm) {
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  auto squareRoots = [](const std::vector<uint32_t>& words) {
+    const std::string text = facet::compiler::disassembleSpirv(words);
+    size_t count = 0;
+    for (size_t at = text.find(" Sqrt "); at != std::string::npos; at = text.find(" Sqrt ", at + 1)) ++count;
+    return count;
+  };
+  for (const char* key : {"low.dir0", "low.dir1"}) {
+    EXPECT_EQ(squareRoots(spirvOf(*built, key, Stage::Fragment)), 0u) << key;
+    EXPECT_GT(squareRoots(spirvOf(*built, key, Stage::Vertex)), 0u) << key << ": the check sees the vertex encoding";
+  }
+}
+
 // The ambient models' texture reads (red_plastic samples no texture of its own): split-sum reads
 // the environment and the DFG table, the analytic model only the environment (Karis's fit
 // replaces the table: a few more ALU ops, one exp2), the two-mip model the environment twice at
