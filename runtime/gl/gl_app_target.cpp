@@ -33,7 +33,11 @@ bool inspectAppTarget(const GlAppTarget& target, uint32_t frameWidth, uint32_t f
     return false;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-  if (!checkComplete(("the app's target, " + describe(target) + ",").c_str(), error)) return false;
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    *error = describe(target) + " is not complete: " + framebufferStatusName(status);
+    return false;
+  }
 
   GLint drawBuffer = GL_NONE;
   glGetIntegerv(GL_DRAW_BUFFER0, &drawBuffer);
