@@ -115,6 +115,7 @@ class GlAppTargetTest : public ::testing::Test {
     }
   }
 
+  // The backend the app embeds, with the test's GL table current afterwards.
   std::unique_ptr<GlRenderer> embedded(PostPath path) {
     GlOptions options;
     options.postPath = path;
@@ -125,6 +126,7 @@ class GlAppTargetTest : public ::testing::Test {
     if (renderer) {
       EXPECT_EQ(renderer->postPath(), path) << "EGL GLES offers GL_EXT_shader_framebuffer_fetch";
     }
+    EXPECT_TRUE(appGl_->makeCurrent(&error)) << error;
     return renderer;
   }
 
@@ -158,7 +160,6 @@ TEST_F(GlAppTargetTest, AppFramebufferGetsTheReadbackImageOnBothPaths) {
       auto renderer = embedded(path);
       ASSERT_NE(renderer, nullptr);
       std::string error;
-      ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
       AppFramebuffer target = makeAppFramebuffer(image, GL_RGBA8, kWidth, kHeight);
       std::vector<uint8_t> first, second, readBack;
       for (int i = 0; i < 2; ++i) {
@@ -182,7 +183,6 @@ TEST_F(GlAppTargetTest, LeavesTheTargetBoundWithAFullViewport) {
     auto renderer = embedded(path);
     ASSERT_NE(renderer, nullptr);
     std::string error;
-    ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
     AppFramebuffer target = makeAppFramebuffer(Image::Texture, GL_RGBA8, kWidth, kHeight);
     AppFramebuffer other = makeAppFramebuffer(Image::Texture, GL_RGBA8, 4, 4);
     glBindFramebuffer(GL_FRAMEBUFFER, other.id());
@@ -258,7 +258,6 @@ TEST_F(GlAppTargetTest, UnusableTargetsAreErrors) {
     auto renderer = embedded(path);
     ASSERT_NE(renderer, nullptr);
     std::string error;
-    ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
     AppFramebuffer good = makeAppFramebuffer(Image::Texture, GL_RGBA8, kWidth, kHeight);
     AppFramebuffer srgb = makeAppFramebuffer(Image::Texture, GL_SRGB8_ALPHA8, kWidth, kHeight);
     AppFramebuffer integer = makeAppFramebuffer(Image::Texture, GL_RGBA8UI, kWidth, kHeight);

@@ -61,6 +61,20 @@ void resetAppState() {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+// Runs a frame's body, turning its failure message (or an exception) into *error. Nothing in a
+// frame throws by design; the catch keeps the never-throws contract if allocation fails.
+template <typename Body>
+bool guarded(const Body& body, std::string& message, std::string* error) {
+  bool ok = false;
+  try {
+    ok = body();
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  if (!ok && error) *error = "GL backend: " + message;
+  return ok;
+}
+
 // What gl_backend.h promises the app finds bound after a frame.
 void leaveState(GLuint framebuffer, uint32_t width, uint32_t height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -272,15 +286,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     }
     return checkGlError("readback", &message);
   };
-  // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
-  bool ok = false;
-  try {
-    ok = renderFrame();
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  if (!ok && error) *error = "GL backend: " + message;
-  return ok;
+  return guarded(renderFrame, message, error);
 }
 
 // The post pass writes the app's framebuffer: on the separate path it draws into it; on the
@@ -315,14 +321,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     leaveState(target.framebuffer, frame.width, frame.height);
     return drawn && checkGlError("drawing into the app's framebuffer", &message);
   };
-  bool ok = false;
-  try {
-    ok = renderFrame();
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  if (!ok && error) *error = "GL backend: " + message;
-  return ok;
+  return guarded(renderFrame, message, error);
 }
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
