@@ -175,8 +175,8 @@ TEST_F(GlAppTargetTest, AppFramebufferGetsTheReadbackImageOnBothPaths) {
 }
 
 // gl_backend.h's promise: the target bound for drawing and reading, the full viewport, program 0,
-// vertex array 0, the fixed-function tests off; and the app's scissor, colour mask and blending
-// left on from its own pass do not clip or tint the frame.
+// vertex array 0, the fixed-function tests off; and the app's scissor, colour mask, blending and
+// pixel-unpack buffer left set by its own pass do not clip, tint or feed the frame.
 TEST_F(GlAppTargetTest, LeavesTheTargetBoundWithAFullViewport) {
   for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
     SCOPED_TRACE(pathName(path));
@@ -191,6 +191,11 @@ TEST_F(GlAppTargetTest, LeavesTheTargetBoundWithAFullViewport) {
     glEnable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    // A streaming buffer left bound: the first frame's environment upload must not read it.
+    gl::Buffer staging = gl::Buffer::generate();
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
+    glBufferData(GL_PIXEL_UNPACK_BUFFER, 16, nullptr, GL_STREAM_DRAW);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 7);
     ASSERT_TRUE(content_.animate(0, &error)) << error;
     ASSERT_TRUE(renderer->renderToFramebuffer(content_.frame, GlAppTarget{target.id(), kWidth, kHeight}, &error))
         << error;
@@ -210,6 +215,11 @@ TEST_F(GlAppTargetTest, LeavesTheTargetBoundWithAFullViewport) {
     EXPECT_EQ(viewport[3], GLint(kHeight));
     EXPECT_EQ(program, 0);
     EXPECT_EQ(vertexArray, 0);
+    GLint unpackBuffer = -1, rowLength = -1;
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    EXPECT_EQ(unpackBuffer, 0);
+    EXPECT_EQ(rowLength, 0);
     for (GLenum capability : {GL_SCISSOR_TEST, GL_BLEND, GL_DEPTH_TEST, GL_CULL_FACE, GL_STENCIL_TEST}) {
       EXPECT_EQ(glIsEnabled(capability), GL_FALSE) << "capability 0x" << std::hex << capability;
     }

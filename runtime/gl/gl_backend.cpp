@@ -51,14 +51,21 @@ bool buildPostProgram(const std::string& vertex, const std::string& fragment, bo
   return true;
 }
 
-// State the passes rely on that an app's context may have left otherwise (the backend's own
-// contexts start at GL's defaults, the app's has the app's last pass in it).
+// State the passes and uploads rely on that an app's context may have left otherwise (the
+// backend's own contexts start at GL's defaults, the app's has the app's last pass in it): a
+// scissor would clip the frame, a bound pixel-unpack buffer would make texture uploads read it.
 void resetAppState() {
   for (GLenum capability : {GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_POLYGON_OFFSET_FILL, GL_RASTERIZER_DISCARD,
                             GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE}) {
     glDisable(capability);
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  for (GLenum layout : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
+                        GL_UNPACK_SKIP_IMAGES, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS}) {
+    glPixelStorei(layout, 0);
+  }
 }
 
 // Runs a frame's body, turning its failure message (or an exception) into *error. Nothing in a
@@ -234,6 +241,7 @@ bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
   // A failed earlier frame may have left an error flag set; it must not be blamed on this one.
   while (glGetError() != GL_NO_ERROR) {
   }
+  resetAppState();
   return checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), error) &&
          prepareTargets(frame.width, frame.height, error) && textures_.prepare(frame, error);
 }
@@ -334,7 +342,6 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   // Merged: the forward pass writes colour 0 (HDR) only; LDR (colour 1) is the post pass's.
   const GLenum forwardBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
   glDrawBuffers(merged ? 2 : 1, forwardBuffers);
-  resetAppState();
   glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
   glDisable(GL_BLEND);
   glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces

@@ -76,7 +76,8 @@ struct GlAppTarget {
 // render(), with framebuffer 0 bound): the target framebuffer bound to GL_FRAMEBUFFER (draw and
 // read), viewport (0, 0, width, height), program 0, vertex array 0, and GL_BLEND, GL_DEPTH_TEST,
 // GL_CULL_FACE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_POLYGON_OFFSET_FILL, GL_RASTERIZER_DISCARD,
-// GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE disabled, depth and colour masks all true.
+// GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE disabled, depth and colour masks all true,
+// GL_PIXEL_UNPACK_BUFFER and GL_PIXEL_PACK_BUFFER 0, pack and unpack row lengths and skips 0.
 // Changed and not restored (the app sets them before relying on them): texture bindings of units
 // 0..15 and the active unit, GL_UNIFORM_BUFFER bindings (generic and 0..3), GL_ARRAY_BUFFER,
 // blend function, depth function, front face, cull face mode, GL_UNPACK_ALIGNMENT,
