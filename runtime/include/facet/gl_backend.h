@@ -82,7 +82,8 @@ struct GlAppTarget {
 // 0..15 and the active unit, GL_UNIFORM_BUFFER bindings (generic and 0..3), GL_ARRAY_BUFFER,
 // blend function, depth function, front face, cull face mode, GL_UNPACK_ALIGNMENT,
 // GL_RENDERBUFFER binding. Nothing is restored because an engine re-binds its own state per pass
-// anyway, and glGet* round trips stall multi-threaded drivers.
+// anyway, and glGet* round trips stall multi-threaded drivers. After a failed call the state is
+// unspecified (the app re-binds what it uses; its context and objects are untouched).
 class GlRenderer : public RenderBackend {
  public:
   // Renders the frame into the app's framebuffer instead of reading it back: nothing is read
