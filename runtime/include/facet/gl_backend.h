@@ -89,7 +89,7 @@ class GlRenderer : public RenderBackend {
   // Renders the frame into the app's framebuffer instead of reading it back: nothing is read
   // back, and the call does not wait for the GPU (the app's own swap, fence or glReadPixels
   // orders later work as for any GL draw). Not timed (FrameResult::gpuTimes is render()'s), and
-  // HDR is never kept (GlOptions::readBackHdr is render()'s): it is invalidated after the post pass.
+  // HDR is not read back (GlOptions::readBackHdr is render()'s): merged, it is invalidated.
   // A target that is not usable (size 0 or not the frame's, not a framebuffer of this context,
   // incomplete, sRGB or non-normalised draw buffer 0) is an error naming why, drawing nothing.
   virtual bool renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) = 0;
