@@ -174,6 +174,52 @@ TEST_F(GlAppTargetTest, AppFramebufferGetsTheReadbackImageOnBothPaths) {
   }
 }
 
+// The merged path lends whichever image the app attached: a cube map face, a mip level other
+// than 0. Frames of that image's size (the content's camera, stretched) equal render()'s.
+TEST_F(GlAppTargetTest, MergedPathLendsCubeFacesAndMipLevels) {
+  auto renderer = embedded(PostPath::Merged);
+  ASSERT_NE(renderer, nullptr);
+  std::string error;
+  constexpr uint32_t kFace = kHeight;  // 240 x 240
+  gl::Texture cube = gl::Texture::generate();
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube.id());
+  glTexStorage2D(GL_TEXTURE_CUBE_MAP, 1, GL_RGBA8, GLsizei(kFace), GLsizei(kFace));
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+  gl::Texture mipmapped = gl::Texture::generate();
+  glBindTexture(GL_TEXTURE_2D, mipmapped.id());
+  glTexStorage2D(GL_TEXTURE_2D, 2, GL_RGBA8, GLsizei(kWidth), GLsizei(kHeight));
+  glBindTexture(GL_TEXTURE_2D, 0);
+
+  const struct {
+    const char* name;
+    GLenum target;
+    GLuint texture;
+    GLint level;
+    uint32_t width, height;
+  } images[] = {
+      {"cube face -Y", GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, cube.id(), 0, kFace, kFace},
+      {"2D level 1", GL_TEXTURE_2D, mipmapped.id(), 1, kWidth / 2, kHeight / 2},
+  };
+  for (const auto& image : images) {
+    SCOPED_TRACE(image.name);
+    gl::Framebuffer framebuffer = gl::Framebuffer::generate();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, image.target, image.texture, image.level);
+    ASSERT_TRUE(content_.animate(0, &error)) << error;
+    content_.frame.width = image.width;
+    content_.frame.height = image.height;
+    ASSERT_TRUE(renderer->renderToFramebuffer(content_.frame, GlAppTarget{framebuffer.id(), image.width, image.height},
+                                              &error))
+        << error;
+    ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
+    const std::vector<uint8_t> drawn = readFramebuffer(framebuffer.id(), image.width, image.height);
+    FrameResult result;
+    ASSERT_TRUE(renderer->render(content_.frame, &result, &error)) << error;
+    EXPECT_LE(maxDifference(drawn, result.ldr), 1);
+    ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
+  }
+}
+
 // gl_backend.h's promise: the target bound for drawing and reading, the full viewport, program 0,
 // vertex array 0, the fixed-function tests off; and the app's scissor, colour mask, blending and
 // pixel-unpack buffer left set by its own pass do not clip, tint or feed the frame.
