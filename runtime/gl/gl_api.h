@@ -36,6 +36,7 @@ namespace facet::runtime::gl {
   X(PFNGLBUFFERSUBDATAPROC, glBufferSubData) \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus) \
   X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv) \
+  X(PFNGLCOLORMASKPROC, glColorMask) \
   X(PFNGLCOMPILESHADERPROC, glCompileShader) \
   X(PFNGLCREATEPROGRAMPROC, glCreateProgram) \
   X(PFNGLCREATESHADERPROC, glCreateShader) \
@@ -69,6 +70,7 @@ namespace facet::runtime::gl {
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays) \
   X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, glGetActiveUniformBlockiv) \
   X(PFNGLGETERRORPROC, glGetError) \
+  X(PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC, glGetFramebufferAttachmentParameteriv) \
   X(PFNGLGETINTEGERVPROC, glGetIntegerv) \
   X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog) \
   X(PFNGLGETPROGRAMIVPROC, glGetProgramiv) \
@@ -80,6 +82,7 @@ namespace facet::runtime::gl {
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation) \
   X(PFNGLINVALIDATEFRAMEBUFFERPROC, glInvalidateFramebuffer) \
   X(PFNGLISENABLEDPROC, glIsEnabled) \
+  X(PFNGLISFRAMEBUFFERPROC, glIsFramebuffer) \
   X(PFNGLLINKPROGRAMPROC, glLinkProgram) \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei) \
   X(PFNGLREADBUFFERPROC, glReadBuffer) \
@@ -148,6 +151,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glBufferSubData           (::facet::runtime::gl::detail::current->glBufferSubData)
 #define glCheckFramebufferStatus  (::facet::runtime::gl::detail::current->glCheckFramebufferStatus)
 #define glClearBufferfv           (::facet::runtime::gl::detail::current->glClearBufferfv)
+#define glColorMask               (::facet::runtime::gl::detail::current->glColorMask)
 #define glCompileShader           (::facet::runtime::gl::detail::current->glCompileShader)
 #define glCreateProgram           (::facet::runtime::gl::detail::current->glCreateProgram)
 #define glCreateShader            (::facet::runtime::gl::detail::current->glCreateShader)
@@ -181,6 +185,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glGenVertexArrays         (::facet::runtime::gl::detail::current->glGenVertexArrays)
 #define glGetActiveUniformBlockiv (::facet::runtime::gl::detail::current->glGetActiveUniformBlockiv)
 #define glGetError                (::facet::runtime::gl::detail::current->glGetError)
+#define glGetFramebufferAttachmentParameteriv (::facet::runtime::gl::detail::current->glGetFramebufferAttachmentParameteriv)
 #define glGetIntegerv             (::facet::runtime::gl::detail::current->glGetIntegerv)
 #define glGetProgramInfoLog       (::facet::runtime::gl::detail::current->glGetProgramInfoLog)
 #define glGetProgramiv            (::facet::runtime::gl::detail::current->glGetProgramiv)
@@ -192,6 +197,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glGetUniformLocation      (::facet::runtime::gl::detail::current->glGetUniformLocation)
 #define glInvalidateFramebuffer   (::facet::runtime::gl::detail::current->glInvalidateFramebuffer)
 #define glIsEnabled               (::facet::runtime::gl::detail::current->glIsEnabled)
+#define glIsFramebuffer           (::facet::runtime::gl::detail::current->glIsFramebuffer)
 #define glLinkProgram             (::facet::runtime::gl::detail::current->glLinkProgram)
 #define glPixelStorei             (::facet::runtime::gl::detail::current->glPixelStorei)
 #define glReadBuffer              (::facet::runtime::gl::detail::current->glReadBuffer)

@@ -51,7 +51,7 @@ std::unique_ptr<GlContext> adoptGlContext(GlAppContext app, std::string* error) 
   return context;
 }
 
-std::unique_ptr<RenderBackend> createGlBackend(const GlAppContext& app, const GlOptions& options, std::string* error) {
+std::unique_ptr<GlRenderer> createGlBackend(const GlAppContext& app, const GlOptions& options, std::string* error) {
   std::unique_ptr<GlContext> context = adoptGlContext(app, error);
   if (!context) return nullptr;
   return createGlBackend(std::move(context), options, error);

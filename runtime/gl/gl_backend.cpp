@@ -1,4 +1,5 @@
-// RenderBackend on OpenGL ES: forward pass into RGBA16F + depth, post pass into RGBA8, readback.
+// RenderBackend on OpenGL ES: forward pass into RGBA16F + depth, post pass into RGBA8, read back
+// (render()) or drawn into the app's framebuffer (renderToFramebuffer()).
 //
 // Runs the "#version 300 es" shaders on the context it is given (gl_backend.h): the app's, or in
 // tests a real OpenGL ES 3.2 context (EGL surfaceless) or Mesa's OSMesa core context
@@ -13,6 +14,7 @@
 
 #include "facet/gl_backend.h"
 #include "facet/render_backend.h"
+#include "gl_app_target.h"
 #include "gl_context.h"
 #include "gl_mesh.h"
 #include "gl_post_inputs.h"
@@ -26,7 +28,73 @@ namespace {
 
 using gl::checkGlError;
 
-class GlBackend final : public RenderBackend {
+// Builds a post program; a `sampled` one (separate path) gets its HDR sampler pointed at its unit
+// once, since sampler uniforms are program state.
+bool buildPostProgram(const std::string& vertex, const std::string& fragment, bool sampled, gl::LinkedProgram* out,
+                      std::string* error) {
+  std::string buildError;
+  std::optional<gl::LinkedProgram> post = gl::buildProgram(vertex, fragment, &buildError);
+  if (!post) {
+    *error = "post-pass shaders: " + buildError;
+    return false;
+  }
+  *out = std::move(*post);
+  if (!sampled) return true;
+  const GLint hdrLocation = glGetUniformLocation(out->program.id(), std::string(abi::kPostHdrName).c_str());
+  if (hdrLocation < 0) {
+    *error = "post-pass fragment shader has no sampler uniform '" + std::string(abi::kPostHdrName) + "'";
+    return false;
+  }
+  glUseProgram(out->program.id());
+  glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
+  glUseProgram(0);
+  return true;
+}
+
+// State the passes and uploads rely on that an app's context may have left otherwise (the
+// backend's own contexts start at GL's defaults, the app's has the app's last pass in it): a
+// scissor would clip the frame, a bound pixel-unpack buffer would make texture uploads read it.
+void resetAppState() {
+  for (GLenum capability : {GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_POLYGON_OFFSET_FILL, GL_RASTERIZER_DISCARD,
+                            GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE}) {
+    glDisable(capability);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  for (GLenum layout : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
+                        GL_UNPACK_SKIP_IMAGES, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS}) {
+    glPixelStorei(layout, 0);
+  }
+}
+
+// Runs a frame's body, turning its failure message (or an exception) into *error. Nothing in a
+// frame throws by design; the catch keeps the never-throws contract if allocation fails.
+template <typename Body>
+bool guarded(const Body& body, std::string& message, std::string* error) {
+  bool ok = false;
+  try {
+    ok = body();
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  if (!ok && error) *error = "GL backend: " + message;
+  return ok;
+}
+
+// What gl_backend.h promises the app finds bound after a frame.
+void leaveState(GLuint framebuffer, uint32_t width, uint32_t height) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+}
+
+class GlBackend final : public GlRenderer {
  public:
   static std::unique_ptr<GlBackend> create(std::unique_ptr<GlContext> host, const GlOptions& options,
                                            std::string* error);
@@ -37,6 +105,7 @@ class GlBackend final : public RenderBackend {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
+  bool renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
   ResourceCounts resources() const override {
     return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
@@ -53,11 +122,17 @@ class GlBackend final : public RenderBackend {
 
   GlBackend() = default;
   bool initialise(std::unique_ptr<GlContext> host, const GlOptions& options, std::string* error);
+  // What every frame does first: the context current, the size in range, stale errors drained,
+  // textures checked, targets and textures made.
+  bool beginFrame(const FrameDesc& frame, std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
-  bool forwardPass(const FrameDesc& frame, std::string* error);
+  // `framebuffer`: the merged one (HDR, LDR, depth) when `merged`, else the HDR one.
+  bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error);
   bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
-  bool postPass(const FrameDesc& frame, std::string* error);
-  bool mergedPostPass(const FrameDesc& frame, std::string* error);
+  // Separate path: samples the HDR texture, draws into `framebuffer` (the backend's LDR one, or the app's).
+  bool postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error);
+  // Merged path, into the framebuffer the forward pass drew into; HDR invalidated unless `keepHdr`.
+  bool mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
@@ -67,7 +142,9 @@ class GlBackend final : public RenderBackend {
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
-  gl::LinkedProgram post_;
+  gl::LinkedProgram post_;         // the path's post program: framebuffer fetch when merged
+  gl::LinkedProgram sampledPost_;  // merged backends: the separate path's, for frames into the
+                                   // default framebuffer (which cannot lend an attachment)
   gl::PostInputs postInputs_;  // the grading LUT and the post uniforms, when the variant reads them
   gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
   gl::Buffer frameUniforms_;
@@ -116,28 +193,16 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   const PostShaders* chosen = findPostShaders(options.post, error);
   if (!chosen) return false;
   const PostShaders& shaders = *chosen;
-  std::string buildError;
   const bool merged = path_ == PostPath::Merged;
-  std::optional<gl::LinkedProgram> post = gl::buildProgram(
-      shaders.vertexGlslEs, merged ? shaders.fragmentFetchGlslEs : shaders.fragmentGlslEs, &buildError);
-  if (!post) {
-    if (error) *error = "GL backend: post-pass shaders: " + buildError;
-    return false;
-  }
-  post_ = std::move(*post);
-  if (!merged) {
-    const GLint hdrLocation = glGetUniformLocation(post_.program.id(), std::string(abi::kPostHdrName).c_str());
-    if (hdrLocation < 0) {
-      if (error) *error = "GL backend: post-pass fragment shader has no sampler uniform '" + std::string(abi::kPostHdrName) + "'";
-      return false;
-    }
-    // Sampler uniforms are program state, so the unit is set once here.
-    glUseProgram(post_.program.id());
-    glUniform1i(hdrLocation, static_cast<GLint>(abi::kPostHdrBinding));
-    glUseProgram(0);
-  }
-  if (!postInputs_.init(post_.program.id(), shaders.effects, error)) {
-    if (error) *error = "GL backend: " + *error;
+  std::string postError;
+  const bool built =
+      buildPostProgram(shaders.vertexGlslEs, merged ? shaders.fragmentFetchGlslEs : shaders.fragmentGlslEs, !merged,
+                       &post_, &postError) &&
+      postInputs_.init(post_.program.id(), shaders.effects, &postError) &&
+      (!merged || (buildPostProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, true, &sampledPost_, &postError) &&
+                   postInputs_.pointProgram(sampledPost_.program.id(), &postError)));
+  if (!built) {
+    if (error) *error = "GL backend: " + postError;
     return false;
   }
 
@@ -165,6 +230,22 @@ GlBackend::~GlBackend() {
   if (context_) context_->makeCurrent(nullptr);
 }
 
+bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
+  if (!context_->makeCurrent(error)) return false;
+  if (frame.width == 0 || frame.height == 0 || frame.width > static_cast<uint32_t>(maxTargetSize_) ||
+      frame.height > static_cast<uint32_t>(maxTargetSize_)) {
+    *error = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " is outside 1.." +
+             std::to_string(maxTargetSize_);
+    return false;
+  }
+  // A failed earlier frame may have left an error flag set; it must not be blamed on this one.
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  resetAppState();
+  return checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), error) &&
+         prepareTargets(frame.width, frame.height, error) && textures_.prepare(frame, error);
+}
+
 bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string* error) {
   std::string message;
   const auto renderFrame = [&] {
@@ -172,24 +253,13 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
       message = "no FrameResult to fill";
       return false;
     }
-    if (!context_->makeCurrent(&message)) return false;
-    if (frame.width == 0 || frame.height == 0 || frame.width > static_cast<uint32_t>(maxTargetSize_) ||
-        frame.height > static_cast<uint32_t>(maxTargetSize_)) {
-      message = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-                " is outside 1.." + std::to_string(maxTargetSize_);
-      return false;
-    }
-    // A failed earlier frame may have left an error flag set; it must not be blamed on this one.
-    while (glGetError() != GL_NO_ERROR) {
-    }
-    if (!checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), &message)) return false;
-    if (!prepareTargets(frame.width, frame.height, &message)) return false;
-    if (!textures_.prepare(frame, &message)) return false;
-    if (!forwardPass(frame, &message)) {
-      if (timed_) glEndQuery(GL_TIME_ELAPSED);
-      return false;
-    }
+    if (!beginFrame(frame, &message)) return false;
     const bool merged = path_ == PostPath::Merged;
+    if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
+    const bool forwardDone = forwardPass(
+        frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
+    if (timed_) glEndQuery(GL_TIME_ELAPSED);
+    if (!forwardDone) return false;
     result->hdr.clear();
     // Merged: HDR is read back before the post pass, because Mesa 22.3's llvmpipe writes the
     // framebuffer-fetch `inout` colour back as zero (measured on these machines, GLES 3.2 and
@@ -198,10 +268,10 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     const auto readHdr = [&] {
       gl::readRgbaFloat(targets_.hdrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->hdr);
     };
-    if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (readBackHdr_ && merged) readHdr();
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
-    const bool posted = merged ? mergedPostPass(frame, &message) : postPass(frame, &message);
+    const bool posted = merged ? mergedPostPass(frame, readBackHdr_, &message)
+                               : postPass(frame, targets_.ldrFramebuffer.id(), &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!posted) return false;
     if (readBackHdr_ && !merged) readHdr();
@@ -210,6 +280,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     } else {
       gl::readRgba8(targets_.ldrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
     }
+    leaveState(0, frame.width, frame.height);
     result->width = frame.width;
     result->height = frame.height;
     result->gpuTimes.clear();
@@ -223,15 +294,42 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     }
     return checkGlError("readback", &message);
   };
-  // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
-  bool ok = false;
-  try {
-    ok = renderFrame();
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  if (!ok && error) *error = "GL backend: " + message;
-  return ok;
+  return guarded(renderFrame, message, error);
+}
+
+// The post pass writes the app's framebuffer: on the separate path it draws into it; on the
+// merged path the app's image is lent to the backend's merged framebuffer as colour 1 for this
+// frame, except for the default framebuffer (nothing to attach), which takes the separate path.
+bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) {
+  std::string message;
+  const auto renderFrame = [&] {
+    if (target.width == 0 || target.height == 0) {
+      message = "the app's target has size " + std::to_string(target.width) + "x" + std::to_string(target.height);
+      return false;
+    }
+    if (!beginFrame(frame, &message)) return false;
+    gl::AppAttachment attachment;
+    if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
+      return false;
+    }
+    const bool merged = path_ == PostPath::Merged && attachment.type != GL_FRAMEBUFFER_DEFAULT;
+    if (merged) {
+      glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
+      if (!gl::attachAppImage(attachment, &message)) return false;
+    }
+    bool drawn = forwardPass(frame, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
+                             merged, &message);
+    if (drawn) {
+      drawn = merged ? mergedPostPass(frame, false, &message) : postPass(frame, target.framebuffer, &message);
+    }
+    if (merged) {
+      glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
+      gl::detachAppImage(attachment);
+    }
+    leaveState(target.framebuffer, frame.width, frame.height);
+    return drawn && checkGlError("drawing into the app's framebuffer", &message);
+  };
+  return guarded(renderFrame, message, error);
 }
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
@@ -239,13 +337,11 @@ bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* err
   return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, &targets_, error);
 }
 
-bool GlBackend::forwardPass(const FrameDesc& frame, std::string* error) {
-  const bool merged = path_ == PostPath::Merged;
-  glBindFramebuffer(GL_FRAMEBUFFER, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id());
+bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   // Merged: the forward pass writes colour 0 (HDR) only; LDR (colour 1) is the post pass's.
   const GLenum forwardBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
   glDrawBuffers(merged ? 2 : 1, forwardBuffers);
-  if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
   glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
   glDisable(GL_BLEND);
   glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
@@ -372,7 +468,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
 // Merged path: the post pass draws into the same framebuffer, reading each pixel's HDR value by
 // framebuffer fetch (colour 0, declared inout) and writing LDR to colour 1; then HDR (unless read
 // back) and depth are invalidated, so a tiler never writes them to memory.
-bool GlBackend::mergedPostPass(const FrameDesc& frame, std::string* error) {
+bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string* error) {
   const GLenum postBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, postBuffers);
   glDisable(GL_DEPTH_TEST);  // the triangle covers every pixel
@@ -388,21 +484,21 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, std::string* error) {
   glUseProgram(0);
   if (context_->canInvalidateFramebuffer()) {
     const GLenum dead[2] = {GL_DEPTH_ATTACHMENT, GL_COLOR_ATTACHMENT0};
-    glInvalidateFramebuffer(GL_FRAMEBUFFER, readBackHdr_ ? 1 : 2, dead);
+    glInvalidateFramebuffer(GL_FRAMEBUFFER, keepHdr ? 1 : 2, dead);
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return checkGlError("post pass (framebuffer fetch)", error);
 }
 
-bool GlBackend::postPass(const FrameDesc& frame, std::string* error) {
+bool GlBackend::postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error) {
   // Separate path: a second pass that samples the stored HDR target.
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
   glDisable(GL_DEPTH_TEST);  // the LDR target has no depth; the triangle covers every pixel
   glDisable(GL_BLEND);       // the last forward draw may have been blended
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
-  glUseProgram(post_.program.id());
+  // A merged backend runs this pass only for frames into the app's default framebuffer.
+  glUseProgram(path_ == PostPath::Merged ? sampledPost_.program.id() : post_.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
   if (!postInputs_.bind(frame, error)) return false;
@@ -412,14 +508,13 @@ bool GlBackend::postPass(const FrameDesc& frame, std::string* error) {
   glBindVertexArray(0);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return checkGlError("post pass", error);
 }
 
 }  // namespace
 
-std::unique_ptr<RenderBackend> createGlBackend(std::unique_ptr<GlContext> context, const GlOptions& options,
-                                               std::string* error) {
+std::unique_ptr<GlRenderer> createGlBackend(std::unique_ptr<GlContext> context, const GlOptions& options,
+                                            std::string* error) {
   // Nothing here throws by design; the catch keeps the never-throws contract if allocation fails.
   try {
     return GlBackend::create(std::move(context), options, error);

@@ -10,14 +10,7 @@ constexpr size_t kLutValues = size_t(kLutSize) * kLutSize * kLutSize * 4;
 
 bool PostInputs::init(GLuint program, const PostSettings& effects, std::string* error) {
   effects_ = effects;
-  glUseProgram(program);
   if (effects.colorGrading) {
-    const GLint location = glGetUniformLocation(program, abi::kPostColorLutName);
-    if (location < 0) {
-      *error = std::string("post-pass fragment shader has no sampler uniform '") + abi::kPostColorLutName + "'";
-      return false;
-    }
-    glUniform1i(location, GLint(abi::kPostColorLutBinding));  // program state: once
     lut_ = Texture::generate();
     glBindTexture(GL_TEXTURE_3D, lut_.id());
     // Trilinear, one level, clamped: the shader keeps to the lattice's texel centres.
@@ -31,17 +24,34 @@ bool PostInputs::init(GLuint program, const PostSettings& effects, std::string* 
     glBindTexture(GL_TEXTURE_3D, 0);
   }
   if (effects.vignette) {
-    const std::string name(abi::kPostBlock.name);
-    const GLuint index = glGetUniformBlockIndex(program, name.c_str());
-    if (index == GL_INVALID_INDEX) {
-      *error = "post-pass fragment shader has no uniform block '" + name + "'";
-      return false;
-    }
-    glUniformBlockBinding(program, index, abi::kPostUniformsBinding);
     uniforms_ = Buffer::generate();
     glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::PostUniforms), nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
+  }
+  return pointProgram(program, error);
+}
+
+bool PostInputs::pointProgram(GLuint program, std::string* error) {
+  glUseProgram(program);
+  if (effects_.colorGrading) {
+    const GLint location = glGetUniformLocation(program, abi::kPostColorLutName);
+    if (location < 0) {
+      *error = std::string("post-pass fragment shader has no sampler uniform '") + abi::kPostColorLutName + "'";
+      glUseProgram(0);
+      return false;
+    }
+    glUniform1i(location, GLint(abi::kPostColorLutBinding));  // program state: once
+  }
+  if (effects_.vignette) {
+    const std::string name(abi::kPostBlock.name);
+    const GLuint index = glGetUniformBlockIndex(program, name.c_str());
+    if (index == GL_INVALID_INDEX) {
+      *error = "post-pass fragment shader has no uniform block '" + name + "'";
+      glUseProgram(0);
+      return false;
+    }
+    glUniformBlockBinding(program, index, abi::kPostUniformsBinding);
   }
   glUseProgram(0);
   return checkGlError("post-pass effect inputs", error);

@@ -18,6 +18,9 @@ class PostInputs {
   // Points the linked post program's LUT sampler and block at their units/bindings and creates
   // the texture and buffer its effects need. Fails when the program lacks one of them.
   bool init(GLuint program, const PostSettings& effects, std::string* error);
+  // Points one more post program of the same effects (the merged backend's sampled fallback) at
+  // the same units and bindings.
+  bool pointProgram(GLuint program, std::string* error);
   // Uploads what changed and binds both for the post pass's draw. Changes the active texture unit.
   bool bind(const FrameDesc& frame, std::string* error);
 

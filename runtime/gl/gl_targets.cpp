@@ -21,23 +21,6 @@ Texture createColorTexture(GLenum internalFormat, GLenum format, GLenum type, GL
   return texture;
 }
 
-const char* framebufferStatusName(GLenum status) {
-  switch (status) {
-    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "incomplete attachment";
-    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "missing attachment";
-    case GL_FRAMEBUFFER_UNSUPPORTED: return "unsupported format combination";
-    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "incomplete multisample";
-    default: return "incomplete";
-  }
-}
-
-bool checkComplete(const char* which, std::string* error) {
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status == GL_FRAMEBUFFER_COMPLETE) return true;
-  if (error) *error = std::string(which) + " framebuffer is " + framebufferStatusName(status);
-  return false;
-}
-
 // GL's first row is the bottom of the image; the contract's first row is the top.
 template <typename T>
 void flipRows(std::vector<T>* pixels, size_t rowElements, uint32_t height) {
@@ -63,6 +46,24 @@ void readRgba(GLuint framebuffer, GLenum attachment, GLenum type, uint32_t width
 }
 
 }  // namespace
+
+const char* framebufferStatusName(GLenum status) {
+  switch (status) {
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "incomplete attachment";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "missing attachment";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "unsupported format combination";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "incomplete multisample";
+    case GL_FRAMEBUFFER_UNDEFINED: return "undefined (a default framebuffer without a surface)";
+    default: return "incomplete";
+  }
+}
+
+bool checkComplete(const char* which, std::string* error) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return true;
+  if (error) *error = std::string(which) + " framebuffer is " + framebufferStatusName(status);
+  return false;
+}
 
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, RenderTargets* targets,
                          std::string* error) {
@@ -97,6 +98,10 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, created.ldrColor.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
     ldrComplete = checkComplete("merged (RGBA16F + RGBA8 + DEPTH32F)", error);
+    created.appMergedFramebuffer = Framebuffer::generate();
+    glBindFramebuffer(GL_FRAMEBUFFER, created.appMergedFramebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 

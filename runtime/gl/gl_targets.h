@@ -23,7 +23,16 @@ struct RenderTargets {
   // Merged path only: HDR at colour 0, LDR at colour 1, depth, in one framebuffer (the
   // framebuffer-fetch post pass reads colour 0 of the pixel it writes colour 1 of).
   Framebuffer mergedFramebuffer;
+  // Merged path, frames into the app's framebuffer (GlRenderer::renderToFramebuffer): HDR at
+  // colour 0 and depth like mergedFramebuffer, colour 1 the app's image, attached per frame.
+  Framebuffer appMergedFramebuffer;
 };
+
+// "missing attachment", "undefined (...)": a glCheckFramebufferStatus result for messages.
+const char* framebufferStatusName(GLenum status);
+// True when the framebuffer bound to GL_FRAMEBUFFER is complete; else *error is
+// "<which> framebuffer is <status>".
+bool checkComplete(const char* which, std::string* error);
 
 // Creates the framebuffers at width × height (the merged one when `merged`) with an HDR colour
 // target of `hdrFormat` and checks their completeness.
