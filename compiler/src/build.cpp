@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -191,13 +192,26 @@ class VariantJobs {
     JobPool pool;
     // Assembly first, in key order: it is cheap and makes every other job.
     for (size_t i = 0; i < keys_.size(); ++i)
-      pool.add(CostModel::kFirst, [this, i](JobPool& p) { assembleStep(i, p); });
+      add(pool, CostModel::kFirst, [this, i](JobPool& p) { assembleStep(i, p); });
     pool.run(threads);
   }
 
   std::vector<VariantBuild>& variants() { return variants_; }
 
  private:
+  // pool.add, timing the job when BuildOptions::jobSpans asks for it.
+  void add(JobPool& pool, double cost, JobPool::Job job) {
+    if (!ctx_.options.jobSpans) return pool.add(cost, std::move(job));
+    pool.add(cost, [this, job = std::move(job)](JobPool& p) {
+      using Clock = std::chrono::steady_clock;
+      const double start = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+      job(p);
+      const double end = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+      std::lock_guard<std::mutex> lock(spansMutex_);
+      ctx_.options.jobSpans->push_back({start, end, JobPool::currentThread()});
+    });
+  }
+
   bool emulated(const VariantBuild& v) const {
     return ctx_.options.fp16Emulation && v.tier.precision == permutations::PrecisionPolicy::Mediump;
   }
@@ -242,8 +256,8 @@ class VariantJobs {
       return finish(i);
     }
     v.pending = 2;
-    pool.add(CostModel::glslEs(v), [this, i](JobPool&) { glslEsStep(i); });
-    pool.add(CostModel::kFirst, [this, i](JobPool& p) { spirvStep(i, p); });
+    add(pool, CostModel::glslEs(v), [this, i](JobPool&) { glslEsStep(i); });
+    add(pool, CostModel::kFirst, [this, i](JobPool& p) { spirvStep(i, p); });
   }
 
   void glslEsStep(size_t i) {
@@ -285,8 +299,8 @@ class VariantJobs {
     }
     v.pending += 2;  // before this job counts itself done
     const bool emulate = emulated(v);
-    pool.add(CostModel::stage(v.spirv.vertex.size(), emulate), [this, i](JobPool&) { stageStep(i, kVertexStage); });
-    pool.add(CostModel::stage(v.spirv.fragment.size(), emulate), [this, i](JobPool&) { stageStep(i, kFragmentStage); });
+    add(pool, CostModel::stage(v.spirv.vertex.size(), emulate), [this, i](JobPool&) { stageStep(i, kVertexStage); });
+    add(pool, CostModel::stage(v.spirv.fragment.size(), emulate), [this, i](JobPool&) { stageStep(i, kFragmentStage); });
     stepDone(i);
   }
 
@@ -380,6 +394,7 @@ class VariantJobs {
   std::atomic<size_t> firstFailed_{std::numeric_limits<size_t>::max()};
   std::mutex progressMutex_;
   size_t finished_ = 0;
+  std::mutex spansMutex_;
 };
 
 }  // namespace

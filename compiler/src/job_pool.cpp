@@ -4,6 +4,11 @@
 #include <thread>
 
 namespace facet::compiler {
+namespace {
+thread_local unsigned tCurrentThread = 0;
+}  // namespace
+
+unsigned JobPool::currentThread() { return tCurrentThread; }
 
 unsigned defaultJobCount() { return std::max(1u, std::thread::hardware_concurrency()); }
 
@@ -15,7 +20,8 @@ void JobPool::add(double cost, Job job) {
   changed_.notify_one();
 }
 
-void JobPool::work() {
+void JobPool::work(unsigned thread) {
+  tCurrentThread = thread;
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     // Idle threads wait while a running job may still add work; none waiting and none running
@@ -31,13 +37,14 @@ void JobPool::work() {
     --running_;
     if (running_ == 0 && waiting_.empty()) changed_.notify_all();
   }
+  tCurrentThread = 0;
 }
 
 void JobPool::run(unsigned threads) {
   if (threads == 0) threads = defaultJobCount();
   std::vector<std::thread> helpers;
-  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back([this] { work(); });
-  work();
+  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back([this, t] { work(t); });
+  work(0);
   for (std::thread& t : helpers) t.join();
 }
 

@@ -27,6 +27,9 @@ class JobPool {
   // is one of them; 0 means one per hardware thread), and returns when none is left.
   void run(unsigned threads);
 
+  // Which of run()'s threads calls this, 0 .. threads-1 (0 is run()'s caller); 0 outside a pool.
+  static unsigned currentThread();
+
  private:
   struct Waiting {
     double cost;
@@ -36,7 +39,7 @@ class JobPool {
       return cost != other.cost ? cost < other.cost : order > other.order;  // top(): highest cost, then first added
     }
   };
-  void work();
+  void work(unsigned thread);
 
   std::mutex mutex_;
   std::condition_variable changed_;

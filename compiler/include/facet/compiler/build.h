@@ -40,6 +40,14 @@ struct BuildResult {
 // (24.5 KB each, docs/build-integration.md).
 inline constexpr uint64_t kDefaultCacheMaxBytes = uint64_t(512) << 20;
 
+// One compile job's wall-clock span and the pool thread (0 .. jobs-1) that ran it: what
+// bench_compile's "busy" figure (how much of the pool's time its threads had work) is made of.
+struct JobSpan {
+  double start = 0;  // seconds on std::chrono::steady_clock
+  double end = 0;
+  unsigned thread = 0;
+};
+
 struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
   std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
@@ -64,6 +72,8 @@ struct BuildOptions {
   // Called after each variant finishes (done of total), one call at a time, from any thread;
   // matc draws its terminal progress line with it.
   std::function<void(size_t done, size_t total)> progress;
+  // Benchmarks: when set, the span of every job of the pool is appended here.
+  std::vector<JobSpan>* jobSpans = nullptr;
   // Evaluation only (`matc eval`, docs/eval.md): called with each tier's configuration after the
   // preset and the material's overrides are applied, to change any choice of it (a single-option
   // swap). Unset: the preset with the material's overrides, as shipped.
