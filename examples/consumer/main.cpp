@@ -93,12 +93,8 @@ int render(LoadedMaterial loaded, const std::string& out) {
   sky.skyLuminance = 6000;
   auto lighting = buildEnvironmentLighting(sky, exposure, &error);
   if (!lighting) return fail(error);
-  for (size_t k = 0; k < facet::abi::kShCoefficients; ++k)
-    for (size_t c = 0; c < 3; ++c) frame.frame.sh[k][c] = lighting->sh[k][c];
-  for (int c = 0; c < 3; ++c) frame.clearColor[c] = lighting->meanRadiance[size_t(c)];
   const Texture environment = environmentTexture(*lighting);
-  frame.frameTextures.push_back({facet::abi::kEnvironmentBinding, facet::abi::kEnvironmentName, &environment});
-  frame.frameTextures.push_back({facet::abi::kDfgLutBinding, facet::abi::kDfgLutName, &dfgTexture()});
+  setEnvironment(frame, *lighting, environment);
   const Mesh sphere = makeSphere();
   std::array<float, 16> model{};
   const glm::mat4 identity(1);
