@@ -187,8 +187,8 @@ class VariantJobs {
       : ctx_(ctx), keys_(keys), variants_(keys.size()) {}
 
   void run(unsigned threads) {
-    // At most four jobs of one variant can wait at once: more threads than that would idle.
-    threads = std::min<size_t>(threads == 0 ? defaultJobCount() : threads, std::max<size_t>(1, 4 * keys_.size()));
+    // A variant has at most three jobs at once (its GLSL ES and two stages): more threads idle.
+    threads = std::min<size_t>(threads == 0 ? defaultJobCount() : threads, std::max<size_t>(1, 3 * keys_.size()));
     JobPool pool;
     // Assembly first, in key order: it is cheap and makes every other job.
     for (size_t i = 0; i < keys_.size(); ++i)
