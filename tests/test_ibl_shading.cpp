@@ -278,6 +278,29 @@ TEST(IblShading, ConstantSkyIsAnExactEnvironment) {
   EXPECT_EQ(facet::runtime::floatToHalf(std::ldexp(1.0f, -24)), 0x0001);  // the smallest subnormal
 }
 
+// What an app's frame gets from setEnvironment: the SH in the frame block, the background at the
+// mean radiance, the environment and DFG textures at their ABI bindings.
+TEST(IblShading, SetEnvironmentLightsAnAppsFrame) {
+  facet::runtime::Scene sky;
+  sky.skyLuminance = 2000;
+  std::string error;
+  auto lighting = facet::runtime::buildEnvironmentLighting(sky, 0.001, &error);
+  ASSERT_TRUE(lighting) << error;
+  const facet::runtime::Texture environment = facet::runtime::environmentTexture(*lighting);
+  facet::runtime::FrameDesc frame;
+  facet::runtime::setEnvironment(frame, *lighting, environment);
+  for (size_t c = 0; c < 3; ++c) {
+    EXPECT_NEAR(frame.frame.sh[0][c], 2.0f, 1e-4f);  // 2000 cd/m² × exposure 0.001, band 0 only
+    EXPECT_EQ(frame.frame.sh[1][c], 0.0f);
+    EXPECT_NEAR(frame.clearColor[c], 2.0f, 1e-4f);
+  }
+  ASSERT_EQ(frame.frameTextures.size(), 2u);
+  EXPECT_EQ(frame.frameTextures[0].binding, facet::abi::kEnvironmentBinding);
+  EXPECT_EQ(frame.frameTextures[0].texture, &environment);
+  EXPECT_EQ(frame.frameTextures[1].binding, facet::abi::kDfgLutBinding);
+  EXPECT_EQ(frame.frameTextures[1].texture, &facet::runtime::dfgTexture());
+}
+
 // An equirect .hdr image (Radiance RGBE, read with stbi_loadf) becomes the environment: a sky
 // brighter above the horizon than below, 256 × 128, halved to the runtime's 128 × 64 and
 // prefiltered into its 128² octahedral map. Its SH band 0

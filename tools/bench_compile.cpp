@@ -8,11 +8,13 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "facet/compiler/build.h"
 #include "facet/ir/check.h"
@@ -70,14 +72,31 @@ std::string scratch(const std::string& name) {
   return dir.string();
 }
 
-// Every variant of red_plastic (4 tiers x 2 light sets), no cache, on `jobs` threads.
+// Every variant of red_plastic (4 tiers x 2 light sets), no cache, on `jobs` threads. "busy" is
+// the share of the pool's time (first job's start to last job's end, times the threads) its
+// threads spent in jobs: 1 minus what load imbalance costs. Unlike the wall time it holds on a
+// loaded machine, where the threads' slices shrink alike (docs/build-integration.md).
 void BM_CompileNoCache(benchmark::State& state) {
   const facet::ir::Material material = load(materialText());
   BuildOptions options;
   options.jobs = unsigned(state.range(0));
+  std::vector<facet::compiler::JobSpan> spans;
+  options.jobSpans = &spans;
   size_t variants = 0;
-  for (auto _ : state) variants += build(material, options, state);
+  double inJobs = 0, available = 0;
+  for (auto _ : state) {
+    spans.clear();
+    variants += build(material, options, state);
+    double first = spans.empty() ? 0 : spans.front().start, last = first;
+    for (const facet::compiler::JobSpan& s : spans) {
+      inJobs += s.end - s.start;
+      first = std::min(first, s.start);
+      last = std::max(last, s.end);
+    }
+    available += (last - first) * options.jobs;
+  }
   reportRates(state, variants);
+  state.counters["busy"] = available > 0 ? inJobs / available : 0;
 }
 BENCHMARK(BM_CompileNoCache)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 

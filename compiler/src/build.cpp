@@ -1,7 +1,11 @@
 #include "facet/compiler/build.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
 #include <cstring>
+#include <limits>
 #include <mutex>
 
 #include "facet/compiler/assemble.h"
@@ -16,7 +20,7 @@
 #include "facet/ir/passes.h"
 #include "facet/compiler/minify_glsl.h"
 #include "facet/compiler/lower_relaxed_to_quantized.h"
-#include "parallel_for.h"
+#include "job_pool.h"
 #include "variant_cache.h"
 
 namespace facet::compiler {
@@ -89,16 +93,6 @@ bool finishSpirv(std::vector<uint32_t>* words, const char* stage, std::string* e
   return true;
 }
 
-// BuildOptions::fp16Emulation: glslang's unoptimized stages with every relaxed float result
-// rounded to binary16, then validated and optimized as usual.
-bool emulateFp16(SpirvStages* stages, std::string* error) {
-  for (auto [words, stage] : {std::pair{&stages->vertex, "fp16-emulated vertex"}, {&stages->fragment, "fp16-emulated fragment"}}) {
-    QuantizeCounts counts;
-    if (!lowerRelaxedToQuantized(words, &counts, error) || !finishSpirv(words, stage, error)) return false;
-  }
-  return true;
-}
-
 // A glslang failure on generated code: blamed on the material line that produced it when the
 // error lies in the surface program, else reported as the compiler's own defect.
 void reportGlslangFailure(const std::string& log, const StageSources& sources, const ir::SurfaceGlsl& surface,
@@ -122,15 +116,35 @@ struct MaterialContext {
   const std::vector<package::MslBinding>& mslBindings;  // Metal slots, the same for every variant
 };
 
-// One variant's share of the result, written by exactly one job.
+// The steps of one variant, each a job of its own so two threads stay busy to the end (one
+// variant's fragment stage alone is about half of its work). The cache saves every step after
+// kAssemble. A variant's failure is its first failed step in this order, whatever ran first.
+enum Step : size_t { kAssemble, kGlslEs, kSpirv, kVertexStage, kFragmentStage, kStepCount };
+
+// One variant's share of the result, written only by its own jobs: each step writes its own
+// fields and slots, and the job that brings `pending` to zero assembles the package entry.
 struct VariantBuild {
-  package::Variant variant;
-  std::vector<GeneratedFile> sources;
+  // kAssemble
+  std::string keyText;
+  permutations::TierConfig tier;
+  StageSources es, vk;
+  std::string cacheKey;
   bool samplesSpecularLut = false;
   std::vector<package::PreshaderOp> preshader;  // empty: the variant preshades nothing
   bool cacheHit = false;
+  // kSpirv: glslang's stages before SPIRV-Tools, each moved out by its stage's job
+  SpirvStages spirv;
+  // GLSL ES by kGlslEs (0, 1); SPIR-V and MSL by kVertexStage (2, 4) and kFragmentStage (3, 5)
+  CompiledShaders shaders;
+  std::array<BuildError, kStepCount> failures;
+  std::array<bool, kStepCount> failed{};
+  std::atomic<bool> skipped{false};  // a variant earlier in key order failed first: never reported
+  std::atomic<int> pending{0};       // compile jobs added and not yet finished
+  // The package entry, once every step succeeded
+  bool built = false;
+  package::Variant variant;
+  std::vector<GeneratedFile> sources;
   std::set<std::string> libraryFiles;
-  BuildError failure;
 };
 
 // The GLSL ES 3.00 the package ships: preprocessed for this variant, then minified
@@ -150,105 +164,243 @@ std::vector<uint32_t> wordsOf(const std::vector<uint8_t>& bytes) {
   return words;
 }
 
-// The glslang, SPIRV-Tools and SPIRV-Cross work of one variant: what the cache saves.
-bool compileVariant(const MaterialContext& ctx, const permutations::TierConfig& tier, const StageSources& es,
-                    const StageSources& vk, const std::string& keyText, CompiledShaders* out, BuildError* failure) {
-  std::string* error = &failure->message;
-  std::string log;
-  StageSources shipped;
-  if (!shippedGlslEs(es, &shipped, &log)) {
-    // Only on failure is the readable text checked (one glslang parse saved per variant): its
-    // line numbers map an error back to the material; if it compiles, the minifier is at fault.
-    std::string readableLog;
-    if (!checkGlslEs300(es, &readableLog)) {
-      reportGlslangFailure(readableLog, es, ctx.surface, "GLSL ES 3.00 for variant " + keyText, failure);
+// Job costs, for ordering only: JobPool starts the costliest waiting job first, and what a job
+// computes does not depend on when it runs. Assembly and glslang come first (cost kFirst, then in
+// key order): they are short and make the jobs that follow. A stage's SPIRV-Tools and SPIRV-Cross
+// work grows with the SPIR-V glslang made for it, and a fragment stage is half to three quarters
+// of a variant; the shipped GLSL ES costs about as much as the smallest vertex stage. So the
+// stages run largest first and the GLSL ES jobs fill the end. Milliseconds of one core per word
+// or byte, fitted to red_plastic's 32 variants of `--point-lights 0,1,2,4` with `-j 1`
+// (docs/build-integration.md, "Scheduling"); only their ratio matters.
+struct CostModel {
+  static constexpr double kFirst = std::numeric_limits<double>::infinity();
+  static constexpr double kStagePerWord = 0.0045;      // glslang's SPIR-V words of the stage
+  static constexpr double kGlslEsPerByte = 0.000057;   // assembled GLSL ES bytes, both stages
+
+  static double glslEs(const VariantBuild& v) { return kGlslEsPerByte * double(v.es.vertex.size() + v.es.fragment.size()); }
+  // fp16 emulation optimizes and validates a second copy of the stage.
+  static double stage(size_t words, bool emulated) { return kStagePerWord * double(words) * (emulated ? 2 : 1); }
+};
+
+// A material's variants as jobs on one pool. Each job starts with the variant's assembly and
+// adds the next steps as their inputs come to exist.
+class VariantJobs {
+ public:
+  VariantJobs(const MaterialContext& ctx, const std::vector<permutations::VariantKey>& keys)
+      : ctx_(ctx), keys_(keys), variants_(keys.size()) {}
+
+  void run(unsigned threads) {
+    // A variant has at most three jobs at once (its GLSL ES and two stages): more threads idle.
+    threads = std::min<size_t>(threads == 0 ? defaultJobCount() : threads, std::max<size_t>(1, 3 * keys_.size()));
+    JobPool pool;
+    // Assembly first, in key order: it is cheap and makes every other job.
+    for (size_t i = 0; i < keys_.size(); ++i)
+      add(pool, CostModel::kFirst, [this, i](JobPool& p) { assembleStep(i, p); });
+    pool.run(threads);
+  }
+
+  std::vector<VariantBuild>& variants() { return variants_; }
+
+ private:
+  // pool.add, timing the job when BuildOptions::jobSpans asks for it.
+  void add(JobPool& pool, double cost, JobPool::Job job) {
+    if (!ctx_.options.jobSpans) return pool.add(cost, std::move(job));
+    pool.add(cost, [this, job = std::move(job)](JobPool& p) {
+      using Clock = std::chrono::steady_clock;
+      const double start = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+      job(p);
+      const double end = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+      std::lock_guard<std::mutex> lock(spansMutex_);
+      ctx_.options.jobSpans->push_back({start, end, JobPool::currentThread()});
+    });
+  }
+
+  bool emulated(const VariantBuild& v) const {
+    return ctx_.options.fp16Emulation && v.tier.precision == permutations::PrecisionPolicy::Mediump;
+  }
+
+  // Once a variant has failed, the ones after it in key order are not worth compiling (only the
+  // first failure is reported); every one before it still runs to the end, so which failure is
+  // first does not depend on the thread count or on timing.
+  bool skip(size_t i) const { return i > firstFailed_.load(); }
+
+  void fail(size_t i, Step step) {
+    variants_[i].failed[step] = true;
+    size_t first = firstFailed_.load();
+    while (i < first && !firstFailed_.compare_exchange_weak(first, i)) {
+    }
+  }
+
+  void stepDone(size_t i) {
+    if (variants_[i].pending.fetch_sub(1) == 1) finish(i);
+  }
+
+  void assembleStep(size_t i, JobPool& pool) {
+    VariantBuild& v = variants_[i];
+    if (skip(i)) {
+      v.skipped = true;
+      return finish(i);
+    }
+    const permutations::VariantKey& key = keys_[i];
+    v.keyText = key.toString();
+    v.tier = tierConfig(ctx_.material, key.tier, ctx_.options);
+    AssemblyInput input{ctx_.material, ctx_.surface, ctx_.layout, key, v.tier, compilerVersion()};
+    v.preshader = preshaderProgram(ctx_.material, ctx_.layout, ctx_.preshade, v.tier);
+    if (!v.preshader.empty()) input.preshade = &ctx_.preshade;
+    std::string* error = &v.failures[kAssemble].message;
+    if (!assemble(input, Flavour::GlslEs300, &v.es, error) || !assemble(input, Flavour::Vulkan, &v.vk, error)) {
+      fail(i, kAssemble);
+      return finish(i);
+    }
+    v.samplesSpecularLut = samplesSpecularLut(input);
+    // The same text compiles to the same code, so a cached variant skips every backend.
+    v.cacheKey = variantCacheKey(compilerVersion(), v.es, v.vk, ctx_.options.fp16Emulation);
+    if (std::optional<CompiledShaders> cached = ctx_.cache.load(v.cacheKey)) {
+      v.shaders = std::move(*cached);
+      v.cacheHit = true;
+      return finish(i);
+    }
+    v.pending = 2;
+    add(pool, CostModel::glslEs(v), [this, i](JobPool&) { glslEsStep(i); });
+    add(pool, CostModel::kFirst, [this, i](JobPool& p) { spirvStep(i, p); });
+  }
+
+  void glslEsStep(size_t i) {
+    VariantBuild& v = variants_[i];
+    if (skip(i)) {
+      v.skipped = true;
+      return stepDone(i);
+    }
+    BuildError* failure = &v.failures[kGlslEs];
+    std::string log;
+    StageSources shipped;
+    if (shippedGlslEs(v.es, &shipped, &log)) {
+      v.shaders[0] = bytesOf(shipped.vertex);
+      v.shaders[1] = bytesOf(shipped.fragment);
+    } else {
+      fail(i, kGlslEs);
+      // Only on failure is the readable text checked (one glslang parse saved per variant): its
+      // line numbers map an error back to the material; if it compiles, the minifier is at fault.
+      std::string readableLog;
+      if (!checkGlslEs300(v.es, &readableLog))
+        reportGlslangFailure(readableLog, v.es, ctx_.surface, "GLSL ES 3.00 for variant " + v.keyText, failure);
+      else
+        failure->message = "internal error: the minified GLSL ES 3.00 of variant " + v.keyText + " does not compile:\n" + log;
+    }
+    stepDone(i);
+  }
+
+  void spirvStep(size_t i, JobPool& pool) {
+    VariantBuild& v = variants_[i];
+    if (skip(i)) {
+      v.skipped = true;
+      return stepDone(i);
+    }
+    std::string log;
+    if (!compileToSpirv(v.vk, &v.spirv, &log)) {
+      reportGlslangFailure(log, v.vk, ctx_.surface, "SPIR-V for variant " + v.keyText, &v.failures[kSpirv]);
+      fail(i, kSpirv);
+      return stepDone(i);
+    }
+    v.pending += 2;  // before this job counts itself done
+    const bool emulate = emulated(v);
+    add(pool, CostModel::stage(v.spirv.vertex.size(), emulate), [this, i](JobPool&) { stageStep(i, kVertexStage); });
+    add(pool, CostModel::stage(v.spirv.fragment.size(), emulate), [this, i](JobPool&) { stageStep(i, kFragmentStage); });
+    stepDone(i);
+  }
+
+  // One stage from glslang's SPIR-V to what ships: the fp16-emulated copy when asked for (it must
+  // see the stage before spirv-opt), validated and optimized SPIR-V, and MSL from it.
+  void stageStep(size_t i, Step step) {
+    VariantBuild& v = variants_[i];
+    if (skip(i)) {
+      v.skipped = true;
+      return stepDone(i);
+    }
+    const size_t slot = step == kVertexStage ? 0 : 1;  // shaders[2 + slot], shaders[4 + slot]
+    std::vector<uint32_t> words = std::move(slot == 0 ? v.spirv.vertex : v.spirv.fragment);
+    if (!compileStage(v, slot, &words, &v.failures[step].message)) fail(i, step);
+    stepDone(i);
+  }
+
+  bool compileStage(VariantBuild& v, size_t slot, std::vector<uint32_t>* words, std::string* error) {
+    const char* stage = slot == 0 ? "vertex" : "fragment";
+    std::optional<std::vector<uint32_t>> emulatedWords;
+    if (emulated(v)) {
+      emulatedWords = *words;
+      QuantizeCounts counts;
+      if (!lowerRelaxedToQuantized(&*emulatedWords, &counts, error) ||
+          !finishSpirv(&*emulatedWords, (std::string("fp16-emulated ") + stage).c_str(), error))
+        return false;
+    }
+    if (!finishSpirv(words, stage, error)) return false;
+    // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
+    std::vector<uint32_t> metal = *words;
+    std::string log, msl;
+    if (!convertRelaxedToHalf(&metal, &log)) {
+      *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + v.keyText + ":\n" + log;
       return false;
     }
-    *error = "internal error: the minified GLSL ES 3.00 of variant " + keyText + " does not compile:\n" + log;
-    return false;
-  }
-  log.clear();
-  SpirvStages spirv;
-  if (!compileToSpirv(vk, &spirv, &log)) {
-    reportGlslangFailure(log, vk, ctx.surface, "SPIR-V for variant " + keyText, failure);
-    return false;
-  }
-  // fp16 emulation replaces only the Vulkan target; it must see the stages before spirv-opt.
-  std::optional<SpirvStages> emulated;
-  if (ctx.options.fp16Emulation && tier.precision == permutations::PrecisionPolicy::Mediump) {
-    emulated = spirv;
-    if (!emulateFp16(&*emulated, error)) return false;
-  }
-  if (!finishSpirv(&spirv.vertex, "vertex", error) || !finishSpirv(&spirv.fragment, "fragment", error)) return false;
-  const SpirvStages& vulkan = emulated ? *emulated : spirv;
-  // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
-  std::vector<uint32_t> metalVertex = spirv.vertex, metalFragment = spirv.fragment;
-  if (!convertRelaxedToHalf(&metalVertex, &log) || !convertRelaxedToHalf(&metalFragment, &log)) {
-    *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + keyText + ":\n" + log;
-    return false;
-  }
-  std::string mslVertex, mslFragment;
-  if (!spirvToMsl(metalVertex, ctx.mslBindings, &mslVertex, error) ||
-      !spirvToMsl(metalFragment, ctx.mslBindings, &mslFragment, error))
-    return false;
-  *out = {bytesOf(shipped.vertex), bytesOf(shipped.fragment), bytesOf(vulkan.vertex),
-          bytesOf(vulkan.fragment), bytesOf(mslVertex),       bytesOf(mslFragment)};
-  return true;
-}
-
-// Everything one variant needs, from assembly to its package entry. Runs on any thread.
-bool buildVariant(const MaterialContext& ctx, const permutations::VariantKey& key, VariantBuild* out) {
-  const ir::Material& material = ctx.material;
-  std::string* error = &out->failure.message;
-  const std::string keyText = key.toString();
-  const permutations::TierConfig tier = tierConfig(material, key.tier, ctx.options);
-  AssemblyInput input{material, ctx.surface, ctx.layout, key, tier, compilerVersion()};
-  out->preshader = preshaderProgram(material, ctx.layout, ctx.preshade, tier);
-  if (!out->preshader.empty()) input.preshade = &ctx.preshade;
-  StageSources es, vk;
-  if (!assemble(input, Flavour::GlslEs300, &es, error) || !assemble(input, Flavour::Vulkan, &vk, error)) return false;
-
-  // The same text compiles to the same code, so a cached variant skips every backend.
-  const std::string cacheKey = variantCacheKey(compilerVersion(), es, vk, ctx.options.fp16Emulation);
-  CompiledShaders shaders;
-  if (std::optional<CompiledShaders> cached = ctx.cache.load(cacheKey)) {
-    shaders = std::move(*cached);
-    out->cacheHit = true;
-  } else {
-    if (!compileVariant(ctx, tier, es, vk, keyText, &shaders, &out->failure)) return false;
-    ctx.cache.store(cacheKey, shaders);
+    if (!spirvToMsl(metal, ctx_.mslBindings, &msl, error)) return false;
+    v.shaders[2 + slot] = bytesOf(emulatedWords ? *emulatedWords : *words);
+    v.shaders[4 + slot] = bytesOf(msl);
+    return true;
   }
 
-  if (ctx.options.emitSources) {
-    // Debug sources: the readable assembled text of both flavours beside what ships.
-    const std::string stem = material.name + "." + keyText;
-    auto text = [&](size_t i) { return std::string(shaders[i].begin(), shaders[i].end()); };
-    out->sources = {
-        {stem + ".vert.es300.glsl", text(0)},
-        {stem + ".frag.es300.glsl", text(1)},
-        {stem + ".vert.es300.readable.glsl", es.vertex},
-        {stem + ".frag.es300.readable.glsl", es.fragment},
-        {stem + ".vert.vulkan.glsl", vk.vertex},
-        {stem + ".frag.vulkan.glsl", vk.fragment},
-        {stem + ".vert.spvasm", disassembleSpirv(wordsOf(shaders[2]))},
-        {stem + ".frag.spvasm", disassembleSpirv(wordsOf(shaders[3]))},
-        {stem + ".vert.metal", text(4)},
-        {stem + ".frag.metal", text(5)},
+  // The variant's package entry, its debug sources and its cache entry, once every step is done.
+  void finish(size_t i) {
+    VariantBuild& v = variants_[i];
+    const bool failed = std::find(v.failed.begin(), v.failed.end(), true) != v.failed.end();
+    if (!failed && !v.skipped) {
+      if (!v.cacheHit) ctx_.cache.store(v.cacheKey, v.shaders);
+      entry(v);
+      v.built = true;
+    }
+    if (ctx_.options.progress) {
+      std::lock_guard<std::mutex> lock(progressMutex_);
+      ctx_.options.progress(++finished_, keys_.size());
+    }
+  }
+
+  void entry(VariantBuild& v) {
+    CompiledShaders& shaders = v.shaders;
+    if (ctx_.options.emitSources) {
+      // Debug sources: the readable assembled text of both flavours beside what ships.
+      const std::string stem = ctx_.material.name + "." + v.keyText;
+      auto text = [&](size_t i) { return std::string(shaders[i].begin(), shaders[i].end()); };
+      v.sources = {
+          {stem + ".vert.es300.glsl", text(0)},
+          {stem + ".frag.es300.glsl", text(1)},
+          {stem + ".vert.es300.readable.glsl", v.es.vertex},
+          {stem + ".frag.es300.readable.glsl", v.es.fragment},
+          {stem + ".vert.vulkan.glsl", v.vk.vertex},
+          {stem + ".frag.vulkan.glsl", v.vk.fragment},
+          {stem + ".vert.spvasm", disassembleSpirv(wordsOf(shaders[2]))},
+          {stem + ".frag.spvasm", disassembleSpirv(wordsOf(shaders[3]))},
+          {stem + ".vert.metal", text(4)},
+          {stem + ".frag.metal", text(5)},
+      };
+    }
+    using package::Stage;
+    using package::Target;
+    v.variant.key = v.keyText;
+    v.variant.shaders = {
+        {Stage::Vertex, Target::GlslEs300, std::move(shaders[0])}, {Stage::Fragment, Target::GlslEs300, std::move(shaders[1])},
+        {Stage::Vertex, Target::Spirv, std::move(shaders[2])},     {Stage::Fragment, Target::Spirv, std::move(shaders[3])},
+        {Stage::Vertex, Target::Msl, std::move(shaders[4])},       {Stage::Fragment, Target::Msl, std::move(shaders[5])},
     };
+    v.libraryFiles = v.es.libraryFiles;
+    v.libraryFiles.insert(v.vk.libraryFiles.begin(), v.vk.libraryFiles.end());
   }
-  using package::Stage;
-  using package::Target;
-  out->variant.key = keyText;
-  out->variant.shaders = {
-      {Stage::Vertex, Target::GlslEs300, std::move(shaders[0])}, {Stage::Fragment, Target::GlslEs300, std::move(shaders[1])},
-      {Stage::Vertex, Target::Spirv, std::move(shaders[2])},     {Stage::Fragment, Target::Spirv, std::move(shaders[3])},
-      {Stage::Vertex, Target::Msl, std::move(shaders[4])},       {Stage::Fragment, Target::Msl, std::move(shaders[5])},
-  };
-  out->samplesSpecularLut = samplesSpecularLut(input);
-  out->libraryFiles = es.libraryFiles;
-  out->libraryFiles.insert(vk.libraryFiles.begin(), vk.libraryFiles.end());
-  return true;
-}
+
+  const MaterialContext& ctx_;
+  const std::vector<permutations::VariantKey>& keys_;
+  std::vector<VariantBuild> variants_;
+  std::atomic<size_t> firstFailed_{std::numeric_limits<size_t>::max()};
+  std::mutex progressMutex_;
+  size_t finished_ = 0;
+  std::mutex spansMutex_;
+};
 
 }  // namespace
 
@@ -281,47 +433,39 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
   const std::vector<permutations::VariantKey> keys = permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
 
-  // Jobs finish in any order; each writes only its own slot, and the slots are read in key order.
+  // Jobs finish in any order; each writes only its own variant's fields, read here in key order.
   VariantCache cache(options.cacheDir);
   result.package.mslBindings = materialMslBindings(result.package.material);
   MaterialContext ctx{material, surface, layout, preshade, options, cache, result.package.mslBindings};
-  std::vector<VariantBuild> builds(keys.size());
-  std::vector<char> done(keys.size(), 0);
-  std::mutex progressMutex;
-  size_t finished = 0;
-  parallelFor(keys.size(), options.jobs, [&](size_t i) {
-    done[i] = buildVariant(ctx, keys[i], &builds[i]);
-    if (options.progress) {
-      std::lock_guard<std::mutex> lock(progressMutex);
-      options.progress(++finished, keys.size());
-    }
-    return done[i] != 0;
-  });
+  VariantJobs jobs(ctx, keys);
+  jobs.run(options.jobs);
 
   std::vector<uint32_t> lutVariants;  // indices of the variants that sample the specular table
-  for (size_t i = 0; i < keys.size(); ++i) {
-    if (!done[i]) {  // the first failure in key order, whatever the job count
-      *failure = std::move(builds[i].failure);
+  for (VariantBuild& v : jobs.variants()) {
+    if (!v.built) {  // the first failure in key order, whatever the job count
+      const size_t step = size_t(std::find(v.failed.begin(), v.failed.end(), true) - v.failed.begin());
+      *failure = step < kStepCount ? std::move(v.failures[step])
+                                   : BuildError{"internal error: variant " + v.keyText + " was not built", {}};
       return std::nullopt;
     }
     const uint32_t index = uint32_t(result.package.variants.size());
-    if (builds[i].samplesSpecularLut) lutVariants.push_back(index);
-    if (!builds[i].preshader.empty()) {
+    if (v.samplesSpecularLut) lutVariants.push_back(index);
+    if (!v.preshader.empty()) {
       // Variants with the same program (every tier but the gamma hack's, say) share one entry.
       std::vector<package::PreshaderProgram>& programs = result.package.preshader.programs;
       auto same = std::find_if(programs.begin(), programs.end(),
-                               [&](const package::PreshaderProgram& p) { return p.ops == builds[i].preshader; });
+                               [&](const package::PreshaderProgram& p) { return p.ops == v.preshader; });
       if (same == programs.end()) {
-        programs.push_back({{}, std::move(builds[i].preshader)});
+        programs.push_back({{}, std::move(v.preshader)});
         same = programs.end() - 1;
       }
       same->variants.push_back(index);
       result.package.preshader.blockSize = preshade.blockSize;
     }
-    result.package.variants.push_back(std::move(builds[i].variant));
-    for (GeneratedFile& f : builds[i].sources) result.sources.push_back(std::move(f));
-    result.libraryFiles.insert(builds[i].libraryFiles.begin(), builds[i].libraryFiles.end());
-    result.cacheHits += builds[i].cacheHit ? 1 : 0;
+    result.package.variants.push_back(std::move(v.variant));
+    for (GeneratedFile& f : v.sources) result.sources.push_back(std::move(f));
+    result.libraryFiles.insert(v.libraryFiles.begin(), v.libraryFiles.end());
+    result.cacheHits += v.cacheHit ? 1 : 0;
   }
   if (options.cacheMaxBytes > 0) cache.trim(options.cacheMaxBytes);
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no

@@ -75,12 +75,8 @@ bool ExampleContent::create(const char* packagePath, std::string* error) {
   sky.skyLuminance = 6000;
   auto lighting = buildEnvironmentLighting(sky, exposure, error);
   if (!lighting) return false;
-  for (size_t k = 0; k < facet::abi::kShCoefficients; ++k)
-    for (size_t c = 0; c < 3; ++c) frame.frame.sh[k][c] = lighting->sh[k][c];
-  for (int c = 0; c < 3; ++c) frame.clearColor[c] = lighting->meanRadiance[size_t(c)];
   environment = environmentTexture(*lighting);
-  frame.frameTextures.push_back({facet::abi::kEnvironmentBinding, facet::abi::kEnvironmentName, &environment});
-  frame.frameTextures.push_back({facet::abi::kDfgLutBinding, facet::abi::kDfgLutName, &dfgTexture()});
+  setEnvironment(frame, *lighting, environment);
   sphere = makeSphere();
   return true;
 }

@@ -145,6 +145,14 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
   return t;
 }
 
+void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment) {
+  for (size_t k = 0; k < abi::kShCoefficients; ++k)
+    for (size_t c = 0; c < 3; ++c) frame.frame.sh[k][c] = lighting.sh[k][c];
+  for (size_t c = 0; c < 3; ++c) frame.clearColor[c] = lighting.meanRadiance[c];
+  frame.frameTextures.push_back({abi::kEnvironmentBinding, abi::kEnvironmentName, &environment});
+  frame.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &dfgTexture()});
+}
+
 const DfgTable& dfgTable() { return ibl::embeddedDfgLut(); }
 
 const Texture& dfgTexture() {

@@ -40,6 +40,14 @@ struct BuildResult {
 // (24.5 KB each, docs/build-integration.md).
 inline constexpr uint64_t kDefaultCacheMaxBytes = uint64_t(512) << 20;
 
+// One compile job's wall-clock span and the pool thread (0 .. jobs-1) that ran it: what
+// bench_compile's "busy" figure (how much of the pool's time its threads had work) is made of.
+struct JobSpan {
+  double start = 0;  // seconds on std::chrono::steady_clock
+  double end = 0;
+  unsigned thread = 0;
+};
+
 struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
   std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
@@ -68,6 +76,8 @@ struct BuildOptions {
   // false: every variant computes them per pixel, as packages before format 1.3 did (tests and
   // `matc eval`'s before/after).
   bool preshader = true;
+  // Benchmarks: when set, the span of every job of the pool is appended here.
+  std::vector<JobSpan>* jobSpans = nullptr;
   // Evaluation only (`matc eval`, docs/eval.md): called with each tier's configuration after the
   // preset and the material's overrides are applied, to change any choice of it (a single-option
   // swap). Unset: the preset with the material's overrides, as shipped.

@@ -52,6 +52,12 @@ const DfgTable& dfgTable();
 // The table as RG16F (one level, bilinear, clamp to edge), made once per process.
 const Texture& dfgTexture();
 
+// An app's frame lit by `lighting`: its SH coefficients into the frame block, its mean radiance
+// as the clear colour (what a constant sky's background is), and `environment`
+// (environmentTexture(lighting), kept alive by the caller while the frame is rendered) and the DFG
+// table bound at their shader_abi.h slots. SceneFrame does the same for scenes.
+void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment);
+
 // IEEE binary16 bits of a float, rounded to nearest even; beyond the largest finite half
 // (65504) it saturates there rather than becoming infinity, like the shaders' saturateMediump.
 uint16_t floatToHalf(float value);
