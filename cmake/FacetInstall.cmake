@@ -31,9 +31,11 @@ set(FACET_COMPONENT_TARGETS_scene facet_scene)
 # (tests/consumer_project.cmake compiles every installed header).
 set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h render_path.h
     texture_checks.h runtime/environment.h runtime/exposure.h runtime/image_texture.h runtime/material.h
-    runtime/material_instance.h runtime/mesh.h runtime/png.h
+    runtime/material_instance.h runtime/mesh.h runtime/png.h runtime/preshader.h runtime/color_grading.h
+    runtime/vignette.h
     runtime/scene.h)  # the Scene type environment.h takes; its reader is the scene component
 set(FACET_RUNTIME_HEADERS_vulkan vulkan_backend.h)
+set(FACET_RUNTIME_HEADERS_gl gl_backend.h)
 set(FACET_RUNTIME_HEADERS_gltf runtime/gltf_mesh.h)
 
 # How FacetConfig.cmake finds each outside target the exported libraries link: "target|how|what",
