@@ -28,6 +28,7 @@ std::vector<VkDescriptorSetLayoutBinding> PostInputs::bindings(const PostSetting
 bool PostInputs::init(const Context* ctx, const PostSettings& effects, uint32_t slots, std::string* error) {
   ctx_ = ctx;
   effects_ = effects;
+  written_.assign(slots, VK_NULL_HANDLE);
   VkDevice device = ctx->device;
   if (effects.vignette) {
     uniforms_.resize(slots);
@@ -206,6 +207,7 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
     std::memcpy(uniforms_[slot].mapped, &frame.postUniforms, sizeof(abi::PostUniforms));
     buffer = {uniforms_[slot].buffer, 0, sizeof(abi::PostUniforms)};
   }
+  if (written_[slot] == set) return true;
   VkDescriptorImageInfo image{lutSampler_, lutView_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   std::vector<VkWriteDescriptorSet> writes;
   for (const VkDescriptorSetLayoutBinding& b : bindings(effects_)) {
@@ -220,6 +222,7 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
     writes.push_back(write);
   }
   if (!writes.empty()) vkUpdateDescriptorSets(ctx_->device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+  written_[slot] = set;
   return true;
 }
 

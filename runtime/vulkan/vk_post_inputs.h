@@ -51,6 +51,9 @@ class PostInputs {
   uint64_t lutHash_ = 0;
   bool lutUploaded_ = false;
   std::vector<HostBuffer> uniforms_;  // one per frame slot
+  // Per frame slot, the set already pointing at this slot's buffer and the LUT (they never move:
+  // a LUT change rewrites the same image), so the descriptors are written once per set.
+  std::vector<VkDescriptorSet> written_;
   bool deviceFailed_ = false;                 // an upload did not finish: stop
 };
 
