@@ -347,7 +347,7 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
       error->message = "no Vulkan device for the BRDF-domain sweep: " + gpu.initError();
       return std::nullopt;
     }
-    if (!sweepBrdfDomain(gpu, configs, BrdfSweepDomain{}, &report.brdfSweep, &error->message)) return std::nullopt;
+    if (!sweepBrdfDomain(gpu, configs, report.brdfDomain, &report.brdfSweep, &error->message)) return std::nullopt;
   }
   return report;
 }

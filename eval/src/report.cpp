@@ -232,8 +232,7 @@ std::string gpuMarkdown(const EvalReport& r) {
 }
 
 // The lobes over the BRDF domain (brdf_sweep.h), one row per (lobe, precision).
-std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows) {
-  const BrdfSweepDomain domain;
+std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfSweepDomain& domain) {
   std::string s = "\n**BRDF domain**: each specular lobe on its own (f_s · n·l), run on lavapipe over " +
                   std::to_string(domain.cosines) + " n·v × " + std::to_string(domain.cosines) + " n·l × " +
                   std::to_string(domain.azimuths.size()) + " azimuths × " + std::to_string(domain.roughnesses) +
@@ -316,7 +315,7 @@ std::string reportMarkdown(const EvalReport& r) {
          "factor): reference " + fmt("%.3f", referenceGain) + ", largest " + fmt("%.3f", largest) + "; " +
          (gains.empty() ? std::string("no configuration gains energy") : "energy gain: " + gains) + ".\n";
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
-  if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep);
+  if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep, r.brdfDomain);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
   for (const std::string& v : r.viewNames) s += " " + v + " |";
   s += "\n|---|";

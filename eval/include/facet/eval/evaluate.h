@@ -94,6 +94,7 @@ struct EvalReport {
   // Each (specular lobe, precision) of the configurations over the BRDF domain; empty for unlit
   // materials or with EvalOptions::brdfSweep off.
   std::vector<BrdfSweepRow> brdfSweep;
+  BrdfSweepDomain brdfDomain;  // what the sweep sampled
 };
 
 struct EvalError {
