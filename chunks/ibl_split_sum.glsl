@@ -19,8 +19,10 @@ vec2 dfg_terms(float NoV, float perceptualRoughness) {
     return textureLod(facet_dfgLut, vec2(NoV, perceptualRoughness), 0.0).rg;
 }
 
-vec3 ibl_specular_split_sum(vec3 prefiltered, vec2 dfg, vec3 f0) {
-    return prefiltered * mix(dfg.xxx, dfg.yyy, f0);
+// f0 · A + B: the specular's directional albedo at this n·v (the environment BRDF), which the
+// ambient term multiplies the prefiltered radiance by, and the `lut` lobe takes in place of f0.
+vec3 split_sum_albedo(vec2 dfg, vec3 f0) {
+    return mix(dfg.xxx, dfg.yyy, f0);
 }
 
 vec3 energy_compensation(vec2 dfg, vec3 f0) {

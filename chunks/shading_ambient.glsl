@@ -5,7 +5,8 @@
 // the split sum (ibl_split_sum.glsl: prefiltered environment × DFG table, reference and high),
 // the prefiltered environment × Karis's analytic environment BRDF (env_brdf_karis.glsl, mid), or
 // two fixed mips × Zioma's fit (ibl_two_mip.glsl, low). With FACET_ENERGY_COMPENSATION it also
-// sets shading_energy_compensation from the DFG terms it reads, before any light is shaded.
+// sets shading_energy_compensation from the DFG terms it reads, and for a lobe scaled by the
+// albedo (SPECULAR_LOBE_SCALED_BY_ALBEDO) shading_specular_albedo, before any light is shaded.
 // Needs: shading_standard.glsl and the tier's IBL chunks. fp16: radiance is pre-exposed.
 
 // Diffuse ambient lit per pixel: irradiance / π from SH at the shading normal.
@@ -24,17 +25,25 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     vec3 r = reflect(-v, n);
 #if defined(FACET_IBL_SPLIT_SUM)
     vec2 dfg = dfg_terms(NoV, perceptualRoughness);
-    vec3 specular = ibl_specular_split_sum(prefiltered_radiance(r, perceptualRoughness), dfg, f0);
+    vec3 albedo = split_sum_albedo(dfg, f0);
 #if defined(FACET_ENERGY_COMPENSATION)
     shading_energy_compensation = energy_compensation(dfg, f0);
-    specular *= shading_energy_compensation;
 #endif
+    vec3 specular = prefiltered_radiance(r, perceptualRoughness);
 #elif defined(FACET_IBL_ANALYTIC)
-    vec3 specular = prefiltered_radiance(r, perceptualRoughness) * env_brdf_karis(f0, NoV, perceptualRoughness);
+    vec3 albedo = env_brdf_karis(f0, NoV, perceptualRoughness);
+    vec3 specular = prefiltered_radiance(r, perceptualRoughness);
 #else
-    vec3 specular = two_mip_radiance(r, perceptualRoughness) * env_brdf_zioma_saturated(f0, NoV, perceptualRoughness);
+    vec3 albedo = env_brdf_zioma_saturated(f0, NoV, perceptualRoughness);
+    vec3 specular = two_mip_radiance(r, perceptualRoughness);
 #endif
-    return specular * clamp(material.ambientOcclusion, 0.0, 1.0);
+#if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
+    shading_specular_albedo = albedo;
+#endif
+#if defined(FACET_ENERGY_COMPENSATION)
+    albedo *= shading_energy_compensation;
+#endif
+    return specular * albedo * clamp(material.ambientOcclusion, 0.0, 1.0);
 }
 
 // Adds linear radiance to the linear sum (with FACET_GAMMA_HACK the encoded diffuse was decoded

@@ -81,6 +81,13 @@ float material_alpha(MaterialInputs material) {
 #endif
 }
 
+#if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
+// The environment BRDF E(n·v, r, f0) (the specular's directional albedo, f0 and Fresnel in it),
+// set once per pixel by shade_standard_ambient_specular before any light is shaded. A lobe chunk
+// that defines SPECULAR_LOBE_SCALED_BY_ALBEDO (specular_lut_lobe.glsl) takes it in place of f0.
+vec3 shading_specular_albedo = vec3(0.0);
+#endif
+
 #if defined(FACET_ENERGY_COMPENSATION)
 // Set once per pixel by shade_standard_ambient_specular (which reads the DFG terms it needs)
 // before any light is shaded; multiplies every specular term.
@@ -132,7 +139,11 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float LoH = clamp(dot(l, h), 0.0, 1.0);
 
+#if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
+    vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, shading_specular_albedo);
+#else
     vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, f0);
+#endif
 #if defined(FACET_ENERGY_COMPENSATION)
     specular *= shading_energy_compensation;
 #endif

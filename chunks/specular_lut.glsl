@@ -1,7 +1,8 @@
 // Specular intensity from a 2D table (the `lut` tier, for GPUs with a low ALU:TEX ratio):
 //   spec ≈ S(R·L, r) = D_GGX(α, n·h') / 4,  n·h'² = (1 + R·L)/2,  R = reflect(−v, n)
-// with the implicit geometric term (V = 1/4) and no Fresnel: the caller multiplies by f0 (and
-// by n·l, E_light). The table (compiler/specular_lut.h, generateSpecularLut) stores √(S · π/16),
+// with the implicit geometric term (V = 1/4) and no Fresnel, each roughness row divided by its
+// lobe's albedo A(r) (specular_lut_lobe.glsl multiplies by the environment BRDF's albedo instead
+// of f0, and the caller by n·l, E_light). The table (compiler/specular_lut.h) stores √(S/A · π/16),
 // saturated, in R8 UNORM, 128 × 64: u = max(R·L, 0)⁴ across, perceptual roughness down, texel
 // (i, j) holding u_i = i/127, r_j = j/63; this function inverts that mapping and decodes with a
 // square (one multiply): the √ puts the 8-bit steps in the lobe's tail, where the linear table's

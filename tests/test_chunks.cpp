@@ -257,12 +257,31 @@ TEST(SpecularLut, GenerationIsDeterministic) {
   EXPECT_EQ(compiler::generateSpecularLut().texels, compiler::generateSpecularLut().texels);
 }
 
-// What the table stores against the GGX function it is built from (S = D/4 with n·h'² = (1 + R·L)/2),
-// in the encoded domain e = √min(S/scale, 1) (the √ encoding):
+// The closed form of the table lobe's albedo at normal incidence (specular_lut.cpp) against a
+// quadrature of its definition, A(r) = 2π ∫₀¹ S(μ, r) μ dμ (v = n: R·L = n·l = μ), with the
+// peak resolved by μ = 1 − x²: 1 for a mirror, 1/4 at r = 1 (D = 1/π, and the implicit geometric
+// term V = 1/4). This is what each row of the table is divided by, so that the shader's
+// multiplier, the environment BRDF's albedo E(n·v, r, f0), sets the lobe's energy.
+TEST(SpecularLut, LobeAlbedoClosedFormMatchesQuadrature) {
+  for (double r : {0.089, 0.15, 0.3, 0.5, 0.7, 0.9, 0.99, 1.0}) {
+    const int n = 200000;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+      double x = (i + 0.5) / n, mu = 1.0 - x * x;
+      sum += compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, mu, r) * mu * 2.0 * x / n;
+    }
+    EXPECT_NEAR(compiler::specularLutAlbedo(r), 2.0 * 3.14159265358979323846 * sum, 2e-5) << "r=" << r;
+  }
+  EXPECT_NEAR(compiler::specularLutAlbedo(0.089), 1.0, 2e-3);
+  EXPECT_DOUBLE_EQ(compiler::specularLutAlbedo(1.0), 0.25);
+}
+
+// What the table stores against the GGX function it is built from (S = D/4 with n·h'² = (1 + R·L)/2,
+// divided by the row's albedo A(r)), in the encoded domain e = √min(S/(A·scale), 1) (the √ encoding):
 // - at texel centres the only error is 8-bit rounding: ≤ 0.5 LSB of e;
 // - between texels, sampled exactly as the chunk does (lerp of e, then squared), for r ≥ 0.3
-//   (lobes wider than a few texels) the bilinear error stays ≤ 6 LSB of e (measured 4.79, at
-//   r = 0.34, R·L = 0.998: the lobe's steep flank under the ceiling, interpolated across roughness
+//   (lobes wider than a few texels) the bilinear error stays ≤ 6 LSB of e (measured 4.83, at
+//   r = 0.30, R·L = 0.993: the lobe's steep flank under the ceiling, interpolated across roughness
 //   rows; the linear table measured 9.0 of its own LSB); for every r the peak R·L = 1 is exact to 0.5 LSB
 //   of e between roughness rows (the last column is the peak, by the mapping).
 TEST(SpecularLut, TableMatchesGgxWithinStatedError) {
@@ -270,7 +289,8 @@ TEST(SpecularLut, TableMatchesGgxWithinStatedError) {
   ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::kSqrt);
   const double lsb = 1.0 / 255.0;
   auto e = [&](double rol, double r) {
-    return std::sqrt(std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, rol, r) / table.scale, 1.0));
+    double rowAlbedo = compiler::specularLutAlbedo(r);
+    return std::sqrt(std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, rol, r) / (rowAlbedo * table.scale), 1.0));
   };
   for (uint32_t j = 0; j < table.height; ++j)
     for (uint32_t i = 0; i < table.width; ++i) {

@@ -197,9 +197,17 @@ TEST(PreshaderCompiler, ExampleMaterialsPreshadeExactlyTheirUniformInputs) {
   EXPECT_EQ(defines["banded_ceramic"], "");
 }
 
-// Linear tiers share one program; the gamma hack's f0 is another.
+// Linear tiers share one program (every preset is linear: one program for the whole package);
+// the gamma hack's f0 is another (low built with it, as `matc eval`'s colour-space swap does).
 TEST(PreshaderCompiler, TheGammaHackGetsItsOwnF0Program) {
-  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  auto linear = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(linear);
+  EXPECT_EQ(linear->package.preshader.programs.size(), 1u);
+  facet::compiler::BuildOptions options;
+  options.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
+    if (tier == facet::permutations::Tier::Low) config->colorSpace = facet::permutations::ColorSpace::GammaHack;
+  };
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), options);
   ASSERT_TRUE(built);
   const pkg::Package& p = built->package;
   ASSERT_EQ(p.preshader.programs.size(), 2u);

@@ -327,20 +327,14 @@ TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
   }
 }
 
-// ---- The low tier: the gamma-hack contract and the LUT decode, end to end ----------------------
+// ---- The low tier: colours and the LUT decode, end to end ----------------------------------------
 
-namespace {
-
-double linearToSrgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
-
-}  // namespace
-
-// The contract of chunks/shading_standard.glsl and output_blending.glsl: in the low tier colours
-// reach the shader as authored (sRGB-encoded: the runtime neither converts colour parameters nor
-// lets the sampler decode sRGB textures) and the fragment squares its result for the linear HDR
-// target. An unlit surface shows it bare: its HDR value is the authored value squared (γ = 2),
-// where the linear tiers give the sRGB decode. The texture's texels are 204, 102, 51 (0.8, 0.4, 0.2).
-TEST(LowTier, UnlitOutputIsTheAuthoredSrgbValueSquared) {
+// Every preset lights linear colours (issue 10 moved low off the gamma hack, docs/eval.md): the
+// runtime decodes sRGB colour parameters and lets the sampler decode sRGB textures in every tier,
+// so an unlit surface shows the sRGB decode of what was authored, in low as in high. (The hack
+// remains a swap of `matc eval`, whose contract EvalPreparedFrame.AGammaHackSwapSeesColoursAsAuthored
+// checks.) The texture's texels are 204, 102, 51 (0.8, 0.4, 0.2).
+TEST(LowTier, UnlitOutputIsTheSrgbDecodeAsInEveryTier) {
   std::string packages = facet::test::writePackagesFromTexts(
       "low-unlit",
       {"material flat_colour { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }",
@@ -359,14 +353,15 @@ TEST(LowTier, UnlitOutputIsTheAuthoredSrgbValueSquared) {
     const float* p = &result.hdr[(16 * 32 + 16) * 4];
     return Rgb{p[0], p[1], p[2]};
   };
+  const Rgb linear{std::pow((0.8 + 0.055) / 1.055, 2.4), std::pow((0.4 + 0.055) / 1.055, 2.4),
+                   std::pow((0.2 + 0.055) / 1.055, 2.4)};
   for (facet::runtime::RenderBackend* backend : {vk.get(), gl.get()}) {
     SCOPED_TRACE(backend->name());
-    expectNear(render(*backend, "flat_colour", "low"), {0.64, 0.16, 0.04}, "colour parameter, low");
-    expectNear(render(*backend, "flat_texture", "low"), {0.64, 0.16, 0.04}, "sRGB texture, low");
-    const Rgb linear{std::pow((0.8 + 0.055) / 1.055, 2.4), std::pow((0.4 + 0.055) / 1.055, 2.4),
-                     std::pow((0.2 + 0.055) / 1.055, 2.4)};
-    expectNear(render(*backend, "flat_colour", "high"), linear, "colour parameter, high");
-    expectNear(render(*backend, "flat_texture", "high"), linear, "sRGB texture, high");
+    for (const char* tier : {"low", "high"}) {
+      SCOPED_TRACE(tier);
+      expectNear(render(*backend, "flat_colour", tier), linear, "colour parameter");
+      expectNear(render(*backend, "flat_texture", tier), linear, "sRGB texture");
+    }
     EXPECT_TRUE(backend->validationErrors().empty());
   }
 }
@@ -398,9 +393,10 @@ TEST(LowTier, ColourParametersStayAsAuthoredForTheGammaHack) {
 }
 
 // The low tier's brushed_gold (a metal: no diffuse; the sky is switched off, so no ambient) against the documented formula in
-// double: HDR = S · f0_γ² · E · n·l with S the table sampled bilinearly at u = max(R·L, 0)⁴,
-// v = roughness, decoded as its square × 16/π (√ encoding), and f0_γ the authored (sRGB) tint; the gamma hack's √ and the
-// final square cancel for a term with nothing added to it. The tessellated sphere's normals differ
+// double (chunks/specular_lut_lobe.glsl): HDR = S · E_dfg · c_ms · E · n·l with S the table sampled bilinearly at
+// u = max(R·L, 0)⁴, v = roughness, decoded as its square × 16/π (√ encoding; each row already divided by its lobe's
+// albedo), E_dfg = f0 · A + B the environment BRDF and c_ms = 1 + f0 (1/albedo − 1) the energy compensation, both from the
+// DFG table at (n·v, r), and f0 the tint, linear. The tessellated sphere's normals differ
 // from the analytic one's and the table is steep in the highlight, so each point accepts the
 // range the formula takes for R·L within ±0.01 of the analytic value, widened by one table step
 // (see `lsb`), ±1 % ± 0.002. A wrong scale, table, f0 encoding or output square fails it.
@@ -422,11 +418,10 @@ TEST(LowTier, MetalPixelsMatchTheLutFormula) {
 
   auto material = facet::runtime::LoadedMaterial::load(packages + "/brushed_gold.matpkg", &error);
   ASSERT_TRUE(material) << error;
-  glm::dvec3 f0Gamma(0);
+  glm::dvec3 f0(0);
   double roughness = 0;
   for (const auto& p : material->info().params) {
-    if (p.name == "tint")
-      f0Gamma = {linearToSrgb(p.defaultValue[0]), linearToSrgb(p.defaultValue[1]), linearToSrgb(p.defaultValue[2])};
+    if (p.name == "tint") f0 = {p.defaultValue[0], p.defaultValue[1], p.defaultValue[2]};
     if (p.name == "roughness") roughness = p.defaultValue[0];
   }
   ASSERT_GT(roughness, 0.0);
@@ -479,8 +474,11 @@ TEST(LowTier, MetalPixelsMatchTheLutFormula) {
         hi = std::max(hi, s);
       }
       const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
+      const auto [fresnelWeighted, albedo] = facet::test::dfgBilinear(glm::dot(n, v), roughness);
       for (int ch = 0; ch < 3; ++ch) {
-        double k = f0Gamma[ch] * f0Gamma[ch] * light[ch] * NoL;
+        double environmentBrdf = f0[ch] * (albedo - fresnelWeighted) + fresnelWeighted;
+        double compensation = 1.0 + f0[ch] * (1.0 / albedo - 1.0);
+        double k = environmentBrdf * compensation * light[ch] * NoL;
         EXPECT_GE(got[ch], decode(lo - lsb) * k * 0.99 - 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
         EXPECT_LE(got[ch], decode(hi + lsb) * k * 1.01 + 0.002) << "pixel (" << x << ", " << y << ") channel " << ch;
       }

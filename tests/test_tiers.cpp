@@ -130,7 +130,11 @@ TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
 // where re-encoding the sum after each term took a vec3 √ per term (docs/eval.md, "The gamma
 // hack's sum").
 TEST(Tiers, GammaHackSumsLitTermsWithoutASquareRootPerTerm) {
-  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  facet::compiler::BuildOptions options;  // no preset has the hack since issue 10: low built with it
+  options.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
+    if (tier == facet::permutations::Tier::Low) config->colorSpace = facet::permutations::ColorSpace::GammaHack;
+  };
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), options);
   ASSERT_TRUE(built);
   auto squareRoots = [](const std::vector<uint32_t>& words) {
     const std::string text = facet::compiler::disassembleSpirv(words);
@@ -304,8 +308,8 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
 }
 
 // The low tier of the textured example (painted_tiles; spheres.json has the other three
-// materials) renders on both backends: the material's sRGB texture, reaching the shader
-// undecoded, and the package's table sampled together.
+// materials) renders on both backends: the material's sRGB texture, decoded by the sampler as in
+// every tier, and the package's table sampled together.
 TEST(Tiers, TexturedExampleRendersAtLowOnBothBackends) {
   std::string packages = facet::test::writeExamplePackages("tier-tiles-packages");
   std::string error;
@@ -319,7 +323,7 @@ TEST(Tiers, TexturedExampleRendersAtLowOnBothBackends) {
     ASSERT_EQ(draw.textures.size(), 3u);  // the package's table, the material's albedo and normal map
     EXPECT_EQ(draw.textures[0].binding, facet::abi::kSpecularLutBinding);
     EXPECT_EQ(draw.textures[0].texture->format, facet::runtime::TextureFormat::R8Unorm);
-    EXPECT_EQ(draw.textures[1].texture->format, facet::runtime::TextureFormat::Rgba8Unorm);  // not decoded
+    EXPECT_EQ(draw.textures[1].texture->format, facet::runtime::TextureFormat::Rgba8Srgb);   // decoded
     EXPECT_EQ(draw.textures[2].texture->format, facet::runtime::TextureFormat::Rgba8Unorm);  // normals: data
   }
   EXPECT_EQ(frame->frame().draws[0].textures[0].texture, frame->frame().draws[1].textures[0].texture);  // one per package
@@ -342,7 +346,12 @@ TEST(Tiers, TexturedExampleRendersAtLowOnBothBackends) {
   std::printf("tiles.json at low, Vulkan vs GL: max %d steps, %.4f%% within 1 step\n", maxDiff,
               100.0 * double(within1) / double(a.ldr.size()));
   EXPECT_GE(double(within1) / double(a.ldr.size()), 0.995);
-  EXPECT_EQ(valuesOutsideNeighbourhood(a, b), 0);
+  // A handful of values in the LUT lobe's highlight cores may leave the neighbourhood: Mesa's GLSL
+  // ES path stores the mediump normal varying as fp16 (tests/test_gl_backend.cpp), and R·L good
+  // to about 2^-10 moves the (R·L)⁴ lookup by up to a texel there (chunks/specular_lut.glsl).
+  // Measured: 1 value of 3 · 480 · 280, 7 steps beyond its neighbourhood, since the table's rows
+  // are normalised (their rough highlights brighter and steeper).
+  EXPECT_LE(valuesOutsideNeighbourhood(a, b), 4);
   EXPECT_TRUE(vk->validationErrors().empty());
   EXPECT_TRUE(gl->validationErrors().empty());
 }

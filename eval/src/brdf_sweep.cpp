@@ -8,6 +8,8 @@
 #include "facet/compiler/lower_relaxed_to_quantized.h"
 #include "facet/compiler/specular_lut.h"
 #include "facet/eval/standard_model.h"
+#include "facet/ibl/dfg_lut.h"
+#include "facet/runtime/environment.h"
 
 namespace facet::eval {
 namespace {
@@ -101,7 +103,13 @@ bool sweepOne(GpuEvaluator& gpu, SpecularModel model, PrecisionPolicy precision,
   std::vector<Sample> grid = samples(domain, &row->roughness);
   for (const Sample& s : grid) {
     request.in0.push_back(glm::vec4(s.NoV, s.NoL, s.phi, s.roughness));
-    request.in1.push_back(glm::vec4(s.f0, 0.0f, 0.0f, 0.0f));
+    // A lobe scaled by the environment BRDF's albedo (the lut lobe, SPECULAR_LOBE_SCALED_BY_ALBEDO
+    // in shading_standard.glsl) gets what the forward shader gives it: E(n·v, r, f0) from the
+    // runtime's DFG table, sampled as the GPU samples it.
+    double color = s.f0;
+    if (model == SpecularModel::Lut)
+      color = ibl::specularEnvironmentBrdf(runtime::dfgTable().sampleBilinear(s.NoV, s.roughness), s.f0);
+    request.in1.push_back(glm::vec4(float(color), 0.0f, 0.0f, 0.0f));
   }
   GpuEvalResult result = gpu.run(request);
   if (!result.ok()) {

@@ -14,7 +14,7 @@ TierConfig preset(Tier tier) {
       return {SpecularModel::Zioma, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
               AmbientModel::SplitSum, 3, true};
     case Tier::Low:
-      return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::GammaHack, PrecisionPolicy::Mediump,
+      return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
               AmbientModel::SplitSum, 2, true};
   }
   return {};

@@ -47,6 +47,9 @@ struct SpecularLutOptions {
   // tone-map to white anyway; 16 measured no better with the √ encoding (docs/specular-tiers.md).
   double scale = 16.0 / 3.14159265358979323846;
   SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
+  // Each row divided by its lobe's albedo at normal incidence (specularLutAlbedo): the shader
+  // scales the lobe by the environment BRDF's albedo E(n·v, r, f0) instead of f0.
+  bool normalized = true;
 };
 
 // The default table size and scale; chunks/specular_lut.glsl hard-codes the same numbers.
@@ -59,12 +62,18 @@ struct SpecularLut {
   uint32_t height = 0;
   double scale = 0;
   SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
+  bool normalized = true;
   std::vector<uint8_t> texels;  // row-major, row j = roughness r_j, R8 UNORM
 };
 
 /// The unquantised intensity S a texel approximates, for a cosine c on the given axis (R·L or
 /// n·h, clamped to [0, 1]) and perceptual roughness r (clamped to [0.089, 1]).
 double specularLutIntensity(SpecularLutAxis axis, double cosine, double perceptualRoughness);
+
+/// The directional albedo of the table's lobe S(R·L, r) at normal incidence (v = n, so R·L = n·l):
+/// A(r) = ∫ S n·l dω over the hemisphere, in closed form. 1 for a mirror, 1/4 at r = 1: the
+/// implicit geometric term (V = 1/4) gives rough lobes a quarter of the light.
+double specularLutAlbedo(double perceptualRoughness);
 
 /// Deterministic: the same options give the same bytes on every platform (the only
 /// floating-point operations are +, −, ×, ÷ and sqrt, correctly rounded by IEEE 754, and
