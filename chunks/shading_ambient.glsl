@@ -9,12 +9,23 @@
 // albedo (SPECULAR_LOBE_SCALED_BY_ALBEDO) shading_specular_albedo, before any light is shaded.
 // Needs: shading_standard.glsl and the tier's IBL chunks. fp16: radiance is pre-exposed.
 
+// ao scales the ambient terms. A material that does not write ambientOcclusion has ao = 1, and
+// then the multiply is left out: glslang and spirv-opt fold the clamp of the constant but keep
+// the vector × 1.0 (OpVectorTimesScalar has no folding rule), measured 3 FMA slots per pixel.
+vec3 apply_ambient_occlusion(MaterialInputs material, vec3 ambient) {
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+    return ambient * clamp(material.ambientOcclusion, 0.0, 1.0);
+#else
+    return ambient;
+#endif
+}
+
 // Diffuse ambient lit per pixel: irradiance / π from SH at the shading normal.
 vec3 shade_standard_ambient(MaterialInputs material, vec3 irradianceOverPi) {
 #if defined(FACET_GAMMA_HACK)
     irradianceOverPi = sqrt(irradianceOverPi);  // encoded like the colours it multiplies (γ = 2)
 #endif
-    return material_diffuse_color(material) * irradianceOverPi * clamp(material.ambientOcclusion, 0.0, 1.0);
+    return apply_ambient_occlusion(material, material_diffuse_color(material) * irradianceOverPi);
 }
 
 // Specular ambient: the environment reflected about n, weighted by the tier's environment BRDF.
@@ -37,13 +48,13 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     vec3 albedo = env_brdf_zioma_saturated(f0, NoV, perceptualRoughness);
     vec3 specular = two_mip_radiance(r, perceptualRoughness);
 #endif
-#if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
-    shading_specular_albedo = albedo;
-#endif
 #if defined(FACET_ENERGY_COMPENSATION)
     albedo *= shading_energy_compensation;
 #endif
-    return specular * albedo * clamp(material.ambientOcclusion, 0.0, 1.0);
+#if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
+    shading_specular_albedo = albedo;  // compensated: the lobe takes it as it is
+#endif
+    return apply_ambient_occlusion(material, specular * albedo);
 }
 
 // Adds linear radiance to the linear sum (with FACET_GAMMA_HACK the encoded diffuse was decoded

@@ -83,8 +83,10 @@ float material_alpha(MaterialInputs material) {
 
 #if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
 // The environment BRDF E(n·v, r, f0) (the specular's directional albedo, f0 and Fresnel in it),
-// set once per pixel by shade_standard_ambient_specular before any light is shaded. A lobe chunk
-// that defines SPECULAR_LOBE_SCALED_BY_ALBEDO (specular_lut_lobe.glsl) takes it in place of f0.
+// times the energy compensation c_ms where there is one, set once per pixel by
+// shade_standard_ambient_specular before any light is shaded (the ambient specular multiplies by
+// the same product, so it is formed once). A lobe chunk that defines SPECULAR_LOBE_SCALED_BY_ALBEDO
+// (specular_lut_lobe.glsl) takes it in place of f0, and its result is not compensated again.
 vec3 shading_specular_albedo = vec3(0.0);
 #endif
 
@@ -144,8 +146,8 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
 #else
     vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, f0);
 #endif
-#if defined(FACET_ENERGY_COMPENSATION)
-    specular *= shading_energy_compensation;
+#if defined(FACET_ENERGY_COMPENSATION) && !defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
+    specular *= shading_energy_compensation;  // (an albedo-scaled lobe's albedo carries it already)
 #endif
     // fp16: the lobe is ≤ 65504 (saturated) but the outgoing light need not be: at a grazing
     // sun glint (n = h, n·v = n·l = c; specular_ggx_smith.glsl) f_s · E · n·l ≈ 1269 E / c at the

@@ -18,7 +18,14 @@ vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n)
 
 void main() {
     highp vec4 worldPosition = object.model * vec4(a_position, 1.0);
+#if defined(FACET_VARYING_WORLD_POSITION)
     v_worldPosition = worldPosition.xyz;
+#else
+    // Nothing in the fragment stage reads the position itself: it gets the vector to the eye,
+    // exact once interpolated (affine in the position), one highp subtraction per vertex instead
+    // of per pixel.
+    v_toEye = frame.cameraPosition.xyz - worldPosition.xyz;
+#endif
     // Normalized before it becomes a mediump varying: the normal matrix carries the inverse of
     // the object's scale (a 1000 m sphere's normals come out 1/1000 long), and a binary16
     // component below 2^-14 ≈ 6.1e-5 is flushed to 0 (subnormal) or keeps few bits, so such a
@@ -48,7 +55,7 @@ void main() {
     vec3 n = v_normal;  // unit length (above)
     vec3 irradiance = sh_irradiance_over_pi(n);
 #if defined(FACET_DIRECTIONAL_LIGHT)
-    irradiance += frame.lightColor.rgb * (clamp(dot(n, normalize(frame.lightDirection.xyz)), 0.0, 1.0) * INV_PI);
+    irradiance += frame.lightColor.rgb * (clamp(dot(n, frame.lightDirection.xyz), 0.0, 1.0) * INV_PI);  // a unit vector by the ABI
 #endif
 #if FACET_POINT_LIGHTS > 0
     irradiance += punctual_diffuse(frame.punctualLights[0], worldPosition.xyz, n);

@@ -49,7 +49,7 @@ void main() {
     shading_normal = normalize(v_normal);
     // The view vector comes from highp positions; the surface program and the ambient terms read
     // it at the tier's precision, the lights' half vectors at highp.
-    shading_view_highp = normalize(frame.cameraPosition.xyz - v_worldPosition);
+    shading_view_highp = normalize(FACET_TO_EYE);
     shading_view = shading_view_highp;
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
@@ -60,7 +60,7 @@ void main() {
 #endif
 
 #if defined(FACET_VERTEX_DIFFUSE)
-    vec3 color = material_diffuse_color(material) * v_diffuseLight * clamp(material.ambientOcclusion, 0.0, 1.0);
+    vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * v_diffuseLight);
 #else
     vec3 color = shade_standard_ambient(material, sh_irradiance_over_pi(shading_normal));
 #endif

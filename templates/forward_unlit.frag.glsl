@@ -6,7 +6,7 @@
 
 void main() {
     shading_normal = normalize(v_normal);
-    shading_view = normalize(frame.cameraPosition.xyz - v_worldPosition);
+    shading_view = normalize(FACET_TO_EYE);
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
     fragColor = blend_output(linear_from_shading_space(material.baseColor + material.emissive), material.alpha);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <sstream>
 
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
@@ -523,4 +524,60 @@ TEST(Tiers, NoLitFragmentStageEvaluatesInverseTrigonometry) {
     }
   }
   EXPECT_GE(checked, 16);
+}
+
+namespace {
+
+std::string fragmentText(const facet::compiler::BuildResult& built, const std::string& key) {
+  return facet::compiler::disassembleSpirv(spirvOf(built, key, Stage::Fragment));
+}
+
+}  // namespace
+
+// A material that does not write ambientOcclusion has ao = 1, and no shader multiplies by it:
+// glslang and spirv-opt fold the clamp of the constant but keep a vector × 1.0 (3 FMA slots per
+// pixel, once per ambient term; shading_ambient.glsl, apply_ambient_occlusion). A material that
+// writes it keeps the multiplies.
+TEST(Tiers, NoMultiplyByAConstantAmbientOcclusion) {
+  auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(built);
+  for (const auto& v : built->package.variants) {
+    std::istringstream text(fragmentText(*built, v.key));
+    for (std::string line; std::getline(text, line);) {
+      const bool scales = line.find("OpVectorTimesScalar") != std::string::npos || line.find("OpFMul") != std::string::npos;
+      EXPECT_FALSE(scales && line.size() >= 9 && line.compare(line.size() - 9, 9, " %float_1") == 0) << v.key << ": " << line;
+    }
+  }
+  const std::string surface = "param rough: float = 0.4 in [0, 1]\n surface { roughness = params.rough";
+  auto without = facet::test::buildText("material m { " + surface + " } }");
+  auto with = facet::test::buildText("material m { param ao: float = 0.5 in [0, 1]\n " + surface +
+                                     "\n ambientOcclusion = params.ao } }");
+  ASSERT_TRUE(without && with);
+  for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
+    EXPECT_GT(costOf(spirvOf(*with, key, Stage::Fragment)).aluOps, costOf(spirvOf(*without, key, Stage::Fragment)).aluOps)
+        << key;
+}
+
+// Where nothing in the fragment stage reads the world position (no point light, no
+// vertex.worldPosition in the surface program), the vertex stage sends the vector to the eye
+// instead (v_toEye, highp): the fragment stage has no subtraction of the position left.
+TEST(Tiers, TheVectorToTheEyeReplacesTheWorldPositionWhereNothingReadsIt) {
+  using facet::permutations::Tier;
+  auto red = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(red);
+  for (const auto& v : red->package.variants) {
+    const std::string text = fragmentText(*red, v.key);
+    EXPECT_NE(text.find("%v_toEye"), std::string::npos) << v.key;
+    EXPECT_EQ(text.find("%v_worldPosition"), std::string::npos) << v.key;
+  }
+  auto banded = facet::test::buildFile(facet::test::examplePath("materials/banded_ceramic.mat"));  // reads it
+  ASSERT_TRUE(banded);
+  EXPECT_NE(fragmentText(*banded, "high.dir1").find("%v_worldPosition"), std::string::npos);
+  facet::compiler::BuildOptions pointLight;
+  pointLight.scene = facet::permutations::SceneNeeds{{facet::permutations::requestKey({true}, Tier::High, true, 1)}};
+  auto lit = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), pointLight);
+  ASSERT_TRUE(lit);
+  const std::string text = fragmentText(*lit, "high.dir1.pt1");
+  EXPECT_NE(text.find("%v_worldPosition"), std::string::npos);
+  EXPECT_EQ(text.find("%v_toEye"), std::string::npos);
 }

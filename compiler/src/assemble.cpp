@@ -41,6 +41,14 @@ bool usesNormalOutput(const AssemblyInput& in) {
   return in.material.shading == "lit" && in.material.surface.outputs.count("normal") > 0;
 }
 
+// The world position reaches the fragment stage only where something there reads it: point
+// lights, or a surface program reading vertex.worldPosition. Otherwise the vertex stage sends the
+// vector to the eye instead, camera − position: affine in the position, so its interpolation is
+// exact, and the fragment stage saves the highp subtraction (3 FMA slots per pixel).
+bool worldPositionVarying(const AssemblyInput& in) {
+  return in.key.pointLights > 0 || in.surface.attributes.count("worldPosition") > 0;
+}
+
 bool needs(const AssemblyInput& in, const OptionalInput& v) {
   if (v.location == abi::kAttribTangent) return usesNormalOutput(in);
   return in.surface.attributes.count(std::string(v.name())) > 0;
@@ -147,6 +155,14 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) s += "#define FACET_VARYING_" + upper(std::string(v.name())) + " 1\n";
   if (usesNormalOutput(in)) s += "#define FACET_MATERIAL_NORMAL 1\n";
+  // FACET_TO_EYE: the unnormalised highp vector from the surface to the eye, for the fragment
+  // templates, from whichever of the two varyings the variant has (worldPositionVarying).
+  if (worldPositionVarying(in))
+    s += "#define FACET_VARYING_WORLD_POSITION 1\n#define FACET_TO_EYE (frame.cameraPosition.xyz - v_worldPosition)\n";
+  else
+    s += "#define FACET_TO_EYE v_toEye\n";
+  if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0)
+    s += "#define FACET_MATERIAL_AMBIENT_OCCLUSION 1\n";
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
   if (in.material.blending != "opaque") s += "#define FACET_BLENDING_" + upper(in.material.blending) + " 1\n";
@@ -188,7 +204,7 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
     std::string qualified = type.rfind("highp ", 0) == 0 ? type : tierPrecision(in.tier) + std::string(" ") + type;
     s += std::string(direction) + " " + qualified + " " + name + ";\n";
   };
-  declare("highp vec3", "v_worldPosition");
+  declare("highp vec3", worldPositionVarying(in) ? "v_worldPosition" : "v_toEye");
   declare("vec3", "v_normal");
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) declare(v.varyingType, v.varying);

@@ -85,7 +85,7 @@ class VariantRules {
   // other texel, a position 1 km away moves in 0.5 m steps). Names are the templates' varyings
   // and shader_abi.h's attributes.
   void highpInputs(const std::string& key, const char* stage, const StageFigures& f) {
-    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_uv0", "v_uv1", "a_position", "a_uv0", "a_uv1"};
+    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_toEye", "v_uv0", "v_uv1", "a_position", "a_uv0", "a_uv1"};
     for (const std::string& name : f.interface.relaxedInputs)
       if (mustBeHighp.count(name))
         finding(ir::Severity::Error, where(key, stage) + " reads '" + name + "' in mediump; positions and UVs need highp",
