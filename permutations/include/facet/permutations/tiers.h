@@ -37,9 +37,11 @@ struct TierConfig {
 // mid:       Facet's Zioma specular (one division), per-vertex diffuse and SH3, mediump;
 //            split-sum IBL with energy compensation (issue 10: +13 dB on the spheres scene and
 //            rough gold 18.9 → 28.4 dB against Karis's analytic fit, for +0.04 cycles).
-// low:       LUT specular (one texture read, no D/V/F), per-vertex diffuse and SH2, the gamma hack
-//            (colours stay sRGB-encoded, lighting on encoded values), mediump; split-sum IBL with
-//            energy compensation (issue 10: against the two-mip lerp, +7 dB on the spheres scene).
+// low:       LUT specular (one texture read, no D/V/F) scaled by the environment BRDF, per-vertex
+//            diffuse and SH2, linear, mediump; split-sum IBL with energy compensation (issue 10:
+//            against the two-mip lerp, +7 dB on the spheres scene). Linear instead of the gamma
+//            hack since issue 10's retuning: better on every example material and cheaper
+//            (docs/eval.md); ColorSpace::GammaHack remains an option matc eval measures.
 // docs/specular-tiers.md has the measurements.
 TierConfig preset(Tier tier);
 
