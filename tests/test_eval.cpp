@@ -320,6 +320,8 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
   EXPECT_LT(high.fragment.cycles, reference.fragment.cycles);
   EXPECT_LT(byName["high:specular=lut"]->fragment.cycles, high.fragment.cycles);
   EXPECT_GT(high.timeVsReference, 0.0);
+  // lavapipe reports timestamps: the forward pass's GPU time is the clock, not render()'s wall time.
+  EXPECT_EQ(report->timingClock, "gpu_forward_pass");
   EXPECT_EQ(high.variantKey, "high.dir1.pt1");
   // The sun + IBL variant, the one the cost goals name, is costed too: cheaper than with the point light.
   EXPECT_GT(high.sunIblFragmentCycles, 0.0);
@@ -334,6 +336,7 @@ TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
   ASSERT_TRUE(facet::eval::writeReport(*report, out, &message)) << message;
   auto json = nlohmann::json::parse(facet::test::readText(out + "/report.json"));
   EXPECT_EQ(json["material"], "red_plastic");
+  EXPECT_EQ(json["timing"]["clock"], "gpu_forward_pass");
   ASSERT_EQ(json["configurations"].size(), report->results.size());
   for (const auto& c : json["configurations"]) {
     for (const char* key : {"name", "change", "tier_config", "variant", "error", "views", "cost", "cycles_vs_high",

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "facet/compiler/build.h"
 #include "facet/eval/prepared_frame.h"
@@ -216,11 +217,26 @@ class Evaluation {
     std::vector<double> own, ratios;
     runtime::FrameResult scratch;
     std::string message;
+    // The forward pass's GPU time where the backend reports it (Vulkan timestamps, on lavapipe
+    // too): the material's draws and nothing else. Else the wall time of render(), which also
+    // holds the post pass, the submission and the read-back. The clock is chosen at the first
+    // timed frame and kept for the run, so that every ratio compares like with like.
     auto timed = [&](const runtime::FrameDesc& f, double* seconds) {
       auto t0 = std::chrono::steady_clock::now();
       bool ok = backend_->render(f, &scratch, &message);
       *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      return ok;
+      if (!ok) return false;
+      auto forward = std::find_if(scratch.gpuTimes.begin(), scratch.gpuTimes.end(),
+                                  [](const runtime::PassTime& t) { return t.pass == "forward"; });
+      if (!gpuClock_) gpuClock_ = forward != scratch.gpuTimes.end();
+      if (*gpuClock_) {
+        if (forward == scratch.gpuTimes.end()) {
+          message = "the forward pass's GPU time was reported for earlier frames and not for this one";
+          return false;
+        }
+        *seconds = forward->milliseconds * 1e-3;
+      }
+      return true;
     };
     for (int t = 0; t < options_.timingFrames; ++t) {
       double mine = 0, reference = 0;
@@ -242,6 +258,14 @@ class Evaluation {
   std::vector<runtime::FrameResult> referenceImages_;  // per view
   std::vector<std::array<float, 3>> backgrounds_;      // per view: the clear colour
   std::unique_ptr<PreparedFrame> referenceFrame_;      // the reference's first view
+  std::optional<bool> gpuClock_;                       // timed by the forward pass's GPU time
+
+ public:
+  // Which clock the timings used; empty when nothing was timed.
+  std::string timingClock() const {
+    if (!gpuClock_) return "";
+    return *gpuClock_ ? "gpu_forward_pass" : "wall_render";
+  }
 };
 
 }  // namespace
@@ -321,6 +345,8 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     report.results.push_back(std::move(r));
     if (options.progress) options.progress(formatProgress(i, configs.size(), report.results.back()));
   }
+
+  report.timingClock = evaluation.timingClock();
 
   // Ratios to the tiers as shipped (configurations() puts reference as shipped first).
   auto shipped = [&](permutations::Tier t) -> const ConfigurationResult* {

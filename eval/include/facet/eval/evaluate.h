@@ -85,6 +85,10 @@ struct EvalReport {
   std::vector<std::string> viewNames;
   uint32_t width = 0, height = 0;       // of the first view
   int timingFrames = 0, warmupFrames = 0;
+  // "gpu_forward_pass": the forward pass's GPU time from Vulkan timestamps (lavapipe reports
+  // them); "wall_render": the wall time of RenderBackend::render(), where the device cannot time;
+  // empty when nothing was timed (timingFrames 0).
+  std::string timingClock;
   bool fp16Emulation = false;
   compiler::MobileCostWeights weights;
   std::vector<ConfigurationResult> results;  // results[0] is reference as shipped
