@@ -301,10 +301,11 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     std::printf("tier %-5s vs reference: %.1f dB (8-bit PSNR, spheres.json)\n", tier, db);
     // Measured with image-based ambient (a constant sky: every tier's environment is exact, so
     // the difference is the environment BRDF): high 99.0 (identical: mediump runs at fp32 here,
-    // and high has the reference's energy compensation), mid 49.8 and low 40.5 with split-sum and
+    // and high has the reference's energy compensation), mid 49.8 and low 49.3 with split-sum and
     // the same compensation (issue 10; 36.7 with Karis's fit and 33.2 with the two-mip lerp and
-    // Zioma's fit before: these floors fail without it).
-    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : std::string(tier) == "mid" ? 45.0 : 37.0) << tier;
+    // Zioma's fit before: these floors fail without it), low's LUT lobe scaled by the environment
+    // BRDF and lit in linear (40.5 with the lobe × f0 and the gamma hack: low's floor fails without).
+    EXPECT_GT(db, std::string(tier) == "high" ? 60.0 : 45.0) << tier;
   }
 }
 
@@ -472,6 +473,11 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
   // the two-mip lerp, neither of which has the energy they lose.
   EXPECT_GT(cells["mid"][1][5], 24.0);
   EXPECT_GT(cells["low"][1][5], 23.0);
+  // The issue's goal for low, 36 dB on this grid: measured 37.0 (rough gold r = 1 31.5) with the
+  // LUT lobe scaled by the environment BRDF and lit in linear; 33.1 (26.0) with the lobe × f0 and
+  // the gamma hack.
+  EXPECT_GT(psnr(images["low"].ldr, images["reference"].ldr), 36.0);
+  EXPECT_GT(cells["low"][1][5], 29.0);
 
   // The same grid with the mobile tiers' mediump rounded to fp16 (BuildOptions::fp16Emulation,
   // docs/fp16-emulation.md), against the same reference image: what a GPU with fp16 ALUs shows.
