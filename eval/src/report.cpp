@@ -87,6 +87,18 @@ Json weightsJson(const compiler::MobileCostWeights& w) {
   return j;
 }
 
+// What the lavapipe column holds, for the JSON and the Markdown alike.
+std::string timingDescription(const EvalReport& r) {
+  if (r.timingClock.empty()) return "time: not measured (--frames 0)";
+  return std::string(r.timingClock == "gpu_forward_pass"
+                         ? "GPU time of the forward pass (Vulkan timestamps: the material's draws)"
+                         : "wall time of RenderBackend::render() (the device reports no GPU time; it includes the "
+                           "post pass, the submission and the read-back)") +
+         " of the first view, as a ratio to reference's: the median over " + std::to_string(r.timingFrames) +
+         " frames, each paired with a frame of reference (after warm-up). lavapipe is Mesa's Vulkan driver running "
+         "on the CPU: its time is not a mobile GPU's (mediump runs in fp32, a texture read is a CPU routine)";
+}
+
 std::string xmlEscape(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -111,12 +123,7 @@ Json reportJson(const EvalReport& r) {
   j["height"] = r.height;
   j["fp16_emulation"] = r.fp16Emulation;
   j["error_measure"] = "against reference as shipped, over the pixels the material covers in either image, all views together";
-  j["timing"] = Json{{"what", std::string(r.timingClock == "gpu_forward_pass"
-                                              ? "GPU time of the forward pass (Vulkan timestamps)"
-                                              : "wall time of RenderBackend::render()") +
-                                  " of the first view on lavapipe (Mesa's CPU Vulkan driver; not a mobile GPU): median "
-                                  "over the frames, and the median of its ratio to a render of reference's first view "
-                                  "paired with each frame"},
+  j["timing"] = Json{{"what", timingDescription(r)},
                      {"clock", r.timingClock},
                      {"frames", r.timingFrames},
                      {"warmup_frames", r.warmupFrames}};
@@ -275,15 +282,8 @@ std::string reportMarkdown(const EvalReport& r) {
        "PSNR of the tone-mapped 8-bit image, mean and 99th-percentile absolute error in 8-bit steps, relative "
        "RMSE of the linear HDR image.\n"
        "**Speed**: estimated Valhall-class cycles per fragment and per vertex from the mobile cost model "
-       "(docs/eval.md), fragment cycles as a ratio to `high` and `reference` as shipped; and " +
-       std::string(r.timingClock == "gpu_forward_pass"
-                       ? "the GPU time of the forward pass (Vulkan timestamps: the material's draws) "
-                       : "the wall time of the renderer's `render()` call (the device reports no GPU time; it "
-                         "includes the post pass, the submission and the read-back) ") +
-       "on lavapipe for the first view, as a ratio to `reference`'s: the median over " + std::to_string(r.timingFrames) +
-       " frames, each paired with a frame of `reference` (after warm-up). lavapipe is Mesa's Vulkan driver "
-       "running on the CPU: its time is not a mobile GPU's (mediump runs in fp32, a texture read is a CPU "
-       "routine).\n"
+       "(docs/eval.md), fragment cycles as a ratio to `high` and `reference` as shipped; and lavapipe's " +
+       timingDescription(r) + ".\n"
        "★: on the Pareto front (no other configuration has both fewer fragment cycles and a higher PSNR).\n\n";
   s += "| configuration | changes | PSNR dB | mean | p99 | rel. RMSE | frag. cycles | vert. cycles | × high | × reference "
        "| lavapipe × reference | |\n";
