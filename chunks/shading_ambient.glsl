@@ -11,7 +11,8 @@
 
 // ao scales the ambient terms. A material that does not write ambientOcclusion has ao = 1, and
 // then the multiply is left out: glslang and spirv-opt fold the clamp of the constant but keep
-// the vector × 1.0 (OpVectorTimesScalar has no folding rule), measured 3 FMA slots per pixel.
+// the vector × 1.0 (OpVectorTimesScalar has no folding rule): two vec3 multiplies at mediump, 3 FMA
+// slots per pixel in the cost model (docs/eval.md; red_plastic high.dir1 1.63 → 1.59 cycles).
 vec3 apply_ambient_occlusion(MaterialInputs material, vec3 ambient) {
 #if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
     return ambient * clamp(material.ambientOcclusion, 0.0, 1.0);

@@ -36,6 +36,9 @@ SpecularForm lutForm(SpecularLutAxis axis, double scale,
   options.axis = axis;
   options.scale = scale;
   options.encoding = encoding;
+  // The talk's table, scaled by f0 below: the forms measured here (docs/specular-tiers.md,
+  // "Measured error") predate the shipped lobe's per-row normalisation and its E scale.
+  options.normalized = false;
   auto table = std::make_shared<SpecularLut>(facet::compiler::generateSpecularLut(options));
   return [table, axis](const ShadingPoint& p) {
     double u = axis == SpecularLutAxis::kReflectedCosine4 ? std::pow(std::clamp(p.RoL, 0.0, 1.0), 4.0) : p.NoH;

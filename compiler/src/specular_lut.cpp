@@ -56,7 +56,6 @@ SpecularLut generateSpecularLut(const SpecularLutOptions& options) {
   lut.height = std::max<uint32_t>(options.height, 2);
   lut.scale = options.scale;
   lut.encoding = options.encoding;
-  lut.normalized = options.normalized;
   lut.texels.resize(size_t{lut.width} * lut.height);
   for (uint32_t j = 0; j < lut.height; ++j) {
     double r = double(j) / double(lut.height - 1);

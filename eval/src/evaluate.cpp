@@ -138,6 +138,12 @@ class Evaluation {
     return material_.shading != "lit" || furnace(c, packageDir, r, error);
   }
 
+  // Which clock the timings used (EvalReport::timingClock); empty when nothing was timed.
+  std::string timingClock() const {
+    if (!gpuClock_) return "";
+    return *gpuClock_ ? "gpu_forward_pass" : "wall_render";
+  }
+
  private:
   // The white furnace: the first view's spheres, no sun and no point light, in a constant sky of
   // kFurnaceLuminance; the brightest value the spheres cover (the pixels that differ from the
@@ -259,13 +265,6 @@ class Evaluation {
   std::vector<std::array<float, 3>> backgrounds_;      // per view: the clear colour
   std::unique_ptr<PreparedFrame> referenceFrame_;      // the reference's first view
   std::optional<bool> gpuClock_;                       // timed by the forward pass's GPU time
-
- public:
-  // Which clock the timings used; empty when nothing was timed.
-  std::string timingClock() const {
-    if (!gpuClock_) return "";
-    return *gpuClock_ ? "gpu_forward_pass" : "wall_render";
-  }
 };
 
 }  // namespace

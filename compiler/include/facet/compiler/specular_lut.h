@@ -62,7 +62,6 @@ struct SpecularLut {
   uint32_t height = 0;
   double scale = 0;
   SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
-  bool normalized = true;
   std::vector<uint8_t> texels;  // row-major, row j = roughness r_j, R8 UNORM
 };
 
