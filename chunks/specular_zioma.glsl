@@ -29,7 +29,7 @@
 // returns 65504 (far above the tone mapper's white either way). Results below 6.1e-5, far outside
 // the lobe, flush to 0.
 // d = NoH²(α² − 1) + 1 cancels for NoH within 2^-11 of 1 (the fp16 step), so the highlight core
-// is quantised in NoH; specular_zioma_nxh (below, used by the mid tier) takes n and h and uses
+// is quantised in NoH; specular_zioma_nxh (below, used by the zioma lobe) takes n and h and uses
 // distribution_ggx's n × h form instead.
 // Needs: math.glsl, precision.glsl.
 

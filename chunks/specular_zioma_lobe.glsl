@@ -1,7 +1,8 @@
 #include "specular_zioma.glsl"
 
-// Specular lobe of the `zioma` tiers (mid): GGX D times Facet's energy-bounded fused V·F, one
-// division for the whole scalar, specular colour applied at the end:
+// Specular lobe of the `zioma` option (mid's until issue 10 moved mid to fused_hammon): GGX D
+// times Facet's energy-bounded fused V·F, one division for the whole scalar, specular colour
+// applied at the end:
 //   f_s = specular_zioma_nxh(α, n·h, n, h, l·h) · f0   (d by the Lagrange identity, fp16-safe)
 // Ignores n·v and n·l inside the lobe, as the fused form does (Zioma 2015); see
 // specular_zioma.glsl for the fit, its energy bound and its fp16 analysis.

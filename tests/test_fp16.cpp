@@ -26,6 +26,7 @@
 #include "facet/runtime/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "facet/eval/compute_evaluator.h"
+#include "reference/specular_tiers.h"
 #include "facet/compiler/lower_relaxed_to_quantized.h"
 #include "facet/eval/standard_model.h"
 #include "test_support.h"
@@ -278,6 +279,7 @@ std::vector<std::string> shadingChunks(const char* lobe, bool vertexDiffuse) {
   std::vector<const char*> files{"math.glsl", "precision.glsl", "diffuse_lambert.glsl"};
   if (std::string(lobe) == "specular_ggx_smith.glsl") files.push_back("brdf_ggx.glsl");
   if (std::string(lobe) == "specular_zioma_lobe.glsl") files.push_back("specular_zioma.glsl");
+  // specular_fused_hammon.glsl needs nothing beyond math.glsl and precision.glsl.
   files.push_back(lobe);
   files.push_back("shading_standard.glsl");
   for (const char* f : files) {
@@ -365,6 +367,33 @@ TEST(Fp16Shading, ZiomaGlintStaysFiniteAtGrazingMirror) {
     if (r.in1[i].x > 0.0f) {
       EXPECT_GT(out[i].x, 0.0f) << "black where lit";
     }
+  }
+}
+
+// The mid tier's fused lobe at the same mirror points, fp16-emulated, against its own formula in
+// double (reference::specularFusedHammon, saturated at 65504, times the light and n·l, saturated):
+// the smoothest lobe's peak has d = α² = 6.27e-5 and X = 2π·lerp(2c², 2c, α) < 1 for c < 0.4, so
+// a d·X formed without the chunk's 2^10 scale is subnormal, flushed to 0, and the glint turns into
+// 65504 · light · n·l (measured without the scale: fails at r ≤ 0.1, c = 0.2, and r = 0.2 and
+// 0.4 near the horizon); and k · (k · X), not (k · k) · X, which overflows for k > 256 where the
+// result is finite (measured: fails at r = 0.2 and 0.4, c ≤ 0.05).
+TEST(Fp16Shading, FusedHammonGlintFollowsItsFormulaAtGrazingMirror) {
+  GpuEvalRequest r = mirrorSweep("specular_fused_hammon.glsl", true);
+  auto out = runEmulated(r, true);
+  ASSERT_EQ(out.size(), r.in0.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const double rough = r.in0[i].x, cv = r.in0[i].y, cl = r.in1[i].x, light = r.in0[i].z;
+    const double alpha = std::pow(std::clamp(rough, 0.089, 1.0), 2.0);
+    // fp16 flushes 2 n·l n·v to 0 below 2^-14 (c ≤ 0.0055 here): M loses at most 2^-14 against
+    // its α(n·l + n·v) (2.7 % at r = 0.4, c = 0.005); the formula in double is told the same.
+    const double NoV = std::max(cv, 1e-4), twoNoLNoV = 2.0 * cl * NoV;
+    const double a = twoNoLNoV < std::ldexp(1.0, -14) ? 0.0 : twoNoLNoV;
+    const double lobe = std::min(reference::distributionGgx(alpha, 1.0) * 0.5 /
+                                     std::max(a + (cl + NoV - a) * alpha, 1.0 / 4096.0),
+                                 65504.0);
+    const double expected = std::min(lobe * light * cl, 65504.0);
+    ASSERT_TRUE(std::isfinite(out[i].x)) << "roughness " << rough << " n.v " << cv << " n.l " << cl;
+    EXPECT_NEAR(out[i].x, expected, 0.02 * expected + 1e-3) << "roughness " << rough << " n.v " << cv << " n.l " << cl;
   }
 }
 
@@ -660,8 +689,8 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
                 hc.name, tier, e.psnr, e.maxAbsHdr, e.nonFinite, e.blackWhereLit, p.psnr, p.maxAbsHdr, p.nonFinite,
                 p.blackWhereLit);
     EXPECT_EQ(e.nonFinite, 0u);
-    // The mid tier's own maths may darken a pixel the reference lights (Zioma's fused V·F has
-    // no n·v: a metal's grazing rim); fp16 must add none.
+    // A cheaper tier's own maths may darken a pixel the reference lights (the LUT lobe, or the
+    // zioma option's fused V·F, which has no n·v: a metal's grazing rim); fp16 must add none.
     EXPECT_LE(e.blackWhereLit, p.blackWhereLit);
     const std::string t = tier;
     EXPECT_GT(e.psnr, t == "high" ? hc.psnrFloorHigh : t == "mid" ? hc.psnrFloorMid : hc.psnrFloorLow);

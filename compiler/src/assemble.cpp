@@ -266,6 +266,7 @@ std::string specularChunk(permutations::SpecularModel model) {
   switch (model) {
     case permutations::SpecularModel::GgxSmith: return "specular_ggx_smith.glsl";
     case permutations::SpecularModel::GgxFastV: return "specular_ggx_fastv.glsl";
+    case permutations::SpecularModel::FusedHammon: return "specular_fused_hammon.glsl";
     case permutations::SpecularModel::Zioma: return "specular_zioma_lobe.glsl";
     case permutations::SpecularModel::Lut: return "specular_lut_lobe.glsl";
   }

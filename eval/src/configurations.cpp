@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 
 #include "facet/compiler/build.h"
 
@@ -15,15 +16,14 @@ using permutations::PrecisionPolicy;
 using permutations::SpecularModel;
 using permutations::TierConfig;
 
-const char* const kSpecular[] = {"ggx_smith", "ggx_fastv", "zioma", "lut"};
 const char* const kAmbient[] = {"split_sum", "analytic", "two_mip"};
 
 }  // namespace
 
 const std::vector<Axis>& axes() {
   static const std::vector<Axis> list = {
-      {"specular", {"ggx_smith", "ggx_fastv", "zioma", "lut"},
-       [](const TierConfig& c) { return std::string(kSpecular[int(c.specular)]); },
+      {"specular", {std::begin(permutations::kSpecularModelNames), std::end(permutations::kSpecularModelNames)},
+       [](const TierConfig& c) { return std::string(permutations::kSpecularModelNames[int(c.specular)]); },
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "specular", o); }},
       {"diffuse", {"pixel", "vertex"},
        [](const TierConfig& c) { return std::string(c.diffuse == DiffuseModel::Pixel ? "pixel" : "vertex"); },

@@ -47,7 +47,7 @@ const OutputInfo* findOutput(std::string_view name) {
 const TierChoices& tierChoices() {
   static const TierChoices choices = {
       {"reference", "high", "mid", "low"},
-      {{"specular", {"ggx_smith", "ggx_fastv", "zioma", "lut"}}, {"diffuse", {"pixel", "vertex"}}},
+      {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}}, {"diffuse", {"pixel", "vertex"}}},
   };
   return choices;
 }

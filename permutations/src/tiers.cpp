@@ -1,5 +1,7 @@
 #include "facet/permutations/tiers.h"
 
+#include <iterator>
+
 namespace facet::permutations {
 
 TierConfig preset(Tier tier) {
@@ -11,7 +13,7 @@ TierConfig preset(Tier tier) {
       return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Mediump,
               AmbientModel::SplitSum, 3, true};
     case Tier::Mid:
-      return {SpecularModel::Zioma, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
+      return {SpecularModel::FusedHammon, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
               AmbientModel::SplitSum, 3, true};
     case Tier::Low:
       return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
@@ -22,13 +24,9 @@ TierConfig preset(Tier tier) {
 
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option) {
   if (axis == "specular") {
-    const std::pair<const char*, SpecularModel> models[] = {{"ggx_smith", SpecularModel::GgxSmith},
-                                                            {"ggx_fastv", SpecularModel::GgxFastV},
-                                                            {"zioma", SpecularModel::Zioma},
-                                                            {"lut", SpecularModel::Lut}};
-    for (const auto& [name, model] : models) {
-      if (option == name) {
-        config->specular = model;
+    for (size_t i = 0; i < std::size(kSpecularModelNames); ++i) {
+      if (option == kSpecularModelNames[i]) {
+        config->specular = SpecularModel(i);
         return true;
       }
     }
@@ -41,8 +39,7 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
 }
 
 std::string describe(const TierConfig& c) {
-  const char* specular[] = {"ggx_smith", "ggx_fastv", "zioma", "lut"};
-  std::string s = specular[int(c.specular)];
+  std::string s = kSpecularModelNames[int(c.specular)];
   s += c.diffuse == DiffuseModel::Pixel ? ", pixel diffuse" : ", vertex diffuse";
   s += c.colorSpace == ColorSpace::Linear ? ", linear" : ", gamma_hack";
   s += c.precision == PrecisionPolicy::Highp ? ", highp" : ", mediump";

@@ -1,5 +1,5 @@
 // Double-precision CPU evaluation of the specular forms of the GPU tiers (chunks/brdf_ggx_fastv.glsl,
-// chunks/specular_zioma.glsl, chunks/specular_lut.glsl), from the same formulas (not the same code),
+// chunks/specular_fused_hammon.glsl, chunks/specular_zioma.glsl, chunks/specular_lut.glsl), from the same formulas (not the same code),
 // plus the directional albedo (white furnace) integral used to check energy. The exact model they
 // are measured against is in standard_model.h.
 #pragma once
@@ -43,6 +43,14 @@ inline double specularZioma(const ZiomaCoefficients& k, double alpha, double NoH
   double rho = k.perceptualInFactor ? std::sqrt(alpha) : alpha;
   double vf = std::max(LoH * LoH, k.loH2Min) * (k.roughScale * rho + k.roughBias);
   return a2 / (4.0 * kPi * d * d * vf);
+}
+
+// The mid tier's fused lobe (chunks/specular_fused_hammon.glsl) without f0: GGX D × Hammon's V,
+// with the chunk's floor of 2^-12 on lerp(2 n·l n·v, n·l + n·v, α).
+inline double specularFusedHammon(double alpha, double NoV, double NoL, double NoH) {
+  double a = 2.0 * NoL * NoV;
+  double m = std::max(a + (NoL + NoV - a) * alpha, 1.0 / 4096.0);
+  return distributionGgx(alpha, NoH) * 0.5 / m;
 }
 
 // The exact single-scattering specular the tiers approximate, without f0 split out.
@@ -106,6 +114,14 @@ inline double albedoZioma(const ZiomaCoefficients& k, double alpha, double NoV, 
   double factor = k.roughScale * rho + k.roughBias;
   return directionalAlbedo(alpha, NoV, [&](double, double, double, double lh) {
     return f0 / (4.0 * std::max(lh * lh, k.loH2Min) * factor);
+  }, samples);
+}
+
+// The fused lobe's spec / D = 0.5 / max(lerp(2 n·l n·v, n·l + n·v, α), 2^-12), times f0.
+inline double albedoFusedHammon(double alpha, double NoV, double f0, int samples = 2048) {
+  return directionalAlbedo(alpha, NoV, [&](double nv, double nl, double, double) {
+    double a = 2.0 * nl * nv;
+    return f0 * 0.5 / std::max(a + (nl + nv - a) * alpha, 1.0 / 4096.0);
   }, samples);
 }
 

@@ -7,7 +7,10 @@
 
 namespace facet::permutations {
 
-enum class SpecularModel { GgxSmith, GgxFastV, Zioma, Lut };
+enum class SpecularModel { GgxSmith, GgxFastV, FusedHammon, Zioma, Lut };
+// The material language's names of the specular models, indexed by SpecularModel
+// (`tier mid { specular = zioma }`).
+inline constexpr const char* kSpecularModelNames[] = {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"};
 enum class DiffuseModel { Pixel, Vertex };
 enum class ColorSpace { Linear, GammaHack };
 enum class PrecisionPolicy { Highp, Mediump };
@@ -34,7 +37,9 @@ struct TierConfig {
 // reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against;
 //            split-sum IBL + SH3, energy compensation on direct and IBL specular.
 // high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
-// mid:       Facet's Zioma specular (one division), per-vertex diffuse and SH3, mediump;
+// mid:       GGX D × Hammon's V fused into one division, F = f0 (chunks/specular_fused_hammon.glsl;
+//            issue 10: Zioma's fused V·F before, 30.8 → 38.2 dB on brushed_gold for no cost),
+//            per-vertex diffuse and SH3, mediump;
 //            split-sum IBL with energy compensation (issue 10: +13 dB on the spheres scene and
 //            rough gold 18.9 → 28.4 dB against Karis's analytic fit, for +0.04 cycles).
 // low:       LUT specular (one texture read, no D/V/F) scaled by the environment BRDF, per-vertex
