@@ -17,6 +17,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "facet/compiler/build.h"
 #include "facet/ir/check.h"
@@ -457,7 +458,7 @@ const char* kHardCaseMaterial = R"(material hard_case {
     }
 })";
 
-std::optional<compiler::BuildResult> build(const std::string& text, bool emulate) {
+std::optional<compiler::BuildResult> build(const std::string& text, bool emulate, bool trueHalf = false) {
   ir::SourceFile file{"hard_case.mat", text};
   ir::Diagnostics diags(file);
   auto material = ir::compileSource(file, diags);
@@ -465,6 +466,7 @@ std::optional<compiler::BuildResult> build(const std::string& text, bool emulate
   if (!material) return std::nullopt;
   compiler::BuildOptions options;
   options.fp16Emulation = emulate;
+  options.fp16TrueHalf = trueHalf;
   compiler::BuildError error;
   auto built = compiler::buildMaterial(*material, options, &error);
   EXPECT_TRUE(built) << error.message;
@@ -511,6 +513,72 @@ TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
   }
 }
 
+// The true-half build (BuildOptions::fp16TrueHalf) changes only the SPIR-V of mediump tiers: it
+// declares Float16, computes in 16-bit floats, validates, and hands every image instruction
+// 32-bit coordinates and lod (lower_half_image_operands.h: lavapipe aborts on half ones). Asking
+// for it together with the emulation is an error, not a silent choice.
+TEST(Fp16Build, TrueHalfComputesInHalfAndSamplesWith32BitOperands) {
+  auto plain = build(kHardCaseMaterial, false), half = build(kHardCaseMaterial, false, true);
+  ASSERT_TRUE(plain && half);
+  using package::Stage;
+  using package::Target;
+  for (const auto& v : plain->package.variants) {
+    SCOPED_TRACE(v.key);
+    const bool mediump = v.key.rfind("reference.", 0) != 0;
+    for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
+      for (Target target : {Target::GlslEs300, Target::Msl})
+        EXPECT_EQ(shaderOf(*plain, v.key, stage, target)->code, shaderOf(*half, v.key, stage, target)->code);
+      const auto* a = shaderOf(*plain, v.key, stage, Target::Spirv);
+      const auto* b = shaderOf(*half, v.key, stage, Target::Spirv);
+      if (!mediump) {
+        EXPECT_EQ(a->code, b->code) << "the highp reference tier has nothing relaxed";
+        continue;
+      }
+      std::vector<uint32_t> words(b->code.size() / 4);
+      std::memcpy(words.data(), b->code.data(), b->code.size());
+      const std::string text = disassemble(words);
+      if (stage == Stage::Fragment) {
+        EXPECT_NE(text.find("OpCapability Float16"), std::string::npos);
+        EXPECT_GT(countOf(text, "OpTypeFloat 16"), 0u);
+      }
+      // Each value's type, then every id operand of each image sample: none a 16-bit float.
+      std::map<std::string, std::string> typeOf;
+      std::set<std::string> halfTypes;
+      std::istringstream lines(text);
+      std::string line;
+      std::vector<std::string> samples;
+      while (std::getline(lines, line)) {
+        std::istringstream in(line);
+        std::vector<std::string> t;
+        for (std::string w; in >> w;) t.push_back(w);
+        if (t.size() >= 4 && t[1] == "=" && t[2] == "OpTypeFloat" && t[3] == "16") halfTypes.insert(t[0]);
+        if (t.size() >= 5 && t[1] == "=" && t[2] == "OpTypeVector" && halfTypes.count(t[3])) halfTypes.insert(t[0]);
+        if (t.size() >= 4 && t[1] == "=") typeOf[t[0]] = t[3];
+        if (t.size() >= 3 && t[2].rfind("OpImageSample", 0) == 0) samples.push_back(line);
+      }
+      if (stage == Stage::Fragment) {
+        EXPECT_FALSE(samples.empty());
+      }
+      for (const std::string& sample : samples) {
+        std::istringstream in(sample);
+        std::vector<std::string> t;
+        for (std::string w; in >> w;) t.push_back(w);
+        for (size_t i = 5; i < t.size(); ++i)
+          EXPECT_EQ(halfTypes.count(typeOf[t[i]]), 0u) << t[i] << " is a 16-bit float operand of: " << sample;
+      }
+    }
+  }
+  ir::SourceFile file{"hard_case.mat", kHardCaseMaterial};
+  ir::Diagnostics diags(file);
+  auto material = ir::compileSource(file, diags);
+  ASSERT_TRUE(material);
+  compiler::BuildOptions both;
+  both.fp16Emulation = both.fp16TrueHalf = true;
+  compiler::BuildError error;
+  EXPECT_FALSE(compiler::buildMaterial(*material, both, &error));
+  EXPECT_NE(error.message.find("ask for one"), std::string::npos) << error.message;
+}
+
 // --- hard cases ---
 
 struct HardCase {
@@ -553,19 +621,19 @@ const HardCase kHardCases[] = {
          {"material": "hard_case", "position": [-1.1, 0, 0], "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}},
          {"material": "hard_case", "position": [1.1, 0, 0], "params": {"roughness": 0.2, "metallic": 1, "baseColor": [1, 1, 1]}}
        ]})",
-     52, 45, 33},
+     52, 56, 33},
     {"grazing_glint",
      R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
        "objects": [
          {"material": "hard_case", "position": [0, -1000, 0], "radius": 1000, "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}}
        ]})",
-     47, 23, 23},
+     47, 25, 23},
     // The brightest highlight the contract allows: white metal at the roughness floor, NoH = 1,
     // 110 000 lux sun: D·V·F·E = 5075 · 0.25 · 1 · 2.86 ≈ 3600, to stay below 65504.
     {"bright_sun",
      R"({"width": 255, "height": 255, )" FACET_CAMERA("[0, 0, 4]", "[0, 0, 0]") ", " FACET_SUN("[0, 0, -1]") R"(,
        "objects": [{"material": "hard_case", "params": {"roughness": 0, "metallic": 1, "baseColor": [1, 1, 1]}}]})",
-     60, 62, 51},
+     60, 68, 51},
     // Black and white: baseColor 0 and 1, metallic 0 and 1.
     {"black_white",
      R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
@@ -575,12 +643,12 @@ const HardCase kHardCases[] = {
          {"material": "hard_case", "position": [-1.1, -1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [1, 1, 1], "metallic": 0}},
          {"material": "hard_case", "position": [1.1, -1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [1, 1, 1], "metallic": 1}}
        ]})",
-     39, 36, 34},
+     39, 50, 34},
     // Geometry 10 km from the origin, the camera 4 m from it.
     {"far_from_origin",
      R"({"width": 256, "height": 256, )" FACET_CAMERA("[10000, 0, 4]", "[10000, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
        "objects": [{"material": "hard_case", "position": [10000, 0, 0], "params": {"roughness": 0.3, "baseColor": [0.8, 0.2, 0.1]}}]})",
-     63, 53, 37},
+     63, 58, 37},
 };
 
 // A reference pixel whose brightest HDR channel reaches kLitThreshold is "lit"; a candidate pixel
@@ -626,8 +694,9 @@ class Fp16HardCases : public ::testing::Test {
   static void SetUpTestSuite() {
     plainDir_ = new std::string(test::scratchDir("fp16-plain"));
     emulatedDir_ = new std::string(test::scratchDir("fp16-emulated"));
-    for (auto [dir, emulate] : {std::pair{plainDir_, false}, {emulatedDir_, true}}) {
-      auto built = build(kHardCaseMaterial, emulate);
+    trueHalfDir_ = new std::string(test::scratchDir("fp16-true-half"));
+    for (auto [dir, emulate, trueHalf] : {std::tuple{plainDir_, false, false}, {emulatedDir_, true, false}, {trueHalfDir_, false, true}}) {
+      auto built = build(kHardCaseMaterial, emulate, trueHalf);
       if (!built) continue;
       std::string error;
       EXPECT_TRUE(package::writeFile(*dir + "/hard_case.matpkg", package::write(built->package), &error)) << error;
@@ -636,12 +705,15 @@ class Fp16HardCases : public ::testing::Test {
   static void TearDownTestSuite() {
     delete plainDir_;
     delete emulatedDir_;
+    delete trueHalfDir_;
   }
   static std::string* plainDir_;
   static std::string* emulatedDir_;
+  static std::string* trueHalfDir_;
 };
 std::string* Fp16HardCases::plainDir_ = nullptr;
 std::string* Fp16HardCases::emulatedDir_ = nullptr;
+std::string* Fp16HardCases::trueHalfDir_ = nullptr;
 
 class Fp16HardCase : public Fp16HardCases, public ::testing::WithParamInterface<HardCase> {};
 
@@ -656,11 +728,16 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
   ASSERT_TRUE(scene) << error;
   auto vk = runtime::createVulkanBackend({true}, &error);
   ASSERT_TRUE(vk) << error;
-  auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out) {
+  runtime::VulkanOptions float16Device;
+  float16Device.validation = true;
+  float16Device.float16Arithmetic = true;
+  auto vkHalf = runtime::createVulkanBackend(float16Device, &error);
+  ASSERT_TRUE(vkHalf) << error;
+  auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out, runtime::RenderBackend* on = nullptr) {
     scene->tier = tier;
     auto frame = runtime::SceneFrame::prepare(*scene, dir, &error);
     ASSERT_TRUE(frame) << error;
-    ASSERT_TRUE(vk->render(frame->frame(), out, &error)) << error;
+    ASSERT_TRUE((on ? on : vk.get())->render(frame->frame(), out, &error)) << error;
   };
   runtime::FrameResult reference;
   render("reference", *plainDir_, &reference);
@@ -672,11 +749,13 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
   std::printf("fp16 hard case %-16s reference peak HDR %g\n", hc.name, double(peak));
   for (const char* tier : {"high", "mid", "low"}) {
     SCOPED_TRACE(tier);
-    runtime::FrameResult emulated, plain;
+    runtime::FrameResult emulated, plain, half;
     render(tier, *emulatedDir_, &emulated);
     render(tier, *plainDir_, &plain);
+    render(tier, *trueHalfDir_, &half, vkHalf.get());
     ASSERT_FALSE(HasFatalFailure());
-    Comparison e = compare(emulated, reference), p = compare(plain, reference);
+    Comparison e = compare(emulated, reference), p = compare(plain, reference), h = compare(half, reference);
+    Comparison he = compare(half, emulated);
     if (const char* dump = std::getenv("FACET_FP16_DUMP")) {  // a folder: writes the 8-bit images
       std::string stem = std::string(dump) + "/" + hc.name + ".";
       std::string ignored;
@@ -688,14 +767,26 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
                 " | fp32 mediump: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu\n",
                 hc.name, tier, e.psnr, e.maxAbsHdr, e.nonFinite, e.blackWhereLit, p.psnr, p.maxAbsHdr, p.nonFinite,
                 p.blackWhereLit);
+    std::printf("fp16 hard case %-16s %-4s true half: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu"
+                " | true half vs emulated: PSNR %5.1f dB, max |dHDR| %9.4g\n",
+                hc.name, tier, h.psnr, h.maxAbsHdr, h.nonFinite, h.blackWhereLit, he.psnr, he.maxAbsHdr);
     EXPECT_EQ(e.nonFinite, 0u);
     // A cheaper tier's own maths may darken a pixel the reference lights (the LUT lobe, or the
     // zioma option's fused V·F, which has no n·v: a metal's grazing rim); fp16 must add none.
     EXPECT_LE(e.blackWhereLit, p.blackWhereLit);
     const std::string t = tier;
     EXPECT_GT(e.psnr, t == "high" ? hc.psnrFloorHigh : t == "mid" ? hc.psnrFloorMid : hc.psnrFloorLow);
+    // The true-half build on a shaderFloat16 device: finite, lit where the tier's fp32 render is,
+    // and never more than 3.5 dB worse than the emulation predicts (measured: at most 2.9 dB
+    // worse, low on bright_sun; up to 16.6 dB better, high on grazing_glint: lavapipe keeps the
+    // fp16 subnormals the emulation flushes, the likely cause, not bisected). The emulation's
+    // figures are the ones to trust for a GPU that flushes; this bounds how optimistic they are.
+    EXPECT_EQ(h.nonFinite, 0u);
+    EXPECT_LE(h.blackWhereLit, p.blackWhereLit);
+    EXPECT_GT(h.psnr, e.psnr - 3.5);
   }
   for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
+  for (const auto& m : vkHalf->validationErrors()) ADD_FAILURE() << "Vulkan validation (float16 device): " << m;
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Fp16HardCase, ::testing::ValuesIn(kHardCases),

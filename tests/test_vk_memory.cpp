@@ -18,7 +18,7 @@ struct AllocatorFixture {
   bool ok = false;
   AllocatorFixture() {
     std::string error;
-    ok = ctx.init(/*validation=*/true, &error);
+    ok = ctx.init(/*validation=*/true, /*float16Arithmetic=*/false, &error);
     EXPECT_TRUE(ok) << error;
     allocator.init(&ctx, false);
   }

@@ -19,6 +19,7 @@
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
 #include "facet/compiler/minify_glsl.h"
+#include "facet/compiler/lower_half_image_operands.h"
 #include "facet/compiler/lower_relaxed_to_quantized.h"
 #include "job_pool.h"
 #include "variant_cache.h"
@@ -218,6 +219,9 @@ class VariantJobs {
   bool emulated(const VariantBuild& v) const {
     return ctx_.options.fp16Emulation && v.tier.precision == permutations::PrecisionPolicy::Mediump;
   }
+  bool trueHalf(const VariantBuild& v) const {
+    return ctx_.options.fp16TrueHalf && v.tier.precision == permutations::PrecisionPolicy::Mediump;
+  }
 
   // Once a variant has failed, the ones after it in key order are not worth compiling (only the
   // first failure is reported); every one before it still runs to the end, so which failure is
@@ -254,7 +258,7 @@ class VariantJobs {
     }
     v.samplesSpecularLut = samplesSpecularLut(input);
     // The same text compiles to the same code, so a cached variant skips every backend.
-    v.cacheKey = variantCacheKey(compilerVersion(), v.es, v.vk, ctx_.options.fp16Emulation);
+    v.cacheKey = variantCacheKey(compilerVersion(), v.es, v.vk, ctx_.options.fp16Emulation, ctx_.options.fp16TrueHalf);
     if (std::optional<CompiledShaders> cached = ctx_.cache.load(v.cacheKey)) {
       v.shaders = std::move(*cached);
       v.cacheHit = true;
@@ -342,6 +346,19 @@ class VariantJobs {
       return false;
     }
     if (!spirvToMsl(metal, ctx_.mslBindings, &msl, error)) return false;
+    if (trueHalf(v)) {
+      // The same conversion as Metal's, then 32-bit image operands (lavapipe cannot compile half
+      // ones); validated, since it ships in place of the stage.
+      uint32_t converted = 0;
+      if (!lowerHalfImageOperands(&metal, &converted, error)) return false;
+      log.clear();
+      if (!validateSpirv(metal, &log)) {
+        *error = "internal error: the true-half " + std::string(stage) + " stage of variant " + v.keyText +
+                 " does not validate:\n" + log;
+        return false;
+      }
+      *words = std::move(metal);
+    }
     v.shaders[2 + slot] = bytesOf(emulatedWords ? *emulatedWords : *words);
     v.shaders[4 + slot] = bytesOf(msl);
     return true;
@@ -419,6 +436,10 @@ permutations::TierConfig tierConfig(const ir::Material& material, permutations::
 }
 
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
+  if (options.fp16Emulation && options.fp16TrueHalf) {
+    failure->message = "fp16 emulation and true half are two builds of the same SPIR-V: ask for one";
+    return std::nullopt;
+  }
   BuildResult result;
   ir::Material material = checked;
   ir::optimize(material);

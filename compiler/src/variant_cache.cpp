@@ -54,7 +54,7 @@ const std::string& compilerBuildIdentity() {
 }
 
 std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
-                            bool fp16Emulation) {
+                            bool fp16Emulation, bool fp16TrueHalf) {
   // Length-prefixed fields, so no two different inputs concatenate to the same bytes.
   std::string input;
   for (const std::string* field : {&compilerVersion, &compilerBuildIdentity(), &es.vertex, &es.fragment, &vulkan.vertex, &vulkan.fragment}) {
@@ -62,6 +62,7 @@ std::string variantCacheKey(const std::string& compilerVersion, const StageSourc
     input += *field;
   }
   input += fp16Emulation ? '1' : '0';
+  input += fp16TrueHalf ? '1' : '0';
   XXH128_hash_t h = XXH3_128bits(input.data(), input.size());
   char hex[33];
   std::snprintf(hex, sizeof hex, "%016llx%016llx", static_cast<unsigned long long>(h.high64),

@@ -28,7 +28,7 @@ const std::string& compilerBuildIdentity();
 
 // 32 hex digits (XXH3-128) naming a variant's compiled output.
 std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
-                            bool fp16Emulation);
+                            bool fp16Emulation, bool fp16TrueHalf);
 
 // `dir` empty: every load misses and nothing is stored. Entries are files dir/xx/<key>, written to
 // a temporary name and renamed, so concurrent jobs or processes never see half an entry; an

@@ -214,7 +214,7 @@ VulkanBackend::~VulkanBackend() {
 
 bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
-  return planRenderPath(options, error) && ctx_.init(validation, error) &&
+  return planRenderPath(options, error) && ctx_.init(validation, options.float16Arithmetic, error) &&
          createFixedObjects(error);
 }
 

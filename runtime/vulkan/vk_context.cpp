@@ -131,8 +131,8 @@ Context::~Context() {
   if (instance) vkDestroyInstance(instance, nullptr);
 }
 
-bool Context::init(bool validation, std::string* error) {
-  return createInstance(validation, error) && pickPhysicalDevice(error) && createDevice(error);
+bool Context::init(bool validation, bool float16Arithmetic, std::string* error) {
+  return createInstance(validation, error) && pickPhysicalDevice(error) && createDevice(float16Arithmetic, error);
 }
 
 bool Context::adopt(const AppDevice& app, std::string* error) {
@@ -302,7 +302,7 @@ bool Context::pickPhysicalDevice(std::string* error) {
   return true;
 }
 
-bool Context::createDevice(std::string* error) {
+bool Context::createDevice(bool float16Arithmetic, std::string* error) {
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{};
   queueInfo.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
@@ -314,6 +314,33 @@ bool Context::createDevice(std::string* error) {
   info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
+  // 16-bit float arithmetic in shaders (Vulkan 1.1 + the extension; core in 1.2), for the
+  // true-half test builds (compiler::BuildOptions::fp16TrueHalf).
+  VkPhysicalDeviceShaderFloat16Int8Features float16{};
+  float16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
+  const char* float16Extension = VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME;
+  if (float16Arithmetic) {
+    uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, extensions.data());
+    bool listed = false;
+    for (const VkExtensionProperties& e : extensions) listed = listed || std::strcmp(e.extensionName, float16Extension) == 0;
+    VkPhysicalDeviceFeatures2 features{};
+    features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    features.pNext = &float16;
+    if (listed) vkGetPhysicalDeviceFeatures2(physicalDevice, &features);
+    if (!listed || !float16.shaderFloat16) {
+      *error = std::string("16-bit float arithmetic asked for, but ") + properties.deviceName + " has no shaderFloat16";
+      return false;
+    }
+    float16 = {};
+    float16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
+    float16.shaderFloat16 = VK_TRUE;
+    info.pNext = &float16;
+    info.enabledExtensionCount = 1;
+    info.ppEnabledExtensionNames = &float16Extension;
+  }
   if (!check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice", error)) {
     device = VK_NULL_HANDLE;
     return false;

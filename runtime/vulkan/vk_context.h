@@ -29,7 +29,9 @@ class Context {
 
   // Creates everything. On failure returns false with *error set; whatever was created is
   // destroyed by the destructor.
-  bool init(bool validation, std::string* error);
+  // float16Arithmetic: enable VK_KHR_shader_float16_int8's shaderFloat16, failing where the
+  // device has none (VulkanOptions::float16Arithmetic).
+  bool init(bool validation, bool float16Arithmetic, std::string* error);
   // Uses the app's instance, device and queue instead (vulkan_backend.h), checking that the
   // device can run Facet; destroys none of them. Validation is the app's instance's business:
   // its layers report to the app's messenger, and `messages` stays empty.
@@ -55,7 +57,7 @@ class Context {
  private:
   bool createInstance(bool validation, std::string* error);
   bool pickPhysicalDevice(std::string* error);
-  bool createDevice(std::string* error);
+  bool createDevice(bool float16Arithmetic, std::string* error);
 
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   bool owned_ = true;  // false: the app's device and instance (adopt)

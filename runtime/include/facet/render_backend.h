@@ -188,6 +188,9 @@ struct VulkanOptions {
   bool stageBufferUploads = false;
   // The HDR target's format; creation fails when the device cannot render to, read and sample it.
   HdrFormat hdrFormat = HdrFormat::Rgba16Float;
+  // Testing: enable 16-bit float arithmetic (shaderFloat16) for packages built with
+  // compiler::BuildOptions::fp16TrueHalf; creation fails on a device without it.
+  bool float16Arithmetic = false;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 

@@ -57,6 +57,12 @@ struct BuildOptions {
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers
   // (`reference`) are unchanged. docs/fp16-emulation.md.
   bool fp16Emulation = false;
+  // Testing only, never for shipping: the SPIR-V target of mediump tiers computes in 16-bit
+  // floats (spirv-opt --convert-relaxed-to-half, image operands back to 32-bit:
+  // lower_half_image_operands.h), for a Vulkan device with shaderFloat16
+  // (VulkanOptions::float16Arithmetic): the fp16 arithmetic the emulation models, done by the
+  // device. Not with fp16Emulation. docs/fp16-emulation.md, "True half".
+  bool fp16TrueHalf = false;
   // Fill BuildResult::sources: the readable assembled GLSL of both flavours and the SPIR-V
   // disassembly cost time and are only wanted for debugging.
   bool emitSources = false;
