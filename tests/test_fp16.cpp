@@ -483,34 +483,42 @@ const package::Shader* shaderOf(const compiler::BuildResult& b, const std::strin
   return nullptr;
 }
 
-TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
-  auto plain = build(kHardCaseMaterial, false), emulated = build(kHardCaseMaterial, true);
-  ASSERT_TRUE(plain && emulated);
-  ASSERT_EQ(plain->package.variants.size(), emulated->package.variants.size());
+// Walks the variants of two builds of one material that may differ only in the SPIR-V of mediump
+// tiers: checks GLSL ES and MSL identical, the highp reference tier's SPIR-V identical, and calls
+// check(key, stage, disassembly of `other`'s SPIR-V) for each mediump stage.
+template <typename Check>
+void expectOnlyMediumpSpirvDiffers(const compiler::BuildResult& plain, const compiler::BuildResult& other, Check check) {
   using package::Stage;
   using package::Target;
-  for (const auto& v : plain->package.variants) {
+  ASSERT_EQ(plain.package.variants.size(), other.package.variants.size());
+  for (const auto& v : plain.package.variants) {
     SCOPED_TRACE(v.key);
     const bool mediump = v.key.rfind("reference.", 0) != 0;
     for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
       for (Target target : {Target::GlslEs300, Target::Msl}) {
-        EXPECT_EQ(shaderOf(*plain, v.key, stage, target)->code, shaderOf(*emulated, v.key, stage, target)->code);
+        EXPECT_EQ(shaderOf(plain, v.key, stage, target)->code, shaderOf(other, v.key, stage, target)->code);
       }
-      const auto* a = shaderOf(*plain, v.key, stage, Target::Spirv);
-      const auto* b = shaderOf(*emulated, v.key, stage, Target::Spirv);
-      std::vector<uint32_t> words(b->code.size() / 4);
-      std::memcpy(words.data(), b->code.data(), b->code.size());
-      const size_t quantizes = countOf(disassemble(words), "OpQuantizeToF16");
+      const auto* a = shaderOf(plain, v.key, stage, Target::Spirv);
+      const auto* b = shaderOf(other, v.key, stage, Target::Spirv);
       if (!mediump) {
         EXPECT_EQ(a->code, b->code) << "the highp reference tier has nothing relaxed";
-      } else if (stage == Stage::Fragment) {
-        EXPECT_GT(quantizes, 10u);
+        continue;
       }
-      if (!mediump) {
-        EXPECT_EQ(quantizes, 0u);
-      }
+      std::vector<uint32_t> words(b->code.size() / 4);
+      std::memcpy(words.data(), b->code.data(), b->code.size());
+      check(v.key, stage, disassemble(words));
     }
   }
+}
+
+TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
+  auto plain = build(kHardCaseMaterial, false), emulated = build(kHardCaseMaterial, true);
+  ASSERT_TRUE(plain && emulated);
+  expectOnlyMediumpSpirvDiffers(*plain, *emulated, [](const std::string&, package::Stage stage, const std::string& text) {
+    if (stage == package::Stage::Fragment) {
+      EXPECT_GT(countOf(text, "OpQuantizeToF16"), 10u);
+    }
+  });
 }
 
 // The true-half build (BuildOptions::fp16TrueHalf) changes only the SPIR-V of mediump tiers: it
@@ -520,54 +528,37 @@ TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
 TEST(Fp16Build, TrueHalfComputesInHalfAndSamplesWith32BitOperands) {
   auto plain = build(kHardCaseMaterial, false), half = build(kHardCaseMaterial, false, true);
   ASSERT_TRUE(plain && half);
-  using package::Stage;
-  using package::Target;
-  for (const auto& v : plain->package.variants) {
-    SCOPED_TRACE(v.key);
-    const bool mediump = v.key.rfind("reference.", 0) != 0;
-    for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
-      for (Target target : {Target::GlslEs300, Target::Msl})
-        EXPECT_EQ(shaderOf(*plain, v.key, stage, target)->code, shaderOf(*half, v.key, stage, target)->code);
-      const auto* a = shaderOf(*plain, v.key, stage, Target::Spirv);
-      const auto* b = shaderOf(*half, v.key, stage, Target::Spirv);
-      if (!mediump) {
-        EXPECT_EQ(a->code, b->code) << "the highp reference tier has nothing relaxed";
-        continue;
-      }
-      std::vector<uint32_t> words(b->code.size() / 4);
-      std::memcpy(words.data(), b->code.data(), b->code.size());
-      const std::string text = disassemble(words);
-      if (stage == Stage::Fragment) {
-        EXPECT_NE(text.find("OpCapability Float16"), std::string::npos);
-        EXPECT_GT(countOf(text, "OpTypeFloat 16"), 0u);
-      }
-      // Each value's type, then every id operand of each image sample: none a 16-bit float.
-      std::map<std::string, std::string> typeOf;
-      std::set<std::string> halfTypes;
-      std::istringstream lines(text);
-      std::string line;
-      std::vector<std::string> samples;
-      while (std::getline(lines, line)) {
-        std::istringstream in(line);
-        std::vector<std::string> t;
-        for (std::string w; in >> w;) t.push_back(w);
-        if (t.size() >= 4 && t[1] == "=" && t[2] == "OpTypeFloat" && t[3] == "16") halfTypes.insert(t[0]);
-        if (t.size() >= 5 && t[1] == "=" && t[2] == "OpTypeVector" && halfTypes.count(t[3])) halfTypes.insert(t[0]);
-        if (t.size() >= 4 && t[1] == "=") typeOf[t[0]] = t[3];
-        if (t.size() >= 3 && t[2].rfind("OpImageSample", 0) == 0) samples.push_back(line);
-      }
-      if (stage == Stage::Fragment) {
-        EXPECT_FALSE(samples.empty());
-      }
-      for (const std::string& sample : samples) {
-        std::istringstream in(sample);
-        std::vector<std::string> t;
-        for (std::string w; in >> w;) t.push_back(w);
-        for (size_t i = 5; i < t.size(); ++i)
-          EXPECT_EQ(halfTypes.count(typeOf[t[i]]), 0u) << t[i] << " is a 16-bit float operand of: " << sample;
-      }
+  expectOnlyMediumpSpirvDiffers(*plain, *half, [](const std::string&, package::Stage stage, const std::string& text) {
+    if (stage == package::Stage::Fragment) {
+      EXPECT_NE(text.find("OpCapability Float16"), std::string::npos);
+      EXPECT_GT(countOf(text, "OpTypeFloat 16"), 0u);
     }
-  }
+    // Each value's type, then every id operand of each image sample: none a 16-bit float.
+    std::map<std::string, std::string> typeOf;
+    std::set<std::string> halfTypes;
+    std::istringstream lines(text);
+    std::string line;
+    std::vector<std::string> samples;
+    while (std::getline(lines, line)) {
+      std::istringstream in(line);
+      std::vector<std::string> t;
+      for (std::string w; in >> w;) t.push_back(w);
+      if (t.size() >= 4 && t[1] == "=" && t[2] == "OpTypeFloat" && t[3] == "16") halfTypes.insert(t[0]);
+      if (t.size() >= 5 && t[1] == "=" && t[2] == "OpTypeVector" && halfTypes.count(t[3])) halfTypes.insert(t[0]);
+      if (t.size() >= 4 && t[1] == "=") typeOf[t[0]] = t[3];
+      if (t.size() >= 3 && t[2].rfind("OpImageSample", 0) == 0) samples.push_back(line);
+    }
+    if (stage == package::Stage::Fragment) {
+      EXPECT_FALSE(samples.empty());
+    }
+    for (const std::string& sample : samples) {
+      std::istringstream in(sample);
+      std::vector<std::string> t;
+      for (std::string w; in >> w;) t.push_back(w);
+      for (size_t i = 5; i < t.size(); ++i)
+        EXPECT_EQ(halfTypes.count(typeOf[t[i]]), 0u) << t[i] << " is a 16-bit float operand of: " << sample;
+    }
+  });
   ir::SourceFile file{"hard_case.mat", kHardCaseMaterial};
   ir::Diagnostics diags(file);
   auto material = ir::compileSource(file, diags);
