@@ -189,7 +189,8 @@ struct VulkanOptions {
   // The HDR target's format; creation fails when the device cannot render to, read and sample it.
   HdrFormat hdrFormat = HdrFormat::Rgba16Float;
   // Testing: enable 16-bit float arithmetic (shaderFloat16) for packages built with
-  // compiler::BuildOptions::fp16TrueHalf; creation fails on a device without it.
+  // compiler::BuildOptions::fp16TrueHalf; creation fails on a device without it. Only for the
+  // backend's own device: an app's device (vulkan_backend.h) comes with the features it enabled.
   bool float16Arithmetic = false;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;

@@ -11,6 +11,8 @@ enum class SpecularModel { GgxSmith, GgxFastV, FusedHammon, Zioma, Lut };
 // The material language's names of the specular models, indexed by SpecularModel
 // (`tier mid { specular = zioma }`).
 inline constexpr const char* kSpecularModelNames[] = {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"};
+static_assert(sizeof kSpecularModelNames / sizeof *kSpecularModelNames == size_t(SpecularModel::Lut) + 1,
+              "one name per SpecularModel, in its order");
 enum class DiffuseModel { Pixel, Vertex };
 enum class ColorSpace { Linear, GammaHack };
 enum class PrecisionPolicy { Highp, Mediump };
@@ -38,7 +40,7 @@ struct TierConfig {
 //            split-sum IBL + SH3, energy compensation on direct and IBL specular.
 // high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
 // mid:       GGX D × Hammon's V fused into one division, F = f0 (chunks/specular_fused_hammon.glsl;
-//            issue 10: Zioma's fused V·F before, 30.8 → 38.2 dB on brushed_gold for no cost),
+//            issue 10: Zioma's fused V·F before, 30.8 → 38.3 dB on brushed_gold, the same Mali cycles),
 //            per-vertex diffuse and SH3, mediump;
 //            split-sum IBL with energy compensation (issue 10: +13 dB on the spheres scene and
 //            rough gold 18.9 → 28.4 dB against Karis's analytic fit, for +0.04 cycles).
