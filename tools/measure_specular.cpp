@@ -74,6 +74,9 @@ int main() {
          return distributionGgx(p.alpha, p.NoH) * visibilityHammon(p.alpha, p.NoV, p.NoL) * F;
        },
        [](double a, double v) { return albedoHammon(a, v, 1.0, 4096); }},
+      {"fused_hammon (mid: D·Hammon V·f0, one division)",
+       [](const ShadingPoint& p) { return specularFusedHammon(p.alpha, p.NoV, p.NoL, p.NoH) * p.f0; },
+       [](double a, double v) { return albedoFusedHammon(a, v, 1.0, 4096); }},
       {"zioma published (URP: max(LoH²,0.1)(α+0.5))",
        [](const ShadingPoint& p) { return specularZioma(kZiomaPublished, p.alpha, p.NoH, p.LoH) * p.f0; },
        [](double a, double v) { return albedoZioma(kZiomaPublished, a, v, 1.0, 4096); }},
