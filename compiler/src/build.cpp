@@ -349,8 +349,7 @@ class VariantJobs {
     if (trueHalf(v)) {
       // The same conversion as Metal's, then 32-bit image operands (lavapipe cannot compile half
       // ones); validated, since it ships in place of the stage.
-      uint32_t converted = 0;
-      if (!lowerHalfImageOperands(&metal, &converted, error)) return false;
+      if (!lowerHalfImageOperands(&metal, error)) return false;
       log.clear();
       if (!validateSpirv(metal, &log)) {
         *error = "internal error: the true-half " + std::string(stage) + " stage of variant " + v.keyText +

@@ -30,9 +30,8 @@ uint32_t maskPosition(uint32_t op) {
 
 }  // namespace
 
-bool lowerHalfImageOperands(std::vector<uint32_t>* words, uint32_t* converted, std::string* error) {
+bool lowerHalfImageOperands(std::vector<uint32_t>* words, std::string* error) {
   const std::vector<uint32_t>& in = *words;
-  *converted = 0;
   // Pass 1: float types by width and size, value types, where the functions begin.
   uint32_t float32 = 0;
   std::map<uint32_t, uint32_t> halfSize;        // 16-bit float type id -> components (1 = scalar)
@@ -87,7 +86,6 @@ bool lowerHalfImageOperands(std::vector<uint32_t>* words, uint32_t* converted, s
         uint32_t fresh = bound++;
         body.insert(body.end(), {(4u << 16) | SpvOpFConvert, float32TypeOf(typeOf[w[i]]), fresh, w[i]});
         w[i] = fresh;
-        ++*converted;
       }
     }
     body.insert(body.end(), w.begin(), w.end());

@@ -18,8 +18,8 @@
 namespace facet::compiler {
 
 // Rewrites the module in place (id bound updated; a 32-bit float vector type is added where the
-// module has none of the needed size) and sets *converted to the number of operands converted.
-// False with *error on malformed SPIR-V (the module is then unchanged).
-bool lowerHalfImageOperands(std::vector<uint32_t>* words, uint32_t* converted, std::string* error);
+// module has none of the needed size). False with *error on malformed SPIR-V (the module is then
+// unchanged).
+bool lowerHalfImageOperands(std::vector<uint32_t>* words, std::string* error);
 
 }  // namespace facet::compiler
