@@ -7,12 +7,12 @@
 // loses the energy of light bouncing between microfacets, up to 68 % for rough metals; scaling
 // every specular term by 1 + f0 · (1/dfg.y − 1) restores it (for f0 = 1 the factor is 1/albedo,
 // so a white metal in a white furnace reflects exactly the environment).
-// Needs ibl_prefiltered.glsl. Textures: facet_environment (RGBA16F octahedral, clamp, kEnvironmentLevels levels),
+// Needs ibl_prefiltered.glsl. Textures: facet_environment (RGBA16F cube map, kEnvironmentLevels levels),
 // facet_dfgLut (RG16F 64 × 64, clamp), declared by the assembler in the variants using them.
 // fp16: radiance is pre-exposed on the CPU (the lights' contract), so RGBA16F and mediump hold it;
 // dfg ∈ [0, 1] and dfg.y ≥ 0.316 (docs/ibl.md), so 1/dfg.y ≤ 3.2 needs no clamp. The lookup
-// coordinates are mediump (octahedral.glsl has the bound); both reads use textureLod, so no derivative is taken
-// across the map's folds and the DFG table needs none.
+// direction and coordinates are mediump (environment_cube.glsl has the bound); both reads use
+// textureLod, so no derivatives are taken (the DFG table needs none).
 
 // (B, A + B): texel centres sit at (i + 0.5)/64 on both axes, so no remapping (docs/ibl.md).
 vec2 dfg_terms(float NoV, float perceptualRoughness) {

@@ -8,12 +8,11 @@
 //   f0·A + B ≈ min((1 − max(r, n·v))³ + f0, 1)         (facet::ibl::envBrdfZiomaSaturated)
 // It ignores roughness darkening of f0 (A = 1): rough metals read up to 0.68 too bright against
 // the DFG table (docs/ibl.md). Two texture reads at constant lods and ~10 ALU ops, no division.
-// fp16: as ibl_split_sum.glsl (pre-exposed radiance, mediump lookup coordinates). Needs octahedral.glsl.
+// fp16: as ibl_split_sum.glsl (pre-exposed radiance, mediump lookup direction). Needs environment_cube.glsl.
 
 vec3 two_mip_radiance(vec3 direction, float perceptualRoughness) {
-    vec2 uv = octahedral_uv(direction);
-    vec3 sharp = textureLod(facet_environment, uv, 0.0).rgb;
-    vec3 rough = textureLod(facet_environment, uv, ENVIRONMENT_MAX_LOD).rgb;
+    vec3 sharp = textureLod(facet_environment, direction, 0.0).rgb;
+    vec3 rough = textureLod(facet_environment, direction, ENVIRONMENT_MAX_LOD).rgb;
     return mix(sharp, rough, perceptualRoughness);
 }
 

@@ -16,7 +16,7 @@
 #endif
 // The assembler places each chunk once, at its first #include, whatever the #if around it: a
 // chunk shared by several ambient models is included outside the conditionals.
-#include "octahedral.glsl"
+#include "environment_cube.glsl"
 #if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC)
 #include "ibl_prefiltered.glsl"
 #endif

@@ -390,14 +390,14 @@ TEST(Prefilter, RejectsSourcesThatDoNotHalveEvenly) {
   EXPECT_THROW(prefilterEnvironment(EquirectImage(64, 32), options), std::invalid_argument);
 }
 
-// --- octahedral environment map (what the runtime uploads) ---
+// --- cube map environment (what the runtime uploads) ---
 
 namespace {
 
-// Directions over the whole sphere: a Fibonacci set plus the axes and the folds' edges.
+// Directions over the whole sphere: a Fibonacci set plus the axes and points on face edges.
 std::vector<Vec3> testDirections() {
   std::vector<Vec3> out = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
-                           {1, -1e-9, 1}, {-1, -1e-9, 1}, {0.3, -0.2, -0.7}};
+                           {1, -1e-9, 1}, {-1, 1, 1}, {0.3, -0.2, -0.7}};
   const int n = 500;
   for (int i = 0; i < n; ++i) {
     double y = 1 - 2 * (i + 0.5) / n, rho = std::sqrt(1 - y * y), phi = i * 2.399963229728653;
@@ -407,119 +407,136 @@ std::vector<Vec3> testDirections() {
   return out;
 }
 
-const std::vector<OctahedralImage>& prefilteredSunSkyOctahedral() {
-  static const std::vector<OctahedralImage> levels =
-      prefilterEnvironmentOctahedral(renderEquirect(128, 64, sunSkyRadiance), 128);
+const std::vector<CubeImage>& prefilteredSunSkyCube() {
+  static const std::vector<CubeImage> levels = prefilterEnvironmentCube(renderEquirect(128, 64, sunSkyRadiance), 64);
   return levels;
 }
 
 }  // namespace
 
-TEST(Octahedral, CoordinatesInvertTheDirectionMapping) {
+TEST(CubeMap, CoordinatesInvertTheDirectionMapping) {
   for (Vec3 d : testDirections()) {
-    double u, v;
-    octahedralCoordinates(d, &u, &v);
-    EXPECT_GE(u, 0.0);
-    EXPECT_LE(u, 1.0);
-    EXPECT_GE(v, 0.0);
-    EXPECT_LE(v, 1.0);
-    expectNearVec3(octahedralDirection(u, v), d, 1e-12);
-  }
-  expectNearVec3(octahedralDirection(0.5, 0.5), {0, 1, 0}, 1e-15);
-  for (double u : {0.0, 1.0})
-    for (double v : {0.0, 1.0}) expectNearVec3(octahedralDirection(u, v), {0, -1, 0}, 1e-15);
-}
-
-// Each edge point is the direction of its mirror across the edge's midpoint, so the outer texel
-// ring (which holds edge directions) pairs texel i with texel size − 1 − i on every edge.
-TEST(Octahedral, OuterRingTexelsHoldTheSameDirectionAsTheirMirrors) {
-  for (int size : {8, 128}) {
-    for (int i = 0; i < size; ++i) {
-      const int j = size - 1 - i;
-      expectNearVec3(octahedralTexelDirection(size, i, 0), octahedralTexelDirection(size, j, 0), 1e-12);
-      expectNearVec3(octahedralTexelDirection(size, i, size - 1), octahedralTexelDirection(size, j, size - 1), 1e-12);
-      expectNearVec3(octahedralTexelDirection(size, 0, i), octahedralTexelDirection(size, 0, j), 1e-12);
-      expectNearVec3(octahedralTexelDirection(size, size - 1, i), octahedralTexelDirection(size, size - 1, j), 1e-12);
-    }
-    // An inner texel holds its centre's direction.
-    double c = (size / 2 + 0.5) / size;
-    expectNearVec3(octahedralTexelDirection(size, size / 2, 1), octahedralDirection(c, 1.5 / size), 1e-15);
+    int face = -1;
+    double s, t;
+    cubeCoordinates(d, &face, &s, &t);
+    ASSERT_GE(face, 0);
+    ASSERT_LT(face, kCubeFaces);
+    EXPECT_GE(s, 0.0);
+    EXPECT_LE(s, 1.0);
+    EXPECT_GE(t, 0.0);
+    EXPECT_LE(t, 1.0);
+    expectNearVec3(cubeDirection(face, s, t), d, 1e-12);
   }
 }
 
-// Clamp-to-edge bilinear reconstruction of a smooth function is continuous across the folds: two
-// points a hair either side of an edge (mirror images in the map, one direction on the sphere)
-// read the same value, and the map follows the function within its texel size everywhere.
-TEST(Octahedral, BilinearSamplingHasNoSeamAtTheFolds) {
+// The face table of the Vulkan specification (and GLES 3.0 §3.8.10), read off for one direction
+// per face: +X (sc, tc) = (−z, −y), −X (z, −y), +Y (x, z), −Y (x, −z), +Z (x, −y), −Z (−x, −y),
+// over the major axis, then (· + 1)/2. The renders (IblShading.*) check the GPU agrees.
+TEST(CubeMap, FacesFollowTheApiTable) {
+  struct Case {
+    Vec3 d;
+    int face;
+    double s, t;
+  };
+  const Case cases[] = {
+      {{2, 0.5, 1}, 0, 0.25, 0.375},   {{-2, 0.5, 1}, 1, 0.75, 0.375}, {{0.5, 2, 1}, 2, 0.625, 0.75},
+      {{0.5, -2, 1}, 3, 0.625, 0.25},  {{0.5, 1, 2}, 4, 0.625, 0.25},  {{0.5, 1, -2}, 5, 0.375, 0.25},
+  };
+  for (const Case& c : cases) {
+    int face = -1;
+    double s, t;
+    cubeCoordinates(c.d, &face, &s, &t);
+    EXPECT_EQ(face, c.face);
+    EXPECT_NEAR(s, c.s, 1e-15) << c.face;
+    EXPECT_NEAR(t, c.t, 1e-15) << c.face;
+  }
+  // Texel (column, row) of a face is at (s, t) = ((column + 0.5) / size, (row + 0.5) / size).
+  int face = -1;
+  double s, t;
+  cubeCoordinates(cubeTexelDirection(8, 3, 1, 6), &face, &s, &t);
+  EXPECT_EQ(face, 3);
+  EXPECT_NEAR(s, 1.5 / 8, 1e-12);
+  EXPECT_NEAR(t, 6.5 / 8, 1e-12);
+}
+
+// Seamless bilinear reconstruction of a smooth function: two points a hair either side of a face
+// edge (or near a corner) read the same value, and the map follows the function within its
+// texel size everywhere.
+TEST(CubeMap, BilinearSamplingHasNoSeamAtFaceEdges) {
   auto f = [](Vec3 d) { return Vec3{1.0 + d.x, 2.0 + d.z, 1.5 + d.y + 0.5 * d.x * d.z}; };
-  const int size = 32;
-  OctahedralImage image(size);
-  for (int row = 0; row < size; ++row)
-    for (int column = 0; column < size; ++column) image.setTexel(column, row, f(octahedralTexelDirection(size, column, row)));
+  const int size = 16;
+  CubeImage image(size);
+  for (int face = 0; face < kCubeFaces; ++face)
+    for (int row = 0; row < size; ++row)
+      for (int column = 0; column < size; ++column) image.setTexel(face, column, row, f(cubeTexelDirection(size, face, column, row)));
   double worstSeam = 0;
+  const double e = 1e-9;
   for (int i = 0; i <= 100; ++i) {
-    double a = i / 100.0, e = 1e-9;
-    worstSeam = std::max({worstSeam, maxComponent(sampleBilinear(image, a, e) - sampleBilinear(image, 1 - a, e)),
-                          maxComponent(sampleBilinear(image, a, 1 - e) - sampleBilinear(image, 1 - a, 1 - e)),
-                          maxComponent(sampleBilinear(image, e, a) - sampleBilinear(image, e, 1 - a)),
-                          maxComponent(sampleBilinear(image, 1 - e, a) - sampleBilinear(image, 1 - e, 1 - a))});
+    double a = -1 + 2 * i / 100.0;  // along the edge, corners included
+    worstSeam = std::max({worstSeam,
+                          maxComponent(sampleBilinear(image, {1, a, 1 - e}) - sampleBilinear(image, {1 - e, a, 1})),
+                          maxComponent(sampleBilinear(image, {a, 1, 1 - e}) - sampleBilinear(image, {a, 1 - e, 1})),
+                          maxComponent(sampleBilinear(image, {-1, 1 - e, a}) - sampleBilinear(image, {-1 + e, 1, a})),
+                          maxComponent(sampleBilinear(image, {a, -1, -1 + e}) - sampleBilinear(image, {a, -1 + e, -1}))});
   }
   EXPECT_LT(worstSeam, 1e-6);
   double worst = 0;
-  for (Vec3 d : testDirections()) {
-    double u, v;
-    octahedralCoordinates(d, &u, &v);
-    worst = std::max(worst, maxComponent(sampleBilinear(image, u, v) - f(d)));
-  }
-  std::printf("octahedral %d²: seam %.2g, worst |bilinear − f| %.4f\n", size, worstSeam, worst);
-  EXPECT_LT(worst, 0.1);  // |∇f| ≤ ~1.5 per radian, texels ~0.1 rad at 32²
+  for (Vec3 d : testDirections()) worst = std::max(worst, maxComponent(sampleBilinear(image, d) - f(d)));
+  std::printf("cube %d² faces: seam %.2g, worst |bilinear − f| %.4f\n", size, worstSeam, worst);
+  EXPECT_LT(worst, 0.1);  // |∇f| ≤ ~1.5 per radian, texels ≤ ~0.1 rad at 16²
 }
 
-TEST(Octahedral, PrefilteredLevelsHalveAndKeepAConstantEnvironment) {
-  const auto& levels = prefilteredSunSkyOctahedral();
+TEST(CubeMap, PrefilteredLevelsHalveAndKeepAConstantEnvironment) {
+  const auto& levels = prefilteredSunSkyCube();
   ASSERT_EQ(levels.size(), 5u);
-  for (int m = 0; m < 5; ++m) EXPECT_EQ(levels[size_t(m)].size, 128 >> m);
+  for (int m = 0; m < 5; ++m) EXPECT_EQ(levels[size_t(m)].size, 64 >> m);
   Vec3 L{0.5, 2.0, 7.0};
-  for (const OctahedralImage& level : prefilterEnvironmentOctahedral(renderEquirect(64, 32, [&](Vec3) { return L; }), 32))
-    for (int row = 0; row < level.size; ++row)
-      for (int column = 0; column < level.size; ++column) {
-        Vec3 v = level.texel(column, row);
-        EXPECT_NEAR(v.x / L.x, 1.0, 1e-5);
-        EXPECT_NEAR(v.z / L.z, 1.0, 1e-5);
-      }
-  EXPECT_THROW(prefilterEnvironmentOctahedral(renderEquirect(64, 32, [&](Vec3) { return L; }), 24), std::invalid_argument);
-  EXPECT_THROW(prefilterEnvironmentOctahedral(renderEquirect(64, 32, [&](Vec3) { return L; }), 16), std::invalid_argument);
+  for (const CubeImage& level : prefilterEnvironmentCube(renderEquirect(64, 32, [&](Vec3) { return L; }), 16))
+    for (int face = 0; face < kCubeFaces; ++face)
+      for (int row = 0; row < level.size; ++row)
+        for (int column = 0; column < level.size; ++column) {
+          Vec3 v = level.texel(face, column, row);
+          EXPECT_NEAR(v.x / L.x, 1.0, 1e-5);
+          EXPECT_NEAR(v.z / L.z, 1.0, 1e-5);
+        }
+  EXPECT_THROW(prefilterEnvironmentCube(renderEquirect(64, 32, [&](Vec3) { return L; }), 24), std::invalid_argument);
+  EXPECT_THROW(prefilterEnvironmentCube(renderEquirect(64, 32, [&](Vec3) { return L; }), 8), std::invalid_argument);
 }
 
 // The same checks as the equirect levels (Prefilter.*): level 0 is the source (read bilinearly
 // at each texel's direction), the rough levels are the GGX lobe integral of the radiance
-// function, 2 % (the prefilter's bound, docs/ibl.md).
-TEST(Octahedral, PrefilteredLevelsMatchTheSourceAndTheLobeIntegral) {
-  const auto& levels = prefilteredSunSkyOctahedral();
+// function: 2 % at level 2, 3 % at level 4, whose RMS error over the level is 2.6 % with the
+// default 512 samples (docs/ibl.md, "Prefiltering"; measured here: 2.2 % at worst, level 4 at the
+// texel 88° from the sun).
+TEST(CubeMap, PrefilteredLevelsMatchTheSourceAndTheLobeIntegral) {
+  const auto& levels = prefilteredSunSkyCube();
   const EquirectImage source = renderEquirect(128, 64, sunSkyRadiance);
-  const OctahedralImage& level0 = levels[0];
-  for (int row = 0; row < level0.size; row += 3)
-    for (int column = 0; column < level0.size; column += 3) {
-      double s, t;
-      equirectCoordinates(octahedralTexelDirection(level0.size, column, row), &s, &t);
-      Vec3 want = sampleBilinear(source, s, t), got = level0.texel(column, row);
-      EXPECT_NEAR(got.x, want.x, 1e-5 * want.x);
-    }
+  const CubeImage& level0 = levels[0];
+  for (int face = 0; face < kCubeFaces; ++face)
+    for (int row = 0; row < level0.size; row += 3)
+      for (int column = 0; column < level0.size; column += 3) {
+        double s, t;
+        equirectCoordinates(cubeTexelDirection(level0.size, face, column, row), &s, &t);
+        Vec3 want = sampleBilinear(source, s, t), got = level0.texel(face, column, row);
+        EXPECT_NEAR(got.x, want.x, 1e-5 * want.x);
+      }
   Vec3 away = normalize(kSunAxis + Vec3{0.0, -1.2, 0.0});
   for (int m : {2, 4}) {
-    const OctahedralImage& level = levels[size_t(m)];
+    const CubeImage& level = levels[size_t(m)];
     double r = prefilterLevelRoughness(m, 5);
     for (Vec3 target : {kSunAxis, away, kSunAxis * -1.0}) {
-      double u, v;
-      octahedralCoordinates(target, &u, &v);
-      int column = std::min(int(u * level.size), level.size - 1), row = std::min(int(v * level.size), level.size - 1);
+      int face = 0;
+      double s, t;
+      cubeCoordinates(target, &face, &s, &t);
+      int column = std::min(int(s * level.size), level.size - 1), row = std::min(int(t * level.size), level.size - 1);
       Vec3 want = toVec3(ref::ggxLobeAverageByGrid([](glm::dvec3 d) { return toGlm(sunSkyRadiance(toVec3(d))); },
-                                                    toGlm(octahedralTexelDirection(level.size, column, row)), r * r));
-      Vec3 got = level.texel(column, row);
-      std::printf("octahedral level %d texel (%d, %d): prefiltered %.4f, lobe integral %.4f\n", m, column, row, got.x,
-                  want.x);
-      EXPECT_NEAR(got.x / want.x, 1.0, 0.02) << "level " << m;
-      EXPECT_NEAR(got.z / want.z, 1.0, 0.02) << "level " << m;
+                                                    toGlm(cubeTexelDirection(level.size, face, column, row)), r * r));
+      Vec3 got = level.texel(face, column, row);
+      std::printf("cube level %d face %d texel (%d, %d): prefiltered %.4f, lobe integral %.4f\n", m, face, column, row,
+                  got.x, want.x);
+      const double bound = m == 4 ? 0.03 : 0.02;
+      EXPECT_NEAR(got.x / want.x, 1.0, bound) << "level " << m;
+      EXPECT_NEAR(got.z / want.z, 1.0, bound) << "level " << m;
     }
   }
 }

@@ -52,7 +52,9 @@ pkg::Package samplePackage() {
   pkg::Package p;
   p.compilerVersion = "matc 0.1.0 (test)";
   p.material.name = "brick";
-  p.material.shading = "lit";
+  // Unlit: a lit package is stamped 1.4 whatever else it holds (below), which would hide the
+  // older minors' stamps these tests check.
+  p.material.shading = "unlit";
   p.material.blending = "opaque";
   p.material.paramBlockSize = 64;
   p.material.params = {
@@ -653,7 +655,27 @@ TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
       EXPECT_EQ(pkg::write(*again.package), written);
     }
   }
-  EXPECT_EQ(seeds, 4u);
+  EXPECT_EQ(seeds, 5u);
+}
+
+// Format 1.4: a lit material's shaders sample the environment as a cube map, so a lit package is
+// stamped 1.4 and a reader (or runtime) of 1.3, which binds an octahedral map there, refuses it.
+// This reader still reads older lit packages (the runtime refuses to draw them:
+// PreshaderRender.AnOlderLitPackageIsRefusedWithARebuildMessage).
+TEST(Package, LitPackagesAreStampedOneFour) {
+  pkg::Package p = samplePackage();
+  p.material.shading = "lit";
+  std::vector<uint8_t> bytes = pkg::write(p);
+  EXPECT_EQ(loadLE(bytes, 10, 2), 4u);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(*r.package, p);
+  EXPECT_EQ(r.formatMinor, 4u);
+  storeLE(bytes, 10, 3, 2);  // the same file as a 1.3 writer stamped it
+  resealChecksum(bytes);
+  r = pkg::read(bytes);
+  ASSERT_TRUE(r.package.has_value()) << r.error;
+  EXPECT_EQ(r.formatMinor, 3u);
 }
 
 // Format 1.2: the Metal argument slots (section MSLB), written only when there are some, and

@@ -133,8 +133,9 @@ pkg::Package preshadedPackage(std::vector<PreshaderOp> ops, std::vector<uint32_t
 }  // namespace
 
 TEST(PreshaderPackage, ProgramsRoundTripAndStampFormat13) {
-  const pkg::Package p = preshadedPackage({op(Op::LoadParam, 0, 0, 0, 0, 1), op(Op::Clamp, 1, 0, 0, 0, 0, {0.089f, 1, 0, 0}),
-                                           op(Op::Mul, 2, 1, 1), store(2, 16, 1)});
+  pkg::Package p = preshadedPackage({op(Op::LoadParam, 0, 0, 0, 0, 1), op(Op::Clamp, 1, 0, 0, 0, 0, {0.089f, 1, 0, 0}),
+                                     op(Op::Mul, 2, 1, 1), store(2, 16, 1)});
+  p.material.shading = "unlit";  // a lit package is 1.4 whatever else it holds (Package.LitPackagesAreStampedOneFour)
   const pkg::ReadResult r = pkg::read(pkg::write(p));
   ASSERT_TRUE(r.package) << r.error;
   EXPECT_EQ(*r.package, p);

@@ -10,6 +10,7 @@
 
 #include "facet/render_backend.h"
 #include "facet/runtime/material_instance.h"
+#include "facet/package_reader.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 
@@ -128,30 +129,27 @@ TEST(PreshaderRender, AnInstancesParameterChangeRerunsThePreshader) {
   EXPECT_TRUE(backend->validationErrors().empty());
 }
 
-// Old packages keep working: red_plastic as the 1.2 compiler wrote it (no PRSH: every input per
-// pixel, a 32-byte block) loads and draws the sphere as today's preshaded package does.
-TEST(PreshaderRender, APackageWithoutPreshaderDrawsAsBefore) {
+// An older lit package cannot be drawn: red_plastic as the 1.2 compiler wrote it samples the
+// environment as an octahedral map, and this runtime binds a cube map there (format 1.4). The
+// reader still reads it (matc info works); loading it for drawing fails with a message that names
+// both formats and how to rebuild, rather than drawing garbage or tripping validation.
+TEST(PreshaderRender, AnOlderLitPackageIsRefusedWithARebuildMessage) {
   const std::string dir = facet::test::scratchDir("preshader-1.2");
-  std::filesystem::copy_file(facet::test::sourceDir() + "/tests/fuzz/package_corpus/red_plastic_high_1_2.matpkg",
-                             dir + "/red_plastic.matpkg");
+  const std::string path = dir + "/red_plastic.matpkg";
+  std::filesystem::copy_file(facet::test::sourceDir() + "/tests/fuzz/package_corpus/red_plastic_high_1_2.matpkg", path);
   std::string error;
-  auto loaded = facet::runtime::LoadedMaterial::load(dir + "/red_plastic.matpkg", &error);
-  ASSERT_TRUE(loaded) << error;
-  EXPECT_EQ(loaded->reader().formatMinor(), 2);
-  auto material = facet::runtime::Material::create(std::move(*loaded), {"high", true, 0}, &error);
-  ASSERT_NE(material, nullptr) << error;
-  EXPECT_EQ(material->createInstance()->block().bytes.size(), 32u);
+  auto reader = facet::package::PackageReader::openFile(path, &error);
+  ASSERT_TRUE(reader) << error;
+  EXPECT_EQ(reader->formatMinor(), 2);
+  EXPECT_FALSE(facet::runtime::LoadedMaterial::load(path, &error));
+  EXPECT_NE(error.find(path + ": package format 1.2 samples the environment as an octahedral map"), std::string::npos)
+      << error;
+  EXPECT_NE(error.find("matc compile"), std::string::npos) << error;
 
   auto scene = facet::runtime::loadScene(facet::test::examplePath("scenes/sphere.json"), &error);
   ASSERT_TRUE(scene) << error;
-  scene->width = scene->height = 128;
-  auto backend = facet::runtime::createVulkanBackend({true}, &error);
-  ASSERT_NE(backend, nullptr) << error;
-  const std::vector<uint8_t> old = render(*backend, *scene, dir, &error);
-  ASSERT_FALSE(old.empty()) << error;
-  const std::vector<uint8_t> now = render(*backend, *scene, packages().preshaded, &error);
-  ASSERT_FALSE(now.empty()) << error;
-  EXPECT_LE(maxDifference(old, now), 1);
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, dir, &error));
+  EXPECT_NE(error.find("octahedral map"), std::string::npos) << error;
 }
 
 // The forward shaders read FrameUniforms::lightDirection as a unit vector (shader_abi.h): the

@@ -44,7 +44,7 @@ layout(std140) uniform MaterialParams {
   vec4 extra;
 };
 uniform highp sampler2D facet_dfgLut;
-uniform highp sampler2D facet_environment;
+uniform highp samplerCube facet_environment;
 uniform highp sampler2D materialTexture;
 in vec2 vUv;
 in vec4 vVertexSample;
@@ -53,7 +53,7 @@ void main() {
   fragColor = weights.x * texture(materialTexture, vUv) +
               weights.y * textureLod(materialTexture, vUv, extra.x) +
               weights.z * texture(facet_dfgLut, vUv) +
-              weights.w * texture(facet_environment, vUv) +
+              weights.w * texture(facet_environment, vec3(2.0 * vUv - 1.0, 1.0)) +
               extra.y * vVertexSample;
 }
 )";

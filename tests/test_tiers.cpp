@@ -47,20 +47,20 @@ using facet::test::psnr;
 TEST(Tiers, MidSpecularHasOneDivision) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(built);
-  // The whole mid fragment stage: the fused D·V term is its only division besides the octahedral
-  // environment lookup's 1/L1 norm that every tier has and the energy compensation's 1/dfg.y
-  // that every split-sum tier with compensation has (per-vertex diffuse and the precision clamps
-  // add none). The GGX/Smith tiers divide twice for the light (D and V).
-  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).divisions, 3u);
-  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).divisions, 2u);
-  EXPECT_EQ(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).divisions, 4u);
+  // The whole mid fragment stage: the fused D·V term is its only division besides the energy
+  // compensation's 1/dfg.y that every split-sum tier with compensation has (per-vertex diffuse,
+  // the precision clamps and the cube map lookup add none). The GGX/Smith tiers divide twice for
+  // the light (D and V).
+  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).divisions, 2u);
+  EXPECT_EQ(costOf(spirvOf(*built, "mid.dir0", Stage::Fragment)).divisions, 1u);
+  EXPECT_EQ(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).divisions, 3u);
   EXPECT_LT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).aluOps,
             costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).aluOps);
 }
 
 // The low tier's specular is one table read: no D, V or F is evaluated, so the whole fragment
-// stage has two divisions, the octahedral lookup's 1/L1 norm and the energy compensation's
-// 1/dfg.y (mid has its fused D·V besides), one texture sample more than mid's (both read the
+// stage has one division, the energy compensation's 1/dfg.y (mid has its fused D·V besides),
+// one texture sample more than mid's (both read the
 // environment and the DFG table for their split-sum ambient), and fewer ALU ops than mid.
 // Without the light there is no specular, and the table is neither sampled nor listed for the
 // variant.
@@ -71,8 +71,8 @@ TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
     ASSERT_TRUE(built);
     auto low = costOf(spirvOf(*built, "low.dir1", Stage::Fragment));
     auto mid = costOf(spirvOf(*built, "mid.dir1", Stage::Fragment));
-    EXPECT_EQ(low.divisions, 2u);
-    EXPECT_EQ(mid.divisions, 3u);
+    EXPECT_EQ(low.divisions, 1u);
+    EXPECT_EQ(mid.divisions, 2u);
     EXPECT_EQ(low.textureSamples, mid.textureSamples + 1);  // the table
     EXPECT_LT(low.aluOps, mid.aluOps);
     EXPECT_EQ(costOf(spirvOf(*built, "low.dir0", Stage::Fragment)).textureSamples,
@@ -153,8 +153,8 @@ TEST(Tiers, GammaHackSumsLitTermsWithoutASquareRootPerTerm) {
 // the environment and the DFG table, the analytic model only the environment (Karis's fit
 // replaces the table: a few more ALU ops, one exp2), the two-mip model the environment twice at
 // constant lods; low's dir1 adds its specular LUT. Every tier ships split-sum with energy
-// compensation, which costs one division (1/dfg.y) in the ambient term; the octahedral
-// environment lookup is the other of dir0 (its 1/L1 norm), in every tier. The analytic and
+// compensation, which costs one division (1/dfg.y) in the ambient term, the only one of dir0 (the
+// cube map lookup needs none). The analytic and
 // two-mip models are measured as mid and low used them before (no compensation: it needs the
 // table's dfg.y).
 TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
@@ -169,9 +169,9 @@ TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
     EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).textureSamples, expected) << key;
   for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
     EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Vertex)).textureSamples, 0u) << key;
-  EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).divisions, 4u);
+  EXPECT_EQ(costOf(spirvOf(*built, "reference.dir1", Stage::Fragment)).divisions, 3u);
   for (const char* key : {"high.dir0", "mid.dir0", "low.dir0"})
-    EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).divisions, 2u) << key;
+    EXPECT_EQ(costOf(spirvOf(*built, key, Stage::Fragment)).divisions, 1u) << key;
 
   facet::compiler::BuildOptions options;
   options.adjustTier = [](Tier tier, facet::permutations::TierConfig* config) {
@@ -187,8 +187,8 @@ TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
   EXPECT_EQ(analytic.textureSamples, 1u);
   EXPECT_EQ(twoMip.textureSamples, 2u);
   EXPECT_EQ(costOf(spirvOf(*other, "low.dir1", Stage::Fragment)).textureSamples, 3u);
-  EXPECT_EQ(analytic.divisions, 1u);
-  EXPECT_EQ(twoMip.divisions, 1u);
+  EXPECT_EQ(analytic.divisions, 0u);
+  EXPECT_EQ(twoMip.divisions, 0u);
   // Karis's fit: one exp2 more than split-sum's table read, nothing else transcendental added.
   EXPECT_EQ(analytic.transcendentalOps, high.transcendentalOps + 1);
   const auto mid = costOf(spirvOf(*built, "mid.dir0", Stage::Fragment));
@@ -208,7 +208,7 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
   EXPECT_GT(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   EXPECT_GT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   // low's fragment stage is the smallest, so what stays highp (the view vector from positions)
-  // weighs most there. Since the environment lookup went octahedral it is mediump too.
+  // weighs most there. Since the environment lookup went octahedral, then cube, it is mediump too.
   EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 80.0);
 }
 
@@ -515,10 +515,11 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
   EXPECT_TRUE(vk->validationErrors().empty());
 }
 
-// The environment is an octahedral map (chunks/octahedral.glsl): no lit fragment stage of any
-// example material, tier or light set evaluates an inverse trigonometric function, which the
-// equirect lookup did twice per read (highp atan + acos, 0.34 Mali cycles: issue 10).
-TEST(Tiers, NoLitFragmentStageEvaluatesInverseTrigonometry) {
+// The environment is a cube map (chunks/environment_cube.glsl): every lit fragment stage of every
+// example material, tier and light set reads it through a cube sampler, and none evaluates an
+// inverse trigonometric function, which the equirect lookup did twice per read (highp atan +
+// acos, 0.34 Mali cycles: issue 10), or the octahedral fold's division.
+TEST(Tiers, LitFragmentStagesReadTheEnvironmentAsACubeMap) {
   facet::compiler::BuildOptions options;
   options.pointLightCounts = {0, 2};
   int checked = 0;
@@ -533,6 +534,7 @@ TEST(Tiers, NoLitFragmentStageEvaluatesInverseTrigonometry) {
         const std::string text = facet::compiler::disassembleSpirv(words);
         for (const char* op : {" Atan ", " Atan2 ", " Acos ", " Asin "})
           EXPECT_EQ(text.find(op), std::string::npos) << path << " " << v.key << " uses" << op;
+        EXPECT_NE(text.find("OpTypeImage %float Cube"), std::string::npos) << path << " " << v.key;
         ++checked;
       }
     }

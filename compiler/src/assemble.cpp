@@ -82,8 +82,8 @@ std::string samplerLayout(Flavour flavour, uint32_t set, uint32_t binding) {
 }
 
 std::string frameSampler(Flavour flavour, const abi::SamplerDesc& sampler, const char* precision) {
-  return samplerLayout(flavour, sampler.set, sampler.binding) + "uniform " + precision + " sampler2D " +
-         std::string(sampler.name) + ";\n";
+  return samplerLayout(flavour, sampler.set, sampler.binding) + "uniform " + precision +
+         (sampler.cube ? " samplerCube " : " sampler2D ") + std::string(sampler.name) + ";\n";
 }
 
 // The per-frame and per-object blocks, identical text in both stages (GLSL ES requires blocks

@@ -77,13 +77,14 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& sourceMips, int w
   return out;
 }
 
-OctahedralImage prefilterOctahedralLevel(const std::vector<EquirectImage>& sourceMips, int size, double alpha,
-                                         const PrefilterOptions& options) {
+CubeImage prefilterCubeLevel(const std::vector<EquirectImage>& sourceMips, int size, double alpha,
+                             const PrefilterOptions& options) {
   std::vector<LobeSample> lobe = lobeSamples(alpha, options.samples, options.lodBias);
-  OctahedralImage out(size);
-  for (int row = 0; row < size; ++row)
-    for (int column = 0; column < size; ++column)
-      out.setTexel(column, row, prefilterTexel(sourceMips, lobe, octahedralTexelDirection(size, column, row)));
+  CubeImage out(size);
+  for (int face = 0; face < kCubeFaces; ++face)
+    for (int row = 0; row < size; ++row)
+      for (int column = 0; column < size; ++column)
+        out.setTexel(face, column, row, prefilterTexel(sourceMips, lobe, cubeTexelDirection(size, face, column, row)));
   return out;
 }
 
@@ -117,17 +118,16 @@ std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, con
   return result;
 }
 
-std::vector<OctahedralImage> prefilterEnvironmentOctahedral(const EquirectImage& source, int size,
-                                                            const PrefilterOptions& options) {
+std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int size, const PrefilterOptions& options) {
   const int levels = options.levels;
   checkSource(source, levels);
-  if (size < 2 << (levels - 1) || size % (1 << (levels - 1)) != 0)
-    throw std::invalid_argument("prefilterEnvironmentOctahedral: size must be divisible by 2^(levels - 1), last level >= 2");
+  if (size < 1 << (levels - 1) || size % (1 << (levels - 1)) != 0)
+    throw std::invalid_argument("prefilterEnvironmentCube: size must be divisible by 2^(levels - 1)");
   const std::vector<EquirectImage> sourceMips = sourceMipChain(source);
-  std::vector<OctahedralImage> result;
+  std::vector<CubeImage> result;
   for (int m = 0; m < levels; ++m) {
     double r = prefilterLevelRoughness(m, levels);
-    result.push_back(prefilterOctahedralLevel(sourceMips, size >> m, r * r, options));
+    result.push_back(prefilterCubeLevel(sourceMips, size >> m, r * r, options));
   }
   return result;
 }

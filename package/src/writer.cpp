@@ -143,8 +143,11 @@ std::vector<uint8_t> write(const Package& pkg) {
   ByteWriter out(file);
   out.bytes(kMagic);
   out.u16(kFormatMajor);
-  // The lowest minor that describes the file.
-  out.u16(preshaded                  ? kFirstMinorWithPreshader
+  // The lowest minor that describes the file. A lit material's shaders sample the environment
+  // as a cube map: 1.4, so that a runtime of 1.3 or older (which binds an octahedral map there)
+  // refuses the file instead of drawing it wrong.
+  out.u16(pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
+          : preshaded                ? kFirstMinorWithPreshader
           : !pkg.mslBindings.empty() ? kFirstMinorWithMslBindings
           : usesDictionary           ? kFirstMinorWithDictionary
                                      : 0);

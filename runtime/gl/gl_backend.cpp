@@ -347,6 +347,9 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
   glCullFace(GL_BACK);
   glEnable(GL_DEPTH_TEST);
+  // The environment is a cube map: GLES 3.0 filters across its faces always, desktop GL only
+  // when asked (and GLES has no such enum). Set per pass: an app's context may have changed it.
+  if (!context_->isEs()) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);  // also required for the depth clear to take effect
   glClearBufferfv(GL_COLOR, 0, frame.clearColor);
@@ -441,6 +444,15 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   }
   glUseProgram(program->program.id());
   // Sampler uniforms are program state (set while the program is in use); units are per draw.
+  // The ABI's frame samplers get their units whether or not the frame binds them: a sampler left
+  // at its default unit 0 would share it with facet_dfgLut, and a samplerCube (the environment)
+  // beside a sampler2D on one unit makes the draw invalid (GL_INVALID_OPERATION).
+  static const std::vector<TextureBinding> abiFrameSamplers = [] {
+    std::vector<TextureBinding> bindings;
+    for (const abi::SamplerDesc& s : abi::kFrameSamplers) bindings.push_back({s.binding, std::string(s.name), nullptr});
+    return bindings;
+  }();
+  gl::assignSamplerUnits(program->program.id(), abiFrameSamplers, &cached->samplerUnits);
   gl::assignSamplerUnits(program->program.id(), frame.frameTextures, &cached->samplerUnits);
   gl::assignSamplerUnits(program->program.id(), item.textures, &cached->samplerUnits);
   textures_.bind(frame, item);

@@ -49,27 +49,34 @@ bool TextureCache::init(std::string* error) {
 
 bool TextureCache::upload(const SourceTexture& source, Texture* out, std::string* error) {
   const FormatInfo info = formatInfo(source.format);
+  const GLenum target = source.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+  const int faces = source.cube ? 6 : 1;
   Texture texture = Texture::generate();
-  glBindTexture(GL_TEXTURE_2D, texture.id());
+  glBindTexture(target, texture.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows tightly packed, whatever the width and format
   for (size_t level = 0; level < source.levels.size(); ++level) {
-    // Row 0 of the data is t = 0 in GL as in the contract: no flip.
-    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), static_cast<GLint>(info.internalFormat),
-                 static_cast<GLsizei>(mipExtent(source.width, level)),
-                 static_cast<GLsizei>(mipExtent(source.height, level)), 0, info.format, info.type,
-                 source.levels[level].data());
+    const uint32_t width = mipExtent(source.width, level), height = mipExtent(source.height, level);
+    const size_t faceBytes = size_t{width} * height * info.bytesPerTexel;
+    for (int face = 0; face < faces; ++face) {
+      // Row 0 of the data is t = 0 in GL as in the contract: no flip. A cube map's faces follow
+      // each other in the level's bytes, in GL's order (POSITIVE_X + face).
+      const GLenum image = source.cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GL_TEXTURE_2D;
+      glTexImage2D(image, static_cast<GLint>(level), static_cast<GLint>(info.internalFormat),
+                   static_cast<GLsizei>(width), static_cast<GLsizei>(height), 0, info.format, info.type,
+                   source.levels[level].data() + size_t(face) * faceBytes);
+    }
   }
   // The given levels are the whole chain GL may use: a shorter chain is still complete.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(source.levels.size() - 1));
+  glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(source.levels.size() - 1));
   // Nearest still selects a mip level (like Vulkan's NEAREST mipmap mode), so textureLod works.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER,
                   source.linearFilter ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, source.linearFilter ? GL_LINEAR : GL_NEAREST);
-  const GLint wrap = source.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, source.clampT ? GL_CLAMP_TO_EDGE : wrap);
-  glBindTexture(GL_TEXTURE_2D, 0);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, source.linearFilter ? GL_LINEAR : GL_NEAREST);
+  const GLint wrap = source.repeat && !source.cube ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, source.clampT ? GL_CLAMP_TO_EDGE : wrap);
+  glBindTexture(target, 0);
   if (!checkGlError("texture upload", error)) return false;
   *out = std::move(texture);
   return true;
@@ -107,23 +114,29 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
 }
 
 void TextureCache::bind(const FrameDesc& frame, const DrawItem& draw) {
-  std::array<GLuint, kTextureUnits> wanted;
-  wanted.fill(dummy_.id());
+  // Each unit has a 2D and a cube binding; a unit's sampler reads the one its type names. The
+  // dummy fills every 2D binding left empty; an empty cube binding reads as incomplete, (0, 0, 0, 1)
+  // too, which no lit draw meets (the environment is a frame texture).
+  std::array<GLuint, kTextureUnits> wanted2D, wantedCube;
+  wanted2D.fill(dummy_.id());
+  wantedCube.fill(0);
   const auto assign = [&](const std::vector<TextureBinding>& bindings) {
     for (const TextureBinding& binding : bindings) {
       auto found = textures_.find(binding.texture);
       if (found != textures_.end() && binding.binding < kTextureUnits) {
-        wanted[binding.binding] = found->second.texture.id();
+        (found->second.key.cube ? wantedCube : wanted2D)[binding.binding] = found->second.texture.id();
       }
     }
   };
   assign(frame.frameTextures);
   assign(draw.textures);
   for (uint32_t unit = 0; unit < kTextureUnits; ++unit) {
-    if (bound_[unit] == wanted[unit]) continue;
+    if (bound2D_[unit] == wanted2D[unit] && boundCube_[unit] == wantedCube[unit]) continue;
     glActiveTexture(GL_TEXTURE0 + unit);
-    glBindTexture(GL_TEXTURE_2D, wanted[unit]);
-    bound_[unit] = wanted[unit];
+    if (bound2D_[unit] != wanted2D[unit]) glBindTexture(GL_TEXTURE_2D, wanted2D[unit]);
+    if (boundCube_[unit] != wantedCube[unit]) glBindTexture(GL_TEXTURE_CUBE_MAP, wantedCube[unit]);
+    bound2D_[unit] = wanted2D[unit];
+    boundCube_[unit] = wantedCube[unit];
   }
   glActiveTexture(GL_TEXTURE0);
 }

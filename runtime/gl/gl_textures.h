@@ -42,14 +42,17 @@ class TextureCache {
   bool init(std::string* error);
 
   // Uploads every texture of the (already checked) frame that is new or changed, then deletes
-  // the entries that went unused for too long. Changes the current unit's 2D binding.
+  // the entries that went unused for too long. Changes the current unit's 2D and cube bindings.
   bool prepare(const FrameDesc& frame, std::string* error);
 
   // Binds units 0..15 for one draw: the frame's textures, the draw's, the dummy elsewhere, so a
   // texture of an earlier draw never leaks into this one. Skips units already bound right.
   void bind(const FrameDesc& frame, const DrawItem& draw);
   // Forgets what bind() left on the units (call when something else rebinds them).
-  void forgetBindings() { bound_.fill(~0u); }
+  void forgetBindings() {
+    bound2D_.fill(~0u);
+    boundCube_.fill(~0u);
+  }
 
  private:
   struct Entry {
@@ -62,7 +65,8 @@ class TextureCache {
 
   Texture dummy_;  // 1x1 RGBA8 (0, 0, 0, 1): what GL returns for an incomplete texture too
   std::unordered_map<const facet::runtime::Texture*, Entry> textures_;
-  std::array<GLuint, kTextureUnits> bound_{};
+  std::array<GLuint, kTextureUnits> bound2D_{};
+  std::array<GLuint, kTextureUnits> boundCube_{};
   uint64_t frameNumber_ = 0;
 };
 

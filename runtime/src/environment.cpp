@@ -7,8 +7,8 @@
 
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/embedded_dfg_lut.h"
+#include "facet/ibl/cube_map.h"
 #include "facet/ibl/equirect_image.h"
-#include "facet/ibl/octahedral_map.h"
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include "facet/runtime/image_texture.h"
@@ -45,10 +45,10 @@ EquirectImage fitEnvironment(EquirectImage image) {
   return out;
 }
 
-void storeLevels(const std::vector<ibl::OctahedralImage>& levels, double scale, EnvironmentLighting* out) {
+void storeLevels(const std::vector<ibl::CubeImage>& levels, double scale, EnvironmentLighting* out) {
   out->width = out->height = uint32_t(levels.at(0).size);
   out->levels.clear();
-  for (const ibl::OctahedralImage& level : levels) {
+  for (const ibl::CubeImage& level : levels) {
     std::vector<float> rgb(level.rgb.size());
     for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = float(level.rgb[i] * scale);
     out->levels.push_back(std::move(rgb));
@@ -86,12 +86,12 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
   if (!scene.environment) {
     // A constant sky L: irradiance is π L for every normal, so irradiance / π = L is the whole SH
     // (band 0), and prefiltering a constant changes nothing: every level is L, no sampling error.
-    // The levels are as small as the level count allows.
+    // The faces are as small as the level count allows (1² at the last level).
     const float l = float(scene.skyLuminance * exposure);
     for (int c = 0; c < 3; ++c) out.sh[0][size_t(c)] = out.meanRadiance[size_t(c)] = l;
-    out.width = out.height = 2u << (abi::kEnvironmentLevels - 1);
+    out.width = out.height = 1u << (abi::kEnvironmentLevels - 1);
     for (uint32_t m = 0; m < abi::kEnvironmentLevels; ++m)
-      out.levels.emplace_back(size_t(out.width >> m) * (out.height >> m) * 3, l);
+      out.levels.emplace_back(size_t(ibl::kCubeFaces) * (out.width >> m) * (out.height >> m) * 3, l);
     return out;
   }
   const Environment& e = *scene.environment;
@@ -119,7 +119,7 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
   out.meanRadiance = {float(mean.x * scale), float(mean.y * scale), float(mean.z * scale)};
   ibl::PrefilterOptions options;
   options.levels = int(abi::kEnvironmentLevels);
-  storeLevels(ibl::prefilterEnvironmentOctahedral(source, kEnvironmentMapSize, options), scale, &out);
+  storeLevels(ibl::prefilterEnvironmentCube(source, kEnvironmentMapSize, options), scale, &out);
   return out;
 }
 
@@ -129,7 +129,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
   t.height = lighting.height;
   t.format = TextureFormat::Rgba16Float;
   t.linearFilter = true;
-  t.repeat = false;  // clamp to edge: the octahedral map's seams are continuous by construction
+  t.cube = true;  // filtered across faces by both backends (chunks/environment_cube.glsl)
   for (const std::vector<float>& rgb : lighting.levels) {
     std::vector<uint8_t> bytes(rgb.size() / 3 * 8);
     for (size_t i = 0; i < rgb.size() / 3; ++i) {

@@ -37,6 +37,11 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
     *error = which + ": unknown TextureFormat " + std::to_string(static_cast<int>(texture.format));
     return false;
   }
+  if (texture.cube && texture.width != texture.height) {
+    *error = which + ": a cube map's faces must be square, not " + std::to_string(texture.width) + "x" +
+             std::to_string(texture.height);
+    return false;
+  }
   const size_t fullChain = fullChainLength(texture.width, texture.height);
   if (texture.levels.empty() || texture.levels.size() > fullChain) {
     *error = which + ": " + std::to_string(texture.levels.size()) + " mip levels given, a " +
@@ -47,12 +52,13 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
   for (size_t i = 0; i < texture.levels.size(); ++i) {
     const uint32_t w = mipExtent(texture.width, i);
     const uint32_t h = mipExtent(texture.height, i);
-    const size_t expected = size_t{w} * h * texelBytes;
+    const size_t faces = texture.cube ? 6 : 1;
+    const size_t expected = faces * w * h * texelBytes;
     if (texture.levels[i].size() != expected) {
       *error = which + ": level " + std::to_string(i) + " has " +
-               std::to_string(texture.levels[i].size()) + " bytes, " + std::to_string(w) + "x" +
-               std::to_string(h) + " texels of " + std::to_string(texelBytes) + " bytes need " +
-               std::to_string(expected);
+               std::to_string(texture.levels[i].size()) + " bytes, " + (texture.cube ? "6 faces of " : "") +
+               std::to_string(w) + "x" + std::to_string(h) + " texels of " + std::to_string(texelBytes) +
+               " bytes need " + std::to_string(expected);
       return false;
     }
   }
@@ -123,6 +129,7 @@ TextureIdentity TextureIdentity::of(const Texture& texture) {
   id.linearFilter = texture.linearFilter;
   id.repeat = texture.repeat;
   id.clampT = texture.clampT;
+  id.cube = texture.cube;
   for (const std::vector<uint8_t>& level : texture.levels) id.levelSizes.push_back(level.size());
   id.hash = hashLevels(texture.levels);
   return id;

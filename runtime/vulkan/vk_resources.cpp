@@ -74,12 +74,13 @@ void destroyHostBuffer(VkDevice device, HostBuffer* buffer) {
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
                  VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
-                 std::string* error, uint32_t mipLevels) {
+                 std::string* error, uint32_t mipLevels, bool cube) {
   Image image;
   image.format = format;
   image.width = width;
   image.height = height;
   image.mipLevels = mipLevels;
+  image.layers = cube ? 6 : 1;
 
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
@@ -87,7 +88,8 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
   info.format = format;
   info.extent = {width, height, 1};
   info.mipLevels = mipLevels;
-  info.arrayLayers = 1;
+  info.arrayLayers = image.layers;
+  if (cube) info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
@@ -114,9 +116,9 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
     VkImageViewCreateInfo viewInfo{};
     viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
     viewInfo.image = image.image;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.viewType = cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = format;
-    viewInfo.subresourceRange = {aspect, 0, mipLevels, 0, 1};
+    viewInfo.subresourceRange = {aspect, 0, mipLevels, 0, image.layers};
     ok = check(vkCreateImageView(ctx.device, &viewInfo, nullptr, &image.view), "vkCreateImageView",
                error);
   }

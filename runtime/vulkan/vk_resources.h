@@ -39,12 +39,13 @@ struct Image {
   uint32_t width = 0;
   uint32_t height = 0;
   uint32_t mipLevels = 1;
+  uint32_t layers = 1;           // 6 for a cube map (viewed as VK_IMAGE_VIEW_TYPE_CUBE)
   bool lazilyAllocated = false;  // transient usage and the device had a LAZILY_ALLOCATED type
 };
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
                  VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
-                 std::string* error, uint32_t mipLevels = 1);
+                 std::string* error, uint32_t mipLevels = 1, bool cube = false);
 // Safe on a default-constructed or partly created image; leaves *image default-constructed.
 void destroyImage(VkDevice device, Image* image);
 

@@ -48,9 +48,15 @@ bool TextureCache::init(const Context* ctx, RetireQueue* retire, std::string* er
   }
 
   dummySource_ = emptySlotTexture();
-  TextureIdentity key{1, 1, TextureFormat::Rgba8Unorm, false, false, false, {4}, 0};
-  if (!createEntry(dummySource_, key, &dummy_, error)) return false;
-  return upload({&dummySource_}, {&dummy_}, error);
+  dummyCubeSource_ = emptySlotTexture();
+  dummyCubeSource_.cube = true;
+  dummyCubeSource_.levels[0] = std::vector<uint8_t>(6 * 4, 0);
+  for (size_t face = 0; face < 6; ++face) dummyCubeSource_.levels[0][4 * face + 3] = 255;
+  if (!createEntry(dummySource_, TextureIdentity::of(dummySource_), &dummy_, error) ||
+      !createEntry(dummyCubeSource_, TextureIdentity::of(dummyCubeSource_), &dummyCube_, error)) {
+    return false;
+  }
+  return upload({&dummySource_, &dummyCubeSource_}, {&dummy_, &dummyCube_}, error);
 }
 
 void TextureCache::destroy() {
@@ -60,6 +66,7 @@ void TextureCache::destroy() {
   for (Entry& entry : abandoned_) destroyEntry(&entry);
   abandoned_.clear();
   destroyEntry(&dummy_);
+  destroyEntry(&dummyCube_);
   destroyHostBuffer(ctx_->device, &staging_);
   if (fence_) vkDestroyFence(ctx_->device, fence_, nullptr);
   fence_ = VK_NULL_HANDLE;
@@ -105,7 +112,7 @@ bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& ke
   const auto levels = static_cast<uint32_t>(texture.levels.size());
   if (!createImage(*ctx_, texture.width, texture.height, format,
                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                   VK_IMAGE_ASPECT_COLOR_BIT, &entry.image, error, levels)) {
+                   VK_IMAGE_ASPECT_COLOR_BIT, &entry.image, error, levels, texture.cube)) {
     return false;
   }
 
@@ -168,7 +175,8 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
     barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = targets[t]->image.image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, targets[t]->image.mipLevels, 0, 1};
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, targets[t]->image.mipLevels, 0,
+                                targets[t]->image.layers};
   }
 
   bool ok = check(vkResetCommandBuffer(commandBuffer_, 0), "vkResetCommandBuffer", error);
@@ -194,7 +202,9 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
       // and Vulkan's texture coordinate t = 0 is image row 0, as the contract's rows are.
       region.bufferRowLength = 0;
       region.bufferImageHeight = 0;
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), 0, 1};
+      // A cube map's six faces follow each other in the level's bytes: one region, six layers.
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), 0,
+                                 targets[t]->image.layers};
       region.imageExtent = {mipExtent(texture.width, level), mipExtent(texture.height, level),
                             1};
     }
@@ -303,6 +313,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
 TextureSlots TextureCache::slotsFor(const FrameDesc& frame, const DrawItem& draw) const {
   TextureSlots slots;
   slots.fill(TextureSlot{dummy_.image.view, dummy_.sampler});
+  slots[abi::kEnvironmentBinding] = TextureSlot{dummyCube_.image.view, dummyCube_.sampler};
   const auto assign = [&](const std::vector<TextureBinding>& bindings) {
     for (const TextureBinding& binding : bindings) {
       auto found = textures_.find(binding.texture);

@@ -62,7 +62,7 @@ inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": 
 inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
 inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RG16F 64×64, one level (docs/ibl.md layout)
-inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F octahedral, kEnvironmentLevels levels
+inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F cube map, kEnvironmentLevels levels
 // Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so
 // the shaders read lod = roughness × (kEnvironmentLevels − 1) (chunks/ibl_split_sum.glsl).
 inline constexpr uint32_t kEnvironmentLevels = 5;
@@ -215,10 +215,11 @@ struct SamplerDesc {
   std::string_view name;
   uint32_t set = 0;
   uint32_t binding = 0;
+  bool cube = false;  // samplerCube (the runtime binds a cube map there), else sampler2D
 };
 inline constexpr SamplerDesc kDfgLutSampler{kDfgLutName, kTextureSet, kDfgLutBinding};
 inline constexpr SamplerDesc kSpecularLutSampler{kSpecularLutName, kTextureSet, kSpecularLutBinding};
-inline constexpr SamplerDesc kEnvironmentSampler{kEnvironmentName, kTextureSet, kEnvironmentBinding};
+inline constexpr SamplerDesc kEnvironmentSampler{kEnvironmentName, kTextureSet, kEnvironmentBinding, true};
 inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSampler, kEnvironmentSampler};
 // The material's texture parameter in sampler slot i: kMaterialSamplerPrefix + name, set
 // kTextureSet, binding materialTextureBinding(i).

@@ -20,9 +20,11 @@ namespace facet::package {
 // both and the command that rebuilds the package. The writer stamps the lowest minor that
 // describes the file, so packages that use no newer feature stay readable by older readers.
 inline constexpr uint16_t kFormatMajor = 1;
-inline constexpr uint16_t kFormatMinor = 3;  // 1.1: shader blobs compressed against a package dictionary;
+inline constexpr uint16_t kFormatMinor = 4;  // 1.1: shader blobs compressed against a package dictionary;
                                              // 1.2: the Metal argument slots (section MSLB);
-                                             // 1.3: the preshader (section PRSH)
+                                             // 1.3: the preshader (section PRSH);
+                                             // 1.4: lit shaders sample the environment as a cube map
+inline constexpr uint16_t kFirstMinorWithCubeEnvironment = 4;
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 

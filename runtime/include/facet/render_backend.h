@@ -42,6 +42,11 @@ struct Texture {
   bool repeat = false;        // wrap (true) or clamp to edge (false) in s, and in t unless clampT
   bool clampT = false;        // clamp to edge in t whatever `repeat` says: an equirect environment
                               // wraps in longitude (s) but must not blend its zenith row with the nadir
+  // A cube map (samplerCube): each level holds six square faces one after the other, in the API
+  // order +X, −X, +Y, −Y, +Z, −Z (facet/ibl/cube_map.h has the face conventions), each laid out
+  // as above; width == height. Filtered across faces (seamless) by both backends; the wrap
+  // flags do not apply.
+  bool cube = false;
 };
 
 struct TextureBinding {

@@ -30,6 +30,7 @@ struct TextureIdentity {
   bool linearFilter = false;
   bool repeat = false;
   bool clampT = false;
+  bool cube = false;
   std::vector<size_t> levelSizes;
   uint64_t hash = 0;
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "facet/ibl/equirect_image.h"
-#include "facet/ibl/octahedral_map.h"
+#include "facet/ibl/cube_map.h"
 
 namespace facet::ibl {
 
@@ -46,11 +46,10 @@ double prefilterLevelRoughness(int level, int levels);
 /// divisible by 2^(levels − 1); throws std::invalid_argument otherwise.
 std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, const PrefilterOptions& options = {});
 
-/// The same lobe averages, from the same equirect source, written as octahedral levels (what the
-/// runtime uploads; octahedral_map.h): level m is (size >> m)², each texel the average around
-/// octahedralTexelDirection. size must be divisible by 2^(levels − 1) with a last level of at
-/// least 2 texels, and the source as above; throws std::invalid_argument otherwise.
-std::vector<OctahedralImage> prefilterEnvironmentOctahedral(const EquirectImage& source, int size,
-                                                            const PrefilterOptions& options = {});
+/// The same lobe averages, from the same equirect source, written as cube map levels (what the
+/// runtime uploads; cube_map.h): level m has faces of (size >> m)², each texel the average around
+/// cubeTexelDirection. size must be divisible by 2^(levels − 1), and the source as above; throws
+/// std::invalid_argument otherwise.
+std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int size, const PrefilterOptions& options = {});
 
 }  // namespace facet::ibl

@@ -19,19 +19,21 @@ namespace facet::runtime {
 // mirror level is only as sharp as 128 texels around the horizon.
 inline constexpr int kEnvironmentWidth = 128;
 inline constexpr int kEnvironmentHeight = 64;
-// Level-0 size of the prefiltered environment the shaders sample, an octahedral map
-// (facet/ibl/octahedral_map.h): at 128² about 360 texels run around the horizon (the equirect
-// source has 128) and the last (r = 1) of the 5 levels keeps 8² texels.
-inline constexpr int kEnvironmentMapSize = 128;
+// Level-0 face size of the prefiltered environment the shaders sample, a cube map
+// (facet/ibl/cube_map.h): at 64² 256 texels run around the horizon (the equirect source has 128)
+// and the last (r = 1) of the 5 levels keeps 4² per face.
+inline constexpr int kEnvironmentMapSize = 64;
 
 // Everything pre-exposed (× the camera exposure), like the lights (docs/lighting-units.md).
 struct EnvironmentLighting {
   // shaderIrradianceCoefficients of the SH3 projection: irradiance / π = Σ sh[k] p_k(n).
   std::array<std::array<float, 3>, 9> sh{};
   std::array<float, 3> meanRadiance{};
-  uint32_t width = 0;                      // level 0, square: level m is width >> m × height >> m
+  uint32_t width = 0;                      // level 0's faces, square: level m's are width >> m × height >> m
   uint32_t height = 0;
-  std::vector<std::vector<float>> levels;  // RGB floats per level, octahedral (facet/ibl/octahedral_map.h), row 0 at v = 0
+  // RGB floats per level: six faces one after the other (+X, −X, +Y, −Y, +Z, −Z), each row 0 at
+  // t = 0 (facet/ibl/cube_map.h).
+  std::vector<std::vector<float>> levels;
 };
 
 // The scene's environment: its `environment` (image or analytic sky) or, without one, the
@@ -39,8 +41,8 @@ struct EnvironmentLighting {
 // environment). Fails with a message on an unreadable or unsuitable image.
 std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, double exposure, std::string* error);
 
-// The prefiltered levels as the texture the shaders sample: RGBA16F (alpha 1), linear filtering
-// within and between levels, clamp to edge (chunks/octahedral.glsl).
+// The prefiltered levels as the texture the shaders sample: an RGBA16F (alpha 1) cube map, linear
+// filtering within and between levels and across faces (chunks/environment_cube.glsl).
 Texture environmentTexture(const EnvironmentLighting& lighting);
 
 // The split-sum DFG table: facet::ibl::generateDfgLut(64) (2048 samples per texel, ~1 s on one
