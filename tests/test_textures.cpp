@@ -279,6 +279,40 @@ TEST_P(Textures, TextureTexelsReachShaderUpright) {
   }
 }
 
+TEST_P(Textures, CubeMapFacesReachTheShaderUpright) {
+  // Six 4x4 faces, each texel coding its (s, t) in red and green and its face in blue. The shader
+  // reads the environment slot at direction (2u − 1, 2v − 1, 1): the +Z face (index 4), where the
+  // cube map table gives s = u and t = 1 − v, so the face's row 0 (t = 0) is the picture's top
+  // row, unlike a 2D texture's (facet/ibl/cube_map.h has the table).
+  Texture cube;
+  cube.width = 4;
+  cube.height = 4;
+  cube.format = TextureFormat::Rgba8Unorm;
+  cube.linearFilter = false;
+  cube.cube = true;
+  std::vector<uint8_t> texels;
+  for (uint32_t face = 0; face < 6; ++face)
+    for (uint32_t t = 0; t < 4; ++t)
+      for (uint32_t s = 0; s < 4; ++s)
+        texels.insert(texels.end(), {static_cast<uint8_t>(10 + 40 * s), static_cast<uint8_t>(10 + 40 * t),
+                                     static_cast<uint8_t>(5 + 40 * face), 255});
+  cube.levels = {texels};
+
+  const Mesh mesh = quad();
+  FrameDesc frame = makeFrame(4, 4);
+  frame.frameTextures = {bind(abi::kEnvironmentBinding, "facet_environment", &cube)};
+  frame.draws.push_back(texturedDraw(mesh, Params{{0, 0, 0, 1}, {}}));
+  const FrameResult result = render(frame);
+  for (uint32_t row = 0; row < 4; ++row) {
+    for (uint32_t col = 0; col < 4; ++col) {
+      const Rgba got = hdrAt(result, row, col);
+      EXPECT_EQ(std::lround(got.r * 255.0f), 10 + 40 * col) << "row " << row << " col " << col;
+      EXPECT_EQ(std::lround(got.g * 255.0f), 10 + 40 * row) << "row " << row << " col " << col;
+      EXPECT_EQ(std::lround(got.b * 255.0f), 5 + 40 * 4) << "row " << row << " col " << col;
+    }
+  }
+}
+
 TEST_P(Textures, SrgbTextureIsDecodedBySampler) {
   Texture srgb;
   srgb.width = 1;
@@ -484,6 +518,15 @@ TEST_P(Textures, BadTextureIsRejectedWithMessage) {
   EXPECT_TRUE(
       contains(renderError(frameWith({bind(kMaterialTexture, "materialTexture", &shortLevel)})),
                "level 1 has 15 bytes, 2x1 texels of 8 bytes need 16"));
+
+  Texture oblongCube = solidLevels(4, 2, {{1, 1, 1, 1}}, false);
+  oblongCube.cube = true;
+  EXPECT_TRUE(contains(renderError(frameWith({bind(kMaterialTexture, "materialTexture", &oblongCube)})),
+                       "a cube map's faces must be square, not 4x2"));
+  Texture oneFaceCube = solidLevels(2, 2, {{1, 1, 1, 1}}, false);
+  oneFaceCube.cube = true;
+  EXPECT_TRUE(contains(renderError(frameWith({bind(kMaterialTexture, "materialTexture", &oneFaceCube)})),
+                       "level 0 has 32 bytes, 6 faces of 2x2 texels of 8 bytes need 192"));
 
   EXPECT_TRUE(contains(renderError(frameWith({bind(kMaterialTexture, "materialTexture", &good),
                                               bind(kMaterialTexture, "other", &good)})),
