@@ -117,8 +117,9 @@ bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& ke
   }
 
   const VkFilter filter = texture.linearFilter ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  const VkSamplerAddressMode address =
-      texture.repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  // A cube map is filtered across its faces; its wrap flags do not apply (render_backend.h).
+  const VkSamplerAddressMode address = texture.repeat && !texture.cube ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+                                                                       : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   VkSamplerCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   info.magFilter = filter;
