@@ -314,7 +314,9 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
 TextureSlots TextureCache::slotsFor(const FrameDesc& frame, const DrawItem& draw) const {
   TextureSlots slots;
   slots.fill(TextureSlot{dummy_.image.view, dummy_.sampler});
-  slots[abi::kEnvironmentBinding] = TextureSlot{dummyCube_.image.view, dummyCube_.sampler};
+  for (const abi::SamplerDesc& sampler : abi::kFrameSamplers) {
+    if (sampler.cube) slots[sampler.binding] = TextureSlot{dummyCube_.image.view, dummyCube_.sampler};
+  }
   const auto assign = [&](const std::vector<TextureBinding>& bindings) {
     for (const TextureBinding& binding : bindings) {
       auto found = textures_.find(binding.texture);

@@ -96,8 +96,8 @@ class TextureCache {
 
   Texture dummySource_;  // 1x1 RGBA8 (0, 0, 0, 1): what GL returns for an incomplete texture
   Entry dummy_;
-  // The same as a cube map, for the environment's slot (abi::kEnvironmentBinding): a view's type
-  // must match the shader's sampler (samplerCube there), even for the dummy.
+  // The same as a cube map, for the ABI's cube slots (abi::SamplerDesc::cube: the environment):
+  // a view's type must match the shader's sampler, even for the dummy.
   Texture dummyCubeSource_;
   Entry dummyCube_;
   std::unordered_map<const Texture*, Entry> textures_;
