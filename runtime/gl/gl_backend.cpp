@@ -444,15 +444,6 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   }
   glUseProgram(program->program.id());
   // Sampler uniforms are program state (set while the program is in use); units are per draw.
-  // The ABI's frame samplers get their units whether or not the frame binds them: a sampler left
-  // at its default unit 0 would share it with facet_dfgLut, and a samplerCube (the environment)
-  // beside a sampler2D on one unit makes the draw invalid (GL_INVALID_OPERATION).
-  static const std::vector<TextureBinding> abiFrameSamplers = [] {
-    std::vector<TextureBinding> bindings;
-    for (const abi::SamplerDesc& s : abi::kFrameSamplers) bindings.push_back({s.binding, std::string(s.name), nullptr});
-    return bindings;
-  }();
-  gl::assignSamplerUnits(program->program.id(), abiFrameSamplers, &cached->samplerUnits);
   gl::assignSamplerUnits(program->program.id(), frame.frameTextures, &cached->samplerUnits);
   gl::assignSamplerUnits(program->program.id(), item.textures, &cached->samplerUnits);
   textures_.bind(frame, item);
@@ -474,6 +465,16 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   cached.fragmentSource = program.fragmentGlslEs;
   cached.linked = std::move(*linked);
   cached.samplerUnits.clear();  // a new program: every sampler uniform starts at unit 0
+  // The ABI's frame samplers get their units once, at link, whether or not a frame binds them: a
+  // sampler left at unit 0 would share it with facet_dfgLut, and a samplerCube (the environment)
+  // beside a sampler2D on one unit makes a draw invalid (GL_INVALID_OPERATION).
+  static const std::vector<TextureBinding> abiFrameSamplers = [] {
+    std::vector<TextureBinding> bindings;
+    for (const abi::SamplerDesc& s : abi::kFrameSamplers) bindings.push_back({s.binding, std::string(s.name), nullptr});
+    return bindings;
+  }();
+  glUseProgram(cached.linked.program.id());  // drawItem uses it next anyway
+  gl::assignSamplerUnits(cached.linked.program.id(), abiFrameSamplers, &cached.samplerUnits);
   return &cached;
 }
 

@@ -67,12 +67,15 @@ std::optional<LoadedMaterial> LoadedMaterial::checked(std::optional<package::Pac
     *error = name + ": " + why;
     return std::nullopt;
   }
-  // Before format 1.4 a lit material's shaders read the environment as an octahedral 2D map,
-  // which this runtime no longer builds (it binds a cube map there): the package cannot be drawn.
-  if (reader->material().shading == "lit" && reader->formatMinor() < package::kFirstMinorWithCubeEnvironment) {
-    *error = name + ": package format 1." + std::to_string(reader->formatMinor()) +
-             " samples the environment as an octahedral map, which this runtime no longer provides (a cube map "
-             "since format 1." + std::to_string(package::kFirstMinorWithCubeEnvironment) +
+  // Before format 1.4 a lit material's shaders read the environment as a 2D map: octahedral in
+  // 1.2 and 1.3 (both came after the octahedral map), equirect or octahedral in 1.0 and 1.1. This
+  // runtime no longer builds either (it binds a cube map there): the package cannot be drawn.
+  const uint16_t minor = reader->formatMinor();
+  if (reader->material().shading == "lit" && minor < package::kFirstMinorWithCubeEnvironment) {
+    *error = name + ": package format 1." + std::to_string(minor) + " samples the environment as " +
+             (minor >= 2 ? "an octahedral map" : "a 2D map (equirect or octahedral)") +
+             ", which this runtime no longer provides (a cube map since format 1." +
+             std::to_string(package::kFirstMinorWithCubeEnvironment) +
              "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
     return std::nullopt;
   }

@@ -95,12 +95,14 @@ bool checkBindings(const std::vector<TextureBinding>& bindings, const std::strin
 
 }  // namespace
 
-Texture emptySlotTexture() {
+Texture emptySlotTexture(bool cube) {
   Texture t;
   t.width = 1;
   t.height = 1;
   t.format = TextureFormat::Rgba8Unorm;
-  t.levels = {{0, 0, 0, 255}};
+  t.cube = cube;
+  t.levels = {{}};
+  for (int face = 0; face < (cube ? 6 : 1); ++face) t.levels[0].insert(t.levels[0].end(), {0, 0, 0, 255});
   t.linearFilter = false;
   return t;
 }

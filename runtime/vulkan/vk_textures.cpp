@@ -48,15 +48,18 @@ bool TextureCache::init(const Context* ctx, RetireQueue* retire, std::string* er
   }
 
   dummySource_ = emptySlotTexture();
-  dummyCubeSource_ = emptySlotTexture();
-  dummyCubeSource_.cube = true;
-  dummyCubeSource_.levels[0] = std::vector<uint8_t>(6 * 4, 0);
-  for (size_t face = 0; face < 6; ++face) dummyCubeSource_.levels[0][4 * face + 3] = 255;
+  dummyCubeSource_ = emptySlotTexture(true);
   if (!createEntry(dummySource_, TextureIdentity::of(dummySource_), &dummy_, error) ||
-      !createEntry(dummyCubeSource_, TextureIdentity::of(dummyCubeSource_), &dummyCube_, error)) {
+      !createEntry(dummyCubeSource_, TextureIdentity::of(dummyCubeSource_), &dummyCube_, error) ||
+      !upload({&dummySource_, &dummyCubeSource_}, {&dummy_, &dummyCube_}, error)) {
     return false;
   }
-  return upload({&dummySource_, &dummyCubeSource_}, {&dummy_, &dummyCube_}, error);
+  // What a draw's slots hold before its textures: the dummy of each slot's sampler type.
+  emptySlots_.fill(TextureSlot{dummy_.image.view, dummy_.sampler});
+  for (const abi::SamplerDesc& sampler : abi::kFrameSamplers) {
+    if (sampler.cube) emptySlots_[sampler.binding] = TextureSlot{dummyCube_.image.view, dummyCube_.sampler};
+  }
+  return true;
 }
 
 void TextureCache::destroy() {
@@ -312,11 +315,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
 }
 
 TextureSlots TextureCache::slotsFor(const FrameDesc& frame, const DrawItem& draw) const {
-  TextureSlots slots;
-  slots.fill(TextureSlot{dummy_.image.view, dummy_.sampler});
-  for (const abi::SamplerDesc& sampler : abi::kFrameSamplers) {
-    if (sampler.cube) slots[sampler.binding] = TextureSlot{dummyCube_.image.view, dummyCube_.sampler};
-  }
+  TextureSlots slots = emptySlots_;
   const auto assign = [&](const std::vector<TextureBinding>& bindings) {
     for (const TextureBinding& binding : bindings) {
       auto found = textures_.find(binding.texture);

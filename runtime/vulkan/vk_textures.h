@@ -100,6 +100,7 @@ class TextureCache {
   // a view's type must match the shader's sampler, even for the dummy.
   Texture dummyCubeSource_;
   Entry dummyCube_;
+  TextureSlots emptySlots_{};  // every slot's dummy, by its ABI sampler type (init)
   std::unordered_map<const Texture*, Entry> textures_;
   // Entries of an upload whose submission did not finish: released only in destroy(), after
   // the backend has waited for the device.

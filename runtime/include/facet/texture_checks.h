@@ -15,8 +15,9 @@ namespace facet::runtime {
 inline constexpr uint32_t kTextureSlots = abi::kMaterialTextureBase + abi::kMaxMaterialTextures;
 
 // The 1×1 opaque black texture both backends bind in slots a draw leaves empty (GLES and Vulkan
-// 1.1 both need every declared sampler to have a texture).
-Texture emptySlotTexture();
+// 1.1 both need every declared sampler to have a texture); with `cube`, six such faces, for the
+// ABI's cube slots (a Vulkan view's type must match the shader's sampler, even for the dummy).
+Texture emptySlotTexture(bool cube = false);
 
 uint32_t bytesPerTexel(TextureFormat format);  // 0 for a value that is not an enumerator
 uint32_t mipExtent(uint32_t size, size_t level);

@@ -10,8 +10,9 @@
 // same as OpenGL ES 3.0 §3.8.10): with m the major axis's magnitude,
 //   +X: (sc, tc) = (−z, −y)   −X: (z, −y)   +Y: (x, z)   −Y: (x, −z)   +Z: (x, −y)   −Z: (−x, −y)
 //   s = (sc / m + 1) / 2,  t = (tc / m + 1) / 2
-// Seams: both APIs filter across faces (Vulkan always; GLES 3.0 always, "seamless" being the
-// only behaviour it specifies), so unlike the octahedral map the faces need no shared border.
+// Seams: the GPU filters across faces (Vulkan and GLES 3.0 always; desktop GL once
+// GL_TEXTURE_CUBE_MAP_SEAMLESS is enabled, which the GL backend does), so unlike the octahedral
+// map the faces need no shared border.
 #pragma once
 
 #include <vector>
