@@ -503,6 +503,24 @@ TEST(CubeMap, PrefilteredLevelsHalveAndKeepAConstantEnvironment) {
   EXPECT_THROW(prefilterEnvironmentCube(renderEquirect(64, 32, [&](Vec3) { return L; }), 8), std::invalid_argument);
 }
 
+// The runtime prefilters on every core a scene load can have; the levels must be the same bits
+// whatever the count, or renders would depend on the machine.
+TEST(CubeMap, PrefilteredLevelsDoNotDependOnTheThreadCount) {
+  const EquirectImage source = renderEquirect(64, 32, sunSkyRadiance);
+  PrefilterOptions one;
+  one.samples = 64;
+  one.threads = 1;
+  PrefilterOptions three = one;
+  three.threads = 3;
+  const std::vector<CubeImage> a = prefilterEnvironmentCube(source, 16, one);
+  const std::vector<CubeImage> b = prefilterEnvironmentCube(source, 16, three);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t m = 0; m < a.size(); ++m) {
+    EXPECT_EQ(a[m].size, b[m].size);
+    EXPECT_EQ(a[m].rgb, b[m].rgb) << "level " << m;
+  }
+}
+
 // The same checks as the equirect levels (Prefilter.*): level 0 is the source (read bilinearly
 // at each texel's direction), the rough levels are the GGX lobe integral of the radiance
 // function: 2 % at level 2, 3 % at level 4, whose RMS error over the level is 2.6 % with the

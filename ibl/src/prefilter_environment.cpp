@@ -1,8 +1,11 @@
 #include "facet/ibl/prefilter_environment.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include "facet/ibl/ggx_microfacet.h"
@@ -77,15 +80,49 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& sourceMips, int w
   return out;
 }
 
-CubeImage prefilterCubeLevel(const std::vector<EquirectImage>& sourceMips, int size, double alpha,
-                             const PrefilterOptions& options) {
-  std::vector<LobeSample> lobe = lobeSamples(alpha, options.samples, options.lodBias);
-  CubeImage out(size);
-  for (int face = 0; face < kCubeFaces; ++face)
-    for (int row = 0; row < size; ++row)
-      for (int column = 0; column < size; ++column)
-        out.setTexel(face, column, row, prefilterTexel(sourceMips, lobe, cubeTexelDirection(size, face, column, row)));
-  return out;
+// Every level's texels are independent, so rows of every face of every level are shared out
+// to the threads; each texel is computed by the same code whichever thread takes it, so the
+// result does not depend on the thread count (Prefilter.CubeLevelsDoNotDependOnTheThreadCount).
+std::vector<CubeImage> prefilterCubeLevels(const std::vector<EquirectImage>& sourceMips, int size, int levels,
+                                           const PrefilterOptions& options) {
+  struct Level {
+    std::vector<LobeSample> lobe;
+    CubeImage image;
+  };
+  std::vector<Level> out;
+  struct Row {
+    int level, face, row;
+  };
+  std::vector<Row> rows;
+  for (int m = 0; m < levels; ++m) {
+    const double r = prefilterLevelRoughness(m, levels);
+    out.push_back({lobeSamples(r * r, options.samples, options.lodBias), CubeImage(size >> m)});
+    for (int face = 0; face < kCubeFaces; ++face)
+      for (int row = 0; row < size >> m; ++row) rows.push_back({m, face, row});
+  }
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < rows.size(); i = next++) {
+      Level& level = out[size_t(rows[i].level)];
+      for (int column = 0; column < level.image.size; ++column)
+        level.image.setTexel(rows[i].face, column, rows[i].row,
+                             prefilterTexel(sourceMips, level.lobe,
+                                            cubeTexelDirection(level.image.size, rows[i].face, column, rows[i].row)));
+    }
+  };
+  const unsigned threads = options.threads > 0 ? unsigned(options.threads) : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> helpers;
+  try {
+    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+  } catch (const std::system_error&) {
+    // No more threads to be had (a sandbox, a thread limit): the ones started and this one
+    // share the rows all the same.
+  }
+  work();
+  for (std::thread& t : helpers) t.join();
+  std::vector<CubeImage> result;
+  for (Level& level : out) result.push_back(std::move(level.image));
+  return result;
 }
 
 void checkSource(const EquirectImage& source, int levels) {
@@ -123,13 +160,7 @@ std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int
   checkSource(source, levels);
   if (size < 1 << (levels - 1) || size % (1 << (levels - 1)) != 0)
     throw std::invalid_argument("prefilterEnvironmentCube: size must be divisible by 2^(levels - 1)");
-  const std::vector<EquirectImage> sourceMips = sourceMipChain(source);
-  std::vector<CubeImage> result;
-  for (int m = 0; m < levels; ++m) {
-    double r = prefilterLevelRoughness(m, levels);
-    result.push_back(prefilterCubeLevel(sourceMips, size >> m, r * r, options));
-  }
-  return result;
+  return prefilterCubeLevels(sourceMipChain(source), size, levels, options);
 }
 
 }  // namespace facet::ibl

@@ -37,6 +37,9 @@ struct PrefilterOptions {
   // Added to the source lod. Křivánek & Colbert add 1 (more blur, less noise); against the exact
   // lobe integral 0 gave about half the error on Facet's test skies (docs/ibl.md).
   double lodBias = 0.0;
+  // Threads for prefilterEnvironmentCube (0: std::thread::hardware_concurrency()). The levels are
+  // the same whatever the count; a scene load spends most of its CPU time here (docs/ibl.md).
+  int threads = 0;
 };
 
 /// Perceptual roughness of `level`: level / (levels − 1), 0 when levels == 1.
