@@ -82,7 +82,7 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& sourceMips, int w
 
 // Every level's texels are independent, so rows of every face of every level are shared out
 // to the threads; each texel is computed by the same code whichever thread takes it, so the
-// result does not depend on the thread count (Prefilter.CubeLevelsDoNotDependOnTheThreadCount).
+// result does not depend on the thread count (CubeMap.PrefilteredLevelsDoNotDependOnTheThreadCount).
 std::vector<CubeImage> prefilterCubeLevels(const std::vector<EquirectImage>& sourceMips, int size, int levels,
                                            const PrefilterOptions& options) {
   struct Level {

@@ -39,7 +39,7 @@ struct EnvironmentLighting {
 // The scene's environment: its `environment` (image or analytic sky) or, without one, the
 // constant sky of `sky.luminance` (exact: SH band 0 only, every level constant; 0 gives a black
 // environment). Fails with a message on an unreadable or unsuitable image. An image or analytic
-// sky is prefiltered on one thread per core, joined before it returns (about 0.16 s on two cores,
+// sky is prefiltered on one thread per core, joined before it returns (0.16–0.20 s on two cores,
 // docs/ibl.md; the levels are the same bits on any number of cores).
 std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, double exposure, std::string* error);
 
