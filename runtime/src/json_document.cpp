@@ -60,17 +60,6 @@ class KeyTracker {
   std::vector<Frame> frames_;
 };
 
-std::string lineColumn(const std::string& text, size_t offset) {
-  offset = std::min(offset, text.size());
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i < offset; ++i) {
-    bool newline = text[i] == '\n';
-    line += newline;
-    column = newline ? 1 : column + 1;
-  }
-  return std::to_string(line) + ":" + std::to_string(column);
-}
-
 // nlohmann's message after its "[json.exception...] " prefix and "syntax error while parsing" noise.
 std::string reason(const json::exception& e) {
   std::string what = e.what();
@@ -108,18 +97,54 @@ std::string shortened(std::string_view text, bool pointerEscapes) {
 
 }  // namespace
 
+std::optional<size_t> jsonTooDeepAt(std::string_view text, size_t maxDepth) {
+  size_t depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;  // the escaped character cannot end the string
+      else if (c == '"') inString = false;
+      continue;
+    }
+    if (c == '"') inString = true;
+    else if (c == '[' || c == '{') {
+      if (++depth > maxDepth) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string jsonLineColumn(std::string_view text, size_t offset) {
+  offset = std::min(offset, text.size());
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < offset; ++i) {
+    bool newline = text[i] == '\n';
+    line += newline;
+    column = newline ? 1 : column + 1;
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
 std::string pointerSegment(std::string_view key) { return shortened(key, true); }
 
 std::string shownValue(std::string_view value) { return shortened(value, false); }
 
 std::optional<nlohmann::json> parseJsonDocument(const std::string& path, const std::string& text, std::string* error) {
+  if (std::optional<size_t> at = jsonTooDeepAt(text)) {
+    *error = path + ":" + jsonLineColumn(text, *at) + ": error: arrays and objects nest more than " +
+             std::to_string(kMaxJsonDepth) + " deep here (Facet reads JSON at most that deep)";
+    return std::nullopt;
+  }
   try {
     KeyTracker tracker;
     return json::parse(text, std::ref(tracker));
   } catch (const DuplicateKey& d) {
     *error = path + ": error: " + d.pointer + ": duplicate key (JSON objects keep one value per key)";
   } catch (const json::parse_error& e) {
-    *error = path + ":" + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1) + ": error: invalid JSON: " + reason(e);
+    *error = path + ":" + jsonLineColumn(text, e.byte == 0 ? 0 : e.byte - 1) + ": error: invalid JSON: " + reason(e);
   } catch (const json::exception& e) {
     // out_of_range 406 "number overflow parsing '1e400'": no offset given; find the token.
     std::string where;
@@ -128,7 +153,7 @@ std::optional<nlohmann::json> parseJsonDocument(const std::string& path, const s
     size_t q2 = q == std::string::npos ? q : what.find('\'', q + 1);
     if (q2 != std::string::npos) {
       size_t at = text.find(what.substr(q + 1, q2 - q - 1));
-      if (at != std::string::npos) where = ":" + lineColumn(text, at);
+      if (at != std::string::npos) where = ":" + jsonLineColumn(text, at);
     }
     *error = path + where + ": error: invalid JSON: " + reason(e);
   }
