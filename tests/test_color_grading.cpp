@@ -117,11 +117,36 @@ TEST(ColorGrading, ParsesTitleCommentsAndDomainAsAdobeAndResolveWriteThem) {
   EXPECT_EQ(texels.rgba.size(), 32u * 32 * 32 * 4);
 }
 
+// What editors and tools write around the table reads as the same table: a UTF-8 byte-order mark,
+// LF, CR LF or lone-CR line ends, and numbers too small for a double (0 in the half-float table).
+TEST(ColorGrading, ByteOrderMarkLineEndsAndUnderflowReadAsTheSameTable) {
+  const auto identity = [](double r, double g, double b) { return std::array<double, 3>{r, g, b}; };
+  std::string error;
+  const auto plain = parseCubeLut("lf.cube", cubeText(2, identity), &error);
+  ASSERT_TRUE(plain) << error;
+  std::string crOnly = cubeText(2, identity), crlf;
+  for (char& c : crOnly)
+    if (c == '\n') c = '\r';
+  for (char c : cubeText(2, identity)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  std::string tiny = cubeText(2, identity);
+  tiny.replace(tiny.find("0.000000 0.000000 0.000000"), 8, "1e-400  ");
+  for (const std::string& text : {"\xEF\xBB\xBF" + cubeText(2, identity), crOnly, crlf, tiny}) {
+    const auto lut = parseCubeLut("edited.cube", text, &error);
+    ASSERT_TRUE(lut) << error;
+    EXPECT_EQ(lut->size, 2u);
+    EXPECT_EQ(lut->rgb, plain->rgb);
+  }
+}
+
 TEST(ColorGrading, HostileCubeFilesAreDiagnosedWithFileAndLine) {
   const auto identity = [](double r, double g, double b) { return std::array<double, 3>{r, g, b}; };
   EXPECT_EQ(cubeError("LUT_3D_SIZE 1\n0 0 0\n"), "lut.cube:1: error: LUT_3D_SIZE 1 is outside 2..64");
   EXPECT_EQ(cubeError("# big\nLUT_3D_SIZE 65\n"), "lut.cube:2: error: LUT_3D_SIZE 65 is outside 2..64");
-  EXPECT_EQ(cubeError("LUT_3D_SIZE 2.5\n"), "lut.cube:1: error: LUT_3D_SIZE 2.5 is outside 2..64");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2.5\n"), "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.5'");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2.00000001\n"), "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.00000001'");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2.0\n"), "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.0'");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE -3\n"), "lut.cube:1: error: LUT_3D_SIZE -3 is outside 2..64");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 99999999999\n"), "lut.cube:1: error: LUT_3D_SIZE 99999999999 is outside 2..64");
   EXPECT_EQ(cubeError("LUT_3D_SIZE many\n"), "lut.cube:1: error: expected a number, not 'many'");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0 0\n1 0 0\n"), "lut.cube:3: error: the table ends after 2 of the 8 entries LUT_3D_SIZE 2 gives");
   std::string nan = cubeText(2, identity);
@@ -136,7 +161,12 @@ TEST(ColorGrading, HostileCubeFilesAreDiagnosedWithFileAndLine) {
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0\n"), "lut.cube:2: error: a table entry takes three numbers");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 1e9 0\n"), "lut.cube:2: error: '1e9' is beyond the half-float range (65504) the table is stored in");
   EXPECT_EQ(cubeError(std::string("LUT_3D_SIZE 2\n0 0\0 0\n", 21)), "lut.cube:2: error: a NUL byte: not a text file");
-  EXPECT_EQ(cubeError(""), "lut.cube:0: error: no LUT_3D_SIZE: not a 3D .cube file");
+  EXPECT_EQ(cubeError(""), "lut.cube:1: error: an empty file: not a 3D .cube file");
+  EXPECT_EQ(cubeError("\xEF\xBB\xBF\r\n"), "lut.cube:1: error: an empty file: not a 3D .cube file");
+  EXPECT_EQ(cubeError("# only a comment\n"), "lut.cube:1: error: no LUT_3D_SIZE: not a 3D .cube file");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 1e400 0\n"), "lut.cube:2: error: '1e400' is beyond the half-float range (65504) the table is stored in");
+  // With lone CRs as line ends, a mistake is still found at its own line.
+  EXPECT_EQ(cubeError("# old Mac tool\rLUT_3D_SIZE 2\r0 0\r"), "lut.cube:3: error: a table entry takes three numbers");
   EXPECT_EQ(cubeError("TITLE untitled\n"), "lut.cube:1: error: TITLE takes a quoted string");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2\nLUT_3D_SIZE 2\n"), "lut.cube:2: error: a second LUT_3D_SIZE");
 

@@ -1,6 +1,7 @@
 // Adobe/Resolve .cube files (Adobe "Cube LUT Specification" 1.0, 2013): hostile input is refused
 // with the file and line, never read past its bounds, and bounded in size before it is read.
 #include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -39,11 +40,21 @@ std::string shown(std::string_view token) {
 }
 
 // A finite number: from_chars also reads "nan" and "inf", which a table may not hold. The fp16
-// bound is the texture's: a larger value would saturate there anyway, silently.
+// bound is the texture's: a larger value would saturate there anyway, silently. A number too
+// small for a double (1e-400) is 0, as it would be in the half-float table (anything below 2^-25
+// rounds to 0 there).
 float number(std::string_view token, size_t line) {
   double v = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
-  if (ec != std::errc() || end != token.data() + token.size()) fail(line, "expected a number, not '" + shown(token) + "'");
+  if (end != token.data() + token.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+    fail(line, "expected a number, not '" + shown(token) + "'");
+  if (ec == std::errc::result_out_of_range) {
+    // from_chars leaves v alone when out of range; strtod (on the same, already checked,
+    // characters) tells an overflow (±HUGE_VAL) from an underflow.
+    const double huge = std::strtod(std::string(token).c_str(), nullptr);
+    if (std::isinf(huge)) fail(line, "'" + shown(token) + "' is beyond the half-float range (65504) the table is stored in");
+    v = 0;
+  }
   if (!std::isfinite(v)) fail(line, "'" + shown(token) + "' is not a finite number");
   if (std::abs(v) > 65504) fail(line, "'" + shown(token) + "' is beyond the half-float range (65504) the table is stored in");
   return float(v);
@@ -58,14 +69,17 @@ ColorLut parse(std::string_view text) {
   ColorLut lut;
   size_t expected = 0, lineNumber = 0;
   size_t domainLine = 0;  // the last DOMAIN_* line, checked once the header is over
+  // A UTF-8 byte-order mark (what some Windows editors put first) is not text of the file.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) fail(1, "an empty file: not a 3D .cube file");
   size_t pos = 0;
   while (pos < text.size()) {
-    size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    pos = end + 1;
+    // Lines end in LF, CR LF or a lone CR (older Mac tools), as text editors write them.
+    size_t lineEnd = text.find_first_of("\r\n", pos);
+    if (lineEnd == std::string_view::npos) lineEnd = text.size();
+    std::string_view line = text.substr(pos, lineEnd - pos);
+    pos = lineEnd + (text.substr(lineEnd, 2) == "\r\n" ? 2 : 1);
     ++lineNumber;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.find('\0') != std::string_view::npos) fail(lineNumber, "a NUL byte: not a text file");
     const std::vector<std::string_view> t = tokens(line);
     if (t.empty() || t[0][0] == '#') continue;
@@ -82,10 +96,21 @@ ColorLut parse(std::string_view text) {
     } else if (key == "LUT_3D_SIZE") {
       if (expected != 0) fail(lineNumber, "a second LUT_3D_SIZE");
       if (t.size() != 2) fail(lineNumber, "LUT_3D_SIZE takes one whole number");
-      const float n = number(t[1], lineNumber);
-      if (n != std::floor(n) || n < 2 || n > float(kMaxCubeLutSize))
+      // Digits only: read as a float, 2.00000001 was 2 and accepted.
+      const std::string_view token = t[1];
+      const char* const last = token.data() + token.size();
+      double v = 0;
+      const auto [vEnd, vError] = std::from_chars(token.data(), last, v);
+      if (vEnd != last || (vError != std::errc() && vError != std::errc::result_out_of_range))
+        fail(lineNumber, "expected a number, not '" + shown(token) + "'");
+      uint32_t n = 0;
+      const auto [nEnd, nError] = std::from_chars(token.data(), last, n);
+      const bool digits = nEnd == last && nError == std::errc();
+      const bool wholeOutside = vError == std::errc() && v == std::floor(v) && (v < 2 || v > kMaxCubeLutSize);
+      if (!digits && !wholeOutside) fail(lineNumber, "LUT_3D_SIZE takes a whole number in digits, not '" + shown(token) + "'");
+      if (!digits || n < 2 || n > kMaxCubeLutSize)
         fail(lineNumber, "LUT_3D_SIZE " + shown(t[1]) + " is outside 2.." + std::to_string(kMaxCubeLutSize));
-      lut.size = uint32_t(n);
+      lut.size = n;
       expected = size_t(lut.size) * lut.size * lut.size;
       lut.rgb.reserve(expected * 3);
     } else if (key == "LUT_1D_SIZE") {
