@@ -1,6 +1,7 @@
 // matc as users run it: exit codes, diagnostics on stderr, no partial output on failure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -316,7 +317,7 @@ TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   std::string mat = write(dir, "red.mat", text);
   auto r = run(kMatc + " compile " + mat + " -o " + mat);
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("the output '" + mat + "' is the input material"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the output '" + mat + "' (-o) is the input material '" + mat + "'"), std::string::npos) << r.err;
   EXPECT_EQ(facet::test::readText(mat), text);
   std::string pkgNamed = write(dir, "odd.matpkg", text);  // default output = input with .matpkg
   EXPECT_EQ(run(kMatc + " compile " + pkgNamed).exitCode, 1);
@@ -324,6 +325,89 @@ TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   r = run(kMatc + " compile " + mat + " -o /dev/null");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("cannot write '/dev/null': it exists and is not a regular file"), std::string::npos) << r.err;
+}
+
+// One rule for every file every command writes: an output is never an input and never another
+// output, whatever path names it (another spelling, a symbolic link, a hard link, a file that
+// does not exist yet). The error names both arguments, exits 1 and changes no file.
+TEST(MatcCli, NoCommandWritesOverItsInputsOrWritesOneFileTwice) {
+  const std::string dir = facet::test::scratchDir("cli-clash");
+  const std::string text = facet::test::readText(facet::test::examplePath("materials/red_plastic.mat"));
+  const std::string mat = write(dir, "red.mat", text);
+  fs::create_symlink(mat, dir + "/link.mat");
+  fs::create_hard_link(mat, dir + "/hard.mat");
+  const std::string config = write(dir, "budgets.json", R"({"tiers": {}})");
+  const std::string scene = write(dir, "scene.json", "{}");
+  fs::create_directories(dir + "/real");
+  fs::create_symlink(dir + "/real", dir + "/alias");
+  fs::create_directories(dir + "/src");
+  const std::string emitted = write(dir, "src/red_plastic.low.dir0.frag.metal", text);  // a material named as an emitted file
+  fs::create_directories(dir + "/out");
+  const std::string report = write(dir, "out/report.json", "{}");
+  const std::string post = dir + "/post";
+  fs::create_directories(post);
+  const std::string postCpp = write(dir, "post/post.aces.vert.metal", "keep");
+
+  // --tiers last: a list option would take the material as one more tier.
+  auto compile = [](const std::string& args) { return kMatc + " compile " + args + " --no-cache --tiers low"; };
+  auto lint = [](const std::string& args) { return kMatc + " lint " + args + " --tiers low"; };
+  struct Clash {
+    std::string command, first, second;  // the two arguments the message must name
+  };
+  const std::vector<Clash> clashes = {
+      {compile(mat + " --depfile " + mat), "(--depfile) is the input material", ""},
+      {compile(mat + " -o " + dir + "/link.mat"), "(-o) is the input material", ""},
+      {compile(mat + " -o " + dir + "/hard.mat"), "(-o) is the input material", ""},
+      {compile(mat + " -o " + dir + "/p.matpkg --depfile " + dir + "/./p.matpkg"), "(-o) and '", "(--depfile) are the same file"},
+      {compile(mat + " -o " + dir + "/alias/p.matpkg --depfile " + dir + "/real/p.matpkg"), "(-o) and '", "(--depfile)"},
+      {compile(mat + " --scene " + scene + " -o " + scene), "(-o) is the --scene file", ""},
+      {compile(emitted + " -o " + dir + "/e.matpkg --emit-source " + dir + "/src"), "(--emit-source) is the input material", ""},
+      {lint(mat + " -o " + mat), "(-o) is the input material", ""},
+      {lint(dir + " -o " + mat), "(-o) is the input material", ""},  // a folder stands for its .mat files
+      {lint(mat + " --config " + config + " -o " + config), "(-o) is the --config file", ""},
+      {lint(mat + " --baseline " + config + " -o " + config), "(-o) is the --baseline file", ""},
+      {lint(mat + " --baseline " + dir + "/new.json --update-baseline -o " + dir + "/new.json"), "(-o) and '", "(--baseline with --update-baseline) are the same file"},
+      {kMatc + " eval " + mat + " --scene " + report + " --out " + dir + "/out", "(--out) is the --scene file", ""},
+      {kMatc + " eval " + write(dir, "out/report.md", text) + " --out " + dir + "/out", "(--out) is the input material", ""},
+      {kMatc + " post --emit-source " + post + " --cpp " + postCpp, "(--emit-source) and '", "(--cpp) are the same file"},
+  };
+  for (const Clash& c : clashes) {
+    auto r = run(c.command);
+    EXPECT_EQ(r.exitCode, 1) << c.command << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.first), std::string::npos) << c.command << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.second), std::string::npos) << c.command << "\n" << r.err;
+  }
+  for (const std::string& kept : {mat, emitted, dir + "/out/report.md"}) EXPECT_EQ(facet::test::readText(kept), text) << kept;
+  EXPECT_EQ(facet::test::readText(config), R"({"tiers": {}})");
+  EXPECT_EQ(facet::test::readText(scene), "{}");
+  EXPECT_EQ(facet::test::readText(report), "{}");
+  EXPECT_EQ(facet::test::readText(postCpp), "keep");
+  for (const char* absent : {"p.matpkg", "real/p.matpkg", "e.matpkg", "new.json", "out/plot.svg"})
+    EXPECT_FALSE(fs::exists(dir + "/" + absent)) << absent;
+}
+
+// The outputs of one command land together: when one cannot be written, none is replaced.
+TEST(MatcCli, AnOutputThatCannotBeWrittenLeavesTheOthersUnchanged) {
+  const std::string dir = facet::test::scratchDir("cli-together");
+  const std::string mat = facet::test::examplePath("materials/red_plastic.mat");
+  const std::string package = write(dir, "red.matpkg", "old package");
+  auto r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --depfile " + dir + "/no-such-folder/red.d");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cannot write '" + dir + "/no-such-folder/red.d'"), std::string::npos) << r.err;
+  EXPECT_EQ(facet::test::readText(package), "old package");
+  r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --emit-source " + dir + "/src --depfile " + dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(facet::test::readText(package), "old package");
+  EXPECT_TRUE(fs::is_empty(dir + "/src"));
+
+  const std::string report = write(dir, "report.txt", "old report");
+  r = run(kMatc + " lint " + mat + " --tiers low -o " + report + " --baseline " + dir + "/no-such-folder/b.json --update-baseline");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(facet::test::readText(report), "old report");
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"red.matpkg", "report.txt", "src"})) << "no temporary file is left";
 }
 
 // matc eval (docs/eval.md): the report on success; the compiler's diagnostics for a bad material
