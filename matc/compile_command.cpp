@@ -113,7 +113,20 @@ int compileCommand(const CompileArgs& args) {
       std::fprintf(stderr, "\r%s: compiling variants %zu/%zu", material->name.c_str(), done, total);
       std::fflush(stderr);
     };
-  if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
+  if (!args.noCache) {
+    // A cache the user named must be usable; the default one only speeds builds up, so a build
+    // where it cannot be (a read-only home, a folder of other files there) goes on without it.
+    options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
+    std::string error;
+    if (!options.cacheDir.empty() && !compiler::prepareVariantCache(options.cacheDir, &error)) {
+      if (!args.cacheDir.empty()) {
+        printError("--cache: " + error);
+        return 2;
+      }
+      std::fprintf(stderr, "matc: warning: building without the variant cache: %s\n", error.c_str());
+      options.cacheDir.clear();
+    }
+  }
   options.cacheMaxBytes = uint64_t(args.cacheMaxMiB) << 20;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
@@ -123,6 +136,12 @@ int compileCommand(const CompileArgs& args) {
     printBuildError(source, buildError.message, buildError.loc);
     return 1;
   }
+  if (built->cacheRejected > 0)
+    std::fprintf(stderr,
+                 "matc: warning: %zu entr%s of the variant cache %s failed validation (spirv-val, glslang) and %s "
+                 "compiled again: something other than matc wrote there\n",
+                 built->cacheRejected, built->cacheRejected == 1 ? "y" : "ies", options.cacheDir.c_str(),
+                 built->cacheRejected == 1 ? "was" : "were");
   // Every output is known before any is written: the emitted sources are checked like the
   // package and the depfile, then all land together.
   std::vector<package::OutputFile> files{{output, package::write(built->package)}};

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -105,6 +106,38 @@ TEST(MatcCli, CacheOptionsSelectTheCacheAndNoCacheTouchesNone) {
   auto none = run(compile + " --no-cache");
   EXPECT_EQ(none.out.find("from the cache"), std::string::npos) << none.out;
   EXPECT_EQ(run(compile + " --no-cache --cache " + dir).exitCode, 2);
+}
+
+// `--cache .` or `--cache ~/work` must not make the cache's trimming delete the user's files:
+// a folder that is not the cache's own is refused (exit 2) and left as it was, and so is a regular
+// file. The default cache only speeds builds up: when it is unusable the build goes on without it.
+TEST(MatcCli, CacheRefusesAFolderOrFileThatIsNotItsOwn) {
+  const std::string dir = facet::test::scratchDir("cli-cache-foreign");
+  const std::string mat = facet::test::examplePath("materials/brushed_gold.mat");
+  // A bound of 1 MiB that the user's 2 MiB file alone exceeds: trimming such a folder used to
+  // delete it (oldest first), and the stale-looking temporary name under any bound.
+  const std::string compile = kMatc + " compile " + mat + " --tiers mid -o " + dir + "/g.matpkg --cache-max-size 1";
+  fs::create_directories(dir + "/work");
+  const std::string big(2 << 20, 'm');
+  const std::vector<std::string> theirs = {write(dir, "work/notes.txt", "mine"), write(dir, "work/old.tmp.1", "mine"),
+                                           write(dir, "work/big.dat", big)};
+  for (const std::string& f : theirs) fs::last_write_time(f, fs::file_time_type::clock::now() - std::chrono::hours(2));
+  auto r = run(compile + " --cache " + dir + "/work");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("matc: error: --cache: '" + dir + "/work' is not a variant cache"), std::string::npos) << r.err;
+  r = run(compile + " --cache " + theirs[0]);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("is not a folder"), std::string::npos) << r.err;
+  for (const std::string& f : theirs) EXPECT_TRUE(fs::exists(f) && facet::test::readText(f) == (f == theirs[2] ? big : "mine")) << f;
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/work"), fs::directory_iterator()), 3);
+  EXPECT_FALSE(fs::exists(dir + "/g.matpkg"));
+
+  fs::create_directories(dir + "/xdg/facet");
+  write(dir, "xdg/facet/matc", "not a folder");
+  r = run("XDG_CACHE_HOME=" + dir + "/xdg " + compile);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("matc: warning: building without the variant cache"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/g.matpkg"));
 }
 
 // Without a terminal (as here: a pipe) compile prints no progress line; info --json is one JSON
