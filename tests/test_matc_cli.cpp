@@ -343,6 +343,27 @@ TEST(MatcCli, LintExitCodesAndBaselineRoundTrip) {
   EXPECT_NE(r.out.find("\"errors\": 0"), std::string::npos) << r.out;
 }
 
+// --tolerance nan used to pass the range check and switch every baseline comparison off (no
+// comparison with NaN is true): a tolerance must be a finite number in [0, 1000].
+TEST(MatcCli, LintToleranceMustBeAFiniteNumberInRange) {
+  const std::string dir = facet::test::scratchDir("cli-lint-tolerance");
+  const std::string red = facet::test::examplePath("materials/red_plastic.mat");
+  const std::string lint = kMatc + " lint " + red + " --baseline " + dir + "/b.json --tiers low";
+  ASSERT_EQ(run(lint + " --update-baseline").exitCode, 0);
+  // A baseline whose figures are all far below today's: every comparison fails.
+  std::string baseline = facet::test::readText(dir + "/b.json");
+  baseline = std::regex_replace(baseline, std::regex(": [0-9.]+"), ": 0.001");
+  write(dir, "b.json", baseline);
+  EXPECT_EQ(run(lint).exitCode, 1);
+  for (const char* tolerance : {"nan", "NaN", "-nan", "inf", "-1", "1e999", "1001"}) {
+    auto r = run(lint + " --tolerance " + tolerance);
+    EXPECT_EQ(r.exitCode, 2) << tolerance << "\n" << r.out;
+    EXPECT_NE(r.err.find("--tolerance: Value " + std::string(tolerance) + " is not a number in [0, 1000]"), std::string::npos)
+        << r.err;
+  }
+  EXPECT_EQ(run(lint + " --tolerance 1000").exitCode, 1) << "still far past a 1000 % tolerance";
+}
+
 // The output never replaces the material it was compiled from, nor a device node.
 TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   std::string dir = facet::test::scratchDir("cli-overwrite");
