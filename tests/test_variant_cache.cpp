@@ -269,3 +269,30 @@ TEST(VariantCache, TrimRemovesNothingButTheCachesOwnEntries) {
   EXPECT_TRUE(entryFiles(dir).empty()) << entryFiles(dir).size();
   for (const std::string& f : theirs) EXPECT_EQ(facet::test::readText(f), "theirs") << f;
 }
+
+// An entry folder that is a link to a folder elsewhere is not the cache's: its entries are
+// neither read (nor their times refreshed) nor written, and what is there stays as it was.
+TEST(VariantCache, AnEntryFolderThatLinksElsewhereIsNeitherReadNorWritten) {
+  const std::string dir = facet::test::scratchDir("variant-cache-linked-folder");
+  auto cold = facet::test::buildText(kMaterial, "test.mat", withCache(dir));
+  ASSERT_TRUE(cold);
+  const fs::path folder = entryFiles(dir).front().parent_path();
+  const size_t linked = size_t(std::distance(fs::directory_iterator(folder), fs::directory_iterator()));
+  const std::string elsewhere = facet::test::scratchDir("variant-cache-linked-target") + "/" + folder.filename().string();
+  fs::rename(folder, elsewhere);
+  fs::create_directory_symlink(elsewhere, folder);
+  std::vector<std::pair<fs::path, std::string>> before;
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(2);
+  for (const auto& e : fs::directory_iterator(elsewhere)) {
+    fs::last_write_time(e.path(), old);
+    before.push_back({e.path(), readBytes(e.path())});
+  }
+  auto again = facet::test::buildText(kMaterial, "test.mat", withCache(dir));
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->cacheHits, again->package.variants.size() - linked);
+  EXPECT_EQ(size_t(std::distance(fs::directory_iterator(elsewhere), fs::directory_iterator())), before.size());
+  for (const auto& [path, bytes] : before) {
+    EXPECT_TRUE(readBytes(path) == bytes) << path;
+    EXPECT_EQ(fs::last_write_time(path), old) << path;
+  }
+}

@@ -144,6 +144,13 @@ bool holdsEntriesOnly(const fs::path& folder, std::string* stranger) {
   return !ec;
 }
 
+// An entry folder itself, not a link to a folder elsewhere: the cache writes and refreshes
+// nothing outside its own folder.
+bool isOwnFolder(const fs::path& folder) {
+  struct stat st {};
+  return lstat(folder.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
 // The marker's first line, or "" when it is absent or not a small regular file.
 std::string markerLine(const std::string& path) {
   int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
@@ -218,7 +225,9 @@ std::optional<CompiledShaders> VariantCache::load(const std::string& key) const 
   if (dir_.empty()) return std::nullopt;
   // Only a regular file of a bounded size is read: not a link (a hit refreshes the file's time,
   // which would touch the link's target), a FIFO (which would block) or a planted huge file.
-  int fd = ::open(path(key).c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  const std::string file = path(key);
+  if (!isOwnFolder(fs::path(file).parent_path())) return std::nullopt;
+  int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return std::nullopt;
   struct stat st {};
   std::string bytes;
@@ -253,7 +262,7 @@ void VariantCache::store(const std::string& key, const CompiledShaders& shaders)
   std::error_code ec;
   const std::string target = path(key);
   fs::create_directories(fs::path(target).parent_path(), ec);
-  if (ec) return;
+  if (ec || !isOwnFolder(fs::path(target).parent_path())) return;
   std::string ignored;
   package::writeFile(target, std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), &ignored);
 }
