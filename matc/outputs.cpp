@@ -23,6 +23,7 @@ struct Identity {
 };
 
 std::optional<Identity> identify(const std::string& path) {
+  if (path.empty()) return std::nullopt;
   std::error_code ec;
   fs::path at = fs::absolute(path, ec);
   if (ec) return std::nullopt;
@@ -42,17 +43,21 @@ std::optional<Identity> identify(const std::string& path) {
 }  // namespace
 
 bool outputsSpareInputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs) {
-  auto identities = [](const std::vector<NamedFile>& files) {
+  // An input that does not exist cannot be lost (reading it fails with its own error).
+  auto identities = [](const std::vector<NamedFile>& files, bool existing) {
     std::vector<std::optional<Identity>> ids;
-    for (const NamedFile& f : files) ids.push_back(identify(f.path));
+    for (const NamedFile& f : files) {
+      ids.push_back(identify(f.path));
+      if (existing && ids.back() && !ids.back()->below.empty()) ids.back().reset();
+    }
     return ids;
   };
-  const std::vector<std::optional<Identity>> in = identities(inputs), out = identities(outputs);
+  const std::vector<std::optional<Identity>> in = identities(inputs, true), out = identities(outputs, false);
   for (size_t o = 0; o < outputs.size(); ++o) {
     if (!out[o]) continue;  // no folder of it exists: writing it fails with its own error
     const NamedFile& output = outputs[o];
     for (size_t i = 0; i < inputs.size(); ++i) {
-      if (in[i] != out[o]) continue;
+      if (!in[i] || in[i] != out[o]) continue;
       printError("the output '" + output.path + "' (" + output.role + ") is " + inputs[i].role + " '" + inputs[i].path +
                  "'; name another file");
       return false;
