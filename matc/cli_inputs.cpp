@@ -40,14 +40,6 @@ bool readSource(const std::string& path, ir::SourceFile* out) {
   return true;
 }
 
-bool outputSparesInput(const std::string& input, const std::string& output) {
-  std::error_code ec;
-  bool same = fs::weakly_canonical(input, ec) == fs::weakly_canonical(output, ec) || fs::equivalent(input, output, ec);
-  if (!same) return true;
-  printError("the output '" + output + "' is the input material; name another file with -o");
-  return false;
-}
-
 std::optional<ir::Material> loadMaterial(const std::string& path, ir::SourceFile* source) {
   if (!readSource(path, source)) return std::nullopt;
   ir::Diagnostics diags(*source);

@@ -16,10 +16,6 @@ namespace facet::matc {
 // before reading them. Prints the error and returns false on failure.
 bool readSource(const std::string& path, ir::SourceFile* out);
 
-// False (after printing why) when writing `output` would destroy `input`: the same file, by
-// path or through a link (`matc compile x.mat -o x.mat`, or a source named x.matpkg with no -o).
-bool outputSparesInput(const std::string& input, const std::string& output);
-
 // Reads, parses and checks a material file. Prints the diagnostics (warnings too) to stderr;
 // nullopt when the file cannot be read or has errors (the command then exits 1).
 std::optional<ir::Material> loadMaterial(const std::string& path, ir::SourceFile* source);

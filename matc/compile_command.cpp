@@ -9,6 +9,7 @@
 
 #include "cli_inputs.h"
 #include "commands.h"
+#include "outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/compiler/library_sources.h"
 #include "facet/ir/check.h"
@@ -25,24 +26,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool writeSources(const std::string& dir, const std::vector<compiler::GeneratedFile>& files) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) {
-    printError("cannot create '" + dir + "': " + ec.message());
-    return false;
-  }
-  for (const compiler::GeneratedFile& f : files) {
-    std::vector<uint8_t> bytes(f.text.begin(), f.text.end());
-    std::string error;
-    if (!package::writeFile((fs::path(dir) / f.name).string(), bytes, &error)) {
-      printError(error);
-      return false;
-    }
-  }
-  return true;
-}
-
 // A path as a Makefile (and Ninja depfile) word: spaces and '#' escaped with '\\', '$' doubled.
 std::string makeWord(const std::string& path) {
   std::string out;
@@ -57,8 +40,7 @@ std::string makeWord(const std::string& path) {
 // `output: inputs...` for Ninja/Make: the material, the scene, the matc executable (it embeds the
 // templates and chunks) and, while the source tree it was built from exists, every template and
 // chunk a built variant used, so editing one rebuilds the package.
-bool writeDepfile(const std::string& depfile, const std::string& output, const CompileArgs& args,
-                  const std::set<std::string>& libraryFiles) {
+std::string depfileText(const std::string& output, const CompileArgs& args, const std::set<std::string>& libraryFiles) {
   std::vector<std::string> inputs{args.input};
   if (!args.scene.empty()) inputs.push_back(args.scene);
   std::error_code ec;
@@ -69,13 +51,10 @@ bool writeDepfile(const std::string& depfile, const std::string& output, const C
   std::string text = makeWord(output) + ":";
   for (const std::string& in : inputs) text += " \\\n  " + makeWord(in);
   text += "\n";
-  std::string error;
-  if (!package::writeFile(depfile, std::vector<uint8_t>(text.begin(), text.end()), &error)) {
-    printError(error);
-    return false;
-  }
-  return true;
+  return text;
 }
+
+std::vector<uint8_t> bytesOf(const std::string& text) { return {text.begin(), text.end()}; }
 
 // $XDG_CACHE_HOME/facet/matc, else $HOME/.cache/facet/matc (the XDG base directory default), else none.
 std::string defaultCacheDir() {
@@ -111,12 +90,16 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
 }  // namespace
 
 int compileCommand(const CompileArgs& args) {
+  std::string output = args.output;
+  if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
+  std::vector<NamedFile> inputs{{"the input material", args.input}};
+  if (!args.scene.empty()) inputs.push_back({"the --scene file", args.scene});
+  std::vector<NamedFile> outputs{{args.output.empty() ? "no -o: the input with .matpkg" : "-o", output}};
+  if (!args.depfile.empty()) outputs.push_back({"--depfile", args.depfile});
+  if (!outputsSpareInputs(inputs, outputs)) return 1;
   ir::SourceFile source;
   std::optional<ir::Material> material = loadMaterial(args.input, &source);
   if (!material) return 1;
-  std::string output = args.output;
-  if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
-  if (!outputSparesInput(args.input, output)) return 1;
 
   compiler::BuildOptions options;
   options.fp16Emulation = args.fp16Emulation;
@@ -130,7 +113,20 @@ int compileCommand(const CompileArgs& args) {
       std::fprintf(stderr, "\r%s: compiling variants %zu/%zu", material->name.c_str(), done, total);
       std::fflush(stderr);
     };
-  if (!args.noCache) options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
+  if (!args.noCache) {
+    // A cache the user named must be usable; the default one only speeds builds up, so a build
+    // where it cannot be (a read-only home, a folder of other files there) goes on without it.
+    options.cacheDir = args.cacheDir.empty() ? defaultCacheDir() : args.cacheDir;
+    std::string error;
+    if (!options.cacheDir.empty() && !compiler::prepareVariantCache(options.cacheDir, &error)) {
+      if (!args.cacheDir.empty()) {
+        printError("--cache: " + error);
+        return 2;
+      }
+      std::fprintf(stderr, "matc: warning: building without the variant cache: %s\n", error.c_str());
+      options.cacheDir.clear();
+    }
+  }
   options.cacheMaxBytes = uint64_t(args.cacheMaxMiB) << 20;
   if (int status = buildOptions(args, *material, &options); status != 0) return status;
   compiler::BuildError buildError;
@@ -140,14 +136,22 @@ int compileCommand(const CompileArgs& args) {
     printBuildError(source, buildError.message, buildError.loc);
     return 1;
   }
-  std::string error;
-  std::vector<uint8_t> bytes = package::write(built->package);
-  if (!package::writeFile(output, bytes, &error)) {
-    printError(error);
-    return 1;
+  if (built->cacheRejected > 0)
+    std::fprintf(stderr,
+                 "matc: warning: %zu entr%s of the variant cache %s failed validation (spirv-val, glslang) and %s "
+                 "compiled again: something other than matc wrote there\n",
+                 built->cacheRejected, built->cacheRejected == 1 ? "y" : "ies", options.cacheDir.c_str(),
+                 built->cacheRejected == 1 ? "was" : "were");
+  // Every output is known before any is written: the emitted sources are checked like the
+  // package and the depfile, then all land together.
+  std::vector<package::OutputFile> files{{output, package::write(built->package)}};
+  const size_t packageBytes = files[0].bytes.size();
+  if (!args.depfile.empty()) files.push_back({args.depfile, bytesOf(depfileText(output, args, built->libraryFiles))});
+  for (const compiler::GeneratedFile& f : built->sources) {
+    outputs.push_back({"--emit-source", (fs::path(args.emitSource) / f.name).string()});
+    files.push_back({outputs.back().path, bytesOf(f.text)});
   }
-  if (!args.emitSource.empty() && !writeSources(args.emitSource, built->sources)) return 1;
-  if (!args.depfile.empty() && !writeDepfile(args.depfile, output, args, built->libraryFiles)) return 1;
+  if (!outputsSpareInputs(inputs, outputs) || !writeOutputs({args.emitSource}, files)) return 1;
   size_t variants = built->package.variants.size();
   std::string forScene;
   if (options.scene) {
@@ -159,7 +163,7 @@ int compileCommand(const CompileArgs& args) {
   std::string cached;
   if (built->cacheHits > 0) cached = " (" + std::to_string(built->cacheHits) + " from the cache)";
   std::printf("%s: %zu variant%s%s, %zu bytes -> %s%s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
-              forScene.c_str(), bytes.size(), output.c_str(), cached.c_str());
+              forScene.c_str(), packageBytes, output.c_str(), cached.c_str());
   return 0;
 }
 

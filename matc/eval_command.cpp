@@ -7,8 +7,34 @@
 #include "facet/eval/report.h"
 #include "facet/gpu_stats/report.h"
 #include "cli_inputs.h"
+#include "facet/runtime/scene.h"
+#include "outputs.h"
 
 namespace facet::matc {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The files a scene makes the evaluation read: the scene, its images, glTF meshes and grading LUT.
+// A scene that does not load names none here; evaluate() reports why.
+std::vector<NamedFile> sceneInputs(const std::string& path) {
+  if (path.empty()) return {};
+  std::vector<NamedFile> files{{"the --scene file", path}};
+  std::string ignored;
+  std::optional<runtime::Scene> scene = runtime::loadScene(path, &ignored);
+  if (!scene) return files;
+  const std::string named = "a file of the --scene file";
+  for (const runtime::SceneObject& o : scene->objects) {
+    if (fs::path(o.mesh).has_extension()) files.push_back({named, o.mesh});
+    for (const auto& [param, image] : o.textures) files.push_back({named, image});
+  }
+  if (scene->environment && !scene->environment->image.empty()) files.push_back({named, scene->environment->image});
+  if (!scene->gradingLut.empty()) files.push_back({named, scene->gradingLut});
+  return files;
+}
+
+}  // namespace
 
 int evalCommand(const EvalArgs& args) {
   eval::EvalOptions options;
@@ -21,13 +47,23 @@ int evalCommand(const EvalArgs& args) {
       return 2;
     }
   }
+  const std::string outDir = args.out.empty() ? fs::path(args.input).stem().string() + ".eval" : args.out;
+  std::vector<NamedFile> inputs = sceneInputs(args.scene);
+  inputs.insert(inputs.begin(), {"the input material", args.input});
+  // The report's own names are known now, the images' only after the run: both are checked, the
+  // first before the run.
+  std::vector<NamedFile> outputs;
+  for (const char* name : {"report.md", "report.json", "plot.svg"}) outputs.push_back({"--out", (fs::path(outDir) / name).string()});
+  if (!outputsSpareInputs(inputs, outputs)) return 1;
   ir::SourceFile source;
   std::optional<ir::Material> material = loadMaterial(args.input, &source);
   if (!material) return 1;
+  // The folders first, so an --out that cannot be written fails before the run, not after it.
+  const std::string imageDir = (fs::path(outDir) / "images").string();
+  if (!writeOutputs({imageDir}, {})) return 1;
 
   options.swaps = !args.noSwaps;
   options.sceneFile = args.scene;
-  options.outDir = args.out.empty() ? std::filesystem::path(args.input).stem().string() + ".eval" : args.out;
   options.timingFrames = args.frames;
   options.grid.pixelsPerSphere = uint32_t(args.spherePixels);
   options.validation = args.validation;
@@ -48,13 +84,12 @@ int evalCommand(const EvalArgs& args) {
     eval::addGpuFigures(&*report, gpus, tool);
     std::printf("%s\n", gpu_stats::sourceNote(report->gpuStats).c_str());
   }
-  std::string message;
-  if (!eval::writeReport(*report, options.outDir, &message)) {
-    printError(message);
-    return 1;
-  }
+  const std::vector<package::OutputFile> files = eval::reportFiles(*report, outDir);
+  outputs.clear();
+  for (const package::OutputFile& f : files) outputs.push_back({"--out", f.path});
+  if (!outputsSpareInputs(inputs, outputs) || !writeOutputs({imageDir}, files)) return 1;
   std::printf("%s: %zu configurations -> %s/report.md, report.json, plot.svg, images/\n", material->name.c_str(),
-              report->results.size(), options.outDir.c_str());
+              report->results.size(), outDir.c_str());
   return 0;
 }
 

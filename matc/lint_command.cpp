@@ -6,6 +6,7 @@
 
 #include "cli_inputs.h"
 #include "commands.h"
+#include "outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/lint/report.h"
@@ -41,14 +42,7 @@ bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::strin
   return true;
 }
 
-// package::writeFile writes atomically (a temporary file, then a rename): no partial report.
-bool writeText(const std::string& path, const std::string& text) {
-  std::vector<uint8_t> bytes(text.begin(), text.end());
-  std::string error;
-  if (package::writeFile(path, bytes, &error)) return true;
-  printError(error);
-  return false;
-}
+std::vector<uint8_t> bytesOf(const std::string& text) { return {text.begin(), text.end()}; }
 
 bool readJsonFile(const std::string& path, std::string* text) {
   ir::SourceFile file;  // the same size and regular-file checks as materials
@@ -77,6 +71,17 @@ int lintCommand(const LintArgs& args) {
     return 2;
   }
 
+  std::vector<std::string> files;
+  if (!expandInputs(args.inputs, &files)) return 1;
+  std::vector<NamedFile> inputs, outputs;
+  for (const std::string& path : files) inputs.push_back({"the input material", path});
+  if (!args.config.empty()) inputs.push_back({"the --config file", args.config});
+  if (!args.output.empty()) outputs.push_back({"-o", args.output});
+  // --update-baseline reads the baseline and writes it again: then it is an output, and only that.
+  if (args.updateBaseline) outputs.push_back({"--baseline with --update-baseline", args.baseline});
+  else if (!args.baseline.empty()) inputs.push_back({"the --baseline file", args.baseline});
+  if (!outputsSpareInputs(inputs, outputs)) return 1;
+
   std::optional<lint::Budgets> budgets;
   if (!args.config.empty()) {
     std::string text, error;
@@ -104,8 +109,6 @@ int lintCommand(const LintArgs& args) {
   // While rewriting the baseline, its old figures are not held against the new ones.
   if (baseline && !args.updateBaseline) options.baseline = &*baseline;
 
-  std::vector<std::string> files;
-  if (!expandInputs(args.inputs, &files)) return 1;
   std::vector<lint::LintedFile> linted;
   for (const std::string& path : files) {
     lint::LintedFile f;
@@ -117,12 +120,10 @@ int lintCommand(const LintArgs& args) {
   std::string report = args.format == "json"    ? lint::formatJson(linted)
                        : args.format == "sarif" ? lint::formatSarif(linted, compiler::compilerVersion())
                                                 : lint::formatText(linted);
-  if (args.output.empty()) {
-    std::fputs(report.c_str(), stdout);
-  } else if (!writeText(args.output, report)) {
-    return 1;
-  }
-
+  // The report and the baseline land together: neither is written when the other cannot be.
+  std::vector<package::OutputFile> written;
+  if (args.output.empty()) std::fputs(report.c_str(), stdout);
+  else written.push_back({args.output, bytesOf(report)});
   if (args.updateBaseline) {
     lint::Baseline updated = baseline.value_or(lint::Baseline{});
     for (const lint::LintedFile& f : linted) {
@@ -133,9 +134,10 @@ int lintCommand(const LintArgs& args) {
         for (auto [stage, figures] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}})
           for (const auto& [name, value] : lint::namedFigures(*figures)) variants[v.key][stage][name] = value;
     }
-    if (!writeText(args.baseline, lint::writeBaseline(updated))) return 1;
-    std::fprintf(stderr, "matc lint: wrote baseline %s\n", args.baseline.c_str());
+    written.push_back({args.baseline, bytesOf(lint::writeBaseline(updated))});
   }
+  if (!writeOutputs({}, written)) return 1;
+  if (args.updateBaseline) std::fprintf(stderr, "matc lint: wrote baseline %s\n", args.baseline.c_str());
 
   bool failed = false;
   for (const lint::LintedFile& f : linted)

@@ -1,9 +1,30 @@
 // matc: the Facet material compiler's command line. Argument parsing and wiring only; the work
 // happens in the ir, compiler and package libraries.
 #include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <string>
 
 #include "commands.h"
 #include "facet/atomic_file.h"
+
+namespace {
+
+// CLI::Range lets NaN through (no comparison with it is true), and a NaN tolerance turns every
+// baseline comparison off: this one takes finite numbers in [min, max] only.
+CLI::Validator finiteRange(double min, double max) {
+  const std::string range = "[" + CLI::detail::to_string(min) + ", " + CLI::detail::to_string(max) + "]";
+  return CLI::Validator(
+      [min, max, range](std::string& text) {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !(value >= min && value <= max))
+          return "Value " + text + " is not a number in " + range;
+        return std::string();
+      },
+      "NUMBER in " + range);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // Ctrl-C or a build system's kill during a write leaves no temporary file behind.
@@ -65,7 +86,7 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--baseline", lint.baseline, "committed figures: fail when a variant's figure grows past the tolerance");
   lintCmd->add_flag("--update-baseline", lint.updateBaseline, "rewrite the --baseline file from this run");
   lintCmd->add_option("--tolerance", lint.tolerancePercent, "growth over the baseline still accepted, in percent (default 5)")
-      ->check(CLI::Range(0.0, 1000.0));
+      ->check(finiteRange(0, 1000));
   lintCmd->add_option("--format", lint.format, "text | json | sarif")->check(CLI::IsMember({"text", "json", "sarif"}));
   lintCmd->add_option("-o,--output", lint.output, "write the report to this file instead of standard output");
   lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "outputs.h"
 #include "facet/compiler/post.h"
 #include "facet/package.h"
 
@@ -41,32 +42,26 @@ int postCommand(const PostArgs& args) {
       return 1;
     }
   }
-  auto write = [&](const std::string& path, const std::string& text) {
-    const std::vector<uint8_t> bytes(text.begin(), text.end());
-    if (package::writeFile(path, bytes, &error)) return true;
-    printError(error);
-    return false;
+  // Every output, checked against the others and written together.
+  namespace fs = std::filesystem;
+  std::vector<NamedFile> outputs;
+  std::vector<package::OutputFile> files;
+  auto add = [&](const char* role, const std::string& path, const std::string& text) {
+    outputs.push_back({role, path});
+    files.push_back({path, std::vector<uint8_t>(text.begin(), text.end())});
   };
-  if (!args.emitSource.empty()) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(args.emitSource, ec);
-    if (ec) {
-      printError("cannot create '" + args.emitSource + "': " + ec.message());
-      return 1;
-    }
-    for (const compiler::PostShaders& shaders : variants) {
-      const std::string stem = (fs::path(args.emitSource) / ("post." + compiler::postVariantKey(shaders.effects))).string();
-      if (!write(stem + ".vert.es300.glsl", shaders.vertex.glslEs) || !write(stem + ".vert.metal", shaders.vertex.msl) ||
-          !write(stem + ".frag.es300.glsl", shaders.sampledFragment.glslEs) ||
-          !write(stem + ".frag.metal", shaders.sampledFragment.msl) ||
-          !write(stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs) ||
-          !write(stem + ".fetch.frag.metal", shaders.fetchFragment.msl)) {
-        return 1;
-      }
-    }
+  for (size_t i = 0; i < variants.size() && !args.emitSource.empty(); ++i) {
+    const compiler::PostShaders& shaders = variants[i];
+    const std::string stem = (fs::path(args.emitSource) / ("post." + compiler::postVariantKey(shaders.effects))).string();
+    add("--emit-source", stem + ".vert.es300.glsl", shaders.vertex.glslEs);
+    add("--emit-source", stem + ".vert.metal", shaders.vertex.msl);
+    add("--emit-source", stem + ".frag.es300.glsl", shaders.sampledFragment.glslEs);
+    add("--emit-source", stem + ".frag.metal", shaders.sampledFragment.msl);
+    add("--emit-source", stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs);
+    add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
   }
-  if (!write(args.cpp, compiler::postShadersCpp(variants))) return 1;
+  add("--cpp", args.cpp, compiler::postShadersCpp(variants));
+  if (!outputsSpareInputs({}, outputs) || !writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
     std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
                 shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());

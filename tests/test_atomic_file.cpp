@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include "facet/atomic_file.h"
 #include "facet/package.h"
@@ -29,6 +30,11 @@ std::vector<std::string> entries(const std::string& dir) {
   for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename().string());
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::string contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 }  // namespace
@@ -92,4 +98,53 @@ TEST(AtomicFile, SignalDuringAWriteRemovesTheTemporaryFile) {
   ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << WEXITSTATUS(status);
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
   EXPECT_TRUE(entries(dir).empty());
+}
+
+// Several outputs of one command land together: when one cannot be written, none is replaced
+// and no temporary file is left, whatever its place in the list.
+TEST(AtomicFile, WriteFilesChangesNoDestinationWhenOneCannotBeWritten) {
+  std::string dir = freshDir("atomic-together");
+  std::string first = dir + "/first.bin", last = dir + "/last.bin";
+  std::ofstream(first) << "old first";
+  std::ofstream(last) << "old last";
+  const std::vector<uint8_t> bytes{1, 2, 3};
+  for (const std::string& unwritable : {dir + "/no-such-folder/x.bin", dir}) {
+    std::string error;
+    EXPECT_FALSE(facet::package::writeFiles({{first, bytes}, {unwritable, bytes}, {last, bytes}}, &error));
+    EXPECT_NE(error.find("cannot write '" + unwritable + "'"), std::string::npos) << error;
+    EXPECT_EQ(contents(first), "old first");
+    EXPECT_EQ(contents(last), "old last");
+    EXPECT_EQ(entries(dir), (std::vector<std::string>{"first.bin", "last.bin"}));
+  }
+  std::string error;
+  ASSERT_TRUE(facet::package::writeFiles({{first, bytes}, {last, bytes}}, &error)) << error;
+  EXPECT_EQ(fs::file_size(first), 3u);
+  EXPECT_EQ(fs::file_size(last), 3u);
+}
+
+// An interrupt while a command holds all its outputs staged (dozens of temporary files) removes
+// every one of them.
+TEST(AtomicFile, SignalWithManyStagedFilesRemovesEveryTemporaryFile) {
+  std::string dir = freshDir("atomic-signal-many");
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    facet::removeTemporaryFilesOnSignals();
+    std::vector<std::unique_ptr<facet::AtomicFile>> files;
+    std::string error;
+    std::vector<uint8_t> bytes(16, 1);
+    for (int i = 0; i < 400; ++i) {
+      files.push_back(std::make_unique<facet::AtomicFile>());
+      if (!files.back()->open(dir + "/out" + std::to_string(i), &error) || !files.back()->write(bytes, &error) ||
+          !files.back()->finish(&error))
+        _exit(3);
+    }
+    raise(SIGTERM);
+    _exit(4);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << WEXITSTATUS(status);
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_TRUE(entries(dir).empty()) << entries(dir).size() << " files left";
 }

@@ -193,6 +193,38 @@ TEST(Lint, BudgetAndBaselineFilesReportTheirJsonPointer) {
   EXPECT_EQ(error.rfind("base.json:3:1: error: invalid JSON", 0), 0u) << error;
 }
 
+// A name lint does not know would switch its check off without a word (a budget on "alus" limits
+// nothing, a baseline entry for "hgh.dir1" is never compared): unknown figures, tiers, variant
+// keys and top-level keys are errors at their JSON pointer, with the names lint knows.
+TEST(Lint, UnknownNamesInBudgetAndBaselineFilesAreErrors) {
+  const std::string figures = "cycles, alu, scalar_alu, transcendental, divisions, textures, varying_components, "
+                              "input_vectors, output_vectors, uniform_vectors, samplers";
+  std::string error;
+  EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"high": {"fragment": {"alus": 10}}}})", &error));
+  EXPECT_EQ(error, "b.json: error: /tiers/high/fragment/alus: unknown figure 'alus' (known: " + figures + ", min_relaxed_percent)");
+  EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"hgh": {"fragment": {"alu": 10}}}})", &error));
+  EXPECT_EQ(error, "b.json: error: /tiers/hgh: unknown tier 'hgh' (known: reference, high, mid, low)");
+  EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"a/b~": {}}})", &error));
+  EXPECT_EQ(error, "b.json: error: /tiers/a~1b~0: unknown tier 'a/b~' (known: reference, high, mid, low)");
+  EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {}, "teirs": {"high": {}}})", &error));
+  EXPECT_EQ(error, "b.json: error: /teirs: unknown key 'teirs' (expected only \"tiers\")");
+
+  EXPECT_FALSE(facet::lint::parseBaseline("base.json", R"({"materials": {"m": {"high.dir1": {"fragment": {"alus": 1}}}}})", &error));
+  EXPECT_EQ(error, "base.json: error: /materials/m/high.dir1/fragment/alus: unknown figure 'alus' (known: " + figures + ")");
+  EXPECT_FALSE(facet::lint::parseBaseline("base.json", R"({"materials": {"m": {"hgh.dir1": {}}}})", &error));
+  EXPECT_EQ(error, "base.json: error: /materials/m/hgh.dir1: 'hgh.dir1' is not a variant key "
+                   "(<tier>.dir<0|1>[.pt<1|2|4>], tiers: reference, high, mid, low)");
+  EXPECT_FALSE(facet::lint::parseBaseline("base.json", R"({"materials": {}, "material": {}})", &error));
+  EXPECT_EQ(error, "base.json: error: /material: unknown key 'material' (expected only \"materials\")");
+
+  for (const char* file : {"lint/budgets.json", "lint/baseline.json"}) {  // the project's own files still parse
+    const std::string path = facet::test::examplePath(file), text = facet::test::readText(path);
+    EXPECT_TRUE(std::string(file) == "lint/budgets.json" ? bool(facet::lint::parseBudgets(path, text, &error))
+                                                         : bool(facet::lint::parseBaseline(path, text, &error)))
+        << error;
+  }
+}
+
 TEST(Lint, JsonAndSarifReportsCarryEveryFindingWithItsLocation) {
   facet::lint::LintedFile f{{"materials/test file.mat", material("", "        roughness = sqrt(-1.0)\n")}, {}};
   LintOptions options;

@@ -1,6 +1,8 @@
 // matc as users run it: exit codes, diagnostics on stderr, no partial output on failure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -104,6 +106,38 @@ TEST(MatcCli, CacheOptionsSelectTheCacheAndNoCacheTouchesNone) {
   auto none = run(compile + " --no-cache");
   EXPECT_EQ(none.out.find("from the cache"), std::string::npos) << none.out;
   EXPECT_EQ(run(compile + " --no-cache --cache " + dir).exitCode, 2);
+}
+
+// `--cache .` or `--cache ~/work` must not make the cache's trimming delete the user's files:
+// a folder that is not the cache's own is refused (exit 2) and left as it was, and so is a regular
+// file. The default cache only speeds builds up: when it is unusable the build goes on without it.
+TEST(MatcCli, CacheRefusesAFolderOrFileThatIsNotItsOwn) {
+  const std::string dir = facet::test::scratchDir("cli-cache-foreign");
+  const std::string mat = facet::test::examplePath("materials/brushed_gold.mat");
+  // A bound of 1 MiB that the user's 2 MiB file alone exceeds: trimming such a folder used to
+  // delete it (oldest first), and the stale-looking temporary name under any bound.
+  const std::string compile = kMatc + " compile " + mat + " --tiers mid -o " + dir + "/g.matpkg --cache-max-size 1";
+  fs::create_directories(dir + "/work");
+  const std::string big(2 << 20, 'm');
+  const std::vector<std::string> theirs = {write(dir, "work/notes.txt", "mine"), write(dir, "work/old.tmp.1", "mine"),
+                                           write(dir, "work/big.dat", big)};
+  for (const std::string& f : theirs) fs::last_write_time(f, fs::file_time_type::clock::now() - std::chrono::hours(2));
+  auto r = run(compile + " --cache " + dir + "/work");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("matc: error: --cache: '" + dir + "/work' is not a variant cache"), std::string::npos) << r.err;
+  r = run(compile + " --cache " + theirs[0]);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("is not a folder"), std::string::npos) << r.err;
+  for (const std::string& f : theirs) EXPECT_TRUE(fs::exists(f) && facet::test::readText(f) == (f == theirs[2] ? big : "mine")) << f;
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/work"), fs::directory_iterator()), 3);
+  EXPECT_FALSE(fs::exists(dir + "/g.matpkg"));
+
+  fs::create_directories(dir + "/xdg/facet");
+  write(dir, "xdg/facet/matc", "not a folder");
+  r = run("XDG_CACHE_HOME=" + dir + "/xdg " + compile);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("matc: warning: building without the variant cache"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/g.matpkg"));
 }
 
 // Without a terminal (as here: a pipe) compile prints no progress line; info --json is one JSON
@@ -309,6 +343,27 @@ TEST(MatcCli, LintExitCodesAndBaselineRoundTrip) {
   EXPECT_NE(r.out.find("\"errors\": 0"), std::string::npos) << r.out;
 }
 
+// --tolerance nan used to pass the range check and switch every baseline comparison off (no
+// comparison with NaN is true): a tolerance must be a finite number in [0, 1000].
+TEST(MatcCli, LintToleranceMustBeAFiniteNumberInRange) {
+  const std::string dir = facet::test::scratchDir("cli-lint-tolerance");
+  const std::string red = facet::test::examplePath("materials/red_plastic.mat");
+  const std::string lint = kMatc + " lint " + red + " --baseline " + dir + "/b.json --tiers low";
+  ASSERT_EQ(run(lint + " --update-baseline").exitCode, 0);
+  // A baseline whose figures are all far below today's: every comparison fails.
+  std::string baseline = facet::test::readText(dir + "/b.json");
+  baseline = std::regex_replace(baseline, std::regex(": [0-9.]+"), ": 0.001");
+  write(dir, "b.json", baseline);
+  EXPECT_EQ(run(lint).exitCode, 1);
+  for (const char* tolerance : {"nan", "NaN", "-nan", "inf", "-1", "1e999", "1001"}) {
+    auto r = run(lint + " --tolerance " + tolerance);
+    EXPECT_EQ(r.exitCode, 2) << tolerance << "\n" << r.out;
+    EXPECT_NE(r.err.find("--tolerance: Value " + std::string(tolerance) + " is not a number in [0, 1000]"), std::string::npos)
+        << r.err;
+  }
+  EXPECT_EQ(run(lint + " --tolerance 1000").exitCode, 1) << "still far past a 1000 % tolerance";
+}
+
 // The output never replaces the material it was compiled from, nor a device node.
 TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   std::string dir = facet::test::scratchDir("cli-overwrite");
@@ -316,7 +371,7 @@ TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   std::string mat = write(dir, "red.mat", text);
   auto r = run(kMatc + " compile " + mat + " -o " + mat);
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("the output '" + mat + "' is the input material"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the output '" + mat + "' (-o) is the input material '" + mat + "'"), std::string::npos) << r.err;
   EXPECT_EQ(facet::test::readText(mat), text);
   std::string pkgNamed = write(dir, "odd.matpkg", text);  // default output = input with .matpkg
   EXPECT_EQ(run(kMatc + " compile " + pkgNamed).exitCode, 1);
@@ -324,6 +379,89 @@ TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   r = run(kMatc + " compile " + mat + " -o /dev/null");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("cannot write '/dev/null': it exists and is not a regular file"), std::string::npos) << r.err;
+}
+
+// One rule for every file every command writes: an output is never an input and never another
+// output, whatever path names it (another spelling, a symbolic link, a hard link, a file that
+// does not exist yet). The error names both arguments, exits 1 and changes no file.
+TEST(MatcCli, NoCommandWritesOverItsInputsOrWritesOneFileTwice) {
+  const std::string dir = facet::test::scratchDir("cli-clash");
+  const std::string text = facet::test::readText(facet::test::examplePath("materials/red_plastic.mat"));
+  const std::string mat = write(dir, "red.mat", text);
+  fs::create_symlink(mat, dir + "/link.mat");
+  fs::create_hard_link(mat, dir + "/hard.mat");
+  const std::string config = write(dir, "budgets.json", R"({"tiers": {}})");
+  const std::string scene = write(dir, "scene.json", "{}");
+  fs::create_directories(dir + "/real");
+  fs::create_symlink(dir + "/real", dir + "/alias");
+  fs::create_directories(dir + "/src");
+  const std::string emitted = write(dir, "src/red_plastic.low.dir0.frag.metal", text);  // a material named as an emitted file
+  fs::create_directories(dir + "/out");
+  const std::string report = write(dir, "out/report.json", "{}");
+  const std::string post = dir + "/post";
+  fs::create_directories(post);
+  const std::string postCpp = write(dir, "post/post.aces.vert.metal", "keep");
+
+  // --tiers last: a list option would take the material as one more tier.
+  auto compile = [](const std::string& args) { return kMatc + " compile " + args + " --no-cache --tiers low"; };
+  auto lint = [](const std::string& args) { return kMatc + " lint " + args + " --tiers low"; };
+  struct Clash {
+    std::string command, first, second;  // the two arguments the message must name
+  };
+  const std::vector<Clash> clashes = {
+      {compile(mat + " --depfile " + mat), "(--depfile) is the input material", ""},
+      {compile(mat + " -o " + dir + "/link.mat"), "(-o) is the input material", ""},
+      {compile(mat + " -o " + dir + "/hard.mat"), "(-o) is the input material", ""},
+      {compile(mat + " -o " + dir + "/p.matpkg --depfile " + dir + "/./p.matpkg"), "(-o) and '", "(--depfile) are the same file"},
+      {compile(mat + " -o " + dir + "/alias/p.matpkg --depfile " + dir + "/real/p.matpkg"), "(-o) and '", "(--depfile)"},
+      {compile(mat + " --scene " + scene + " -o " + scene), "(-o) is the --scene file", ""},
+      {compile(emitted + " -o " + dir + "/e.matpkg --emit-source " + dir + "/src"), "(--emit-source) is the input material", ""},
+      {lint(mat + " -o " + mat), "(-o) is the input material", ""},
+      {lint(dir + " -o " + mat), "(-o) is the input material", ""},  // a folder stands for its .mat files
+      {lint(mat + " --config " + config + " -o " + config), "(-o) is the --config file", ""},
+      {lint(mat + " --baseline " + config + " -o " + config), "(-o) is the --baseline file", ""},
+      {lint(mat + " --baseline " + dir + "/new.json --update-baseline -o " + dir + "/new.json"), "(-o) and '", "(--baseline with --update-baseline) are the same file"},
+      {kMatc + " eval " + mat + " --scene " + report + " --out " + dir + "/out", "(--out) is the --scene file", ""},
+      {kMatc + " eval " + write(dir, "out/report.md", text) + " --out " + dir + "/out", "(--out) is the input material", ""},
+      {kMatc + " post --emit-source " + post + " --cpp " + postCpp, "(--emit-source) and '", "(--cpp) are the same file"},
+  };
+  for (const Clash& c : clashes) {
+    auto r = run(c.command);
+    EXPECT_EQ(r.exitCode, 1) << c.command << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.first), std::string::npos) << c.command << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.second), std::string::npos) << c.command << "\n" << r.err;
+  }
+  for (const std::string& kept : {mat, emitted, dir + "/out/report.md"}) EXPECT_EQ(facet::test::readText(kept), text) << kept;
+  EXPECT_EQ(facet::test::readText(config), R"({"tiers": {}})");
+  EXPECT_EQ(facet::test::readText(scene), "{}");
+  EXPECT_EQ(facet::test::readText(report), "{}");
+  EXPECT_EQ(facet::test::readText(postCpp), "keep");
+  for (const char* absent : {"p.matpkg", "real/p.matpkg", "e.matpkg", "new.json", "out/plot.svg"})
+    EXPECT_FALSE(fs::exists(dir + "/" + absent)) << absent;
+}
+
+// The outputs of one command land together: when one cannot be written, none is replaced.
+TEST(MatcCli, AnOutputThatCannotBeWrittenLeavesTheOthersUnchanged) {
+  const std::string dir = facet::test::scratchDir("cli-together");
+  const std::string mat = facet::test::examplePath("materials/red_plastic.mat");
+  const std::string package = write(dir, "red.matpkg", "old package");
+  auto r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --depfile " + dir + "/no-such-folder/red.d");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cannot write '" + dir + "/no-such-folder/red.d'"), std::string::npos) << r.err;
+  EXPECT_EQ(facet::test::readText(package), "old package");
+  r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --emit-source " + dir + "/src --depfile " + dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(facet::test::readText(package), "old package");
+  EXPECT_TRUE(fs::is_empty(dir + "/src"));
+
+  const std::string report = write(dir, "report.txt", "old report");
+  r = run(kMatc + " lint " + mat + " --tiers low -o " + report + " --baseline " + dir + "/no-such-folder/b.json --update-baseline");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(facet::test::readText(report), "old report");
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"red.matpkg", "report.txt", "src"})) << "no temporary file is left";
 }
 
 // matc eval (docs/eval.md): the report on success; the compiler's diagnostics for a bad material

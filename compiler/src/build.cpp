@@ -133,6 +133,7 @@ struct VariantBuild {
   bool samplesSpecularLut = false;
   std::vector<package::PreshaderOp> preshader;  // empty: the variant preshades nothing
   bool cacheHit = false;
+  bool cacheRejected = false;  // an entry was found and failed passesOutputChecks
   // kSpirv: glslang's stages before SPIRV-Tools, each moved out by its stage's job
   SpirvStages spirv;
   // GLSL ES by kGlslEs (0, 1); SPIR-V and MSL by kVertexStage (2, 4) and kFragmentStage (3, 5)
@@ -163,6 +164,20 @@ std::vector<uint32_t> wordsOf(const std::vector<uint8_t>& bytes) {
   std::vector<uint32_t> words(bytes.size() / 4);
   std::memcpy(words.data(), bytes.data(), words.size() * 4);
   return words;
+}
+
+// A cache entry comes back from a folder anyone with the user's rights can write, and its
+// checksum only catches damage, not an edit resealed with a new checksum. So it ships only after
+// the checks fresh output passes on its way: spirv-val on each SPIR-V stage (finishSpirv) and
+// glslang on the GLSL ES pair (shippedGlslEs). The MSL has no checker on either path.
+bool passesOutputChecks(const CompiledShaders& shaders) {
+  std::string log;
+  for (size_t spirv : {2, 3})
+    if (shaders[spirv].size() % 4 != 0 || !validateSpirv(wordsOf(shaders[spirv]), &log)) return false;
+  StageSources es;
+  es.vertex.assign(shaders[0].begin(), shaders[0].end());
+  es.fragment.assign(shaders[1].begin(), shaders[1].end());
+  return checkGlslEs300(es, &log);
 }
 
 // Job costs, for ordering only: JobPool starts the costliest waiting job first, and what a job
@@ -260,9 +275,12 @@ class VariantJobs {
     // The same text compiles to the same code, so a cached variant skips every backend.
     v.cacheKey = variantCacheKey(compilerVersion(), v.es, v.vk, ctx_.options.fp16Emulation, ctx_.options.fp16TrueHalf);
     if (std::optional<CompiledShaders> cached = ctx_.cache.load(v.cacheKey)) {
-      v.shaders = std::move(*cached);
-      v.cacheHit = true;
-      return finish(i);
+      if (passesOutputChecks(*cached)) {
+        v.shaders = std::move(*cached);
+        v.cacheHit = true;
+        return finish(i);
+      }
+      v.cacheRejected = true;  // compiled below, and the entry replaced
     }
     v.pending = 2;
     add(pool, CostModel::glslEs(v), [this, i](JobPool&) { glslEsStep(i); });
@@ -453,6 +471,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
   const std::vector<permutations::VariantKey> keys = permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
 
+  if (!options.cacheDir.empty() && !prepareVariantCache(options.cacheDir, &failure->message)) return std::nullopt;
   // Jobs finish in any order; each writes only its own variant's fields, read here in key order.
   VariantCache cache(options.cacheDir);
   result.package.mslBindings = materialMslBindings(result.package.material);
@@ -486,6 +505,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     for (GeneratedFile& f : v.sources) result.sources.push_back(std::move(f));
     result.libraryFiles.insert(v.libraryFiles.begin(), v.libraryFiles.end());
     result.cacheHits += v.cacheHit ? 1 : 0;
+    result.cacheRejected += v.cacheRejected ? 1 : 0;
   }
   if (options.cacheMaxBytes > 0) cache.trim(options.cacheMaxBytes);
   // The `lut` tier's table travels with the package (section TEXS), so the runtime needs no

@@ -6,17 +6,20 @@
 #include <xxhash.h>
 
 #include <algorithm>
-#include <atomic>
+#include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <thread>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include "facet/compiler/build.h"
+#include "facet/package.h"
 
 namespace facet::compiler {
 
@@ -37,6 +40,26 @@ uint64_t loadLE(const char* p, int n) {
   uint64_t v = 0;
   for (int i = 0; i < n; ++i) v |= uint64_t(uint8_t(p[i])) << (8 * i);
   return v;
+}
+
+// An entry's bytes as six shaders; nullopt when they do not check.
+std::optional<CompiledShaders> decodeEntry(const std::string& bytes) {
+  if (bytes.size() < 16 || std::memcmp(bytes.data(), kMagic, 4) != 0) return std::nullopt;
+  const size_t body = bytes.size() - 8;
+  if (XXH3_64bits(bytes.data(), body) != loadLE(bytes.data() + body, 8)) return std::nullopt;
+  if (loadLE(bytes.data() + 4, 4) != 6) return std::nullopt;
+  CompiledShaders shaders;
+  size_t at = 8;
+  for (std::vector<uint8_t>& shader : shaders) {
+    if (body - at < 8) return std::nullopt;
+    uint64_t size = loadLE(bytes.data() + at, 8);
+    at += 8;
+    if (size > body - at) return std::nullopt;
+    shader.assign(bytes.begin() + long(at), bytes.begin() + long(at + size));
+    at += size;
+  }
+  if (at != body) return std::nullopt;
+  return shaders;
 }
 
 }  // namespace
@@ -70,32 +93,158 @@ std::string variantCacheKey(const std::string& compilerVersion, const StageSourc
   return hex;
 }
 
+namespace {
+
+// The marker that makes a folder the cache's own, and the format of what it holds: entries as
+// above, named by 32 hex digits in folders named by their first two. Another format gets
+// another version number here.
+constexpr const char* kMarkerName = "facet-variant-cache";
+constexpr const char* kMarkerVersionLine = "facet variant cache 1";
+constexpr const char* kMarkerText =
+    "facet variant cache 1\n"
+    "matc keeps compiled shader variants here (docs/build-integration.md, \"Cache\"). It deletes\n"
+    "only its own entries (xx/<32 hex digits>) and their temporary files; removing the whole\n"
+    "folder is safe.\n";
+
+bool isHex(const std::string& s, size_t digits) {
+  return s.size() == digits &&
+         std::all_of(s.begin(), s.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
+}
+
+// A key's entry in its folder `xx`.
+bool isEntryName(const std::string& folder, const std::string& name) {
+  return isHex(name, 32) && name.compare(0, 2, folder) == 0;
+}
+
+// A key's temporary file: AtomicFile's <key>.tmp.XXXXXX, or <key>.tmp.<pid>.<thread>.<n> of
+// caches written before the marker existed.
+bool isTemporaryName(const std::string& folder, const std::string& name) {
+  const size_t suffix = 32 + 5;
+  if (name.size() <= suffix || name.size() > suffix + 64 || !isEntryName(folder, name.substr(0, 32)) ||
+      name.compare(32, 5, ".tmp.") != 0)
+    return false;
+  return std::all_of(name.begin() + long(suffix), name.end(), [](char c) { return std::isalnum(uint8_t(c)) || c == '.'; });
+}
+
+// A folder of cache entries only: how a cache written before the marker existed is recognised.
+bool holdsEntriesOnly(const fs::path& folder, std::string* stranger) {
+  std::error_code ec;
+  const std::string name = folder.filename().string();
+  if (!isHex(name, 2) || !fs::is_directory(fs::symlink_status(folder, ec))) {
+    *stranger = folder.filename().string();
+    return false;
+  }
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string file = it->path().filename().string();
+    if (!fs::is_regular_file(fs::symlink_status(it->path(), ec)) || !(isEntryName(name, file) || isTemporaryName(name, file))) {
+      *stranger = name + "/" + file;
+      return false;
+    }
+  }
+  return !ec;
+}
+
+// An entry folder itself, not a link to a folder elsewhere: the cache writes and refreshes
+// nothing outside its own folder.
+bool isOwnFolder(const fs::path& folder) {
+  struct stat st {};
+  return lstat(folder.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+// The marker's first line, or "" when it is absent or not a small regular file.
+std::string markerLine(const std::string& path) {
+  int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return "";
+  struct stat st {};
+  char text[256] = {};
+  ssize_t n = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? ::read(fd, text, sizeof text - 1) : -1;
+  ::close(fd);
+  if (n <= 0) return "";
+  std::string line(text, size_t(n));
+  return line.substr(0, line.find('\n'));
+}
+
+}  // namespace
+
+bool prepareVariantCache(const std::string& dir, std::string* error) {
+  const std::string marker = (fs::path(dir) / kMarkerName).string();
+  struct stat st {};
+  if (stat(dir.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode)) {
+      *error = "'" + dir + "' is not a folder: the variant cache is a folder of its own";
+      return false;
+    }
+  } else if (errno != ENOENT) {
+    *error = "cannot use '" + dir + "' as the variant cache: " + std::strerror(errno);
+    return false;
+  }
+  std::error_code ec;
+  const std::string line = markerLine(marker);
+  if (line == kMarkerVersionLine) return true;
+  if (line.rfind("facet variant cache ", 0) == 0) {
+    *error = "'" + dir + "' is a variant cache of another format ('" + line + "'; this matc writes '" +
+             kMarkerVersionLine + "'): remove it or name another folder";
+    return false;
+  }
+  if (fs::exists(fs::symlink_status(marker, ec))) {
+    *error = "'" + dir + "' has a file '" + kMarkerName + "' that is not a variant cache's marker: name another folder";
+    return false;
+  }
+  // No marker: the folder is taken only when nothing in it could be someone else's, since the
+  // cache deletes what it holds. Marker temporary files are another process making it a cache now.
+  fs::create_directories(dir, ec);
+  if (ec) {
+    *error = "cannot create the variant cache '" + dir + "': " + ec.message();
+    return false;
+  }
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().filename().string().rfind(std::string(kMarkerName) + ".tmp.", 0) == 0) continue;
+    std::string stranger;
+    if (!holdsEntriesOnly(it->path(), &stranger)) {
+      *error = "'" + dir + "' is not a variant cache: it has no '" + kMarkerName + "' marker and holds '" + stranger +
+               "', which matc did not write; since the cache deletes old entries, it takes only a new folder, "
+               "an empty one or one of its own: name another folder";
+      return false;
+    }
+  }
+  if (ec) {
+    *error = "cannot list the variant cache '" + dir + "': " + ec.message();
+    return false;
+  }
+  std::string message;
+  if (!package::writeFile(marker, std::vector<uint8_t>(kMarkerText, kMarkerText + std::strlen(kMarkerText)), &message)) {
+    *error = "cannot make '" + dir + "' a variant cache: " + message;
+    return false;
+  }
+  return true;
+}
+
 std::string VariantCache::path(const std::string& key) const { return dir_ + "/" + key.substr(0, 2) + "/" + key; }
 
 std::optional<CompiledShaders> VariantCache::load(const std::string& key) const {
   if (dir_.empty()) return std::nullopt;
-  std::ifstream in(path(key), std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  const std::string bytes = s.str();
-  if (bytes.size() < 16 || std::memcmp(bytes.data(), kMagic, 4) != 0) return std::nullopt;
-  const size_t body = bytes.size() - 8;
-  if (XXH3_64bits(bytes.data(), body) != loadLE(bytes.data() + body, 8)) return std::nullopt;
-  if (loadLE(bytes.data() + 4, 4) != 6) return std::nullopt;
-  CompiledShaders shaders;
-  size_t at = 8;
-  for (std::vector<uint8_t>& shader : shaders) {
-    if (body - at < 8) return std::nullopt;
-    uint64_t size = loadLE(bytes.data() + at, 8);
-    at += 8;
-    if (size > body - at) return std::nullopt;
-    shader.assign(bytes.begin() + long(at), bytes.begin() + long(at + size));
-    at += size;
+  // Only a regular file of a bounded size is read: not a link (a hit refreshes the file's time,
+  // which would touch the link's target), a FIFO (which would block) or a planted huge file.
+  const std::string file = path(key);
+  if (!isOwnFolder(fs::path(file).parent_path())) return std::nullopt;
+  int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  struct stat st {};
+  std::string bytes;
+  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && uint64_t(st.st_size) <= kMaxEntryBytes) {
+    bytes.resize(size_t(st.st_size));
+    size_t got = 0;
+    while (got < bytes.size()) {
+      ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += size_t(n);
+    }
+    if (got != bytes.size()) bytes.clear();
   }
-  if (at != body) return std::nullopt;
-  std::error_code ec;
-  fs::last_write_time(path(key), fs::file_time_type::clock::now(), ec);  // recently used: trimmed last
+  std::optional<CompiledShaders> shaders = decodeEntry(bytes);
+  if (shaders) futimens(fd, nullptr);  // recently used: trimmed last
+  ::close(fd);
   return shaders;
 }
 
@@ -108,29 +257,15 @@ void VariantCache::store(const std::string& key, const CompiledShaders& shaders)
     bytes.append(shader.begin(), shader.end());
   }
   appendLE(bytes, XXH3_64bits(bytes.data(), bytes.size()), 8);
+  if (bytes.size() > kMaxEntryBytes) return;
 
   std::error_code ec;
   const std::string target = path(key);
   fs::create_directories(fs::path(target).parent_path(), ec);
-  if (ec) return;
-  static std::atomic<uint64_t> counter{0};
-  const std::string temp = target + ".tmp." + std::to_string(getpid()) + "." + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) +
-                           "." + std::to_string(counter++);
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    if (!out) {
-      fs::remove(temp, ec);
-      return;
-    }
-  }
-  fs::rename(temp, target, ec);
-  if (ec) fs::remove(temp, ec);
+  if (ec || !isOwnFolder(fs::path(target).parent_path())) return;
+  std::string ignored;
+  package::writeFile(target, std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), &ignored);
 }
-
-}  // namespace facet::compiler
-
-namespace facet::compiler {
 
 uint64_t VariantCache::trim(uint64_t maxBytes) const {
   if (dir_.empty()) return 0;
@@ -143,19 +278,28 @@ uint64_t VariantCache::trim(uint64_t maxBytes) const {
   uint64_t total = 0, removed = 0;
   std::error_code ec;
   const auto staleBefore = fs::file_time_type::clock::now() - std::chrono::hours(1);
-  for (fs::recursive_directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it.depth() > 1) it.disable_recursion_pending();
+  // Only the cache's own names, in its own folders (not through links): whatever else someone
+  // put in the folder stays.
+  for (fs::directory_iterator top(dir_, ec), end; !ec && top != end; top.increment(ec)) {
+    const std::string folder = top->path().filename().string();
     std::error_code entryError;
-    if (!it->is_regular_file(entryError)) continue;
-    const uint64_t bytes = it->file_size(entryError);
-    const fs::file_time_type used = it->last_write_time(entryError);
-    if (entryError) continue;
-    if (it->path().filename().string().find(".tmp.") != std::string::npos) {
-      if (used < staleBefore && fs::remove(it->path(), entryError)) removed += bytes;
-      continue;
+    if (!isHex(folder, 2) || !fs::is_directory(fs::symlink_status(top->path(), entryError))) continue;
+    for (fs::directory_iterator it(top->path(), entryError); !entryError && it != end; it.increment(entryError)) {
+      const std::string name = it->path().filename().string();
+      const bool entry = isEntryName(folder, name);
+      if (!entry && !isTemporaryName(folder, name)) continue;
+      std::error_code fileError;
+      if (!fs::is_regular_file(fs::symlink_status(it->path(), fileError))) continue;
+      const uint64_t bytes = fs::file_size(it->path(), fileError);
+      const fs::file_time_type used = fs::last_write_time(it->path(), fileError);
+      if (fileError) continue;
+      if (!entry) {
+        if (used < staleBefore && fs::remove(it->path(), fileError)) removed += bytes;
+        continue;
+      }
+      entries.push_back({used, bytes, it->path()});
+      total += bytes;
     }
-    entries.push_back({used, bytes, it->path()});
-    total += bytes;
   }
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
   for (const Entry& e : entries) {

@@ -30,9 +30,12 @@ const std::string& compilerBuildIdentity();
 std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
                             bool fp16Emulation, bool fp16TrueHalf);
 
-// `dir` empty: every load misses and nothing is stored. Entries are files dir/xx/<key>, written to
-// a temporary name and renamed, so concurrent jobs or processes never see half an entry; an
-// entry that does not check (truncated, damaged) is a miss. Safe to use from several threads.
+// The folder is the cache's own (prepareVariantCache, build.h): its marker file, entries
+// dir/xx/<key> (xx: the key's first two digits) and their temporary files dir/xx/<key>.tmp.*.
+// The cache reads, writes and deletes those names only. `dir` empty: every load misses and
+// nothing is stored. Entries are written to a temporary name and renamed, so concurrent jobs or
+// processes never see half an entry; an entry that does not check (truncated, damaged, larger
+// than kMaxEntryBytes, not a regular file) is a miss. Safe to use from several threads.
 class VariantCache {
 public:
   explicit VariantCache(std::string dir) : dir_(std::move(dir)) {}
@@ -41,14 +44,20 @@ public:
   void store(const std::string& key, const CompiledShaders& shaders) const;
 
   // Bounds the cache: removes entries least recently used first (a hit refreshes an entry's
-  // modification time) until at most maxBytes remain, and temporary files more than an hour old
-  // (left by a process that was killed mid-store). Concurrent builds may trim at once: a removed
-  // entry is only a miss for whoever wanted it. Returns the bytes removed.
+  // modification time) until at most maxBytes remain, and the cache's temporary files more than
+  // an hour old (left by a process that was killed mid-store). Concurrent builds may trim at
+  // once: a removed entry is only a miss for whoever wanted it. Returns the bytes removed.
   uint64_t trim(uint64_t maxBytes) const;
 
 private:
   std::string path(const std::string& key) const;
   std::string dir_;
 };
+
+// An entry holds one variant's six shaders: the example materials' largest is 47,885 bytes
+// (red_plastic with four point lights), so 64 MiB (1,400 times that) refuses no real variant,
+// while a planted file of any size is a miss before it is read. A variant larger than this is
+// compiled every time, never stored.
+inline constexpr uint64_t kMaxEntryBytes = uint64_t(64) << 20;
 
 }  // namespace facet::compiler

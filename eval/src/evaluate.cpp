@@ -117,9 +117,7 @@ class Evaluation {
       ViewResult view;
       view.name = views_[vi].name;
       view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
-      if (!runtime::writePng((fs::path(options_.outDir) / view.image).string(), image.width, image.height, image.ldr,
-                             &error->message))
-        return false;
+      if (!runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message)) return fail(c, message, error);
       if (isReference) {
         backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
         referenceImages_.push_back(std::move(image));
@@ -309,12 +307,6 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     return std::nullopt;
   }
   std::error_code ec;
-  const fs::path imageDir = fs::path(options.outDir) / "images";
-  fs::create_directories(imageDir, ec);
-  if (ec) {
-    error->message = "cannot create '" + imageDir.string() + "': " + ec.message();
-    return std::nullopt;
-  }
   TempDir work;  // one package per configuration, removed at the end
   work.path = fs::temp_directory_path(ec) / ("facet-eval-" + std::to_string(getpid()));
   fs::remove_all(work.path, ec);

@@ -453,13 +453,29 @@ std::string reportSvg(const EvalReport& r) {
   return s;
 }
 
-bool writeReport(const EvalReport& report, const std::string& outDir, std::string* error) {
+std::vector<package::OutputFile> reportFiles(const EvalReport& report, const std::string& outDir) {
   namespace fs = std::filesystem;
-  auto write = [&](const char* name, const std::string& text) {
-    return package::writeFile((fs::path(outDir) / name).string(), std::vector<uint8_t>(text.begin(), text.end()), error);
+  auto file = [&](const std::string& name, const std::string& text) {
+    return package::OutputFile{(fs::path(outDir) / name).string(), std::vector<uint8_t>(text.begin(), text.end())};
   };
-  return write("report.md", reportMarkdown(report)) && write("report.json", reportJson(report).dump(2) + "\n") &&
-         write("plot.svg", reportSvg(report));
+  std::vector<package::OutputFile> files{file("report.md", reportMarkdown(report)),
+                                         file("report.json", reportJson(report).dump(2) + "\n"),
+                                         file("plot.svg", reportSvg(report))};
+  for (const ConfigurationResult& r : report.results)
+    if (r.sameAs.empty())  // the others show the images of the configuration they are the same as
+      for (const ViewResult& v : r.views) files.push_back({(fs::path(outDir) / v.image).string(), v.png});
+  return files;
+}
+
+bool writeReport(const EvalReport& report, const std::string& outDir, std::string* error) {
+  std::error_code ec;
+  const std::filesystem::path images = std::filesystem::path(outDir) / "images";
+  std::filesystem::create_directories(images, ec);
+  if (ec) {
+    *error = "cannot create '" + images.string() + "': " + ec.message();
+    return false;
+  }
+  return package::writeFiles(reportFiles(report, outDir), error);
 }
 
 }  // namespace facet::eval

@@ -1,9 +1,13 @@
 #include "facet/lint/budgets.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "facet/lint/lint.h"
+#include "facet/permutations/variant_key.h"
 #include "facet/runtime/json_document.h"
 
 namespace facet::lint {
@@ -29,9 +33,44 @@ double figure(const json& j, const std::string& pointer) {
   return v;
 }
 
+// RFC 6901: '~' and '/' in a key are written ~0 and ~1.
+std::string child(const std::string& pointer, const std::string& key) {
+  std::string out = pointer + "/";
+  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// A name nothing reads would switch its check off without a word (a budget on "alus" limits
+// nothing): every name must be one lint knows.
+void knownFigure(const std::string& name, const std::string& pointer, bool budget) {
+  const std::vector<std::string> names = figureNames();
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  fail(pointer, "unknown figure '" + name + "' (known: " + joined(names) + (budget ? ", min_relaxed_percent" : "") + ")");
+}
+
+std::string tierNames() {
+  std::vector<std::string> names;
+  for (permutations::Tier t : permutations::supportedTiers()) names.push_back(permutations::toString(t));
+  return joined(names);
+}
+
+void onlyKey(const json& j, const std::string& key, const std::string& pointer) {
+  for (const auto& [name, value] : j.items())
+    if (name != key) fail(child(pointer, name), "unknown key '" + name + "' (expected only \"" + key + "\")");
+}
+
 FigureLimits figures(const json& j, const std::string& pointer) {
   FigureLimits out;
-  for (const auto& [name, value] : object(j, pointer).items()) out[name] = figure(value, pointer + "/" + name);
+  for (const auto& [name, value] : object(j, pointer).items()) {
+    knownFigure(name, child(pointer, name), false);
+    out[name] = figure(value, child(pointer, name));
+  }
   return out;
 }
 
@@ -46,15 +85,21 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
     Budgets b;
     object(*j, "");
     if (!j->contains("tiers")) fail("/tiers", "missing: a budget file maps tier names to stage budgets");
+    onlyKey(*j, "tiers", "");
     for (const auto& [tier, stages] : object((*j)["tiers"], "/tiers").items()) {
-      std::string tp = "/tiers/" + tier;
+      std::string tp = child("/tiers", tier);
+      if (!permutations::tierFromString(tier)) fail(tp, "unknown tier '" + tier + "' (known: " + tierNames() + ")");
       for (const auto& [stage, limits] : object(stages, tp).items()) {
-        std::string sp = tp + "/" + stage;
+        std::string sp = child(tp, stage);
         if (!isStage(stage)) fail(sp, "expected \"vertex\" or \"fragment\"");
         StageBudget& sb = b.tiers[tier][stage];
         for (const auto& [name, value] : object(limits, sp).items()) {
-          if (name == "min_relaxed_percent") sb.minRelaxedPercent = figure(value, sp + "/" + name);
-          else sb.max[name] = figure(value, sp + "/" + name);
+          if (name == "min_relaxed_percent") {
+            sb.minRelaxedPercent = figure(value, child(sp, name));
+            continue;
+          }
+          knownFigure(name, child(sp, name), true);
+          sb.max[name] = figure(value, child(sp, name));
         }
       }
     }
@@ -72,13 +117,21 @@ std::optional<Baseline> parseBaseline(const std::string& path, const std::string
     Baseline b;
     object(*j, "");
     if (!j->contains("materials")) fail("/materials", "missing: a baseline maps materials to variant figures");
-    for (const auto& [material, variants] : object((*j)["materials"], "/materials").items())
-      for (const auto& [key, stages] : object(variants, "/materials/" + material).items())
-        for (const auto& [stage, values] : object(stages, "/materials/" + material + "/" + key).items()) {
-          std::string sp = "/materials/" + material + "/" + key + "/" + stage;
+    onlyKey(*j, "materials", "");
+    for (const auto& [material, variants] : object((*j)["materials"], "/materials").items()) {
+      const std::string mp = child("/materials", material);
+      for (const auto& [key, stages] : object(variants, mp).items()) {
+        const std::string kp = child(mp, key);
+        // A key no variant has would never be compared: a baseline that checks nothing.
+        if (!permutations::VariantKey::parse(key))
+          fail(kp, "'" + key + "' is not a variant key (<tier>.dir<0|1>[.pt<1|2|4>], tiers: " + tierNames() + ")");
+        for (const auto& [stage, values] : object(stages, kp).items()) {
+          std::string sp = child(kp, stage);
           if (!isStage(stage)) fail(sp, "expected \"vertex\" or \"fragment\"");
           b.materials[material][key][stage] = figures(values, sp);
         }
+      }
+    }
     return b;
   } catch (const Invalid& e) {
     *error = path + ": error: " + e.pointer + ": " + e.message;

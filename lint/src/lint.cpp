@@ -184,6 +184,12 @@ std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) 
   };
 }
 
+std::vector<std::string> figureNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : namedFigures(StageFigures{})) names.push_back(name);
+  return names;
+}
+
 MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options) {
   MaterialLint out;
   ir::Diagnostics diags(file);

@@ -9,29 +9,44 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <new>
 
 namespace facet {
 namespace {
 
 // The temporary files a signal handler must remove. Plain arrays and atomics: a handler may
-// only touch lock-free state and call async-signal-safe functions (unlink, raise).
-constexpr int kSlots = 16;
+// only touch lock-free state and call async-signal-safe functions (unlink, raise). Enough slots
+// for every output of one command staged at once (package::writeFiles): `matc compile
+// --emit-source` of 32 variants holds 321 temporary files before it renames them.
+constexpr int kSlots = 1024;
 constexpr size_t kMaxPath = 4096;
 std::atomic<bool> used[kSlots];
-char paths[kSlots][kMaxPath];
+// A slot's path buffer is allocated the first time the slot is claimed and never freed, so a
+// handler never reads freed memory, and a process that writes one file at a time holds one.
+std::atomic<char*> paths[kSlots];
 
 int claim(const std::string& path) {
   if (path.size() >= kMaxPath) return -1;  // still written safely; only an interrupt would leave it
   for (int i = 0; i < kSlots; ++i) {
     bool expected = false;
     if (used[i].compare_exchange_strong(expected, true)) {
+      char* buffer = paths[i].load();
+      if (buffer == nullptr) {
+        buffer = new (std::nothrow) char[kMaxPath];
+        if (buffer == nullptr) {
+          used[i].store(false);
+          return -1;
+        }
+        buffer[0] = '\0';
+        paths[i].store(buffer);
+      }
       // Published before the flag is seen set by a handler? The flag is set first, so a handler
       // running now may read a half-written path: write it whole, then mark it ready with a NUL
       // at the start last.
-      paths[i][0] = '\0';
-      std::memcpy(paths[i] + 1, path.c_str() + 1, path.size());
+      buffer[0] = '\0';
+      std::memcpy(buffer + 1, path.c_str() + 1, path.size());
       std::atomic_signal_fence(std::memory_order_seq_cst);
-      paths[i][0] = path[0];
+      buffer[0] = path[0];
       return i;
     }
   }
@@ -40,14 +55,16 @@ int claim(const std::string& path) {
 
 void release(int slot) {
   if (slot < 0) return;
-  paths[slot][0] = '\0';
+  paths[slot].load()[0] = '\0';
   std::atomic_signal_fence(std::memory_order_seq_cst);
   used[slot].store(false);
 }
 
 extern "C" void removeTemporaryFilesAndDie(int sig) {
-  for (int i = 0; i < kSlots; ++i)
-    if (used[i].load() && paths[i][0] != '\0') unlink(paths[i]);
+  for (int i = 0; i < kSlots; ++i) {
+    const char* path = paths[i].load();
+    if (used[i].load() && path != nullptr && path[0] != '\0') unlink(path);
+  }
   signal(sig, SIG_DFL);
   raise(sig);
 }
@@ -114,7 +131,7 @@ bool AtomicFile::write(std::span<const uint8_t> bytes, std::string* error) {
   return true;
 }
 
-bool AtomicFile::commit(std::string* error) {
+bool AtomicFile::finish(std::string* error) {
   if (fd_ < 0) {
     *error = "cannot write '" + path_ + "': not open";
     return false;
@@ -126,6 +143,15 @@ bool AtomicFile::commit(std::string* error) {
     discard();
     return false;
   }
+  return true;
+}
+
+bool AtomicFile::commit(std::string* error) {
+  if (temp_.empty()) {
+    *error = "cannot write '" + path_ + "': not open";
+    return false;
+  }
+  if (fd_ >= 0 && !finish(error)) return false;
   if (rename(temp_.c_str(), path_.c_str()) != 0) {
     *error = "cannot write '" + path_ + "': " + reason(errno);
     discard();

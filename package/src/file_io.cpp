@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 #include <system_error>
 
 #include "facet/atomic_file.h"
@@ -70,6 +71,20 @@ bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::str
   if (file.open(path, &message) && file.write(bytes, &message) && file.commit(&message)) return true;
   if (error) *error = message;
   return false;
+}
+
+bool writeFiles(const std::vector<OutputFile>& files, std::string* error) {
+  std::string message;
+  std::vector<std::unique_ptr<AtomicFile>> staged;  // each removes its temporary file unless committed
+  bool ok = true;
+  for (const OutputFile& f : files) {
+    staged.push_back(std::make_unique<AtomicFile>());
+    AtomicFile& file = *staged.back();
+    if (!(ok = file.open(f.path, &message) && file.write(f.bytes, &message) && file.finish(&message))) break;
+  }
+  for (size_t i = 0; ok && i < staged.size(); ++i) ok = staged[i]->commit(&message);
+  if (!ok && error) *error = message;
+  return ok;
 }
 
 }  // namespace facet::package

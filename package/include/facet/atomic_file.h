@@ -24,6 +24,9 @@ class AtomicFile {
   // /dev/null or a FIFO with a package is never what the user meant.
   bool open(const std::string& path, std::string* error);
   bool write(std::span<const uint8_t> bytes, std::string* error);
+  // Closes the temporary file, every byte written: what can fail before the rename. commit()
+  // then only renames, so several files can all be finished before any replaces its destination.
+  bool finish(std::string* error);
   bool commit(std::string* error);
 
   const std::string& temporaryPath() const { return temp_; }

@@ -234,4 +234,14 @@ ReadResult readFile(const std::string& path);
 // interrupted write never leaves a partial file, and refuses a destination that is not a regular file.
 bool writeFile(const std::string& path, std::span<const uint8_t> bytes, std::string* error);
 
+struct OutputFile {
+  std::string path;
+  std::vector<uint8_t> bytes;
+};
+// Writes several files as one output: every file to its temporary file first, then the renames,
+// so a failure before the renames (a folder that cannot be written, a full disk, a destination
+// that is not a regular file) leaves every destination as it was. Only a rename failing part way
+// (same folder, same file system: rare) can leave the earlier files replaced.
+bool writeFiles(const std::vector<OutputFile>& files, std::string* error);
+
 }  // namespace facet::package

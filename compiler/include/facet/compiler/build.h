@@ -34,11 +34,23 @@ struct BuildResult {
   // The templates/ and chunks/ files (glslLibrary() names) any built variant was assembled from.
   std::set<std::string> libraryFiles;
   size_t cacheHits = 0;  // variants taken from BuildOptions::cacheDir instead of compiled
+  // Cache entries that failed the checks fresh output passes (spirv-val, glslang): compiled
+  // again and replaced.
+  size_t cacheRejected = 0;
 };
 
 // matc compile's bound on the variant cache: about 21,000 variants of the example materials
 // (24.5 KB each, docs/build-integration.md).
 inline constexpr uint64_t kDefaultCacheMaxBytes = uint64_t(512) << 20;
+
+// Makes `dir` a variant cache (BuildOptions::cacheDir), or checks that it is one. The cache deletes
+// what it holds, so it only takes a folder it can tell is its own: one that does not exist yet
+// or is empty (created, then marked with a file `facet-variant-cache` whose first line is the
+// format's version), one with that marker, or one that holds nothing but cache entries (written
+// before the marker existed; marked now). A regular file, a non-empty folder of other files and a
+// cache of another format are refused with *error saying why. buildMaterial runs it and fails
+// with the same message.
+bool prepareVariantCache(const std::string& dir, std::string* error);
 
 // One compile job's wall-clock span and the pool thread (0 .. jobs-1) that ran it: what
 // bench_compile's "busy" figure (how much of the pool's time its threads had work) is made of.
@@ -70,7 +82,8 @@ struct BuildOptions {
   // value.
   unsigned jobs = 0;
   // Content-addressed cache of compiled variants (compiler/src/variant_cache.h); "" for none.
-  // The package is the same bytes with or without it.
+  // The package is the same bytes with or without it. A folder prepareVariantCache refuses
+  // fails the build.
   std::string cacheDir;
   // After the build, the least recently used entries are removed until the cache holds at most
   // this many bytes (0: no bound). matc's default is kDefaultCacheMaxBytes.

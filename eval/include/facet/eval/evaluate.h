@@ -24,7 +24,6 @@ struct EvalOptions {
   bool swaps = true;            // also every single-option swap of each tier
   std::string sceneFile;        // a scene file instead of the built-in grid ("" = the grid)
   GridOptions grid;
-  std::string outDir;           // images/ (PNG per configuration and view) and packages/ are written here
   int timingFrames = 5;         // timed renders of the first view (median), each paired with one of reference's
   int warmupFrames = 1;         // untimed renders first (the first also makes the image)
   bool validation = false;      // Vulkan validation layers (FACET_VK_VALIDATION=1 also turns them on)
@@ -37,7 +36,8 @@ struct EvalOptions {
 
 struct ViewResult {
   std::string name;             // "frontal", "grazing", or the scene file's stem
-  std::string image;            // PNG path relative to outDir
+  std::string image;            // PNG path relative to the report's folder (images/<configuration>.<view>.png)
+  std::vector<uint8_t> png;     // its bytes, written with the report (report.h)
   ImageMetrics error;
 };
 

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "facet/eval/evaluate.h"
+#include "facet/package.h"
 
 namespace facet::eval {
 
@@ -14,7 +16,11 @@ std::string reportMarkdown(const EvalReport& report);
 nlohmann::ordered_json reportJson(const EvalReport& report);
 std::string reportSvg(const EvalReport& report);
 
-// Writes report.md, report.json and plot.svg into outDir (which must exist).
+// Every file of the report in outDir: report.md, report.json, plot.svg and images/*.png (one per
+// configuration with maths of its own and view).
+std::vector<package::OutputFile> reportFiles(const EvalReport& report, const std::string& outDir);
+
+// Writes reportFiles() together (package::writeFiles), creating outDir/images first.
 bool writeReport(const EvalReport& report, const std::string& outDir, std::string* error);
 
 }  // namespace facet::eval

@@ -63,5 +63,7 @@ void lintVariant(const std::string& material, const VariantFigures& figures, con
 
 // The figures a baseline records for a variant stage, by name, in a stable order.
 std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& stage);
+// Their names, in the same order: the names budgets and baselines may use.
+std::vector<std::string> figureNames();
 
 }  // namespace facet::lint
