@@ -2,7 +2,8 @@
 // shader_abi.h kColorLutSize), built on the CPU from the scene's settings (white balance,
 // contrast, saturation, lift/gamma/gain) or loaded from an Adobe/Resolve .cube file
 // (runtime/color_grading.h); HypeHype's mobile post stack grades the same way, one LUT built on
-// the CPU whenever a slider moves (seeds/hypehype-siggraph2024.txt).
+// the CPU whenever a slider moves (Aaltonen, "Transitioning HypeHype to Physically Based
+// Rendering", SIGGRAPH 2024).
 // Where: after the tone curve and the sRGB encoding, on display-referred values in [0, 1]. A
 // lattice needs a bounded domain, which HDR is not; and the encoded values spread the lattice
 // evenly in perceived lightness (on linear input half of the 32 points would go to the

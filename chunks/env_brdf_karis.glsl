@@ -5,7 +5,7 @@
 //   f0 · A + B = f0 · (−1.04 s + k.z) + (1.04 s + k.w)
 // Mirrors facet::ibl::envBrdfKaris. Against the 64 × 64 DFG table (docs/ibl.md): mean abs error
 // 0.014 for f0 = 0.04, 0.11 for f0 = 1 (flat in n·v where the height-correlated albedo is not).
-// Zioma 2015 (seeds/zioma-optimizing-pbr-siggraph2015.txt, "Environment BRDF") cites it as the
+// Zioma ("Optimizing PBR", SIGGRAPH 2015, "Environment BRDF") cites it as the
 // ALU-over-texture choice for GPUs with a high ALU:TEX ratio.
 // fp16: every term is in [−0.1, 1.1]; exp2(−9.28 n·v) ≥ 2^-9.28 is a normal fp16 number.
 vec3 env_brdf_karis(vec3 f0, float NoV, float perceptualRoughness) {

@@ -1,10 +1,9 @@
 // The prefiltered environment facet_environment: an RGBA16F cube map (docs/ibl.md, "Conventions";
 // facet::ibl::CubeImage on the CPU), sampled with a world direction as it is: the texture unit
 // selects the face and the texel (Vulkan's and GLES 3.0's cube map table), and filters across
-// faces (seamless in both APIs), so the lookup costs the shader no arithmetic. It replaced the
-// octahedral map's fold (one reciprocal, abs, selects: 0.11 Mali-G57 cycles per lookup; before it
-// the equirect atan + acos, 0.34) in issue 10: red_plastic's high / mid / low 2.00 / 1.41 / 0.98
-// → 1.89 / 1.30 / 0.88 Mali-G57 cycles (docs/eval.md).
+// faces (seamless in both APIs), so the lookup costs the shader no arithmetic, where an octahedral
+// map's fold (one reciprocal, abs, selects) costs 0.11 Mali-G57 cycles per lookup and an equirect
+// atan + acos 0.34 (docs/platform-facts.md, "The environment lookup").
 // Level m holds perceptual roughness m / (levels − 1) (facet::ibl::prefilterLevelRoughness),
 // FACET_ENVIRONMENT_LEVELS set by the assembler; every read passes an explicit lod, so no
 // derivative is taken (none is needed, and the face changes under a pixel's footprint at edges).

@@ -1,5 +1,5 @@
-// The low tier's image-based specular: R. Zioma, "Optimizing PBR", SIGGRAPH 2015 (seeds/
-// zioma-optimizing-pbr-siggraph2015.txt, "Environment reflections"): a lod computed per pixel is
+// The `two_mip` ambient option's image-based specular: R. Zioma, "Optimizing PBR", SIGGRAPH 2015
+// ("Environment reflections", for the low end): a lod computed per pixel is
 // slow or missing on low-end GPUs, so read two fixed mips and lerp:
 //   prefiltered ≈ mix(env(R, lod 0), env(R, lod levels − 1), r)
 // with r the perceptual roughness, the mirror level and the r = 1 level of facet_environment

@@ -2,8 +2,8 @@
 // symbols):
 //   L_ambient = (diffuseColor · E_env(n)/π + L_spec,ibl · c_ms) · ao
 // E_env/π comes from SH (ambient_sh.glsl), L_spec,ibl from the tier's image-based specular:
-// the split sum (ibl_split_sum.glsl: prefiltered environment × DFG table, every tier's preset
-// since issue 10), or the options `matc eval` measures: the prefiltered environment × Karis's
+// the split sum (ibl_split_sum.glsl: prefiltered environment × DFG table, every tier's preset),
+// or the options `matc eval` measures: the prefiltered environment × Karis's
 // analytic environment BRDF (env_brdf_karis.glsl), two fixed mips × Zioma's fit (ibl_two_mip.glsl). With FACET_ENERGY_COMPENSATION it also
 // sets shading_energy_compensation from the DFG terms it reads, and for a lobe scaled by the
 // albedo (SPECULAR_LOBE_SCALED_BY_ALBEDO) shading_specular_albedo, before any light is shaded.

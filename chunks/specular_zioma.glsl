@@ -7,7 +7,7 @@
 // specular_zioma_published: m = 0.1, p = 1, q = 0.5 — the form as shipped (Unity BRDF2 / URP's
 // "minimalist Cook-Torrance"): α = perceptual² in the (α + 0.5) factor and LoH² floored at 0.1.
 // The slide writes (r + 0.5) with perceptual r and no floor; the shipped form is the one engines
-// run and the one the brief names, so it is Facet's "published" reference (both are measured in
+// run, so it is Facet's "published" reference (both are measured in
 // docs/specular-tiers.md). π is kept: Facet's lights are physical (URP drops it with its units).
 // It creates energy: for f0 = 1 the mirror lobe of a smooth surface has directional albedo
 // 1/(α + 0.5) → 2 (measured maximum 1.97 at r = 0.089).

@@ -1,6 +1,6 @@
 #include "specular_zioma.glsl"
 
-// Specular lobe of the `zioma` option (mid's until issue 10 moved mid to fused_hammon): GGX D
+// Specular lobe of the `zioma` option (no preset's: docs/specular-tiers.md): GGX D
 // times Facet's energy-bounded fused V·F, one division for the whole scalar, specular colour
 // applied at the end:
 //   f_s = specular_zioma_nxh(α, n·h, n, h, l·h) · f0   (d by the Lagrange identity, fp16-safe)

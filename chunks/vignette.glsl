@@ -1,6 +1,6 @@
 // Vignette: the frame darkens towards its corners, applied "on top at the end of the shader" (on
 // the graded, encoded value, before dithering) as in HypeHype's single-pass mobile post stack
-// (seeds/hypehype-siggraph2024.txt).
+// (Aaltonen, "Transitioning HypeHype to Physically Based Rendering", SIGGRAPH 2024).
 //   p = (2 · pixel / size − 1) · (mix(1, width / height, roundness), 1): the centre is 0, the top
 //       and bottom edges are at |p.y| = 1; roundness 1 makes the falloff a circle on screen,
 //       0 an ellipse fitting the frame (the side edges at |p.x| = 1 too);

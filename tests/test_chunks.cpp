@@ -5,7 +5,7 @@
 // RelaxedPrecision), so these tests check the formulas and their fp32 evaluation order; each
 // test runs the shader with `highp` and with `mediump` as the default float precision, which
 // proves the mediump declarations compile. fp16 behaviour is the fp16-emulation build's job
-// (DESIGN.md, "Measuring").
+// (docs/fp16-emulation.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -229,7 +229,7 @@ facet::runtime::FrameResult render(facet::runtime::RenderBackend& backend, const
 
 // A swap's package is built under its own tier's name, whose preset decides what SceneFrame
 // prepares; PreparedFrame makes the frame match the swap. No preset lights with the gamma hack
-// since issue 10 measured linear lighting better and cheaper in low (docs/eval.md), so the hack
+// (linear lighting measures better and cheaper in low: docs/eval.md), so the hack
 // is reached only as a swap, and its contract is checked on what shows it bare: an unlit surface
 // in a gamma-hack build outputs the authored (sRGB-encoded) value squared (γ = 2,
 // chunks/output_blending.glsl), for a colour parameter and for an sRGB texture alike, which

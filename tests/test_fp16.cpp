@@ -1,6 +1,6 @@
 // fp16 emulation (docs/fp16-emulation.md): the lower_relaxed_to_quantized pass on small shaders
-// run on lavapipe, the build option, and the hard-case scenes of DESIGN.md ("Measuring": fp16
-// stability) rendered with the emulated high and mid tiers against the reference tier.
+// run on lavapipe, the build option, and the hard-case scenes of fp16 shading (the table of
+// docs/fp16-emulation.md) rendered with the emulated high and mid tiers against the reference tier.
 // Environment: FACET_FP16_DUMP=<folder> writes the hard cases' 8-bit images; FACET_FP16_DEBUG=1
 // prints the shading sweeps and the first black-where-lit pixels.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The frame graph on the cases of the Filament mobile talk (seeds/filament-mobile-talk.txt):
+// The frame graph on the cases of Guy's Filament mobile talk (its slides on tilers):
 // colour + post merges and discards HDR and depth; a shadow map and a bloom chain, which sample
 // whole textures, do not merge and keep what later passes sample.
 #include <gtest/gtest.h>

@@ -65,10 +65,9 @@ const char* kSkyEnvironment = R"("environment": {"sky": {"luminance": 8000}})";
 // multiplies it by 1 + f0 (1/dfg.y − 1) = 1/dfg.y, so every pixel must show L exactly — the
 // multiple-scattering claim of Filament's talk, with both dfg.y from the same texel fetch. Only
 // fp16 storage differs (L in the RGBA16F environment and the HDR target: 2 × 2^-11 relative), so
-// the tolerance is 0.3 %. Every mobile tier applies the same compensation since issue 10
-// (mediump: one more fp16 rounding of 1/dfg.y, within the same tolerance; low's gamma hack adds
-// the ambient specular in linear, and f0 = 1 encodes to 1). Without it (Karis's fit, as mid had
-// before) the pixels are L times the single-scattering albedo, which loses up to 68 % on rough
+// the tolerance is 0.3 %. Every mobile tier applies the same compensation (mediump: one more
+// fp16 rounding of 1/dfg.y, within the same tolerance; the gamma hack adds the ambient specular
+// in linear, and f0 = 1 encodes to 1). Without it (Karis's fit, the analytic option) the pixels are L times the single-scattering albedo, which loses up to 68 % on rough
 // spheres: the case below keeps that model measured, against Karis's fit at the pixel's n·v
 // (1 % + 0.001, the shading normal being interpolated), and reports its difference from the DFG
 // integral at the exact n·v (facet::ibl::integrateDfg).

@@ -334,7 +334,7 @@ std::array<int, 3> emptyBins(const std::vector<uint8_t>& ldr) {
 
 }  // namespace
 
-// Issue 8's dithering test, on a full-frame render: the 8-bit histogram of a slow HDR gradient
+// The dithering test, on a full-frame render: the 8-bit histogram of a slow HDR gradient
 // (0.5 to 0.9 over 256 columns, no tone curve: 56 output steps, under a quarter step per column)
 // has no empty bin between its ends with dithering on. Without dithering it has empty bins when
 // the HDR target is R11G11B10F: its 6-bit (red, green) and 5-bit (blue) mantissas step by 2^-7

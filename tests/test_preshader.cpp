@@ -278,7 +278,8 @@ const std::vector<uint8_t>& fragmentSpirv(const pkg::Package& p, const std::stri
 
 }  // namespace
 
-// Issue 10: no parameter clamp is left in the fragment stage of red_plastic's optimised SPIR-V,
+// What the preshader is for: no parameter clamp is left in the fragment stage of red_plastic's
+// optimised SPIR-V,
 // in any tier; the same variants built without the preshader clamp baseColor, metallic,
 // reflectance and roughness per pixel.
 TEST(PreshaderCompiler, NoParameterClampLeftInRedPlasticsFragmentStage) {

@@ -329,11 +329,12 @@ TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
 
 // ---- The low tier: colours and the LUT decode, end to end ----------------------------------------
 
-// Every preset lights linear colours (issue 10 moved low off the gamma hack, docs/eval.md): the
-// runtime decodes sRGB colour parameters and lets the sampler decode sRGB textures in every tier,
-// so an unlit surface shows the sRGB decode of what was authored, in low as in high. (The hack
-// remains a swap of `matc eval`, whose contract EvalPreparedFrame.AGammaHackSwapSeesColoursAsAuthored
-// checks.) The texture's texels are 204, 102, 51 (0.8, 0.4, 0.2).
+// Every preset lights linear colours (low too: linear lighting measures better than the gamma hack,
+// docs/eval.md): the runtime decodes sRGB colour parameters and lets the sampler decode sRGB
+// textures in every tier, so an unlit surface shows the sRGB decode of what was authored, in low as
+// in high. (The hack remains a swap of `matc eval`, whose contract
+// EvalPreparedFrame.AGammaHackSwapSeesColoursAsAuthored checks.) The texture's texels are 204, 102,
+// 51 (0.8, 0.4, 0.2).
 TEST(LowTier, UnlitOutputIsTheSrgbDecodeAsInEveryTier) {
   std::string packages = facet::test::writePackagesFromTexts(
       "low-unlit",

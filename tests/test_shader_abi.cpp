@@ -364,7 +364,7 @@ TEST(ShaderAbi, SpecularLutSamplerIsAtItsAbiSlotInTheVariantsThatSampleIt) {
 
 // The image-based lighting textures sit where the runtime binds them (shader_abi.h): the
 // environment in every lit variant, the DFG table only in split-sum variants (every tier as
-// shipped since issue 10; here mid is also built with the analytic model, which has no table),
+// shipped; here mid is also built with the analytic model, which has no table),
 // and none of them in the vertex stage (vertex-diffuse tiers evaluate SH from the frame block).
 TEST(ShaderAbi, IblSamplersAreDeclaredAtTheirBindingsOnlyWhereSampled) {
   EXPECT_EQ(facet::compiler::kEnvironmentLevels, facet::abi::kEnvironmentLevels);

@@ -1,4 +1,5 @@
-// The tiers keep the promises the brief makes about their maths, and every tier renders.
+// The tiers keep the promises docs/architecture.md ("Tiers") and docs/specular-tiers.md make about
+// their maths, and every tier renders.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -128,10 +129,10 @@ TEST(Tiers, VertexDiffuseLeavesNoDiffuseLightingInTheFragmentStage) {
 
 // The gamma hack's lit terms are summed in linear (linear_from_shading_space, add_light): the
 // fragment stage of red_plastic's low tier takes no square root (the encoding √ is per vertex),
-// where re-encoding the sum after each term took a vec3 √ per term (docs/eval.md, "The gamma
-// hack's sum").
+// where re-encoding the sum after each term took a vec3 √ per term (docs/specular-tiers.md, "Gamma
+// hack").
 TEST(Tiers, GammaHackSumsLitTermsWithoutASquareRootPerTerm) {
-  facet::compiler::BuildOptions options;  // no preset has the hack since issue 10: low built with it
+  facet::compiler::BuildOptions options;  // no preset has the hack: low built with it
   options.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
     if (tier == facet::permutations::Tier::Low) config->colorSpace = facet::permutations::ColorSpace::GammaHack;
   };
@@ -208,7 +209,8 @@ TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
   EXPECT_GT(costOf(spirvOf(*built, "high.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   EXPECT_GT(costOf(spirvOf(*built, "mid.dir1", Stage::Fragment)).relaxedPercent(), 85.0);
   // low's fragment stage is the smallest, so what stays highp (the view vector from positions)
-  // weighs most there. Since the environment lookup went octahedral, then cube, it is mediump too.
+  // weighs most there. The environment lookup, a cube map read with the direction as it is, is
+  // mediump too (an equirect lookup's atan and acos needed highp).
   EXPECT_GT(costOf(spirvOf(*built, "low.dir1", Stage::Fragment)).relaxedPercent(), 80.0);
 }
 
@@ -302,7 +304,7 @@ TEST(Tiers, EveryTierRendersOnBothBackendsAndIsMeasuredAgainstReference) {
     // Measured with image-based ambient (a constant sky: every tier's environment is exact, so
     // the difference is the environment BRDF): high 99.0 (identical: mediump runs at fp32 here,
     // and high has the reference's energy compensation), mid 62.5 and low 49.3 with split-sum and
-    // the same compensation (issue 10; 36.7 with Karis's fit and 33.2 with the two-mip lerp and
+    // the same compensation (36.7 with Karis's fit and 33.2 with the two-mip lerp and
     // Zioma's fit before: these floors fail without it), low's LUT lobe scaled by the environment
     // BRDF and lit in linear (40.5 with the lobe × f0 and the gamma hack: low's floor fails without),
     // mid's lobe GGX × Hammon's V in one division (49.8 with Zioma's fused V·F: mid's floor fails).
@@ -426,12 +428,13 @@ std::vector<uint8_t> gridCell(const facet::runtime::FrameResult& image, int row,
 
 }  // namespace
 
-// The issue's evaluation grid: spheres across roughness 0…1 × (white dielectric, gold metal,
-// black dielectric) under a 110 000 lux sun and an analytic sky, every tier against `reference`
-// on Vulkan. Prints the whole-image PSNR per tier and the per-sphere table (docs/specular-tiers.md
-// quotes both). Rough gold is where single-scattering GGX loses most energy (up to 68 % for a
-// white metal at r = 1): `high` must apply the same multiple-scattering compensation as
-// `reference` (docs/specular-tiers.md, "Multi-scatter energy compensation in high").
+// The roughness grid (examples/scenes/roughness_grid.json): spheres across roughness 0…1 × (white
+// dielectric, gold metal, black dielectric) under a 110 000 lux sun and an analytic sky, every tier
+// against `reference` on Vulkan. Prints the whole-image PSNR per tier and the per-sphere table
+// (docs/specular-tiers.md quotes both). Rough gold is where single-scattering GGX loses most energy
+// (up to 68 % for a white metal at r = 1): `high` must apply the same multiple-scattering
+// compensation as `reference` (docs/specular-tiers.md, "Multi-scatter energy compensation in every
+// tier").
 TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy) {
   std::string packages = facet::test::writeExamplePackages("tier-grid-packages");
   std::string error;
@@ -470,18 +473,18 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
   // lavapipe runs mediump in fp32) with it.
   EXPECT_GT(cells["high"][1][4], 40.0);
   EXPECT_GT(cells["high"][1][5], 40.0);
-  // mid and low apply it too since issue 10 (split-sum ambient, the DFG table's dfg.y): rough
+  // mid and low apply it too (split-sum ambient, the DFG table's dfg.y): rough
   // gold at r = 1 measured mid 28.4 / low 26.0 dB, against 18.9 / 19.1 with Karis's fit and
   // the two-mip lerp, neither of which has the energy they lose.
   EXPECT_GT(cells["mid"][1][5], 24.0);
   EXPECT_GT(cells["low"][1][5], 23.0);
-  // The issue's goal for mid, 38 dB: Zioma's fused V·F measured 34.9 dB here, rough gold
+  // mid's goal, 38 dB (docs/eval.md): Zioma's fused V·F measured 34.9 dB here, rough gold
   // r = 0.4 / 0.6 / 0.8 / 1 at 33.7 / 27.2 / 27.8 / 28.4 (its Kelemen-style V has no rim growth in
   // retro-reflection); GGX × Hammon's V in the same single division (specular_fused_hammon.glsl)
   // 50.5 dB, gold 49.3 / 41.2 / 43.0 / 79.0.
   EXPECT_GT(psnr(images["mid"].ldr, images["reference"].ldr), 45.0);
   for (int column = 2; column < kGridColumns; ++column) EXPECT_GT(cells["mid"][1][column], 38.0) << "gold, column " << column;
-  // The issue's goal for low, 36 dB on this grid: measured 37.0 (rough gold r = 1 31.5) with the
+  // low's goal, 36 dB on this grid: measured 37.0 (rough gold r = 1 31.5) with the
   // LUT lobe scaled by the environment BRDF and lit in linear; 33.1 (26.0) with the lobe × f0 and
   // the gamma hack.
   EXPECT_GT(psnr(images["low"].ldr, images["reference"].ldr), 36.0);
@@ -510,7 +513,7 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
     std::printf("roughness grid, tier %-4s fp16-emulated vs reference: %.1f dB (gold r = 1: %.1f dB)\n", tier,
                 emulatedDb[tier], psnr(gridCell(image, 1, 5), gridCell(images["reference"], 1, 5)));
   }
-  // Measured 65.4 dB: fp16 costs high less than the issue's 50 dB goal allows.
+  // Measured 65.4 dB: fp16 costs high less than its 50 dB goal allows.
   EXPECT_GT(emulatedDb["high"], 55.0);
   EXPECT_TRUE(vk->validationErrors().empty());
 }
@@ -518,7 +521,7 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
 // The environment is a cube map (chunks/environment_cube.glsl): every lit fragment stage of every
 // example material, tier and light set reads it through a cube sampler, and none evaluates an
 // inverse trigonometric function, which the equirect lookup did twice per read (highp atan +
-// acos, 0.34 Mali cycles: issue 10), or the octahedral fold's division.
+// acos, 0.34 Mali cycles: docs/platform-facts.md), or the octahedral fold's division.
 TEST(Tiers, LitFragmentStagesReadTheEnvironmentAsACubeMap) {
   facet::compiler::BuildOptions options;
   options.pointLightCounts = {0, 2};

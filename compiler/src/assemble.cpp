@@ -16,7 +16,8 @@ static_assert(permutations::kMaxPointLights == abi::kMaxPunctualLights,
 
 // An optional vertex input (shader_abi.h's attribute at `location`: its name a vertex.* attribute,
 // or "tangent", needed by the normal output) and the varying that carries it to the fragment
-// stage. Precision follows DESIGN.md's policy: positions and UVs highp always; colours and
+// stage. Precision follows the tiers' policy (docs/architecture.md, "Tiers"): positions and UVs
+// highp always; colours and
 // directions at the tier's precision.
 struct OptionalInput {
   uint32_t location;

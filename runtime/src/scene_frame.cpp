@@ -61,7 +61,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   out->variantKey_ = permutations::requestKey({true}, *tier, scene.sun.has_value(), lights).toString();
   // Tiers with the gamma hack light sRGB-encoded colours (chunks/shading_standard.glsl): colour
   // parameters and sRGB textures reach them undecoded. Material overrides cannot change the colour
-  // space, so the tier decides it for every variant (no preset has the hack since issue 10; eval's
+  // space, so the tier decides it for every variant (no preset has the hack; eval's
   // PreparedFrame overrides this for its swap).
   out->colors_ = permutations::preset(*tier).colorSpace == permutations::ColorSpace::GammaHack ? ColorEncoding::Srgb
                                                                                                : ColorEncoding::Linear;

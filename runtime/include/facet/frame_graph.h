@@ -3,9 +3,9 @@
 // subpasses), each attachment's load and store operations, which attachments are transient, which
 // passes can be dropped, and how many bytes the frame moves between tile memory and DRAM.
 //
-// Why (seeds/filament-mobile-talk.txt): on a tiler a render target lives in on-chip tile memory
-// while a render pass runs; loading it at the start and storing it at the end are the expensive
-// DRAM transfers. A pass that reads only its own pixel of an earlier output (tone mapping, by
+// Why (Guy's Filament mobile talk, on tilers): on a tiler a render target lives in on-chip tile
+// memory while a render pass runs; loading it at the start and storing it at the end are the
+// expensive DRAM transfers. A pass that reads only its own pixel of an earlier output (tone mapping, by
 // framebuffer fetch or a subpass input) can run in the same render pass, so that output never
 // leaves the tile. API-neutral: the Vulkan and GL backends turn the result into their own objects.
 #pragma once

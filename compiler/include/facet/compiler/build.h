@@ -1,4 +1,4 @@
-// The compile pipeline for one material, stage by stage (DESIGN.md, "Data flow"):
+// The compile pipeline for one material, stage by stage (docs/architecture.md):
 //   IR -> surface GLSL -> per variant: assemble (two flavours)
 //     GLES flavour  -> glslang check as ES 3.00                      -> package (text)
 //     Vulkan flavour -> glslang -> spirv-val -> spirv-opt -> spirv-val -> package (SPIR-V)

@@ -1,4 +1,4 @@
-// fp16 emulation for testing (DESIGN.md, "Measuring", fp16 stability): lowers RelaxedPrecision
+// fp16 emulation for testing (docs/fp16-emulation.md): lowers RelaxedPrecision
 // semantics to explicit OpQuantizeToF16, so a GPU that computes mediump in fp32 (lavapipe)
 // rounds every relaxed float result to binary16 as a mobile GPU would: round to nearest even per
 // operation, overflow to +-inf, subnormals flushed to zero. Mesa-style name: the pass lowers

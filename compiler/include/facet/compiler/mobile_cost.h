@@ -44,10 +44,10 @@ enum class OpClass {
 inline constexpr size_t kOpClassCount = size_t(OpClass::kCount);
 const char* toString(OpClass c);
 
-// The stage's SPIR-V instructions as they are, before the model classes or weighs them (DESIGN.md,
-// "Measuring"): the op counts `matc info` prints and `matc lint`'s budgets and baselines read.
-// One per instruction (a vec3 multiply is 1 ALU op, 3 scalar ones); counted by the same walk as
-// the op classes.
+// The stage's SPIR-V instructions as they are, before the model classes or weighs them
+// (docs/eval.md, "The mobile cost model"): the op counts `matc info` prints and `matc lint`'s
+// budgets and baselines read. One per instruction (a vec3 multiply is 1 ALU op, 3 scalar ones);
+// counted by the same walk as the op classes.
 struct InstructionCounts {
   uint32_t aluOps = 0;            // arithmetic, logic, comparison, conversion instructions
   uint32_t scalarAluOps = 0;      // the same, weighted by result components (scalar-ALU cost)
@@ -87,8 +87,8 @@ struct Expansion {
 // bound for code whose SFU work cannot overlap its FMA work.
 enum class ArithmeticPipes { Concurrent, Shared };
 
-// The weights of the model, in one table. Sources: ../shared/DESIGN.md, "Facts measured on mobile
-// GPU compilers" (the facts), and Mesa's Valhall cycle model (src/panfrost/compiler,
+// The weights of the model, in one table. Sources: docs/platform-facts.md, "Mobile GPU compilers"
+// (the facts), and Mesa's Valhall cycle model (src/panfrost/compiler,
 // va_print_stats: per-core peak rates of Mali-G78, which Mesa applies to every Valhall GPU, and
 // the bound over pipes). docs/eval.md compares the result with the measured Mali-G57 cycles.
 struct MobileCostWeights {
@@ -111,7 +111,7 @@ struct MobileCostWeights {
   Expansion atan2{23, 1};              // atan's, plus compare/select/add for the quadrant
   Expansion hyperbolic{3, 2};
   Expansion inverseHyperbolic{3, 3};
-  Expansion division{1, 1};            // rcp + mul (the brief's "division as rcp + mul")
+  Expansion division{1, 1};            // rcp + mul
   Expansion integerDivision{4, 1};     // reciprocal estimate and a correction step
   Expansion derivative{1, 1};          // Valhall v9: lane exchange (CLPER) on the SFU pipe, then a subtract
   // A mediump (RelaxedPrecision) FMA-pipe op: Valhall's FMA pipe runs two fp16 lanes per slot

@@ -1,6 +1,6 @@
 // Image error metrics of `matc eval` and the tests: a rendered image against a reference image of
-// the same scene (DESIGN.md, "Measuring"). No dependency beyond the standard library, so tests link
-// it on its own.
+// the same scene (docs/eval.md, "What is measured"). No dependency beyond the standard library,
+// so tests link it on its own.
 #pragma once
 
 #include <array>

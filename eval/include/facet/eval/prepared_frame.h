@@ -3,7 +3,7 @@
 // the colour encoding of parameters and sRGB textures (the gamma hack lights sRGB-encoded values)
 // follows the preset, since an app only ever ships presets. This makes the frame match the
 // configuration instead; runtime/ is left as it is. (The DFG table also follows the preset; every
-// preset's ambient is split-sum since issue 10, so it is bound for every tier, and a swap to an
+// preset's ambient is split-sum, so it is bound for every tier, and a swap to an
 // ambient model without the table leaves it unused.)
 #pragma once
 

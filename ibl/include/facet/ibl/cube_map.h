@@ -1,8 +1,8 @@
 // ibl/cube_map.h
 // A float RGB environment as the six faces of a cube map, the layout the shaders sample with
 // samplerCube: the hardware picks the face and its texel from the direction as it is, so the
-// lookup costs the shader no arithmetic (issue 10: the octahedral fold it replaced cost 0.11
-// Mali-G57 cycles per lookup, the equirect atan + acos before it 0.34; docs/ibl.md).
+// lookup costs the shader no arithmetic (an octahedral map's fold costs 0.11 Mali-G57 cycles per
+// lookup, an equirect atan + acos 0.34: docs/platform-facts.md).
 //
 // Faces in the API order +X, −X, +Y, −Y, +Z, −Z (layer i of a Vulkan cube image,
 // GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), each size × size texels, row 0 at t = 0. Face selection

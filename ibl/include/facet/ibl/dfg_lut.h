@@ -1,8 +1,8 @@
 // ibl/dfg_lut.h
 // The split-sum DFG table: the BRDF half of Karis's split-sum image-based lighting (Karis 2013,
 // "Real Shading in Unreal Engine 4"), in the layout Filament uses for multiple-scattering energy
-// compensation (seeds/filament-mobile-talk.txt, the Lagarde & Golubev slides; the energy
-// compensation lobe of filament-pbr-notes-zh.md, "提升BRDF").
+// compensation (Guy's Filament mobile talk, the slides after Lagarde & Golubev 2018; Guy &
+// Agopian, "Physically Based Rendering in Filament", energy compensation).
 //
 // BRDF: GGX D (α = r², r = perceptual roughness), height-correlated Smith V, Schlick F with
 // f90 = 1 unless the caller passes one. With Fc = (1 − v·h)⁵ the specular environment integral

@@ -23,8 +23,8 @@ struct EnvBrdfTerms {
 /// Facet's height-correlated Smith, so its error below mixes fit error with that model difference.
 EnvBrdfTerms envBrdfKaris(double NoV, double perceptualRoughness);
 
-/// Zioma 2015, "Optimizing PBR", SIGGRAPH (seeds/zioma-optimizing-pbr-siggraph2015.txt,
-/// "Environment BRDF"): Karis's curve refitted without the exponent, as on the slide
+/// Zioma, "Optimizing PBR", SIGGRAPH 2015 ("Environment BRDF"): Karis's curve refitted without
+/// the exponent, as on the slide
 ///   envBrdf = (1 − max(r, n·v))³ + f0,   i.e. A = 1, B = (1 − max(r, n·v))³
 /// The slide has no clamp: for f0 = 1 it exceeds 1 everywhere except n·v = 1 or r = 1.
 EnvBrdfTerms envBrdfZioma(double NoV, double perceptualRoughness);

@@ -6,7 +6,7 @@
 // Mapping: level m of `levels` holds perceptual roughness r_m = m / (levels − 1), so the shader
 // uses lod = r · (levels − 1). Level m is the source's resolution halved m times (an equirect
 // 2h × h stays 2h/2^m × h/2^m), level 0 is the source itself (r = 0 is a mirror).
-// Filament maps with lod = (levels − 1) · r (2 − r) instead (seeds/filament-mobile-talk.txt,
+// Filament maps with lod = (levels − 1) · r (2 − r) instead (Guy's Filament mobile talk,
 // "Roughness mapping"), spending more levels on glossy surfaces; prefilterLevelRoughness is the
 // one place to change if Facet follows.
 //

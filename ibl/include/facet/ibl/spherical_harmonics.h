@@ -3,7 +3,7 @@
 // bands 0–1 (SH2, 4 coefficients) or 0–2 (SH3, 9), convolve with the clamped cosine to get
 // irradiance (Ramamoorthi & Hanrahan 2001, "An Efficient Representation for Irradiance
 // Environment Maps"), and fold the constants so a shader evaluates a polynomial in n
-// (Filament's form; seeds/filament-mobile-talk.txt, "Spherical harmonics": 2 or 3 bands).
+// (Filament's form; Guy's Filament mobile talk, "Spherical harmonics": 2 or 3 bands).
 //
 // Basis (real, no Condon–Shortley phase), coefficient index k = l(l + 1) + m, d = (x, y, z) unit:
 //   k 0: Y00  = 0.282095            = 1/(2√π)

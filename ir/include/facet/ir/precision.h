@@ -1,4 +1,4 @@
-// The precision policy of mediump tiers (DESIGN.md, "Tiers": precision): which surface values
+// The precision policy of mediump tiers (docs/architecture.md, "Tiers"): which surface values
 // must stay highp. One answer for every consumer: GLSL emission declares those values highp,
 // and the lint's fp16 rules look only at the values left mediump.
 #pragma once
@@ -26,7 +26,7 @@ class PrecisionMap {
 };
 
 // A value is highp when
-//   - it reads a highp attribute (positions, UVs: DESIGN.md keeps them highp), directly or through
+//   - it reads a highp attribute (positions, UVs: the policy keeps them highp), directly or through
 //     its operands, except across a texture read: the coordinate needs highp, the 8-bit result
 //     has the sampler's precision;
 //   - or its proven range leaves fp16's finite range (|x| > 65504, e.g. a parameter declared

@@ -1,4 +1,4 @@
-// Tier presets: the shading maths each GPU tier uses (DESIGN.md, "Tiers").
+// Tier presets: the shading maths each GPU tier uses (docs/architecture.md, "Tiers").
 #pragma once
 
 #include <string>
@@ -39,16 +39,16 @@ struct TierConfig {
 // reference: highp GGX/Smith/Schlick, the ground truth every other tier is measured against;
 //            split-sum IBL + SH3, energy compensation on direct and IBL specular.
 // high:      the same maths in mediump with the fp16 clamps of chunks/precision.glsl.
-// mid:       GGX D × Hammon's V fused into one division, F = f0 (chunks/specular_fused_hammon.glsl;
-//            issue 10: Zioma's fused V·F before, 30.8 → 38.3 dB on brushed_gold, the same Mali cycles),
+// mid:       GGX D × Hammon's V fused into one division, F = f0 (chunks/specular_fused_hammon.glsl:
+//            38.3 dB on brushed_gold against 30.8 with Zioma's fused V·F, at the same Mali cycles),
 //            per-vertex diffuse and SH3, mediump;
-//            split-sum IBL with energy compensation (issue 10: +13 dB on the spheres scene and
-//            rough gold 18.9 → 28.4 dB against Karis's analytic fit, for +0.04 cycles).
+//            split-sum IBL with energy compensation (+13 dB on the spheres scene and rough gold
+//            18.9 → 28.4 dB against Karis's analytic fit, for +0.04 cycles).
 // low:       LUT specular (one texture read, no D/V/F) scaled by the environment BRDF, per-vertex
-//            diffuse and SH2, linear, mediump; split-sum IBL with energy compensation (issue 10:
-//            against the two-mip lerp, +7 dB on the spheres scene). Linear instead of the gamma
-//            hack since issue 10's retuning: better on every example material and cheaper
-//            (docs/eval.md); ColorSpace::GammaHack remains an option matc eval measures.
+//            diffuse and SH2, linear, mediump; split-sum IBL with energy compensation (against the
+//            two-mip lerp, +7 dB on the spheres scene). Linear rather than the gamma hack: better
+//            on every example material and cheaper (docs/eval.md); ColorSpace::GammaHack remains
+//            an option matc eval measures.
 // docs/specular-tiers.md has the measurements.
 TierConfig preset(Tier tier);
 

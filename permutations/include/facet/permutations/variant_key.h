@@ -14,7 +14,7 @@
 
 namespace facet::permutations {
 
-// GPU tiers (DESIGN.md, "Tiers"). Each picks its own shading maths.
+// GPU tiers (docs/architecture.md, "Tiers"). Each picks its own shading maths.
 enum class Tier { Reference, High, Mid, Low };
 const char* toString(Tier);
 std::optional<Tier> tierFromString(std::string_view);
