@@ -7,9 +7,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "facet/program_interface.h"
 #include "facet/render_path.h"
 #include "facet/shader_abi.h"
 
@@ -61,6 +63,10 @@ struct ShaderProgram {
   std::vector<uint32_t> fragmentSpirv;
   std::string vertexGlslEs;             // GLES flavour, "#version 300 es" source text
   std::string fragmentGlslEs;
+  // What the variant's draws bind, when the code came from a package (LoadedMaterial::program,
+  // which checked the SPIR-V against it): the GL backend checks the linked program's reflection
+  // against it before the program's first draw. Absent for an app's own shaders.
+  std::optional<ProgramInterface> interface;
 };
 
 // How a draw's colour combines with the HDR target. Transparent and Additive shaders output
