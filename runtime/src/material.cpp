@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "facet/permutations/tiers.h"
+#include "facet/permutations/variant_key.h"
 #include "spirv_reflection.h"
 #include "untrusted_spirv.h"
 
@@ -142,10 +144,14 @@ std::optional<ProgramInterface> LoadedMaterial::interfaceOf(size_t variant, std:
       out.parameters.push_back({p.name, p.offset, valueTypeOf(p)});
     }
   }
-  // The frame's textures, which every draw of a lit material binds (runtime/scene_frame.h).
-  if (m.shading == "lit")
-    for (const abi::SamplerDesc& s : abi::kFrameSamplers)
-      if (!generatedSlot(std::string(s.name))) out.samplers.push_back({std::string(s.name), s.binding, s.cube});
+  // The frame's textures a lit variant's draws bind (runtime/scene_frame.h): the environment, and
+  // the DFG table in the tiers whose ambient model reads it (elsewhere its binding holds a dummy).
+  // The key parses: semanticError checked it.
+  const std::optional<permutations::VariantKey> parsed = permutations::VariantKey::parse(key);
+  const bool splitSum = parsed && permutations::preset(parsed->tier).ambient == permutations::AmbientModel::SplitSum;
+  const auto frame = [&](const abi::SamplerDesc& d) { out.samplers.push_back({std::string(d.name), d.binding, d.cube}); };
+  if (m.shading == "lit") frame(abi::kEnvironmentSampler);
+  if (m.shading == "lit" && splitSum) frame(abi::kDfgLutSampler);
   for (const package::TextureInfo& t : reader_.textures()) {
     if (std::find(t.variants.begin(), t.variants.end(), variant) == t.variants.end()) continue;
     const GeneratedSlot* slot = generatedSlot(t.name);
