@@ -1,7 +1,8 @@
 // The API-neutral description of one frame, and the interface each graphics backend implements.
 //
 // A backend receives everything already resolved: meshes as interleaved vertices, uniform block
-// bytes in std140, and shader code for its API. It knows nothing about packages or scenes.
+// bytes in std140, and shader code for its API (with, for a package's, the interface its draws bind:
+// program_interface.h). It reads no package and no scene.
 // The app's-own-device entry points of the Vulkan backend are in vulkan_backend.h.
 #pragma once
 
