@@ -123,6 +123,12 @@ void install(pkg::Package& p, const std::string& key, const HandWritten& code) {
   shader(p, key, Stage::Fragment, Target::GlslEs300).code = code.fragmentGlsl;
 }
 
+// `from`'s fragment shaders of variant `fromKey`, both targets, in `to`'s variant `toKey`.
+void transplantFragment(pkg::Package& to, const std::string& toKey, pkg::Package from, const std::string& fromKey) {
+  for (Target t : {Target::Spirv, Target::GlslEs300})
+    shader(to, toKey, Stage::Fragment, t).code = shader(from, fromKey, Stage::Fragment, t).code;
+}
+
 void expectContains(const std::string& text, const std::string& part) {
   EXPECT_NE(text.find(part), std::string::npos) << "expected '" << part << "' in: " << text;
 }
@@ -199,8 +205,7 @@ TEST(PackageInterface, SpecularTableMustBeShippedAsTheShadersSampleIt) {
 TEST(PackageInterface, AFragmentShaderFromAnotherVariantOrMaterialIsRefused) {
   // mid.dir1's fragment reads the per-vertex diffuse light that high.dir1's vertex shader does not write.
   pkg::Package p = examplePackage("red_plastic");
-  for (Target t : {Target::Spirv, Target::GlslEs300})
-    shader(p, "high.dir1", Stage::Fragment, t).code = shader(p, "mid.dir1", Stage::Fragment, t).code;
+  transplantFragment(p, "high.dir1", p, "mid.dir1");
   const std::string spirvError = programError(p, "high.dir1");
   expectContains(spirvError, "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) reads input");
   expectContains(spirvError, "which the vertex shader (SPIR-V) does not write");
@@ -215,9 +220,7 @@ TEST(PackageInterface, AFragmentShaderFromAnotherVariantOrMaterialIsRefused) {
   // brushed_gold's fragment shader in red_plastic: the same stage interface and a block of the
   // same offsets and types (a colour at 0, a float at 12 and at 16), another material's names.
   pkg::Package impostor = examplePackage("red_plastic");
-  pkg::Package gold = examplePackage("brushed_gold");
-  for (Target t : {Target::Spirv, Target::GlslEs300})
-    shader(impostor, "high.dir1", Stage::Fragment, t).code = shader(gold, "high.dir1", Stage::Fragment, t).code;
+  transplantFragment(impostor, "high.dir1", examplePackage("brushed_gold"), "high.dir1");
   const std::string layoutError = programError(impostor, "high.dir1");
   expectContains(layoutError, "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) MaterialParams member");
   expectContains(layoutError, "'tint' (vec3, bytes 0..12) does not match parameter 'baseColor' (vec3, bytes 0..12)");
@@ -250,6 +253,8 @@ TEST(PackageInterface, HandWrittenInterfacesAreCheckedOnBothBackends) {
       {handWritten("", "uniform vec4 extra;\n", "vec4(1.0)", "highp vec3 a_position;\nlayout(location = 4) in highp vec3 a_color"),
        "vertex shader (SPIR-V) reads vertex input 'a_color' at location 4 as vec3; the runtime supplies a_color there as vec4",
        ""},
+      {handWritten("", "uniform vec4 extra;\n", "vec4(1.0)", "highp vec3 a_position;\nlayout(location = 1) in highp vec3 a_bent"),
+       "vertex shader (SPIR-V) reads vertex input 'a_bent' at location 1, where the runtime supplies a_normal", ""},
       {handWritten("layout(location = 1) out vec4 second;\n", "", "vec4(1.0)"),
        "fragment shader (SPIR-V) writes output 'second' (vec4 at location 1); the forward pass has one colour target, a "
        "vec4 at location 0",
@@ -262,6 +267,11 @@ TEST(PackageInterface, HandWrittenInterfacesAreCheckedOnBothBackends) {
     if (!c.gl.empty())
       expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"), "material 'red_plastic' variant high.dir1: the " + c.gl);
   }
+  // GL: an attribute at another attribute's location reads that attribute's data.
+  pkg::Package moved = examplePackage("red_plastic");
+  install(moved, "high.dir1", handWritten("", "", "vec4(1.0)", "highp vec3 unused;\nlayout(location = 1) in highp vec3 a_position"));
+  expectContains(glDrawError(withoutSpirv(moved), "scenes/sphere.json", "high"),
+                 "the vertex shader (GLSL ES) reads vertex input 'a_position' at location 1, where the runtime supplies a_normal");
   // GL: a uniform outside the ABI's blocks, which no draw sets.
   pkg::Package p = examplePackage("red_plastic");
   install(p, "high.dir1", handWritten("", "uniform vec4 extra;\n", "vec4(1.0)", "highp vec3 a_position", "extra"));

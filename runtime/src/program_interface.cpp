@@ -144,10 +144,15 @@ class StageCheck {
     if (!v.location) return "declares " + what + " without a location";
     for (const abi::VertexAttribute& a : abi::kVertexAttributes) {
       if (a.location != *v.location) continue;
+      // By name too, where the shader keeps names: an input at another attribute's location reads
+      // that attribute (GL assigns locations the shader leaves out).
+      const std::string supplies = "a_" + std::string(a.name);
+      if (!v.name.empty() && v.name != supplies)
+        return "reads " + what + " at location " + std::to_string(a.location) + ", where the runtime supplies " + supplies;
       const ValueType supplied{ScalarKind::Float, a.components};
       if (v.type != supplied)
         return "reads " + what + " at location " + std::to_string(a.location) + " as " + toString(v.type) +
-               "; the runtime supplies a_" + std::string(a.name) + " there as " + toString(supplied);
+               "; the runtime supplies " + supplies + " there as " + toString(supplied);
       return "";
     }
     return "reads " + what + " at location " + std::to_string(*v.location) + ", where the runtime supplies no attribute";
