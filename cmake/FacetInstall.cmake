@@ -11,7 +11,7 @@
 #   gl        runtime_gl            the GL backend (createGlBackend)
 #   gltf      runtime_gltf          glTF meshes (tinygltf)
 #   scene     scene                 the scene reader (scene.h's parse/load functions; JSON)
-# The libraries are static, so their private dependencies (zstd, xxHash, SPIRV-Tools, ...) are
+# The libraries are static, so their private dependencies (zstd, xxHash, SPIRV-Tools, SPIRV-Cross, ...) are
 # exported as link-only dependencies, and FacetConfig.cmake finds them again in the app's build.
 include(CMakePackageConfigHelpers)
 set(FACET_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Facet)
@@ -29,8 +29,8 @@ set(FACET_COMPONENT_TARGETS_scene facet_scene)
 # Public headers per component, as they sit under include/facet/ in the source tree. Only these
 # are installed; a header listed here that includes one not installed fails the consumer test
 # (tests/consumer_project.cmake compiles every installed header).
-set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h render_path.h
-    texture_checks.h runtime/environment.h runtime/exposure.h runtime/image_texture.h runtime/material.h
+set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h program_interface.h render_backend.h
+    render_path.h texture_checks.h runtime/environment.h runtime/exposure.h runtime/image_texture.h runtime/material.h
     runtime/material_instance.h runtime/mesh.h runtime/png.h runtime/preshader.h runtime/color_grading.h
     runtime/vignette.h
     runtime/scene.h)  # the Scene type environment.h takes; its reader is the scene component
@@ -49,6 +49,7 @@ set(FACET_EXTERNAL_DEPENDENCIES
   "PkgConfig::EGL|pkg-config|egl"
   "PkgConfig::GLESV2|pkg-config|glesv2"
   "SPIRV-Tools-static|package|SPIRV-Tools"
+  "PkgConfig::SPIRV_CROSS_C|pkg-config|spirv-cross-c-shared"
   "Vulkan::Vulkan|package|Vulkan"
   "TinyGLTF::TinyGLTF|package|TinyGLTF"
   "nlohmann_json::nlohmann_json|package|nlohmann_json"

@@ -8,6 +8,7 @@
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
+#include "facet/runtime/material.h"
 #include "facet/runtime/scene.h"
 #include "scene_keys.h"
 
@@ -237,6 +238,28 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
   return 1;
 }
 
+// What an app loading the package would be told, by the runtime's own checks (one implementation:
+// LoadedMaterial::load for the tables and the format, program() on every variant for the code:
+// SPIR-V validation, stages, interfaces), none of which needs a GPU; "" when every variant loads.
+// The GLSL ES text is checked by a GL driver only, so not here.
+std::string runtimeRefusal(const std::string& path) {
+  std::string error;
+  auto loaded = runtime::LoadedMaterial::load(path, &error);
+  if (!loaded) return error.rfind(path + ": ", 0) == 0 ? error.substr(path.size() + 2) : error;
+  return loaded->checkEveryVariant(&error) ? "" : error;
+}
+
+int describe(const package::ReadResult& r, const InfoArgs& args) {
+  if (!args.variant.empty()) return printShader(*r.package, args);
+  if (!args.scene.empty()) return printSceneNeeds(*r.package, args.scene);
+  if (args.json) {
+    printJson(r);
+  } else {
+    printSummary(r);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int infoCommand(const InfoArgs& args) {
@@ -250,14 +273,14 @@ int infoCommand(const InfoArgs& args) {
     std::fprintf(stderr, "%s: error: %s\n", args.input.c_str(), r.error.c_str());
     return 1;
   }
-  if (wantsShader) return printShader(*r.package, args);
-  if (!args.scene.empty()) return printSceneNeeds(*r.package, args.scene);
-  if (args.json) {
-    printJson(r);
-  } else {
-    printSummary(r);
+  // What the package holds is printed either way (it helps to see what a refused package is);
+  // the exit status says whether an app would draw it.
+  const int described = describe(r, args);
+  if (std::string refusal = runtimeRefusal(args.input); !refusal.empty()) {
+    std::fprintf(stderr, "%s: error: the runtime refuses this package: %s\n", args.input.c_str(), refusal.c_str());
+    return 1;
   }
-  return 0;
+  return described;
 }
 
 }  // namespace facet::matc

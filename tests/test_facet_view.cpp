@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "facet/package.h"
 #include "test_support.h"
 
 namespace {
@@ -40,6 +41,36 @@ TEST(FacetView, RendersTheGradedSceneWithAPackedHdrTarget) {
   EXPECT_NE(r.out.find("vulkan: separate path, r11g11b10f HDR, frame graph at 384x256"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("total: loaded 0 B, stored 786432 B, sampled 393216 B per frame"), std::string::npos)
       << "HDR at 4 bytes per pixel, stored and sampled\n" << r.out;
+}
+
+// A package whose shaders read another interface than it declares (here: the preshader section
+// dropped, so they read a 64-byte block where a draw binds 32) makes facet-view exit 1 naming the
+// material, variant and stage, and write no image: on Vulkan at load (the SPIR-V), on GL before the
+// first draw (the linked program of a package without SPIR-V). Vulkan used to draw it, exit 0.
+TEST(FacetView, APackageWhoseShadersDisagreeWithItExitsOne) {
+  namespace pkg = facet::package;
+  std::string packages = facet::test::writeExamplePackages("view-hostile");
+  pkg::ReadResult r = pkg::readFile(packages + "/red_plastic.matpkg");
+  ASSERT_TRUE(r.package) << r.error;
+  pkg::Package p = *r.package;
+  p.preshader = {};
+  struct Run {
+    const char* backend;
+    std::string why;
+  };
+  for (const Run& c : {Run{"vulkan", "the fragment shader (SPIR-V) reads MaterialParams as 64 bytes, but the runtime binds 32"},
+                       Run{"gl", "the fragment shader (GLSL ES) reads MaterialParams as 64 bytes, but the runtime binds 32"}}) {
+    if (std::string(c.backend) == "gl")
+      for (pkg::Variant& v : p.variants) std::erase_if(v.shaders, [](auto& s) { return s.target != pkg::Target::GlslEs300; });
+    std::string error;
+    ASSERT_TRUE(pkg::writeFile(packages + "/red_plastic.matpkg", pkg::write(p), &error)) << error;
+    std::string out = facet::test::scratchDir("view-hostile-out");
+    auto run = facet::test::run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+                                " --out " + out + " --backend " + c.backend + " --validation");
+    EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
+    EXPECT_NE(run.err.find("material 'red_plastic' variant high.dir1: " + c.why), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out + "/sphere." + c.backend + ".png"));
+  }
 }
 
 TEST(FacetView, ABrokenSceneIsALocatedErrorAndWritesNothing) {

@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "facet/package.h"
 #include "facet/shader_abi.h"
 
 #include "test_support.h"
@@ -258,6 +261,50 @@ TEST(MatcCli, CorruptPackageIsRejectedWithAnError) {
   EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
 }
 
+// matc info runs the checks the runtime runs on load (LoadedMaterial: the meaning, every variant's
+// SPIR-V and interface), so a package an app would refuse exits 1 with the runtime's reason
+// after info has printed what the package holds. It used to exit 0, silently.
+TEST(MatcCli, InfoExitsOneOnPackagesTheRuntimeRefuses) {
+  namespace pkg = facet::package;
+  std::string dir = facet::test::scratchDir("cli-refused");
+  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/r.matpkg").exitCode, 0);
+  const pkg::ReadResult good = pkg::readFile(dir + "/r.matpkg");
+  ASSERT_TRUE(good.package) << good.error;
+  struct Case {
+    std::function<void(pkg::Package&)> edit;
+    std::string why;
+  };
+  const Case cases[] = {
+      {[](pkg::Package& p) { p.material.paramBlockSize = 4097; }, "the parameter block is 4097 bytes; the limit is 4096"},
+      {[](pkg::Package& p) { p.material.params[1].defaultValue[0] = std::nan(""); },
+       "parameter 'roughness': its default is not a finite number"},
+      {[](pkg::Package& p) {
+         for (pkg::PreshaderOp& op : p.preshader.programs[0].ops)
+           if (op.code == pkg::PreshaderOpcode::Store) op.offset = p.preshader.blockSize;
+       },
+       "preshader program 0: preshader op"},
+      {[](pkg::Package& p) {
+         for (pkg::Shader& s : p.variants[2].shaders)
+           if (s.target == pkg::Target::Spirv) s.stage = s.stage == pkg::Stage::Vertex ? pkg::Stage::Fragment : pkg::Stage::Vertex;
+       },
+       "material 'red_plastic' variant high.dir0: the fragment shader (SPIR-V) is a vertex shader"},
+  };
+  for (const Case& c : cases) {
+    pkg::Package p = *good.package;
+    c.edit(p);
+    std::string error;
+    ASSERT_TRUE(pkg::writeFile(dir + "/bad.matpkg", pkg::write(p), &error)) << error;
+    for (const char* mode : {"", " --json"}) {
+      auto r = run(kMatc + " info " + dir + "/bad.matpkg" + mode);
+      EXPECT_EQ(r.exitCode, 1) << c.why << mode;
+      EXPECT_NE(r.err.find(dir + "/bad.matpkg: error: the runtime refuses this package: " + c.why), std::string::npos)
+          << r.err;
+      EXPECT_NE(r.out.find("red_plastic"), std::string::npos) << "what the package holds is still printed";
+    }
+  }
+  EXPECT_EQ(run(kMatc + " info " + dir + "/r.matpkg").exitCode, 0);
+}
+
 TEST(MatcCli, SceneManifestBuildsOnlyTheVariantsItNeeds) {
   std::string dir = facet::test::scratchDir("cli-scene");
   std::string scene = facet::test::examplePath("scenes/sphere.json");
@@ -293,6 +340,12 @@ TEST(MatcCli, PointLightVariantsAreBuiltOnRequestAndCheckedAgainstAScene) {
   auto found = run(kMatc + " info " + dir + "/lamps.matpkg --scene " + scene);
   EXPECT_EQ(found.exitCode, 0) << found.err;
   EXPECT_NE(found.out.find("the package has 16 variants, including it"), std::string::npos) << found.out;
+  // Point lights read the lut tier's table too: a low variant lit by them alone ships it (it used
+  // to be listed for variants with the sun only, and drew its point lights with an unbound table).
+  auto summary = run(kMatc + " info " + dir + "/lamps.matpkg");
+  EXPECT_EQ(summary.exitCode, 0) << summary.err;
+  EXPECT_NE(summary.out.find("facet_specularLut r8_unorm 128x64, sampled by low.dir0.pt2, low.dir1, low.dir1.pt2,"),
+            std::string::npos) << summary.out;
 
   EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --point-lights 3").exitCode, 2);
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));

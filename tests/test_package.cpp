@@ -619,10 +619,13 @@ TEST(Package, TwoTextureSectionsAreRejected) {
     storeLE(e, 8, loadLE(e, 8, 8) + 24, 8);
     out.insert(out.end(), e.begin(), e.end());
   }
+  // The copy starts at the next 8-byte boundary, as sections do.
+  const uint64_t copyAt = (b.size() + 24 + 7) / 8 * 8;
   std::vector<uint8_t> extra(b.begin() + long(entry), b.begin() + long(entry + 24));
-  storeLE(extra, 8, b.size() + 24, 8);
+  storeLE(extra, 8, copyAt, 8);
   out.insert(out.end(), extra.begin(), extra.end());
   out.insert(out.end(), b.begin() + long(32 + count * 24), b.end());
+  out.resize(copyAt, 0);
   out.insert(out.end(), payload.begin(), payload.end());
   storeLE(out, 12, count + 1, 4);
   storeLE(out, 16, out.size(), 8);
@@ -726,4 +729,31 @@ TEST(Package, HostileMetalSlotsAreRejected) {
   shared.mslBindings[1].kind = pkg::MslResource::Buffer;
   shared.mslBindings[1].index = 0;
   expectRejected(pkg::write(shared), "reuses buffer slot 0");
+}
+
+// Sections follow each other at 8-byte boundaries with zero padding, the last ending the file:
+// bytes anywhere else (a non-zero padding byte, a wider gap, a tail after the last section) are
+// data no check reads, which a resealed hostile file could carry. They used to be accepted.
+TEST(Package, PaddingAndBytesOutsideTheSectionsAreRejected) {
+  const std::vector<uint8_t> good = pkg::write(samplePackage());
+  ASSERT_TRUE(pkg::read(good).package);
+  // The first gap between two sections (META's size is no multiple of 8 here).
+  const size_t metaEnd = sectionOffset(good, "META") + size_t(loadLE(good, tocEntry(good, "META") + 16, 8));
+  ASSERT_LT(metaEnd, sectionOffset(good, "VARS")) << "no padding after META to test";
+  expectEditRejected(good, [&](auto& b) { b[metaEnd] = 0x5a; },
+                     "padding byte " + std::to_string(metaEnd) + " before section 'VARS' is 90, not zero");
+
+  // Eight more zero bytes before BDAT, its entry and the file size moved to match.
+  const size_t data = sectionOffset(good, "BDAT");
+  expectEditRejected(good, [&](auto& b) {
+    b.insert(b.begin() + long(data), 8, 0);
+    storeLE(b, tocEntry(b, "BDAT") + 8, data + 8, 8);
+    storeLE(b, 16, b.size(), 8);
+  }, "section 'BDAT' starts at byte " + std::to_string(data + 8) + ", but section 'BTAB' ends at byte");
+
+  // Bytes after the last section, counted in the header's file size.
+  expectEditRejected(good, [&](auto& b) {
+    b.insert(b.end(), 16, 0);
+    storeLE(b, 16, b.size(), 8);
+  }, "package has 16 bytes after its last section, which ends at byte " + std::to_string(good.size()));
 }

@@ -293,3 +293,88 @@ TEST(PackageLoader, UnknownVariantAndMissingShaderAreErrors) {
   EXPECT_NE(error.find("texture 1000 does not exist"), std::string::npos);
   EXPECT_EQ(reader->bytesDecompressed(), 0u);
 }
+
+// The parameter layout itself is meaning (package::semanticError, run by the loader): std140
+// places, no two parameters sharing a byte (paramBlock() wrote one over the other), a block ending
+// where the parameters do, rounded to 16 (the preshader's derived members start there), no two
+// textures on one sampler slot. Each used to load.
+TEST(PackageLoader, ParameterLayoutIsStd140WithoutOverlaps) {
+  pkg::ReadResult whole = pkg::readFile(packageDir() + "/red_plastic.matpkg");
+  ASSERT_TRUE(whole.package) << whole.error;
+  const pkg::Package good = *whole.package;
+  ASSERT_EQ(good.material.params[0].name, "baseColor");  // colour at 0..12
+  ASSERT_EQ(good.material.params[1].name, "roughness");  // float at 12..16
+  ASSERT_EQ(good.material.params[2].name, "reflectance");  // float at 16..20, block 32
+  auto refusal = [](const pkg::Package& p) {
+    const std::vector<uint8_t> bytes = pkg::write(p);
+    std::string error;
+    EXPECT_FALSE(facet::runtime::LoadedMaterial::loadFromMemory(bytes, "app-bytes", &error));
+    return error;
+  };
+  auto expectRefused = [&](auto edit, const std::string& why) {
+    pkg::Package p = good;
+    edit(p);
+    EXPECT_EQ(pkg::semanticError(p).find(why), 0u) << pkg::semanticError(p);
+    EXPECT_EQ(refusal(p), "app-bytes: " + pkg::semanticError(p));
+  };
+  expectRefused([](pkg::Package& p) { p.material.params[1].offset = 8; },
+                "parameters 'baseColor' (bytes 0..12) and 'roughness' (bytes 8..12) overlap");
+  expectRefused([](pkg::Package& p) { p.material.params[2].offset = 12; },
+                "parameters 'roughness' (bytes 12..16) and 'reflectance' (bytes 12..16) overlap");
+  expectRefused([](pkg::Package& p) { p.material.params[2].offset = 18; },
+                "parameter 'reflectance': byte offset 18 is not a multiple of its std140 alignment, 4");
+  expectRefused([](pkg::Package& p) { p.material.params[0].offset = 4; },
+                "parameter 'baseColor': byte offset 4 is not a multiple of its std140 alignment, 16");
+  expectRefused([](pkg::Package& p) { p.material.paramBlockSize = 48; },
+                "the parameter block is 48 bytes, but its parameters end at byte 20, which std140 rounds to 32");
+
+  pkg::ReadResult tiles = pkg::readFile(packageDir() + "/painted_tiles.matpkg");
+  ASSERT_TRUE(tiles.package) << tiles.error;
+  pkg::Package sharedSlot = *tiles.package;
+  ASSERT_TRUE(pkg::isTexture(sharedSlot.material.params[1].type));
+  sharedSlot.material.params[1].offset = sharedSlot.material.params[0].offset;
+  EXPECT_EQ(pkg::semanticError(sharedSlot), "parameter 'relief': sampler slot 0 is another texture parameter's");
+}
+
+// The Metal slots (section MSLB) agree with what the package declares: each names a block or
+// sampler of the material at the slot shader_abi.h pins, and each such resource has one. The
+// reader checks kinds, ranges and uniqueness; a slot table that named a block the material has
+// not, or moved a sampler, was accepted.
+TEST(PackageLoader, MetalSlotsAgreeWithTheMaterial) {
+  pkg::ReadResult whole = pkg::readFile(packageDir() + "/painted_tiles.matpkg");
+  ASSERT_TRUE(whole.package) << whole.error;
+  const pkg::Package good = *whole.package;
+  ASSERT_EQ(good.mslBindings, pkg::mslBindingsFor(good.material));
+  auto expectRefused = [&](auto edit, const std::string& why) {
+    pkg::Package p = good;
+    edit(p);
+    EXPECT_EQ(pkg::semanticError(p), why);
+    std::string error;
+    const std::vector<uint8_t> bytes = pkg::write(p);
+    EXPECT_FALSE(facet::runtime::LoadedMaterial::loadFromMemory(bytes, "app-bytes", &error));
+    EXPECT_EQ(error, "app-bytes: " + why);
+  };
+  auto find = [](pkg::Package& p, const std::string& name) -> pkg::MslBinding& {
+    for (pkg::MslBinding& b : p.mslBindings)
+      if (b.name == name) return b;
+    ADD_FAILURE() << "no Metal binding " << name;
+    return p.mslBindings[0];
+  };
+  expectRefused([&](pkg::Package& p) { find(p, "facet_material_relief").index = 12; },
+                "Metal binding 'facet_material_relief' is texture(12) for Vulkan set 1 binding 9; the shader interface "
+                "pins it at texture(9) for set 1 binding 9");
+  expectRefused([&](pkg::Package& p) { find(p, "MaterialParams").binding = 5; },
+                "Metal binding 'MaterialParams' is buffer(2) for Vulkan set 0 binding 5; the shader interface pins it at "
+                "buffer(2) for set 0 binding 2");
+  expectRefused([&](pkg::Package& p) { find(p, "facet_environment").kind = pkg::MslResource::Buffer; find(p, "facet_environment").index = 7; },
+                "Metal binding 'facet_environment' is buffer(7) for Vulkan set 1 binding 2; the shader interface pins it at "
+                "texture(2) for set 1 binding 2");
+  expectRefused([&](pkg::Package& p) { find(p, "facet_material_albedo").name = "facet_material_gloss"; },
+                "Metal binding 'facet_material_gloss' (texture(8)) names no block or sampler of this material's shaders");
+  expectRefused([&](pkg::Package& p) { std::erase_if(p.mslBindings, [](auto& b) { return b.name == "ObjectUniforms"; }); },
+                "the Metal slots do not place 'ObjectUniforms', which the material's shaders declare");
+  // No slots at all is a package from before format 1.2: nothing to check.
+  pkg::Package none = good;
+  none.mslBindings.clear();
+  EXPECT_EQ(pkg::semanticError(none), "");
+}

@@ -339,9 +339,11 @@ bool samplesDfgLut(const AssemblyInput& in) {
   return in.material.shading == "lit" && in.tier.ambient == permutations::AmbientModel::SplitSum;
 }
 
+// Every light of a lut tier reads the table (specular_lut_lobe.glsl): the sun and each point or
+// spot light.
 bool samplesSpecularLut(const AssemblyInput& in) {
   return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" &&
-         in.key.directionalLight;
+         (in.key.directionalLight || in.key.pointLights > 0);
 }
 
 bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::string* error) {

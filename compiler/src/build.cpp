@@ -474,7 +474,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   if (!options.cacheDir.empty() && !prepareVariantCache(options.cacheDir, &failure->message)) return std::nullopt;
   // Jobs finish in any order; each writes only its own variant's fields, read here in key order.
   VariantCache cache(options.cacheDir);
-  result.package.mslBindings = materialMslBindings(result.package.material);
+  result.package.mslBindings = package::mslBindingsFor(result.package.material);
   MaterialContext ctx{material, surface, layout, preshade, options, cache, result.package.mslBindings};
   VariantJobs jobs(ctx, keys);
   jobs.run(options.jobs);

@@ -1,28 +1,8 @@
 #include "facet/compiler/msl_backend.h"
 
-#include "facet/shader_abi.h"
 #include "spirv_cross_session.h"
 
 namespace facet::compiler {
-
-std::vector<package::MslBinding> materialMslBindings(const package::MaterialInfo& material) {
-  std::vector<package::MslBinding> out;
-  auto block = [&](const abi::BlockDesc& b) {
-    out.push_back({std::string(b.name), package::MslResource::Buffer, b.set, b.binding, abi::mslBufferIndex(b)});
-  };
-  auto sampler = [&](std::string name, uint32_t set, uint32_t binding) {
-    out.push_back({std::move(name), package::MslResource::Texture, set, binding, abi::mslTextureIndex(binding)});
-  };
-  block(abi::kFrameBlock);
-  block(abi::kObjectBlock);
-  if (material.paramBlockSize != 0) block(abi::kMaterialBlock);
-  if (material.shading == "lit")
-    for (const abi::SamplerDesc& s : abi::kFrameSamplers) sampler(std::string(s.name), s.set, s.binding);
-  for (const package::Param& p : material.params)
-    if (package::isTexture(p.type) && p.offset != package::kNoTextureSlot)
-      sampler(abi::kMaterialSamplerPrefix + p.name, abi::kTextureSet, abi::materialTextureBinding(p.offset));
-  return out;
-}
 
 bool spirvToMsl(const std::vector<uint32_t>& words, std::span<const package::MslBinding> slots, std::string* msl,
                 std::string* error) {

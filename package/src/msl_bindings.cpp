@@ -1,7 +1,56 @@
-// MSLB section (format 1.2): where a Metal app binds each block and sampler of the package's MSL.
+// MSLB section (format 1.2): where a Metal app binds each block and sampler of the package's MSL,
+// and the slots shader_abi.h pins for a material (what the compiler records and the reader expects).
 #include <set>
 
+#include "facet/shader_abi.h"
 #include "sections.h"
+
+namespace facet::package {
+
+std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material) {
+  std::vector<MslBinding> out;
+  auto block = [&](const abi::BlockDesc& b) {
+    out.push_back({std::string(b.name), MslResource::Buffer, b.set, b.binding, abi::mslBufferIndex(b)});
+  };
+  auto sampler = [&](std::string name, uint32_t set, uint32_t binding) {
+    out.push_back({std::move(name), MslResource::Texture, set, binding, abi::mslTextureIndex(binding)});
+  };
+  block(abi::kFrameBlock);
+  block(abi::kObjectBlock);
+  if (material.paramBlockSize != 0) block(abi::kMaterialBlock);
+  if (material.shading == "lit")
+    for (const abi::SamplerDesc& s : abi::kFrameSamplers) sampler(std::string(s.name), s.set, s.binding);
+  for (const Param& p : material.params)
+    if (isTexture(p.type) && p.offset != kNoTextureSlot)
+      sampler(abi::kMaterialSamplerPrefix + p.name, abi::kTextureSet, abi::materialTextureBinding(p.offset));
+  return out;
+}
+
+std::string mslBindingsError(const MaterialInfo& material, const std::vector<MslBinding>& bindings) {
+  if (bindings.empty()) return "";  // none recorded: a package before format 1.2
+  const std::vector<MslBinding> pinned = mslBindingsFor(material);
+  for (const MslBinding& b : bindings) {
+    const MslBinding* expected = nullptr;
+    for (const MslBinding& p : pinned)
+      if (p.name == b.name) expected = &p;
+    const std::string slot = std::string(toString(b.kind)) + "(" + std::to_string(b.index) + ")";
+    if (!expected)
+      return "Metal binding '" + b.name + "' (" + slot + ") names no block or sampler of this material's shaders";
+    if (b != *expected)
+      return "Metal binding '" + b.name + "' is " + slot + " for Vulkan set " + std::to_string(b.set) + " binding " +
+             std::to_string(b.binding) + "; the shader interface pins it at " + toString(expected->kind) + "(" +
+             std::to_string(expected->index) + ") for set " + std::to_string(expected->set) + " binding " +
+             std::to_string(expected->binding);
+  }
+  for (const MslBinding& p : pinned) {
+    bool listed = false;
+    for (const MslBinding& b : bindings) listed = listed || b.name == p.name;
+    if (!listed) return "the Metal slots do not place '" + p.name + "', which the material's shaders declare";
+  }
+  return "";
+}
+
+}  // namespace facet::package
 
 namespace facet::package::detail {
 

@@ -98,6 +98,40 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
   return true;
 }
 
+// Sections (sorted by offset, not overlapping) follow the table of contents as the writer lays
+// them out: each at the first 8-byte boundary after the one before, the gap zero, the last one
+// ending the file. The checksum only proves that some writer made the bytes; without this a
+// hostile one could carry data in padding or after the last section that every check skips.
+bool checkSectionTiling(std::span<const uint8_t> file, uint64_t tocEnd, const std::vector<TocEntry>& byOffset,
+                        std::string& error) {
+  uint64_t end = tocEnd;
+  std::string before = "the table of contents";
+  for (const TocEntry& e : byOffset) {
+    const uint64_t expected = (end + kSectionAlignment - 1) / kSectionAlignment * kSectionAlignment;
+    if (e.offset != expected) {
+      error = "section '" + tagName(e.tag) + "' starts at byte " + std::to_string(e.offset) + ", but " + before +
+              " ends at byte " + std::to_string(end) + ": the next section starts at byte " + std::to_string(expected) +
+              " (the next " + std::to_string(kSectionAlignment) + "-byte boundary)";
+      return false;
+    }
+    for (uint64_t at = end; at < e.offset; ++at) {
+      if (file[at] != 0) {
+        error = "padding byte " + std::to_string(at) + " before section '" + tagName(e.tag) + "' is " +
+                std::to_string(file[at]) + ", not zero";
+        return false;
+      }
+    }
+    end = e.offset + e.size;
+    before = "section '" + tagName(e.tag) + "'";
+  }
+  if (end != file.size()) {
+    error = "package has " + std::to_string(file.size() - end) + " bytes after its last section, which ends at byte " +
+            std::to_string(end);
+    return false;
+  }
+  return true;
+}
+
 // Reads the table of contents and returns the four required sections in the order
 // META, VARS, BTAB, BDAT, and the optional TEXS. Unknown tags are skipped so later writers can
 // add sections.
@@ -159,6 +193,7 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
       return false;
     }
   }
+  if (!checkSectionTiling(file, tocEnd, byOffset, error)) return false;
 
   const uint32_t tags[4] = {kTagMeta, kTagVariants, kTagBlobTable, kTagBlobData};
   for (int t = 0; t < 4; ++t) {
@@ -390,7 +425,7 @@ const VariantInfo* PackageReader::findVariant(std::string_view key) const {
 }
 
 std::string PackageReader::semanticError() const {
-  return package::semanticError(state_->material, state_->variants, state_->preshader);
+  return package::semanticError(state_->material, state_->variants, state_->preshader, state_->mslBindings);
 }
 
 std::optional<std::span<const uint8_t>> PackageReader::blob(uint32_t index, std::string* error) const {

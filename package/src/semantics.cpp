@@ -43,6 +43,51 @@ std::string paramError(const Param& p) {
   return "";
 }
 
+// The parameters' places in the block, as the compiler's std140 layout gives them: a scalar
+// aligned to 4 bytes, a vec2 to 8, a vec3 or vec4 to 16, no two sharing a byte, the block their
+// end rounded up to 16 (where the preshader's derived members begin), and no two textures
+// sharing a sampler slot. Overlapping parameters would have paramBlock() write one over the
+// other, and a block declared larger than its parameters would put the derived members where the
+// shaders do not read them.
+std::string layoutError(const MaterialInfo& m) {
+  std::vector<const Param*> inBlock;
+  std::set<uint32_t> samplerSlots;
+  uint64_t end = 0;
+  for (const Param& p : m.params) {
+    const std::string what = "parameter '" + shown(p.name) + "'";
+    if (isTexture(p.type)) {
+      if (p.offset != kNoTextureSlot && !samplerSlots.insert(p.offset).second)
+        return what + ": sampler slot " + std::to_string(p.offset) + " is another texture parameter's";
+      continue;
+    }
+    if (p.size == 0) continue;  // never read: no bytes
+    const uint64_t components = p.defaultValue.size(), slotEnd = uint64_t(p.offset) + p.size;
+    const uint32_t align = components == 1 ? 4 : components == 2 ? 8 : 16;
+    if (p.size != 4 * components || slotEnd > m.paramBlockSize)
+      return what + ": bytes " + std::to_string(p.offset) + ".." + std::to_string(slotEnd) + " do not hold its " +
+             std::to_string(components) + " components inside the " + std::to_string(m.paramBlockSize) + "-byte block";
+    if (p.offset % align != 0)
+      return what + ": byte offset " + std::to_string(p.offset) + " is not a multiple of its std140 alignment, " +
+             std::to_string(align);
+    inBlock.push_back(&p);
+    end = std::max(end, slotEnd);
+  }
+  std::sort(inBlock.begin(), inBlock.end(), [](const Param* a, const Param* b) { return a->offset < b->offset; });
+  for (size_t i = 1; i < inBlock.size(); ++i) {
+    const Param& a = *inBlock[i - 1];
+    const Param& b = *inBlock[i];
+    if (b.offset < a.offset + a.size)
+      return "parameters '" + shown(a.name) + "' (bytes " + std::to_string(a.offset) + ".." +
+             std::to_string(a.offset + a.size) + ") and '" + shown(b.name) + "' (bytes " + std::to_string(b.offset) +
+             ".." + std::to_string(b.offset + b.size) + ") overlap";
+  }
+  const uint64_t rounded = (end + 15) / 16 * 16;
+  if (m.paramBlockSize != rounded)
+    return "the parameter block is " + std::to_string(m.paramBlockSize) + " bytes, but its parameters end at byte " +
+           std::to_string(end) + ", which std140 rounds to " + std::to_string(rounded);
+  return "";
+}
+
 }  // namespace
 
 std::string shaderCodeError(Target target, std::span<const uint8_t> code) {
@@ -64,7 +109,8 @@ std::string shaderCodeError(Target target, std::span<const uint8_t> code) {
   return "";
 }
 
-std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants, const Preshader& preshader) {
+std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants, const Preshader& preshader,
+                          const std::vector<MslBinding>& mslBindings) {
   if (!isValidName(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
   if (m.shading != "lit" && m.shading != "unlit") return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
   static const std::set<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
@@ -80,6 +126,7 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
     if (std::string e = paramError(p); !e.empty()) return e;
     if (!names.insert(p.name).second) return "parameter '" + shown(p.name) + "' is declared twice";
   }
+  if (std::string e = layoutError(m); !e.empty()) return e;
   std::set<std::string> keys;
   for (const VariantInfo& v : variants) {
     auto key = permutations::VariantKey::parse(v.key);
@@ -90,6 +137,7 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
       if (!slots.insert({s.stage, s.target}).second)
         return "variant '" + v.key + "' has two " + toString(s.stage) + " " + toString(s.target) + " shaders";
   }
+  if (std::string e = mslBindingsError(m, mslBindings); !e.empty()) return e;
   return preshaderSemanticError(m, preshader);
 }
 
@@ -100,7 +148,7 @@ std::string semanticError(const Package& pkg) {
     info.key = v.key;
     for (const Shader& s : v.shaders) info.shaders.push_back({s.stage, s.target, 0});
   }
-  if (std::string e = semanticError(pkg.material, variants, pkg.preshader); !e.empty()) return e;
+  if (std::string e = semanticError(pkg.material, variants, pkg.preshader, pkg.mslBindings); !e.empty()) return e;
   for (const Variant& v : pkg.variants)
     for (const Shader& s : v.shaders)
       if (std::string e = shaderCodeError(s.target, s.code); !e.empty())

@@ -68,7 +68,12 @@ namespace facet::runtime::gl {
   X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers) \
   X(PFNGLGENTEXTURESPROC, glGenTextures) \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays) \
+  X(PFNGLGETACTIVEATTRIBPROC, glGetActiveAttrib) \
+  X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform) \
+  X(PFNGLGETACTIVEUNIFORMBLOCKNAMEPROC, glGetActiveUniformBlockName) \
   X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, glGetActiveUniformBlockiv) \
+  X(PFNGLGETACTIVEUNIFORMSIVPROC, glGetActiveUniformsiv) \
+  X(PFNGLGETATTRIBLOCATIONPROC, glGetAttribLocation) \
   X(PFNGLGETERRORPROC, glGetError) \
   X(PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC, glGetFramebufferAttachmentParameteriv) \
   X(PFNGLGETINTEGERVPROC, glGetIntegerv) \
@@ -183,7 +188,12 @@ bool checkGlError(const char* phase, std::string* error);
 #define glGenRenderbuffers        (::facet::runtime::gl::detail::current->glGenRenderbuffers)
 #define glGenTextures             (::facet::runtime::gl::detail::current->glGenTextures)
 #define glGenVertexArrays         (::facet::runtime::gl::detail::current->glGenVertexArrays)
+#define glGetActiveAttrib         (::facet::runtime::gl::detail::current->glGetActiveAttrib)
+#define glGetActiveUniform        (::facet::runtime::gl::detail::current->glGetActiveUniform)
+#define glGetActiveUniformBlockName (::facet::runtime::gl::detail::current->glGetActiveUniformBlockName)
 #define glGetActiveUniformBlockiv (::facet::runtime::gl::detail::current->glGetActiveUniformBlockiv)
+#define glGetActiveUniformsiv     (::facet::runtime::gl::detail::current->glGetActiveUniformsiv)
+#define glGetAttribLocation       (::facet::runtime::gl::detail::current->glGetAttribLocation)
 #define glGetError                (::facet::runtime::gl::detail::current->glGetError)
 #define glGetFramebufferAttachmentParameteriv (::facet::runtime::gl::detail::current->glGetFramebufferAttachmentParameteriv)
 #define glGetIntegerv             (::facet::runtime::gl::detail::current->glGetIntegerv)

@@ -19,6 +19,7 @@
 #include "gl_mesh.h"
 #include "gl_post_inputs.h"
 #include "gl_program.h"
+#include "gl_reflection.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
 #include "gl_uniform_blocks.h"
@@ -242,8 +243,18 @@ bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
   while (glGetError() != GL_NO_ERROR) {
   }
   resetAppState();
-  return checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), error) &&
-         prepareTargets(frame.width, frame.height, error) && textures_.prepare(frame, error);
+  if (!checkFrameTextures(frame, static_cast<uint32_t>(maxTextureSize_), error) ||
+      !prepareTargets(frame.width, frame.height, error) || !textures_.prepare(frame, error))
+    return false;
+  // Every draw's program linked (and a package's checked against its interface) before anything
+  // is drawn: a refused program fails the frame, not half of it.
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    if (frame.draws[i].program && !programFor(*frame.draws[i].program, error)) {
+      *error = "draw " + std::to_string(i) + ": " + *error;
+      return false;
+    }
+  }
+  return true;
 }
 
 bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string* error) {
@@ -459,7 +470,20 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
     return &found->second;
   }
   std::optional<gl::LinkedProgram> linked = gl::buildProgram(program.vertexGlslEs, program.fragmentGlslEs, error);
-  if (!linked) return nullptr;
+  const ProgramInterface* declared = program.interface ? &*program.interface : nullptr;
+  if (!linked) {
+    if (declared && error) *error = "material '" + declared->material + "' variant " + declared->variant + ": " + *error;
+    return nullptr;
+  }
+  // A package's GLSL ES is code the app did not build: its reflection against what the draws bind
+  // (the same check the core ran on its SPIR-V; the linker has matched the stages already).
+  if (declared) {
+    const std::string why = interfaceError(*declared, gl::reflectProgram(linked->program.id(), context_->resourceQueries()), false);
+    if (!why.empty()) {
+      if (error) *error = why;
+      return nullptr;
+    }
+  }
   CachedProgram& cached = programs_[&program];
   cached.vertexSource = program.vertexGlslEs;
   cached.fragmentSource = program.fragmentGlslEs;

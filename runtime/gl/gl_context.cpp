@@ -79,6 +79,12 @@ bool Context::queryCapabilities(std::string* error) {
   }
   queryResult64_ = reinterpret_cast<QueryResult64>(
       host_->getProcAddress(es_ ? "glGetQueryObjectui64vEXT" : "glGetQueryObjectui64v"));
+  // Asked for by version: EGL's getProcAddress may return an entry point the context cannot run.
+  if (atLeast43 || (es_ && (major_ > 3 || (major_ == 3 && minor_ >= 1)))) {
+    resourceQueries_.index =
+        reinterpret_cast<PFNGLGETPROGRAMRESOURCEINDEXPROC>(host_->getProcAddress("glGetProgramResourceIndex"));
+    resourceQueries_.values = reinterpret_cast<PFNGLGETPROGRAMRESOURCEIVPROC>(host_->getProcAddress("glGetProgramResourceiv"));
+  }
   return checkGlError("context creation", error);
 }
 

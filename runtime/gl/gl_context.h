@@ -39,6 +39,14 @@ class Context {
   // the required table because GLES 3.0 lacks it. Null if absent.
   using QueryResult64 = PFNGLGETQUERYOBJECTUI64VPROC;
   QueryResult64 queryResult64() const { return queryResult64_; }
+  // Program interface queries (GLES 3.1, GL 4.3): which stages reference a uniform, for the
+  // messages of the interface check (gl_reflection.h). Outside the required table because GLES
+  // 3.0 lacks them; both null unless the context's version has them.
+  struct ResourceQueries {
+    PFNGLGETPROGRAMRESOURCEINDEXPROC index = nullptr;
+    PFNGLGETPROGRAMRESOURCEIVPROC values = nullptr;
+  };
+  const ResourceQueries& resourceQueries() const { return resourceQueries_; }
   // True when glDebugMessageCallback is installed and debug output is enabled.
   bool debugOutputEnabled() const { return debugOutput_; }
   // Debug messages of type error or severity high, formatted one per entry.
@@ -59,6 +67,7 @@ class Context {
   bool canInvalidate_ = false;
   bool debugOutput_ = false;
   QueryResult64 queryResult64_ = nullptr;
+  ResourceQueries resourceQueries_;
   std::vector<std::string> extensions_;
   std::vector<std::string> debugErrors_;
 };

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "facet/permutations/tiers.h"
+#include "facet/permutations/variant_key.h"
+#include "spirv_reflection.h"
 #include "untrusted_spirv.h"
 
 namespace facet::runtime {
@@ -23,13 +26,22 @@ int componentCount(package::ParamType t) {
 double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 double linearToSrgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
 
-// Package textures this runtime knows where to bind (shader_abi.h). Frame-texture slots: the
-// shaders declare them at these bindings whatever material they belong to.
+// Package textures this runtime knows where to bind (shader_abi.h), and the shape the shaders
+// address them with. Frame-texture slots: the shaders declare them at these bindings whatever
+// material they belong to.
 struct GeneratedSlot {
   const char* name;
   uint32_t binding;
+  uint32_t width, height;
 };
-constexpr GeneratedSlot kGeneratedSlots[] = {{abi::kSpecularLutName, abi::kSpecularLutBinding}};
+constexpr GeneratedSlot kGeneratedSlots[] = {
+    {abi::kSpecularLutName, abi::kSpecularLutBinding, abi::kSpecularLutWidth, abi::kSpecularLutHeight}};
+
+const GeneratedSlot* generatedSlot(const std::string& name) {
+  for (const GeneratedSlot& s : kGeneratedSlots)
+    if (name == s.name) return &s;
+  return nullptr;
+}
 
 // A lookup table, not an image: bilinear within its one level, clamped so that the table's
 // ends (R·L = 1, roughness 1) are not blended with the opposite edge.
@@ -42,6 +54,14 @@ Texture runtimeTexture(const package::TextureInfo& t, std::span<const uint8_t> t
   out.linearFilter = true;
   out.repeat = false;
   return out;
+}
+
+// A parameter's value type in the block: float and vectors, int, bool (4 bytes a component).
+ValueType valueTypeOf(const package::Param& p) {
+  const ScalarKind kind = p.type == package::ParamType::Int    ? ScalarKind::Int
+                          : p.type == package::ParamType::Bool ? ScalarKind::Bool
+                                                               : ScalarKind::Float;
+  return {kind, uint32_t(p.size / 4)};
 }
 
 std::string number(double v) {
@@ -79,6 +99,16 @@ std::optional<LoadedMaterial> LoadedMaterial::checked(std::optional<package::Pac
              "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
     return std::nullopt;
   }
+  // A table of another shape, even one of the same byte count, would be sampled at the wrong
+  // texels: the shaders address it with the ABI's size.
+  for (const package::TextureInfo& t : reader->textures()) {
+    const GeneratedSlot* slot = generatedSlot(t.name);
+    if (slot && (t.width != slot->width || t.height != slot->height)) {
+      *error = name + ": texture '" + t.name + "' is " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+               "; the shaders address it as " + std::to_string(slot->width) + "x" + std::to_string(slot->height);
+      return std::nullopt;
+    }
+  }
   return LoadedMaterial(std::move(*reader));
 }
 
@@ -91,17 +121,69 @@ std::optional<LoadedMaterial> LoadedMaterial::loadFromMemory(std::span<const uin
   return checked(package::PackageReader::open(bytes, error), name, error);
 }
 
+std::optional<ProgramInterface> LoadedMaterial::interfaceOf(size_t variant, std::string* error) const {
+  const package::MaterialInfo& m = reader_.material();
+  const std::string& key = reader_.variants()[variant].key;
+  ProgramInterface out;
+  out.material = m.name;
+  out.variant = key;
+  out.parameterBytes = m.paramBlockSize;
+  const package::PreshaderProgram* program = reader_.preshaderProgram(key);
+  out.materialBlockBytes = program ? reader_.preshader().blockSize : m.paramBlockSize;
+  out.preshadedWords.assign(out.materialBlockBytes / 4, false);
+  if (program)
+    for (const package::PreshaderOp& op : program->ops)
+      if (op.code == package::PreshaderOpcode::Store)
+        for (uint32_t i = 0; i < op.count && op.offset / 4 + i < out.preshadedWords.size(); ++i)
+          out.preshadedWords[op.offset / 4 + i] = true;
+  for (const package::Param& p : m.params) {
+    if (package::isTexture(p.type)) {
+      if (p.offset != package::kNoTextureSlot)
+        out.samplers.push_back({abi::kMaterialSamplerPrefix + p.name, abi::materialTextureBinding(p.offset), false});
+    } else if (p.size != 0) {
+      out.parameters.push_back({p.name, p.offset, valueTypeOf(p)});
+    }
+  }
+  // The frame's textures a lit variant's draws bind (runtime/scene_frame.h): the environment, and
+  // the DFG table in the tiers whose ambient model reads it (elsewhere its binding holds a dummy).
+  // The key parses: semanticError checked it.
+  const std::optional<permutations::VariantKey> parsed = permutations::VariantKey::parse(key);
+  const bool splitSum = parsed && permutations::preset(parsed->tier).ambient == permutations::AmbientModel::SplitSum;
+  const auto frame = [&](const abi::SamplerDesc& d) { out.samplers.push_back({std::string(d.name), d.binding, d.cube}); };
+  if (m.shading == "lit") frame(abi::kEnvironmentSampler);
+  if (m.shading == "lit" && splitSum) frame(abi::kDfgLutSampler);
+  for (const package::TextureInfo& t : reader_.textures()) {
+    if (std::find(t.variants.begin(), t.variants.end(), variant) == t.variants.end()) continue;
+    const GeneratedSlot* slot = generatedSlot(t.name);
+    if (!slot) {
+      *error = unknownTextureError(key, t.name);
+      return std::nullopt;
+    }
+    out.samplers.push_back({t.name, slot->binding, false});
+    out.packageTextures.push_back(t.name);
+  }
+  return out;
+}
+
+std::string LoadedMaterial::unknownTextureError(const std::string& variantKey, const std::string& texture) const {
+  return "material '" + info().name + "' variant '" + variantKey + "' samples texture '" + texture +
+         "', which this runtime does not know; update the runtime or recompile the material";
+}
+
 std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std::string* error) const {
-  const package::VariantInfo* variant = reader_.findVariant(key);
-  if (!variant) {
+  const std::vector<package::VariantInfo>& variants = reader_.variants();
+  size_t index = 0;
+  while (index < variants.size() && variants[index].key != key) ++index;
+  if (index == variants.size()) {
     std::string keys;
-    for (const package::VariantInfo& v : reader_.variants()) keys += (keys.empty() ? "" : ", ") + v.key;
+    for (const package::VariantInfo& v : variants) keys += (keys.empty() ? "" : ", ") + v.key;
     *error = "material '" + info().name + "' was not built with variant '" + key + "' (built: " + keys +
              "); recompile it for this scene";
     return std::nullopt;
   }
   ShaderProgram p;
-  for (const package::ShaderInfo& s : variant->shaders) {
+  std::vector<ReflectedStage> reflected;
+  for (const package::ShaderInfo& s : variants[index].shaders) {
     // Metal is not a backend of this runtime: its code stays compressed.
     if (s.target == package::Target::Msl) continue;
     const std::string what = "material '" + info().name + "' variant " + key + ": the " + package::toString(s.stage) +
@@ -128,9 +210,27 @@ std::optional<ShaderProgram> LoadedMaterial::program(const std::string& key, std
         *error = what + " is " + why;
         return std::nullopt;
       }
+      // Valid on its own is not enough: its stage and interface must be the package's.
+      if (!reflectSpirv(words, s.stage, &reflected.emplace_back(), &why)) {
+        *error = what + " (SPIR-V) " + why;
+        return std::nullopt;
+      }
     }
   }
+  std::optional<ProgramInterface> declared = interfaceOf(index, error);
+  if (!declared) return std::nullopt;
+  if (std::string why = interfaceError(*declared, reflected, true); !why.empty()) {
+    *error = why;
+    return std::nullopt;
+  }
+  p.interface = std::move(*declared);
   return p;
+}
+
+bool LoadedMaterial::checkEveryVariant(std::string* error) const {
+  for (const package::VariantInfo& v : reader_.variants())
+    if (!program(v.key, error)) return false;
+  return true;
 }
 
 bool LoadedMaterial::preshade(const std::string& variantKey, std::vector<uint8_t>* block, std::string* error) const {
@@ -157,12 +257,9 @@ std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(con
   for (size_t i = 0; i < reader_.textures().size(); ++i) {
     const package::TextureInfo& t = reader_.textures()[i];
     if (std::find(t.variants.begin(), t.variants.end(), index) == t.variants.end()) continue;
-    const GeneratedSlot* slot = nullptr;
-    for (const GeneratedSlot& s : kGeneratedSlots)
-      if (t.name == s.name) slot = &s;
+    const GeneratedSlot* slot = generatedSlot(t.name);
     if (!slot) {
-      *error = "material '" + info().name + "' variant '" + variantKey + "' samples texture '" + t.name +
-               "', which this runtime does not know; update the runtime or recompile the material";
+      *error = unknownTextureError(variantKey, t.name);
       return std::nullopt;
     }
     if (!textures_[i]) {

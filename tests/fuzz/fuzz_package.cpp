@@ -1,6 +1,8 @@
 // libFuzzer target for the package readers: package::read and the lazy PackageReader apps use
-// (open, then each blob on request), the code apps run on files they did not build, and the
-// runtime's preshader interpreter on every program a package carries. Built only in the clang configuration of scripts/fuzz.sh (-DFACET_FUZZ=ON), with
+// (open, then each blob on request), the code apps run on files they did not build, the
+// runtime's preshader interpreter on every program a package carries, and the runtime's loader
+// (LoadedMaterial) on every variant: SPIR-V validation, its stage, its reflected interface against
+// the tables. Built only in the clang configuration of scripts/fuzz.sh (-DFACET_FUZZ=ON), with
 // ASan + UBSan; a crash, a sanitizer report, a leak, a hang or a broken invariant below is a
 // finding.
 //
@@ -23,6 +25,7 @@
 #include "checksum.h"
 #include "facet/package.h"
 #include "facet/package_reader.h"
+#include "facet/runtime/material.h"
 #include "facet/runtime/preshader.h"
 #include "format.h"
 
@@ -123,6 +126,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string error;
     if (!facet::runtime::runPreshader(program.ops, r.package->material.paramBlockSize, block, &error))
       broken("the interpreter refused a preshader program semanticError accepted");
+  }
+  // The loader an app runs on the same bytes, every variant's program: an answer, never a crash.
+  {
+    std::string error;
+    auto material = facet::runtime::LoadedMaterial::loadFromMemory(std::span<const uint8_t>(data, size), "fuzz", &error);
+    if (!material && error.empty()) broken("LoadedMaterial refused a package without an error message");
+    if (material && !material->checkEveryVariant(&error) && error.empty())
+      broken("LoadedMaterial refused a variant without an error message");
   }
   // What was read writes and reads back to a package that writes the same bytes (compared as
   // bytes: a NaN default value is legal and never equals itself).

@@ -61,6 +61,10 @@ inline constexpr uint32_t kDfgLutBinding = 0;           // "facet_dfgLut": split
 inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT (from the package)
 inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
+// The specular table's size, R8: chunks/specular_lut.glsl addresses its texel centres with these
+// numbers, so the runtime refuses a package table of any other shape (even one of the same bytes).
+inline constexpr uint32_t kSpecularLutWidth = 128;
+inline constexpr uint32_t kSpecularLutHeight = 64;
 inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RG16F 64×64, one level (docs/ibl.md layout)
 inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F cube map, kEnvironmentLevels levels
 // Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so

@@ -54,7 +54,7 @@ struct BlobInfo {
 // and the variant table ("" when sound), and one shader's code for its slot's kind (SPIR-V words,
 // GLSL ES 3.00 text): "" or what it is not, e.g. "is not SPIR-V (...)".
 std::string semanticError(const MaterialInfo& material, const std::vector<VariantInfo>& variants,
-                          const Preshader& preshader = {});
+                          const Preshader& preshader = {}, const std::vector<MslBinding>& mslBindings = {});
 std::string shaderCodeError(Target target, std::span<const uint8_t> code);
 
 class PackageReader {

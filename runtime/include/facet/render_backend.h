@@ -1,15 +1,18 @@
 // The API-neutral description of one frame, and the interface each graphics backend implements.
 //
 // A backend receives everything already resolved: meshes as interleaved vertices, uniform block
-// bytes in std140, and shader code for its API. It knows nothing about packages or scenes.
+// bytes in std140, and shader code for its API (with, for a package's, the interface its draws bind:
+// program_interface.h). It reads no package and no scene.
 // The app's-own-device entry points of the Vulkan backend are in vulkan_backend.h.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "facet/program_interface.h"
 #include "facet/render_path.h"
 #include "facet/shader_abi.h"
 
@@ -61,6 +64,10 @@ struct ShaderProgram {
   std::vector<uint32_t> fragmentSpirv;
   std::string vertexGlslEs;             // GLES flavour, "#version 300 es" source text
   std::string fragmentGlslEs;
+  // What the variant's draws bind, when the code came from a package (LoadedMaterial::program,
+  // which checked the SPIR-V against it): the GL backend checks the linked program's reflection
+  // against it before the program's first draw. Absent for an app's own shaders.
+  std::optional<ProgramInterface> interface;
 };
 
 // How a draw's colour combines with the HDR target. Transparent and Additive shaders output

@@ -16,9 +16,4 @@ namespace facet::compiler {
 bool spirvToMsl(const std::vector<uint32_t>& words, std::span<const package::MslBinding> slots, std::string* msl,
                 std::string* error);
 
-// The Metal slots of a material's shaders, from shader_abi.h: the frame and object blocks, the
-// material's block when it has one, the frame samplers of lit materials, and one sampler per
-// texture parameter with a sampler slot. The same for every variant; recorded in the package.
-std::vector<package::MslBinding> materialMslBindings(const package::MaterialInfo& material);
-
 }  // namespace facet::compiler

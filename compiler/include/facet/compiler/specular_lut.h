@@ -21,6 +21,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "facet/shader_abi.h"
+
 namespace facet::compiler {
 
 enum class SpecularLutAxis {
@@ -52,9 +54,10 @@ struct SpecularLutOptions {
   bool normalized = true;
 };
 
-// The default table size and scale; chunks/specular_lut.glsl hard-codes the same numbers.
-inline constexpr uint32_t kSpecularLutWidth = 128;
-inline constexpr uint32_t kSpecularLutHeight = 64;
+// The default table size (the shader ABI's, which the runtime checks packages against) and
+// scale; chunks/specular_lut.glsl hard-codes the same numbers.
+inline constexpr uint32_t kSpecularLutWidth = abi::kSpecularLutWidth;
+inline constexpr uint32_t kSpecularLutHeight = abi::kSpecularLutHeight;
 inline constexpr double kSpecularLutScale = 16.0 / 3.14159265358979323846;
 
 struct SpecularLut {

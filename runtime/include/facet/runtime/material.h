@@ -37,8 +37,14 @@ class LoadedMaterial {
 
   // The shaders of one variant, for every API, decompressed on the first request for the
   // variant. A key the package was not built with is an error that lists the keys it has (the
-  // compiler builds only what a scene asks for).
+  // compiler builds only what a scene asks for). Each shader's code is checked before any
+  // backend sees it: its kind, SPIR-V validated (SPIRV-Tools) with one entry point of its slot's
+  // stage, and each SPIR-V stage's interface against the package's (program_interface.h); the
+  // program carries that interface, which the GL backend checks its linked program against.
   std::optional<ShaderProgram> program(const std::string& variantKey, std::string* error) const;
+  // program()'s checks on every variant: what `matc info` runs to say whether an app would draw
+  // the package. False with the first variant's error.
+  bool checkEveryVariant(std::string* error) const;
 
   // The std140 "MaterialParams" bytes: declared defaults, overridden by `values` (by name;
   // colour values are sRGB-encoded, as authored, and converted to linear here). Unknown names,
@@ -82,6 +88,9 @@ class LoadedMaterial {
   explicit LoadedMaterial(package::PackageReader reader);
   static std::optional<LoadedMaterial> checked(std::optional<package::PackageReader> reader, const std::string& name,
                                                std::string* error);
+  // What the draws of variants()[variant] bind, from the package's tables.
+  std::optional<ProgramInterface> interfaceOf(size_t variant, std::string* error) const;
+  std::string unknownTextureError(const std::string& variantKey, const std::string& texture) const;
 
   package::PackageReader reader_;
   // Parallel to reader_.textures(), made on first use; unique_ptr so that the Texture pointers
