@@ -212,6 +212,30 @@ TEST(GltfHostile, SceneMeshesShareOneVertexBudget) {
                                         "left of the 4194304 a scene's glTF meshes may hold (counting every node's copy)");
 }
 
+// Each placed primitive is read and transformed on its own: 1023 nodes placing a mesh of 4096
+// one-vertex primitives (200 KB) took 45 s of CPU. Bounded like the vertices, before building.
+TEST(GltfHostile, PlacedPrimitivesAreBounded) {
+  const std::string dir = test::scratchDir("gltf-primitives");
+  std::vector<uint8_t> bin;
+  append<float>(&bin, {0, 0, 0});
+  append<uint16_t>(&bin, {0, 0, 0, 0});
+  writeBytes(dir + "/tiny.bin", bin);
+  std::string primitives, nodes, roots;
+  for (int i = 0; i < 4096; ++i) primitives += std::string(i ? ", " : "") + R"({"attributes": {"POSITION": 0}, "indices": 1})";
+  for (int i = 0; i < 17; ++i) {
+    nodes += std::string(i ? ", " : "") + R"({"mesh": 0})";
+    roots += (i ? ", " : "") + std::to_string(i);
+  }
+  writeText(dir + "/many.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "tiny.bin", "byteLength": 20}],
+    "bufferViews": [{"buffer": 0, "byteLength": 12}, {"buffer": 0, "byteOffset": 12, "byteLength": 6}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 1, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+    "meshes": [{"primitives": [)" + primitives + R"(]}], "nodes": [)" + nodes + R"(], "scenes": [{"nodes": [)" + roots + "]}]}");
+  // 16 nodes place 65536 primitives; the 17th is one too many.
+  EXPECT_EQ(loadError(dir + "/many.gltf"),
+            dir + "/many.gltf: error: /nodes/16/mesh: the file places more than 65536 primitives (counting every node's copy)");
+}
+
 // tinygltf 2.7 accepted a BIN chunk whose length counts its own 8-byte header and read 8 bytes
 // past the file's memory. The container is checked whole before tinygltf sees it.
 TEST(GltfHostile, GlbContainerIsCheckedBeforeTinygltf) {
@@ -420,6 +444,14 @@ TEST(GltfHostile, SpecRulesTinygltfIgnoresAreEnforced) {
   // .glb's BIN chunk into it, which ended the process.
   writeBytes(dir + "/empty.glb", glb(quadJson(R"({"byteLength": 0})"), quadBin()));
   EXPECT_EQ(loadError(dir + "/empty.glb"), dir + "/empty.glb: error: /buffers/0/byteLength: expected a whole number of bytes, at least 1");
+  // tinygltf's own errors are kept short and on one line (it quotes names in full).
+  const std::string name(1 << 20, 'n');
+  const std::string error2 = withJson("named.gltf", replaced(R"("meshes": [)", R"("images": [{"name": ")" + name +
+                                                                                 "\", \"uri\": \"a.png\", \"bufferView\": 0}],\n  \"meshes\": ["));
+  EXPECT_EQ(error2.rfind(dir + "/named.gltf: error: Only one of `bufferView` or `uri` should be defined", 0), 0u) << error2.substr(0, 300);
+  EXPECT_NE(error2.find("...(" ), std::string::npos);
+  EXPECT_LT(error2.size(), 600u);
+  EXPECT_EQ(error2.find('\n'), std::string::npos);
   // Through a scene.
   EXPECT_NE(sceneError(dir, "draco.gltf").find("object 0: " + dir + "/draco.gltf: error: /extensionsRequired/0:"),
             std::string::npos);
@@ -448,7 +480,7 @@ TEST(GltfHostile, FuzzSeedsLoadAndFindingsEndInErrors) {
     }
   }
   EXPECT_GE(seeds, 7u);
-  (void)findings;
+  EXPECT_GE(findings, 2u);
 }
 
 }  // namespace facet::runtime

@@ -50,8 +50,9 @@ glm::dvec3 normalised(const glm::dvec3& v, const glm::dvec3& fallback) {
 
 // Normals and tangents must have a direction: the spec asks for unit length, and they are
 // normalised here rather than refused when they miss it (exporters round, quantised sources are
-// off by up to 1 %, and other viewers normalise in the shader), but a vector shorter than this
-// has no direction left to keep (a zero normal shaded objects black).
+// never exactly unit, and other viewers normalise in the shader, so refusing would reject files
+// they show), but a vector shorter than this has no direction left to keep (a zero normal
+// shaded objects black).
 constexpr double kMinDirectionLength = 1e-6;
 
 // One attribute as this primitive reads it: its reader, and where it is named for messages.
@@ -228,6 +229,7 @@ struct Instance {
 struct Totals {
   uint64_t vertices = 0;
   uint64_t indices = 0;
+  uint64_t primitives = 0;
 };
 
 // A small file can place one large mesh many times (or a sparse accessor without data can
@@ -257,6 +259,8 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
       sum.indices += std::min(p.indices >= 0 ? declared(p.indices) : count, left.indices + 1);
       if (sum.vertices > left.vertices) return over(instance, left.vertices, GltfBudget::kMaxVertices, "vertices");
       if (sum.indices > left.indices) return over(instance, left.indices, GltfBudget::kMaxIndices, "indices");
+      if (++sum.primitives > left.primitives)
+        return over(instance, left.primitives, GltfBudget::kMaxPrimitives, "primitives");
     }
   }
   *totals = sum;
@@ -414,6 +418,7 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
   }
   budget.vertices -= totals.vertices;
   budget.indices -= totals.indices;
+  budget.primitives -= totals.primitives;
   budget.fileBytes -= bytesRead;
   return mesh;
 }

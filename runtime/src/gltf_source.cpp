@@ -125,6 +125,21 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
+// tinygltf's error, on one line and short: it quotes names from the file in full (an image's name
+// of megabytes) and ends each of its messages with a newline.
+std::string tinygltfMessage(const std::string& err) {
+  constexpr size_t kShown = 400;
+  std::string out;
+  for (size_t i = 0; i < err.size() && out.size() < kShown; ++i) {
+    const unsigned char c = static_cast<unsigned char>(err[i]);
+    if (c == '\n') out += i + 1 < err.size() ? "; " : "";
+    else if (c < 0x20) out += ' ';
+    else out += char(c);
+  }
+  if (out.size() >= kShown) out += "...(" + std::to_string(err.size()) + " bytes)";
+  return out.empty() ? "not a valid glTF 2.0 file" : out;
+}
+
 // The JSON's depth, then what tinygltf would build from it, then its syntax (strictly: a key
 // given twice is an error, as in every JSON file Facet reads); then the checks tinygltf lacks.
 // For a .glb, lines and columns are those of the JSON chunk, and messages say so.
@@ -210,8 +225,7 @@ std::optional<tinygltf::Model> readSource(const std::string& path, const SourceO
       binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), folder.string())
              : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), unsigned(json.size()), folder.string());
   if (!loaded) {
-    while (!err.empty() && err.back() == '\n') err.pop_back();
-    *error = path + ": error: " + (err.empty() ? std::string("not a valid glTF 2.0 file") : err);
+    *error = path + ": error: " + tinygltfMessage(err);
     return std::nullopt;
   }
   *bytesRead = reader.used();
