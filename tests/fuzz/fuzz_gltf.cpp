@@ -18,14 +18,19 @@
 
 namespace {
 
-// A folder of this process's own, for the files of each input.
+// A folder of this process's own for the files of each input, removed when the process exits
+// (the name is never destroyed: the exit handler runs after static destructors would).
 const std::string& workFolder() {
-  static const std::string dir = [] {
-    std::string d = (std::filesystem::temp_directory_path() / ("fuzz_gltf." + std::to_string(getpid()))).string();
-    std::filesystem::create_directories(d);
+  static const std::string* dir = [] {
+    auto* d = new std::string((std::filesystem::temp_directory_path() / ("fuzz_gltf." + std::to_string(getpid()))).string());
+    std::filesystem::create_directories(*d);
+    std::atexit([] {
+      std::error_code ec;
+      std::filesystem::remove_all(workFolder(), ec);
+    });
     return d;
   }();
-  return dir;
+  return *dir;
 }
 
 }  // namespace
