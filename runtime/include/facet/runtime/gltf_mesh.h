@@ -72,7 +72,7 @@ struct GltfReadOptions {
 //
 // Errors name the file and the place: `m.gltf:12:7: error: ...` for the JSON's syntax and depth
 // (for a .glb, the line and column in its JSON chunk), else `m.gltf: error: <JSON pointer>: ...`,
-// e.g. `m.gltf: error: /meshes/0/primitives/0/attributes/NORMAL: accessor 1 element 7 is not finite`.
+// e.g. `m.gltf: error: /meshes/0/primitives/0/attributes/NORMAL: /accessors/1 element 7 is not finite`.
 std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options = {});
 
 }  // namespace facet::runtime
