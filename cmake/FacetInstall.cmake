@@ -9,7 +9,7 @@
 #                                   permutations (variant keys, linked by package)
 #   vulkan    runtime_vulkan        the Vulkan backend (createVulkanBackend, vulkan_backend.h)
 #   gl        runtime_gl            the GL backend (createGlBackend)
-#   gltf      runtime_gltf          glTF meshes (tinygltf)
+#   gltf      runtime_gltf          glTF meshes (tinygltf; links scene: its JSON reader, path rule)
 #   scene     scene                 the scene reader (scene.h's parse/load functions; JSON)
 # The libraries are static, so their private dependencies (zstd, xxHash, SPIRV-Tools, SPIRV-Cross, ...) are
 # exported as link-only dependencies, and FacetConfig.cmake finds them again in the app's build.

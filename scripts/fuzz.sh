@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes the material front end (lexer, parser, checker, GLSL emission), the package reader, the
-# scene loader, the image decoders and the colour-grading .cube reader, each for a bounded time:
+# scene loader, the image decoders, the colour-grading .cube reader and the glTF loader, each for a bounded time:
 #   scripts/fuzz.sh [seconds]        default 60, per target
 # Builds the clang configuration build/fuzz (-DFACET_FUZZ=ON: libFuzzer + ASan + UBSan) and runs
 # tests/fuzz/fuzz_material from the seed corpus tests/fuzz/corpus/ and every past finding in
@@ -8,16 +8,17 @@
 # tests/fuzz/fuzz_package from real packages (tests/fuzz/package_corpus/) and its past findings
 # (tests/fuzz/package_regressions/), most mutants resealed with a recomputed checksum; then
 # tests/fuzz/fuzz_scene from examples/scenes/ and tests/fuzz/fuzz_image from examples/scenes/textures/ and
-# tests/fuzz/image_corpus/ (Radiance files), and tests/fuzz/fuzz_cube from examples/scenes/looks/ and
-# tests/fuzz/cube_corpus/. New inputs
+# tests/fuzz/image_corpus/ (Radiance files), tests/fuzz/fuzz_cube from examples/scenes/looks/ and
+# tests/fuzz/cube_corpus/, then tests/fuzz/fuzz_gltf from tests/fuzz/gltf_corpus/ and its
+# past findings (tests/fuzz/gltf_regressions/), with tests/fuzz/gltf.dict. New inputs
 # go to a temporary working corpus, so the committed corpus never churns.
 #
 # Fails (non-zero) on any crash, sanitizer report, leak, hang (> 5 s per input) or out-of-memory
 # (> 2 GiB); the input that did it is left in build/fuzz/crashes/. To turn it into a regression:
 #   build/fuzz/tests/fuzz/fuzz_material -minimize_crash=1 -runs=100000 \
 #     -exact_artifact_path=tests/fuzz/regressions/<name>.mat build/fuzz/crashes/<file>
-# (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg) then fix the bug;
-# tests/test_fuzz_regressions.cpp and tests/test_package.cpp replay those folders in every test run.
+# (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg; fuzz_gltf: tests/fuzz/gltf_regressions/) then fix the bug;
+# tests/test_fuzz_regressions.cpp, tests/test_package.cpp and tests/test_gltf_hostile.cpp replay those folders in every test run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,7 +33,7 @@ bash scripts/setup-deps.sh
 dir=build/fuzz
 CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DFACET_FUZZ=ON -DFACET_BUILD_TESTS=OFF -DFACET_WERROR=OFF >/dev/null
-cmake --build "$dir" --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_cube --parallel "$(nproc)"
+cmake --build "$dir" --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_cube fuzz_gltf --parallel "$(nproc)"
 mkdir -p "$dir/crashes"
 
 # fuzz <target> <dict or ""> <committed corpus folders...>
@@ -71,3 +72,4 @@ fuzz fuzz_package "" tests/fuzz/package_corpus tests/fuzz/package_regressions
 fuzz fuzz_scene "" examples/scenes
 fuzz fuzz_image "" examples/scenes/textures tests/fuzz/image_corpus tests/fuzz/image_regressions
 fuzz fuzz_cube "" examples/scenes/looks tests/fuzz/cube_corpus
+fuzz fuzz_gltf tests/fuzz/gltf.dict tests/fuzz/gltf_corpus tests/fuzz/gltf_regressions

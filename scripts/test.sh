@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs the whole test suite, as CI does:
 #   build/test  warnings as errors (-Werror), RelWithDebInfo
-#   build/fuzz  materials, packages, scenes and images fuzzed for FACET_FUZZ_SECONDS each (default 60): clang,
+#   build/fuzz  materials, packages, scenes, images and glTF meshes fuzzed for FACET_FUZZ_SECONDS each (default 60): clang,
 #               libFuzzer + ASan + UBSan (scripts/fuzz.sh); a crash, leak or hang fails the run
 #   build/asan  AddressSanitizer + UndefinedBehaviorSanitizer, Debug (last, so the run closes
 #               with ctest's summary line)

@@ -3,10 +3,15 @@
 // runs also fail on any leak at exit (LeakSanitizer turns the exit code non-zero).
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <utility>
+#include <vector>
 
 #include "facet/package.h"
+#include "gltf_test_files.h"
 #include "test_support.h"
 
 namespace {
@@ -97,4 +102,36 @@ TEST(FacetView, ImagesOutsideTheSceneFolderNeedAnAssetRoot) {
   r = run(command + " --asset-root " + dir);
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::is_regular_file(dir + "/out/s.vulkan.png"));
+}
+
+// Hostile glTF meshes end in exit 1 with the file and the place, never a crash (a 20,000-deep
+// `extras` overflowed tinygltf's stack; a .glb whose BIN chunk length counted its own header was
+// read past its end; a NaN normal rendered a black object with exit 0).
+TEST(FacetView, HostileGltfMeshesAreLocatedErrors) {
+  std::string packages = facet::test::writePackagesFromTexts(
+      "view-gltf-packages", {"material flat { shading unlit\n surface { baseColor = vec3(0.5) } }"});
+  std::string dir = facet::test::scratchDir("view-gltf");
+  facet::test::writeText(dir + "/deep.gltf", "{\"asset\": {\"version\": \"2.0\"},\n\"extras\": " + std::string(20000, '[') +
+                                                 std::string(20000, ']') + "}");
+  const std::string json = facet::test::quadJson(R"({"byteLength": 236})");
+  std::vector<uint8_t> overlong = facet::test::glb(json, facet::test::quadBin());
+  overlong[12 + 8 + (json.size() + 3) / 4 * 4] += 8;  // the BIN chunk's length counts its 8-byte header
+  facet::test::writeBytes(dir + "/overlong.glb", overlong);
+  std::vector<uint8_t> bin = facet::test::quadBin();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(bin.data() + 48 + 4, &nan, 4);  // normal 0's y
+  facet::test::writeBytes(dir + "/nan.bin", bin);
+  facet::test::writeText(dir + "/nan.gltf", facet::test::quadJson(R"({"uri": "nan.bin", "byteLength": 236})"));
+  const std::pair<const char*, std::string> cases[] = {
+      {"deep.gltf", dir + "/deep.gltf:2:74: error: arrays and objects nest more than 64 deep"},
+      {"overlong.glb", dir + "/overlong.glb: error: GLB chunk 1 at byte "},
+      {"nan.gltf", dir + "/nan.gltf: error: /meshes/0/primitives/0/attributes/NORMAL: /accessors/1 element 0 is not finite"}};
+  for (const auto& [mesh, expected] : cases) {
+    std::ofstream(dir + "/s.json") << R"({"width": 16, "height": 16, "objects": [{"mesh": ")" << mesh
+                                   << R"(", "material": "flat"}]})";
+    auto r = run(kFacetView + " " + dir + "/s.json --packages " + packages + " --out " + dir + "/out --backend vulkan");
+    EXPECT_EQ(r.exitCode, 1) << mesh << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind("facet-view: error: " + dir + "/s.json: object 0: " + expected, 0), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/out")) << mesh;
+  }
 }

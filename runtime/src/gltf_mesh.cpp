@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -16,60 +14,12 @@
 
 #include "facet/runtime/mesh.h"
 #include "gltf_accessor.h"
+#include "gltf_source.h"
 
 namespace facet::runtime {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The folder buffers may be read from, for the file-system callbacks.
-struct ReadPolicy {
-  fs::path folder;
-};
-
-bool isUnder(const fs::path& folder, const fs::path& file) {
-  const fs::path relative = file.lexically_normal().lexically_relative(folder.lexically_normal());
-  return !relative.empty() && *relative.begin() != ".." && !relative.is_absolute();
-}
-
-// Existence only: readWholeFile decides what may be read, with the reason in its error.
-bool fileExists(const std::string& path, void*) {
-  std::error_code ec;
-  return fs::exists(path, ec);
-}
-
-std::string expandPath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-  const auto* policy = static_cast<const ReadPolicy*>(user);
-  std::error_code ec;
-  if (!isUnder(policy->folder, path)) {
-    if (err) *err += "'" + path + "' is outside the glTF file's folder\n";
-    return false;
-  }
-  // A FIFO or device would block or never end.
-  if (!fs::is_regular_file(path, ec)) {
-    if (err) *err += "'" + path + "' is not a regular file\n";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (err) *err += "cannot open '" + path + "'\n";
-    return false;
-  }
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return true;
-}
-
-bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-  if (err) *err += "writing is not allowed\n";
-  return false;
-}
-
-// Images are not part of a mesh: not decoded at all.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-  return true;
-}
 
 using gltf::AccessorReader;
 
@@ -98,49 +48,83 @@ glm::dvec3 normalised(const glm::dvec3& v, const glm::dvec3& fallback) {
   return length > 0 && std::isfinite(length) ? v / length : fallback;
 }
 
+// Normals and tangents must have a direction: the spec asks for unit length, and they are
+// normalised here rather than refused when they miss it (exporters round, quantised sources are
+// never exactly unit, and other viewers normalise in the shader, so refusing would reject files
+// they show), but a vector shorter than this has no direction left to keep (a zero normal
+// shaded objects black).
+constexpr double kMinDirectionLength = 1e-6;
+
+// One attribute as this primitive reads it: its reader, and where it is named for messages.
+struct Attribute {
+  std::optional<AccessorReader> reader;
+  std::string field;  // ".../attributes/NORMAL"
+  int accessor = -1;
+
+  explicit operator bool() const { return reader.has_value(); }
+
+  // The components of element v; false with *error naming the accessor and the element when one
+  // is not finite (NaN and infinities turned objects flat grey or black).
+  bool read(size_t v, double* out, std::string* error) const {
+    for (int c = 0; c < reader->components(); ++c) {
+      out[c] = reader->get(v, c);
+      if (!std::isfinite(out[c])) {
+        *error = where(v) + " is not finite";
+        return false;
+      }
+    }
+    return true;
+  }
+
+  std::string where(size_t v) const {
+    return field + ": /accessors/" + std::to_string(accessor) + " element " + std::to_string(v);
+  }
+};
+
 bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const std::string& pointer,
                      const Placement& placement, Mesh* mesh, std::string* error) {
   if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) {
     *error = pointer + "/mode: only triangle lists (4) are supported, not " + std::to_string(primitive.mode);
     return false;
   }
-  const auto attribute = [&](const char* name) {
+  const auto accessorOf = [&](const char* name) {
     auto it = primitive.attributes.find(name);
     return it == primitive.attributes.end() ? -1 : it->second;
   };
   const std::string attributes = pointer + "/attributes/";
-  if (attribute("POSITION") < 0) {
+  if (accessorOf("POSITION") < 0) {
     *error = attributes + "POSITION: missing (every primitive needs positions)";
     return false;
   }
-  auto positions = AccessorReader::open(model, attribute("POSITION"), {TINYGLTF_TYPE_VEC3}, {kFloat}, false,
-                                        attributes + "POSITION", error);
-  if (!positions) return false;
-  const size_t count = positions->count();
-  std::optional<AccessorReader> normals, tangents, uv0, uv1, colours;
-  struct Optional {
+  Attribute positions, normals, tangents, uv0, uv1, colours;
+  struct Use {
     const char* name;
-    std::optional<AccessorReader>* reader;
+    Attribute* attribute;
     std::initializer_list<int> types;
     std::initializer_list<int> components;
   };
-  const Optional optional[] = {
+  const Use uses[] = {
+      {"POSITION", &positions, {TINYGLTF_TYPE_VEC3}, {kFloat}},
       {"NORMAL", &normals, {TINYGLTF_TYPE_VEC3}, {kFloat}},
       {"TANGENT", &tangents, {TINYGLTF_TYPE_VEC4}, {kFloat}},
       {"TEXCOORD_0", &uv0, {TINYGLTF_TYPE_VEC2}, {kFloat, kUByte, kUShort}},
       {"TEXCOORD_1", &uv1, {TINYGLTF_TYPE_VEC2}, {kFloat, kUByte, kUShort}},
       {"COLOR_0", &colours, {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}},
   };
-  for (const Optional& o : optional) {
-    if (attribute(o.name) < 0) continue;
-    *o.reader = AccessorReader::open(model, attribute(o.name), o.types, o.components, false, attributes + o.name, error);
-    if (!*o.reader) return false;
-    if ((*o.reader)->count() != count) {
-      *error = attributes + o.name + ": " + std::to_string((*o.reader)->count()) + " elements, but POSITION has " +
-               std::to_string(count);
+  for (const Use& use : uses) {
+    Attribute& a = *use.attribute;
+    a.accessor = accessorOf(use.name);
+    if (a.accessor < 0) continue;
+    a.field = attributes + use.name;
+    a.reader = AccessorReader::open(model, a.accessor, use.types, use.components, false, a.field, error);
+    if (!a.reader) return false;
+    if (a.reader->count() != positions.reader->count()) {
+      *error = a.field + ": " + std::to_string(a.reader->count()) + " elements, but POSITION has " +
+               std::to_string(positions.reader->count());
       return false;
     }
   }
+  const size_t count = positions.reader->count();
   const size_t firstVertex = mesh->vertices.size() / abi::kVertexFloats;
   if (firstVertex + count > UINT32_MAX) {
     *error = attributes + "POSITION: more vertices than 32-bit indices address";
@@ -148,32 +132,54 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
   }
   for (size_t v = 0; v < count; ++v) {
     Vertex vertex;
-    const glm::dvec4 position = placement.world * glm::dvec4(positions->get(v, 0), positions->get(v, 1), positions->get(v, 2), 1);
-    for (int c = 0; c < 3; ++c) vertex.position[c] = float(position[c]);
-    if (normals) {
-      const glm::dvec3 n(normals->get(v, 0), normals->get(v, 1), normals->get(v, 2));
-      const glm::dvec3 placed = normalised(placement.normalMatrix * n, n);
-      for (int c = 0; c < 3; ++c) vertex.normal[c] = float(placed[c]);
-    }
-    if (tangents) {
-      // Tangents move with the surface (world's 3×3); w gives the bitangent's side, which a
-      // mirroring transform flips (glTF 2.0 §3.7.2.1: bitangent = cross(normal, tangent.xyz) · w).
-      const glm::dvec3 t(tangents->get(v, 0), tangents->get(v, 1), tangents->get(v, 2));
-      const glm::dvec3 placed = normalised(glm::dmat3(placement.world) * t, t);
-      for (int c = 0; c < 3; ++c) vertex.tangent[c] = float(placed[c]);
-      vertex.tangent[3] = float(tangents->get(v, 3) * (placement.mirrors ? -1.0 : 1.0));
-    }
-    if (uv0)
-      for (int c = 0; c < 2; ++c) vertex.uv0[c] = float(uv0->get(v, c));
-    if (uv1)
-      for (int c = 0; c < 2; ++c) vertex.uv1[c] = float(uv1->get(v, c));
-    if (colours)
-      for (int c = 0; c < colours->components(); ++c) vertex.color[c] = float(colours->get(v, c));
+    double p[3], n[3], t[4], c[4];
+    if (!positions.read(v, p, error)) return false;
+    const glm::dvec4 position = placement.world * glm::dvec4(p[0], p[1], p[2], 1);
+    for (int i = 0; i < 3; ++i) vertex.position[i] = float(position[i]);
     for (float f : vertex.position) {
       if (!std::isfinite(f)) {
-        *error = attributes + "POSITION: element " + std::to_string(v) + " is not finite";
+        *error = positions.where(v) + " is not finite once placed by its node";
         return false;
       }
+    }
+    if (normals) {
+      if (!normals.read(v, n, error)) return false;
+      const glm::dvec3 stored(n[0], n[1], n[2]);
+      if (glm::length(stored) < kMinDirectionLength) {
+        *error = normals.where(v) + " is shorter than 1e-6 (a normal needs a direction)";
+        return false;
+      }
+      const glm::dvec3 placed = normalised(placement.normalMatrix * stored, glm::normalize(stored));
+      for (int i = 0; i < 3; ++i) vertex.normal[i] = float(placed[i]);
+    }
+    if (tangents) {
+      if (!tangents.read(v, t, error)) return false;
+      const glm::dvec3 stored(t[0], t[1], t[2]);
+      if (glm::length(stored) < kMinDirectionLength) {
+        *error = tangents.where(v) + ": xyz is shorter than 1e-6 (a tangent needs a direction)";
+        return false;
+      }
+      if (t[3] != 1 && t[3] != -1) {
+        *error = tangents.where(v) + ": w is " + std::to_string(t[3]) + ", not +1 or -1 (the bitangent's sign)";
+        return false;
+      }
+      // Tangents move with the surface (world's 3×3); w gives the bitangent's side, which a
+      // mirroring transform flips (glTF 2.0 §3.7.2.1: bitangent = cross(normal, tangent.xyz) · w).
+      const glm::dvec3 placed = normalised(glm::dmat3(placement.world) * stored, glm::normalize(stored));
+      for (int i = 0; i < 3; ++i) vertex.tangent[i] = float(placed[i]);
+      vertex.tangent[3] = float(t[3] * (placement.mirrors ? -1.0 : 1.0));
+    }
+    if (uv0) {
+      if (!uv0.read(v, c, error)) return false;
+      for (int i = 0; i < 2; ++i) vertex.uv0[i] = float(c[i]);
+    }
+    if (uv1) {
+      if (!uv1.read(v, c, error)) return false;
+      for (int i = 0; i < 2; ++i) vertex.uv1[i] = float(c[i]);
+    }
+    if (colours) {
+      if (!colours.read(v, c, error)) return false;
+      for (int i = 0; i < colours.reader->components(); ++i) vertex.color[i] = float(c[i]);
     }
     appendVertex(*mesh, vertex);
   }
@@ -219,32 +225,45 @@ struct Instance {
   std::string from;  // the JSON pointer naming the mesh, for errors
 };
 
-// A small file can place one large mesh many times (or a sparse accessor without data can
-// declare a million vertices): the totals are checked from the accessors' declared counts before
-// anything is read. 4 M vertices are 302 MB of runtime vertices (18 floats each).
-constexpr uint64_t kMaxVertices = uint64_t(1) << 22;
-constexpr uint64_t kMaxIndices = uint64_t(1) << 24;
+// What the instances' primitives will build, from the accessors' declared counts.
+struct Totals {
+  uint64_t vertices = 0;
+  uint64_t indices = 0;
+  uint64_t primitives = 0;
+};
 
-bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& instances, std::string* error) {
-  uint64_t vertices = 0, indices = 0;
+// A small file can place one large mesh many times (or a sparse accessor without data can
+// declare a million vertices): the totals are checked against what is left of the budget
+// before any vertex is read or built.
+bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& instances, const GltfBudget& left,
+                 Totals* totals, std::string* error) {
   const auto declared = [&](int accessor) {
     return accessor >= 0 && size_t(accessor) < model.accessors.size() ? uint64_t(model.accessors[size_t(accessor)].count) : 0;
   };
+  const auto over = [&](const Instance& instance, uint64_t leftCount, uint64_t limit, const char* what) {
+    *error = instance.from + ": the file places more than " +
+             (leftCount == limit ? std::to_string(limit) + " " + what
+                                 : "the " + std::to_string(leftCount) + " " + what + " left of the " +
+                                       std::to_string(limit) + " a scene's glTF meshes may hold") +
+             " (counting every node's copy)";
+    return false;
+  };
+  Totals sum;
   for (const Instance& instance : instances) {
     if (instance.mesh < 0 || size_t(instance.mesh) >= model.meshes.size()) continue;  // appendMesh names it
     for (const tinygltf::Primitive& p : model.meshes[size_t(instance.mesh)].primitives) {
       const auto position = p.attributes.find("POSITION");
       const uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
-      vertices += std::min(count, kMaxVertices + 1);
-      indices += std::min(p.indices >= 0 ? declared(p.indices) : count, kMaxIndices + 1);
-      if (vertices > kMaxVertices || indices > kMaxIndices) {
-        *error = instance.from + ": the file places more than " +
-                 std::to_string(vertices > kMaxVertices ? kMaxVertices : kMaxIndices) +
-                 (vertices > kMaxVertices ? " vertices" : " indices") + " (counting every node's copy)";
-        return false;
-      }
+      // Each term is clamped, so the sums cannot wrap however many primitives there are.
+      sum.vertices += std::min(count, left.vertices + 1);
+      sum.indices += std::min(p.indices >= 0 ? declared(p.indices) : count, left.indices + 1);
+      if (sum.vertices > left.vertices) return over(instance, left.vertices, GltfBudget::kMaxVertices, "vertices");
+      if (sum.indices > left.indices) return over(instance, left.indices, GltfBudget::kMaxIndices, "indices");
+      if (++sum.primitives > left.primitives)
+        return over(instance, left.primitives, GltfBudget::kMaxPrimitives, "primitives");
     }
   }
+  *totals = sum;
   return true;
 }
 
@@ -344,7 +363,7 @@ bool collectScene(const tinygltf::Model& model, int sceneIndex, std::vector<Inst
 
 }  // namespace
 
-std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error) {
+std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
@@ -360,39 +379,35 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error) {
     *error = path + ": error: expected a .gltf or .glb file";
     return std::nullopt;
   }
-  ReadPolicy policy{fs::absolute(fs::path(path), ec).parent_path()};
-  tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks({fileExists, expandPath, readWholeFile, writeWholeFile, &policy});
-  loader.SetImageLoader(skipImage, nullptr);
-  tinygltf::Model model;
-  std::string err, warn;
-  const std::string absolute = (policy.folder / fs::path(path).filename()).string();
-  const bool loaded = extension == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, absolute)
-                                          : loader.LoadASCIIFromFile(&model, &err, &warn, absolute);
-  if (!loaded) {
-    while (!err.empty() && err.back() == '\n') err.pop_back();
-    *error = path + ": error: " + (err.empty() ? std::string("not a valid glTF 2.0 file") : err);
-    return std::nullopt;
-  }
-  Mesh mesh;
-  std::string why;
+  GltfBudget own;
+  GltfBudget& budget = options.budget ? *options.budget : own;
+  uint64_t bytesRead = 0;
+  std::optional<tinygltf::Model> model = gltf::readSource(path, {options.assetRoot, budget.fileBytes}, &bytesRead, error);
+  if (!model) return std::nullopt;
   // The scene the file asks for (glTF: `scene`, else the first); a file without scenes is a
   // library of meshes, each drawn as stored.
-  if (model.defaultScene >= 0 && size_t(model.defaultScene) >= model.scenes.size()) {
-    *error = path + ": error: /scene: scene " + std::to_string(model.defaultScene) + " does not exist";
+  if (model->defaultScene >= 0 && size_t(model->defaultScene) >= model->scenes.size()) {
+    *error = path + ": error: /scene: scene " + std::to_string(model->defaultScene) + " does not exist";
     return std::nullopt;
   }
-  const int scene = model.defaultScene >= 0 ? model.defaultScene : model.scenes.empty() ? -1 : 0;
+  const int scene = model->defaultScene >= 0 ? model->defaultScene : model->scenes.empty() ? -1 : 0;
   std::vector<Instance> instances;
+  std::string why;
   bool ok = true;
   if (scene >= 0) {
-    ok = collectScene(model, scene, &instances, &why);
+    ok = collectScene(*model, scene, &instances, &why);
   } else {
-    for (size_t m = 0; m < model.meshes.size(); ++m) instances.push_back({int(m), Placement{}, "/meshes"});
+    for (size_t m = 0; m < model->meshes.size(); ++m) instances.push_back({int(m), Placement{}, "/meshes"});
   }
-  ok = ok && checkTotals(model, instances, &why);
+  Totals totals;
+  ok = ok && checkTotals(*model, instances, budget, &totals, &why);
+  Mesh mesh;
+  if (ok) {
+    mesh.vertices.reserve(size_t(totals.vertices) * abi::kVertexFloats);
+    mesh.indices.reserve(size_t(totals.indices));
+  }
   for (size_t i = 0; ok && i < instances.size(); ++i)
-    ok = appendMesh(model, instances[i].mesh, instances[i].from, instances[i].placement, &mesh, &why);
+    ok = appendMesh(*model, instances[i].mesh, instances[i].from, instances[i].placement, &mesh, &why);
   if (!ok) {
     *error = path + ": error: " + why;
     return std::nullopt;
@@ -401,6 +416,10 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error) {
     *error = path + ": error: " + (scene >= 0 ? "/scenes/" + std::to_string(scene) + ": no triangles" : "/meshes: no triangles");
     return std::nullopt;
   }
+  budget.vertices -= totals.vertices;
+  budget.indices -= totals.indices;
+  budget.primitives -= totals.primitives;
+  budget.fileBytes -= bytesRead;
   return mesh;
 }
 

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "facet/package.h"
+#include "facet/runtime/asset_path.h"
 #include "facet/runtime/json_document.h"
 
 namespace facet::runtime {
@@ -56,8 +57,8 @@ uint32_t wholeNumber(const json& j, const std::string& pointer, double lo, doubl
 }
 
 // Resolves the file paths a scene names (images, glTF meshes): relative to the scene's folder, and only under the
-// asset root (SceneReadOptions). Containment is decided on the real paths (symbolic links
-// followed as far as they exist), so a link inside the folder cannot point out of it.
+// asset root (SceneReadOptions). Containment is decided on the real paths (runtime/asset_path.h:
+// symbolic links followed, dangling ones too), so a link inside the folder cannot point out of it.
 class AssetPaths {
  public:
   AssetPaths(std::filesystem::path sceneDir, const std::string& assetRoot)
@@ -68,23 +69,15 @@ class AssetPaths {
     const std::string given = j.get<std::string>();
     if (given.empty() || given.find('\0') != std::string::npos) fail(pointer, "expected a file path");
     const std::filesystem::path path = (sceneDir_ / given).lexically_normal();
-    const std::filesystem::path real = realPath(path);
-    auto [rootEnd, realEnd] = std::mismatch(root_.begin(), root_.end(), real.begin(), real.end());
-    if (rootEnd != root_.end() || root_.empty() || real.empty())
+    if (!isInside(root_, realPath(path)))
       fail(pointer, "'" + shownValue(given) + "' is outside the folder this scene may read files from (" +
                         root_.string() + "); an app that trusts the scene can allow another (facet-view --asset-root)");
     return path.string();
   }
 
- private:
-  // Absolute, with every existing symbolic link resolved; "" when the file system refuses.
-  static std::filesystem::path realPath(const std::filesystem::path& path) {
-    std::error_code ec;
-    std::filesystem::path real = std::filesystem::weakly_canonical(std::filesystem::absolute(path.empty() ? "." : path, ec), ec);
-    if (ec) return {};
-    return real.has_filename() ? real : real.parent_path();  // "/a/b/" -> "/a/b": no empty last element
-  }
+  const std::filesystem::path& root() const { return root_; }
 
+ private:
   std::filesystem::path sceneDir_;
   std::filesystem::path root_;
 };
@@ -326,7 +319,10 @@ std::optional<Scene> parseScene(const std::string& path, const std::string& text
   std::optional<json> j = parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
-    return scene(*j, AssetPaths(std::filesystem::path(path).parent_path(), options.assetRoot));
+    const AssetPaths assets(std::filesystem::path(path).parent_path(), options.assetRoot);
+    Scene s = scene(*j, assets);
+    s.assetRoot = assets.root().string();
+    return s;
   } catch (const SceneError& e) {
     *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
   } catch (const json::exception& e) {

@@ -108,6 +108,9 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 
   std::map<std::string, size_t> loaded;  // material name -> index in materials_
+  // The scene's glTF files share one budget (vertices, indices, bytes read), each checked before
+  // its mesh is built: a scene may name 4096 files.
+  GltfBudget meshBudget;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     auto [it, fresh] = loaded.emplace(o.material, out->materials_.size());
@@ -134,7 +137,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       // One Mesh per file, shared by every object that names it (and so one GPU buffer).
       auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
       if (added) {
-        auto gltf = loadGltfMesh(o.mesh, error);
+        auto gltf = loadGltfMesh(o.mesh, error, {scene.assetRoot, &meshBudget});
         if (!gltf) {
           out->meshes_.erase(mesh);
           *error = "object " + std::to_string(i) + ": " + *error;

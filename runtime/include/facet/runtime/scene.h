@@ -90,6 +90,9 @@ struct Scene {
   ColorGradingSettings grading;
   std::string gradingLut;
   VignetteSettings vignette;
+  // The real folder the scene's files were confined to (SceneReadOptions), which also confines
+  // what its glTF files read; "" for a Scene built in code.
+  std::string assetRoot;
 };
 
 // Which files a scene may name (texture and environment images, glTF meshes). By default only
