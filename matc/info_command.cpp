@@ -31,7 +31,7 @@ std::vector<uint32_t> words(const package::Shader& s) {
   return w;
 }
 
-// The static cost table (DESIGN.md, "Measuring"), from each variant's optimised SPIR-V, with the
+// The static cost table (docs/specular-tiers.md, "Static cost"), from each variant's optimised SPIR-V, with the
 // mobile cost model's estimated cycles (docs/eval.md, "The mobile cost model").
 void printCosts(const package::Package& pkg) {
   std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds and runs the whole test suite, as CI does:
+#   docs        scripts/check-docs.sh: no date, commit hash, tracker reference or path outside the
+#               repository in docs/ or source comments (history files excepted)
 #   build/test  warnings as errors (-Werror), RelWithDebInfo
-#   build/fuzz  materials, packages, scenes, images and glTF meshes fuzzed for FACET_FUZZ_SECONDS each (default 60): clang,
+#   build/fuzz  materials, packages, scenes, images, .cube LUTs and glTF meshes fuzzed for FACET_FUZZ_SECONDS each (default 60): clang,
 #               libFuzzer + ASan + UBSan (scripts/fuzz.sh); a crash, leak or hang fails the run
 #   build/asan  AddressSanitizer + UndefinedBehaviorSanitizer, Debug (last, so the run closes
 #               with ctest's summary line)
@@ -11,6 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/setup-deps.sh
+bash scripts/check-docs.sh
 
 jobs=$(nproc)
 run_suite() {

@@ -1,4 +1,4 @@
-// Hostile scenes and images (issue: hostile inputs): each class of bad input ends in a clear
+// Hostile scenes and images (docs/security.md): each class of bad input ends in a clear
 // error naming the file and the JSON pointer, never an abort, a hang or a silently wrong frame.
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -55,7 +55,7 @@ private:
 };
 
 // An entry holds one variant's six shaders: the example materials' largest is 47,885 bytes
-// (red_plastic with four point lights), so 64 MiB (1,400 times that) refuses no real variant,
+// (painted_tiles with four point lights), so 64 MiB (1,400 times that) refuses no real variant,
 // while a planted file of any size is a miss before it is read. A variant larger than this is
 // compiled every time, never stored.
 inline constexpr uint64_t kMaxEntryBytes = uint64_t(64) << 20;

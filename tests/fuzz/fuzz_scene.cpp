@@ -1,6 +1,6 @@
 // libFuzzer target for the scene loader (runtime::parseScene): any bytes, read as a scene file,
-// end in a Scene or an error message, never a crash, a hang or an exception (issue: hostile
-// inputs). Seeded with examples/scenes/. Built by scripts/fuzz.sh with ASan + UBSan.
+// end in a Scene or an error message, never a crash, a hang or an exception (docs/security.md).
+// Seeded with examples/scenes/. Built by scripts/fuzz.sh with ASan + UBSan.
 //
 // Reproduce a finding:  build/fuzz/tests/fuzz/fuzz_scene path/to/input
 #include <cstddef>

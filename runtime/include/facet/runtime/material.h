@@ -19,7 +19,8 @@ namespace facet::runtime {
 // How colour values reach the shaders. Linear: colour parameters converted from sRGB, sRGB
 // textures decoded by the sampler. Srgb: both left encoded, for the variants that light with
 // the gamma hack (chunks/shading_standard.glsl), which square their result back: no preset does
-// since issue 10, `matc eval` selects it for its colour-space swap (eval/prepared_frame.h).
+// (in low it loses error and costs more than lighting in linear: docs/eval.md, "Why the tiers
+// are built as they are"); `matc eval` selects it for its colour-space swap (eval/prepared_frame.h).
 enum class ColorEncoding { Linear, Srgb };
 
 class LoadedMaterial {
