@@ -22,16 +22,18 @@
 #
 # Review the result with `git diff tests/golden`.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-source scripts/example-packages.sh
 
+# Paths given on the command line are relative to where it runs.
 shaders_into=
 if [ "${1:-}" = --shaders-into ]; then
   [ $# -ge 2 ] || { echo "update-goldens: --shaders-into needs a folder" >&2; exit 2; }
-  shaders_into=$2
+  shaders_into=$(realpath -m "$2")
   shift 2
 fi
 matc=${1:-}
+[ -z "$matc" ] || matc=$(realpath -m "$matc")
+cd "$(dirname "$0")/.."
+source scripts/example-packages.sh
 if [ -z "$matc" ]; then
   cmake -S . -B build/test -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_WERROR=ON >/dev/null
   cmake --build build/test --target matc
