@@ -19,10 +19,11 @@ cmake --build build/release --parallel "$jobs" --target matc facet-view facet-ap
 packages=build/examples/packages
 images=build/examples/images
 mkdir -p "$packages" "$images"
-# Every tier, with and without the sun, with 0 or 2 point/spot lights (lamps.json has two).
-for material in examples/materials/*.mat; do
+# The variants scripts/example-packages.sh names (tests/golden/shaders pins their shaders).
+source scripts/example-packages.sh
+for material in "${example_materials[@]}"; do
   name=$(basename "$material" .mat)
-  build/release/matc/matc compile "$material" -o "$packages/$name.matpkg" --point-lights 0,2 \
+  build/release/matc/matc compile "$material" -o "$packages/$name.matpkg" "${example_compile_options[@]}" \
     --emit-source "$packages/sources"
 done
 for scene in examples/scenes/*.json; do

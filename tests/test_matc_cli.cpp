@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -70,6 +71,17 @@ TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
   for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.es300.readable.glsl", "frag.es300.readable.glsl",
                              "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm", "frag.spvasm", "vert.metal", "frag.metal"})
     EXPECT_TRUE(fs::exists(dir + "/src/red_plastic.high.dir1." + suffix)) << suffix;
+  // The GLSL ES and MSL files are the shipped bytes, which the shader goldens
+  // (tests/golden/shaders, scripts/update-goldens.sh) copy and present as such.
+  for (const auto& [suffix, stage, target] : {std::array<std::string, 3>{"vert.es300.glsl", "vertex", "glsl_es_300"},
+                                              {"frag.es300.glsl", "fragment", "glsl_es_300"},
+                                              {"vert.metal", "vertex", "msl"},
+                                              {"frag.metal", "fragment", "msl"}}) {
+    auto shipped = run(kMatc + " info " + dir + "/r.matpkg --variant high.dir1 --stage " + stage + " --target " + target);
+    ASSERT_EQ(shipped.exitCode, 0) << shipped.err;
+    EXPECT_TRUE(shipped.out == facet::test::readText(dir + "/src/red_plastic.high.dir1." + suffix))
+        << suffix << " is not the package's " << stage << " " << target << " shader";
+  }
 }
 
 TEST(MatcCli, OneAndTwoJobsWriteTheSameBytes) {

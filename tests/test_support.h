@@ -57,4 +57,9 @@ struct CommandResult {
 // Runs a shell command with stdout and stderr captured separately.
 CommandResult run(const std::string& command);
 
+// A unified diff (3 lines of context) from `expected` to `actual`, by longest common subsequence,
+// headed `--- expectedName` / `+++ actualName`; a last line without '\n' is marked.
+std::string unifiedDiff(const std::string& expected, const std::string& actual, const std::string& expectedName,
+                        const std::string& actualName);
+
 }  // namespace facet::test

@@ -1,0 +1,61 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    float3 glazeColor;
+    packed_float3 clayColor;
+    float glazeRoughness;
+    float clayRoughness;
+    float bandsPerUnit;
+    float bandSharpness;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_worldPosition [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float3 v_diffuseLight [[user(locn2)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    half3 _334 = normalize(half3(in.v_normal));
+    float3 _351 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float _447 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _556 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _447)), half(0.0), half(1.0));
+    half3 _564 = half3((half(0.1599999964237213134765625) * _556) * _556);
+    half _573 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _447)), half(0.08900000154972076416015625), half(1.0));
+    float4 _580 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_334, half3(_351)), half(9.9999997473787516355514526367188e-05)), _573)), level(0.0));
+    float4 _606 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_351), _334)), level(_573 * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_447))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_606).xyz * (mix(half4(_580).xxx, half4(_580).yyy, _564) * (half3(float3(1.0)) + (_564 * ((half(1.0) / half4(_580).y) - half(1.0)))))), half(1.0)));
+    return out;
+}
+

@@ -1,0 +1,65 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    packed_float3 tint;
+    float roughness;
+    float facet_perceptualRoughness;
+    char _m3_pad[12];
+    packed_float3 facet_f0;
+    float facet_alpha;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    half3 _454 = normalize(half3(in.v_normal));
+    float3 _458 = fast::normalize(in.v_toEye);
+    half _608 = max(dot(_454, half3(_458)), half(9.9999997473787516355514526367188e-05));
+    float4 _647 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_608, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _666 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_647).y) - half(1.0)));
+    float4 _673 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_458), _454)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _505 = half4(frame.lightDirection).xyz;
+    half3 _780 = normalize(half3(_458) + _505);
+    half _731 = clamp(dot(_454, _505), half(0.0), half(1.0));
+    half3 _807 = cross(_454, _780);
+    half _810 = clamp(dot(_454, _780), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _827 = max(mix((half(2.0) * _731) * _608, _731 + _608, half(params.facet_alpha)), half(0.000244140625));
+    half _834 = (half(1024.0) * half(params.facet_alpha)) / (fma(_810, _810, dot(_807, _807)) * (half(6433.98193359375) * _827));
+    out.fragColor = float4(half4(fma(half4(_673).xyz, mix(half4(_647).xxx, half4(_647).yyy, half3(float3(params.facet_f0))) * _666, min(((half3(float3(params.facet_f0)) * min(_834 * (_834 * (half(6.283185482025146484375) * _827)), half(65504.0))) * _666) * (half4(frame.lightColor).xyz * _731), half3(float3(65504.0)))), half(1.0)));
+    return out;
+}
+

@@ -1,0 +1,36 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    packed_float3 tint;
+    float roughness;
+    float facet_perceptualRoughness;
+    char _m3_pad[12];
+    packed_float3 facet_f0;
+    float facet_alpha;
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    float3 _397 = fast::normalize(in.v_normal);
+    float3 _401 = fast::normalize(in.v_toEye);
+    float4 _673 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_397, _401), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, reflect(-_401, _397), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_673.xxx, _673.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _673.y) - 1.0)))), 1.0);
+    return out;
+}
+

@@ -1,0 +1,82 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    float tiling;
+    float roughness;
+    float facet_pad8;
+    float facet_pad12;
+    float facet_perceptualRoughness;
+    float facet_alpha;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float2 v_uv0 [[user(locn2)]];
+    float4 v_tangent [[user(locn3)]];
+    float3 v_diffuseLight [[user(locn4)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
+{
+    main0_out out = {};
+    float3 _548 = fast::normalize(in.v_toEye);
+    float2 _675 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _678 = facet_material_albedo.sample(facet_material_albedoSmplr, _675);
+    float4 _688 = facet_material_relief.sample(facet_material_reliefSmplr, _675);
+    half3 _692 = (half4(_688).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1128;
+    do
+    {
+        half3 _705 = half4(in.v_tangent).xyz;
+        if (float(dot(_705, _705)) == 0.0)
+        {
+            _1128 = normalize(half3(in.v_normal));
+            break;
+        }
+        _1128 = normalize(((_705 * _692.x) + ((cross(half3(in.v_normal), _705) * half(in.v_tangent.w)) * _692.y)) + (half3(in.v_normal) * _692.z));
+        break;
+    } while(false);
+    half3 _787 = reflect(-half3(_548), _1128);
+    float4 _847 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1128, half3(_548)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _873 = facet_environment.sample(facet_environmentSmplr, float3(_787), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _802 = mix(half4(_847).xxx, half4(_847).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_847).y) - half(1.0))));
+    half3 _599 = half4(frame.lightDirection).xyz;
+    half _1026 = clamp(dot(_787, _599), half(0.0), half(1.0));
+    half _1029 = _1026 * _1026;
+    half4 _1191 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1029 * _1029, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1041 = _1191.x;
+    half3 _1050 = fma(clamp(half4(_678).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_873).xyz * _802) + min((_802 * ((_1041 * _1041) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1128, _599), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1050, half(1.0)));
+    return out;
+}
+

@@ -1,0 +1,74 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct ObjectUniforms
+{
+    float4x4 model;
+    float4x4 normalMatrix;
+};
+
+struct main0_out
+{
+    float3 v_worldPosition [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float2 v_uv0 [[user(locn2)]];
+    float4 v_tangent [[user(locn3)]];
+    float3 v_diffuseLight [[user(locn4)]];
+    float4 gl_Position [[position]];
+};
+
+struct main0_in
+{
+    float3 a_position [[attribute(0)]];
+    float3 a_normal [[attribute(1)]];
+    float2 a_uv0 [[attribute(2)]];
+    float4 a_tangent [[attribute(5)]];
+};
+
+vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
+{
+    main0_out out = {};
+    float4 _186 = object.model * float4(in.a_position, 1.0);
+    float3 _190 = _186.xyz;
+    out.v_worldPosition = _190;
+    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    out.v_uv0 = in.a_uv0;
+    out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
+    float3 _372 = float3(frame.punctualLights[0].positionFalloff.xyz) - _190;
+    float _375 = dot(_372, _372);
+    float3 _380 = _372 * rsqrt(fast::max(_375, 9.9999999392252902907785028219223e-09));
+    float _384 = _375 * float(frame.punctualLights[0].positionFalloff.w);
+    float _389 = fast::clamp(fma(-_384, _384, 1.0), 0.0, 1.0);
+    float _408 = fast::clamp(fma(dot(-_380, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _450 = float3(frame.punctualLights[1].positionFalloff.xyz) - _190;
+    float _453 = dot(_450, _450);
+    float3 _458 = _450 * rsqrt(fast::max(_453, 9.9999999392252902907785028219223e-09));
+    float _462 = _453 * float(frame.punctualLights[1].positionFalloff.w);
+    float _467 = fast::clamp(fma(-_462, _462, 1.0), 0.0, 1.0);
+    float _486 = fast::clamp(fma(dot(-_458, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_389 * _389) / fast::max(_375, 9.9999997473787516355514526367188e-05)) * _408) * _408), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _380), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_467 * _467) / fast::max(_453, 9.9999997473787516355514526367188e-05)) * _486) * _486), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _458), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _186;
+    return out;
+}
+

@@ -1,0 +1,63 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    packed_float3 baseColor;
+    float roughness;
+    float reflectance;
+    float facet_pad20;
+    float facet_pad24;
+    float facet_pad28;
+    packed_float3 facet_diffuseColor;
+    float facet_perceptualRoughness;
+    packed_float3 facet_f0;
+    float facet_alpha;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    float3 _392 = fast::normalize(in.v_normal);
+    float3 _396 = fast::normalize(in.v_toEye);
+    float _496 = _392.y;
+    float _501 = _392.z;
+    float _506 = _392.x;
+    float4 _663 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_392, _396), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    float3 _698 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _496)) + (frame.sh[2].xyz * _501)) + (frame.sh[3].xyz * _506)) + (((((frame.sh[4].xyz * (_506 * _496)) + (frame.sh[5].xyz * (_496 * _501))) + (frame.sh[6].xyz * fma(3.0 * _501, _501, -1.0))) + (frame.sh[7].xyz * (_506 * _501))) + (frame.sh[8].xyz * fma(_506, _506, -(_496 * _496)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_396, _392), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_663.xxx, _663.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _663.y) - 1.0)))));
+    out.fragColor = float4(_698, 1.0);
+    return out;
+}
+
