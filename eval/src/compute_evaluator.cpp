@@ -5,6 +5,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 #include <mutex>
@@ -80,7 +81,8 @@ bool computeQueue(const runtime::vulkan::Context& ctx, std::string* error) {
 
 // One call's Vulkan objects, created step by step and destroyed in reverse order when it ends:
 // the input and output buffers, the optional LUT, the pipeline and its descriptor set, and the
-// command buffer that dispatches it.
+// command buffer that dispatches it. The steps run in order: uploadInputs, createLut (with a
+// LUT), createPipeline, bindResources, dispatch, then outputs.
 class ComputeRun {
  public:
   ComputeRun(const runtime::vulkan::Context& ctx, VkCommandPool commandPool)
@@ -318,7 +320,7 @@ class ComputeRun {
   const runtime::vulkan::Context& ctx_;
   VkDevice device_;
   VkCommandPool commandPool_;
-  Cleanup cleanup_;  // declared before the handles it destroys are used; runs when the run ends
+  Cleanup cleanup_;  // destroys what the steps created, in reverse order, when the run ends
   VkBuffer inBuffer_ = VK_NULL_HANDLE, outBuffer_ = VK_NULL_HANDLE, staging_ = VK_NULL_HANDLE;
   void* outPtr_ = nullptr;
   const GpuR8Texture* lut_ = nullptr;
