@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "facet/compiler/mobile_cost.h"
+#include "facet/compiler/cost_figures.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
 #include "facet/runtime/material.h"
@@ -32,27 +32,57 @@ std::vector<uint32_t> words(const package::Shader& s) {
 }
 
 // The static cost table (docs/specular-tiers.md, "Static cost"), from each variant's optimised SPIR-V, with the
-// mobile cost model's estimated cycles (docs/eval.md, "The mobile cost model").
+// mobile cost model's estimated cycles (docs/eval.md, "The mobile cost model"). --json carries the same figures.
+using compiler::Figure;
+constexpr compiler::FigureColumn kCostColumns[] = {
+    {Figure::Alu, 5},      {Figure::ScalarAlu, 6},         {Figure::Transcendental, 6}, {Figure::Divisions, 4},
+    {Figure::Textures, 4}, {Figure::VaryingComponents, 8}, {Figure::RelaxedPercent, 8}, {Figure::Cycles, 7},
+};
+
+// The figures of a variant's SPIR-V shader; false with *error when the cost model cannot read it.
+bool stageFigures(const package::Shader& s, compiler::StageFigures* figures, std::string* error) {
+  return compiler::estimateMobileCost(words(s), &figures->mobile, error);
+}
+
 void printCosts(const package::Package& pkg) {
   std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"
               "Valhall-class cycles per vertex or fragment, docs/eval.md)\n");
-  std::printf("  %-18s %-8s %5s %6s %6s %4s %4s %8s %8s %7s\n", "variant", "stage", "alu", "scalar", "transc", "div", "tex",
-              "varyings", "mediump", "cycles");
+  std::fputs(compiler::figureTableHeading(kCostColumns).c_str(), stdout);
   for (const package::Variant& v : pkg.variants) {
     for (const package::Shader& s : v.shaders) {
       if (s.target != package::Target::Spirv) continue;
-      compiler::MobileStageCost m;
+      compiler::StageFigures figures;
       std::string error;
-      if (!compiler::estimateMobileCost(words(s), &m, &error)) {
+      if (!stageFigures(s, &figures, &error)) {
         std::printf("  %-18s %-8s (%s)\n", v.key.c_str(), package::toString(s.stage), error.c_str());
         continue;
       }
-      const compiler::InstructionCounts& c = m.counts.instructions;
-      std::printf("  %-18s %-8s %5u %6u %6u %4u %4u %8u %7.0f%% %7.2f\n", v.key.c_str(), package::toString(s.stage),
-                  c.aluOps, c.scalarAluOps, c.transcendentalOps, c.divisions, c.textureSamples, c.varyingComponents,
-                  c.relaxedPercent(), m.cycles);
+      std::fputs(compiler::figureTableRow(v.key, package::toString(s.stage), kCostColumns, figures).c_str(), stdout);
     }
   }
+}
+
+// The cost table's figures of each variant's SPIR-V stages, by the cost model's names, exact
+// (the text table rounds): {"vertex": {"alu": 90, ...}, "fragment": {...}}, or
+// {"<stage>": {"error": "..."}} where the cost model cannot read the code.
+nlohmann::ordered_json costsJson(const package::Variant& v) {
+  nlohmann::ordered_json costs = nlohmann::ordered_json::object();
+  for (const package::Shader& s : v.shaders) {
+    if (s.target != package::Target::Spirv) continue;
+    compiler::StageFigures figures;
+    std::string error;
+    nlohmann::ordered_json stage = nlohmann::ordered_json::object();
+    if (!stageFigures(s, &figures, &error)) {
+      stage["error"] = error;
+    } else {
+      for (const compiler::FigureColumn& c : kCostColumns) {
+        const compiler::CostFigure& f = compiler::costFigure(c.figure);
+        stage[f.name] = compiler::figureJson<nlohmann::ordered_json>(f, figures);
+      }
+    }
+    costs[package::toString(s.stage)] = std::move(stage);
+  }
+  return costs;
 }
 
 // Where a Metal app binds each block and sampler (section MSLB): pinned from the shader ABI, so
@@ -127,8 +157,8 @@ void printSummary(const package::ReadResult& r) {
   printCosts(pkg);
 }
 
-// The summary as one JSON document, for scripts and build tools: what printSummary shows, minus
-// the static cost table (matc lint's business), with sizes as numbers.
+// The summary as one JSON document, for scripts and build tools: what printSummary shows, with
+// sizes as numbers and each variant's static cost figures (docs/build-integration.md).
 void printJson(const package::ReadResult& r) {
   const package::Package& pkg = *r.package;
   nlohmann::ordered_json doc;
@@ -161,7 +191,7 @@ void printJson(const package::ReadResult& r) {
                          {"bytes", r.stats[i][j].rawSize},
                          {"storedBytes", r.stats[i][j].storedSize}});
     }
-    doc["variants"].push_back({{"key", pkg.variants[i].key}, {"shaders", std::move(shaders)}});
+    doc["variants"].push_back({{"key", pkg.variants[i].key}, {"shaders", std::move(shaders)}, {"costs", costsJson(pkg.variants[i])}});
   }
   doc["textures"] = nlohmann::ordered_json::array();
   for (size_t i = 0; i < pkg.textures.size(); ++i) {

@@ -12,8 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "app_vulkan.h"
 #include "facet/compiler/specular_lut.h"
 #include "facet/eval/compute_evaluator.h"
+#include "facet/vulkan_backend.h"
 #include "reference/specular_tiers.h"
 #include "test_support.h"
 #include "facet/eval/standard_model.h"
@@ -98,6 +100,39 @@ TEST(GpuEval, RunsComputeShaderOnLavapipe) {
   ASSERT_EQ(out.size(), 2u);
   EXPECT_EQ(out[0], glm::vec4(2.5f, 4.5f, 6.5f, 8.5f));
   EXPECT_EQ(out[1], glm::vec4(-1.0f));
+}
+
+// The evaluator on a device an app made (runtime::AppDevice, as the Vulkan backend runs on one):
+// the same values as on a device of its own, the LUT's upload included, nothing for the app's
+// validation layer (synchronization validation on) to report, and the app's device left alive.
+TEST(GpuEval, RunsOnTheAppsDeviceAndLeavesItAlive) {
+  eval::GpuR8Texture texture{2, 2, {0, 64, 128, 255}};
+  GpuEvalRequest req;
+  req.lut = &texture;
+  req.body = "result = in0 * in1 + texture(lut, in0.xy).r;";
+  for (int i = 0; i < 100; ++i) {  // more than one work group
+    req.in0.push_back(glm::vec4(float(i % 10) / 9.0f, float(i / 10) / 9.0f, 1, 2));
+    req.in1.push_back(glm::vec4(float(i)));
+  }
+  const std::vector<glm::vec4> own = run(req);
+  ASSERT_EQ(own.size(), req.in0.size());
+
+  example::AppVulkan app;
+  std::string error;
+  ASSERT_TRUE(app.create(/*validation=*/true, &error)) << error;
+  {
+    eval::GpuEvaluator onApp(app.appDevice());
+    ASSERT_TRUE(onApp.ready()) << onApp.initError();
+    const eval::GpuEvalResult result = onApp.run(req);
+    ASSERT_TRUE(result.ok()) << result.error;
+    EXPECT_EQ(result.values, own);
+  }
+  EXPECT_TRUE(app.waitIdle());
+  for (const std::string& m : app.validationErrors) ADD_FAILURE() << "Vulkan validation: " << m;
+
+  eval::GpuEvaluator incomplete(runtime::AppDevice{});
+  EXPECT_FALSE(incomplete.ready());
+  EXPECT_NE(incomplete.initError().find("the app's Vulkan device is incomplete"), std::string::npos) << incomplete.initError();
 }
 
 // GGX D in the Lagrange form. h is built in double, rounded to float and sent as a vector; the

@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "facet/compiler/cost_figures.h"
 #include "facet/package.h"
 #include "facet/shader_abi.h"
 
@@ -180,6 +182,53 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   EXPECT_LT(stored, fs::file_size(dir + "/r.matpkg"));
   EXPECT_EQ(doc["parameters"][1]["name"], "roughness");
   EXPECT_EQ(doc["textures"][0]["variants"][0], "low.dir1");
+}
+
+// info --json carries the text summary's static cost table: per variant and stage, the same
+// figures in the same order, under the cost model's names (compiler/cost_figures.h), each the
+// table's cell once printed as the table prints it. tools/mesa_stats reads them from here.
+TEST(MatcCli, InfoJsonCarriesTheCostTable) {
+  std::string dir = facet::test::scratchDir("cli-json-costs");
+  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " + dir +
+                "/r.matpkg").exitCode, 0);
+  auto text = run(kMatc + " info " + dir + "/r.matpkg");
+  auto json = run(kMatc + " info " + dir + "/r.matpkg --json");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(json.out);
+  auto words = [](const std::string& line) {
+    std::istringstream in(line);
+    std::vector<std::string> out;
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+  };
+  std::istringstream lines(text.out.substr(text.out.find("\nstatic cost")));
+  std::string line;
+  while (std::getline(lines, line) && line.rfind("  variant ", 0) != 0) {}
+  const std::vector<std::string> headings = words(line);
+  ASSERT_GT(headings.size(), 2u) << text.out;
+  size_t rows = 0;
+  while (std::getline(lines, line) && line.rfind("  ", 0) == 0) {
+    const std::vector<std::string> cells = words(line);
+    ASSERT_EQ(cells.size(), headings.size()) << line;
+    const auto variant = std::find_if(doc["variants"].begin(), doc["variants"].end(),
+                                      [&](const auto& v) { return v["key"] == cells[0]; });
+    ASSERT_NE(variant, doc["variants"].end()) << line;
+    ASSERT_TRUE(variant->contains("costs") && (*variant)["costs"].contains(cells[1])) << line;
+    const nlohmann::ordered_json& costs = (*variant)["costs"][cells[1]];
+    ASSERT_EQ(costs.size(), headings.size() - 2) << line;
+    size_t column = 2;
+    for (const auto& [name, value] : costs.items()) {
+      const facet::compiler::CostFigure* figure = facet::compiler::findCostFigure(name);
+      ASSERT_NE(figure, nullptr) << name;
+      EXPECT_EQ(figure->column, headings[column]) << name;
+      EXPECT_EQ(facet::compiler::formatFigure(*figure, value.get<double>()), cells[column]) << line << " " << name;
+      EXPECT_EQ(value.is_number_integer(), figure->integer) << name;
+      ++column;
+    }
+    ++rows;
+  }
+  EXPECT_EQ(rows, 16u);  // 8 variants, a vertex and a fragment stage each
 }
 
 // The Metal slots recorded in the package (section MSLB) are shown in text and JSON, are the shader

@@ -54,7 +54,7 @@ class Calibration(unittest.TestCase):
 
     def test_fit_beats_matcs_cost_model_on_valhall(self):
         g57 = self.fits["mali-g57"]
-        self.assertIsNotNone(g57["before"], "the data has no mobileCostCycles: re-collect with a matc that prints them")
+        self.assertIsNotNone(g57["before"], "the data has no spirv_cost cycles: re-collect with a matc whose info --json has them")
         self.assertLess(g57["after"]["rms"], g57["before"]["rms"] / 2)
 
     def test_every_feature_is_pinned_by_a_single_operation(self):

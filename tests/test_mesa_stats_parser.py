@@ -2,6 +2,7 @@
 """tools/mesa_stats/shaderdb.py on statistics lines recorded from Mesa 22.3.6's compilers
 (tests/data/mesa_stats/, recorded with the command in its README). Needs no Mesa build."""
 
+import json
 import os
 import sys
 import unittest
@@ -103,32 +104,39 @@ class Robustness(unittest.TestCase):
             shaderdb.normalise(shaderdb.parse_line("FRAG shader: 12 inst, 3 widgets"))
 
 
-class MatcCostTable(unittest.TestCase):
-    """tools/mesa_stats/package_glsl.py reads `matc info`'s static cost table (recorded in
-    matc-info-red_plastic.txt) to pair each variant's statistics with the cost counts."""
+class MatcCostFigures(unittest.TestCase):
+    """tools/mesa_stats/package_glsl.py reads `matc info --json`'s per-variant costs (recorded in
+    matc-info-red_plastic.json) to pair each variant's statistics with the cost figures, under the
+    names matc gives them."""
 
-    def test_recorded_table_reads_every_variant_and_stage(self):
-        with open(os.path.join(FIXTURES, "matc-info-red_plastic.txt")) as f:
-            costs = package_glsl.parse_cost_table(f.read())
+    def recorded(self):
+        with open(os.path.join(FIXTURES, "matc-info-red_plastic.json")) as f:
+            return json.load(f)
+
+    def test_recorded_costs_read_every_variant_and_stage(self):
+        costs = package_glsl.read_costs(self.recorded())
         self.assertEqual(len(costs), 8)
-        self.assertEqual(costs["high.dir1"]["fragment"],
-                         {"aluOps": 90, "scalarAluOps": 170, "transcendentalOps": 8, "divisions": 2,
-                          "textureSamples": 2, "varyingComponents": 6, "relaxedPercent": 89.0})
+        self.assertEqual(sorted(costs["high.dir1"]), ["fragment", "vertex"])
+        fragment = costs["high.dir1"]["fragment"]
+        self.assertEqual({k: fragment[k] for k in ("alu", "scalar_alu", "transcendental", "divisions", "textures",
+                                                   "varying_components")},
+                         {"alu": 80, "scalar_alu": 154, "transcendental": 5, "divisions": 3, "textures": 2,
+                          "varying_components": 6})
+        self.assertAlmostEqual(fragment["relaxed_percent"], 94.1, places=1)
+        self.assertAlmostEqual(fragment["cycles"], 1.37, places=2)
 
-    def test_two_line_title_and_cycles_column_are_read(self):
-        # The layout matc prints once it adds its mobile cost model's estimate (a `cycles` column).
-        text = ("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"
-                "Valhall-class cycles per vertex or fragment, docs/eval.md)\n"
-                "  variant            stage      alu scalar transc  div  tex varyings  mediump  cycles\n"
-                "  high.dir1          fragment    90    170      8    2    2        6      89%    2.31\n")
-        row = package_glsl.parse_cost_table(text)["high.dir1"]["fragment"]
-        self.assertEqual(row["mobileCostCycles"], 2.31)
-        self.assertEqual(row["scalarAluOps"], 170)
-
-    def test_unknown_column_is_an_error_not_a_silent_drop(self):
-        text = "static cost (x)\n  variant stage alu widgets\n  high.dir1 fragment 1 2\n"
+    def test_a_matc_without_costs_is_an_error_not_an_empty_table(self):
+        info = self.recorded()
+        for v in info["variants"]:
+            del v["costs"]
         with self.assertRaises(RuntimeError):
-            package_glsl.parse_cost_table(text)
+            package_glsl.read_costs(info)
+
+    def test_a_stage_matc_could_not_cost_is_an_error_not_a_silent_drop(self):
+        info = self.recorded()
+        info["variants"][0]["costs"]["fragment"] = {"error": "malformed SPIR-V"}
+        with self.assertRaises(RuntimeError):
+            package_glsl.read_costs(info)
 
 
 if __name__ == "__main__":

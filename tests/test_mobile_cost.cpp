@@ -5,9 +5,11 @@
 
 #include <cstring>
 #include <fstream>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
+#include "facet/compiler/cost_figures.h"
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
@@ -249,4 +251,41 @@ TEST(MobileCost, CalibratedEstimateIsTheCommittedFit) {
   }
   EXPECT_EQ(checked, 3u * 32u);
   EXPECT_EQ(facet::compiler::findGpuCalibration("mali-t880"), nullptr);
+}
+
+// The figure table (compiler/cost_figures.h) is the one place reports take a figure's name from:
+// two figures under one name, or one heading for two columns, would make a report, budget or
+// baseline say one figure and mean another.
+TEST(CostFigures, EachNameAndHeadingBelongsToOneFigure) {
+  std::set<std::string> names, headings;
+  for (const facet::compiler::CostFigure& f : facet::compiler::costFigures()) {
+    EXPECT_TRUE(names.insert(f.name).second) << f.name;
+    if (*f.column) {
+      EXPECT_TRUE(headings.insert(f.column).second) << f.column;
+    }
+    const facet::compiler::CostFigure* found = facet::compiler::findCostFigure(f.name);
+    ASSERT_NE(found, nullptr) << f.name;
+    EXPECT_EQ(found->figure, f.figure) << f.name;
+    EXPECT_NE(f.value == nullptr, f.text == nullptr) << f.name;  // a number or a word, never both
+  }
+  EXPECT_EQ(facet::compiler::findCostFigure("alus"), nullptr);
+}
+
+// Cells as `matc info` and `matc lint` print them, and the values baselines compare.
+TEST(CostFigures, CellsAndReportedValuesKeepTheTablesPrecision) {
+  using facet::compiler::Figure;
+  facet::compiler::StageFigures s;
+  s.mobile.cycles = 1.2345;
+  s.mobile.counts.instructions.aluOps = 3;
+  s.mobile.counts.instructions.relaxedOps = 2;
+  const auto& cycles = facet::compiler::costFigure(Figure::Cycles);
+  const auto& relaxed = facet::compiler::costFigure(Figure::RelaxedPercent);
+  EXPECT_EQ(facet::compiler::formatFigure(cycles, cycles.value(s)), "1.23");
+  EXPECT_EQ(facet::compiler::formatFigure(relaxed, relaxed.value(s)), "67%");
+  EXPECT_DOUBLE_EQ(facet::compiler::reportedValue(cycles, s), 1.23);
+  const facet::compiler::FigureColumn columns[] = {{Figure::Alu, 4}, {Figure::RelaxedPercent, 8}, {Figure::Cycles, 6}};
+  EXPECT_EQ(facet::compiler::figureTableHeading(columns),
+            "  variant            stage     alu  mediump cycles\n");
+  EXPECT_EQ(facet::compiler::figureTableRow("high.dir1", "fragment", columns, s),
+            "  high.dir1          fragment    3      67%   1.23\n");
 }

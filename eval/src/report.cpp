@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "facet/compiler/cost_figures.h"
 #include "facet/gpu_stats/report.h"
 #include "facet/package.h"
 
@@ -37,24 +38,23 @@ Json errorJson(const ImageMetrics& m) {
   return j;
 }
 
+// The cost model's figures of a stage (names in compiler/cost_figures.h), then its op classes.
 Json costJson(const compiler::MobileStageCost& c) {
+  using F = compiler::Figure;
+  static constexpr F kFigures[] = {F::Cycles,        F::Bound,           F::ArithmeticCycles,      F::TextureCycles,
+                                   F::VaryingCycles, F::FmaSlots,        F::CvtSlots,              F::SfuOps,
+                                   F::TextureSamples, F::VaryingChannels, F::ScalarTranscendentals, F::ScalarDivisions};
+  const compiler::StageFigures stage{c, {}};
   Json j;
-  j["cycles"] = c.cycles;
-  j["bound"] = c.bound();
-  j["arithmetic_cycles"] = c.arithmeticCycles;
-  j["texture_cycles"] = c.textureCycles;
-  j["varying_cycles"] = c.varyingCycles;
-  j["fma_slots"] = c.fmaSlots;
-  j["cvt_slots"] = c.cvtSlots;
-  j["sfu_ops"] = c.sfuOps;
-  j["texture_samples"] = c.textureSamples;
-  j["varying_channels_16bit"] = c.varyingChannels;
-  j["transcendentals"] = c.transcendentals();
-  j["divisions"] = c.divisions();
+  for (F f : kFigures) {
+    const compiler::CostFigure& figure = compiler::costFigure(f);
+    j[figure.name] = compiler::figureJson<Json>(figure, stage);
+  }
   Json classes = Json::object();
   for (size_t k = 0; k < compiler::kOpClassCount; ++k)
     if (c.counts.ops[k] != 0) classes[compiler::toString(compiler::OpClass(k))] = c.counts.ops[k];
-  classes["fma_relaxed"] = c.counts.fmaRelaxed;
+  const compiler::CostFigure& fmaRelaxed = compiler::costFigure(F::FmaRelaxed);
+  classes[fmaRelaxed.name] = compiler::figureJson<Json>(fmaRelaxed, stage);
   j["op_classes"] = classes;
   return j;
 }

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "facet/compiler/cost_figures.h"
 #include "facet/lint/lint.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/json_document.h"
@@ -46,12 +47,15 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
+// A budget's floor on the mediump share: "min_" and the figure's name.
+std::string minRelaxedPercentKey() { return std::string("min_") + compiler::costFigure(compiler::Figure::RelaxedPercent).name; }
+
 // A name nothing reads would switch its check off without a word (a budget on "alus" limits
 // nothing): every name must be one lint knows.
 void knownFigure(const std::string& name, const std::string& pointer, bool budget) {
   const std::vector<std::string> names = figureNames();
   if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  fail(pointer, "unknown figure '" + name + "' (known: " + joined(names) + (budget ? ", min_relaxed_percent" : "") + ")");
+  fail(pointer, "unknown figure '" + name + "' (known: " + joined(names) + (budget ? ", " + minRelaxedPercentKey() : "") + ")");
 }
 
 std::string tierNames() {
@@ -94,7 +98,7 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
         if (!isStage(stage)) fail(sp, "expected \"vertex\" or \"fragment\"");
         StageBudget& sb = b.tiers[tier][stage];
         for (const auto& [name, value] : object(limits, sp).items()) {
-          if (name == "min_relaxed_percent") {
+          if (name == minRelaxedPercentKey()) {
             sb.minRelaxedPercent = figure(value, child(sp, name));
             continue;
           }

@@ -167,26 +167,27 @@ bool MaterialLint::hasErrors() const {
   return std::any_of(diagnostics.begin(), diagnostics.end(), [](const ir::Diagnostic& d) { return d.severity == ir::Severity::Error; });
 }
 
+std::span<const compiler::Figure> baselineFigures() {
+  using F = compiler::Figure;
+  static constexpr F figures[] = {F::Cycles,   F::Alu,          F::ScalarAlu,     F::Transcendental,
+                                  F::Divisions, F::Textures,     F::VaryingComponents, F::InputVectors,
+                                  F::OutputVectors, F::UniformVectors, F::Samplers};
+  return figures;
+}
+
 std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) {
   // Cycles in hundredths, as reports print them: a baseline compares what a reader sees.
-  return {
-      {"cycles", std::round(s.mobile.cycles * 100.0) / 100.0},
-      {"alu", s.instructions().aluOps},
-      {"scalar_alu", s.instructions().scalarAluOps},
-      {"transcendental", s.instructions().transcendentalOps},
-      {"divisions", s.instructions().divisions},
-      {"textures", s.instructions().textureSamples},
-      {"varying_components", s.instructions().varyingComponents},
-      {"input_vectors", s.interface.inputVectors},
-      {"output_vectors", s.interface.outputVectors},
-      {"uniform_vectors", s.interface.uniformVectors},
-      {"samplers", s.interface.samplers},
-  };
+  std::vector<std::pair<std::string, double>> named;
+  for (compiler::Figure f : baselineFigures()) {
+    const compiler::CostFigure& figure = compiler::costFigure(f);
+    named.emplace_back(figure.name, compiler::reportedValue(figure, s));
+  }
+  return named;
 }
 
 std::vector<std::string> figureNames() {
   std::vector<std::string> names;
-  for (const auto& [name, value] : namedFigures(StageFigures{})) names.push_back(name);
+  for (compiler::Figure f : baselineFigures()) names.push_back(compiler::costFigure(f).name);
   return names;
 }
 

@@ -64,9 +64,18 @@ std::string percent(double fraction) {
 json figuresJson(const StageFigures& s) {
   json j = json::object();
   for (const auto& [name, value] : namedFigures(s)) j[name] = value;
-  j["relaxed_percent"] = s.instructions().relaxedPercent();
+  const compiler::CostFigure& relaxed = compiler::costFigure(compiler::Figure::RelaxedPercent);
+  j[relaxed.name] = relaxed.value(s);
   return j;
 }
+
+// The text table's columns.
+using compiler::Figure;
+constexpr compiler::FigureColumn kTextColumns[] = {
+    {Figure::Cycles, 6},    {Figure::Alu, 4},      {Figure::ScalarAlu, 6},         {Figure::Transcendental, 6},
+    {Figure::Divisions, 4}, {Figure::Textures, 4}, {Figure::VaryingComponents, 8}, {Figure::UniformVectors, 8},
+    {Figure::Samplers, 8},  {Figure::RelaxedPercent, 8},
+};
 
 }  // namespace
 
@@ -82,17 +91,10 @@ std::string formatText(const std::vector<LintedFile>& files) {
   for (const LintedFile& f : files) {
     if (f.result.variants.empty()) continue;
     out += "\n" + f.file.path + " (" + f.result.material + ")\n";
-    out += "  variant            stage    cycles  alu scalar transc  div  tex varyings uniforms samplers  mediump\n";
+    out += compiler::figureTableHeading(kTextColumns);
     for (const VariantFigures& v : f.result.variants)
-      for (auto [name, s] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}}) {
-        const compiler::InstructionCounts& k = s->instructions();
-        char line[160];
-        std::snprintf(line, sizeof line, "  %-18s %-8s %6.2f %4u %6u %6u %4u %4u %8u %8u %8u %7.0f%%\n", v.key.c_str(),
-                      name, s->mobile.cycles, k.aluOps, k.scalarAluOps, k.transcendentalOps, k.divisions,
-                      k.textureSamples, k.varyingComponents, s->interface.uniformVectors, s->interface.samplers,
-                      k.relaxedPercent());
-        out += line;
-      }
+      for (auto [name, s] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}})
+        out += compiler::figureTableRow(v.key, name, kTextColumns, *s);
     if (!f.result.gpuStats.empty()) out += "  " + gpu_stats::sourceNote(f.result.gpuStats) + "\n";
     for (const gpu_stats::GpuStats& g : f.result.gpuStats) {
       if (const compiler::GpuCalibration* c = estimateFor(g)) {

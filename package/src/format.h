@@ -1,11 +1,14 @@
 // On-disk constants and layout of a .matpkg file. docs/package-format.md is the byte-by-byte
-// description; keep the two in step.
+// description; keep the two in step. The rows of the variant and texture tables are
+// package_reader.h's VariantInfo, ShaderInfo and TextureInfo (code and texels by blob index),
+// as the sections store them; rows.h converts them to and from the package model.
 #pragma once
 
 #include <array>
 #include <cstdint>
 
 #include "facet/package.h"
+#include "facet/package_reader.h"
 
 namespace facet::package::detail {
 
@@ -67,7 +70,7 @@ enum class Codec : uint32_t { Raw = 0, Zstd = 1, ZstdDictionary = 2 };
 inline constexpr uint16_t kFirstMinorWithDictionary = 1;
 
 // Encoded sizes of fixed-size records, used to check counts against the bytes available.
-inline constexpr uint64_t kShaderRefSize = 8;    // u8 stage, u8 target, u16 reserved, u32 blob
+inline constexpr uint64_t kShaderInfoSize = 8;    // u8 stage, u8 target, u16 reserved, u32 blob
 inline constexpr uint64_t kMinVariantSize = 8;   // u32 key length, u32 shader count
 inline constexpr uint64_t kMinParamSize = 16;    // u32 name length, 4 x u8, u32 offset, u32 size
 inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 dictionary blob
@@ -89,27 +92,6 @@ struct BlobEntry {
   uint64_t rawSize = 0;
   Codec codec = Codec::Raw;
   uint32_t dictionary = 0;   // ZstdDictionary: the blob whose raw bytes are the dictionary; else 0
-};
-
-struct ShaderRef {
-  Stage stage = Stage::Vertex;
-  Target target = Target::GlslEs300;
-  uint32_t blob = 0;
-};
-
-struct VariantEntry {
-  std::string key;
-  std::vector<ShaderRef> shaders;
-};
-
-// A TEXS entry: the texture's description, and its texels by blob index.
-struct TextureEntry {
-  std::string name;
-  uint32_t width = 0;
-  uint32_t height = 0;
-  TexelFormat format = TexelFormat::R8Unorm;
-  uint32_t blob = 0;
-  std::vector<uint32_t> variants;
 };
 
 // Number of default-value components a parameter of this type carries. Color accepts both RGB

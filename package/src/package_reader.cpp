@@ -275,14 +275,12 @@ bool PackageReader::State::parse(std::string& error) {
   minor = uint16_t(loadLE(file.data() + kMinorOffset, 2));
   dataOffset = data.offset;
 
-  std::vector<VariantEntry> variantEntries;
   if (!decodeSection(file, meta, error, [&](ByteReader& in) { decodeMetadata(in, compilerVersion, material); }) ||
-      !decodeSection(file, vars, error, [&](ByteReader& in) { decodeVariantTable(in, variantEntries); }) ||
+      !decodeSection(file, vars, error, [&](ByteReader& in) { decodeVariantTable(in, variants); }) ||
       !decodeSection(file, table, error, [&](ByteReader& in) { decodeBlobTable(in, data.size, minor, entries); }))
     return false;
-  std::vector<TextureEntry> textureEntries;
   if (texs && !decodeSection(file, *texs, error, [&](ByteReader& in) {
-        decodeTextureTable(in, variantEntries.size(), entries, textureEntries);
+        decodeTextureTable(in, variants.size(), entries, textures);
       }))
     return false;
   if (mslb) {
@@ -300,28 +298,21 @@ bool PackageReader::State::parse(std::string& error) {
       return false;
     }
     if (!decodeSection(file, *prsh, error, [&](ByteReader& in) {
-          decodePreshader(in, variantEntries.size(), preshader);
+          decodePreshader(in, variants.size(), preshader);
         }))
       return false;
   }
 
-  variants.reserve(variantEntries.size());
-  for (VariantEntry& v : variantEntries) {
-    VariantInfo& info = variants.emplace_back();
+  for (const VariantInfo& v : variants) {
     for (uint32_t s = 0; s < v.shaders.size(); ++s) {
-      const ShaderRef& ref = v.shaders[s];
+      const ShaderInfo& ref = v.shaders[s];
       if (ref.blob >= entries.size()) {
         error = "shader " + std::to_string(s) + " of variant '" + v.key + "' refers to blob " +
                 std::to_string(ref.blob) + " but the package has " + std::to_string(entries.size()) + " blobs";
         return false;
       }
-      info.shaders.push_back({ref.stage, ref.target, ref.blob});
     }
-    info.key = std::move(v.key);
   }
-  textures.reserve(textureEntries.size());
-  for (TextureEntry& t : textureEntries)
-    textures.push_back({std::move(t.name), t.width, t.height, t.format, t.blob, std::move(t.variants)});
   blobs.reserve(entries.size());
   for (const BlobEntry& e : entries) blobs.push_back({e.rawSize, e.storedSize, e.codec != Codec::Raw});
   hashChecked.assign(entries.size(), false);

@@ -5,6 +5,7 @@
 
 #include "facet/package_reader.h"
 #include "format.h"
+#include "rows.h"
 
 namespace facet::package {
 
@@ -56,28 +57,16 @@ ReadResult readChecked(std::span<const uint8_t> file) {
   pkg.material = reader->material();
   pkg.mslBindings = reader->mslBindings();
   pkg.preshader = reader->preshader();
-  pkg.variants.resize(variants.size());
+  pkg.variants.reserve(variants.size());
   result.stats.resize(variants.size());
   for (size_t v = 0; v < variants.size(); ++v) {
-    pkg.variants[v].key = variants[v].key;
-    pkg.variants[v].shaders.resize(variants[v].shaders.size());
-    result.stats[v].resize(variants[v].shaders.size());
-    for (size_t s = 0; s < variants[v].shaders.size(); ++s) {
-      const ShaderInfo& ref = variants[v].shaders[s];
-      pkg.variants[v].shaders[s].stage = ref.stage;
-      pkg.variants[v].shaders[s].target = ref.target;
-      result.stats[v][s].rawSize = blobs[ref.blob].rawSize;
-    }
+    pkg.variants.push_back(variantFromRow(variants[v]));
+    for (const ShaderInfo& ref : variants[v].shaders) result.stats[v].push_back({blobs[ref.blob].rawSize, 0});
   }
-  pkg.textures.resize(textures.size());
+  pkg.textures.reserve(textures.size());
   result.textureStats.resize(textures.size());
   for (size_t t = 0; t < textures.size(); ++t) {
-    Texture& out = pkg.textures[t];
-    out.name = textures[t].name;
-    out.width = textures[t].width;
-    out.height = textures[t].height;
-    out.format = textures[t].format;
-    out.variants = textures[t].variants;
+    pkg.textures.push_back(textureFromRow(textures[t]));
     result.textureStats[t].rawSize = blobs[textures[t].blob].rawSize;
   }
 

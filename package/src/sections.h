@@ -19,8 +19,8 @@ void encodeMetadata(ByteWriter& out, const std::string& compilerVersion, const M
 void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& material);
 
 // VARS: variant keys and, per shader, which blob holds its code.
-void encodeVariantTable(ByteWriter& out, const std::vector<VariantEntry>& variants);
-void decodeVariantTable(ByteReader& in, std::vector<VariantEntry>& variants);
+void encodeVariantTable(ByteWriter& out, const std::vector<VariantInfo>& variants);
+void decodeVariantTable(ByteReader& in, std::vector<VariantInfo>& variants);
 
 // BTAB: one fixed-size entry per blob. `dataSize` is the size of BDAT, which the entries must
 // tile exactly.
@@ -30,9 +30,9 @@ void decodeBlobTable(ByteReader& in, uint64_t dataSize, uint16_t minor, std::vec
 
 // TEXS: generated textures. Decoded after VARS and BTAB: every entry's variant indices and blob
 // index are checked against them, and the blob's raw size against the texture's size.
-void encodeTextureTable(ByteWriter& out, const std::vector<TextureEntry>& textures);
+void encodeTextureTable(ByteWriter& out, const std::vector<TextureInfo>& textures);
 void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector<BlobEntry>& blobs,
-                        std::vector<TextureEntry>& textures);
+                        std::vector<TextureInfo>& textures);
 
 // MSLB: the Metal argument slots of the package's MSL (format 1.2). Each slot index within
 // Metal's table for its kind; names GLSL identifiers like texture names.

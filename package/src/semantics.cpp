@@ -10,6 +10,7 @@
 #include <set>
 
 #include "facet/permutations/variant_key.h"
+#include "rows.h"
 
 namespace facet::package {
 namespace {
@@ -142,12 +143,9 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
 }
 
 std::string semanticError(const Package& pkg) {
+  // The rows' blob indices play no part in the checks.
   std::vector<VariantInfo> variants;
-  for (const Variant& v : pkg.variants) {
-    VariantInfo& info = variants.emplace_back();
-    info.key = v.key;
-    for (const Shader& s : v.shaders) info.shaders.push_back({s.stage, s.target, 0});
-  }
+  for (const Variant& v : pkg.variants) variants.push_back(detail::variantRow(v, [](const Shader&) { return 0u; }));
   if (std::string e = semanticError(pkg.material, variants, pkg.preshader, pkg.mslBindings); !e.empty()) return e;
   for (const Variant& v : pkg.variants)
     for (const Shader& s : v.shaders)

@@ -13,9 +13,9 @@ bool isGlslIdentifier(const std::string& s, size_t maxLength) {
   return std::all_of(s.begin(), s.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9'); });
 }
 
-void encodeTextureTable(ByteWriter& out, const std::vector<TextureEntry>& textures) {
+void encodeTextureTable(ByteWriter& out, const std::vector<TextureInfo>& textures) {
   out.u32(uint32_t(textures.size()));
-  for (const TextureEntry& t : textures) {
+  for (const TextureInfo& t : textures) {
     out.string(t.name);
     out.u32(t.width);
     out.u32(t.height);
@@ -29,12 +29,12 @@ void encodeTextureTable(ByteWriter& out, const std::vector<TextureEntry>& textur
 }
 
 void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector<BlobEntry>& blobs,
-                        std::vector<TextureEntry>& textures) {
+                        std::vector<TextureInfo>& textures) {
   uint32_t count = in.count(kMinTextureSize, "texture count");
   textures.reserve(count);
   for (uint32_t i = 0; i < count && in.ok(); ++i) {
     const uint64_t at = in.position();
-    TextureEntry t;
+    TextureInfo t;
     t.name = in.string("texture name");
     t.width = in.u32();
     t.height = in.u32();
@@ -47,7 +47,7 @@ void decodeTextureTable(ByteReader& in, uint64_t variantCount, const std::vector
     if (!isGlslIdentifier(t.name, kMaxTextureNameLength))
       return in.fail(what + " has name '" + t.name + "', not an identifier of 1.." +
                      std::to_string(kMaxTextureNameLength) + " letters, digits and '_'");
-    for (const TextureEntry& earlier : textures)
+    for (const TextureInfo& earlier : textures)
       if (earlier.name == t.name) return in.fail(what + " repeats the name '" + t.name + "'");
     if (t.width == 0 || t.height == 0 || t.width > kMaxTextureSide || t.height > kMaxTextureSide)
       return in.fail(what + " '" + t.name + "' is " + std::to_string(t.width) + "x" + std::to_string(t.height) +

@@ -3,12 +3,12 @@
 
 namespace facet::package::detail {
 
-void encodeVariantTable(ByteWriter& out, const std::vector<VariantEntry>& variants) {
+void encodeVariantTable(ByteWriter& out, const std::vector<VariantInfo>& variants) {
   out.u32(uint32_t(variants.size()));
-  for (const VariantEntry& v : variants) {
+  for (const VariantInfo& v : variants) {
     out.string(v.key);
     out.u32(uint32_t(v.shaders.size()));
-    for (const ShaderRef& s : v.shaders) {
+    for (const ShaderInfo& s : v.shaders) {
       out.u8(uint8_t(s.stage));
       out.u8(uint8_t(s.target));
       out.u16(0);
@@ -17,13 +17,13 @@ void encodeVariantTable(ByteWriter& out, const std::vector<VariantEntry>& varian
   }
 }
 
-void decodeVariantTable(ByteReader& in, std::vector<VariantEntry>& variants) {
+void decodeVariantTable(ByteReader& in, std::vector<VariantInfo>& variants) {
   uint32_t count = in.count(kMinVariantSize, "variant count");
   variants.reserve(count);
   for (uint32_t i = 0; i < count && in.ok(); ++i) {
-    VariantEntry v;
+    VariantInfo v;
     v.key = in.string("variant key");
-    uint32_t shaders = in.count(kShaderRefSize, "shader count");
+    uint32_t shaders = in.count(kShaderInfoSize, "shader count");
     v.shaders.reserve(shaders);
     for (uint32_t j = 0; j < shaders && in.ok(); ++j) {
       uint64_t at = in.position();

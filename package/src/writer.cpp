@@ -8,6 +8,7 @@
 #include "byte_io.h"
 #include "checksum.h"
 #include "format.h"
+#include "rows.h"
 #include "sections.h"
 
 namespace facet::package {
@@ -83,17 +84,13 @@ std::vector<uint8_t> chooseDictionary(const BlobDeduplicator& blobs) {
 
 std::vector<uint8_t> write(const Package& pkg) {
   BlobDeduplicator blobs;
-  std::vector<VariantEntry> variants;
+  std::vector<VariantInfo> variants;
   variants.reserve(pkg.variants.size());
-  for (const Variant& v : pkg.variants) {
-    VariantEntry entry{v.key, {}};
-    for (const Shader& s : v.shaders) entry.shaders.push_back({s.stage, s.target, blobs.add(s.code, shaderKind(s))});
-    variants.push_back(std::move(entry));
-  }
+  for (const Variant& v : pkg.variants)
+    variants.push_back(variantRow(v, [&](const Shader& s) { return blobs.add(s.code, shaderKind(s)); }));
   // Texture blobs follow every shader's, so a package without textures is unchanged.
-  std::vector<TextureEntry> textures;
-  for (const Texture& t : pkg.textures)
-    textures.push_back({t.name, t.width, t.height, t.format, blobs.add(t.texels, kTextureKind), t.variants});
+  std::vector<TextureInfo> textures;
+  for (const Texture& t : pkg.textures) textures.push_back(textureRow(t, blobs.add(t.texels, kTextureKind)));
   // The dictionary is one more blob, after every other (or an existing blob of equal bytes).
   const std::vector<uint8_t> dictionaryBytes = chooseDictionary(blobs);
   const size_t shaderAndTextureBlobs = blobs.size();

@@ -134,7 +134,7 @@ def samples(data, gpu):
         measure = TARGETS[gpu][0]
         measured = frag["cycles"] if measure == "cycles" else frag["raw"][measure]
         out.append((name.split("/")[0], name, features(v["op_counts"]["fragment"]), measured,
-                    v["spirv_cost"]["fragment"].get("mobileCostCycles")))
+                    v["spirv_cost"]["fragment"].get("cycles")))
     return out
 
 

@@ -1,56 +1,35 @@
-"""A Facet package's own GLSL ES 3.00 shaders and static cost counts, read with `matc info`
+"""A Facet package's own GLSL ES 3.00 shaders and static cost figures, read with `matc info`
 (the package is the contract: what the runtime would hand the GL driver is what is measured)."""
 
+import json
 import os
 import subprocess
 
-# `matc info` static cost table header -> the InstructionCounts field it prints
-# (compiler/include/facet/compiler/mobile_cost.h); the data files keep them under "spirv_cost".
-COST_COLUMNS = {
-    "alu": "aluOps",
-    "scalar": "scalarAluOps",
-    "transc": "transcendentalOps",
-    "div": "divisions",
-    "tex": "textureSamples",
-    "varyings": "varyingComponents",
-    "mediump": "relaxedPercent",
-    "cycles": "mobileCostCycles",  # the mobile cost model's estimate, where matc prints it
-}
 
-
-def parse_cost_table(text):
-    """{variant: {stage: {InstructionCounts field: number}}} from `matc info`'s static cost table (its
-    title may span lines; the header row starts with "variant stage")."""
-    lines = text.splitlines()
-    try:
-        start = next(i for i, l in enumerate(lines) if l.startswith("static cost"))
-        head = next(i for i in range(start + 1, len(lines)) if lines[i].split()[:2] == ["variant", "stage"])
-    except StopIteration:
-        raise RuntimeError("matc info printed no static cost table")
-    header = lines[head].split()
-    unknown = [h for h in header[2:] if h not in COST_COLUMNS]
-    if unknown:
-        raise RuntimeError("unknown cost table column(s) %s in %r" % (", ".join(unknown), lines[head]))
+def read_costs(info):
+    """{variant: {stage: {figure: number}}} from `matc info --json`'s document: each variant's
+    "costs", under the cost model's figure names (compiler/cost_figures.h; docs/build-integration.md).
+    The data files keep them under "spirv_cost"."""
     costs = {}
-    for line in lines[head + 1:]:
-        if not line.startswith("  "):
-            break
-        cells = line.split()
-        if len(cells) != len(header):
-            raise RuntimeError("unreadable cost table row: %r" % line)
-        row = {}
-        for name, cell in zip(header[2:], cells[2:]):
-            row[COST_COLUMNS[name]] = float(cell.rstrip("%")) if cell.endswith("%") or "." in cell else int(cell)
-        costs.setdefault(cells[0], {})[cells[1]] = row
+    for variant in info.get("variants", []):
+        key = variant.get("key")
+        if "costs" not in variant:
+            raise RuntimeError("matc info --json gives variant %s no costs (a matc from before it did)" % key)
+        for stage, figures in variant["costs"].items():
+            if "error" in figures:
+                raise RuntimeError("matc has no cost figures for %s %s: %s" % (key, stage, figures["error"]))
+        costs[key] = variant["costs"]
+    if not costs:
+        raise RuntimeError("matc info --json lists no variants")
     return costs
 
 
 def package_pairs(matc, pkg, work, variants=None):
     """Writes each variant's GLSL ES vertex and fragment shader from the package into `work`;
-    returns ([{"name": variant, "vertex": path, "fragment": path}], cost table). `variants`
+    returns ([{"name": variant, "vertex": path, "fragment": path}], cost figures). `variants`
     limits the variants (default: all the package has)."""
-    info = subprocess.run([matc, "info", pkg], check=True, capture_output=True, text=True).stdout
-    costs = parse_cost_table(info)
+    info = subprocess.run([matc, "info", pkg, "--json"], check=True, capture_output=True, text=True).stdout
+    costs = read_costs(json.loads(info))
     keys = list(costs) if variants is None else variants
     missing = [k for k in keys if k not in costs]
     if missing:

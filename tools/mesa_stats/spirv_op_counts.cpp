@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "facet/compiler/mobile_cost.h"
+#include "facet/compiler/cost_figures.h"
 #include "facet/package.h"
 
 namespace {
@@ -27,9 +27,13 @@ using namespace facet;
 ordered_json countsJson(const compiler::OpClassCounts& c) {
   ordered_json j;
   for (size_t k = 0; k < compiler::kOpClassCount; ++k) j[compiler::toString(compiler::OpClass(k))] = c.ops[k];
-  j["fma_relaxed"] = c.fmaRelaxed;
-  j["varyings"] = c.varyingComponents;
-  j["varyings_relaxed"] = c.varyingComponentsRelaxed;
+  compiler::StageFigures stage;
+  stage.mobile.counts = c;
+  using F = compiler::Figure;
+  for (F f : {F::FmaRelaxed, F::FragmentVaryings, F::FragmentVaryingsRelaxed}) {
+    const compiler::CostFigure& figure = compiler::costFigure(f);
+    j[figure.name] = compiler::figureJson<ordered_json>(figure, stage);
+  }
   return j;
 }
 

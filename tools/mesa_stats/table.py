@@ -43,7 +43,7 @@ def main(argv):
         print("| %s | %.2f | %.2f | %.2f / %.2f / %.2f / %.2f | %d | %d (%d) | %d | %d / %d | %d / %d / %d / %d |" % (
             name, g52["cycles"], g57["cycles"], p["fma"], p["cvt"], p["sfu"], p["t"], g57["instructions"],
             a6["instructions"], a6["raw"]["non-nops"], a6["categories"]["cat4"], a6["registers"]["full"],
-            a6["waves"], c["scalarAluOps"], c["transcendentalOps"], c["divisions"], c["textureSamples"]))
+            a6["waves"], c["scalar_alu"], c["transcendental"], c["divisions"], c["textures"]))
     return 0
 
 

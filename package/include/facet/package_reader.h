@@ -21,6 +21,10 @@
 
 namespace facet::package {
 
+// The rows of the variant and texture tables as sections VARS and TEXS store them (code and
+// texels by blob index); package.h's Shader, Variant and Texture hold the bytes instead
+// (package/src/rows.h converts one into the other).
+
 // One shader of a variant, before its code is decoded. `blob` indexes PackageReader::blobs();
 // shaders with equal code share one blob (and one decoded copy).
 struct ShaderInfo {

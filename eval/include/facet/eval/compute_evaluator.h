@@ -3,9 +3,11 @@
 //
 // One compute shader per call: `#version 310 es`, the given default float precision, the chunk
 // sources in order, then a body that reads `vec4 in0, in1` and writes `vec4 result`, once per
-// input. Compiled with glslang, run on its own Vulkan 1.1 instance and device. With
-// FACET_VK_VALIDATION=1 the Khronos validation layer is enabled and any validation error fails
-// the call.
+// input. Compiled with glslang, run on a Vulkan 1.1 device set up by the runtime's own Vulkan
+// context (runtime/vulkan/vk_context.h: the instance, device choice and validation layers the
+// Vulkan backend uses), a device of its own or the app's. With FACET_VK_VALIDATION set (as the
+// runtime reads it) the Khronos validation layer, synchronization validation included, is enabled
+// and any validation error fails the call.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +17,10 @@
 #include <vector>
 
 #include <glm/vec4.hpp>
+
+namespace facet::runtime {
+struct AppDevice;  // facet/vulkan_backend.h
+}
 
 namespace facet::eval {
 
@@ -51,9 +57,14 @@ struct GpuEvalResult {
 
 class GpuEvaluator {
  public:
-  // Creates the instance and device; check ready(). Validation: the Khronos layer on, any error
-  // fails the call (also on when FACET_VK_VALIDATION=1).
+  // Creates an instance and device as the Vulkan backend does; check ready(). Validation: the
+  // Khronos layer on, any error fails the call (also on with FACET_VK_VALIDATION).
   explicit GpuEvaluator(bool validation = false);
+  // Runs on the app's instance, device and queue (as createVulkanBackend(AppDevice) does: the
+  // queue family must also run compute work; the device must outlive the evaluator, which
+  // destroys none of it). Validation is the app's instance's business: its layers report to the
+  // app's messenger, not to GpuEvalResult::error.
+  explicit GpuEvaluator(const runtime::AppDevice& device);
   ~GpuEvaluator();
   GpuEvaluator(const GpuEvaluator&) = delete;
   GpuEvaluator& operator=(const GpuEvaluator&) = delete;

@@ -6,10 +6,11 @@
 
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
-#include "facet/compiler/mobile_cost.h"
+#include "facet/compiler/cost_figures.h"
 #include "facet/compiler/spirv_interface.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/diagnostics.h"
@@ -18,12 +19,9 @@
 
 namespace facet::lint {
 
-struct StageFigures {
-  compiler::MobileStageCost mobile;  // the mobile cost model (estimated cycles), as `matc eval` reports it
-  // The stage's instruction counts, from the same walk of its SPIR-V as the model's op classes.
-  const compiler::InstructionCounts& instructions() const { return mobile.counts.instructions; }
-  compiler::StageInterface interface;
-};
+// The mobile cost model's estimate (as `matc eval` reports it), the instruction counts of the
+// same walk of the SPIR-V, and the stage's interface.
+using StageFigures = compiler::StageFigures;
 
 struct VariantFigures {
   std::string key;  // e.g. "high.dir1"
@@ -61,9 +59,11 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
 void lintVariant(const std::string& material, const VariantFigures& figures, const LintOptions& options,
                  std::vector<ir::Diagnostic>* diagnostics);
 
-// The figures a baseline records for a variant stage, by name, in a stable order.
+// The figures budgets and baselines may use (names in compiler/cost_figures.h), in a stable order.
+std::span<const compiler::Figure> baselineFigures();
+// Their values for a variant stage, by name, in that order, as reports print them (reportedValue).
 std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& stage);
-// Their names, in the same order: the names budgets and baselines may use.
+// Their names, in the same order.
 std::vector<std::string> figureNames();
 
 }  // namespace facet::lint
