@@ -5,8 +5,9 @@
 # Components, one export file each, all in namespace Facet::
 #   (always)  matc                  FacetTargets.cmake
 #   core      runtime_core          materials, instances, frame description, IBL, PNG; with what it
-#                                   links: package, ibl, ibl_embedded_dfg, shader_abi (headers),
-#                                   permutations (variant keys, linked by package)
+#                                   links: package, package_checks, ibl, ibl_embedded_dfg,
+#                                   shader_abi (headers), permutations (variant keys, linked by
+#                                   package)
 #   vulkan    runtime_vulkan        the Vulkan backend (createVulkanBackend, vulkan_backend.h)
 #   gl        runtime_gl            the GL backend (createGlBackend)
 #   gltf      runtime_gltf          glTF meshes (tinygltf; links scene: its JSON reader, path rule)
@@ -19,8 +20,8 @@ set(FACET_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Facet)
 set(FACET_COMPONENTS core vulkan gl gltf scene)
 # facet_warnings: linked PRIVATE by every library, so an exported link-only entry; its flags are
 # BUILD_INTERFACE only, so the exported target is empty.
-set(FACET_COMPONENT_TARGETS_core facet_warnings facet_shader_abi facet_permutations facet_package facet_ibl
-    facet_ibl_embedded_dfg facet_runtime_core)
+set(FACET_COMPONENT_TARGETS_core facet_warnings facet_shader_abi facet_permutations facet_package
+    facet_package_checks facet_ibl facet_ibl_embedded_dfg facet_runtime_core)
 set(FACET_COMPONENT_TARGETS_vulkan facet_runtime_vulkan)
 set(FACET_COMPONENT_TARGETS_gl facet_runtime_gl)
 set(FACET_COMPONENT_TARGETS_gltf facet_runtime_gltf)
@@ -29,7 +30,7 @@ set(FACET_COMPONENT_TARGETS_scene facet_scene)
 # Public headers per component, as they sit under include/facet/ in the source tree. Only these
 # are installed; a header listed here that includes one not installed fails the consumer test
 # (tests/consumer_project.cmake compiles every installed header).
-set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h program_interface.h render_backend.h
+set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h
     render_path.h texture_checks.h runtime/environment.h runtime/exposure.h runtime/image_texture.h runtime/material.h
     runtime/material_instance.h runtime/mesh.h runtime/png.h runtime/preshader.h runtime/color_grading.h
     runtime/vignette.h
@@ -85,7 +86,7 @@ function(facet_component_dependencies component out)
 endfunction()
 
 # The public headers are C++20 (std::span, defaulted comparisons): an app compiles them as such.
-foreach(target facet_shader_abi facet_package facet_ibl facet_runtime_core)
+foreach(target facet_shader_abi facet_package facet_package_checks facet_ibl facet_runtime_core)
   target_compile_features(${target} INTERFACE cxx_std_20)
 endforeach()
 
@@ -93,6 +94,7 @@ set_target_properties(facet_warnings PROPERTIES EXPORT_NAME warnings)
 set_target_properties(facet_shader_abi PROPERTIES EXPORT_NAME shader_abi)
 set_target_properties(facet_permutations PROPERTIES EXPORT_NAME permutations)
 set_target_properties(facet_package PROPERTIES EXPORT_NAME package)
+set_target_properties(facet_package_checks PROPERTIES EXPORT_NAME package_checks)
 set_target_properties(facet_ibl PROPERTIES EXPORT_NAME ibl)
 set_target_properties(facet_ibl_embedded_dfg PROPERTIES EXPORT_NAME ibl_embedded_dfg)
 set_target_properties(facet_runtime_core PROPERTIES EXPORT_NAME runtime_core)
@@ -121,7 +123,8 @@ foreach(component IN LISTS FACET_COMPONENTS)
   facet_component_dependencies(${component} deps)
   string(APPEND FACET_CONFIG_COMPONENT_DEPENDENCIES "set(_facet_dependencies_${component} \"${deps}\")\n")
 endforeach()
-# Every header of the libraries the core exports is public (package reader, IBL maths, the ABI).
+# Every header of the libraries the core exports is public (package reader and checks, IBL maths,
+# the ABI).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/abi/include/ ${PROJECT_SOURCE_DIR}/ibl/include/
                   ${PROJECT_SOURCE_DIR}/package/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -8,7 +8,7 @@
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
-#include "facet/runtime/material.h"
+#include "facet/package_checks.h"
 #include "facet/runtime/scene.h"
 #include "scene_keys.h"
 
@@ -238,15 +238,16 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
   return 1;
 }
 
-// What an app loading the package would be told, by the runtime's own checks (one implementation:
-// LoadedMaterial::load for the tables and the format, program() on every variant for the code:
-// SPIR-V validation, stages, interfaces), none of which needs a GPU; "" when every variant loads.
-// The GLSL ES text is checked by a GL driver only, so not here.
+// What an app loading the package would be told, by the loader's own checks (one implementation,
+// facet/package_checks.h: loadError for the tables and the format, checkVariant on every variant
+// for the code: SPIR-V validation, stages, interfaces), none of which needs a GPU; "" when every
+// variant loads. The GLSL ES text is checked by a GL driver only, so not here.
 std::string runtimeRefusal(const std::string& path) {
   std::string error;
-  auto loaded = runtime::LoadedMaterial::load(path, &error);
-  if (!loaded) return error.rfind(path + ": ", 0) == 0 ? error.substr(path.size() + 2) : error;
-  return loaded->checkEveryVariant(&error) ? "" : error;
+  std::optional<package::PackageReader> reader = package::PackageReader::openFile(path, &error);
+  if (!reader) return error;
+  if (std::string why = package::loadError(*reader); !why.empty()) return why;
+  return package::checkEveryVariant(*reader, &error) ? "" : error;
 }
 
 int describe(const package::ReadResult& r, const InfoArgs& args) {
