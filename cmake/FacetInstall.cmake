@@ -1,6 +1,6 @@
-# `cmake --install`: matc, the runtime an app embeds, its public headers and the CMake package
-# that finds them (FacetConfig.cmake.in). Included from the top-level CMakeLists.txt once every
-# target exists.
+# `cmake --install`: matc (and facet-eval, which `matc eval` runs), the runtime an app embeds, its
+# public headers and the CMake package that finds them (FacetConfig.cmake.in). Included from the
+# top-level CMakeLists.txt once every target exists.
 #
 # Components, one export file each, all in namespace Facet::
 #   (always)  matc                  FacetTargets.cmake
@@ -107,6 +107,8 @@ set_target_properties(facet_scene_types PROPERTIES EXPORT_NAME scene_types)
 set_target_properties(facet_scene PROPERTIES EXPORT_NAME scene)
 
 install(TARGETS matc EXPORT FacetTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# `matc eval` runs the facet-eval beside it (matc/run_facet_eval.cpp): a program, not an export.
+install(TARGETS facet-eval RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT FacetTargets NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
 
 set(FACET_CONFIG_COMPONENT_DEPENDENCIES "")

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "commands.h"
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 
@@ -14,7 +13,15 @@ namespace facet::matc {
 
 namespace fs = std::filesystem;
 
-void printError(const std::string& message) { std::fprintf(stderr, "matc: error: %s\n", message.c_str()); }
+namespace {
+std::string programName = "matc";
+}  // namespace
+
+void printError(const std::string& message) {
+  std::fprintf(stderr, "%s: error: %s\n", programName.c_str(), message.c_str());
+}
+
+void setProgramName(const std::string& name) { programName = name; }
 
 bool readSource(const std::string& path, ir::SourceFile* out) {
   std::error_code ec;

@@ -1,5 +1,6 @@
 // Inputs every matc command reads the same way (material files, --tiers lists), and how it
-// reports a material that does not compile.
+// reports errors and a material that does not compile. matc and facet-eval (`matc eval`) share
+// them (facet_matc_cli).
 #pragma once
 
 #include <optional>
@@ -11,6 +12,11 @@
 #include "facet/permutations/variant_key.h"
 
 namespace facet::matc {
+
+// Prints "<program>: error: <message>" to stderr: "matc: error: ..." unless setProgramName says
+// otherwise (facet-eval run on its own: "facet-eval: error: ...").
+void printError(const std::string& message);
+void setProgramName(const std::string& name);
 
 // Reads a material file, refusing non-regular files and files over the language's size limit
 // before reading them. Prints the error and returns false on failure.

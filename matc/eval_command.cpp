@@ -1,8 +1,9 @@
 // matc eval: wiring only; the evaluation lives in eval/ (facet_eval), docs/eval.md.
+#include "eval_command.h"
+
 #include <cstdio>
 #include <filesystem>
 
-#include "commands.h"
 #include "facet/eval/evaluate.h"
 #include "facet/eval/report.h"
 #include "facet/gpu_stats/report.h"

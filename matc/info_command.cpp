@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_inputs.h"
 #include "commands.h"
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"

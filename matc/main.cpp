@@ -5,6 +5,7 @@
 #include <string>
 
 #include "commands.h"
+#include "eval_command.h"
 #include "facet/atomic_file.h"
 
 namespace {
@@ -95,23 +96,10 @@ int main(int argc, char** argv) {
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
   facet::matc::addPostOptions(postCmd, &post);
-  facet::matc::EvalArgs eval;
-  CLI::App* evalCmd = app.add_subcommand(
-      "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
-  evalCmd->add_option("input", eval.input, "material source (.mat)")->required();
-  evalCmd->add_option("--scene", eval.scene, "scene JSON to render instead of the built-in evaluation grid");
-  evalCmd->add_option("--out", eval.out, "folder for report.md, report.json, plot.svg and images/ (default: <input stem>.eval)");
-  evalCmd->add_option("--tiers", eval.tiers, "tiers to measure, with their swaps (reference is always measured)")
-      ->delimiter(',');
-  evalCmd->add_option("--frames", eval.frames, "timed frames per view on lavapipe (median; 0: no timing)")
-      ->check(CLI::Range(0, 1000));
-  evalCmd->add_option("--sphere-pixels", eval.spherePixels, "grid: pixels per sphere (default 64)")->check(CLI::Range(8, 512));
-  evalCmd->add_option("--gpu", eval.gpu, "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");
-  evalCmd->add_option("--mesa-prefix", eval.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
-  evalCmd->add_flag("--no-swaps", eval.noSwaps, "measure the tiers as shipped only, not their single-option swaps");
-  evalCmd->add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
-  evalCmd->add_flag("--fp16-emulation", eval.fp16Emulation,
-                    "build mediump SPIR-V with every result rounded to binary16 (docs/fp16-emulation.md)");
+  // Everything after `eval` is facet-eval's, --help included: it parses and checks the options.
+  CLI::App* evalCmd = app.add_subcommand("eval", facet::matc::kEvalSummary);
+  evalCmd->prefix_command();
+  evalCmd->set_help_flag();
 
   try {
     app.parse(argc, argv);
@@ -127,6 +115,6 @@ int main(int argc, char** argv) {
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
   if (lintCmd->parsed()) return facet::matc::lintCommand(lint);
   if (postCmd->parsed()) return facet::matc::postCommand(post);
-  if (evalCmd->parsed()) return facet::matc::evalCommand(eval);
+  if (evalCmd->parsed()) return facet::matc::runFacetEval(argv[0], evalCmd->remaining());
   return 2;
 }

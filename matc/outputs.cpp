@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "commands.h"
+#include "cli_inputs.h"
 
 namespace facet::matc {
 namespace {

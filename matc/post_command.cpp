@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli_inputs.h"
 #include "commands.h"
 #include "outputs.h"
 #include "facet/compiler/post.h"
