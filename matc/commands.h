@@ -9,10 +9,6 @@
 #include "facet/compiler/build.h"
 #include "facet/permutations/variant_key.h"
 
-namespace CLI {
-class App;
-}
-
 namespace facet::matc {
 
 struct CompileArgs {
@@ -65,8 +61,6 @@ struct PostArgs {
   bool vignette = false;
   bool everyVariant = false;       // every combination of effects (what the runtime embeds)
 };
-// The options of `matc post`, shared with facet_post_compiler (the same command, built alone).
-void addPostOptions(CLI::App* command, PostArgs* args);
 int postCommand(const PostArgs& args);
 
 // matc eval: runs facet-eval, the program that links the renderer (eval_main.cpp), with `args`,

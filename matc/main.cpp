@@ -95,7 +95,18 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--mesa-prefix", lint.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
-  facet::matc::addPostOptions(postCmd, &post);
+  postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
+  postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
+  postCmd
+      ->add_option("--tone-curve", post.toneCurve,
+                   "aces (filmic, default) | neutral (Khronos PBR Neutral: keeps hue below its knee) | none (HDR "
+                   "clamped to [0, 1])")
+      ->check(CLI::IsMember({"aces", "neutral", "none"}));
+  postCmd->add_flag("--dither", post.dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
+  postCmd->add_flag("--grading", post.grading, "grade the encoded colour through a 3D LUT (the frame gives the LUT)");
+  postCmd->add_flag("--vignette", post.vignette, "darken the corners (the frame gives the vignette's uniforms)");
+  postCmd->add_flag("--every-variant", post.everyVariant,
+                    "build every combination of effects into the C++ source (the runtime's build does)");
   // Everything after `eval` is facet-eval's, --help included: it parses and checks the options.
   CLI::App* evalCmd = app.add_subcommand("eval", facet::matc::kEvalSummary);
   evalCmd->prefix_command();

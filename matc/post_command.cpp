@@ -1,6 +1,5 @@
 // matc post: the runtime's post pass, compiled by the compiler's post domain and written as C++
-// source the runtime builds in (runtime/CMakeLists.txt runs this at build time).
-#include <CLI/CLI.hpp>
+// source the runtime builds in (runtime/CMakeLists.txt runs `matc post` at build time).
 #include <cstdio>
 #include <filesystem>
 
@@ -11,21 +10,6 @@
 #include "facet/package.h"
 
 namespace facet::matc {
-
-void addPostOptions(CLI::App* command, PostArgs* args) {
-  command->add_option("--cpp", args->cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
-  command->add_option("--emit-source", args->emitSource, "also write every generated shader source to this folder");
-  command
-      ->add_option("--tone-curve", args->toneCurve,
-                   "aces (filmic, default) | neutral (Khronos PBR Neutral: keeps hue below its knee) | none (HDR "
-                   "clamped to [0, 1])")
-      ->check(CLI::IsMember({"aces", "neutral", "none"}));
-  command->add_flag("--dither", args->dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
-  command->add_flag("--grading", args->grading, "grade the encoded colour through a 3D LUT (the frame gives the LUT)");
-  command->add_flag("--vignette", args->vignette, "darken the corners (the frame gives the vignette's uniforms)");
-  command->add_flag("--every-variant", args->everyVariant,
-                    "build every combination of effects into the C++ source (the runtime's build does)");
-}
 
 int postCommand(const PostArgs& args) {
   compiler::PostEffects chosen;
