@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 #include "commands.h"
 #include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/spirv_tools_backend.h"
@@ -206,12 +206,12 @@ int printShader(const package::Package& pkg, const InfoArgs& args) {
       }
       return 0;
     }
-    printError("variant '" + args.variant + "' has no " + args.stage + " shader for target " + args.target);
+    cli::printError("variant '" + args.variant + "' has no " + args.stage + " shader for target " + args.target);
     return 1;
   }
   std::string keys;
   for (const package::Variant& v : pkg.variants) keys += (keys.empty() ? "" : ", ") + v.key;
-  printError("package has no variant '" + args.variant + "' (it has: " + keys + ")");
+  cli::printError("package has no variant '" + args.variant + "' (it has: " + keys + ")");
   return 1;
 }
 
@@ -226,7 +226,7 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
   }
   auto key = sceneKeyFor(*scene, scenePath, pkg.material.name, pkg.material.shading == "lit", &error);
   if (!key) {
-    printError(error);
+    cli::printError(error);
     return 1;
   }
   bool built = std::any_of(pkg.variants.begin(), pkg.variants.end(),
@@ -235,7 +235,7 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
               scenePath.c_str(), key->toString().c_str(), pkg.variants.size(), pkg.variants.size() == 1 ? "" : "s",
               built ? ", including it" : "");
   if (built) return 0;
-  printError("the package was not built with " + key->toString() + "; compile with --scene " + scenePath);
+  cli::printError("the package was not built with " + key->toString() + "; compile with --scene " + scenePath);
   return 1;
 }
 
@@ -267,7 +267,7 @@ int describe(const package::ReadResult& r, const InfoArgs& args) {
 int infoCommand(const InfoArgs& args) {
   bool wantsShader = !args.variant.empty() || !args.stage.empty() || !args.target.empty();
   if (wantsShader && (args.variant.empty() || args.stage.empty() || args.target.empty())) {
-    printError("to print a shader, give --variant, --stage and --target together");
+    cli::printError("to print a shader, give --variant, --stage and --target together");
     return 2;
   }
   package::ReadResult r = package::readFile(args.input);

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "commands.h"
-#include "eval_command.h"
 #include "facet/atomic_file.h"
 
 namespace {
@@ -107,8 +106,10 @@ int main(int argc, char** argv) {
   postCmd->add_flag("--vignette", post.vignette, "darken the corners (the frame gives the vignette's uniforms)");
   postCmd->add_flag("--every-variant", post.everyVariant,
                     "build every combination of effects into the C++ source (the runtime's build does)");
-  // Everything after `eval` is facet-eval's, --help included: it parses and checks the options.
-  CLI::App* evalCmd = app.add_subcommand("eval", facet::matc::kEvalSummary);
+  // Everything after `eval` is facet-eval's (eval/tool/main.cpp, whose summary this is), --help
+  // included: it parses and checks the options.
+  CLI::App* evalCmd = app.add_subcommand(
+      "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
   evalCmd->prefix_command();
   evalCmd->set_help_flag();
 

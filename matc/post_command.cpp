@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 #include "commands.h"
-#include "outputs.h"
+#include "facet/cli/outputs.h"
 #include "facet/compiler/post.h"
 #include "facet/package.h"
 
@@ -23,13 +23,13 @@ int postCommand(const PostArgs& args) {
   std::string error;
   for (size_t i = 0; i < effects.size(); ++i) {
     if (!compiler::buildPostShaders(effects[i], &variants[i], &error)) {
-      printError(error);
+      cli::printError(error);
       return 1;
     }
   }
   // Every output, checked against the others and written together.
   namespace fs = std::filesystem;
-  std::vector<NamedFile> outputs;
+  std::vector<cli::NamedFile> outputs;
   std::vector<package::OutputFile> files;
   auto add = [&](const char* role, const std::string& path, const std::string& text) {
     outputs.push_back({role, path});
@@ -46,7 +46,7 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
   }
   add("--cpp", args.cpp, compiler::postShadersCpp(variants));
-  if (!outputsSpareInputs({}, outputs) || !writeOutputs({args.emitSource}, files)) return 1;
+  if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
     std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
                 shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());

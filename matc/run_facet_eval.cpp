@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 #include "commands.h"
 
 namespace facet::matc {
@@ -28,15 +28,15 @@ int runFacetEval(const std::string& matc, const std::vector<std::string>& args) 
   const std::string beside = ec ? std::string() : (self.parent_path() / "facet-eval").string();
   if (!beside.empty() && ::access(beside.c_str(), X_OK) == 0) {
     ::execv(beside.c_str(), argv.data());
-    printError("cannot run '" + beside + "': " + std::strerror(errno));
+    cli::printError("cannot run '" + beside + "': " + std::strerror(errno));
     return 1;
   }
   ::execvp("facet-eval", argv.data());
   if (errno != ENOENT) {
-    printError(std::string("cannot run facet-eval: ") + std::strerror(errno));
+    cli::printError(std::string("cannot run facet-eval: ") + std::strerror(errno));
     return 1;
   }
-  printError("matc eval runs facet-eval, which is neither beside matc" +
+  cli::printError("matc eval runs facet-eval, which is neither beside matc" +
              (beside.empty() ? std::string() : " (" + beside + ")") +
              " nor on PATH: build the facet-eval target, or install Facet with it");
   return 1;

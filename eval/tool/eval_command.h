@@ -1,15 +1,11 @@
-// facet-eval's command: `matc eval` (docs/eval.md), in the program of its own that links the
-// renderer (eval_main.cpp).
+// facet-eval's command: `matc eval` (docs/eval.md), in a program of its own (main.cpp) because it
+// links the renderer, which matc must not.
 #pragma once
 
 #include <string>
 #include <vector>
 
-namespace facet::matc {
-
-// What `matc eval` does, as `matc --help` and facet-eval's own help say it.
-inline constexpr const char* kEvalSummary =
-    "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)";
+namespace facet::eval {
 
 struct EvalArgs {
   std::string input;
@@ -21,10 +17,10 @@ struct EvalArgs {
   bool noSwaps = false;    // the tiers as shipped only
   bool validation = false;
   bool fp16Emulation = false;
-  std::string gpu;         // as LintArgs::gpu
+  std::string gpu;         // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
   std::string mesaPrefix;
 };
 // 0 with the report written, 1 for input errors, 2 for usage errors.
 int evalCommand(const EvalArgs& args);
 
-}  // namespace facet::matc
+}  // namespace facet::eval

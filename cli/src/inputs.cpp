@@ -1,4 +1,4 @@
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 
-namespace facet::matc {
+namespace facet::cli {
 
 namespace fs = std::filesystem;
 
@@ -86,4 +86,4 @@ int parseTiers(const std::vector<std::string>& names, std::vector<permutations::
   return 0;
 }
 
-}  // namespace facet::matc
+}  // namespace facet::cli

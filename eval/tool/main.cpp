@@ -1,21 +1,21 @@
 // facet-eval: `matc eval` (docs/eval.md) as a program of its own, so that matc links no renderer.
-// matc runs it (run_facet_eval.cpp) as "<matc> eval": its usage and its messages then read as
+// matc runs it (matc/run_facet_eval.cpp) as "<matc> eval": its usage and its messages then read as
 // matc's, and `matc eval`'s options and exit codes are these.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <string_view>
 
-#include "cli_inputs.h"
 #include "eval_command.h"
 #include "facet/atomic_file.h"
+#include "facet/cli/inputs.h"
 
 int main(int argc, char** argv) {
   // Ctrl-C during the report's write leaves no temporary file behind.
   facet::removeTemporaryFilesOnSignals();
   // Run by matc as "<matc> eval", it speaks as matc ("matc: error: ..."); run on its own, as itself.
-  facet::matc::setProgramName(std::string_view(argv[0]).ends_with(" eval") ? "matc" : "facet-eval");
-  CLI::App app{facet::matc::kEvalSummary};
-  facet::matc::EvalArgs eval;
+  facet::cli::setProgramName(std::string_view(argv[0]).ends_with(" eval") ? "matc" : "facet-eval");
+  CLI::App app{"render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)"};
+  facet::eval::EvalArgs eval;
   app.add_option("input", eval.input, "material source (.mat)")->required();
   app.add_option("--scene", eval.scene, "scene JSON to render instead of the built-in evaluation grid");
   app.add_option("--out", eval.out, "folder for report.md, report.json, plot.svg and images/ (default: <input stem>.eval)");
@@ -36,5 +36,5 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
-  return facet::matc::evalCommand(eval);
+  return facet::eval::evalCommand(eval);
 }
