@@ -2,10 +2,12 @@
 // happens in the ir, compiler and package libraries.
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "commands.h"
 #include "facet/atomic_file.h"
+#include "facet/cli/command_line.h"
 
 namespace {
 
@@ -113,16 +115,7 @@ int main(int argc, char** argv) {
   evalCmd->prefix_command();
   evalCmd->set_help_flag();
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
   if (lintCmd->parsed()) return facet::matc::lintCommand(lint);

@@ -2,11 +2,13 @@
 // matc runs it (matc/run_facet_eval.cpp) as "<matc> eval": its usage and its messages then read as
 // matc's, and `matc eval`'s options and exit codes are these.
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "eval_command.h"
 #include "facet/atomic_file.h"
+#include "facet/cli/command_line.h"
 #include "facet/cli/inputs.h"
 
 int main(int argc, char** argv) {
@@ -28,13 +30,6 @@ int main(int argc, char** argv) {
   app.add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
   app.add_flag("--fp16-emulation", eval.fp16Emulation,
                "build mediump SPIR-V with every result rounded to binary16 (docs/fp16-emulation.md)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   return facet::eval::evalCommand(eval);
 }
