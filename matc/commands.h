@@ -63,7 +63,7 @@ struct PostArgs {
 };
 int postCommand(const PostArgs& args);
 
-// matc eval: runs facet-eval, the program that links the renderer (eval_main.cpp), with `args`,
+// matc eval: runs facet-eval, the program that links the renderer (eval/tool/), with `args`,
 // the arguments after `eval`; `matc` is the path matc was run as. The process becomes facet-eval,
 // so this returns only when it cannot be run (1, with the error printed).
 int runFacetEval(const std::string& matc, const std::vector<std::string>& args);
