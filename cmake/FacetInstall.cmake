@@ -1,16 +1,18 @@
-# `cmake --install`: matc, the runtime an app embeds, its public headers and the CMake package
-# that finds them (FacetConfig.cmake.in). Included from the top-level CMakeLists.txt once every
-# target exists.
+# `cmake --install`: matc (and facet-eval, which `matc eval` runs), the runtime an app embeds, its
+# public headers and the CMake package that finds them (FacetConfig.cmake.in). Included from the
+# top-level CMakeLists.txt once every target exists.
 #
 # Components, one export file each, all in namespace Facet::
 #   (always)  matc                  FacetTargets.cmake
 #   core      runtime_core          materials, instances, frame description, IBL, PNG; with what it
-#                                   links: package, ibl, ibl_embedded_dfg, shader_abi (headers),
-#                                   permutations (variant keys, linked by package)
+#                                   links: package, package_checks, ibl, ibl_embedded_dfg,
+#                                   shader_abi (headers), permutations (variant keys, linked by
+#                                   package)
 #   vulkan    runtime_vulkan        the Vulkan backend (createVulkanBackend, vulkan_backend.h)
 #   gl        runtime_gl            the GL backend (createGlBackend)
 #   gltf      runtime_gltf          glTF meshes (tinygltf; links scene: its JSON reader, path rule)
 #   scene     scene                 the scene reader (scene.h's parse/load functions; JSON)
+# The scene's types (scene_types: scene.h, post_settings.h) are core's: its frames are made from them.
 # The libraries are static, so their private dependencies (zstd, xxHash, SPIRV-Tools, SPIRV-Cross, ...) are
 # exported as link-only dependencies, and FacetConfig.cmake finds them again in the app's build.
 include(CMakePackageConfigHelpers)
@@ -19,21 +21,22 @@ set(FACET_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Facet)
 set(FACET_COMPONENTS core vulkan gl gltf scene)
 # facet_warnings: linked PRIVATE by every library, so an exported link-only entry; its flags are
 # BUILD_INTERFACE only, so the exported target is empty.
-set(FACET_COMPONENT_TARGETS_core facet_warnings facet_shader_abi facet_permutations facet_package facet_ibl
-    facet_ibl_embedded_dfg facet_runtime_core)
+set(FACET_COMPONENT_TARGETS_core facet_warnings facet_shader_abi facet_permutations facet_package
+    facet_package_checks facet_scene_types facet_ibl facet_ibl_embedded_dfg facet_runtime_core)
 set(FACET_COMPONENT_TARGETS_vulkan facet_runtime_vulkan)
 set(FACET_COMPONENT_TARGETS_gl facet_runtime_gl)
 set(FACET_COMPONENT_TARGETS_gltf facet_runtime_gltf)
 set(FACET_COMPONENT_TARGETS_scene facet_scene)
 
-# Public headers per component, as they sit under include/facet/ in the source tree. Only these
-# are installed; a header listed here that includes one not installed fails the consumer test
-# (tests/consumer_project.cmake compiles every installed header).
-set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h program_interface.h render_backend.h
+# Public headers per component, as they sit under <folder>/include/facet/ in the source tree
+# (runtime/ and scene/). Only these are installed; a header listed here that includes one not
+# installed fails the consumer test (tests/consumer_project.cmake compiles every installed header).
+set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h
     render_path.h texture_checks.h runtime/environment.h runtime/exposure.h runtime/image_texture.h runtime/material.h
     runtime/material_instance.h runtime/mesh.h runtime/png.h runtime/preshader.h runtime/color_grading.h
-    runtime/vignette.h
-    runtime/scene.h)  # the Scene type environment.h takes; its reader is the scene component
+    runtime/vignette.h)
+# The Scene type environment.h takes and the post settings; their reader is the scene component.
+set(FACET_SCENE_HEADERS_core runtime/scene.h runtime/post_settings.h)
 set(FACET_RUNTIME_HEADERS_vulkan vulkan_backend.h)
 set(FACET_RUNTIME_HEADERS_gl gl_backend.h)
 set(FACET_RUNTIME_HEADERS_gltf runtime/gltf_mesh.h)
@@ -85,7 +88,7 @@ function(facet_component_dependencies component out)
 endfunction()
 
 # The public headers are C++20 (std::span, defaulted comparisons): an app compiles them as such.
-foreach(target facet_shader_abi facet_package facet_ibl facet_runtime_core)
+foreach(target facet_shader_abi facet_package facet_package_checks facet_scene_types facet_ibl facet_runtime_core)
   target_compile_features(${target} INTERFACE cxx_std_20)
 endforeach()
 
@@ -93,15 +96,19 @@ set_target_properties(facet_warnings PROPERTIES EXPORT_NAME warnings)
 set_target_properties(facet_shader_abi PROPERTIES EXPORT_NAME shader_abi)
 set_target_properties(facet_permutations PROPERTIES EXPORT_NAME permutations)
 set_target_properties(facet_package PROPERTIES EXPORT_NAME package)
+set_target_properties(facet_package_checks PROPERTIES EXPORT_NAME package_checks)
 set_target_properties(facet_ibl PROPERTIES EXPORT_NAME ibl)
 set_target_properties(facet_ibl_embedded_dfg PROPERTIES EXPORT_NAME ibl_embedded_dfg)
 set_target_properties(facet_runtime_core PROPERTIES EXPORT_NAME runtime_core)
 set_target_properties(facet_runtime_vulkan PROPERTIES EXPORT_NAME runtime_vulkan)
 set_target_properties(facet_runtime_gl PROPERTIES EXPORT_NAME runtime_gl)
 set_target_properties(facet_runtime_gltf PROPERTIES EXPORT_NAME runtime_gltf)
+set_target_properties(facet_scene_types PROPERTIES EXPORT_NAME scene_types)
 set_target_properties(facet_scene PROPERTIES EXPORT_NAME scene)
 
 install(TARGETS matc EXPORT FacetTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# `matc eval` runs the facet-eval beside it (matc/run_facet_eval.cpp): a program, not an export.
+install(TARGETS facet-eval RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT FacetTargets NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
 
 set(FACET_CONFIG_COMPONENT_DEPENDENCIES "")
@@ -113,15 +120,19 @@ foreach(component IN LISTS FACET_COMPONENTS)
   install(TARGETS ${FACET_COMPONENT_TARGETS_${component}} EXPORT ${export}
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(EXPORT ${export} NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
-  foreach(header IN LISTS FACET_RUNTIME_HEADERS_${component})
-    get_filename_component(subdir ${header} DIRECTORY)
-    install(FILES ${PROJECT_SOURCE_DIR}/runtime/include/facet/${header}
-            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/facet/${subdir})
+  foreach(folder IN ITEMS runtime scene)
+    string(TOUPPER ${folder} list)
+    foreach(header IN LISTS FACET_${list}_HEADERS_${component})
+      get_filename_component(subdir ${header} DIRECTORY)
+      install(FILES ${PROJECT_SOURCE_DIR}/${folder}/include/facet/${header}
+              DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/facet/${subdir})
+    endforeach()
   endforeach()
   facet_component_dependencies(${component} deps)
   string(APPEND FACET_CONFIG_COMPONENT_DEPENDENCIES "set(_facet_dependencies_${component} \"${deps}\")\n")
 endforeach()
-# Every header of the libraries the core exports is public (package reader, IBL maths, the ABI).
+# Every header of the libraries the core exports is public (package reader and checks, IBL maths,
+# the ABI).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/abi/include/ ${PROJECT_SOURCE_DIR}/ibl/include/
                   ${PROJECT_SOURCE_DIR}/package/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -9,10 +9,6 @@
 #include "facet/compiler/build.h"
 #include "facet/permutations/variant_key.h"
 
-namespace CLI {
-class App;
-}
-
 namespace facet::matc {
 
 struct CompileArgs {
@@ -65,26 +61,11 @@ struct PostArgs {
   bool vignette = false;
   bool everyVariant = false;       // every combination of effects (what the runtime embeds)
 };
-// The options of `matc post`, shared with facet_post_compiler (the same command, built alone).
-void addPostOptions(CLI::App* command, PostArgs* args);
 int postCommand(const PostArgs& args);
 
-struct EvalArgs {
-  std::string input;
-  std::string scene;       // scene file instead of the built-in evaluation grid
-  std::string out;         // default: <input stem>.eval next to the current folder
-  std::vector<std::string> tiers;  // tiers whose configurations are measured; default: all
-  int frames = 5;          // timed frames per view (median); 0: no timing
-  int spherePixels = 64;   // grid: pixels per sphere (the image is columns × rows of these)
-  bool noSwaps = false;    // the tiers as shipped only
-  bool validation = false;
-  bool fp16Emulation = false;
-  std::string gpu;         // as LintArgs::gpu
-  std::string mesaPrefix;
-};
-int evalCommand(const EvalArgs& args);
-
-// Prints "matc: error: <message>" to stderr.
-void printError(const std::string& message);
+// matc eval: runs facet-eval, the program that links the renderer (eval/tool/), with `args`,
+// the arguments after `eval`; `matc` is the path matc was run as. The process becomes facet-eval,
+// so this returns only when it cannot be run (1, with the error printed).
+int runFacetEval(const std::string& matc, const std::vector<std::string>& args);
 
 }  // namespace facet::matc

@@ -7,9 +7,9 @@
 #include <set>
 #include <sstream>
 
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 #include "commands.h"
-#include "outputs.h"
+#include "facet/cli/outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/compiler/library_sources.h"
 #include "facet/ir/check.h"
@@ -65,7 +65,7 @@ std::string defaultCacheDir() {
 
 // Tiers from --tiers, and the variants a --scene manifest asks this material for.
 int buildOptions(const CompileArgs& args, const ir::Material& material, compiler::BuildOptions* options) {
-  if (int status = parseTiers(args.tiers, &options->tiers); status != 0) return status;
+  if (int status = cli::parseTiers(args.tiers, &options->tiers); status != 0) return status;
   options->pointLightCounts = args.pointLights;
   if (args.scene.empty()) return 0;
   std::string error;
@@ -76,11 +76,11 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   }
   auto key = sceneKeyFor(*scene, args.scene, material.name, material.shading == "lit", &error);
   if (!key) {
-    printError(error);
+    cli::printError(error);
     return 1;
   }
   if (std::find(options->tiers.begin(), options->tiers.end(), key->tier) == options->tiers.end()) {
-    printError(args.scene + ": the scene asks for tier '" + scene->tier + "', which this build does not include");
+    cli::printError(args.scene + ": the scene asks for tier '" + scene->tier + "', which this build does not include");
     return 1;
   }
   options->scene = permutations::SceneNeeds{{*key}};
@@ -92,13 +92,13 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
 int compileCommand(const CompileArgs& args) {
   std::string output = args.output;
   if (output.empty()) output = fs::path(args.input).replace_extension(".matpkg").string();
-  std::vector<NamedFile> inputs{{"the input material", args.input}};
+  std::vector<cli::NamedFile> inputs{{"the input material", args.input}};
   if (!args.scene.empty()) inputs.push_back({"the --scene file", args.scene});
-  std::vector<NamedFile> outputs{{args.output.empty() ? "no -o: the input with .matpkg" : "-o", output}};
+  std::vector<cli::NamedFile> outputs{{args.output.empty() ? "no -o: the input with .matpkg" : "-o", output}};
   if (!args.depfile.empty()) outputs.push_back({"--depfile", args.depfile});
-  if (!outputsSpareInputs(inputs, outputs)) return 1;
+  if (!cli::outputsSpareInputs(inputs, outputs)) return 1;
   ir::SourceFile source;
-  std::optional<ir::Material> material = loadMaterial(args.input, &source);
+  std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
   if (!material) return 1;
 
   compiler::BuildOptions options;
@@ -120,7 +120,7 @@ int compileCommand(const CompileArgs& args) {
     std::string error;
     if (!options.cacheDir.empty() && !compiler::prepareVariantCache(options.cacheDir, &error)) {
       if (!args.cacheDir.empty()) {
-        printError("--cache: " + error);
+        cli::printError("--cache: " + error);
         return 2;
       }
       std::fprintf(stderr, "matc: warning: building without the variant cache: %s\n", error.c_str());
@@ -133,7 +133,7 @@ int compileCommand(const CompileArgs& args) {
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*material, options, &buildError);
   if (progressLine) std::fputs("\r\033[K", stderr);
   if (!built) {
-    printBuildError(source, buildError.message, buildError.loc);
+    cli::printBuildError(source, buildError.message, buildError.loc);
     return 1;
   }
   if (built->cacheRejected > 0)
@@ -151,7 +151,7 @@ int compileCommand(const CompileArgs& args) {
     outputs.push_back({"--emit-source", (fs::path(args.emitSource) / f.name).string()});
     files.push_back({outputs.back().path, bytesOf(f.text)});
   }
-  if (!outputsSpareInputs(inputs, outputs) || !writeOutputs({args.emitSource}, files)) return 1;
+  if (!cli::outputsSpareInputs(inputs, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   size_t variants = built->package.variants.size();
   std::string forScene;
   if (options.scene) {

@@ -4,11 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "facet/cli/inputs.h"
 #include "commands.h"
 #include "facet/compiler/cost_figures.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package.h"
-#include "facet/runtime/material.h"
+#include "facet/package_checks.h"
 #include "facet/runtime/scene.h"
 #include "scene_keys.h"
 
@@ -235,12 +236,12 @@ int printShader(const package::Package& pkg, const InfoArgs& args) {
       }
       return 0;
     }
-    printError("variant '" + args.variant + "' has no " + args.stage + " shader for target " + args.target);
+    cli::printError("variant '" + args.variant + "' has no " + args.stage + " shader for target " + args.target);
     return 1;
   }
   std::string keys;
   for (const package::Variant& v : pkg.variants) keys += (keys.empty() ? "" : ", ") + v.key;
-  printError("package has no variant '" + args.variant + "' (it has: " + keys + ")");
+  cli::printError("package has no variant '" + args.variant + "' (it has: " + keys + ")");
   return 1;
 }
 
@@ -255,7 +256,7 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
   }
   auto key = sceneKeyFor(*scene, scenePath, pkg.material.name, pkg.material.shading == "lit", &error);
   if (!key) {
-    printError(error);
+    cli::printError(error);
     return 1;
   }
   bool built = std::any_of(pkg.variants.begin(), pkg.variants.end(),
@@ -264,19 +265,20 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
               scenePath.c_str(), key->toString().c_str(), pkg.variants.size(), pkg.variants.size() == 1 ? "" : "s",
               built ? ", including it" : "");
   if (built) return 0;
-  printError("the package was not built with " + key->toString() + "; compile with --scene " + scenePath);
+  cli::printError("the package was not built with " + key->toString() + "; compile with --scene " + scenePath);
   return 1;
 }
 
-// What an app loading the package would be told, by the runtime's own checks (one implementation:
-// LoadedMaterial::load for the tables and the format, program() on every variant for the code:
-// SPIR-V validation, stages, interfaces), none of which needs a GPU; "" when every variant loads.
-// The GLSL ES text is checked by a GL driver only, so not here.
+// What an app loading the package would be told, by the loader's own checks (one implementation,
+// facet/package_checks.h: loadError for the tables and the format, checkVariant on every variant
+// for the code: SPIR-V validation, stages, interfaces), none of which needs a GPU; "" when every
+// variant loads. The GLSL ES text is checked by a GL driver only, so not here.
 std::string runtimeRefusal(const std::string& path) {
   std::string error;
-  auto loaded = runtime::LoadedMaterial::load(path, &error);
-  if (!loaded) return error.rfind(path + ": ", 0) == 0 ? error.substr(path.size() + 2) : error;
-  return loaded->checkEveryVariant(&error) ? "" : error;
+  std::optional<package::PackageReader> reader = package::PackageReader::openFile(path, &error);
+  if (!reader) return error;
+  if (std::string why = package::loadError(*reader); !why.empty()) return why;
+  return package::checkEveryVariant(*reader, &error) ? "" : error;
 }
 
 int describe(const package::ReadResult& r, const InfoArgs& args) {
@@ -295,7 +297,7 @@ int describe(const package::ReadResult& r, const InfoArgs& args) {
 int infoCommand(const InfoArgs& args) {
   bool wantsShader = !args.variant.empty() || !args.stage.empty() || !args.target.empty();
   if (wantsShader && (args.variant.empty() || args.stage.empty() || args.target.empty())) {
-    printError("to print a shader, give --variant, --stage and --target together");
+    cli::printError("to print a shader, give --variant, --stage and --target together");
     return 2;
   }
   package::ReadResult r = package::readFile(args.input);

@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 #include "commands.h"
-#include "outputs.h"
+#include "facet/cli/outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/lint/report.h"
@@ -29,11 +29,11 @@ bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::strin
     for (const auto& entry : fs::directory_iterator(input, ec))
       if (entry.path().extension() == ".mat" && entry.is_regular_file(ec)) found.push_back(entry.path().string());
     if (ec) {
-      printError("cannot list '" + input + "': " + ec.message());
+      cli::printError("cannot list '" + input + "': " + ec.message());
       return false;
     }
     if (found.empty()) {
-      printError("'" + input + "' holds no .mat files");
+      cli::printError("'" + input + "' holds no .mat files");
       return false;
     }
     std::sort(found.begin(), found.end());
@@ -46,7 +46,7 @@ std::vector<uint8_t> bytesOf(const std::string& text) { return {text.begin(), te
 
 bool readJsonFile(const std::string& path, std::string* text) {
   ir::SourceFile file;  // the same size and regular-file checks as materials
-  if (!readSource(path, &file)) return false;
+  if (!cli::readSource(path, &file)) return false;
   *text = std::move(file.text);
   return true;
 }
@@ -55,32 +55,32 @@ bool readJsonFile(const std::string& path, std::string* text) {
 
 int lintCommand(const LintArgs& args) {
   lint::LintOptions options;
-  if (int status = parseTiers(args.tiers, &options.tiers); status != 0) return status;
+  if (int status = cli::parseTiers(args.tiers, &options.tiers); status != 0) return status;
   options.pointLightCounts = args.pointLights;
   options.baselineTolerance = args.tolerancePercent / 100.0;
   if (!args.gpu.empty()) {
     std::string error;
     if (!gpu_stats::parseGpuList(args.gpu, &options.gpus, &error)) {
-      printError("--gpu: " + error);
+      cli::printError("--gpu: " + error);
       return 2;
     }
     options.mesaTool.prefix = args.mesaPrefix;
   }
   if (args.updateBaseline && args.baseline.empty()) {
-    printError("--update-baseline needs --baseline FILE: the file to write");
+    cli::printError("--update-baseline needs --baseline FILE: the file to write");
     return 2;
   }
 
   std::vector<std::string> files;
   if (!expandInputs(args.inputs, &files)) return 1;
-  std::vector<NamedFile> inputs, outputs;
+  std::vector<cli::NamedFile> inputs, outputs;
   for (const std::string& path : files) inputs.push_back({"the input material", path});
   if (!args.config.empty()) inputs.push_back({"the --config file", args.config});
   if (!args.output.empty()) outputs.push_back({"-o", args.output});
   // --update-baseline reads the baseline and writes it again: then it is an output, and only that.
   if (args.updateBaseline) outputs.push_back({"--baseline with --update-baseline", args.baseline});
   else if (!args.baseline.empty()) inputs.push_back({"the --baseline file", args.baseline});
-  if (!outputsSpareInputs(inputs, outputs)) return 1;
+  if (!cli::outputsSpareInputs(inputs, outputs)) return 1;
 
   std::optional<lint::Budgets> budgets;
   if (!args.config.empty()) {
@@ -103,7 +103,7 @@ int lintCommand(const LintArgs& args) {
       return 1;
     }
   } else if (!args.baseline.empty() && !args.updateBaseline) {
-    printError("baseline '" + args.baseline + "' does not exist; create it with --update-baseline");
+    cli::printError("baseline '" + args.baseline + "' does not exist; create it with --update-baseline");
     return 1;
   }
   // While rewriting the baseline, its old figures are not held against the new ones.
@@ -112,7 +112,7 @@ int lintCommand(const LintArgs& args) {
   std::vector<lint::LintedFile> linted;
   for (const std::string& path : files) {
     lint::LintedFile f;
-    if (!readSource(path, &f.file)) return 1;
+    if (!cli::readSource(path, &f.file)) return 1;
     f.result = lint::lintMaterial(f.file, options);
     linted.push_back(std::move(f));
   }
@@ -136,7 +136,7 @@ int lintCommand(const LintArgs& args) {
     }
     written.push_back({args.baseline, bytesOf(lint::writeBaseline(updated))});
   }
-  if (!writeOutputs({}, written)) return 1;
+  if (!cli::writeOutputs({}, written)) return 1;
   if (args.updateBaseline) std::fprintf(stderr, "matc lint: wrote baseline %s\n", args.baseline.c_str());
 
   bool failed = false;

@@ -2,10 +2,12 @@
 // happens in the ir, compiler and package libraries.
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "commands.h"
 #include "facet/atomic_file.h"
+#include "facet/cli/command_line.h"
 
 namespace {
 
@@ -94,39 +96,30 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--mesa-prefix", lint.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
-  facet::matc::addPostOptions(postCmd, &post);
-  facet::matc::EvalArgs eval;
+  postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
+  postCmd->add_option("--emit-source", post.emitSource, "also write every generated shader source to this folder");
+  postCmd
+      ->add_option("--tone-curve", post.toneCurve,
+                   "aces (filmic, default) | neutral (Khronos PBR Neutral: keeps hue below its knee) | none (HDR "
+                   "clamped to [0, 1])")
+      ->check(CLI::IsMember({"aces", "neutral", "none"}));
+  postCmd->add_flag("--dither", post.dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
+  postCmd->add_flag("--grading", post.grading, "grade the encoded colour through a 3D LUT (the frame gives the LUT)");
+  postCmd->add_flag("--vignette", post.vignette, "darken the corners (the frame gives the vignette's uniforms)");
+  postCmd->add_flag("--every-variant", post.everyVariant,
+                    "build every combination of effects into the C++ source (the runtime's build does)");
+  // Everything after `eval` is facet-eval's (eval/tool/main.cpp, whose summary this is), --help
+  // included: it parses and checks the options.
   CLI::App* evalCmd = app.add_subcommand(
       "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
-  evalCmd->add_option("input", eval.input, "material source (.mat)")->required();
-  evalCmd->add_option("--scene", eval.scene, "scene JSON to render instead of the built-in evaluation grid");
-  evalCmd->add_option("--out", eval.out, "folder for report.md, report.json, plot.svg and images/ (default: <input stem>.eval)");
-  evalCmd->add_option("--tiers", eval.tiers, "tiers to measure, with their swaps (reference is always measured)")
-      ->delimiter(',');
-  evalCmd->add_option("--frames", eval.frames, "timed frames per view on lavapipe (median; 0: no timing)")
-      ->check(CLI::Range(0, 1000));
-  evalCmd->add_option("--sphere-pixels", eval.spherePixels, "grid: pixels per sphere (default 64)")->check(CLI::Range(8, 512));
-  evalCmd->add_option("--gpu", eval.gpu, "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");
-  evalCmd->add_option("--mesa-prefix", eval.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
-  evalCmd->add_flag("--no-swaps", eval.noSwaps, "measure the tiers as shipped only, not their single-option swaps");
-  evalCmd->add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
-  evalCmd->add_flag("--fp16-emulation", eval.fp16Emulation,
-                    "build mediump SPIR-V with every result rounded to binary16 (docs/fp16-emulation.md)");
+  evalCmd->prefix_command();
+  evalCmd->set_help_flag();
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
   if (lintCmd->parsed()) return facet::matc::lintCommand(lint);
   if (postCmd->parsed()) return facet::matc::postCommand(post);
-  if (evalCmd->parsed()) return facet::matc::evalCommand(eval);
+  if (evalCmd->parsed()) return facet::matc::runFacetEval(argv[0], evalCmd->remaining());
   return 2;
 }

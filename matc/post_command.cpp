@@ -1,30 +1,15 @@
 // matc post: the runtime's post pass, compiled by the compiler's post domain and written as C++
-// source the runtime builds in (runtime/CMakeLists.txt runs this at build time).
-#include <CLI/CLI.hpp>
+// source the runtime builds in (runtime/CMakeLists.txt runs `matc post` at build time).
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/cli/inputs.h"
 #include "commands.h"
-#include "outputs.h"
+#include "facet/cli/outputs.h"
 #include "facet/compiler/post.h"
 #include "facet/package.h"
 
 namespace facet::matc {
-
-void addPostOptions(CLI::App* command, PostArgs* args) {
-  command->add_option("--cpp", args->cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
-  command->add_option("--emit-source", args->emitSource, "also write every generated shader source to this folder");
-  command
-      ->add_option("--tone-curve", args->toneCurve,
-                   "aces (filmic, default) | neutral (Khronos PBR Neutral: keeps hue below its knee) | none (HDR "
-                   "clamped to [0, 1])")
-      ->check(CLI::IsMember({"aces", "neutral", "none"}));
-  command->add_flag("--dither", args->dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
-  command->add_flag("--grading", args->grading, "grade the encoded colour through a 3D LUT (the frame gives the LUT)");
-  command->add_flag("--vignette", args->vignette, "darken the corners (the frame gives the vignette's uniforms)");
-  command->add_flag("--every-variant", args->everyVariant,
-                    "build every combination of effects into the C++ source (the runtime's build does)");
-}
 
 int postCommand(const PostArgs& args) {
   compiler::PostEffects chosen;
@@ -38,13 +23,13 @@ int postCommand(const PostArgs& args) {
   std::string error;
   for (size_t i = 0; i < effects.size(); ++i) {
     if (!compiler::buildPostShaders(effects[i], &variants[i], &error)) {
-      printError(error);
+      cli::printError(error);
       return 1;
     }
   }
   // Every output, checked against the others and written together.
   namespace fs = std::filesystem;
-  std::vector<NamedFile> outputs;
+  std::vector<cli::NamedFile> outputs;
   std::vector<package::OutputFile> files;
   auto add = [&](const char* role, const std::string& path, const std::string& text) {
     outputs.push_back({role, path});
@@ -61,7 +46,7 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
   }
   add("--cpp", args.cpp, compiler::postShadersCpp(variants));
-  if (!outputsSpareInputs({}, outputs) || !writeOutputs({args.emitSource}, files)) return 1;
+  if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
     std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
                 shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());

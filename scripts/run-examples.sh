@@ -14,7 +14,7 @@ bash scripts/setup-deps.sh
 
 jobs=$(nproc)
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF
-cmake --build build/release --parallel "$jobs" --target matc facet-view facet-app-example facet-app-gl-example
+cmake --build build/release --parallel "$jobs" --target matc facet-eval facet-view facet-app-example facet-app-gl-example
 
 packages=build/examples/packages
 images=build/examples/images

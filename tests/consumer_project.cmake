@@ -1,7 +1,8 @@
 # ConsumerProject test (cmake -P): installs this build's Facet package to a prefix, configures
 # examples/consumer against it with find_package(Facet COMPONENTS vulkan), builds it, and checks
-# the install (runtime libraries, headers, one export file per component), that every installed
-# header compiles from the prefix (no private header included), the depfile-driven rebuilds
+# the install (runtime libraries, headers, one export file per component; the installed `matc eval`
+# runs the installed facet-eval), that every installed header compiles from the prefix (no private
+# header included), the depfile-driven rebuilds
 # (nothing to do when nothing changed; touching one material rebuilds only its package), and
 # runs the consumer's program: it lists both packages and renders one frame with the runtime on
 # lavapipe (FACET_VK_VALIDATION from the test's environment: a validation error fails it).
@@ -20,18 +21,24 @@ endfunction()
 file(REMOVE_RECURSE ${WORK})
 set(ENV{XDG_CACHE_HOME} ${WORK}/cache)  # matc's variant cache stays in the scratch folder
 run(${CMAKE_COMMAND} --install ${FACET_BINARY_DIR} --prefix ${WORK}/install)
-foreach(f bin/matc lib/cmake/Facet/FacetConfig.cmake lib/cmake/Facet/FacetMaterials.cmake
+foreach(f bin/matc bin/facet-eval lib/cmake/Facet/FacetConfig.cmake lib/cmake/Facet/FacetMaterials.cmake
         lib/cmake/Facet/FacetCoreTargets.cmake lib/cmake/Facet/FacetVulkanTargets.cmake
         lib/cmake/Facet/FacetGlTargets.cmake lib/cmake/Facet/FacetGltfTargets.cmake
         lib/cmake/Facet/FacetSceneTargets.cmake
         lib/libfacet_runtime_core.a lib/libfacet_runtime_vulkan.a lib/libfacet_runtime_gl.a
-        lib/libfacet_runtime_gltf.a lib/libfacet_package.a
-        include/facet/render_backend.h include/facet/vulkan_backend.h include/facet/runtime/material.h
+        lib/libfacet_runtime_gltf.a lib/libfacet_package.a lib/libfacet_package_checks.a
+        include/facet/package_checks.h include/facet/runtime/scene.h include/facet/render_backend.h include/facet/vulkan_backend.h include/facet/runtime/material.h
         include/facet/package_reader.h include/facet/shader_abi.h include/facet/ibl/dfg_lut.h)
   if(NOT EXISTS ${WORK}/install/${f})
     message(FATAL_ERROR "install did not produce ${f}")
   endif()
 endforeach()
+
+# The installed matc runs the installed facet-eval beside it for `matc eval`.
+run(${WORK}/install/bin/matc eval --help)
+if(NOT out MATCHES "Usage: ${WORK}/install/bin/matc eval \\[OPTIONS\\] input")
+  message(FATAL_ERROR "the installed matc eval did not run the installed facet-eval:\n${out}")
+endif()
 
 # The consumer and its materials are copied, so touching them leaves the source tree alone.
 file(COPY ${FACET_SOURCE_DIR}/examples/consumer/CMakeLists.txt ${FACET_SOURCE_DIR}/examples/consumer/main.cpp

@@ -608,3 +608,36 @@ TEST(MatcCli, EvalWritesItsReportOrFailsClearly) {
   EXPECT_EQ(run(kMatc + " eval " + red + " --frames -1").exitCode, 2);
   EXPECT_EQ(run(kMatc + " eval").exitCode, 2);
 }
+
+// matc links no renderer: `matc eval` runs facet-eval, the one beside matc's own executable, else
+// PATH's, and says where it looked when there is neither (exit 1). Run by matc, facet-eval's usage
+// and messages are matc's; run on its own, its own.
+TEST(MatcCli, EvalRunsFacetEvalBesideMatcOrOnPath) {
+  const std::string dir = fs::canonical(facet::test::scratchDir("cli-eval-program")).string();
+  const std::string alone = dir + "/matc";  // a matc with no facet-eval beside it
+  fs::copy_file(kMatc, alone);
+  const std::string built = fs::path(kMatc).parent_path().string();  // where the build put both
+  const std::string red = facet::test::examplePath("materials/red_plastic.mat");
+
+  auto absent = run("PATH=/usr/bin:/bin " + alone + " eval " + red);
+  EXPECT_EQ(absent.exitCode, 1);
+  EXPECT_NE(absent.err.find("matc: error: matc eval runs facet-eval, which is neither beside matc (" + dir +
+                            "/facet-eval) nor on PATH"),
+            std::string::npos)
+      << absent.err;
+
+  auto onPath = run("PATH=" + built + ":/usr/bin:/bin " + alone + " eval --help");
+  EXPECT_EQ(onPath.exitCode, 0) << onPath.err;
+  EXPECT_NE(onPath.out.find("Usage: " + alone + " eval [OPTIONS] input"), std::string::npos) << onPath.out;
+  EXPECT_NE(onPath.out.find("--sphere-pixels"), std::string::npos) << onPath.out;
+  auto usage = run("PATH=" + built + ":/usr/bin:/bin " + alone + " eval " + red + " --tiers ultra");
+  EXPECT_EQ(usage.exitCode, 2);
+  EXPECT_NE(usage.err.find("matc: error: unknown tier 'ultra'"), std::string::npos) << usage.err;
+
+  auto beside = run(kMatc + " eval " + dir + "/nope.mat");
+  EXPECT_EQ(beside.exitCode, 1);
+  EXPECT_NE(beside.err.find("matc: error: cannot read '" + dir + "/nope.mat'"), std::string::npos) << beside.err;
+  auto itself = run(built + "/facet-eval " + dir + "/nope.mat");
+  EXPECT_EQ(itself.exitCode, 1);
+  EXPECT_NE(itself.err.find("facet-eval: error: cannot read '" + dir + "/nope.mat'"), std::string::npos) << itself.err;
+}

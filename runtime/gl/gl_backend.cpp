@@ -470,7 +470,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
     return &found->second;
   }
   std::optional<gl::LinkedProgram> linked = gl::buildProgram(program.vertexGlslEs, program.fragmentGlslEs, error);
-  const ProgramInterface* declared = program.interface ? &*program.interface : nullptr;
+  const package::ProgramInterface* declared = program.interface ? &*program.interface : nullptr;
   if (!linked) {
     if (declared && error) *error = "material '" + declared->material + "' variant " + declared->variant + ": " + *error;
     return nullptr;
@@ -478,7 +478,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   // A package's GLSL ES is code the app did not build: its reflection against what the draws bind
   // (the same check the core ran on its SPIR-V; the linker has matched the stages already).
   if (declared) {
-    const std::string why = interfaceError(*declared, gl::reflectProgram(linked->program.id(), context_->resourceQueries()), false);
+    const std::string why = package::interfaceError(*declared, gl::reflectProgram(linked->program.id(), context_->resourceQueries()), false);
     if (!why.empty()) {
       if (error) *error = why;
       return nullptr;

@@ -6,6 +6,14 @@
 namespace facet::runtime::gl {
 namespace {
 
+using package::ReflectedBlock;
+using package::ReflectedMember;
+using package::ReflectedStage;
+using package::ReflectedVariable;
+using package::SamplerShape;
+using package::ScalarKind;
+using package::ValueType;
+
 // Numeric GL types; everything else (samplers, images) is ScalarKind::Other.
 ValueType valueType(GLenum type, GLint size, const std::string& name) {
   ValueType t;

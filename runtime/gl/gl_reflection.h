@@ -15,6 +15,6 @@ namespace facet::runtime::gl {
 // GL_SAMPLER_CUBE), per stage when the context has program interface queries, else in one entry
 // with no stage; the vertex stage's active attributes at their locations. Blocks and samplers are
 // identified by name, as the backend binds them. Stage linkage is the GL linker's.
-std::vector<ReflectedStage> reflectProgram(GLuint program, const Context::ResourceQueries& queries);
+std::vector<package::ReflectedStage> reflectProgram(GLuint program, const Context::ResourceQueries& queries);
 
 }  // namespace facet::runtime::gl

@@ -9,6 +9,7 @@
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
+#include "facet/runtime/color_grading.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/exposure.h"
@@ -16,6 +17,7 @@
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/vignette.h"
 
 namespace facet::runtime {
 namespace {

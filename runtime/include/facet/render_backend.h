@@ -67,7 +67,7 @@ struct ShaderProgram {
   // What the variant's draws bind, when the code came from a package (LoadedMaterial::program,
   // which checked the SPIR-V against it): the GL backend checks the linked program's reflection
   // against it before the program's first draw. Absent for an app's own shaders.
-  std::optional<ProgramInterface> interface;
+  std::optional<package::ProgramInterface> interface;
 };
 
 // How a draw's colour combines with the HDR target. Transparent and Additive shaders output

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "facet/frame_graph.h"
+#include "facet/runtime/post_settings.h"
 
 namespace facet::runtime {
 
@@ -30,16 +31,6 @@ enum class HdrFormat {
 };
 const char* toString(HdrFormat format);  // "rgba16f", "r11g11b10f"
 uint32_t bytesPerPixel(HdrFormat format);
-
-// The effects a backend's post pass runs: a post variant compiled in at build time (compiler/post.h
-// PostEffects, docs/runtime.md). Per renderer, not per frame: a pipeline is built for it once.
-struct PostSettings {
-  std::string toneCurve = "aces";  // "aces" (filmic) | "neutral" (Khronos PBR Neutral) | "none"
-  bool dither = false;             // triangular noise of ±1 step before 8-bit quantisation
-  bool colorGrading = false;       // the encoded colour through FrameDesc::colorLut (3D LUT)
-  bool vignette = false;           // darker corners, from FrameDesc::postUniforms
-  bool operator==(const PostSettings&) const = default;
-};
 
 struct ForwardPostGraph {
   fg::FrameGraph graph;

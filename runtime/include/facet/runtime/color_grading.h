@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "facet/render_backend.h"
+#include "facet/runtime/post_settings.h"
 
 namespace facet::runtime {
 
@@ -23,26 +24,6 @@ struct ColorLut {
   std::array<float, 3> domainMin{0, 0, 0};
   std::array<float, 3> domainMax{1, 1, 1};
   std::string title;
-};
-
-// The grading a scene asks for, applied in this order to the display-referred linear colour (the
-// LUT decodes its sRGB input first and encodes its output again):
-struct ColorGradingSettings {
-  // White balance, each in [−1, 1], 0 neutral. The scene's white is taken to be a chromaticity on
-  // the daylight locus shifted by `temperature` (> 0: a bluer white, so the image warms) and off it
-  // by `tint` (> 0: a greener white, so the image turns magenta), and adapted to D65 by a von
-  // Kries scaling in the Bradford cone space (K. M. Lam, 1985; the CAT of ICC v4 and CIECAM97s).
-  double temperature = 0;
-  double tint = 0;
-  // Lift / gamma / gain per channel (ASC-style primary correction on linear values):
-  // c = gain · (c + lift · (1 − c)), then c^(1 / gamma).
-  std::array<double, 3> lift{0, 0, 0};
-  std::array<double, 3> gamma{1, 1, 1};
-  std::array<double, 3> gain{1, 1, 1};
-  // Contrast around middle grey in log space: c = 0.18 · (c / 0.18)^contrast (1 neutral).
-  double contrast = 1;
-  // Saturation around Rec.709 luminance: c = Y + saturation · (c − Y) (1 neutral, 0 grey).
-  double saturation = 1;
 };
 
 // The LUT of `settings` at `size` lattice points per axis (2..64): identity settings give the

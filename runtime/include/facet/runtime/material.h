@@ -25,8 +25,9 @@ enum class ColorEncoding { Linear, Srgb };
 
 class LoadedMaterial {
  public:
-  // Reads and validates a .matpkg (its tables and meaning; no shader is decompressed until
-  // program() asks for its variant); nullopt with *error on any problem with the file.
+  // Reads and validates a .matpkg (its tables and meaning, package::loadError; no shader is
+  // decompressed until program() asks for its variant); nullopt with *error on any problem with
+  // the file.
   static std::optional<LoadedMaterial> load(const std::string& path, std::string* error);
   // The same from bytes the app owns, which must outlive the LoadedMaterial: shaders stored
   // uncompressed are used in place. `name` prefixes messages as the path does for load().
@@ -39,12 +40,13 @@ class LoadedMaterial {
   // The shaders of one variant, for every API, decompressed on the first request for the
   // variant. A key the package was not built with is an error that lists the keys it has (the
   // compiler builds only what a scene asks for). Each shader's code is checked before any
-  // backend sees it: its kind, SPIR-V validated (SPIRV-Tools) with one entry point of its slot's
-  // stage, and each SPIR-V stage's interface against the package's (program_interface.h); the
-  // program carries that interface, which the GL backend checks its linked program against.
+  // backend sees it (package::checkVariant, facet/package_checks.h): its kind, SPIR-V validated
+  // (SPIRV-Tools) with one entry point of its slot's stage, and each SPIR-V stage's interface
+  // against the package's (program_interface.h); the program carries that interface, which the GL
+  // backend checks its linked program against.
   std::optional<ShaderProgram> program(const std::string& variantKey, std::string* error) const;
-  // program()'s checks on every variant: what `matc info` runs to say whether an app would draw
-  // the package. False with the first variant's error.
+  // program()'s checks on every variant (package::checkEveryVariant, which `matc info` runs to
+  // say whether an app would draw the package). False with the first variant's error.
   bool checkEveryVariant(std::string* error) const;
 
   // The std140 "MaterialParams" bytes: declared defaults, overridden by `values` (by name;
@@ -89,9 +91,6 @@ class LoadedMaterial {
   explicit LoadedMaterial(package::PackageReader reader);
   static std::optional<LoadedMaterial> checked(std::optional<package::PackageReader> reader, const std::string& name,
                                                std::string* error);
-  // What the draws of variants()[variant] bind, from the package's tables.
-  std::optional<ProgramInterface> interfaceOf(size_t variant, std::string* error) const;
-  std::string unknownTextureError(const std::string& variantKey, const std::string& texture) const;
 
   package::PackageReader reader_;
   // Parallel to reader_.textures(), made on first use; unique_ptr so that the Texture pointers

@@ -2,8 +2,8 @@
 // interface against it. A package is code the app did not build: its tables may declare one
 // interface (a 32-byte parameter block, no specular table) while its shaders read another (64
 // bytes, a table at binding 1), and a driver draws anyway, reading past the buffer or an unbound
-// texture. So each shader's interface is reflected — SPIR-V by the runtime core when
-// LoadedMaterial::program() decodes it, a linked GLSL ES program by the GL backend before its first
+// texture. So each shader's interface is reflected — SPIR-V by checkVariant (package_checks.h) when
+// the runtime core decodes a variant, a linked GLSL ES program by the GL backend before its first
 // draw — and compared with the package's here (docs/security.md, "What a package can and cannot do").
 #pragma once
 
@@ -14,7 +14,7 @@
 
 #include "facet/package.h"
 
-namespace facet::runtime {
+namespace facet::package {
 
 // A value as a shader declares it: a block member, a stage input or output.
 enum class ScalarKind : uint8_t { Float, Int, Uint, Bool, Other };
@@ -27,7 +27,7 @@ struct ValueType {
 };
 std::string toString(const ValueType& type);  // "float", "vec3", "ivec2", "mat4", "vec4[9]"
 
-// The interface one variant's draws bind (the package's tables, read by LoadedMaterial).
+// The interface one variant's draws bind (the package's tables, read by variantInterface).
 struct ProgramInterface {
   std::string material;
   std::string variant;
@@ -104,4 +104,4 @@ struct ReflectedStage {
 std::string interfaceError(const ProgramInterface& declared, const std::vector<ReflectedStage>& stages,
                            bool checkLinkage);
 
-}  // namespace facet::runtime
+}  // namespace facet::package

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <memory>
 
-namespace facet::runtime {
+namespace facet::package {
 namespace {
 
 const char* executionModelName(SpvExecutionModel model) {
@@ -196,4 +196,4 @@ bool reflectSpirv(const std::vector<uint32_t>& words, package::Stage stage, Refl
   return true;
 }
 
-}  // namespace facet::runtime
+}  // namespace facet::package

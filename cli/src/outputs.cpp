@@ -1,13 +1,13 @@
-#include "outputs.h"
+#include "facet/cli/outputs.h"
 
 #include <sys/stat.h>
 
 #include <filesystem>
 #include <optional>
 
-#include "commands.h"
+#include "facet/cli/inputs.h"
 
-namespace facet::matc {
+namespace facet::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -87,4 +87,4 @@ bool writeOutputs(const std::vector<std::string>& folders, const std::vector<pac
   return false;
 }
 
-}  // namespace facet::matc
+}  // namespace facet::cli

@@ -1,5 +1,5 @@
 // A package's SPIR-V as the runtime's interface check sees it (program_interface.h), read with
-// SPIRV-Cross's reflection through Debian's C API (libspirv-cross-c-shared): the runtime links none
+// SPIRV-Cross's reflection through Debian's C API (libspirv-cross-c-shared): these checks link none
 // of the compiler, which reads the same library to write the shaders.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 #include "facet/program_interface.h"
 
-namespace facet::runtime {
+namespace facet::package {
 
 // Reflects a module spirv-val has accepted (validateUntrustedSpirv) for the `stage` slot of a
 // package. Its entry points come first: exactly one, of the slot's execution model, named "main"
@@ -20,4 +20,4 @@ namespace facet::runtime {
 // fragment shader ...", "SPIRV-Cross ...") otherwise.
 bool reflectSpirv(const std::vector<uint32_t>& words, package::Stage stage, ReflectedStage* out, std::string* error);
 
-}  // namespace facet::runtime
+}  // namespace facet::package

@@ -1,16 +1,17 @@
-// matc eval: wiring only; the evaluation lives in eval/ (facet_eval), docs/eval.md.
+// matc eval (facet-eval): wiring only; the evaluation lives in facet_eval (eval/src), docs/eval.md.
+#include "eval_command.h"
+
 #include <cstdio>
 #include <filesystem>
 
-#include "commands.h"
+#include "facet/cli/inputs.h"
+#include "facet/cli/outputs.h"
 #include "facet/eval/evaluate.h"
 #include "facet/eval/report.h"
 #include "facet/gpu_stats/report.h"
-#include "cli_inputs.h"
 #include "facet/runtime/scene.h"
-#include "outputs.h"
 
-namespace facet::matc {
+namespace facet::eval {
 
 namespace {
 
@@ -18,9 +19,9 @@ namespace fs = std::filesystem;
 
 // The files a scene makes the evaluation read: the scene, its images, glTF meshes and grading LUT.
 // A scene that does not load names none here; evaluate() reports why.
-std::vector<NamedFile> sceneInputs(const std::string& path) {
+std::vector<cli::NamedFile> sceneInputs(const std::string& path) {
   if (path.empty()) return {};
-  std::vector<NamedFile> files{{"the --scene file", path}};
+  std::vector<cli::NamedFile> files{{"the --scene file", path}};
   std::string ignored;
   std::optional<runtime::Scene> scene = runtime::loadScene(path, &ignored);
   if (!scene) return files;
@@ -38,29 +39,29 @@ std::vector<NamedFile> sceneInputs(const std::string& path) {
 
 int evalCommand(const EvalArgs& args) {
   eval::EvalOptions options;
-  if (int status = parseTiers(args.tiers, &options.tiers); status != 0) return status;
+  if (int status = cli::parseTiers(args.tiers, &options.tiers); status != 0) return status;
   std::vector<std::string> gpus;
   if (!args.gpu.empty()) {
     std::string message;
     if (!gpu_stats::parseGpuList(args.gpu, &gpus, &message)) {
-      printError("--gpu: " + message);
+      cli::printError("--gpu: " + message);
       return 2;
     }
   }
   const std::string outDir = args.out.empty() ? fs::path(args.input).stem().string() + ".eval" : args.out;
-  std::vector<NamedFile> inputs = sceneInputs(args.scene);
+  std::vector<cli::NamedFile> inputs = sceneInputs(args.scene);
   inputs.insert(inputs.begin(), {"the input material", args.input});
   // The report's own names are known now, the images' only after the run: both are checked, the
   // first before the run.
-  std::vector<NamedFile> outputs;
+  std::vector<cli::NamedFile> outputs;
   for (const char* name : {"report.md", "report.json", "plot.svg"}) outputs.push_back({"--out", (fs::path(outDir) / name).string()});
-  if (!outputsSpareInputs(inputs, outputs)) return 1;
+  if (!cli::outputsSpareInputs(inputs, outputs)) return 1;
   ir::SourceFile source;
-  std::optional<ir::Material> material = loadMaterial(args.input, &source);
+  std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
   if (!material) return 1;
   // The folders first, so an --out that cannot be written fails before the run, not after it.
   const std::string imageDir = (fs::path(outDir) / "images").string();
-  if (!writeOutputs({imageDir}, {})) return 1;
+  if (!cli::writeOutputs({imageDir}, {})) return 1;
 
   options.swaps = !args.noSwaps;
   options.sceneFile = args.scene;
@@ -75,7 +76,7 @@ int evalCommand(const EvalArgs& args) {
   eval::EvalError error;
   std::optional<eval::EvalReport> report = eval::evaluate(*material, options, &error);
   if (!report) {
-    printBuildError(source, error.message, error.loc);
+    cli::printBuildError(source, error.message, error.loc);
     return 1;
   }
   if (!gpus.empty()) {
@@ -87,10 +88,10 @@ int evalCommand(const EvalArgs& args) {
   const std::vector<package::OutputFile> files = eval::reportFiles(*report, outDir);
   outputs.clear();
   for (const package::OutputFile& f : files) outputs.push_back({"--out", f.path});
-  if (!outputsSpareInputs(inputs, outputs) || !writeOutputs({imageDir}, files)) return 1;
+  if (!cli::outputsSpareInputs(inputs, outputs) || !cli::writeOutputs({imageDir}, files)) return 1;
   std::printf("%s: %zu configurations -> %s/report.md, report.json, plot.svg, images/\n", material->name.c_str(),
               report->results.size(), outDir.c_str());
   return 0;
 }
 
-}  // namespace facet::matc
+}  // namespace facet::eval

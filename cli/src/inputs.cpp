@@ -1,4 +1,4 @@
-#include "cli_inputs.h"
+#include "facet/cli/inputs.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,15 +6,22 @@
 #include <fstream>
 #include <sstream>
 
-#include "commands.h"
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
 
-namespace facet::matc {
+namespace facet::cli {
 
 namespace fs = std::filesystem;
 
-void printError(const std::string& message) { std::fprintf(stderr, "matc: error: %s\n", message.c_str()); }
+namespace {
+std::string programName = "matc";
+}  // namespace
+
+void printError(const std::string& message) {
+  std::fprintf(stderr, "%s: error: %s\n", programName.c_str(), message.c_str());
+}
+
+void setProgramName(const std::string& name) { programName = name; }
 
 bool readSource(const std::string& path, ir::SourceFile* out) {
   std::error_code ec;
@@ -79,4 +86,4 @@ int parseTiers(const std::vector<std::string>& names, std::vector<permutations::
   return 0;
 }
 
-}  // namespace facet::matc
+}  // namespace facet::cli

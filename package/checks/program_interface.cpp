@@ -4,7 +4,7 @@
 
 #include "facet/shader_abi.h"
 
-namespace facet::runtime {
+namespace facet::package {
 namespace {
 
 std::string bytes(uint32_t from, uint64_t to) { return "bytes " + std::to_string(from) + ".." + std::to_string(to); }
@@ -233,4 +233,4 @@ std::string interfaceError(const ProgramInterface& declared, const std::vector<R
   return "";
 }
 
-}  // namespace facet::runtime
+}  // namespace facet::package

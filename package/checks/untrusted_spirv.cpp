@@ -2,7 +2,7 @@
 
 #include <spirv-tools/libspirv.hpp>
 
-namespace facet::runtime {
+namespace facet::package {
 
 bool validateUntrustedSpirv(const std::vector<uint32_t>& words, std::string* error) {
   if (words.empty()) {
@@ -19,4 +19,4 @@ bool validateUntrustedSpirv(const std::vector<uint32_t>& words, std::string* err
   return false;
 }
 
-}  // namespace facet::runtime
+}  // namespace facet::package

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-namespace facet::runtime {
+namespace facet::package {
 
 // spirv-val for Vulkan 1.0, as the compiler validated it. False with *error (the validator's
 // first message) otherwise.
 bool validateUntrustedSpirv(const std::vector<uint32_t>& words, std::string* error);
 
-}  // namespace facet::runtime
+}  // namespace facet::package

@@ -10,9 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "facet/render_path.h"
-#include "facet/runtime/color_grading.h"
-#include "facet/runtime/vignette.h"
+#include "facet/runtime/post_settings.h"
 
 namespace facet::runtime {
 

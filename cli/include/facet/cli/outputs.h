@@ -1,6 +1,6 @@
-// The one rule for the files every matc command writes: an output is never one of the command's
-// inputs and never another of its outputs, and its outputs land together. Commands list what
-// they read and write and call these before writing anything.
+// The one rule for the files every command of matc and facet-eval writes: an output is never one
+// of the command's inputs and never another of its outputs, and its outputs land together.
+// Commands list what they read and write and call these before writing anything.
 #pragma once
 
 #include <string>
@@ -8,7 +8,7 @@
 
 #include "facet/package.h"
 
-namespace facet::matc {
+namespace facet::cli {
 
 // A file as the user gave it; `role` names the argument in messages ("-o", "--depfile", "the
 // input material", "the --config file").
@@ -28,4 +28,4 @@ bool outputsSpareInputs(const std::vector<NamedFile>& inputs, const std::vector<
 // printing the error.
 bool writeOutputs(const std::vector<std::string>& folders, const std::vector<package::OutputFile>& files);
 
-}  // namespace facet::matc
+}  // namespace facet::cli

@@ -1,0 +1,45 @@
+// matc eval runs facet-eval, git-style: the evaluation renders on lavapipe, so its program links
+// the runtime, Vulkan and GL, which a build-time compiler must not need (ctest matc_link_weight).
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "facet/cli/inputs.h"
+#include "commands.h"
+
+namespace facet::matc {
+
+int runFacetEval(const std::string& matc, const std::vector<std::string>& args) {
+  namespace fs = std::filesystem;
+  // Its argv[0] names it "<matc> eval", so that its usage and messages read as matc's.
+  std::vector<std::string> words{matc + " eval"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  // First the facet-eval built or installed with this matc (the folder of the executable itself,
+  // whatever path ran it), then PATH's.
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  const std::string beside = ec ? std::string() : (self.parent_path() / "facet-eval").string();
+  if (!beside.empty() && ::access(beside.c_str(), X_OK) == 0) {
+    ::execv(beside.c_str(), argv.data());
+    cli::printError("cannot run '" + beside + "': " + std::strerror(errno));
+    return 1;
+  }
+  ::execvp("facet-eval", argv.data());
+  if (errno != ENOENT) {
+    cli::printError(std::string("cannot run facet-eval: ") + std::strerror(errno));
+    return 1;
+  }
+  cli::printError("matc eval runs facet-eval, which is neither beside matc" +
+             (beside.empty() ? std::string() : " (" + beside + ")") +
+             " nor on PATH: build the facet-eval target, or install Facet with it");
+  return 1;
+}
+
+}  // namespace facet::matc
