@@ -31,9 +31,8 @@ fi
 bash scripts/setup-deps.sh
 
 dir=build/fuzz
-CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DFACET_FUZZ=ON -DFACET_BUILD_TESTS=OFF -DFACET_WERROR=OFF >/dev/null
-cmake --build "$dir" --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_cube fuzz_gltf --parallel "$(nproc)"
+cmake --preset fuzz >/dev/null  # build/fuzz, CMakePresets.json
+cmake --build --preset fuzz --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_cube fuzz_gltf --parallel "$(nproc)"
 mkdir -p "$dir/crashes"
 
 # fuzz <target> <dict or ""> <committed corpus folders...>

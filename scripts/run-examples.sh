@@ -13,8 +13,8 @@ cd "$(dirname "$0")/.."
 bash scripts/setup-deps.sh
 
 jobs=$(nproc)
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF
-cmake --build build/release --parallel "$jobs" --target matc facet-eval facet-view facet-app-example facet-app-gl-example
+cmake --preset release  # build/release, CMakePresets.json
+cmake --build --preset release --parallel "$jobs" --target matc facet-eval facet-view facet-app-example facet-app-gl-example
 
 packages=build/examples/packages
 images=build/examples/images

@@ -15,23 +15,21 @@ cd "$(dirname "$0")/.."
 bash scripts/setup-deps.sh
 bash scripts/check-docs.sh
 
+# The configurations are CMakePresets.json's (build/<preset>): the same ones a developer uses.
 jobs=$(nproc)
 run_suite() {
-  local dir=$1; shift
-  cmake -S . -B "$dir" -G Ninja "$@"
-  cmake --build "$dir" --parallel "$jobs"
-  ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --timeout 300
+  cmake --preset "$1"
+  cmake --build --preset "$1" --parallel "$jobs"
+  ctest --preset "$1" --parallel "$jobs"
 }
 
-run_suite build/test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_WERROR=ON
+run_suite test
 [ "${1:-}" = "--quick" ] && exit 0
 
 # The seed corpus and every past finding already ran in the suite above (test_fuzz_regressions);
 # this explores new inputs for a bounded time, well inside CI's 90-minute limit.
 bash scripts/fuzz.sh "${FACET_FUZZ_SECONDS:-60}"
 
-# Mesa's OSMesa keeps a few hundred bytes per context for the process lifetime; those
-# reports are Mesa's, listed in tests/lsan.supp. Our code gets no suppression.
-export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-run_suite build/asan -DCMAKE_BUILD_TYPE=Debug -DFACET_WERROR=ON -DFACET_SANITIZE=ON
+# The asan test preset sets LSAN_OPTIONS to tests/lsan.supp: Mesa's OSMesa keeps a few hundred
+# bytes per context for the process lifetime; those reports are Mesa's. Our code gets no suppression.
+run_suite asan

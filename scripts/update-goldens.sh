@@ -35,8 +35,8 @@ matc=${1:-}
 cd "$(dirname "$0")/.."
 source scripts/example-packages.sh
 if [ -z "$matc" ]; then
-  cmake -S . -B build/test -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_WERROR=ON >/dev/null
-  cmake --build build/test --target matc
+  cmake --preset test >/dev/null
+  cmake --build --preset test --target matc
   matc=build/test/matc/matc
 fi
 matc=$(realpath "$matc")
