@@ -23,6 +23,8 @@ packages=(
   # fuzzing (scripts/fuzz.sh): clang, its libFuzzer/ASan/UBSan runtimes (libclang_rt.fuzzer),
   # and llvm-symbolizer for readable sanitizer stack traces
   clang libclang-rt-14-dev llvm
+  # the code's layout and naming (scripts/check-format.sh, scripts/check-tidy.sh)
+  clang-format clang-tidy
   # compile-path benchmarks (tests/ target bench_compile, not run by ctest): Google Benchmark,
   # and Filament's matc as the peer it is measured against
   libbenchmark-dev libfilament-tools
