@@ -29,7 +29,7 @@ using eval::GpuEvalRequest;
 
 constexpr double kMediumpMax = 65504.0;           // saturateMediump's ceiling (precision.glsl)
 constexpr double kUlp1 = 1.0 / 16777216.0;          // 2^-24: half an fp32 ulp at 1
-const FloatPrecision kPrecisions[] = {FloatPrecision::kHighp, FloatPrecision::kMediump};
+const FloatPrecision kPrecisions[] = {FloatPrecision::Highp, FloatPrecision::Mediump};
 
 eval::GpuEvaluator& gpu() {
   static eval::GpuEvaluator evaluator;
@@ -286,7 +286,7 @@ TEST(Chunks, SpecularLutMatchesTableSampling) {
       req.in1.push_back({});
     }
   for (double rol : {0.999, 0.9999, 1.0}) req.in0.push_back(glm::vec4(float(rol), 0.089f, 0, 0)), req.in1.push_back({});
-  ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::kSqrt);
+  ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::Sqrt);
   checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
     double rol = std::clamp(double(req.in0[i].x), 0.0, 1.0), r = req.in0[i].y;
     double u = std::pow(rol, 4.0);
@@ -328,7 +328,7 @@ TEST(SpecularLut, LobeAlbedoClosedFormMatchesQuadrature) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
       double x = (i + 0.5) / n, mu = 1.0 - x * x;
-      sum += compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, mu, r) * mu * 2.0 * x / n;
+      sum += compiler::specularLutIntensity(compiler::SpecularLutAxis::ReflectedCosine4, mu, r) * mu * 2.0 * x / n;
     }
     EXPECT_NEAR(compiler::specularLutAlbedo(r), 2.0 * 3.14159265358979323846 * sum, 2e-5) << "r=" << r;
   }
@@ -346,11 +346,11 @@ TEST(SpecularLut, LobeAlbedoClosedFormMatchesQuadrature) {
 //   of e between roughness rows (the last column is the peak, by the mapping).
 TEST(SpecularLut, TableMatchesGgxWithinStatedError) {
   compiler::SpecularLut table = compiler::generateSpecularLut();
-  ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::kSqrt);
+  ASSERT_EQ(table.encoding, compiler::SpecularLutEncoding::Sqrt);
   const double lsb = 1.0 / 255.0;
   auto e = [&](double rol, double r) {
     double rowAlbedo = compiler::specularLutAlbedo(r);
-    return std::sqrt(std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::kReflectedCosine4, rol, r) / (rowAlbedo * table.scale), 1.0));
+    return std::sqrt(std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::ReflectedCosine4, rol, r) / (rowAlbedo * table.scale), 1.0));
   };
   for (uint32_t j = 0; j < table.height; ++j)
     for (uint32_t i = 0; i < table.width; ++i) {
@@ -558,7 +558,7 @@ TEST(PostChunks, TriangularDitherRemovesBandingFromASlowGradient) {
       req.in0.push_back(glm::vec4(float((100.0 + 4.0 * x / kWidth) / 255.0), 0, 0, 0));
       req.in1.push_back(glm::vec4(x + 0.5f, y + 0.5f, 0, 0));
     }
-  req.precision = FloatPrecision::kMediump;
+  req.precision = FloatPrecision::Mediump;
   const auto out = run(req);
   ASSERT_EQ(out.size(), req.in0.size());
   double sum = 0, nearZero = 0;

@@ -122,7 +122,7 @@ std::map<std::string, std::string> relaxedFloatValues(const std::string& text) {
 // Runs a mediump request with the pass applied to glslang's output (and, with `optimized`,
 // spirv-opt -O after it, as matc does); every stage's SPIR-V must pass spirv-val.
 std::vector<glm::vec4> runEmulated(GpuEvalRequest request, bool optimized) {
-  request.precision = FloatPrecision::kMediump;
+  request.precision = FloatPrecision::Mediump;
   request.transformSpirv = [optimized](std::vector<uint32_t>* words, std::string* error) {
     compiler::QuantizeCounts counts;
     if (!compiler::lowerRelaxedToQuantized(words, &counts, error)) return false;
@@ -137,7 +137,7 @@ std::vector<glm::vec4> runEmulated(GpuEvalRequest request, bool optimized) {
 }
 
 std::vector<glm::vec4> runPlain(GpuEvalRequest request) {
-  request.precision = FloatPrecision::kMediump;
+  request.precision = FloatPrecision::Mediump;
   auto result = gpu().run(request);
   EXPECT_TRUE(result.ok()) << result.error;
   return result.values;
@@ -168,7 +168,7 @@ void expectBinary16(const glm::vec4& v, const char* what) {
 
 TEST(Fp16Pass, QuantizesEveryRelaxedFloatResultAndValidates) {
   GpuEvalRequest r;
-  r.precision = FloatPrecision::kMediump;
+  r.precision = FloatPrecision::Mediump;
   r.body = R"(
         vec3 n = normalize(in0.xyz);
         float d = max(dot(n, in1.xyz), 1e-4);
@@ -230,7 +230,7 @@ TEST(Fp16Pass, SpirvOptKeepsTheQuantizes) {
 
   std::string after;
   GpuEvalRequest r = fp16Probe();
-  r.precision = FloatPrecision::kMediump;
+  r.precision = FloatPrecision::Mediump;
   r.transformSpirv = [&](std::vector<uint32_t>* words, std::string* error) {
     compiler::QuantizeCounts counts;
     bool ok = compiler::lowerRelaxedToQuantized(words, &counts, error) && optimize(words, error);

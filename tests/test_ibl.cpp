@@ -60,7 +60,7 @@ TEST(Dfg, VisibleNormalSamplingMatchesTheGridAtGrazingView) {
 
 TEST(Dfg, GgxNormalSamplingReadsTwoPercentHighAtGrazingView) {
   // The pitfall dfg_lut.h documents: h ~ D n·h with 1024 points gives 0.9956 here.
-  DfgTerms t = integrateDfg(1.0 / 64.0, 0.5, 1024, DfgSampling::kGgxNormals);
+  DfgTerms t = integrateDfg(1.0 / 64.0, 0.5, 1024, DfgSampling::GgxNormals);
   EXPECT_GT(t.albedo, 0.99);
 }
 

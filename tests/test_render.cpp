@@ -117,9 +117,9 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
     expected += ambient * (f0 * albedo + (1 - f0) * b) * compensation;
     const float* got = &vulkan_->hdr[(size_t(y) * scene.width + x) * 4];
     for (int ch = 0; ch < 3; ++ch) {
-      double error_ = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
-      worst = std::max(worst, error_);
-      EXPECT_LE(error_, 0.01) << "pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got[ch] << ", CPU "
+      double relative = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
+      worst = std::max(worst, relative);
+      EXPECT_LE(relative, 0.01) << "pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got[ch] << ", CPU "
                               << expected[ch];
     }
     ++checked;

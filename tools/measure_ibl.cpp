@@ -50,11 +50,11 @@ void grazingPoint() {
   ref::DfgByGrid coarse = ref::integrateDfgByGrid(NoV, r, 1024);
   std::printf("| grid 1024 × 2048 (the test's) | — | %.5f | %.5f |\n", coarse.albedo, coarse.fresnelWeighted);
   for (int n : {256, 512, 1024, 2048, 4096}) {
-    DfgTerms t = integrateDfg(NoV, r, n, DfgSampling::kVisibleNormals);
+    DfgTerms t = integrateDfg(NoV, r, n, DfgSampling::VisibleNormals);
     std::printf("| VNDF (Heitz 2018) | %d | %.5f | %.5f |\n", n, t.albedo, t.fresnelWeighted);
   }
   for (int n : {1024, 4096, 65536}) {
-    DfgTerms t = integrateDfg(NoV, r, n, DfgSampling::kGgxNormals);
+    DfgTerms t = integrateDfg(NoV, r, n, DfgSampling::GgxNormals);
     std::printf("| D n·h (Karis 2013) | %d | %.5f | %.5f |\n", n, t.albedo, t.fresnelWeighted);
   }
   std::printf("\n");

@@ -31,7 +31,7 @@ struct Variant {
 };
 
 SpecularForm lutForm(SpecularLutAxis axis, double scale,
-                     facet::compiler::SpecularLutEncoding encoding = facet::compiler::SpecularLutEncoding::kLinear) {
+                     facet::compiler::SpecularLutEncoding encoding = facet::compiler::SpecularLutEncoding::Linear) {
   SpecularLutOptions options;
   options.axis = axis;
   options.scale = scale;
@@ -41,10 +41,10 @@ SpecularForm lutForm(SpecularLutAxis axis, double scale,
   options.normalized = false;
   auto table = std::make_shared<SpecularLut>(facet::compiler::generateSpecularLut(options));
   return [table, axis](const ShadingPoint& p) {
-    double u = axis == SpecularLutAxis::kReflectedCosine4 ? std::pow(std::clamp(p.RoL, 0.0, 1.0), 4.0) : p.NoH;
+    double u = axis == SpecularLutAxis::ReflectedCosine4 ? std::pow(std::clamp(p.RoL, 0.0, 1.0), 4.0) : p.NoH;
     double s = sampleR8Bilinear(table->texels, table->width, table->height, lutTexelCoordinate(u, table->width),
                                 lutTexelCoordinate(p.perceptualRoughness, table->height));
-    if (table->encoding == facet::compiler::SpecularLutEncoding::kSqrt) s *= s;  // filtered, then decoded
+    if (table->encoding == facet::compiler::SpecularLutEncoding::Sqrt) s *= s;  // filtered, then decoded
     return s * table->scale * p.f0;
   };
 }
@@ -86,13 +86,13 @@ int main() {
       {"zioma Facet (refit)",
        [](const ShadingPoint& p) { return specularZioma(kZiomaFacet, p.alpha, p.NoH, p.LoH) * p.f0; },
        [](double a, double v) { return albedoZioma(kZiomaFacet, a, v, 1.0, 4096); }},
-      {"lut (R·L)⁴, ×16/π (shipped)", lutForm(SpecularLutAxis::kReflectedCosine4, 16.0 / kPiD), {}},
-      {"lut (R·L)⁴, ×16", lutForm(SpecularLutAxis::kReflectedCosine4, 16.0), {}},
-      {"lut (R·L)⁴, √ encoded, ×16/π", lutForm(SpecularLutAxis::kReflectedCosine4, 16.0 / kPiD, facet::compiler::SpecularLutEncoding::kSqrt), {}},
-      {"lut (R·L)⁴, √ encoded, ×16", lutForm(SpecularLutAxis::kReflectedCosine4, 16.0, facet::compiler::SpecularLutEncoding::kSqrt), {}},
-      {"lut (R·L)⁴, √ encoded, ×64", lutForm(SpecularLutAxis::kReflectedCosine4, 64.0, facet::compiler::SpecularLutEncoding::kSqrt), {}},
-      {"lut N·H, ×16/π", lutForm(SpecularLutAxis::kHalfCosine, 16.0 / kPiD), {}},
-      {"lut N·H, ×16", lutForm(SpecularLutAxis::kHalfCosine, 16.0), {}},
+      {"lut (R·L)⁴, ×16/π (shipped)", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0 / kPiD), {}},
+      {"lut (R·L)⁴, ×16", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0), {}},
+      {"lut (R·L)⁴, √ encoded, ×16/π", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0 / kPiD, facet::compiler::SpecularLutEncoding::Sqrt), {}},
+      {"lut (R·L)⁴, √ encoded, ×16", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0, facet::compiler::SpecularLutEncoding::Sqrt), {}},
+      {"lut (R·L)⁴, √ encoded, ×64", lutForm(SpecularLutAxis::ReflectedCosine4, 64.0, facet::compiler::SpecularLutEncoding::Sqrt), {}},
+      {"lut N·H, ×16/π", lutForm(SpecularLutAxis::HalfCosine, 16.0 / kPiD), {}},
+      {"lut N·H, ×16", lutForm(SpecularLutAxis::HalfCosine, 16.0), {}},
   };
 
   SphereScene scene;

@@ -119,13 +119,13 @@ struct MaterialContext {
 
 // The steps of one variant, each a job of its own so two threads stay busy to the end (one
 // variant's fragment stage alone is about half of its work). The cache saves every step after
-// kAssemble. A variant's failure is its first failed step in this order, whatever ran first.
-enum Step : size_t { kAssemble, kGlslEs, kSpirv, kVertexStage, kFragmentStage, kStepCount };
+// Assemble. A variant's failure is its first failed step in this order, whatever ran first.
+enum Step : size_t { Assemble, GlslEs, Spirv, VertexStage, FragmentStage, StepCount };
 
 // One variant's share of the result, written only by its own jobs: each step writes its own
 // fields and slots, and the job that brings `pending` to zero assembles the package entry.
 struct VariantBuild {
-  // kAssemble
+  // Assemble
   std::string keyText;
   permutations::TierConfig tier;
   StageSources es, vk;
@@ -134,12 +134,12 @@ struct VariantBuild {
   std::vector<package::PreshaderOp> preshader;  // empty: the variant preshades nothing
   bool cacheHit = false;
   bool cacheRejected = false;  // an entry was found and failed passesOutputChecks
-  // kSpirv: glslang's stages before SPIRV-Tools, each moved out by its stage's job
+  // Spirv: glslang's stages before SPIRV-Tools, each moved out by its stage's job
   SpirvStages spirv;
-  // GLSL ES by kGlslEs (0, 1); SPIR-V and MSL by kVertexStage (2, 4) and kFragmentStage (3, 5)
+  // GLSL ES by GlslEs (0, 1); SPIR-V and MSL by VertexStage (2, 4) and FragmentStage (3, 5)
   CompiledShaders shaders;
-  std::array<BuildError, kStepCount> failures;
-  std::array<bool, kStepCount> failed{};
+  std::array<BuildError, StepCount> failures;
+  std::array<bool, StepCount> failed{};
   std::atomic<bool> skipped{false};  // a variant earlier in key order failed first: never reported
   std::atomic<int> pending{0};       // compile jobs added and not yet finished
   // The package entry, once every step succeeded
@@ -266,9 +266,9 @@ class VariantJobs {
     AssemblyInput input{ctx_.material, ctx_.surface, ctx_.layout, key, v.tier, compilerVersion()};
     v.preshader = preshaderProgram(ctx_.material, ctx_.layout, ctx_.preshade, v.tier);
     if (!v.preshader.empty()) input.preshade = &ctx_.preshade;
-    std::string* error = &v.failures[kAssemble].message;
+    std::string* error = &v.failures[Assemble].message;
     if (!assemble(input, Flavour::GlslEs300, &v.es, error) || !assemble(input, Flavour::Vulkan, &v.vk, error)) {
-      fail(i, kAssemble);
+      fail(i, Assemble);
       return finish(i);
     }
     v.samplesSpecularLut = samplesSpecularLut(input);
@@ -293,14 +293,14 @@ class VariantJobs {
       v.skipped = true;
       return stepDone(i);
     }
-    BuildError* failure = &v.failures[kGlslEs];
+    BuildError* failure = &v.failures[GlslEs];
     std::string log;
     StageSources shipped;
     if (shippedGlslEs(v.es, &shipped, &log)) {
       v.shaders[0] = bytesOf(shipped.vertex);
       v.shaders[1] = bytesOf(shipped.fragment);
     } else {
-      fail(i, kGlslEs);
+      fail(i, GlslEs);
       // Only on failure is the readable text checked (one glslang parse saved per variant): its
       // line numbers map an error back to the material; if it compiles, the minifier is at fault.
       std::string readableLog;
@@ -320,14 +320,14 @@ class VariantJobs {
     }
     std::string log;
     if (!compileToSpirv(v.vk, &v.spirv, &log)) {
-      reportGlslangFailure(log, v.vk, ctx_.surface, "SPIR-V for variant " + v.keyText, &v.failures[kSpirv]);
-      fail(i, kSpirv);
+      reportGlslangFailure(log, v.vk, ctx_.surface, "SPIR-V for variant " + v.keyText, &v.failures[Spirv]);
+      fail(i, Spirv);
       return stepDone(i);
     }
     v.pending += 2;  // before this job counts itself done
     const bool emulate = emulated(v);
-    add(pool, CostModel::stage(v.spirv.vertex.size(), emulate), [this, i](JobPool&) { stageStep(i, kVertexStage); });
-    add(pool, CostModel::stage(v.spirv.fragment.size(), emulate), [this, i](JobPool&) { stageStep(i, kFragmentStage); });
+    add(pool, CostModel::stage(v.spirv.vertex.size(), emulate), [this, i](JobPool&) { stageStep(i, VertexStage); });
+    add(pool, CostModel::stage(v.spirv.fragment.size(), emulate), [this, i](JobPool&) { stageStep(i, FragmentStage); });
     stepDone(i);
   }
 
@@ -339,7 +339,7 @@ class VariantJobs {
       v.skipped = true;
       return stepDone(i);
     }
-    const size_t slot = step == kVertexStage ? 0 : 1;  // shaders[2 + slot], shaders[4 + slot]
+    const size_t slot = step == VertexStage ? 0 : 1;  // shaders[2 + slot], shaders[4 + slot]
     std::vector<uint32_t> words = std::move(slot == 0 ? v.spirv.vertex : v.spirv.fragment);
     if (!compileStage(v, slot, &words, &v.failures[step].message)) fail(i, step);
     stepDone(i);
@@ -483,7 +483,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   for (VariantBuild& v : jobs.variants()) {
     if (!v.built) {  // the first failure in key order, whatever the job count
       const size_t step = size_t(std::find(v.failed.begin(), v.failed.end(), true) - v.failed.begin());
-      *failure = step < kStepCount ? std::move(v.failures[step])
+      *failure = step < StepCount ? std::move(v.failures[step])
                                    : BuildError{"internal error: variant " + v.keyText + " was not built", {}};
       return std::nullopt;
     }

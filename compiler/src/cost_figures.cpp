@@ -86,7 +86,7 @@ constexpr CostFigure kFigures[] = {
      "fragment stage: scalar components of its mediump (RelaxedPrecision) inputs",
      [](S s) { return double(s.mobile.counts.varyingComponentsRelaxed); }, nullptr},
 };
-static_assert(std::size(kFigures) == size_t(Figure::kCount));
+static_assert(std::size(kFigures) == size_t(Figure::Count));
 
 constexpr bool inFigureOrder() {
   for (size_t i = 0; i < std::size(kFigures); ++i)

@@ -44,7 +44,7 @@ double specularLutIntensity(SpecularLutAxis axis, double cosine, double perceptu
   double alpha = r * r;
   double a2 = alpha * alpha;
   // n·h'² from R·L by the half-angle identity cos²(θ/2) = (1 + cos θ)/2, or n·h itself.
-  double NoH2 = axis == SpecularLutAxis::kReflectedCosine4 ? 0.5 * (1.0 + c) : c * c;
+  double NoH2 = axis == SpecularLutAxis::ReflectedCosine4 ? 0.5 * (1.0 + c) : c * c;
   double d = NoH2 * (a2 - 1.0) + 1.0;
   double D = a2 / (kPi * d * d);
   return 0.25 * D;  // implicit geometric term: V = G / (4 n·l n·v) with G = n·l n·v
@@ -61,11 +61,11 @@ SpecularLut generateSpecularLut(const SpecularLutOptions& options) {
     double r = double(j) / double(lut.height - 1);
     for (uint32_t i = 0; i < lut.width; ++i) {
       double u = double(i) / double(lut.width - 1);
-      double c = options.axis == SpecularLutAxis::kReflectedCosine4 ? std::sqrt(std::sqrt(u)) : u;
+      double c = options.axis == SpecularLutAxis::ReflectedCosine4 ? std::sqrt(std::sqrt(u)) : u;
       double s = specularLutIntensity(options.axis, c, r) / options.scale;
       if (options.normalized) s /= specularLutAlbedo(r);
       s = std::clamp(s, 0.0, 1.0);
-      double q = std::round(255.0 * (options.encoding == SpecularLutEncoding::kSqrt ? std::sqrt(s) : s));
+      double q = std::round(255.0 * (options.encoding == SpecularLutEncoding::Sqrt ? std::sqrt(s) : s));
       lut.texels[size_t{j} * lut.width + i] = static_cast<uint8_t>(q);
     }
   }

@@ -81,7 +81,7 @@ bool sweepOne(GpuEvaluator& gpu, SpecularModel model, PrecisionPolicy precision,
   std::string lobe;
   if (!compiler::specularLobeSource(model, &lobe, error)) return false;
   GpuEvalRequest request;
-  request.precision = precision == PrecisionPolicy::Highp ? FloatPrecision::kHighp : FloatPrecision::kMediump;
+  request.precision = precision == PrecisionPolicy::Highp ? FloatPrecision::Highp : FloatPrecision::Mediump;
   std::string defines = std::string("#define ") + compiler::kSpecularLutSamplerName + " lut\n";
   if (precision == PrecisionPolicy::Highp) defines += "#define FACET_PRECISION_HIGHP 1\n";
   request.chunks = {defines, lobe};

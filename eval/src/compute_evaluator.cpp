@@ -376,7 +376,7 @@ std::string GpuEvaluator::deviceName() const { return impl_->ctx.properties.devi
 std::string GpuEvaluator::shaderSource(const GpuEvalRequest& request) {
   std::ostringstream s;
   s << "#version 310 es\n"
-    << "precision " << (request.precision == FloatPrecision::kHighp ? "highp" : "mediump") << " float;\n"
+    << "precision " << (request.precision == FloatPrecision::Highp ? "highp" : "mediump") << " float;\n"
     << "precision highp int;\n"
     << "layout(local_size_x = " << kLocalSize << ") in;\n"
     << "layout(std430, binding = 0) readonly buffer Inputs { highp vec4 inputs[]; };\n"

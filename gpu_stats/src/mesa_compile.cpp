@@ -198,10 +198,10 @@ std::vector<GpuStats> measure(const std::vector<ShaderPair>& pairs, const std::v
   if (dir.path.empty()) return allUnavailable(std::string("cannot create a temporary folder: ") + std::strerror(errno));
   json list = json::array();
   for (size_t i = 0; i < pairs.size(); ++i) {
-    fs::path vs = dir.path / (std::to_string(i) + ".vert"), fs_ = dir.path / (std::to_string(i) + ".frag");
-    if (!writeText(vs, pairs[i].vertexGlsl) || !writeText(fs_, pairs[i].fragmentGlsl))
+    fs::path vertexPath = dir.path / (std::to_string(i) + ".vert"), fragmentPath = dir.path / (std::to_string(i) + ".frag");
+    if (!writeText(vertexPath, pairs[i].vertexGlsl) || !writeText(fragmentPath, pairs[i].fragmentGlsl))
       return allUnavailable("cannot write the shaders to " + dir.path.string());
-    list.push_back({{"name", pairs[i].name}, {"vertex", vs.string()}, {"fragment", fs_.string()}});
+    list.push_back({{"name", pairs[i].name}, {"vertex", vertexPath.string()}, {"fragment", fragmentPath.string()}});
   }
   const fs::path listPath = dir.path / "pairs.json";
   if (!writeText(listPath, list.dump())) return allUnavailable("cannot write " + listPath.string());

@@ -27,7 +27,7 @@ DfgTerms integrateDfg(double NoV, double perceptualRoughness, int samples, DfgSa
   DfgTerms sum;
   for (uint32_t i = 0; i < n; ++i) {
     Point2 xi = hammersley(i, n);
-    Vec3 h = sampling == DfgSampling::kVisibleNormals ? sampleGgxVisibleNormal(xi, v, alpha) : sampleGgxNormal(xi, alpha);
+    Vec3 h = sampling == DfgSampling::VisibleNormals ? sampleGgxVisibleNormal(xi, v, alpha) : sampleGgxNormal(xi, alpha);
     double VoH = dot(v, h);
     Vec3 l = reflectAbout(v, h);
     double NoL = l.z;
@@ -36,7 +36,7 @@ DfgTerms integrateDfg(double NoV, double perceptualRoughness, int samples, DfgSa
     //   VNDF:  pdf(h) = G1(v) v·h D / n·v  →  4 V n·l n·v / G1(v) = G2 / G1(v) ≤ 1
     //   D n·h: pdf(h) = D n·h               →  4 V n·l v·h / n·h
     double V = visibilitySmithGgxCorrelated(alpha, NoV, NoL);
-    double weight = sampling == DfgSampling::kVisibleNormals ? 4.0 * V * NoL * NoV / g1 : 4.0 * V * NoL * VoH / h.z;
+    double weight = sampling == DfgSampling::VisibleNormals ? 4.0 * V * NoL * NoV / g1 : 4.0 * V * NoL * VoH / h.z;
     sum.albedo += weight;
     sum.fresnelWeighted += weight * schlickWeight(VoH);
   }

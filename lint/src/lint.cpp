@@ -169,10 +169,10 @@ bool MaterialLint::hasErrors() const {
 
 std::span<const compiler::Figure> baselineFigures() {
   using F = compiler::Figure;
-  static constexpr F figures[] = {F::Cycles,   F::Alu,          F::ScalarAlu,     F::Transcendental,
+  static constexpr F kFigures[] = {F::Cycles,   F::Alu,          F::ScalarAlu,     F::Transcendental,
                                   F::Divisions, F::Textures,     F::VaryingComponents, F::InputVectors,
                                   F::OutputVectors, F::UniformVectors, F::Samplers};
-  return figures;
+  return kFigures;
 }
 
 std::vector<std::pair<std::string, double>> namedFigures(const StageFigures& s) {

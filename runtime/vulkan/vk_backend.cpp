@@ -315,7 +315,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
 
   const PostShaders& post = *post_;
   PipelineDesc postDesc;
-  postDesc.kind = PipelineKind::kPost;
+  postDesc.kind = PipelineKind::Post;
   postDesc.vertexSpirv = &post.vertexSpirv;
   postDesc.fragmentSpirv = merged ? &post.fragmentFetchSpirv : &post.fragmentSpirv;
   postDesc.layout = postLayout_;
@@ -580,7 +580,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
     pipelines_.erase(found);
   }
   PipelineDesc desc;
-  desc.kind = PipelineKind::kForward;
+  desc.kind = PipelineKind::Forward;
   desc.blending = draw.blending;
   desc.cullBackFaces = draw.cullBackFaces;
   desc.vertexSpirv = &program.vertexSpirv;

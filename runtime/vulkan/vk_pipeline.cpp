@@ -330,7 +330,7 @@ bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayo
 
 bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out,
                             std::string* error) {
-  const bool forward = desc.kind == PipelineKind::kForward;
+  const bool forward = desc.kind == PipelineKind::Forward;
   VkShaderModule vertex = VK_NULL_HANDLE;
   VkShaderModule fragment = VK_NULL_HANDLE;
   if (!createShaderModule(device, desc.vertexSpirv, "vertex", desc.what, &vertex, error)) {

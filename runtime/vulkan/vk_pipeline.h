@@ -68,12 +68,12 @@ bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayo
                           VkPipelineLayout* out, std::string* error);
 
 enum class PipelineKind {
-  kForward,  // abi vertex stream, depth test LESS + write
-  kPost,     // no vertex input (gl_VertexIndex full-screen triangle), no depth
+  Forward,  // abi vertex stream, depth test LESS + write
+  Post,     // no vertex input (gl_VertexIndex full-screen triangle), no depth
 };
 
 struct PipelineDesc {
-  PipelineKind kind = PipelineKind::kForward;
+  PipelineKind kind = PipelineKind::Forward;
   Blending blending = Blending::Opaque;  // forward pipelines only
   bool cullBackFaces = false;            // forward pipelines only
   const std::vector<uint32_t>* vertexSpirv = nullptr;

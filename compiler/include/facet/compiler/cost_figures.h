@@ -55,7 +55,7 @@ enum class Figure {
   FmaRelaxed,
   FragmentVaryings,
   FragmentVaryingsRelaxed,
-  kCount,
+  Count,
 };
 
 struct CostFigure {

@@ -39,9 +39,9 @@ enum class OpClass {
   IntegerDivision,   // integer division and remainder
   Derivative,        // dFdx, dFdy, fwidth: lane exchange
   TextureSample,     // sample, fetch, gather (one per instruction, not per component)
-  kCount,
+  Count,
 };
-inline constexpr size_t kOpClassCount = size_t(OpClass::kCount);
+inline constexpr size_t kOpClassCount = size_t(OpClass::Count);
 const char* toString(OpClass c);
 
 // The stage's SPIR-V instructions as they are, before the model classes or weighs them
@@ -149,9 +149,9 @@ struct MobileStageCost {
 // for a vertex stage (Mali's are bound by load/store, which no class counts).
 enum class CalibratedClass {
   FmaMediump, FmaHighp, Convert, Sfu, ExpLog, Sqrt, Pow, SinCos, Tan, InverseTrig, Atan2, Division, TextureSample,
-  kCount,
+  Count,
 };
-inline constexpr size_t kCalibratedClassCount = size_t(CalibratedClass::kCount);
+inline constexpr size_t kCalibratedClassCount = size_t(CalibratedClass::Count);
 
 struct GpuCalibration {
   const char* gpu;      // as `--gpu` names it, e.g. "mali-g57"

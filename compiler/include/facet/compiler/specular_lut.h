@@ -11,8 +11,8 @@
 //
 // Mapping (the chunk inverts it): texel (i, j) of a W × H table holds, quantised to 8 bits,
 //   round(255 · √min(S(c_i, r_j) / scale, 1)),  u_i = i / (W − 1),  r_j = j / (H − 1),
-// (the default kSqrt encoding; kLinear drops the √),
-// with c_i = u_i^(1/4) (axis kReflectedCosine4: u = (R·L)⁴) or c_i = u_i (axis kHalfCosine, the
+// (the default Sqrt encoding; Linear drops the √),
+// with c_i = u_i^(1/4) (axis ReflectedCosine4: u = (R·L)⁴) or c_i = u_i (axis HalfCosine, the
 // n·h table of the talk, kept to measure against; S is then D(α, n·h)/4 with c = n·h).
 // The texel centres sit at (i + 0.5)/W, so the chunk samples at u·(W − 1)/W + 0.5/W to hit u_i
 // exactly at the table's ends (the peak R·L = 1 is the last column, not half a texel short).
@@ -26,29 +26,29 @@
 namespace facet::compiler {
 
 enum class SpecularLutAxis {
-  kReflectedCosine4,  // u = max(R·L, 0)⁴ — what chunks/specular_lut.glsl samples
-  kHalfCosine,        // u = n·h — Zioma's first table; measured in docs/specular-tiers.md only
+  ReflectedCosine4,  // u = max(R·L, 0)⁴ — what chunks/specular_lut.glsl samples
+  HalfCosine,        // u = n·h — Zioma's first table; measured in docs/specular-tiers.md only
 };
 
 // How a texel's 8 bits hold min(S / scale, 1) = s: linearly (round(255 s)), or as √s
 // (round(255 √s), decoded as the square of the filtered value), which spends the steps where
 // the lobe's tail is: the step at s is 2√s/255 instead of 1/255, so the tail's steps no longer
-// show as rings. Shipped (the chunk decodes kSqrt); measured in docs/specular-tiers.md, "The
+// show as rings. Shipped (the chunk decodes Sqrt); measured in docs/specular-tiers.md, "The
 // low tier's table".
 enum class SpecularLutEncoding {
-  kLinear,
-  kSqrt,
+  Linear,
+  Sqrt,
 };
 
 struct SpecularLutOptions {
   uint32_t width = 128;   // along u (the warped cosine)
   uint32_t height = 64;   // along perceptual roughness
-  SpecularLutAxis axis = SpecularLutAxis::kReflectedCosine4;
-  // Decoded intensity = (texel / 255)² · scale (kSqrt; texel / 255 · scale with kLinear). 16/π
+  SpecularLutAxis axis = SpecularLutAxis::ReflectedCosine4;
+  // Decoded intensity = (texel / 255)² · scale (Sqrt; texel / 255 · scale with Linear). 16/π
   // (π folded into the /16 of the talk): a ceiling of 5.09, reached only inside highlights that
   // tone-map to white anyway; 16 measured no better with the √ encoding (docs/specular-tiers.md).
   double scale = 16.0 / 3.14159265358979323846;
-  SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
+  SpecularLutEncoding encoding = SpecularLutEncoding::Sqrt;
   // Each row divided by its lobe's albedo at normal incidence (specularLutAlbedo): the shader
   // scales the lobe by the environment BRDF's albedo E(n·v, r, f0) instead of f0.
   bool normalized = true;
@@ -64,7 +64,7 @@ struct SpecularLut {
   uint32_t width = 0;
   uint32_t height = 0;
   double scale = 0;
-  SpecularLutEncoding encoding = SpecularLutEncoding::kSqrt;
+  SpecularLutEncoding encoding = SpecularLutEncoding::Sqrt;
   std::vector<uint8_t> texels;  // row-major, row j = roughness r_j, R8 UNORM
 };
 

@@ -24,7 +24,7 @@ struct AppDevice;  // facet/vulkan_backend.h
 
 namespace facet::eval {
 
-enum class FloatPrecision { kHighp, kMediump };
+enum class FloatPrecision { Highp, Mediump };
 
 // An R8 UNORM 2D texture bound as `uniform mediump sampler2D lut` (linear filtering, clamp to edge,
 // one mip), for chunks that read a table.
@@ -38,7 +38,7 @@ struct GpuEvalRequest {
   std::vector<std::string> chunks;  // GLSL function sources, pasted in order
   std::string body;                 // statements computing `result` from `in0`, `in1`
   std::vector<glm::vec4> in0, in1;  // one invocation per element; same size
-  FloatPrecision precision = FloatPrecision::kHighp;
+  FloatPrecision precision = FloatPrecision::Highp;
   // in0 and in1 declared highp whatever `precision` says (inputs a shader forms at highp, e.g.
   // geometry); otherwise they are at the default precision (rounded to binary16 under fp16
   // emulation, as a mediump input would be).

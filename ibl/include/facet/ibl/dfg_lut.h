@@ -34,15 +34,15 @@ struct DfgTerms {
 };
 
 enum class DfgSampling {
-  kVisibleNormals,  // Heitz 2018 VNDF: what the table is built with
-  kGgxNormals,      // h ~ D n·h: kept to measure the grazing-angle error against (docs/ibl.md)
+  VisibleNormals,  // Heitz 2018 VNDF: what the table is built with
+  GgxNormals,      // h ~ D n·h: kept to measure the grazing-angle error against (docs/ibl.md)
 };
 
 /// The two DFG terms at one (n·v, perceptual roughness) by `samples` Hammersley points.
 /// n·v is clamped to [1e-4, 1] (MIN_N_DOT_V of chunks/precision.glsl; at 0 the integral has no
 /// view direction) and r to [0, 1]. At r = 0 the result is exactly (Fc(n·v), 1).
 DfgTerms integrateDfg(double NoV, double perceptualRoughness, int samples,
-                      DfgSampling sampling = DfgSampling::kVisibleNormals);
+                      DfgSampling sampling = DfgSampling::VisibleNormals);
 
 /// Texel (column, row) of a size × size table holds the terms at its centre:
 ///   n·v = (column + 0.5) / size,   r = (row + 0.5) / size
