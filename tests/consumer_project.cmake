@@ -2,7 +2,8 @@
 # examples/consumer against it with find_package(Facet COMPONENTS vulkan), builds it, and checks
 # the install (runtime libraries, headers, one export file per component; the installed `matc eval`
 # runs the installed facet-eval), that every installed header compiles from the prefix (no private
-# header included), the depfile-driven rebuilds
+# header included), that an app including the headers' old paths still compiles
+# (consumer_old_include_paths.cpp), the depfile-driven rebuilds
 # (nothing to do when nothing changed; touching one material rebuilds only its package), and
 # runs the consumer's program: it lists both packages and renders one frame with the runtime on
 # lavapipe (FACET_VK_VALIDATION from the test's environment: a validation error fails it).
@@ -27,8 +28,9 @@ foreach(f bin/matc bin/facet-eval lib/cmake/Facet/FacetConfig.cmake lib/cmake/Fa
         lib/cmake/Facet/FacetSceneTargets.cmake
         lib/libfacet_runtime_core.a lib/libfacet_runtime_vulkan.a lib/libfacet_runtime_gl.a
         lib/libfacet_runtime_gltf.a lib/libfacet_package.a lib/libfacet_package_checks.a
-        include/facet/package_checks.h include/facet/runtime/scene.h include/facet/render_backend.h include/facet/vulkan_backend.h include/facet/runtime/material.h
-        include/facet/package_reader.h include/facet/shader_abi.h include/facet/ibl/dfg_lut.h)
+        include/facet/package/checks.h include/facet/scene/scene.h include/facet/runtime/render_backend.h
+        include/facet/runtime/vulkan_backend.h include/facet/runtime/material.h include/facet/package/package_reader.h
+        include/facet/abi/shader_abi.h include/facet/ibl/dfg_lut.h include/facet/render_backend.h)
   if(NOT EXISTS ${WORK}/install/${f})
     message(FATAL_ERROR "install did not produce ${f}")
   endif()
@@ -55,7 +57,8 @@ if(SANITIZE)
        "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
 endif()
 run(${CMAKE_COMMAND} -S ${WORK}/src -B ${WORK}/build -G Ninja -DCMAKE_PREFIX_PATH=${WORK}/install
-    -DFACET_CONSUMER_MATERIALS_DIR=${WORK}/materials -DFACET_CONSUMER_CHECK_HEADERS=ON ${compile_options})
+    -DFACET_CONSUMER_MATERIALS_DIR=${WORK}/materials -DFACET_CONSUMER_CHECK_HEADERS=ON
+    -DFACET_CONSUMER_CHECK_SOURCES=${CMAKE_CURRENT_LIST_DIR}/consumer_old_include_paths.cpp ${compile_options})
 run(${CMAKE_COMMAND} --build ${WORK}/build)
 foreach(name red_plastic brushed_gold)
   if(NOT EXISTS ${WORK}/build/packages/${name}.matpkg OR NOT EXISTS ${WORK}/build/packages/${name}.matpkg.d)

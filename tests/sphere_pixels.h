@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 namespace facet::test {
 

@@ -1,5 +1,5 @@
 // Outputs appear whole or not at all: no partial file on failure or interrupt, no write through
-// a device node or FIFO (facet/atomic_file.h).
+// a device node or FIFO (facet/package/atomic_file.h).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -11,8 +11,8 @@
 #include <fstream>
 #include <memory>
 
-#include "facet/atomic_file.h"
-#include "facet/package.h"
+#include "facet/package/atomic_file.h"
+#include "facet/package/package.h"
 
 namespace {
 

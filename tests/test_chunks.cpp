@@ -15,7 +15,7 @@
 #include "app_vulkan.h"
 #include "facet/compiler/specular_lut.h"
 #include "facet/eval/compute_evaluator.h"
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 #include "reference/specular_tiers.h"
 #include "test_support.h"
 #include "facet/eval/standard_model.h"

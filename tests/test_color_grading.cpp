@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "facet/runtime/color_grading.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "facet/runtime/vignette.h"
 #include "test_support.h"

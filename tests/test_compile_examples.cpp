@@ -6,7 +6,7 @@
 
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/spirv_tools_backend.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "test_support.h"
 
 namespace {

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <string>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/exposure.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "gltf_test_files.h"
 #include "test_support.h"
 

@@ -21,10 +21,10 @@
 
 #include "facet/compiler/build.h"
 #include "facet/ir/check.h"
-#include "facet/package.h"
-#include "facet/render_backend.h"
+#include "facet/package/package.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/png.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "facet/eval/compute_evaluator.h"
 #include "reference/specular_tiers.h"

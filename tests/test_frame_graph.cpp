@@ -3,8 +3,8 @@
 // whole textures, do not merge and keep what later passes sample.
 #include <gtest/gtest.h>
 
-#include "facet/frame_graph.h"
-#include "facet/render_path.h"
+#include "facet/runtime/frame_graph.h"
+#include "facet/runtime/render_path.h"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include "../runtime/gl/gl_context.h"
 #include "../runtime/gl/gl_objects.h"
 #include "example_content.h"
-#include "facet/gl_backend.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/gl_backend.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 namespace {

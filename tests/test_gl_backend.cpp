@@ -10,8 +10,8 @@
 
 #include "../runtime/gl/gl_context.h"
 #include "../runtime/gl/headless/headless_context.h"
-#include "facet/gl_backend.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/gl_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "gl_test_interface.h"
 

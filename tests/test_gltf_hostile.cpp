@@ -14,7 +14,7 @@
 
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "fuzz/gltf_fuzz_input.h"
 #include "gltf_test_files.h"

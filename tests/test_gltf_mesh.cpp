@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "gltf_test_files.h"
 #include "test_support.h"

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "facet/render_backend.h"
-#include "facet/runtime/scene.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 

@@ -9,12 +9,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/image_texture.h"
-#include "facet/runtime/json_document.h"
+#include "facet/scene/json_document.h"
 #include "facet/runtime/material.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 
@@ -297,7 +297,7 @@ TEST(HostileScenes, ImagesOutsideTheSceneFolderAreRefused) {
                                    std::string("textures/../../secret.png")}) {
     std::string error;
     EXPECT_FALSE(facet::runtime::parseScene(scenePath, sceneNaming(image), &error)) << image;
-    EXPECT_NE(error.find(": error: /environment/image: '" + facet::runtime::shownValue(image) + "' is outside the folder this scene may read files from"),
+    EXPECT_NE(error.find(": error: /environment/image: '" + facet::scene::shownValue(image) + "' is outside the folder this scene may read files from"),
               std::string::npos) << error;
     error.clear();
     EXPECT_FALSE(facet::runtime::parseScene(scenePath,

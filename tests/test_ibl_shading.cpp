@@ -16,7 +16,7 @@
 #include "facet/ibl/spherical_harmonics.h"
 #include <stb_image_write.h>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/scene_frame.h"
 #include "dfg_lookup.h"

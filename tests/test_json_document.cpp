@@ -5,13 +5,13 @@
 #include <string>
 
 #include "facet/lint/budgets.h"
-#include "facet/runtime/json_document.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/json_document.h"
+#include "facet/scene/scene.h"
 
 namespace {
 
-using facet::runtime::jsonTooDeepAt;
-using facet::runtime::kMaxJsonDepth;
+using facet::scene::jsonTooDeepAt;
+using facet::scene::kMaxJsonDepth;
 
 std::string nested(size_t depth, const std::string& inner = "") {
   return std::string(depth, '[') + inner + std::string(depth, ']');
@@ -35,11 +35,11 @@ TEST(JsonDocument, TooDeepIsAnErrorAtItsLineAndColumnBeforeParsing) {
   // 20,000 levels in 40 KB: once a stack overflow in a recursive reader, and quadratic memory in
   // one that keeps the path to every open level.
   const std::string text = "{\"objects\": [],\n \"x\": " + nested(20000) + "}";
-  EXPECT_FALSE(facet::runtime::parseJsonDocument("deep.json", text, &error));
+  EXPECT_FALSE(facet::scene::parseJsonDocument("deep.json", text, &error));
   EXPECT_EQ(error, "deep.json:2:" + std::to_string(7 + kMaxJsonDepth - 1) +
                        ": error: arrays and objects nest more than 64 deep here (Facet reads JSON at most that deep)");
   // At the bound the document parses.
-  EXPECT_TRUE(facet::runtime::parseJsonDocument("ok.json", "{\"x\": " + nested(kMaxJsonDepth - 1) + "}", &error)) << error;
+  EXPECT_TRUE(facet::scene::parseJsonDocument("ok.json", "{\"x\": " + nested(kMaxJsonDepth - 1) + "}", &error)) << error;
 }
 
 TEST(JsonDocument, ScenesAndLintFilesRefuseDeepNesting) {

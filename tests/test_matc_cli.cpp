@@ -14,8 +14,8 @@
 #include <regex>
 
 #include "facet/compiler/cost_figures.h"
-#include "facet/package.h"
-#include "facet/shader_abi.h"
+#include "facet/package/package.h"
+#include "facet/abi/shader_abi.h"
 
 #include "test_support.h"
 

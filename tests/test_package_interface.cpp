@@ -1,4 +1,4 @@
-// A package's declared meaning against its shaders (runtime/program_interface.h): hostile packages
+// A package's declared meaning against its shaders (facet/package/program_interface.h): hostile packages
 // written by package::write, so checksum-valid and well formed, whose shaders are in the wrong
 // slot or read another interface than the tables declare. Each is refused when its variant is
 // loaded — the SPIR-V by LoadedMaterial::program, the GLSL ES by the GL backend before any draw —
@@ -11,8 +11,8 @@
 #include <filesystem>
 
 #include "facet/compiler/glslang_backend.h"
-#include "facet/package.h"
-#include "facet/render_backend.h"
+#include "facet/package/package.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"

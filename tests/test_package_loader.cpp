@@ -8,8 +8,8 @@
 
 #include <xxhash.h>
 
-#include "facet/package.h"
-#include "facet/package_reader.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
 #include "facet/runtime/material.h"
 #include "test_support.h"
 

@@ -8,11 +8,11 @@
 #include <cstdlib>
 #include <cstdio>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/color_grading.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/vignette.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"

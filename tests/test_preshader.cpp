@@ -13,9 +13,9 @@
 
 #include "facet/compiler/preshader.h"
 #include "facet/compiler/spirv_tools_backend.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "facet/runtime/preshader.h"
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 #include "test_support.h"
 
 namespace {

@@ -8,9 +8,9 @@
 #include <cstring>
 #include <filesystem>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material_instance.h"
-#include "facet/package_reader.h"
+#include "facet/package/package_reader.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 

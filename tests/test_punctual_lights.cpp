@@ -9,7 +9,7 @@
 #include <string>
 
 #include "facet/permutations/variant_key.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "facet/eval/standard_model.h"
 #include "sphere_pixels.h"

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/scene_frame.h"
 #include "dfg_lookup.h"

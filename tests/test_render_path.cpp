@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 

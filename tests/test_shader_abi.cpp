@@ -12,7 +12,7 @@
 #include <regex>
 #include <set>
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/assemble.h"
 #include "test_support.h"
 

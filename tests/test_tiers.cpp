@@ -12,7 +12,7 @@
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/module.h"
 #include "facet/permutations/tiers.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"
 

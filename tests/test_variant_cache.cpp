@@ -12,7 +12,7 @@
 #include <xxhash.h>
 
 #include "facet/compiler/build.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "test_support.h"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_support.h"

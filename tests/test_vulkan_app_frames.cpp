@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 #include "app_vulkan.h"
 #include "vk_test_frames.h"
 

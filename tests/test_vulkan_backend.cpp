@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
-#include "facet/shader_abi.h"
-#include "facet/vulkan_backend.h"
+#include "facet/abi/shader_abi.h"
+#include "facet/runtime/vulkan_backend.h"
 
 #include "vk_test_frames.h"
 

@@ -7,7 +7,7 @@
 #include <iterator>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
 #include "vk_test_solid_frag_spv.h"
 #include "vk_test_solid_vert_spv.h"

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "facet/package.h"
-#include "facet/package_reader.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
 
 namespace facet::package::detail {
 

@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace facet::runtime {
+namespace facet::scene {
 
 // The deepest nesting of arrays and objects any JSON file Facet reads may have. The example scenes
 // and lint files nest at most 5 deep; glTF reaches 8 (a texture transform's offset inside a
@@ -43,4 +43,4 @@ std::string pointerSegment(std::string_view key);
 // ~ and / as written (a path stays readable).
 std::string shownValue(std::string_view value);
 
-}  // namespace facet::runtime
+}  // namespace facet::scene

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-namespace facet::runtime {
+namespace facet::scene {
 
 // `path` made absolute with every symbolic link resolved, dangling ones included, and `..`
 // applied after the link before it (as the kernel does); components that do not exist are taken
@@ -18,4 +18,4 @@ std::filesystem::path realPath(const std::filesystem::path& path);
 // Whether `real` is `root` or lies below it, both realPath results ("" is inside nothing).
 bool isInside(const std::filesystem::path& root, const std::filesystem::path& real);
 
-}  // namespace facet::runtime
+}  // namespace facet::scene

@@ -10,8 +10,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "facet/runtime/post_settings.h"
+#include "facet/scene/post_settings.h"
 
+// The scene library's folder, the runtime's namespace: these types are the runtime's description
+// of a frame (environment.h and scene_frame.h take them), apps built against an installed Facet
+// name them facet::runtime::Scene, Camera, ..., and renaming them would change every such app
+// and most of the runtime with no change of meaning. The reader's own tools (json_document.h,
+// asset_path.h) are in facet::scene.
 namespace facet::runtime {
 
 struct Camera {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "facet/package_reader.h"
-#include "facet/program_interface.h"
+#include "facet/package/package_reader.h"
+#include "facet/package/program_interface.h"
 
 namespace facet::package {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 

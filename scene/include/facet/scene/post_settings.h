@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+// In the runtime's namespace, as scene.h's types are (scene.h says why).
 namespace facet::runtime {
 
 // The effects a backend's post pass runs: a post variant compiled in at build time (compiler/post.h

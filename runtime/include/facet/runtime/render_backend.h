@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "facet/program_interface.h"
-#include "facet/render_path.h"
-#include "facet/shader_abi.h"
+#include "facet/package/program_interface.h"
+#include "facet/runtime/render_path.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::runtime {
 

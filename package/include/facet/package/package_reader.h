@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::package {
 

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <string>
 
-#include "facet/frame_graph.h"
-#include "facet/runtime/post_settings.h"
+#include "facet/runtime/frame_graph.h"
+#include "facet/scene/post_settings.h"
 
 namespace facet::runtime {
 

@@ -2,7 +2,7 @@
 // interface against it. A package is code the app did not build: its tables may declare one
 // interface (a 32-byte parameter block, no specular table) while its shaders read another (64
 // bytes, a table at binding 1), and a driver draws anyway, reading past the buffer or an unbound
-// texture. So each shader's interface is reflected — SPIR-V by checkVariant (package_checks.h) when
+// texture. So each shader's interface is reflected — SPIR-V by checkVariant (facet/package/checks.h) when
 // the runtime core decodes a variant, a linked GLSL ES program by the GL backend before its first
 // draw — and compared with the package's here (docs/security.md, "What a package can and cannot do").
 #pragma once
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::package {
 
