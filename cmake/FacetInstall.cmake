@@ -31,7 +31,7 @@ set(FACET_COMPONENT_TARGETS_scene facet_scene)
 # Public headers per component, as they sit under <folder>/include/facet/<folder>/ in the source
 # tree (runtime/ and scene/), installed under include/facet/<folder>/. Only these are installed; a
 # header listed here that includes one not installed fails the consumer test
-# (tests/consumer_project.cmake compiles every installed header).
+# (tests/examples/consumer_project.cmake compiles every installed header).
 set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h render_path.h
     texture_checks.h environment.h exposure.h image_texture.h material.h material_instance.h mesh.h png.h
     preshader.h color_grading.h vignette.h)
@@ -137,7 +137,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/abi/include/ ${PROJECT_SOURCE_DIR}/ibl/i
                   ${PROJECT_SOURCE_DIR}/package/include/ ${PROJECT_SOURCE_DIR}/package/checks/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # The paths apps included before the public headers moved under facet/<library>/, for one release:
-# each forwards to its header's new path (tests/consumer_old_include_paths.cpp compiles them).
+# each forwards to its header's new path (tests/examples/consumer_old_include_paths.cpp compiles them).
 # Only installed: Facet's own sources use the new paths.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cmake/forwarding_headers/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 

@@ -7,10 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include "facet/eval/metrics.h"
 
 namespace facet::test {
 
@@ -37,60 +36,6 @@ std::vector<std::string> exampleMaterials() {
     if (entry.path().extension() == ".mat") files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   return files;
-}
-
-std::optional<compiler::BuildResult> buildFile(const std::string& path, const compiler::BuildOptions& options) {
-  return buildText(readText(path), path, options);
-}
-
-std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path,
-                                               const compiler::BuildOptions& options) {
-  ir::SourceFile file{path, text};
-  ir::Diagnostics diags(file);
-  auto material = ir::compileSource(file, diags);
-  EXPECT_TRUE(material.has_value()) << diags.format();
-  if (!material) return std::nullopt;
-  compiler::BuildError error;
-  auto built = compiler::buildMaterial(*material, options, &error);
-  EXPECT_TRUE(built.has_value()) << error.message;
-  return built;
-}
-
-namespace {
-
-void writePackage(const std::string& dir, const std::optional<compiler::BuildResult>& built) {
-  if (!built) return;
-  std::string error;
-  EXPECT_TRUE(package::writeFile(dir + "/" + built->package.material.name + ".matpkg", package::write(built->package),
-                                 &error))
-      << error;
-}
-
-}  // namespace
-
-std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts,
-                                   const compiler::BuildOptions& options) {
-  std::string dir = scratchDir(scratchName);
-  for (const std::string& text : materialTexts) writePackage(dir, buildText(text, "test.mat", options));
-  return dir;
-}
-
-std::string writeExamplePackages(const std::string& scratchName, const compiler::BuildOptions& options) {
-  std::string dir = scratchDir(scratchName);
-  for (const std::string& path : exampleMaterials()) writePackage(dir, buildFile(path, options));
-  return dir;
-}
-
-double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  return std::min(eval::psnr8(a, b), 99.0);
-}
-
-std::string diagnosticsFor(const std::string& text, const std::string& path) {
-  ir::SourceFile file{path, text};
-  ir::Diagnostics diags(file);
-  ir::compileSource(file, diags);
-  return diags.format();
 }
 
 std::string scratchDir(const std::string& name) {

@@ -1,16 +1,11 @@
-// Helpers shared by Facet's tests: compiling example materials through the library, reading
-// files, running the command-line tools.
+// Helpers shared by Facet's tests that need none of Facet's libraries: where the sources and
+// examples are, reading files, scratch folders, running the command-line tools, diffs. Compiling
+// materials: test_compile.h; diagnostics of material text: test_diagnostics.h; image error:
+// test_images.h.
 #pragma once
 
-#include <gtest/gtest.h>
-
-#include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
-
-#include "facet/compiler/build.h"
-#include "facet/ir/check.h"
 
 namespace facet::test {
 
@@ -23,28 +18,6 @@ std::string readText(const std::string& path);
 
 // Every examples/materials/*.mat, sorted.
 std::vector<std::string> exampleMaterials();
-
-// Parses, checks and builds a material file (every supported tier unless `options` says
-// otherwise); fails the current test on any error.
-std::optional<compiler::BuildResult> buildFile(const std::string& path, const compiler::BuildOptions& options = {});
-
-// The same for material text held in memory.
-std::optional<compiler::BuildResult> buildText(const std::string& text, const std::string& path = "test.mat",
-                                               const compiler::BuildOptions& options = {});
-
-// Builds each material and writes <scratch dir>/<material name>.matpkg, as matc does; returns
-// the folder. Fails the current test on any error.
-std::string writePackagesFromTexts(const std::string& scratchName, const std::vector<std::string>& materialTexts,
-                                   const compiler::BuildOptions& options = {});
-// 8-bit PSNR between two RGBA8 images of the same size, over RGB (99 dB when identical):
-// facet::eval::psnr8, capped.
-double psnr(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
-
-// The same for every examples/materials/*.mat.
-std::string writeExamplePackages(const std::string& scratchName, const compiler::BuildOptions& options = {});
-
-// Parses and checks material text; returns the diagnostics as formatted text.
-std::string diagnosticsFor(const std::string& text, const std::string& path = "test.mat");
 
 // A fresh, empty folder under the build tree, removed at the start of each use.
 std::string scratchDir(const std::string& name);

@@ -1,7 +1,7 @@
 // The binary interface between the shaders in a package and the runtime that draws with them:
 // one owner (library facet_shader_abi, header only), included by the compiler, which prints the
 // shaders' declarations from the tables at the end of this file, and by the runtime, which binds
-// by the same numbers. tests/test_shader_abi.cpp reflects compiled SPIR-V and checks it against
+// by the same numbers. tests/compiler/test_shader_abi.cpp reflects compiled SPIR-V and checks it against
 // these tables and the C++ structs, so a change to one side fails the tests, not a frame on a phone.
 #pragma once
 
