@@ -21,7 +21,7 @@
 //     be inf there; X > 0, so never NaN). (k · k) · X would overflow for k > 256 first.
 //   - 2 NoL NoV flushes to 0 below 2^-14 (n·l = n·v < 0.0055): M then loses at most 2^-14
 //     against its α(NoL + NoV), a few percent only for a light within 0.3° of the horizon.
-// tests/test_fp16.cpp (FusedHammonGlintFollowsItsFormulaAtGrazingMirror) fails without either.
+// tests/compiler/test_fp16.cpp (FusedHammonGlintFollowsItsFormulaAtGrazingMirror) fails without either.
 // Needs: math.glsl, precision.glsl.
 
 const float FUSED_HAMMON_M_MIN = 2.44140625e-4;   // 2^-12, the floor of M (above)

@@ -8,7 +8,7 @@
 // glint seen near a smooth surface's horizon) n·v = n·l = c gives D = 1/(π α²) and
 // V ≈ 0.25 / c² (c ≫ α; 0.25 / (α c) for c ≪ α), so at the roughness floor (α = 0.089²,
 // D = 5075) D·V passes 65504 for c < √(5075 · 0.25 / 65504) ≈ 0.14: +inf, and NaN once a later
-// factor is 0 (measured: tests/test_fp16.cpp, Fp16Shading). D, V ≥ 0 are finite, so their
+// factor is 0 (measured: tests/compiler/test_fp16.cpp, Fp16Shading). D, V ≥ 0 are finite, so their
 // product is at worst +inf and saturateMediump brings it back to 65504, far above the tone
 // mapper's white.
 // Resolves the roughness floor's narrow lobe, so its half vector is formed at highp

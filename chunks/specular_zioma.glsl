@@ -59,7 +59,7 @@ float specular_zioma(float alpha, float NoH, float LoH) {
 
 // Facet's form with d by the Lagrange identity 1 − NoH² = |n × h|²: d = |n × h|² + (α NoH)², which
 // keeps the bits the textbook d loses by cancellation for NoH within 2^-11 of 1. Measured: Mesa's
-// GLSL ES path stores the mediump normal varying as fp16 (tests/test_gl_backend.cpp), and with the
+// GLSL ES path stores the mediump normal varying as fp16 (tests/runtime/test_gl_backend.cpp), and with the
 // textbook d that quantised normal speckles the highlight core of the r = 0.35 example sphere by
 // up to 29/255 against Vulkan; with this form the two agree within 1/255. Same single division.
 float specular_zioma_nxh(float alpha, float NoH, vec3 n, vec3 h, float LoH) {

@@ -28,18 +28,18 @@ set(FACET_COMPONENT_TARGETS_gl facet_runtime_gl)
 set(FACET_COMPONENT_TARGETS_gltf facet_runtime_gltf)
 set(FACET_COMPONENT_TARGETS_scene facet_scene)
 
-# Public headers per component, as they sit under <folder>/include/facet/ in the source tree
-# (runtime/ and scene/). Only these are installed; a header listed here that includes one not
-# installed fails the consumer test (tests/consumer_project.cmake compiles every installed header).
-set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h
-    render_path.h texture_checks.h runtime/environment.h runtime/exposure.h runtime/image_texture.h runtime/material.h
-    runtime/material_instance.h runtime/mesh.h runtime/png.h runtime/preshader.h runtime/color_grading.h
-    runtime/vignette.h)
+# Public headers per component, as they sit under <folder>/include/facet/<folder>/ in the source
+# tree (runtime/ and scene/), installed under include/facet/<folder>/. Only these are installed; a
+# header listed here that includes one not installed fails the consumer test
+# (tests/examples/consumer_project.cmake compiles every installed header).
+set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h render_path.h
+    texture_checks.h environment.h exposure.h image_texture.h material.h material_instance.h mesh.h png.h
+    preshader.h color_grading.h vignette.h)
 # The Scene type environment.h takes and the post settings; their reader is the scene component.
-set(FACET_SCENE_HEADERS_core runtime/scene.h runtime/post_settings.h)
+set(FACET_SCENE_HEADERS_core scene.h post_settings.h)
 set(FACET_RUNTIME_HEADERS_vulkan vulkan_backend.h)
 set(FACET_RUNTIME_HEADERS_gl gl_backend.h)
-set(FACET_RUNTIME_HEADERS_gltf runtime/gltf_mesh.h)
+set(FACET_RUNTIME_HEADERS_gltf gltf_mesh.h)
 
 # How FacetConfig.cmake finds each outside target the exported libraries link: "target|how|what",
 # how = package (find_package(what)) or pkg-config (pkg_check_modules(<prefix> IMPORTED_TARGET what),
@@ -122,11 +122,11 @@ foreach(component IN LISTS FACET_COMPONENTS)
   install(EXPORT ${export} NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
   foreach(folder IN ITEMS runtime scene)
     string(TOUPPER ${folder} list)
-    foreach(header IN LISTS FACET_${list}_HEADERS_${component})
-      get_filename_component(subdir ${header} DIRECTORY)
-      install(FILES ${PROJECT_SOURCE_DIR}/${folder}/include/facet/${header}
-              DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/facet/${subdir})
-    endforeach()
+    list(TRANSFORM FACET_${list}_HEADERS_${component} PREPEND ${PROJECT_SOURCE_DIR}/${folder}/include/facet/${folder}/
+         OUTPUT_VARIABLE headers)
+    if(headers)
+      install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/facet/${folder})
+    endif()
   endforeach()
   facet_component_dependencies(${component} deps)
   string(APPEND FACET_CONFIG_COMPONENT_DEPENDENCIES "set(_facet_dependencies_${component} \"${deps}\")\n")
@@ -134,8 +134,12 @@ endforeach()
 # Every header of the libraries the core exports is public (package reader and checks, IBL maths,
 # the ABI).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/abi/include/ ${PROJECT_SOURCE_DIR}/ibl/include/
-                  ${PROJECT_SOURCE_DIR}/package/include/
+                  ${PROJECT_SOURCE_DIR}/package/include/ ${PROJECT_SOURCE_DIR}/package/checks/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The paths apps included before the public headers moved under facet/<library>/, for one release:
+# each forwards to its header's new path (tests/examples/consumer_old_include_paths.cpp compiles them).
+# Only installed: Facet's own sources use the new paths.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/cmake/forwarding_headers/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 configure_package_config_file(cmake/FacetConfig.cmake.in ${PROJECT_BINARY_DIR}/FacetConfig.cmake
   INSTALL_DESTINATION ${FACET_CMAKE_INSTALL_DIR}

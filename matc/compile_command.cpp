@@ -14,9 +14,9 @@
 #include "facet/compiler/library_sources.h"
 #include "facet/ir/check.h"
 #include "facet/ir/lexer.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "facet/permutations/variant_key.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 #include "scene_keys.h"
 
 namespace facet::matc {

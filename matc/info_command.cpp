@@ -8,9 +8,9 @@
 #include "commands.h"
 #include "facet/compiler/cost_figures.h"
 #include "facet/compiler/spirv_tools_backend.h"
-#include "facet/package.h"
-#include "facet/package_checks.h"
-#include "facet/runtime/scene.h"
+#include "facet/package/package.h"
+#include "facet/package/checks.h"
+#include "facet/scene/scene.h"
 #include "scene_keys.h"
 
 namespace facet::matc {
@@ -270,7 +270,7 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
 }
 
 // What an app loading the package would be told, by the loader's own checks (one implementation,
-// facet/package_checks.h: loadError for the tables and the format, checkVariant on every variant
+// facet/package/checks.h: loadError for the tables and the format, checkVariant on every variant
 // for the code: SPIR-V validation, stages, interfaces), none of which needs a GPU; "" when every
 // variant loads. The GLSL ES text is checked by a GL driver only, so not here.
 std::string runtimeRefusal(const std::string& path) {

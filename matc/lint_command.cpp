@@ -10,7 +10,7 @@
 #include "facet/compiler/build.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/lint/report.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::matc {
 namespace {

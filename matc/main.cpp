@@ -6,7 +6,7 @@
 #include <string>
 
 #include "commands.h"
-#include "facet/atomic_file.h"
+#include "facet/package/atomic_file.h"
 #include "facet/cli/command_line.h"
 
 namespace {

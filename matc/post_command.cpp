@@ -7,7 +7,7 @@
 #include "commands.h"
 #include "facet/cli/outputs.h"
 #include "facet/compiler/post.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::matc {
 

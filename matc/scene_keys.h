@@ -7,7 +7,7 @@
 #include <string>
 
 #include "facet/permutations/variant_key.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 namespace facet::matc {
 

@@ -3,7 +3,7 @@
 // Form (the shipped structure, coefficients free):
 //   spec = α² / (4π d² · max(LoH², m) · (p α + q)) · f0,   d = NoH²(α² − 1) + 1
 // Constraint: directional albedo ≤ 0.995 for f0 = 1, for every NoV and roughness of a grid (the
-// 0.5 % margin covers the quadrature error and grid points in between; tests/test_chunks.cpp checks
+// 0.5 % margin covers the quadrature error and grid points in between; tests/compiler/test_chunks.cpp checks
 // ≤ 1 on a finer grid). The albedo is A_m(α, NoV) / (p α + q), with A_m the integral of
 // D n·l / (4 max(LoH², m)), so for a given m the constraint is linear: p αᵢ + q ≥ maxᵥ A_m(αᵢ, v) / 0.995.
 // Objective: squared error of the tone-mapped sRGB value against the exact GGX · Smith-correlated ·

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "facet/compiler/glsl_library.h"
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::compiler {
 namespace {

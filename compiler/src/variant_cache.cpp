@@ -19,7 +19,7 @@
 #include <unistd.h>
 
 #include "facet/compiler/build.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::compiler {
 

@@ -11,7 +11,7 @@
 #include <mutex>
 #include <sstream>
 
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 #include "vk_check.h"
 #include "vk_context.h"
 

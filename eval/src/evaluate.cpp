@@ -12,8 +12,8 @@
 #include "facet/compiler/build.h"
 #include "facet/eval/prepared_frame.h"
 #include "facet/gpu_stats/package_pairs.h"
-#include "facet/package.h"
-#include "facet/render_backend.h"
+#include "facet/package/package.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/png.h"
 
 namespace facet::eval {

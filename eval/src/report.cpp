@@ -9,7 +9,7 @@
 
 #include "facet/compiler/cost_figures.h"
 #include "facet/gpu_stats/report.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::eval {
 namespace {

@@ -9,7 +9,7 @@
 #include "facet/eval/evaluate.h"
 #include "facet/eval/report.h"
 #include "facet/gpu_stats/report.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 namespace facet::eval {
 

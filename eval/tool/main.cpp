@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "eval_command.h"
-#include "facet/atomic_file.h"
+#include "facet/package/atomic_file.h"
 #include "facet/cli/command_line.h"
 #include "facet/cli/inputs.h"
 

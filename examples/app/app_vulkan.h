@@ -1,6 +1,6 @@
 // What an engine already has before it embeds Facet: its own Vulkan instance, device and queue,
 // its render target, its per-frame command buffers and fences. Used by examples/app and by the
-// tests of the app-device API (tests/test_vulkan_app_frames.cpp), which need the same.
+// tests of the app-device API (tests/runtime/test_vulkan_app_frames.cpp), which need the same.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 
 namespace facet::example {
 

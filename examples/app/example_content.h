@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material_instance.h"
 
 namespace facet::example {

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "example_content.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/png.h"
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 #include "app_vulkan.h"
 
 namespace {

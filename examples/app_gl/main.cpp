@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "example_content.h"
-#include "facet/gl_backend.h"
+#include "facet/runtime/gl_backend.h"
 #include "facet/runtime/png.h"
 
 namespace {

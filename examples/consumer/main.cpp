@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "facet/package.h"
-#include "facet/package_reader.h"
-#include "facet/render_backend.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/material.h"

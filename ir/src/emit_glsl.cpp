@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "facet/ir/precision.h"
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 #include "facet/ir/ranges.h"
 
 namespace facet::ir {

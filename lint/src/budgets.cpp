@@ -9,7 +9,7 @@
 #include "facet/compiler/cost_figures.h"
 #include "facet/lint/lint.h"
 #include "facet/permutations/variant_key.h"
-#include "facet/runtime/json_document.h"
+#include "facet/scene/json_document.h"
 
 namespace facet::lint {
 namespace {
@@ -83,7 +83,7 @@ bool isStage(const std::string& s) { return s == "vertex" || s == "fragment"; }
 }  // namespace
 
 std::optional<Budgets> parseBudgets(const std::string& path, const std::string& text, std::string* error) {
-  std::optional<json> j = runtime::parseJsonDocument(path, text, error);
+  std::optional<json> j = scene::parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
     Budgets b;
@@ -115,7 +115,7 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
 }
 
 std::optional<Baseline> parseBaseline(const std::string& path, const std::string& text, std::string* error) {
-  std::optional<json> j = runtime::parseJsonDocument(path, text, error);
+  std::optional<json> j = scene::parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
     Baseline b;

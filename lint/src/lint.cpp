@@ -10,7 +10,7 @@
 #include "facet/ir/check.h"
 #include "facet/ir/passes.h"
 #include "facet/lint/precision_rules.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "facet/permutations/tiers.h"
 
 namespace facet::lint {

@@ -1,11 +1,11 @@
-#include "facet/package_checks.h"
+#include "facet/package/checks.h"
 
 #include <algorithm>
 #include <cstring>
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 #include "spirv_reflection.h"
 #include "untrusted_spirv.h"
 

@@ -1,8 +1,8 @@
-#include "facet/program_interface.h"
+#include "facet/package/program_interface.h"
 
 #include <algorithm>
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::package {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/program_interface.h"
+#include "facet/package/program_interface.h"
 
 namespace facet::package {
 

@@ -1,4 +1,4 @@
-#include "facet/atomic_file.h"
+#include "facet/package/atomic_file.h"
 
 #include <fcntl.h>
 #include <pthread.h>

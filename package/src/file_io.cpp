@@ -8,8 +8,8 @@
 #include <vector>
 #include <system_error>
 
-#include "facet/atomic_file.h"
-#include "facet/package.h"
+#include "facet/package/atomic_file.h"
+#include "facet/package/package.h"
 #include "file_io.h"
 #include "format.h"
 

@@ -7,8 +7,8 @@
 #include <array>
 #include <cstdint>
 
-#include "facet/package.h"
-#include "facet/package_reader.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
 
 namespace facet::package::detail {
 

@@ -2,7 +2,7 @@
 // and the slots shader_abi.h pins for a material (what the compiler records and the reader expects).
 #include <set>
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 #include "sections.h"
 
 namespace facet::package {

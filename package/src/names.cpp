@@ -1,7 +1,7 @@
 // Names used in `matc info` output and in the compiler's parameter declarations.
 #include <cctype>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::package {
 

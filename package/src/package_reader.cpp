@@ -2,7 +2,7 @@
 // section payloads, cross-references; blobs are decoded only when first asked for. Nothing is
 // allocated on the strength of a number in the file until that number has been checked against
 // the bytes that back it or against a fixed limit.
-#include "facet/package_reader.h"
+#include "facet/package/package_reader.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -3,7 +3,7 @@
 #include <exception>
 #include <new>
 
-#include "facet/package_reader.h"
+#include "facet/package/package_reader.h"
 #include "format.h"
 #include "rows.h"
 

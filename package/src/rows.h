@@ -1,15 +1,15 @@
 // The one place the package model (package.h: shaders with their code, textures with their
 // texels) and its table rows (package_reader.h: ShaderInfo, VariantInfo, TextureInfo, which
 // sections VARS and TEXS store, code and texels by blob index) are converted into each other.
-// A field added to a row or to the model is carried here, and tests/test_package.cpp's round
+// A field added to a row or to the model is carried here, and tests/package/test_package.cpp's round
 // trip (Package.RowsRoundTripEverySection) sets it.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 
-#include "facet/package.h"
-#include "facet/package_reader.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
 
 namespace facet::package::detail {
 

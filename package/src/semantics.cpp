@@ -1,8 +1,8 @@
 // What a package means, checked after its bytes (package.h, semanticError): for packages an app
 // did not build (docs/security.md). read() guarantees every offset and size; this guarantees that
 // what they hold is a material the runtime can use, as the compiler would have written it.
-#include "facet/package.h"
-#include "facet/package_reader.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
 
 #include <cmath>
 #include <algorithm>

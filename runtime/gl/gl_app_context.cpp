@@ -2,7 +2,7 @@
 // never made current or destroyed by the backend, only checked to be the current one.
 #include <utility>
 
-#include "facet/gl_backend.h"
+#include "facet/runtime/gl_backend.h"
 
 namespace facet::runtime {
 namespace {

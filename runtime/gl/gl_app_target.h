@@ -1,4 +1,4 @@
-// The app's framebuffer as the post pass's target (GlAppTarget, facet/gl_backend.h): checked
+// The app's framebuffer as the post pass's target (GlAppTarget, facet/runtime/gl_backend.h): checked
 // before a frame draws anything, and on the merged path its draw buffer 0's image lent to the
 // backend's framebuffer-fetch framebuffer as colour 1 for the length of one frame.
 #pragma once
@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "facet/gl_backend.h"
+#include "facet/runtime/gl_backend.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {

@@ -12,8 +12,8 @@
 #include <optional>
 #include <unordered_map>
 
-#include "facet/gl_backend.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/gl_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "gl_app_target.h"
 #include "gl_context.h"
 #include "gl_mesh.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/gl_backend.h"
+#include "facet/runtime/gl_backend.h"
 
 namespace facet::runtime::gl {
 

@@ -1,6 +1,6 @@
 #include "gl_post_inputs.h"
 
-#include "facet/content_hash.h"
+#include "facet/runtime/content_hash.h"
 
 namespace facet::runtime::gl {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::runtime::gl {
 namespace {

@@ -1,11 +1,11 @@
 // A linked "#version 300 es" program's interface as GL reflects it, in the form the runtime's
-// interface check reads (facet/program_interface.h): what the GL backend holds against the package
+// interface check reads (facet/package/program_interface.h): what the GL backend holds against the package
 // before a program's first draw, since the GLSL ES text of a package is never seen by the core.
 #pragma once
 
 #include <vector>
 
-#include "facet/program_interface.h"
+#include "facet/package/program_interface.h"
 #include "gl_context.h"
 
 namespace facet::runtime::gl {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_path.h"
+#include "facet/runtime/render_path.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {

@@ -1,4 +1,4 @@
-#include "facet/content_hash.h"
+#include "facet/runtime/content_hash.h"
 
 #include <cstring>
 

@@ -12,7 +12,7 @@
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include "facet/runtime/image_texture.h"
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::runtime {
 namespace {

@@ -1,4 +1,4 @@
-#include "facet/frame_graph.h"
+#include "facet/runtime/frame_graph.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-#include "facet/runtime/json_document.h"
+#include "facet/scene/json_document.h"
 
 namespace facet::runtime::gltf {
 namespace {
@@ -36,13 +36,13 @@ bool checkAsset(const json& document, std::string* error) {
   }
   const auto v = version(given->get<std::string>());
   if (!v || v->first != 2) {
-    *error = "/asset/version: '" + shownValue(given->get<std::string>()) + "' is not a glTF 2.x version (this loader reads glTF 2.0)";
+    *error = "/asset/version: '" + scene::shownValue(given->get<std::string>()) + "' is not a glTF 2.x version (this loader reads glTF 2.0)";
     return false;
   }
   if (const json* minimum = member(*asset, "minVersion")) {
     const auto m = minimum->is_string() ? version(minimum->get<std::string>()) : std::nullopt;
     if (!m || *m > std::make_pair(2ul, 0ul) || *m > *v) {
-      *error = "/asset/minVersion: " + (minimum->is_string() ? "'" + shownValue(minimum->get<std::string>()) + "'" : minimum->type_name()) +
+      *error = "/asset/minVersion: " + (minimum->is_string() ? "'" + scene::shownValue(minimum->get<std::string>()) + "'" : minimum->type_name()) +
                " is not a version this loader supports (glTF 2.0), or is above the asset's version";
       return false;
     }
@@ -60,7 +60,7 @@ bool checkExtensions(const json& document, std::string* error) {
   if (!required->empty()) {
     const json& first = (*required)[0];
     *error = "/extensionsRequired/0: the file requires " +
-             (first.is_string() ? "extension '" + shownValue(first.get<std::string>()) + "'" : std::string("an extension")) +
+             (first.is_string() ? "extension '" + scene::shownValue(first.get<std::string>()) + "'" : std::string("an extension")) +
              ", which this loader does not implement (it implements none; the glTF spec says such a file must not be loaded)";
     return false;
   }
@@ -76,7 +76,7 @@ bool checkStrides(const json& document, std::string* error) {
     const bool valid = stride->is_number_unsigned() && stride->get<uint64_t>() >= 4 && stride->get<uint64_t>() <= 252 &&
                        stride->get<uint64_t>() % 4 == 0;
     if (!valid) {
-      *error = "/bufferViews/" + std::to_string(i) + "/byteStride: " + shownValue(stride->dump()) +
+      *error = "/bufferViews/" + std::to_string(i) + "/byteStride: " + scene::shownValue(stride->dump()) +
                " is not a multiple of 4 in 4..252 (glTF 2.0 bufferView.byteStride)";
       return false;
     }
@@ -102,7 +102,7 @@ std::string uriPath(const std::string& uri, std::string* why) {
   const size_t colon = uri.find(':');
   if (colon != std::string::npos && colon < uri.find('/') && std::isalpha(static_cast<unsigned char>(uri[0])) &&
       uri.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+-.", 0) == colon) {
-    *why = "'" + shownValue(uri) + "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
+    *why = "'" + scene::shownValue(uri) + "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
            "or application/gltf-buffer";
     return {};
   }
@@ -110,11 +110,11 @@ std::string uriPath(const std::string& uri, std::string* why) {
   for (size_t i = 0; i < uri.size(); ++i) {
     const char c = uri[i];
     if (c == '\0') {
-      *why = "'" + shownValue(uri) + "' holds a NUL character, which would cut the file name short";
+      *why = "'" + scene::shownValue(uri) + "' holds a NUL character, which would cut the file name short";
       return {};
     }
     if (c == '?' || c == '#') {
-      *why = "'" + shownValue(uri) + "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
+      *why = "'" + scene::shownValue(uri) + "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
       return {};
     }
     if (c != '%') {
@@ -123,7 +123,7 @@ std::string uriPath(const std::string& uri, std::string* why) {
     }
     const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1, low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
     if (high < 0 || low < 0 || (high == 0 && low == 0)) {
-      *why = "'" + shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
+      *why = "'" + scene::shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
       return {};
     }
     path += char(high * 16 + low);

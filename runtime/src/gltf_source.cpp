@@ -6,9 +6,9 @@
 #include <span>
 #include <vector>
 
-#include "facet/runtime/asset_path.h"
+#include "facet/scene/asset_path.h"
 #include "facet/runtime/gltf_mesh.h"
-#include "facet/runtime/json_document.h"
+#include "facet/scene/json_document.h"
 #include "gltf_document.h"
 #include "gltf_glb.h"
 #include "gltf_model_cost.h"
@@ -146,9 +146,9 @@ std::string tinygltfMessage(const std::string& err) {
 std::optional<std::vector<ExternalBuffer>> checkJson(const std::string& path, std::string_view text,
                                                      std::optional<size_t> glbOffset, std::string* error) {
   const std::string chunk = glbOffset ? "in the JSON chunk at byte " + std::to_string(*glbOffset) + ": " : "";
-  if (std::optional<size_t> at = jsonTooDeepAt(text)) {
-    *error = path + ":" + jsonLineColumn(text, *at) + ": error: " + chunk + "arrays and objects nest more than " +
-             std::to_string(kMaxJsonDepth) + " deep here (Facet reads JSON at most that deep)";
+  if (std::optional<size_t> at = scene::jsonTooDeepAt(text)) {
+    *error = path + ":" + scene::jsonLineColumn(text, *at) + ": error: " + chunk + "arrays and objects nest more than " +
+             std::to_string(scene::kMaxJsonDepth) + " deep here (Facet reads JSON at most that deep)";
     return std::nullopt;
   }
   const ModelCost cost = estimateModelCost(text);
@@ -158,7 +158,7 @@ std::optional<std::vector<ExternalBuffer>> checkJson(const std::string& path, st
              " MiB once read into the glTF model (its elements are far larger in memory than in the file)";
     return std::nullopt;
   }
-  std::optional<nlohmann::json> document = parseJsonDocument(path, std::string(text), error);
+  std::optional<nlohmann::json> document = scene::parseJsonDocument(path, std::string(text), error);
   if (!document) {
     if (const size_t at = error->find(": error: "); glbOffset && at != std::string::npos) error->insert(at + 9, chunk);
     return std::nullopt;
@@ -198,19 +198,19 @@ std::optional<tinygltf::Model> readSource(const std::string& path, const SourceO
   // Buffers are found from the file's real folder and must lie in the asset root, both real
   // paths (symbolic links followed): a link inside cannot lead out. Whether the file outside
   // exists is not said.
-  const fs::path folder = realPath(path).parent_path();
-  const fs::path root = options.assetRoot.empty() ? folder : realPath(options.assetRoot);
+  const fs::path folder = scene::realPath(path).parent_path();
+  const fs::path root = options.assetRoot.empty() ? folder : scene::realPath(options.assetRoot);
   PreparedFiles files;
   for (const ExternalBuffer& buffer : *external) {
-    const fs::path real = realPath(folder / buffer.path);
-    if (!isInside(root, real)) {
-      *error = path + ": error: " + buffer.pointer + ": '" + shownValue(buffer.uri) +
+    const fs::path real = scene::realPath(folder / buffer.path);
+    if (!scene::isInside(root, real)) {
+      *error = path + ": error: " + buffer.pointer + ": '" + scene::shownValue(buffer.uri) +
                "' is outside the folder this glTF file may read buffers from (" + root.string() + ")";
       return std::nullopt;
     }
     PreparedFiles::File file{tinygltfPath(folder.string(), buffer.uri), {}};
     if (!reader.read(real, buffer.byteLength, &file.bytes, &why)) {
-      *error = path + ": error: " + buffer.pointer + ": '" + shownValue(buffer.uri) + "' " + why;
+      *error = path + ": error: " + buffer.pointer + ": '" + scene::shownValue(buffer.uri) + "' " + why;
       return std::nullopt;
     }
     files.buffers.push_back(std::move(file));

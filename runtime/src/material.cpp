@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "facet/package_checks.h"
+#include "facet/package/checks.h"
 
 namespace facet::runtime {
 namespace {

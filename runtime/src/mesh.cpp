@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "facet/content_hash.h"
+#include "facet/runtime/content_hash.h"
 
 namespace facet::runtime {
 

@@ -3,7 +3,7 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::runtime {
 

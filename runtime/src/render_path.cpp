@@ -1,4 +1,4 @@
-#include "facet/render_path.h"
+#include "facet/runtime/render_path.h"
 
 namespace facet::runtime {
 

@@ -1,6 +1,6 @@
-#include "facet/texture_checks.h"
+#include "facet/runtime/texture_checks.h"
 
-#include "facet/content_hash.h"
+#include "facet/runtime/content_hash.h"
 
 #include <algorithm>
 #include <array>

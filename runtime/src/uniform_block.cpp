@@ -1,6 +1,6 @@
 #include <atomic>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "facet/frame_graph.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/frame_graph.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::viewer {
 

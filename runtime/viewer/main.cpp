@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "facet/atomic_file.h"
-#include "facet/frame_graph.h"
-#include "facet/render_backend.h"
-#include "facet/render_path.h"
+#include "facet/package/atomic_file.h"
+#include "facet/runtime/frame_graph.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/render_path.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/scene_frame.h"
 #include "frame_stats.h"

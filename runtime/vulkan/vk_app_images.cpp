@@ -3,7 +3,7 @@
 #include <array>
 #include <tuple>
 
-#include "facet/frame_eviction.h"
+#include "facet/runtime/frame_eviction.h"
 #include "vk_check.h"
 #include "vk_pipeline.h"
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 #include "vk_retire.h"
 #include "vk_targets.h"
 

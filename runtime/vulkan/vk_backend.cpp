@@ -15,9 +15,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "facet/frame_eviction.h"
-#include "facet/render_backend.h"
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/frame_eviction.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 #include "vk_app_images.h"
 #include "vk_check.h"
 #include "vk_commands.h"

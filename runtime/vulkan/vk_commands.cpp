@@ -1,6 +1,6 @@
 #include "vk_commands.h"
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::runtime::vulkan {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/vulkan_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 
 namespace facet::runtime::vulkan {
 

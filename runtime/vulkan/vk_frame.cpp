@@ -4,7 +4,7 @@
 #include <cstring>
 #include <unordered_set>
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 #include "vk_convert.h"
 #include "vk_textures.h"
 #include "vk_uniform_blocks.h"

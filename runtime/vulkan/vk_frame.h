@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "vk_meshes.h"
 
 namespace facet::runtime::vulkan {

@@ -3,8 +3,8 @@
 #include <array>
 #include <vector>
 
-#include "facet/shader_abi.h"
-#include "facet/texture_checks.h"
+#include "facet/abi/shader_abi.h"
+#include "facet/runtime/texture_checks.h"
 #include "vk_check.h"
 
 namespace facet::runtime::vulkan {

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "facet/content_hash.h"
+#include "facet/runtime/content_hash.h"
 #include "vk_check.h"
 #include "vk_context.h"
 

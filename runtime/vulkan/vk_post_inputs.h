@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "vk_resources.h"
 
 namespace facet::runtime::vulkan {

@@ -12,9 +12,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "facet/render_backend.h"
-#include "facet/texture_checks.h"
-#include "facet/frame_eviction.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/texture_checks.h"
+#include "facet/runtime/frame_eviction.h"
 #include "vk_resources.h"
 #include "vk_retire.h"
 

@@ -1,10 +1,10 @@
-#include "facet/runtime/asset_path.h"
+#include "facet/scene/asset_path.h"
 
 #include <algorithm>
 #include <system_error>
 #include <vector>
 
-namespace facet::runtime {
+namespace facet::scene {
 
 namespace fs = std::filesystem;
 
@@ -48,4 +48,4 @@ bool isInside(const fs::path& root, const fs::path& real) {
   return rootEnd == root.end();
 }
 
-}  // namespace facet::runtime
+}  // namespace facet::scene

@@ -1,10 +1,10 @@
-#include "facet/runtime/json_document.h"
+#include "facet/scene/json_document.h"
 
 #include <cstdio>
 #include <set>
 #include <vector>
 
-namespace facet::runtime {
+namespace facet::scene {
 namespace {
 
 using nlohmann::json;
@@ -160,4 +160,4 @@ std::optional<nlohmann::json> parseJsonDocument(const std::string& path, const s
   return std::nullopt;
 }
 
-}  // namespace facet::runtime
+}  // namespace facet::scene

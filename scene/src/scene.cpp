@@ -1,4 +1,4 @@
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 #include <algorithm>
 #include <array>
@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "facet/package.h"
-#include "facet/runtime/asset_path.h"
-#include "facet/runtime/json_document.h"
+#include "facet/package/package.h"
+#include "facet/scene/asset_path.h"
+#include "facet/scene/json_document.h"
 
 namespace facet::runtime {
 namespace {
@@ -37,7 +37,7 @@ void onlyKeys(const json& object, const std::string& pointer, std::initializer_l
   for (const auto& [key, value] : object.items()) {
     bool known = false;
     for (const char* k : keys) known = known || key == k;
-    if (!known) fail(pointer + "/" + pointerSegment(key), "unknown key '" + pointerSegment(key) + "'");
+    if (!known) fail(pointer + "/" + scene::pointerSegment(key), "unknown key '" + scene::pointerSegment(key) + "'");
   }
 }
 
@@ -57,20 +57,20 @@ uint32_t wholeNumber(const json& j, const std::string& pointer, double lo, doubl
 }
 
 // Resolves the file paths a scene names (images, glTF meshes): relative to the scene's folder, and only under the
-// asset root (SceneReadOptions). Containment is decided on the real paths (runtime/asset_path.h:
+// asset root (SceneReadOptions). Containment is decided on the real paths (facet/scene/asset_path.h:
 // symbolic links followed, dangling ones too), so a link inside the folder cannot point out of it.
 class AssetPaths {
  public:
   AssetPaths(std::filesystem::path sceneDir, const std::string& assetRoot)
-      : sceneDir_(std::move(sceneDir)), root_(realPath(assetRoot.empty() ? sceneDir_ : std::filesystem::path(assetRoot))) {}
+      : sceneDir_(std::move(sceneDir)), root_(scene::realPath(assetRoot.empty() ? sceneDir_ : std::filesystem::path(assetRoot))) {}
 
   std::string resolve(const json& j, const std::string& pointer) const {
     if (!j.is_string()) fail(pointer, "expected a file path");
     const std::string given = j.get<std::string>();
     if (given.empty() || given.find('\0') != std::string::npos) fail(pointer, "expected a file path");
     const std::filesystem::path path = (sceneDir_ / given).lexically_normal();
-    if (!isInside(root_, realPath(path)))
-      fail(pointer, "'" + shownValue(given) + "' is outside the folder this scene may read files from (" +
+    if (!scene::isInside(root_, scene::realPath(path)))
+      fail(pointer, "'" + scene::shownValue(given) + "' is outside the folder this scene may read files from (" +
                         root_.string() + "); an app that trusts the scene can allow another (facet-view --asset-root)");
     return path.string();
   }
@@ -190,21 +190,21 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
     // (runtime/gltf_mesh.h).
     const std::string extension = std::filesystem::path(o.mesh).extension().string();
     if (extension != ".gltf" && extension != ".glb")
-      fail(pointer + "/mesh", "unknown mesh '" + pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
+      fail(pointer + "/mesh", "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
     o.mesh = assets.resolve(j["mesh"], pointer + "/mesh");
   }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
   o.material = string(j["material"], pointer + "/material");
   // A material name is an identifier of the language (what `material NAME {` accepts): no path,
   // no NUL to cut the file name short, nothing that could open another file.
-  if (!package::isValidName(o.material)) fail(pointer + "/material", "expected a material name (letters, digits, _), not '" + pointerSegment(o.material) + "'");
+  if (!package::isValidName(o.material)) fail(pointer + "/material", "expected a material name (letters, digits, _), not '" + scene::pointerSegment(o.material) + "'");
   if (j.contains("position")) o.position = vec3(j["position"], pointer + "/position");
   if (j.contains("radius")) o.radius = number(j["radius"], pointer + "/radius", 1e-4, 1e6);
   if (j.contains("params")) {
     const json& params = j["params"];
     if (!params.is_object()) fail(pointer + "/params", "expected an object");
     for (const auto& [name, value] : params.items()) {
-      std::string p = pointer + "/params/" + pointerSegment(name);
+      std::string p = pointer + "/params/" + scene::pointerSegment(name);
       if (!package::isValidName(name)) fail(p, "expected a parameter name (letters, digits, _)");
       std::vector<double> v;
       if (value.is_string()) {  // a texture parameter's image, relative to the scene file
@@ -264,7 +264,7 @@ void post(const json& j, const AssetPaths& assets, Scene* s) {
   if (j.contains("toneCurve")) {
     p.toneCurve = string(j["toneCurve"], "/post/toneCurve");
     if (p.toneCurve != "aces" && p.toneCurve != "neutral" && p.toneCurve != "none")
-      fail("/post/toneCurve", "expected \"aces\", \"neutral\" or \"none\", not '" + shownValue(p.toneCurve) + "'");
+      fail("/post/toneCurve", "expected \"aces\", \"neutral\" or \"none\", not '" + scene::shownValue(p.toneCurve) + "'");
   }
   if (j.contains("dither")) {
     if (!j["dither"].is_boolean()) fail("/post/dither", "expected true or false");
@@ -316,7 +316,7 @@ Scene scene(const json& j, const AssetPaths& assets) {
 
 std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
                                 const SceneReadOptions& options) {
-  std::optional<json> j = parseJsonDocument(path, text, error);
+  std::optional<json> j = scene::parseJsonDocument(path, text, error);
   if (!j) return std::nullopt;
   try {
     const AssetPaths assets(std::filesystem::path(path).parent_path(), options.assetRoot);

@@ -23,8 +23,8 @@
 #include <string>
 
 #include "checksum.h"
-#include "facet/package.h"
-#include "facet/package_reader.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/preshader.h"
 #include "format.h"

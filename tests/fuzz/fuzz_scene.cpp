@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string error;

@@ -1,4 +1,4 @@
-// How fuzz_gltf, and the test replaying its inputs (tests/test_gltf_hostile.cpp), turn one input
+// How fuzz_gltf, and the test replaying its inputs (tests/runtime/test_gltf_hostile.cpp), turn one input
 // into glTF files: the bytes before the first "--bin--" are the glTF file, m.glb when they start
 // with the GLB magic "glTF" and m.gltf otherwise; the bytes after it, when it is there, are b.bin
 // beside it (the external buffer the seeds name). So one input drives the JSON, the container

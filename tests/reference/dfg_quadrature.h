@@ -1,7 +1,7 @@
 // Brute-force references for the IBL integrals of facet_ibl (ibl/), sharing no code with it:
 // deterministic midpoint grids over the hemisphere in double, no importance sampling. Slow, and
 // exact to ~1e-5 for α ≥ 0.06 (r ≥ 0.25) at the default resolution — the ground truth the
-// sampled generators are checked against (tests/test_ibl.cpp, tools/measure_env_brdf.cpp).
+// sampled generators are checked against (tests/ibl/test_ibl.cpp, tools/measure_env_brdf.cpp).
 #pragma once
 
 #include <cmath>

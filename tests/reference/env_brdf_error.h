@@ -1,5 +1,5 @@
 // The error of an analytic environment BRDF against a DFG table, over the table's texel centres
-// (tests/test_ibl.cpp and tools/measure_ibl.cpp report the same numbers).
+// (tests/ibl/test_ibl.cpp and tools/measure_ibl.cpp report the same numbers).
 #pragma once
 
 #include <cmath>

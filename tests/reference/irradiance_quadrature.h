@@ -1,4 +1,4 @@
-// Brute-force irradiance and the test sky of the SH checks (tests/test_ibl.cpp,
+// Brute-force irradiance and the test sky of the SH checks (tests/ibl/test_ibl.cpp,
 // tools/measure_ibl.cpp): E(n) = ∫ L(d) max(0, n·d) dω on a midpoint grid over the hemisphere
 // around n, in double, sharing no code with facet_ibl.
 #pragma once

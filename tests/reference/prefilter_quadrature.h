@@ -1,4 +1,4 @@
-// What a prefiltered environment level should hold, by brute force (tests/test_ibl.cpp,
+// What a prefiltered environment level should hold, by brute force (tests/ibl/test_ibl.cpp,
 // tools/measure_ibl.cpp), sharing no code with facet_ibl.
 #pragma once
 

@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/compiler/cost_figures.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // createGlBackend(GlOptions) of render_backend.h: the GL backend on a headless context of its own.
-#include "facet/gl_backend.h"
+#include "facet/runtime/gl_backend.h"
 #include "headless_context.h"
 
 namespace facet::runtime {

@@ -1,13 +1,13 @@
 // GL contexts of the backend's own, for tests, the viewer and eval (facet_runtime_gl_headless):
 // a real OpenGL ES 3.x context through EGL on Mesa's surfaceless platform (what a phone gives), or
 // an OpenGL core context on OSMesa (llvmpipe) that accepts "#version 300 es" shaders, where EGL is
-// missing. An app never links this: it hands the backend its own context (facet/gl_backend.h).
+// missing. An app never links this: it hands the backend its own context (facet/runtime/gl_backend.h).
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include "facet/gl_backend.h"
+#include "facet/runtime/gl_backend.h"
 
 namespace facet::runtime::gl {
 

@@ -1,5 +1,5 @@
 #version 300 es
-// Test pair for tests/test_mesa_stats_compile.py: a transform and one varying.
+// Test pair for tests/gpu_stats/test_mesa_stats_compile.py: a transform and one varying.
 layout(location = 0) in highp vec3 a_position;
 uniform highp mat4 u_mvp;
 out mediump vec2 v_uv;

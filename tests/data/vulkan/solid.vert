@@ -1,6 +1,6 @@
 #version 310 es
 // Test vertex shader for test_vulkan_backend: the ABI's vertex stream and uniform blocks
-// (runtime/include/facet/shader_abi.h), position transformed by viewProjection * model.
+// (runtime/include/facet/abi/shader_abi.h), position transformed by viewProjection * model.
 precision highp float;
 
 layout(location = 0) in vec3 position;

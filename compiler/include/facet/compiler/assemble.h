@@ -15,7 +15,7 @@
 #include "facet/ir/module.h"
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::compiler {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "facet/ir/module.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 

@@ -28,7 +28,7 @@
 // Run it on glslang's unoptimized output, before any SSA rewrite: there a highp value entering
 // mediump is a relaxed OpLoad from a mediump variable, which gets quantized; after spirv-opt's
 // memory-to-register passes those loads are gone and the value would stay fp32. Optimizing
-// afterwards is fine: spirv-opt keeps OpQuantizeToF16 (tests/test_fp16.cpp checks it).
+// afterwards is fine: spirv-opt keeps OpQuantizeToF16 (tests/compiler/test_fp16.cpp checks it).
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::compiler {
 

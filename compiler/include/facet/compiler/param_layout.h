@@ -24,7 +24,7 @@ struct ParamLayout {
 
 // std140 (GLSL ES 3.00 §4.3.7 / OpenGL 4.5 §7.6.2.2): scalars align to 4, vec2 to 8, vec3 and
 // vec4 to 16; vec3 occupies 12 bytes, so a following float packs into its fourth slot; the
-// block size rounds up to 16. tests/test_shader_abi.cpp checks it against glslang's reflection.
+// block size rounds up to 16. tests/compiler/test_shader_abi.cpp checks it against glslang's reflection.
 // Parameters the optimised material never reads (Param::used false) get size 0 and no member.
 ParamLayout layoutParams(const std::vector<ir::Param>& params);
 

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::compiler {
 
@@ -63,7 +63,7 @@ std::vector<PostEffects> everyPostEffects();
 // grading LUT, the PostUniforms block): pinned from shader_abi.h like a material's slots.
 std::vector<package::MslBinding> postMslBindings(const PostEffects& effects);
 
-// C++ source defining facet::runtime::postVariants() (runtime/include/facet/render_backend.h)
+// C++ source defining facet::runtime::postVariants() (runtime/include/facet/runtime/render_backend.h)
 // with these variants' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
 // without linking the compiler.
 std::string postShadersCpp(const std::vector<PostShaders>& variants);

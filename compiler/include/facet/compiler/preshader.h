@@ -13,7 +13,7 @@
 
 #include "facet/compiler/param_layout.h"
 #include "facet/ir/module.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 #include "facet/permutations/tiers.h"
 
 namespace facet::compiler {

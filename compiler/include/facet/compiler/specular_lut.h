@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "facet/shader_abi.h"
+#include "facet/abi/shader_abi.h"
 
 namespace facet::compiler {
 

@@ -19,7 +19,7 @@
 #include <glm/vec4.hpp>
 
 namespace facet::runtime {
-struct AppDevice;  // facet/vulkan_backend.h
+struct AppDevice;  // facet/runtime/vulkan_backend.h
 }
 
 namespace facet::eval {

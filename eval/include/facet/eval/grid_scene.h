@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "facet/ir/module.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 namespace facet::eval {
 

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "facet/permutations/tiers.h"
-#include "facet/render_backend.h"
-#include "facet/runtime/scene.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 
 namespace facet::eval {

@@ -8,7 +8,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "facet/eval/evaluate.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::eval {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "facet/gpu_stats/mesa_compile.h"
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::gpu_stats {
 

@@ -16,7 +16,7 @@
 // Sampling. The textbook sampler (h ~ D n·h) is unbiased but at grazing view it wastes most
 // samples below the horizon and weighs the rest by up to 4 v·h / n·h: with 1024 Hammersley
 // points it reads albedo = 0.9956 at n·v = 1/64, r = 0.5, where the true value is 0.97371
-// (tests/test_ibl.cpp integrates it by brute force). Sampling visible normals instead (Heitz
+// (tests/ibl/test_ibl.cpp integrates it by brute force). Sampling visible normals instead (Heitz
 // 2018) makes each sample's weight F · G2/G1(v) ≤ 1, so the estimate converges fast and can never
 // exceed 1 for f0 = 1 (white furnace) by construction.
 #pragma once

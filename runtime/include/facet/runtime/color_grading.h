@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "facet/render_backend.h"
-#include "facet/runtime/post_settings.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/scene/post_settings.h"
 
 namespace facet::runtime {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "facet/ibl/dfg_lut.h"
-#include "facet/render_backend.h"
-#include "facet/runtime/scene.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/scene/scene.h"
 
 namespace facet::runtime {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 

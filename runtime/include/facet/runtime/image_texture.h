@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "facet/ibl/equirect_image.h"
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "facet/package.h"
-#include "facet/package_reader.h"
-#include "facet/render_backend.h"
+#include "facet/package/package.h"
+#include "facet/package/package_reader.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 
@@ -40,7 +40,7 @@ class LoadedMaterial {
   // The shaders of one variant, for every API, decompressed on the first request for the
   // variant. A key the package was not built with is an error that lists the keys it has (the
   // compiler builds only what a scene asks for). Each shader's code is checked before any
-  // backend sees it (package::checkVariant, facet/package_checks.h): its kind, SPIR-V validated
+  // backend sees it (package::checkVariant, facet/package/checks.h): its kind, SPIR-V validated
   // (SPIRV-Tools) with one entry point of its slot's stage, and each SPIR-V stage's interface
   // against the package's (program_interface.h); the program carries that interface, which the GL
   // backend checks its linked program against.

@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material.h"
 
 namespace facet::runtime {

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 
@@ -22,7 +22,7 @@ static_assert(sizeof(Vertex) == abi::kVertexStride, "Vertex mirrors shader_abi.h
 void appendVertex(Mesh& mesh, const Vertex& v);
 
 // What a backend's uploaded copy of a mesh depends on: sizes and a hash of every vertex and
-// index (facet/content_hash.h). Backends key their mesh buffers by the Mesh's address and upload
+// index (facet/runtime/content_hash.h). Backends key their mesh buffers by the Mesh's address and upload
 // again when this changes, so a mesh edited in place, or a new one at a freed address, is not
 // drawn stale. Computed once per distinct mesh per frame, not once per object.
 struct MeshIdentity {

@@ -8,7 +8,7 @@
 #include <span>
 #include <string>
 
-#include "facet/package.h"
+#include "facet/package/package.h"
 
 namespace facet::runtime {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "facet/render_backend.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/material_instance.h"
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 namespace facet::runtime {
 

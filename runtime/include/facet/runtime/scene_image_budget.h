@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "facet/runtime/scene.h"
+#include "facet/scene/scene.h"
 
 namespace facet::runtime {
 

@@ -4,8 +4,8 @@
 
 #include <cstdint>
 
-#include "facet/shader_abi.h"
-#include "facet/runtime/post_settings.h"
+#include "facet/abi/shader_abi.h"
+#include "facet/scene/post_settings.h"
 
 namespace facet::runtime {
 

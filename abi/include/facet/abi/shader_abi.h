@@ -1,0 +1,268 @@
+// The binary interface between the shaders in a package and the runtime that draws with them:
+// one owner (library facet_shader_abi, header only), included by the compiler, which prints the
+// shaders' declarations from the tables at the end of this file, and by the runtime, which binds
+// by the same numbers. tests/compiler/test_shader_abi.cpp reflects compiled SPIR-V and checks it against
+// these tables and the C++ structs, so a change to one side fails the tests, not a frame on a phone.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace facet::abi {
+
+// Vertex inputs. One interleaved float stream holding every attribute (18 floats, 72-byte
+// stride); a shader declares only the locations its material reads (the compiler derives them),
+// so an unread attribute costs memory bandwidth in the fetch but no shader work. Production
+// engines split streams per attribute set; one stream keeps this small renderer simple.
+inline constexpr uint32_t kAttribPosition = 0;  // vec3, object space
+inline constexpr uint32_t kAttribNormal = 1;    // vec3, object space, unit length
+inline constexpr uint32_t kAttribUv0 = 2;       // vec2
+inline constexpr uint32_t kAttribUv1 = 3;       // vec2
+inline constexpr uint32_t kAttribColor = 4;     // vec4, linear RGBA in [0, 1]
+inline constexpr uint32_t kAttribTangent = 5;   // vec4: xyz object-space unit tangent (direction of
+                                                // +u), w = ±1 bitangent sign (MikkTSpace convention:
+                                                // bitangent = w · cross(normal, tangent))
+inline constexpr uint32_t kVertexFloats = 18;
+inline constexpr uint32_t kVertexStride = kVertexFloats * sizeof(float);
+// Every attribute of the stream: location, float components, float offset within a vertex, and
+// its name: the shaders declare `in highp vecN a_<name>` (N = components). Both backends describe
+// the stream from this table; the compiler declares the inputs from it.
+struct VertexAttribute {
+  uint32_t location;
+  uint32_t components;
+  uint32_t offsetFloats;
+  std::string_view name;
+};
+inline constexpr VertexAttribute kVertexAttributes[] = {
+    {kAttribPosition, 3, 0, "position"}, {kAttribNormal, 3, 3, "normal"}, {kAttribUv0, 2, 6, "uv0"},
+    {kAttribUv1, 2, 8, "uv1"},           {kAttribColor, 4, 10, "color"},  {kAttribTangent, 4, 14, "tangent"},
+};
+constexpr const VertexAttribute& vertexAttribute(uint32_t location) {
+  for (const VertexAttribute& a : kVertexAttributes)
+    if (a.location == location) return a;
+  return kVertexAttributes[0];  // unreachable for the kAttrib* constants (a static_assert below checks them)
+}
+
+// Uniform blocks, std140. Vulkan: descriptor set 0, binding = the value below.
+// GLES 3.00 has no layout(binding): the runtime looks the block up by name and calls
+// glUniformBlockBinding(program, index, value). A block a shader does not use may be absent.
+inline constexpr uint32_t kFrameBinding = 0;     // block "FrameUniforms"
+inline constexpr uint32_t kObjectBinding = 1;    // block "ObjectUniforms"
+inline constexpr uint32_t kMaterialBinding = 2;  // block "MaterialParams" (layout recorded in the package)
+
+// Textures: combined image samplers. Vulkan: descriptor set 1 (set 0 holds the uniform blocks),
+// binding = the value below; GL: texture unit = the same value, and the sampler uniform is found
+// by the name the DrawItem / FrameDesc gives.
+//   0..7   frame textures, shared by every draw (lookup tables, environment)
+//   8..15  the material's texture parameters, in declaration order (kMaterialTextureBase + i)
+inline constexpr uint32_t kTextureSet = 1;
+inline constexpr uint32_t kDfgLutBinding = 0;           // "facet_dfgLut": split-sum DFG terms
+inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT (from the package)
+inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
+inline constexpr const char* kSpecularLutName = "facet_specularLut";
+// The specular table's size, R8: chunks/specular_lut.glsl addresses its texel centres with these
+// numbers, so the runtime refuses a package table of any other shape (even one of the same bytes).
+inline constexpr uint32_t kSpecularLutWidth = 128;
+inline constexpr uint32_t kSpecularLutHeight = 64;
+inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RG16F 64×64, one level (docs/ibl.md layout)
+inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F cube map, kEnvironmentLevels levels
+// Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so
+// the shaders read lod = roughness × (kEnvironmentLevels − 1) (chunks/ibl_split_sum.glsl).
+inline constexpr uint32_t kEnvironmentLevels = 5;
+inline constexpr uint32_t kShCoefficients = 9;  // SH3; SH2 variants read the first 4
+inline constexpr uint32_t kMaterialTextureBase = 8;
+inline constexpr uint32_t kMaxMaterialTextures = 8;
+// A material texture's sampler uniform is this prefix + the parameter's name. The `facet_`
+// namespace is the interface's: no chunk or template declares a name in it, so no parameter name
+// can collide with a chunk function (a texture `f0` once became `material_f0`, a chunk function).
+// ir/src/emit_glsl.cpp and compiler/src/assemble.cpp write the same prefix.
+inline constexpr const char* kMaterialSamplerPrefix = "facet_material_";
+
+// Post pass: the HDR colour of the forward pass, as a combined image sampler at set 0 binding 0
+// (Vulkan) or texture unit 0 (GL, uniform "hdrColor").
+inline constexpr uint32_t kPostHdrBinding = 0;
+// Colour grading (post variants with grading only): a 3D lookup table of kColorLutSize³ RGBA16F
+// texels, trilinear, clamped; set kPostHdrSet binding kPostColorLutBinding (Vulkan), texture unit
+// kPostColorLutBinding (GL), [[texture(kPostColorLutBinding)]] (Metal). Texel (r, g, b) holds the
+// graded sRGB-encoded colour of the input (r, g, b) / (N − 1) (runtime/color_grading.h).
+inline constexpr uint32_t kPostColorLutBinding = 1;
+inline constexpr const char* kPostColorLutName = "facet_colorLut";
+inline constexpr uint32_t kColorLutSize = 32;
+// The post pass's uniform block (post variants with a vignette only): Vulkan set kPostHdrSet,
+// binding kPostUniformsBinding; GL uniform buffer binding point kPostUniformsBinding (clear of the
+// forward blocks' 0..2); Metal [[buffer(kPostUniformsBinding)]].
+inline constexpr uint32_t kPostUniformsBinding = 3;
+
+// Per-frame data. Matrices are column-major, OpenGL clip conventions (right-handed world,
+// clip y up, clip z in [-w, w]); the Vulkan backend converts to its own clip space.
+//
+// Lighting contract (Filament's mobile practice, see docs/lighting-units.md): the CPU multiplies
+// every light by the camera exposure before upload, so the shader sees values near 1 even for a
+// 110 000 lux sun, and mediump (fp16, max 65504) never overflows on light intensities.
+// One punctual (point or spot) light, four vec4s (chunks/light_punctual.glsl reads it). A point
+// light has spotScaleOffset = (0, 1): its cone factor is 1 in every direction.
+struct PunctualLightUniforms {
+  float positionFalloff[4];  // xyz: world-space position; w: 1 / range² (the falloff window's scale)
+  float colorIntensity[4];   // rgb: colour × intensity (candela) × exposure; w: unused
+  float direction[4];        // xyz: spot axis, unit vector the light travels along; w: unused
+  float spotScaleOffset[4];  // x: 1 / (cos inner − cos outer); y: −cos outer · x; zw: unused
+};
+static_assert(sizeof(PunctualLightUniforms) == 64, "std140 layout of PunctualLightUniforms");
+
+// Punctual lights in the frame block. A variant with N of them (VariantKey pointLights) reads
+// entries 0..N-1 at fixed offsets; the runtime zeroes the rest.
+inline constexpr uint32_t kMaxPunctualLights = 4;
+
+struct FrameUniforms {
+  float viewProjection[16];
+  float cameraPosition[4];  // xyz: world-space eye position; w: unused
+  float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused.
+                            // Unit length is a guarantee the shaders rely on (they no longer
+                            // normalize it per pixel): SceneFrame normalizes the scene's sun; an
+                            // app filling the block itself must normalize too
+  float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused
+  float ambient[4];         // rgb: the environment's mean radiance × exposure; w: unused. Not read by
+                            // the forward shaders since image-based lighting (sh and the environment
+                            // texture replace it); kept as the frame's clear colour and for apps' own shaders
+  PunctualLightUniforms punctualLights[kMaxPunctualLights];
+  // SH irradiance of the environment, pre-folded for the shader (facet::ibl::shaderIrradianceCoefficients:
+  // irradiance / π = Σ sh[k] · p_k(n), docs/ibl.md) and pre-exposed; rgb used, w 0. Index
+  // k = l(l + 1) + m; SH2 variants read 0..3 (the first four of an SH3 projection are the SH2 one).
+  float sh[kShCoefficients][4];
+};
+static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
+
+// Per-object data.
+struct ObjectUniforms {
+  float model[16];
+  float normalMatrix[16];  // inverse-transpose of model's upper 3×3, stored as a mat4
+};
+static_assert(sizeof(ObjectUniforms) == 128, "std140 layout of ObjectUniforms");
+
+// Per-frame data of the post pass (block "PostUniforms", chunks/vignette.glsl reads it).
+struct PostUniforms {
+  // x: intensity (0: none, 1: black at the corners), y: radius where darkening starts, z: the
+  // width of the transition, w: roundness (1: a circle on screen, 0: an ellipse fitting the frame).
+  // Distances are in units of half the frame's height from its centre (runtime/post_uniforms.h).
+  float vignette[4];
+  float viewport[4];  // x: 1 / width, y: 1 / height (pixels), z: width / height, w: unused
+};
+static_assert(sizeof(PostUniforms) == 32, "std140 layout of PostUniforms");
+
+// ---------------------------------------------------------------------------------------------
+// The interface as data. The compiler prints the shaders' declarations from these tables
+// (compiler/src/assemble.cpp), the runtime binds by the same numbers, and the MSL backend pins
+// Metal's argument slots from them (compiler/src/msl_backend.cpp), so every number above is
+// written once. The same arrangement as Filament's filabridge (libs/filabridge: the uniform
+// interface blocks and sampler bindings its material compiler generates from and its engine binds
+// by), reduced to what Facet's shaders declare.
+
+// A uniform block member, printed as `<type> <name>[arraySize];` (arraySize 0: not an array).
+// Types carry their precision: a block shared by both stages must match member for member.
+struct MemberDesc {
+  std::string_view type;
+  std::string_view name;
+  uint32_t arraySize = 0;
+};
+
+// A struct type declared before the blocks that hold it.
+struct StructDesc {
+  std::string_view name;
+  std::span<const MemberDesc> members;
+};
+
+// A std140 uniform block: Vulkan set/binding; GLES binds it by `name` (glUniformBlockBinding to
+// `binding`). An empty `members` list means the members are the material's (package layout).
+struct BlockDesc {
+  std::string_view name;      // block type name, e.g. "FrameUniforms"
+  std::string_view instance;  // the instance name the chunks read through, e.g. "frame"
+  uint32_t set = 0;
+  uint32_t binding = 0;
+  std::span<const MemberDesc> members;
+  uint32_t std140Size = 0;    // 0: the material's (MaterialInfo::paramBlockSize)
+};
+
+inline constexpr uint32_t kBlockSet = 0;
+
+inline constexpr MemberDesc kPunctualLightMembers[] = {
+    {"highp vec4", "positionFalloff"},
+    {"highp vec4", "colorIntensity"},
+    {"highp vec4", "direction"},
+    {"highp vec4", "spotScaleOffset"},
+};
+inline constexpr StructDesc kPunctualLightStruct{"PunctualLightData", kPunctualLightMembers};
+
+inline constexpr MemberDesc kFrameMembers[] = {
+    {"highp mat4", "viewProjection"},
+    {"highp vec4", "cameraPosition"},
+    {"highp vec4", "lightDirection"},
+    {"highp vec4", "lightColor"},
+    {"highp vec4", "ambient"},
+    {"PunctualLightData", "punctualLights", kMaxPunctualLights},
+    {"highp vec4", "sh", kShCoefficients},
+};
+inline constexpr MemberDesc kObjectMembers[] = {
+    {"highp mat4", "model"},
+    {"highp mat4", "normalMatrix"},
+};
+
+inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame", kBlockSet, kFrameBinding, kFrameMembers,
+                                       uint32_t(sizeof(FrameUniforms))};
+inline constexpr BlockDesc kObjectBlock{"ObjectUniforms", "object", kBlockSet, kObjectBinding, kObjectMembers,
+                                        uint32_t(sizeof(ObjectUniforms))};
+inline constexpr BlockDesc kMaterialBlock{"MaterialParams", "params", kBlockSet, kMaterialBinding, {}, 0};
+inline constexpr BlockDesc kBlocks[] = {kFrameBlock, kObjectBlock, kMaterialBlock};
+
+// A combined image sampler of the frame (every draw binds the same texture).
+struct SamplerDesc {
+  std::string_view name;
+  uint32_t set = 0;
+  uint32_t binding = 0;
+  bool cube = false;  // samplerCube (the runtime binds a cube map there), else sampler2D
+};
+inline constexpr SamplerDesc kDfgLutSampler{kDfgLutName, kTextureSet, kDfgLutBinding};
+inline constexpr SamplerDesc kSpecularLutSampler{kSpecularLutName, kTextureSet, kSpecularLutBinding};
+inline constexpr SamplerDesc kEnvironmentSampler{kEnvironmentName, kTextureSet, kEnvironmentBinding, true};
+inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSampler, kEnvironmentSampler};
+// The material's texture parameter in sampler slot i: kMaterialSamplerPrefix + name, set
+// kTextureSet, binding materialTextureBinding(i).
+constexpr uint32_t materialTextureBinding(uint32_t slot) { return kMaterialTextureBase + slot; }
+
+// Attachments of the forward pass and of the post pass that reads its colour. The forward pass
+// writes `fragColor` (linear pre-exposed HDR, RGBA16F). The post pass reads it as `hdrColor`:
+// merged path, input attachment 0 at set kPostHdrSet / binding kPostHdrBinding (Vulkan; Metal
+// [[color(0)]]) or colour output 0 declared inout (GLES framebuffer fetch), LDR written to colour
+// 1; separate path, a sampler at the same set and binding (GL: texture unit kPostHdrBinding), LDR
+// written to colour 0. The post compiler (compiler/src/post.cpp) prints these declarations.
+inline constexpr uint32_t kForwardColorLocation = 0;
+inline constexpr std::string_view kPostHdrName = "hdrColor";
+inline constexpr uint32_t kPostHdrSet = 0;
+inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;
+inline constexpr uint32_t kPostHdrColorLocation = 0;     // merged path: HDR is colour 0 of the pass
+inline constexpr uint32_t kPostMergedLdrLocation = 1;    // merged path: LDR is colour 1
+inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR is the only colour
+// The post pass's block and grading sampler, at the HDR input's set.
+inline constexpr MemberDesc kPostMembers[] = {
+    {"mediump vec4", "vignette"},
+    {"highp vec4", "viewport"},
+};
+inline constexpr BlockDesc kPostBlock{"PostUniforms", "post", kPostHdrSet, kPostUniformsBinding, kPostMembers,
+                                      uint32_t(sizeof(PostUniforms))};
+inline constexpr SamplerDesc kPostColorLutSampler{kPostColorLutName, kPostHdrSet, kPostColorLutBinding};
+
+
+// Metal (MSL) argument slots, pinned by the MSL backend from the tables above so that every
+// variant of every material uses the same ones (SPIRV-Cross otherwise numbers resources in order
+// of use, per shader): a block at [[buffer(binding)]]; a sampler of set kTextureSet at
+// [[texture(binding)]] and [[sampler(binding)]] (bindings 0..15 fit iOS's 16 samplers). The
+// vertex stream (stage_in) should use buffer index kMslVertexBufferIndex, clear of the blocks.
+// The package records these slots (section MSLB, docs/package-format.md).
+constexpr uint32_t mslBufferIndex(const BlockDesc& block) { return block.binding; }
+constexpr uint32_t mslTextureIndex(uint32_t textureBinding) { return textureBinding; }
+inline constexpr uint32_t kMslVertexBufferIndex = 30;
+
+static_assert(vertexAttribute(kAttribTangent).location == kAttribTangent && vertexAttribute(kAttribUv0).components == 2,
+              "kVertexAttributes lists every kAttrib* location");
+
+}  // namespace facet::abi

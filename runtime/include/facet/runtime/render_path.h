@@ -1,0 +1,49 @@
+// The frame Facet renders, as a frame graph: a forward pass into HDR colour + depth, then a post
+// pass writing LDR. How the post pass reads HDR decides the render path: its own pixel (merged:
+// one render pass, HDR and depth never leave tile memory) or the whole texture (separate: HDR is
+// stored and sampled back). Both backends and facet-view build their graph here, so the byte
+// counts they report are those of the path they run.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "facet/runtime/frame_graph.h"
+#include "facet/scene/post_settings.h"
+
+namespace facet::runtime {
+
+enum class PostPath {
+  Auto,      // merged when the backend supports it, else separate
+  Merged,    // post reads its own pixel: subpass input (Vulkan) / framebuffer fetch (GLES)
+  Separate,  // post samples the stored HDR texture
+};
+
+const char* toString(PostPath path);
+
+// The HDR target's format. R11G11B10F halves the bytes per pixel (4 instead of 8, no alpha) for
+// 6 (red, green) and 5 (blue) mantissa bits instead of 10: the error it costs is measured in
+// docs/runtime.md ("HDR format"). Both need float colour render targets (core Vulkan formats,
+// GLES 3.2 or EXT_color_buffer_float) that can be read as input attachments / by framebuffer fetch.
+enum class HdrFormat {
+  Rgba16Float,     // VK_FORMAT_R16G16B16A16_SFLOAT / GL_RGBA16F
+  R11G11B10Float,  // VK_FORMAT_B10G11R11_UFLOAT_PACK32 / GL_R11F_G11F_B10F: unsigned, no alpha
+};
+const char* toString(HdrFormat format);  // "rgba16f", "r11g11b10f"
+uint32_t bytesPerPixel(HdrFormat format);
+
+struct ForwardPostGraph {
+  fg::FrameGraph graph;
+  fg::ResourceId hdr = 0;    // RGBA16F or R11G11B10F
+  fg::ResourceId depth = 0;  // D32
+  fg::ResourceId ldr = 0;    // RGBA8, read after the frame (presented or read back)
+  uint32_t forwardPass = 0;
+  uint32_t postPass = 0;
+};
+
+// path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
+// which forces it to be stored.
+ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
+                                      HdrFormat hdrFormat = HdrFormat::Rgba16Float);
+
+}  // namespace facet::runtime

@@ -1,0 +1,116 @@
+// The scene JSON the viewer renders (and, later, the manifest matc reads to build only the
+// variants a scene needs). Format: docs/scene-format.md.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "facet/scene/post_settings.h"
+
+// The scene library's folder, the runtime's namespace: these types are the runtime's description
+// of a frame (environment.h and scene_frame.h take them), apps built against an installed Facet
+// name them facet::runtime::Scene, Camera, ..., and renaming them would change every such app
+// and most of the runtime with no change of meaning. The reader's own tools (json_document.h,
+// asset_path.h) are in facet::scene.
+namespace facet::runtime {
+
+struct Camera {
+  glm::dvec3 position{0, 0, 4};
+  glm::dvec3 target{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double fovYDegrees = 40;
+  double nearPlane = 0.1;
+  double farPlane = 100;
+  // Physical settings: they give the exposure that pre-exposes every light.
+  double aperture = 16;        // f-number
+  double shutterSeconds = 1.0 / 125;
+  double iso = 100;
+};
+
+struct Sun {
+  glm::dvec3 direction{0, -1, 0};  // the direction the light travels (from the sun to the scene)
+  double illuminance = 110000;     // lux, on a surface facing the sun
+  glm::dvec3 color{1, 1, 1};       // linear, multiplies illuminance
+};
+
+// A punctual light: a point light radiating equally in all directions, or a spot light
+// restricted to a cone (Filament's punctual-light model; docs/lighting-units.md).
+struct PunctualLight {
+  bool spot = false;
+  glm::dvec3 position{0, 0, 0};
+  double intensity = 100;          // candela (lumen per steradian)
+  glm::dvec3 color{1, 1, 1};       // linear, multiplies intensity
+  double range = 10;               // metres: the light fades smoothly to 0 at this distance
+  glm::dvec3 direction{0, -1, 0};  // spot: the cone's axis, the direction the light travels
+  double innerAngleDegrees = 20;   // spot: full intensity inside this half-angle
+  double outerAngleDegrees = 30;   // spot: no light outside this half-angle
+};
+
+// Punctual lights per scene: the shaders have fixed-count permutations up to this many
+// (permutations::kMaxPointLights).
+inline constexpr size_t kMaxSceneLights = 4;
+
+struct SceneObject {
+  std::string mesh = "sphere";     // or a .gltf/.glb path (resolved, inside the scene's folder)
+  std::string material;            // package name: <package dir>/<material>.matpkg
+  glm::dvec3 position{0, 0, 0};
+  double radius = 1;
+  std::map<std::string, std::vector<double>> params;
+  std::set<std::string> boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
+  std::map<std::string, std::string> textures;  // texture parameter -> image path (relative to the scene file, resolved)
+};
+
+// The environment that lights a scene by image-based lighting (docs/scene-format.md,
+// "environment"). Radiance = luminance × the image's (or the sky's) relative value, in cd/m².
+struct Environment {
+  std::string image;               // equirect image path (resolved); empty: the analytic sky below
+  double luminance = 1000;         // cd/m² that a value of 1 in the image or sky colours stands for
+  // Analytic sky (evaluated into an equirect image on the CPU): mix(horizon, zenith, √y) above the
+  // horizon, mix(horizon, ground, √−y) below it, y the direction's up component.
+  glm::dvec3 zenith{0.25, 0.45, 1.0};
+  glm::dvec3 horizon{1.0, 1.0, 1.0};
+  glm::dvec3 ground{0.3, 0.25, 0.2};
+};
+
+struct Scene {
+  uint32_t width = 256;
+  uint32_t height = 256;
+  std::string tier = "high";
+  Camera camera;
+  std::optional<Sun> sun;
+  std::vector<PunctualLight> lights;
+  double skyLuminance = 0;         // cd/m², a constant environment (used when `environment` is absent)
+  std::optional<Environment> environment;
+  std::vector<SceneObject> objects;
+  PostSettings post;               // the post pass's effects (docs/scene-format.md "post")
+  // Their settings, read when post.colorGrading / post.vignette are on: grading from settings, or
+  // from a .cube file (resolved, under the asset root) when gradingLut is not empty.
+  ColorGradingSettings grading;
+  std::string gradingLut;
+  VignetteSettings vignette;
+  // The real folder the scene's files were confined to (SceneReadOptions), which also confines
+  // what its glTF files read; "" for a Scene built in code.
+  std::string assetRoot;
+};
+
+// Which files a scene may name (texture and environment images, glTF meshes). By default only
+// those under the scene file's folder, so that a scene from elsewhere cannot make the app read
+// (and, through a rendered image, reveal) other files of the machine: `../`, absolute paths and
+// symbolic links that lead out of the folder are errors. An app that trusts its scenes widens it
+// (facet-view --asset-root).
+struct SceneReadOptions {
+  std::string assetRoot;  // "": the scene file's folder
+};
+
+// Parses scene JSON. Errors read `<path>:<line>:<col>: error: ...` for syntax errors and
+// `<path>: error: <json pointer>: ...` for wrong values.
+std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
+                                const SceneReadOptions& options = {});
+std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options = {});
+
+}  // namespace facet::runtime

@@ -1,0 +1,164 @@
+// The frame graph on the cases of Guy's Filament mobile talk (its slides on tilers):
+// colour + post merges and discards HDR and depth; a shadow map and a bloom chain, which sample
+// whole textures, do not merge and keep what later passes sample.
+#include <gtest/gtest.h>
+
+#include "facet/runtime/frame_graph.h"
+#include "facet/runtime/render_path.h"
+
+namespace {
+
+using namespace facet::runtime;
+using namespace facet::runtime::fg;
+
+constexpr uint32_t kW = 1920, kH = 1080;
+constexpr uint64_t kPixels = uint64_t{kW} * kH;
+
+CompiledGraph compileOrFail(const FrameGraph& graph) {
+  CompiledGraph compiled;
+  std::string error;
+  EXPECT_TRUE(graph.compile(&compiled, &error)) << error;
+  return compiled;
+}
+
+TEST(FrameGraph, ColourAndPostMergeIntoOneRenderPassAndDiscardHdrAndDepth) {
+  ForwardPostGraph g = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
+  const CompiledGraph c = compileOrFail(g.graph);
+  ASSERT_EQ(c.renderPasses.size(), 1u) << describe(g.graph, c);
+  EXPECT_EQ(c.renderPasses[0].subpasses, (std::vector<uint32_t>{g.forwardPass, g.postPass}));
+  const Attachment* hdr = c.attachment(0, g.hdr);
+  const Attachment* depth = c.attachment(0, g.depth);
+  const Attachment* ldr = c.attachment(0, g.ldr);
+  ASSERT_TRUE(hdr && depth && ldr);
+  EXPECT_EQ(hdr->load, LoadOp::Clear);
+  EXPECT_EQ(hdr->store, StoreOp::DontCare);
+  EXPECT_TRUE(hdr->inputAttachment);
+  EXPECT_EQ(depth->load, LoadOp::Clear);
+  EXPECT_EQ(depth->store, StoreOp::DontCare);
+  EXPECT_FALSE(depth->inputAttachment);
+  EXPECT_EQ(ldr->load, LoadOp::DontCare);  // never written before: nothing to load
+  EXPECT_EQ(ldr->store, StoreOp::Store);
+  EXPECT_TRUE(c.traffic[g.hdr].transient);
+  EXPECT_TRUE(c.traffic[g.depth].transient);
+  EXPECT_FALSE(c.traffic[g.ldr].transient);
+  EXPECT_EQ(c.loadedBytes(), 0u);
+  EXPECT_EQ(c.storedBytes(), kPixels * 4);
+  EXPECT_EQ(c.sampledBytes(), 0u);
+}
+
+TEST(FrameGraph, SeparatePostStoresHdrAndSamplesItBack) {
+  ForwardPostGraph g = buildForwardPostGraph(kW, kH, PostPath::Separate, false);
+  const CompiledGraph c = compileOrFail(g.graph);
+  ASSERT_EQ(c.renderPasses.size(), 2u) << describe(g.graph, c);
+  EXPECT_EQ(c.attachment(0, g.hdr)->store, StoreOp::Store);
+  EXPECT_EQ(c.attachment(0, g.depth)->store, StoreOp::DontCare);
+  EXPECT_FALSE(c.attachment(0, g.hdr)->inputAttachment);
+  EXPECT_EQ(c.attachment(1, g.ldr)->store, StoreOp::Store);
+  EXPECT_EQ(c.attachment(1, g.hdr), nullptr);
+  EXPECT_FALSE(c.traffic[g.hdr].transient);
+  EXPECT_TRUE(c.traffic[g.depth].transient);
+  EXPECT_EQ(c.storedBytes(), kPixels * (8 + 4));
+  EXPECT_EQ(c.sampledBytes(), kPixels * 8);
+}
+
+TEST(FrameGraph, MergedPathStoresAtMostHalfOfTheSeparatePath) {
+  const ForwardPostGraph merged = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
+  const ForwardPostGraph separate = buildForwardPostGraph(kW, kH, PostPath::Separate, false);
+  EXPECT_LE(2 * compileOrFail(merged.graph).storedBytes(), compileOrFail(separate.graph).storedBytes());
+}
+
+TEST(FrameGraph, ReadingHdrBackAfterTheFrameStoresItEvenWhenMerged) {
+  ForwardPostGraph g = buildForwardPostGraph(64, 32, PostPath::Merged, true);
+  const CompiledGraph c = compileOrFail(g.graph);
+  ASSERT_EQ(c.renderPasses.size(), 1u);
+  EXPECT_EQ(c.attachment(0, g.hdr)->store, StoreOp::Store);
+  EXPECT_FALSE(c.traffic[g.hdr].transient);
+  EXPECT_EQ(c.storedBytes(), 64u * 32 * (8 + 4));
+}
+
+TEST(FrameGraph, ShadowMapIsStoredAndDoesNotMerge) {
+  FrameGraph graph;
+  const ResourceId shadow = graph.addResource({"shadow", 2048, 2048, 4, true, false});
+  const ResourceId hdr = graph.addResource({"hdr", kW, kH, 8, false, false});
+  const ResourceId depth = graph.addResource({"depth", kW, kH, 4, true, false});
+  const ResourceId ldr = graph.addResource({"ldr", kW, kH, 4, false, true});
+  const uint32_t shadowPass = graph.addPass({"shadow", {}, {shadow}, {shadow}});
+  const uint32_t forward = graph.addPass({"forward", {{shadow, ReadKind::WholeTexture}}, {hdr, depth}, {hdr, depth}});
+  const uint32_t post = graph.addPass({"post", {{hdr, ReadKind::OwnPixel}}, {ldr}, {}});
+  const CompiledGraph c = compileOrFail(graph);
+  ASSERT_EQ(c.renderPasses.size(), 2u) << describe(graph, c);
+  EXPECT_EQ(c.renderPasses[0].subpasses, std::vector<uint32_t>{shadowPass});
+  EXPECT_EQ(c.renderPasses[1].subpasses, (std::vector<uint32_t>{forward, post}));
+  EXPECT_EQ(c.attachment(0, shadow)->load, LoadOp::Clear);
+  EXPECT_EQ(c.attachment(0, shadow)->store, StoreOp::Store);  // sampled by the forward pass
+  EXPECT_FALSE(c.traffic[shadow].transient);
+  EXPECT_EQ(c.traffic[shadow].storedBytes, 2048u * 2048 * 4);
+  EXPECT_EQ(c.traffic[shadow].sampledBytes, 2048u * 2048 * 4);
+  EXPECT_EQ(c.attachment(1, hdr)->store, StoreOp::DontCare);
+  EXPECT_EQ(c.attachment(1, depth)->store, StoreOp::DontCare);
+}
+
+TEST(FrameGraph, BloomDownsampleChainSamplesWholeTexturesAndDoesNotMerge) {
+  FrameGraph graph;
+  const ResourceId hdr = graph.addResource({"hdr", kW, kH, 8, false, false});
+  const ResourceId depth = graph.addResource({"depth", kW, kH, 4, true, false});
+  const ResourceId half = graph.addResource({"bloom/2", kW / 2, kH / 2, 8, false, false});
+  const ResourceId quarter = graph.addResource({"bloom/4", kW / 4, kH / 4, 8, false, false});
+  const ResourceId ldr = graph.addResource({"ldr", kW, kH, 4, false, true});
+  graph.addPass({"forward", {}, {hdr, depth}, {hdr, depth}});
+  graph.addPass({"down2", {{hdr, ReadKind::WholeTexture}}, {half}, {}});
+  graph.addPass({"down4", {{half, ReadKind::WholeTexture}}, {quarter}, {}});
+  graph.addPass({"post", {{hdr, ReadKind::OwnPixel}, {quarter, ReadKind::WholeTexture}}, {ldr}, {}});
+  const CompiledGraph c = compileOrFail(graph);
+  ASSERT_EQ(c.renderPasses.size(), 4u) << describe(graph, c);
+  for (const RenderPass& rp : c.renderPasses) EXPECT_EQ(rp.subpasses.size(), 1u);
+  EXPECT_EQ(c.attachment(0, hdr)->store, StoreOp::Store);
+  EXPECT_EQ(c.attachment(0, depth)->store, StoreOp::DontCare);
+  EXPECT_EQ(c.attachment(1, half)->store, StoreOp::Store);
+  EXPECT_EQ(c.attachment(2, quarter)->store, StoreOp::Store);
+  EXPECT_EQ(c.attachment(1, half)->load, LoadOp::DontCare);  // fully written, never cleared
+  // hdr is sampled twice: by the downsample and, from memory, by the post pass.
+  EXPECT_EQ(c.traffic[hdr].sampledBytes, 2 * kPixels * 8);
+}
+
+TEST(FrameGraph, PassesWhoseOutputsNobodyReadsAreCulled) {
+  ForwardPostGraph g = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
+  const ResourceId debug = g.graph.addResource({"debug", kW, kH, 4, false, false});
+  const uint32_t debugPass = g.graph.addPass({"debug", {{g.hdr, ReadKind::WholeTexture}}, {debug}, {}});
+  const CompiledGraph c = compileOrFail(g.graph);
+  EXPECT_TRUE(c.culled[debugPass]);
+  EXPECT_FALSE(c.culled[g.forwardPass]);
+  ASSERT_EQ(c.renderPasses.size(), 1u) << describe(g.graph, c);
+  // The culled pass's sampling does not force HDR to memory.
+  EXPECT_EQ(c.attachment(0, g.hdr)->store, StoreOp::DontCare);
+  EXPECT_EQ(c.traffic[debug].storedBytes, 0u);
+}
+
+TEST(FrameGraph, WritingWithoutClearAfterAnEarlierRenderPassLoads) {
+  FrameGraph graph;
+  const ResourceId colour = graph.addResource({"colour", 16, 16, 4, false, true});
+  const ResourceId other = graph.addResource({"other", 8, 8, 4, false, false});
+  graph.addPass({"base", {}, {colour}, {colour}});
+  graph.addPass({"other", {{colour, ReadKind::WholeTexture}}, {other}, {other}});
+  graph.addPass({"overlay", {{other, ReadKind::WholeTexture}}, {colour}, {}});
+  const CompiledGraph c = compileOrFail(graph);
+  ASSERT_EQ(c.renderPasses.size(), 3u) << describe(graph, c);
+  EXPECT_EQ(c.attachment(2, colour)->load, LoadOp::Load);
+  EXPECT_EQ(c.traffic[colour].loadedBytes, 16u * 16 * 4);
+}
+
+TEST(FrameGraph, ReadingBeforeAnyWriteIsAnError) {
+  FrameGraph graph;
+  const ResourceId a = graph.addResource({"a", 4, 4, 4, false, true});
+  graph.addPass({"p", {{a, ReadKind::OwnPixel}}, {a}, {}});
+  CompiledGraph c;
+  std::string error;
+  EXPECT_FALSE(graph.compile(&c, &error));
+  EXPECT_NE(error.find("before any pass writes it"), std::string::npos) << error;
+  FrameGraph bad;
+  bad.addPass({"q", {}, {7}, {}});
+  EXPECT_FALSE(bad.compile(&c, &error));
+  EXPECT_NE(error.find("unknown resource"), std::string::npos) << error;
+}
+
+}  // namespace
