@@ -18,7 +18,7 @@
 #   build/fuzz/tests/fuzz/fuzz_material -minimize_crash=1 -runs=100000 \
 #     -exact_artifact_path=tests/fuzz/regressions/<name>.mat build/fuzz/crashes/<file>
 # (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg; fuzz_gltf: tests/fuzz/gltf_regressions/) then fix the bug;
-# tests/test_fuzz_regressions.cpp, tests/test_package.cpp and tests/test_gltf_hostile.cpp replay those folders in every test run.
+# tests/ir/test_fuzz_regressions.cpp, tests/package/test_package.cpp and tests/runtime/test_gltf_hostile.cpp replay those folders in every test run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
