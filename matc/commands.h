@@ -13,15 +13,15 @@ namespace facet::matc {
 
 struct CompileArgs {
   std::string input;
-  std::string output;      // default: input with .matpkg
-  std::string emitSource;  // folder for every generated source, or ""
-  std::string depfile;     // Makefile-syntax dependency file to write, or ""
-  std::vector<std::string> tiers;  // tier names; empty: every tier this compiler supports
-  std::string scene;       // scene manifest: build only the variants it asks this material for
+  std::string output;               // default: input with .matpkg
+  std::string emitSource;           // folder for every generated source, or ""
+  std::string depfile;              // Makefile-syntax dependency file to write, or ""
+  std::vector<std::string> tiers;   // tier names; empty: every tier this compiler supports
+  std::string scene;                // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
-  unsigned jobs = 0;       // variants compiled at once; 0: one per hardware thread
-  std::string cacheDir;    // --cache; "" for the default (defaultCacheDir())
-  bool noCache = false;    // --no-cache
+  unsigned jobs = 0;                // variants compiled at once; 0: one per hardware thread
+  std::string cacheDir;             // --cache; "" for the default (defaultCacheDir())
+  bool noCache = false;             // --no-cache
   uint32_t cacheMaxMiB = uint32_t(compiler::kDefaultCacheMaxBytes >> 20);  // --cache-max-size
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
 };
@@ -32,8 +32,8 @@ struct InfoArgs {
   std::string variant;  // with stage + target: print that shader
   std::string stage;
   std::string target;
-  std::string scene;    // check the package has the variant this scene asks for
-  bool json = false;    // the summary as JSON
+  std::string scene;  // check the package has the variant this scene asks for
+  bool json = false;  // the summary as JSON
 };
 int infoCommand(const InfoArgs& args);
 
@@ -41,25 +41,25 @@ struct LintArgs {
   std::vector<std::string> inputs;  // material files, or folders of them
   std::vector<std::string> tiers;
   std::vector<int> pointLights{0};
-  std::string config;               // budgets JSON (docs/lint.md), or ""
-  std::string baseline;             // baseline JSON, or ""
-  bool updateBaseline = false;      // rewrite the baseline from this run's figures
-  double tolerancePercent = 5;      // growth over the baseline that is still accepted
-  std::string format = "text";      // text | json | sarif
-  std::string output;               // report file, or "" for stdout
-  bool werror = false;              // warnings fail the run
-  std::string gpu;                  // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
-  std::string mesaPrefix;           // the Mesa build, default: mesa_compile.py's (the cache folder)
+  std::string config;           // budgets JSON (docs/lint.md), or ""
+  std::string baseline;         // baseline JSON, or ""
+  bool updateBaseline = false;  // rewrite the baseline from this run's figures
+  double tolerancePercent = 5;  // growth over the baseline that is still accepted
+  std::string format = "text";  // text | json | sarif
+  std::string output;           // report file, or "" for stdout
+  bool werror = false;          // warnings fail the run
+  std::string gpu;              // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
+  std::string mesaPrefix;       // the Mesa build, default: mesa_compile.py's (the cache folder)
 };
 int lintCommand(const LintArgs& args);
 struct PostArgs {
-  std::string cpp;         // generated C++ source for the runtime
-  std::string emitSource;  // folder for every generated shader source, or ""
+  std::string cpp;                 // generated C++ source for the runtime
+  std::string emitSource;          // folder for every generated shader source, or ""
   std::string toneCurve = "aces";  // compiler::ToneCurve by name
   bool dither = false;
-  bool grading = false;            // 3D LUT colour grading
+  bool grading = false;  // 3D LUT colour grading
   bool vignette = false;
-  bool everyVariant = false;       // every combination of effects (what the runtime embeds)
+  bool everyVariant = false;  // every combination of effects (what the runtime embeds)
 };
 int postCommand(const PostArgs& args);
 

@@ -1,14 +1,14 @@
+#include <unistd.h>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
-#include "facet/cli/inputs.h"
 #include "commands.h"
+#include "facet/cli/inputs.h"
 #include "facet/cli/outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/compiler/library_sources.h"
@@ -20,7 +20,6 @@
 #include "scene_keys.h"
 
 namespace facet::matc {
-
 
 namespace {
 

@@ -4,12 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "facet/cli/inputs.h"
 #include "commands.h"
+#include "facet/cli/inputs.h"
 #include "facet/compiler/cost_figures.h"
 #include "facet/compiler/spirv_tools_backend.h"
-#include "facet/package/package.h"
 #include "facet/package/checks.h"
+#include "facet/package/package.h"
 #include "facet/scene/scene.h"
 #include "scene_keys.h"
 
@@ -46,8 +46,9 @@ bool stageFigures(const package::Shader& s, compiler::StageFigures* figures, std
 }
 
 void printCosts(const package::Package& pkg) {
-  std::printf("static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"
-              "Valhall-class cycles per vertex or fragment, docs/eval.md)\n");
+  std::printf(
+      "static cost (optimised SPIR-V; scalar = ALU ops weighted by vector width; cycles = estimated\n"
+      "Valhall-class cycles per vertex or fragment, docs/eval.md)\n");
   std::fputs(compiler::figureTableHeading(kCostColumns).c_str(), stdout);
   for (const package::Variant& v : pkg.variants) {
     for (const package::Shader& s : v.shaders) {
@@ -112,7 +113,8 @@ void printSummary(const package::ReadResult& r) {
   std::printf("parameters %zu (uniform block MaterialParams, %u bytes std140)\n", m.params.size(), m.paramBlockSize);
   for (const package::Param& p : m.params) {
     std::string range;
-    if (p.rangeMin && p.rangeMax) range = " in [" + formatValue({*p.rangeMin}) + ", " + formatValue({*p.rangeMax}) + "]";
+    if (p.rangeMin && p.rangeMax)
+      range = " in [" + formatValue({*p.rangeMin}) + ", " + formatValue({*p.rangeMax}) + "]";
     // Where the value lives: a std140 offset+size in the block, a sampler slot, or nowhere.
     std::string where;
     if (package::isTexture(p.type))
@@ -175,7 +177,8 @@ void printJson(const package::ReadResult& r) {
     if (p.rangeMin) param["min"] = *p.rangeMin;
     if (p.rangeMax) param["max"] = *p.rangeMax;
     if (package::isTexture(p.type)) {
-      param["samplerSlot"] = p.offset == package::kNoTextureSlot ? nlohmann::ordered_json() : nlohmann::ordered_json(p.offset);
+      param["samplerSlot"] =
+          p.offset == package::kNoTextureSlot ? nlohmann::ordered_json() : nlohmann::ordered_json(p.offset);
     } else {
       param["offset"] = p.offset;
       param["size"] = p.size;
@@ -192,7 +195,8 @@ void printJson(const package::ReadResult& r) {
                          {"bytes", r.stats[i][j].rawSize},
                          {"storedBytes", r.stats[i][j].storedSize}});
     }
-    doc["variants"].push_back({{"key", pkg.variants[i].key}, {"shaders", std::move(shaders)}, {"costs", costsJson(pkg.variants[i])}});
+    doc["variants"].push_back(
+        {{"key", pkg.variants[i].key}, {"shaders", std::move(shaders)}, {"costs", costsJson(pkg.variants[i])}});
   }
   doc["textures"] = nlohmann::ordered_json::array();
   for (size_t i = 0; i < pkg.textures.size(); ++i) {
@@ -218,8 +222,11 @@ void printJson(const package::ReadResult& r) {
   doc["dictionaryStoredBytes"] = r.dictionaryStoredSize;
   doc["mslSlots"] = nlohmann::ordered_json::array();
   for (const package::MslBinding& b : pkg.mslBindings) {
-    doc["mslSlots"].push_back(
-        {{"name", b.name}, {"kind", package::toString(b.kind)}, {"index", b.index}, {"set", b.set}, {"binding", b.binding}});
+    doc["mslSlots"].push_back({{"name", b.name},
+                               {"kind", package::toString(b.kind)},
+                               {"index", b.index},
+                               {"set", b.set},
+                               {"binding", b.binding}});
   }
   std::printf("%s\n", doc.dump(2).c_str());
 }

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "facet/cli/inputs.h"
 #include "commands.h"
+#include "facet/cli/inputs.h"
 #include "facet/cli/outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/gpu_stats/mesa_compile.h"
@@ -78,8 +78,10 @@ int lintCommand(const LintArgs& args) {
   if (!args.config.empty()) inputs.push_back({"the --config file", args.config});
   if (!args.output.empty()) outputs.push_back({"-o", args.output});
   // --update-baseline reads the baseline and writes it again: then it is an output, and only that.
-  if (args.updateBaseline) outputs.push_back({"--baseline with --update-baseline", args.baseline});
-  else if (!args.baseline.empty()) inputs.push_back({"the --baseline file", args.baseline});
+  if (args.updateBaseline)
+    outputs.push_back({"--baseline with --update-baseline", args.baseline});
+  else if (!args.baseline.empty())
+    inputs.push_back({"the --baseline file", args.baseline});
   if (!cli::outputsSpareInputs(inputs, outputs)) return 1;
 
   std::optional<lint::Budgets> budgets;
@@ -122,8 +124,10 @@ int lintCommand(const LintArgs& args) {
                                                 : lint::formatText(linted);
   // The report and the baseline land together: neither is written when the other cannot be.
   std::vector<package::OutputFile> written;
-  if (args.output.empty()) std::fputs(report.c_str(), stdout);
-  else written.push_back({args.output, bytesOf(report)});
+  if (args.output.empty())
+    std::fputs(report.c_str(), stdout);
+  else
+    written.push_back({args.output, bytesOf(report)});
   if (args.updateBaseline) {
     lint::Baseline updated = baseline.value_or(lint::Baseline{});
     for (const lint::LintedFile& f : linted) {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "commands.h"
-#include "facet/package/atomic_file.h"
 #include "facet/cli/command_line.h"
+#include "facet/package/atomic_file.h"
 
 namespace {
 
@@ -44,23 +44,27 @@ int main(int argc, char** argv) {
   compileCmd->add_option("--depfile", compile.depfile,
                          "also write a Makefile-syntax depfile (package: material, scene, matc, templates and "
                          "chunks used) for Ninja/Make");
-  CLI::Option* cacheOption = compileCmd->add_option(
-      "--cache", compile.cacheDir,
-      "cache of compiled variants (default: $XDG_CACHE_HOME/facet/matc or ~/.cache/facet/matc); the package is the same "
-      "bytes with or without it");
+  CLI::Option* cacheOption = compileCmd->add_option("--cache", compile.cacheDir,
+                                                    "cache of compiled variants (default: $XDG_CACHE_HOME/facet/matc "
+                                                    "or ~/.cache/facet/matc); the package is the same "
+                                                    "bytes with or without it");
   compileCmd->add_flag("--no-cache", compile.noCache, "neither read nor write the cache")->excludes(cacheOption);
-  compileCmd->add_option("--cache-max-size", compile.cacheMaxMiB,
-                         "bound on the cache in MiB: least recently used variants are removed after each compile "
-                         "(default 512; 0: no bound)")
+  compileCmd
+      ->add_option("--cache-max-size", compile.cacheMaxMiB,
+                   "bound on the cache in MiB: least recently used variants are removed after each compile "
+                   "(default 512; 0: no bound)")
       ->check(CLI::Range(0u, 1u << 20));
-  compileCmd->add_option("-j,--jobs", compile.jobs, "variants compiled at once (default: one per core); the "
-                         "package is byte-identical for any value")
+  compileCmd
+      ->add_option("-j,--jobs", compile.jobs,
+                   "variants compiled at once (default: one per core); the "
+                   "package is byte-identical for any value")
       ->check(CLI::Range(1u, 256u));
   compileCmd->add_option("--tiers", compile.tiers, "tiers to build (reference, high, ...); default: all supported")
       ->delimiter(',');
   compileCmd->add_option("--scene", compile.scene, "scene JSON: build only the variants this scene can request");
-  compileCmd->add_option("--point-lights", compile.pointLights,
-                         "point/spot light counts to build, from 0, 1, 2, 4 (default: 0; a --scene decides its own)")
+  compileCmd
+      ->add_option("--point-lights", compile.pointLights,
+                   "point/spot light counts to build, from 0, 1, 2, 4 (default: 0; a --scene decides its own)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
   compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
@@ -71,7 +75,8 @@ int main(int argc, char** argv) {
   CLI::App* infoCmd = app.add_subcommand("info", "describe a package, or print one of its shaders");
   infoCmd->add_option("input", info.input, "package (.matpkg)")->required();
   infoCmd->add_option("--variant", info.variant, "variant key, e.g. high.dir1 (with --stage and --target)");
-  infoCmd->add_option("--scene", info.scene, "scene JSON: the variant it asks this material for, and whether it is built");
+  infoCmd->add_option("--scene", info.scene,
+                      "scene JSON: the variant it asks this material for, and whether it is built");
   infoCmd->add_flag("--json", info.json, "print the summary as JSON (sizes, variants, parameters)");
   infoCmd->add_option("--stage", info.stage, "vertex | fragment")->check(CLI::IsMember({"vertex", "fragment"}));
   infoCmd->add_option("--target", info.target, "glsl_es_300 | spirv | msl")
@@ -81,19 +86,26 @@ int main(int argc, char** argv) {
   CLI::App* lintCmd = app.add_subcommand("lint", "check materials' precision and instruction counts (docs/lint.md)");
   lintCmd->add_option("inputs", lint.inputs, "material files (.mat) or folders of them")->required();
   lintCmd->add_option("--tiers", lint.tiers, "tiers to build and check; default: all supported")->delimiter(',');
-  lintCmd->add_option("--point-lights", lint.pointLights, "point/spot light counts to check, from 0, 1, 2, 4 (default: 0)")
+  lintCmd
+      ->add_option("--point-lights", lint.pointLights, "point/spot light counts to check, from 0, 1, 2, 4 (default: 0)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
   lintCmd->add_option("--config", lint.config, "budgets per tier and stage (JSON; examples/lint/budgets.json)");
-  lintCmd->add_option("--baseline", lint.baseline, "committed figures: fail when a variant's figure grows past the tolerance");
+  lintCmd->add_option("--baseline", lint.baseline,
+                      "committed figures: fail when a variant's figure grows past the tolerance");
   lintCmd->add_flag("--update-baseline", lint.updateBaseline, "rewrite the --baseline file from this run");
-  lintCmd->add_option("--tolerance", lint.tolerancePercent, "growth over the baseline still accepted, in percent (default 5)")
+  lintCmd
+      ->add_option("--tolerance", lint.tolerancePercent,
+                   "growth over the baseline still accepted, in percent (default 5)")
       ->check(finiteRange(0, 1000));
   lintCmd->add_option("--format", lint.format, "text | json | sarif")->check(CLI::IsMember({"text", "json", "sarif"}));
   lintCmd->add_option("-o,--output", lint.output, "write the report to this file instead of standard output");
   lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");
-  lintCmd->add_option("--gpu", lint.gpu, "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");
-  lintCmd->add_option("--mesa-prefix", lint.mesaPrefix, "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
+  lintCmd->add_option(
+      "--gpu", lint.gpu,
+      "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");
+  lintCmd->add_option("--mesa-prefix", lint.mesaPrefix,
+                      "the Mesa build for --gpu (default: $MESA_PREFIX, else ~/.cache/facet/mesa/install)");
   facet::matc::PostArgs post;
   CLI::App* postCmd = app.add_subcommand("post", "compile the runtime's post pass (both render paths) into C++ source");
   postCmd->add_option("--cpp", post.cpp, "C++ file to write (defines facet::runtime::postShaders())")->required();
@@ -111,7 +123,8 @@ int main(int argc, char** argv) {
   // Everything after `eval` is facet-eval's (eval/tool/main.cpp, whose summary this is), --help
   // included: it parses and checks the options.
   CLI::App* evalCmd = app.add_subcommand(
-      "eval", "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
+      "eval",
+      "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
   evalCmd->prefix_command();
   evalCmd->set_help_flag();
 

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "facet/cli/inputs.h"
 #include "commands.h"
+#include "facet/cli/inputs.h"
 #include "facet/cli/outputs.h"
 #include "facet/compiler/post.h"
 #include "facet/package/package.h"
@@ -37,7 +37,8 @@ int postCommand(const PostArgs& args) {
   };
   for (size_t i = 0; i < variants.size() && !args.emitSource.empty(); ++i) {
     const compiler::PostShaders& shaders = variants[i];
-    const std::string stem = (fs::path(args.emitSource) / ("post." + compiler::postVariantKey(shaders.effects))).string();
+    const std::string stem =
+        (fs::path(args.emitSource) / ("post." + compiler::postVariantKey(shaders.effects))).string();
     add("--emit-source", stem + ".vert.es300.glsl", shaders.vertex.glslEs);
     add("--emit-source", stem + ".vert.metal", shaders.vertex.msl);
     add("--emit-source", stem + ".frag.es300.glsl", shaders.sampledFragment.glslEs);
@@ -48,8 +49,8 @@ int postCommand(const PostArgs& args) {
   add("--cpp", args.cpp, compiler::postShadersCpp(variants));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
-    std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
-                shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());
+    std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(),
+                shaders.vertex.spirv.size(), shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "facet/cli/inputs.h"
 #include "commands.h"
+#include "facet/cli/inputs.h"
 
 namespace facet::matc {
 
@@ -37,8 +37,8 @@ int runFacetEval(const std::string& matc, const std::vector<std::string>& args) 
     return 1;
   }
   cli::printError("matc eval runs facet-eval, which is neither beside matc" +
-             (beside.empty() ? std::string() : " (" + beside + ")") +
-             " nor on PATH: build the facet-eval target, or install Facet with it");
+                  (beside.empty() ? std::string() : " (" + beside + ")") +
+                  " nor on PATH: build the facet-eval target, or install Facet with it");
   return 1;
 }
 

@@ -77,7 +77,8 @@ double error(const Scenes& s, const ZiomaCoefficients& k) {
   size_t idx = 0;
   for (const auto& scene : s.scenes)
     for (const auto& m : s.materials) {
-      auto img = renderSphere(scene, m, [&](const ShadingPoint& p) { return specularZioma(k, p.alpha, p.NoH, p.LoH) * p.f0; });
+      auto img =
+          renderSphere(scene, m, [&](const ShadingPoint& p) { return specularZioma(k, p.alpha, p.NoH, p.LoH) * p.f0; });
       e.add(img, s.reference[idx++], false);
     }
   return e.sum / double(e.count);
@@ -104,8 +105,19 @@ void search(const Scenes& s, double m0, double m1, double dm, double p0, double 
       double c = b - g * (b - a), d = a + g * (b - a);
       double fc = error(s, {m, p, c}), fd = error(s, {m, p, d});
       for (int it = 0; it < 18; ++it) {
-        if (fc < fd) { b = d; d = c; fd = fc; c = b - g * (b - a); fc = error(s, {m, p, c}); }
-        else { a = c; c = d; fc = fd; d = a + g * (b - a); fd = error(s, {m, p, d}); }
+        if (fc < fd) {
+          b = d;
+          d = c;
+          fd = fc;
+          c = b - g * (b - a);
+          fc = error(s, {m, p, c});
+        } else {
+          a = c;
+          c = d;
+          fc = fd;
+          d = a + g * (b - a);
+          fd = error(s, {m, p, d});
+        }
       }
       double q = fc < fd ? c : d, f = std::min(fc, fd);
       if (f < best->mse) *best = {{m, p, q}, f};
@@ -120,7 +132,11 @@ double maxAlbedo(const ZiomaCoefficients& k, double* atR, double* atNoV) {
     for (int j = 0; j <= 40; ++j) {
       double NoV = j == 0 ? 1e-4 : j / 40.0;
       double a = albedoZioma(k, r * r, NoV, 1.0, 4096);
-      if (a > worst) { worst = a; *atR = r; *atNoV = NoV; }
+      if (a > worst) {
+        worst = a;
+        *atR = r;
+        *atNoV = NoV;
+      }
     }
   }
   return worst;
@@ -134,7 +150,8 @@ int main() {
   search(s, 0.0, 1.0, 0.1, -1.0, 1.5, 0.25, &best);
   std::printf("coarse: m=%.4f p=%.4f q=%.4f mse=%.4f\n", best.k.loH2Min, best.k.roughScale, best.k.roughBias, best.mse);
   Best fine = best;
-  search(s, best.k.loH2Min - 0.075, best.k.loH2Min + 0.075, 0.025, best.k.roughScale - 0.25, best.k.roughScale + 0.25, 0.0625, &fine);
+  search(s, best.k.loH2Min - 0.075, best.k.loH2Min + 0.075, 0.025, best.k.roughScale - 0.25, best.k.roughScale + 0.25,
+         0.0625, &fine);
   std::printf("fine:   m=%.4f p=%.4f q=%.4f mse=%.4f\n", fine.k.loH2Min, fine.k.roughScale, fine.k.roughBias, fine.mse);
 
   for (auto [name, k] : {std::pair{"published (URP, a+0.5)", kZiomaPublished}, std::pair{"talk (r+0.5)", kZiomaTalk},

@@ -94,7 +94,8 @@ DfgLut table() {
       double NoV = (column + 1.0) / lut.size;
       DfgTerms exact = integrateDfg(NoV, r, 16384);
       DfgTerms filtered = lut.sampleBilinear(NoV, r);
-      double e = std::max(std::abs(filtered.albedo - exact.albedo), std::abs(filtered.fresnelWeighted - exact.fresnelWeighted));
+      double e = std::max(std::abs(filtered.albedo - exact.albedo),
+                          std::abs(filtered.fresnelWeighted - exact.fresnelWeighted));
       if (column < 3) {
         if (e > worstEdge) worstEdge = e, edgeR = r;
       } else {
@@ -102,9 +103,10 @@ DfgLut table() {
       }
     }
   }
-  std::printf("- bilinear filtering error halfway between texel centres (every 3rd, both terms): max %.2e for n·v ≥ 4/64;"
-              " %.2e at n·v = 1/64 (worst at r = %.3f)\n",
-              worstInterior, worstEdge, edgeR);
+  std::printf(
+      "- bilinear filtering error halfway between texel centres (every 3rd, both terms): max %.2e for n·v ≥ 4/64;"
+      " %.2e at n·v = 1/64 (worst at r = %.3f)\n",
+      worstInterior, worstEdge, edgeR);
 
   double minAlbedo = 1e30, maxAlbedo = 0;
   for (int row = 0; row < lut.size; ++row)
@@ -174,7 +176,8 @@ void karisAgainstItsOwnModel() {
   std::printf("Karis 2014 against a table of the model it was fitted to (separable Schlick–Smith, k = α/2):\n\n");
   std::printf("| f0 | max abs error | at (n·v, r) | mean abs error |\n|---|---|---|---|\n");
   for (double f0 : {0.04, 1.0}) {
-    ref::EnvBrdfError e = ref::envBrdfError(ue4, f0, [f0](double NoV, double r) { return envBrdfKaris(NoV, r).apply(f0); });
+    ref::EnvBrdfError e =
+        ref::envBrdfError(ue4, f0, [f0](double NoV, double r) { return envBrdfKaris(NoV, r).apply(f0); });
     std::printf("| %g | %.4f | (%.3f, %.3f) | %.4f |\n", f0, e.max, e.atNoV, e.atRoughness, e.mean);
   }
   std::printf("\n");
@@ -230,8 +233,9 @@ void prefilterAccuracy() {
     options.lodBias = c.lodBias;
     results.push_back(prefilterEnvironment(source, options));
   }
-  std::printf("Red channel; relative RMS = √(Σ (got − exact)² / Σ exact²) over the level's texels; mean = solid-angle-weighted"
-              " mean / source mean.\n\n| level (r) |");
+  std::printf(
+      "Red channel; relative RMS = √(Σ (got − exact)² / Σ exact²) over the level's texels; mean = solid-angle-weighted"
+      " mean / source mean.\n\n| level (r) |");
   for (const Config& c : configs) std::printf(" %d samples, lod bias %g |", c.samples, c.lodBias);
   std::printf("\n|---|");
   for (size_t i = 0; i < std::size(configs); ++i) std::printf("---|");

@@ -137,8 +137,10 @@ int main() {
     }
   }
 
-  std::printf("Metal sphere (f0 = 1) %dx%d, the eval grid's frontal and grazing suns, E = %.2f; 8-bit PSNR (dB) vs exact GGX/Smith/Schlick\n\n",
-              frontal.size, frontal.size, frontal.illuminance);
+  std::printf(
+      "Metal sphere (f0 = 1) %dx%d, the eval grid's frontal and grazing suns, E = %.2f; 8-bit PSNR (dB) vs exact "
+      "GGX/Smith/Schlick\n\n",
+      frontal.size, frontal.size, frontal.illuminance);
   std::printf("| form | all |");
   for (double r : roughness) std::printf(" r = %.1f |", r);
   std::printf("\n|---|--:|");

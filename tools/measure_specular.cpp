@@ -67,7 +67,8 @@ double maxAlbedo(const std::function<double(double, double)>& albedo, double* at
 int main() {
   const double kPiD = kPi;
   std::vector<Variant> variants = {
-      {"ggx_smith (exact, self-check)", specularExactForm, [](double a, double v) { return albedoExact(a, v, 1.0, 4096); }},
+      {"ggx_smith (exact, self-check)", specularExactForm,
+       [](double a, double v) { return albedoExact(a, v, 1.0, 4096); }},
       {"ggx_fastv (Hammon V)",
        [](const ShadingPoint& p) {
          double F = p.f0 + (1.0 - p.f0) * std::pow(1.0 - p.LoH, 5.0);
@@ -88,9 +89,15 @@ int main() {
        [](double a, double v) { return albedoZioma(kZiomaFacet, a, v, 1.0, 4096); }},
       {"lut (R·L)⁴, ×16/π (shipped)", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0 / kPiD), {}},
       {"lut (R·L)⁴, ×16", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0), {}},
-      {"lut (R·L)⁴, √ encoded, ×16/π", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0 / kPiD, facet::compiler::SpecularLutEncoding::Sqrt), {}},
-      {"lut (R·L)⁴, √ encoded, ×16", lutForm(SpecularLutAxis::ReflectedCosine4, 16.0, facet::compiler::SpecularLutEncoding::Sqrt), {}},
-      {"lut (R·L)⁴, √ encoded, ×64", lutForm(SpecularLutAxis::ReflectedCosine4, 64.0, facet::compiler::SpecularLutEncoding::Sqrt), {}},
+      {"lut (R·L)⁴, √ encoded, ×16/π",
+       lutForm(SpecularLutAxis::ReflectedCosine4, 16.0 / kPiD, facet::compiler::SpecularLutEncoding::Sqrt),
+       {}},
+      {"lut (R·L)⁴, √ encoded, ×16",
+       lutForm(SpecularLutAxis::ReflectedCosine4, 16.0, facet::compiler::SpecularLutEncoding::Sqrt),
+       {}},
+      {"lut (R·L)⁴, √ encoded, ×64",
+       lutForm(SpecularLutAxis::ReflectedCosine4, 64.0, facet::compiler::SpecularLutEncoding::Sqrt),
+       {}},
       {"lut N·H, ×16/π", lutForm(SpecularLutAxis::HalfCosine, 16.0 / kPiD), {}},
       {"lut N·H, ×16", lutForm(SpecularLutAxis::HalfCosine, 16.0), {}},
   };
@@ -103,8 +110,9 @@ int main() {
   std::vector<std::vector<double>> reference;
   for (const auto& m : materials) reference.push_back(renderSphere(scene, m, specularExactForm));
 
-  std::printf("Sphere %dx%d, light (%.3f, %.3f, %.3f), E = %.2f, ambient %.2f; 8-bit PSNR (dB) vs exact GGX/Smith/Schlick\n\n",
-              scene.size, scene.size, scene.light.x, scene.light.y, scene.light.z, scene.illuminance, scene.ambient);
+  std::printf(
+      "Sphere %dx%d, light (%.3f, %.3f, %.3f), E = %.2f, ambient %.2f; 8-bit PSNR (dB) vs exact GGX/Smith/Schlick\n\n",
+      scene.size, scene.size, scene.light.x, scene.light.y, scene.light.z, scene.illuminance, scene.ambient);
   std::printf("| form | all | f0 = 0.04 | f0 = 1 | worst image | max albedo, f0 = 1 |\n|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> perImage(variants.size());
   for (size_t k = 0; k < variants.size(); ++k) {
@@ -127,8 +135,8 @@ int main() {
       std::snprintf(buf, sizeof buf, "%.3f (r = %.3f, NoV = %.3g)", a, r, v);
       albedo = buf;
     }
-    std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %s |\n", variants[k].name.c_str(), all.psnr(), dielectric.psnr(), metal.psnr(), worst,
-                albedo.c_str());
+    std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %s |\n", variants[k].name.c_str(), all.psnr(), dielectric.psnr(),
+                metal.psnr(), worst, albedo.c_str());
   }
   std::printf("\nPer image (f0, r): PSNR dB (inf = identical)\n\n| form |");
   for (const auto& m : materials) std::printf(" %.2g, %.1f |", m.f0, m.perceptualRoughness);

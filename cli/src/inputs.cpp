@@ -57,7 +57,8 @@ std::optional<ir::Material> loadMaterial(const std::string& path, ir::SourceFile
   return material;
 }
 
-void printBuildError(const ir::SourceFile& source, const std::string& message, const std::optional<ir::SourceLoc>& loc) {
+void printBuildError(const ir::SourceFile& source, const std::string& message,
+                     const std::optional<ir::SourceLoc>& loc) {
   if (loc) {
     std::fputs(ir::formatDiagnostic(source, {ir::Severity::Error, *loc, message, "backend"}).c_str(), stderr);
   } else {
@@ -77,7 +78,8 @@ int parseTiers(const std::vector<std::string>& names, std::vector<permutations::
     }
     if (std::find(supported.begin(), supported.end(), *tier) == supported.end()) {
       std::string list;
-      for (permutations::Tier t : supported) list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
+      for (permutations::Tier t : supported)
+        list += (list.empty() ? "" : ", ") + std::string(permutations::toString(t));
       printError("tier '" + name + "' is not built by this compiler version (supported: " + list + ")");
       return 2;
     }

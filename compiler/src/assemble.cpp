@@ -5,8 +5,8 @@
 #include <cmath>
 #include <set>
 
-#include "facet/compiler/glsl_library.h"
 #include "facet/abi/shader_abi.h"
+#include "facet/compiler/glsl_library.h"
 
 namespace facet::compiler {
 namespace {
@@ -124,7 +124,8 @@ std::string materialBlock(Flavour flavour, const ir::Material& material, const P
     for (uint32_t at = end; at < layout.blockSize; at += 4)
       s += "    " + std::string(precision) + " float facet_pad" + std::to_string(at) + ";\n";
     for (const PreshadedMember& m : preshade->members)
-      s += "    " + std::string(precision) + " " + m.type + " " + m.name + ";  // @" + std::to_string(m.offset) + ", preshaded\n";
+      s += "    " + std::string(precision) + " " + m.type + " " + m.name + ";  // @" + std::to_string(m.offset) +
+           ", preshaded\n";
   }
   return s + "} " + std::string(abi::kMaterialBlock.instance) + ";\n";
 }
@@ -230,14 +231,16 @@ std::string vertexInputs(const AssemblyInput& in) {
 
 // MaterialInputs, its defaults and the material's surface program.
 std::string materialSection(const AssemblyInput& in) {
-  std::string s = "// Surface outputs; an output the material does not write keeps its default.\nstruct MaterialInputs {\n";
+  std::string s =
+      "// Surface outputs; an output the material does not write keeps its default.\nstruct MaterialInputs {\n";
   for (const ir::OutputInfo& o : ir::outputs()) s += "    " + std::string(ir::glslName(o.type)) + " " + o.name + ";\n";
   s += "};\n\nMaterialInputs material_defaults() {\n    MaterialInputs m;\n";
   for (const ir::OutputInfo& o : ir::outputs())
     s += "    m." + std::string(o.name) + " = " + ir::glslConstant(o.type, o.defaultValue) + ";\n";
   s += "    return m;\n}\n\n";
   s += "// The interpolated, normalized world-space normal (vertex.normal in the material), and the\n"
-       "// unit vector from the surface to the eye (vertex.viewDirection).\nvec3 shading_normal;\nvec3 shading_view;\n\n";
+       "// unit vector from the surface to the eye (vertex.viewDirection).\nvec3 shading_normal;\nvec3 "
+       "shading_view;\n\n";
   s += "// Surface program of material '" + in.material.name + "'.\n";
   s += "void evaluate_surface(inout MaterialInputs material) {\n" + in.surface.body + "}\n";
   return s;
@@ -258,7 +261,8 @@ std::string specularLutSampler(const AssemblyInput& in, Flavour flavour, const c
 std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* precision) {
   if (in.material.shading != "lit") return "";
   std::string s = frameSampler(flavour, abi::kEnvironmentSampler, precision);
-  if (in.tier.ambient == permutations::AmbientModel::SplitSum) s += frameSampler(flavour, abi::kDfgLutSampler, precision);
+  if (in.tier.ambient == permutations::AmbientModel::SplitSum)
+    s += frameSampler(flavour, abi::kDfgLutSampler, precision);
   return s;
 }
 
@@ -350,7 +354,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   const std::string* vertexTemplate = nullptr;
   const std::string* fragmentTemplate = nullptr;
   const char* fragmentName = in.material.shading == "unlit" ? "forward_unlit.frag.glsl" : "forward_lit.frag.glsl";
-  if (!templateText("forward.vert.glsl", &vertexTemplate, error) || !templateText(fragmentName, &fragmentTemplate, error))
+  if (!templateText("forward.vert.glsl", &vertexTemplate, error) ||
+      !templateText(fragmentName, &fragmentTemplate, error))
     return false;
 
   std::string vs = prologue(in, flavour, "vertex", "highp");

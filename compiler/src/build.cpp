@@ -11,6 +11,9 @@
 #include "facet/compiler/assemble.h"
 #include "facet/compiler/backend_errors.h"
 #include "facet/compiler/glslang_backend.h"
+#include "facet/compiler/lower_half_image_operands.h"
+#include "facet/compiler/lower_relaxed_to_quantized.h"
+#include "facet/compiler/minify_glsl.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/param_layout.h"
 #include "facet/compiler/preshader.h"
@@ -18,9 +21,6 @@
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/passes.h"
-#include "facet/compiler/minify_glsl.h"
-#include "facet/compiler/lower_half_image_operands.h"
-#include "facet/compiler/lower_relaxed_to_quantized.h"
 #include "job_pool.h"
 #include "variant_cache.h"
 
@@ -190,10 +190,12 @@ bool passesOutputChecks(const CompiledShaders& shaders) {
 // (docs/build-integration.md, "Scheduling"); only their ratio matters.
 struct CostModel {
   static constexpr double kFirst = std::numeric_limits<double>::infinity();
-  static constexpr double kStagePerWord = 0.0045;      // glslang's SPIR-V words of the stage
-  static constexpr double kGlslEsPerByte = 0.000057;   // assembled GLSL ES bytes, both stages
+  static constexpr double kStagePerWord = 0.0045;     // glslang's SPIR-V words of the stage
+  static constexpr double kGlslEsPerByte = 0.000057;  // assembled GLSL ES bytes, both stages
 
-  static double glslEs(const VariantBuild& v) { return kGlslEsPerByte * double(v.es.vertex.size() + v.es.fragment.size()); }
+  static double glslEs(const VariantBuild& v) {
+    return kGlslEsPerByte * double(v.es.vertex.size() + v.es.fragment.size());
+  }
   // fp16 emulation optimizes and validates a second copy of the stage.
   static double stage(size_t words, bool emulated) { return kStagePerWord * double(words) * (emulated ? 2 : 1); }
 };
@@ -307,7 +309,8 @@ class VariantJobs {
       if (!checkGlslEs300(v.es, &readableLog))
         reportGlslangFailure(readableLog, v.es, ctx_.surface, "GLSL ES 3.00 for variant " + v.keyText, failure);
       else
-        failure->message = "internal error: the minified GLSL ES 3.00 of variant " + v.keyText + " does not compile:\n" + log;
+        failure->message =
+            "internal error: the minified GLSL ES 3.00 of variant " + v.keyText + " does not compile:\n" + log;
     }
     stepDone(i);
   }
@@ -419,9 +422,12 @@ class VariantJobs {
     using package::Target;
     v.variant.key = v.keyText;
     v.variant.shaders = {
-        {Stage::Vertex, Target::GlslEs300, std::move(shaders[0])}, {Stage::Fragment, Target::GlslEs300, std::move(shaders[1])},
-        {Stage::Vertex, Target::Spirv, std::move(shaders[2])},     {Stage::Fragment, Target::Spirv, std::move(shaders[3])},
-        {Stage::Vertex, Target::Msl, std::move(shaders[4])},       {Stage::Fragment, Target::Msl, std::move(shaders[5])},
+        {Stage::Vertex, Target::GlslEs300, std::move(shaders[0])},
+        {Stage::Fragment, Target::GlslEs300, std::move(shaders[1])},
+        {Stage::Vertex, Target::Spirv, std::move(shaders[2])},
+        {Stage::Fragment, Target::Spirv, std::move(shaders[3])},
+        {Stage::Vertex, Target::Msl, std::move(shaders[4])},
+        {Stage::Fragment, Target::Msl, std::move(shaders[5])},
     };
     v.libraryFiles = v.es.libraryFiles;
     v.libraryFiles.insert(v.vk.libraryFiles.begin(), v.vk.libraryFiles.end());
@@ -443,7 +449,8 @@ const std::string& compilerVersion() {
   return version;
 }
 
-permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tierName, const BuildOptions& options) {
+permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tierName,
+                                    const BuildOptions& options) {
   // The tier's preset, with the material's overrides for that tier (checked by ir::check).
   permutations::TierConfig tier = permutations::preset(tierName);
   for (const ir::TierOverride& o : material.tierOverrides)
@@ -452,7 +459,8 @@ permutations::TierConfig tierConfig(const ir::Material& material, permutations::
   return tier;
 }
 
-std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options, BuildError* failure) {
+std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options,
+                                         BuildError* failure) {
   if (options.fp16Emulation && options.fp16TrueHalf) {
     failure->message = "fp16 emulation and true half are two builds of the same SPIR-V: ask for one";
     return std::nullopt;
@@ -469,7 +477,8 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   permutations::MaterialNeeds needs;
   needs.lit = material.shading == "lit";
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
-  const std::vector<permutations::VariantKey> keys = permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
+  const std::vector<permutations::VariantKey> keys =
+      permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts);
 
   if (!options.cacheDir.empty() && !prepareVariantCache(options.cacheDir, &failure->message)) return std::nullopt;
   // Jobs finish in any order; each writes only its own variant's fields, read here in key order.
@@ -484,7 +493,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
     if (!v.built) {  // the first failure in key order, whatever the job count
       const size_t step = size_t(std::find(v.failed.begin(), v.failed.end(), true) - v.failed.begin());
       *failure = step < StepCount ? std::move(v.failures[step])
-                                   : BuildError{"internal error: variant " + v.keyText + " was not built", {}};
+                                  : BuildError{"internal error: variant " + v.keyText + " was not built", {}};
       return std::nullopt;
     }
     const uint32_t index = uint32_t(result.package.variants.size());

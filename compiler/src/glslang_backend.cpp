@@ -21,7 +21,8 @@ struct Target {
   int version;  // 310 for Vulkan, 300 for OpenGL ES
 };
 
-std::unique_ptr<glslang::TShader> parseStage(EShLanguage stage, const std::string& text, Target target, std::string* log) {
+std::unique_ptr<glslang::TShader> parseStage(EShLanguage stage, const std::string& text, Target target,
+                                             std::string* log) {
   auto shader = std::make_unique<glslang::TShader>(stage);
   const char* strings[] = {text.c_str()};
   shader->setStrings(strings, 1);

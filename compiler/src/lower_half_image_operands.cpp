@@ -15,16 +15,19 @@ namespace {
 // the depth-compare samples and the gathers the dref or component (5).
 uint32_t maskPosition(uint32_t op) {
   switch (op) {
-    case SpvOpImageSampleImplicitLod: case SpvOpImageSampleExplicitLod:
-    case SpvOpImageSampleProjImplicitLod: case SpvOpImageSampleProjExplicitLod:
-    case SpvOpImageFetch: case SpvOpImageRead:
-      return 5;
-    case SpvOpImageSampleDrefImplicitLod: case SpvOpImageSampleDrefExplicitLod:
-    case SpvOpImageSampleProjDrefImplicitLod: case SpvOpImageSampleProjDrefExplicitLod:
-    case SpvOpImageGather: case SpvOpImageDrefGather:
-      return 6;
-    default:
-      return 0;
+    case SpvOpImageSampleImplicitLod:
+    case SpvOpImageSampleExplicitLod:
+    case SpvOpImageSampleProjImplicitLod:
+    case SpvOpImageSampleProjExplicitLod:
+    case SpvOpImageFetch:
+    case SpvOpImageRead: return 5;
+    case SpvOpImageSampleDrefImplicitLod:
+    case SpvOpImageSampleDrefExplicitLod:
+    case SpvOpImageSampleProjDrefImplicitLod:
+    case SpvOpImageSampleProjDrefExplicitLod:
+    case SpvOpImageGather:
+    case SpvOpImageDrefGather: return 6;
+    default: return 0;
   }
 }
 
@@ -34,21 +37,24 @@ bool lowerHalfImageOperands(std::vector<uint32_t>* words, std::string* error) {
   const std::vector<uint32_t>& in = *words;
   // Pass 1: float types by width and size, value types, where the functions begin.
   uint32_t float32 = 0;
-  std::map<uint32_t, uint32_t> halfSize;        // 16-bit float type id -> components (1 = scalar)
-  std::map<uint32_t, uint32_t> float32Vector;   // components -> 32-bit float vector type id
-  std::map<uint32_t, uint32_t> typeOf;          // value id -> type id
+  std::map<uint32_t, uint32_t> halfSize;       // 16-bit float type id -> components (1 = scalar)
+  std::map<uint32_t, uint32_t> float32Vector;  // components -> 32-bit float vector type id
+  std::map<uint32_t, uint32_t> typeOf;         // value id -> type id
   size_t firstFunction = in.size();
-  bool walked = forEachSpirvInstruction(in, [&](const SpirvInstruction& ins) {
-    auto w = [&](uint32_t i) { return ins.operand(i); };
-    if (ins.opcode == SpvOpTypeFloat && w(2) == 16) halfSize[w(1)] = 1;
-    if (ins.opcode == SpvOpTypeFloat && w(2) == 32) float32 = w(1);
-    if (ins.opcode == SpvOpTypeVector && halfSize.count(w(2))) halfSize[w(1)] = w(3);
-    if (ins.opcode == SpvOpTypeVector && w(2) == float32 && float32 != 0) float32Vector[w(3)] = w(1);
-    if (ins.opcode == SpvOpFunction && firstFunction == in.size()) firstFunction = ins.offset;
-    bool hasResult = false, hasType = false;
-    SpvHasResultAndType(SpvOp(ins.opcode), &hasResult, &hasType);
-    if (hasResult && hasType && ins.count >= 3) typeOf[w(2)] = w(1);
-  }, error);
+  bool walked = forEachSpirvInstruction(
+      in,
+      [&](const SpirvInstruction& ins) {
+        auto w = [&](uint32_t i) { return ins.operand(i); };
+        if (ins.opcode == SpvOpTypeFloat && w(2) == 16) halfSize[w(1)] = 1;
+        if (ins.opcode == SpvOpTypeFloat && w(2) == 32) float32 = w(1);
+        if (ins.opcode == SpvOpTypeVector && halfSize.count(w(2))) halfSize[w(1)] = w(3);
+        if (ins.opcode == SpvOpTypeVector && w(2) == float32 && float32 != 0) float32Vector[w(3)] = w(1);
+        if (ins.opcode == SpvOpFunction && firstFunction == in.size()) firstFunction = ins.offset;
+        bool hasResult = false, hasType = false;
+        SpvHasResultAndType(SpvOp(ins.opcode), &hasResult, &hasType);
+        if (hasResult && hasType && ins.count >= 3) typeOf[w(2)] = w(1);
+      },
+      error);
   if (!walked) return false;
   if (halfSize.empty()) return true;
   if (float32 == 0) {
@@ -76,20 +82,23 @@ bool lowerHalfImageOperands(std::vector<uint32_t>* words, std::string* error) {
   // Pass 2: in front of each image instruction, an OpFConvert per half operand; the operand
   // replaced in that instruction only.
   std::vector<uint32_t> body;  // everything from the first function on
-  forEachSpirvInstruction(in, [&](const SpirvInstruction& ins) {
-    if (ins.offset < firstFunction) return;
-    std::vector<uint32_t> w(ins.words, ins.words + ins.count);
-    const uint32_t mask = maskPosition(ins.opcode);
-    if (mask != 0) {
-      for (uint32_t i = 4; i < ins.count; ++i) {
-        if (i == mask || !isHalf(w[i])) continue;  // the mask is a literal, not an id
-        uint32_t fresh = bound++;
-        body.insert(body.end(), {(4u << 16) | SpvOpFConvert, float32TypeOf(typeOf[w[i]]), fresh, w[i]});
-        w[i] = fresh;
-      }
-    }
-    body.insert(body.end(), w.begin(), w.end());
-  }, error);
+  forEachSpirvInstruction(
+      in,
+      [&](const SpirvInstruction& ins) {
+        if (ins.offset < firstFunction) return;
+        std::vector<uint32_t> w(ins.words, ins.words + ins.count);
+        const uint32_t mask = maskPosition(ins.opcode);
+        if (mask != 0) {
+          for (uint32_t i = 4; i < ins.count; ++i) {
+            if (i == mask || !isHalf(w[i])) continue;  // the mask is a literal, not an id
+            uint32_t fresh = bound++;
+            body.insert(body.end(), {(4u << 16) | SpvOpFConvert, float32TypeOf(typeOf[w[i]]), fresh, w[i]});
+            w[i] = fresh;
+          }
+        }
+        body.insert(body.end(), w.begin(), w.end());
+      },
+      error);
 
   std::vector<uint32_t> out(in.begin(), in.begin() + long(firstFunction));
   out.insert(out.end(), newTypes.begin(), newTypes.end());

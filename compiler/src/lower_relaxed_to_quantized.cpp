@@ -35,21 +35,45 @@ std::vector<uint32_t> valueOperands(const uint32_t* w, uint32_t count, uint32_t 
     for (uint32_t i = first; i < end && i < count; ++i) positions.push_back(i);
   };
   switch (w[0] & 0xffff) {
-    case SpvOpFNegate: case SpvOpFAdd: case SpvOpFSub: case SpvOpFMul: case SpvOpFDiv: case SpvOpFRem:
-    case SpvOpFMod: case SpvOpVectorTimesScalar: case SpvOpVectorTimesMatrix: case SpvOpMatrixTimesVector:
-    case SpvOpDot: case SpvOpCompositeConstruct: case SpvOpSelect: case SpvOpFConvert:
-    case SpvOpDPdx: case SpvOpDPdy: case SpvOpFwidth: case SpvOpDPdxFine: case SpvOpDPdyFine:
-    case SpvOpFwidthFine: case SpvOpDPdxCoarse: case SpvOpDPdyCoarse: case SpvOpFwidthCoarse:
-    case SpvOpFOrdEqual: case SpvOpFUnordEqual: case SpvOpFOrdNotEqual: case SpvOpFUnordNotEqual:
-    case SpvOpFOrdLessThan: case SpvOpFUnordLessThan: case SpvOpFOrdGreaterThan: case SpvOpFUnordGreaterThan:
-    case SpvOpFOrdLessThanEqual: case SpvOpFUnordLessThanEqual: case SpvOpFOrdGreaterThanEqual:
-    case SpvOpFUnordGreaterThanEqual:
-      range(3, count);
-      break;
+    case SpvOpFNegate:
+    case SpvOpFAdd:
+    case SpvOpFSub:
+    case SpvOpFMul:
+    case SpvOpFDiv:
+    case SpvOpFRem:
+    case SpvOpFMod:
+    case SpvOpVectorTimesScalar:
+    case SpvOpVectorTimesMatrix:
+    case SpvOpMatrixTimesVector:
+    case SpvOpDot:
+    case SpvOpCompositeConstruct:
+    case SpvOpSelect:
+    case SpvOpFConvert:
+    case SpvOpDPdx:
+    case SpvOpDPdy:
+    case SpvOpFwidth:
+    case SpvOpDPdxFine:
+    case SpvOpDPdyFine:
+    case SpvOpFwidthFine:
+    case SpvOpDPdxCoarse:
+    case SpvOpDPdyCoarse:
+    case SpvOpFwidthCoarse:
+    case SpvOpFOrdEqual:
+    case SpvOpFUnordEqual:
+    case SpvOpFOrdNotEqual:
+    case SpvOpFUnordNotEqual:
+    case SpvOpFOrdLessThan:
+    case SpvOpFUnordLessThan:
+    case SpvOpFOrdGreaterThan:
+    case SpvOpFUnordGreaterThan:
+    case SpvOpFOrdLessThanEqual:
+    case SpvOpFUnordLessThanEqual:
+    case SpvOpFOrdGreaterThanEqual:
+    case SpvOpFUnordGreaterThanEqual: range(3, count); break;
     case SpvOpExtInst:  // set id, instruction number (a literal), then operand ids
       if (count > 4 && w[3] == glslStd) range(5, count);
       break;
-    case SpvOpVectorShuffle: range(3, 5); break;    // two vectors, then literal components
+    case SpvOpVectorShuffle: range(3, 5); break;     // two vectors, then literal components
     case SpvOpCompositeExtract: range(3, 4); break;  // composite, then literal indices
     case SpvOpCompositeInsert: range(3, 5); break;   // object, composite, then literal indices
     default: break;
@@ -71,39 +95,42 @@ bool lowerRelaxedToQuantized(std::vector<uint32_t>* words, QuantizeCounts* count
   std::set<uint32_t> relaxed;
   uint32_t glslStd = 0;
   bool inFunction = false;
-  bool walked = forEachSpirvInstruction(in, [&](const SpirvInstruction& ins) {
-    const uint32_t op = ins.opcode;
-    auto w = [&](uint32_t i) { return ins.operand(i); };
-    instructions.push_back({ins.offset, ins.count, op});
-    switch (op) {
-      case SpvOpExtInstImport:
-        if (ins.literalString(2) == "GLSL.std.450") glslStd = w(1);
-        break;
-      case SpvOpTypeFloat:
-        if (w(2) == 32) shapes[w(1)] = FloatShape::Scalar;
-        break;
-      case SpvOpTypeVector:
-        if (shapes.count(w(2)) && shapes[w(2)] == FloatShape::Scalar) shapes[w(1)] = FloatShape::Vector;
-        break;
-      case SpvOpTypeMatrix:
-        if (shapes.count(w(2)) && shapes[w(2)] == FloatShape::Vector) shapes[w(1)] = FloatShape::Matrix;
-        break;
-      case SpvOpDecorate:
-        if (w(2) == SpvDecorationRelaxedPrecision) relaxed.insert(w(1));
-        break;
-      case SpvOpFunction: inFunction = true; break;
-      case SpvOpFunctionEnd: inFunction = false; break;
-      default: break;
-    }
-    bool hasResult = false, hasType = false;
-    SpvHasResultAndType(SpvOp(op), &hasResult, &hasType);
-    // OpFunction's "result type" is its return type (glslang decorates mediump functions): the
-    // function id is not a value, so it is never quantized.
-    if (hasResult && hasType && ins.count >= 3 && op != SpvOpFunction) {
-      typeOf[w(2)] = w(1);
-      if (inFunction) opOf[w(2)] = op;
-    }
-  }, error);
+  bool walked = forEachSpirvInstruction(
+      in,
+      [&](const SpirvInstruction& ins) {
+        const uint32_t op = ins.opcode;
+        auto w = [&](uint32_t i) { return ins.operand(i); };
+        instructions.push_back({ins.offset, ins.count, op});
+        switch (op) {
+          case SpvOpExtInstImport:
+            if (ins.literalString(2) == "GLSL.std.450") glslStd = w(1);
+            break;
+          case SpvOpTypeFloat:
+            if (w(2) == 32) shapes[w(1)] = FloatShape::Scalar;
+            break;
+          case SpvOpTypeVector:
+            if (shapes.count(w(2)) && shapes[w(2)] == FloatShape::Scalar) shapes[w(1)] = FloatShape::Vector;
+            break;
+          case SpvOpTypeMatrix:
+            if (shapes.count(w(2)) && shapes[w(2)] == FloatShape::Vector) shapes[w(1)] = FloatShape::Matrix;
+            break;
+          case SpvOpDecorate:
+            if (w(2) == SpvDecorationRelaxedPrecision) relaxed.insert(w(1));
+            break;
+          case SpvOpFunction: inFunction = true; break;
+          case SpvOpFunctionEnd: inFunction = false; break;
+          default: break;
+        }
+        bool hasResult = false, hasType = false;
+        SpvHasResultAndType(SpvOp(op), &hasResult, &hasType);
+        // OpFunction's "result type" is its return type (glslang decorates mediump functions): the
+        // function id is not a value, so it is never quantized.
+        if (hasResult && hasType && ins.count >= 3 && op != SpvOpFunction) {
+          typeOf[w(2)] = w(1);
+          if (inFunction) opOf[w(2)] = op;
+        }
+      },
+      error);
   if (!walked) return false;
   auto shapeOf = [&](uint32_t type) {
     auto it = shapes.find(type);

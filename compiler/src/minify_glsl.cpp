@@ -87,14 +87,13 @@ bool needsSpace(const Token& prev, const Token& next) {
 // One top-level declaration: a directive line, a function definition or prototype, or a
 // declaration ending in `;` (variables, structs, blocks, precision statements).
 struct Item {
-  size_t begin = 0, end = 0;   // token range
+  size_t begin = 0, end = 0;  // token range
   std::set<std::string_view> defines;
-  bool root = false;           // kept whatever references it
+  bool root = false;  // kept whatever references it
 };
 
-const std::set<std::string_view> kInterfaceWords = {"uniform", "in",        "out",    "inout",    "precision",
-                                                    "layout",  "invariant", "buffer", "centroid", "flat",
-                                                    "smooth"};
+const std::set<std::string_view> kInterfaceWords = {"uniform",   "in",     "out",      "inout", "precision", "layout",
+                                                    "invariant", "buffer", "centroid", "flat",  "smooth"};
 
 void classify(const std::vector<Token>& t, Item* item) {
   if (t[item->begin].kind == Kind::Directive) {
@@ -130,9 +129,12 @@ void classify(const std::vector<Token>& t, Item* item) {
         named = true;
       }
       if (depth == 0 && x == ",") named = false, last = {};
-      if (x == "(" || x == "[" || x == "{") ++depth;
-      else if (x == ")" || x == "]" || x == "}") --depth;
-      else if (depth == 0 && !named && t[i].kind == Kind::Word) last = x;
+      if (x == "(" || x == "[" || x == "{")
+        ++depth;
+      else if (x == ")" || x == "]" || x == "}")
+        --depth;
+      else if (depth == 0 && !named && t[i].kind == Kind::Word)
+        last = x;
     }
   }
   if (item->defines.empty()) item->root = true;
@@ -152,8 +154,10 @@ std::vector<Item> splitItems(const std::vector<Token>& t) {
       for (; i < t.size(); ++i) {
         std::string_view x = t[i].text;
         if (t[i].kind == Kind::Directive) break;
-        if (x == "(" || x == "[") ++paren;
-        else if (x == ")" || x == "]") --paren;
+        if (x == "(" || x == "[")
+          ++paren;
+        else if (x == ")" || x == "]")
+          --paren;
         else if (x == "{") {
           if (brace == 0) sawParenBeforeBrace = i > item.begin && t[i - 1].text == ")";
           ++brace;

@@ -33,7 +33,9 @@ bool hasResult(uint32_t op) {
 // are known: a literal mistaken for an id only blocks a fusion, never adds one).
 std::pair<size_t, size_t> idOperands(const BodyInstruction& ins) {
   const size_t n = ins.words.size();
-  auto range = [&](size_t first, size_t last) { return std::pair<size_t, size_t>{std::min(first, n), std::min(last, n)}; };
+  auto range = [&](size_t first, size_t last) {
+    return std::pair<size_t, size_t>{std::min(first, n), std::min(last, n)};
+  };
   switch (ins.opcode) {
     case SpvOpExtInst: return range(5, n);
     case SpvOpVectorShuffle: return range(3, 5);
@@ -45,22 +47,42 @@ std::pair<size_t, size_t> idOperands(const BodyInstruction& ins) {
 
 bool isFmaPipe(uint32_t op) {
   switch (op) {
-    case SpvOpFAdd: case SpvOpFSub: case SpvOpFMul: case SpvOpIAdd: case SpvOpISub: case SpvOpIMul:
-    case SpvOpSNegate: case SpvOpSelect: case SpvOpLogicalAnd: case SpvOpLogicalOr: case SpvOpLogicalNot:
-    case SpvOpLogicalEqual: case SpvOpLogicalNotEqual: case SpvOpAny: case SpvOpAll: case SpvOpIsNan: case SpvOpIsInf:
-    case SpvOpShiftRightLogical: case SpvOpShiftRightArithmetic: case SpvOpShiftLeftLogical: case SpvOpBitwiseOr:
-    case SpvOpBitwiseXor: case SpvOpBitwiseAnd: case SpvOpNot: case SpvOpBitFieldInsert: case SpvOpBitFieldSExtract:
-    case SpvOpBitFieldUExtract: case SpvOpBitReverse: case SpvOpBitCount:
-    case SpvOpVectorTimesScalar: case SpvOpMatrixTimesScalar:
-      return true;
-    default:
-      return (op >= SpvOpIEqual && op <= SpvOpFUnordGreaterThanEqual);  // comparisons
+    case SpvOpFAdd:
+    case SpvOpFSub:
+    case SpvOpFMul:
+    case SpvOpIAdd:
+    case SpvOpISub:
+    case SpvOpIMul:
+    case SpvOpSNegate:
+    case SpvOpSelect:
+    case SpvOpLogicalAnd:
+    case SpvOpLogicalOr:
+    case SpvOpLogicalNot:
+    case SpvOpLogicalEqual:
+    case SpvOpLogicalNotEqual:
+    case SpvOpAny:
+    case SpvOpAll:
+    case SpvOpIsNan:
+    case SpvOpIsInf:
+    case SpvOpShiftRightLogical:
+    case SpvOpShiftRightArithmetic:
+    case SpvOpShiftLeftLogical:
+    case SpvOpBitwiseOr:
+    case SpvOpBitwiseXor:
+    case SpvOpBitwiseAnd:
+    case SpvOpNot:
+    case SpvOpBitFieldInsert:
+    case SpvOpBitFieldSExtract:
+    case SpvOpBitFieldUExtract:
+    case SpvOpBitReverse:
+    case SpvOpBitCount:
+    case SpvOpVectorTimesScalar:
+    case SpvOpMatrixTimesScalar: return true;
+    default: return (op >= SpvOpIEqual && op <= SpvOpFUnordGreaterThanEqual);  // comparisons
   }
 }
 
-bool isConversion(uint32_t op) {
-  return op >= SpvOpConvertFToU && op <= SpvOpFConvert && op != SpvOpQuantizeToF16;
-}
+bool isConversion(uint32_t op) { return op >= SpvOpConvertFToU && op <= SpvOpFConvert && op != SpvOpQuantizeToF16; }
 
 bool isTextureSample(uint32_t op) {
   return (op >= SpvOpImageSampleImplicitLod && op <= SpvOpImageDrefGather) ||
@@ -71,10 +93,10 @@ bool isDerivative(uint32_t op) { return op >= SpvOpDPdx && op <= SpvOpFwidthCoar
 
 // InstructionCounts' classes: one SPIR-V instruction each, whatever the model makes of it.
 bool isAluInstruction(uint32_t op) {
-  return (op >= SpvOpConvertFToU && op <= SpvOpQuantizeToF16) ||  // conversions
-         (op >= SpvOpSNegate && op <= SpvOpDot) ||                // arithmetic
-         (op >= SpvOpAny && op <= SpvOpFUnordGreaterThanEqual) || // logic, select, comparisons
-         (op >= SpvOpShiftRightLogical && op <= SpvOpNot);        // bit operations
+  return (op >= SpvOpConvertFToU && op <= SpvOpQuantizeToF16) ||   // conversions
+         (op >= SpvOpSNegate && op <= SpvOpDot) ||                 // arithmetic
+         (op >= SpvOpAny && op <= SpvOpFUnordGreaterThanEqual) ||  // logic, select, comparisons
+         (op >= SpvOpShiftRightLogical && op <= SpvOpNot);         // bit operations
 }
 
 bool isDivisionInstruction(uint32_t op) {
@@ -86,25 +108,42 @@ bool isDivisionInstruction(uint32_t op) {
 // normalize and length take an inverse square root or a square root).
 bool isTranscendentalInstruction(uint32_t ext) {
   switch (ext) {
-    case GLSLstd450Sin: case GLSLstd450Cos: case GLSLstd450Tan: case GLSLstd450Asin: case GLSLstd450Acos:
-    case GLSLstd450Atan: case GLSLstd450Sinh: case GLSLstd450Cosh: case GLSLstd450Tanh: case GLSLstd450Asinh:
-    case GLSLstd450Acosh: case GLSLstd450Atanh: case GLSLstd450Atan2: case GLSLstd450Pow: case GLSLstd450Exp:
-    case GLSLstd450Log: case GLSLstd450Exp2: case GLSLstd450Log2: case GLSLstd450Sqrt: case GLSLstd450InverseSqrt:
-    case GLSLstd450Length: case GLSLstd450Distance: case GLSLstd450Normalize: case GLSLstd450Refract:
-      return true;
-    default:
-      return false;
+    case GLSLstd450Sin:
+    case GLSLstd450Cos:
+    case GLSLstd450Tan:
+    case GLSLstd450Asin:
+    case GLSLstd450Acos:
+    case GLSLstd450Atan:
+    case GLSLstd450Sinh:
+    case GLSLstd450Cosh:
+    case GLSLstd450Tanh:
+    case GLSLstd450Asinh:
+    case GLSLstd450Acosh:
+    case GLSLstd450Atanh:
+    case GLSLstd450Atan2:
+    case GLSLstd450Pow:
+    case GLSLstd450Exp:
+    case GLSLstd450Log:
+    case GLSLstd450Exp2:
+    case GLSLstd450Log2:
+    case GLSLstd450Sqrt:
+    case GLSLstd450InverseSqrt:
+    case GLSLstd450Length:
+    case GLSLstd450Distance:
+    case GLSLstd450Normalize:
+    case GLSLstd450Refract: return true;
+    default: return false;
   }
 }
 
 // The module's types, constants and decorations: what the body instructions refer to.
 struct ModuleFacts {
-  std::unordered_map<uint32_t, uint32_t> components;  // type id -> scalar components
+  std::unordered_map<uint32_t, uint32_t> components;                     // type id -> scalar components
   std::unordered_map<uint32_t, std::pair<uint32_t, uint32_t>> matrices;  // matrix type -> (columns, rows)
-  std::unordered_map<uint32_t, uint32_t> typeOf;      // result id -> type id
-  std::unordered_map<uint32_t, double> constants;     // id -> value (scalars, and splat composites)
-  std::set<uint32_t> constantIds;                     // every constant, splat or not
-  std::unordered_map<uint32_t, uint32_t> pointee;     // pointer type -> pointee type
+  std::unordered_map<uint32_t, uint32_t> typeOf;                         // result id -> type id
+  std::unordered_map<uint32_t, double> constants;                        // id -> value (scalars, and splat composites)
+  std::set<uint32_t> constantIds;                                        // every constant, splat or not
+  std::unordered_map<uint32_t, uint32_t> pointee;                        // pointer type -> pointee type
   std::set<uint32_t> relaxed, builtins;
   std::vector<std::pair<uint32_t, uint32_t>> inputs;  // (variable, pointer type)
   uint32_t glslStd = 0;
@@ -270,29 +309,45 @@ class Counter {
     const uint32_t x = ins.operand(5);
     const double argN = facts_.componentsOfValue(x);
     switch (ins.operand(4)) {
-      case GLSLstd450FAbs: case GLSLstd450SAbs:
-        c_[OpClass::Modifier] += n;
-        break;
-      case GLSLstd450Round: case GLSLstd450RoundEven: case GLSLstd450Trunc: case GLSLstd450Floor:
-      case GLSLstd450Ceil: case GLSLstd450Ldexp: case GLSLstd450Frexp: case GLSLstd450FrexpStruct:
-      case GLSLstd450FindILsb: case GLSLstd450FindSMsb: case GLSLstd450FindUMsb:
-        c_[OpClass::Convert] += n;
-        break;
-      case GLSLstd450Fract: case GLSLstd450Modf: case GLSLstd450ModfStruct:
+      case GLSLstd450FAbs:
+      case GLSLstd450SAbs: c_[OpClass::Modifier] += n; break;
+      case GLSLstd450Round:
+      case GLSLstd450RoundEven:
+      case GLSLstd450Trunc:
+      case GLSLstd450Floor:
+      case GLSLstd450Ceil:
+      case GLSLstd450Ldexp:
+      case GLSLstd450Frexp:
+      case GLSLstd450FrexpStruct:
+      case GLSLstd450FindILsb:
+      case GLSLstd450FindSMsb:
+      case GLSLstd450FindUMsb: c_[OpClass::Convert] += n; break;
+      case GLSLstd450Fract:
+      case GLSLstd450Modf:
+      case GLSLstd450ModfStruct:
         c_[OpClass::Convert] += n;
         fma(result, n);
         break;
-      case GLSLstd450PackSnorm4x8: case GLSLstd450PackUnorm4x8: case GLSLstd450PackSnorm2x16:
-      case GLSLstd450PackUnorm2x16: case GLSLstd450PackHalf2x16: case GLSLstd450PackDouble2x32:
-      case GLSLstd450UnpackSnorm2x16: case GLSLstd450UnpackUnorm2x16: case GLSLstd450UnpackHalf2x16:
-      case GLSLstd450UnpackSnorm4x8: case GLSLstd450UnpackUnorm4x8: case GLSLstd450UnpackDouble2x32:
-        c_[OpClass::Convert] += std::max(n, argN);
-        break;
-      case GLSLstd450FSign: case GLSLstd450SSign: case GLSLstd450FMix: case GLSLstd450IMix:
-      case GLSLstd450UClamp: case GLSLstd450SClamp:
-        fma(result, 2 * n);
-        break;
-      case GLSLstd450FClamp: case GLSLstd450NClamp:
+      case GLSLstd450PackSnorm4x8:
+      case GLSLstd450PackUnorm4x8:
+      case GLSLstd450PackSnorm2x16:
+      case GLSLstd450PackUnorm2x16:
+      case GLSLstd450PackHalf2x16:
+      case GLSLstd450PackDouble2x32:
+      case GLSLstd450UnpackSnorm2x16:
+      case GLSLstd450UnpackUnorm2x16:
+      case GLSLstd450UnpackHalf2x16:
+      case GLSLstd450UnpackSnorm4x8:
+      case GLSLstd450UnpackUnorm4x8:
+      case GLSLstd450UnpackDouble2x32: c_[OpClass::Convert] += std::max(n, argN); break;
+      case GLSLstd450FSign:
+      case GLSLstd450SSign:
+      case GLSLstd450FMix:
+      case GLSLstd450IMix:
+      case GLSLstd450UClamp:
+      case GLSLstd450SClamp: fma(result, 2 * n); break;
+      case GLSLstd450FClamp:
+      case GLSLstd450NClamp:
         // clamp(x, 0, 1) is the saturate output modifier of the op that produced x.
         if (isConstantValue(ins.operand(6), 0.0) && isConstantValue(ins.operand(7), 1.0))
           c_[OpClass::Modifier] += n;
@@ -307,36 +362,26 @@ class Counter {
         else
           c_[OpClass::Division] += n;
         break;
-      case GLSLstd450Exp2: case GLSLstd450Log2: case GLSLstd450InverseSqrt:
-        c_[OpClass::Sfu] += n;
-        break;
-      case GLSLstd450Exp: case GLSLstd450Log:
-        c_[OpClass::ExpLog] += n;
-        break;
-      case GLSLstd450Sqrt:
-        c_[OpClass::Sqrt] += n;
-        break;
-      case GLSLstd450Pow:
-        c_[OpClass::Pow] += n;
-        break;
-      case GLSLstd450Sin: case GLSLstd450Cos:
-        c_[OpClass::SinCos] += n;
-        break;
-      case GLSLstd450Tan:
-        c_[OpClass::Tan] += n;
-        break;
-      case GLSLstd450Asin: case GLSLstd450Acos: case GLSLstd450Atan:
-        c_[OpClass::InverseTrig] += n;
-        break;
-      case GLSLstd450Atan2:
-        c_[OpClass::Atan2] += n;
-        break;
-      case GLSLstd450Sinh: case GLSLstd450Cosh: case GLSLstd450Tanh:
-        c_[OpClass::Hyperbolic] += n;
-        break;
-      case GLSLstd450Asinh: case GLSLstd450Acosh: case GLSLstd450Atanh:
-        c_[OpClass::InverseHyperbolic] += n;
-        break;
+      case GLSLstd450Exp2:
+      case GLSLstd450Log2:
+      case GLSLstd450InverseSqrt: c_[OpClass::Sfu] += n; break;
+      case GLSLstd450Exp:
+      case GLSLstd450Log: c_[OpClass::ExpLog] += n; break;
+      case GLSLstd450Sqrt: c_[OpClass::Sqrt] += n; break;
+      case GLSLstd450Pow: c_[OpClass::Pow] += n; break;
+      case GLSLstd450Sin:
+      case GLSLstd450Cos: c_[OpClass::SinCos] += n; break;
+      case GLSLstd450Tan: c_[OpClass::Tan] += n; break;
+      case GLSLstd450Asin:
+      case GLSLstd450Acos:
+      case GLSLstd450Atan: c_[OpClass::InverseTrig] += n; break;
+      case GLSLstd450Atan2: c_[OpClass::Atan2] += n; break;
+      case GLSLstd450Sinh:
+      case GLSLstd450Cosh:
+      case GLSLstd450Tanh: c_[OpClass::Hyperbolic] += n; break;
+      case GLSLstd450Asinh:
+      case GLSLstd450Acosh:
+      case GLSLstd450Atanh: c_[OpClass::InverseHyperbolic] += n; break;
       case GLSLstd450Length:
         // dot(x, x) and sqrt; of a scalar, abs.
         if (argN <= 1) {
@@ -371,16 +416,15 @@ class Counter {
         fma(result, 3 * argN + 4);
         c_[OpClass::Sqrt] += 1;
         break;
-      case GLSLstd450Determinant:
-        fma(result, argN >= 16 ? 40 : argN >= 9 ? 12 : 3);
-        break;
+      case GLSLstd450Determinant: fma(result, argN >= 16 ? 40 : argN >= 9 ? 12 : 3); break;
       case GLSLstd450MatrixInverse:
         fma(result, argN >= 16 ? 100 : argN >= 9 ? 30 : 6);
         c_[OpClass::Division] += 1;
         break;
-      case GLSLstd450InterpolateAtCentroid: case GLSLstd450InterpolateAtSample: case GLSLstd450InterpolateAtOffset:
-        break;  // a varying read, counted with the inputs
-      default:  // min, max, fma, step and the rest: one FMA-pipe op per component
+      case GLSLstd450InterpolateAtCentroid:
+      case GLSLstd450InterpolateAtSample:
+      case GLSLstd450InterpolateAtOffset: break;  // a varying read, counted with the inputs
+      default:                                    // min, max, fma, step and the rest: one FMA-pipe op per component
         fma(result, n);
         break;
     }
@@ -393,9 +437,10 @@ class Counter {
 }  // namespace
 
 const char* toString(OpClass c) {
-  static const char* const names[] = {"fma", "convert", "modifier", "fused_add", "sfu", "exp_log", "sqrt", "pow",
-                                      "sin_cos", "tan", "inverse_trig", "atan2", "hyperbolic", "inverse_hyperbolic",
-                                      "division", "integer_division", "derivative", "texture_sample"};
+  static const char* const names[] = {
+      "fma",      "convert",          "modifier",   "fused_add",     "sfu",   "exp_log",    "sqrt",
+      "pow",      "sin_cos",          "tan",        "inverse_trig",  "atan2", "hyperbolic", "inverse_hyperbolic",
+      "division", "integer_division", "derivative", "texture_sample"};
   static_assert(sizeof(names) / sizeof(names[0]) == kOpClassCount);
   return size_t(c) < kOpClassCount ? names[size_t(c)] : "?";
 }
@@ -421,67 +466,74 @@ bool countOpClasses(const std::vector<uint32_t>& words, OpClassCounts* counts, s
   std::vector<BodyInstruction> body;
   bool inFunction = false;
   *counts = {};
-  bool walked = forEachSpirvInstruction(words, [&](const SpirvInstruction& ins) {
-    const uint32_t op = ins.opcode;
-    auto w = [&](uint32_t i) { return ins.operand(i); };
-    switch (op) {
-      case SpvOpExtInstImport:
-        if (ins.literalString(2) == "GLSL.std.450") facts.glslStd = w(1);
-        break;
-      case SpvOpEntryPoint:
-        if (w(1) == SpvExecutionModelFragment) facts.fragment = true;
-        break;
-      case SpvOpTypeBool: case SpvOpTypeInt: case SpvOpTypeFloat: facts.components[w(1)] = 1; break;
-      case SpvOpTypeVector: facts.components[w(1)] = facts.componentsOf(w(2)) * std::min<uint32_t>(w(3), 16); break;
-      case SpvOpTypeMatrix: {
-        uint32_t rows = facts.componentsOf(w(2)), cols = std::min<uint32_t>(w(3), 16);
-        facts.components[w(1)] = rows * cols;
-        facts.matrices[w(1)] = {cols, rows};
-        break;
-      }
-      case SpvOpTypePointer: facts.pointee[w(1)] = w(3); break;
-      case SpvOpDecorate:
-        if (w(2) == SpvDecorationRelaxedPrecision) facts.relaxed.insert(w(1));
-        if (w(2) == SpvDecorationBuiltIn) facts.builtins.insert(w(1));
-        break;
-      case SpvOpMemberDecorate:
-        if (w(3) == SpvDecorationBuiltIn) facts.builtins.insert(w(1));  // gl_PerVertex-style blocks
-        break;
-      case SpvOpConstant:
-        facts.constantIds.insert(w(2));
-        // A 32-bit value read as a float: only float operands are ever compared with 0.0 and 1.0.
-        if (ins.count == 4) facts.constants[w(2)] = wordAsFloat(w(3));
-        break;
-      case SpvOpConstantNull:
-        facts.constantIds.insert(w(2));
-        facts.constants[w(2)] = 0.0;
-        break;
-      case SpvOpConstantTrue: case SpvOpConstantFalse: case SpvOpSpecConstant: case SpvOpSpecConstantTrue:
-      case SpvOpSpecConstantFalse:
-        facts.constantIds.insert(w(2));
-        break;
-      case SpvOpConstantComposite: {
-        facts.constantIds.insert(w(2));
-        std::optional<double> splat;
-        bool same = ins.count > 3;
-        for (uint32_t i = 3; i < ins.count && same; ++i) {
-          auto v = facts.constant(w(i));
-          if (!v || (splat && *splat != *v)) same = false;
-          splat = v;
+  bool walked = forEachSpirvInstruction(
+      words,
+      [&](const SpirvInstruction& ins) {
+        const uint32_t op = ins.opcode;
+        auto w = [&](uint32_t i) { return ins.operand(i); };
+        switch (op) {
+          case SpvOpExtInstImport:
+            if (ins.literalString(2) == "GLSL.std.450") facts.glslStd = w(1);
+            break;
+          case SpvOpEntryPoint:
+            if (w(1) == SpvExecutionModelFragment) facts.fragment = true;
+            break;
+          case SpvOpTypeBool:
+          case SpvOpTypeInt:
+          case SpvOpTypeFloat: facts.components[w(1)] = 1; break;
+          case SpvOpTypeVector: facts.components[w(1)] = facts.componentsOf(w(2)) * std::min<uint32_t>(w(3), 16); break;
+          case SpvOpTypeMatrix: {
+            uint32_t rows = facts.componentsOf(w(2)), cols = std::min<uint32_t>(w(3), 16);
+            facts.components[w(1)] = rows * cols;
+            facts.matrices[w(1)] = {cols, rows};
+            break;
+          }
+          case SpvOpTypePointer: facts.pointee[w(1)] = w(3); break;
+          case SpvOpDecorate:
+            if (w(2) == SpvDecorationRelaxedPrecision) facts.relaxed.insert(w(1));
+            if (w(2) == SpvDecorationBuiltIn) facts.builtins.insert(w(1));
+            break;
+          case SpvOpMemberDecorate:
+            if (w(3) == SpvDecorationBuiltIn) facts.builtins.insert(w(1));  // gl_PerVertex-style blocks
+            break;
+          case SpvOpConstant:
+            facts.constantIds.insert(w(2));
+            // A 32-bit value read as a float: only float operands are ever compared with 0.0 and 1.0.
+            if (ins.count == 4) facts.constants[w(2)] = wordAsFloat(w(3));
+            break;
+          case SpvOpConstantNull:
+            facts.constantIds.insert(w(2));
+            facts.constants[w(2)] = 0.0;
+            break;
+          case SpvOpConstantTrue:
+          case SpvOpConstantFalse:
+          case SpvOpSpecConstant:
+          case SpvOpSpecConstantTrue:
+          case SpvOpSpecConstantFalse: facts.constantIds.insert(w(2)); break;
+          case SpvOpConstantComposite: {
+            facts.constantIds.insert(w(2));
+            std::optional<double> splat;
+            bool same = ins.count > 3;
+            for (uint32_t i = 3; i < ins.count && same; ++i) {
+              auto v = facts.constant(w(i));
+              if (!v || (splat && *splat != *v)) same = false;
+              splat = v;
+            }
+            if (same && splat) facts.constants[w(2)] = *splat;
+            break;
+          }
+          case SpvOpVariable:
+            if (!inFunction && w(3) == SpvStorageClassInput) facts.inputs.emplace_back(w(2), w(1));
+            break;
+          case SpvOpFunction: inFunction = true; break;
+          case SpvOpFunctionEnd: inFunction = false; break;
+          default: break;
         }
-        if (same && splat) facts.constants[w(2)] = *splat;
-        break;
-      }
-      case SpvOpVariable:
-        if (!inFunction && w(3) == SpvStorageClassInput) facts.inputs.emplace_back(w(2), w(1));
-        break;
-      case SpvOpFunction: inFunction = true; break;
-      case SpvOpFunctionEnd: inFunction = false; break;
-      default: break;
-    }
-    if (ins.count >= 3 && hasResult(op)) facts.typeOf[w(2)] = w(1);
-    if (inFunction && op != SpvOpFunction) body.push_back({op, std::vector<uint32_t>(ins.words, ins.words + ins.count)});
-  }, error);
+        if (ins.count >= 3 && hasResult(op)) facts.typeOf[w(2)] = w(1);
+        if (inFunction && op != SpvOpFunction)
+          body.push_back({op, std::vector<uint32_t>(ins.words, ins.words + ins.count)});
+      },
+      error);
   if (!walked) return false;
   Counter counter(facts, counts);
   counter.count(body);
@@ -554,10 +606,19 @@ const GpuCalibration* findGpuCalibration(const std::string& gpu) {
 
 double calibratedEstimate(const OpClassCounts& f, const GpuCalibration& c) {
   // The features of tools/mesa_stats/fit.py (FEATURES), in CalibratedClass order.
-  const std::array<double, kCalibratedClassCount> features = {
-      f.fmaRelaxed, f[OpClass::Fma] - f.fmaRelaxed, f[OpClass::Convert], f[OpClass::Sfu], f[OpClass::ExpLog],
-      f[OpClass::Sqrt], f[OpClass::Pow], f[OpClass::SinCos], f[OpClass::Tan], f[OpClass::InverseTrig],
-      f[OpClass::Atan2], f[OpClass::Division], f[OpClass::TextureSample]};
+  const std::array<double, kCalibratedClassCount> features = {f.fmaRelaxed,
+                                                              f[OpClass::Fma] - f.fmaRelaxed,
+                                                              f[OpClass::Convert],
+                                                              f[OpClass::Sfu],
+                                                              f[OpClass::ExpLog],
+                                                              f[OpClass::Sqrt],
+                                                              f[OpClass::Pow],
+                                                              f[OpClass::SinCos],
+                                                              f[OpClass::Tan],
+                                                              f[OpClass::InverseTrig],
+                                                              f[OpClass::Atan2],
+                                                              f[OpClass::Division],
+                                                              f[OpClass::TextureSample]};
   double sum = 0;
   for (size_t k = 0; k < kCalibratedClassCount; ++k) sum += c.weights[k] * features[k];
   return sum;

@@ -16,7 +16,8 @@ bool spirvToMsl(const std::vector<uint32_t>& words, std::span<const package::Msl
   // Subpass inputs (the merged post pass) become [[color(n)]] framebuffer-fetch inputs, what
   // Apple's tile-based GPUs read without leaving tile memory. No effect on other shaders.
   spvc_compiler_options_set_bool(options, SPVC_COMPILER_OPTION_MSL_FRAMEBUFFER_FETCH_SUBPASS, SPVC_TRUE);
-  if (spvc_compiler_install_compiler_options(compiler, options) != SPVC_SUCCESS) return session.fail("install options", error);
+  if (spvc_compiler_install_compiler_options(compiler, options) != SPVC_SUCCESS)
+    return session.fail("install options", error);
   // Fixed slots, so a Metal app binds every variant the same way (SPIRV-Cross would otherwise
   // number each shader's resources in order of use: facet_environment was texture(0) in one
   // variant and texture(2) in another).

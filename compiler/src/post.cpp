@@ -3,12 +3,12 @@
 #include <cstdio>
 #include <span>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/assemble.h"
 #include "facet/compiler/glsl_library.h"
 #include "facet/compiler/glslang_backend.h"
 #include "facet/compiler/msl_backend.h"
 #include "facet/compiler/spirv_tools_backend.h"
-#include "facet/abi/shader_abi.h"
 
 namespace facet::compiler {
 namespace {
@@ -21,17 +21,19 @@ std::string postInterface(Flavour flavour, PostRead read) {
   const std::string hdr(abi::kPostHdrName);
   const std::string setBinding =
       "set = " + std::to_string(abi::kPostHdrSet) + ", binding = " + std::to_string(abi::kPostHdrBinding);
-  auto ldr = [](uint32_t location) { return "layout(location = " + std::to_string(location) + ") out vec4 fragColor;\n"; };
+  auto ldr = [](uint32_t location) {
+    return "layout(location = " + std::to_string(location) + ") out vec4 fragColor;\n";
+  };
   switch (read) {
     case PostRead::SubpassInput:
-      return "layout(input_attachment_index = " + std::to_string(abi::kPostHdrInputAttachmentIndex) + ", " + setBinding +
-             ") uniform mediump subpassInput " + hdr + ";\n" + ldr(abi::kPostMergedLdrLocation);
+      return "layout(input_attachment_index = " + std::to_string(abi::kPostHdrInputAttachmentIndex) + ", " +
+             setBinding + ") uniform mediump subpassInput " + hdr + ";\n" + ldr(abi::kPostMergedLdrLocation);
     case PostRead::FramebufferFetch:
       return "layout(location = " + std::to_string(abi::kPostHdrColorLocation) + ") inout mediump vec4 " + hdr + ";\n" +
              ldr(abi::kPostMergedLdrLocation);
     case PostRead::Sampled:
-      return (flavour == Flavour::Vulkan ? "layout(" + setBinding + ") " : std::string()) + "uniform mediump sampler2D " +
-             hdr + ";\n" + ldr(abi::kPostSeparateLdrLocation);
+      return (flavour == Flavour::Vulkan ? "layout(" + setBinding + ") " : std::string()) +
+             "uniform mediump sampler2D " + hdr + ";\n" + ldr(abi::kPostSeparateLdrLocation);
   }
   return "";
 }
@@ -133,12 +135,14 @@ bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, P
     *error = "post " + what + ": glslang failed:\n" + log;
     return false;
   }
-  if (!finishStage(&spirv.fragment, what, error) || !toMsl(spirv.fragment, postMslBindings(effects), what, &fragment->msl, error))
+  if (!finishStage(&spirv.fragment, what, error) ||
+      !toMsl(spirv.fragment, postMslBindings(effects), what, &fragment->msl, error))
     return false;
   fragment->spirv = std::move(spirv.fragment);
   fragment->glslEs = std::move(es.fragment);
   if (vertex) {
-    if (!finishStage(&spirv.vertex, "vertex stage", error) || !toMsl(spirv.vertex, {}, "vertex stage", &vertex->msl, error)) {
+    if (!finishStage(&spirv.vertex, "vertex stage", error) ||
+        !toMsl(spirv.vertex, {}, "vertex stage", &vertex->msl, error)) {
       return false;
     }
     vertex->spirv = std::move(spirv.vertex);
@@ -190,15 +194,18 @@ std::string postVariantKey(const PostEffects& effects) {
 
 std::vector<package::MslBinding> postMslBindings(const PostEffects& effects) {
   // The sampled form's HDR texture; the fetch form reads [[color(0)]] instead and ignores it.
-  std::vector<package::MslBinding> slots{{std::string(abi::kPostHdrName), package::MslResource::Texture, abi::kPostHdrSet,
-                                          abi::kPostHdrBinding, abi::mslTextureIndex(abi::kPostHdrBinding)}};
+  std::vector<package::MslBinding> slots{{std::string(abi::kPostHdrName), package::MslResource::Texture,
+                                          abi::kPostHdrSet, abi::kPostHdrBinding,
+                                          abi::mslTextureIndex(abi::kPostHdrBinding)}};
   if (effects.colorGrading) {
     const abi::SamplerDesc& lut = abi::kPostColorLutSampler;
-    slots.push_back({std::string(lut.name), package::MslResource::Texture, lut.set, lut.binding, abi::mslTextureIndex(lut.binding)});
+    slots.push_back({std::string(lut.name), package::MslResource::Texture, lut.set, lut.binding,
+                     abi::mslTextureIndex(lut.binding)});
   }
   if (effects.vignette) {
     const abi::BlockDesc& block = abi::kPostBlock;
-    slots.push_back({std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)});
+    slots.push_back(
+        {std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)});
   }
   return slots;
 }
@@ -240,24 +247,26 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants) {
     appendText(&cpp, ("kFetchEs" + n).c_str(), shaders.fetchFragment.glslEs);
   }
   cpp +=
-      "template <size_t N>\nstd::vector<uint32_t> words(const uint32_t (&w)[N]) { return {std::begin(w), std::end(w)}; }\n"
+      "template <size_t N>\nstd::vector<uint32_t> words(const uint32_t (&w)[N]) { return {std::begin(w), std::end(w)}; "
+      "}\n"
       "}  // namespace\n\n"
       "namespace facet::runtime {\n"
       "const std::vector<PostShaders>& postVariants() {\n";
   for (size_t i = 0; i < variants.size(); ++i) {
     const std::string n = std::to_string(i);
-    cpp += "  static const std::vector<uint32_t> vs" + n + " = words(kVertexSpirv" + n + "), fs" + n + " = words(kSampledSpirv" +
-           n + "), fsFetch" + n + " = words(kFetchSpirv" + n + ");\n";
-    cpp += "  static const std::string vsText" + n + "(kVertexEs" + n + "), fsText" + n + "(kSampledEs" + n + "), fsFetchText" +
-           n + "(kFetchEs" + n + ");\n";
+    cpp += "  static const std::vector<uint32_t> vs" + n + " = words(kVertexSpirv" + n + "), fs" + n +
+           " = words(kSampledSpirv" + n + "), fsFetch" + n + " = words(kFetchSpirv" + n + ");\n";
+    cpp += "  static const std::string vsText" + n + "(kVertexEs" + n + "), fsText" + n + "(kSampledEs" + n +
+           "), fsFetchText" + n + "(kFetchEs" + n + ");\n";
   }
   cpp += "  static const std::vector<PostShaders> variants{\n";
   for (size_t i = 0; i < variants.size(); ++i) {
     const std::string n = std::to_string(i);
     const PostEffects& e = variants[i].effects;
     auto flag = [](bool on) { return on ? ", true" : ", false"; };
-    cpp += std::string("      {{\"") + toString(e.toneCurve) + "\"" + flag(e.dither) + flag(e.colorGrading) + flag(e.vignette) +
-           "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" + n + ", fsFetchText" + n + "},\n";
+    cpp += std::string("      {{\"") + toString(e.toneCurve) + "\"" + flag(e.dither) + flag(e.colorGrading) +
+           flag(e.vignette) + "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" + n +
+           ", fsFetchText" + n + "},\n";
   }
   cpp +=
       "  };\n"

@@ -28,8 +28,10 @@ class SpirvCrossSession {
       return false;
     }
     spvc_parsed_ir ir = nullptr;
-    if (spvc_context_parse_spirv(context_, words.data(), words.size(), &ir) != SPVC_SUCCESS) return fail("parse", error);
-    if (spvc_context_create_compiler(context_, backend, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler_) != SPVC_SUCCESS)
+    if (spvc_context_parse_spirv(context_, words.data(), words.size(), &ir) != SPVC_SUCCESS)
+      return fail("parse", error);
+    if (spvc_context_create_compiler(context_, backend, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler_) !=
+        SPVC_SUCCESS)
       return fail("create compiler", error);
     return true;
   }

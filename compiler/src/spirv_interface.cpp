@@ -36,15 +36,20 @@ bool analyseStageInterface(const std::vector<uint32_t>& words, StageInterface* o
     for (size_t i = 0; i < count; ++i) visit(list[i]);
     return true;
   };
-  bool ok = each(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, [&](const spvc_reflected_resource& r) { out->samplers += slots(compiler, r.type_id); }) &&
-            each(SPVC_RESOURCE_TYPE_STAGE_INPUT, [&](const spvc_reflected_resource& r) {
-              out->inputVectors += slots(compiler, r.type_id);
-              if (spvc_compiler_has_decoration(compiler, r.id, SpvDecorationRelaxedPrecision)) out->relaxedInputs.push_back(r.name);
-            }) &&
-            each(SPVC_RESOURCE_TYPE_STAGE_OUTPUT, [&](const spvc_reflected_resource& r) { out->outputVectors += slots(compiler, r.type_id); }) &&
+  bool ok = each(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE,
+                 [&](const spvc_reflected_resource& r) { out->samplers += slots(compiler, r.type_id); }) &&
+            each(SPVC_RESOURCE_TYPE_STAGE_INPUT,
+                 [&](const spvc_reflected_resource& r) {
+                   out->inputVectors += slots(compiler, r.type_id);
+                   if (spvc_compiler_has_decoration(compiler, r.id, SpvDecorationRelaxedPrecision))
+                     out->relaxedInputs.push_back(r.name);
+                 }) &&
+            each(SPVC_RESOURCE_TYPE_STAGE_OUTPUT,
+                 [&](const spvc_reflected_resource& r) { out->outputVectors += slots(compiler, r.type_id); }) &&
             each(SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, [&](const spvc_reflected_resource& r) {
               size_t bytes = 0;
-              spvc_compiler_get_declared_struct_size(compiler, spvc_compiler_get_type_handle(compiler, r.base_type_id), &bytes);
+              spvc_compiler_get_declared_struct_size(compiler, spvc_compiler_get_type_handle(compiler, r.base_type_id),
+                                                     &bytes);
               out->uniformVectors += uint32_t((bytes + 15) / 16);
             });
   if (!ok) return session.fail("resource list", error);

@@ -69,9 +69,9 @@ const std::string& compilerBuildIdentity() {
     unsigned major = 0, minor = 0, patch = 0;
     spvc_get_version(&major, &minor, &patch);
     return std::string("code ") + kCompilerCodeId + "; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
-           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR +
-           "; " + spvSoftwareVersionDetailsString() + "; SPIRV-Cross C API " + std::to_string(major) + "." +
-           std::to_string(minor) + "." + std::to_string(patch);
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
+           GLSLANG_VERSION_FLAVOR + "; " + spvSoftwareVersionDetailsString() + "; SPIRV-Cross C API " +
+           std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(patch);
   }();
   return identity;
 }
@@ -80,7 +80,8 @@ std::string variantCacheKey(const std::string& compilerVersion, const StageSourc
                             bool fp16Emulation, bool fp16TrueHalf) {
   // Length-prefixed fields, so no two different inputs concatenate to the same bytes.
   std::string input;
-  for (const std::string* field : {&compilerVersion, &compilerBuildIdentity(), &es.vertex, &es.fragment, &vulkan.vertex, &vulkan.fragment}) {
+  for (const std::string* field :
+       {&compilerVersion, &compilerBuildIdentity(), &es.vertex, &es.fragment, &vulkan.vertex, &vulkan.fragment}) {
     appendLE(input, field->size(), 8);
     input += *field;
   }
@@ -123,7 +124,8 @@ bool isTemporaryName(const std::string& folder, const std::string& name) {
   if (name.size() <= suffix || name.size() > suffix + 64 || !isEntryName(folder, name.substr(0, 32)) ||
       name.compare(32, 5, ".tmp.") != 0)
     return false;
-  return std::all_of(name.begin() + long(suffix), name.end(), [](char c) { return std::isalnum(uint8_t(c)) || c == '.'; });
+  return std::all_of(name.begin() + long(suffix), name.end(),
+                     [](char c) { return std::isalnum(uint8_t(c)) || c == '.'; });
 }
 
 // A folder of cache entries only: how a cache written before the marker existed is recognised.
@@ -136,7 +138,8 @@ bool holdsEntriesOnly(const fs::path& folder, std::string* stranger) {
   }
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string file = it->path().filename().string();
-    if (!fs::is_regular_file(fs::symlink_status(it->path(), ec)) || !(isEntryName(name, file) || isTemporaryName(name, file))) {
+    if (!fs::is_regular_file(fs::symlink_status(it->path(), ec)) ||
+        !(isEntryName(name, file) || isTemporaryName(name, file))) {
       *stranger = name + "/" + file;
       return false;
     }
@@ -212,7 +215,8 @@ bool prepareVariantCache(const std::string& dir, std::string* error) {
     return false;
   }
   std::string message;
-  if (!package::writeFile(marker, std::vector<uint8_t>(kMarkerText, kMarkerText + std::strlen(kMarkerText)), &message)) {
+  if (!package::writeFile(marker, std::vector<uint8_t>(kMarkerText, kMarkerText + std::strlen(kMarkerText)),
+                          &message)) {
     *error = "cannot make '" + dir + "' a variant cache: " + message;
     return false;
   }

@@ -37,7 +37,7 @@ std::string variantCacheKey(const std::string& compilerVersion, const StageSourc
 // processes never see half an entry; an entry that does not check (truncated, damaged, larger
 // than kMaxEntryBytes, not a regular file) is a miss. Safe to use from several threads.
 class VariantCache {
-public:
+ public:
   explicit VariantCache(std::string dir) : dir_(std::move(dir)) {}
   std::optional<CompiledShaders> load(const std::string& key) const;
   // Best effort: a cache that cannot be written only costs the next build time.
@@ -49,7 +49,7 @@ public:
   // once: a removed entry is only a miss for whoever wanted it. Returns the bytes removed.
   uint64_t trim(uint64_t maxBytes) const;
 
-private:
+ private:
   std::string path(const std::string& key) const;
   std::string dir_;
 };

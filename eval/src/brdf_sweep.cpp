@@ -65,13 +65,15 @@ std::vector<Sample> samples(const BrdfSweepDomain& d, std::vector<double>* rough
   std::vector<Sample> out;
   roughness->clear();
   for (int k = 0; k < d.roughnesses; ++k) {
-    double r = d.roughnesses == 1 ? 1.0 : kMinPerceptualRoughness + (1.0 - kMinPerceptualRoughness) * k / (d.roughnesses - 1);
+    double r =
+        d.roughnesses == 1 ? 1.0 : kMinPerceptualRoughness + (1.0 - kMinPerceptualRoughness) * k / (d.roughnesses - 1);
     roughness->push_back(r);
     for (double f0 : d.f0)
       for (double phi : d.azimuths)
         for (int i = 0; i < d.cosines; ++i)
           for (int j = 0; j < d.cosines; ++j)
-            out.push_back({float((i + 0.5) / d.cosines), float((j + 0.5) / d.cosines), float(phi), float(r), float(f0), k});
+            out.push_back(
+                {float((i + 0.5) / d.cosines), float((j + 0.5) / d.cosines), float(phi), float(r), float(f0), k});
   }
   return out;
 }

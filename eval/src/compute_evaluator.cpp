@@ -157,11 +157,13 @@ class ComputeRun {
     std::vector<VkDescriptorSetLayoutBinding> bindings = {
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
-    if (lut_) bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    if (lut_)
+      bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     VkDescriptorSetLayoutCreateInfo dslci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     dslci.bindingCount = uint32_t(bindings.size());
     dslci.pBindings = bindings.data();
-    if (!check(vkCreateDescriptorSetLayout(device_, &dslci, nullptr, &setLayout_), "vkCreateDescriptorSetLayout", error))
+    if (!check(vkCreateDescriptorSetLayout(device_, &dslci, nullptr, &setLayout_), "vkCreateDescriptorSetLayout",
+               error))
       return false;
     destroyLater([d = device_, l = setLayout_] { vkDestroyDescriptorSetLayout(d, l, nullptr); });
     VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -177,10 +179,16 @@ class ComputeRun {
     if (!check(vkCreateShaderModule(device_, &smci, nullptr, &module), "vkCreateShaderModule", error)) return false;
     destroyLater([d = device_, module] { vkDestroyShaderModule(d, module, nullptr); });
     VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
+    cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                  nullptr,
+                  0,
+                  VK_SHADER_STAGE_COMPUTE_BIT,
+                  module,
+                  "main",
+                  nullptr};
     cpci.layout = pipelineLayout_;
-    if (!check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_), "vkCreateComputePipelines",
-               error))
+    if (!check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_),
+               "vkCreateComputePipelines", error))
       return false;
     destroyLater([d = device_, p = pipeline_] { vkDestroyPipeline(d, p, nullptr); });
     return true;
@@ -188,7 +196,8 @@ class ComputeRun {
 
   // The descriptor set: the buffers, and the LUT's image and sampler.
   bool bindResources(std::string* error) {
-    VkDescriptorPoolSize poolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+    VkDescriptorPoolSize poolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     dpci.maxSets = 1;
     dpci.poolSizeCount = 2;
@@ -244,7 +253,8 @@ class ComputeRun {
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
+                         nullptr, 0, nullptr);
     vkEndCommandBuffer(cmd);
 
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -284,8 +294,8 @@ class ComputeRun {
     vkGetBufferMemoryRequirements(device_, *buffer, &req);
     VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     mai.allocationSize = req.size;
-    mai.memoryTypeIndex =
-        ctx_.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    mai.memoryTypeIndex = ctx_.findMemoryType(
+        req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     if (mai.memoryTypeIndex == UINT32_MAX) return fail("no host-visible coherent memory", error);
     VkDeviceMemory memory;
     if (!check(vkAllocateMemory(device_, &mai, nullptr, &memory), "vkAllocateMemory", error)) return false;
@@ -304,7 +314,8 @@ class ComputeRun {
     toTransfer.srcQueueFamilyIndex = toTransfer.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     toTransfer.image = image_;
     toTransfer.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &toTransfer);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &toTransfer);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {lut_->width, lut_->height, 1};
@@ -314,7 +325,8 @@ class ComputeRun {
     toRead.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
     toRead.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     toRead.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 1, &toRead);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &toRead);
   }
 
   const runtime::vulkan::Context& ctx_;
@@ -388,7 +400,8 @@ std::string GpuEvaluator::shaderSource(const GpuEvalRequest& request) {
     << "    " << (request.highpInputs ? "highp " : "") << "vec4 in0 = inputs[2u * index];\n"
     << "    " << (request.highpInputs ? "highp " : "") << "vec4 in1 = inputs[2u * index + 1u];\n"
     << "    vec4 result = vec4(0.0);\n"
-    << "    {\n" << request.body << "\n    }\n"
+    << "    {\n"
+    << request.body << "\n    }\n"
     << "    outputs[index] = result;\n"
     << "}\n";
   return s.str();
@@ -404,11 +417,13 @@ GpuEvalResult GpuEvaluator::run(const GpuEvalRequest& request) {
   std::vector<std::string>& validationErrors = impl_->ctx.messages.errors;
   validationErrors.clear();
   const size_t n = request.in0.size();
-  const size_t groups = std::max<size_t>((n + kLocalSize - 1) / kLocalSize, 1);  // every invocation reads and writes in bounds
+  const size_t groups =
+      std::max<size_t>((n + kLocalSize - 1) / kLocalSize, 1);  // every invocation reads and writes in bounds
   ComputeRun call(impl_->ctx, impl_->commandPool);
   if (!call.uploadInputs(request, groups * kLocalSize, &out.error) ||
-      (request.lut != nullptr && !call.createLut(*request.lut, &out.error)) || !call.createPipeline(spirv, &out.error) ||
-      !call.bindResources(&out.error) || !call.dispatch(uint32_t(groups), impl_->ctx.queue, &out.error))
+      (request.lut != nullptr && !call.createLut(*request.lut, &out.error)) ||
+      !call.createPipeline(spirv, &out.error) || !call.bindResources(&out.error) ||
+      !call.dispatch(uint32_t(groups), impl_->ctx.queue, &out.error))
     return out;
   out.values = call.outputs(n);
   if (!validationErrors.empty()) {

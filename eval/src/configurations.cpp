@@ -22,26 +22,40 @@ const char* const kAmbient[] = {"split_sum", "analytic", "two_mip"};
 
 const std::vector<Axis>& axes() {
   static const std::vector<Axis> list = {
-      {"specular", {std::begin(permutations::kSpecularModelNames), std::end(permutations::kSpecularModelNames)},
+      {"specular",
+       {std::begin(permutations::kSpecularModelNames), std::end(permutations::kSpecularModelNames)},
        [](const TierConfig& c) { return std::string(permutations::kSpecularModelNames[int(c.specular)]); },
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "specular", o); }},
-      {"diffuse", {"pixel", "vertex"},
+      {"diffuse",
+       {"pixel", "vertex"},
        [](const TierConfig& c) { return std::string(c.diffuse == DiffuseModel::Pixel ? "pixel" : "vertex"); },
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "diffuse", o); }},
-      {"ambient", {"split_sum", "analytic", "two_mip"},
+      {"ambient",
+       {"split_sum", "analytic", "two_mip"},
        [](const TierConfig& c) { return std::string(kAmbient[int(c.ambient)]); },
        [](TierConfig* c, const std::string& o) {
-         c->ambient = o == "split_sum" ? AmbientModel::SplitSum : o == "analytic" ? AmbientModel::Analytic : AmbientModel::TwoMip;
+         c->ambient = o == "split_sum"  ? AmbientModel::SplitSum
+                      : o == "analytic" ? AmbientModel::Analytic
+                                        : AmbientModel::TwoMip;
        }},
-      {"sh_bands", {"2", "3"}, [](const TierConfig& c) { return std::to_string(c.shBands); },
+      {"sh_bands",
+       {"2", "3"},
+       [](const TierConfig& c) { return std::to_string(c.shBands); },
        [](TierConfig* c, const std::string& o) { c->shBands = o == "2" ? 2 : 3; }},
-      {"color_space", {"linear", "gamma_hack"},
+      {"color_space",
+       {"linear", "gamma_hack"},
        [](const TierConfig& c) { return std::string(c.colorSpace == ColorSpace::Linear ? "linear" : "gamma_hack"); },
-       [](TierConfig* c, const std::string& o) { c->colorSpace = o == "linear" ? ColorSpace::Linear : ColorSpace::GammaHack; }},
-      {"precision", {"highp", "mediump"},
+       [](TierConfig* c, const std::string& o) {
+         c->colorSpace = o == "linear" ? ColorSpace::Linear : ColorSpace::GammaHack;
+       }},
+      {"precision",
+       {"highp", "mediump"},
        [](const TierConfig& c) { return std::string(c.precision == PrecisionPolicy::Highp ? "highp" : "mediump"); },
-       [](TierConfig* c, const std::string& o) { c->precision = o == "highp" ? PrecisionPolicy::Highp : PrecisionPolicy::Mediump; }},
-      {"energy_compensation", {"off", "on"},
+       [](TierConfig* c, const std::string& o) {
+         c->precision = o == "highp" ? PrecisionPolicy::Highp : PrecisionPolicy::Mediump;
+       }},
+      {"energy_compensation",
+       {"off", "on"},
        [](const TierConfig& c) { return std::string(c.energyCompensation ? "on" : "off"); },
        [](TierConfig* c, const std::string& o) { c->energyCompensation = o == "on"; },
        [](const TierConfig& c) { return c.ambient == AmbientModel::SplitSum; }},
@@ -88,9 +102,12 @@ std::vector<Configuration> configurations(const ir::Material& material, const st
 std::string fileStem(const std::string& name) {
   std::string s = name;
   for (char& ch : s) {
-    if (ch == ':') ch = '.';
-    else if (ch == '=') ch = '-';
-    else if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.' && ch != '-') ch = '_';
+    if (ch == ':')
+      ch = '.';
+    else if (ch == '=')
+      ch = '-';
+    else if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.' && ch != '-')
+      ch = '_';
   }
   return s;
 }

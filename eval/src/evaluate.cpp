@@ -13,8 +13,8 @@
 #include "facet/eval/prepared_frame.h"
 #include "facet/gpu_stats/package_pairs.h"
 #include "facet/package/package.h"
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/png.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::eval {
 namespace {
@@ -78,7 +78,10 @@ class Evaluation {
  public:
   Evaluation(const ir::Material& material, const EvalOptions& options, std::vector<View> views,
              std::unique_ptr<runtime::RenderBackend> backend, fs::path workDir)
-      : material_(material), options_(options), views_(std::move(views)), backend_(std::move(backend)),
+      : material_(material),
+        options_(options),
+        views_(std::move(views)),
+        backend_(std::move(backend)),
         workDir_(std::move(workDir)) {}
 
   // Builds, costs, renders and compares one configuration; the first must be the reference.
@@ -117,7 +120,8 @@ class Evaluation {
       ViewResult view;
       view.name = views_[vi].name;
       view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
-      if (!runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message)) return fail(c, message, error);
+      if (!runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
+        return fail(c, message, error);
       if (isReference) {
         backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
         referenceImages_.push_back(std::move(image));
@@ -158,7 +162,8 @@ class Evaluation {
     std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
     if (!prepared) return fail(c, "white furnace: " + message, error);
     runtime::FrameResult image;
-    if (!backend_->render(prepared->frame(), &image, &message)) return fail(c, "white furnace: render failed: " + message, error);
+    if (!backend_->render(prepared->frame(), &image, &message))
+      return fail(c, "white furnace: render failed: " + message, error);
     const float* clear = prepared->frame().clearColor;
     const std::vector<bool> covered = coverageMask(image.hdr, image.hdr, {clear[0], clear[1], clear[2]});
     r->furnaceGain = furnaceGain(image.hdr, kFurnaceLuminance * prepared->exposure(), covered);
@@ -183,7 +188,8 @@ class Evaluation {
     auto add = [&](const permutations::VariantKey& key) {
       if (std::find(scene.keys.begin(), scene.keys.end(), key) == scene.keys.end()) scene.keys.push_back(key);
     };
-    for (const View& v : views_) add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
+    for (const View& v : views_)
+      add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
     *firstKey = scene.keys[0].toString();
     if (needs.lit) add(permutations::requestKey(needs, c.tier, true, 0));
     if (needs.lit) add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace

@@ -71,9 +71,8 @@ GridSweep gridSweep(const ir::Material& m) {
 
 std::vector<GridView> evaluationGrid(const ir::Material& m, const GridOptions& options) {
   const GridSweep sweep = gridSweep(m);
-  std::vector<double> roughness = sweep.roughness.empty() || options.roughness.empty()
-                                      ? std::vector<double>{0}
-                                      : options.roughness;
+  std::vector<double> roughness =
+      sweep.roughness.empty() || options.roughness.empty() ? std::vector<double>{0} : options.roughness;
   std::vector<double> metallic = sweep.metallic.empty() ? std::vector<double>{0} : std::vector<double>{0, 1};
   const int colours = sweep.baseColor.empty() ? 1 : 2;
   const int cols = int(roughness.size());

@@ -83,7 +83,8 @@ bool PreparedFrame::adapt(const runtime::Scene& scene, const std::string& packag
 
 // The texture with the sampler's sRGB decoding on (linear lighting) or off (the gamma hack).
 const runtime::Texture* PreparedFrame::recoded(const runtime::Texture* t, bool srgbEncodedInShader) {
-  const runtime::TextureFormat want = srgbEncodedInShader ? runtime::TextureFormat::Rgba8Unorm : runtime::TextureFormat::Rgba8Srgb;
+  const runtime::TextureFormat want =
+      srgbEncodedInShader ? runtime::TextureFormat::Rgba8Unorm : runtime::TextureFormat::Rgba8Srgb;
   if (t->format == want ||
       (t->format != runtime::TextureFormat::Rgba8Unorm && t->format != runtime::TextureFormat::Rgba8Srgb))
     return t;

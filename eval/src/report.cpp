@@ -41,9 +41,9 @@ Json errorJson(const ImageMetrics& m) {
 // The cost model's figures of a stage (names in compiler/cost_figures.h), then its op classes.
 Json costJson(const compiler::MobileStageCost& c) {
   using F = compiler::Figure;
-  static constexpr F kFigures[] = {F::Cycles,        F::Bound,           F::ArithmeticCycles,      F::TextureCycles,
-                                   F::VaryingCycles, F::FmaSlots,        F::CvtSlots,              F::SfuOps,
-                                   F::TextureSamples, F::VaryingChannels, F::ScalarTranscendentals, F::ScalarDivisions};
+  static constexpr F kFigures[] = {
+      F::Cycles,   F::Bound,  F::ArithmeticCycles, F::TextureCycles,   F::VaryingCycles,         F::FmaSlots,
+      F::CvtSlots, F::SfuOps, F::TextureSamples,   F::VaryingChannels, F::ScalarTranscendentals, F::ScalarDivisions};
   const compiler::StageFigures stage{c, {}};
   Json j;
   for (F f : kFigures) {
@@ -102,11 +102,16 @@ std::string timingDescription(const EvalReport& r) {
 std::string xmlEscape(const std::string& s) {
   std::string out;
   for (char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -122,7 +127,8 @@ Json reportJson(const EvalReport& r) {
   j["width"] = r.width;
   j["height"] = r.height;
   j["fp16_emulation"] = r.fp16Emulation;
-  j["error_measure"] = "against reference as shipped, over the pixels the material covers in either image, all views together";
+  j["error_measure"] =
+      "against reference as shipped, over the pixels the material covers in either image, all views together";
   j["timing"] = Json{{"what", timingDescription(r)},
                      {"clock", r.timingClock},
                      {"frames", r.timingFrames},
@@ -171,8 +177,9 @@ Json reportJson(const EvalReport& r) {
                            {"worst_roughness", b.worstRoughness},
                            {"non_finite", b.nonFinite},
                            {"beyond_binary16", b.beyondHalf}});
-    j["brdf_domain"] = Json{{"what", "f_s * n.l of each specular lobe against double GGX/Smith/Schlick over n.v x n.l x "
-                                     "azimuth x roughness x f0; relative RMSE per roughness row"},
+    j["brdf_domain"] = Json{{"what",
+                             "f_s * n.l of each specular lobe against double GGX/Smith/Schlick over n.v x n.l x "
+                             "azimuth x roughness x f0; relative RMSE per roughness row"},
                             {"lobes", sweep}};
   }
   if (!r.gpuStats.empty()) {
@@ -182,8 +189,10 @@ Json reportJson(const EvalReport& r) {
       Json jg = Json::parse(gpu_stats::toJson(g).dump());
       const compiler::GpuCalibration* c = g.unavailable.empty() ? nullptr : compiler::findGpuCalibration(g.gpu);
       if (c) {
-        Json estimate{{"measure", c->measure}, {"cross_validated_mean_error", c->crossValidatedMeanError},
-                      {"cross_validated_max_error", c->crossValidatedMaxError}, {"configurations", Json::object()}};
+        Json estimate{{"measure", c->measure},
+                      {"cross_validated_mean_error", c->crossValidatedMeanError},
+                      {"cross_validated_max_error", c->crossValidatedMaxError},
+                      {"configurations", Json::object()}};
         for (const ConfigurationResult& k : r.results)
           estimate["configurations"][k.configuration.name] = compiler::calibratedEstimate(k.fragment.counts, *c);
         jg["calibrated_estimate"] = estimate;
@@ -232,7 +241,7 @@ std::string gpuMarkdown(const EvalReport& r) {
         continue;
       }
       const gpu_stats::StageStats* f = col.measured->find(name, "fragment");
-      std::string cell = !f ? "—"
+      std::string cell = !f          ? "—"
                          : f->cycles ? fmt("%.2f", *f->cycles) + (f->bound.empty() ? "" : " (" + f->bound + ")")
                                      : fmt("%.0f", f->instructions) + " instr.";
       s += " " + cell + " |";
@@ -244,18 +253,20 @@ std::string gpuMarkdown(const EvalReport& r) {
 
 // The lobes over the BRDF domain (brdf_sweep.h), one row per (lobe, precision).
 std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfSweepDomain& domain) {
-  std::string s = "\n**BRDF domain**: each specular lobe on its own (f_s · n·l), run on lavapipe over " +
-                  std::to_string(domain.cosines) + " n·v × " + std::to_string(domain.cosines) + " n·l × " +
-                  std::to_string(domain.azimuths.size()) + " azimuths × " + std::to_string(domain.roughnesses) +
-                  " roughnesses (0.089…1) × " + std::to_string(domain.f0.size()) +
-                  " f0, against GGX × height-correlated Smith × Schlick in double precision. Relative RMSE per "
-                  "roughness row (√Σ(f − g)² / √Σg²); mediump lobes run with binary16 rounding (fp16 emulation). "
-                  "Left out of every row alike: the " + std::to_string(rows.empty() ? 0 : rows[0].beyondHalf) +
-                  " samples where the exact f_s exceeds binary16's 65504 (the roughness floor near the grazing mirror), "
-                  "where every mediump lobe saturates by design. Weighed by n·v: the same with each sample weighed by n·v, as "
-                  "a sphere's pixels are (grazing views cover few).\n\n"
-                  "| lobe | precision | configurations | rel. RMSE, mean over r | worst r (rel. RMSE) | weighed by n·v | "
-                  "non-finite |\n|---|---|---|--:|--:|--:|--:|\n";
+  std::string s =
+      "\n**BRDF domain**: each specular lobe on its own (f_s · n·l), run on lavapipe over " +
+      std::to_string(domain.cosines) + " n·v × " + std::to_string(domain.cosines) + " n·l × " +
+      std::to_string(domain.azimuths.size()) + " azimuths × " + std::to_string(domain.roughnesses) +
+      " roughnesses (0.089…1) × " + std::to_string(domain.f0.size()) +
+      " f0, against GGX × height-correlated Smith × Schlick in double precision. Relative RMSE per "
+      "roughness row (√Σ(f − g)² / √Σg²); mediump lobes run with binary16 rounding (fp16 emulation). "
+      "Left out of every row alike: the " +
+      std::to_string(rows.empty() ? 0 : rows[0].beyondHalf) +
+      " samples where the exact f_s exceeds binary16's 65504 (the roughness floor near the grazing mirror), "
+      "where every mediump lobe saturates by design. Weighed by n·v: the same with each sample weighed by n·v, as "
+      "a sphere's pixels are (grazing views cover few).\n\n"
+      "| lobe | precision | configurations | rel. RMSE, mean over r | worst r (rel. RMSE) | weighed by n·v | "
+      "non-finite |\n|---|---|---|--:|--:|--:|--:|\n";
   for (const BrdfSweepRow& b : rows) {
     std::string names;
     for (size_t i = 0; i < b.configurations.size() && i < 4; ++i) names += (i ? ", " : "") + b.configurations[i];
@@ -283,19 +294,21 @@ std::string reportMarkdown(const EvalReport& r) {
        "RMSE of the linear HDR image.\n"
        "**Speed**: estimated Valhall-class cycles per fragment and per vertex from the mobile cost model "
        "(docs/eval.md), fragment cycles as a ratio to `high` and `reference` as shipped; and lavapipe's " +
-       timingDescription(r) + ".\n"
+       timingDescription(r) +
+       ".\n"
        "★: on the Pareto front (no other configuration has both fewer fragment cycles and a higher PSNR).\n\n";
-  s += "| configuration | changes | PSNR dB | mean | p99 | rel. RMSE | frag. cycles | vert. cycles | × high | × reference "
+  s += "| configuration | changes | PSNR dB | mean | p99 | rel. RMSE | frag. cycles | vert. cycles | × high | × "
+       "reference "
        "| lavapipe × reference | |\n";
   s += "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|\n";
   for (const ConfigurationResult& c : r.results) {
     std::string change = c.configuration.change;
     if (!c.sameAs.empty()) change += " (same maths as " + c.sameAs + ")";
-    s += "| " + c.configuration.name + " | " + change + " | " + psnrText(c.error) + " | " + fmt("%.2f", c.error.meanAbs) +
-         " | " + fmt("%.0f", c.error.p99Abs) + " | " + fmt("%.4f", c.error.relativeRmse) + " | " +
-         fmt("%.2f", c.fragment.cycles) + " | " + fmt("%.2f", c.vertex.cycles) + " | " + ratioText(c.cyclesVsHigh) +
-         " | " + ratioText(c.cyclesVsReference) + " | " + ratioText(c.timeVsReference) + " | " + (c.pareto ? "★" : "") +
-         " |\n";
+    s += "| " + c.configuration.name + " | " + change + " | " + psnrText(c.error) + " | " +
+         fmt("%.2f", c.error.meanAbs) + " | " + fmt("%.0f", c.error.p99Abs) + " | " +
+         fmt("%.4f", c.error.relativeRmse) + " | " + fmt("%.2f", c.fragment.cycles) + " | " +
+         fmt("%.2f", c.vertex.cycles) + " | " + ratioText(c.cyclesVsHigh) + " | " + ratioText(c.cyclesVsReference) +
+         " | " + ratioText(c.timeVsReference) + " | " + (c.pareto ? "★" : "") + " |\n";
   }
   // The cost goals are stated for the sun + IBL variant (no point light): the tiers as shipped.
   std::string sunIbl;
@@ -306,7 +319,8 @@ std::string reportMarkdown(const EvalReport& r) {
   }
   if (!sunIbl.empty())
     s += "\nFragment cycles of the sun + IBL variant (`<tier>.dir1`, no point light; what the tiers' cost goals "
-         "refer to), tiers as shipped: " + sunIbl + ".\n";
+         "refer to), tiers as shipped: " +
+         sunIbl + ".\n";
   // The white furnace (lit materials): the configurations that gain energy, and the largest gain.
   std::string gains;
   double largest = 0;
@@ -318,8 +332,11 @@ std::string reportMarkdown(const EvalReport& r) {
   }
   if (largest > 0)
     s += "\nWhite furnace (the first view's spheres in a constant sky, no lights; the brightest value they cover ÷ "
-         "the sky's radiance; energy gain: above " + fmt("%.2f", kFurnaceGainLimit) + " and above reference's by that "
-         "factor): reference " + fmt("%.3f", referenceGain) + ", largest " + fmt("%.3f", largest) + "; " +
+         "the sky's radiance; energy gain: above " +
+         fmt("%.2f", kFurnaceGainLimit) +
+         " and above reference's by that "
+         "factor): reference " +
+         fmt("%.3f", referenceGain) + ", largest " + fmt("%.3f", largest) + "; " +
          (gains.empty() ? std::string("no configuration gains energy") : "energy gain: " + gains) + ".\n";
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep, r.brdfDomain);
@@ -363,8 +380,9 @@ std::string reportSvg(const EvalReport& r) {
     if (std::isinf(psnr)) return top + 8;
     return plotTop + (y1 - psnr) / (y1 - y0) * (H - plotTop - bottom);
   };
-  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fmt("%.0f", W) + "\" height=\"" + fmt("%.0f", H) +
-                  "\" viewBox=\"0 0 " + fmt("%.0f", W) + " " + fmt("%.0f", H) + "\" font-family=\"sans-serif\">\n";
+  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fmt("%.0f", W) + "\" height=\"" +
+                  fmt("%.0f", H) + "\" viewBox=\"0 0 " + fmt("%.0f", W) + " " + fmt("%.0f", H) +
+                  "\" font-family=\"sans-serif\">\n";
   s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   s += "<text x=\"" + fmt("%.0f", left) + "\" y=\"20\" font-size=\"14\">" + xmlEscape(r.material) +
        ": error against estimated cost (red: Pareto front)</text>\n";
@@ -393,7 +411,8 @@ std::string reportSvg(const EvalReport& r) {
   for (const ConfigurationResult& c : r.results)
     if (c.pareto) front.push_back(&c);
   std::sort(front.begin(), front.end(), [](auto* a, auto* b) {
-    return a->fragment.cycles < b->fragment.cycles || (a->fragment.cycles == b->fragment.cycles && a->error.psnr < b->error.psnr);
+    return a->fragment.cycles < b->fragment.cycles ||
+           (a->fragment.cycles == b->fragment.cycles && a->error.psnr < b->error.psnr);
   });
   if (front.size() > 1) {
     s += "<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"1.5\" points=\"";
@@ -417,7 +436,8 @@ std::string reportSvg(const EvalReport& r) {
     bool overlaps(const Box& b) const { return x0 < b.x1 && b.x0 < x1 && y0 < b.y1 && b.y0 < y1; }
   };
   std::vector<Box> taken;
-  for (const auto& key : order) taken.push_back({px(key.first) - 4, py(key.second) - 4, px(key.first) + 4, py(key.second) + 4});
+  for (const auto& key : order)
+    taken.push_back({px(key.first) - 4, py(key.second) - 4, px(key.first) + 4, py(key.second) + 4});
   std::stable_sort(order.begin(), order.end(), [&](const auto& a, const auto& b) {
     return points[a].front()->pareto && !points[b].front()->pareto;
   });
@@ -432,12 +452,14 @@ std::string reportSvg(const EvalReport& r) {
          "\" fill=\"" + (onFront ? "#d62728" : "#7f7f7f") + "\"><title>" + xmlEscape(label) + "</title></circle>\n";
     const double width = 5.2 * double(label.size());
     // (dx, dy) of the text's baseline start; anchor end when the label sits left of its point.
-    const std::pair<double, double> places[] = {{6, -4}, {6, 10}, {-6, -4}, {-6, 10}, {6, -14}, {6, 20}, {-6, -14}, {-6, 20}};
+    const std::pair<double, double> places[] = {{6, -4},  {6, 10}, {-6, -4},  {-6, 10},
+                                                {6, -14}, {6, 20}, {-6, -14}, {-6, 20}};
     double dx = 6, dy = -4;
     for (const auto& [cx, cy] : places) {
       const double start = cx > 0 ? x + cx : x + cx - width;
       Box box{start, y + cy - 8, start + width, y + cy + 2};
-      if (box.x0 < 0 || box.x1 > W || std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return box.overlaps(b); }))
+      if (box.x0 < 0 || box.x1 > W ||
+          std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return box.overlaps(b); }))
         continue;
       dx = cx;
       dy = cy;

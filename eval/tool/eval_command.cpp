@@ -54,7 +54,8 @@ int evalCommand(const EvalArgs& args) {
   // The report's own names are known now, the images' only after the run: both are checked, the
   // first before the run.
   std::vector<cli::NamedFile> outputs;
-  for (const char* name : {"report.md", "report.json", "plot.svg"}) outputs.push_back({"--out", (fs::path(outDir) / name).string()});
+  for (const char* name : {"report.md", "report.json", "plot.svg"})
+    outputs.push_back({"--out", (fs::path(outDir) / name).string()});
   if (!cli::outputsSpareInputs(inputs, outputs)) return 1;
   ir::SourceFile source;
   std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);

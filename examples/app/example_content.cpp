@@ -99,7 +99,8 @@ std::string ExampleContent::checkResources(const ResourceCounts& counts) const {
 }
 
 std::string ExampleContent::checkInstances(const std::vector<uint8_t>& rgba) const {
-  if (rgba.size() != size_t(kWidth) * kHeight * 4) return "the image is not " + std::to_string(kWidth) + "x" + std::to_string(kHeight);
+  if (rgba.size() != size_t(kWidth) * kHeight * 4)
+    return "the image is not " + std::to_string(kWidth) + "x" + std::to_string(kHeight);
   // The sphere centres project about 88 pixels either side of the middle.
   const auto at = [&](uint32_t x, uint32_t y) { return &rgba[(size_t(y) * kWidth + x) * 4]; };
   const uint8_t* left = at(kWidth / 2 - 88, kHeight / 2);

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material_instance.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::example {
 

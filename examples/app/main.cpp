@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "example_content.h"
-#include "facet/runtime/render_backend.h"
-#include "facet/runtime/png.h"
-#include "facet/runtime/vulkan_backend.h"
 #include "app_vulkan.h"
+#include "example_content.h"
+#include "facet/runtime/png.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/vulkan_backend.h"
 
 namespace {
 

@@ -20,8 +20,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "example_content.h"

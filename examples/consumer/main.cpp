@@ -17,13 +17,13 @@
 
 #include "facet/package/package.h"
 #include "facet/package/package_reader.h"
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/png.h"
+#include "facet/runtime/render_backend.h"
 
 namespace {
 
@@ -103,7 +103,8 @@ int render(LoadedMaterial loaded, const std::string& out) {
 
   FrameResult result;
   if (!renderer->render(frame, &result, &error)) return fail(error);
-  for (const std::string& message : renderer->validationErrors()) std::fprintf(stderr, "validation: %s\n", message.c_str());
+  for (const std::string& message : renderer->validationErrors())
+    std::fprintf(stderr, "validation: %s\n", message.c_str());
   if (!renderer->validationErrors().empty()) return fail("Vulkan validation errors");
   if (!writePng(out, result.width, result.height, result.ldr, &error)) return fail(error);
   // The sphere covers the centre and not the corner: the two pixels must differ visibly.
@@ -114,7 +115,8 @@ int render(LoadedMaterial loaded, const std::string& out) {
   std::printf("rendered %s with %s (%s) %ux%u: centre rgb %d,%d,%d, corner rgb %d,%d,%d -> %s\n",
               material->loaded().info().name.c_str(), renderer->name(), material->variantKey().c_str(), width, height,
               centre[0], centre[1], centre[2], corner[0], corner[1], corner[2], out.c_str());
-  if (difference < 30) return fail("the material did not draw (centre and corner differ by " + std::to_string(difference) + ")");
+  if (difference < 30)
+    return fail("the material did not draw (centre and corner differ by " + std::to_string(difference) + ")");
   return 0;
 }
 

@@ -188,8 +188,9 @@ std::vector<GpuStats> measure(const std::vector<ShaderPair>& pairs, const std::v
   };
   const std::string python = tool.python.empty() ? "python3" : tool.python;
   const std::string script =
-      !tool.script.empty() ? tool.script
-                           : envOr("FACET_MESA_COMPILE", std::string(FACET_SOURCE_DIR) + "/tools/mesa_stats/mesa_compile.py");
+      !tool.script.empty()
+          ? tool.script
+          : envOr("FACET_MESA_COMPILE", std::string(FACET_SOURCE_DIR) + "/tools/mesa_stats/mesa_compile.py");
   std::error_code ec;
   if (!fs::is_regular_file(script, ec))
     return allUnavailable("no mesa_compile.py at " + script + " (set FACET_MESA_COMPILE to its path)");
@@ -198,7 +199,8 @@ std::vector<GpuStats> measure(const std::vector<ShaderPair>& pairs, const std::v
   if (dir.path.empty()) return allUnavailable(std::string("cannot create a temporary folder: ") + std::strerror(errno));
   json list = json::array();
   for (size_t i = 0; i < pairs.size(); ++i) {
-    fs::path vertexPath = dir.path / (std::to_string(i) + ".vert"), fragmentPath = dir.path / (std::to_string(i) + ".frag");
+    fs::path vertexPath = dir.path / (std::to_string(i) + ".vert"),
+             fragmentPath = dir.path / (std::to_string(i) + ".frag");
     if (!writeText(vertexPath, pairs[i].vertexGlsl) || !writeText(fragmentPath, pairs[i].fragmentGlsl))
       return allUnavailable("cannot write the shaders to " + dir.path.string());
     list.push_back({{"name", pairs[i].name}, {"vertex", vertexPath.string()}, {"fragment", fragmentPath.string()}});

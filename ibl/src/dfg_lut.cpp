@@ -27,7 +27,8 @@ DfgTerms integrateDfg(double NoV, double perceptualRoughness, int samples, DfgSa
   DfgTerms sum;
   for (uint32_t i = 0; i < n; ++i) {
     Point2 xi = hammersley(i, n);
-    Vec3 h = sampling == DfgSampling::VisibleNormals ? sampleGgxVisibleNormal(xi, v, alpha) : sampleGgxNormal(xi, alpha);
+    Vec3 h =
+        sampling == DfgSampling::VisibleNormals ? sampleGgxVisibleNormal(xi, v, alpha) : sampleGgxNormal(xi, alpha);
     double VoH = dot(v, h);
     Vec3 l = reflectAbout(v, h);
     double NoL = l.z;
@@ -60,7 +61,8 @@ DfgTerms DfgLut::sampleBilinear(double NoV, double perceptualRoughness) const {
   axis(NoV, &c0, &c1, &fx);
   axis(perceptualRoughness, &r0, &r1, &fy);
   auto lerp = [](DfgTerms a, DfgTerms b, double f) {
-    return DfgTerms{a.fresnelWeighted + (b.fresnelWeighted - a.fresnelWeighted) * f, a.albedo + (b.albedo - a.albedo) * f};
+    return DfgTerms{a.fresnelWeighted + (b.fresnelWeighted - a.fresnelWeighted) * f,
+                    a.albedo + (b.albedo - a.albedo) * f};
   };
   return lerp(lerp(at(c0, r0), at(c1, r0), fx), lerp(at(c0, r1), at(c1, r1), fx), fy);
 }

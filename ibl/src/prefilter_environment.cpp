@@ -110,7 +110,8 @@ std::vector<CubeImage> prefilterCubeLevels(const std::vector<EquirectImage>& sou
                                             cubeTexelDirection(level.image.size, rows[i].face, column, rows[i].row)));
     }
   };
-  const unsigned threads = options.threads > 0 ? unsigned(options.threads) : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads =
+      options.threads > 0 ? unsigned(options.threads) : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> helpers;
   try {
     for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
@@ -128,7 +129,8 @@ std::vector<CubeImage> prefilterCubeLevels(const std::vector<EquirectImage>& sou
 void checkSource(const EquirectImage& source, int levels) {
   if (levels < 1 || levels > 30 || source.height < 1 || source.width != 2 * source.height ||
       source.height % (1 << (levels - 1)) != 0 || source.rgb.size() != size_t(source.width) * size_t(source.height) * 3)
-    throw std::invalid_argument("prefilterEnvironment: source must be 2h x h floats with h divisible by 2^(levels - 1)");
+    throw std::invalid_argument(
+        "prefilterEnvironment: source must be 2h x h floats with h divisible by 2^(levels - 1)");
 }
 
 // Source mips for filtered sampling, halving while the result keeps kCoarsestSourceRows rows.
@@ -155,7 +157,8 @@ std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, con
   return result;
 }
 
-std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int size, const PrefilterOptions& options) {
+std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int size,
+                                                const PrefilterOptions& options) {
   const int levels = options.levels;
   checkSource(source, levels);
   if (size < 1 << (levels - 1) || size % (1 << (levels - 1)) != 0)

@@ -12,11 +12,11 @@ namespace {
 // Basis constants K_k (header table), from K_lm = √((2l + 1)/4π · (l − |m|)!/(l + |m|)!) with the
 // √2 of real m ≠ 0 terms and the polynomial factors of p_k absorbed.
 const double kBasisConstants[9] = {
-    0.5 / std::sqrt(kPi),                                                                     // 1
-    std::sqrt(3.0 / (4.0 * kPi)),   std::sqrt(3.0 / (4.0 * kPi)),  std::sqrt(3.0 / (4.0 * kPi)),  // y z x
-    std::sqrt(15.0 / (4.0 * kPi)),  std::sqrt(15.0 / (4.0 * kPi)),                            // xy yz
-    std::sqrt(5.0 / (16.0 * kPi)),                                                            // 3z² − 1
-    std::sqrt(15.0 / (4.0 * kPi)),  std::sqrt(15.0 / (16.0 * kPi)),                           // xz x² − y²
+    0.5 / std::sqrt(kPi),                                                                         // 1
+    std::sqrt(3.0 / (4.0 * kPi)),  std::sqrt(3.0 / (4.0 * kPi)),   std::sqrt(3.0 / (4.0 * kPi)),  // y z x
+    std::sqrt(15.0 / (4.0 * kPi)), std::sqrt(15.0 / (4.0 * kPi)),                                 // xy yz
+    std::sqrt(5.0 / (16.0 * kPi)),                                                                // 3z² − 1
+    std::sqrt(15.0 / (4.0 * kPi)), std::sqrt(15.0 / (16.0 * kPi)),                                // xz x² − y²
 };
 
 // Clamped-cosine convolution factors Â_l (Ramamoorthi & Hanrahan 2001, eq. 8): the cosine lobe's
@@ -31,7 +31,8 @@ void checkBands(int bands) {
 
 // p_k(d): the polynomial part of Y_k, the same list the shader evaluates.
 std::vector<double> basisPolynomials(int bands, Vec3 d) {
-  const double all[9] = {1.0, d.y, d.z, d.x, d.x * d.y, d.y * d.z, 3.0 * d.z * d.z - 1.0, d.x * d.z, d.x * d.x - d.y * d.y};
+  const double all[9] = {
+      1.0, d.y, d.z, d.x, d.x * d.y, d.y * d.z, 3.0 * d.z * d.z - 1.0, d.x * d.z, d.x * d.x - d.y * d.y};
   return std::vector<double>(all, all + bands * bands);
 }
 

@@ -21,21 +21,37 @@ enum class Shape {
 
 const std::map<std::string, Shape>& table() {
   static const std::map<std::string, Shape> t = {
-      {"abs", Shape::Unary},      {"floor", Shape::Unary},   {"fract", Shape::Unary},
-      {"sqrt", Shape::Unary},     {"exp2", Shape::Unary},    {"log2", Shape::Unary},
-      {"sin", Shape::Unary},      {"cos", Shape::Unary},     {"saturate", Shape::Unary},
-      {"normalize", Shape::Unary}, {"pow", Shape::Binary},   {"min", Shape::BinaryScalarB},
-      {"max", Shape::BinaryScalarB}, {"step", Shape::StepLike}, {"mix", Shape::Mix},
-      {"clamp", Shape::Clamp},    {"smoothstep", Shape::Smoothstep}, {"length", Shape::Reduce},
-      {"dot", Shape::Dot},        {"cross", Shape::Cross},
+      {"abs", Shape::Unary},
+      {"floor", Shape::Unary},
+      {"fract", Shape::Unary},
+      {"sqrt", Shape::Unary},
+      {"exp2", Shape::Unary},
+      {"log2", Shape::Unary},
+      {"sin", Shape::Unary},
+      {"cos", Shape::Unary},
+      {"saturate", Shape::Unary},
+      {"normalize", Shape::Unary},
+      {"pow", Shape::Binary},
+      {"min", Shape::BinaryScalarB},
+      {"max", Shape::BinaryScalarB},
+      {"step", Shape::StepLike},
+      {"mix", Shape::Mix},
+      {"clamp", Shape::Clamp},
+      {"smoothstep", Shape::Smoothstep},
+      {"length", Shape::Reduce},
+      {"dot", Shape::Dot},
+      {"cross", Shape::Cross},
   };
   return t;
 }
 
 int arity(Shape s) {
   switch (s) {
-    case Shape::Unary: case Shape::Reduce: return 1;
-    case Shape::Mix: case Shape::Clamp: case Shape::Smoothstep: return 3;
+    case Shape::Unary:
+    case Shape::Reduce: return 1;
+    case Shape::Mix:
+    case Shape::Clamp:
+    case Shape::Smoothstep: return 3;
     default: return 2;
   }
 }
@@ -75,10 +91,8 @@ std::optional<BuiltinCall> resolveBuiltin(const std::string& name, const std::ve
   auto fits = [](Type arg, Type gen, bool scalarOk) { return arg == gen || (scalarOk && arg == Type::Float); };
   Type gen = args[0];
   switch (shape) {
-    case Shape::Unary:
-      return BuiltinCall{gen, name};
-    case Shape::Reduce:
-      return BuiltinCall{Type::Float, name};
+    case Shape::Unary: return BuiltinCall{gen, name};
+    case Shape::Reduce: return BuiltinCall{Type::Float, name};
     case Shape::Binary:
     case Shape::Dot:
       if (args[1] != gen) return mismatch(1, gen);

@@ -7,14 +7,12 @@
 
 #include "builtins.h"
 #include "evaluate.h"
-#include "reserved_names.h"
 #include "facet/ir/parser.h"
+#include "reserved_names.h"
 
 namespace facet::ir {
 
-double srgbToLinear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
 namespace {
 
@@ -48,8 +46,7 @@ class Checker {
     checkSurface(src);
     for (const ast::TierOverride& o : src.tierOverrides) checkTierOverride(o);
     for (const Param& p : material_.params)
-      if (!usedParams_.count(p.name))
-        diags_.warning(p.loc, "parameter '" + p.name + "' is never used", "unused-param");
+      if (!usedParams_.count(p.name)) diags_.warning(p.loc, "parameter '" + p.name + "' is never used", "unused-param");
     if (diags_.hasErrors()) return std::nullopt;
     return std::move(material_);
   }
@@ -57,12 +54,16 @@ class Checker {
  private:
   using Result = std::optional<ValueId>;
 
-  void error(SourceLoc loc, std::string message, const char* code = "type") { diags_.error(loc, std::move(message), code); }
+  void error(SourceLoc loc, std::string message, const char* code = "type") {
+    diags_.error(loc, std::move(message), code);
+  }
   Type typeOf(ValueId id) const { return module().value(id).type; }
   Module& module() { return material_.surface; }
   const Module& module() const { return material_.surface; }
 
-  static std::string suggestion(const std::string& best) { return best.empty() ? "" : "; did you mean '" + best + "'?"; }
+  static std::string suggestion(const std::string& best) {
+    return best.empty() ? "" : "; did you mean '" + best + "'?";
+  }
 
   // --- header and parameters ---
 
@@ -73,18 +74,21 @@ class Checker {
     material_.blending = src.blending;
     material_.doubleSided = src.doubleSided;
     if (std::find(shadings.begin(), shadings.end(), src.shading) == shadings.end())
-      error(src.shadingLoc, "unknown shading model '" + src.shading + "' (lit or unlit)" +
-                                suggestion(closestMatch(src.shading, shadings)), "unknown-name");
-    if (std::find(blendings.begin(), blendings.end(), src.blending) == blendings.end())
-      error(src.blendingLoc, "unknown blending mode '" + src.blending + "'" + suggestion(closestMatch(src.blending, blendings)),
+      error(src.shadingLoc,
+            "unknown shading model '" + src.shading + "' (lit or unlit)" +
+                suggestion(closestMatch(src.shading, shadings)),
             "unknown-name");
-
+    if (std::find(blendings.begin(), blendings.end(), src.blending) == blendings.end())
+      error(src.blendingLoc,
+            "unknown blending mode '" + src.blending + "'" + suggestion(closestMatch(src.blending, blendings)),
+            "unknown-name");
   }
 
   void checkTierOverride(const ast::TierOverride& o) {
     const TierChoices& choices = tierChoices();
     if (std::find(choices.tiers.begin(), choices.tiers.end(), o.tier) == choices.tiers.end()) {
-      error(o.tierLoc, "unknown tier '" + o.tier + "'" + suggestion(closestMatch(o.tier, choices.tiers)), "unknown-name");
+      error(o.tierLoc, "unknown tier '" + o.tier + "'" + suggestion(closestMatch(o.tier, choices.tiers)),
+            "unknown-name");
       return;
     }
     if (o.tier == "reference") {
@@ -101,7 +105,8 @@ class Checker {
     }
     const std::vector<std::string>& options = axis->second;
     if (std::find(options.begin(), options.end(), o.option) == options.end()) {
-      error(o.optionLoc, "unknown " + o.axis + " option '" + o.option + "'" + suggestion(closestMatch(o.option, options)),
+      error(o.optionLoc,
+            "unknown " + o.axis + " option '" + o.option + "'" + suggestion(closestMatch(o.option, options)),
             "unknown-name");
       return;
     }
@@ -154,12 +159,15 @@ class Checker {
     }
     auto parsed = parseTypeName(decl.typeName, decl.typeArgument);
     if (!parsed && decl.typeName == "texture") {
-      error(decl.typeLoc, "a texture parameter names its colour space: texture(srgb), texture(linear) or texture(normal)", "type");
+      error(decl.typeLoc,
+            "a texture parameter names its colour space: texture(srgb), texture(linear) or texture(normal)", "type");
       return;
     }
     if (!parsed) {
-      static const std::vector<std::string> types = {"float", "vec2", "vec3", "vec4", "int", "bool", "color", "texture"};
-      error(decl.typeLoc, "unknown parameter type '" + decl.typeName + "'" + suggestion(closestMatch(decl.typeName, types)),
+      static const std::vector<std::string> types = {"float", "vec2", "vec3",  "vec4",
+                                                     "int",   "bool", "color", "texture"};
+      error(decl.typeLoc,
+            "unknown parameter type '" + decl.typeName + "'" + suggestion(closestMatch(decl.typeName, types)),
             "unknown-name");
       return;
     }
@@ -177,8 +185,10 @@ class Checker {
     if (!def) return;
     bool integralFloat = def->type == Type::Float && std::floor(def->constant[0]) == def->constant[0];
     if (def->type != p.type && !(p.type == Type::Int && integralFloat)) {
-      error(decl.defaultValue->loc, "default value is " + std::string(typeName(def->type)) + " but parameter '" + p.name +
-                                        "' is " + decl.typeName, "type");
+      error(decl.defaultValue->loc,
+            "default value is " + std::string(typeName(def->type)) + " but parameter '" + p.name + "' is " +
+                decl.typeName,
+            "type");
       return;
     }
     if (p.type == Type::Int && (def->constant[0] < -2147483648.0 || def->constant[0] > 2147483647.0)) {
@@ -203,8 +213,10 @@ class Checker {
       }
       for (double c : p.defaultValue) {
         if (c < *p.rangeMin || c > *p.rangeMax) {
-          error(decl.defaultValue->loc, "default value " + formatNumber(c) + " is outside the declared range [" +
-                                            formatNumber(*p.rangeMin) + ", " + formatNumber(*p.rangeMax) + "]", "range");
+          error(decl.defaultValue->loc,
+                "default value " + formatNumber(c) + " is outside the declared range [" + formatNumber(*p.rangeMin) +
+                    ", " + formatNumber(*p.rangeMax) + "]",
+                "range");
           return;
         }
       }
@@ -269,7 +281,8 @@ class Checker {
       Result value = expr(*s.value);
       if (s.isLet) {
         if (lets_.count(s.name)) {
-          error(s.loc, "'" + s.name + "' is already defined at line " + std::to_string(lets_[s.name].loc.line), "duplicate");
+          error(s.loc, "'" + s.name + "' is already defined at line " + std::to_string(lets_[s.name].loc.line),
+                "duplicate");
         } else if (findOutput(s.name)) {
           error(s.loc, "'" + s.name + "' is a surface output; choose another name for the let", "duplicate");
         } else if (s.name == "params" || s.name == "vertex") {
@@ -292,13 +305,15 @@ class Checker {
         continue;
       }
       if (auto [it, fresh] = written.emplace(s.name, s.loc); !fresh) {
-        error(s.loc, "output '" + s.name + "' is already written at line " + std::to_string(it->second.line), "duplicate");
+        error(s.loc, "output '" + s.name + "' is already written at line " + std::to_string(it->second.line),
+              "duplicate");
         continue;
       }
       if (!value) continue;
       if (typeOf(*value) != out->type) {
-        error(s.value->loc, "output '" + s.name + "' is " + typeName(out->type) + " but the value is " +
-                                typeName(typeOf(*value)), "type");
+        error(s.value->loc,
+              "output '" + s.name + "' is " + typeName(out->type) + " but the value is " + typeName(typeOf(*value)),
+              "type");
         continue;
       }
       if (out->litOnly && material_.shading == "unlit") {
@@ -405,7 +420,8 @@ class Checker {
     if (!a) {
       std::vector<std::string> names;
       for (const AttributeInfo& i : attributes()) names.push_back(i.name);
-      error(e.loc, "unknown vertex attribute '" + e.name + "'" + suggestion(closestMatch(e.name, names)), "unknown-name");
+      error(e.loc, "unknown vertex attribute '" + e.name + "'" + suggestion(closestMatch(e.name, names)),
+            "unknown-name");
       return std::nullopt;
     }
     Value v;
@@ -471,7 +487,8 @@ class Checker {
     std::vector<Type> types;
     for (ValueId a : *args) types.push_back(typeOf(a));
 
-    if (e.name == "vec2" || e.name == "vec3" || e.name == "vec4" || e.name == "float") return construct(e, *args, types);
+    if (e.name == "vec2" || e.name == "vec3" || e.name == "vec4" || e.name == "float")
+      return construct(e, *args, types);
     if (e.name == "sample") return sample(e, *args, types);
     for (size_t i = 0; i < types.size(); ++i) {
       if (types[i] == Type::Texture2D) {
@@ -504,13 +521,14 @@ class Checker {
       return std::nullopt;
     }
     if (types[0] != Type::Texture2D || module().value(args[0]).op != Op::Param) {
-      error(e.args[0]->loc, "the first argument of 'sample' is a texture parameter, not " + std::string(typeName(types[0])),
-            "type");
+      error(e.args[0]->loc,
+            "the first argument of 'sample' is a texture parameter, not " + std::string(typeName(types[0])), "type");
       return std::nullopt;
     }
     if (types[1] != Type::Vec2) {
-      error(e.args[1]->loc, "the second argument of 'sample' is a vec2 texture coordinate, not " +
-                                std::string(typeName(types[1])), "type");
+      error(e.args[1]->loc,
+            "the second argument of 'sample' is a vec2 texture coordinate, not " + std::string(typeName(types[1])),
+            "type");
       return std::nullopt;
     }
     if (constantOnly_) {
@@ -541,7 +559,8 @@ class Checker {
       int total = 0;
       for (Type t : types) {
         if (!isFloatType(t)) {
-          error(e.loc, "'" + e.name + "' takes float or vector arguments, not " + typeName(t) + "; convert with float()",
+          error(e.loc,
+                "'" + e.name + "' takes float or vector arguments, not " + typeName(t) + "; convert with float()",
                 "type");
           return std::nullopt;
         }
@@ -549,8 +568,10 @@ class Checker {
       }
       bool splat = args.size() == 1 && types[0] == Type::Float;
       if (!splat && total != n) {
-        error(e.loc, "'" + e.name + "' needs " + std::to_string(n) + " components, but the arguments have " +
-                         std::to_string(total), "type");
+        error(e.loc,
+              "'" + e.name + "' needs " + std::to_string(n) + " components, but the arguments have " +
+                  std::to_string(total),
+              "type");
         return std::nullopt;
       }
     }
@@ -603,7 +624,8 @@ class Checker {
     Type ta = typeOf(*a), tb = typeOf(*b);
     Op op = binaryOp(e.op);
     auto mismatch = [&] {
-      error(e.loc, std::string("operands of ") + describe(e.op) + " are " + typeName(ta) + " and " + typeName(tb), "type");
+      error(e.loc, std::string("operands of ") + describe(e.op) + " are " + typeName(ta) + " and " + typeName(tb),
+            "type");
       return std::nullopt;
     };
     if (ta == Type::Texture2D || tb == Type::Texture2D) {
@@ -622,10 +644,14 @@ class Checker {
     }
     // Arithmetic: same type, or a float scalar with a float vector (GLSL broadcasting).
     Type result;
-    if (ta == tb && ta != Type::Bool) result = ta;
-    else if (ta == Type::Float && isFloatType(tb)) result = tb;
-    else if (tb == Type::Float && isFloatType(ta)) result = ta;
-    else return mismatch();
+    if (ta == tb && ta != Type::Bool)
+      result = ta;
+    else if (ta == Type::Float && isFloatType(tb))
+      result = tb;
+    else if (tb == Type::Float && isFloatType(ta))
+      result = ta;
+    else
+      return mismatch();
     return module().add(Value{op, result, {*a, *b}, {}, ""});
   }
 
@@ -662,7 +688,9 @@ class Checker {
 
 }  // namespace
 
-std::optional<Material> check(const ast::Material& material, Diagnostics& diags) { return Checker(diags).run(material); }
+std::optional<Material> check(const ast::Material& material, Diagnostics& diags) {
+  return Checker(diags).run(material);
+}
 
 std::optional<Material> compileSource(const SourceFile& file, Diagnostics& diags) {
   auto parsed = parse(file, diags);

@@ -84,8 +84,8 @@ size_t characters(std::string_view s, size_t bytes) {
 
 std::string formatDiagnostic(const SourceFile& file, const Diagnostic& d) {
   // Line 0: a finding about the whole file (a lint figure of a compiled variant), not a place in it.
-  std::string where = d.loc.line == 0 ? file.path
-                                      : file.path + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column);
+  std::string where =
+      d.loc.line == 0 ? file.path : file.path + ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column);
   std::string out = where + ": " + (d.severity == Severity::Error ? "error" : "warning") + ": " + d.message;
   if (!d.code.empty()) out += " [" + d.code + "]";
   out += "\n";
@@ -127,7 +127,8 @@ std::string closestMatch(std::string_view name, const std::vector<std::string>& 
       for (size_t j = 1; j <= b.size(); ++j) {
         size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
         d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+          d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
       }
     }
     return d[a.size()][b.size()];

@@ -6,8 +6,8 @@
 #include <map>
 #include <vector>
 
-#include "facet/ir/precision.h"
 #include "facet/abi/shader_abi.h"
+#include "facet/ir/precision.h"
 #include "facet/ir/ranges.h"
 
 namespace facet::ir {
@@ -78,8 +78,10 @@ class Emitter {
       const Value& v = module_.value(stack.back().id);
       if (stack.back().next < v.args.size()) {
         ValueId arg = v.args[stack.back().next++];
-        if (refer(arg, &result)) stack.back().a.push_back(result);
-        else stack.push_back({arg});
+        if (refer(arg, &result))
+          stack.back().a.push_back(result);
+        else
+          stack.push_back({arg});
         continue;
       }
       result = emitDefinition(stack.back().id, stack.back().a);

@@ -118,7 +118,8 @@ std::optional<Components> evaluate(const Value& v, const std::vector<Components>
 
 namespace {
 
-std::optional<Components> evaluateMemo(const Module& m, ValueId id, std::map<ValueId, std::optional<Components>>& memo) {
+std::optional<Components> evaluateMemo(const Module& m, ValueId id,
+                                       std::map<ValueId, std::optional<Components>>& memo) {
   if (auto it = memo.find(id); it != memo.end()) return it->second;
   const Value& v = m.value(id);
   std::vector<Components> args;

@@ -49,8 +49,10 @@ class Lexer {
   std::vector<Token> run() {
     std::vector<Token> out;
     if (text_.size() > kMaxSourceBytes) {
-      diags_.error(here(), "material file is " + std::to_string(text_.size()) + " bytes; the limit is " +
-                               std::to_string(kMaxSourceBytes), "limit");
+      diags_.error(here(),
+                   "material file is " + std::to_string(text_.size()) + " bytes; the limit is " +
+                       std::to_string(kMaxSourceBytes),
+                   "limit");
       out.push_back({Tok::End, "", here()});
       return out;
     }
@@ -65,7 +67,8 @@ class Lexer {
       unsigned char c = static_cast<unsigned char>(text_[pos_]);
       if (std::isalpha(c) || c == '_') {
         out.push_back(word(Tok::Identifier, loc, [](unsigned char ch) { return std::isalnum(ch) || ch == '_'; }));
-      } else if (std::isdigit(c) || (c == '.' && pos_ + 1 < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
+      } else if (std::isdigit(c) ||
+                 (c == '.' && pos_ + 1 < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
         out.push_back(number(loc));
       } else if (c == '"') {
         out.push_back(string(loc));
@@ -121,8 +124,10 @@ class Lexer {
     }
     std::string shown;
     for (size_t i = 0; i < bytes.size() && i < 8; ++i) shown += " 0x" + hex(static_cast<unsigned char>(bytes[i]));
-    diags_.error(loc, std::string("invalid UTF-8 (") + (loc.length == 1 ? "byte" : "bytes") + shown +
-                          (loc.length > 8 ? " ..." : "") + ")", "lex");
+    diags_.error(loc,
+                 std::string("invalid UTF-8 (") + (loc.length == 1 ? "byte" : "bytes") + shown +
+                     (loc.length > 8 ? " ..." : "") + ")",
+                 "lex");
   }
 
   bool at(char c, size_t ahead = 0) const { return pos_ + ahead < text_.size() && text_[pos_ + ahead] == c; }
@@ -160,15 +165,19 @@ class Lexer {
   Token finish(Tok kind, SourceLoc loc, std::string spelling) {
     loc.length = uint32_t(pos_ - loc.offset);
     if (spelling.size() > kMaxTokenBytes) {
-      diags_.error(loc, std::string(describe(kind)) + " is " + std::to_string(spelling.size()) +
-                            " characters long; the limit is " + std::to_string(kMaxTokenBytes), "limit");
+      diags_.error(loc,
+                   std::string(describe(kind)) + " is " + std::to_string(spelling.size()) +
+                       " characters long; the limit is " + std::to_string(kMaxTokenBytes),
+                   "limit");
       spelling.resize(kMaxTokenBytes);
     }
     return {kind, std::move(spelling), loc};
   }
 
   Token number(SourceLoc loc) {
-    auto digits = [&] { while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) advance(); };
+    auto digits = [&] {
+      while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) advance();
+    };
     digits();
     if (at('.')) {
       advance();
@@ -182,8 +191,10 @@ class Lexer {
       } else {  // "2e" or "2e+": an exponent with no digits is a typo, not 2 followed by a name
         SourceLoc at = loc;
         at.length = uint32_t(pos_ - loc.offset);
-        diags_.error(at, "number '" + std::string(text_.substr(loc.offset, pos_ - loc.offset)) +
-                             "' has an exponent with no digits", "lex");
+        diags_.error(
+            at,
+            "number '" + std::string(text_.substr(loc.offset, pos_ - loc.offset)) + "' has an exponent with no digits",
+            "lex");
       }
     }
     return finish(Tok::Number, loc, std::string(text_.substr(loc.offset, pos_ - loc.offset)));
@@ -233,10 +244,18 @@ class Lexer {
       case '>': return two('=', Tok::GreaterEqual, Tok::Greater);
       case '!': return two('=', Tok::NotEqual, Tok::Not);
       case '&':
-        if (at('&', 1)) { advance(); advance(); return Tok::AndAnd; }
+        if (at('&', 1)) {
+          advance();
+          advance();
+          return Tok::AndAnd;
+        }
         return Tok::End;
       case '|':
-        if (at('|', 1)) { advance(); advance(); return Tok::OrOr; }
+        if (at('|', 1)) {
+          advance();
+          advance();
+          return Tok::OrOr;
+        }
         return Tok::End;
       default: return Tok::End;
     }

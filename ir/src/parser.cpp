@@ -241,8 +241,8 @@ class Parser {
   ExprPtr finish(ExprPtr e) {
     for (const ExprPtr& a : e->args) e->height = std::max(e->height, a->height + 1);
     if (e->height > kMaxExpressionDepth)
-      fail(e->loc, "expression is more than " + std::to_string(kMaxExpressionDepth) +
-                       " operations deep; split it with 'let'");
+      fail(e->loc,
+           "expression is more than " + std::to_string(kMaxExpressionDepth) + " operations deep; split it with 'let'");
     return e;
   }
 
@@ -272,10 +272,16 @@ class Parser {
     switch (t) {
       case Tok::OrOr: return 1;
       case Tok::AndAnd: return 2;
-      case Tok::EqualEqual: case Tok::NotEqual: return 3;
-      case Tok::Less: case Tok::LessEqual: case Tok::Greater: case Tok::GreaterEqual: return 4;
-      case Tok::Plus: case Tok::Minus: return 5;
-      case Tok::Star: case Tok::Slash: return 6;
+      case Tok::EqualEqual:
+      case Tok::NotEqual: return 3;
+      case Tok::Less:
+      case Tok::LessEqual:
+      case Tok::Greater:
+      case Tok::GreaterEqual: return 4;
+      case Tok::Plus:
+      case Tok::Minus: return 5;
+      case Tok::Star:
+      case Tok::Slash: return 6;
       default: return -1;
     }
   }
@@ -356,8 +362,7 @@ class Parser {
         expect(Tok::RParen, "')'");
         return e;
       }
-      default:
-        fail(t.loc, "expected an expression, found " + spell(t));
+      default: fail(t.loc, "expected an expression, found " + spell(t));
     }
   }
 

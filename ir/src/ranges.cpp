@@ -41,7 +41,9 @@ Interval square(Interval a) {
 
 // f monotonic increasing on the interval.
 template <typename F>
-Interval increasing(Interval a, F f) { return span({f(a.lo), f(a.hi)}); }
+Interval increasing(Interval a, F f) {
+  return span({f(a.lo), f(a.hi)});
+}
 
 // pow(x, y) for x ≥ 0 is monotonic in x for fixed y and in y for fixed x, so its extremes over a
 // box lie at the corners. GLSL leaves pow undefined for x < 0: unknown.
@@ -74,8 +76,7 @@ class Analysis {
       return r;
     };
     switch (v.op) {
-      case Op::Constant:
-        return each([&](int i) { return Interval{v.constant[size_t(i)], v.constant[size_t(i)]}; });
+      case Op::Constant: return each([&](int i) { return Interval{v.constant[size_t(i)], v.constant[size_t(i)]}; });
       case Op::Param: return param(v, r);
       case Op::Attribute: return each([&](int) { return attributeRange(v.name); });
       case Op::Swizzle:
@@ -135,15 +136,12 @@ class Analysis {
       return each([&](int i) { return increasing(arg(0, i), [](double x) { return std::sqrt(std::max(x, 0.0)); }); });
     if (f == "exp2") return each([&](int i) { return increasing(arg(0, i), [](double x) { return std::exp2(x); }); });
     if (f == "log2")
-      return each([&](int i) {
-        return increasing(arg(0, i), [](double x) { return x <= 0 ? -kInf : std::log2(x); });
-      });
+      return each([&](int i) { return increasing(arg(0, i), [](double x) { return x <= 0 ? -kInf : std::log2(x); }); });
     if (f == "sin" || f == "cos" || f == "normalize") return each([&](int) { return kSigned; });
-    if (f == "sample") return each([&](int) { return kUnit; });          // 8-bit UNORM / sRGB images
+    if (f == "sample") return each([&](int) { return kUnit; });  // 8-bit UNORM / sRGB images
     if (f == "sample_normal") return each([&](int) { return Interval{-128.0 / 127.0, 1.0}; });  // emit_glsl's decode
-    if (f == "saturate" || f == "step" || f == "smoothstep") return each([&](int i) {
-        return f == "saturate" ? clampTo(arg(0, i), kUnit) : kUnit;
-      });
+    if (f == "saturate" || f == "step" || f == "smoothstep")
+      return each([&](int i) { return f == "saturate" ? clampTo(arg(0, i), kUnit) : kUnit; });
     if (f == "pow") return each([&](int i) { return pow(arg(0, i), arg(1, i)); });
     if (f == "min") return each([&](int i) { return minOf(arg(0, i), arg(1, i)); });
     if (f == "max") return each([&](int i) { return maxOf(arg(0, i), arg(1, i)); });

@@ -48,14 +48,17 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 // A budget's floor on the mediump share: "min_" and the figure's name.
-std::string minRelaxedPercentKey() { return std::string("min_") + compiler::costFigure(compiler::Figure::RelaxedPercent).name; }
+std::string minRelaxedPercentKey() {
+  return std::string("min_") + compiler::costFigure(compiler::Figure::RelaxedPercent).name;
+}
 
 // A name nothing reads would switch its check off without a word (a budget on "alus" limits
 // nothing): every name must be one lint knows.
 void knownFigure(const std::string& name, const std::string& pointer, bool budget) {
   const std::vector<std::string> names = figureNames();
   if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  fail(pointer, "unknown figure '" + name + "' (known: " + joined(names) + (budget ? ", " + minRelaxedPercentKey() : "") + ")");
+  fail(pointer,
+       "unknown figure '" + name + "' (known: " + joined(names) + (budget ? ", " + minRelaxedPercentKey() : "") + ")");
 }
 
 std::string tierNames() {

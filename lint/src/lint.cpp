@@ -71,7 +71,8 @@ class VariantRules {
                 "gles-limit");
     };
     check(f.interface.samplers, vertex ? L::kVertexSamplers : L::kFragmentSamplers, "samplers");
-    check(f.interface.uniformVectors, vertex ? L::kVertexUniformVectors : L::kFragmentUniformVectors, "uniform vectors");
+    check(f.interface.uniformVectors, vertex ? L::kVertexUniformVectors : L::kFragmentUniformVectors,
+          "uniform vectors");
     if (vertex) {
       check(f.interface.inputVectors, L::kVertexAttribs, "vertex attributes");
       check(f.interface.outputVectors, L::kVaryingVectors, "varying vectors");
@@ -85,11 +86,12 @@ class VariantRules {
   // texture misses every other texel, a position 1 km away moves in 0.5 m steps). Names are the
   // templates' varyings and shader_abi.h's attributes.
   void highpInputs(const std::string& key, const char* stage, const StageFigures& f) {
-    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_toEye", "v_uv0", "v_uv1", "a_position", "a_uv0", "a_uv1"};
+    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_toEye", "v_uv0", "v_uv1",
+                                                      "a_position",      "a_uv0",   "a_uv1"};
     for (const std::string& name : f.interface.relaxedInputs)
       if (mustBeHighp.count(name))
-        finding(ir::Severity::Error, where(key, stage) + " reads '" + name + "' in mediump; positions and UVs need highp",
-                "highp-required");
+        finding(ir::Severity::Error,
+                where(key, stage) + " reads '" + name + "' in mediump; positions and UVs need highp", "highp-required");
   }
 
   void budget(const std::string& key, const char* stage, const StageFigures& f) {
@@ -111,8 +113,9 @@ class VariantRules {
     }
     if (b.minRelaxedPercent && f.instructions().relaxedPercent() < *b.minRelaxedPercent)
       finding(ir::Severity::Error,
-              where(key, stage) + ": " + number(f.instructions().relaxedPercent()) + " % of float ops in mediump, below the " +
-                  t->first + " budget's " + number(*b.minRelaxedPercent) + " %",
+              where(key, stage) + ": " + number(f.instructions().relaxedPercent()) +
+                  " % of float ops in mediump, below the " + t->first + " budget's " + number(*b.minRelaxedPercent) +
+                  " %",
               "budget");
   }
 
@@ -134,8 +137,8 @@ class VariantRules {
       double allowed = std::max(was->second * (1.0 + options_.baselineTolerance), was->second + 1.0);
       if (value > allowed)
         finding(ir::Severity::Error,
-                where(key, stage) + ": " + name + " grew from " + number(was->second) + " to " + number(value) +
-                    " (+" + number(100.0 * (value - was->second) / std::max(was->second, 1.0)) + " %; tolerance " +
+                where(key, stage) + ": " + name + " grew from " + number(was->second) + " to " + number(value) + " (+" +
+                    number(100.0 * (value - was->second) / std::max(was->second, 1.0)) + " %; tolerance " +
                     number(100.0 * options_.baselineTolerance) + " %)",
                 "baseline-regression");
     }
@@ -149,13 +152,15 @@ class VariantRules {
 // Reads the SPIR-V of both stages into figures; false with *error when it cannot.
 bool variantFigures(const package::Variant& v, VariantFigures* figures, std::string* error) {
   figures->key = v.key;
-  for (auto [stage, dest] : {std::pair{package::Stage::Vertex, &figures->vertex}, {package::Stage::Fragment, &figures->fragment}}) {
+  for (auto [stage, dest] :
+       {std::pair{package::Stage::Vertex, &figures->vertex}, {package::Stage::Fragment, &figures->fragment}}) {
     std::vector<uint32_t> words;
     if (!spirvOf(v, stage, &words)) {
       *error = "no SPIR-V";
       return false;
     }
-    if (!compiler::estimateMobileCost(words, &dest->mobile, error) || !compiler::analyseStageInterface(words, &dest->interface, error))
+    if (!compiler::estimateMobileCost(words, &dest->mobile, error) ||
+        !compiler::analyseStageInterface(words, &dest->interface, error))
       return false;
   }
   return true;
@@ -164,14 +169,23 @@ bool variantFigures(const package::Variant& v, VariantFigures* figures, std::str
 }  // namespace
 
 bool MaterialLint::hasErrors() const {
-  return std::any_of(diagnostics.begin(), diagnostics.end(), [](const ir::Diagnostic& d) { return d.severity == ir::Severity::Error; });
+  return std::any_of(diagnostics.begin(), diagnostics.end(),
+                     [](const ir::Diagnostic& d) { return d.severity == ir::Severity::Error; });
 }
 
 std::span<const compiler::Figure> baselineFigures() {
   using F = compiler::Figure;
-  static constexpr F kFigures[] = {F::Cycles,   F::Alu,          F::ScalarAlu,     F::Transcendental,
-                                  F::Divisions, F::Textures,     F::VaryingComponents, F::InputVectors,
-                                  F::OutputVectors, F::UniformVectors, F::Samplers};
+  static constexpr F kFigures[] = {F::Cycles,
+                                   F::Alu,
+                                   F::ScalarAlu,
+                                   F::Transcendental,
+                                   F::Divisions,
+                                   F::Textures,
+                                   F::VaryingComponents,
+                                   F::InputVectors,
+                                   F::OutputVectors,
+                                   F::UniformVectors,
+                                   F::Samplers};
   return kFigures;
 }
 
@@ -221,7 +235,8 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
     std::string why;
     if (!variantFigures(v, &figures, &why)) {
       out.diagnostics.push_back({ir::Severity::Error, ir::SourceLoc{},
-                                 "internal error: cannot analyse the SPIR-V of variant " + v.key + ": " + why, "backend"});
+                                 "internal error: cannot analyse the SPIR-V of variant " + v.key + ": " + why,
+                                 "backend"});
       continue;
     }
     lintVariant(out.material, figures, options, &out.diagnostics);

@@ -29,7 +29,11 @@ bool isFloat(ir::Type t) { return t != ir::Type::Bool && t != ir::Type::Int && t
 class Rules {
  public:
   Rules(const ir::Material& m, bool mediump, ir::Diagnostics& diags)
-      : m_(m), module_(m.surface), mediump_(mediump), diags_(diags), ranges_(ir::analyse_ranges(m)),
+      : m_(m),
+        module_(m.surface),
+        mediump_(mediump),
+        diags_(diags),
+        ranges_(ir::analyse_ranges(m)),
         precision_(ir::analyse_precision(m, ranges_)) {}
 
   void run() {
@@ -58,8 +62,9 @@ class Rules {
     for (const ir::Param& p : m_.params) {
       if (!p.used || p.isColor || p.rangeMin || !isFloat(p.type)) continue;
       diags_.warning(p.loc,
-                     "parameter '" + p.name + "' has no range: in mediump tiers nothing proves its uses stay within "
-                     "fp16's ±65504; declare one with `in [lo, hi]`",
+                     "parameter '" + p.name +
+                         "' has no range: in mediump tiers nothing proves its uses stay within "
+                         "fp16's ±65504; declare one with `in [lo, hi]`",
                      "unranged-param");
     }
   }
@@ -86,24 +91,31 @@ class Rules {
     // |d| ≥ bound everywhere in the range: strictly for highp (0 itself is the problem).
     bool safe = mediump ? (r.lo >= bound || r.hi <= -bound) : (r.lo > 0.0 || r.hi < 0.0);
     if (safe) return;
-    std::string what = mediump ? "a mediump divisor with no proven magnitude ≥ 2^-14 (smaller values flush to 0 in fp16)"
-                               : "a divisor that can be 0";
+    std::string what = mediump
+                           ? "a mediump divisor with no proven magnitude ≥ 2^-14 (smaller values flush to 0 in fp16)"
+                           : "a divisor that can be 0";
     diags_.warning(locOf(division, d), "division by " + what + "; its range is " + describe(r), "division-bound");
   }
 
   void builtinDomain(const ir::Value& v, ValueId id) {
     if (v.name == "sqrt") {
       Interval x = hullOf(v.args[0]);
-      if (x.hi < 0.0) domainError(id, "sqrt of a value that is always negative " + describe(x) + " is NaN");
-      else if (x.lo < 0.0) domainWarning(id, "sqrt of a value that can be negative " + describe(x) + " is NaN there");
+      if (x.hi < 0.0)
+        domainError(id, "sqrt of a value that is always negative " + describe(x) + " is NaN");
+      else if (x.lo < 0.0)
+        domainWarning(id, "sqrt of a value that can be negative " + describe(x) + " is NaN there");
     } else if (v.name == "log2") {
       Interval x = hullOf(v.args[0]);
-      if (x.hi <= 0.0) domainError(id, "log2 of a value that is never positive " + describe(x) + " is -inf or NaN");
-      else if (x.lo <= 0.0) domainWarning(id, "log2 of a value that can be 0 or negative " + describe(x) + " is -inf or NaN there");
+      if (x.hi <= 0.0)
+        domainError(id, "log2 of a value that is never positive " + describe(x) + " is -inf or NaN");
+      else if (x.lo <= 0.0)
+        domainWarning(id, "log2 of a value that can be 0 or negative " + describe(x) + " is -inf or NaN there");
     } else if (v.name == "pow") {
       Interval x = hullOf(v.args[0]), y = hullOf(v.args[1]);
-      if (x.hi < 0.0) domainError(id, "pow(x, y) with x always negative " + describe(x) + " is undefined in GLSL");
-      else if (x.lo < 0.0) domainWarning(id, "pow(x, y) with x that can be negative " + describe(x) + " is undefined in GLSL there");
+      if (x.hi < 0.0)
+        domainError(id, "pow(x, y) with x always negative " + describe(x) + " is undefined in GLSL");
+      else if (x.lo < 0.0)
+        domainWarning(id, "pow(x, y) with x that can be negative " + describe(x) + " is undefined in GLSL there");
       else if (x.lo <= 0.0 && y.lo <= 0.0)
         domainWarning(id, "pow(x, y) with x that can be 0 and y that can be ≤ 0 is undefined in GLSL there");
     } else if (v.name == "smoothstep") {
@@ -126,9 +138,10 @@ class Rules {
       if (!isFloat(v.type)) continue;
       Interval r = hullOf(id);
       if (!r.bounded() || std::max(std::abs(r.lo), std::abs(r.hi)) <= kFp16Max) continue;
-      diags_.warning(locOf(id, id),
-                     "output '" + name + "' can reach " + describe(r) + ", beyond fp16's ±65504: mediump tiers store it as +inf",
-                     "fp16-overflow");
+      diags_.warning(
+          locOf(id, id),
+          "output '" + name + "' can reach " + describe(r) + ", beyond fp16's ±65504: mediump tiers store it as +inf",
+          "fp16-overflow");
     }
   }
 

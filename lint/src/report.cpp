@@ -72,9 +72,16 @@ json figuresJson(const StageFigures& s) {
 // The text table's columns.
 using compiler::Figure;
 constexpr compiler::FigureColumn kTextColumns[] = {
-    {Figure::Cycles, 6},    {Figure::Alu, 4},      {Figure::ScalarAlu, 6},         {Figure::Transcendental, 6},
-    {Figure::Divisions, 4}, {Figure::Textures, 4}, {Figure::VaryingComponents, 8}, {Figure::UniformVectors, 8},
-    {Figure::Samplers, 8},  {Figure::RelaxedPercent, 8},
+    {Figure::Cycles, 6},
+    {Figure::Alu, 4},
+    {Figure::ScalarAlu, 6},
+    {Figure::Transcendental, 6},
+    {Figure::Divisions, 4},
+    {Figure::Textures, 4},
+    {Figure::VaryingComponents, 8},
+    {Figure::UniformVectors, 8},
+    {Figure::Samplers, 8},
+    {Figure::RelaxedPercent, 8},
 };
 
 }  // namespace
@@ -98,9 +105,9 @@ std::string formatText(const std::vector<LintedFile>& files) {
     if (!f.result.gpuStats.empty()) out += "  " + gpu_stats::sourceNote(f.result.gpuStats) + "\n";
     for (const gpu_stats::GpuStats& g : f.result.gpuStats) {
       if (const compiler::GpuCalibration* c = estimateFor(g)) {
-        out += "  " + g.gpu + ": calibrated estimate of " + c->measure + " from the op counts instead (cross-validated error " +
-               percent(c->crossValidatedMeanError) + " mean, " + percent(c->crossValidatedMaxError) +
-               " max; docs/mesa-statistics.md)\n";
+        out += "  " + g.gpu + ": calibrated estimate of " + c->measure +
+               " from the op counts instead (cross-validated error " + percent(c->crossValidatedMeanError) + " mean, " +
+               percent(c->crossValidatedMaxError) + " max; docs/mesa-statistics.md)\n";
         for (const VariantFigures& v : f.result.variants) {
           char line[96];
           std::snprintf(line, sizeof line, "    %-18s fragment         %.2f\n", v.key.c_str(),
@@ -143,14 +150,17 @@ std::string formatJson(const std::vector<LintedFile>& files) {
     }
     jf["variants"] = json::array();
     for (const VariantFigures& v : f.result.variants)
-      jf["variants"].push_back({{"key", v.key}, {"vertex", figuresJson(v.vertex)}, {"fragment", figuresJson(v.fragment)}});
+      jf["variants"].push_back(
+          {{"key", v.key}, {"vertex", figuresJson(v.vertex)}, {"fragment", figuresJson(v.fragment)}});
     if (!f.result.gpuStats.empty()) {
       jf["gpus"] = json::array();
       for (const gpu_stats::GpuStats& g : f.result.gpuStats) {
         json jg = gpu_stats::toJson(g);
         if (const compiler::GpuCalibration* c = estimateFor(g)) {
-          json estimate = {{"measure", c->measure}, {"cross_validated_mean_error", c->crossValidatedMeanError},
-                           {"cross_validated_max_error", c->crossValidatedMaxError}, {"variants", json::object()}};
+          json estimate = {{"measure", c->measure},
+                           {"cross_validated_mean_error", c->crossValidatedMeanError},
+                           {"cross_validated_max_error", c->crossValidatedMaxError},
+                           {"variants", json::object()}};
           for (const VariantFigures& v : f.result.variants)
             estimate["variants"][v.key] = compiler::calibratedEstimate(v.fragment.mobile.counts, *c);
           jg["calibrated_estimate"] = estimate;
@@ -181,7 +191,8 @@ std::string formatSarif(const std::vector<LintedFile>& files, const std::string&
   json run = {{"tool", {{"driver", {{"name", "matc lint"}, {"version", toolVersion}, {"rules", rules}}}}},
               {"columnKind", "unicodeCodePoints"},
               {"results", results}};
-  json root = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", json::array({run})}};
+  json root = {
+      {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", json::array({run})}};
   return root.dump(2) + "\n";
 }
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
-#include "facet/abi/shader_abi.h"
 #include "spirv_reflection.h"
 #include "untrusted_spirv.h"
 
@@ -32,7 +32,8 @@ const GeneratedTextureSlot* generatedTextureSlot(const std::string& name) {
   return nullptr;
 }
 
-std::string unknownTextureError(const std::string& material, const std::string& variantKey, const std::string& texture) {
+std::string unknownTextureError(const std::string& material, const std::string& variantKey,
+                                const std::string& texture) {
   return "material '" + material + "' variant '" + variantKey + "' samples texture '" + texture +
          "', which this runtime does not know; update the runtime or recompile the material";
 }
@@ -91,7 +92,9 @@ std::optional<ProgramInterface> variantInterface(const PackageReader& reader, si
   // The key parses: semanticError checked it.
   const std::optional<permutations::VariantKey> parsed = permutations::VariantKey::parse(key);
   const bool splitSum = parsed && permutations::preset(parsed->tier).ambient == permutations::AmbientModel::SplitSum;
-  const auto frame = [&](const abi::SamplerDesc& d) { out.samplers.push_back({std::string(d.name), d.binding, d.cube}); };
+  const auto frame = [&](const abi::SamplerDesc& d) {
+    out.samplers.push_back({std::string(d.name), d.binding, d.cube});
+  };
   if (m.shading == "lit") frame(abi::kEnvironmentSampler);
   if (m.shading == "lit" && splitSum) frame(abi::kDfgLutSampler);
   for (const TextureInfo& t : reader.textures()) {

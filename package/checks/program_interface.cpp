@@ -17,8 +17,8 @@ bool isParameterType(const ValueType& t) {
 // and a bool in GL's reflection.
 bool holds(const ValueType& parameter, const ValueType& member) {
   if (parameter.kind == ScalarKind::Bool)
-    return (member.kind == ScalarKind::Bool || member.kind == ScalarKind::Uint) && member.components == parameter.components &&
-           member.columns == 1 && member.arraySize == 0;
+    return (member.kind == ScalarKind::Bool || member.kind == ScalarKind::Uint) &&
+           member.components == parameter.components && member.columns == 1 && member.arraySize == 0;
   return member == parameter;
 }
 
@@ -31,7 +31,8 @@ class StageCheck {
       if (std::string e = block(b); !e.empty()) return e;
     for (const ReflectedSampler& s : stage_.samplers)
       if (std::string e = sampler(s); !e.empty()) return e;
-    if (!stage_.unsupported.empty()) return "declares " + stage_.unsupported.front() + ", which the runtime does not bind";
+    if (!stage_.unsupported.empty())
+      return "declares " + stage_.unsupported.front() + ", which the runtime does not bind";
     if (stage_.stage == package::Stage::Vertex)
       for (const ReflectedVariable& v : stage_.inputs)
         if (std::string e = vertexInput(v); !e.empty()) return e;
@@ -113,7 +114,8 @@ class StageCheck {
     const ProgramInterface::Sampler* bound = nullptr;
     for (const ProgramInterface::Sampler& d : declared_.samplers)
       if (stage_.bindsByName ? s.name == d.name : (s.set == abi::kTextureSet && s.binding == d.binding)) bound = &d;
-    const std::string at = stage_.bindsByName ? "" : " (set " + std::to_string(s.set) + " binding " + std::to_string(s.binding) + ")";
+    const std::string at =
+        stage_.bindsByName ? "" : " (set " + std::to_string(s.set) + " binding " + std::to_string(s.binding) + ")";
     const std::string what = "sampler '" + s.name + "'" + at;
     if (!bound) return "samples " + what + ", which the variant's draws do not bind" + missingTexture(s);
     if (s.arraySize != 0) return "declares " + what + " as an array; the runtime binds one texture there";
@@ -148,21 +150,25 @@ class StageCheck {
       // that attribute (GL assigns locations the shader leaves out).
       const std::string supplies = "a_" + std::string(a.name);
       if (!v.name.empty() && v.name != supplies)
-        return "reads " + what + " at location " + std::to_string(a.location) + ", where the runtime supplies " + supplies;
+        return "reads " + what + " at location " + std::to_string(a.location) + ", where the runtime supplies " +
+               supplies;
       const ValueType supplied{ScalarKind::Float, a.components};
       if (v.type != supplied)
         return "reads " + what + " at location " + std::to_string(a.location) + " as " + toString(v.type) +
                "; the runtime supplies " + supplies + " there as " + toString(supplied);
       return "";
     }
-    return "reads " + what + " at location " + std::to_string(*v.location) + ", where the runtime supplies no attribute";
+    return "reads " + what + " at location " + std::to_string(*v.location) +
+           ", where the runtime supplies no attribute";
   }
 
   std::string fragmentOutput(const ReflectedVariable& v) const {
     const ValueType colour{ScalarKind::Float, 4};
     if (v.location != abi::kForwardColorLocation || v.type != colour)
-      return "writes output '" + v.name + "' (" + toString(v.type) + (v.location ? " at location " + std::to_string(*v.location) : "") +
-             "); the forward pass has one colour target, a vec4 at location " + std::to_string(abi::kForwardColorLocation);
+      return "writes output '" + v.name + "' (" + toString(v.type) +
+             (v.location ? " at location " + std::to_string(*v.location) : "") +
+             "); the forward pass has one colour target, a vec4 at location " +
+             std::to_string(abi::kForwardColorLocation);
     return "";
   }
 
@@ -195,13 +201,20 @@ std::string linkageError(const ReflectedStage& vertex, const ReflectedStage& fra
 
 std::string toString(const ValueType& t) {
   std::string s;
-  const char* prefix = t.kind == ScalarKind::Int ? "i" : t.kind == ScalarKind::Uint ? "u" : t.kind == ScalarKind::Bool ? "b" : "";
+  const char* prefix = t.kind == ScalarKind::Int    ? "i"
+                       : t.kind == ScalarKind::Uint ? "u"
+                       : t.kind == ScalarKind::Bool ? "b"
+                                                    : "";
   if (t.kind == ScalarKind::Other) {
     s = "a type other than a number, vector or matrix";
   } else if (t.columns > 1) {
-    s = std::string(prefix) + "mat" + std::to_string(t.columns) + (t.components != t.columns ? "x" + std::to_string(t.components) : "");
+    s = std::string(prefix) + "mat" + std::to_string(t.columns) +
+        (t.components != t.columns ? "x" + std::to_string(t.components) : "");
   } else if (t.components == 1) {
-    s = t.kind == ScalarKind::Int ? "int" : t.kind == ScalarKind::Uint ? "uint" : t.kind == ScalarKind::Bool ? "bool" : "float";
+    s = t.kind == ScalarKind::Int    ? "int"
+        : t.kind == ScalarKind::Uint ? "uint"
+        : t.kind == ScalarKind::Bool ? "bool"
+                                     : "float";
   } else {
     s = std::string(prefix) + "vec" + std::to_string(t.components);
   }

@@ -59,7 +59,9 @@ class Reflector {
     return uint32_t(n);
   }
 
-  uint32_t decoration(spvc_variable_id id, SpvDecoration d) const { return spvc_compiler_get_decoration(compiler_, id, d); }
+  uint32_t decoration(spvc_variable_id id, SpvDecoration d) const {
+    return spvc_compiler_get_decoration(compiler_, id, d);
+  }
 
   bool builtIn(const spvc_reflected_resource& r) const {
     if (spvc_compiler_has_decoration(compiler_, r.id, SpvDecorationBuiltIn)) return true;
@@ -104,17 +106,20 @@ class Reflector {
     const SpvDim dim = spvc_type_get_image_dimension(image);
     const bool plain = !spvc_type_get_image_is_depth(image) && !spvc_type_get_image_arrayed(image) &&
                        !spvc_type_get_image_multisampled(image) &&
-                       spvc_type_get_basetype(spvc_compiler_get_type_handle(compiler_, spvc_type_get_image_sampled_type(image))) ==
-                           SPVC_BASETYPE_FP32;
-    s.shape = !plain ? SamplerShape::Other : dim == SpvDim2D ? SamplerShape::Flat2D : dim == SpvDimCube ? SamplerShape::Cube
-                                                                                                         : SamplerShape::Other;
+                       spvc_type_get_basetype(spvc_compiler_get_type_handle(
+                           compiler_, spvc_type_get_image_sampled_type(image))) == SPVC_BASETYPE_FP32;
+    s.shape = !plain              ? SamplerShape::Other
+              : dim == SpvDim2D   ? SamplerShape::Flat2D
+              : dim == SpvDimCube ? SamplerShape::Cube
+                                  : SamplerShape::Other;
     return s;
   }
 
   ReflectedVariable variable(const spvc_reflected_resource& r) const {
     ReflectedVariable v;
     v.name = r.name;
-    if (spvc_compiler_has_decoration(compiler_, r.id, SpvDecorationLocation)) v.location = decoration(r.id, SpvDecorationLocation);
+    if (spvc_compiler_has_decoration(compiler_, r.id, SpvDecorationLocation))
+      v.location = decoration(r.id, SpvDecorationLocation);
     v.type = valueType(r.type_id);
     return v;
   }
@@ -133,19 +138,22 @@ bool reflectSpirv(const std::vector<uint32_t>& words, package::Stage stage, Refl
   }
   std::unique_ptr<spvc_context_s, ContextDeleter> context(raw);
   const auto fail = [&](const char* step) {
-    *error = std::string("cannot be reflected (SPIRV-Cross ") + step + ": " + spvc_context_get_last_error_string(raw) + ")";
+    *error =
+        std::string("cannot be reflected (SPIRV-Cross ") + step + ": " + spvc_context_get_last_error_string(raw) + ")";
     return false;
   };
   spvc_parsed_ir ir = nullptr;
   spvc_compiler compiler = nullptr;
   if (spvc_context_parse_spirv(raw, words.data(), words.size(), &ir) != SPVC_SUCCESS) return fail("parse");
-  if (spvc_context_create_compiler(raw, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) != SPVC_SUCCESS)
+  if (spvc_context_create_compiler(raw, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) !=
+      SPVC_SUCCESS)
     return fail("compiler");
 
   const spvc_entry_point* entries = nullptr;
   size_t entryCount = 0;
   if (spvc_compiler_get_entry_points(compiler, &entries, &entryCount) != SPVC_SUCCESS) return fail("entry points");
-  const SpvExecutionModel expected = stage == package::Stage::Vertex ? SpvExecutionModelVertex : SpvExecutionModelFragment;
+  const SpvExecutionModel expected =
+      stage == package::Stage::Vertex ? SpvExecutionModelVertex : SpvExecutionModelFragment;
   if (entryCount != 1) {
     *error = "has " + std::to_string(entryCount) + " entry points; a package shader has exactly one, 'main'";
     return false;
@@ -179,20 +187,27 @@ bool reflectSpirv(const std::vector<uint32_t>& words, package::Stage stage, Refl
   *out = {};
   out->stage = stage;
   out->what = std::string(package::toString(stage)) + " shader (SPIR-V)";
-  for (const spvc_reflected_resource& r : list(used, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER)) out->blocks.push_back(reflector.block(r));
-  for (const spvc_reflected_resource& r : list(used, SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) out->samplers.push_back(reflector.sampler(r));
+  for (const spvc_reflected_resource& r : list(used, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER))
+    out->blocks.push_back(reflector.block(r));
+  for (const spvc_reflected_resource& r : list(used, SPVC_RESOURCE_TYPE_SAMPLED_IMAGE))
+    out->samplers.push_back(reflector.sampler(r));
   for (const spvc_reflected_resource& r : list(declared, SPVC_RESOURCE_TYPE_STAGE_INPUT))
     if (!reflector.builtIn(r)) out->inputs.push_back(reflector.variable(r));
   for (const spvc_reflected_resource& r : list(declared, SPVC_RESOURCE_TYPE_STAGE_OUTPUT))
     if (!reflector.builtIn(r)) out->outputs.push_back(reflector.variable(r));
   const std::pair<spvc_resource_type, const char*> unsupported[] = {
-      {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, "storage buffer"},     {SPVC_RESOURCE_TYPE_SUBPASS_INPUT, "subpass input"},
-      {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, "storage image"},       {SPVC_RESOURCE_TYPE_ATOMIC_COUNTER, "atomic counter"},
-      {SPVC_RESOURCE_TYPE_PUSH_CONSTANT, "push constant block"}, {SPVC_RESOURCE_TYPE_SEPARATE_IMAGE, "separate image"},
-      {SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS, "separate sampler"}, {SPVC_RESOURCE_TYPE_ACCELERATION_STRUCTURE, "acceleration structure"},
+      {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, "storage buffer"},
+      {SPVC_RESOURCE_TYPE_SUBPASS_INPUT, "subpass input"},
+      {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, "storage image"},
+      {SPVC_RESOURCE_TYPE_ATOMIC_COUNTER, "atomic counter"},
+      {SPVC_RESOURCE_TYPE_PUSH_CONSTANT, "push constant block"},
+      {SPVC_RESOURCE_TYPE_SEPARATE_IMAGE, "separate image"},
+      {SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS, "separate sampler"},
+      {SPVC_RESOURCE_TYPE_ACCELERATION_STRUCTURE, "acceleration structure"},
   };
   for (const auto& [kind, what] : unsupported)
-    for (const spvc_reflected_resource& r : list(used, kind)) out->unsupported.push_back(std::string(what) + " '" + r.name + "'");
+    for (const spvc_reflected_resource& r : list(used, kind))
+      out->unsupported.push_back(std::string(what) + " '" + r.name + "'");
   return true;
 }
 

@@ -51,8 +51,7 @@ Codec BlobEncoder::encode(std::span<const uint8_t> raw, std::vector<uint8_t>& st
   stored.resize(ZSTD_compressBound(raw.size()));
   // ZSTD_compressCCtx writes the content size into the frame header (the reader checks it
   // against raw_size) and no zstd checksum (the content hash already covers the code).
-  size_t n = ZSTD_compressCCtx(context_.get(), stored.data(), stored.size(), raw.data(),
-                               raw.size(), kZstdLevel);
+  size_t n = ZSTD_compressCCtx(context_.get(), stored.data(), stored.size(), raw.data(), raw.size(), kZstdLevel);
   if (!ZSTD_isError(n) && n < raw.size()) {
     stored.resize(n);
     return Codec::Zstd;
@@ -61,9 +60,8 @@ Codec BlobEncoder::encode(std::span<const uint8_t> raw, std::vector<uint8_t>& st
   return Codec::Raw;
 }
 
-bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> stored,
-                uint64_t fileOffset, std::span<const uint8_t> dictionary, std::vector<uint8_t>& raw,
-                std::string& error) {
+bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> stored, uint64_t fileOffset,
+                std::span<const uint8_t> dictionary, std::vector<uint8_t>& raw, std::string& error) {
   const std::string where = "blob " + std::to_string(index) + " at byte " + std::to_string(fileOffset);
   if (entry.codec == Codec::Raw) {
     raw.assign(stored.begin(), stored.end());
@@ -81,8 +79,8 @@ bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t>
       return false;
     }
     if (declared != entry.rawSize) {
-      error = where + " has a zstd frame of " + std::to_string(declared) +
-              " bytes but the blob table says " + std::to_string(entry.rawSize);
+      error = where + " has a zstd frame of " + std::to_string(declared) + " bytes but the blob table says " +
+              std::to_string(entry.rawSize);
       return false;
     }
     raw.resize(entry.rawSize);
@@ -96,8 +94,7 @@ bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t>
       n = ZSTD_decompress(raw.data(), raw.size(), stored.data(), stored.size());
     }
     if (ZSTD_isError(n) || n != entry.rawSize) {
-      error = where + " does not decompress: " +
-              (ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong decompressed size");
+      error = where + " does not decompress: " + (ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong decompressed size");
       return false;
     }
   }

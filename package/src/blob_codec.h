@@ -15,7 +15,7 @@
 namespace facet::package::detail {
 
 class BlobEncoder {
-public:
+ public:
   BlobEncoder();
 
   // Returns the codec chosen (Zstd or Raw); `stored` receives the bytes to write.
@@ -27,7 +27,7 @@ public:
   // Returns ZstdDictionary or Raw.
   Codec encodeWithDictionary(std::span<const uint8_t> raw, std::vector<uint8_t>& stored);
 
-private:
+ private:
   // One context per mode, reused for every blob of a package: zstd's level-19 tables, and the
   // dictionary's, are large to set up.
   std::unique_ptr<ZSTD_CCtx, size_t (*)(ZSTD_CCtx*)> context_;
@@ -42,9 +42,8 @@ inline constexpr uint32_t kZstdDictionaryMagic = 0xEC30A437;
 // bounds). `fileOffset` is where the stored bytes start, for messages. `dictionary` is the raw
 // bytes of entry.dictionary for a ZstdDictionary blob, ignored otherwise. Checks the zstd frame
 // header against raw_size before allocating, and the content hash after decoding.
-bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> stored,
-                uint64_t fileOffset, std::span<const uint8_t> dictionary, std::vector<uint8_t>& raw,
-                std::string& error);
+bool decodeBlob(const BlobEntry& entry, uint32_t index, std::span<const uint8_t> stored, uint64_t fileOffset,
+                std::span<const uint8_t> dictionary, std::vector<uint8_t>& raw, std::string& error);
 
 // The content hash of a blob's raw bytes against its table entry; what decodeBlob checks last,
 // and all the lazy reader checks for a blob stored raw (served without a copy).

@@ -33,8 +33,7 @@ void decodeBlobTable(ByteReader& in, uint64_t dataSize, uint16_t minor, std::vec
     b.dictionary = in.u32();
     if (!in.ok()) return;
     const std::string what = "blob " + std::to_string(i) + " (table entry at byte " + std::to_string(at) + ")";
-    if (codec > uint32_t(Codec::ZstdDictionary))
-      return in.fail(what + " has unknown codec " + std::to_string(codec));
+    if (codec > uint32_t(Codec::ZstdDictionary)) return in.fail(what + " has unknown codec " + std::to_string(codec));
     b.codec = Codec(codec);
     if (b.codec == Codec::ZstdDictionary && minor < kFirstMinorWithDictionary)
       return in.fail(what + " is compressed against a dictionary, which format 1." + std::to_string(minor) +
@@ -46,11 +45,11 @@ void decodeBlobTable(ByteReader& in, uint64_t dataSize, uint16_t minor, std::vec
                      std::to_string(expectedOffset));
     if (b.storedSize > dataSize - b.offset)
       return in.fail(what + " has " + std::to_string(b.storedSize) + " stored bytes at data offset " +
-                     std::to_string(b.offset) + " but the blob data section has " +
-                     std::to_string(dataSize) + " bytes");
+                     std::to_string(b.offset) + " but the blob data section has " + std::to_string(dataSize) +
+                     " bytes");
     if (b.rawSize > kMaxBlobRawSize)
-      return in.fail(what + " claims a raw size of " + std::to_string(b.rawSize) +
-                     " bytes, more than the limit of " + std::to_string(kMaxBlobRawSize));
+      return in.fail(what + " claims a raw size of " + std::to_string(b.rawSize) + " bytes, more than the limit of " +
+                     std::to_string(kMaxBlobRawSize));
     if (b.codec == Codec::Raw && b.storedSize != b.rawSize)
       return in.fail(what + " is stored raw but its stored size " + std::to_string(b.storedSize) +
                      " differs from its raw size " + std::to_string(b.rawSize));
@@ -69,16 +68,15 @@ void decodeBlobTable(ByteReader& in, uint64_t dataSize, uint16_t minor, std::vec
     if (blobs[i].codec != Codec::ZstdDictionary) continue;
     const uint32_t d = blobs[i].dictionary;
     if (d >= blobs.size())
-      return in.fail("blob " + std::to_string(i) + " names dictionary blob " + std::to_string(d) + " but the package has " +
-                     std::to_string(blobs.size()) + " blobs");
+      return in.fail("blob " + std::to_string(i) + " names dictionary blob " + std::to_string(d) +
+                     " but the package has " + std::to_string(blobs.size()) + " blobs");
     if (blobs[d].codec == Codec::ZstdDictionary)
       return in.fail("blob " + std::to_string(i) + " names dictionary blob " + std::to_string(d) +
                      ", which is itself compressed against a dictionary");
   }
   in.expectEnd();
   if (in.ok() && expectedOffset != dataSize)
-    in.fail("blob data section has " + std::to_string(dataSize - expectedOffset) +
-            " bytes not covered by any blob");
+    in.fail("blob data section has " + std::to_string(dataSize - expectedOffset) + " bytes not covered by any blob");
 }
 
 }  // namespace facet::package::detail

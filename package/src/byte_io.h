@@ -11,7 +11,7 @@
 namespace facet::package::detail {
 
 class ByteWriter {
-public:
+ public:
   explicit ByteWriter(std::vector<uint8_t>& out) : out_(out) {}
 
   void u8(uint8_t v) { out_.push_back(v); }
@@ -29,7 +29,7 @@ public:
   }
   uint64_t size() const { return out_.size(); }
 
-private:
+ private:
   void le(uint64_t v, int n) {
     for (int i = 0; i < n; ++i) out_.push_back(uint8_t(v >> (8 * i)));
   }
@@ -50,7 +50,7 @@ inline void storeLE(uint8_t* p, uint64_t v, int n) {
 // returns zero and consumes nothing, so decoding loops end quickly and the first (most precise)
 // message is the one reported. Positions in messages are absolute file offsets.
 class ByteReader {
-public:
+ public:
   ByteReader(std::span<const uint8_t> file, uint64_t begin, uint64_t end, std::string_view section)
       : file_(file), pos_(begin), end_(end), section_(section) {}
 
@@ -66,9 +66,8 @@ public:
     uint32_t n = u32();
     if (!ok()) return {};
     if (n > remaining()) {
-      fail(std::string(what) + " at byte " + std::to_string(at) + " claims " + std::to_string(n) +
-           " bytes but only " + std::to_string(remaining()) + " remain in section '" + section_ +
-           "'");
+      fail(std::string(what) + " at byte " + std::to_string(at) + " claims " + std::to_string(n) + " bytes but only " +
+           std::to_string(remaining()) + " remain in section '" + section_ + "'");
       return {};
     }
     std::string s(reinterpret_cast<const char*>(file_.data() + pos_), n);
@@ -83,10 +82,9 @@ public:
     uint32_t n = u32();
     if (!ok()) return 0;
     if (uint64_t(n) * minElementSize > remaining()) {
-      fail(std::string(what) + " " + std::to_string(n) + " at byte " + std::to_string(at) +
-           " needs at least " + std::to_string(uint64_t(n) * minElementSize) +
-           " bytes but only " + std::to_string(remaining()) + " remain in section '" + section_ +
-           "'");
+      fail(std::string(what) + " " + std::to_string(n) + " at byte " + std::to_string(at) + " needs at least " +
+           std::to_string(uint64_t(n) * minElementSize) + " bytes but only " + std::to_string(remaining()) +
+           " remain in section '" + section_ + "'");
       return 0;
     }
     return n;
@@ -95,8 +93,8 @@ public:
   // Every section is decoded completely; stray bytes mean writer and reader disagree.
   void expectEnd() {
     if (ok() && pos_ != end_)
-      fail("section '" + section_ + "' has " + std::to_string(end_ - pos_) +
-           " unexpected trailing bytes at byte " + std::to_string(pos_));
+      fail("section '" + section_ + "' has " + std::to_string(end_ - pos_) + " unexpected trailing bytes at byte " +
+           std::to_string(pos_));
   }
 
   void fail(std::string message) {
@@ -109,7 +107,7 @@ public:
   uint64_t remaining() const { return end_ - pos_; }
   const std::string& section() const { return section_; }
 
-private:
+ private:
   uint64_t fixed(int n, const char* what) {
     if (!ok()) return 0;
     if (uint64_t(n) > remaining()) {

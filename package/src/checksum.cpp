@@ -18,13 +18,10 @@ uint64_t fileChecksum(std::span<const uint8_t> file) {
   XXH3_64bits_reset(state.get());
   XXH3_64bits_update(state.get(), file.data(), kChecksumOffset);
   XXH3_64bits_update(state.get(), zeros.data(), zeros.size());
-  XXH3_64bits_update(state.get(), file.data() + kChecksumOffset + 8,
-                     file.size() - (kChecksumOffset + 8));
+  XXH3_64bits_update(state.get(), file.data() + kChecksumOffset + 8, file.size() - (kChecksumOffset + 8));
   return XXH3_64bits_digest(state.get());
 }
 
-uint64_t contentHash(std::span<const uint8_t> code) {
-  return XXH3_64bits(code.data(), code.size());
-}
+uint64_t contentHash(std::span<const uint8_t> code) { return XXH3_64bits(code.data(), code.size()); }
 
 }  // namespace facet::package::detail

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <vector>
 #include <system_error>
+#include <vector>
 
 #include "facet/package/atomic_file.h"
 #include "facet/package/package.h"

@@ -30,15 +30,14 @@ inline constexpr uint64_t kTocEntrySize = 24;
 inline constexpr uint64_t kSectionAlignment = 8;
 
 constexpr uint32_t fourcc(char a, char b, char c, char d) {
-  return uint32_t(uint8_t(a)) | uint32_t(uint8_t(b)) << 8 | uint32_t(uint8_t(c)) << 16 |
-         uint32_t(uint8_t(d)) << 24;
+  return uint32_t(uint8_t(a)) | uint32_t(uint8_t(b)) << 8 | uint32_t(uint8_t(c)) << 16 | uint32_t(uint8_t(d)) << 24;
 }
 
-inline constexpr uint32_t kTagMeta = fourcc('M', 'E', 'T', 'A');       // compiler version + material
-inline constexpr uint32_t kTagVariants = fourcc('V', 'A', 'R', 'S');   // variant table
-inline constexpr uint32_t kTagBlobTable = fourcc('B', 'T', 'A', 'B');  // one entry per blob
-inline constexpr uint32_t kTagBlobData = fourcc('B', 'D', 'A', 'T');   // blob bytes, back to back
-inline constexpr uint32_t kTagTextures = fourcc('T', 'E', 'X', 'S');   // generated textures (optional)
+inline constexpr uint32_t kTagMeta = fourcc('M', 'E', 'T', 'A');         // compiler version + material
+inline constexpr uint32_t kTagVariants = fourcc('V', 'A', 'R', 'S');     // variant table
+inline constexpr uint32_t kTagBlobTable = fourcc('B', 'T', 'A', 'B');    // one entry per blob
+inline constexpr uint32_t kTagBlobData = fourcc('B', 'D', 'A', 'T');     // blob bytes, back to back
+inline constexpr uint32_t kTagTextures = fourcc('T', 'E', 'X', 'S');     // generated textures (optional)
 inline constexpr uint32_t kTagMslBindings = fourcc('M', 'S', 'L', 'B');  // Metal argument slots (optional, 1.2)
 inline constexpr uint16_t kFirstMinorWithMslBindings = 2;
 inline constexpr uint32_t kTagPreshader = fourcc('P', 'R', 'S', 'H');  // preshader programs (optional, 1.3)
@@ -70,10 +69,10 @@ enum class Codec : uint32_t { Raw = 0, Zstd = 1, ZstdDictionary = 2 };
 inline constexpr uint16_t kFirstMinorWithDictionary = 1;
 
 // Encoded sizes of fixed-size records, used to check counts against the bytes available.
-inline constexpr uint64_t kShaderInfoSize = 8;    // u8 stage, u8 target, u16 reserved, u32 blob
-inline constexpr uint64_t kMinVariantSize = 8;   // u32 key length, u32 shader count
-inline constexpr uint64_t kMinParamSize = 16;    // u32 name length, 4 x u8, u32 offset, u32 size
-inline constexpr uint64_t kBlobEntrySize = 40;   // 4 x u64, u32 codec, u32 dictionary blob
+inline constexpr uint64_t kShaderInfoSize = 8;  // u8 stage, u8 target, u16 reserved, u32 blob
+inline constexpr uint64_t kMinVariantSize = 8;  // u32 key length, u32 shader count
+inline constexpr uint64_t kMinParamSize = 16;   // u32 name length, 4 x u8, u32 offset, u32 size
+inline constexpr uint64_t kBlobEntrySize = 40;  // 4 x u64, u32 codec, u32 dictionary blob
 // u32 name length, u32 width, u32 height, u8 format, u8 + u16 reserved, u32 blob, u32 variant count
 inline constexpr uint64_t kMinTextureSize = 24;
 inline constexpr uint64_t kVariantIndexSize = 4;
@@ -91,7 +90,7 @@ struct BlobEntry {
   uint64_t storedSize = 0;
   uint64_t rawSize = 0;
   Codec codec = Codec::Raw;
-  uint32_t dictionary = 0;   // ZstdDictionary: the blob whose raw bytes are the dictionary; else 0
+  uint32_t dictionary = 0;  // ZstdDictionary: the blob whose raw bytes are the dictionary; else 0
 };
 
 // Number of default-value components a parameter of this type carries. Color accepts both RGB

@@ -68,8 +68,7 @@ void decodeMetadata(ByteReader& in, std::string& compilerVersion, MaterialInfo& 
       return;
     }
     if (!defaultCountMatches(p.type, components)) {
-      in.fail(what + " of type " + toString(p.type) + " has " + std::to_string(components) +
-              " default components");
+      in.fail(what + " of type " + toString(p.type) + " has " + std::to_string(components) + " default components");
       return;
     }
     // A parameter either has a slot inside the block (size = 4 bytes per component) or none

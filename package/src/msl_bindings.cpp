@@ -85,7 +85,8 @@ void decodeMslBindings(ByteReader& in, std::vector<MslBinding>& bindings) {
     if (!in.ok()) return;
     const std::string what = "Metal binding " + std::to_string(i) + " at byte " + std::to_string(at);
     if (!isGlslIdentifier(b.name, kMaxMslNameLength))
-      return in.fail(what + " has a name that is not an identifier of 1.." + std::to_string(kMaxMslNameLength) + " bytes");
+      return in.fail(what + " has a name that is not an identifier of 1.." + std::to_string(kMaxMslNameLength) +
+                     " bytes");
     if (kind > kLastMslResource) return in.fail(what + " has unknown kind " + std::to_string(kind));
     if (reserved8 != 0 || reserved16 != 0) return in.fail(what + " has reserved bits set");
     b.kind = MslResource(kind);

@@ -61,9 +61,9 @@ bool isValidName(std::string_view s) {
 }
 
 std::optional<ParamType> paramTypeFromString(std::string_view name) {
-  for (ParamType t : {ParamType::Float, ParamType::Vec2, ParamType::Vec3, ParamType::Vec4,
-                      ParamType::Int, ParamType::Bool, ParamType::Color,
-                      ParamType::TextureSrgb, ParamType::TextureLinear, ParamType::TextureNormal}) {
+  for (ParamType t :
+       {ParamType::Float, ParamType::Vec2, ParamType::Vec3, ParamType::Vec4, ParamType::Int, ParamType::Bool,
+        ParamType::Color, ParamType::TextureSrgb, ParamType::TextureLinear, ParamType::TextureNormal}) {
     if (name == toString(t)) return t;
   }
   return std::nullopt;

@@ -55,8 +55,8 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
     return false;
   }
   if (size < kHeaderSize) {
-    error = "package is truncated: the header needs " + std::to_string(kHeaderSize) +
-            " bytes but the file has " + std::to_string(size) + " bytes";
+    error = "package is truncated: the header needs " + std::to_string(kHeaderSize) + " bytes but the file has " +
+            std::to_string(size) + " bytes";
     return false;
   }
   // The version is checked before anything else it might change the meaning of.
@@ -70,17 +70,18 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
   if (major != kFormatMajor || minor > kFormatMinor) {
     const std::string theirs = std::to_string(major) + "." + std::to_string(minor);
     const std::string ours = std::to_string(kFormatMajor) + "." + std::to_string(kFormatMinor);
-    error = "package format " + theirs + " is not supported: this reader reads formats " + std::to_string(kFormatMajor) +
-            ".0 to " + ours + " (" + (major > kFormatMajor || (major == kFormatMajor && minor > kFormatMinor)
-                                          ? "the package was built by a newer compiler"
-                                          : "the package was built by an older, incompatible compiler") +
+    error = "package format " + theirs + " is not supported: this reader reads formats " +
+            std::to_string(kFormatMajor) + ".0 to " + ours + " (" +
+            (major > kFormatMajor || (major == kFormatMajor && minor > kFormatMinor)
+                 ? "the package was built by a newer compiler"
+                 : "the package was built by an older, incompatible compiler") +
             "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
     return false;
   }
   uint64_t declared = loadLE(file.data() + kFileSizeOffset, 8);
   if (declared > size) {
-    error = "package is truncated: the header declares " + std::to_string(declared) +
-            " bytes but the file has " + std::to_string(size) + " bytes";
+    error = "package is truncated: the header declares " + std::to_string(declared) + " bytes but the file has " +
+            std::to_string(size) + " bytes";
     return false;
   }
   if (declared < size) {
@@ -91,8 +92,7 @@ bool checkHeader(std::span<const uint8_t> file, std::string& error) {
   uint64_t expected = loadLE(file.data() + kChecksumOffset, 8);
   uint64_t computed = fileChecksum(file);
   if (expected != computed) {
-    error = "checksum mismatch: file is corrupt (expected " + hex(expected) + ", computed " +
-            hex(computed) + ")";
+    error = "checksum mismatch: file is corrupt (expected " + hex(expected) + ", computed " + hex(computed) + ")";
     return false;
   }
   return true;
@@ -140,15 +140,14 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
   const uint64_t size = file.size();
   uint32_t count = uint32_t(loadLE(file.data() + kSectionCountOffset, 4));
   if (count > kMaxSections) {
-    error = "package declares " + std::to_string(count) + " sections at byte " +
-            std::to_string(kSectionCountOffset) + "; at most " + std::to_string(kMaxSections) +
-            " are allowed";
+    error = "package declares " + std::to_string(count) + " sections at byte " + std::to_string(kSectionCountOffset) +
+            "; at most " + std::to_string(kMaxSections) + " are allowed";
     return false;
   }
   const uint64_t tocEnd = kHeaderSize + uint64_t(count) * kTocEntrySize;
   if (tocEnd > size) {
-    error = "package is truncated: table of contents ends at byte " + std::to_string(tocEnd) +
-            " but the file has " + std::to_string(size) + " bytes";
+    error = "package is truncated: table of contents ends at byte " + std::to_string(tocEnd) + " but the file has " +
+            std::to_string(size) + " bytes";
     return false;
   }
 
@@ -161,8 +160,8 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
     uint32_t flags = uint32_t(loadLE(file.data() + at + 4, 4));
     e.offset = loadLE(file.data() + at + 8, 8);
     e.size = loadLE(file.data() + at + 16, 8);
-    const std::string what = "section '" + tagName(e.tag) + "' (table of contents entry at byte " +
-                             std::to_string(at) + ")";
+    const std::string what =
+        "section '" + tagName(e.tag) + "' (table of contents entry at byte " + std::to_string(at) + ")";
     if (flags != 0) {
       error = what + " has reserved flags set";
       return false;
@@ -182,8 +181,7 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
   }
 
   std::vector<TocEntry> byOffset = entries;
-  std::sort(byOffset.begin(), byOffset.end(),
-            [](const TocEntry& a, const TocEntry& b) { return a.offset < b.offset; });
+  std::sort(byOffset.begin(), byOffset.end(), [](const TocEntry& a, const TocEntry& b) { return a.offset < b.offset; });
   for (size_t i = 1; i < byOffset.size(); ++i) {
     const TocEntry& prev = byOffset[i - 1];
     if (byOffset[i].offset < prev.offset + prev.size) {
@@ -205,8 +203,7 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
       }
     }
     if (found != 1) {
-      error = "package has " + std::to_string(found) + " '" + tagName(tags[t]) +
-              "' sections; exactly one is required";
+      error = "package has " + std::to_string(found) + " '" + tagName(tags[t]) + "' sections; exactly one is required";
       return false;
     }
   }
@@ -225,8 +222,7 @@ bool readToc(std::span<const uint8_t> file, TocEntry (&required)[4], std::option
   return true;
 }
 
-bool decodeSection(std::span<const uint8_t> file, const TocEntry& e, std::string& error,
-                   const auto& decode) {
+bool decodeSection(std::span<const uint8_t> file, const TocEntry& e, std::string& error, const auto& decode) {
   ByteReader in(file, e.offset, e.offset + e.size, tagName(e.tag));
   decode(in);
   if (!in.ok()) {
@@ -279,9 +275,8 @@ bool PackageReader::State::parse(std::string& error) {
       !decodeSection(file, vars, error, [&](ByteReader& in) { decodeVariantTable(in, variants); }) ||
       !decodeSection(file, table, error, [&](ByteReader& in) { decodeBlobTable(in, data.size, minor, entries); }))
     return false;
-  if (texs && !decodeSection(file, *texs, error, [&](ByteReader& in) {
-        decodeTextureTable(in, variants.size(), entries, textures);
-      }))
+  if (texs && !decodeSection(file, *texs, error,
+                             [&](ByteReader& in) { decodeTextureTable(in, variants.size(), entries, textures); }))
     return false;
   if (mslb) {
     if (minor < kFirstMinorWithMslBindings) {
@@ -297,9 +292,7 @@ bool PackageReader::State::parse(std::string& error) {
               "' section, which only format 1." + std::to_string(kFirstMinorWithPreshader) + " and later have";
       return false;
     }
-    if (!decodeSection(file, *prsh, error, [&](ByteReader& in) {
-          decodePreshader(in, variants.size(), preshader);
-        }))
+    if (!decodeSection(file, *prsh, error, [&](ByteReader& in) { decodePreshader(in, variants.size(), preshader); }))
       return false;
   }
 
@@ -321,7 +314,8 @@ bool PackageReader::State::parse(std::string& error) {
 
 std::optional<std::span<const uint8_t>> PackageReader::State::blobLocked(uint32_t b, std::string& error) const {
   if (b >= entries.size()) {
-    error = "blob " + std::to_string(b) + " does not exist; the package has " + std::to_string(entries.size()) + " blobs";
+    error =
+        "blob " + std::to_string(b) + " does not exist; the package has " + std::to_string(entries.size()) + " blobs";
     return std::nullopt;
   }
   const BlobEntry& entry = entries[b];

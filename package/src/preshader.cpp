@@ -24,7 +24,8 @@ const char* toString(PreshaderOpcode code) {
 
 std::string preshaderError(std::span<const PreshaderOp> ops, uint32_t paramBlockSize, uint32_t blockSize) {
   if (ops.size() > kMaxPreshaderOps)
-    return "a preshader program of " + std::to_string(ops.size()) + " ops; the limit is " + std::to_string(kMaxPreshaderOps);
+    return "a preshader program of " + std::to_string(ops.size()) + " ops; the limit is " +
+           std::to_string(kMaxPreshaderOps);
   if (paramBlockSize > blockSize) return "the parameters do not fit in the preshaded block";
   for (size_t i = 0; i < ops.size(); ++i) {
     const PreshaderOp& op = ops[i];
@@ -58,10 +59,11 @@ std::string preshaderError(std::span<const PreshaderOp> ops, uint32_t paramBlock
 std::string preshaderSemanticError(const MaterialInfo& material, const Preshader& preshader) {
   if (preshader.programs.empty()) return "";
   if (preshader.blockSize <= material.paramBlockSize)
-    return "the preshaded block is " + std::to_string(preshader.blockSize) + " bytes, not above the parameter block's " +
-           std::to_string(material.paramBlockSize);
+    return "the preshaded block is " + std::to_string(preshader.blockSize) +
+           " bytes, not above the parameter block's " + std::to_string(material.paramBlockSize);
   for (size_t i = 0; i < preshader.programs.size(); ++i)
-    if (std::string e = preshaderError(preshader.programs[i].ops, material.paramBlockSize, preshader.blockSize); !e.empty())
+    if (std::string e = preshaderError(preshader.programs[i].ops, material.paramBlockSize, preshader.blockSize);
+        !e.empty())
       return "preshader program " + std::to_string(i) + ": " + e;
   return "";
 }
@@ -113,13 +115,15 @@ void decodePreshader(ByteReader& in, uint64_t variantCount, Preshader& preshader
       if (!p.variants.empty() && v <= p.variants.back())
         return in.fail(what + " lists variant " + std::to_string(v) + " after " + std::to_string(p.variants.back()) +
                        " (indices must increase)");
-      if (!seen.insert(v).second) return in.fail(what + " lists variant " + std::to_string(v) + ", which has a program");
+      if (!seen.insert(v).second)
+        return in.fail(what + " lists variant " + std::to_string(v) + ", which has a program");
       p.variants.push_back(v);
     }
     const uint32_t opCount = in.count(kPreshaderOpSize, "preshader op count");
     if (!in.ok()) return;
     if (opCount > kMaxPreshaderOps)
-      return in.fail(what + " has " + std::to_string(opCount) + " ops; the limit is " + std::to_string(kMaxPreshaderOps));
+      return in.fail(what + " has " + std::to_string(opCount) + " ops; the limit is " +
+                     std::to_string(kMaxPreshaderOps));
     p.ops.reserve(opCount);
     for (uint32_t j = 0; j < opCount && in.ok(); ++j) {
       PreshaderOp op;

@@ -36,8 +36,8 @@ ReadResult readChecked(std::span<const uint8_t> file) {
       uint32_t blob = variants[v].shaders[s].blob;
       totalCode += blobs[blob].rawSize;
       if (totalCode > kMaxTotalCodeSize)
-        return failure("variants up to '" + variants[v].key + "' hold more than " +
-                       std::to_string(kMaxTotalCodeSize) + " bytes of shader code in total");
+        return failure("variants up to '" + variants[v].key + "' hold more than " + std::to_string(kMaxTotalCodeSize) +
+                       " bytes of shader code in total");
       users[blob].push_back({v, s});
     }
   }

@@ -4,9 +4,9 @@
 #include "facet/package/package.h"
 #include "facet/package/package_reader.h"
 
-#include <cmath>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
 
 #include "facet/permutations/variant_key.h"
@@ -112,8 +112,10 @@ std::string shaderCodeError(Target target, std::span<const uint8_t> code) {
 
 std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants, const Preshader& preshader,
                           const std::vector<MslBinding>& mslBindings) {
-  if (!isValidName(m.name)) return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
-  if (m.shading != "lit" && m.shading != "unlit") return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
+  if (!isValidName(m.name))
+    return "the material name '" + shown(m.name) + "' is not an identifier (letters, digits, _)";
+  if (m.shading != "lit" && m.shading != "unlit")
+    return "unknown shading model '" + shown(m.shading) + "' (lit, unlit)";
   static const std::set<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
   if (!blendings.count(m.blending))
     return "unknown blending mode '" + shown(m.blending) + "' (opaque, masked, transparent, additive)";
@@ -131,7 +133,8 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
   std::set<std::string> keys;
   for (const VariantInfo& v : variants) {
     auto key = permutations::VariantKey::parse(v.key);
-    if (!key || key->toString() != v.key) return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
+    if (!key || key->toString() != v.key)
+      return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
     if (!keys.insert(v.key).second) return "variant '" + v.key + "' is stored twice";
     std::set<std::pair<Stage, Target>> slots;
     for (const ShaderInfo& s : v.shaders)
@@ -150,7 +153,8 @@ std::string semanticError(const Package& pkg) {
   for (const Variant& v : pkg.variants)
     for (const Shader& s : v.shaders)
       if (std::string e = shaderCodeError(s.target, s.code); !e.empty())
-        return "the " + std::string(toString(s.stage)) + " " + toString(s.target) + " shader of variant '" + v.key + "' " + e;
+        return "the " + std::string(toString(s.stage)) + " " + toString(s.target) + " shader of variant '" + v.key +
+               "' " + e;
   return "";
 }
 

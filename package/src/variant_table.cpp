@@ -32,11 +32,10 @@ void decodeVariantTable(ByteReader& in, std::vector<VariantInfo>& variants) {
       uint16_t reserved = in.u16();
       uint32_t blob = in.u32();
       if (!in.ok()) return;
-      const std::string what = "shader " + std::to_string(j) + " of variant '" + v.key +
-                               "' at byte " + std::to_string(at);
+      const std::string what =
+          "shader " + std::to_string(j) + " of variant '" + v.key + "' at byte " + std::to_string(at);
       if (stage > kLastStage) return in.fail(what + " has unknown stage " + std::to_string(stage));
-      if (target > kLastTarget)
-        return in.fail(what + " has unknown target " + std::to_string(target));
+      if (target > kLastTarget) return in.fail(what + " has unknown target " + std::to_string(target));
       if (reserved != 0) return in.fail(what + " has reserved bits set");
       v.shaders.push_back({Stage(stage), Target(target), blob});
     }

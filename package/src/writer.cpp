@@ -30,7 +30,7 @@ inline constexpr int kTextureKind = -1;
 int shaderKind(const Shader& s) { return int(s.stage) * (kLastTarget + 1) + int(s.target); }
 
 class BlobDeduplicator {
-public:
+ public:
   uint32_t add(const std::vector<uint8_t>& code, int kind) {
     uint64_t hash = contentHash(code);
     std::vector<uint32_t>& candidates = byHash_[hash];
@@ -50,7 +50,7 @@ public:
   uint64_t hash(size_t i) const { return hashes_[i]; }
   int kind(size_t i) const { return kinds_[i]; }
 
-private:
+ private:
   std::vector<const std::vector<uint8_t>*> codes_;
   std::vector<uint64_t> hashes_;
   std::vector<int> kinds_;
@@ -74,7 +74,8 @@ std::vector<uint8_t> chooseDictionary(const BlobDeduplicator& blobs) {
   }
   std::vector<uint8_t> dictionary;
   if (shaderBlobs < 2) return dictionary;
-  for (auto [kind, index] : largest) dictionary.insert(dictionary.end(), blobs.code(index).begin(), blobs.code(index).end());
+  for (auto [kind, index] : largest)
+    dictionary.insert(dictionary.end(), blobs.code(index).begin(), blobs.code(index).end());
   // zstd would read a dictionary starting with its own magic as a trained one, not raw content.
   if (dictionary.size() >= 4 && loadLE(dictionary.data(), 4) == kZstdDictionaryMagic) dictionary.clear();
   return dictionary;
@@ -108,8 +109,10 @@ std::vector<uint8_t> write(const Package& pkg) {
     b.contentHash = blobs.hash(i);
     b.offset = blobData.size();
     b.rawSize = blobs.code(i).size();
-    const bool againstDictionary = dictionary && i != *dictionary && i < shaderAndTextureBlobs && blobs.kind(i) != kTextureKind;
-    b.codec = againstDictionary ? encoder.encodeWithDictionary(blobs.code(i), stored) : encoder.encode(blobs.code(i), stored);
+    const bool againstDictionary =
+        dictionary && i != *dictionary && i < shaderAndTextureBlobs && blobs.kind(i) != kTextureKind;
+    b.codec =
+        againstDictionary ? encoder.encodeWithDictionary(blobs.code(i), stored) : encoder.encode(blobs.code(i), stored);
     if (b.codec == Codec::ZstdDictionary) {
       b.dictionary = *dictionary;
       usesDictionary = true;
@@ -130,7 +133,8 @@ std::vector<uint8_t> write(const Package& pkg) {
   section(kTagMeta, [&](ByteWriter& out) { encodeMetadata(out, pkg.compilerVersion, pkg.material); });
   section(kTagVariants, [&](ByteWriter& out) { encodeVariantTable(out, variants); });
   if (!textures.empty()) section(kTagTextures, [&](ByteWriter& out) { encodeTextureTable(out, textures); });
-  if (!pkg.mslBindings.empty()) section(kTagMslBindings, [&](ByteWriter& out) { encodeMslBindings(out, pkg.mslBindings); });
+  if (!pkg.mslBindings.empty())
+    section(kTagMslBindings, [&](ByteWriter& out) { encodeMslBindings(out, pkg.mslBindings); });
   const bool preshaded = !pkg.preshader.programs.empty();
   if (preshaded) section(kTagPreshader, [&](ByteWriter& out) { encodePreshader(out, pkg.preshader); });
   section(kTagBlobTable, [&](ByteWriter& out) { encodeBlobTable(out, blobTable); });
@@ -144,10 +148,10 @@ std::vector<uint8_t> write(const Package& pkg) {
   // as a cube map: 1.4, so that a runtime of 1.3 or older (which binds an octahedral map there)
   // refuses the file instead of drawing it wrong.
   out.u16(pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
-          : preshaded                ? kFirstMinorWithPreshader
-          : !pkg.mslBindings.empty() ? kFirstMinorWithMslBindings
-          : usesDictionary           ? kFirstMinorWithDictionary
-                                     : 0);
+          : preshaded                   ? kFirstMinorWithPreshader
+          : !pkg.mslBindings.empty()    ? kFirstMinorWithMslBindings
+          : usesDictionary              ? kFirstMinorWithDictionary
+                                        : 0);
   out.u32(uint32_t(sections.size()));
   out.u64(0);  // file size, patched below
   out.u64(0);  // checksum, patched below

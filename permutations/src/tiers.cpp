@@ -7,17 +7,37 @@ namespace facet::permutations {
 TierConfig preset(Tier tier) {
   switch (tier) {
     case Tier::Reference:
-      return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Highp,
-              AmbientModel::SplitSum, 3, true};
+      return {SpecularModel::GgxSmith,
+              DiffuseModel::Pixel,
+              ColorSpace::Linear,
+              PrecisionPolicy::Highp,
+              AmbientModel::SplitSum,
+              3,
+              true};
     case Tier::High:
-      return {SpecularModel::GgxSmith, DiffuseModel::Pixel, ColorSpace::Linear, PrecisionPolicy::Mediump,
-              AmbientModel::SplitSum, 3, true};
+      return {SpecularModel::GgxSmith,
+              DiffuseModel::Pixel,
+              ColorSpace::Linear,
+              PrecisionPolicy::Mediump,
+              AmbientModel::SplitSum,
+              3,
+              true};
     case Tier::Mid:
-      return {SpecularModel::FusedHammon, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
-              AmbientModel::SplitSum, 3, true};
+      return {SpecularModel::FusedHammon,
+              DiffuseModel::Vertex,
+              ColorSpace::Linear,
+              PrecisionPolicy::Mediump,
+              AmbientModel::SplitSum,
+              3,
+              true};
     case Tier::Low:
-      return {SpecularModel::Lut, DiffuseModel::Vertex, ColorSpace::Linear, PrecisionPolicy::Mediump,
-              AmbientModel::SplitSum, 2, true};
+      return {SpecularModel::Lut,
+              DiffuseModel::Vertex,
+              ColorSpace::Linear,
+              PrecisionPolicy::Mediump,
+              AmbientModel::SplitSum,
+              2,
+              true};
   }
   return {};
 }

@@ -63,12 +63,12 @@ VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directional
   return {tier, material.lit && directionalLight, material.lit ? pointLightPermutation(pointLights).value_or(0) : 0};
 }
 
-std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers, const SceneNeeds* scene,
-                                  const std::vector<int>& pointLightCounts) {
+std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
+                                  const SceneNeeds* scene, const std::vector<int>& pointLightCounts) {
   std::vector<VariantKey> keys;
   // A scene names its own point-light counts; without one, the caller's list applies.
-  std::vector<int> counts = scene ? std::vector<int>(std::begin(kPointLightCounts), std::end(kPointLightCounts))
-                                  : pointLightCounts;
+  std::vector<int> counts =
+      scene ? std::vector<int>(std::begin(kPointLightCounts), std::end(kPointLightCounts)) : pointLightCounts;
   for (Tier t : tiers) {
     for (bool light : {false, true}) {
       for (int points : counts) {

@@ -21,88 +21,88 @@
 namespace facet::runtime::gl {
 
 // X(type, name) for every required entry point.
-#define FACET_GL_FUNCTIONS(X) \
-  X(PFNGLACTIVETEXTUREPROC, glActiveTexture) \
-  X(PFNGLATTACHSHADERPROC, glAttachShader) \
-  X(PFNGLBEGINQUERYPROC, glBeginQuery) \
-  X(PFNGLBINDBUFFERPROC, glBindBuffer) \
-  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase) \
-  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer) \
-  X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer) \
-  X(PFNGLBINDTEXTUREPROC, glBindTexture) \
-  X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray) \
-  X(PFNGLBLENDFUNCPROC, glBlendFunc) \
-  X(PFNGLBUFFERDATAPROC, glBufferData) \
-  X(PFNGLBUFFERSUBDATAPROC, glBufferSubData) \
-  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus) \
-  X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv) \
-  X(PFNGLCOLORMASKPROC, glColorMask) \
-  X(PFNGLCOMPILESHADERPROC, glCompileShader) \
-  X(PFNGLCREATEPROGRAMPROC, glCreateProgram) \
-  X(PFNGLCREATESHADERPROC, glCreateShader) \
-  X(PFNGLCULLFACEPROC, glCullFace) \
-  X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers) \
-  X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers) \
-  X(PFNGLDELETEPROGRAMPROC, glDeleteProgram) \
-  X(PFNGLDELETEQUERIESPROC, glDeleteQueries) \
-  X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers) \
-  X(PFNGLDELETESHADERPROC, glDeleteShader) \
-  X(PFNGLDELETETEXTURESPROC, glDeleteTextures) \
-  X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays) \
-  X(PFNGLDEPTHFUNCPROC, glDepthFunc) \
-  X(PFNGLDEPTHMASKPROC, glDepthMask) \
-  X(PFNGLDETACHSHADERPROC, glDetachShader) \
-  X(PFNGLDISABLEPROC, glDisable) \
-  X(PFNGLDRAWARRAYSPROC, glDrawArrays) \
-  X(PFNGLDRAWBUFFERSPROC, glDrawBuffers) \
-  X(PFNGLDRAWELEMENTSPROC, glDrawElements) \
-  X(PFNGLENABLEPROC, glEnable) \
-  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray) \
-  X(PFNGLENDQUERYPROC, glEndQuery) \
-  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer) \
-  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D) \
-  X(PFNGLFRONTFACEPROC, glFrontFace) \
-  X(PFNGLGENBUFFERSPROC, glGenBuffers) \
-  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers) \
-  X(PFNGLGENQUERIESPROC, glGenQueries) \
-  X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers) \
-  X(PFNGLGENTEXTURESPROC, glGenTextures) \
-  X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays) \
-  X(PFNGLGETACTIVEATTRIBPROC, glGetActiveAttrib) \
-  X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform) \
-  X(PFNGLGETACTIVEUNIFORMBLOCKNAMEPROC, glGetActiveUniformBlockName) \
-  X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, glGetActiveUniformBlockiv) \
-  X(PFNGLGETACTIVEUNIFORMSIVPROC, glGetActiveUniformsiv) \
-  X(PFNGLGETATTRIBLOCATIONPROC, glGetAttribLocation) \
-  X(PFNGLGETERRORPROC, glGetError) \
+#define FACET_GL_FUNCTIONS(X)                                                            \
+  X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                                             \
+  X(PFNGLATTACHSHADERPROC, glAttachShader)                                               \
+  X(PFNGLBEGINQUERYPROC, glBeginQuery)                                                   \
+  X(PFNGLBINDBUFFERPROC, glBindBuffer)                                                   \
+  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                                           \
+  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                                         \
+  X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                                       \
+  X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                 \
+  X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                         \
+  X(PFNGLBLENDFUNCPROC, glBlendFunc)                                                     \
+  X(PFNGLBUFFERDATAPROC, glBufferData)                                                   \
+  X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                                             \
+  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)                           \
+  X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                                             \
+  X(PFNGLCOLORMASKPROC, glColorMask)                                                     \
+  X(PFNGLCOMPILESHADERPROC, glCompileShader)                                             \
+  X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                                             \
+  X(PFNGLCREATESHADERPROC, glCreateShader)                                               \
+  X(PFNGLCULLFACEPROC, glCullFace)                                                       \
+  X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                                             \
+  X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                                   \
+  X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                                             \
+  X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                                             \
+  X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)                                 \
+  X(PFNGLDELETESHADERPROC, glDeleteShader)                                               \
+  X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                                           \
+  X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                                   \
+  X(PFNGLDEPTHFUNCPROC, glDepthFunc)                                                     \
+  X(PFNGLDEPTHMASKPROC, glDepthMask)                                                     \
+  X(PFNGLDETACHSHADERPROC, glDetachShader)                                               \
+  X(PFNGLDISABLEPROC, glDisable)                                                         \
+  X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                                   \
+  X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                                                 \
+  X(PFNGLDRAWELEMENTSPROC, glDrawElements)                                               \
+  X(PFNGLENABLEPROC, glEnable)                                                           \
+  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)                         \
+  X(PFNGLENDQUERYPROC, glEndQuery)                                                       \
+  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)                         \
+  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)                               \
+  X(PFNGLFRONTFACEPROC, glFrontFace)                                                     \
+  X(PFNGLGENBUFFERSPROC, glGenBuffers)                                                   \
+  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                                         \
+  X(PFNGLGENQUERIESPROC, glGenQueries)                                                   \
+  X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                                       \
+  X(PFNGLGENTEXTURESPROC, glGenTextures)                                                 \
+  X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                                         \
+  X(PFNGLGETACTIVEATTRIBPROC, glGetActiveAttrib)                                         \
+  X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform)                                       \
+  X(PFNGLGETACTIVEUNIFORMBLOCKNAMEPROC, glGetActiveUniformBlockName)                     \
+  X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, glGetActiveUniformBlockiv)                         \
+  X(PFNGLGETACTIVEUNIFORMSIVPROC, glGetActiveUniformsiv)                                 \
+  X(PFNGLGETATTRIBLOCATIONPROC, glGetAttribLocation)                                     \
+  X(PFNGLGETERRORPROC, glGetError)                                                       \
   X(PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC, glGetFramebufferAttachmentParameteriv) \
-  X(PFNGLGETINTEGERVPROC, glGetIntegerv) \
-  X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog) \
-  X(PFNGLGETPROGRAMIVPROC, glGetProgramiv) \
-  X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog) \
-  X(PFNGLGETSHADERIVPROC, glGetShaderiv) \
-  X(PFNGLGETSTRINGPROC, glGetString) \
-  X(PFNGLGETSTRINGIPROC, glGetStringi) \
-  X(PFNGLGETUNIFORMBLOCKINDEXPROC, glGetUniformBlockIndex) \
-  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation) \
-  X(PFNGLINVALIDATEFRAMEBUFFERPROC, glInvalidateFramebuffer) \
-  X(PFNGLISENABLEDPROC, glIsEnabled) \
-  X(PFNGLISFRAMEBUFFERPROC, glIsFramebuffer) \
-  X(PFNGLLINKPROGRAMPROC, glLinkProgram) \
-  X(PFNGLPIXELSTOREIPROC, glPixelStorei) \
-  X(PFNGLREADBUFFERPROC, glReadBuffer) \
-  X(PFNGLREADPIXELSPROC, glReadPixels) \
-  X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage) \
-  X(PFNGLSHADERSOURCEPROC, glShaderSource) \
-  X(PFNGLTEXIMAGE2DPROC, glTexImage2D) \
-  X(PFNGLTEXIMAGE3DPROC, glTexImage3D) \
-  X(PFNGLTEXPARAMETERIPROC, glTexParameteri) \
-  X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D) \
-  X(PFNGLTEXSUBIMAGE3DPROC, glTexSubImage3D) \
-  X(PFNGLUNIFORM1IPROC, glUniform1i) \
-  X(PFNGLUNIFORMBLOCKBINDINGPROC, glUniformBlockBinding) \
-  X(PFNGLUSEPROGRAMPROC, glUseProgram) \
-  X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer) \
+  X(PFNGLGETINTEGERVPROC, glGetIntegerv)                                                 \
+  X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                                     \
+  X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                                               \
+  X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                                       \
+  X(PFNGLGETSHADERIVPROC, glGetShaderiv)                                                 \
+  X(PFNGLGETSTRINGPROC, glGetString)                                                     \
+  X(PFNGLGETSTRINGIPROC, glGetStringi)                                                   \
+  X(PFNGLGETUNIFORMBLOCKINDEXPROC, glGetUniformBlockIndex)                               \
+  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                                   \
+  X(PFNGLINVALIDATEFRAMEBUFFERPROC, glInvalidateFramebuffer)                             \
+  X(PFNGLISENABLEDPROC, glIsEnabled)                                                     \
+  X(PFNGLISFRAMEBUFFERPROC, glIsFramebuffer)                                             \
+  X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                                 \
+  X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                                 \
+  X(PFNGLREADBUFFERPROC, glReadBuffer)                                                   \
+  X(PFNGLREADPIXELSPROC, glReadPixels)                                                   \
+  X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                                 \
+  X(PFNGLSHADERSOURCEPROC, glShaderSource)                                               \
+  X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                                   \
+  X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                                                   \
+  X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                                             \
+  X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D)                                               \
+  X(PFNGLTEXSUBIMAGE3DPROC, glTexSubImage3D)                                             \
+  X(PFNGLUNIFORM1IPROC, glUniform1i)                                                     \
+  X(PFNGLUNIFORMBLOCKBINDINGPROC, glUniformBlockBinding)                                 \
+  X(PFNGLUSEPROGRAMPROC, glUseProgram)                                                   \
+  X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)                                 \
   X(PFNGLVIEWPORTPROC, glViewport)
 
 struct Functions {
@@ -142,85 +142,86 @@ bool checkGlError(const char* phase, std::string* error);
 }  // namespace facet::runtime::gl
 
 // After the table: inside it the names are the members'.
-#define glActiveTexture           (::facet::runtime::gl::detail::current->glActiveTexture)
-#define glAttachShader            (::facet::runtime::gl::detail::current->glAttachShader)
-#define glBeginQuery              (::facet::runtime::gl::detail::current->glBeginQuery)
-#define glBindBuffer              (::facet::runtime::gl::detail::current->glBindBuffer)
-#define glBindBufferBase          (::facet::runtime::gl::detail::current->glBindBufferBase)
-#define glBindFramebuffer         (::facet::runtime::gl::detail::current->glBindFramebuffer)
-#define glBindRenderbuffer        (::facet::runtime::gl::detail::current->glBindRenderbuffer)
-#define glBindTexture             (::facet::runtime::gl::detail::current->glBindTexture)
-#define glBindVertexArray         (::facet::runtime::gl::detail::current->glBindVertexArray)
-#define glBlendFunc               (::facet::runtime::gl::detail::current->glBlendFunc)
-#define glBufferData              (::facet::runtime::gl::detail::current->glBufferData)
-#define glBufferSubData           (::facet::runtime::gl::detail::current->glBufferSubData)
-#define glCheckFramebufferStatus  (::facet::runtime::gl::detail::current->glCheckFramebufferStatus)
-#define glClearBufferfv           (::facet::runtime::gl::detail::current->glClearBufferfv)
-#define glColorMask               (::facet::runtime::gl::detail::current->glColorMask)
-#define glCompileShader           (::facet::runtime::gl::detail::current->glCompileShader)
-#define glCreateProgram           (::facet::runtime::gl::detail::current->glCreateProgram)
-#define glCreateShader            (::facet::runtime::gl::detail::current->glCreateShader)
-#define glCullFace                (::facet::runtime::gl::detail::current->glCullFace)
-#define glDeleteBuffers           (::facet::runtime::gl::detail::current->glDeleteBuffers)
-#define glDeleteFramebuffers      (::facet::runtime::gl::detail::current->glDeleteFramebuffers)
-#define glDeleteProgram           (::facet::runtime::gl::detail::current->glDeleteProgram)
-#define glDeleteQueries           (::facet::runtime::gl::detail::current->glDeleteQueries)
-#define glDeleteRenderbuffers     (::facet::runtime::gl::detail::current->glDeleteRenderbuffers)
-#define glDeleteShader            (::facet::runtime::gl::detail::current->glDeleteShader)
-#define glDeleteTextures          (::facet::runtime::gl::detail::current->glDeleteTextures)
-#define glDeleteVertexArrays      (::facet::runtime::gl::detail::current->glDeleteVertexArrays)
-#define glDepthFunc               (::facet::runtime::gl::detail::current->glDepthFunc)
-#define glDepthMask               (::facet::runtime::gl::detail::current->glDepthMask)
-#define glDetachShader            (::facet::runtime::gl::detail::current->glDetachShader)
-#define glDisable                 (::facet::runtime::gl::detail::current->glDisable)
-#define glDrawArrays              (::facet::runtime::gl::detail::current->glDrawArrays)
-#define glDrawBuffers             (::facet::runtime::gl::detail::current->glDrawBuffers)
-#define glDrawElements            (::facet::runtime::gl::detail::current->glDrawElements)
-#define glEnable                  (::facet::runtime::gl::detail::current->glEnable)
+#define glActiveTexture (::facet::runtime::gl::detail::current->glActiveTexture)
+#define glAttachShader (::facet::runtime::gl::detail::current->glAttachShader)
+#define glBeginQuery (::facet::runtime::gl::detail::current->glBeginQuery)
+#define glBindBuffer (::facet::runtime::gl::detail::current->glBindBuffer)
+#define glBindBufferBase (::facet::runtime::gl::detail::current->glBindBufferBase)
+#define glBindFramebuffer (::facet::runtime::gl::detail::current->glBindFramebuffer)
+#define glBindRenderbuffer (::facet::runtime::gl::detail::current->glBindRenderbuffer)
+#define glBindTexture (::facet::runtime::gl::detail::current->glBindTexture)
+#define glBindVertexArray (::facet::runtime::gl::detail::current->glBindVertexArray)
+#define glBlendFunc (::facet::runtime::gl::detail::current->glBlendFunc)
+#define glBufferData (::facet::runtime::gl::detail::current->glBufferData)
+#define glBufferSubData (::facet::runtime::gl::detail::current->glBufferSubData)
+#define glCheckFramebufferStatus (::facet::runtime::gl::detail::current->glCheckFramebufferStatus)
+#define glClearBufferfv (::facet::runtime::gl::detail::current->glClearBufferfv)
+#define glColorMask (::facet::runtime::gl::detail::current->glColorMask)
+#define glCompileShader (::facet::runtime::gl::detail::current->glCompileShader)
+#define glCreateProgram (::facet::runtime::gl::detail::current->glCreateProgram)
+#define glCreateShader (::facet::runtime::gl::detail::current->glCreateShader)
+#define glCullFace (::facet::runtime::gl::detail::current->glCullFace)
+#define glDeleteBuffers (::facet::runtime::gl::detail::current->glDeleteBuffers)
+#define glDeleteFramebuffers (::facet::runtime::gl::detail::current->glDeleteFramebuffers)
+#define glDeleteProgram (::facet::runtime::gl::detail::current->glDeleteProgram)
+#define glDeleteQueries (::facet::runtime::gl::detail::current->glDeleteQueries)
+#define glDeleteRenderbuffers (::facet::runtime::gl::detail::current->glDeleteRenderbuffers)
+#define glDeleteShader (::facet::runtime::gl::detail::current->glDeleteShader)
+#define glDeleteTextures (::facet::runtime::gl::detail::current->glDeleteTextures)
+#define glDeleteVertexArrays (::facet::runtime::gl::detail::current->glDeleteVertexArrays)
+#define glDepthFunc (::facet::runtime::gl::detail::current->glDepthFunc)
+#define glDepthMask (::facet::runtime::gl::detail::current->glDepthMask)
+#define glDetachShader (::facet::runtime::gl::detail::current->glDetachShader)
+#define glDisable (::facet::runtime::gl::detail::current->glDisable)
+#define glDrawArrays (::facet::runtime::gl::detail::current->glDrawArrays)
+#define glDrawBuffers (::facet::runtime::gl::detail::current->glDrawBuffers)
+#define glDrawElements (::facet::runtime::gl::detail::current->glDrawElements)
+#define glEnable (::facet::runtime::gl::detail::current->glEnable)
 #define glEnableVertexAttribArray (::facet::runtime::gl::detail::current->glEnableVertexAttribArray)
-#define glEndQuery                (::facet::runtime::gl::detail::current->glEndQuery)
+#define glEndQuery (::facet::runtime::gl::detail::current->glEndQuery)
 #define glFramebufferRenderbuffer (::facet::runtime::gl::detail::current->glFramebufferRenderbuffer)
-#define glFramebufferTexture2D    (::facet::runtime::gl::detail::current->glFramebufferTexture2D)
-#define glFrontFace               (::facet::runtime::gl::detail::current->glFrontFace)
-#define glGenBuffers              (::facet::runtime::gl::detail::current->glGenBuffers)
-#define glGenFramebuffers         (::facet::runtime::gl::detail::current->glGenFramebuffers)
-#define glGenQueries              (::facet::runtime::gl::detail::current->glGenQueries)
-#define glGenRenderbuffers        (::facet::runtime::gl::detail::current->glGenRenderbuffers)
-#define glGenTextures             (::facet::runtime::gl::detail::current->glGenTextures)
-#define glGenVertexArrays         (::facet::runtime::gl::detail::current->glGenVertexArrays)
-#define glGetActiveAttrib         (::facet::runtime::gl::detail::current->glGetActiveAttrib)
-#define glGetActiveUniform        (::facet::runtime::gl::detail::current->glGetActiveUniform)
+#define glFramebufferTexture2D (::facet::runtime::gl::detail::current->glFramebufferTexture2D)
+#define glFrontFace (::facet::runtime::gl::detail::current->glFrontFace)
+#define glGenBuffers (::facet::runtime::gl::detail::current->glGenBuffers)
+#define glGenFramebuffers (::facet::runtime::gl::detail::current->glGenFramebuffers)
+#define glGenQueries (::facet::runtime::gl::detail::current->glGenQueries)
+#define glGenRenderbuffers (::facet::runtime::gl::detail::current->glGenRenderbuffers)
+#define glGenTextures (::facet::runtime::gl::detail::current->glGenTextures)
+#define glGenVertexArrays (::facet::runtime::gl::detail::current->glGenVertexArrays)
+#define glGetActiveAttrib (::facet::runtime::gl::detail::current->glGetActiveAttrib)
+#define glGetActiveUniform (::facet::runtime::gl::detail::current->glGetActiveUniform)
 #define glGetActiveUniformBlockName (::facet::runtime::gl::detail::current->glGetActiveUniformBlockName)
 #define glGetActiveUniformBlockiv (::facet::runtime::gl::detail::current->glGetActiveUniformBlockiv)
-#define glGetActiveUniformsiv     (::facet::runtime::gl::detail::current->glGetActiveUniformsiv)
-#define glGetAttribLocation       (::facet::runtime::gl::detail::current->glGetAttribLocation)
-#define glGetError                (::facet::runtime::gl::detail::current->glGetError)
-#define glGetFramebufferAttachmentParameteriv (::facet::runtime::gl::detail::current->glGetFramebufferAttachmentParameteriv)
-#define glGetIntegerv             (::facet::runtime::gl::detail::current->glGetIntegerv)
-#define glGetProgramInfoLog       (::facet::runtime::gl::detail::current->glGetProgramInfoLog)
-#define glGetProgramiv            (::facet::runtime::gl::detail::current->glGetProgramiv)
-#define glGetShaderInfoLog        (::facet::runtime::gl::detail::current->glGetShaderInfoLog)
-#define glGetShaderiv             (::facet::runtime::gl::detail::current->glGetShaderiv)
-#define glGetString               (::facet::runtime::gl::detail::current->glGetString)
-#define glGetStringi              (::facet::runtime::gl::detail::current->glGetStringi)
-#define glGetUniformBlockIndex    (::facet::runtime::gl::detail::current->glGetUniformBlockIndex)
-#define glGetUniformLocation      (::facet::runtime::gl::detail::current->glGetUniformLocation)
-#define glInvalidateFramebuffer   (::facet::runtime::gl::detail::current->glInvalidateFramebuffer)
-#define glIsEnabled               (::facet::runtime::gl::detail::current->glIsEnabled)
-#define glIsFramebuffer           (::facet::runtime::gl::detail::current->glIsFramebuffer)
-#define glLinkProgram             (::facet::runtime::gl::detail::current->glLinkProgram)
-#define glPixelStorei             (::facet::runtime::gl::detail::current->glPixelStorei)
-#define glReadBuffer              (::facet::runtime::gl::detail::current->glReadBuffer)
-#define glReadPixels              (::facet::runtime::gl::detail::current->glReadPixels)
-#define glRenderbufferStorage     (::facet::runtime::gl::detail::current->glRenderbufferStorage)
-#define glShaderSource            (::facet::runtime::gl::detail::current->glShaderSource)
-#define glTexImage2D              (::facet::runtime::gl::detail::current->glTexImage2D)
-#define glTexImage3D              (::facet::runtime::gl::detail::current->glTexImage3D)
-#define glTexParameteri           (::facet::runtime::gl::detail::current->glTexParameteri)
-#define glTexStorage2D            (::facet::runtime::gl::detail::current->glTexStorage2D)
-#define glTexSubImage3D           (::facet::runtime::gl::detail::current->glTexSubImage3D)
-#define glUniform1i               (::facet::runtime::gl::detail::current->glUniform1i)
-#define glUniformBlockBinding     (::facet::runtime::gl::detail::current->glUniformBlockBinding)
-#define glUseProgram              (::facet::runtime::gl::detail::current->glUseProgram)
-#define glVertexAttribPointer     (::facet::runtime::gl::detail::current->glVertexAttribPointer)
-#define glViewport                (::facet::runtime::gl::detail::current->glViewport)
+#define glGetActiveUniformsiv (::facet::runtime::gl::detail::current->glGetActiveUniformsiv)
+#define glGetAttribLocation (::facet::runtime::gl::detail::current->glGetAttribLocation)
+#define glGetError (::facet::runtime::gl::detail::current->glGetError)
+#define glGetFramebufferAttachmentParameteriv \
+  (::facet::runtime::gl::detail::current->glGetFramebufferAttachmentParameteriv)
+#define glGetIntegerv (::facet::runtime::gl::detail::current->glGetIntegerv)
+#define glGetProgramInfoLog (::facet::runtime::gl::detail::current->glGetProgramInfoLog)
+#define glGetProgramiv (::facet::runtime::gl::detail::current->glGetProgramiv)
+#define glGetShaderInfoLog (::facet::runtime::gl::detail::current->glGetShaderInfoLog)
+#define glGetShaderiv (::facet::runtime::gl::detail::current->glGetShaderiv)
+#define glGetString (::facet::runtime::gl::detail::current->glGetString)
+#define glGetStringi (::facet::runtime::gl::detail::current->glGetStringi)
+#define glGetUniformBlockIndex (::facet::runtime::gl::detail::current->glGetUniformBlockIndex)
+#define glGetUniformLocation (::facet::runtime::gl::detail::current->glGetUniformLocation)
+#define glInvalidateFramebuffer (::facet::runtime::gl::detail::current->glInvalidateFramebuffer)
+#define glIsEnabled (::facet::runtime::gl::detail::current->glIsEnabled)
+#define glIsFramebuffer (::facet::runtime::gl::detail::current->glIsFramebuffer)
+#define glLinkProgram (::facet::runtime::gl::detail::current->glLinkProgram)
+#define glPixelStorei (::facet::runtime::gl::detail::current->glPixelStorei)
+#define glReadBuffer (::facet::runtime::gl::detail::current->glReadBuffer)
+#define glReadPixels (::facet::runtime::gl::detail::current->glReadPixels)
+#define glRenderbufferStorage (::facet::runtime::gl::detail::current->glRenderbufferStorage)
+#define glShaderSource (::facet::runtime::gl::detail::current->glShaderSource)
+#define glTexImage2D (::facet::runtime::gl::detail::current->glTexImage2D)
+#define glTexImage3D (::facet::runtime::gl::detail::current->glTexImage3D)
+#define glTexParameteri (::facet::runtime::gl::detail::current->glTexParameteri)
+#define glTexStorage2D (::facet::runtime::gl::detail::current->glTexStorage2D)
+#define glTexSubImage3D (::facet::runtime::gl::detail::current->glTexSubImage3D)
+#define glUniform1i (::facet::runtime::gl::detail::current->glUniform1i)
+#define glUniformBlockBinding (::facet::runtime::gl::detail::current->glUniformBlockBinding)
+#define glUseProgram (::facet::runtime::gl::detail::current->glUseProgram)
+#define glVertexAttribPointer (::facet::runtime::gl::detail::current->glVertexAttribPointer)
+#define glViewport (::facet::runtime::gl::detail::current->glViewport)

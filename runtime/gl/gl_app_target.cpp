@@ -77,8 +77,9 @@ bool inspectAppTarget(const GlAppTarget& target, uint32_t frameWidth, uint32_t f
     const GLint face = attachmentParameter(queried, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE);
     if (face != 0) found.textureTarget = static_cast<GLenum>(face);
     if (attachmentParameter(queried, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER) != 0) {
-      *error = describe(target) + "'s draw buffer 0 is a layer of an array or 3D texture, which the backend "
-                                  "does not attach (a 2D texture, a cube face or a renderbuffer)";
+      *error = describe(target) +
+               "'s draw buffer 0 is a layer of an array or 3D texture, which the backend "
+               "does not attach (a 2D texture, a cube face or a renderbuffer)";
       return false;
     }
   }

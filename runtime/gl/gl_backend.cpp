@@ -143,17 +143,17 @@ class GlBackend final : public GlRenderer {
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
-  gl::LinkedProgram post_;         // the path's post program: framebuffer fetch when merged
-  gl::LinkedProgram sampledPost_;  // merged backends: the separate path's, for frames into the
-                                   // default framebuffer (which cannot lend an attachment)
-  gl::PostInputs postInputs_;  // the grading LUT and the post uniforms, when the variant reads them
+  gl::LinkedProgram post_;            // the path's post program: framebuffer fetch when merged
+  gl::LinkedProgram sampledPost_;     // merged backends: the separate path's, for frames into the
+                                      // default framebuffer (which cannot lend an attachment)
+  gl::PostInputs postInputs_;         // the grading LUT and the post uniforms, when the variant reads them
   gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
   gl::Buffer frameUniforms_;
   gl::Buffer objectUniforms_;
   gl::Buffer materialUniforms_;
   gl::RenderTargets targets_;
-  gl::TextureCache textures_;  // kept across frames; see gl_textures.h for the reuse rule
-  gl::MeshCache meshes_;       // kept across frames, shared by every draw of a mesh (gl_mesh.h)
+  gl::TextureCache textures_;             // kept across frames; see gl_textures.h for the reuse rule
+  gl::MeshCache meshes_;                  // kept across frames, shared by every draw of a mesh (gl_mesh.h)
   gl::UniformBlockCache materialBlocks_;  // material instances' blocks (gl_uniform_blocks.h)
   // GL_TIME_ELAPSED queries of the forward and post passes; absent when the context has no
   // timer queries (GL 3.3 core has them; GLES needs GL_EXT_disjoint_timer_query).
@@ -176,8 +176,9 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   hdrFormat_ = options.hdrFormat;
   const bool canFetch = context_->hasExtension("GL_EXT_shader_framebuffer_fetch");
   if (options.postPath == PostPath::Merged && !canFetch) {
-    if (error) *error = std::string("GL backend: the merged path needs GL_EXT_shader_framebuffer_fetch, which this ") +
-                        context_->kindName() + " context lacks";
+    if (error)
+      *error = std::string("GL backend: the merged path needs GL_EXT_shader_framebuffer_fetch, which this ") +
+               context_->kindName() + " context lacks";
     return false;
   }
   path_ = options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged;
@@ -267,8 +268,8 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     if (!beginFrame(frame, &message)) return false;
     const bool merged = path_ == PostPath::Merged;
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
-    const bool forwardDone = forwardPass(
-        frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
+    const bool forwardDone =
+        forwardPass(frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!forwardDone) return false;
     result->hdr.clear();
@@ -328,8 +329,8 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
       if (!gl::attachAppImage(attachment, &message)) return false;
     }
-    bool drawn = forwardPass(frame, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
-                             merged, &message);
+    bool drawn = forwardPass(frame, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged,
+                             &message);
     if (drawn) {
       drawn = merged ? mergedPostPass(frame, false, &message) : postPass(frame, target.framebuffer, &message);
     }
@@ -416,8 +417,7 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
     }
     return false;
   }
-  if (program->material.present() &&
-      materialBytes(item).size() < static_cast<size_t>(program->material.dataSize)) {
+  if (program->material.present() && materialBytes(item).size() < static_cast<size_t>(program->material.dataSize)) {
     if (error) {
       *error = "shader's MaterialParams block is " + std::to_string(program->material.dataSize) +
                " bytes but the draw supplies " + std::to_string(materialBytes(item).size());
@@ -437,13 +437,15 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialBlocks_.resident(*item.materialBlock));
   } else if (!item.materialParams.empty()) {
     glBindBuffer(GL_UNIFORM_BUFFER, materialUniforms_.id());
-    glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(item.materialParams.size()),
-                 item.materialParams.data(), GL_DYNAMIC_DRAW);
+    glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(item.materialParams.size()), item.materialParams.data(),
+                 GL_DYNAMIC_DRAW);
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialUniforms_.id());
   }
 
-  if (item.cullBackFaces) glEnable(GL_CULL_FACE);
-  else glDisable(GL_CULL_FACE);
+  if (item.cullBackFaces)
+    glEnable(GL_CULL_FACE);
+  else
+    glDisable(GL_CULL_FACE);
   // Premultiplied colour for the blended modes; they test depth but do not write it.
   if (item.blending == Blending::Opaque) {
     glDisable(GL_BLEND);
@@ -472,13 +474,15 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   std::optional<gl::LinkedProgram> linked = gl::buildProgram(program.vertexGlslEs, program.fragmentGlslEs, error);
   const package::ProgramInterface* declared = program.interface ? &*program.interface : nullptr;
   if (!linked) {
-    if (declared && error) *error = "material '" + declared->material + "' variant " + declared->variant + ": " + *error;
+    if (declared && error)
+      *error = "material '" + declared->material + "' variant " + declared->variant + ": " + *error;
     return nullptr;
   }
   // A package's GLSL ES is code the app did not build: its reflection against what the draws bind
   // (the same check the core ran on its SPIR-V; the linker has matched the stages already).
   if (declared) {
-    const std::string why = package::interfaceError(*declared, gl::reflectProgram(linked->program.id(), context_->resourceQueries()), false);
+    const std::string why = package::interfaceError(
+        *declared, gl::reflectProgram(linked->program.id(), context_->resourceQueries()), false);
     if (!why.empty()) {
       if (error) *error = why;
       return nullptr;

@@ -63,9 +63,8 @@ bool Context::queryCapabilities(std::string* error) {
   if (!es_ && !hasExtension("GL_ARB_ES3_compatibility")) {
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     if (error) {
-      *error = "GL context (" + std::string(renderer ? renderer : "unknown renderer") + ", " +
-               std::to_string(major_) + "." + std::to_string(minor_) +
-               ") lacks GL_ARB_ES3_compatibility; GLSL ES 3.00 shaders cannot run";
+      *error = "GL context (" + std::string(renderer ? renderer : "unknown renderer") + ", " + std::to_string(major_) +
+               "." + std::to_string(minor_) + ") lacks GL_ARB_ES3_compatibility; GLSL ES 3.00 shaders cannot run";
     }
     return false;
   }
@@ -83,7 +82,8 @@ bool Context::queryCapabilities(std::string* error) {
   if (atLeast43 || (es_ && (major_ > 3 || (major_ == 3 && minor_ >= 1)))) {
     resourceQueries_.index =
         reinterpret_cast<PFNGLGETPROGRAMRESOURCEINDEXPROC>(host_->getProcAddress("glGetProgramResourceIndex"));
-    resourceQueries_.values = reinterpret_cast<PFNGLGETPROGRAMRESOURCEIVPROC>(host_->getProcAddress("glGetProgramResourceiv"));
+    resourceQueries_.values =
+        reinterpret_cast<PFNGLGETPROGRAMRESOURCEIVPROC>(host_->getProcAddress("glGetProgramResourceiv"));
   }
   return checkGlError("context creation", error);
 }
@@ -123,8 +123,8 @@ void Context::enableDebugOutput(bool khrSuffix) {
   debugOutput_ = glIsEnabled(GL_DEBUG_OUTPUT) == GL_TRUE;
 }
 
-void APIENTRY Context::onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
-                                      GLsizei length, const GLchar* message, const void* user) {
+void APIENTRY Context::onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                                      const GLchar* message, const void* user) {
   if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
   // Mesa repeats a shader's compile errors here. They are not API misuse, and render() already
   // fails with the full info log, so they would only make one mistake count twice.

@@ -56,8 +56,8 @@ class Context {
   Context() = default;
   bool queryCapabilities(std::string* error);
   void enableDebugOutput(bool khrSuffix);
-  static void APIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
-                                      GLsizei length, const GLchar* message, const void* user);
+  static void APIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                                      const GLchar* message, const void* user);
 
   std::unique_ptr<GlContext> host_;
   Functions functions_;

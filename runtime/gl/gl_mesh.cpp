@@ -31,8 +31,8 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
   const uint32_t maxIndex = *std::max_element(mesh.indices.begin(), mesh.indices.end());
   if (maxIndex >= vertexCount) {
     if (error) {
-      *error = "mesh index " + std::to_string(maxIndex) + " is out of range (" + std::to_string(vertexCount) +
-               " vertices)";
+      *error =
+          "mesh index " + std::to_string(maxIndex) + " is out of range (" + std::to_string(vertexCount) + " vertices)";
     }
     return false;
   }
@@ -45,8 +45,8 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
 
   glBindVertexArray(uploaded.vertexArray.id());
   glBindBuffer(GL_ARRAY_BUFFER, uploaded.vertices.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)),
-               mesh.vertices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(),
+               GL_STATIC_DRAW);
   // The element array binding is VAO state, so it is bound while the VAO is.
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, uploaded.indices.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),

@@ -5,10 +5,10 @@
 #include <string>
 #include <unordered_map>
 
-#include "facet/runtime/render_backend.h"
-#include "facet/runtime/mesh.h"
-#include "gl_objects.h"
 #include "facet/runtime/frame_eviction.h"
+#include "facet/runtime/mesh.h"
+#include "facet/runtime/render_backend.h"
+#include "gl_objects.h"
 
 namespace facet::runtime::gl {
 

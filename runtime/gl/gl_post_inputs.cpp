@@ -60,7 +60,8 @@ bool PostInputs::pointProgram(GLuint program, std::string* error) {
 bool PostInputs::bind(const FrameDesc& frame, std::string* error) {
   if (effects_.colorGrading) {
     if (!frame.colorLut || frame.colorLut->rgba.size() != kLutValues) {
-      *error = "the post variant grades colour, so the frame needs a colorLut of " + std::to_string(kLutSize) + "³ RGBA16F texels";
+      *error = "the post variant grades colour, so the frame needs a colorLut of " + std::to_string(kLutSize) +
+               "³ RGBA16F texels";
       return false;
     }
     glActiveTexture(GL_TEXTURE0 + abi::kPostColorLutBinding);
@@ -68,7 +69,8 @@ bool PostInputs::bind(const FrameDesc& frame, std::string* error) {
     const uint64_t hash = hashBytes(frame.colorLut->rgba.data(), kLutValues * sizeof(uint16_t));
     if (!lutUploaded_ || hash != lutHash_) {
       glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-      glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, kLutSize, kLutSize, kLutSize, GL_RGBA, GL_HALF_FLOAT, frame.colorLut->rgba.data());
+      glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, kLutSize, kLutSize, kLutSize, GL_RGBA, GL_HALF_FLOAT,
+                      frame.colorLut->rgba.data());
       lutHash_ = hash;
       lutUploaded_ = true;
     }

@@ -58,8 +58,8 @@ UniformBlock bindBlock(GLuint program, const abi::BlockDesc& desc) {
 
 }  // namespace
 
-std::optional<LinkedProgram> buildProgram(const std::string& vertexSource,
-                                          const std::string& fragmentSource, std::string* error) {
+std::optional<LinkedProgram> buildProgram(const std::string& vertexSource, const std::string& fragmentSource,
+                                          std::string* error) {
   std::optional<Shader> vertex = compileStage(GL_VERTEX_SHADER, vertexSource, error);
   if (!vertex) return std::nullopt;
   std::optional<Shader> fragment = compileStage(GL_FRAGMENT_SHADER, fragmentSource, error);

@@ -25,7 +25,7 @@ struct LinkedProgram {
 // Compiles both stages, links them and binds the ABI blocks present in the program
 // (GLSL ES 3.00 has no layout(binding), so the binding is set here by block name).
 // On failure returns nullopt and sets *error to the failing stage and its info log.
-std::optional<LinkedProgram> buildProgram(const std::string& vertexSource,
-                                          const std::string& fragmentSource, std::string* error);
+std::optional<LinkedProgram> buildProgram(const std::string& vertexSource, const std::string& fragmentSource,
+                                          std::string* error);
 
 }  // namespace facet::runtime::gl

@@ -62,7 +62,9 @@ std::string withoutArraySuffix(std::string name) {
 }
 
 SamplerShape samplerShape(GLenum type) {
-  return type == GL_SAMPLER_2D ? SamplerShape::Flat2D : type == GL_SAMPLER_CUBE ? SamplerShape::Cube : SamplerShape::Other;
+  return type == GL_SAMPLER_2D     ? SamplerShape::Flat2D
+         : type == GL_SAMPLER_CUBE ? SamplerShape::Cube
+                                   : SamplerShape::Other;
 }
 
 struct Active {
@@ -117,7 +119,8 @@ std::vector<ReflectedStage> reflectProgram(GLuint program, const Context::Resour
     glGetActiveUniformBlockiv(program, GLuint(b), GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER, &byFragment);
     block.bytes = uint32_t(std::max(bytes, 0));
     std::vector<GLint> indices(size_t(std::clamp(memberCount, 0, uniforms)));
-    if (!indices.empty()) glGetActiveUniformBlockiv(program, GLuint(b), GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES, indices.data());
+    if (!indices.empty())
+      glGetActiveUniformBlockiv(program, GLuint(b), GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES, indices.data());
     for (GLint index : indices) {
       if (index < 0 || index >= uniforms) continue;
       const Active a = activeUniform(program, GLuint(index), uniformNameMax);
@@ -147,7 +150,8 @@ std::vector<ReflectedStage> reflectProgram(GLuint program, const Context::Resour
       const GLuint resource = queries.index(program, GL_UNIFORM, a.name.c_str());
       const GLenum properties[2] = {GL_REFERENCED_BY_VERTEX_SHADER, GL_REFERENCED_BY_FRAGMENT_SHADER};
       GLint referenced[2] = {0, 0};
-      if (resource != GL_INVALID_INDEX) queries.values(program, GL_UNIFORM, resource, 2, properties, 2, nullptr, referenced);
+      if (resource != GL_INVALID_INDEX)
+        queries.values(program, GL_UNIFORM, resource, 2, properties, 2, nullptr, referenced);
       if (referenced[0]) users.push_back(&stages[0]);
       if (referenced[1]) users.push_back(&stages[1]);
     }

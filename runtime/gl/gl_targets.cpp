@@ -84,7 +84,8 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
   glBindFramebuffer(GL_FRAMEBUFFER, created.hdrFramebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
-  const bool hdrComplete = checkComplete(packed ? "HDR (R11F_G11F_B10F + DEPTH32F)" : "HDR (RGBA16F + DEPTH32F)", error);
+  const bool hdrComplete =
+      checkComplete(packed ? "HDR (R11F_G11F_B10F + DEPTH32F)" : "HDR (RGBA16F + DEPTH32F)", error);
 
   created.ldrColor = createColorTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
   created.ldrFramebuffer = Framebuffer::generate();

@@ -10,10 +10,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/texture_checks.h"
 #include "gl_objects.h"
-#include "facet/runtime/frame_eviction.h"
 
 namespace facet::runtime::gl {
 
@@ -26,8 +26,7 @@ inline constexpr uint32_t kTextureUnits = kTextureSlots;  // texture unit = bind
 using SamplerUnits = std::unordered_map<std::string, GLint>;
 
 // Sets the sampler uniforms that `bindings` name to their units. `program` must be in use.
-void assignSamplerUnits(GLuint program, const std::vector<TextureBinding>& bindings,
-                        SamplerUnits* assigned);
+void assignSamplerUnits(GLuint program, const std::vector<TextureBinding>& bindings, SamplerUnits* assigned);
 
 // GL textures made from the Textures a backend has drawn with, keyed by the Texture's address.
 //

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/render_backend.h"
 #include "gl_objects.h"
-#include "facet/runtime/frame_eviction.h"
 
 namespace facet::runtime::gl {
 

@@ -17,8 +17,8 @@ glm::dmat3 rows(double a, double b, double c, double d, double e, double f, doub
 }
 
 // Linear sRGB (Rec.709 primaries, D65) to CIE XYZ: IEC 61966-2-1.
-const glm::dmat3 kRgbToXyz = rows(0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339,
-                                  0.1191920, 0.9503041);
+const glm::dmat3 kRgbToXyz =
+    rows(0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339, 0.1191920, 0.9503041);
 // XYZ to the Bradford "cone" space (Lam 1985).
 const glm::dmat3 kBradford = rows(0.8951, 0.2664, -0.1614, -0.7502, 1.7135, 0.0367, 0.0389, -0.0685, 1.0296);
 constexpr double kD65x = 0.31271, kD65y = 0.32902;
@@ -101,7 +101,8 @@ std::array<float, 3> sampleColorLut(const ColorLut& lut, const std::array<float,
 }
 
 ColorLut resampleColorLut(const ColorLut& lut, uint32_t size) {
-  const bool unitDomain = lut.domainMin == std::array<float, 3>{0, 0, 0} && lut.domainMax == std::array<float, 3>{1, 1, 1};
+  const bool unitDomain =
+      lut.domainMin == std::array<float, 3>{0, 0, 0} && lut.domainMax == std::array<float, 3>{1, 1, 1};
   if (lut.size == size && unitDomain) return lut;
   ColorLut out;
   out.size = size;

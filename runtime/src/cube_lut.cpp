@@ -1,8 +1,8 @@
 // Adobe/Resolve .cube files (Adobe "Cube LUT Specification" 1.0, 2013): hostile input is refused
 // with the file and line, never read past its bounds, and bounded in size before it is read.
 #include <charconv>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -52,11 +52,13 @@ float number(std::string_view token, size_t line) {
     // from_chars leaves v alone when out of range; strtod (on the same, already checked,
     // characters) tells an overflow (±HUGE_VAL) from an underflow.
     const double huge = std::strtod(std::string(token).c_str(), nullptr);
-    if (std::isinf(huge)) fail(line, "'" + shown(token) + "' is beyond the half-float range (65504) the table is stored in");
+    if (std::isinf(huge))
+      fail(line, "'" + shown(token) + "' is beyond the half-float range (65504) the table is stored in");
     v = 0;
   }
   if (!std::isfinite(v)) fail(line, "'" + shown(token) + "' is not a finite number");
-  if (std::abs(v) > 65504) fail(line, "'" + shown(token) + "' is beyond the half-float range (65504) the table is stored in");
+  if (std::abs(v) > 65504)
+    fail(line, "'" + shown(token) + "' is beyond the half-float range (65504) the table is stored in");
   return float(v);
 }
 
@@ -86,8 +88,8 @@ ColorLut parse(std::string_view text) {
     const std::string_view key = t[0];
     double scratch = 0;  // "nan" and "inf" start with letters but are (refused) numbers, not keywords
     const auto parsed = std::from_chars(key.data(), key.data() + key.size(), scratch);
-    const bool keyword = ((key[0] >= 'A' && key[0] <= 'Z') || (key[0] >= 'a' && key[0] <= 'z')) &&
-                         parsed.ptr != key.data() + key.size();
+    const bool keyword =
+        ((key[0] >= 'A' && key[0] <= 'Z') || (key[0] >= 'a' && key[0] <= 'z')) && parsed.ptr != key.data() + key.size();
     if (keyword && !lut.rgb.empty()) fail(lineNumber, "'" + shown(key) + "' after the table's first entry");
     if (key == "TITLE") {
       const size_t open = line.find('"'), close = line.rfind('"');
@@ -107,7 +109,8 @@ ColorLut parse(std::string_view text) {
       const auto [nEnd, nError] = std::from_chars(token.data(), last, n);
       const bool digits = nEnd == last && nError == std::errc();
       const bool wholeOutside = vError == std::errc() && v == std::floor(v) && (v < 2 || v > kMaxCubeLutSize);
-      if (!digits && !wholeOutside) fail(lineNumber, "LUT_3D_SIZE takes a whole number in digits, not '" + shown(token) + "'");
+      if (!digits && !wholeOutside)
+        fail(lineNumber, "LUT_3D_SIZE takes a whole number in digits, not '" + shown(token) + "'");
       if (!digits || n < 2 || n > kMaxCubeLutSize)
         fail(lineNumber, "LUT_3D_SIZE " + shown(t[1]) + " is outside 2.." + std::to_string(kMaxCubeLutSize));
       lut.size = n;
@@ -132,17 +135,19 @@ ColorLut parse(std::string_view text) {
     } else {
       if (expected == 0) fail(lineNumber, "a table entry before LUT_3D_SIZE");
       if (lut.rgb.size() / 3 == expected)
-        fail(lineNumber, "more than the " + std::to_string(expected) + " entries LUT_3D_SIZE " + std::to_string(lut.size) + " gives");
+        fail(lineNumber, "more than the " + std::to_string(expected) + " entries LUT_3D_SIZE " +
+                             std::to_string(lut.size) + " gives");
       const std::array<float, 3> v = triple(t, 0, lineNumber, "a table entry");
       lut.rgb.insert(lut.rgb.end(), v.begin(), v.end());
     }
   }
   for (int c = 0; c < 3; ++c)
-    if (!(lut.domainMin[c] < lut.domainMax[c])) fail(domainLine, "DOMAIN_MIN must be below DOMAIN_MAX in every channel");
+    if (!(lut.domainMin[c] < lut.domainMax[c]))
+      fail(domainLine, "DOMAIN_MIN must be below DOMAIN_MAX in every channel");
   if (expected == 0) fail(lineNumber, "no LUT_3D_SIZE: not a 3D .cube file");
   if (lut.rgb.size() / 3 != expected)
-    fail(lineNumber, "the table ends after " + std::to_string(lut.rgb.size() / 3) + " of the " + std::to_string(expected) +
-                         " entries LUT_3D_SIZE " + std::to_string(lut.size) + " gives");
+    fail(lineNumber, "the table ends after " + std::to_string(lut.rgb.size() / 3) + " of the " +
+                         std::to_string(expected) + " entries LUT_3D_SIZE " + std::to_string(lut.size) + " gives");
   return lut;
 }
 
@@ -165,8 +170,11 @@ std::optional<ColorLut> loadCubeLut(const std::string& path, std::string* error)
   }
   const uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxCubeFileBytes) {
-    if (error) *error = path + ": error: " + (ec ? ec.message() : "larger than the " + std::to_string(kMaxCubeFileBytes) +
-                                                                     " bytes a .cube file of LUT_3D_SIZE 64 needs");
+    if (error)
+      *error =
+          path + ": error: " +
+          (ec ? ec.message()
+              : "larger than the " + std::to_string(kMaxCubeFileBytes) + " bytes a .cube file of LUT_3D_SIZE 64 needs");
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);

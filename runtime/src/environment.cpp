@@ -5,14 +5,14 @@
 #include <cstring>
 #include <mutex>
 
+#include "facet/abi/shader_abi.h"
+#include "facet/ibl/cube_map.h"
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/embedded_dfg_lut.h"
-#include "facet/ibl/cube_map.h"
 #include "facet/ibl/equirect_image.h"
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include "facet/runtime/image_texture.h"
-#include "facet/abi/shader_abi.h"
 
 namespace facet::runtime {
 namespace {
@@ -40,8 +40,7 @@ EquirectImage fitEnvironment(EquirectImage image) {
   EquirectImage out(kEnvironmentWidth, kEnvironmentHeight);
   for (int row = 0; row < out.height; ++row)
     for (int column = 0; column < out.width; ++column)
-      out.setTexel(column, row,
-                   ibl::sampleBilinear(image, (column + 0.5) / out.width, (row + 0.5) / out.height));
+      out.setTexel(column, row, ibl::sampleBilinear(image, (column + 0.5) / out.width, (row + 0.5) / out.height));
   return out;
 }
 
@@ -62,7 +61,7 @@ uint16_t floatToHalf(float value) {
   std::memcpy(&bits, &value, sizeof bits);
   const uint16_t sign = uint16_t((bits >> 16) & 0x8000u);
   const uint32_t magnitude = bits & 0x7fffffffu;
-  if (magnitude > 0x7f800000u) return uint16_t(sign | 0x7e00u);  // NaN stays NaN
+  if (magnitude > 0x7f800000u) return uint16_t(sign | 0x7e00u);   // NaN stays NaN
   if (magnitude >= 0x477ff000u) return uint16_t(sign | 0x7bffu);  // rounds to ≥ 65520: saturate at 65504
   if (magnitude < 0x38800000u) {                                  // below 2^-14: a subnormal half (or 0)
     if (magnitude < 0x33000000u) return sign;                     // below half of the smallest subnormal

@@ -7,9 +7,7 @@
 namespace facet::runtime::fg {
 namespace {
 
-uint64_t imageBytes(const ResourceDesc& r) {
-  return uint64_t{r.width} * r.height * r.bytesPerPixel;
-}
+uint64_t imageBytes(const ResourceDesc& r) { return uint64_t{r.width} * r.height * r.bytesPerPixel; }
 
 bool contains(const std::vector<ResourceId>& ids, ResourceId id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
@@ -24,9 +22,7 @@ std::vector<ResourceId> outputsOf(const PassDesc& pass) {
   return out;
 }
 
-bool sameSize(const ResourceDesc& a, const ResourceDesc& b) {
-  return a.width == b.width && a.height == b.height;
-}
+bool sameSize(const ResourceDesc& a, const ResourceDesc& b) { return a.width == b.width && a.height == b.height; }
 
 }  // namespace
 
@@ -78,8 +74,7 @@ bool FrameGraph::compile(CompiledGraph* out, std::string* error) const {
         return false;
       }
       if (!written[read.first]) {
-        *error = "pass '" + pass.name + "' reads '" + resources_[read.first].name +
-                 "' before any pass writes it";
+        *error = "pass '" + pass.name + "' reads '" + resources_[read.first].name + "' before any pass writes it";
         return false;
       }
     }
@@ -107,8 +102,7 @@ bool FrameGraph::compile(CompiledGraph* out, std::string* error) const {
   for (size_t i = passCount; i-- > 0;) {
     const PassDesc& pass = passes_[i];
     const std::vector<ResourceId> outputs = outputsOf(pass);
-    const bool needed = std::any_of(outputs.begin(), outputs.end(),
-                                    [&](ResourceId id) { return live.count(id) != 0; });
+    const bool needed = std::any_of(outputs.begin(), outputs.end(), [&](ResourceId id) { return live.count(id) != 0; });
     if (!needed) continue;
     g.culled[i] = false;
     for (ResourceId id : pass.clears) live.erase(id);
@@ -130,9 +124,8 @@ bool FrameGraph::compile(CompiledGraph* out, std::string* error) const {
       const RenderPass& current = g.renderPasses.back();
       const ResourceDesc& reference = resources_[current.attachments.front().resource];
       for (const auto& read : pass.reads) {
-        const bool attached =
-            std::any_of(current.attachments.begin(), current.attachments.end(),
-                        [&](const Attachment& a) { return a.resource == read.first; });
+        const bool attached = std::any_of(current.attachments.begin(), current.attachments.end(),
+                                          [&](const Attachment& a) { return a.resource == read.first; });
         if (read.second != ReadKind::OwnPixel || !attached) merge = false;
       }
       for (ResourceId id : outputsOf(pass)) {
@@ -221,9 +214,7 @@ const char* toString(LoadOp op) {
   return "?";
 }
 
-const char* toString(StoreOp op) {
-  return op == StoreOp::Store ? "store" : "dont_care";
-}
+const char* toString(StoreOp op) { return op == StoreOp::Store ? "store" : "dont_care"; }
 
 std::string describe(const FrameGraph& graph, const CompiledGraph& compiled) {
   std::string text;
@@ -234,9 +225,8 @@ std::string describe(const FrameGraph& graph, const CompiledGraph& compiled) {
     for (uint32_t p : rp.subpasses) text += " " + graph.pass(p).name;
     text += "\n";
     for (const Attachment& a : rp.attachments) {
-      std::snprintf(line, sizeof line, "  %-10s load %-9s store %-9s%s\n",
-                    graph.resource(a.resource).name.c_str(), toString(a.load), toString(a.store),
-                    a.inputAttachment ? " (input attachment)" : "");
+      std::snprintf(line, sizeof line, "  %-10s load %-9s store %-9s%s\n", graph.resource(a.resource).name.c_str(),
+                    toString(a.load), toString(a.store), a.inputAttachment ? " (input attachment)" : "");
       text += line;
     }
   }
@@ -247,8 +237,8 @@ std::string describe(const FrameGraph& graph, const CompiledGraph& compiled) {
     const ResourceTraffic& t = compiled.traffic[id];
     std::snprintf(line, sizeof line, "  %-10s loaded %10llu B  stored %10llu B  sampled %10llu B%s\n",
                   graph.resource(id).name.c_str(), static_cast<unsigned long long>(t.loadedBytes),
-                  static_cast<unsigned long long>(t.storedBytes),
-                  static_cast<unsigned long long>(t.sampledBytes), t.transient ? "  transient" : "");
+                  static_cast<unsigned long long>(t.storedBytes), static_cast<unsigned long long>(t.sampledBytes),
+                  t.transient ? "  transient" : "");
     text += line;
   }
   std::snprintf(line, sizeof line, "total: loaded %llu B, stored %llu B, sampled %llu B per frame\n",

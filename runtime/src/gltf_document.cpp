@@ -22,7 +22,8 @@ std::optional<std::pair<unsigned long, unsigned long>> version(const std::string
   const auto digits = [](std::string_view s) {
     return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string_view::npos;
   };
-  if (dot == std::string::npos || !digits(std::string_view(text).substr(0, dot)) || !digits(std::string_view(text).substr(dot + 1)))
+  if (dot == std::string::npos || !digits(std::string_view(text).substr(0, dot)) ||
+      !digits(std::string_view(text).substr(dot + 1)))
     return std::nullopt;
   return std::make_pair(std::stoul(text.substr(0, dot)), std::stoul(text.substr(dot + 1)));
 }
@@ -36,14 +37,17 @@ bool checkAsset(const json& document, std::string* error) {
   }
   const auto v = version(given->get<std::string>());
   if (!v || v->first != 2) {
-    *error = "/asset/version: '" + scene::shownValue(given->get<std::string>()) + "' is not a glTF 2.x version (this loader reads glTF 2.0)";
+    *error = "/asset/version: '" + scene::shownValue(given->get<std::string>()) +
+             "' is not a glTF 2.x version (this loader reads glTF 2.0)";
     return false;
   }
   if (const json* minimum = member(*asset, "minVersion")) {
     const auto m = minimum->is_string() ? version(minimum->get<std::string>()) : std::nullopt;
     if (!m || *m > std::make_pair(2ul, 0ul) || *m > *v) {
-      *error = "/asset/minVersion: " + (minimum->is_string() ? "'" + scene::shownValue(minimum->get<std::string>()) + "'" : minimum->type_name()) +
-               " is not a version this loader supports (glTF 2.0), or is above the asset's version";
+      *error =
+          "/asset/minVersion: " +
+          (minimum->is_string() ? "'" + scene::shownValue(minimum->get<std::string>()) + "'" : minimum->type_name()) +
+          " is not a version this loader supports (glTF 2.0), or is above the asset's version";
       return false;
     }
   }
@@ -60,8 +64,10 @@ bool checkExtensions(const json& document, std::string* error) {
   if (!required->empty()) {
     const json& first = (*required)[0];
     *error = "/extensionsRequired/0: the file requires " +
-             (first.is_string() ? "extension '" + scene::shownValue(first.get<std::string>()) + "'" : std::string("an extension")) +
-             ", which this loader does not implement (it implements none; the glTF spec says such a file must not be loaded)";
+             (first.is_string() ? "extension '" + scene::shownValue(first.get<std::string>()) + "'"
+                                : std::string("an extension")) +
+             ", which this loader does not implement (it implements none; the glTF spec says such a file must not be "
+             "loaded)";
     return false;
   }
   return true;
@@ -102,7 +108,8 @@ std::string uriPath(const std::string& uri, std::string* why) {
   const size_t colon = uri.find(':');
   if (colon != std::string::npos && colon < uri.find('/') && std::isalpha(static_cast<unsigned char>(uri[0])) &&
       uri.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+-.", 0) == colon) {
-    *why = "'" + scene::shownValue(uri) + "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
+    *why = "'" + scene::shownValue(uri) +
+           "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
            "or application/gltf-buffer";
     return {};
   }
@@ -114,14 +121,16 @@ std::string uriPath(const std::string& uri, std::string* why) {
       return {};
     }
     if (c == '?' || c == '#') {
-      *why = "'" + scene::shownValue(uri) + "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
+      *why = "'" + scene::shownValue(uri) +
+             "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
       return {};
     }
     if (c != '%') {
       path += c;
       continue;
     }
-    const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1, low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
+    const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1,
+              low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
     if (high < 0 || low < 0 || (high == 0 && low == 0)) {
       *why = "'" + scene::shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
       return {};
@@ -133,7 +142,8 @@ std::string uriPath(const std::string& uri, std::string* why) {
 }
 
 bool isBase64BufferUri(const std::string& uri) {
-  return uri.rfind("data:application/octet-stream;base64,", 0) == 0 || uri.rfind("data:application/gltf-buffer;base64,", 0) == 0;
+  return uri.rfind("data:application/octet-stream;base64,", 0) == 0 ||
+         uri.rfind("data:application/gltf-buffer;base64,", 0) == 0;
 }
 
 std::optional<std::vector<ExternalBuffer>> checkBuffers(const json& document, bool binary, std::string* error) {

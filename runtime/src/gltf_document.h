@@ -32,6 +32,7 @@ struct ExternalBuffer {
 //     without a URI except a .glb's first (tinygltf gives each a copy of the BIN chunk), a
 //     byteLength that is not a whole number of at least 1.
 // Returns the buffers to read from files, in the order tinygltf asks for them.
-std::optional<std::vector<ExternalBuffer>> checkDocument(const nlohmann::json& document, bool binary, std::string* error);
+std::optional<std::vector<ExternalBuffer>> checkDocument(const nlohmann::json& document, bool binary,
+                                                         std::string* error);
 
 }  // namespace facet::runtime::gltf

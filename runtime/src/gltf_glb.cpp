@@ -29,7 +29,8 @@ std::optional<GlbChunks> readGlbContainer(std::span<const uint8_t> file, std::st
     return std::nullopt;
   }
   if (const uint32_t length = word(file, 8); length != file.size()) {
-    *error = "GLB header: declares " + std::to_string(length) + " bytes, but the file has " + std::to_string(file.size());
+    *error =
+        "GLB header: declares " + std::to_string(length) + " bytes, but the file has " + std::to_string(file.size());
     return std::nullopt;
   }
   GlbChunks chunks;

@@ -187,7 +187,8 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
   const size_t firstIndex = mesh->indices.size();
   const auto flipWinding = [&] {
     if (!placement.mirrors) return;
-    for (size_t i = firstIndex; i + 2 < mesh->indices.size(); i += 3) std::swap(mesh->indices[i + 1], mesh->indices[i + 2]);
+    for (size_t i = firstIndex; i + 2 < mesh->indices.size(); i += 3)
+      std::swap(mesh->indices[i + 1], mesh->indices[i + 2]);
   };
   if (primitive.indices < 0) {
     if (count % 3 != 0) {
@@ -238,7 +239,9 @@ struct Totals {
 bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& instances, const GltfBudget& left,
                  Totals* totals, std::string* error) {
   const auto declared = [&](int accessor) {
-    return accessor >= 0 && size_t(accessor) < model.accessors.size() ? uint64_t(model.accessors[size_t(accessor)].count) : 0;
+    return accessor >= 0 && size_t(accessor) < model.accessors.size()
+               ? uint64_t(model.accessors[size_t(accessor)].count)
+               : 0;
   };
   const auto over = [&](const Instance& instance, uint64_t leftCount, uint64_t limit, const char* what) {
     *error = instance.from + ": the file places more than " +
@@ -382,7 +385,8 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
   GltfBudget own;
   GltfBudget& budget = options.budget ? *options.budget : own;
   uint64_t bytesRead = 0;
-  std::optional<tinygltf::Model> model = gltf::readSource(path, {options.assetRoot, budget.fileBytes}, &bytesRead, error);
+  std::optional<tinygltf::Model> model =
+      gltf::readSource(path, {options.assetRoot, budget.fileBytes}, &bytesRead, error);
   if (!model) return std::nullopt;
   // The scene the file asks for (glTF: `scene`, else the first); a file without scenes is a
   // library of meshes, each drawn as stored.
@@ -413,7 +417,8 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
     return std::nullopt;
   }
   if (mesh.indices.empty()) {
-    *error = path + ": error: " + (scene >= 0 ? "/scenes/" + std::to_string(scene) + ": no triangles" : "/meshes: no triangles");
+    *error = path + ": error: " +
+             (scene >= 0 ? "/scenes/" + std::to_string(scene) + ": no triangles" : "/meshes: no triangles");
     return std::nullopt;
   }
   budget.vertices -= totals.vertices;

@@ -1,7 +1,7 @@
 #include "gltf_model_cost.h"
 
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include <map>
 #include <vector>
@@ -99,7 +99,8 @@ class CostWalk : public nlohmann::json_sax<json> {
   bool open(bool array) {
     const std::string key = !frames_.empty() && frames_.back().array ? std::string() : key_;
     const bool parentValues = !frames_.empty() && frames_.back().asValues;
-    const bool asValues = parentValues || key == "extras" || key == "extensions" || (frames_.size() == 1 && key == "materials");
+    const bool asValues =
+        parentValues || key == "extras" || key == "extensions" || (frames_.size() == 1 && key == "materials");
     const uint64_t elements = array ? elementCost(key) : 0;
     if (!value(0)) return false;
     frames_.push_back({array, asValues, elements, key});

@@ -16,8 +16,8 @@ namespace facet::runtime::gltf {
 inline constexpr uint64_t kMaxModelBytes = uint64_t(256) << 20;
 
 struct ModelCost {
-  uint64_t bytes = 0;         // the estimate, or the first sum above kMaxModelBytes
-  std::string largest;        // the top-level property that costs most, e.g. "/nodes"
+  uint64_t bytes = 0;   // the estimate, or the first sum above kMaxModelBytes
+  std::string largest;  // the top-level property that costs most, e.g. "/nodes"
   uint64_t largestBytes = 0;
 };
 

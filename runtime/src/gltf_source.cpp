@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
-#include "facet/scene/asset_path.h"
 #include "facet/runtime/gltf_mesh.h"
+#include "facet/scene/asset_path.h"
 #include "facet/scene/json_document.h"
 #include "gltf_document.h"
 #include "gltf_glb.h"
@@ -43,8 +43,9 @@ class BoundedReader {
       return false;
     }
     if (size > allowance_ - used_) {
-      *why = "is " + std::to_string(size) + " bytes; with the " + std::to_string(used_) + " read before it, more than the " +
-             std::to_string(allowance_) + " bytes left for glTF files (a scene's glTF files and their buffers take at most " +
+      *why = "is " + std::to_string(size) + " bytes; with the " + std::to_string(used_) +
+             " read before it, more than the " + std::to_string(allowance_) +
+             " bytes left for glTF files (a scene's glTF files and their buffers take at most " +
              std::to_string(GltfBudget::kMaxFileBytes >> 20) + " MiB together)";
       return false;
     }
@@ -132,9 +133,12 @@ std::string tinygltfMessage(const std::string& err) {
   std::string out;
   for (size_t i = 0; i < err.size() && out.size() < kShown; ++i) {
     const unsigned char c = static_cast<unsigned char>(err[i]);
-    if (c == '\n') out += i + 1 < err.size() ? "; " : "";
-    else if (c < 0x20) out += ' ';
-    else out += char(c);
+    if (c == '\n')
+      out += i + 1 < err.size() ? "; " : "";
+    else if (c < 0x20)
+      out += ' ';
+    else
+      out += char(c);
   }
   if (out.size() >= kShown) out += "...(" + std::to_string(err.size()) + " bytes)";
   return out.empty() ? "not a valid glTF 2.0 file" : out;
@@ -147,8 +151,9 @@ std::optional<std::vector<ExternalBuffer>> checkJson(const std::string& path, st
                                                      std::optional<size_t> glbOffset, std::string* error) {
   const std::string chunk = glbOffset ? "in the JSON chunk at byte " + std::to_string(*glbOffset) + ": " : "";
   if (std::optional<size_t> at = scene::jsonTooDeepAt(text)) {
-    *error = path + ":" + scene::jsonLineColumn(text, *at) + ": error: " + chunk + "arrays and objects nest more than " +
-             std::to_string(scene::kMaxJsonDepth) + " deep here (Facet reads JSON at most that deep)";
+    *error = path + ":" + scene::jsonLineColumn(text, *at) + ": error: " + chunk +
+             "arrays and objects nest more than " + std::to_string(scene::kMaxJsonDepth) +
+             " deep here (Facet reads JSON at most that deep)";
     return std::nullopt;
   }
   const ModelCost cost = estimateModelCost(text);

@@ -12,8 +12,8 @@
 namespace facet::runtime::gltf {
 
 struct SourceOptions {
-  std::string assetRoot;     // the folder buffers may come from; "": the file's own folder
-  uint64_t fileBytes = 0;    // what the file and its buffers may take together
+  std::string assetRoot;   // the folder buffers may come from; "": the file's own folder
+  uint64_t fileBytes = 0;  // what the file and its buffers may take together
 };
 
 // The model, and in *bytesRead what was read from files. *error is a whole message:

@@ -1,10 +1,10 @@
 #include "facet/runtime/image_texture.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -62,7 +62,8 @@ std::string pngChunkError(std::span<const uint8_t> bytes) {
   if (!isPng(bytes)) return "";
   size_t at = 8;
   while (at + 8 <= bytes.size()) {
-    const uint64_t length = uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 | uint64_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    const uint64_t length =
+        uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 | uint64_t(bytes[at + 2]) << 8 | bytes[at + 3];
     const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
     if (length + 12 > bytes.size() - at)
       return "PNG chunk at byte " + std::to_string(at) + " declares " + std::to_string(length) + " bytes; " +
@@ -174,8 +175,8 @@ bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::st
   }
   uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxImageFileBytes) {
-    *error = path + ": cannot read image: " + (ec ? ec.message() : std::to_string(size) + " bytes; the limit is " +
-                                                                  std::to_string(kMaxImageFileBytes));
+    *error = path + ": cannot read image: " +
+             (ec ? ec.message() : std::to_string(size) + " bytes; the limit is " + std::to_string(kMaxImageFileBytes));
     return false;
   }
   std::ifstream in(path, std::ios::binary);
@@ -222,7 +223,7 @@ std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std:
 }
 
 std::optional<ibl::EquirectImage> decodeEquirectImage(std::span<const uint8_t> bytes, const std::string& name,
-                                                 std::string* error) {
+                                                      std::string* error) {
   int w = 0, h = 0, channels = 0;
   if (!probeImage(bytes, name, &w, &h, error)) return std::nullopt;
   if (w != 2 * h) {

@@ -112,7 +112,7 @@ bool LoadedMaterial::preshade(const std::string& variantKey, std::vector<uint8_t
 }
 
 std::optional<std::vector<TextureBinding>> LoadedMaterial::generatedTextures(const std::string& variantKey,
-                                                                           std::string* error) const {
+                                                                             std::string* error) const {
   std::vector<TextureBinding> out;
   const std::vector<package::VariantInfo>& variants = reader_.variants();
   uint32_t index = 0;
@@ -188,7 +188,8 @@ std::optional<std::vector<uint8_t>> LoadedMaterial::paramBlock(const std::map<st
         bool outside = (p.rangeMin && c < *p.rangeMin) || (p.rangeMax && c > *p.rangeMax) || !std::isfinite(c);
         if (p.type == package::ParamType::Color) outside = outside || c < 0.0 || c > 1.0;
         if (outside) {
-          *error = "parameter '" + p.name + "' of material '" + info.name + "' = " + number(c) + " is outside its range" +
+          *error = "parameter '" + p.name + "' of material '" + info.name + "' = " + number(c) +
+                   " is outside its range" +
                    (p.rangeMin ? " [" + number(*p.rangeMin) + ", " + number(*p.rangeMax) + "]" : std::string());
           return std::nullopt;
         }

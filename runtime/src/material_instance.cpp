@@ -121,7 +121,8 @@ namespace {
 // reports it).
 bool hasType(const Material& material, ParameterHandle handle, std::initializer_list<package::ParamType> types) {
   const auto& params = material.loaded().info().params;
-  return handle.index < params.size() && std::find(types.begin(), types.end(), params[handle.index].type) != types.end();
+  return handle.index < params.size() &&
+         std::find(types.begin(), types.end(), params[handle.index].type) != types.end();
 }
 using package::ParamType;
 }  // namespace

@@ -36,7 +36,11 @@ Mesh makeSphere(int rings, int segments) {
       float z = float(-std::sin(theta) * std::sin(phi));
       // ∂P/∂u points along (−sin φ, 0, −cos φ) (also at the poles, as a limit). ∂P/∂v points
       // south (v grows with θ), and cross(n, t) points north, so the bitangent sign w is −1.
-      Vertex vertex{{x, y, z}, {x, y, z}, {float(u), float(v)}, {float(u), float(v)}, {1, 1, 1, 1},
+      Vertex vertex{{x, y, z},
+                    {x, y, z},
+                    {float(u), float(v)},
+                    {float(u), float(v)},
+                    {1, 1, 1, 1},
                     {float(-std::sin(phi)), 0.0f, float(-std::cos(phi)), -1.0f}};
       appendVertex(mesh, vertex);
     }

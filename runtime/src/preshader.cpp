@@ -45,9 +45,7 @@ bool runPreshader(std::span<const package::PreshaderOp> ops, uint32_t paramBlock
       case package::PreshaderOpcode::Swizzle:
         for (size_t i = 0; i < 4; ++i) d[i] = a[(op.offset >> (2 * i)) & 3];
         break;
-      case package::PreshaderOpcode::Store:
-        std::memcpy(block.data() + op.offset, a.data(), 4 * op.count);
-        break;
+      case package::PreshaderOpcode::Store: std::memcpy(block.data() + op.offset, a.data(), 4 * op.count); break;
     }
   }
   return true;

@@ -15,7 +15,8 @@ const char* toString(HdrFormat format) { return format == HdrFormat::R11G11B10Fl
 
 uint32_t bytesPerPixel(HdrFormat format) { return format == HdrFormat::R11G11B10Float ? 4 : 8; }
 
-ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr, HdrFormat hdrFormat) {
+ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
+                                       HdrFormat hdrFormat) {
   ForwardPostGraph g;
   g.hdr = g.graph.addResource({"hdr", width, height, bytesPerPixel(hdrFormat), false, readBackHdr});
   g.depth = g.graph.addResource({"depth", width, height, 4, true, false});

@@ -11,12 +11,12 @@
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/color_grading.h"
 #include "facet/runtime/environment.h"
-#include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/vignette.h"
 
 namespace facet::runtime {
@@ -56,8 +56,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     *error = "unknown tier '" + scene.tier + "' (reference, high, mid, low)";
     return nullptr;
   }
-  static_assert(kMaxSceneLights == size_t(permutations::kMaxPointLights) &&
-                    kMaxSceneLights == abi::kMaxPunctualLights,
+  static_assert(kMaxSceneLights == size_t(permutations::kMaxPointLights) && kMaxSceneLights == abi::kMaxPunctualLights,
                 "the scene, the permutations and the frame block agree on the punctual-light limit");
   const int lights = int(scene.lights.size());
   out->variantKey_ = permutations::requestKey({true}, *tier, scene.sun.has_value(), lights).toString();
@@ -75,8 +74,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   out->exposure_ = exposureFromEv100(ev100(cam.aperture, cam.shutterSeconds, cam.iso));
   abi::FrameUniforms& f = out->frame_.frame;
   glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
-  glm::dmat4 projection = glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height,
-                                           cam.nearPlane, cam.farPlane);
+  glm::dmat4 projection =
+      glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height, cam.nearPlane, cam.farPlane);
   store(f.viewProjection, glm::mat4(projection * view));
   store(f.cameraPosition, cam.position, 1);
   if (scene.sun) {
@@ -94,13 +93,15 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   const auto& mean = out->environment_.meanRadiance;
   store(f.ambient, glm::dvec3(mean[0], mean[1], mean[2]));
   out->environmentTexture_ = std::make_unique<Texture>(environmentTexture(out->environment_));
-  out->frame_.frameTextures.push_back({abi::kEnvironmentBinding, abi::kEnvironmentName, out->environmentTexture_.get()});
+  out->frame_.frameTextures.push_back(
+      {abi::kEnvironmentBinding, abi::kEnvironmentName, out->environmentTexture_.get()});
   if (permutations::preset(*tier).ambient == permutations::AmbientModel::SplitSum)
     out->frame_.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &dfgTexture()});
   out->frame_.width = scene.width;
   out->frame_.height = scene.height;
   if (scene.post.colorGrading) {
-    std::optional<ColorLut> lut = scene.gradingLut.empty() ? buildColorLut(scene.grading) : loadCubeLut(scene.gradingLut, error);
+    std::optional<ColorLut> lut =
+        scene.gradingLut.empty() ? buildColorLut(scene.grading) : loadCubeLut(scene.gradingLut, error);
     if (!lut) return nullptr;
     out->colorLut_ = colorLutTexels(*lut);
     out->frame_.colorLut = &out->colorLut_;
@@ -122,8 +123,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       if (!loadedMaterial) return nullptr;
       // A package renamed or copied under another material's name would draw the wrong surface.
       if (loadedMaterial->info().name != o.material) {
-        *error = path + ": holds material '" + loadedMaterial->info().name + "', not '" + o.material +
-                 "' as the scene asks";
+        *error =
+            path + ": holds material '" + loadedMaterial->info().name + "', not '" + o.material + "' as the scene asks";
         return nullptr;
       }
       // The variant, its shaders and package textures, the colour encoding: as for an app's

@@ -36,7 +36,8 @@ std::optional<ImageCost> decodedCost(const std::string& path, uint64_t bytesPerP
   if (head.empty() || !stbi_info_from_memory(head.data(), int(head.size()), &w, &h, &channels) || w <= 0 || h <= 0)
     return std::nullopt;
   uint64_t bytes = 0;
-  for (uint64_t lw = uint64_t(w), lh = uint64_t(h);; lw = std::max<uint64_t>(1, lw / 2), lh = std::max<uint64_t>(1, lh / 2)) {
+  for (uint64_t lw = uint64_t(w), lh = uint64_t(h);;
+       lw = std::max<uint64_t>(1, lw / 2), lh = std::max<uint64_t>(1, lh / 2)) {
     bytes += lw * lh * bytesPerPixel;
     if (!mipChain || (lw == 1 && lh == 1)) break;
   }
@@ -60,9 +61,9 @@ bool checkSceneImageBudget(const Scene& scene, std::string* error) {
   std::sort(costs.begin(), costs.end(), [](const ImageCost& a, const ImageCost& b) { return a.bytes > b.bytes; });
   std::string largest;
   for (size_t i = 0; i < costs.size() && i < 3; ++i) largest += (i ? ", " : "") + costs[i].description;
-  *error = "the scene's images decode to " + std::to_string((total + (1u << 20) - 1) >> 20) + " MiB (" + std::to_string(costs.size()) +
-           " images; largest: " + largest + "); a scene may use at most " + std::to_string(kMaxSceneImageBytes >> 20) +
-           " MiB of decoded images";
+  *error = "the scene's images decode to " + std::to_string((total + (1u << 20) - 1) >> 20) + " MiB (" +
+           std::to_string(costs.size()) + " images; largest: " + largest + "); a scene may use at most " +
+           std::to_string(kMaxSceneImageBytes >> 20) + " MiB of decoded images";
   return false;
 }
 

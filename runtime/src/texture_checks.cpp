@@ -24,12 +24,10 @@ uint64_t hashLevels(const std::vector<std::vector<uint8_t>>& levels) {
   return hash;
 }
 
-bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::string& which,
-                  std::string* error) {
-  if (texture.width == 0 || texture.height == 0 || texture.width > maxImageSize ||
-      texture.height > maxImageSize) {
-    *error = which + ": size " + std::to_string(texture.width) + "x" +
-             std::to_string(texture.height) + " is outside 1.." + std::to_string(maxImageSize);
+bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::string& which, std::string* error) {
+  if (texture.width == 0 || texture.height == 0 || texture.width > maxImageSize || texture.height > maxImageSize) {
+    *error = which + ": size " + std::to_string(texture.width) + "x" + std::to_string(texture.height) +
+             " is outside 1.." + std::to_string(maxImageSize);
     return false;
   }
   const uint32_t texelBytes = bytesPerTexel(texture.format);
@@ -45,8 +43,8 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
   const size_t fullChain = fullChainLength(texture.width, texture.height);
   if (texture.levels.empty() || texture.levels.size() > fullChain) {
     *error = which + ": " + std::to_string(texture.levels.size()) + " mip levels given, a " +
-             std::to_string(texture.width) + "x" + std::to_string(texture.height) +
-             " texture has 1.." + std::to_string(fullChain);
+             std::to_string(texture.width) + "x" + std::to_string(texture.height) + " texture has 1.." +
+             std::to_string(fullChain);
     return false;
   }
   for (size_t i = 0; i < texture.levels.size(); ++i) {
@@ -55,10 +53,9 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
     const size_t faces = texture.cube ? 6 : 1;
     const size_t expected = faces * w * h * texelBytes;
     if (texture.levels[i].size() != expected) {
-      *error = which + ": level " + std::to_string(i) + " has " +
-               std::to_string(texture.levels[i].size()) + " bytes, " + (texture.cube ? "6 faces of " : "") +
-               std::to_string(w) + "x" + std::to_string(h) + " texels of " + std::to_string(texelBytes) +
-               " bytes need " + std::to_string(expected);
+      *error = which + ": level " + std::to_string(i) + " has " + std::to_string(texture.levels[i].size()) +
+               " bytes, " + (texture.cube ? "6 faces of " : "") + std::to_string(w) + "x" + std::to_string(h) +
+               " texels of " + std::to_string(texelBytes) + " bytes need " + std::to_string(expected);
       return false;
     }
   }
@@ -66,14 +63,12 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
 }
 
 // Checks one list of bindings; `taken` marks the bindings already given to the same draw.
-bool checkBindings(const std::vector<TextureBinding>& bindings, const std::string& owner,
-                   uint32_t maxImageSize, std::array<const char*, kTextureSlots>* taken,
-                   const char* kind, std::string* error) {
+bool checkBindings(const std::vector<TextureBinding>& bindings, const std::string& owner, uint32_t maxImageSize,
+                   std::array<const char*, kTextureSlots>* taken, const char* kind, std::string* error) {
   for (size_t i = 0; i < bindings.size(); ++i) {
     const TextureBinding& binding = bindings[i];
-    const std::string which = owner + std::string(kind) + " " + std::to_string(i) + " ('" +
-                              binding.glslName + "', binding " + std::to_string(binding.binding) +
-                              ")";
+    const std::string which = owner + std::string(kind) + " " + std::to_string(i) + " ('" + binding.glslName +
+                              "', binding " + std::to_string(binding.binding) + ")";
     if (binding.binding >= kTextureSlots) {
       *error = which + ": binding is outside 0.." + std::to_string(kTextureSlots - 1);
       return false;
@@ -109,14 +104,11 @@ Texture emptySlotTexture(bool cube) {
 
 uint32_t bytesPerTexel(TextureFormat format) {
   switch (format) {
-    case TextureFormat::R8Unorm:
-      return 1;
-    case TextureFormat::Rgba16Float:
-      return 8;
+    case TextureFormat::R8Unorm: return 1;
+    case TextureFormat::Rgba16Float: return 8;
     case TextureFormat::Rgba8Unorm:
     case TextureFormat::Rgba8Srgb:
-    case TextureFormat::Rg16Float:
-      return 4;
+    case TextureFormat::Rg16Float: return 4;
   }
   return 0;  // not an enumerator: rejected by checkTexture
 }
@@ -144,8 +136,8 @@ bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::stri
   }
   for (size_t d = 0; d < frame.draws.size(); ++d) {
     std::array<const char*, kTextureSlots> taken = frameTaken;
-    if (!checkBindings(frame.draws[d].textures, "draw " + std::to_string(d) + ": ", maxImageSize,
-                       &taken, "draw texture", error)) {
+    if (!checkBindings(frame.draws[d].textures, "draw " + std::to_string(d) + ": ", maxImageSize, &taken,
+                       "draw texture", error)) {
       return false;
     }
   }

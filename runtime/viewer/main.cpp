@@ -5,9 +5,9 @@
 
 #include "facet/package/atomic_file.h"
 #include "facet/runtime/frame_graph.h"
+#include "facet/runtime/png.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/render_path.h"
-#include "facet/runtime/png.h"
 #include "facet/runtime/scene_frame.h"
 #include "frame_stats.h"
 
@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
   app.add_option("--tier", tier, "render at this tier instead of the scene's (reference, high, mid, low)");
   app.add_flag("--validation", validation, "enable Vulkan validation layers; any validation error fails the run");
   app.add_option("--post-path", postPathName,
-                 "auto | merged (post pass reads its own pixel in the same render pass) | separate (post samples the stored HDR)")
+                 "auto | merged (post pass reads its own pixel in the same render pass) | separate (post samples the "
+                 "stored HDR)")
       ->check(CLI::IsMember({"auto", "merged", "separate"}));
   app.add_option("--hdr-format", hdrFormatName, "rgba16f (default) | r11g11b10f (half the bytes, 6/6/5 mantissa bits)")
       ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
@@ -50,7 +51,8 @@ int main(int argc, char** argv) {
                "print per-pass GPU time (median over --frames after --warmup) and the frame graph: render passes, "
                "load/store ops, bytes loaded/stored per frame");
   app.add_flag("--json", json, "with --stats: print the statistics as JSON on stdout (other output goes to stderr)");
-  app.add_option("--frames", frames, "frames to render and measure (the PNG is the last one)")->check(CLI::Range(1, 100000));
+  app.add_option("--frames", frames, "frames to render and measure (the PNG is the last one)")
+      ->check(CLI::Range(1, 100000));
   app.add_option("--warmup", warmup, "with --stats: frames rendered first and not measured (default 2)")
       ->check(CLI::Range(0, 1000));
   try {
@@ -84,10 +86,10 @@ int main(int argc, char** argv) {
   if (backendName == "both" || backendName == "vulkan") backends.push_back("vulkan");
   if (backendName == "both" || backendName == "gl") backends.push_back("gl");
   const facet::runtime::PostPath postPath = postPathName == "merged"     ? facet::runtime::PostPath::Merged
-                                             : postPathName == "separate" ? facet::runtime::PostPath::Separate
-                                                                          : facet::runtime::PostPath::Auto;
-  const facet::runtime::HdrFormat hdrFormat =
-      hdrFormatName == "r11g11b10f" ? facet::runtime::HdrFormat::R11G11B10Float : facet::runtime::HdrFormat::Rgba16Float;
+                                            : postPathName == "separate" ? facet::runtime::PostPath::Separate
+                                                                         : facet::runtime::PostPath::Auto;
+  const facet::runtime::HdrFormat hdrFormat = hdrFormatName == "r11g11b10f" ? facet::runtime::HdrFormat::R11G11B10Float
+                                                                            : facet::runtime::HdrFormat::Rgba16Float;
   nlohmann::json report = nlohmann::json::array();
   for (const std::string& name : backends) {
     std::unique_ptr<facet::runtime::RenderBackend> backend;
@@ -118,12 +120,13 @@ int main(int argc, char** argv) {
       if (!backend->render(prepared->frame(), &result, &error)) return fail(name + ": " + error);
       if (i >= total - frames) times.push_back(result.gpuTimes);
     }
-    for (const std::string& message : backend->validationErrors()) std::fprintf(stderr, "%s validation: %s\n", name.c_str(), message.c_str());
+    for (const std::string& message : backend->validationErrors())
+      std::fprintf(stderr, "%s validation: %s\n", name.c_str(), message.c_str());
     if (!backend->validationErrors().empty()) return fail(name + ": validation reported errors");
     std::string path = (std::filesystem::path(outDir) / (stem + "." + name + ".png")).string();
     if (!facet::runtime::writePng(path, result.width, result.height, result.ldr, &error)) return fail(error);
-    std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(), result.width, result.height,
-                prepared->variantKey().c_str(), prepared->exposure());
+    std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(),
+                 result.width, result.height, prepared->variantKey().c_str(), prepared->exposure());
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
           result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat());
@@ -140,8 +143,9 @@ int main(int argc, char** argv) {
         entry["scene"] = scenePath;
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, %s HDR, frame graph at %ux%u:\n%s", name.c_str(), facet::runtime::toString(backend->postPath()),
-                    facet::runtime::toString(backend->hdrFormat()), result.width, result.height,
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u:\n%s", name.c_str(),
+                    facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
+                    result.width, result.height,
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
       }
     }

@@ -63,11 +63,11 @@ bool AppImageCache::framebuffersFor(const AppImage& image, const RenderTargets& 
   if (config.merged) {
     const std::array<VkImageView, 3> views{targets.hdr.view, targets.depth.view, entry.view};
     ok = createFramebuffer(device_, config.forwardPass, views.data(), 3, image.width, image.height,
-                         &entry.framebuffers.forward, error);
+                           &entry.framebuffers.forward, error);
   } else {
     entry.framebuffers.forward = targets.forwardFramebuffer;  // the targets' own: HDR and depth
     ok = createFramebuffer(device_, config.postPass, &entry.view, 1, image.width, image.height,
-                         &entry.framebuffers.post, error);
+                           &entry.framebuffers.post, error);
   }
   if (!ok) {
     destroyEntryNow(device_, entry.view, entry.framebuffers, config.merged);
@@ -84,7 +84,8 @@ void AppImageCache::release(const Entry& entry) {
   VkDevice device = device_;
   const VkImageView view = entry.view;
   const Framebuffers framebuffers = entry.framebuffers;
-  retire_->retire([device, view, framebuffers, ownsForward] { destroyEntryNow(device, view, framebuffers, ownsForward); });
+  retire_->retire(
+      [device, view, framebuffers, ownsForward] { destroyEntryNow(device, view, framebuffers, ownsForward); });
 }
 
 void AppImageCache::forget(VkImage image) {

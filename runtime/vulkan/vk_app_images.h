@@ -46,8 +46,8 @@ class AppImageCache {
   }
   // The framebuffers of `image` (which rendersDirectly) with `targets`, made on first use.
   // config's render passes are the backend's own: the app-image passes are compatible with them.
-  bool framebuffersFor(const AppImage& image, const RenderTargets& targets, const TargetConfig& config,
-                       uint64_t frame, Framebuffers* out, std::string* error);
+  bool framebuffersFor(const AppImage& image, const RenderTargets& targets, const TargetConfig& config, uint64_t frame,
+                       Framebuffers* out, std::string* error);
   // Drops the entry of `image`: the app is about to destroy it (a later image may get its handle).
   void forget(VkImage image);
   void dropAll();

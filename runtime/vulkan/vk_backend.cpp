@@ -9,8 +9,8 @@
 // target or a view of the app's image (vk_app_images.h).
 #include <cstring>
 #include <exception>
-#include <memory>
 #include <map>
+#include <memory>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -73,7 +73,7 @@ class VulkanBackend final : public VulkanRenderer {
   void forgetImage(VkImage image) override { appImages_.forget(image); }
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
-    return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
+    return {meshes_.residentCount(),       meshes_.uploadCount(),  materialBlocks_.residentCount(),
             materialBlocks_.uploadCount(), ctx_.memoryAllocations, uploads_.stagedBytes()};
   }
 
@@ -87,8 +87,8 @@ class VulkanBackend final : public VulkanRenderer {
   bool prepareTextures(const FrameDesc& frame, std::string* error);
   bool allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result, std::string* error);
-  bool prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots,
-                    FrameOutput* output, std::string* error);
+  bool prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots, FrameOutput* output,
+                    std::string* error);
   void writePostSet();
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
@@ -270,9 +270,9 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   // optional in Vulkan (supported on lavapipe and current mobile GPUs), so it is checked here.
   VkFormatProperties hdrProperties{};
   vkGetPhysicalDeviceFormatProperties(ctx_.physicalDevice, hdrVkFormat_, &hdrProperties);
-  const VkFormatFeatureFlags hdrNeeds = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
-                                        (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) |
-                                        (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0);
+  const VkFormatFeatureFlags hdrNeeds =
+      VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+      (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) | (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0);
   if ((hdrProperties.optimalTilingFeatures & hdrNeeds) != hdrNeeds) {
     *error = std::string("the device cannot use ") + toString(hdrFormat_) + " as the HDR target (format features " +
              std::to_string(hdrProperties.optimalTilingFeatures) + ", needs " + std::to_string(hdrNeeds) + ")";
@@ -281,7 +281,8 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_, error) &&
+      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_,
+                                      error) &&
                    createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, kAppImageLdrLayouts,
                                           &appImagePass_, error)
              : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, &forwardPass_, error) &&
@@ -290,8 +291,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
-      !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_,
-                            error) ||
+      !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_, error) ||
       !createPipelineLayout(device, {postSetLayout_}, &postLayout_, error)) {
     return false;
   }
@@ -335,8 +335,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   samplerInfo.maxLod = 0.0f;
-  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &hdrSampler_), "vkCreateSampler",
-             error)) {
+  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &hdrSampler_), "vkCreateSampler", error)) {
     hdrSampler_ = VK_NULL_HANDLE;
     return false;
   }
@@ -352,8 +351,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   postPoolInfo.maxSets = slotCount;
   postPoolInfo.poolSizeCount = uint32_t(postPoolSizes.size());
   postPoolInfo.pPoolSizes = postPoolSizes.data();
-  if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_),
-             "vkCreateDescriptorPool", error)) {
+  if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_), "vkCreateDescriptorPool", error)) {
     postPool_ = VK_NULL_HANDLE;
     return false;
   }
@@ -364,8 +362,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   setInfo.descriptorPool = postPool_;
   setInfo.descriptorSetCount = slotCount;
   setInfo.pSetLayouts = postLayouts.data();
-  if (!check(vkAllocateDescriptorSets(device, &setInfo, postSets.data()), "vkAllocateDescriptorSets",
-             error)) {
+  if (!check(vkAllocateDescriptorSets(device, &setInfo, postSets.data()), "vkAllocateDescriptorSets", error)) {
     return false;
   }
   for (uint32_t i = 0; i < slotCount; ++i) slots_[i].postSet = postSets[i];
@@ -411,8 +408,8 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     FrameOutput output;
     if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
     // Not timed: the query pool would be shared by frames in flight.
-    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
-                               slot_->postSet, VK_NULL_HANDLE};
+    const FrameObjects objects{
+        path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_, slot_->postSet, VK_NULL_HANDLE};
     if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
@@ -434,9 +431,8 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
   // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput).
   const bool ownOutput = !appImage || !rendersDirectly(*appImage);
   if (!checkFrame(frame, ctx_.properties.limits, error) ||
-      !ensureTargets(frame.width, frame.height, ownOutput, error) ||
-      !uploadFrame(frame, slots, error) || !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) ||
-      !outputFor(appImage, output, error)) {
+      !ensureTargets(frame.width, frame.height, ownOutput, error) || !uploadFrame(frame, slots, error) ||
+      !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) || !outputFor(appImage, output, error)) {
     return false;
   }
   writePostSet();
@@ -465,8 +461,8 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
-    const FrameObjects objects{path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_,
-                               slot_->postSet, timestamps_};
+    const FrameObjects objects{
+        path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_, slot_->postSet, timestamps_};
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -569,8 +565,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
-    if (cached.vertexSpirv == program.vertexSpirv &&
-        cached.fragmentSpirv == program.fragmentSpirv) {
+    if (cached.vertexSpirv == program.vertexSpirv && cached.fragmentSpirv == program.fragmentSpirv) {
       *out = cached.pipeline;
       return true;
     }
@@ -601,14 +596,12 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
   destroyHostBuffer(ctx_.device, &arena);  // the slot's previous frame has finished
   VkDeviceSize capacity = 64 * 1024;
   while (capacity < size) capacity *= 2;
-  return createHostBuffer(ctx_, capacity,
-                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena, error);
+  return createHostBuffer(ctx_, capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena, error);
 }
 
 // Builds (or finds) each draw's pipeline, makes its mesh resident, then lays the frame's
 // uniforms out in the arena and copies them in.
-bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots,
-                                std::string* error) {
+bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error) {
   const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     if (!pipelineFor(*frame.draws[i].program, frame.draws[i], &(*slots)[i].pipeline, error)) {
@@ -636,8 +629,7 @@ bool VulkanBackend::prepareTextures(const FrameDesc& frame, std::string* error) 
   return false;
 }
 
-bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots,
-                                     std::string* error) {
+bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error) {
   const uint32_t count = static_cast<uint32_t>(slots->size());
   if (count == 0) return true;
   VkDevice device = ctx_.device;
@@ -649,16 +641,14 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     slot_->drawPoolCapacity = 0;
     uint32_t capacity = 64;
     while (capacity < count) capacity *= 2;
-    const VkDescriptorPoolSize poolSizes[2] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3 * capacity},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kTextureSlots * capacity}};
+    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3 * capacity},
+                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kTextureSlots * capacity}};
     VkDescriptorPoolCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     info.maxSets = 2 * capacity;
     info.poolSizeCount = 2;
     info.pPoolSizes = poolSizes;
-    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool), "vkCreateDescriptorPool",
-               error)) {
+    if (!check(vkCreateDescriptorPool(device, &info, nullptr, &drawPool), "vkCreateDescriptorPool", error)) {
       drawPool = VK_NULL_HANDLE;
       return false;
     }
@@ -680,8 +670,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   allocInfo.descriptorPool = drawPool;
   allocInfo.descriptorSetCount = 2 * count;
   allocInfo.pSetLayouts = layouts.data();
-  if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets",
-             error)) {
+  if (!check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets", error)) {
     return false;
   }
 
@@ -710,8 +699,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     const TextureSlots textureSlots = textures_.slotsFor(frame, frame.draws[i]);
     for (uint32_t b = 0; b < kTextureSlots; ++b) {
       VkDescriptorImageInfo& image = images[kTextureSlots * i + b];
-      image = {textureSlots[b].sampler, textureSlots[b].view,
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      image = {textureSlots[b].sampler, textureSlots[b].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
       VkWriteDescriptorSet& write = writes[3 * size_t{count} + kTextureSlots * i + b];
       write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
       write.dstSet = slot.textureSet;
@@ -734,8 +722,7 @@ bool VulkanBackend::submitAndWait(std::string* error) {
   if (!check(vkQueueSubmit(ctx_.queue, 1, &submit, fence_), "vkQueueSubmit", error)) {
     return false;
   }
-  return check(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, kFenceTimeoutNs),
-               "vkWaitForFences", error);
+  return check(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, kFenceTimeoutNs), "vkWaitForFences", error);
 }
 
 void VulkanBackend::readBack(FrameResult* result) const {
@@ -765,12 +752,11 @@ void VulkanBackend::readTimes(FrameResult* result) const {
   result->gpuTimes.clear();
   if (!timestamps_) return;
   uint64_t ticks[kTimestampCount] = {};
-  if (vkGetQueryPoolResults(ctx_.device, timestamps_, 0, kTimestampCount, sizeof ticks, ticks,
-                            sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
+  if (vkGetQueryPoolResults(ctx_.device, timestamps_, 0, kTimestampCount, sizeof ticks, ticks, sizeof(uint64_t),
+                            VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
     return;  // not available: the frame is still valid, only untimed
   }
-  const uint64_t mask =
-      ctx_.timestampValidBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << ctx_.timestampValidBits) - 1;
+  const uint64_t mask = ctx_.timestampValidBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << ctx_.timestampValidBits) - 1;
   const double msPerTick = double(ctx_.properties.limits.timestampPeriod) * 1e-6;
   const auto span = [&](int from, int to) { return double((ticks[to] - ticks[from]) & mask) * msPerTick; };
   result->gpuTimes.push_back({"forward", span(0, 1)});
@@ -779,8 +765,7 @@ void VulkanBackend::readTimes(FrameResult* result) const {
 
 }  // namespace
 
-std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options,
-                                                   std::string* error) {
+std::unique_ptr<RenderBackend> createVulkanBackend(const VulkanOptions& options, std::string* error) {
   std::string scratch;
   if (!error) error = &scratch;
   try {

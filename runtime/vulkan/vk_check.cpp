@@ -5,8 +5,7 @@ namespace facet::runtime::vulkan {
 std::string resultName(VkResult result) {
   switch (result) {
 #define FACET_VK_RESULT(name) \
-  case name:                  \
-    return #name;
+  case name: return #name;
     FACET_VK_RESULT(VK_SUCCESS)
     FACET_VK_RESULT(VK_NOT_READY)
     FACET_VK_RESULT(VK_TIMEOUT)
@@ -39,8 +38,7 @@ std::string resultName(VkResult result) {
     FACET_VK_RESULT(VK_ERROR_VALIDATION_FAILED_EXT)
     FACET_VK_RESULT(VK_ERROR_INVALID_SHADER_NV)
 #undef FACET_VK_RESULT
-    default:
-      return "VkResult(" + std::to_string(static_cast<int>(result)) + ")";
+    default: return "VkResult(" + std::to_string(static_cast<int>(result)) + ")";
   }
 }
 

@@ -37,8 +37,8 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     const VkImageMemoryBarrier toAttachment =
         appImageBarrier(*output.directImage, output.directImage->oldLayout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                         VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
-                         0, nullptr, 0, nullptr, 1, &toAttachment);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0,
+                         nullptr, 0, nullptr, 1, &toAttachment);
   }
 
   // Forward pass.
@@ -68,8 +68,7 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
       bound = slot.pipeline;
     }
     const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2,
-                            sets, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2, sets, 0, nullptr);
     const VkDeviceSize vertexOffset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &slot.mesh.buffer, &vertexOffset);
     if (slot.mesh.indexCount > 0) {
@@ -102,8 +101,7 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     vkCmdSetScissor(cmd, 0, 1, &scissor);
   }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postPipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postLayout, 0, 1,
-                          &objects.postSet, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postLayout, 0, 1, &objects.postSet, 0, nullptr);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
   if (objects.timestamps) {
@@ -114,8 +112,8 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     const VkImageMemoryBarrier done =
         appImageBarrier(*output.directImage, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, output.directImage->newLayout,
                         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kAnyAccess);
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0,
-                         0, nullptr, 0, nullptr, 1, &done);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
+                         nullptr, 0, nullptr, 1, &done);
   }
 }
 
@@ -137,21 +135,21 @@ void recordReadback(VkCommandBuffer cmd, bool merged, bool readBackHdr, const Re
     hdrBarrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     hdrBarrier.image = targets.hdr.image;
     hdrBarrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &hdrBarrier);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &hdrBarrier);
   }
   if (readBackHdr) {
-    vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           targets.hdrReadback.buffer, 1, &region);
+    vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, targets.hdrReadback.buffer, 1,
+                           &region);
   }
-  vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         targets.ldrReadback.buffer, 1, &region);
+  vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, targets.ldrReadback.buffer, 1,
+                         &region);
   VkMemoryBarrier hostBarrier{};
   hostBarrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   hostBarrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   hostBarrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                       &hostBarrier, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &hostBarrier, 0, nullptr,
+                       0, nullptr);
 }
 
 void recordCopyToAppImage(VkCommandBuffer cmd, const RenderTargets& targets, const AppImage& image) {

@@ -17,18 +17,15 @@ struct RequiredFormat {
   VkFormatFeatureFlags features;
 };
 constexpr RequiredFormat kRequiredFormats[] = {
-    {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
-                                        VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                        VK_FORMAT_FEATURE_TRANSFER_SRC_BIT},
+    {VK_FORMAT_R16G16B16A16_SFLOAT,
+     VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT},
     {VK_FORMAT_D32_SFLOAT, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT},
-    {VK_FORMAT_R8G8B8A8_UNORM,
-     VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT},
+    {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT},
 };
 
 VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                              VkDebugUtilsMessageTypeFlagsEXT types,
-                                             const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                             void* userData) {
+                                             const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData) {
   auto* messages = static_cast<DebugMessages*>(userData);
   std::string text = data && data->pMessage ? data->pMessage : "(no message)";
   if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
@@ -46,10 +43,9 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
 VkDebugUtilsMessengerCreateInfoEXT messengerInfo(DebugMessages* messages) {
   VkDebugUtilsMessengerCreateInfoEXT info{};
   info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
-  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT |
-                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
-  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   info.pfnUserCallback = debugCallback;
   info.pUserData = messages;
@@ -84,16 +80,11 @@ bool instanceExtensionAvailable(const char* layer, const char* name) {
 // which is what tests and golden images want.
 int deviceRank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return 3;
-    default:
-      return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 3;
+    default: return 4;
   }
 }
 
@@ -170,9 +161,8 @@ bool Context::createInstance(bool validation, std::string* error) {
     return false;
   }
   if (loaderVersion < VK_API_VERSION_1_1) {
-    *error = "Vulkan 1.1 is required, the loader only offers " +
-             std::to_string(VK_API_VERSION_MAJOR(loaderVersion)) + "." +
-             std::to_string(VK_API_VERSION_MINOR(loaderVersion));
+    *error = "Vulkan 1.1 is required, the loader only offers " + std::to_string(VK_API_VERSION_MAJOR(loaderVersion)) +
+             "." + std::to_string(VK_API_VERSION_MINOR(loaderVersion));
     return false;
   }
 
@@ -188,8 +178,7 @@ bool Context::createInstance(bool validation, std::string* error) {
     }
     if (!instanceExtensionAvailable(nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) &&
         !instanceExtensionAvailable(kValidationLayer, VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
-      *error = "Vulkan validation was requested but " VK_EXT_DEBUG_UTILS_EXTENSION_NAME
-               " is not available";
+      *error = "Vulkan validation was requested but " VK_EXT_DEBUG_UTILS_EXTENSION_NAME " is not available";
       return false;
     }
     layers.push_back(kValidationLayer);
@@ -213,8 +202,7 @@ bool Context::createInstance(bool validation, std::string* error) {
   // Chained into the create info too, so that vkCreateInstance/vkDestroyInstance are covered.
   VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(&messages);
 
-  const VkValidationFeatureEnableEXT enabledFeatures[] = {
-      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeatureEnableEXT enabledFeatures[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   VkValidationFeaturesEXT features{};
   features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
   features.pNext = &debugInfo;
@@ -241,8 +229,7 @@ bool Context::createInstance(bool validation, std::string* error) {
       *error = "vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT) returned null";
       return false;
     }
-    if (!check(create(instance, &debugInfo, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT",
-               error)) {
+    if (!check(create(instance, &debugInfo, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT", error)) {
       messenger_ = VK_NULL_HANDLE;
       return false;
     }
@@ -253,13 +240,12 @@ bool Context::createInstance(bool validation, std::string* error) {
 
 bool Context::pickPhysicalDevice(std::string* error) {
   uint32_t count = 0;
-  if (!check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices",
-             error)) {
+  if (!check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices", error)) {
     return false;
   }
   std::vector<VkPhysicalDevice> devices(count);
-  if (count > 0 && !check(vkEnumeratePhysicalDevices(instance, &count, devices.data()),
-                          "vkEnumeratePhysicalDevices", error)) {
+  if (count > 0 &&
+      !check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices", error)) {
     return false;
   }
 
@@ -325,7 +311,8 @@ bool Context::createDevice(bool float16Arithmetic, std::string* error) {
     std::vector<VkExtensionProperties> extensions(count);
     vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, extensions.data());
     bool listed = false;
-    for (const VkExtensionProperties& e : extensions) listed = listed || std::strcmp(e.extensionName, float16Extension) == 0;
+    for (const VkExtensionProperties& e : extensions)
+      listed = listed || std::strcmp(e.extensionName, float16Extension) == 0;
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.pNext = &float16;
@@ -351,8 +338,7 @@ bool Context::createDevice(bool float16Arithmetic, std::string* error) {
 
 uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const {
   for (uint32_t i = 0; i < memoryProperties.memoryTypeCount; ++i) {
-    if ((typeBits & (1u << i)) &&
-        (memoryProperties.memoryTypes[i].propertyFlags & required) == required) {
+    if ((typeBits & (1u << i)) && (memoryProperties.memoryTypes[i].propertyFlags & required) == required) {
       return i;
     }
   }

@@ -25,8 +25,7 @@ float halfToFloat(uint16_t half) {
   if (exponent == 0) {
     value = std::ldexp(static_cast<float>(mantissa), -24);  // zero or subnormal
   } else if (exponent == 31) {
-    value =
-        mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+    value = mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
   } else {
     value = std::ldexp(static_cast<float>(mantissa | 0x400), exponent - 25);
   }
@@ -37,7 +36,8 @@ namespace {
 // An unsigned float of 5 exponent bits (bias 15) and `mantissaBits`, as binary16 without sign.
 float smallFloat(uint32_t bits, int mantissaBits) {
   const uint32_t exponent = bits >> mantissaBits, mantissa = bits & ((1u << mantissaBits) - 1);
-  if (exponent == 31) return mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+  if (exponent == 31)
+    return mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
   if (exponent == 0) return std::ldexp(float(mantissa), -14 - mantissaBits);
   return std::ldexp(float(mantissa | (1u << mantissaBits)), int(exponent) - 15 - mantissaBits);
 }

@@ -21,8 +21,8 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error) {
   const uint32_t maxSize = limits.maxImageDimension2D;
   if (frame.width == 0 || frame.height == 0 || frame.width > maxSize || frame.height > maxSize) {
-    *error = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-             " is outside 1.." + std::to_string(maxSize);
+    *error = "frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " is outside 1.." +
+             std::to_string(maxSize);
     return false;
   }
   std::unordered_set<const Mesh*> checkedMeshes;
@@ -41,15 +41,14 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
     if (!checkedMeshes.insert(draw.mesh).second) continue;
     const size_t floats = draw.mesh->vertices.size();
     if (floats % abi::kVertexFloats != 0) {
-      *error = which + "vertex data is not a whole number of " +
-               std::to_string(abi::kVertexFloats) + "-float vertices";
+      *error = which + "vertex data is not a whole number of " + std::to_string(abi::kVertexFloats) + "-float vertices";
       return false;
     }
     const size_t vertexCount = floats / abi::kVertexFloats;
     for (uint32_t index : draw.mesh->indices) {
       if (index >= vertexCount) {
-        *error = which + "index " + std::to_string(index) + " is out of range (" +
-                 std::to_string(vertexCount) + " vertices)";
+        *error = which + "index " + std::to_string(index) + " is out of range (" + std::to_string(vertexCount) +
+                 " vertices)";
         return false;
       }
     }
@@ -57,8 +56,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
   return checkFrameTextures(frame, limits.maxImageDimension2D, error);
 }
 
-VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
-                         std::vector<DrawSlot>* slots) {
+VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::vector<DrawSlot>* slots) {
   const VkDeviceSize alignment = std::max<VkDeviceSize>(limits.minUniformBufferOffsetAlignment, 16);
   VkDeviceSize size = alignUp(sizeof(abi::FrameUniforms), alignment);
   slots->resize(frame.draws.size());
@@ -88,8 +86,7 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void
     if (draw.materialBlock) continue;
     std::memset(base + slot.materialOffset, 0, slot.materialSize);
     if (!draw.materialParams.empty()) {
-      std::memcpy(base + slot.materialOffset, draw.materialParams.data(),
-                  draw.materialParams.size());
+      std::memcpy(base + slot.materialOffset, draw.materialParams.data(), draw.materialParams.size());
     }
   }
 }

@@ -27,8 +27,8 @@ struct DrawSlot {
   VkDeviceSize objectOffset = 0;
   VkBuffer materialBuffer = VK_NULL_HANDLE;  // a persistent block's buffer; null: the arena
   VkDeviceSize materialOffset = 0;           // in the arena; 0 in a persistent block's buffer
-  VkDeviceSize materialSize = 0;  // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
-  MeshLocation mesh;  // the draw's mesh buffer (MeshCache), filled by the backend
+  VkDeviceSize materialSize = 0;             // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
+  MeshLocation mesh;                         // the draw's mesh buffer (MeshCache), filled by the backend
 };
 
 // Rejects what the device cannot draw or would read out of bounds: an empty or oversized frame,
@@ -39,8 +39,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
 // Fills the uniform offsets of slots (one per draw; pipeline, sets, mesh and materialBuffer are
 // left alone; draws with a persistent materialBlock get no material space in the arena) and
 // returns the arena size the frame needs.
-VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits,
-                         std::vector<DrawSlot>* slots);
+VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::vector<DrawSlot>* slots);
 
 // Copies the frame into the mapped arena at the offsets of layoutFrame, converting the
 // view-projection to Vulkan's clip space on the way.

@@ -95,8 +95,7 @@ bool BufferAllocator::create(VkDeviceSize size, VkBufferUsageFlags usage, Buffer
     take(&blocks_[index], needs.size, needs.alignment, &offset, &held);
   }
   Block& block = blocks_[index];
-  if (!check(vkBindBufferMemory(ctx_->device, allocation.buffer, block.memory, offset), "vkBindBufferMemory",
-             error)) {
+  if (!check(vkBindBufferMemory(ctx_->device, allocation.buffer, block.memory, offset), "vkBindBufferMemory", error)) {
     vkDestroyBuffer(ctx_->device, allocation.buffer, nullptr);
     giveBack(&block, held);
     return false;

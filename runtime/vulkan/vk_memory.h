@@ -33,7 +33,7 @@ struct BufferAllocation {
   // copy (device-local memory the host cannot map, or BufferAllocator's forced staging).
   void* mapped = nullptr;
   uint32_t block = UINT32_MAX;
-  VkDeviceSize offset = 0;    // the block range it holds, alignment padding included
+  VkDeviceSize offset = 0;  // the block range it holds, alignment padding included
   VkDeviceSize reserved = 0;
 };
 
@@ -73,9 +73,9 @@ class BufferAllocator {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     uint32_t memoryType = 0;
     VkDeviceSize size = 0;
-    VkDeviceSize top = 0;   // first free byte
-    uint32_t live = 0;      // buffers bound in it
-    void* mapped = nullptr;  // the whole block, when its memory is host-visible
+    VkDeviceSize top = 0;         // first free byte
+    uint32_t live = 0;            // buffers bound in it
+    void* mapped = nullptr;       // the whole block, when its memory is host-visible
     std::vector<Range> released;  // below top, sorted by offset, never adjacent to each other
   };
   // Takes `size` bytes at `alignment` from the block, or returns false when it has no room.

@@ -21,10 +21,10 @@ bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
   // vkCmdBindIndexBuffer requires for UINT32.
   entry->location.indexOffset = vertexBytes;
   if (vertexBytes == 0) return true;
-  if (!allocator_->create(vertexBytes + indexBytes,
-                          VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                          BufferUse::DeviceRead, &entry->buffer, error)) {
+  if (!allocator_->create(
+          vertexBytes + indexBytes,
+          VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+          BufferUse::DeviceRead, &entry->buffer, error)) {
     return false;
   }
   uploads_->write(entry->buffer, 0, mesh.vertices.data(), vertexBytes);

@@ -10,8 +10,8 @@
 namespace facet::runtime::vulkan {
 namespace {
 
-bool createShaderModule(VkDevice device, const std::vector<uint32_t>* words, const char* stage,
-                        const char* what, VkShaderModule* out, std::string* error) {
+bool createShaderModule(VkDevice device, const std::vector<uint32_t>* words, const char* stage, const char* what,
+                        VkShaderModule* out, std::string* error) {
   if (!words || words->empty()) {
     *error = std::string(what) + ": no Vulkan " + stage + " SPIR-V";
     return false;
@@ -37,15 +37,13 @@ AttachmentOps toVulkan(const fg::Attachment& attachment) {
     case fg::LoadOp::Clear: ops.load = VK_ATTACHMENT_LOAD_OP_CLEAR; break;
     case fg::LoadOp::DontCare: ops.load = VK_ATTACHMENT_LOAD_OP_DONT_CARE; break;
   }
-  ops.store = attachment.store == fg::StoreOp::Store ? VK_ATTACHMENT_STORE_OP_STORE
-                                                     : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  ops.store = attachment.store == fg::StoreOp::Store ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
   return ops;
 }
 
 namespace {
 
-VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops,
-                                           VkImageLayout finalLayout) {
+VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops, VkImageLayout finalLayout) {
   VkAttachmentDescription a{};
   a.format = format;
   a.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -76,8 +74,7 @@ VkSubpassDependency previousFrameToForwardPass() {
   return d;
 }
 
-bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRenderPass* out,
-                      std::string* error) {
+bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRenderPass* out, std::string* error) {
   if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
     *out = VK_NULL_HANDLE;
     return false;
@@ -92,8 +89,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
   std::array<VkAttachmentDescription, 3> attachments{
       describeAttachment(hdrFormat, hdr,
-                         hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
-                                   : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+                         hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
       describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
       describeAttachment(kLdrFormat, ldr, layouts.final)};
   attachments[2].initialLayout = layouts.initial;
@@ -138,8 +134,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   // After: the readback copies LDR (and HDR when stored).
   dependencies[3].srcSubpass = 1;
   dependencies[3].dstSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[3].srcStageMask =
-      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  dependencies[3].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   dependencies[3].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   dependencies[3].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
   dependencies[3].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
@@ -232,8 +227,7 @@ bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts
   // Before: the previous frame's readback copy of this image must finish (write after read).
   dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask =
-      VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[0].srcAccessMask = 0;
   dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
@@ -268,8 +262,7 @@ bool createSetLayout(VkDevice device, const VkDescriptorSetLayoutBinding* bindin
   info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
   info.bindingCount = count;
   info.pBindings = bindings;
-  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out),
-             "vkCreateDescriptorSetLayout", error)) {
+  if (!check(vkCreateDescriptorSetLayout(device, &info, nullptr, out), "vkCreateDescriptorSetLayout", error)) {
     *out = VK_NULL_HANDLE;
     return false;
   }
@@ -314,22 +307,20 @@ bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::st
   return createSetLayout(device, bindings.data(), uint32_t(bindings.size()), out, error);
 }
 
-bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts,
-                          VkPipelineLayout* out, std::string* error) {
+bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts, VkPipelineLayout* out,
+                          std::string* error) {
   VkPipelineLayoutCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   info.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
   info.pSetLayouts = setLayouts.data();
-  if (!check(vkCreatePipelineLayout(device, &info, nullptr, out), "vkCreatePipelineLayout",
-             error)) {
+  if (!check(vkCreatePipelineLayout(device, &info, nullptr, out), "vkCreatePipelineLayout", error)) {
     *out = VK_NULL_HANDLE;
     return false;
   }
   return true;
 }
 
-bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out,
-                            std::string* error) {
+bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out, std::string* error) {
   const bool forward = desc.kind == PipelineKind::Forward;
   VkShaderModule vertex = VK_NULL_HANDLE;
   VkShaderModule fragment = VK_NULL_HANDLE;
@@ -402,12 +393,12 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   depth.maxDepthBounds = 1.0f;
 
   VkPipelineColorBlendAttachmentState blendAttachment{};
-  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  blendAttachment.colorWriteMask =
+      VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   if (forward && desc.blending != Blending::Opaque) {
     // Premultiplied colour: "over" is src + (1 − src.a)·dst, additive is src + dst.
-    const VkBlendFactor dst = desc.blending == Blending::Transparent ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA
-                                                                     : VK_BLEND_FACTOR_ONE;
+    const VkBlendFactor dst =
+        desc.blending == Blending::Transparent ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
     blendAttachment.blendEnable = VK_TRUE;
     blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
     blendAttachment.dstColorBlendFactor = dst;
@@ -417,15 +408,13 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
     blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   }
   // The merged post subpass has colour slots {unused, LDR}: one state per slot, the same for both.
-  const std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{blendAttachment,
-                                                                            blendAttachment};
+  const std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{blendAttachment, blendAttachment};
   VkPipelineColorBlendStateCreateInfo blend{};
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
   blend.attachmentCount = desc.colourSlots;
   blend.pAttachments = blendAttachments.data();
 
-  const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT,
-                                                    VK_DYNAMIC_STATE_SCISSOR};
+  const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
   VkPipelineDynamicStateCreateInfo dynamic{};
   dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
   dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());

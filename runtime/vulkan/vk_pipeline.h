@@ -64,8 +64,8 @@ bool createPostSetLayout(VkDevice device, VkDescriptorType hdrType,
 // bound to a 1x1 dummy texture (partially bound descriptors are not in Vulkan 1.1 core).
 bool createTextureSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
 // setLayouts[i] becomes set i.
-bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts,
-                          VkPipelineLayout* out, std::string* error);
+bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& setLayouts, VkPipelineLayout* out,
+                          std::string* error);
 
 enum class PipelineKind {
   Forward,  // abi vertex stream, depth test LESS + write
@@ -82,11 +82,10 @@ struct PipelineDesc {
   VkRenderPass renderPass = VK_NULL_HANDLE;
   uint32_t subpass = 0;
   uint32_t colourSlots = 1;  // colour attachments of that subpass (merged post subpass: 2)
-  const char* what = "";  // names the shaders in error messages
+  const char* what = "";     // names the shaders in error messages
 };
 
 // Viewport and scissor are dynamic state, so a pipeline does not depend on the frame size.
-bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out,
-                            std::string* error);
+bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out, std::string* error);
 
 }  // namespace facet::runtime::vulkan

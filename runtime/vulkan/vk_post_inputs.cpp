@@ -19,9 +19,11 @@ constexpr uint64_t kUploadTimeoutNs = 60ull * 1000 * 1000 * 1000;  // as the fra
 std::vector<VkDescriptorSetLayoutBinding> PostInputs::bindings(const PostSettings& effects) {
   std::vector<VkDescriptorSetLayoutBinding> out;
   if (effects.colorGrading)
-    out.push_back({abi::kPostColorLutBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    out.push_back({abi::kPostColorLutBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                   VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   if (effects.vignette)
-    out.push_back({abi::kPostUniformsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    out.push_back(
+        {abi::kPostUniformsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   return out;
 }
 
@@ -73,7 +75,8 @@ bool PostInputs::init(const Context* ctx, const PostSettings& effects, uint32_t 
     lutMemory_ = VK_NULL_HANDLE;
     return false;
   }
-  if (!check(vkBindImageMemory(device, lutImage_, lutMemory_, 0), "vkBindImageMemory (grading LUT)", error)) return false;
+  if (!check(vkBindImageMemory(device, lutImage_, lutMemory_, 0), "vkBindImageMemory (grading LUT)", error))
+    return false;
   VkImageViewCreateInfo view{};
   view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
   view.image = lutImage_;
@@ -131,8 +134,9 @@ bool PostInputs::uploadLut(const ColorLutTexels& lut, std::string* error) {
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   VkFence fence = VK_NULL_HANDLE;
-  bool ok = createHostBuffer(*ctx_, kLutBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, &staging, error) &&
-            createSubmitRecorder(device, ctx_->queueFamily, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, &pool, &cmd, &fence, error);
+  bool ok =
+      createHostBuffer(*ctx_, kLutBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, &staging, error) &&
+      createSubmitRecorder(device, ctx_->queueFamily, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT, &pool, &cmd, &fence, error);
   if (ok) {
     std::memcpy(staging.mapped, lut.rgba.data(), kLutBytes);
     VkCommandBufferBeginInfo begin{};
@@ -151,8 +155,8 @@ bool PostInputs::uploadLut(const ColorLutTexels& lut, std::string* error) {
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = lutImage_;
     barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                         &barrier);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &barrier);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {kLutSize, kLutSize, kLutSize};  // x = red, y = green, z = blue: the texels' order
@@ -162,8 +166,8 @@ bool PostInputs::uploadLut(const ColorLutTexels& lut, std::string* error) {
     barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     barrier.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     // The frame is submitted later on the same queue: this covers its post pass's reads.
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                         &barrier);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &barrier);
     ok = check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer (grading LUT)", error);
   }
   if (ok) {
@@ -172,7 +176,8 @@ bool PostInputs::uploadLut(const ColorLutTexels& lut, std::string* error) {
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &cmd;
     ok = check(vkQueueSubmit(ctx_->queue, 1, &submit, fence), "vkQueueSubmit (grading LUT)", error);
-    if (ok && !check(vkWaitForFences(device, 1, &fence, VK_TRUE, kUploadTimeoutNs), "vkWaitForFences (grading LUT)", error)) {
+    if (ok &&
+        !check(vkWaitForFences(device, 1, &fence, VK_TRUE, kUploadTimeoutNs), "vkWaitForFences (grading LUT)", error)) {
       deviceFailed_ = true;  // the staging buffer may still be read: leak it rather than free it under the device
       return false;
     }
@@ -191,7 +196,8 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
   if (effects_.colorGrading) {
     const size_t texels = size_t(kLutSize) * kLutSize * kLutSize * 4;
     if (!frame.colorLut || frame.colorLut->rgba.size() != texels) {
-      *error = "the post variant grades colour, so the frame needs a colorLut of " + std::to_string(kLutSize) + "³ RGBA16F texels" +
+      *error = "the post variant grades colour, so the frame needs a colorLut of " + std::to_string(kLutSize) +
+               "³ RGBA16F texels" +
                (frame.colorLut ? " (it has " + std::to_string(frame.colorLut->rgba.size() / 4) + ")" : "");
       return false;
     }
@@ -217,8 +223,10 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
     write.dstBinding = b.binding;
     write.descriptorCount = 1;
     write.descriptorType = b.descriptorType;
-    if (b.descriptorType == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) write.pBufferInfo = &buffer;
-    else write.pImageInfo = &image;
+    if (b.descriptorType == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+      write.pBufferInfo = &buffer;
+    else
+      write.pImageInfo = &image;
     writes.push_back(write);
   }
   if (!writes.empty()) vkUpdateDescriptorSets(ctx_->device, uint32_t(writes.size()), writes.data(), 0, nullptr);

@@ -54,7 +54,7 @@ class PostInputs {
   // Per frame slot, the set already pointing at this slot's buffer and the LUT (they never move:
   // a LUT change rewrites the same image), so the descriptors are written once per set.
   std::vector<VkDescriptorSet> written_;
-  bool deviceFailed_ = false;                 // an upload did not finish: stop
+  bool deviceFailed_ = false;  // an upload did not finish: stop
 };
 
 }  // namespace facet::runtime::vulkan

@@ -6,9 +6,8 @@
 namespace facet::runtime::vulkan {
 namespace {
 
-bool allocate(const Context& ctx, const VkMemoryRequirements& requirements,
-              VkMemoryPropertyFlags preferred, VkMemoryPropertyFlags required,
-              VkDeviceMemory* memory, std::string* error) {
+bool allocate(const Context& ctx, const VkMemoryRequirements& requirements, VkMemoryPropertyFlags preferred,
+              VkMemoryPropertyFlags required, VkDeviceMemory* memory, std::string* error) {
   uint32_t type = ctx.findMemoryType(requirements.memoryTypeBits, preferred);
   if (type == UINT32_MAX) type = ctx.findMemoryType(requirements.memoryTypeBits, required);
   if (type == UINT32_MAX) {
@@ -44,19 +43,16 @@ bool createBufferObject(VkDevice device, VkDeviceSize size, VkBufferUsageFlags u
   return true;
 }
 
-bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
-                      HostBuffer* out, std::string* error) {
+bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, HostBuffer* out,
+                      std::string* error) {
   HostBuffer buffer;
   buffer.size = size;
   VkMemoryRequirements requirements{};
   if (!createBufferObject(ctx.device, size, usage, &buffer.buffer, &requirements, error)) return false;
-  constexpr VkMemoryPropertyFlags kHost =
-      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  constexpr VkMemoryPropertyFlags kHost = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   bool ok = allocate(ctx, requirements, kHost, kHost, &buffer.memory, error) &&
-            check(vkBindBufferMemory(ctx.device, buffer.buffer, buffer.memory, 0),
-                  "vkBindBufferMemory", error) &&
-            check(vkMapMemory(ctx.device, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped),
-                  "vkMapMemory", error);
+            check(vkBindBufferMemory(ctx.device, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory", error) &&
+            check(vkMapMemory(ctx.device, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped), "vkMapMemory", error);
   if (!ok) {
     destroyHostBuffer(ctx.device, &buffer);
     return false;
@@ -72,9 +68,8 @@ void destroyHostBuffer(VkDevice device, HostBuffer* buffer) {
   *buffer = HostBuffer{};
 }
 
-bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
-                 VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
-                 std::string* error, uint32_t mipLevels, bool cube) {
+bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                 VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels, bool cube) {
   Image image;
   image.format = format;
   image.width = width;
@@ -106,12 +101,9 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
   const VkMemoryPropertyFlags preferred =
       transient ? VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT
                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  image.lazilyAllocated =
-      transient && ctx.findMemoryType(requirements.memoryTypeBits, preferred) != UINT32_MAX;
-  bool ok =
-      allocate(ctx, requirements, preferred, 0, &image.memory, error) &&
-      check(vkBindImageMemory(ctx.device, image.image, image.memory, 0), "vkBindImageMemory",
-            error);
+  image.lazilyAllocated = transient && ctx.findMemoryType(requirements.memoryTypeBits, preferred) != UINT32_MAX;
+  bool ok = allocate(ctx, requirements, preferred, 0, &image.memory, error) &&
+            check(vkBindImageMemory(ctx.device, image.image, image.memory, 0), "vkBindImageMemory", error);
   if (ok) {
     VkImageViewCreateInfo viewInfo{};
     viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
@@ -119,8 +111,7 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
     viewInfo.viewType = cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = format;
     viewInfo.subresourceRange = {aspect, 0, mipLevels, 0, image.layers};
-    ok = check(vkCreateImageView(ctx.device, &viewInfo, nullptr, &image.view), "vkCreateImageView",
-               error);
+    ok = check(vkCreateImageView(ctx.device, &viewInfo, nullptr, &image.view), "vkCreateImageView", error);
   }
   if (!ok) {
     destroyImage(ctx.device, &image);

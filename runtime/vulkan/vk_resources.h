@@ -21,8 +21,8 @@ struct HostBuffer {
   VkDeviceSize size = 0;
 };
 
-bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
-                      HostBuffer* out, std::string* error);
+bool createHostBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, HostBuffer* out,
+                      std::string* error);
 // An exclusive VkBuffer without memory, and what memory it needs. On failure *out stays null.
 bool createBufferObject(VkDevice device, VkDeviceSize size, VkBufferUsageFlags usage, VkBuffer* out,
                         VkMemoryRequirements* needs, std::string* error);
@@ -43,9 +43,8 @@ struct Image {
   bool lazilyAllocated = false;  // transient usage and the device had a LAZILY_ALLOCATED type
 };
 
-bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format,
-                 VkImageUsageFlags usage, VkImageAspectFlags aspect, Image* out,
-                 std::string* error, uint32_t mipLevels = 1, bool cube = false);
+bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                 VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels = 1, bool cube = false);
 // Safe on a default-constructed or partly created image; leaves *image default-constructed.
 void destroyImage(VkDevice device, Image* image);
 

@@ -8,8 +8,8 @@
 
 namespace facet::runtime::vulkan {
 
-bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
-                       uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error) {
+bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count, uint32_t width,
+                       uint32_t height, VkFramebuffer* out, std::string* error) {
   VkFramebufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   info.renderPass = pass;
@@ -25,8 +25,8 @@ bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* vi
   return true;
 }
 
-bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
-                         const TargetConfig& config, RenderTargets* targets, std::string* error) {
+bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, const TargetConfig& config,
+                         RenderTargets* targets, std::string* error) {
   RenderTargets t;
   t.width = width;
   t.height = height;
@@ -39,19 +39,15 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
   VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   if (config.depthTransient) depthUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   const bool own = config.ownOutput;
-  bool ok =
-      createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr,
-                  error) &&
-      createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT,
-                  &t.depth, error) &&
-      (!own ||
-       (createImage(ctx, width, height, kLdrFormat,
-                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                    VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
-        (!config.readBackHdr ||
-         createHostBuffer(ctx, pixels * (config.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                          &t.hdrReadback, error)) &&
-        createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
+  bool ok = createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error) &&
+            createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error) &&
+            (!own || (createImage(ctx, width, height, kLdrFormat,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
+                      (!config.readBackHdr ||
+                       createHostBuffer(ctx, pixels * (config.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4),
+                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.hdrReadback, error)) &&
+                      createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
   if (ok && config.merged) {
     // Without an own output, each app image has its own framebuffer (vk_app_images.h).
     const std::array<VkImageView, 3> views{t.hdr.view, t.depth.view, t.ldr.view};
@@ -59,10 +55,10 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
                                    &t.forwardFramebuffer, error);
   } else if (ok) {
     const std::array<VkImageView, 2> forwardViews{t.hdr.view, t.depth.view};
-    ok = createFramebuffer(ctx.device, config.forwardPass, forwardViews.data(), 2, width, height,
-                           &t.forwardFramebuffer, error) &&
-         (!own || createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height,
-                                    &t.postFramebuffer, error));
+    ok = createFramebuffer(ctx.device, config.forwardPass, forwardViews.data(), 2, width, height, &t.forwardFramebuffer,
+                           error) &&
+         (!own ||
+          createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height, &t.postFramebuffer, error));
   }
   if (!ok) {
     destroyRenderTargets(ctx.device, &t);
@@ -74,8 +70,7 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
 }
 
 void destroyRenderTargets(VkDevice device, RenderTargets* targets) {
-  if (targets->forwardFramebuffer)
-    vkDestroyFramebuffer(device, targets->forwardFramebuffer, nullptr);
+  if (targets->forwardFramebuffer) vkDestroyFramebuffer(device, targets->forwardFramebuffer, nullptr);
   if (targets->postFramebuffer) vkDestroyFramebuffer(device, targets->postFramebuffer, nullptr);
   destroyImage(device, &targets->hdr);
   destroyImage(device, &targets->depth);

@@ -15,17 +15,17 @@ class Context;
 
 // How the targets are used, fixed for a backend's life (the frame graph decides it).
 struct TargetConfig {
-  bool merged = false;          // one render pass: HDR is an input attachment, not sampled
-  bool readBackHdr = false;     // HDR is copied to hdrReadback after the frame
-  bool hdrTransient = false;    // never loaded or stored: TRANSIENT_ATTACHMENT usage
+  bool merged = false;        // one render pass: HDR is an input attachment, not sampled
+  bool readBackHdr = false;   // HDR is copied to hdrReadback after the frame
+  bool hdrTransient = false;  // never loaded or stored: TRANSIENT_ATTACHMENT usage
   bool depthTransient = false;
   // The backend's own LDR target, its readback buffers and the framebuffers holding it: needed
   // by render() and by copies into app images it cannot render to, not when every frame goes
   // straight into the app's image (then they would be an unused RGBA8 image and buffer).
   bool ownOutput = true;
   VkFormat hdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // or VK_FORMAT_B10G11R11_UFLOAT_PACK32
-  VkRenderPass forwardPass = VK_NULL_HANDLE;  // merged: the one render pass
-  VkRenderPass postPass = VK_NULL_HANDLE;     // separate path only
+  VkRenderPass forwardPass = VK_NULL_HANDLE;           // merged: the one render pass
+  VkRenderPass postPass = VK_NULL_HANDLE;              // separate path only
 };
 
 struct RenderTargets {
@@ -36,17 +36,18 @@ struct RenderTargets {
   Image ldr;    // RGBA8: post pass output, copied out (ownOutput only)
   VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR (ownOutput only)
   VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only (ownOutput only)
-  HostBuffer hdrReadback;  // width*height texels as stored (8 or 4 bytes), rows top to bottom (when read back; ownOutput only)
+  HostBuffer
+      hdrReadback;  // width*height texels as stored (8 or 4 bytes), rows top to bottom (when read back; ownOutput only)
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom (ownOutput only)
 };
 
 // A framebuffer of `count` views for `pass` (or any render pass compatible with it).
-bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count,
-                       uint32_t width, uint32_t height, VkFramebuffer* out, std::string* error);
+bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count, uint32_t width,
+                       uint32_t height, VkFramebuffer* out, std::string* error);
 
 // On failure returns false and leaves *targets destroyed (default-constructed).
-bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height,
-                         const TargetConfig& config, RenderTargets* targets, std::string* error);
+bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, const TargetConfig& config,
+                         RenderTargets* targets, std::string* error);
 void destroyRenderTargets(VkDevice device, RenderTargets* targets);
 
 }  // namespace facet::runtime::vulkan

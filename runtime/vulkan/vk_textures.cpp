@@ -21,16 +21,11 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 
 VkFormat vulkanFormat(TextureFormat format) {
   switch (format) {
-    case TextureFormat::Rgba8Unorm:
-      return VK_FORMAT_R8G8B8A8_UNORM;
-    case TextureFormat::Rgba8Srgb:
-      return VK_FORMAT_R8G8B8A8_SRGB;
-    case TextureFormat::R8Unorm:
-      return VK_FORMAT_R8_UNORM;
-    case TextureFormat::Rg16Float:
-      return VK_FORMAT_R16G16_SFLOAT;
-    case TextureFormat::Rgba16Float:
-      return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case TextureFormat::Rgba8Unorm: return VK_FORMAT_R8G8B8A8_UNORM;
+    case TextureFormat::Rgba8Srgb: return VK_FORMAT_R8G8B8A8_SRGB;
+    case TextureFormat::R8Unorm: return VK_FORMAT_R8_UNORM;
+    case TextureFormat::Rg16Float: return VK_FORMAT_R16G16_SFLOAT;
+    case TextureFormat::Rgba16Float: return VK_FORMAT_R16G16B16A16_SFLOAT;
   }
   return VK_FORMAT_UNDEFINED;
 }
@@ -94,18 +89,15 @@ void TextureCache::retireEntry(const Entry& entry) {
   });
 }
 
-bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& key, Entry* out,
-                               std::string* error) {
+bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& key, Entry* out, std::string* error) {
   const VkFormat format = vulkanFormat(texture.format);
   VkFormatProperties props{};
   vkGetPhysicalDeviceFormatProperties(ctx_->physicalDevice, format, &props);
-  VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
   if (texture.linearFilter) needed |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
   if ((props.optimalTilingFeatures & needed) != needed) {
-    *error = "texture format " + std::to_string(static_cast<int>(format)) +
-             " cannot be sampled" + (texture.linearFilter ? " with linear filtering" : "") +
-             " on this device";
+    *error = "texture format " + std::to_string(static_cast<int>(format)) + " cannot be sampled" +
+             (texture.linearFilter ? " with linear filtering" : "") + " on this device";
     return false;
   }
 
@@ -114,28 +106,26 @@ bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& ke
   entry.lastUsedFrame = frameNumber_;
   const auto levels = static_cast<uint32_t>(texture.levels.size());
   if (!createImage(*ctx_, texture.width, texture.height, format,
-                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                   VK_IMAGE_ASPECT_COLOR_BIT, &entry.image, error, levels, texture.cube)) {
+                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+                   &entry.image, error, levels, texture.cube)) {
     return false;
   }
 
   const VkFilter filter = texture.linearFilter ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
   // A cube map is filtered across its faces; its wrap flags do not apply (render_backend.h).
-  const VkSamplerAddressMode address = texture.repeat && !texture.cube ? VK_SAMPLER_ADDRESS_MODE_REPEAT
-                                                                       : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  const VkSamplerAddressMode address =
+      texture.repeat && !texture.cube ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   VkSamplerCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   info.magFilter = filter;
   info.minFilter = filter;
-  info.mipmapMode =
-      texture.linearFilter ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.mipmapMode = texture.linearFilter ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = address;
   info.addressModeV = texture.clampT ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : address;
   info.addressModeW = address;
   info.minLod = 0.0f;
   info.maxLod = static_cast<float>(levels - 1);
-  if (!check(vkCreateSampler(ctx_->device, &info, nullptr, &entry.sampler), "vkCreateSampler",
-             error)) {
+  if (!check(vkCreateSampler(ctx_->device, &info, nullptr, &entry.sampler), "vkCreateSampler", error)) {
     entry.sampler = VK_NULL_HANDLE;
     destroyEntry(&entry);
     return false;
@@ -144,8 +134,8 @@ bool TextureCache::createEntry(const Texture& texture, const TextureIdentity& ke
   return true;
 }
 
-bool TextureCache::upload(const std::vector<const Texture*>& sources,
-                          const std::vector<Entry*>& targets, std::string* error) {
+bool TextureCache::upload(const std::vector<const Texture*>& sources, const std::vector<Entry*>& targets,
+                          std::string* error) {
   VkDevice device = ctx_->device;
   // Staging layout: every level of every texture, each at an aligned offset.
   std::vector<VkDeviceSize> offsets;
@@ -179,8 +169,7 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
     barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = targets[t]->image.image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, targets[t]->image.mipLevels, 0,
-                                targets[t]->image.layers};
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, targets[t]->image.mipLevels, 0, targets[t]->image.layers};
   }
 
   bool ok = check(vkResetCommandBuffer(commandBuffer_, 0), "vkResetCommandBuffer", error);
@@ -192,9 +181,8 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
     destroyHostBuffer(device, &staging_);
     return false;
   }
-  vkCmdPipelineBarrier(commandBuffer_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
-                       static_cast<uint32_t>(barriers.size()), barriers.data());
+  vkCmdPipelineBarrier(commandBuffer_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
+                       0, nullptr, static_cast<uint32_t>(barriers.size()), barriers.data());
   next = 0;
   for (size_t t = 0; t < targets.size(); ++t) {
     const Texture& texture = *sources[t];
@@ -207,14 +195,11 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
       region.bufferRowLength = 0;
       region.bufferImageHeight = 0;
       // A cube map's six faces follow each other in the level's bytes: one region, six layers.
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), 0,
-                                 targets[t]->image.layers};
-      region.imageExtent = {mipExtent(texture.width, level), mipExtent(texture.height, level),
-                            1};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<uint32_t>(level), 0, targets[t]->image.layers};
+      region.imageExtent = {mipExtent(texture.width, level), mipExtent(texture.height, level), 1};
     }
     vkCmdCopyBufferToImage(commandBuffer_, staging_.buffer, targets[t]->image.image,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           static_cast<uint32_t>(regions.size()), regions.data());
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, static_cast<uint32_t>(regions.size()), regions.data());
   }
   for (VkImageMemoryBarrier& barrier : barriers) {
     barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -225,9 +210,8 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
   // The frame's draws are submitted later on the same queue, so this barrier's second scope
   // covers their shader reads.
   vkCmdPipelineBarrier(commandBuffer_, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                       0, 0, nullptr, 0, nullptr, static_cast<uint32_t>(barriers.size()),
-                       barriers.data());
+                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr, 0,
+                       nullptr, static_cast<uint32_t>(barriers.size()), barriers.data());
   if (!check(vkEndCommandBuffer(commandBuffer_), "vkEndCommandBuffer", error) ||
       !check(vkResetFences(device, 1, &fence_), "vkResetFences", error)) {
     destroyHostBuffer(device, &staging_);
@@ -238,10 +222,9 @@ bool TextureCache::upload(const std::vector<const Texture*>& sources,
   submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &commandBuffer_;
-  if (!check(vkQueueSubmit(ctx_->queue, 1, &submit, fence_), "vkQueueSubmit (texture upload)",
-             error) ||
-      !check(vkWaitForFences(device, 1, &fence_, VK_TRUE, kUploadTimeoutNs),
-             "vkWaitForFences (texture upload)", error)) {
+  if (!check(vkQueueSubmit(ctx_->queue, 1, &submit, fence_), "vkQueueSubmit (texture upload)", error) ||
+      !check(vkWaitForFences(device, 1, &fence_, VK_TRUE, kUploadTimeoutNs), "vkWaitForFences (texture upload)",
+             error)) {
     // The staging buffer and images may still be in use: kept until destroy().
     deviceFailed_ = true;
     return false;

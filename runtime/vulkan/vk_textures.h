@@ -12,9 +12,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/texture_checks.h"
-#include "facet/runtime/frame_eviction.h"
 #include "vk_resources.h"
 #include "vk_retire.h"
 
@@ -80,8 +80,7 @@ class TextureCache {
   bool createEntry(const Texture& texture, const TextureIdentity& key, Entry* out, std::string* error);
   // Copies the textures' levels into one staging buffer and into their images, leaving every
   // level in SHADER_READ_ONLY_OPTIMAL; one submission, waited for.
-  bool upload(const std::vector<const Texture*>& sources, const std::vector<Entry*>& targets,
-              std::string* error);
+  bool upload(const std::vector<const Texture*>& sources, const std::vector<Entry*>& targets, std::string* error);
   void destroyEntry(Entry* entry);
   void retireEntry(const Entry& entry);
   void releasePending(std::vector<std::pair<const Texture*, Entry>>* pending);

@@ -8,8 +8,8 @@
 #include <string>
 #include <unordered_map>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/frame_eviction.h"
+#include "facet/runtime/render_backend.h"
 #include "vk_memory.h"
 #include "vk_retire.h"
 #include "vk_uploads.h"

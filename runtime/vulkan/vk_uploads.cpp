@@ -31,12 +31,11 @@ bool UploadQueue::record(VkCommandBuffer cmd, std::string* error) {
   VkMemoryBarrier visible{};
   visible.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   visible.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  visible.dstAccessMask =
-      VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_UNIFORM_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
-                           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                       0, 1, &visible, 0, nullptr, 0, nullptr);
+  visible.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_UNIFORM_READ_BIT;
+  vkCmdPipelineBarrier(
+      cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+      VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+      0, 1, &visible, 0, nullptr, 0, nullptr);
   stagedBytes_ += bytes_.size();
   BufferAllocator* allocator = allocator_;
   retire_->retire([allocator, staging]() mutable { allocator->release(&staging); });

@@ -36,9 +36,7 @@ class KeyTracker {
         if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
         break;
       case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        frames_.pop_back();
-        break;
+      case json::parse_event_t::array_end: frames_.pop_back(); break;
     }
     return true;
   }
@@ -81,8 +79,10 @@ std::string shortened(std::string_view text, bool pointerEscapes) {
   size_t shown = 0;
   for (char c : text) {
     if (shown++ == kShown) break;
-    if (pointerEscapes && c == '~') out += "~0";
-    else if (pointerEscapes && c == '/') out += "~1";
+    if (pointerEscapes && c == '~')
+      out += "~0";
+    else if (pointerEscapes && c == '/')
+      out += "~1";
     else if (static_cast<unsigned char>(c) < 0x20) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
@@ -103,11 +103,14 @@ std::optional<size_t> jsonTooDeepAt(std::string_view text, size_t maxDepth) {
   for (size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (inString) {
-      if (c == '\\') ++i;  // the escaped character cannot end the string
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;  // the escaped character cannot end the string
+      else if (c == '"')
+        inString = false;
       continue;
     }
-    if (c == '"') inString = true;
+    if (c == '"')
+      inString = true;
     else if (c == '[' || c == '{') {
       if (++depth > maxDepth) return i;
     } else if ((c == ']' || c == '}') && depth > 0) {

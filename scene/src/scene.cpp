@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <glm/geometric.hpp>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -27,8 +27,9 @@ struct SceneError {
   std::string message;
 };
 
-[[noreturn]] void fail(const std::string& pointer, std::string message) { throw SceneError{pointer, std::move(message)}; }
-
+[[noreturn]] void fail(const std::string& pointer, std::string message) {
+  throw SceneError{pointer, std::move(message)};
+}
 
 // Rejects keys this reader does not know: a typo ("ilumination") must not silently fall back
 // to a default.
@@ -62,7 +63,8 @@ uint32_t wholeNumber(const json& j, const std::string& pointer, double lo, doubl
 class AssetPaths {
  public:
   AssetPaths(std::filesystem::path sceneDir, const std::string& assetRoot)
-      : sceneDir_(std::move(sceneDir)), root_(scene::realPath(assetRoot.empty() ? sceneDir_ : std::filesystem::path(assetRoot))) {}
+      : sceneDir_(std::move(sceneDir)),
+        root_(scene::realPath(assetRoot.empty() ? sceneDir_ : std::filesystem::path(assetRoot))) {}
 
   std::string resolve(const json& j, const std::string& pointer) const {
     if (!j.is_string()) fail(pointer, "expected a file path");
@@ -124,7 +126,8 @@ Camera camera(const json& j) {
   if (j.contains("iso")) c.iso = number(j["iso"], "/camera/iso", 1, 1e6);
   if (c.farPlane <= c.nearPlane) fail("/camera/far", "must be greater than near");
   glm::dvec3 view = c.target - c.position;
-  if (glm::length(view) < kMinDirectionLength) fail("/camera/target", "must lie at least 1e-6 from the camera position");
+  if (glm::length(view) < kMinDirectionLength)
+    fail("/camera/target", "must lie at least 1e-6 from the camera position");
   // The view basis is built from cross(view, up): parallel vectors leave it undefined.
   if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-3)
     fail("/camera/up", "must not be parallel to the view direction (target − position)");
@@ -164,8 +167,7 @@ Environment environment(const json& j, const AssetPaths& assets) {
   onlyKeys(j, "/environment", {"image", "sky", "luminance"});
   Environment e;
   if (j.contains("image") == j.contains("sky")) fail("/environment", "expected exactly one of 'image' and 'sky'");
-  if (j.contains("image"))
-    e.image = assets.resolve(j["image"], "/environment/image");
+  if (j.contains("image")) e.image = assets.resolve(j["image"], "/environment/image");
   if (j.contains("luminance")) e.luminance = number(j["luminance"], "/environment/luminance", 0, 1e6);
   if (j.contains("sky")) {
     const json& sky = j["sky"];
@@ -190,14 +192,17 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
     // (runtime/gltf_mesh.h).
     const std::string extension = std::filesystem::path(o.mesh).extension().string();
     if (extension != ".gltf" && extension != ".glb")
-      fail(pointer + "/mesh", "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
+      fail(pointer + "/mesh",
+           "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
     o.mesh = assets.resolve(j["mesh"], pointer + "/mesh");
   }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
   o.material = string(j["material"], pointer + "/material");
   // A material name is an identifier of the language (what `material NAME {` accepts): no path,
   // no NUL to cut the file name short, nothing that could open another file.
-  if (!package::isValidName(o.material)) fail(pointer + "/material", "expected a material name (letters, digits, _), not '" + scene::pointerSegment(o.material) + "'");
+  if (!package::isValidName(o.material))
+    fail(pointer + "/material",
+         "expected a material name (letters, digits, _), not '" + scene::pointerSegment(o.material) + "'");
   if (j.contains("position")) o.position = vec3(j["position"], pointer + "/position");
   if (j.contains("radius")) o.radius = number(j["radius"], pointer + "/radius", 1e-4, 1e6);
   if (j.contains("params")) {
@@ -211,14 +216,16 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
         o.textures[name] = assets.resolve(value, p);
         continue;
       }
-      if (value.is_number()) v.push_back(number(value, p, -1e30, 1e30));
+      if (value.is_number())
+        v.push_back(number(value, p, -1e30, 1e30));
       else if (value.is_boolean()) {
         v.push_back(value.get<bool>() ? 1 : 0);
         o.boolParams.insert(name);  // checked against the parameter's type when the package is known
-      }
-      else if (value.is_array() && !value.empty() && value.size() <= 4)
-        for (size_t i = 0; i < value.size(); ++i) v.push_back(number(value[i], p + "/" + std::to_string(i), -1e30, 1e30));
-      else fail(p, "expected a number, a bool, an array of 1 to 4 numbers, or an image path");
+      } else if (value.is_array() && !value.empty() && value.size() <= 4)
+        for (size_t i = 0; i < value.size(); ++i)
+          v.push_back(number(value[i], p + "/" + std::to_string(i), -1e30, 1e30));
+      else
+        fail(p, "expected a number, a bool, an array of 1 to 4 numbers, or an image path");
       o.params[name] = std::move(v);
     }
   }
@@ -227,7 +234,8 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
 
 std::array<double, 3> perChannel(const json& j, const std::string& pointer, double lo, double hi) {
   if (!j.is_array() || j.size() != 3) fail(pointer, "expected an array of 3 numbers (red, green, blue)");
-  return {number(j[0], pointer + "/0", lo, hi), number(j[1], pointer + "/1", lo, hi), number(j[2], pointer + "/2", lo, hi)};
+  return {number(j[0], pointer + "/0", lo, hi), number(j[1], pointer + "/1", lo, hi),
+          number(j[2], pointer + "/2", lo, hi)};
 }
 
 // Colour grading: settings, or a .cube file instead (one LUT either way; mixing them would leave
@@ -264,7 +272,8 @@ void post(const json& j, const AssetPaths& assets, Scene* s) {
   if (j.contains("toneCurve")) {
     p.toneCurve = string(j["toneCurve"], "/post/toneCurve");
     if (p.toneCurve != "aces" && p.toneCurve != "neutral" && p.toneCurve != "none")
-      fail("/post/toneCurve", "expected \"aces\", \"neutral\" or \"none\", not '" + scene::shownValue(p.toneCurve) + "'");
+      fail("/post/toneCurve",
+           "expected \"aces\", \"neutral\" or \"none\", not '" + scene::shownValue(p.toneCurve) + "'");
   }
   if (j.contains("dither")) {
     if (!j["dither"].is_boolean()) fail("/post/dither", "expected true or false");
@@ -294,7 +303,8 @@ Scene scene(const json& j, const AssetPaths& assets) {
     if (j["lights"].size() > kMaxSceneLights)
       fail("/lights", std::to_string(j["lights"].size()) + " lights; a scene has at most " +
                           std::to_string(kMaxSceneLights) + " point and spot lights");
-    for (size_t i = 0; i < j["lights"].size(); ++i) s.lights.push_back(light(j["lights"][i], "/lights/" + std::to_string(i)));
+    for (size_t i = 0; i < j["lights"].size(); ++i)
+      s.lights.push_back(light(j["lights"][i], "/lights/" + std::to_string(i)));
   }
   if (j.contains("sky")) {
     onlyKeys(j["sky"], "/sky", {"luminance"});
@@ -302,7 +312,8 @@ Scene scene(const json& j, const AssetPaths& assets) {
   }
   if (j.contains("environment")) {
     // Two sources of ambient light would leave one of them silently unused.
-    if (j.contains("sky")) fail("/environment", "give either 'sky' (a constant environment) or 'environment', not both");
+    if (j.contains("sky"))
+      fail("/environment", "give either 'sky' (a constant environment) or 'environment', not both");
     s.environment = environment(j["environment"], assets);
   }
   if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");

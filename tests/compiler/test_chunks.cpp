@@ -15,20 +15,20 @@
 #include "app_vulkan.h"
 #include "facet/compiler/specular_lut.h"
 #include "facet/eval/compute_evaluator.h"
+#include "facet/eval/standard_model.h"
 #include "facet/runtime/vulkan_backend.h"
 #include "reference/specular_tiers.h"
 #include "test_support.h"
-#include "facet/eval/standard_model.h"
 
 namespace facet {
 namespace {
 
-using reference::kPi;
 using eval::FloatPrecision;
 using eval::GpuEvalRequest;
+using reference::kPi;
 
-constexpr double kMediumpMax = 65504.0;           // saturateMediump's ceiling (precision.glsl)
-constexpr double kUlp1 = 1.0 / 16777216.0;          // 2^-24: half an fp32 ulp at 1
+constexpr double kMediumpMax = 65504.0;     // saturateMediump's ceiling (precision.glsl)
+constexpr double kUlp1 = 1.0 / 16777216.0;  // 2^-24: half an fp32 ulp at 1
 const FloatPrecision kPrecisions[] = {FloatPrecision::Highp, FloatPrecision::Mediump};
 
 eval::GpuEvaluator& gpu() {
@@ -132,7 +132,8 @@ TEST(GpuEval, RunsOnTheAppsDeviceAndLeavesItAlive) {
 
   eval::GpuEvaluator incomplete(runtime::AppDevice{});
   EXPECT_FALSE(incomplete.ready());
-  EXPECT_NE(incomplete.initError().find("the app's Vulkan device is incomplete"), std::string::npos) << incomplete.initError();
+  EXPECT_NE(incomplete.initError().find("the app's Vulkan device is incomplete"), std::string::npos)
+      << incomplete.initError();
 }
 
 // GGX D in the Lagrange form. h is built in double, rounded to float and sent as a vector; the
@@ -165,12 +166,14 @@ void checkVisibility(const char* chunk, const char* function, double (*exact)(do
   req.body = std::string("result.x = ") + function + "(in0.x, in0.y, in0.z);";
   for (double r : kRoughness)
     for (double v : kCosines)
-      for (double l : {0.0, 1e-4, 0.01, 0.1, 0.5, 0.9, 1.0}) req.in0.push_back(glm::vec4(float(r * r), float(v), float(l), 0)), req.in1.push_back({});
+      for (double l : {0.0, 1e-4, 0.01, 0.1, 0.5, 0.9, 1.0})
+        req.in0.push_back(glm::vec4(float(r * r), float(v), float(l), 0)), req.in1.push_back({});
   checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
     glm::dvec4 a(req.in0[i]);
     double ref = std::min(exact(a.x, a.y, a.z), kMediumpMax);
     expectClose(result.x, ref, 1e-5, 0.0,
-                std::string(function) + " alpha=" + std::to_string(a.x) + " NoV=" + std::to_string(a.y) + " NoL=" + std::to_string(a.z));
+                std::string(function) + " alpha=" + std::to_string(a.x) + " NoV=" + std::to_string(a.y) +
+                    " NoL=" + std::to_string(a.z));
   });
 }
 
@@ -188,7 +191,8 @@ TEST(Chunks, FresnelSchlickMatchesReference) {
   req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl"});
   req.body = "result.xyz = fresnel_schlick(in0.xyz, in1.x);";
   for (double f0 : {0.0, 0.02, 0.04, 0.5, 1.0})
-    for (double lh : kLoH) req.in0.push_back(glm::vec4(float(f0), 0.04f, 0.9f, 0)), req.in1.push_back(glm::vec4(float(lh), 0, 0, 0));
+    for (double lh : kLoH)
+      req.in0.push_back(glm::vec4(float(f0), 0.04f, 0.9f, 0)), req.in1.push_back(glm::vec4(float(lh), 0, 0, 0));
   checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
     glm::dvec3 ref = reference::fresnelSchlick(glm::dvec3(req.in0[i]), double(req.in1[i].x));
     for (int c = 0; c < 3; ++c) expectClose(result[c], ref[c], 0.0, 1e-6, "LoH=" + std::to_string(req.in1[i].x));
@@ -226,7 +230,8 @@ void checkZioma(const char* call, const reference::ZiomaCoefficients& k, bool ca
     double ref = reference::specularZioma(k, a.x, a.y, a.z);
     double d = a.y * a.y * (a.x * a.x - 1.0) + 1.0;
     expectClose(result.x, ref, 1e-5 + (cancels ? 6.0 * kUlp1 / d : 0.0), 0.0,
-                std::string(call) + " alpha=" + std::to_string(a.x) + " NoH=" + std::to_string(a.y) + " LoH=" + std::to_string(a.z));
+                std::string(call) + " alpha=" + std::to_string(a.x) + " NoH=" + std::to_string(a.y) +
+                    " LoH=" + std::to_string(a.z));
   });
 }
 
@@ -249,7 +254,8 @@ TEST(Chunks, SpecularZiomaNxhMatchesReference) {
 TEST(Chunks, SpecularFusedHammonMatchesReference) {
   GpuEvalRequest req;
   req.chunks = chunks({"precision.glsl", "math.glsl", "specular_fused_hammon.glsl"});
-  req.body = "result.x = specular_fused_hammon(in0.x, in0.z, in0.w, in0.y, vec3(0.0, 0.0, 1.0), vec3(in1.x, 0.0, in0.y));";
+  req.body =
+      "result.x = specular_fused_hammon(in0.x, in0.z, in0.w, in0.y, vec3(0.0, 0.0, 1.0), vec3(in1.x, 0.0, in0.y));";
   for (double r : kRoughness)
     for (double nh : kNoH)
       for (double nv : {1e-4, 0.01, 0.1, 0.5, 1.0})
@@ -262,7 +268,8 @@ TEST(Chunks, SpecularFusedHammonMatchesReference) {
     glm::dvec4 a(req.in0[i]);
     double ref = std::min(reference::specularFusedHammon(a.x, a.z, a.w, a.y), kMediumpMax);
     expectClose(result.x, ref, 1e-5, 0.0,
-                "alpha=" + std::to_string(a.x) + " NoH=" + std::to_string(a.y) + " NoV=" + std::to_string(a.z) + " NoL=" + std::to_string(a.w));
+                "alpha=" + std::to_string(a.x) + " NoH=" + std::to_string(a.y) + " NoV=" + std::to_string(a.z) +
+                    " NoL=" + std::to_string(a.w));
   });
 }
 
@@ -302,7 +309,8 @@ TEST(Chunks, SpecularLutMatchesTableSampling) {
 // The chunk's hard-coded table size and scale are the generator's defaults.
 TEST(SpecularLut, ChunkConstantsMatchGenerator) {
   std::string text = test::readText(test::sourceDir() + "/chunks/specular_lut.glsl");
-  EXPECT_NE(text.find("vec2(" + std::to_string(compiler::kSpecularLutWidth) + ".0, " + std::to_string(compiler::kSpecularLutHeight) + ".0)"),
+  EXPECT_NE(text.find("vec2(" + std::to_string(compiler::kSpecularLutWidth) + ".0, " +
+                      std::to_string(compiler::kSpecularLutHeight) + ".0)"),
             std::string::npos);
   EXPECT_NE(text.find("SPECULAR_LUT_SCALE = 5.0929582;"), std::string::npos);
   EXPECT_NEAR(compiler::kSpecularLutScale, 5.0929582, 1e-7);
@@ -350,7 +358,9 @@ TEST(SpecularLut, TableMatchesGgxWithinStatedError) {
   const double lsb = 1.0 / 255.0;
   auto e = [&](double rol, double r) {
     double rowAlbedo = compiler::specularLutAlbedo(r);
-    return std::sqrt(std::min(compiler::specularLutIntensity(compiler::SpecularLutAxis::ReflectedCosine4, rol, r) / (rowAlbedo * table.scale), 1.0));
+    return std::sqrt(std::min(
+        compiler::specularLutIntensity(compiler::SpecularLutAxis::ReflectedCosine4, rol, r) / (rowAlbedo * table.scale),
+        1.0));
   };
   for (uint32_t j = 0; j < table.height; ++j)
     for (uint32_t i = 0; i < table.width; ++i) {
@@ -374,11 +384,13 @@ TEST(SpecularLut, TableMatchesGgxWithinStatedError) {
   EXPECT_LE(worst, 6.0) << "at r=" << atR << " RoL=" << atRoL;
   for (int j = 0; j <= 20; ++j) {
     double r = 0.089 + (1.0 - 0.089) * j / 20.0;
-    double peak = reference::sampleR8Bilinear(table.texels, table.width, table.height, reference::lutTexelCoordinate(1.0, table.width),
+    double peak = reference::sampleR8Bilinear(table.texels, table.width, table.height,
+                                              reference::lutTexelCoordinate(1.0, table.width),
                                               reference::lutTexelCoordinate(r, table.height));
     // Rows are at r_j = j/63; between rows the peak is a lerp of two exact (encoded) peaks.
     double x = r * (table.height - 1), j0 = std::floor(x), f = x - j0;
-    double expected = e(1.0, j0 / (table.height - 1)) * (1 - f) + e(1.0, std::min(j0 + 1, table.height - 1.0) / (table.height - 1)) * f;
+    double expected = e(1.0, j0 / (table.height - 1)) * (1 - f) +
+                      e(1.0, std::min(j0 + 1, table.height - 1.0) / (table.height - 1)) * f;
     EXPECT_NEAR(peak, expected, 0.5 * lsb + 1e-9) << "r=" << r;
   }
 }
@@ -459,7 +471,8 @@ TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
 TEST(Zioma, PublishedFormCreatesEnergy) {
   double worst = 0.0;
   for (double r : {0.089, 0.1, 0.2})
-    for (double NoV : {0.5, 0.8, 1.0}) worst = std::max(worst, reference::albedoZioma(reference::kZiomaPublished, r * r, NoV, 1.0));
+    for (double NoV : {0.5, 0.8, 1.0})
+      worst = std::max(worst, reference::albedoZioma(reference::kZiomaPublished, r * r, NoV, 1.0));
   EXPECT_GT(worst, 1.5);
 }
 
@@ -491,9 +504,10 @@ TEST(FusedHammon, ConservesEnergy) {
     for (int i = 0; i <= 30; ++i) {
       double NoV = i == 0 ? 1e-4 : i / 30.0;
       double fused = reference::albedoFusedHammon(alpha, NoV, 1.0, 4096);
-      double exact = reference::directionalAlbedo(alpha, NoV, [&](double nv, double nl, double, double) {
-        return reference::visibilitySmithGgxCorrelated(alpha, nv, nl);
-      }, 4096);
+      double exact = reference::directionalAlbedo(
+          alpha, NoV,
+          [&](double nv, double nl, double, double) { return reference::visibilitySmithGgxCorrelated(alpha, nv, nl); },
+          4096);
       EXPECT_LE(fused, exact + 1e-6) << "at r=" << r << " NoV=" << NoV;
       if (exact <= 1.0) {
         EXPECT_LE(fused, 1.0) << "at r=" << r << " NoV=" << NoV;
@@ -550,8 +564,9 @@ TEST(PostChunks, TriangularDitherRemovesBandingFromASlowGradient) {
   GpuEvalRequest req;
   req.chunks = chunks({"dither.glsl"});
   // in0.x: the encoded value; in1.xy: the pixel. result.x: dithered, result.y: the noise in steps.
-  req.body = "result.x = dither_triangular_8bit(vec3(in0.x), in1.xy).x;\n"
-             "result.y = (dither_triangular_8bit(vec3(0.5), in1.xy).x - 0.5) * 255.0;";
+  req.body =
+      "result.x = dither_triangular_8bit(vec3(in0.x), in1.xy).x;\n"
+      "result.y = (dither_triangular_8bit(vec3(0.5), in1.xy).x - 0.5) * 255.0;";
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       // Four 8-bit steps over 256 pixels: 1/64 of a step per pixel.

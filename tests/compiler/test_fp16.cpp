@@ -13,23 +13,23 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <map>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 #include <tuple>
 
 #include "facet/compiler/build.h"
+#include "facet/compiler/lower_relaxed_to_quantized.h"
+#include "facet/eval/compute_evaluator.h"
+#include "facet/eval/standard_model.h"
 #include "facet/ir/check.h"
 #include "facet/package/package.h"
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/png.h"
-#include "facet/scene/scene.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
-#include "facet/eval/compute_evaluator.h"
+#include "facet/scene/scene.h"
 #include "reference/specular_tiers.h"
-#include "facet/compiler/lower_relaxed_to_quantized.h"
-#include "facet/eval/standard_model.h"
 #include "test_images.h"
 #include "test_support.h"
 
@@ -57,9 +57,8 @@ bool validate(const std::vector<uint32_t>& words, std::string* log) {
 // spirv-opt -O, as compiler/src/spirv_tools_backend.cpp runs it (for the Vulkan 1.1 env here).
 bool optimize(std::vector<uint32_t>* words, std::string* log) {
   spvtools::Optimizer optimizer(kEvalEnv);
-  optimizer.SetMessageConsumer([log](spv_message_level_t, const char*, const spv_position_t&, const char* m) {
-    *log += std::string(m) + "\n";
-  });
+  optimizer.SetMessageConsumer(
+      [log](spv_message_level_t, const char*, const spv_position_t&, const char* m) { *log += std::string(m) + "\n"; });
   optimizer.RegisterPerformancePasses();
   std::vector<uint32_t> out;
   if (!optimizer.Run(words->data(), words->size(), &out)) return false;
@@ -113,7 +112,8 @@ std::map<std::string, std::string> relaxedFloatValues(const std::string& text) {
     auto d = defs.find(id);
     if (d == defs.end()) continue;
     std::string op = d->second.substr(0, d->second.find(' ')), type = d->second.substr(d->second.find(' ') + 1);
-    if (!floatTypes.count(type) || op == "OpFunction" || op == "OpPhi" || op.rfind("OpImage", 0) == 0 || op == "OpUndef")
+    if (!floatTypes.count(type) || op == "OpFunction" || op == "OpPhi" || op.rfind("OpImage", 0) == 0 ||
+        op == "OpUndef")
       continue;
     out[id] = op;
   }
@@ -277,7 +277,9 @@ TEST(Fp16Pass, RejectsMalformedInput) {
 std::vector<std::string> shadingChunks(const char* lobe, bool vertexDiffuse) {
   std::vector<std::string> out;
   if (vertexDiffuse) out.push_back("#define FACET_VERTEX_DIFFUSE 1");
-  out.push_back("struct MaterialInputs { vec3 baseColor; float metallic; float roughness; float reflectance; float ambientOcclusion; };");
+  out.push_back(
+      "struct MaterialInputs { vec3 baseColor; float metallic; float roughness; float reflectance; float "
+      "ambientOcclusion; };");
   std::vector<const char*> files{"math.glsl", "precision.glsl", "diffuse_lambert.glsl"};
   if (std::string(lobe) == "specular_ggx_smith.glsl") files.push_back("brdf_ggx.glsl");
   if (std::string(lobe) == "specular_zioma_lobe.glsl") files.push_back("specular_zioma.glsl");
@@ -331,7 +333,8 @@ GpuEvalRequest mirrorSweep(const char* lobe, bool vertexDiffuse) {
 double mirrorExpected(double rough, double cv, double cl, double light) {
   double alpha = std::pow(std::clamp(rough, 0.089, 1.0), 2.0);
   double NoV = std::max(cv, 1e-4), NoL = cl;
-  double dv = std::min(reference::distributionGgx(alpha, 1.0) * reference::visibilitySmithGgxCorrelated(alpha, NoV, NoL), 65504.0);
+  double dv = std::min(
+      reference::distributionGgx(alpha, 1.0) * reference::visibilitySmithGgxCorrelated(alpha, NoV, NoL), 65504.0);
   double f = reference::fresnelSchlick(glm::dvec3(1.0), cl).x;
   return std::min(dv * f * light * NoL, 65504.0);
 }
@@ -352,7 +355,8 @@ TEST(Fp16Shading, GgxSmithGlintStaysFiniteAtGrazingMirror) {
       std::printf("roughness %5.3f n.v %6.4f n.l %6.4f  fp16 %12.5g  policy %12.5g  exact %12.5g\n", rough, cv, cl,
                   double(out[i].x), expected, exact);
     if (!std::isfinite(out[i].x)) {
-      ADD_FAILURE() << "roughness " << rough << " n.v " << cv << " n.l " << cl << ": " << out[i].x << " (double: " << exact << ")";
+      ADD_FAILURE() << "roughness " << rough << " n.v " << cv << " n.l " << cl << ": " << out[i].x
+                    << " (double: " << exact << ")";
       continue;
     }
     EXPECT_NEAR(out[i].x, expected, 0.02 * expected + 1e-3) << "roughness " << rough << " n.v " << cv << " n.l " << cl;
@@ -390,9 +394,8 @@ TEST(Fp16Shading, FusedHammonGlintFollowsItsFormulaAtGrazingMirror) {
     // its α(n·l + n·v) (2.7 % at r = 0.4, c = 0.005); the formula in double is told the same.
     const double NoV = std::max(cv, 1e-4), twoNoLNoV = 2.0 * cl * NoV;
     const double a = twoNoLNoV < std::ldexp(1.0, -14) ? 0.0 : twoNoLNoV;
-    const double lobe = std::min(reference::distributionGgx(alpha, 1.0) * 0.5 /
-                                     std::max(a + (cl + NoV - a) * alpha, 1.0 / 4096.0),
-                                 65504.0);
+    const double lobe = std::min(
+        reference::distributionGgx(alpha, 1.0) * 0.5 / std::max(a + (cl + NoV - a) * alpha, 1.0 / 4096.0), 65504.0);
     const double expected = std::min(lobe * light * cl, 65504.0);
     ASSERT_TRUE(std::isfinite(out[i].x)) << "roughness " << rough << " n.v " << cv << " n.l " << cl;
     EXPECT_NEAR(out[i].x, expected, 0.02 * expected + 1e-3) << "roughness " << rough << " n.v " << cv << " n.l " << cl;
@@ -475,7 +478,7 @@ std::optional<compiler::BuildResult> build(const std::string& text, bool emulate
 }
 
 const package::Shader* shaderOf(const compiler::BuildResult& b, const std::string& key, package::Stage stage,
-                                    package::Target target) {
+                                package::Target target) {
   for (const auto& v : b.package.variants)
     if (v.key == key)
       for (const auto& s : v.shaders)
@@ -488,7 +491,8 @@ const package::Shader* shaderOf(const compiler::BuildResult& b, const std::strin
 // tiers: checks GLSL ES and MSL identical, the highp reference tier's SPIR-V identical, and calls
 // check(key, stage, disassembly of `other`'s SPIR-V) for each mediump stage.
 template <typename Check>
-void expectOnlyMediumpSpirvDiffers(const compiler::BuildResult& plain, const compiler::BuildResult& other, Check check) {
+void expectOnlyMediumpSpirvDiffers(const compiler::BuildResult& plain, const compiler::BuildResult& other,
+                                   Check check) {
   using package::Stage;
   using package::Target;
   ASSERT_EQ(plain.package.variants.size(), other.package.variants.size());
@@ -515,11 +519,12 @@ void expectOnlyMediumpSpirvDiffers(const compiler::BuildResult& plain, const com
 TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
   auto plain = build(kHardCaseMaterial, false), emulated = build(kHardCaseMaterial, true);
   ASSERT_TRUE(plain && emulated);
-  expectOnlyMediumpSpirvDiffers(*plain, *emulated, [](const std::string&, package::Stage stage, const std::string& text) {
-    if (stage == package::Stage::Fragment) {
-      EXPECT_GT(countOf(text, "OpQuantizeToF16"), 10u);
-    }
-  });
+  expectOnlyMediumpSpirvDiffers(*plain, *emulated,
+                                [](const std::string&, package::Stage stage, const std::string& text) {
+                                  if (stage == package::Stage::Fragment) {
+                                    EXPECT_GT(countOf(text, "OpQuantizeToF16"), 10u);
+                                  }
+                                });
 }
 
 // The true-half build (BuildOptions::fp16TrueHalf) changes only the SPIR-V of mediump tiers: it
@@ -586,14 +591,17 @@ void PrintTo(const HardCase& c, std::ostream* os) { *os << c.name; }
 
 // Every scene lights with the 110 000 lux sun and exposes with the f/16 1/125 s ISO 100 camera
 // (pre-exposure 2.6e-5: the sun arrives as 2.86, the sky as 0.156).
-#define FACET_CAMERA(pos, target) \
-  "\"camera\": {\"position\": " pos ", \"target\": " target ", \"fovY\": 35, \"aperture\": 16, \"shutter\": 0.008, \"iso\": 100}"
-#define FACET_SUN(dir) "\"sun\": {\"direction\": " dir ", \"illuminance\": 110000, \"color\": [1, 1, 1]}, \"sky\": {\"luminance\": 6000}"
+#define FACET_CAMERA(pos, target)                           \
+  "\"camera\": {\"position\": " pos ", \"target\": " target \
+  ", \"fovY\": 35, \"aperture\": 16, \"shutter\": 0.008, \"iso\": 100}"
+#define FACET_SUN(dir) \
+  "\"sun\": {\"direction\": " dir ", \"illuminance\": 110000, \"color\": [1, 1, 1]}, \"sky\": {\"luminance\": 6000}"
 
 const HardCase kHardCases[] = {
     // Roughness 0 (clamped to 0.089 by the precision policy), dielectric, metal and coloured metal.
     {"roughness_zero",
-     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]",
+                                                      "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
        "objects": [
          {"material": "hard_case", "position": [-1.1, 0, 0], "params": {"roughness": 0, "baseColor": [0.8, 0.8, 0.8]}},
          {"material": "hard_case", "position": [1.1, 0, 0], "params": {"roughness": 0, "metallic": 1, "baseColor": [1, 0.9, 0.6]}}
@@ -615,7 +623,8 @@ const HardCase kHardCases[] = {
        ]})",
      52, 56, 33},
     {"grazing_glint",
-     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0.3, 0]",
+                                                      "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
        "objects": [
          {"material": "hard_case", "position": [0, -1000, 0], "radius": 1000, "params": {"roughness": 0, "baseColor": [0.7, 0.7, 0.7]}}
        ]})",
@@ -628,7 +637,8 @@ const HardCase kHardCases[] = {
      60, 68, 51},
     // Black and white: baseColor 0 and 1, metallic 0 and 1.
     {"black_white",
-     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]",
+                                                      "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
        "objects": [
          {"material": "hard_case", "position": [-1.1, 1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [0, 0, 0], "metallic": 0}},
          {"material": "hard_case", "position": [1.1, 1.1, 0], "radius": 0.9, "params": {"roughness": 0.4, "baseColor": [0, 0, 0], "metallic": 1}},
@@ -638,7 +648,8 @@ const HardCase kHardCases[] = {
      39, 50, 34},
     // Geometry 10 km from the origin, the camera 4 m from it.
     {"far_from_origin",
-     R"({"width": 256, "height": 256, )" FACET_CAMERA("[10000, 0, 4]", "[10000, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+     R"({"width": 256, "height": 256, )" FACET_CAMERA("[10000, 0, 4]",
+                                                      "[10000, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
        "objects": [{"material": "hard_case", "position": [10000, 0, 0], "params": {"roughness": 0.3, "baseColor": [0.8, 0.2, 0.1]}}]})",
      63, 58, 37},
 };
@@ -672,9 +683,9 @@ Comparison compare(const runtime::FrameResult& image, const runtime::FrameResult
     }
     if (maxRef >= kLitThreshold && maxImg < 0.1f * kLitThreshold) {
       if (c.blackWhereLit < 8 && std::getenv("FACET_FP16_DEBUG"))
-        std::printf("  black where lit: pixel (%zu, %zu) reference (%g, %g, %g) image (%g, %g, %g)\n", (p / 4) % image.width,
-                    (p / 4) / image.width, reference.hdr[p], reference.hdr[p + 1], reference.hdr[p + 2], image.hdr[p],
-                    image.hdr[p + 1], image.hdr[p + 2]);
+        std::printf("  black where lit: pixel (%zu, %zu) reference (%g, %g, %g) image (%g, %g, %g)\n",
+                    (p / 4) % image.width, (p / 4) / image.width, reference.hdr[p], reference.hdr[p + 1],
+                    reference.hdr[p + 2], image.hdr[p], image.hdr[p + 1], image.hdr[p + 2]);
       ++c.blackWhereLit;
     }
   }
@@ -687,7 +698,8 @@ class Fp16HardCases : public ::testing::Test {
     plainDir_ = new std::string(test::scratchDir("fp16-plain"));
     emulatedDir_ = new std::string(test::scratchDir("fp16-emulated"));
     trueHalfDir_ = new std::string(test::scratchDir("fp16-true-half"));
-    for (auto [dir, emulate, trueHalf] : {std::tuple{plainDir_, false, false}, {emulatedDir_, true, false}, {trueHalfDir_, false, true}}) {
+    for (auto [dir, emulate, trueHalf] :
+         {std::tuple{plainDir_, false, false}, {emulatedDir_, true, false}, {trueHalfDir_, false, true}}) {
       auto built = build(kHardCaseMaterial, emulate, trueHalf);
       if (!built) continue;
       std::string error;
@@ -725,7 +737,8 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
   float16Device.float16Arithmetic = true;
   auto vkHalf = runtime::createVulkanBackend(float16Device, &error);
   ASSERT_TRUE(vkHalf) << error;
-  auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out, runtime::RenderBackend* on = nullptr) {
+  auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out,
+                    runtime::RenderBackend* on = nullptr) {
     scene->tier = tier;
     auto frame = runtime::SceneFrame::prepare(*scene, dir, &error);
     ASSERT_TRUE(frame) << error;
@@ -755,13 +768,15 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
       runtime::writePng(stem + tier + ".fp16.png", emulated.width, emulated.height, emulated.ldr, &ignored);
       runtime::writePng(stem + tier + ".fp32.png", plain.width, plain.height, plain.ldr, &ignored);
     }
-    std::printf("fp16 hard case %-16s %-4s fp16-emulated: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu"
-                " | fp32 mediump: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu\n",
-                hc.name, tier, e.psnr, e.maxAbsHdr, e.nonFinite, e.blackWhereLit, p.psnr, p.maxAbsHdr, p.nonFinite,
-                p.blackWhereLit);
-    std::printf("fp16 hard case %-16s %-4s true half: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu"
-                " | true half vs emulated: PSNR %5.1f dB, max |dHDR| %9.4g\n",
-                hc.name, tier, h.psnr, h.maxAbsHdr, h.nonFinite, h.blackWhereLit, he.psnr, he.maxAbsHdr);
+    std::printf(
+        "fp16 hard case %-16s %-4s fp16-emulated: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu"
+        " | fp32 mediump: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu\n",
+        hc.name, tier, e.psnr, e.maxAbsHdr, e.nonFinite, e.blackWhereLit, p.psnr, p.maxAbsHdr, p.nonFinite,
+        p.blackWhereLit);
+    std::printf(
+        "fp16 hard case %-16s %-4s true half: PSNR %5.1f dB, max |dHDR| %9.4g, NaN/Inf %zu, black-where-lit %zu"
+        " | true half vs emulated: PSNR %5.1f dB, max |dHDR| %9.4g\n",
+        hc.name, tier, h.psnr, h.maxAbsHdr, h.nonFinite, h.blackWhereLit, he.psnr, he.maxAbsHdr);
     EXPECT_EQ(e.nonFinite, 0u);
     // A cheaper tier's own maths may darken a pixel the reference lights (the LUT lobe, or the
     // zioma option's fused V·F, which has no n·v: a metal's grazing rim); fp16 must add none.

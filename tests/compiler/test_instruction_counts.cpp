@@ -16,8 +16,10 @@ layout(location = 0) out highp vec2 v_uv;
 layout(location = 1) out mediump vec3 v_n;
 void main() { v_uv = a_position.xy; v_n = a_position.xyz; gl_Position = a_position; }
 )";
-  s.fragment = "#version 310 es\nprecision mediump float;\nlayout(location = 0) in highp vec2 v_uv;\n"
-               "layout(location = 1) in mediump vec3 v_n;\nlayout(location = 0) out vec4 o;\n" + fragmentBody;
+  s.fragment =
+      "#version 310 es\nprecision mediump float;\nlayout(location = 0) in highp vec2 v_uv;\n"
+      "layout(location = 1) in mediump vec3 v_n;\nlayout(location = 0) out vec4 o;\n" +
+      fragmentBody;
   facet::compiler::SpirvStages out;
   std::string log;
   EXPECT_TRUE(facet::compiler::compileToSpirv(s, &out, &log)) << log;
@@ -67,9 +69,16 @@ TEST(InstructionCounts, VertexInputsAreCountedAsVaryingComponentsToo) {
 TEST(InstructionCounts, ShortInstructionsAreReadWithinTheirWords) {
   const uint32_t magic = 0x07230203, version = 0x00010000;
   const uint32_t glsl = 0x4c534c47;  // "GLSL" with no terminating NUL
-  std::vector<uint32_t> words = {magic, version, 0, 10, 0,
-                                 (3u << 16) | 11u, 1, glsl,  // OpExtInstImport %1 "GLSL…
-                                 (2u << 16) | 23u, 2};       // OpTypeVector %2 (component type and count missing)
+  std::vector<uint32_t> words = {magic,
+                                 version,
+                                 0,
+                                 10,
+                                 0,
+                                 (3u << 16) | 11u,
+                                 1,
+                                 glsl,  // OpExtInstImport %1 "GLSL…
+                                 (2u << 16) | 23u,
+                                 2};  // OpTypeVector %2 (component type and count missing)
   facet::compiler::OpClassCounts counts;
   std::string error;
   EXPECT_TRUE(facet::compiler::countOpClasses(words, &counts, &error)) << error;

@@ -42,7 +42,8 @@ uniform mediump sampler2D tex;
 in vec3 v_normal;
 void main() {}
 )");
-  for (const char* part : {"precision highp int;", "struct Light{", "uniform Frame{", "sampler2D tex;", "in vec3 v_normal;"})
+  for (const char* part :
+       {"precision highp int;", "struct Light{", "uniform Frame{", "sampler2D tex;", "in vec3 v_normal;"})
     EXPECT_TRUE(has(out, part)) << part << "\n" << out;
 }
 

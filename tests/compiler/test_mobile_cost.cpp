@@ -31,8 +31,10 @@ layout(location = 0) out highp vec4 v_hi;
 layout(location = 1) out mediump vec3 v_med;
 void main() { v_hi = a_position; v_med = a_position.xyz; gl_Position = a_position; }
 )";
-  s.fragment = "#version 310 es\nprecision highp float;\nlayout(location = 0) in highp vec4 v_hi;\n"
-               "layout(location = 1) in mediump vec3 v_med;\nlayout(location = 0) out vec4 o;\n" + body;
+  s.fragment =
+      "#version 310 es\nprecision highp float;\nlayout(location = 0) in highp vec4 v_hi;\n"
+      "layout(location = 1) in mediump vec3 v_med;\nlayout(location = 0) out vec4 o;\n" +
+      body;
   facet::compiler::SpirvStages out;
   std::string log;
   EXPECT_TRUE(facet::compiler::compileToSpirv(s, &out, &log)) << log;
@@ -79,8 +81,8 @@ TEST(MobileCost, DivisionIsAReciprocalOnTheSfuAndAMultiply) {
   auto divided = costOf(fragment("void main() { o = vec4(v_hi.x / v_hi.y); }"));
   EXPECT_EQ(divided.counts[OpClass::Division], 1);
   EXPECT_EQ(divided.divisions(), 1);
-  EXPECT_EQ(divided.sfuOps, 1);     // rcp
-  EXPECT_EQ(divided.fmaSlots, 1);   // mul
+  EXPECT_EQ(divided.sfuOps, 1);    // rcp
+  EXPECT_EQ(divided.fmaSlots, 1);  // mul
   // By a constant: a multiply by the reciprocal, no SFU op.
   auto byConstant = costOf(fragment("void main() { o = vec4(v_hi.x / 3.0); }"));
   EXPECT_EQ(byConstant.counts[OpClass::Division], 0);
@@ -114,8 +116,9 @@ TEST(MobileCost, MultiplyAddFusesAndSaturateIsFree) {
   EXPECT_EQ(fused.counts[OpClass::FusedAdd], 3);
   EXPECT_EQ(fused.fmaSlots, 3);
   // A product used twice stays a multiply: neither add absorbs it.
-  auto shared = costOf(fragment(
-      "void main() { vec3 p = v_hi.xyz * v_hi.w; vec3 a = p + v_hi.zxy; vec3 b = p - v_hi.yzx; o = vec4(a * b, 1.0); }"));
+  auto shared =
+      costOf(fragment("void main() { vec3 p = v_hi.xyz * v_hi.w; vec3 a = p + v_hi.zxy; vec3 b = p - v_hi.yzx; o = "
+                      "vec4(a * b, 1.0); }"));
   EXPECT_EQ(shared.counts[OpClass::FusedAdd], 0);
   EXPECT_EQ(shared.counts[OpClass::Fma], 12);
   auto saturate = costOf(fragment("void main() { o = vec4(clamp(v_hi.x * v_hi.y, 0.0, 1.0)); }"));
@@ -172,7 +175,8 @@ TEST(MobileCost, MediumpArithmeticWeighsHalfASlot) {
   EXPECT_DOUBLE_EQ(mediump.fmaSlots, 1.5);
   MobileCostWeights unpaired;
   unpaired.relaxedFmaWeight = 1;
-  EXPECT_DOUBLE_EQ(costOf(fragment("void main() { mediump vec3 a = v_med * v_med.zxy; o = vec4(a, 1.0); }"), unpaired).fmaSlots, 3);
+  EXPECT_DOUBLE_EQ(
+      costOf(fragment("void main() { mediump vec3 a = v_med * v_med.zxy; o = vec4(a, 1.0); }"), unpaired).fmaSlots, 3);
 }
 
 TEST(MobileCost, MalformedModulesAreErrorsNotCrashes) {
@@ -182,8 +186,8 @@ TEST(MobileCost, MalformedModulesAreErrorsNotCrashes) {
   EXPECT_FALSE(facet::compiler::estimateMobileCost({0x07230203, 0x10000, 0, 10, 0, 0xffff0001}, &cost, &error));
   EXPECT_NE(error.find("truncated"), std::string::npos);
   // An instruction shorter than its opcode wants (an FAdd with no operands) is read within its words.
-  std::vector<uint32_t> words = {0x07230203, 0x10000, 0, 10, 0, (2u << 16) | 54u, 1, (1u << 16) | 56u, (2u << 16) | 129u, 3,
-                                 (1u << 16) | 56u};
+  std::vector<uint32_t> words = {
+      0x07230203, 0x10000, 0, 10, 0, (2u << 16) | 54u, 1, (1u << 16) | 56u, (2u << 16) | 129u, 3, (1u << 16) | 56u};
   EXPECT_TRUE(facet::compiler::estimateMobileCost(words, &cost, &error)) << error;
 }
 
@@ -214,8 +218,8 @@ TEST(MobileCost, RedPlasticTiersRankAsOnMali) {
   auto cycles = [&](const std::string& key) { return fragmentCost(key).cycles; };
   for (const char* d : {"dir1", "dir0"})
     std::printf("red_plastic %s fragment cycles: reference %.2f, high %.2f, mid %.2f, low %.2f\n", d,
-                cycles(std::string("reference.") + d), cycles(std::string("high.") + d), cycles(std::string("mid.") + d),
-                cycles(std::string("low.") + d));
+                cycles(std::string("reference.") + d), cycles(std::string("high.") + d),
+                cycles(std::string("mid.") + d), cycles(std::string("low.") + d));
   EXPECT_GT(cycles("reference.dir1"), cycles("high.dir1"));
   EXPECT_GT(cycles("high.dir1"), cycles("mid.dir1"));
   EXPECT_GT(cycles("mid.dir1"), cycles("low.dir1"));
@@ -246,7 +250,8 @@ TEST(MobileCost, CalibratedEstimateIsTheCommittedFit) {
         counts.ops[k] = ops.at(facet::compiler::toString(OpClass(k))).get<double>();
       counts.fmaRelaxed = ops.at("fma_relaxed").get<double>();
       const double want = figures["after"].get<double>();
-      EXPECT_NEAR(facet::compiler::calibratedEstimate(counts, *calibration), want, 1e-3 * want) << gpu << " " << variant;
+      EXPECT_NEAR(facet::compiler::calibratedEstimate(counts, *calibration), want, 1e-3 * want)
+          << gpu << " " << variant;
       ++checked;
     }
   }
@@ -285,8 +290,7 @@ TEST(CostFigures, CellsAndReportedValuesKeepTheTablesPrecision) {
   EXPECT_EQ(facet::compiler::formatFigure(relaxed, relaxed.value(s)), "67%");
   EXPECT_DOUBLE_EQ(facet::compiler::reportedValue(cycles, s), 1.23);
   const facet::compiler::FigureColumn columns[] = {{Figure::Alu, 4}, {Figure::RelaxedPercent, 8}, {Figure::Cycles, 6}};
-  EXPECT_EQ(facet::compiler::figureTableHeading(columns),
-            "  variant            stage     alu  mediump cycles\n");
+  EXPECT_EQ(facet::compiler::figureTableHeading(columns), "  variant            stage     alu  mediump cycles\n");
   EXPECT_EQ(facet::compiler::figureTableRow("high.dir1", "fragment", columns, s),
             "  high.dir1          fragment    3      67%   1.23\n");
 }

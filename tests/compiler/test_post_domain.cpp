@@ -128,12 +128,14 @@ TEST(PostDomain, GradingAndVignetteAreCompiledOutWhenOffAndBoundFromTheAbiWhenOn
   // On: the sampler and the block at shader_abi.h's binding in SPIR-V and Metal, by name in GLSL ES.
   for (const PostStage* stage : {&g.sampledFragment, &g.fetchFragment}) {
     EXPECT_TRUE(contains(stage->glslEs, "uniform mediump sampler3D facet_colorLut;"));
-    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %facet_colorLut Binding 1")) << disassembleSpirv(stage->spirv);
+    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %facet_colorLut Binding 1"))
+        << disassembleSpirv(stage->spirv);
     EXPECT_TRUE(contains(stage->msl, "texture3d<float> facet_colorLut [[texture(1)]]")) << stage->msl;
   }
   for (const PostStage* stage : {&v.sampledFragment, &v.fetchFragment}) {
     EXPECT_TRUE(contains(stage->glslEs, "layout(std140) uniform PostUniforms"));
-    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %post Binding 3")) << disassembleSpirv(stage->spirv);
+    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %post Binding 3"))
+        << disassembleSpirv(stage->spirv);
     EXPECT_TRUE(contains(stage->msl, "constant PostUniforms& post [[buffer(3)]]")) << stage->msl;
   }
   EXPECT_LT(off.sampledFragment.spirv.size(), g.sampledFragment.spirv.size());

@@ -11,11 +11,11 @@
 #include <set>
 #include <sstream>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/preshader.h"
 #include "facet/compiler/spirv_tools_backend.h"
 #include "facet/package/package.h"
 #include "facet/runtime/preshader.h"
-#include "facet/abi/shader_abi.h"
 #include "test_compile.h"
 #include "test_diagnostics.h"
 #include "test_support.h"
@@ -54,7 +54,9 @@ PreshaderOp op(Op code, uint8_t dst, uint8_t a = 0, uint8_t b = 0, uint32_t offs
                std::array<float, 4> k = {}) {
   return {code, dst, a, b, offset, count, k};
 }
-PreshaderOp store(uint8_t reg, uint32_t offset = 16, uint32_t count = 4) { return op(Op::Store, 0, reg, 0, offset, count); }
+PreshaderOp store(uint8_t reg, uint32_t offset = 16, uint32_t count = 4) {
+  return op(Op::Store, 0, reg, 0, offset, count);
+}
 
 }  // namespace
 
@@ -88,17 +90,18 @@ TEST(PreshaderInterpreter, ClampBoundsEveryComponentAndTurnsNanIntoTheLowerBound
 TEST(PreshaderInterpreter, StoreWritesOnlyItsComponents) {
   std::vector<uint8_t> block = blockOf({1, 2, 3, 4, 7, 7, 7, 7});
   std::string error;
-  ASSERT_TRUE(facet::runtime::runPreshader({{op(Op::LoadParam, 0, 0, 0, 0, 4), store(0, 20, 2)}}, 16, block, &error)) << error;
+  ASSERT_TRUE(facet::runtime::runPreshader({{op(Op::LoadParam, 0, 0, 0, 0, 4), store(0, 20, 2)}}, 16, block, &error))
+      << error;
   EXPECT_EQ(floatsOf(block), (std::vector<float>{1, 2, 3, 4, 7, 1, 2, 7}));
 }
 
 // Each program names what is wrong, and the block is left as it was.
 TEST(PreshaderInterpreter, HostileProgramsAreRefusedBeforeAnyOpRuns) {
   const std::vector<std::pair<std::vector<PreshaderOp>, std::string>> cases = {
-      {{store(0, 12, 1)}, "outside the derived members"},                     // over a parameter
-      {{store(0, 28, 2)}, "outside the derived members"},                     // past the block
-      {{store(0, 0xfffffffcu, 4)}, "outside the derived members"},            // offset + size wraps in 32 bits
-      {{op(Op::LoadParam, 0, 0, 0, 12, 2)}, "outside the parameters"},        // reads a derived member
+      {{store(0, 12, 1)}, "outside the derived members"},               // over a parameter
+      {{store(0, 28, 2)}, "outside the derived members"},               // past the block
+      {{store(0, 0xfffffffcu, 4)}, "outside the derived members"},      // offset + size wraps in 32 bits
+      {{op(Op::LoadParam, 0, 0, 0, 12, 2)}, "outside the parameters"},  // reads a derived member
       {{op(Op::LoadParam, 0, 0, 0, 2, 1)}, "not a multiple of 4"},
       {{op(Op::LoadParam, 0, 0, 0, 0, 0)}, "components (1..4)"},
       {{op(Op::LoadParam, 0, 0, 0, 0, 5)}, "components (1..4)"},
@@ -151,8 +154,9 @@ TEST(PreshaderPackage, ProgramsRoundTripAndStampFormat13) {
 // programs stay inside the block is meaning, which the loader checks (semanticError) before any
 // program runs.
 TEST(PreshaderPackage, HostileSectionsAreRefused) {
-  EXPECT_NE(pkg::read(pkg::write(preshadedPackage({}, {1}))).error.find("lists variant 1 but the package has 1 variants"),
-            std::string::npos);
+  EXPECT_NE(
+      pkg::read(pkg::write(preshadedPackage({}, {1}))).error.find("lists variant 1 but the package has 1 variants"),
+      std::string::npos);
   pkg::Package p = preshadedPackage({});
   p.preshader.blockSize = 24;
   EXPECT_NE(pkg::read(pkg::write(p)).error.find("a multiple of 16"), std::string::npos);
@@ -165,7 +169,8 @@ TEST(PreshaderPackage, HostileSectionsAreRefused) {
     EXPECT_TRUE(r.package) << r.error;
     return r.package ? pkg::semanticError(*r.package) : r.error;
   };
-  EXPECT_NE(meaning(preshadedPackage({store(0, 8, 1)})).find("preshader program 0: preshader op 0 (store) writes bytes 8..12"),
+  EXPECT_NE(meaning(preshadedPackage({store(0, 8, 1)}))
+                .find("preshader program 0: preshader op 0 (store) writes bytes 8..12"),
             std::string::npos);
   p = preshadedPackage({});
   p.preshader.blockSize = 16;  // no room for derived members
@@ -252,8 +257,8 @@ int clampsOfParameters(const std::vector<uint8_t>& spirv) {
         d.count("DescriptorSet") && d.at("DescriptorSet") == std::to_string(facet::abi::kMaterialBlock.set))
       tainted.insert(id);
   EXPECT_EQ(tainted.size(), 1u) << "the material block";
-  const std::set<std::string> moves = {"OpAccessChain", "OpInBoundsAccessChain", "OpLoad", "OpCompositeExtract",
-                                       "OpVectorShuffle", "OpCompositeConstruct", "OpCopyObject", "OpFConvert"};
+  const std::set<std::string> moves = {"OpAccessChain",   "OpInBoundsAccessChain", "OpLoad",       "OpCompositeExtract",
+                                       "OpVectorShuffle", "OpCompositeConstruct",  "OpCopyObject", "OpFConvert"};
   int clamps = 0;
   for (const auto& f : lines) {  // SSA: definitions precede uses within a function
     if (f.size() < 4 || f[1] != "=") continue;

@@ -3,8 +3,8 @@
 // shader_abi.h and with the parameter layout the package records.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <spirv_cross_c.h>
+#include <algorithm>
 
 #include <cstddef>
 #include <cstring>
@@ -29,8 +29,8 @@ struct Block {
   std::vector<std::string> members;  // in declaration order
 };
 struct Reflection {
-  std::map<std::string, Block> blocks;          // by block type name
-  std::map<std::string, uint32_t> inputs;       // stage input name -> location
+  std::map<std::string, Block> blocks;                            // by block type name
+  std::map<std::string, uint32_t> inputs;                         // stage input name -> location
   std::map<std::string, std::pair<uint32_t, uint32_t>> samplers;  // name -> (set, binding)
 };
 
@@ -44,7 +44,8 @@ Reflection reflect(const std::vector<uint8_t>& code) {
   spvc_compiler compiler = nullptr;
   spvc_resources resources = nullptr;
   if (spvc_context_parse_spirv(ctx, words.data(), words.size(), &ir) != SPVC_SUCCESS ||
-      spvc_context_create_compiler(ctx, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) != SPVC_SUCCESS ||
+      spvc_context_create_compiler(ctx, SPVC_BACKEND_NONE, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) !=
+          SPVC_SUCCESS ||
       spvc_compiler_create_shader_resources(compiler, &resources) != SPVC_SUCCESS) {
     ADD_FAILURE() << spvc_context_get_last_error_string(ctx);
     spvc_context_destroy(ctx);
@@ -430,12 +431,14 @@ TEST(ShaderAbi, MslSlotOfEverySamplerAndBlockIsTheSameInEveryVariantAndMaterial)
         SCOPED_TRACE(path + " " + v.key + " " + facet::package::toString(shader.stage));
         const std::string msl(shader.code.begin(), shader.code.end());
         using Pattern = std::pair<const char*, const std::regex*>;
-        for (auto [kind, pattern] : {Pattern{"buffer", &buffer}, Pattern{"texture", &texture}, Pattern{"sampler", &sampler}}) {
+        for (auto [kind, pattern] :
+             {Pattern{"buffer", &buffer}, Pattern{"texture", &texture}, Pattern{"sampler", &sampler}}) {
           for (std::sregex_iterator it(msl.begin(), msl.end(), *pattern), end; it != end; ++it) {
             const std::pair<std::string, std::string> resource{kind, (*it)[1].str()};
             const uint32_t slot = uint32_t(std::stoul((*it)[2].str()));
             ++declarations;
-            ASSERT_TRUE(recorded.count(resource)) << kind << " " << resource.second << " is not in the package's record";
+            ASSERT_TRUE(recorded.count(resource))
+                << kind << " " << resource.second << " is not in the package's record";
             EXPECT_EQ(slot, recorded.at(resource)) << kind << " " << resource.second;
             auto known = everywhere.emplace(resource, slot).first;
             EXPECT_EQ(known->second, slot) << kind << " " << resource.second << " moved between materials";

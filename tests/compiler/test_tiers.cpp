@@ -101,7 +101,8 @@ TEST(Tiers, LutSpecularSamplesTheTableAndEvaluatesNoDvf) {
 int shReads(const std::vector<uint32_t>& words) {
   const std::string text = facet::compiler::disassembleSpirv(words);
   int n = 0;
-  for (size_t at = text.find("%frame %int_6 %int_"); at != std::string::npos; at = text.find("%frame %int_6 %int_", at + 1))
+  for (size_t at = text.find("%frame %int_6 %int_"); at != std::string::npos;
+       at = text.find("%frame %int_6 %int_", at + 1))
     ++n;
   return n;
 }
@@ -196,12 +197,12 @@ TEST(Tiers, AmbientModelsSampleWhatTheyDocument) {
   EXPECT_EQ(analytic.transcendentalOps, high.transcendentalOps + 1);
   const auto mid = costOf(spirvOf(*built, "mid.dir0", Stage::Fragment));
   const auto low = costOf(spirvOf(*built, "low.dir0", Stage::Fragment));
-  std::printf("dir0 fragment stages (ambient only), ALU / transcendental / samples: high %u / %u / %u, "
-              "mid %u / %u / %u (analytic: %u / %u / %u), low %u / %u / %u (two-mip: %u / %u / %u)\n",
-              high.aluOps, high.transcendentalOps, high.textureSamples, mid.aluOps, mid.transcendentalOps,
-              mid.textureSamples, analytic.aluOps, analytic.transcendentalOps, analytic.textureSamples, low.aluOps,
-              low.transcendentalOps, low.textureSamples, twoMip.aluOps, twoMip.transcendentalOps,
-              twoMip.textureSamples);
+  std::printf(
+      "dir0 fragment stages (ambient only), ALU / transcendental / samples: high %u / %u / %u, "
+      "mid %u / %u / %u (analytic: %u / %u / %u), low %u / %u / %u (two-mip: %u / %u / %u)\n",
+      high.aluOps, high.transcendentalOps, high.textureSamples, mid.aluOps, mid.transcendentalOps, mid.textureSamples,
+      analytic.aluOps, analytic.transcendentalOps, analytic.textureSamples, low.aluOps, low.transcendentalOps,
+      low.textureSamples, twoMip.aluOps, twoMip.transcendentalOps, twoMip.textureSamples);
 }
 
 TEST(Tiers, ReferenceIsHighpAndMobileTiersAreMostlyMediump) {
@@ -334,7 +335,8 @@ TEST(Tiers, TexturedExampleRendersAtLowOnBothBackends) {
     EXPECT_EQ(draw.textures[1].texture->format, facet::runtime::TextureFormat::Rgba8Srgb);   // decoded
     EXPECT_EQ(draw.textures[2].texture->format, facet::runtime::TextureFormat::Rgba8Unorm);  // normals: data
   }
-  EXPECT_EQ(frame->frame().draws[0].textures[0].texture, frame->frame().draws[1].textures[0].texture);  // one per package
+  EXPECT_EQ(frame->frame().draws[0].textures[0].texture,
+            frame->frame().draws[1].textures[0].texture);  // one per package
   auto vk = facet::runtime::createVulkanBackend({true}, &error);
   ASSERT_TRUE(vk) << error;
   auto gl = facet::runtime::createGlBackend(&error);
@@ -371,7 +373,8 @@ TEST(Tiers, MetalGetsHalfWhereGlesGetsMediump) {
     for (const auto& v : built->package.variants)
       if (v.key == key)
         for (const auto& s : v.shaders)
-          if (s.stage == Stage::Fragment && s.target == facet::package::Target::Msl) return std::string(s.code.begin(), s.code.end());
+          if (s.stage == Stage::Fragment && s.target == facet::package::Target::Msl)
+            return std::string(s.code.begin(), s.code.end());
     return std::string();
   };
   EXPECT_NE(msl("high.dir1").find("half "), std::string::npos);
@@ -485,7 +488,8 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
   // retro-reflection); GGX × Hammon's V in the same single division (specular_fused_hammon.glsl)
   // 50.5 dB, gold 49.3 / 41.2 / 43.0 / 79.0.
   EXPECT_GT(psnr(images["mid"].ldr, images["reference"].ldr), 45.0);
-  for (int column = 2; column < kGridColumns; ++column) EXPECT_GT(cells["mid"][1][column], 38.0) << "gold, column " << column;
+  for (int column = 2; column < kGridColumns; ++column)
+    EXPECT_GT(cells["mid"][1][column], 38.0) << "gold, column " << column;
   // low's goal, 36 dB on this grid: measured 37.0 (rough gold r = 1 31.5) with the
   // LUT lobe scaled by the environment BRDF and lit in linear; 33.1 (26.0) with the lobe × f0 and
   // the gamma hack.
@@ -500,8 +504,9 @@ TEST(Tiers, RoughnessGridIsMeasuredAgainstReferenceAndHighKeepsRoughMetalEnergy)
                                                     {facet::permutations::Tier::Mid, true, 0},
                                                     {facet::permutations::Tier::Low, true, 0}}};
   const std::string emulatedPackages = facet::test::writePackagesFromTexts(
-      "tier-grid-fp16-packages", {facet::test::readText(facet::test::examplePath("materials/red_plastic.mat")),
-                                  facet::test::readText(facet::test::examplePath("materials/brushed_gold.mat"))},
+      "tier-grid-fp16-packages",
+      {facet::test::readText(facet::test::examplePath("materials/red_plastic.mat")),
+       facet::test::readText(facet::test::examplePath("materials/brushed_gold.mat"))},
       emulated);
   std::map<std::string, double> emulatedDb;
   for (const char* tier : {"high", "mid", "low"}) {
@@ -565,8 +570,10 @@ TEST(Tiers, NoMultiplyByAConstantAmbientOcclusion) {
   for (const auto& v : built->package.variants) {
     std::istringstream text(fragmentText(*built, v.key));
     for (std::string line; std::getline(text, line);) {
-      const bool scales = line.find("OpVectorTimesScalar") != std::string::npos || line.find("OpFMul") != std::string::npos;
-      EXPECT_FALSE(scales && line.size() >= 9 && line.compare(line.size() - 9, 9, " %float_1") == 0) << v.key << ": " << line;
+      const bool scales =
+          line.find("OpVectorTimesScalar") != std::string::npos || line.find("OpFMul") != std::string::npos;
+      EXPECT_FALSE(scales && line.size() >= 9 && line.compare(line.size() - 9, 9, " %float_1") == 0)
+          << v.key << ": " << line;
     }
   }
   const std::string surface = "param rough: float = 0.4 in [0, 1]\n surface { roughness = params.rough";
@@ -575,7 +582,8 @@ TEST(Tiers, NoMultiplyByAConstantAmbientOcclusion) {
                                      "\n ambientOcclusion = params.ao } }");
   ASSERT_TRUE(without && with);
   for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
-    EXPECT_GT(costOf(spirvOf(*with, key, Stage::Fragment)).aluOps, costOf(spirvOf(*without, key, Stage::Fragment)).aluOps)
+    EXPECT_GT(costOf(spirvOf(*with, key, Stage::Fragment)).aluOps,
+              costOf(spirvOf(*without, key, Stage::Fragment)).aluOps)
         << key;
 }
 

@@ -118,7 +118,8 @@ uint64_t cacheBytes(const std::string& dir) {
 TEST(VariantCache, TrimKeepsTheMostRecentlyUsedVariantsWithinTheBound) {
   const std::string dir = facet::test::scratchDir("variant-cache-trim");
   std::string other = kMaterial;
-  other.replace(other.find("roughness = params.roughness"), 28, "roughness = params.roughness * 0.5");  // other shader text
+  other.replace(other.find("roughness = params.roughness"), 28,
+                "roughness = params.roughness * 0.5");  // other shader text
   auto a = facet::test::buildText(kMaterial, "test.mat", withCache(dir));
   ASSERT_TRUE(a);
   const uint64_t oneMaterial = cacheBytes(dir);
@@ -257,8 +258,11 @@ TEST(VariantCache, TrimRemovesNothingButTheCachesOwnEntries) {
   std::ofstream(elsewhere + "/" + key) << "theirs";
   fs::create_directory_symlink(elsewhere, dir + "/cd");
   fs::create_directories(dir + "/ab");
-  const std::vector<std::string> theirs = {dir + "/notes.txt", dir + "/ab/notes.txt", dir + "/ab/ab" + std::string(30, '1') + ".bak",
-                                           dir + "/ab/draft.tmp.1.2.3", dir + "/AB" + std::string(30, '2'),
+  const std::vector<std::string> theirs = {dir + "/notes.txt",
+                                           dir + "/ab/notes.txt",
+                                           dir + "/ab/ab" + std::string(30, '1') + ".bak",
+                                           dir + "/ab/draft.tmp.1.2.3",
+                                           dir + "/AB" + std::string(30, '2'),
                                            elsewhere + "/" + key};
   for (const std::string& f : theirs) {
     if (!fs::exists(f)) std::ofstream(f) << "theirs";
@@ -279,7 +283,8 @@ TEST(VariantCache, AnEntryFolderThatLinksElsewhereIsNeitherReadNorWritten) {
   ASSERT_TRUE(cold);
   const fs::path folder = entryFiles(dir).front().parent_path();
   const size_t linked = size_t(std::distance(fs::directory_iterator(folder), fs::directory_iterator()));
-  const std::string elsewhere = facet::test::scratchDir("variant-cache-linked-target") + "/" + folder.filename().string();
+  const std::string elsewhere =
+      facet::test::scratchDir("variant-cache-linked-target") + "/" + folder.filename().string();
   fs::rename(folder, elsewhere);
   fs::create_directory_symlink(elsewhere, folder);
   std::vector<std::pair<fs::path, std::string>> before;

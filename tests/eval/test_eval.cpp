@@ -146,7 +146,8 @@ TEST(EvalConfigurations, ReferenceFirstThenEachTierAndItsSingleSwaps) {
   EXPECT_EQ(names.count("low:energy_compensation=on"), 0u);  // two-mip ambient: nothing to compensate
   EXPECT_EQ(facet::eval::fileStem("high:specular=zioma"), "high.specular-zioma");
   // A material's override is part of its tier as shipped.
-  auto overridden = checked("material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");
+  auto overridden = checked(
+      "material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");
   for (const auto& c : facet::eval::configurations(overridden, {Tier::High}, false))
     if (c.name == "high") {
       EXPECT_EQ(c.config.specular, facet::permutations::SpecularModel::GgxFastV);
@@ -214,7 +215,8 @@ std::string buildWith(const facet::ir::Material& material, Tier tier, const Tier
   std::string dir = facet::test::scratchDir(scratch);
   std::string message;
   if (built) {
-    EXPECT_TRUE(facet::package::writeFile(dir + "/" + material.name + ".matpkg", facet::package::write(built->package), &message))
+    EXPECT_TRUE(facet::package::writeFile(dir + "/" + material.name + ".matpkg", facet::package::write(built->package),
+                                          &message))
         << message;
   }
   return dir;
@@ -252,9 +254,10 @@ TEST(EvalPreparedFrame, AGammaHackSwapSeesColoursAsAuthored) {
   scene.tier = "mid";
   const double srgbDecoded[3] = {std::pow((0.8 + 0.055) / 1.055, 2.4), std::pow((0.4 + 0.055) / 1.055, 2.4),
                                  std::pow((0.2 + 0.055) / 1.055, 2.4)};
-  for (const char* text : {"material flat { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }",
-                           "material flat { shading unlit\n param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
-                           " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"}) {
+  for (const char* text :
+       {"material flat { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }",
+        "material flat { shading unlit\n param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
+        " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"}) {
     SCOPED_TRACE(text);
     auto material = checked(text);
     facet::runtime::SceneObject object;
@@ -276,7 +279,8 @@ TEST(EvalPreparedFrame, AGammaHackSwapSeesColoursAsAuthored) {
     for (int c = 0; c < 3; ++c) {
       // RGBA16F storage: 2^-11 relative, twice over.
       EXPECT_NEAR(a.hdr[centre + c], authored[c] * authored[c], 2e-3 * authored[c] * authored[c] + 1e-4) << c;
-      EXPECT_NEAR(unadapted.hdr[centre + c], srgbDecoded[c] * srgbDecoded[c], 5e-3 * srgbDecoded[c]) << c;  // the sampler's 8-bit sRGB decode
+      EXPECT_NEAR(unadapted.hdr[centre + c], srgbDecoded[c] * srgbDecoded[c], 5e-3 * srgbDecoded[c])
+          << c;  // the sampler's 8-bit sRGB decode
     }
   }
   EXPECT_TRUE(backend->validationErrors().empty());

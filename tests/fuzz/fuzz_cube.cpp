@@ -37,7 +37,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // What the runtime uploads: a table of size^3 finite entries within the half-float range,
   // over a domain that is not empty in any channel.
   if (lut->size < 2 || lut->size > kMaxCubeLutSize) broken("size outside 2..64", std::to_string(lut->size));
-  if (lut->rgb.size() != size_t(lut->size) * lut->size * lut->size * 3) broken("entry count", std::to_string(lut->rgb.size()));
+  if (lut->rgb.size() != size_t(lut->size) * lut->size * lut->size * 3)
+    broken("entry count", std::to_string(lut->rgb.size()));
   for (float v : lut->rgb)
     if (!std::isfinite(v) || std::abs(v) > 65504.0f) broken("entry outside the half-float range", std::to_string(v));
   for (int c = 0; c < 3; ++c)

@@ -5,13 +5,13 @@
 // instrumentation, so its parser is guided and checked too. Seeds: tests/fuzz/gltf_corpus/.
 //
 // Reproduce a finding:  build/fuzz/tests/fuzz/fuzz_gltf path/to/input
+#include <unistd.h>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "facet/runtime/gltf_mesh.h"
 #include "gltf_fuzz_input.h"
@@ -22,7 +22,8 @@ namespace {
 // (the name is never destroyed: the exit handler runs after static destructors would).
 const std::string& workFolder() {
   static const std::string* dir = [] {
-    auto* d = new std::string((std::filesystem::temp_directory_path() / ("fuzz_gltf." + std::to_string(getpid()))).string());
+    auto* d =
+        new std::string((std::filesystem::temp_directory_path() / ("fuzz_gltf." + std::to_string(getpid()))).string());
     std::filesystem::create_directories(*d);
     std::atexit([] {
       std::error_code ec;
@@ -36,8 +37,7 @@ const std::string& workFolder() {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string path =
-      facet::fuzz::writeGltfFuzzInput({reinterpret_cast<const char*>(data), size}, workFolder());
+  const std::string path = facet::fuzz::writeGltfFuzzInput({reinterpret_cast<const char*>(data), size}, workFolder());
   std::string error;
   auto mesh = facet::runtime::loadGltfMesh(path, &error);
   if (!mesh && error.rfind(path + ":", 0) != 0) {

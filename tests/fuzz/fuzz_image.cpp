@@ -27,7 +27,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       std::fprintf(stderr, "fuzz_image: rejected without naming the image: %s\n", error.c_str());
       std::abort();
     }
-    if (texture && (texture->levels.empty() || texture->levels[0].size() != size_t(texture->width) * texture->height * 4)) {
+    if (texture &&
+        (texture->levels.empty() || texture->levels[0].size() != size_t(texture->width) * texture->height * 4)) {
       std::fprintf(stderr, "fuzz_image: level 0 does not match %ux%u\n", texture->width, texture->height);
       std::abort();
     }
@@ -38,8 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::abort();
   }
   if (environment && environment->rgb.size() != size_t(environment->width) * size_t(environment->height) * 3) {
-    std::fprintf(stderr, "fuzz_image: environment holds %zu floats for %dx%d\n", environment->rgb.size(), environment->width,
-                 environment->height);
+    std::fprintf(stderr, "fuzz_image: environment holds %zu floats for %dx%d\n", environment->rgb.size(),
+                 environment->width, environment->height);
     std::abort();
   }
   return 0;

@@ -12,12 +12,12 @@
 // (tests/fuzz/package_corpus/, README there).
 //
 // Reproduce a finding:  build/fuzz/tests/fuzz/fuzz_package path/to/input
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <algorithm>
 #include <optional>
 #include <span>
 #include <string>
@@ -130,7 +130,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // The loader an app runs on the same bytes, every variant's program: an answer, never a crash.
   {
     std::string error;
-    auto material = facet::runtime::LoadedMaterial::loadFromMemory(std::span<const uint8_t>(data, size), "fuzz", &error);
+    auto material =
+        facet::runtime::LoadedMaterial::loadFromMemory(std::span<const uint8_t>(data, size), "fuzz", &error);
     if (!material && error.empty()) broken("LoadedMaterial refused a package without an error message");
     if (material && !material->checkEveryVariant(&error) && error.empty())
       broken("LoadedMaterial refused a variant without an error message");

@@ -93,7 +93,8 @@ std::string material() { return std::string(FACET_SOURCE_DIR) + "/examples/mater
 
 TEST(GpuOption, AnUnknownGpuIsAUsageErrorInLintAndEval) {
   for (const char* command : {"lint", "eval"}) {
-    facet::test::CommandResult r = facet::test::run(matc() + " " + command + " " + material() + " --gpu mali-g57,mali-t880");
+    facet::test::CommandResult r =
+        facet::test::run(matc() + " " + command + " " + material() + " --gpu mali-g57,mali-t880");
     EXPECT_EQ(r.exitCode, 2) << command << r.err;
     EXPECT_NE(r.err.find("--gpu: unknown GPU 'mali-t880'"), std::string::npos) << command << r.err;
   }
@@ -105,10 +106,12 @@ TEST(GpuOption, LintWithoutTheCompilersFallsBackToTheCostModelAndSaysSo) {
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("cycles: the mobile cost model"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("mali-g52 not measured: no Mesa build at /nonexistent/facet-mesa"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("mali-g52: calibrated estimate of fragment cycles from the op counts instead"), std::string::npos)
+  EXPECT_NE(r.out.find("mali-g52: calibrated estimate of fragment cycles from the op counts instead"),
+            std::string::npos)
       << r.out;
-  facet::test::CommandResult j = facet::test::run(matc() + " lint " + material() +
-                                                  " --tiers high --gpu mali-g52 --mesa-prefix /nonexistent/facet-mesa --format json");
+  facet::test::CommandResult j =
+      facet::test::run(matc() + " lint " + material() +
+                       " --tiers high --gpu mali-g52 --mesa-prefix /nonexistent/facet-mesa --format json");
   ASSERT_EQ(j.exitCode, 0) << j.err;
   const nlohmann::json gpu = nlohmann::json::parse(j.out)["files"][0]["gpus"][0];
   EXPECT_EQ(gpu["calibrated_estimate"]["measure"], "fragment cycles");
@@ -135,8 +138,9 @@ TEST(GpuOption, EvalReportWithoutTheCompilersSaysWhichFiguresItUsed) {
   EXPECT_EQ(md.find("| configuration | variant | mali-g57 |"), std::string::npos) << md;  // no measured column
   EXPECT_NE(md.find("| configuration | variant | mali-g57 (estimate) |"), std::string::npos) << md;
   char cell[64];
-  std::snprintf(cell, sizeof cell, "| high | high.dir1 | %.2f |",
-                facet::compiler::calibratedEstimate(c.fragment.counts, *facet::compiler::findGpuCalibration("mali-g57")));
+  std::snprintf(
+      cell, sizeof cell, "| high | high.dir1 | %.2f |",
+      facet::compiler::calibratedEstimate(c.fragment.counts, *facet::compiler::findGpuCalibration("mali-g57")));
   EXPECT_NE(md.find(cell), std::string::npos) << md;
   EXPECT_NE(std::string(cell), "| high | high.dir1 | 0.00 |");
   EXPECT_EQ(facet::eval::reportJson(report)["gpus"][0]["unavailable"].get<std::string>().rfind("no Mesa build", 0), 0u);

@@ -276,8 +276,10 @@ TEST(EnvBrdf, FitErrorsAgainstTheTableStayWithinTheirMeasuredBounds) {
   auto zioma = [](double f0) { return [f0](double NoV, double r) { return envBrdfZioma(NoV, r).apply(f0); }; };
   auto ziomaSat = [](double f0) { return [f0](double NoV, double r) { return envBrdfZiomaSaturated(f0, NoV, r); }; };
   const Case cases[] = {
-      {"Karis", 0.04, karis(0.04), 0.10, 0.02},       {"Karis", 1.0, karis(1.0), 0.55, 0.13},
-      {"Zioma", 0.04, zioma(0.04), 0.25, 0.06},       {"Zioma", 1.0, zioma(1.0), 1.0, 0.30},
+      {"Karis", 0.04, karis(0.04), 0.10, 0.02},
+      {"Karis", 1.0, karis(1.0), 0.55, 0.13},
+      {"Zioma", 0.04, zioma(0.04), 0.25, 0.06},
+      {"Zioma", 1.0, zioma(1.0), 1.0, 0.30},
       {"Zioma saturated", 1.0, ziomaSat(1.0), 0.70, 0.19},
   };
   for (const Case& c : cases) {
@@ -370,9 +372,10 @@ TEST(Prefilter, RoughLevelsMatchTheLobeIntegral) {
     Vec3 away = normalize(kSunAxis + Vec3{0.0, -1.2, 0.0});
     for (Vec3 target : {kSunAxis, away, kSunAxis * -1.0}) {
       equirectCoordinates(target, &s, &t);
-      int column = std::min(int(s * level.width), level.width - 1), row = std::min(int(t * level.height), level.height - 1);
+      int column = std::min(int(s * level.width), level.width - 1),
+          row = std::min(int(t * level.height), level.height - 1);
       Vec3 want = toVec3(ref::ggxLobeAverageByGrid([](glm::dvec3 d) { return toGlm(sunSkyRadiance(toVec3(d))); },
-                                                    toGlm(equirectDirection(level, column, row)), r * r));
+                                                   toGlm(equirectDirection(level, column, row)), r * r));
       Vec3 got = level.texel(column, row);
       std::printf("level %d texel (%d, %d): prefiltered %.4f, lobe integral %.4f\n", m, column, row, got.x, want.x);
       EXPECT_NEAR(got.x / want.x, 1.0, 0.02) << "level " << m;
@@ -396,8 +399,8 @@ namespace {
 
 // Directions over the whole sphere: a Fibonacci set plus the axes and points on face edges.
 std::vector<Vec3> testDirections() {
-  std::vector<Vec3> out = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
-                           {1, -1e-9, 1}, {-1, 1, 1}, {0.3, -0.2, -0.7}};
+  std::vector<Vec3> out = {{1, 0, 0},  {-1, 0, 0},    {0, 1, 0},  {0, -1, 0},       {0, 0, 1},
+                           {0, 0, -1}, {1, -1e-9, 1}, {-1, 1, 1}, {0.3, -0.2, -0.7}};
   const int n = 500;
   for (int i = 0; i < n; ++i) {
     double y = 1 - 2 * (i + 0.5) / n, rho = std::sqrt(1 - y * y), phi = i * 2.399963229728653;
@@ -439,8 +442,8 @@ TEST(CubeMap, FacesFollowTheApiTable) {
     double s, t;
   };
   const Case cases[] = {
-      {{2, 0.5, 1}, 0, 0.25, 0.375},   {{-2, 0.5, 1}, 1, 0.75, 0.375}, {{0.5, 2, 1}, 2, 0.625, 0.75},
-      {{0.5, -2, 1}, 3, 0.625, 0.25},  {{0.5, 1, 2}, 4, 0.625, 0.25},  {{0.5, 1, -2}, 5, 0.375, 0.25},
+      {{2, 0.5, 1}, 0, 0.25, 0.375},  {{-2, 0.5, 1}, 1, 0.75, 0.375}, {{0.5, 2, 1}, 2, 0.625, 0.75},
+      {{0.5, -2, 1}, 3, 0.625, 0.25}, {{0.5, 1, 2}, 4, 0.625, 0.25},  {{0.5, 1, -2}, 5, 0.375, 0.25},
   };
   for (const Case& c : cases) {
     int face = -1;
@@ -468,16 +471,17 @@ TEST(CubeMap, BilinearSamplingHasNoSeamAtFaceEdges) {
   CubeImage image(size);
   for (int face = 0; face < kCubeFaces; ++face)
     for (int row = 0; row < size; ++row)
-      for (int column = 0; column < size; ++column) image.setTexel(face, column, row, f(cubeTexelDirection(size, face, column, row)));
+      for (int column = 0; column < size; ++column)
+        image.setTexel(face, column, row, f(cubeTexelDirection(size, face, column, row)));
   double worstSeam = 0;
   const double e = 1e-9;
   for (int i = 0; i <= 100; ++i) {
     double a = -1 + 2 * i / 100.0;  // along the edge, corners included
-    worstSeam = std::max({worstSeam,
-                          maxComponent(sampleBilinear(image, {1, a, 1 - e}) - sampleBilinear(image, {1 - e, a, 1})),
-                          maxComponent(sampleBilinear(image, {a, 1, 1 - e}) - sampleBilinear(image, {a, 1 - e, 1})),
-                          maxComponent(sampleBilinear(image, {-1, 1 - e, a}) - sampleBilinear(image, {-1 + e, 1, a})),
-                          maxComponent(sampleBilinear(image, {a, -1, -1 + e}) - sampleBilinear(image, {a, -1 + e, -1}))});
+    worstSeam =
+        std::max({worstSeam, maxComponent(sampleBilinear(image, {1, a, 1 - e}) - sampleBilinear(image, {1 - e, a, 1})),
+                  maxComponent(sampleBilinear(image, {a, 1, 1 - e}) - sampleBilinear(image, {a, 1 - e, 1})),
+                  maxComponent(sampleBilinear(image, {-1, 1 - e, a}) - sampleBilinear(image, {-1 + e, 1, a})),
+                  maxComponent(sampleBilinear(image, {a, -1, -1 + e}) - sampleBilinear(image, {a, -1 + e, -1}))});
   }
   EXPECT_LT(worstSeam, 1e-6);
   double worst = 0;
@@ -548,7 +552,7 @@ TEST(CubeMap, PrefilteredLevelsMatchTheSourceAndTheLobeIntegral) {
       cubeCoordinates(target, &face, &s, &t);
       int column = std::min(int(s * level.size), level.size - 1), row = std::min(int(t * level.size), level.size - 1);
       Vec3 want = toVec3(ref::ggxLobeAverageByGrid([](glm::dvec3 d) { return toGlm(sunSkyRadiance(toVec3(d))); },
-                                                    toGlm(cubeTexelDirection(level.size, face, column, row)), r * r));
+                                                   toGlm(cubeTexelDirection(level.size, face, column, row)), r * r));
       Vec3 got = level.texel(face, column, row);
       std::printf("cube level %d face %d texel (%d, %d): prefiltered %.4f, lobe integral %.4f\n", m, face, column, row,
                   got.x, want.x);

@@ -8,18 +8,18 @@
 #include <memory>
 #include <string>
 
+#include <stb_image_write.h>
+#include "facet/ibl/cube_map.h"
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/env_brdf_fits.h"
 #include "facet/ibl/equirect_image.h"
-#include "facet/ibl/cube_map.h"
 #include "facet/ibl/sphere_quadrature.h"
 #include "facet/ibl/spherical_harmonics.h"
-#include <stb_image_write.h>
 
-#include "facet/runtime/render_backend.h"
-#include "facet/runtime/environment.h"
-#include "facet/runtime/scene_frame.h"
 #include "dfg_lookup.h"
+#include "facet/runtime/environment.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/scene_frame.h"
 #include "sphere_pixels.h"
 #include "test_compile.h"
 #include "test_images.h"
@@ -27,15 +27,16 @@
 
 namespace {
 
-using facet::runtime::FrameResult;
 using facet::ibl::Vec3;
+using facet::runtime::FrameResult;
 using facet::test::dfgBilinear;
 
 // One sphere whose roughness, metalness, colour and reflectance are parameters.
-const char* kBall = "material ball { param base: color = vec3(1.0, 1.0, 1.0)\n param metal: float = 1.0\n"
-                    " param rough: float = 0.5\n param refl: float = 0.5\n"
-                    " surface { baseColor = params.base metallic = params.metal roughness = params.rough"
-                    " reflectance = params.refl } }";
+const char* kBall =
+    "material ball { param base: color = vec3(1.0, 1.0, 1.0)\n param metal: float = 1.0\n"
+    " param rough: float = 0.5\n param refl: float = 0.5\n"
+    " surface { baseColor = params.base metallic = params.metal roughness = params.rough"
+    " reflectance = params.refl } }";
 
 bool render(const std::string& json, const std::string& packages, facet::runtime::RenderBackend& backend,
             FrameResult* out, std::unique_ptr<facet::runtime::SceneFrame>* frame, std::string* error) {
@@ -69,10 +70,10 @@ const char* kSkyEnvironment = R"("environment": {"sky": {"luminance": 8000}})";
 // fp16 storage differs (L in the RGBA16F environment and the HDR target: 2 × 2^-11 relative), so
 // the tolerance is 0.3 %. Every mobile tier applies the same compensation (mediump: one more
 // fp16 rounding of 1/dfg.y, within the same tolerance; the gamma hack adds the ambient specular
-// in linear, and f0 = 1 encodes to 1). Without it (Karis's fit, the analytic option) the pixels are L times the single-scattering albedo, which loses up to 68 % on rough
-// spheres: the case below keeps that model measured, against Karis's fit at the pixel's n·v
-// (1 % + 0.001, the shading normal being interpolated), and reports its difference from the DFG
-// integral at the exact n·v (facet::ibl::integrateDfg).
+// in linear, and f0 = 1 encodes to 1). Without it (Karis's fit, the analytic option) the pixels are L times the
+// single-scattering albedo, which loses up to 68 % on rough spheres: the case below keeps that model measured, against
+// Karis's fit at the pixel's n·v (1 % + 0.001, the shading normal being interpolated), and reports its difference from
+// the DFG integral at the exact n·v (facet::ibl::integrateDfg).
 TEST(IblShading, WhiteMetalInAConstantEnvironmentMatchesTheDfgAlbedo) {
   const std::string packages = facet::test::writePackagesFromTexts("ibl-furnace", {kBall});
   facet::compiler::BuildOptions karis;
@@ -100,7 +101,8 @@ TEST(IblShading, WhiteMetalInAConstantEnvironmentMatchesTheDfgAlbedo) {
     for (const Case& c : cases) {
       const char* tier = c.label;
       SCOPED_TRACE(std::string(tier) + " r = " + std::to_string(roughness));
-      const std::string json = sceneJson(c.tier, R"("sky": {"luminance": 5000})", R"("rough": )" + std::to_string(roughness));
+      const std::string json =
+          sceneJson(c.tier, R"("sky": {"luminance": 5000})", R"("rough": )" + std::to_string(roughness));
       FrameResult image;
       std::unique_ptr<facet::runtime::SceneFrame> frame;
       ASSERT_TRUE(render(json, c.packages, *vk, &image, &frame, &error)) << error;
@@ -110,23 +112,26 @@ TEST(IblShading, WhiteMetalInAConstantEnvironmentMatchesTheDfgAlbedo) {
       const bool compensated = c.compensated;
       int checked = 0;
       double worst = 0, worstExact = 0, darkest = 1e9;
-      facet::test::forEachSpherePixel(*scene, 3, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
-        const double NoV = glm::dot(n, v);
-        const double expected = compensated ? L : L * facet::ibl::envBrdfKaris(NoV, roughness).apply(1.0);
-        const double exact = compensated ? L : L * facet::ibl::integrateDfg(NoV, roughness, 1024).albedo;
-        const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
-        const double tolerance = compensated ? 0.003 * L : 0.01 * expected + 0.001;
-        for (int ch = 0; ch < 3; ++ch) {
-          worst = std::max(worst, std::abs(got[ch] - expected) / tolerance);
-          worstExact = std::max(worstExact, std::abs(got[ch] - exact) / exact);
-          EXPECT_NEAR(got[ch], expected, tolerance) << "pixel (" << x << ", " << y << ") channel " << ch << ", n·v " << NoV;
-        }
-        darkest = std::min(darkest, double(got[0]) / L);
-        ++checked;
-      });
-      std::printf("furnace %-10s r = %.2f: %d pixels, worst error / tolerance %.3f, darkest pixel %.4f L, "
-                  "vs the integral at the exact n·v %.2f %%\n",
-                  tier, roughness, checked, worst, darkest, 100 * worstExact);
+      facet::test::forEachSpherePixel(
+          *scene, 3, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
+            const double NoV = glm::dot(n, v);
+            const double expected = compensated ? L : L * facet::ibl::envBrdfKaris(NoV, roughness).apply(1.0);
+            const double exact = compensated ? L : L * facet::ibl::integrateDfg(NoV, roughness, 1024).albedo;
+            const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
+            const double tolerance = compensated ? 0.003 * L : 0.01 * expected + 0.001;
+            for (int ch = 0; ch < 3; ++ch) {
+              worst = std::max(worst, std::abs(got[ch] - expected) / tolerance);
+              worstExact = std::max(worstExact, std::abs(got[ch] - exact) / exact);
+              EXPECT_NEAR(got[ch], expected, tolerance)
+                  << "pixel (" << x << ", " << y << ") channel " << ch << ", n·v " << NoV;
+            }
+            darkest = std::min(darkest, double(got[0]) / L);
+            ++checked;
+          });
+      std::printf(
+          "furnace %-10s r = %.2f: %d pixels, worst error / tolerance %.3f, darkest pixel %.4f L, "
+          "vs the integral at the exact n·v %.2f %%\n",
+          tier, roughness, checked, worst, darkest, 100 * worstExact);
       EXPECT_GT(checked, 300);
       if (!compensated && roughness == 1.0) {
         EXPECT_LT(darkest, 0.5);  // single scattering loses energy
@@ -200,8 +205,10 @@ TEST(IblShading, DiffuseAmbientMatchesShIrradianceOfTheSky) {
     }
     ++checked;
   });
-  std::printf("diffuse under the sky: %d pixels, worst error / tolerance %.3f; SH3 vs brute-force irradiance: "
-              "max %.2f %% (relative)\n", checked, worst, 100 * worstSh);
+  std::printf(
+      "diffuse under the sky: %d pixels, worst error / tolerance %.3f; SH3 vs brute-force irradiance: "
+      "max %.2f %% (relative)\n",
+      checked, worst, 100 * worstSh);
   EXPECT_GT(checked, 400);
   EXPECT_LT(worstSh, 0.1);
 }
@@ -244,11 +251,13 @@ TEST(IblShading, EveryTierRendersTheSkySceneAndIsMeasuredAgainstReference) {
 // not an equirect (2:1) is refused with its path.
 TEST(IblShading, EnvironmentKeysAreChecked) {
   std::string error;
-  EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"sky": {"luminance": 1}, "environment": {"sky": {}}, "objects": []})", &error));
+  EXPECT_FALSE(facet::runtime::parseScene(
+      "s.json", R"({"sky": {"luminance": 1}, "environment": {"sky": {}}, "objects": []})", &error));
   EXPECT_NE(error.find("/environment: give either 'sky'"), std::string::npos) << error;
   EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"environment": {"luminance": 5}, "objects": []})", &error));
   EXPECT_NE(error.find("expected exactly one of 'image' and 'sky'"), std::string::npos) << error;
-  EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"environment": {"sky": {"zenit": [1, 1, 1]}}, "objects": []})", &error));
+  EXPECT_FALSE(
+      facet::runtime::parseScene("s.json", R"({"environment": {"sky": {"zenit": [1, 1, 1]}}, "objects": []})", &error));
   EXPECT_NE(error.find("/environment/sky/zenit: unknown key"), std::string::npos) << error;
   auto scene = facet::runtime::parseScene(facet::test::examplePath("scenes/inline.json"),
                                           R"({"environment": {"image": "textures/tiles.png"}, "objects": []})", &error);
@@ -273,7 +282,7 @@ TEST(IblShading, ConstantSkyIsAnExactEnvironment) {
   EXPECT_EQ(facet::runtime::floatToHalf(1.0f), 0x3c00);
   EXPECT_EQ(facet::runtime::floatToHalf(65504.0f), 0x7bff);
   EXPECT_EQ(facet::runtime::floatToHalf(1e9f), 0x7bff);
-  EXPECT_EQ(facet::runtime::floatToHalf(1.0f + 1.0f / 2048), 0x3c00);  // a tie: rounds to even
+  EXPECT_EQ(facet::runtime::floatToHalf(1.0f + 1.0f / 2048), 0x3c00);     // a tie: rounds to even
   EXPECT_EQ(facet::runtime::floatToHalf(std::ldexp(1.0f, -24)), 0x0001);  // the smallest subnormal
 }
 
@@ -333,8 +342,8 @@ TEST(IblShading, MirrorSphereSeesTheCubeMapFacesTheRightWayRound) {
   ASSERT_TRUE(vk) << error;
   auto gl = facet::runtime::createGlBackend(&error);
   ASSERT_TRUE(gl) << error;
-  for (facet::runtime::RenderBackend* backend : {static_cast<facet::runtime::RenderBackend*>(vk.get()),
-                                                 static_cast<facet::runtime::RenderBackend*>(gl.get())}) {
+  for (facet::runtime::RenderBackend* backend :
+       {static_cast<facet::runtime::RenderBackend*>(vk.get()), static_cast<facet::runtime::RenderBackend*>(gl.get())}) {
     SCOPED_TRACE(backend == vk.get() ? "vulkan" : "gl");
     FrameResult image;
     auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
@@ -345,19 +354,21 @@ TEST(IblShading, MirrorSphereSeesTheCubeMapFacesTheRightWayRound) {
     level0.rgb = env.levels.front();
     int checked = 0;
     double worst = 0;
-    facet::test::forEachSpherePixel(*scene, 4, 0.3, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
-      glm::dvec3 r = glm::reflect(-v, n);
-      const Vec3 want = facet::ibl::sampleBilinear(level0, {r.x, r.y, r.z});
-      const double expected[3] = {want.x, want.y, want.z};
-      const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
-      for (int ch = 0; ch < 3; ++ch) {
-        const double tolerance = 0.03 * expected[ch] + 0.01;
-        worst = std::max(worst, std::abs(got[ch] - expected[ch]) / expected[ch]);
-        EXPECT_NEAR(got[ch], expected[ch], tolerance) << "pixel (" << x << ", " << y << ") channel " << ch;
-      }
-      ++checked;
-    });
-    std::printf("mirror sphere in the axes environment: %d pixels, worst relative error %.2f %%\n", checked, 100 * worst);
+    facet::test::forEachSpherePixel(
+        *scene, 4, 0.3, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
+          glm::dvec3 r = glm::reflect(-v, n);
+          const Vec3 want = facet::ibl::sampleBilinear(level0, {r.x, r.y, r.z});
+          const double expected[3] = {want.x, want.y, want.z};
+          const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
+          for (int ch = 0; ch < 3; ++ch) {
+            const double tolerance = 0.03 * expected[ch] + 0.01;
+            worst = std::max(worst, std::abs(got[ch] - expected[ch]) / expected[ch]);
+            EXPECT_NEAR(got[ch], expected[ch], tolerance) << "pixel (" << x << ", " << y << ") channel " << ch;
+          }
+          ++checked;
+        });
+    std::printf("mirror sphere in the axes environment: %d pixels, worst relative error %.2f %%\n", checked,
+                100 * worst);
     EXPECT_GT(checked, 400);
   }
   EXPECT_TRUE(vk->validationErrors().empty());
@@ -377,8 +388,8 @@ TEST(IblShading, HdrImageEnvironmentIsLoadedScaledAndPrefiltered) {
       for (int c = 0; c < 3; ++c) rgb[(size_t(row) * w + column) * 3 + c] = row < h / 2 ? 2.0f : 0.5f;
   ASSERT_TRUE(stbi_write_hdr((dir + "/halves.hdr").c_str(), w, h, 3, rgb.data()));
   std::string error;
-  auto scene = facet::runtime::parseScene(dir + "/scene.json",
-                                          R"({"environment": {"image": "halves.hdr", "luminance": 100}, "objects": []})", &error);
+  auto scene = facet::runtime::parseScene(
+      dir + "/scene.json", R"({"environment": {"image": "halves.hdr", "luminance": 100}, "objects": []})", &error);
   ASSERT_TRUE(scene) << error;
   auto env = facet::runtime::buildEnvironmentLighting(*scene, 0.01, &error);
   ASSERT_TRUE(env) << error;

@@ -94,7 +94,8 @@ TEST(FuzzInputs, LongChainOfLetsEmitsWithoutDeepRecursion) {
   std::string text = "material m {\n  surface {\n    let a0 = vertex.uv0.x\n";
   for (int i = 1; i < n; ++i)
     text += "    let a" + std::to_string(i) + " = a" + std::to_string(i - 1) + " * a" + std::to_string(i - 1) + "\n";
-  text += "    roughness = a" + std::to_string(n - 1) + "\n    alpha = a" + std::to_string(n - 1) + " > 0.5 ? 1.0 : 0.0\n  }\n}\n";
+  text += "    roughness = a" + std::to_string(n - 1) + "\n    alpha = a" + std::to_string(n - 1) +
+          " > 0.5 ? 1.0 : 0.0\n  }\n}\n";
   facet::ir::SourceFile file{"chain.mat", text};
   facet::ir::Diagnostics diags(file);
   auto material = facet::ir::compileSource(file, diags);

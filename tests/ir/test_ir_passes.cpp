@@ -110,7 +110,8 @@ TEST(Ranges, NormalizeAndTrigonometryAreWithinUnitBounds) {
 TEST(Ranges, VertexInputsAndTexturesHaveTheirEncodingRanges) {
   expectInterval(outputRange("", "roughness", "vertex.viewDirection.z"), -1.0, 1.0);
   expectInterval(outputRange("", "roughness", "vertex.color.a"), 0.0, 1.0);
-  expectInterval(outputRange("param t: texture(linear) = vec4(1.0)", "roughness", "sample(params.t, vertex.uv0).g"), 0.0, 1.0);
+  expectInterval(outputRange("param t: texture(linear) = vec4(1.0)", "roughness", "sample(params.t, vertex.uv0).g"),
+                 0.0, 1.0);
   expectInterval(outputRange("param n: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)", "roughness",
                              "sample(params.n, vertex.uv0).x * 0.5"),
                  -64.0 / 127.0, 0.5);
@@ -125,7 +126,8 @@ TEST(Ranges, MixWithUnitWeightStaysBetweenItsEnds) {
 
 TEST(Ranges, UnrangedParametersAndPositionsAreUnbounded) {
   EXPECT_FALSE(outputRange("param s: float = 1.0", "roughness", "params.s").bounded());
-  expectInterval(outputRange("param s: float = 1.0", "roughness", "saturate(params.s * vertex.worldPosition.y)"), 0.0, 1.0);
+  expectInterval(outputRange("param s: float = 1.0", "roughness", "saturate(params.s * vertex.worldPosition.y)"), 0.0,
+                 1.0);
 }
 
 // The precision policy reads the ranges: a value that can leave fp16's finite range (65504) is

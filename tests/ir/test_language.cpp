@@ -70,8 +70,10 @@ TEST(Language, SeveralErrorsAreReportedInOneRun) {
 }
 
 TEST(Language, DefaultOutsideDeclaredRangeIsAnError) {
-  std::string d = diagnosticsFor("material m {\n  param r: float = 1.5 in [0, 1]\n  surface { roughness = params.r }\n}\n");
-  EXPECT_NE(d.find("test.mat:2:20: error: default value 1.5 is outside the declared range [0, 1]"), std::string::npos) << d;
+  std::string d =
+      diagnosticsFor("material m {\n  param r: float = 1.5 in [0, 1]\n  surface { roughness = params.r }\n}\n");
+  EXPECT_NE(d.find("test.mat:2:20: error: default value 1.5 is outside the declared range [0, 1]"), std::string::npos)
+      << d;
 }
 
 TEST(Language, UseBeforeDefinitionNamesTheLaterLine) {
@@ -81,7 +83,8 @@ TEST(Language, UseBeforeDefinitionNamesTheLaterLine) {
 
 TEST(Language, UnusedParameterIsAWarningNotAnError) {
   std::string d;
-  ASSERT_TRUE(checkText("material m {\n  param unused: float = 1.0\n  surface { roughness = 0.5 }\n}\n", &d).has_value());
+  ASSERT_TRUE(
+      checkText("material m {\n  param unused: float = 1.0\n  surface { roughness = 0.5 }\n}\n", &d).has_value());
   EXPECT_NE(d.find("test.mat:2:9: warning: parameter 'unused' is never used [unused-param]"), std::string::npos) << d;
 }
 
@@ -141,8 +144,9 @@ TEST(Language, HostileInputGetsErrorsNotCrashes) {
 
   EXPECT_NE(diagnosticsFor("").find("error: expected 'material'"), std::string::npos);
   EXPECT_NE(diagnosticsFor(std::string("material m {\0}", 14)).find("byte 0x00"), std::string::npos);
-  EXPECT_NE(diagnosticsFor("material m { param x: float = 1e999 surface { roughness = params.x } }").find("out of range"),
-            std::string::npos);
+  EXPECT_NE(
+      diagnosticsFor("material m { param x: float = 1e999 surface { roughness = params.x } }").find("out of range"),
+      std::string::npos);
 }
 
 TEST(Language, TexturesAreOnlyReadThroughSample) {
@@ -156,7 +160,9 @@ TEST(Language, TexturesAreOnlyReadThroughSample) {
     }
 }
 )");
-  EXPECT_NE(d.find("a texture parameter names its colour space: texture(srgb), texture(linear) or texture(normal)"), std::string::npos) << d;
+  EXPECT_NE(d.find("a texture parameter names its colour space: texture(srgb), texture(linear) or texture(normal)"),
+            std::string::npos)
+      << d;
   EXPECT_NE(d.find("the second argument of 'sample' is a vec2 texture coordinate, not float"), std::string::npos) << d;
   EXPECT_NE(d.find("a texture can only be read with sample(texture, uv)"), std::string::npos) << d;
   EXPECT_EQ(d.find("test.mat:7:"), std::string::npos) << "the valid sample() line must not be reported: " << d;
@@ -184,7 +190,8 @@ TEST(Language, NormalMapsSampleAsVec3AndUnlitIgnoresLightingOutputs) {
 }
 )");
   EXPECT_NE(d.find("test.mat:5:9: warning: output 'roughness' has no effect on an unlit material [unused-output]"),
-            std::string::npos) << d;
+            std::string::npos)
+      << d;
   EXPECT_EQ(d.find("error"), std::string::npos) << d;
 }
 
@@ -203,9 +210,12 @@ TEST(Language, TierOverridesAreCheckedWhereTheyAreWritten) {
 )");
   EXPECT_NE(d.find("test.mat:2:10: error: the reference tier is the ground truth"), std::string::npos) << d;
   EXPECT_NE(d.find("test.mat:3:10: error: unknown tier 'hihg'; did you mean 'high'?"), std::string::npos) << d;
-  EXPECT_NE(d.find("test.mat:4:16: error: unknown tier choice 'speculr'; did you mean 'specular'?"), std::string::npos) << d;
-  EXPECT_NE(d.find("test.mat:5:26: error: unknown diffuse option 'vertx'; did you mean 'vertex'?"), std::string::npos) << d;
-  EXPECT_NE(d.find("test.mat:6:28: error: unknown specular option 'lutt'; did you mean 'lut'?"), std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:4:16: error: unknown tier choice 'speculr'; did you mean 'specular'?"), std::string::npos)
+      << d;
+  EXPECT_NE(d.find("test.mat:5:26: error: unknown diffuse option 'vertx'; did you mean 'vertex'?"), std::string::npos)
+      << d;
+  EXPECT_NE(d.find("test.mat:6:28: error: unknown specular option 'lutt'; did you mean 'lut'?"), std::string::npos)
+      << d;
   EXPECT_NE(d.find("test.mat:7:35: error: tier 'high' already sets 'diffuse'"), std::string::npos) << d;
   // Every tier and option is built now: the low tier's override and `lut` are accepted silently.
   EXPECT_EQ(d.find("test.mat:8:"), std::string::npos) << d;
@@ -251,13 +261,15 @@ TEST(Language, ErrorsStopAfterTheLimit) {
 TEST(Language, RecoveryKeepsTheStatementAfterAnUnclosedCall) {
   // The unclosed call stops at 'reflectance'; recovery must parse that statement, not skip it,
   // or its own error (line 4) goes unreported.
-  std::string d = diagnosticsFor("material m {\n  surface {\n    alpha = mix(1.0, 2.0\n    reflectance = * 2.0\n  }\n}\n");
+  std::string d =
+      diagnosticsFor("material m {\n  surface {\n    alpha = mix(1.0, 2.0\n    reflectance = * 2.0\n  }\n}\n");
   EXPECT_NE(d.find("test.mat:4:5: error: expected ')' or ',' in the argument list of 'mix'"), std::string::npos) << d;
   EXPECT_NE(d.find("test.mat:4:19: error: expected an expression, found '*'"), std::string::npos) << d;
 }
 
 TEST(Language, NumbersAreCheckedWhereTheyAreWritten) {
-  EXPECT_NE(diagnosticsFor("material m { surface { roughness = 2e } }").find("test.mat:1:36: error: number '2e' has an exponent with no digits"),
+  EXPECT_NE(diagnosticsFor("material m { surface { roughness = 2e } }")
+                .find("test.mat:1:36: error: number '2e' has an exponent with no digits"),
             std::string::npos);
   EXPECT_NE(diagnosticsFor("material m { param n: int = 1e30\n surface { roughness = float(params.n) } }")
                 .find("default value does not fit a 32-bit int"),
@@ -279,14 +291,21 @@ TEST(Language, ParameterNamesGlslReservesAreErrorsAtTheirDeclaration) {
     }
 }
 )");
-  EXPECT_NE(d.find("test.mat:2:11: error: parameter 'discard' cannot be used: 'discard' is a GLSL keyword or reserved word [reserved-name]"),
-            std::string::npos) << d;
-  EXPECT_NE(d.find("test.mat:3:11: error: parameter 'gl_FragColor' cannot be used: names starting with 'gl_' are reserved by GLSL [reserved-name]"),
-            std::string::npos) << d;
-  EXPECT_NE(d.find("test.mat:4:11: error: parameter 'sample' cannot be used: 'sample' is a GLSL keyword or reserved word"),
-            std::string::npos) << d;
+  EXPECT_NE(d.find("test.mat:2:11: error: parameter 'discard' cannot be used: 'discard' is a GLSL keyword or reserved "
+                   "word [reserved-name]"),
+            std::string::npos)
+      << d;
+  EXPECT_NE(d.find("test.mat:3:11: error: parameter 'gl_FragColor' cannot be used: names starting with 'gl_' are "
+                   "reserved by GLSL [reserved-name]"),
+            std::string::npos)
+      << d;
+  EXPECT_NE(
+      d.find("test.mat:4:11: error: parameter 'sample' cannot be used: 'sample' is a GLSL keyword or reserved word"),
+      std::string::npos)
+      << d;
   EXPECT_NE(d.find("test.mat:5:11: error: parameter 'a__b' cannot be used: names containing '__' are reserved by GLSL"),
-            std::string::npos) << d;
+            std::string::npos)
+      << d;
   // Built-in function names are fine: parameters live in the block's member namespace.
   EXPECT_EQ(d.find("'texture'"), std::string::npos) << d;
   EXPECT_EQ(d.find("'dot'"), std::string::npos) << d;

@@ -61,10 +61,11 @@ TEST(Lint, ExampleMaterialsHaveNoFindingsOnAnyTier) {
 
 TEST(Lint, ConstantsOutsideFp16NormalRangeInMediumpExpressionsAreFlagged) {
   // 1e-5 and 7.7e-6 flush to 0, 110000 overflows.
-  MaterialLint r = lintText(material(kRoughness, "        let a = params.roughness * 1e-5\n"
-                                         "        let b = params.roughness + 7.7e-6\n"
-                                         "        let c = min(params.roughness * 110000.0, 1.0)\n"
-                                         "        roughness = a + b + c\n"));
+  MaterialLint r = lintText(material(kRoughness,
+                                     "        let a = params.roughness * 1e-5\n"
+                                     "        let b = params.roughness + 7.7e-6\n"
+                                     "        let c = min(params.roughness * 110000.0, 1.0)\n"
+                                     "        roughness = a + b + c\n"));
   EXPECT_TRUE(has(r, "4:36 fp16-constant")) << dump(r);
   EXPECT_TRUE(has(r, "5:36 fp16-constant")) << dump(r);
   // 0.5 × 110000 stays below 65504·2: the product's range [0, 110000] is proven beyond fp16, so
@@ -73,11 +74,13 @@ TEST(Lint, ConstantsOutsideFp16NormalRangeInMediumpExpressionsAreFlagged) {
   // The reference tier is highp: no fp16 rule applies.
   LintOptions highp;
   highp.tiers = {facet::permutations::Tier::Reference};
-  EXPECT_TRUE(lintText(material(kRoughness, "        roughness = params.roughness * 1e-5\n"), highp).diagnostics.empty());
+  EXPECT_TRUE(
+      lintText(material(kRoughness, "        roughness = params.roughness * 1e-5\n"), highp).diagnostics.empty());
 }
 
 TEST(Lint, OutputsBeyondFp16AreFlaggedEvenWhenComputedInHighp) {
-  MaterialLint r = lintText(material("    param sun: float = 1.0 in [0, 100000]\n", "        emissive = vec3(params.sun)\n"));
+  MaterialLint r =
+      lintText(material("    param sun: float = 1.0 in [0, 100000]\n", "        emissive = vec3(params.sun)\n"));
   EXPECT_TRUE(has(r, "4:20 fp16-overflow")) << dump(r);
 }
 
@@ -89,31 +92,36 @@ TEST(Lint, UnrangedFloatParametersAreFlaggedAtTheirDeclaration) {
 }
 
 TEST(Lint, DivisionNeedsAProvenLowerBound) {
-  MaterialLint r = lintText(material(kRoughness + "    param size: float = 1.0 in [0, 10]\n    param safe: float = 1.0 in [0.5, 10]\n",
-                                     "        roughness = params.roughness / params.size\n"
-                                     "        metallic = params.roughness / params.safe\n"));
+  MaterialLint r = lintText(
+      material(kRoughness + "    param size: float = 1.0 in [0, 10]\n    param safe: float = 1.0 in [0.5, 10]\n",
+               "        roughness = params.roughness / params.size\n"
+               "        metallic = params.roughness / params.safe\n"));
   EXPECT_TRUE(has(r, "6:38 division-bound")) << dump(r);
   EXPECT_FALSE(has(r, "7:37 division-bound")) << dump(r);
   // In mediump, a divisor proven positive but below 2^-14 still flushes to 0.
-  MaterialLint tiny = lintText(material("    param s: float = 0.001 in [0.00001, 1]\n", "        roughness = 1.0 / params.s\n"));
+  MaterialLint tiny =
+      lintText(material("    param s: float = 0.001 in [0.00001, 1]\n", "        roughness = 1.0 / params.s\n"));
   EXPECT_TRUE(has(tiny, "4:25 division-bound")) << dump(tiny);
 }
 
 TEST(Lint, SqrtAndLogOutsideTheirDomainAreFlagged) {
-  MaterialLint r = lintText(material(kRoughness, "        let a = sqrt(-1.0)\n"
-                                         "        let b = sqrt(params.roughness - 0.5)\n"
-                                         "        let c = log2(params.roughness)\n"
-                                         "        roughness = a + b + c\n"));
+  MaterialLint r = lintText(material(kRoughness,
+                                     "        let a = sqrt(-1.0)\n"
+                                     "        let b = sqrt(params.roughness - 0.5)\n"
+                                     "        let c = log2(params.roughness)\n"
+                                     "        roughness = a + b + c\n"));
   EXPECT_TRUE(has(r, "4:17 domain")) << dump(r);
   EXPECT_TRUE(has(r, "5:17 domain")) << dump(r);
   EXPECT_TRUE(has(r, "6:17 domain")) << dump(r);
   // sqrt(-1.0) is NaN wherever it runs: an error, the others warnings.
   EXPECT_TRUE(r.hasErrors());
-  for (const auto& d : r.diagnostics) EXPECT_EQ(d.severity, d.loc.line == 4 ? Severity::Error : Severity::Warning) << d.message;
+  for (const auto& d : r.diagnostics)
+    EXPECT_EQ(d.severity, d.loc.line == 4 ? Severity::Error : Severity::Warning) << d.message;
 }
 
 TEST(Lint, ReservedNamesAreLanguageErrors) {
-  MaterialLint r = lintText(material("    param discard: float = 0.5 in [0, 1]\n", "        roughness = params.discard\n"));
+  MaterialLint r =
+      lintText(material("    param discard: float = 0.5 in [0, 1]\n", "        roughness = params.discard\n"));
   EXPECT_TRUE(has(r, "2:11 reserved-name")) << dump(r);
   EXPECT_TRUE(r.variants.empty());
 }
@@ -137,7 +145,8 @@ TEST(Lint, VariantBeyondGles30UniformVectorsIsAnError) {
 
 TEST(Lint, BudgetNamesMaterialVariantFigureAndLimit) {
   std::string error;
-  auto budgets = facet::lint::parseBudgets("b.json", R"({"tiers": {"high": {"fragment": {"alu": 10, "min_relaxed_percent": 99}}}})", &error);
+  auto budgets = facet::lint::parseBudgets(
+      "b.json", R"({"tiers": {"high": {"fragment": {"alu": 10, "min_relaxed_percent": 99}}}})", &error);
   ASSERT_TRUE(budgets) << error;
   LintOptions options;
   options.budgets = &*budgets;
@@ -159,7 +168,8 @@ TEST(Lint, BaselineFailsOnGrowthBeyondToleranceAndRoundTrips) {
   facet::lint::Baseline baseline;
   for (const auto& v : first.variants)
     for (auto [stage, f] : {std::pair{"vertex", &v.vertex}, {"fragment", &v.fragment}})
-      for (const auto& [name, value] : facet::lint::namedFigures(*f)) baseline.materials["m"][v.key][stage][name] = value;
+      for (const auto& [name, value] : facet::lint::namedFigures(*f))
+        baseline.materials["m"][v.key][stage][name] = value;
   std::string error;
   auto reread = facet::lint::parseBaseline("base.json", facet::lint::writeBaseline(baseline), &error);
   ASSERT_TRUE(reread) << error;
@@ -169,11 +179,13 @@ TEST(Lint, BaselineFailsOnGrowthBeyondToleranceAndRoundTrips) {
   EXPECT_TRUE(lintText(text, options).diagnostics.empty()) << dump(lintText(text, options));
 
   // A heavier surface program grows the fragment stage's ALU count past 5 %.
-  MaterialLint heavier = lintText(material(kRoughness, "        roughness = sqrt(params.roughness) * sin(params.roughness) + "
-                                               "cos(params.roughness * 3.0) * exp2(params.roughness)\n"),
+  MaterialLint heavier = lintText(material(kRoughness,
+                                           "        roughness = sqrt(params.roughness) * sin(params.roughness) + "
+                                           "cos(params.roughness * 3.0) * exp2(params.roughness)\n"),
                                   options);
   bool grew = false;
-  for (const auto& d : heavier.diagnostics) grew = grew || (d.code == "baseline-regression" && d.severity == Severity::Error);
+  for (const auto& d : heavier.diagnostics)
+    grew = grew || (d.code == "baseline-regression" && d.severity == Severity::Error);
   EXPECT_TRUE(grew) << dump(heavier);
 
   options.tiers = {facet::permutations::Tier::Mid};  // not recorded: a warning, not a failure
@@ -197,11 +209,13 @@ TEST(Lint, BudgetAndBaselineFilesReportTheirJsonPointer) {
 // nothing, a baseline entry for "hgh.dir1" is never compared): unknown figures, tiers, variant
 // keys and top-level keys are errors at their JSON pointer, with the names lint knows.
 TEST(Lint, UnknownNamesInBudgetAndBaselineFilesAreErrors) {
-  const std::string figures = "cycles, alu, scalar_alu, transcendental, divisions, textures, varying_components, "
-                              "input_vectors, output_vectors, uniform_vectors, samplers";
+  const std::string figures =
+      "cycles, alu, scalar_alu, transcendental, divisions, textures, varying_components, "
+      "input_vectors, output_vectors, uniform_vectors, samplers";
   std::string error;
   EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"high": {"fragment": {"alus": 10}}}})", &error));
-  EXPECT_EQ(error, "b.json: error: /tiers/high/fragment/alus: unknown figure 'alus' (known: " + figures + ", min_relaxed_percent)");
+  EXPECT_EQ(error, "b.json: error: /tiers/high/fragment/alus: unknown figure 'alus' (known: " + figures +
+                       ", min_relaxed_percent)");
   EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"hgh": {"fragment": {"alu": 10}}}})", &error));
   EXPECT_EQ(error, "b.json: error: /tiers/hgh: unknown tier 'hgh' (known: reference, high, mid, low)");
   EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {"a/b~": {}}})", &error));
@@ -209,11 +223,14 @@ TEST(Lint, UnknownNamesInBudgetAndBaselineFilesAreErrors) {
   EXPECT_FALSE(facet::lint::parseBudgets("b.json", R"({"tiers": {}, "teirs": {"high": {}}})", &error));
   EXPECT_EQ(error, "b.json: error: /teirs: unknown key 'teirs' (expected only \"tiers\")");
 
-  EXPECT_FALSE(facet::lint::parseBaseline("base.json", R"({"materials": {"m": {"high.dir1": {"fragment": {"alus": 1}}}}})", &error));
-  EXPECT_EQ(error, "base.json: error: /materials/m/high.dir1/fragment/alus: unknown figure 'alus' (known: " + figures + ")");
+  EXPECT_FALSE(facet::lint::parseBaseline("base.json",
+                                          R"({"materials": {"m": {"high.dir1": {"fragment": {"alus": 1}}}}})", &error));
+  EXPECT_EQ(error,
+            "base.json: error: /materials/m/high.dir1/fragment/alus: unknown figure 'alus' (known: " + figures + ")");
   EXPECT_FALSE(facet::lint::parseBaseline("base.json", R"({"materials": {"m": {"hgh.dir1": {}}}})", &error));
-  EXPECT_EQ(error, "base.json: error: /materials/m/hgh.dir1: 'hgh.dir1' is not a variant key "
-                   "(<tier>.dir<0|1>[.pt<1|2|4>], tiers: reference, high, mid, low)");
+  EXPECT_EQ(error,
+            "base.json: error: /materials/m/hgh.dir1: 'hgh.dir1' is not a variant key "
+            "(<tier>.dir<0|1>[.pt<1|2|4>], tiers: reference, high, mid, low)");
   EXPECT_FALSE(facet::lint::parseBaseline("base.json", R"({"materials": {}, "material": {}})", &error));
   EXPECT_EQ(error, "base.json: error: /material: unknown key 'material' (expected only \"materials\")");
 
@@ -256,12 +273,14 @@ TEST(Lint, PositionsAndUvsReadInMediumpAreErrors) {
   facet::lint::lintVariant("m", figures, LintOptions{}, &found);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].code, "highp-required");
-  EXPECT_EQ(found[0].message, "material 'm' variant high.dir1 fragment stage reads 'v_uv0' in mediump; positions and UVs need highp");
+  EXPECT_EQ(found[0].message,
+            "material 'm' variant high.dir1 fragment stage reads 'v_uv0' in mediump; positions and UVs need highp");
 }
 
 // What the GLES-limit and highp rules read: SPIRV-Cross reflection of the compiled stage.
 TEST(Lint, InterfaceFiguresComeFromTheCompiledStage) {
-  facet::ir::SourceFile file{"painted_tiles.mat", facet::test::readText(facet::test::examplePath("materials/painted_tiles.mat"))};
+  facet::ir::SourceFile file{"painted_tiles.mat",
+                             facet::test::readText(facet::test::examplePath("materials/painted_tiles.mat"))};
   LintOptions options;
   options.tiers = {facet::permutations::Tier::High};
   MaterialLint r = facet::lint::lintMaterial(file, options);

@@ -66,8 +66,9 @@ std::string firstLines(const std::string& text, size_t maxLines) {
 TEST(GoldenShaders, EveryShippedShaderMatchesItsGolden) {
   const std::string committed = facet::test::sourceDir() + "/" + kFolder;
   const std::string fresh = facet::test::scratchDir("golden-shaders") + "/shaders";
-  facet::test::CommandResult r = facet::test::run("bash '" + facet::test::sourceDir() + "/scripts/update-goldens.sh' --shaders-into '" +
-                                                  fresh + "' '" + kMatc + "'");
+  facet::test::CommandResult r =
+      facet::test::run("bash '" + facet::test::sourceDir() + "/scripts/update-goldens.sh' --shaders-into '" + fresh +
+                       "' '" + kMatc + "'");
   ASSERT_EQ(r.exitCode, 0) << r.err;
 
   // The script's own output covers every example material and the post pass, so an empty or
@@ -82,7 +83,8 @@ TEST(GoldenShaders, EveryShippedShaderMatchesItsGolden) {
   std::vector<std::string> both, changed;
   std::set_intersection(expected.begin(), expected.end(), actual.begin(), actual.end(), std::back_inserter(both));
   for (const std::string& file : both)
-    if (facet::test::readText(committed + "/" + file) != facet::test::readText(fresh + "/" + file)) changed.push_back(file);
+    if (facet::test::readText(committed + "/" + file) != facet::test::readText(fresh + "/" + file))
+      changed.push_back(file);
   const std::vector<std::string> added = minus(actual, expected), gone = minus(expected, actual);
   if (changed.empty() && added.empty() && gone.empty()) return;
 

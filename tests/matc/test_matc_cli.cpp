@@ -13,9 +13,9 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/cost_figures.h"
 #include "facet/package/package.h"
-#include "facet/abi/shader_abi.h"
 
 #include "test_support.h"
 
@@ -36,7 +36,8 @@ std::string write(const std::string& dir, const std::string& name, const std::st
 
 TEST(MatcCli, CompileWritesAPackageThatInfoDescribes) {
   std::string dir = facet::test::scratchDir("cli-compile");
-  auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/red.matpkg");
+  auto r =
+      run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/red.matpkg");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("red_plastic: 8 variants"), std::string::npos) << r.out;
 
@@ -50,7 +51,10 @@ TEST(MatcCli, CompileWritesAPackageThatInfoDescribes) {
 
 TEST(MatcCli, InfoPrintsAnyShaderOfAnyTarget) {
   std::string dir = facet::test::scratchDir("cli-info");
-  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/brushed_gold.mat") + " -o " + dir + "/g.matpkg").exitCode, 0);
+  ASSERT_EQ(
+      run(kMatc + " compile " + facet::test::examplePath("materials/brushed_gold.mat") + " -o " + dir + "/g.matpkg")
+          .exitCode,
+      0);
   std::string base = kMatc + " info " + dir + "/g.matpkg --variant high.dir1 --stage fragment --target ";
   auto spirv = run(base + "spirv");
   EXPECT_EQ(spirv.exitCode, 0);
@@ -62,7 +66,10 @@ TEST(MatcCli, InfoPrintsAnyShaderOfAnyTarget) {
 
   auto missing = run(kMatc + " info " + dir + "/g.matpkg --variant low.dir2 --stage fragment --target msl");
   EXPECT_EQ(missing.exitCode, 1);
-  EXPECT_NE(missing.err.find("package has no variant 'low.dir2' (it has: reference.dir0, reference.dir1, high.dir0, high.dir1, mid.dir0, mid.dir1, low.dir0, low.dir1)"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("package has no variant 'low.dir2' (it has: reference.dir0, reference.dir1, high.dir0, "
+                             "high.dir1, mid.dir0, mid.dir1, low.dir0, low.dir1)"),
+            std::string::npos)
+      << missing.err;
 }
 
 TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
@@ -70,8 +77,9 @@ TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
   auto r = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir +
                "/r.matpkg --emit-source " + dir + "/src");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* suffix : {"vert.es300.glsl", "frag.es300.glsl", "vert.es300.readable.glsl", "frag.es300.readable.glsl",
-                             "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm", "frag.spvasm", "vert.metal", "frag.metal"})
+  for (const char* suffix :
+       {"vert.es300.glsl", "frag.es300.glsl", "vert.es300.readable.glsl", "frag.es300.readable.glsl",
+        "vert.vulkan.glsl", "frag.vulkan.glsl", "vert.spvasm", "frag.spvasm", "vert.metal", "frag.metal"})
     EXPECT_TRUE(fs::exists(dir + "/src/red_plastic.high.dir1." + suffix)) << suffix;
   // The GLSL ES and MSL files are the shipped bytes, which the shader goldens
   // (tests/golden/shaders, scripts/update-goldens.sh) copy and present as such.
@@ -79,7 +87,8 @@ TEST(MatcCli, EmitSourceWritesEveryGeneratedSource) {
                                               {"frag.es300.glsl", "fragment", "glsl_es_300"},
                                               {"vert.metal", "vertex", "msl"},
                                               {"frag.metal", "fragment", "msl"}}) {
-    auto shipped = run(kMatc + " info " + dir + "/r.matpkg --variant high.dir1 --stage " + stage + " --target " + target);
+    auto shipped =
+        run(kMatc + " info " + dir + "/r.matpkg --variant high.dir1 --stage " + stage + " --target " + target);
     ASSERT_EQ(shipped.exitCode, 0) << shipped.err;
     EXPECT_TRUE(shipped.out == facet::test::readText(dir + "/src/red_plastic.high.dir1." + suffix))
         << suffix << " is not the package's " << stage << " " << target << " shader";
@@ -105,8 +114,10 @@ TEST(MatcCli, DepfileListsTheMaterialAndTheChunksItsVariantsUsed) {
   EXPECT_EQ(depfile.rfind(dir + "/my\\ pkg.matpkg: \\\n", 0), 0u) << depfile;
   for (const std::string& dep : {mat, facet::test::sourceDir() + "/chunks/specular_lut_lobe.glsl",
                                  facet::test::sourceDir() + "/templates/forward_lit.frag.glsl"})
-    EXPECT_TRUE(depfile.find("  " + dep + " \\\n") != std::string::npos || depfile.find("  " + dep + "\n") != std::string::npos)
-        << dep << "\n" << depfile;
+    EXPECT_TRUE(depfile.find("  " + dep + " \\\n") != std::string::npos ||
+                depfile.find("  " + dep + "\n") != std::string::npos)
+        << dep << "\n"
+        << depfile;
   EXPECT_EQ(depfile.find("specular_zioma_lobe.glsl"), std::string::npos) << "another tier's chunk\n" << depfile;
 }
 
@@ -145,7 +156,8 @@ TEST(MatcCli, CacheRefusesAFolderOrFileThatIsNotItsOwn) {
   r = run(compile + " --cache " + theirs[0]);
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("is not a folder"), std::string::npos) << r.err;
-  for (const std::string& f : theirs) EXPECT_TRUE(fs::exists(f) && facet::test::readText(f) == (f == theirs[2] ? big : "mine")) << f;
+  for (const std::string& f : theirs)
+    EXPECT_TRUE(fs::exists(f) && facet::test::readText(f) == (f == theirs[2] ? big : "mine")) << f;
   EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/work"), fs::directory_iterator()), 3);
   EXPECT_FALSE(fs::exists(dir + "/g.matpkg"));
 
@@ -161,15 +173,16 @@ TEST(MatcCli, CacheRefusesAFolderOrFileThatIsNotItsOwn) {
 // document with what the text summary shows.
 TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   std::string dir = facet::test::scratchDir("cli-json");
-  auto c = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " + dir + "/r.matpkg");
+  auto c = run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " + dir +
+               "/r.matpkg");
   ASSERT_EQ(c.exitCode, 0) << c.err;
   EXPECT_EQ(c.err, "");
   auto r = run(kMatc + " info " + dir + "/r.matpkg --json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["material"], "red_plastic");
-  EXPECT_EQ(doc["format"], "1.4");  // 1.4: a lit material (its shaders sample a cube map)
-  EXPECT_EQ(doc["preshadedBlockSize"], 64);  // 32 bytes of parameters, 32 of derived inputs
+  EXPECT_EQ(doc["format"], "1.4");                 // 1.4: a lit material (its shaders sample a cube map)
+  EXPECT_EQ(doc["preshadedBlockSize"], 64);        // 32 bytes of parameters, 32 of derived inputs
   ASSERT_EQ(doc["preshaderPrograms"].size(), 1u);  // every tier is linear: one program
   EXPECT_EQ(doc["preshaderPrograms"][0]["variants"].size(), 8u);
   ASSERT_EQ(doc["variants"].size(), 8u);
@@ -190,7 +203,9 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
 TEST(MatcCli, InfoJsonCarriesTheCostTable) {
   std::string dir = facet::test::scratchDir("cli-json-costs");
   ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " + dir +
-                "/r.matpkg").exitCode, 0);
+                "/r.matpkg")
+                .exitCode,
+            0);
   auto text = run(kMatc + " info " + dir + "/r.matpkg");
   auto json = run(kMatc + " info " + dir + "/r.matpkg --json");
   ASSERT_EQ(text.exitCode, 0) << text.err;
@@ -204,7 +219,8 @@ TEST(MatcCli, InfoJsonCarriesTheCostTable) {
   };
   std::istringstream lines(text.out.substr(text.out.find("\nstatic cost")));
   std::string line;
-  while (std::getline(lines, line) && line.rfind("  variant ", 0) != 0) {}
+  while (std::getline(lines, line) && line.rfind("  variant ", 0) != 0) {
+  }
   const std::vector<std::string> headings = words(line);
   ASSERT_GT(headings.size(), 2u) << text.out;
   size_t rows = 0;
@@ -237,15 +253,20 @@ TEST(MatcCli, InfoJsonCarriesTheCostTable) {
 TEST(MatcCli, InfoShowsTheMslSlotsTheShadersDeclare) {
   std::string dir = facet::test::scratchDir("cli-msl-slots");
   const std::string package = dir + "/p.matpkg";
-  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/painted_tiles.mat") + " -o " + package).exitCode, 0);
+  ASSERT_EQ(
+      run(kMatc + " compile " + facet::test::examplePath("materials/painted_tiles.mat") + " -o " + package).exitCode,
+      0);
   auto text = run(kMatc + " info " + package);
   ASSERT_EQ(text.exitCode, 0) << text.err;
   const size_t environmentLine = text.out.find("\n  facet_environment ");
   ASSERT_NE(environmentLine, std::string::npos) << text.out;
-  const std::string line = text.out.substr(environmentLine + 1, text.out.find('\n', environmentLine + 1) - environmentLine - 1);
-  const std::string environmentSlot = "texture(" + std::to_string(facet::abi::mslTextureIndex(facet::abi::kEnvironmentBinding)) + ")";
+  const std::string line =
+      text.out.substr(environmentLine + 1, text.out.find('\n', environmentLine + 1) - environmentLine - 1);
+  const std::string environmentSlot =
+      "texture(" + std::to_string(facet::abi::mslTextureIndex(facet::abi::kEnvironmentBinding)) + ")";
   EXPECT_NE(line.find(environmentSlot), std::string::npos) << line;
-  EXPECT_NE(line.find("Vulkan set 1 binding " + std::to_string(facet::abi::kEnvironmentBinding)), std::string::npos) << line;
+  EXPECT_NE(line.find("Vulkan set 1 binding " + std::to_string(facet::abi::kEnvironmentBinding)), std::string::npos)
+      << line;
 
   auto json = run(kMatc + " info " + package + " --json");
   ASSERT_EQ(json.exitCode, 0) << json.err;
@@ -264,8 +285,10 @@ TEST(MatcCli, InfoShowsTheMslSlotsTheShadersDeclare) {
         EXPECT_EQ(match[1].str(), index) << variant << " " << name;
       } else {
         if (msl.out.find(" " + name + " [[texture(") == std::string::npos) continue;
-        EXPECT_NE(msl.out.find(" " + name + " [[texture(" + index + ")]]"), std::string::npos) << variant << " " << name;
-        EXPECT_NE(msl.out.find(" " + name + "Smplr [[sampler(" + index + ")]]"), std::string::npos) << variant << " " << name;
+        EXPECT_NE(msl.out.find(" " + name + " [[texture(" + index + ")]]"), std::string::npos)
+            << variant << " " << name;
+        EXPECT_NE(msl.out.find(" " + name + "Smplr [[sampler(" + index + ")]]"), std::string::npos)
+            << variant << " " << name;
       }
       ++declared;
     }
@@ -277,8 +300,8 @@ TEST(MatcCli, InfoShowsTheMslSlotsTheShadersDeclare) {
 // variants and is erased before the result line.
 TEST(MatcCli, CompileDrawsAProgressLineOnATerminal) {
   std::string dir = facet::test::scratchDir("cli-progress");
-  std::string compile = kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " --no-cache -o " +
-                        dir + "/r.matpkg";
+  std::string compile = kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") +
+                        " --no-cache -o " + dir + "/r.matpkg";
   auto r = run("script -qec '" + compile + "' /dev/null");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("\rred_plastic: compiling variants 8/8\r\033[K"), std::string::npos) << r.out;
@@ -310,7 +333,10 @@ TEST(MatcCli, UsageErrorsExitTwo) {
 
 TEST(MatcCli, CorruptPackageIsRejectedWithAnError) {
   std::string dir = facet::test::scratchDir("cli-corrupt");
-  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/r.matpkg").exitCode, 0);
+  ASSERT_EQ(
+      run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/r.matpkg")
+          .exitCode,
+      0);
   fs::resize_file(dir + "/r.matpkg", fs::file_size(dir + "/r.matpkg") / 2);
   auto r = run(kMatc + " info " + dir + "/r.matpkg");
   EXPECT_EQ(r.exitCode, 1);
@@ -328,7 +354,10 @@ TEST(MatcCli, CorruptPackageIsRejectedWithAnError) {
 TEST(MatcCli, InfoExitsOneOnPackagesTheRuntimeRefuses) {
   namespace pkg = facet::package;
   std::string dir = facet::test::scratchDir("cli-refused");
-  ASSERT_EQ(run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/r.matpkg").exitCode, 0);
+  ASSERT_EQ(
+      run(kMatc + " compile " + facet::test::examplePath("materials/red_plastic.mat") + " -o " + dir + "/r.matpkg")
+          .exitCode,
+      0);
   const pkg::ReadResult good = pkg::readFile(dir + "/r.matpkg");
   ASSERT_TRUE(good.package) << good.error;
   struct Case {
@@ -336,7 +365,8 @@ TEST(MatcCli, InfoExitsOneOnPackagesTheRuntimeRefuses) {
     std::string why;
   };
   const Case cases[] = {
-      {[](pkg::Package& p) { p.material.paramBlockSize = 4097; }, "the parameter block is 4097 bytes; the limit is 4096"},
+      {[](pkg::Package& p) { p.material.paramBlockSize = 4097; },
+       "the parameter block is 4097 bytes; the limit is 4096"},
       {[](pkg::Package& p) { p.material.params[1].defaultValue[0] = std::nan(""); },
        "parameter 'roughness': its default is not a finite number"},
       {[](pkg::Package& p) {
@@ -346,7 +376,8 @@ TEST(MatcCli, InfoExitsOneOnPackagesTheRuntimeRefuses) {
        "preshader program 0: preshader op"},
       {[](pkg::Package& p) {
          for (pkg::Shader& s : p.variants[2].shaders)
-           if (s.target == pkg::Target::Spirv) s.stage = s.stage == pkg::Stage::Vertex ? pkg::Stage::Fragment : pkg::Stage::Vertex;
+           if (s.target == pkg::Target::Spirv)
+             s.stage = s.stage == pkg::Stage::Vertex ? pkg::Stage::Fragment : pkg::Stage::Vertex;
        },
        "material 'red_plastic' variant high.dir0: the fragment shader (SPIR-V) is a vertex shader"},
   };
@@ -406,7 +437,8 @@ TEST(MatcCli, PointLightVariantsAreBuiltOnRequestAndCheckedAgainstAScene) {
   auto summary = run(kMatc + " info " + dir + "/lamps.matpkg");
   EXPECT_EQ(summary.exitCode, 0) << summary.err;
   EXPECT_NE(summary.out.find("facet_specularLut r8_unorm 128x64, sampled by low.dir0.pt2, low.dir1, low.dir1.pt2,"),
-            std::string::npos) << summary.out;
+            std::string::npos)
+      << summary.out;
 
   EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --point-lights 3").exitCode, 2);
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
@@ -427,7 +459,8 @@ TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {
   auto info = run(kMatc + " info " + dir + "/low.matpkg");
   EXPECT_NE(info.out.find("variants   2\n  low.dir0\n"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("textures   1\n  facet_specularLut r8_unorm 128x64, sampled by low.dir1, 8192 bytes ("),
-            std::string::npos) << info.out;
+            std::string::npos)
+      << info.out;
 }
 
 // matc lint as CI runs it: exit 0 on clean materials, 1 on an error (or on a warning with
@@ -438,10 +471,13 @@ TEST(MatcCli, LintExitCodesAndBaselineRoundTrip) {
   auto r = run(kMatc + " lint " + hazards + " --tiers high");
   EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("hazards.mat:10:21: error: sqrt of a value that is always negative [-2, -1] is NaN [domain]"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("[fp16-constant]"), std::string::npos) << r.out;
 
-  std::string warnOnly = write(dir, "warn.mat", "material warn {\n    param gain: float = 2.0\n    surface {\n        roughness = params.gain\n    }\n}\n");
+  std::string warnOnly =
+      write(dir, "warn.mat",
+            "material warn {\n    param gain: float = 2.0\n    surface {\n        roughness = params.gain\n    }\n}\n");
   EXPECT_EQ(run(kMatc + " lint " + warnOnly + " --tiers high").exitCode, 0);
   r = run(kMatc + " lint " + warnOnly + " --tiers high --werror");
   EXPECT_EQ(r.exitCode, 1);
@@ -472,7 +508,8 @@ TEST(MatcCli, LintToleranceMustBeAFiniteNumberInRange) {
   for (const char* tolerance : {"nan", "NaN", "-nan", "inf", "-1", "1e999", "1001"}) {
     auto r = run(lint + " --tolerance " + tolerance);
     EXPECT_EQ(r.exitCode, 2) << tolerance << "\n" << r.out;
-    EXPECT_NE(r.err.find("--tolerance: Value " + std::string(tolerance) + " is not a number in [0, 1000]"), std::string::npos)
+    EXPECT_NE(r.err.find("--tolerance: Value " + std::string(tolerance) + " is not a number in [0, 1000]"),
+              std::string::npos)
         << r.err;
   }
   EXPECT_EQ(run(lint + " --tolerance 1000").exitCode, 1) << "still far past a 1000 % tolerance";
@@ -485,7 +522,8 @@ TEST(MatcCli, CompileRefusesToOverwriteItsInputOrADevice) {
   std::string mat = write(dir, "red.mat", text);
   auto r = run(kMatc + " compile " + mat + " -o " + mat);
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("the output '" + mat + "' (-o) is the input material '" + mat + "'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the output '" + mat + "' (-o) is the input material '" + mat + "'"), std::string::npos)
+      << r.err;
   EXPECT_EQ(facet::test::readText(mat), text);
   std::string pkgNamed = write(dir, "odd.matpkg", text);  // default output = input with .matpkg
   EXPECT_EQ(run(kMatc + " compile " + pkgNamed).exitCode, 1);
@@ -509,7 +547,8 @@ TEST(MatcCli, NoCommandWritesOverItsInputsOrWritesOneFileTwice) {
   fs::create_directories(dir + "/real");
   fs::create_symlink(dir + "/real", dir + "/alias");
   fs::create_directories(dir + "/src");
-  const std::string emitted = write(dir, "src/red_plastic.low.dir0.frag.metal", text);  // a material named as an emitted file
+  const std::string emitted =
+      write(dir, "src/red_plastic.low.dir0.frag.metal", text);  // a material named as an emitted file
   fs::create_directories(dir + "/out");
   const std::string report = write(dir, "out/report.json", "{}");
   const std::string post = dir + "/post";
@@ -526,18 +565,24 @@ TEST(MatcCli, NoCommandWritesOverItsInputsOrWritesOneFileTwice) {
       {compile(mat + " --depfile " + mat), "(--depfile) is the input material", ""},
       {compile(mat + " -o " + dir + "/link.mat"), "(-o) is the input material", ""},
       {compile(mat + " -o " + dir + "/hard.mat"), "(-o) is the input material", ""},
-      {compile(mat + " -o " + dir + "/p.matpkg --depfile " + dir + "/./p.matpkg"), "(-o) and '", "(--depfile) are the same file"},
-      {compile(mat + " -o " + dir + "/alias/p.matpkg --depfile " + dir + "/real/p.matpkg"), "(-o) and '", "(--depfile)"},
+      {compile(mat + " -o " + dir + "/p.matpkg --depfile " + dir + "/./p.matpkg"), "(-o) and '",
+       "(--depfile) are the same file"},
+      {compile(mat + " -o " + dir + "/alias/p.matpkg --depfile " + dir + "/real/p.matpkg"), "(-o) and '",
+       "(--depfile)"},
       {compile(mat + " --scene " + scene + " -o " + scene), "(-o) is the --scene file", ""},
-      {compile(emitted + " -o " + dir + "/e.matpkg --emit-source " + dir + "/src"), "(--emit-source) is the input material", ""},
+      {compile(emitted + " -o " + dir + "/e.matpkg --emit-source " + dir + "/src"),
+       "(--emit-source) is the input material", ""},
       {lint(mat + " -o " + mat), "(-o) is the input material", ""},
       {lint(dir + " -o " + mat), "(-o) is the input material", ""},  // a folder stands for its .mat files
       {lint(mat + " --config " + config + " -o " + config), "(-o) is the --config file", ""},
       {lint(mat + " --baseline " + config + " -o " + config), "(-o) is the --baseline file", ""},
-      {lint(mat + " --baseline " + dir + "/new.json --update-baseline -o " + dir + "/new.json"), "(-o) and '", "(--baseline with --update-baseline) are the same file"},
+      {lint(mat + " --baseline " + dir + "/new.json --update-baseline -o " + dir + "/new.json"), "(-o) and '",
+       "(--baseline with --update-baseline) are the same file"},
       {kMatc + " eval " + mat + " --scene " + report + " --out " + dir + "/out", "(--out) is the --scene file", ""},
-      {kMatc + " eval " + write(dir, "out/report.md", text) + " --out " + dir + "/out", "(--out) is the input material", ""},
-      {kMatc + " post --emit-source " + post + " --cpp " + postCpp, "(--emit-source) and '", "(--cpp) are the same file"},
+      {kMatc + " eval " + write(dir, "out/report.md", text) + " --out " + dir + "/out", "(--out) is the input material",
+       ""},
+      {kMatc + " post --emit-source " + post + " --cpp " + postCpp, "(--emit-source) and '",
+       "(--cpp) are the same file"},
   };
   for (const Clash& c : clashes) {
     auto r = run(c.command);
@@ -545,7 +590,8 @@ TEST(MatcCli, NoCommandWritesOverItsInputsOrWritesOneFileTwice) {
     EXPECT_NE(r.err.find(c.first), std::string::npos) << c.command << "\n" << r.err;
     EXPECT_NE(r.err.find(c.second), std::string::npos) << c.command << "\n" << r.err;
   }
-  for (const std::string& kept : {mat, emitted, dir + "/out/report.md"}) EXPECT_EQ(facet::test::readText(kept), text) << kept;
+  for (const std::string& kept : {mat, emitted, dir + "/out/report.md"})
+    EXPECT_EQ(facet::test::readText(kept), text) << kept;
   EXPECT_EQ(facet::test::readText(config), R"({"tiers": {}})");
   EXPECT_EQ(facet::test::readText(scene), "{}");
   EXPECT_EQ(facet::test::readText(report), "{}");
@@ -559,17 +605,20 @@ TEST(MatcCli, AnOutputThatCannotBeWrittenLeavesTheOthersUnchanged) {
   const std::string dir = facet::test::scratchDir("cli-together");
   const std::string mat = facet::test::examplePath("materials/red_plastic.mat");
   const std::string package = write(dir, "red.matpkg", "old package");
-  auto r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --depfile " + dir + "/no-such-folder/red.d");
+  auto r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --depfile " + dir +
+               "/no-such-folder/red.d");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("cannot write '" + dir + "/no-such-folder/red.d'"), std::string::npos) << r.err;
   EXPECT_EQ(facet::test::readText(package), "old package");
-  r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --emit-source " + dir + "/src --depfile " + dir);
+  r = run(kMatc + " compile " + mat + " --no-cache --tiers low -o " + package + " --emit-source " + dir +
+          "/src --depfile " + dir);
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(facet::test::readText(package), "old package");
   EXPECT_TRUE(fs::is_empty(dir + "/src"));
 
   const std::string report = write(dir, "report.txt", "old report");
-  r = run(kMatc + " lint " + mat + " --tiers low -o " + report + " --baseline " + dir + "/no-such-folder/b.json --update-baseline");
+  r = run(kMatc + " lint " + mat + " --tiers low -o " + report + " --baseline " + dir +
+          "/no-such-folder/b.json --update-baseline");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(facet::test::readText(report), "old report");
   std::vector<std::string> left;
@@ -591,13 +640,15 @@ TEST(MatcCli, EvalWritesItsReportOrFailsClearly) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("[1/2] reference"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("red_plastic: 2 configurations -> " + dir + "/out/report.md"), std::string::npos) << r.out;
-  for (const char* file : {"report.md", "report.json", "plot.svg", "images/high.frontal.png", "images/reference.grazing.png"})
+  for (const char* file :
+       {"report.md", "report.json", "plot.svg", "images/high.frontal.png", "images/reference.grazing.png"})
     EXPECT_TRUE(fs::exists(dir + "/out/" + file)) << file;
 
   auto missing = run(kMatc + " eval " + dir + "/nope.mat" + tiny);
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_NE(missing.err.find("matc: error: cannot read"), std::string::npos) << missing.err;
-  auto bad = run(kMatc + " eval " + write(dir, "bad.mat", "material bad { surface { roughness = params.nope } }") + tiny);
+  auto bad =
+      run(kMatc + " eval " + write(dir, "bad.mat", "material bad { surface { roughness = params.nope } }") + tiny);
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.err.find("bad.mat:1:"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("error: unknown parameter 'nope'"), std::string::npos) << bad.err;

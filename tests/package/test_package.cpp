@@ -32,8 +32,7 @@ std::vector<uint8_t> textCode(const std::string& s) { return {s.begin(), s.end()
 
 std::vector<uint8_t> glslSource(const std::string& body) {
   std::string s = "#version 300 es\nprecision mediump float;\n";
-  for (int i = 0; i < 40; ++i)
-    s += "uniform vec4 u_light" + std::to_string(i) + "; // " + body + "\n";
+  for (int i = 0; i < 40; ++i) s += "uniform vec4 u_light" + std::to_string(i) + "; // " + body + "\n";
   s += "void main() { " + body + " }\n";
   return textCode(s);
 }
@@ -75,7 +74,8 @@ pkg::Package samplePackage() {
         {pkg::Stage::Fragment, pkg::Target::GlslEs300, glslSource("o = vec4(" + std::to_string(i) + ");")},
         {pkg::Stage::Vertex, pkg::Target::Spirv, spirvWords(100, 64)},
         {pkg::Stage::Fragment, pkg::Target::Spirv, spirvWords(200 + uint32_t(i), 96)},
-        {pkg::Stage::Fragment, pkg::Target::Msl, textCode("#include <metal_stdlib>\nfragment half4 f() { return 1; }\n")},
+        {pkg::Stage::Fragment, pkg::Target::Msl,
+         textCode("#include <metal_stdlib>\nfragment half4 f() { return 1; }\n")},
     };
     p.variants.push_back(std::move(v));
   }
@@ -171,8 +171,7 @@ void expectEditRejected(const std::vector<uint8_t>& good, Edit edit, const std::
 }
 
 std::filesystem::path scratchDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("facet_test_package_" + std::to_string(getpid()) + "_" + name);
+  auto dir = std::filesystem::temp_directory_path() / ("facet_test_package_" + std::to_string(getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -255,9 +254,9 @@ TEST(Package, TruncatedPackageIsRejected) {
     ASSERT_FALSE(r.package.has_value()) << "accepted " << n << " bytes";
     ASSERT_FALSE(r.error.empty()) << "no error for " << n << " bytes";
   }
-  expectRejected({bytes.begin(), bytes.begin() + 100},
-                 "package is truncated: the header declares " + std::to_string(bytes.size()) +
-                     " bytes but the file has 100 bytes");
+  expectRejected({bytes.begin(), bytes.begin() + 100}, "package is truncated: the header declares " +
+                                                           std::to_string(bytes.size()) +
+                                                           " bytes but the file has 100 bytes");
 }
 
 TEST(Package, FlippedByteIsRejectedWithChecksumError) {
@@ -292,10 +291,13 @@ TEST(Package, NewerMinorIsRefusedNamingBothVersionsAndTheRebuildCommand) {
 
 TEST(Package, OtherMajorVersionsAreRefusedAndZeroIsInvalid) {
   const std::vector<uint8_t> good = pkg::write(samplePackage());
-  expectEditRejected(good, [](auto& b) { storeLE(b, 8, pkg::kFormatMajor + 1, 2); },
-                     "package format " + std::to_string(pkg::kFormatMajor + 1) + ".1 is not supported");
-  expectEditRejected(good, [](auto& b) { storeLE(b, 8, pkg::kFormatMajor + 1, 2); }, "built by a newer compiler");
-  expectEditRejected(good, [](auto& b) { storeLE(b, 8, 0, 2); }, "package format version 0.1 at byte 8 is not valid");
+  expectEditRejected(
+      good, [](auto& b) { storeLE(b, 8, pkg::kFormatMajor + 1, 2); },
+      "package format " + std::to_string(pkg::kFormatMajor + 1) + ".1 is not supported");
+  expectEditRejected(
+      good, [](auto& b) { storeLE(b, 8, pkg::kFormatMajor + 1, 2); }, "built by a newer compiler");
+  expectEditRejected(
+      good, [](auto& b) { storeLE(b, 8, 0, 2); }, "package format version 0.1 at byte 8 is not valid");
 }
 
 // A package that uses nothing newer than 1.0 is stamped 1.0, so readers from before 1.1 load it;
@@ -373,12 +375,17 @@ TEST(Package, HostileDictionaryReferencesAreRejected) {
   for (uint32_t i = 0; i < count && !coded; ++i)
     if (loadLE(good, table + 4 + 40 * i + 32, 4) == 2) coded = table + 4 + 40 * i;
   ASSERT_NE(coded, 0u);
-  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 36, count, 4); }, "names dictionary blob");
-  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 36, uint32_t((coded - table - 4) / 40), 4); },
-                     "itself compressed against a dictionary");
-  expectEditRejected(good, [&](auto& b) { storeLE(b, 10, 0, 2); }, "which format 1.0 does not have");
-  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 32, 1, 4); }, "names a dictionary but its codec does not use one");
-  expectEditRejected(good, [&](auto& b) { storeLE(b, coded + 32, 3, 4); }, "unknown codec 3");
+  expectEditRejected(
+      good, [&](auto& b) { storeLE(b, coded + 36, count, 4); }, "names dictionary blob");
+  expectEditRejected(
+      good, [&](auto& b) { storeLE(b, coded + 36, uint32_t((coded - table - 4) / 40), 4); },
+      "itself compressed against a dictionary");
+  expectEditRejected(
+      good, [&](auto& b) { storeLE(b, 10, 0, 2); }, "which format 1.0 does not have");
+  expectEditRejected(
+      good, [&](auto& b) { storeLE(b, coded + 32, 1, 4); }, "names a dictionary but its codec does not use one");
+  expectEditRejected(
+      good, [&](auto& b) { storeLE(b, coded + 32, 3, 4); }, "unknown codec 3");
 }
 
 TEST(Package, NonPackageIsRejectedByMagic) {
@@ -393,8 +400,12 @@ TEST(Package, HostileCountsDoNotAllocate) {
   auto hostile = [&](auto edit, const std::string& expectedPart) { expectEditRejected(good, edit, expectedPart); };
 
   hostile([](auto& b) { storeLE(b, 12, 0xFFFFFFFF, 4); }, "sections");
-  hostile([](auto& b) { b.resize(100); storeLE(b, 16, 100, 8); },
-          "package is truncated: table of contents ends at byte 152 but the file has 100 bytes");  // 32 + 5 × 24
+  hostile(
+      [](auto& b) {
+        b.resize(100);
+        storeLE(b, 16, 100, 8);
+      },
+      "package is truncated: table of contents ends at byte 152 but the file has 100 bytes");  // 32 + 5 × 24
   hostile([](auto& b) { storeLE(b, tocEntry(b, "BDAT") + 16, ~uint64_t(0) - 4, 8); }, "past the end");
   hostile([](auto& b) { storeLE(b, tocEntry(b, "BDAT") + 8, ~uint64_t(0) - 4, 8); }, "past the end");
   hostile([](auto& b) { storeLE(b, tocEntry(b, "META") + 8, 40, 8); }, "inside the header");
@@ -452,13 +463,13 @@ TEST(Package, BadParameterIsRejected) {
   std::vector<uint8_t> b = pkg::write(samplePackage());
   size_t at = sectionOffset(b, "META");
   for (int i = 0; i < 4; ++i) at += 4 + loadLE(b, at, 4);  // four strings
-  at += 4;                                                  // block size
-  std::vector<uint8_t> flag = b;                            // the double-sided flag: 0 or 1
+  at += 4;                                                 // block size
+  std::vector<uint8_t> flag = b;                           // the double-sided flag: 0 or 1
   flag[at] = 2;
   resealChecksum(flag);
   expectRejected(flag, "material flag 'double sided' is 2 (0 or 1)");
-  at += 1 + 4;                                              // flag, parameter count
-  at += 4 + loadLE(b, at, 4);                               // parameter name
+  at += 1 + 4;                 // flag, parameter count
+  at += 4 + loadLE(b, at, 4);  // parameter name
   b[at] = 200;
   resealChecksum(b);
   expectRejected(b, "has unknown type 200");
@@ -712,10 +723,10 @@ TEST(Package, HostileMetalSlotsAreRejected) {
                    {"facet_environment", pkg::MslResource::Texture, 1, 2, 2}};
   const std::vector<uint8_t> good = pkg::write(p);
   const size_t mslb = sectionOffset(good, "MSLB");
-  const size_t first = mslb + 4;                          // u32 count, then entries
-  const size_t firstKind = first + 4 + 13;                // after "FrameUniforms"
-  const size_t second = firstKind + 4 + 12;               // kind, reserved, set, binding, index
-  const size_t secondIndex = second + 4 + 17 + 4 + 8;     // after "facet_environment", kind + reserved, set, binding
+  const size_t first = mslb + 4;                       // u32 count, then entries
+  const size_t firstKind = first + 4 + 13;             // after "FrameUniforms"
+  const size_t second = firstKind + 4 + 12;            // kind, reserved, set, binding, index
+  const size_t secondIndex = second + 4 + 17 + 4 + 8;  // after "facet_environment", kind + reserved, set, binding
   auto hostile = [&](auto edit, const std::string& expectedPart) { expectEditRejected(good, edit, expectedPart); };
   hostile([&](auto& b) { storeLE(b, mslb, 0xFFFFFFFF, 4); }, "Metal binding count 4294967295");
   hostile([&](auto& b) { b[firstKind] = 7; }, "unknown kind 7");
@@ -742,22 +753,29 @@ TEST(Package, PaddingAndBytesOutsideTheSectionsAreRejected) {
   // The first gap between two sections (META's size is no multiple of 8 here).
   const size_t metaEnd = sectionOffset(good, "META") + size_t(loadLE(good, tocEntry(good, "META") + 16, 8));
   ASSERT_LT(metaEnd, sectionOffset(good, "VARS")) << "no padding after META to test";
-  expectEditRejected(good, [&](auto& b) { b[metaEnd] = 0x5a; },
-                     "padding byte " + std::to_string(metaEnd) + " before section 'VARS' is 90, not zero");
+  expectEditRejected(
+      good, [&](auto& b) { b[metaEnd] = 0x5a; },
+      "padding byte " + std::to_string(metaEnd) + " before section 'VARS' is 90, not zero");
 
   // Eight more zero bytes before BDAT, its entry and the file size moved to match.
   const size_t data = sectionOffset(good, "BDAT");
-  expectEditRejected(good, [&](auto& b) {
-    b.insert(b.begin() + long(data), 8, 0);
-    storeLE(b, tocEntry(b, "BDAT") + 8, data + 8, 8);
-    storeLE(b, 16, b.size(), 8);
-  }, "section 'BDAT' starts at byte " + std::to_string(data + 8) + ", but section 'BTAB' ends at byte");
+  expectEditRejected(
+      good,
+      [&](auto& b) {
+        b.insert(b.begin() + long(data), 8, 0);
+        storeLE(b, tocEntry(b, "BDAT") + 8, data + 8, 8);
+        storeLE(b, 16, b.size(), 8);
+      },
+      "section 'BDAT' starts at byte " + std::to_string(data + 8) + ", but section 'BTAB' ends at byte");
 
   // Bytes after the last section, counted in the header's file size.
-  expectEditRejected(good, [&](auto& b) {
-    b.insert(b.end(), 16, 0);
-    storeLE(b, 16, b.size(), 8);
-  }, "package has 16 bytes after its last section, which ends at byte " + std::to_string(good.size()));
+  expectEditRejected(
+      good,
+      [&](auto& b) {
+        b.insert(b.end(), 16, 0);
+        storeLE(b, 16, b.size(), 8);
+      },
+      "package has 16 bytes after its last section, which ends at byte " + std::to_string(good.size()));
 }
 
 // Every section, the optional ones included (META with every kind of parameter, VARS, TEXS,
@@ -769,9 +787,10 @@ TEST(Package, PaddingAndBytesOutsideTheSectionsAreRejected) {
 TEST(Package, RowsRoundTripEverySection) {
   pkg::Package p = samplePackage();
   p.material.doubleSided = true;
-  p.material.params.push_back({"albedo", pkg::ParamType::TextureSrgb, {1, 0.5, 0.25, 1}, std::nullopt, std::nullopt, 0, 0});
-  p.material.params.push_back({"bumps", pkg::ParamType::TextureNormal, {0.5, 0.5, 1, 1}, std::nullopt, std::nullopt,
-                               pkg::kNoTextureSlot, 0});
+  p.material.params.push_back(
+      {"albedo", pkg::ParamType::TextureSrgb, {1, 0.5, 0.25, 1}, std::nullopt, std::nullopt, 0, 0});
+  p.material.params.push_back(
+      {"bumps", pkg::ParamType::TextureNormal, {0.5, 0.5, 1, 1}, std::nullopt, std::nullopt, pkg::kNoTextureSlot, 0});
   p.mslBindings = pkg::mslBindingsFor(p.material);
   p.preshader.blockSize = 96;
   pkg::PreshaderProgram program;
@@ -810,7 +829,8 @@ TEST(Package, RowsRoundTripEverySection) {
       EXPECT_EQ(row.shaders[s].target, shader.target);
       auto code = reader->blob(row.shaders[s].blob, &error);
       ASSERT_TRUE(code) << error;
-      EXPECT_TRUE(std::equal(code->begin(), code->end(), shader.code.begin(), shader.code.end())) << row.key << " " << s;
+      EXPECT_TRUE(std::equal(code->begin(), code->end(), shader.code.begin(), shader.code.end()))
+          << row.key << " " << s;
     }
   }
   ASSERT_EQ(reader->textures().size(), p.textures.size());

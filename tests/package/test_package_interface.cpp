@@ -12,8 +12,8 @@
 
 #include "facet/compiler/glslang_backend.h"
 #include "facet/package/package.h"
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_compile.h"
 #include "test_support.h"
@@ -93,8 +93,9 @@ std::vector<uint8_t> bytesOf(const std::vector<uint32_t>& words) {
 struct HandWritten {
   std::vector<uint8_t> vertexSpirv, fragmentSpirv, vertexGlsl, fragmentGlsl;
 };
-HandWritten handWritten(const std::string& vulkanDeclarations, const std::string& glDeclarations, const std::string& body,
-                        const std::string& vertexInput = "highp vec3 a_position", const std::string& glBody = "") {
+HandWritten handWritten(const std::string& vulkanDeclarations, const std::string& glDeclarations,
+                        const std::string& body, const std::string& vertexInput = "highp vec3 a_position",
+                        const std::string& glBody = "") {
   const std::string vertexBody = "void main() { gl_Position = vec4(a_position.xyz, 1.0); }\n";
   const std::string fragmentHead = "precision mediump float;\n";
   const std::string fragmentBody = "void main() { fragColor = " + body + "; }\n";
@@ -142,14 +143,16 @@ void expectContains(const std::string& text, const std::string& part) {
 TEST(PackageInterface, StageSwappedSpirvIsRefusedNamingMaterialVariantAndStage) {
   pkg::Package p = examplePackage("red_plastic");
   ASSERT_EQ(programError(p, "high.dir1"), "");
-  std::swap(shader(p, "high.dir1", Stage::Vertex, Target::Spirv).code, shader(p, "high.dir1", Stage::Fragment, Target::Spirv).code);
+  std::swap(shader(p, "high.dir1", Stage::Vertex, Target::Spirv).code,
+            shader(p, "high.dir1", Stage::Fragment, Target::Spirv).code);
   const std::string error = programError(p, "high.dir1");
   expectContains(error, "material 'red_plastic' variant high.dir1: the vertex shader (SPIR-V) is a fragment shader");
   EXPECT_EQ(programError(p, "high.dir0"), "") << "the other variants still load";
 
   // Only the fragment slot holding a vertex shader: the same check, that stage named.
   pkg::Package twice = examplePackage("red_plastic");
-  shader(twice, "mid.dir0", Stage::Fragment, Target::Spirv).code = shader(twice, "mid.dir0", Stage::Vertex, Target::Spirv).code;
+  shader(twice, "mid.dir0", Stage::Fragment, Target::Spirv).code =
+      shader(twice, "mid.dir0", Stage::Vertex, Target::Spirv).code;
   expectContains(programError(twice, "mid.dir0"), "variant mid.dir0: the fragment shader (SPIR-V) is a vertex shader");
 }
 
@@ -160,12 +163,14 @@ TEST(PackageInterface, DroppedPreshaderIsABlockSizeErrorOnBothBackends) {
   pkg::Package p = examplePackage("red_plastic");
   ASSERT_EQ(p.material.paramBlockSize, 32u);
   p.preshader = {};
-  expectContains(programError(p, "high.dir1"),
-                 "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) reads MaterialParams as 64 bytes, "
-                 "but the runtime binds 32");
-  expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"),
-                 "draw 0: material 'red_plastic' variant high.dir1: the fragment shader (GLSL ES) reads MaterialParams as 64 "
-                 "bytes, but the runtime binds 32");
+  expectContains(
+      programError(p, "high.dir1"),
+      "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) reads MaterialParams as 64 bytes, "
+      "but the runtime binds 32");
+  expectContains(
+      glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"),
+      "draw 0: material 'red_plastic' variant high.dir1: the fragment shader (GLSL ES) reads MaterialParams as 64 "
+      "bytes, but the runtime binds 32");
 }
 
 // The lut tier's table: dropped, the low tier samples an unbound binding (Vulkan bound a 1x1
@@ -181,25 +186,27 @@ TEST(PackageInterface, SpecularTableMustBeShippedAsTheShadersSampleIt) {
                  "material 'painted_tiles' variant low.dir1: the fragment shader (SPIR-V) samples sampler "
                  "'facet_specularLut' (set 1 binding 1), which the variant's draws do not bind (the package ships no "
                  "facet_specularLut for it)");
-  expectContains(glDrawError(withoutSpirv(dropped), "scenes/tiles.json", "low"),
-                 "material 'painted_tiles' variant low.dir1: the fragment shader (GLSL ES) samples sampler 'facet_specularLut', "
-                 "which the variant's draws do not bind");
+  expectContains(
+      glDrawError(withoutSpirv(dropped), "scenes/tiles.json", "low"),
+      "material 'painted_tiles' variant low.dir1: the fragment shader (GLSL ES) samples sampler 'facet_specularLut', "
+      "which the variant's draws do not bind");
 
   for (auto [width, height] : {std::pair{64u, 128u}, std::pair{256u, 32u}}) {
     pkg::Package reshaped = good;
     reshaped.textures[0].width = width;
     reshaped.textures[0].height = height;
-    expectContains(programError(reshaped, "low.dir1"),
-                   "painted_tiles: texture 'facet_specularLut' is " + std::to_string(width) + "x" + std::to_string(height) +
-                       "; the shaders address it as 128x64");
+    expectContains(programError(reshaped, "low.dir1"), "painted_tiles: texture 'facet_specularLut' is " +
+                                                           std::to_string(width) + "x" + std::to_string(height) +
+                                                           "; the shaders address it as 128x64");
   }
 
   pkg::Package unsampled = good;
   ASSERT_EQ(unsampled.variants[6].key, "low.dir0");
   unsampled.textures[0].variants = {6, 7};
-  expectContains(programError(unsampled, "low.dir0"),
-                 "material 'painted_tiles' variant low.dir0: the package ships texture 'facet_specularLut' for this variant, "
-                 "which neither shader samples");
+  expectContains(
+      programError(unsampled, "low.dir0"),
+      "material 'painted_tiles' variant low.dir0: the package ships texture 'facet_specularLut' for this variant, "
+      "which neither shader samples");
 }
 
 // Shaders of another variant or another material in a variant's slots: what differs is named.
@@ -211,22 +218,27 @@ TEST(PackageInterface, AFragmentShaderFromAnotherVariantOrMaterialIsRefused) {
   expectContains(spirvError, "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) reads input");
   expectContains(spirvError, "which the vertex shader (SPIR-V) does not write");
   // The GL linker matches the stages itself; its refusal now names the material and variant.
-  expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"), "material 'red_plastic' variant high.dir1: ");
+  expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"),
+                 "material 'red_plastic' variant high.dir1: ");
 
   // painted_tiles' low.dir1 fragment in low.dir0, which the package ships no table for.
   pkg::Package tiles = examplePackage("painted_tiles");
-  shader(tiles, "low.dir0", Stage::Fragment, Target::Spirv).code = shader(tiles, "low.dir1", Stage::Fragment, Target::Spirv).code;
-  expectContains(programError(tiles, "low.dir0"), "variant low.dir0: the fragment shader (SPIR-V) samples sampler 'facet_specularLut'");
+  shader(tiles, "low.dir0", Stage::Fragment, Target::Spirv).code =
+      shader(tiles, "low.dir1", Stage::Fragment, Target::Spirv).code;
+  expectContains(programError(tiles, "low.dir0"),
+                 "variant low.dir0: the fragment shader (SPIR-V) samples sampler 'facet_specularLut'");
 
   // brushed_gold's fragment shader in red_plastic: the same stage interface and a block of the
   // same offsets and types (a colour at 0, a float at 12 and at 16), another material's names.
   pkg::Package impostor = examplePackage("red_plastic");
   transplantFragment(impostor, "high.dir1", examplePackage("brushed_gold"), "high.dir1");
   const std::string layoutError = programError(impostor, "high.dir1");
-  expectContains(layoutError, "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) MaterialParams member");
+  expectContains(layoutError,
+                 "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) MaterialParams member");
   expectContains(layoutError, "'tint' (vec3, bytes 0..12) does not match parameter 'baseColor' (vec3, bytes 0..12)");
   const std::string glError = glDrawError(withoutSpirv(impostor), "scenes/sphere.json", "high");
-  expectContains(glError, "material 'red_plastic' variant high.dir1: the fragment shader (GLSL ES) MaterialParams member");
+  expectContains(glError,
+                 "material 'red_plastic' variant high.dir1: the fragment shader (GLSL ES) MaterialParams member");
   expectContains(glError, "'tint' (vec3, bytes 0..12) does not match parameter 'baseColor' (vec3, bytes 0..12)");
 }
 
@@ -241,23 +253,29 @@ TEST(PackageInterface, HandWrittenInterfacesAreCheckedOnBothBackends) {
   const Case cases[] = {
       {handWritten("layout(set = 1, binding = 2) uniform sampler2D facet_environment;\n",
                    "uniform sampler2D facet_environment;\n", "texture(facet_environment, vec2(0.5))"),
-       "fragment shader (SPIR-V) samples sampler 'facet_environment' (set 1 binding 2) as a 2D texture; the runtime binds "
+       "fragment shader (SPIR-V) samples sampler 'facet_environment' (set 1 binding 2) as a 2D texture; the runtime "
+       "binds "
        "a cube map there",
-       "fragment shader (GLSL ES) samples sampler 'facet_environment' as a 2D texture; the runtime binds a cube map there"},
+       "fragment shader (GLSL ES) samples sampler 'facet_environment' as a 2D texture; the runtime binds a cube map "
+       "there"},
       {handWritten("layout(set = 1, binding = 5) uniform sampler2D stray;\n", "uniform sampler2D stray;\n",
                    "texture(stray, vec2(0.5))"),
        "fragment shader (SPIR-V) samples sampler 'stray' (set 1 binding 5), which the variant's draws do not bind",
        "fragment shader (GLSL ES) samples sampler 'stray', which the variant's draws do not bind"},
-      {handWritten("layout(std430, set = 0, binding = 4) buffer Extra { vec4 data[]; } extra;\n", "uniform vec4 extra;\n",
-                   "extra.data[0]"),
+      {handWritten("layout(std430, set = 0, binding = 4) buffer Extra { vec4 data[]; } extra;\n",
+                   "uniform vec4 extra;\n", "extra.data[0]"),
        "fragment shader (SPIR-V) declares storage buffer 'Extra', which the runtime does not bind", ""},
-      {handWritten("", "uniform vec4 extra;\n", "vec4(1.0)", "highp vec3 a_position;\nlayout(location = 4) in highp vec3 a_color"),
-       "vertex shader (SPIR-V) reads vertex input 'a_color' at location 4 as vec3; the runtime supplies a_color there as vec4",
+      {handWritten("", "uniform vec4 extra;\n", "vec4(1.0)",
+                   "highp vec3 a_position;\nlayout(location = 4) in highp vec3 a_color"),
+       "vertex shader (SPIR-V) reads vertex input 'a_color' at location 4 as vec3; the runtime supplies a_color there "
+       "as vec4",
        ""},
-      {handWritten("", "uniform vec4 extra;\n", "vec4(1.0)", "highp vec3 a_position;\nlayout(location = 1) in highp vec3 a_bent"),
+      {handWritten("", "uniform vec4 extra;\n", "vec4(1.0)",
+                   "highp vec3 a_position;\nlayout(location = 1) in highp vec3 a_bent"),
        "vertex shader (SPIR-V) reads vertex input 'a_bent' at location 1, where the runtime supplies a_normal", ""},
       {handWritten("layout(location = 1) out vec4 second;\n", "", "vec4(1.0)"),
-       "fragment shader (SPIR-V) writes output 'second' (vec4 at location 1); the forward pass has one colour target, a "
+       "fragment shader (SPIR-V) writes output 'second' (vec4 at location 1); the forward pass has one colour target, "
+       "a "
        "vec4 at location 0",
        ""},
   };
@@ -266,18 +284,22 @@ TEST(PackageInterface, HandWrittenInterfacesAreCheckedOnBothBackends) {
     install(p, "high.dir1", c.code);
     expectContains(programError(p, "high.dir1"), "material 'red_plastic' variant high.dir1: the " + c.spirv);
     if (!c.gl.empty())
-      expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"), "material 'red_plastic' variant high.dir1: the " + c.gl);
+      expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"),
+                     "material 'red_plastic' variant high.dir1: the " + c.gl);
   }
   // GL: an attribute at another attribute's location reads that attribute's data.
   pkg::Package moved = examplePackage("red_plastic");
-  install(moved, "high.dir1", handWritten("", "", "vec4(1.0)", "highp vec3 unused;\nlayout(location = 1) in highp vec3 a_position"));
-  expectContains(glDrawError(withoutSpirv(moved), "scenes/sphere.json", "high"),
-                 "the vertex shader (GLSL ES) reads vertex input 'a_position' at location 1, where the runtime supplies a_normal");
+  install(moved, "high.dir1",
+          handWritten("", "", "vec4(1.0)", "highp vec3 unused;\nlayout(location = 1) in highp vec3 a_position"));
+  expectContains(
+      glDrawError(withoutSpirv(moved), "scenes/sphere.json", "high"),
+      "the vertex shader (GLSL ES) reads vertex input 'a_position' at location 1, where the runtime supplies a_normal");
   // GL: a uniform outside the ABI's blocks, which no draw sets.
   pkg::Package p = examplePackage("red_plastic");
   install(p, "high.dir1", handWritten("", "uniform vec4 extra;\n", "vec4(1.0)", "highp vec3 a_position", "extra"));
   expectContains(glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"),
-                 "the fragment shader (GLSL ES) declares uniform 'extra' outside the ABI's blocks, which the runtime does not bind");
+                 "the fragment shader (GLSL ES) declares uniform 'extra' outside the ABI's blocks, which the runtime "
+                 "does not bind");
 }
 
 // The checks cost nothing on what the compiler writes: every variant of every example material

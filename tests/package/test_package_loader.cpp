@@ -152,9 +152,10 @@ TEST(PackageLoader, LazyReadDecompressesOnlyTheAskedVariant) {
   // Asking again decodes nothing more: the blobs are kept.
   ASSERT_TRUE(material->program("high.dir1", &error)) << error;
   EXPECT_EQ(reader.bytesDecompressed(), expected);
-  std::printf("red_plastic: bytes decompressed to draw high.dir1: %llu lazily, %llu by package::read (all %zu variants)\n",
-              static_cast<unsigned long long>(reader.bytesDecompressed()),
-              static_cast<unsigned long long>(everything), reader.variants().size());
+  std::printf(
+      "red_plastic: bytes decompressed to draw high.dir1: %llu lazily, %llu by package::read (all %zu variants)\n",
+      static_cast<unsigned long long>(reader.bytesDecompressed()), static_cast<unsigned long long>(everything),
+      reader.variants().size());
 }
 
 TEST(PackageLoader, RawBlobsAreServedFromTheAppsBytesWithoutACopy) {
@@ -222,8 +223,7 @@ TEST(PackageLoader, DamagedBlobFailsOnlyTheVariantThatNeedsIt) {
   EXPECT_NE(error.find("content hash mismatch"), std::string::npos) << error;
   for (const pkg::VariantInfo& v : damaged->variants()) {
     if (v.key == high->key) continue;
-    for (const pkg::ShaderInfo& s : v.shaders)
-      EXPECT_TRUE(damaged->shader(v.key, s.stage, s.target, &error)) << error;
+    for (const pkg::ShaderInfo& s : v.shaders) EXPECT_TRUE(damaged->shader(v.key, s.stage, s.target, &error)) << error;
   }
 }
 
@@ -274,7 +274,8 @@ TEST(PackageLoader, DeclaredFourGiBParameterBlockIsRefusedOnLoadFromMemory) {
   std::string error;
   auto reader = pkg::PackageReader::open(bytes, &error);
   ASSERT_TRUE(reader) << "the bytes are well formed; the meaning is not: " << error;
-  EXPECT_NE(reader->semanticError().find("the parameter block is 4294967295 bytes; the limit is 4096"), std::string::npos);
+  EXPECT_NE(reader->semanticError().find("the parameter block is 4294967295 bytes; the limit is 4096"),
+            std::string::npos);
   EXPECT_FALSE(facet::runtime::LoadedMaterial::loadFromMemory(bytes, "app-bytes", &error));
   EXPECT_EQ(error.rfind("app-bytes: the parameter block is 4294967295 bytes", 0), 0u) << error;
 }
@@ -299,8 +300,8 @@ TEST(PackageLoader, ParameterLayoutIsStd140WithoutOverlaps) {
   pkg::ReadResult whole = pkg::readFile(packageDir() + "/red_plastic.matpkg");
   ASSERT_TRUE(whole.package) << whole.error;
   const pkg::Package good = *whole.package;
-  ASSERT_EQ(good.material.params[0].name, "baseColor");  // colour at 0..12
-  ASSERT_EQ(good.material.params[1].name, "roughness");  // float at 12..16
+  ASSERT_EQ(good.material.params[0].name, "baseColor");    // colour at 0..12
+  ASSERT_EQ(good.material.params[1].name, "roughness");    // float at 12..16
   ASSERT_EQ(good.material.params[2].name, "reflectance");  // float at 16..20, block 32
   auto refusal = [](const pkg::Package& p) {
     const std::vector<uint8_t> bytes = pkg::write(p);
@@ -360,16 +361,23 @@ TEST(PackageLoader, MetalSlotsAgreeWithTheMaterial) {
   expectRefused([&](pkg::Package& p) { find(p, "facet_material_relief").index = 12; },
                 "Metal binding 'facet_material_relief' is texture(12) for Vulkan set 1 binding 9; the shader interface "
                 "pins it at texture(9) for set 1 binding 9");
-  expectRefused([&](pkg::Package& p) { find(p, "MaterialParams").binding = 5; },
-                "Metal binding 'MaterialParams' is buffer(2) for Vulkan set 0 binding 5; the shader interface pins it at "
-                "buffer(2) for set 0 binding 2");
-  expectRefused([&](pkg::Package& p) { find(p, "facet_environment").kind = pkg::MslResource::Buffer; find(p, "facet_environment").index = 7; },
-                "Metal binding 'facet_environment' is buffer(7) for Vulkan set 1 binding 2; the shader interface pins it at "
-                "texture(2) for set 1 binding 2");
-  expectRefused([&](pkg::Package& p) { find(p, "facet_material_albedo").name = "facet_material_gloss"; },
-                "Metal binding 'facet_material_gloss' (texture(8)) names no block or sampler of this material's shaders");
-  expectRefused([&](pkg::Package& p) { std::erase_if(p.mslBindings, [](auto& b) { return b.name == "ObjectUniforms"; }); },
-                "the Metal slots do not place 'ObjectUniforms', which the material's shaders declare");
+  expectRefused(
+      [&](pkg::Package& p) { find(p, "MaterialParams").binding = 5; },
+      "Metal binding 'MaterialParams' is buffer(2) for Vulkan set 0 binding 5; the shader interface pins it at "
+      "buffer(2) for set 0 binding 2");
+  expectRefused(
+      [&](pkg::Package& p) {
+        find(p, "facet_environment").kind = pkg::MslResource::Buffer;
+        find(p, "facet_environment").index = 7;
+      },
+      "Metal binding 'facet_environment' is buffer(7) for Vulkan set 1 binding 2; the shader interface pins it at "
+      "texture(2) for set 1 binding 2");
+  expectRefused(
+      [&](pkg::Package& p) { find(p, "facet_material_albedo").name = "facet_material_gloss"; },
+      "Metal binding 'facet_material_gloss' (texture(8)) names no block or sampler of this material's shaders");
+  expectRefused(
+      [&](pkg::Package& p) { std::erase_if(p.mslBindings, [](auto& b) { return b.name == "ObjectUniforms"; }); },
+      "the Metal slots do not place 'ObjectUniforms', which the material's shaders declare");
   // No slots at all is a package from before format 1.2: nothing to check.
   pkg::Package none = good;
   none.mslBindings.clear();

@@ -15,7 +15,8 @@ struct EnvBrdfError {
 };
 
 // fit(n·v, r) against f0 · A + B of the table (f90 = 1), at every texel centre.
-inline EnvBrdfError envBrdfError(const ibl::DfgLut& lut, double f0, const std::function<double(double NoV, double r)>& fit) {
+inline EnvBrdfError envBrdfError(const ibl::DfgLut& lut, double f0,
+                                 const std::function<double(double NoV, double r)>& fit) {
   EnvBrdfError e;
   for (int row = 0; row < lut.size; ++row) {
     double r = ibl::dfgLutRoughness(row, lut.size);

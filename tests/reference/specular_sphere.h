@@ -30,14 +30,14 @@ inline double specularExactForm(const ShadingPoint& p) {
 }
 
 struct SphereScene {
-  int size = 128;                                      // pixels per side
+  int size = 128;                                                    // pixels per side
   glm::dvec3 light = glm::normalize(glm::dvec3(-0.45, 0.55, 0.70));  // towards the light
-  double illuminance = 2.5;                            // pre-exposed E (white diffuse at n·l = 1 → 0.4)
-  double ambient = 0.05;                               // constant ambient radiance, diffuse only
+  double illuminance = 2.5;  // pre-exposed E (white diffuse at n·l = 1 → 0.4)
+  double ambient = 0.05;     // constant ambient radiance, diffuse only
 };
 
 struct SphereMaterial {
-  double f0;             // 0.04: dielectric with diffuse albedo 0.5; 1.0: metal, no diffuse
+  double f0;  // 0.04: dielectric with diffuse albedo 0.5; 1.0: metal, no diffuse
   double perceptualRoughness;
   double diffuseAlbedo() const { return f0 >= 1.0 ? 0.0 : 0.5; }
 };
@@ -66,9 +66,13 @@ inline std::vector<double> renderSphere(const SphereScene& scene, const SphereMa
       glm::dvec3 l = scene.light;
       glm::dvec3 h = glm::normalize(v + l);
       glm::dvec3 R = 2.0 * glm::dot(n, v) * n - v;
-      ShadingPoint p{r * r, r, m.f0,
-                     std::max(glm::dot(n, v), 1e-4), std::clamp(glm::dot(n, l), 0.0, 1.0),
-                     std::clamp(glm::dot(n, h), 0.0, 1.0), std::clamp(glm::dot(l, h), 0.0, 1.0),
+      ShadingPoint p{r * r,
+                     r,
+                     m.f0,
+                     std::max(glm::dot(n, v), 1e-4),
+                     std::clamp(glm::dot(n, l), 0.0, 1.0),
+                     std::clamp(glm::dot(n, h), 0.0, 1.0),
+                     std::clamp(glm::dot(l, h), 0.0, 1.0),
                      glm::dot(R, l)};
       double diffuse = m.diffuseAlbedo();
       double radiance = diffuse * scene.ambient;

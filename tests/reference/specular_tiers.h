@@ -1,7 +1,7 @@
 // Double-precision CPU evaluation of the specular forms of the GPU tiers (chunks/brdf_ggx_fastv.glsl,
-// chunks/specular_fused_hammon.glsl, chunks/specular_zioma.glsl, chunks/specular_lut.glsl), from the same formulas (not the same code),
-// plus the directional albedo (white furnace) integral used to check energy. The exact model they
-// are measured against is in standard_model.h.
+// chunks/specular_fused_hammon.glsl, chunks/specular_zioma.glsl, chunks/specular_lut.glsl), from the same formulas (not
+// the same code), plus the directional albedo (white furnace) integral used to check energy. The exact model they are
+// measured against is in standard_model.h.
 #pragma once
 
 #include <algorithm>
@@ -95,39 +95,49 @@ double directionalAlbedo(double alpha, double NoV, GOverD gOverD, int samples = 
 }
 
 inline double albedoExact(double alpha, double NoV, double f0, int samples = 2048) {
-  return directionalAlbedo(alpha, NoV, [&](double nv, double nl, double, double lh) {
-    double F = f0 + (1.0 - f0) * std::pow(1.0 - lh, 5.0);
-    return visibilitySmithGgxCorrelated(alpha, nv, nl) * F;
-  }, samples);
+  return directionalAlbedo(
+      alpha, NoV,
+      [&](double nv, double nl, double, double lh) {
+        double F = f0 + (1.0 - f0) * std::pow(1.0 - lh, 5.0);
+        return visibilitySmithGgxCorrelated(alpha, nv, nl) * F;
+      },
+      samples);
 }
 
 inline double albedoHammon(double alpha, double NoV, double f0, int samples = 2048) {
-  return directionalAlbedo(alpha, NoV, [&](double nv, double nl, double, double lh) {
-    double F = f0 + (1.0 - f0) * std::pow(1.0 - lh, 5.0);
-    return visibilityHammon(alpha, nv, nl) * F;
-  }, samples);
+  return directionalAlbedo(
+      alpha, NoV,
+      [&](double nv, double nl, double, double lh) {
+        double F = f0 + (1.0 - f0) * std::pow(1.0 - lh, 5.0);
+        return visibilityHammon(alpha, nv, nl) * F;
+      },
+      samples);
 }
 
 // Zioma's spec / D = 1 / (4 · max(LoH², m) · (s ρ + b)), times f0.
 inline double albedoZioma(const ZiomaCoefficients& k, double alpha, double NoV, double f0, int samples = 2048) {
   double rho = k.perceptualInFactor ? std::sqrt(alpha) : alpha;
   double factor = k.roughScale * rho + k.roughBias;
-  return directionalAlbedo(alpha, NoV, [&](double, double, double, double lh) {
-    return f0 / (4.0 * std::max(lh * lh, k.loH2Min) * factor);
-  }, samples);
+  return directionalAlbedo(
+      alpha, NoV, [&](double, double, double, double lh) { return f0 / (4.0 * std::max(lh * lh, k.loH2Min) * factor); },
+      samples);
 }
 
 // The fused lobe's spec / D = 0.5 / max(lerp(2 n·l n·v, n·l + n·v, α), 2^-12), times f0.
 inline double albedoFusedHammon(double alpha, double NoV, double f0, int samples = 2048) {
-  return directionalAlbedo(alpha, NoV, [&](double nv, double nl, double, double) {
-    double a = 2.0 * nl * nv;
-    return f0 * 0.5 / std::max(a + (nl + nv - a) * alpha, 1.0 / 4096.0);
-  }, samples);
+  return directionalAlbedo(
+      alpha, NoV,
+      [&](double nv, double nl, double, double) {
+        double a = 2.0 * nl * nv;
+        return f0 * 0.5 / std::max(a + (nl + nv - a) * alpha, 1.0 / 4096.0);
+      },
+      samples);
 }
 
 // Bilinear sample of an R8 table as the GPU does it (clamp to edge, texel centres at
 // (i + 0.5)/W), in double: the CPU twin of textureLod(lut, uv, 0.0).r.
-inline double sampleR8Bilinear(const std::vector<uint8_t>& texels, uint32_t width, uint32_t height, double u, double v) {
+inline double sampleR8Bilinear(const std::vector<uint8_t>& texels, uint32_t width, uint32_t height, double u,
+                               double v) {
   auto texel = [&](int i, int j) {
     i = std::clamp(i, 0, int(width) - 1);
     j = std::clamp(j, 0, int(height) - 1);

@@ -36,8 +36,8 @@ std::string quadJson(const std::string& buffer, const std::string& scene = kQuad
 
 // A unit quad in z = 0 facing +z, every attribute the runtime reads, in quad.bin beside it.
 // `scene`: the node part of the JSON. Returns the .gltf's path.
-std::string writeQuad(const std::string& dir, const std::string& binUri = "quad.bin", const std::string& scene = kQuadScene,
-                      const std::string& name = "quad.gltf");
+std::string writeQuad(const std::string& dir, const std::string& binUri = "quad.bin",
+                      const std::string& scene = kQuadScene, const std::string& name = "quad.gltf");
 
 // A binary glTF (glTF 2.0 §4.4): 12-byte header, a JSON chunk padded with spaces and, when `bin`
 // is not empty, a BIN chunk padded with zeros to 4 bytes.

@@ -9,9 +9,9 @@
 #include <fstream>
 
 #include "facet/runtime/color_grading.h"
-#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
 #include "facet/runtime/vignette.h"
+#include "facet/scene/scene.h"
 #include "test_support.h"
 
 namespace {
@@ -93,8 +93,11 @@ TEST(ColorGrading, EachSettingDoesWhatItSays) {
 
 TEST(ColorGrading, ParsesTitleCommentsAndDomainAsAdobeAndResolveWriteThem) {
   std::string error;
-  const std::string text = "# written by a grading tool\r\nTITLE \"warm fade\"\r\n\r\nDOMAIN_MIN 0 0 0\r\nDOMAIN_MAX 2 2 2\r\n" +
-                           cubeText(2, [](double r, double g, double b) { return std::array<double, 3>{r, g, b}; });
+  const std::string text =
+      "# written by a grading tool\r\nTITLE \"warm fade\"\r\n\r\nDOMAIN_MIN 0 0 0\r\nDOMAIN_MAX 2 2 2\r\n" +
+      cubeText(2, [](double r, double g, double b) {
+        return std::array<double, 3>{r, g, b};
+      });
   const auto lut = parseCubeLut("warm.cube", text, &error);
   ASSERT_TRUE(lut) << error;
   EXPECT_EQ(lut->title, "warm fade");
@@ -103,9 +106,12 @@ TEST(ColorGrading, ParsesTitleCommentsAndDomainAsAdobeAndResolveWriteThem) {
   EXPECT_NEAR(at(*lut, 0.5f, 1.0f, 2.0f)[0], 0.25f, 1e-6);
   EXPECT_NEAR(at(*lut, 0.5f, 1.0f, 2.0f)[1], 0.5f, 1e-6);
   EXPECT_NEAR(at(*lut, 0.5f, 1.0f, 2.0f)[2], 1.0f, 1e-6);
-  const auto resolve = parseCubeLut("r.cube", "LUT_3D_INPUT_RANGE 0 1\n" + cubeText(3, [](double r, double g, double b) {
-                                      return std::array<double, 3>{b, g, r};
-                                    }), &error);
+  const auto resolve = parseCubeLut("r.cube",
+                                    "LUT_3D_INPUT_RANGE 0 1\n" + cubeText(3,
+                                                                          [](double r, double g, double b) {
+                                                                            return std::array<double, 3>{b, g, r};
+                                                                          }),
+                                    &error);
   ASSERT_TRUE(resolve) << error;
   // Resampled to the GPU's 32 points, a table of another size keeps what it interpolates to.
   const ColorLut sized = resampleColorLut(*resolve, 32);
@@ -143,28 +149,35 @@ TEST(ColorGrading, HostileCubeFilesAreDiagnosedWithFileAndLine) {
   EXPECT_EQ(cubeError("LUT_3D_SIZE 1\n0 0 0\n"), "lut.cube:1: error: LUT_3D_SIZE 1 is outside 2..64");
   EXPECT_EQ(cubeError("# big\nLUT_3D_SIZE 65\n"), "lut.cube:2: error: LUT_3D_SIZE 65 is outside 2..64");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2.5\n"), "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.5'");
-  EXPECT_EQ(cubeError("LUT_3D_SIZE 2.00000001\n"), "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.00000001'");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2.00000001\n"),
+            "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.00000001'");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2.0\n"), "lut.cube:1: error: LUT_3D_SIZE takes a whole number in digits, not '2.0'");
   EXPECT_EQ(cubeError("LUT_3D_SIZE -3\n"), "lut.cube:1: error: LUT_3D_SIZE -3 is outside 2..64");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 99999999999\n"), "lut.cube:1: error: LUT_3D_SIZE 99999999999 is outside 2..64");
   EXPECT_EQ(cubeError("LUT_3D_SIZE many\n"), "lut.cube:1: error: expected a number, not 'many'");
-  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0 0\n1 0 0\n"), "lut.cube:3: error: the table ends after 2 of the 8 entries LUT_3D_SIZE 2 gives");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0 0\n1 0 0\n"),
+            "lut.cube:3: error: the table ends after 2 of the 8 entries LUT_3D_SIZE 2 gives");
   std::string nan = cubeText(2, identity);
   nan.replace(nan.find("1.000000 1.000000 1.000000"), 8, "nan     ");
   EXPECT_EQ(cubeError(nan), "lut.cube:9: error: 'nan' is not a finite number");
-  EXPECT_EQ(cubeError(cubeText(2, identity) + "0 0 0\n"), "lut.cube:10: error: more than the 8 entries LUT_3D_SIZE 2 gives");
+  EXPECT_EQ(cubeError(cubeText(2, identity) + "0 0 0\n"),
+            "lut.cube:10: error: more than the 8 entries LUT_3D_SIZE 2 gives");
   EXPECT_EQ(cubeError("0 0 0\n"), "lut.cube:1: error: a table entry before LUT_3D_SIZE");
   EXPECT_EQ(cubeError("LUT_1D_SIZE 1024\n"), "lut.cube:1: error: a 1D LUT (LUT_1D_SIZE): only 3D tables are supported");
   EXPECT_EQ(cubeError("LUT_3D_SIZEE 2\n"), "lut.cube:1: error: unknown keyword 'LUT_3D_SIZEE'");
-  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0 0\nTITLE \"late\"\n"), "lut.cube:3: error: 'TITLE' after the table's first entry");
-  EXPECT_EQ(cubeError("DOMAIN_MIN 1 0 0\nDOMAIN_MAX 1 1 1\n"), "lut.cube:2: error: DOMAIN_MIN must be below DOMAIN_MAX in every channel");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0 0\nTITLE \"late\"\n"),
+            "lut.cube:3: error: 'TITLE' after the table's first entry");
+  EXPECT_EQ(cubeError("DOMAIN_MIN 1 0 0\nDOMAIN_MAX 1 1 1\n"),
+            "lut.cube:2: error: DOMAIN_MIN must be below DOMAIN_MAX in every channel");
   EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 0\n"), "lut.cube:2: error: a table entry takes three numbers");
-  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 1e9 0\n"), "lut.cube:2: error: '1e9' is beyond the half-float range (65504) the table is stored in");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 1e9 0\n"),
+            "lut.cube:2: error: '1e9' is beyond the half-float range (65504) the table is stored in");
   EXPECT_EQ(cubeError(std::string("LUT_3D_SIZE 2\n0 0\0 0\n", 21)), "lut.cube:2: error: a NUL byte: not a text file");
   EXPECT_EQ(cubeError(""), "lut.cube:1: error: an empty file: not a 3D .cube file");
   EXPECT_EQ(cubeError("\xEF\xBB\xBF\r\n"), "lut.cube:1: error: an empty file: not a 3D .cube file");
   EXPECT_EQ(cubeError("# only a comment\n"), "lut.cube:1: error: no LUT_3D_SIZE: not a 3D .cube file");
-  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 1e400 0\n"), "lut.cube:2: error: '1e400' is beyond the half-float range (65504) the table is stored in");
+  EXPECT_EQ(cubeError("LUT_3D_SIZE 2\n0 1e400 0\n"),
+            "lut.cube:2: error: '1e400' is beyond the half-float range (65504) the table is stored in");
   // With lone CRs as line ends, a mistake is still found at its own line.
   EXPECT_EQ(cubeError("# old Mac tool\rLUT_3D_SIZE 2\r0 0\r"), "lut.cube:3: error: a table entry takes three numbers");
   EXPECT_EQ(cubeError("TITLE untitled\n"), "lut.cube:1: error: TITLE takes a quoted string");
@@ -184,11 +197,16 @@ TEST(ColorGrading, HostileCubeFilesAreDiagnosedWithFileAndLine) {
 
 TEST(ColorGrading, SceneNamesGradingAndVignetteAndItsCubeFileStaysUnderTheAssetRoot) {
   const std::string dir = facet::test::scratchDir("color-grading-scene");
-  { std::ofstream(dir + "/swap.cube") << cubeText(2, [](double r, double g, double b) { return std::array<double, 3>{b, g, r}; }); }
+  {
+    std::ofstream(dir + "/swap.cube") << cubeText(2, [](double r, double g, double b) {
+      return std::array<double, 3>{b, g, r};
+    });
+  }
   std::string error;
   auto scene = parseScene(dir + "/s.json", R"({"post": {"toneCurve": "neutral",
       "grading": {"temperature": 0.2, "tint": -0.1, "contrast": 1.2, "saturation": 0.8, "lift": [0, 0, 0.02], "gamma": [1, 1, 1.1], "gain": [1, 0.9, 1]},
-      "vignette": {"intensity": 0.4, "radius": 0.5, "smoothness": 1, "roundness": 0.5}}, "objects": []})", &error);
+      "vignette": {"intensity": 0.4, "radius": 0.5, "smoothness": 1, "roundness": 0.5}}, "objects": []})",
+                          &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_TRUE(scene->post.colorGrading);
   EXPECT_TRUE(scene->post.vignette);
@@ -212,14 +230,19 @@ TEST(ColorGrading, SceneNamesGradingAndVignetteAndItsCubeFileStaysUnderTheAssetR
   EXPECT_FALSE(SceneFrame::prepare(*scene, dir, &error));
   EXPECT_NE(error.find("bad.cube:2: error: the table ends after 1 of the 8 entries"), std::string::npos) << error;
 
-  EXPECT_FALSE(parseScene(dir + "/s.json", R"({"post": {"grading": {"lut": "../outside.cube"}}, "objects": []})", &error));
+  EXPECT_FALSE(
+      parseScene(dir + "/s.json", R"({"post": {"grading": {"lut": "../outside.cube"}}, "objects": []})", &error));
   EXPECT_NE(error.find("/post/grading/lut: '../outside.cube' is outside the folder this scene may read files from"),
-            std::string::npos) << error;
-  EXPECT_FALSE(parseScene(dir + "/s.json", R"({"post": {"grading": {"lut": "swap.cube", "contrast": 2}}, "objects": []})", &error));
-  EXPECT_NE(error.find("/post/grading/lut: give either a .cube file or grading settings, not both"), std::string::npos) << error;
+            std::string::npos)
+      << error;
+  EXPECT_FALSE(parseScene(dir + "/s.json",
+                          R"({"post": {"grading": {"lut": "swap.cube", "contrast": 2}}, "objects": []})", &error));
+  EXPECT_NE(error.find("/post/grading/lut: give either a .cube file or grading settings, not both"), std::string::npos)
+      << error;
   EXPECT_FALSE(parseScene(dir + "/s.json", R"({"post": {"grading": {"temperature": 2}}, "objects": []})", &error));
   EXPECT_NE(error.find("/post/grading/temperature: value 2 is outside [-1.0, 1.0]"), std::string::npos) << error;
-  EXPECT_FALSE(parseScene(dir + "/s.json", R"({"post": {"vignette": {"intensity": 0.5, "radious": 1}}, "objects": []})", &error));
+  EXPECT_FALSE(parseScene(dir + "/s.json", R"({"post": {"vignette": {"intensity": 0.5, "radious": 1}}, "objects": []})",
+                          &error));
   EXPECT_NE(error.find("/post/vignette/radious: unknown key 'radious'"), std::string::npos) << error;
 }
 

@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <string>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/exposure.h"
-#include "facet/scene/scene.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/scene/scene.h"
 #include "test_compile.h"
 
 namespace {
@@ -25,9 +25,12 @@ std::string number(double v) {
 // A sun, a point light and a sky, all `scale` times the bright values, seen by `camera`.
 std::string sceneJson(double scale, const std::string& camera) {
   return R"({"width": 64, "height": 64, "camera": {"position": [0, 0.5, 4], )" + camera + R"(},
-    "sun": {"direction": [-0.4, -0.7, -0.6], "illuminance": )" + number(110000 * scale) + R"(},
-    "lights": [{"type": "point", "position": [1.5, 1, 2], "intensity": )" + number(2e6 * scale) + R"(, "range": 10}],
-    "sky": {"luminance": )" + number(8000 * scale) + R"(},
+    "sun": {"direction": [-0.4, -0.7, -0.6], "illuminance": )" +
+         number(110000 * scale) + R"(},
+    "lights": [{"type": "point", "position": [1.5, 1, 2], "intensity": )" +
+         number(2e6 * scale) + R"(, "range": 10}],
+    "sky": {"luminance": )" +
+         number(8000 * scale) + R"(},
     "objects": [{"material": "red_plastic", "position": [-0.6, 0, 0], "radius": 0.6},
                 {"material": "brushed_gold", "position": [0.7, 0, 0], "radius": 0.6}]})";
 }
@@ -63,8 +66,8 @@ TEST(Exposure, A110000LuxSunAndA1LuxSunWithAMatchedCameraGiveTheSameImage) {
   const double shutter = 1.0 / std::exp2(ev);  // EV100 = log2(N² / t) at f/1, ISO 100
   ASSERT_GT(shutter, 1.0);
   ASSERT_LT(shutter, 60.0);
-  const auto dim = render(sceneJson(1.0 / 110000, R"("aperture": 1, "shutter": )" + number(shutter) + R"(, "iso": 100)"),
-                          packages);
+  const auto dim =
+      render(sceneJson(1.0 / 110000, R"("aperture": 1, "shutter": )" + number(shutter) + R"(, "iso": 100)"), packages);
   ASSERT_EQ(bright.ldr.size(), dim.ldr.size());
   ASSERT_FALSE(bright.ldr.empty());
   int maxDifference = 0;

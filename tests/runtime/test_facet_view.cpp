@@ -27,8 +27,8 @@ const std::string kFacetView = FACET_VIEW;
 TEST(FacetView, RendersAnExampleSceneOnVulkanWithValidation) {
   std::string packages = facet::test::writeExamplePackages("view-packages");
   std::string out = facet::test::scratchDir("view-out");
-  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages + " --out " +
-               out + " --backend vulkan --validation");
+  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+               " --out " + out + " --backend vulkan --validation");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_TRUE(fs::is_regular_file(out + "/sphere.vulkan.png")) << r.out;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
@@ -39,14 +39,16 @@ TEST(FacetView, RendersAnExampleSceneOnVulkanWithValidation) {
 TEST(FacetView, RendersTheGradedSceneWithAPackedHdrTarget) {
   std::string packages = facet::test::writeExamplePackages("view-packages");
   std::string out = facet::test::scratchDir("view-graded-out");
-  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/cube_look.json") + " --packages " + packages + " --out " +
-               out + " --backend both --validation --hdr-format r11g11b10f --post-path separate --stats --frames 1 --warmup 0");
+  auto r = run(
+      kFacetView + " " + facet::test::examplePath("scenes/cube_look.json") + " --packages " + packages + " --out " +
+      out + " --backend both --validation --hdr-format r11g11b10f --post-path separate --stats --frames 1 --warmup 0");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_TRUE(fs::is_regular_file(out + "/cube_look.vulkan.png")) << r.out;
   EXPECT_TRUE(fs::is_regular_file(out + "/cube_look.gl.png")) << r.out;
   EXPECT_NE(r.out.find("vulkan: separate path, r11g11b10f HDR, frame graph at 384x256"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("total: loaded 0 B, stored 786432 B, sampled 393216 B per frame"), std::string::npos)
-      << "HDR at 4 bytes per pixel, stored and sampled\n" << r.out;
+      << "HDR at 4 bytes per pixel, stored and sampled\n"
+      << r.out;
 }
 
 // A package whose shaders read another interface than it declares (here: the preshader section
@@ -64,15 +66,17 @@ TEST(FacetView, APackageWhoseShadersDisagreeWithItExitsOne) {
     const char* backend;
     std::string why;
   };
-  for (const Run& c : {Run{"vulkan", "the fragment shader (SPIR-V) reads MaterialParams as 64 bytes, but the runtime binds 32"},
-                       Run{"gl", "the fragment shader (GLSL ES) reads MaterialParams as 64 bytes, but the runtime binds 32"}}) {
+  for (const Run& c :
+       {Run{"vulkan", "the fragment shader (SPIR-V) reads MaterialParams as 64 bytes, but the runtime binds 32"},
+        Run{"gl", "the fragment shader (GLSL ES) reads MaterialParams as 64 bytes, but the runtime binds 32"}}) {
     if (std::string(c.backend) == "gl")
-      for (pkg::Variant& v : p.variants) std::erase_if(v.shaders, [](auto& s) { return s.target != pkg::Target::GlslEs300; });
+      for (pkg::Variant& v : p.variants)
+        std::erase_if(v.shaders, [](auto& s) { return s.target != pkg::Target::GlslEs300; });
     std::string error;
     ASSERT_TRUE(pkg::writeFile(packages + "/red_plastic.matpkg", pkg::write(p), &error)) << error;
     std::string out = facet::test::scratchDir("view-hostile-out");
-    auto run = facet::test::run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
-                                " --out " + out + " --backend " + c.backend + " --validation");
+    auto run = facet::test::run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " +
+                                packages + " --out " + out + " --backend " + c.backend + " --validation");
     EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
     EXPECT_NE(run.err.find("material 'red_plastic' variant high.dir1: " + c.why), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out + "/sphere." + c.backend + ".png"));
@@ -92,11 +96,12 @@ TEST(FacetView, ImagesOutsideTheSceneFolderNeedAnAssetRoot) {
   std::string packages = facet::test::writeExamplePackages("view-asset-packages");
   std::string dir = facet::test::scratchDir("view-assets");
   fs::create_directories(dir + "/scenes");
-  fs::copy_file(facet::test::examplePath("scenes/textures/tiles.png"), dir + "/tiles.png", fs::copy_options::overwrite_existing);
+  fs::copy_file(facet::test::examplePath("scenes/textures/tiles.png"), dir + "/tiles.png",
+                fs::copy_options::overwrite_existing);
   std::ofstream(dir + "/scenes/s.json") << R"({"width": 32, "height": 32, "sun": {},
     "objects": [{"material": "painted_tiles", "params": {"albedo": "../tiles.png"}}]})";
-  const std::string command = kFacetView + " " + dir + "/scenes/s.json --packages " + packages + " --out " + dir +
-                              "/out --backend vulkan";
+  const std::string command =
+      kFacetView + " " + dir + "/scenes/s.json --packages " + packages + " --out " + dir + "/out --backend vulkan";
   auto r = run(command);
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("/objects/0/params/albedo: '../tiles.png' is outside the folder"), std::string::npos) << r.err;
@@ -112,8 +117,8 @@ TEST(FacetView, HostileGltfMeshesAreLocatedErrors) {
   std::string packages = facet::test::writePackagesFromTexts(
       "view-gltf-packages", {"material flat { shading unlit\n surface { baseColor = vec3(0.5) } }"});
   std::string dir = facet::test::scratchDir("view-gltf");
-  facet::test::writeText(dir + "/deep.gltf", "{\"asset\": {\"version\": \"2.0\"},\n\"extras\": " + std::string(20000, '[') +
-                                                 std::string(20000, ']') + "}");
+  facet::test::writeText(dir + "/deep.gltf", "{\"asset\": {\"version\": \"2.0\"},\n\"extras\": " +
+                                                 std::string(20000, '[') + std::string(20000, ']') + "}");
   const std::string json = facet::test::quadJson(R"({"byteLength": 236})");
   std::vector<uint8_t> overlong = facet::test::glb(json, facet::test::quadBin());
   overlong[12 + 8 + (json.size() + 3) / 4 * 4] += 8;  // the BIN chunk's length counts its 8-byte header
@@ -126,7 +131,8 @@ TEST(FacetView, HostileGltfMeshesAreLocatedErrors) {
   const std::pair<const char*, std::string> cases[] = {
       {"deep.gltf", dir + "/deep.gltf:2:74: error: arrays and objects nest more than 64 deep"},
       {"overlong.glb", dir + "/overlong.glb: error: GLB chunk 1 at byte "},
-      {"nan.gltf", dir + "/nan.gltf: error: /meshes/0/primitives/0/attributes/NORMAL: /accessors/1 element 0 is not finite"}};
+      {"nan.gltf",
+       dir + "/nan.gltf: error: /meshes/0/primitives/0/attributes/NORMAL: /accessors/1 element 0 is not finite"}};
   for (const auto& [mesh, expected] : cases) {
     std::ofstream(dir + "/s.json") << R"({"width": 16, "height": 16, "objects": [{"mesh": ")" << mesh
                                    << R"(", "material": "flat"}]})";

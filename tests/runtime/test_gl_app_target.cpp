@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "gl_context.h"
-#include "gl_objects.h"
 #include "example_content.h"
 #include "facet/runtime/gl_backend.h"
 #include "facet/runtime/render_backend.h"
+#include "gl_context.h"
+#include "gl_objects.h"
 
 namespace facet::runtime {
 namespace {
@@ -76,7 +76,8 @@ std::vector<uint8_t> readFramebuffer(GLuint framebuffer, uint32_t width, uint32_
   std::vector<uint8_t> topFirst(pixels.size());
   const size_t row = size_t{width} * 4;
   for (uint32_t y = 0; y < height; ++y) {
-    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row, topFirst.begin() + std::ptrdiff_t(y * row));
+    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row,
+                topFirst.begin() + std::ptrdiff_t(y * row));
   }
   return topFirst;
 }
@@ -208,8 +209,8 @@ TEST_F(GlAppTargetTest, MergedPathLendsCubeFacesAndMipLevels) {
     ASSERT_TRUE(content_.animate(0, &error)) << error;
     content_.frame.width = image.width;
     content_.frame.height = image.height;
-    ASSERT_TRUE(renderer->renderToFramebuffer(content_.frame, GlAppTarget{framebuffer.id(), image.width, image.height},
-                                              &error))
+    ASSERT_TRUE(
+        renderer->renderToFramebuffer(content_.frame, GlAppTarget{framebuffer.id(), image.width, image.height}, &error))
         << error;
     ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
     const std::vector<uint8_t> drawn = readFramebuffer(framebuffer.id(), image.width, image.height);
@@ -282,8 +283,18 @@ TEST_F(GlAppTargetTest, LeavesTheTargetBoundWithAFullViewport) {
 TEST_F(GlAppTargetTest, DefaultFramebufferTakesTheSeparatePath) {
   const EGLDisplay display = eglGetCurrentDisplay();
   const EGLContext context = eglGetCurrentContext();
-  const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT,
-                                     EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
+  const EGLint configAttributes[] = {EGL_SURFACE_TYPE,
+                                     EGL_PBUFFER_BIT,
+                                     EGL_RENDERABLE_TYPE,
+                                     EGL_OPENGL_ES3_BIT,
+                                     EGL_RED_SIZE,
+                                     8,
+                                     EGL_GREEN_SIZE,
+                                     8,
+                                     EGL_BLUE_SIZE,
+                                     8,
+                                     EGL_ALPHA_SIZE,
+                                     8,
                                      EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;

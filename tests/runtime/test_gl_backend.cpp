@@ -8,12 +8,12 @@
 
 #include <EGL/egl.h>
 
-#include "gl_context.h"
-#include "headless_context.h"
 #include "facet/runtime/gl_backend.h"
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/render_backend.h"
+#include "gl_context.h"
 #include "gl_test_interface.h"
+#include "headless_context.h"
 
 namespace facet::runtime {
 namespace {
@@ -38,7 +38,8 @@ void main() { fragColor = baseColor + emissive; }
 )";
 
 // Colour = lightColor from the frame block; no material block at all.
-constexpr const char* kLightColourFragmentShader = "#version 300 es\nprecision highp float;\n" FACET_GL_TEST_FRAME_BLOCK R"(layout(location = 0) out vec4 fragColor;
+constexpr const char* kLightColourFragmentShader =
+    "#version 300 es\nprecision highp float;\n" FACET_GL_TEST_FRAME_BLOCK R"(layout(location = 0) out vec4 fragColor;
 void main() { fragColor = lightColor; }
 )";
 
@@ -82,9 +83,7 @@ DrawItem makeDraw(const Mesh& mesh, const ShaderProgram& program) {
   return draw;
 }
 
-void addVertex(Mesh* mesh, float x, float y, float z) {
-  appendVertex(*mesh, Vertex{{x, y, z}});
-}
+void addVertex(Mesh* mesh, float x, float y, float z) { appendVertex(*mesh, Vertex{{x, y, z}}); }
 
 Mesh triangle(float x0, float y0, float x1, float y1, float x2, float y2, float z = 0.0f) {
   Mesh mesh;
@@ -207,12 +206,12 @@ TEST(GlBackend, TriangleCoversExpectedPixelsUpright) {
   ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
 
   // Row 0 is the top of the image.
-  EXPECT_RGBA(hdrAt(result, 1, 1), 1.0f, 0.0f, 0.0f, 1.0f);     // top-left: inside
-  EXPECT_RGBA(hdrAt(result, 1, 62), 0.0f, 0.0f, 0.0f, 1.0f);    // top-right: clear
-  EXPECT_RGBA(hdrAt(result, 46, 1), 0.0f, 0.0f, 0.0f, 1.0f);    // bottom-left: clear
-  EXPECT_RGBA(hdrAt(result, 46, 62), 0.0f, 0.0f, 0.0f, 1.0f);   // bottom-right: clear
-  EXPECT_RGBA(hdrAt(result, 20, 20), 0.0f, 0.0f, 0.0f, 1.0f);   // past the hypotenuse: clear
-  EXPECT_RGBA(hdrAt(result, 5, 5), 1.0f, 0.0f, 0.0f, 1.0f);     // well inside
+  EXPECT_RGBA(hdrAt(result, 1, 1), 1.0f, 0.0f, 0.0f, 1.0f);    // top-left: inside
+  EXPECT_RGBA(hdrAt(result, 1, 62), 0.0f, 0.0f, 0.0f, 1.0f);   // top-right: clear
+  EXPECT_RGBA(hdrAt(result, 46, 1), 0.0f, 0.0f, 0.0f, 1.0f);   // bottom-left: clear
+  EXPECT_RGBA(hdrAt(result, 46, 62), 0.0f, 0.0f, 0.0f, 1.0f);  // bottom-right: clear
+  EXPECT_RGBA(hdrAt(result, 20, 20), 0.0f, 0.0f, 0.0f, 1.0f);  // past the hypotenuse: clear
+  EXPECT_RGBA(hdrAt(result, 5, 5), 1.0f, 0.0f, 0.0f, 1.0f);    // well inside
 
   // The post pass sees the same image, the same way up.
   EXPECT_GT(ldrAt(result, 1, 1)[0], 0);

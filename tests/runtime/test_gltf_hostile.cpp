@@ -14,8 +14,8 @@
 
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh.h"
-#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/scene/scene.h"
 #include "fuzz/gltf_fuzz_input.h"
 #include "gltf_test_files.h"
 #include "test_compile.h"
@@ -51,8 +51,8 @@ const std::string& flatPackages() {
 std::string sceneError(const std::string& dir, const std::string& mesh, const SceneReadOptions& options = {}) {
   const std::string& packages = flatPackages();
   std::string error;
-  auto scene = parseScene(dir + "/scene.json", R"({"objects": [{"mesh": ")" + mesh + R"(", "material": "flat"}]})", &error,
-                          options);
+  auto scene = parseScene(dir + "/scene.json", R"({"objects": [{"mesh": ")" + mesh + R"(", "material": "flat"}]})",
+                          &error, options);
   if (!scene) return error;
   EXPECT_FALSE(SceneFrame::prepare(*scene, packages, &error)) << "accepted: " << mesh;
   return error;
@@ -88,17 +88,20 @@ TEST(GltfHostile, DeepJsonIsRefusedAtItsLineBeforeTinygltfParsesIt) {
   const std::string dir = test::scratchDir("gltf-deep");
   writeText(dir + "/deep.gltf", deepJson(20000));
   // The root object is level 1: the 64th '[' opens level 65, at column 10 + 64 of line 2.
-  EXPECT_EQ(loadError(dir + "/deep.gltf"),
-            dir + "/deep.gltf:2:74: error: arrays and objects nest more than 64 deep here (Facet reads JSON at most that deep)");
+  EXPECT_EQ(loadError(dir + "/deep.gltf"), dir +
+                                               "/deep.gltf:2:74: error: arrays and objects nest more than 64 deep here "
+                                               "(Facet reads JSON at most that deep)");
   writeBytes(dir + "/deep.glb", glb(deepJson(20000), {}));
-  EXPECT_EQ(loadError(dir + "/deep.glb"), dir + "/deep.glb:2:74: error: in the JSON chunk at byte 20: arrays and objects "
-                                                "nest more than 64 deep here (Facet reads JSON at most that deep)");
+  EXPECT_EQ(loadError(dir + "/deep.glb"), dir +
+                                              "/deep.glb:2:74: error: in the JSON chunk at byte 20: arrays and objects "
+                                              "nest more than 64 deep here (Facet reads JSON at most that deep)");
   // 64 deep is read (and then refused for what it lacks, not for its depth).
   writeText(dir + "/ok.gltf", deepJson(63));
   EXPECT_EQ(loadError(dir + "/ok.gltf").find("nest more than"), std::string::npos);
   // Through a scene: the object and the place.
-  EXPECT_EQ(sceneError(dir, "deep.gltf"), "object 0: " + dir + "/deep.gltf:2:74: error: arrays and objects nest more than 64 deep "
-                                          "here (Facet reads JSON at most that deep)");
+  EXPECT_EQ(sceneError(dir, "deep.gltf"), "object 0: " + dir +
+                                              "/deep.gltf:2:74: error: arrays and objects nest more than 64 deep "
+                                              "here (Facet reads JSON at most that deep)");
 }
 
 // tinygltf's model is far larger than its JSON: 16 MiB of empty nodes took 4.2 GB and 10 s.
@@ -108,13 +111,16 @@ TEST(GltfHostile, JsonThatExpandsInMemoryIsRefusedBeforeParsing) {
   std::string nodes = R"({"asset": {"version": "2.0"}, "nodes": [{})";
   for (int i = 0; i < 1 << 20; ++i) nodes += ",{}";
   writeText(dir + "/nodes.gltf", nodes + "]}");
-  EXPECT_EQ(loadError(dir + "/nodes.gltf"), dir + "/nodes.gltf: error: /nodes: the JSON would take more than 256 MiB once "
-                                                  "read into the glTF model (its elements are far larger in memory than "
-                                                  "in the file)");
+  EXPECT_EQ(loadError(dir + "/nodes.gltf"),
+            dir +
+                "/nodes.gltf: error: /nodes: the JSON would take more than 256 MiB once "
+                "read into the glTF model (its elements are far larger in memory than "
+                "in the file)");
   std::string materials = R"({"asset": {"version": "2.0"}, "materials": [{})";
   for (int i = 0; i < 200000; ++i) materials += ",{}";
   writeText(dir + "/materials.gltf", materials + "]}");
-  EXPECT_NE(loadError(dir + "/materials.gltf").find("materials.gltf: error: /materials: the JSON would take more than 256 MiB"),
+  EXPECT_NE(loadError(dir + "/materials.gltf")
+                .find("materials.gltf: error: /materials: the JSON would take more than 256 MiB"),
             std::string::npos);
 }
 
@@ -130,9 +136,11 @@ TEST(GltfHostile, FileSizesAreBoundedBeforeReading) {
                 " read before it, more than the 268435456 bytes left for glTF files (a scene's glTF files and their "
                 "buffers take at most 256 MiB together)");
   sparseFile(dir + "/big.gltf", (uintmax_t(256) << 20) + 1);
-  EXPECT_EQ(loadError(dir + "/big.gltf"), dir + "/big.gltf: error: the glTF file is 268435457 bytes; with the 0 read before "
-                                                "it, more than the 268435456 bytes left for glTF files (a scene's glTF "
-                                                "files and their buffers take at most 256 MiB together)");
+  EXPECT_EQ(loadError(dir + "/big.gltf"),
+            dir +
+                "/big.gltf: error: the glTF file is 268435457 bytes; with the 0 read before "
+                "it, more than the 268435456 bytes left for glTF files (a scene's glTF "
+                "files and their buffers take at most 256 MiB together)");
   // What a scene's earlier files read is gone for the later ones.
   test::writeQuad(dir);
   GltfBudget budget;
@@ -140,12 +148,14 @@ TEST(GltfHostile, FileSizesAreBoundedBeforeReading) {
   std::string error;
   ASSERT_TRUE(loadGltfMesh(dir + "/quad.gltf", &error, {"", &budget})) << error;
   EXPECT_EQ(budget.fileBytes, 10u);
-  EXPECT_EQ(loadError(dir + "/quad.gltf", {"", &budget}),
-            dir + "/quad.gltf: error: the glTF file is " + std::to_string(fs::file_size(dir + "/quad.gltf")) +
-                " bytes; with the 0 read before it, more than the 10 bytes left for glTF files (a scene's glTF files and "
-                "their buffers take at most 256 MiB together)");
+  EXPECT_EQ(
+      loadError(dir + "/quad.gltf", {"", &budget}),
+      dir + "/quad.gltf: error: the glTF file is " + std::to_string(fs::file_size(dir + "/quad.gltf")) +
+          " bytes; with the 0 read before it, more than the 10 bytes left for glTF files (a scene's glTF files and "
+          "their buffers take at most 256 MiB together)");
   // Through a scene.
-  EXPECT_NE(sceneError(dir, "huge.gltf").find("object 0: " + dir + "/huge.gltf: error: /buffers/0/uri: 'huge.bin' is 6442450944 bytes"),
+  EXPECT_NE(sceneError(dir, "huge.gltf")
+                .find("object 0: " + dir + "/huge.gltf: error: /buffers/0/uri: 'huge.bin' is 6442450944 bytes"),
             std::string::npos);
 }
 
@@ -155,7 +165,8 @@ TEST(GltfHostile, FileSizesAreBoundedBeforeReading) {
 TEST(GltfHostile, ImageFilesAreNotRead) {
   const std::string dir = test::scratchDir("gltf-images");
   sparseFile(dir + "/huge.png", uintmax_t(6) << 30);
-  test::writeQuad(dir, "quad.bin", std::string(test::kQuadScene) + R"(, "images": [{"uri": "huge.png"}])", "images.gltf");
+  test::writeQuad(dir, "quad.bin", std::string(test::kQuadScene) + R"(, "images": [{"uri": "huge.png"}])",
+                  "images.gltf");
   const auto load = [&] {
 #if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer reserves terabytes of address space
     // 1 GiB more than the process maps already (its libraries, the Vulkan loader's).
@@ -192,7 +203,8 @@ TEST(GltfHostile, SceneMeshesShareOneVertexBudget) {
       "accessors": [{"componentType": 5126, "count": 1048575, "type": "VEC3",
         "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5123}, "values": {"bufferView": 0, "byteOffset": 4}}}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-      "nodes": [)" + list + R"(], "scenes": [{"nodes": [)" + roots + "]}]}");
+      "nodes": [)" + list + R"(], "scenes": [{"nodes": [)" +
+                                    roots + "]}]}");
   };
   write("three.gltf", 3);
   write("two.gltf", 2);
@@ -201,16 +213,19 @@ TEST(GltfHostile, SceneMeshesShareOneVertexBudget) {
   ASSERT_TRUE(loadGltfMesh(dir + "/three.gltf", &error, {"", &budget})) << error;
   EXPECT_EQ(budget.vertices, GltfBudget::kMaxVertices - 3 * 1048575);
   EXPECT_EQ(loadError(dir + "/two.gltf", {"", &budget}),
-            dir + "/two.gltf: error: /nodes/1/mesh: the file places more than the 1048579 vertices left of the 4194304 a "
-                  "scene's glTF meshes may hold (counting every node's copy)");
+            dir +
+                "/two.gltf: error: /nodes/1/mesh: the file places more than the 1048579 vertices left of the 4194304 a "
+                "scene's glTF meshes may hold (counting every node's copy)");
   // Through a scene: the second object's file is refused, named with its object.
   auto scene = parseScene(dir + "/scene.json", R"({"objects": [{"mesh": "three.gltf", "material": "flat"},
-      {"mesh": "three.gltf", "material": "flat"}, {"mesh": "two.gltf", "material": "flat"}]})", &error);
+      {"mesh": "three.gltf", "material": "flat"}, {"mesh": "two.gltf", "material": "flat"}]})",
+                          &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(SceneFrame::prepare(*scene, flatPackages(), &error));
   // Object 1 shares object 0's mesh: only the third costs more.
-  EXPECT_EQ(error, "object 2: " + dir + "/two.gltf: error: /nodes/1/mesh: the file places more than the 1048579 vertices "
-                                        "left of the 4194304 a scene's glTF meshes may hold (counting every node's copy)");
+  EXPECT_EQ(error, "object 2: " + dir +
+                       "/two.gltf: error: /nodes/1/mesh: the file places more than the 1048579 vertices "
+                       "left of the 4194304 a scene's glTF meshes may hold (counting every node's copy)");
 }
 
 // Each placed primitive is read and transformed on its own: 1023 nodes placing a mesh of 4096
@@ -222,7 +237,8 @@ TEST(GltfHostile, PlacedPrimitivesAreBounded) {
   append<uint16_t>(&bin, {0, 0, 0, 0});
   writeBytes(dir + "/tiny.bin", bin);
   std::string primitives, nodes, roots;
-  for (int i = 0; i < 4096; ++i) primitives += std::string(i ? ", " : "") + R"({"attributes": {"POSITION": 0}, "indices": 1})";
+  for (int i = 0; i < 4096; ++i)
+    primitives += std::string(i ? ", " : "") + R"({"attributes": {"POSITION": 0}, "indices": 1})";
   for (int i = 0; i < 17; ++i) {
     nodes += std::string(i ? ", " : "") + R"({"mesh": 0})";
     roots += (i ? ", " : "") + std::to_string(i);
@@ -231,10 +247,13 @@ TEST(GltfHostile, PlacedPrimitivesAreBounded) {
     "bufferViews": [{"buffer": 0, "byteLength": 12}, {"buffer": 0, "byteOffset": 12, "byteLength": 6}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 1, "type": "VEC3"},
                   {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
-    "meshes": [{"primitives": [)" + primitives + R"(]}], "nodes": [)" + nodes + R"(], "scenes": [{"nodes": [)" + roots + "]}]}");
+    "meshes": [{"primitives": [)" + primitives +
+                                    R"(]}], "nodes": [)" + nodes + R"(], "scenes": [{"nodes": [)" + roots + "]}]}");
   // 16 nodes place 65536 primitives; the 17th is one too many.
-  EXPECT_EQ(loadError(dir + "/many.gltf"),
-            dir + "/many.gltf: error: /nodes/16/mesh: the file places more than 65536 primitives (counting every node's copy)");
+  EXPECT_EQ(
+      loadError(dir + "/many.gltf"),
+      dir +
+          "/many.gltf: error: /nodes/16/mesh: the file places more than 65536 primitives (counting every node's copy)");
 }
 
 // tinygltf 2.7 accepted a BIN chunk whose length counts its own 8-byte header and read 8 bytes
@@ -244,32 +263,37 @@ TEST(GltfHostile, GlbContainerIsCheckedBeforeTinygltf) {
   const std::string json = quadJson(R"({"byteLength": 244})");
   std::vector<uint8_t> overlong = glb(json, quadBin());
   const size_t binHeader = 12 + 8 + (json.size() + 3) / 4 * 4;  // after the header and the padded JSON chunk
-  overlong[binHeader] += 8;  // 236 -> 244
+  overlong[binHeader] += 8;                                     // 236 -> 244
   writeBytes(dir + "/overlong.glb", overlong);
-  EXPECT_EQ(loadError(dir + "/overlong.glb"), dir + "/overlong.glb: error: GLB chunk 1 at byte " + std::to_string(binHeader) +
-                                                  ": its 244 bytes reach past the end of the file (" +
-                                                  std::to_string(overlong.size()) + " bytes)");
+  EXPECT_EQ(loadError(dir + "/overlong.glb"),
+            dir + "/overlong.glb: error: GLB chunk 1 at byte " + std::to_string(binHeader) +
+                ": its 244 bytes reach past the end of the file (" + std::to_string(overlong.size()) + " bytes)");
   const auto edited = [&](const std::string& name, size_t at, uint32_t value) {
     std::vector<uint8_t> bytes = glb(quadJson(R"({"byteLength": 236})"), quadBin());
     std::memcpy(bytes.data() + at, &value, 4);
     writeBytes(dir + "/" + name, bytes);
     return loadError(dir + "/" + name);
   };
-  EXPECT_EQ(edited("v1.glb", 4, 1), dir + "/v1.glb: error: GLB header: container version 1 (only version 2, glTF 2.0, is read)");
+  EXPECT_EQ(edited("v1.glb", 4, 1),
+            dir + "/v1.glb: error: GLB header: container version 1 (only version 2, glTF 2.0, is read)");
   EXPECT_EQ(edited("long.glb", 8, uint32_t(overlong.size() + 4)),
-            dir + "/long.glb: error: GLB header: declares " + std::to_string(overlong.size() + 4) + " bytes, but the file has " +
-                std::to_string(overlong.size()));
+            dir + "/long.glb: error: GLB header: declares " + std::to_string(overlong.size() + 4) +
+                " bytes, but the file has " + std::to_string(overlong.size()));
   const size_t jsonChunk = (json.size() + 3) / 4 * 4;
-  EXPECT_EQ(edited("odd.glb", 12, uint32_t(jsonChunk - 2)),
-            dir + "/odd.glb: error: GLB chunk 0 at byte 12: length " + std::to_string(jsonChunk - 2) +
-                " is not a multiple of 4 (chunks are 4-byte aligned)");
-  EXPECT_EQ(edited("binfirst.glb", 16, 0x004E4942u),
-            dir + "/binfirst.glb: error: GLB chunk 0 at byte 12: the first chunk must be a JSON chunk that is not empty");
-  EXPECT_EQ(edited("twojson.glb", binHeader + 4, 0x4E4F534Au),
-            dir + "/twojson.glb: error: GLB chunk 1 at byte " + std::to_string(binHeader) + ": a JSON chunk may only come first");
+  EXPECT_EQ(edited("odd.glb", 12, uint32_t(jsonChunk - 2)), dir + "/odd.glb: error: GLB chunk 0 at byte 12: length " +
+                                                                std::to_string(jsonChunk - 2) +
+                                                                " is not a multiple of 4 (chunks are 4-byte aligned)");
+  EXPECT_EQ(
+      edited("binfirst.glb", 16, 0x004E4942u),
+      dir + "/binfirst.glb: error: GLB chunk 0 at byte 12: the first chunk must be a JSON chunk that is not empty");
+  EXPECT_EQ(edited("twojson.glb", binHeader + 4, 0x4E4F534Au), dir + "/twojson.glb: error: GLB chunk 1 at byte " +
+                                                                   std::to_string(binHeader) +
+                                                                   ": a JSON chunk may only come first");
   // JSON errors in a .glb are placed in its JSON chunk.
   writeBytes(dir + "/syntax.glb", glb("{\"asset\": nope}", {}));
-  EXPECT_EQ(loadError(dir + "/syntax.glb").rfind(dir + "/syntax.glb:1:12: error: in the JSON chunk at byte 20: invalid JSON: ", 0), 0u)
+  EXPECT_EQ(loadError(dir + "/syntax.glb")
+                .rfind(dir + "/syntax.glb:1:12: error: in the JSON chunk at byte 20: invalid JSON: ", 0),
+            0u)
       << loadError(dir + "/syntax.glb");
   // Through a scene.
   EXPECT_NE(sceneError(dir, "overlong.glb").find("object 0: " + dir + "/overlong.glb: error: GLB chunk 1 at byte"),
@@ -284,7 +308,8 @@ TEST(GltfHostile, BufferLinksLeadingOutAreRefused) {
   writeBytes(dir + "/secret.bin", quadBin());
   fs::create_symlink(dir + "/secret.bin", dir + "/scene/models/link.bin");
   fs::create_directory_symlink(dir, dir + "/scene/models/up");
-  const std::string expected = "' is outside the folder this glTF file may read buffers from (" + dir + "/scene/models)";
+  const std::string expected =
+      "' is outside the folder this glTF file may read buffers from (" + dir + "/scene/models)";
   EXPECT_EQ(loadError(test::writeQuad(dir + "/scene/models", "link.bin", test::kQuadScene, "link.gltf")),
             dir + "/scene/models/link.gltf: error: /buffers/0/uri: 'link.bin" + expected);
   EXPECT_EQ(loadError(test::writeQuad(dir + "/scene/models", "up/secret.bin", test::kQuadScene, "up.gltf")),
@@ -297,8 +322,10 @@ TEST(GltfHostile, BufferLinksLeadingOutAreRefused) {
   std::string error;
   EXPECT_TRUE(loadGltfMesh(dir + "/scene/models/shared.gltf", &error, {dir + "/scene"})) << error;
   EXPECT_EQ(sceneError(dir + "/scene", "models/link.gltf"),
-            "object 0: " + dir + "/scene/models/link.gltf: error: /buffers/0/uri: 'link.bin' is outside the folder this glTF "
-                                 "file may read buffers from (" + dir + "/scene)");
+            "object 0: " + dir +
+                "/scene/models/link.gltf: error: /buffers/0/uri: 'link.bin' is outside the folder this glTF "
+                "file may read buffers from (" +
+                dir + "/scene)");
   // Widened to the folder holding the link's target, the same file loads.
   EXPECT_TRUE(loadGltfMesh(dir + "/scene/models/link.gltf", &error, {dir})) << error;
 }
@@ -325,7 +352,8 @@ TEST(GltfHostile, OutsidePathsDoNotRevealWhetherFilesExist) {
   EXPECT_EQ(errorFor(dir + "/exists.bin"), errorFor(dir + "/missing.bin"));
   EXPECT_NE(errorFor("to-missing.bin").find("is outside the folder"), std::string::npos) << errorFor("to-missing.bin");
   // Inside the folder, a missing file is simply missing.
-  EXPECT_NE(errorFor("absent.bin").find("/buffers/0/uri:  does not exist"), std::string::npos) << errorFor("absent.bin");
+  EXPECT_NE(errorFor("absent.bin").find("/buffers/0/uri:  does not exist"), std::string::npos)
+      << errorFor("absent.bin");
   // The scene's own paths (meshes, images) follow the same rule.
   writeText(dir + "/exists.gltf", "{}");
   fs::create_symlink(dir + "/exists.gltf", dir + "/scene/to-existing.gltf");
@@ -333,8 +361,9 @@ TEST(GltfHostile, OutsidePathsDoNotRevealWhetherFilesExist) {
   const auto sceneErrorFor = [&](const std::string& mesh) { return unnamed(sceneError(dir + "/scene", mesh)); };
   EXPECT_EQ(sceneErrorFor("to-existing.gltf"), sceneErrorFor("to-missing.gltf"));
   EXPECT_EQ(sceneErrorFor("../exists.gltf"), sceneErrorFor("../missing.gltf"));
-  EXPECT_NE(sceneErrorFor("to-missing.gltf").find("/objects/0/mesh:  is outside the folder this scene may read files from"),
-            std::string::npos)
+  EXPECT_NE(
+      sceneErrorFor("to-missing.gltf").find("/objects/0/mesh:  is outside the folder this scene may read files from"),
+      std::string::npos)
       << sceneErrorFor("to-missing.gltf");
 }
 
@@ -358,17 +387,22 @@ TEST(GltfHostile, AttributeValuesAreChecked) {
   std::vector<uint8_t> bin = quadBin();
   setFloat(&bin, 48 + 3 * 12 + 8, 0);  // normal 3: (0, 0, 0)
   EXPECT_EQ(loadError(writeEditedQuad(dir, "zero-normal", bin)),
-            dir + "/zero-normal.gltf: error: " + attribute("NORMAL", 1, 3, " is shorter than 1e-6 (a normal needs a direction)"));
+            dir + "/zero-normal.gltf: error: " +
+                attribute("NORMAL", 1, 3, " is shorter than 1e-6 (a normal needs a direction)"));
   EXPECT_EQ(edited("nan-tangent", 96 + 16 + 4, nan),
             dir + "/nan-tangent.gltf: error: " + attribute("TANGENT", 2, 1, " is not finite"));
   EXPECT_EQ(edited("half-w", 96 + 12, 0.5f),
-            dir + "/half-w.gltf: error: " + attribute("TANGENT", 2, 0, ": w is 0.500000, not +1 or -1 (the bitangent's sign)"));
+            dir + "/half-w.gltf: error: " +
+                attribute("TANGENT", 2, 0, ": w is 0.500000, not +1 or -1 (the bitangent's sign)"));
   bin = quadBin();
   setFloat(&bin, 96, 0);  // tangent 0: (0, 0, 0, 1)
   EXPECT_EQ(loadError(writeEditedQuad(dir, "zero-tangent", bin)),
-            dir + "/zero-tangent.gltf: error: " + attribute("TANGENT", 2, 0, ": xyz is shorter than 1e-6 (a tangent needs a direction)"));
-  EXPECT_EQ(edited("inf-uv", 160 + 3 * 8, -inf), dir + "/inf-uv.gltf: error: " + attribute("TEXCOORD_0", 3, 3, " is not finite"));
-  EXPECT_EQ(edited("nan-position", 4, nan), dir + "/nan-position.gltf: error: " + attribute("POSITION", 0, 0, " is not finite"));
+            dir + "/zero-tangent.gltf: error: " +
+                attribute("TANGENT", 2, 0, ": xyz is shorter than 1e-6 (a tangent needs a direction)"));
+  EXPECT_EQ(edited("inf-uv", 160 + 3 * 8, -inf),
+            dir + "/inf-uv.gltf: error: " + attribute("TEXCOORD_0", 3, 3, " is not finite"));
+  EXPECT_EQ(edited("nan-position", 4, nan),
+            dir + "/nan-position.gltf: error: " + attribute("POSITION", 0, 0, " is not finite"));
   // Float colours: COLOR_0 read from the tangents' floats, one of them infinite.
   bin = quadBin();
   setFloat(&bin, 96 + 2 * 16 + 12, inf);
@@ -385,8 +419,8 @@ TEST(GltfHostile, AttributeValuesAreChecked) {
   ASSERT_TRUE(mesh) << error;
   EXPECT_EQ(mesh->vertices[5], 1.0f);  // vertex 0's normal z (runtime::Vertex: position, then normal)
   // Through a scene.
-  EXPECT_EQ(sceneError(dir, "nan-normal.gltf"), "object 0: " + dir + "/nan-normal.gltf: error: " +
-                                                    attribute("NORMAL", 1, 2, " is not finite"));
+  EXPECT_EQ(sceneError(dir, "nan-normal.gltf"),
+            "object 0: " + dir + "/nan-normal.gltf: error: " + attribute("NORMAL", 1, 2, " is not finite"));
 }
 
 // What the spec says a loader must refuse, and what tinygltf lets through.
@@ -403,54 +437,69 @@ TEST(GltfHostile, SpecRulesTinygltfIgnoresAreEnforced) {
     return json.replace(json.find(from), from.size(), to);
   };
   // A file that requires an extension this loader lacks must not be loaded (glTF 2.0 §3.12).
-  EXPECT_EQ(withJson("draco.gltf", replaced(R"("asset": {"version": "2.0"},)",
-                                            R"("asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"],)")),
-            dir + "/draco.gltf: error: /extensionsRequired/0: the file requires extension 'KHR_draco_mesh_compression', which "
-                  "this loader does not implement (it implements none; the glTF spec says such a file must not be loaded)");
+  EXPECT_EQ(
+      withJson("draco.gltf",
+               replaced(R"("asset": {"version": "2.0"},)",
+                        R"("asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"],)")),
+      dir +
+          "/draco.gltf: error: /extensionsRequired/0: the file requires extension 'KHR_draco_mesh_compression', which "
+          "this loader does not implement (it implements none; the glTF spec says such a file must not be loaded)");
   // byteStride, when present: a multiple of 4 in 4..252 (tinygltf ignored 0 and negative ones).
   for (const char* stride : {"0", "-12", "6", "256", "12.5"}) {
-    EXPECT_EQ(withJson("stride.gltf", replaced(R"("byteOffset": 0, "byteLength": 224})",
-                                               R"("byteOffset": 0, "byteLength": 224, "byteStride": )" + std::string(stride) + "}")),
+    EXPECT_EQ(withJson("stride.gltf",
+                       replaced(R"("byteOffset": 0, "byteLength": 224})",
+                                R"("byteOffset": 0, "byteLength": 224, "byteStride": )" + std::string(stride) + "}")),
               dir + "/stride.gltf: error: /bufferViews/0/byteStride: " + stride +
                   " is not a multiple of 4 in 4..252 (glTF 2.0 bufferView.byteStride)");
   }
   // Versions: 2.x only, and no minVersion above 2.0.
   EXPECT_EQ(withJson("v1.gltf", replaced(R"("version": "2.0")", R"("version": "1.0")")),
             dir + "/v1.gltf: error: /asset/version: '1.0' is not a glTF 2.x version (this loader reads glTF 2.0)");
-  EXPECT_EQ(withJson("min.gltf", replaced(R"("version": "2.0")", R"("version": "2.1", "minVersion": "2.1")")),
-            dir + "/min.gltf: error: /asset/minVersion: '2.1' is not a version this loader supports (glTF 2.0), or is above "
-                  "the asset's version");
+  EXPECT_EQ(
+      withJson("min.gltf", replaced(R"("version": "2.0")", R"("version": "2.1", "minVersion": "2.1")")),
+      dir +
+          "/min.gltf: error: /asset/minVersion: '2.1' is not a version this loader supports (glTF 2.0), or is above "
+          "the asset's version");
   std::string error;
   writeText(dir + "/v21.gltf", replaced(R"("version": "2.0")", R"("version": "2.1", "minVersion": "2.0")"));
   EXPECT_TRUE(loadGltfMesh(dir + "/v21.gltf", &error)) << error;
   // URIs: a NUL used to cut the path short (here to quad.bin); %-escapes are decoded as RFC 3986
   // says, and '+' is a plus (tinygltf read it as a space).
-  EXPECT_EQ(withJson("nul.gltf", replaced(R"("uri": "quad.bin")", R"("uri": "quad.bin\u0000.png")")),
-            dir + "/nul.gltf: error: /buffers/0/uri: 'quad.bin\\u0000.png' holds a NUL character, which would cut the file "
-                  "name short");
+  EXPECT_EQ(
+      withJson("nul.gltf", replaced(R"("uri": "quad.bin")", R"("uri": "quad.bin\u0000.png")")),
+      dir +
+          "/nul.gltf: error: /buffers/0/uri: 'quad.bin\\u0000.png' holds a NUL character, which would cut the file "
+          "name short");
   EXPECT_EQ(withJson("pct.gltf", replaced(R"("uri": "quad.bin")", R"("uri": "quad.bin%00.png")")),
             dir + "/pct.gltf: error: /buffers/0/uri: 'quad.bin%00.png' has a malformed %-escape or %00 at character 8");
-  EXPECT_EQ(withJson("http.gltf", replaced(R"("uri": "quad.bin")", R"("uri": "http://example.com/quad.bin")")),
-            dir + "/http.gltf: error: /buffers/0/uri: 'http://example.com/quad.bin' is neither a relative path nor a base64 "
-                  "data: URI of type application/octet-stream or application/gltf-buffer");
+  EXPECT_EQ(
+      withJson("http.gltf", replaced(R"("uri": "quad.bin")", R"("uri": "http://example.com/quad.bin")")),
+      dir +
+          "/http.gltf: error: /buffers/0/uri: 'http://example.com/quad.bin' is neither a relative path nor a base64 "
+          "data: URI of type application/octet-stream or application/gltf-buffer");
   writeBytes(dir + "/my quad+1.bin", quadBin());
   writeText(dir + "/escaped.gltf", replaced(R"("uri": "quad.bin")", R"("uri": "my%20quad+1.bin")"));
   EXPECT_TRUE(loadGltfMesh(dir + "/escaped.gltf", &error)) << error;
   // A .glb gives each buffer without a uri a copy of its BIN chunk: only the first may omit it.
   std::string many = quadJson(R"({"byteLength": 236}, {"byteLength": 236})");
   writeBytes(dir + "/copies.glb", glb(many, quadBin()));
-  EXPECT_EQ(loadError(dir + "/copies.glb"), dir + "/copies.glb: error: /buffers/1: no uri (only the first buffer of a .glb "
-                                                  "may omit it, for the BIN chunk)");
+  EXPECT_EQ(loadError(dir + "/copies.glb"),
+            dir +
+                "/copies.glb: error: /buffers/1: no uri (only the first buffer of a .glb "
+                "may omit it, for the BIN chunk)");
   // An empty buffer (the schema's minimum is 1): tinygltf threw std::out_of_range copying a
   // .glb's BIN chunk into it, which ended the process.
   writeBytes(dir + "/empty.glb", glb(quadJson(R"({"byteLength": 0})"), quadBin()));
-  EXPECT_EQ(loadError(dir + "/empty.glb"), dir + "/empty.glb: error: /buffers/0/byteLength: expected a whole number of bytes, at least 1");
+  EXPECT_EQ(loadError(dir + "/empty.glb"),
+            dir + "/empty.glb: error: /buffers/0/byteLength: expected a whole number of bytes, at least 1");
   // tinygltf's own errors are kept short and on one line (it quotes names in full).
   const std::string name(1 << 20, 'n');
-  const std::string error2 = withJson("named.gltf", replaced(R"("meshes": [)", R"("images": [{"name": ")" + name +
-                                                                                 "\", \"uri\": \"a.png\", \"bufferView\": 0}],\n  \"meshes\": ["));
-  EXPECT_EQ(error2.rfind(dir + "/named.gltf: error: Only one of `bufferView` or `uri` should be defined", 0), 0u) << error2.substr(0, 300);
-  EXPECT_NE(error2.find("...(" ), std::string::npos);
+  const std::string error2 = withJson(
+      "named.gltf", replaced(R"("meshes": [)", R"("images": [{"name": ")" + name +
+                                                   "\", \"uri\": \"a.png\", \"bufferView\": 0}],\n  \"meshes\": ["));
+  EXPECT_EQ(error2.rfind(dir + "/named.gltf: error: Only one of `bufferView` or `uri` should be defined", 0), 0u)
+      << error2.substr(0, 300);
+  EXPECT_NE(error2.find("...("), std::string::npos);
   EXPECT_LT(error2.size(), 600u);
   EXPECT_EQ(error2.find('\n'), std::string::npos);
   // Through a scene.

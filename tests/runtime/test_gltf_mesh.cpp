@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh.h"
-#include "facet/scene/scene.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/scene/scene.h"
 #include "gltf_test_files.h"
 #include "test_compile.h"
 #include "test_support.h"
@@ -106,9 +106,10 @@ TEST(GltfMesh, NodeHierarchyPlacesTheMesh) {
 
   // A mirror (scale −1 in x) keeps triangles front-facing: the winding and the tangent's
   // handedness flip.
-  auto mirrored = loadGltfMesh(
-      writeQuad(dir, "quad.bin", R"("nodes": [{"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0]}])", "m.gltf"),
-      &error);
+  auto mirrored =
+      loadGltfMesh(writeQuad(dir, "quad.bin",
+                             R"("nodes": [{"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0]}])", "m.gltf"),
+                   &error);
   ASSERT_TRUE(mirrored) << error;
   EXPECT_EQ(mirrored->indices, (std::vector<uint32_t>{0, 2, 1, 0, 3, 2}));
   EXPECT_EQ(vertexAt(*mirrored, 2).position[0], -1.0f);
@@ -117,10 +118,11 @@ TEST(GltfMesh, NodeHierarchyPlacesTheMesh) {
   EXPECT_EQ(vertexAt(*mirrored, 2).normal[2], 1.0f);
 
   // A node reached twice (here a cycle) is an error naming it, not an endless walk.
-  EXPECT_FALSE(loadGltfMesh(writeQuad(dir, "quad.bin",
-                                      R"("nodes": [{"children": [1]}, {"mesh": 0, "children": [0]}], "scenes": [{"nodes": [0]}])",
-                                      "cycle.gltf"),
-                            &error));
+  EXPECT_FALSE(loadGltfMesh(
+      writeQuad(dir, "quad.bin",
+                R"("nodes": [{"children": [1]}, {"mesh": 0, "children": [0]}], "scenes": [{"nodes": [0]}])",
+                "cycle.gltf"),
+      &error));
   EXPECT_NE(error.find("cycle.gltf: error: /nodes/0: reached twice"), std::string::npos) << error;
 }
 
@@ -130,10 +132,10 @@ TEST(GltfMesh, SparseAccessorsSubstituteTheirElements) {
   const std::string dir = test::scratchDir("gltf-sparse");
   std::vector<uint8_t> bin;
   append<float>(&bin, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});  // 0: the quad's positions
-  append<uint16_t>(&bin, {0, 1, 2, 0, 2, 3, 0, 0});                // 48: indices, padding
-  append<uint16_t>(&bin, {2, 0});                                  // 64: sparse index 2, padding
-  append<float>(&bin, {5, 6, 0});                                  // 68: its value
-  append<uint32_t>(&bin, {0, 1, 2, 3});                            // 80: sparse indices 0..3
+  append<uint16_t>(&bin, {0, 1, 2, 0, 2, 3, 0, 0});               // 48: indices, padding
+  append<uint16_t>(&bin, {2, 0});                                 // 64: sparse index 2, padding
+  append<float>(&bin, {5, 6, 0});                                 // 68: its value
+  append<uint32_t>(&bin, {0, 1, 2, 3});                           // 80: sparse indices 0..3
   append<float>(&bin, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});  // 96: their values
   writeBytes(dir + "/sparse.bin", bin);
   // bufferView 0: positions, 1: indices, 2: the sparse data (offsets above minus 64).
@@ -169,9 +171,10 @@ TEST(GltfMesh, SparseAccessorsSubstituteTheirElements) {
   EXPECT_FALSE(loadGltfMesh(write("past.gltf", R"({"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3",
       "sparse": {"count": 1, "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 2, "byteOffset": 4}}})"),
                             &error));
-  EXPECT_NE(error.find("past.gltf: error: /meshes/0/primitives/0/attributes/POSITION: accessor 0 sparse index 2 (entry 0) "
-                       "is past the elements"),
-            std::string::npos)
+  EXPECT_NE(
+      error.find("past.gltf: error: /meshes/0/primitives/0/attributes/POSITION: accessor 0 sparse index 2 (entry 0) "
+                 "is past the elements"),
+      std::string::npos)
       << error;
 }
 
@@ -194,7 +197,8 @@ TEST(GltfMesh, PlacedVertexTotalIsBounded) {
     "scenes": [{"nodes": [0, 1, 2, 3, 4]}]})");
   std::string error;
   EXPECT_FALSE(loadGltfMesh(dir + "/many.gltf", &error));
-  EXPECT_NE(error.find("many.gltf: error: /nodes/4/mesh: the file places more than 4194304 vertices"), std::string::npos)
+  EXPECT_NE(error.find("many.gltf: error: /nodes/4/mesh: the file places more than 4194304 vertices"),
+            std::string::npos)
       << error;
 }
 
@@ -202,7 +206,8 @@ TEST(GltfMesh, BadFilesGiveErrorsNamingTheFileAndField) {
   const std::string dir = test::scratchDir("gltf-errors");
   std::string error;
   EXPECT_FALSE(loadGltfMesh(dir + "/missing.gltf", &error));
-  EXPECT_NE(error.find("missing.gltf: error: cannot open the glTF file: it does not exist"), std::string::npos) << error;
+  EXPECT_NE(error.find("missing.gltf: error: cannot open the glTF file: it does not exist"), std::string::npos)
+      << error;
   std::filesystem::create_directory(dir + "/folder.gltf");
   EXPECT_FALSE(loadGltfMesh(dir + "/folder.gltf", &error));
   EXPECT_NE(error.find("not a regular file"), std::string::npos) << error;
@@ -214,9 +219,10 @@ TEST(GltfMesh, BadFilesGiveErrorsNamingTheFileAndField) {
   writeQuad(dir);
   const std::string escaping = writeQuad(dir + "/sub", "../quad.bin");
   EXPECT_FALSE(loadGltfMesh(escaping, &error));
-  EXPECT_NE(error.find("sub/quad.gltf: error: /buffers/0/uri: '../quad.bin' is outside the folder this glTF file may read "
-                       "buffers from"),
-            std::string::npos)
+  EXPECT_NE(
+      error.find("sub/quad.gltf: error: /buffers/0/uri: '../quad.bin' is outside the folder this glTF file may read "
+                 "buffers from"),
+      std::string::npos)
       << error;
   // An index past the vertices.
   std::string text = test::readText(writeQuad(dir));
@@ -245,7 +251,8 @@ TEST(GltfMesh, SceneObjectDrawsAGltfMeshInsideTheScenesFolder) {
   writeQuad(dir);
   const auto sceneWith = [](const std::string& mesh) {
     return R"({"width": 32, "height": 32, "sky": {"luminance": 6000}, "camera": {"position": [0, 0, 4], "fovY": 40},
-      "objects": [{"mesh": ")" + mesh + R"(", "material": "flat_colour"}, {"mesh": ")" + mesh +
+      "objects": [{"mesh": ")" +
+           mesh + R"(", "material": "flat_colour"}, {"mesh": ")" + mesh +
            R"(", "material": "flat_colour", "position": [5, 0, 0]}]})";
   };
   std::string error;

@@ -10,8 +10,8 @@
 #include <filesystem>
 
 #include "facet/runtime/render_backend.h"
-#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/scene/scene.h"
 #include "test_compile.h"
 #include "test_support.h"
 
@@ -46,13 +46,15 @@ TEST(HdrFormat, FrameGraphCountsHalfTheHdrBytes) {
   fg::CompiledGraph wide, packed;
   std::string error;
   ASSERT_TRUE(buildForwardPostGraph(1920, 1080, PostPath::Separate, false).graph.compile(&wide, &error)) << error;
-  ASSERT_TRUE(buildForwardPostGraph(1920, 1080, PostPath::Separate, false, HdrFormat::R11G11B10Float).graph.compile(&packed, &error))
+  ASSERT_TRUE(buildForwardPostGraph(1920, 1080, PostPath::Separate, false, HdrFormat::R11G11B10Float)
+                  .graph.compile(&packed, &error))
       << error;
-  EXPECT_EQ(wide.storedBytes(), 16588800u + 8294400u);  // HDR 8 B/pixel + LDR
+  EXPECT_EQ(wide.storedBytes(), 16588800u + 8294400u);   // HDR 8 B/pixel + LDR
   EXPECT_EQ(packed.storedBytes(), 8294400u + 8294400u);  // HDR 4 B/pixel + LDR
   EXPECT_EQ(packed.sampledBytes(), 8294400u);
   fg::CompiledGraph merged;
-  ASSERT_TRUE(buildForwardPostGraph(1920, 1080, PostPath::Merged, false, HdrFormat::R11G11B10Float).graph.compile(&merged, &error));
+  ASSERT_TRUE(buildForwardPostGraph(1920, 1080, PostPath::Merged, false, HdrFormat::R11G11B10Float)
+                  .graph.compile(&merged, &error));
   EXPECT_EQ(merged.storedBytes(), 8294400u) << "merged: HDR never leaves the tile, whatever its format";
   EXPECT_STREQ(toString(HdrFormat::R11G11B10Float), "r11g11b10f");
 }

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/render_backend.h"
 #include "test_compile.h"
 
 namespace facet::runtime {
@@ -19,9 +19,8 @@ constexpr uint32_t kWidth = 32, kHeight = 16;
 
 std::shared_ptr<Material> flatColourMaterial() {
   const std::string packages = test::writePackagesFromTexts(
-      "material-instance",
-      {"material flat_colour { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n"
-       " param gain: float = 1.0 in [0, 4]\n surface { baseColor = params.c * params.gain } }"});
+      "material-instance", {"material flat_colour { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n"
+                            " param gain: float = 1.0 in [0, 4]\n surface { baseColor = params.c * params.gain } }"});
   std::string error;
   auto loaded = LoadedMaterial::load(packages + "/flat_colour.matpkg", &error);
   EXPECT_TRUE(loaded) << error;
@@ -40,9 +39,7 @@ Mesh leftHalf() {
   return mesh;
 }
 
-std::array<float, 16> translationX(float x) {
-  return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 0, 1};
-}
+std::array<float, 16> translationX(float x) { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 0, 1}; }
 
 FrameDesc frameOf(const MaterialInstance& left, const MaterialInstance& right, const Mesh& mesh) {
   FrameDesc frame;

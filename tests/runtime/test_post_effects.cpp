@@ -5,16 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/color_grading.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
-#include "facet/scene/scene.h"
-#include "facet/runtime/vignette.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/runtime/vignette.h"
+#include "facet/scene/scene.h"
 #include "test_compile.h"
 #include "test_support.h"
 
@@ -143,9 +143,11 @@ TEST(PostEffects, AnEffectNotBuiltInIsRefusedAtCreation) {
   facet::runtime::VulkanOptions vk;
   vk.post.toneCurve = "filmic";
   EXPECT_FALSE(facet::runtime::createVulkanBackend(vk, &error));
-  EXPECT_NE(error.find("no post variant with tone curve 'filmic' (built in: tone curves aces, neutral, none, each with any of "
-                       "colour grading, vignette and dithering)"),
-            std::string::npos) << error;
+  EXPECT_NE(error.find(
+                "no post variant with tone curve 'filmic' (built in: tone curves aces, neutral, none, each with any of "
+                "colour grading, vignette and dithering)"),
+            std::string::npos)
+      << error;
   facet::runtime::GlOptions gl;
   gl.post.toneCurve = "filmic";
   EXPECT_FALSE(facet::runtime::createGlBackend(gl, &error));
@@ -154,12 +156,14 @@ TEST(PostEffects, AnEffectNotBuiltInIsRefusedAtCreation) {
 
 TEST(PostEffects, SceneNamesThePostEffects) {
   std::string error;
-  auto scene = facet::runtime::parseScene("s.json", R"({"post": {"toneCurve": "neutral", "dither": true}, "objects": []})", &error);
+  auto scene = facet::runtime::parseScene(
+      "s.json", R"({"post": {"toneCurve": "neutral", "dither": true}, "objects": []})", &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_EQ(scene->post, (PostSettings{"neutral", true, false, false}));
   EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"post": {"toneCurve": "filmic"}, "objects": []})", &error));
   EXPECT_NE(error.find("s.json: error: /post/toneCurve: expected \"aces\", \"neutral\" or \"none\", not 'filmic'"),
-            std::string::npos) << error;
+            std::string::npos)
+      << error;
   EXPECT_FALSE(facet::runtime::parseScene("s.json", R"({"post": {"dither": 1}, "objects": []})", &error));
   EXPECT_NE(error.find("/post/dither: expected true or false"), std::string::npos) << error;
 }
@@ -222,7 +226,8 @@ TEST(PostEffects, GradingVariantWithoutALutIsAnErrorNotACrash) {
   ASSERT_TRUE(backend) << error;
   FrameResult result;
   EXPECT_FALSE(backend->render(sphere().frame->frame(), &result, &error));
-  EXPECT_NE(error.find("the post variant grades colour, so the frame needs a colorLut of 32³ RGBA16F texels"), std::string::npos)
+  EXPECT_NE(error.find("the post variant grades colour, so the frame needs a colorLut of 32³ RGBA16F texels"),
+            std::string::npos)
       << error;
 }
 
@@ -240,7 +245,9 @@ TEST(PostEffects, VignetteDarkensTheCornersAndNotTheCentre) {
       const FrameResult dark = render(api, {"aces", false, false, true}, frame, path);
       ASSERT_EQ(plain.ldr.size(), size_t(w) * h * 4);
       ASSERT_EQ(plain.ldr.size(), dark.ldr.size());
-      auto at = [&](const FrameResult& r, uint32_t x, uint32_t y, int c) { return int(r.ldr[(size_t(y) * w + x) * 4 + size_t(c)]); };
+      auto at = [&](const FrameResult& r, uint32_t x, uint32_t y, int c) {
+        return int(r.ldr[(size_t(y) * w + x) * 4 + size_t(c)]);
+      };
       for (int c = 0; c < 3; ++c) {
         EXPECT_EQ(at(dark, w / 2, h / 2, c), at(plain, w / 2, h / 2, c));
         for (auto [x, y] : {std::pair{0u, 0u}, {w - 1, 0u}, {0u, h - 1}, {w - 1, h - 1}}) {
@@ -295,8 +302,9 @@ struct GradientFrame {
 
 std::unique_ptr<GradientFrame> slowGradient(uint32_t width, uint32_t height) {
   const std::string packages = facet::test::writePackagesFromTexts(
-      "post-gradient", {"material gradient { shading unlit\n param lo: float = 0.5 in [0, 16]\n param hi: float = 0.9 in [0, 16]\n"
-                        " surface { baseColor = vec3(params.lo + (params.hi - params.lo) * vertex.uv0.x) } }"});
+      "post-gradient",
+      {"material gradient { shading unlit\n param lo: float = 0.5 in [0, 16]\n param hi: float = 0.9 in [0, 16]\n"
+       " surface { baseColor = vec3(params.lo + (params.hi - params.lo) * vertex.uv0.x) } }"});
   std::string error;
   auto loaded = facet::runtime::LoadedMaterial::load(packages + "/gradient.matpkg", &error);
   EXPECT_TRUE(loaded) << error;

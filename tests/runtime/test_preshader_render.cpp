@@ -8,9 +8,9 @@
 #include <cstring>
 #include <filesystem>
 
-#include "facet/runtime/render_backend.h"
-#include "facet/runtime/material_instance.h"
 #include "facet/package/package_reader.h"
+#include "facet/runtime/material_instance.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_compile.h"
 #include "test_support.h"

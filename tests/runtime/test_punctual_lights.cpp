@@ -8,10 +8,10 @@
 #include <memory>
 #include <string>
 
+#include "facet/eval/standard_model.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
-#include "facet/eval/standard_model.h"
 #include "sphere_pixels.h"
 #include "test_compile.h"
 #include "test_images.h"
@@ -22,8 +22,9 @@ namespace {
 using facet::permutations::VariantKey;
 using facet::runtime::FrameResult;
 
-const char* kPlastic = "material plastic { param c: color = vec3(0.8, 0.3, 0.2)\n"
-                       " surface { baseColor = params.c roughness = 0.35 } }";
+const char* kPlastic =
+    "material plastic { param c: color = vec3(0.8, 0.3, 0.2)\n"
+    " surface { baseColor = params.c roughness = 0.35 } }";
 
 // Compiles `plastic` with every point-light permutation (as `matc compile --point-lights
 // 0,1,2,4` does) for the given tiers.
@@ -42,7 +43,8 @@ bool render(const std::string& json, const std::string& packages, facet::runtime
 }
 
 // The light model of chunks/light_punctual.glsl, in double.
-glm::dvec3 punctualIlluminance(const facet::runtime::PunctualLight& light, double exposure, glm::dvec3 p, glm::dvec3* l) {
+glm::dvec3 punctualIlluminance(const facet::runtime::PunctualLight& light, double exposure, glm::dvec3 p,
+                               glm::dvec3* l) {
   glm::dvec3 toLight = light.position - p;
   double d2 = glm::dot(toLight, toLight);
   *l = toLight / std::sqrt(d2);
@@ -50,7 +52,8 @@ glm::dvec3 punctualIlluminance(const facet::runtime::PunctualLight& light, doubl
   double window = std::clamp(1.0 - ratio * ratio, 0.0, 1.0);
   double cone = 1;
   if (light.spot) {
-    double cosInner = std::cos(glm::radians(light.innerAngleDegrees)), cosOuter = std::cos(glm::radians(light.outerAngleDegrees));
+    double cosInner = std::cos(glm::radians(light.innerAngleDegrees)),
+           cosOuter = std::cos(glm::radians(light.outerAngleDegrees));
     double scale = 1.0 / std::max(cosInner - cosOuter, 1e-4);
     cone = std::clamp(glm::dot(-*l, glm::normalize(light.direction)) * scale - cosOuter * scale, 0.0, 1.0);
   }
@@ -65,7 +68,8 @@ TEST(PointLightKeys, CountsRoundUpToAPermutationAndKeysRoundTrip) {
   EXPECT_EQ(facet::permutations::pointLightPermutation(5), std::nullopt);
   // Keys without point lights read as before the axis existed.
   EXPECT_EQ(facet::permutations::requestKey({true}, facet::permutations::Tier::High, true, 0).toString(), "high.dir1");
-  EXPECT_EQ(facet::permutations::requestKey({true}, facet::permutations::Tier::Mid, false, 3).toString(), "mid.dir0.pt4");
+  EXPECT_EQ(facet::permutations::requestKey({true}, facet::permutations::Tier::Mid, false, 3).toString(),
+            "mid.dir0.pt4");
   EXPECT_EQ(facet::permutations::requestKey({false}, facet::permutations::Tier::Mid, true, 3).toString(), "mid.dir0");
   for (const char* text : {"high.dir1", "mid.dir0.pt1", "reference.dir1.pt4"}) {
     auto key = VariantKey::parse(text);
@@ -131,27 +135,30 @@ TEST(PunctualLights, PixelsMatchCpuEvaluation) {
   surface.roughness = 0.35;
   int checked = 0, lit = 0, dark = 0;
   double worst = 0, worstGl = 0;  // error over the tolerance's scale, 1 % + 0.002
-  facet::test::forEachSpherePixel(*scene, 4, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3 p, glm::dvec3 n, glm::dvec3 v) {
-    glm::dvec3 expected(0);
-    for (const auto& light : scene->lights) {
-      glm::dvec3 l;
-      glm::dvec3 e = punctualIlluminance(light, frame->exposure(), p, &l);
-      expected += facet::reference::shadeStandard(surface, n, v, l, e, glm::dvec3(0));
-    }
-    size_t at = (size_t(y) * scene->width + x) * 4;
-    for (size_t ch = 0; ch < 3; ++ch) {
-      const double vulkan = got.hdr[at + ch], opengl = glGot.hdr[at + ch], scale = 0.01 * expected[int(ch)] + 0.002;
-      worst = std::max(worst, std::abs(vulkan - expected[int(ch)]) / scale);
-      worstGl = std::max(worstGl, std::abs(opengl - vulkan) / scale);
-      EXPECT_LE(std::abs(vulkan - expected[int(ch)]), scale)
-          << "pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << vulkan << ", CPU " << expected[int(ch)];
-    }
-    lit += expected.r > 0.05;
-    dark += expected.r < 1e-3;
-    ++checked;
-  });
-  std::printf("punctual lights: %d pixels checked (%d lit, %d unlit); worst error / tolerance: Vulkan vs CPU %.3f, "
-              "GL vs Vulkan %.3f\n", checked, lit, dark, worst, worstGl);
+  facet::test::forEachSpherePixel(
+      *scene, 4, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3 p, glm::dvec3 n, glm::dvec3 v) {
+        glm::dvec3 expected(0);
+        for (const auto& light : scene->lights) {
+          glm::dvec3 l;
+          glm::dvec3 e = punctualIlluminance(light, frame->exposure(), p, &l);
+          expected += facet::reference::shadeStandard(surface, n, v, l, e, glm::dvec3(0));
+        }
+        size_t at = (size_t(y) * scene->width + x) * 4;
+        for (size_t ch = 0; ch < 3; ++ch) {
+          const double vulkan = got.hdr[at + ch], opengl = glGot.hdr[at + ch], scale = 0.01 * expected[int(ch)] + 0.002;
+          worst = std::max(worst, std::abs(vulkan - expected[int(ch)]) / scale);
+          worstGl = std::max(worstGl, std::abs(opengl - vulkan) / scale);
+          EXPECT_LE(std::abs(vulkan - expected[int(ch)]), scale) << "pixel (" << x << ", " << y << ") channel " << ch
+                                                                 << ": GPU " << vulkan << ", CPU " << expected[int(ch)];
+        }
+        lit += expected.r > 0.05;
+        dark += expected.r < 1e-3;
+        ++checked;
+      });
+  std::printf(
+      "punctual lights: %d pixels checked (%d lit, %d unlit); worst error / tolerance: Vulkan vs CPU %.3f, "
+      "GL vs Vulkan %.3f\n",
+      checked, lit, dark, worst, worstGl);
   EXPECT_GT(lit, 50);
   EXPECT_GT(dark, 10);  // the side neither light reaches
   EXPECT_LE(worstGl, 1.0);
@@ -163,7 +170,8 @@ TEST(PunctualLights, PaddedPermutationAddsUpLikeSeparateLights) {
   const std::string packages = plasticPackages("point-padding");
   auto scene = [](const std::string& lights) {
     return R"({"width": 64, "height": 64, "tier": "high", "camera": {"position": [0, 0, 5], "fovY": 30, "aperture": 1.4,
-      "shutter": 0.02}, "lights": [)" + lights + R"(], "objects": [{"material": "plastic"}]})";
+      "shutter": 0.02}, "lights": [)" +
+           lights + R"(], "objects": [{"material": "plastic"}]})";
   };
   const std::string a = R"({"type": "point", "position": [1.5, 1.5, 1.5], "intensity": 200})";
   const std::string b = R"({"type": "point", "position": [-1.5, 0, 2], "intensity": 150, "color": [0.5, 0.7, 1]})";

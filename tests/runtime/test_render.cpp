@@ -2,17 +2,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "facet/runtime/render_backend.h"
-#include "facet/permutations/variant_key.h"
-#include "facet/runtime/scene_frame.h"
 #include "dfg_lookup.h"
-#include "reference/specular_tiers.h"
 #include "facet/eval/standard_model.h"
+#include "facet/permutations/variant_key.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/scene_frame.h"
+#include "reference/specular_tiers.h"
 #include "sphere_pixels.h"
 #include "test_compile.h"
 #include "test_support.h"
@@ -72,7 +72,8 @@ class SphereScene : public ::testing::Test {
 // steep and interpolation order moves the value by a few fp16 steps (0.5186 vs 0.5146).
 TEST_F(SphereScene, VulkanAndGlAgreePixelByPixel) {
   int maxLdr = 0;
-  for (size_t i = 0; i < vulkan_->ldr.size(); ++i) maxLdr = std::max(maxLdr, std::abs(int(vulkan_->ldr[i]) - int(gl_->ldr[i])));
+  for (size_t i = 0; i < vulkan_->ldr.size(); ++i)
+    maxLdr = std::max(maxLdr, std::abs(int(vulkan_->ldr[i]) - int(gl_->ldr[i])));
   EXPECT_LE(maxLdr, 1);
   for (size_t i = 0; i < vulkan_->hdr.size(); ++i) {
     double a = vulkan_->hdr[i], b = gl_->hdr[i];
@@ -121,7 +122,7 @@ TEST_F(SphereScene, PixelsMatchCpuEvaluationOfTheBrdf) {
       double relative = std::abs(got[ch] - expected[ch]) / (expected[ch] + 0.01);
       worst = std::max(worst, relative);
       EXPECT_LE(relative, 0.01) << "pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got[ch] << ", CPU "
-                              << expected[ch];
+                                << expected[ch];
     }
     ++checked;
   });
@@ -137,13 +138,17 @@ TEST(SceneErrors, VariantNotBuiltForTheSceneIsAClearError) {
   auto built = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"), options);
   ASSERT_TRUE(built);
   std::string packages = facet::test::scratchDir("two-tier-packages");
-  ASSERT_TRUE(facet::package::writeFile(packages + "/red_plastic.matpkg", facet::package::write(built->package), &error));
-  auto scene = facet::runtime::parseScene("lowend.json", R"({"tier": "low", "sun": {}, "objects": [{"material": "red_plastic"}]})", &error);
+  ASSERT_TRUE(
+      facet::package::writeFile(packages + "/red_plastic.matpkg", facet::package::write(built->package), &error));
+  auto scene = facet::runtime::parseScene(
+      "lowend.json", R"({"tier": "low", "sun": {}, "objects": [{"material": "red_plastic"}]})", &error);
   ASSERT_TRUE(scene) << error;
   auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
   EXPECT_FALSE(frame);
-  EXPECT_NE(error.find("was not built with variant 'low.dir1' (built: reference.dir0, reference.dir1, high.dir0, high.dir1)"),
-            std::string::npos) << error;
+  EXPECT_NE(
+      error.find("was not built with variant 'low.dir1' (built: reference.dir0, reference.dir1, high.dir0, high.dir1)"),
+      std::string::npos)
+      << error;
 }
 
 TEST(SceneErrors, MalformedSceneJsonReportsLineAndColumn) {
@@ -189,7 +194,8 @@ int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) 
   return a.size() == b.size() ? d : 256;
 }
 
-const char* kTwoSpheres = R"({"width": 96, "height": 64, "sun": {"direction": [-0.4, -0.55, -0.73]}, "sky": {"luminance": 6000},
+const char* kTwoSpheres =
+    R"({"width": 96, "height": 64, "sun": {"direction": [-0.4, -0.55, -0.73]}, "sky": {"luminance": 6000},
   "camera": {"position": [0, 0, 6], "fovY": 30},
   "objects": [{"material": "%s", "position": [-1.1, 0, 0]}, {"material": "%s", "position": [1.1, 0, 0]%s}]})";
 
@@ -252,13 +258,15 @@ TEST(Textures, UnreadableImageIsAClearErrorNotACrash) {
   std::string dir = facet::test::scratchDir("bad-image");
   { std::ofstream(dir + "/broken.png", std::ios::binary) << std::string("\x89PNG\r\n\x1a\nnot really", 18); }
   std::string error;
-  auto scene = facet::runtime::parseScene(dir + "/scene.json",
+  auto scene = facet::runtime::parseScene(
+      dir + "/scene.json",
       R"({"sun": {}, "objects": [{"material": "painted_tiles", "params": {"albedo": "broken.png"}}]})", &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
   EXPECT_NE(error.find("broken.png: cannot read image"), std::string::npos) << error;
 
-  scene = facet::runtime::parseScene(dir + "/scene.json",
+  scene = facet::runtime::parseScene(
+      dir + "/scene.json",
       R"({"sun": {}, "objects": [{"material": "red_plastic", "params": {"roughness": "tiles.png"}}]})", &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
@@ -274,9 +282,10 @@ struct Rgb {
 // The HDR colour at the centre of a 32×32 render of one unit sphere with `material`.
 Rgb centreOf(facet::runtime::RenderBackend& backend, const std::string& packages, const std::string& material,
              const std::string& params) {
-  std::string json = R"({"width": 32, "height": 32, "sun": {"direction": [-0.3, -0.5, -0.8]}, "sky": {"luminance": 6000},
-    "camera": {"position": [0, 0, 4], "fovY": 40}, "objects": [{"material": ")" + material + R"(", "params": {)" +
-                     params + "}}]}";
+  std::string json =
+      R"({"width": 32, "height": 32, "sun": {"direction": [-0.3, -0.5, -0.8]}, "sky": {"luminance": 6000},
+    "camera": {"position": [0, 0, 4], "fovY": 40}, "objects": [{"material": ")" +
+      material + R"(", "params": {)" + params + "}}]}";
   std::string error;
   FrameResult result;
   EXPECT_TRUE(renderScene(json, packages, backend, &result, &error)) << error;
@@ -300,13 +309,12 @@ void expectNear(Rgb got, Rgb want, const char* what) {
 TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
   const std::string surface = "baseColor = vec3(0.8, 0.2, 0.1)\n roughness = 0.6\n";
   std::string packages = facet::test::writePackagesFromTexts(
-      "blending",
-      {"material solid { surface { " + surface + " } }",
-       "material glass { blending transparent\n param a: float = 0.25 in [0, 1]\n surface { " + surface +
-           " alpha = params.a } }",
-       "material glow { blending additive\n surface { " + surface + " } }",
-       "material cutout { blending masked(0.5)\n param a: float = 0 in [0, 1]\n surface { " + surface +
-           " alpha = params.a } }"});
+      "blending", {"material solid { surface { " + surface + " } }",
+                   "material glass { blending transparent\n param a: float = 0.25 in [0, 1]\n surface { " + surface +
+                       " alpha = params.a } }",
+                   "material glow { blending additive\n surface { " + surface + " } }",
+                   "material cutout { blending masked(0.5)\n param a: float = 0 in [0, 1]\n surface { " + surface +
+                       " alpha = params.a } }"});
   std::string error;
   auto vk = facet::runtime::createVulkanBackend({true}, &error);
   auto gl = facet::runtime::createGlBackend(&error);
@@ -338,17 +346,19 @@ TEST(Blending, EveryModeCompositesAsItsFormulaSays) {
 // 51 (0.8, 0.4, 0.2).
 TEST(LowTier, UnlitOutputIsTheSrgbDecodeAsInEveryTier) {
   std::string packages = facet::test::writePackagesFromTexts(
-      "low-unlit",
-      {"material flat_colour { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor = params.c } }",
-       "material flat_texture { shading unlit\n param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
-       " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"});
+      "low-unlit", {"material flat_colour { shading unlit\n param c: color = vec3(0.8, 0.4, 0.2)\n surface { baseColor "
+                    "= params.c } }",
+                    "material flat_texture { shading unlit\n param t: texture(srgb) = vec4(0.8, 0.4, 0.2, 1.0)\n"
+                    " surface { baseColor = sample(params.t, vertex.uv0).rgb } }"});
   std::string error;
   auto vk = facet::runtime::createVulkanBackend({true}, &error);
   auto gl = facet::runtime::createGlBackend(&error);
   ASSERT_TRUE(vk && gl) << error;
-  const auto render = [&](facet::runtime::RenderBackend& backend, const std::string& material, const std::string& tier) {
+  const auto render = [&](facet::runtime::RenderBackend& backend, const std::string& material,
+                          const std::string& tier) {
     std::string json = R"({"width": 32, "height": 32, "tier": ")" + tier + R"(", "sky": {"luminance": 6000},
-      "camera": {"position": [0, 0, 4], "fovY": 40}, "objects": [{"material": ")" + material + R"("}]})";
+      "camera": {"position": [0, 0, 4], "fovY": 40}, "objects": [{"material": ")" +
+                       material + R"("}]})";
     FrameResult result;
     EXPECT_TRUE(renderScene(json, packages, backend, &result, &error)) << error;
     if (result.hdr.empty()) return Rgb{-1, -1, -1};
@@ -394,14 +404,14 @@ TEST(LowTier, ColourParametersStayAsAuthoredForTheGammaHack) {
   EXPECT_NEAR(floats(*linear)[0], 0.21404, 1e-5);  // the linear tiers still decode
 }
 
-// The low tier's brushed_gold (a metal: no diffuse; the sky is switched off, so no ambient) against the documented formula in
-// double (chunks/specular_lut_lobe.glsl): HDR = S · E_dfg · c_ms · E · n·l with S the table sampled bilinearly at
-// u = max(R·L, 0)⁴, v = roughness, decoded as its square × 16/π (√ encoding; each row already divided by its lobe's
-// albedo), E_dfg = f0 · A + B the environment BRDF and c_ms = 1 + f0 (1/albedo − 1) the energy compensation, both from the
-// DFG table at (n·v, r), and f0 the tint, linear. The tessellated sphere's normals differ
-// from the analytic one's and the table is steep in the highlight, so each point accepts the
-// range the formula takes for R·L within ±0.01 of the analytic value, widened by one table step
-// (see `lsb`), ±1 % ± 0.002. A wrong scale, table, f0 encoding or output square fails it.
+// The low tier's brushed_gold (a metal: no diffuse; the sky is switched off, so no ambient) against the documented
+// formula in double (chunks/specular_lut_lobe.glsl): HDR = S · E_dfg · c_ms · E · n·l with S the table sampled
+// bilinearly at u = max(R·L, 0)⁴, v = roughness, decoded as its square × 16/π (√ encoding; each row already divided by
+// its lobe's albedo), E_dfg = f0 · A + B the environment BRDF and c_ms = 1 + f0 (1/albedo − 1) the energy compensation,
+// both from the DFG table at (n·v, r), and f0 the tint, linear. The tessellated sphere's normals differ from the
+// analytic one's and the table is steep in the highlight, so each point accepts the range the formula takes for R·L
+// within ±0.01 of the analytic value, widened by one table step (see `lsb`), ±1 % ± 0.002. A wrong scale, table, f0
+// encoding or output square fails it.
 TEST(LowTier, MetalPixelsMatchTheLutFormula) {
   std::string error;
   std::string packages = compileExamplePackages();
@@ -447,9 +457,10 @@ TEST(LowTier, MetalPixelsMatchTheLutFormula) {
   auto decode = [&](double e) { return std::max(e, 0.0) * std::max(e, 0.0) * scale; };
 
   const auto& cam = scene->camera;
-  glm::dmat4 inverse = glm::inverse(glm::perspective(glm::radians(cam.fovYDegrees), double(scene->width) / scene->height,
-                                                     cam.nearPlane, cam.farPlane) *
-                                    glm::lookAt(cam.position, cam.target, cam.up));
+  glm::dmat4 inverse =
+      glm::inverse(glm::perspective(glm::radians(cam.fovYDegrees), double(scene->width) / scene->height, cam.nearPlane,
+                                    cam.farPlane) *
+                   glm::lookAt(cam.position, cam.target, cam.up));
   const auto& f = frame->frame().frame;
   glm::dvec3 l(f.lightDirection[0], f.lightDirection[1], f.lightDirection[2]);
   glm::dvec3 light(f.lightColor[0], f.lightColor[1], f.lightColor[2]);

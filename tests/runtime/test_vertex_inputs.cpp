@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "test_compile.h"
 #include "test_support.h"
@@ -21,7 +21,8 @@ using facet::runtime::Vertex;
 
 // One object 6 units in front of the camera, lit by a low sun from the right so that tilting
 // the normal about the y axis changes n·l a lot.
-const char* kScene = R"({"width": 64, "height": 64, "sun": {"direction": [-0.8, -0.1, -0.6]}, "sky": {"luminance": 2000},
+const char* kScene =
+    R"({"width": 64, "height": 64, "sun": {"direction": [-0.8, -0.1, -0.6]}, "sky": {"luminance": 2000},
   "camera": {"position": [0, 0, 6], "fovY": 30}, "objects": [{"material": "%s"}]})";
 
 // A unit quad facing +z (towards the camera), wound counter-clockwise, every vertex alike but for
@@ -55,8 +56,8 @@ Backends& backends() {
 }
 
 // Renders material `name` (from `packages`) on `mesh` with the given backend.
-bool render(const std::string& packages, const std::string& name, const Mesh& mesh, facet::runtime::RenderBackend& backend,
-            FrameResult* out, std::string* error) {
+bool render(const std::string& packages, const std::string& name, const Mesh& mesh,
+            facet::runtime::RenderBackend& backend, FrameResult* out, std::string* error) {
   char json[512];
   std::snprintf(json, sizeof json, kScene, name.c_str());
   auto scene = facet::runtime::parseScene(facet::test::examplePath("scenes/inline.json"), json, error);
@@ -172,7 +173,8 @@ TEST_P(VertexInputs, ColourUv1AndViewDirectionReachTheSurface) {
     std::array<float, 3> expected;
   };
   // The camera sits on +z looking at the quad's centre: the view direction there is (0, 0, 1).
-  const Case cases[] = {{"colour", {0.125f, 0.25f, 0.5f}}, {"uv", {0.375f, 0.75f, 0.25f}}, {"view", {0.5f, 0.5f, 1.0f}}};
+  const Case cases[] = {
+      {"colour", {0.125f, 0.25f, 0.5f}}, {"uv", {0.375f, 0.75f, 0.25f}}, {"view", {0.5f, 0.5f, 1.0f}}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.material);
     FrameResult r;

@@ -26,8 +26,7 @@ struct AllocatorFixture {
   BufferAllocation make(VkDeviceSize size) {
     BufferAllocation a;
     std::string error;
-    EXPECT_TRUE(allocator.create(size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, BufferUse::DeviceRead, &a, &error))
-        << error;
+    EXPECT_TRUE(allocator.create(size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, BufferUse::DeviceRead, &a, &error)) << error;
     return a;
   }
 };

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "app_vulkan.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/vulkan_backend.h"
-#include "app_vulkan.h"
 #include "vk_test_frames.h"
 
 namespace facet::runtime {
@@ -77,8 +77,8 @@ struct AppFixture {
   }
   void expectNoValidationErrors() const {
     const auto& errors = app.validationErrors;
-    EXPECT_TRUE(errors.empty()) << errors.size() << " validation errors, first: "
-                                << (errors.empty() ? "" : errors.front());
+    EXPECT_TRUE(errors.empty()) << errors.size()
+                                << " validation errors, first: " << (errors.empty() ? "" : errors.front());
   }
 };
 
@@ -173,7 +173,7 @@ TEST(VulkanAppFrames, RecordedFramesInFlightMatchRender) {
   constexpr int kFrames = 6;
   struct Run {
     PostPath path;
-    bool staged;  // uploads through staging copies recorded into the app's command buffer
+    bool staged;              // uploads through staging copies recorded into the app's command buffer
     VkImageUsageFlags usage;  // COLOR_ATTACHMENT: rendered into; TRANSFER_DST: copied into
   };
   constexpr VkImageUsageFlags kRendered = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
-#include "facet/runtime/mesh.h"
 #include "facet/abi/shader_abi.h"
+#include "facet/runtime/mesh.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/runtime/vulkan_backend.h"
 
 #include "vk_test_frames.h"
@@ -60,10 +60,8 @@ void expectHdr(const FrameResult& result, uint32_t row, uint32_t col, const Rgba
 // What templates/post_tonemap.frag.glsl computes (chunks/tonemap_aces.glsl, chunks/srgb.glsl).
 uint8_t expectedLdr(float hdr) {
   const float x = std::clamp(hdr, 0.0f, 160.0f);
-  const float mapped =
-      std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-  const float srgb =
-      mapped < 0.0031308f ? mapped * 12.92f : 1.055f * std::pow(mapped, 1.0f / 2.4f) - 0.055f;
+  const float mapped = std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+  const float srgb = mapped < 0.0031308f ? mapped * 12.92f : 1.055f * std::pow(mapped, 1.0f / 2.4f) - 0.055f;
   return static_cast<uint8_t>(std::lround(srgb * 255.0f));
 }
 
@@ -81,8 +79,7 @@ TEST(VulkanBackend, ClearColourReachesHdrAndLdrTargets) {
   // Not square, so a swapped width and height shows.
   FrameResult result = renderOrFail(*backend, emptyFrame(8, 5, kClear));
   ASSERT_EQ(result.hdr.size(), 8u * 5u * 4u);
-  const uint8_t want[4] = {expectedLdr(kClear.r), expectedLdr(kClear.g), expectedLdr(kClear.b),
-                           255};
+  const uint8_t want[4] = {expectedLdr(kClear.r), expectedLdr(kClear.g), expectedLdr(kClear.b), 255};
   for (uint32_t row = 0; row < 5; ++row) {
     for (uint32_t col = 0; col < 8; ++col) {
       expectHdr(result, row, col, kClear);
@@ -216,8 +213,8 @@ TEST(VulkanBackend, ValidationReportsNoErrors) {
   for (int i = 0; i < 100; ++i) frame.draws.push_back(solidDraw(farMesh, kGreen));
   renderOrFail(*backend, frame);
   EXPECT_TRUE(backend->validationErrors().empty())
-      << backend->validationErrors().size() << " errors, first: "
-      << (backend->validationErrors().empty() ? "" : backend->validationErrors().front());
+      << backend->validationErrors().size()
+      << " errors, first: " << (backend->validationErrors().empty() ? "" : backend->validationErrors().front());
 }
 
 // A grid of `count` objects of 2x2 pixels sharing one mesh, each with its own persistent

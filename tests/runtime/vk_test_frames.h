@@ -7,8 +7,8 @@
 #include <iterator>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/render_backend.h"
 #include "vk_test_solid_frag_spv.h"
 #include "vk_test_solid_vert_spv.h"
 
@@ -22,8 +22,7 @@ struct Rgba {
 inline const ShaderProgram& solidProgram() {
   static const ShaderProgram program{
       std::vector<uint32_t>(std::begin(vk_test_solid_vert_spv), std::end(vk_test_solid_vert_spv)),
-      std::vector<uint32_t>(std::begin(vk_test_solid_frag_spv), std::end(vk_test_solid_frag_spv)),
-      "", ""};
+      std::vector<uint32_t>(std::begin(vk_test_solid_frag_spv), std::end(vk_test_solid_frag_spv)), "", ""};
   return program;
 }
 

@@ -5,17 +5,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 #include <filesystem>
 #include <fstream>
+#include <span>
 
 #include "facet/package/package.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/image_texture.h"
-#include "facet/scene/json_document.h"
 #include "facet/runtime/material.h"
-#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/scene/json_document.h"
+#include "facet/scene/scene.h"
 #include "test_compile.h"
 #include "test_support.h"
 
@@ -31,7 +31,8 @@ std::string parseError(const std::string& json) {
 // A width × height Radiance .hdr of one colour, RGBE (128, 64, 32, 129) = (1, 0.5, 0.25): flat
 // pixels, or run-length scanlines (the form encoders write for 8 <= width < 32768).
 std::string radianceFile(int width, int height, bool runLength) {
-  std::string file = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+  std::string file =
+      "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
   const char rgbe[4] = {char(128), char(64), char(32), char(129)};
   for (int row = 0; row < height; ++row) {
     if (!runLength) {
@@ -45,7 +46,9 @@ std::string radianceFile(int width, int height, bool runLength) {
   return file;
 }
 
-std::span<const uint8_t> bytesOf(const std::string& s) { return {reinterpret_cast<const uint8_t*>(s.data()), s.size()}; }
+std::span<const uint8_t> bytesOf(const std::string& s) {
+  return {reinterpret_cast<const uint8_t*>(s.data()), s.size()};
+}
 
 std::string write(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
@@ -68,7 +71,8 @@ std::string boolIntPackages() {
 }  // namespace
 
 TEST(HostileScenes, NumberBeyondTheDoubleRangeIsAnErrorNotAnAbort) {
-  EXPECT_EQ(parseError("{\"width\": 1e400, \"objects\": []}"), "s.json:1:11: error: invalid JSON: number overflow parsing '1e400'");
+  EXPECT_EQ(parseError("{\"width\": 1e400, \"objects\": []}"),
+            "s.json:1:11: error: invalid JSON: number overflow parsing '1e400'");
 }
 
 TEST(HostileScenes, DuplicateKeysAreErrorsWithTheirPointer) {
@@ -79,7 +83,8 @@ TEST(HostileScenes, DuplicateKeysAreErrorsWithTheirPointer) {
 }
 
 TEST(HostileScenes, SizesAreWholeNumbers) {
-  EXPECT_EQ(parseError(R"({"width": 256.7, "objects": []})"), "s.json: error: /width: expected a whole number, not 256.7");
+  EXPECT_EQ(parseError(R"({"width": 256.7, "objects": []})"),
+            "s.json: error: /width: expected a whole number, not 256.7");
 }
 
 TEST(HostileScenes, DegenerateDirectionsAreRejected) {
@@ -105,8 +110,9 @@ TEST(HostileScenes, MaterialAndParameterNamesAreIdentifiers) {
   EXPECT_NE(parseError(R"({"objects": [{"material": "red\u0000plastic"}]})")
                 .find("/objects/0/material: expected a material name (letters, digits, _), not 'red\\u0000plastic'"),
             std::string::npos);
-  EXPECT_NE(parseError(R"({"objects": [{"material": "..\/secrets"}]})").find("/objects/0/material: expected a material name"),
-            std::string::npos);
+  EXPECT_NE(
+      parseError(R"({"objects": [{"material": "..\/secrets"}]})").find("/objects/0/material: expected a material name"),
+      std::string::npos);
   EXPECT_NE(parseError(R"({"objects": [{"material": "m", "params": {"a.b": 1}}]})")
                 .find("/objects/0/params/a.b: expected a parameter name"),
             std::string::npos);
@@ -129,7 +135,8 @@ TEST(HostileScenes, OnlyRegularFilesAreRead) {
   EXPECT_FALSE(facet::runtime::loadScene(dir, &error));
   EXPECT_EQ(error, dir + ": error: cannot open the scene file: not a regular file");
   std::vector<uint8_t> bytes;
-  EXPECT_FALSE(facet::runtime::readImageFile(fifo, &bytes, &error));  // every texture and environment load reads through it
+  EXPECT_FALSE(
+      facet::runtime::readImageFile(fifo, &bytes, &error));  // every texture and environment load reads through it
   EXPECT_EQ(error, fifo + ": cannot read image: not a regular file");
 }
 
@@ -155,23 +162,27 @@ TEST(HostileScenes, PackageHoldingAnotherMaterialIsRefused) {
   auto scene = facet::runtime::parseScene("s.json", R"({"objects": [{"material": "impostor"}]})", &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
-  EXPECT_NE(error.find("impostor.matpkg: holds material 'red_plastic', not 'impostor' as the scene asks"), std::string::npos)
+  EXPECT_NE(error.find("impostor.matpkg: holds material 'red_plastic', not 'impostor' as the scene asks"),
+            std::string::npos)
       << error;
 }
 
 TEST(HostileScenes, ParameterValuesMatchTheParameterType) {
   std::string packages = boolIntPackages();
   auto prepare = [&](const std::string& params, std::string* error) {
-    auto scene = facet::runtime::parseScene("s.json", R"({"objects": [{"material": "switches", "params": )" + params + "}]}", error);
+    auto scene = facet::runtime::parseScene(
+        "s.json", R"({"objects": [{"material": "switches", "params": )" + params + "}]}", error);
     EXPECT_TRUE(scene) << *error;
     return scene ? facet::runtime::SceneFrame::prepare(*scene, packages, error) : nullptr;
   };
   std::string error;
   EXPECT_TRUE(prepare(R"({"glossy": false, "bands": 3, "roughness": 0.25})", &error)) << error;
   EXPECT_FALSE(prepare(R"({"roughness": true})", &error));
-  EXPECT_NE(error.find("parameter 'roughness' of material 'switches' is float, not a bool"), std::string::npos) << error;
+  EXPECT_NE(error.find("parameter 'roughness' of material 'switches' is float, not a bool"), std::string::npos)
+      << error;
   EXPECT_FALSE(prepare(R"({"glossy": 1})", &error));
-  EXPECT_NE(error.find("parameter 'glossy' of material 'switches' is bool: give true or false"), std::string::npos) << error;
+  EXPECT_NE(error.find("parameter 'glossy' of material 'switches' is bool: give true or false"), std::string::npos)
+      << error;
   EXPECT_FALSE(prepare(R"({"bands": 2.5})", &error));
   EXPECT_NE(error.find("parameter 'bands' of material 'switches' is int, not 2.5"), std::string::npos) << error;
 }
@@ -215,7 +226,8 @@ TEST(HostilePackages, MalformedSpirvNeverReachesTheDriver) {
   auto* s = spirv(truncated, "high.dir1", Stage::Fragment);
   ASSERT_TRUE(s);
   s->code.resize(s->code.size() / 2 / 4 * 4);
-  EXPECT_NE(loadError(truncated, "high.dir1").find("variant high.dir1: the fragment shader is invalid SPIR-V"), std::string::npos);
+  EXPECT_NE(loadError(truncated, "high.dir1").find("variant high.dir1: the fragment shader is invalid SPIR-V"),
+            std::string::npos);
   facet::package::Package flipped = p;
   s = spirv(flipped, "high.dir1", Stage::Vertex);
   s->code[s->code.size() / 2] ^= 0x40;
@@ -224,7 +236,8 @@ TEST(HostilePackages, MalformedSpirvNeverReachesTheDriver) {
   s = spirv(text, "high.dir1", Stage::Vertex);
   s->code.assign({'#', 'v', 'e', 'r', 's', 'i', 'o', 'n', ' ', '3', '0', '0', ' ', 'e', 's', '\n', 'x', 'x', 'x', 'x'});
   // Shader code is checked when its variant is first asked for (the loader decompresses lazily).
-  EXPECT_NE(loadError(text, "high.dir1").find("the vertex spirv shader of variant 'high.dir1' is not SPIR-V"), std::string::npos);
+  EXPECT_NE(loadError(text, "high.dir1").find("the vertex spirv shader of variant 'high.dir1' is not SPIR-V"),
+            std::string::npos);
   facet::package::Package empty = p;
   spirv(empty, "high.dir1", Stage::Vertex)->code.clear();
   EXPECT_NE(loadError(empty, "high.dir1").find("is not SPIR-V"), std::string::npos);
@@ -240,26 +253,38 @@ TEST(HostilePackages, MeaningIsCheckedNotOnlyBytes) {
   };
   auto& params = good.material.params;
   ASSERT_GE(params.size(), 2u);
-  expectRejected([](auto& p) { p.material.params[1].defaultValue[0] = std::nan(""); }, "its default is not a finite number");
-  expectRejected([](auto& p) { p.material.params[1].defaultValue[0] = INFINITY; }, "its default is not a finite number");
+  expectRejected([](auto& p) { p.material.params[1].defaultValue[0] = std::nan(""); },
+                 "its default is not a finite number");
+  expectRejected([](auto& p) { p.material.params[1].defaultValue[0] = INFINITY; },
+                 "its default is not a finite number");
   expectRejected([](auto& p) { p.material.shading = "glossy"; }, "unknown shading model 'glossy'");
   expectRejected([](auto& p) { p.material.blending = "multiply"; }, "unknown blending mode 'multiply'");
   expectRejected([](auto& p) { p.material.params[1].name = p.material.params[0].name; }, "is declared twice");
   expectRejected([](auto& p) { p.material.params[0].name = "base.color"; }, "a parameter name is an identifier");
   expectRejected([](auto& p) { p.material.name = std::string("red\0plastic", 11); }, "is not an identifier");
-  expectRejected([](auto& p) { p.material.params[1].rangeMin = 2.0; p.material.params[1].rangeMax = 1.0; },
-                 "its range is not a finite interval");
-  expectRejected([](auto& p) { p.material.params[1].rangeMin = std::nan(""); p.material.params[1].rangeMax = 1.0; },
-                 "its range is not a finite interval");
+  expectRejected(
+      [](auto& p) {
+        p.material.params[1].rangeMin = 2.0;
+        p.material.params[1].rangeMax = 1.0;
+      },
+      "its range is not a finite interval");
+  expectRejected(
+      [](auto& p) {
+        p.material.params[1].rangeMin = std::nan("");
+        p.material.params[1].rangeMax = 1.0;
+      },
+      "its range is not a finite interval");
   expectRejected([](auto& p) { p.variants[0].key = "ultra.dir1"; }, "variant key 'ultra.dir1' is not a valid key");
   expectRejected([](auto& p) { p.variants[1].key = p.variants[0].key; }, "is stored twice");
-  expectRejected([](auto& p) { p.material.paramBlockSize = 0xffffffffu; }, "the parameter block is 4294967295 bytes; the limit is 4096");
+  expectRejected([](auto& p) { p.material.paramBlockSize = 0xffffffffu; },
+                 "the parameter block is 4294967295 bytes; the limit is 4096");
 }
 
 // fuzz_image's finding: a PNG whose chunk declares more bytes than the file holds made
 // stb_image allocate what the header said (2 GB from a 200-byte file).
 TEST(HostileScenes, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
-  std::string bytes = facet::test::readText(facet::test::sourceDir() + "/tests/fuzz/image_regressions/png_chunk_length_beyond_file.png");
+  std::string bytes = facet::test::readText(facet::test::sourceDir() +
+                                            "/tests/fuzz/image_regressions/png_chunk_length_beyond_file.png");
   ASSERT_FALSE(bytes.empty());
   std::string error;
   std::vector<uint8_t> data(bytes.begin(), bytes.end());
@@ -270,7 +295,8 @@ TEST(HostileScenes, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
 
 // fuzz_image's JPEG finding (stb_image reads past a Huffman table): JPEG is not decoded at all.
 TEST(HostileScenes, JpegIsRefusedNotDecoded) {
-  std::string bytes = facet::test::readText(facet::test::sourceDir() + "/tests/fuzz/image_regressions/jpeg_huffman_table_overrun.jpg");
+  std::string bytes =
+      facet::test::readText(facet::test::sourceDir() + "/tests/fuzz/image_regressions/jpeg_huffman_table_overrun.jpg");
   ASSERT_FALSE(bytes.empty());
   std::vector<uint8_t> data(bytes.begin(), bytes.end());
   std::string error;
@@ -298,11 +324,14 @@ TEST(HostileScenes, ImagesOutsideTheSceneFolderAreRefused) {
                                    std::string("textures/../../secret.png")}) {
     std::string error;
     EXPECT_FALSE(facet::runtime::parseScene(scenePath, sceneNaming(image), &error)) << image;
-    EXPECT_NE(error.find(": error: /environment/image: '" + facet::scene::shownValue(image) + "' is outside the folder this scene may read files from"),
-              std::string::npos) << error;
+    EXPECT_NE(error.find(": error: /environment/image: '" + facet::scene::shownValue(image) +
+                         "' is outside the folder this scene may read files from"),
+              std::string::npos)
+        << error;
     error.clear();
-    EXPECT_FALSE(facet::runtime::parseScene(scenePath,
-        R"({"objects": [{"material": "m", "params": {"albedo": ")" + image + R"("}}]})", &error)) << image;
+    EXPECT_FALSE(facet::runtime::parseScene(
+        scenePath, R"({"objects": [{"material": "m", "params": {"albedo": ")" + image + R"("}}]})", &error))
+        << image;
     EXPECT_NE(error.find("/objects/0/params/albedo: '"), std::string::npos) << error;
   }
   std::string error;
@@ -330,7 +359,11 @@ TEST(HostileScenes, TruncatedRadianceImageIsRefused) {
     for (size_t cut : {size_t(1), size_t(2), pixelBytes / 2, pixelBytes}) {
       const std::string truncated = whole.substr(0, whole.size() - cut);
       EXPECT_FALSE(facet::runtime::decodeEquirectImage(bytesOf(truncated), "sky.hdr", &error)) << cut;
-      EXPECT_EQ(error.rfind("sky.hdr: cannot read image: Radiance pixel data ends at byte " + std::to_string(truncated.size()), 0), 0u) << error;
+      EXPECT_EQ(
+          error.rfind(
+              "sky.hdr: cannot read image: Radiance pixel data ends at byte " + std::to_string(truncated.size()), 0),
+          0u)
+          << error;
       EXPECT_NE(error.find("(the file is truncated)"), std::string::npos) << error;
     }
   }
@@ -339,7 +372,8 @@ TEST(HostileScenes, TruncatedRadianceImageIsRefused) {
   const std::string sky = radianceFile(16, 8, true);
   write(dir + "/cut.hdr", sky.substr(0, sky.size() - 3));
   std::string error;
-  auto scene = facet::runtime::parseScene(dir + "/s.json", R"({"environment": {"image": "cut.hdr"}, "objects": []})", &error);
+  auto scene =
+      facet::runtime::parseScene(dir + "/s.json", R"({"environment": {"image": "cut.hdr"}, "objects": []})", &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(facet::runtime::buildEnvironmentLighting(*scene, 1.0, &error));
   EXPECT_EQ(error.rfind(dir + "/cut.hdr: cannot read image: Radiance pixel data ends", 0), 0u) << error;
@@ -398,8 +432,9 @@ TEST(HostileScenes, SceneImageMemoryIsBoundedBeforeDecoding) {
   EXPECT_NE(error.find("a scene may use at most 512 MiB of decoded images"), std::string::npos) << error;
 
   // One of them is within the budget: the decoder then reports the file itself.
-  scene = facet::runtime::parseScene(dir + "/s.json",
-      R"({"sun": {}, "objects": [{"material": "textured", "params": {"albedo": "big0.png"}}]})", &error);
+  scene = facet::runtime::parseScene(
+      dir + "/s.json", R"({"sun": {}, "objects": [{"material": "textured", "params": {"albedo": "big0.png"}}]})",
+      &error);
   ASSERT_TRUE(scene) << error;
   EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*scene, packages, &error));
   EXPECT_EQ(error.rfind("object 0: " + dir + "/big0.png: cannot decode image", 0), 0u) << error;
@@ -409,7 +444,8 @@ TEST(HostileScenes, SceneImageMemoryIsBoundedBeforeDecoding) {
 // run-length loop) ends in an error naming the image, as a texture and as an environment.
 TEST(HostileScenes, ImageFuzzFindingsEndInErrors) {
   size_t inputs = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(facet::test::sourceDir() + "/tests/fuzz/image_regressions")) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(facet::test::sourceDir() + "/tests/fuzz/image_regressions")) {
     const std::string bytes = facet::test::readText(entry.path().string());
     std::string error;
     EXPECT_FALSE(facet::runtime::decodeImageTexture(bytesOf(bytes), true, "finding", &error)) << entry.path();

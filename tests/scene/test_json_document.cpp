@@ -39,7 +39,8 @@ TEST(JsonDocument, TooDeepIsAnErrorAtItsLineAndColumnBeforeParsing) {
   EXPECT_EQ(error, "deep.json:2:" + std::to_string(7 + kMaxJsonDepth - 1) +
                        ": error: arrays and objects nest more than 64 deep here (Facet reads JSON at most that deep)");
   // At the bound the document parses.
-  EXPECT_TRUE(facet::scene::parseJsonDocument("ok.json", "{\"x\": " + nested(kMaxJsonDepth - 1) + "}", &error)) << error;
+  EXPECT_TRUE(facet::scene::parseJsonDocument("ok.json", "{\"x\": " + nested(kMaxJsonDepth - 1) + "}", &error))
+      << error;
 }
 
 TEST(JsonDocument, ScenesAndLintFilesRefuseDeepNesting) {

@@ -17,9 +17,9 @@ namespace facet::test {
 template <typename Visit>
 void forEachSpherePixel(const runtime::Scene& scene, uint32_t step, double minNoV, Visit visit) {
   const auto& cam = scene.camera;
-  glm::dmat4 viewProjection = glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height,
-                                               cam.nearPlane, cam.farPlane) *
-                              glm::lookAt(cam.position, cam.target, cam.up);
+  glm::dmat4 viewProjection =
+      glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height, cam.nearPlane, cam.farPlane) *
+      glm::lookAt(cam.position, cam.target, cam.up);
   glm::dmat4 inverse = glm::inverse(viewProjection);
   const glm::dvec3 centre = scene.objects.at(0).position;
   const double radius = scene.objects.at(0).radius;

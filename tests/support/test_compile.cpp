@@ -30,8 +30,8 @@ namespace {
 void writePackage(const std::string& dir, const std::optional<compiler::BuildResult>& built) {
   if (!built) return;
   std::string error;
-  EXPECT_TRUE(package::writeFile(dir + "/" + built->package.material.name + ".matpkg", package::write(built->package),
-                                 &error))
+  EXPECT_TRUE(
+      package::writeFile(dir + "/" + built->package.material.name + ".matpkg", package::write(built->package), &error))
       << error;
 }
 

@@ -56,13 +56,20 @@ class OsMesaContext final : public GlContext {
  private:
   static OSMesaContext create(int major, int minor) {
     const int attributes[] = {
-        OSMESA_FORMAT, OSMESA_RGBA,
-        OSMESA_DEPTH_BITS, 0,  // depth lives in the backend's own renderbuffer
-        OSMESA_STENCIL_BITS, 0,
-        OSMESA_ACCUM_BITS, 0,
-        OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-        OSMESA_CONTEXT_MAJOR_VERSION, major,
-        OSMESA_CONTEXT_MINOR_VERSION, minor,
+        OSMESA_FORMAT,
+        OSMESA_RGBA,
+        OSMESA_DEPTH_BITS,
+        0,  // depth lives in the backend's own renderbuffer
+        OSMESA_STENCIL_BITS,
+        0,
+        OSMESA_ACCUM_BITS,
+        0,
+        OSMESA_PROFILE,
+        OSMESA_CORE_PROFILE,
+        OSMESA_CONTEXT_MAJOR_VERSION,
+        major,
+        OSMESA_CONTEXT_MINOR_VERSION,
+        minor,
         0,
     };
     return OSMesaCreateContextAttribs(attributes, nullptr);

@@ -57,9 +57,9 @@ inline constexpr uint32_t kMaterialBinding = 2;  // block "MaterialParams" (layo
 //   0..7   frame textures, shared by every draw (lookup tables, environment)
 //   8..15  the material's texture parameters, in declaration order (kMaterialTextureBase + i)
 inline constexpr uint32_t kTextureSet = 1;
-inline constexpr uint32_t kDfgLutBinding = 0;           // "facet_dfgLut": split-sum DFG terms
-inline constexpr uint32_t kSpecularLutBinding = 1;      // "facet_specularLut": low-tier specular LUT (from the package)
-inline constexpr uint32_t kEnvironmentBinding = 2;      // "facet_environment": prefiltered radiance, mip = roughness
+inline constexpr uint32_t kDfgLutBinding = 0;       // "facet_dfgLut": split-sum DFG terms
+inline constexpr uint32_t kSpecularLutBinding = 1;  // "facet_specularLut": low-tier specular LUT (from the package)
+inline constexpr uint32_t kEnvironmentBinding = 2;  // "facet_environment": prefiltered radiance, mip = roughness
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
 // The specular table's size, R8: chunks/specular_lut.glsl addresses its texel centres with these
 // numbers, so the runtime refuses a package table of any other shape (even one of the same bytes).
@@ -180,7 +180,7 @@ struct BlockDesc {
   uint32_t set = 0;
   uint32_t binding = 0;
   std::span<const MemberDesc> members;
-  uint32_t std140Size = 0;    // 0: the material's (MaterialInfo::paramBlockSize)
+  uint32_t std140Size = 0;  // 0: the material's (MaterialInfo::paramBlockSize)
 };
 
 inline constexpr uint32_t kBlockSet = 0;
@@ -207,10 +207,10 @@ inline constexpr MemberDesc kObjectMembers[] = {
     {"highp mat4", "normalMatrix"},
 };
 
-inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame", kBlockSet, kFrameBinding, kFrameMembers,
-                                       uint32_t(sizeof(FrameUniforms))};
-inline constexpr BlockDesc kObjectBlock{"ObjectUniforms", "object", kBlockSet, kObjectBinding, kObjectMembers,
-                                        uint32_t(sizeof(ObjectUniforms))};
+inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame",       kBlockSet,
+                                       kFrameBinding,   kFrameMembers, uint32_t(sizeof(FrameUniforms))};
+inline constexpr BlockDesc kObjectBlock{"ObjectUniforms", "object",       kBlockSet,
+                                        kObjectBinding,   kObjectMembers, uint32_t(sizeof(ObjectUniforms))};
 inline constexpr BlockDesc kMaterialBlock{"MaterialParams", "params", kBlockSet, kMaterialBinding, {}, 0};
 inline constexpr BlockDesc kBlocks[] = {kFrameBlock, kObjectBlock, kMaterialBlock};
 
@@ -247,10 +247,9 @@ inline constexpr MemberDesc kPostMembers[] = {
     {"mediump vec4", "vignette"},
     {"highp vec4", "viewport"},
 };
-inline constexpr BlockDesc kPostBlock{"PostUniforms", "post", kPostHdrSet, kPostUniformsBinding, kPostMembers,
-                                      uint32_t(sizeof(PostUniforms))};
+inline constexpr BlockDesc kPostBlock{"PostUniforms",       "post",       kPostHdrSet,
+                                      kPostUniformsBinding, kPostMembers, uint32_t(sizeof(PostUniforms))};
 inline constexpr SamplerDesc kPostColorLutSampler{kPostColorLutName, kPostHdrSet, kPostColorLutBinding};
-
 
 // Metal (MSL) argument slots, pinned by the MSL backend from the tables above so that every
 // variant of every material uses the same ones (SPIRV-Cross otherwise numbers resources in order

@@ -9,13 +9,13 @@
 #include <set>
 #include <string>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/param_layout.h"
 #include "facet/compiler/preshader.h"
 #include "facet/ir/emit_glsl.h"
 #include "facet/ir/module.h"
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
-#include "facet/abi/shader_abi.h"
 
 namespace facet::compiler {
 

@@ -60,11 +60,11 @@ enum class Figure {
 
 struct CostFigure {
   Figure figure;
-  const char* name;         // JSON key, budget and baseline name: "scalar_alu"
-  const char* column;       // heading in text tables ("scalar"); "" when no text table shows it
-  const char* unit;         // "cycles", "instructions", "%", ...
-  int decimals;             // as text tables print it; lint's budgets and baselines compare at this precision
-  bool integer;             // held as an integer count: JSON writes it without a fraction
+  const char* name;    // JSON key, budget and baseline name: "scalar_alu"
+  const char* column;  // heading in text tables ("scalar"); "" when no text table shows it
+  const char* unit;    // "cycles", "instructions", "%", ...
+  int decimals;        // as text tables print it; lint's budgets and baselines compare at this precision
+  bool integer;        // held as an integer count: JSON writes it without a fraction
   const char* description;
   double (*value)(const StageFigures&);      // nullptr for a figure that is a word (text)
   const char* (*text)(const StageFigures&);  // the word, for Bound; else nullptr

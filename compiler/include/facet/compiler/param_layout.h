@@ -13,7 +13,7 @@ struct ParamSlot {
   std::string name;
   ir::Type type;
   uint32_t offset;
-  uint32_t size;  // 0: not in the block
+  uint32_t size;         // 0: not in the block
   int textureSlot = -1;  // textures: sampler slot i (binding abi::kMaterialTextureBase + i); -1 unused
 };
 

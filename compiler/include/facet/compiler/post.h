@@ -45,9 +45,9 @@ struct PostStage {
 };
 
 struct PostShaders {
-  PostEffects effects;  // postVariantKey(effects) names the variant
-  PostStage vertex;          // full-screen triangle, shared by both forms
-  PostStage sampledFragment; // separate path
+  PostEffects effects;        // postVariantKey(effects) names the variant
+  PostStage vertex;           // full-screen triangle, shared by both forms
+  PostStage sampledFragment;  // separate path
   // Merged path. glslang 12 rejects the GL_EXT_shader_framebuffer_fetch #extension, so the GLES
   // text is assembled but not checked here: tests compile it with Mesa (OSMesa / EGL).
   PostStage fetchFragment;

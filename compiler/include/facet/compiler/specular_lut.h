@@ -41,8 +41,8 @@ enum class SpecularLutEncoding {
 };
 
 struct SpecularLutOptions {
-  uint32_t width = 128;   // along u (the warped cosine)
-  uint32_t height = 64;   // along perceptual roughness
+  uint32_t width = 128;  // along u (the warped cosine)
+  uint32_t height = 64;  // along perceptual roughness
   SpecularLutAxis axis = SpecularLutAxis::ReflectedCosine4;
   // Decoded intensity = (texel / 255)² · scale (Sqrt; texel / 255 · scale with Linear). 16/π
   // (π folded into the /16 of the talk): a ceiling of 5.09, reached only inside highlights that

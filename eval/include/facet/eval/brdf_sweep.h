@@ -40,9 +40,9 @@ struct BrdfSweepRow {
   // directions go as n·v), so the grazing views, where the cheap lobes differ most, count less.
   std::vector<double> rowScreenRmse;
   double meanScreenRmse = 0;
-  double worstRelativeRmse = 0;             // max over rows ...
-  double worstRoughness = 0;                // ... and its roughness
-  int nonFinite = 0;                        // samples that came out inf or NaN
+  double worstRelativeRmse = 0;  // max over rows ...
+  double worstRoughness = 0;     // ... and its roughness
+  int nonFinite = 0;             // samples that came out inf or NaN
   // Samples left out of the errors: the exact lobe exceeds binary16's 65504 there (the roughness
   // floor near the grazing mirror), where every mediump lobe saturates by design.
   int beyondHalf = 0;

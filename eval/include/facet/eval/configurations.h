@@ -11,10 +11,11 @@
 namespace facet::eval {
 
 struct Configuration {
-  std::string name;    // "high" (as shipped) or "high:specular=zioma" (a swap)
+  std::string name;  // "high" (as shipped) or "high:specular=zioma" (a swap)
   permutations::Tier tier = permutations::Tier::High;
   permutations::TierConfig config;  // the maths the variant is built with
-  std::string axis;    // "" as shipped; else specular | diffuse | ambient | sh_bands | color_space | precision | energy_compensation
+  std::string axis;    // "" as shipped; else specular | diffuse | ambient | sh_bands | color_space | precision |
+                       // energy_compensation
   std::string option;  // the option swapped in
   std::string change;  // "as shipped" or e.g. "specular ggx_smith → zioma"
   bool swap() const { return !axis.empty(); }

@@ -21,41 +21,41 @@ namespace facet::eval {
 
 struct EvalOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
-  bool swaps = true;            // also every single-option swap of each tier
-  std::string sceneFile;        // a scene file instead of the built-in grid ("" = the grid)
+  bool swaps = true;      // also every single-option swap of each tier
+  std::string sceneFile;  // a scene file instead of the built-in grid ("" = the grid)
   GridOptions grid;
-  int timingFrames = 5;         // timed renders of the first view (median), each paired with one of reference's
-  int warmupFrames = 1;         // untimed renders first (the first also makes the image)
-  bool validation = false;      // Vulkan validation layers (FACET_VK_VALIDATION=1 also turns them on)
-  bool fp16Emulation = false;   // render mediump SPIR-V with binary16 rounding (docs/fp16-emulation.md);
-                                // the cost is still that of the shaders as shipped
+  int timingFrames = 5;        // timed renders of the first view (median), each paired with one of reference's
+  int warmupFrames = 1;        // untimed renders first (the first also makes the image)
+  bool validation = false;     // Vulkan validation layers (FACET_VK_VALIDATION=1 also turns them on)
+  bool fp16Emulation = false;  // render mediump SPIR-V with binary16 rounding (docs/fp16-emulation.md);
+                               // the cost is still that of the shaders as shipped
   compiler::MobileCostWeights weights;
-  bool brdfSweep = true;        // also each lobe over the BRDF domain (brdf_sweep.h; lit materials)
+  bool brdfSweep = true;  // also each lobe over the BRDF domain (brdf_sweep.h; lit materials)
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
 };
 
 struct ViewResult {
-  std::string name;             // "frontal", "grazing", or the scene file's stem
-  std::string image;            // PNG path relative to the report's folder (images/<configuration>.<view>.png)
-  std::vector<uint8_t> png;     // its bytes, written with the report (report.h)
+  std::string name;          // "frontal", "grazing", or the scene file's stem
+  std::string image;         // PNG path relative to the report's folder (images/<configuration>.<view>.png)
+  std::vector<uint8_t> png;  // its bytes, written with the report (report.h)
   ImageMetrics error;
 };
 
 struct ConfigurationResult {
   Configuration configuration;
-  std::string variantKey;       // e.g. "high.dir1.pt1"
-  std::string sameAs;           // the earlier configuration with identical maths whose results these are
+  std::string variantKey;  // e.g. "high.dir1.pt1"
+  std::string sameAs;      // the earlier configuration with identical maths whose results these are
   compiler::MobileStageCost fragment, vertex;
-  ImageMetrics error;           // all views together
+  ImageMetrics error;  // all views together
   std::vector<ViewResult> views;
-  double seconds = 0;           // lavapipe: median render() time of the first view
-  double cyclesVsHigh = 0;      // fragment cycles ÷ high's as shipped (0 when high was not evaluated)
+  double seconds = 0;       // lavapipe: median render() time of the first view
+  double cyclesVsHigh = 0;  // fragment cycles ÷ high's as shipped (0 when high was not evaluated)
   double cyclesVsReference = 0;
   // Lit materials: fragment cycles of the sun + IBL variant <tier>.dir1 (no point light), the
   // variant the tiers' cost goals (and the Mali-G57 measurements) refer to, and its ratio to high's.
   double sunIblFragmentCycles = 0;
   double sunIblVsHigh = 0;
-  double timeVsReference = 0;   // median over the paired renders of this time ÷ reference's (0: not timed)
+  double timeVsReference = 0;  // median over the paired renders of this time ÷ reference's (0: not timed)
   // Lit materials: the white furnace — the grid's first view with no sun and no point light in a
   // constant sky, the brightest value the spheres cover ÷ the sky's radiance (furnaceGain). Above
   // 1 the surface reflects more than it receives; `reference` itself does on bright dielectrics
@@ -63,7 +63,7 @@ struct ConfigurationResult {
   // coupling them), so a configuration gains energy when it exceeds both kFurnaceGainLimit and
   // reference's gain by that factor (furnaceGainsEnergy). 0 for unlit materials.
   double furnaceGain = 0;
-  bool pareto = false;          // no other configuration has both fewer cycles and a higher PSNR
+  bool pareto = false;  // no other configuration has both fewer cycles and a higher PSNR
   // The GLSL ES 3.00 pair of variantKey as shipped, for per-GPU figures (addGpuFigures); empty
   // for a configuration with the same maths as an earlier one.
   std::vector<gpu_stats::ShaderPair> glslEs;
@@ -80,10 +80,10 @@ inline bool furnaceGainsEnergy(double gain, double referenceGain) {
 
 struct EvalReport {
   std::string material;
-  std::string scene;            // "built-in grid" or the scene file
+  std::string scene;                    // "built-in grid" or the scene file
   std::vector<std::string> sceneNotes;  // the sweep, dropped objects, ...
   std::vector<std::string> viewNames;
-  uint32_t width = 0, height = 0;       // of the first view
+  uint32_t width = 0, height = 0;  // of the first view
   int timingFrames = 0, warmupFrames = 0;
   // "gpu_forward_pass": the forward pass's GPU time from Vulkan timestamps (lavapipe reports
   // them); "wall_render": the wall time of RenderBackend::render(), where the device cannot time;

@@ -15,9 +15,9 @@ namespace facet::eval {
 double psnr8(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
 
 struct ImageMetrics {
-  double psnr = 0;          // dB, tone-mapped 8-bit RGB; +infinity when identical
-  double meanAbs = 0;       // mean |difference| of the 8-bit RGB values, in 8-bit steps
-  double p99Abs = 0;        // 99th percentile of the same (an integer number of steps)
+  double psnr = 0;     // dB, tone-mapped 8-bit RGB; +infinity when identical
+  double meanAbs = 0;  // mean |difference| of the 8-bit RGB values, in 8-bit steps
+  double p99Abs = 0;   // 99th percentile of the same (an integer number of steps)
   double maxAbs = 0;
   double relativeRmse = 0;  // linear HDR RGB: sqrt(Σ (image − reference)² / Σ reference²)
   size_t pixels = 0;        // pixels compared

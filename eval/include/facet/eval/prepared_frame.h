@@ -14,8 +14,8 @@
 
 #include "facet/permutations/tiers.h"
 #include "facet/runtime/render_backend.h"
-#include "facet/scene/scene.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/scene/scene.h"
 
 namespace facet::eval {
 

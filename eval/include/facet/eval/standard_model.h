@@ -11,7 +11,7 @@ inline constexpr double kPi = 3.14159265358979323846;
 struct Surface {
   glm::dvec3 baseColor{1.0};
   double metallic = 0;
-  double roughness = 1;     // perceptual
+  double roughness = 1;  // perceptual
   double reflectance = 0.5;
   double ambientOcclusion = 1;
   glm::dvec3 emissive{0.0};
@@ -50,8 +50,8 @@ inline glm::dvec3 shadeStandard(const Surface& s, glm::dvec3 n, glm::dvec3 v, gl
   double NoL = glm::clamp(glm::dot(n, l), 0.0, 1.0);
   double NoH = glm::clamp(glm::dot(n, h), 0.0, 1.0);
   double LoH = glm::clamp(glm::dot(l, h), 0.0, 1.0);
-  glm::dvec3 specular = distributionGgx(alpha, NoH) * visibilitySmithGgxCorrelated(alpha, NoV, NoL) * fresnelSchlick(f0, LoH) *
-                        specularScale;
+  glm::dvec3 specular = distributionGgx(alpha, NoH) * visibilitySmithGgxCorrelated(alpha, NoV, NoL) *
+                        fresnelSchlick(f0, LoH) * specularScale;
   glm::dvec3 direct = (diffuseColor / kPi + specular) * lightColor * NoL;
   return direct + diffuseColor * ambient * glm::clamp(s.ambientOcclusion, 0.0, 1.0) + s.emissive;
 }

@@ -30,26 +30,26 @@ struct MesaTool {
 };
 
 struct ShaderPair {
-  std::string name;          // e.g. a variant key
-  std::string vertexGlsl;    // GLSL ES 3.00 source text
+  std::string name;        // e.g. a variant key
+  std::string vertexGlsl;  // GLSL ES 3.00 source text
   std::string fragmentGlsl;
 };
 
 // One shader as a driver compiled it. Mali splits a vertex shader into vertex_position and
 // vertex_varying (IDVS); Adreno adds vertex_binning.
 struct StageStats {
-  std::string stage;               // fragment, vertex, vertex_position, vertex_varying, vertex_binning
+  std::string stage;  // fragment, vertex, vertex_position, vertex_varying, vertex_binning
   double instructions = 0;
-  std::optional<double> cycles;    // Mali: Mesa's cycle bound; ir3 prints none
-  std::string bound;               // Mali: the pipe that bounds it (fma, cvt, sfu, v, t, ls / arith, ...)
-  std::optional<int> threads;      // Mali: threads per core (occupancy)
-  std::optional<int> waves;        // Adreno: waves (occupancy)
-  std::optional<int> spills;       // Mali; ir3 22.3 prints none
+  std::optional<double> cycles;  // Mali: Mesa's cycle bound; ir3 prints none
+  std::string bound;             // Mali: the pipe that bounds it (fma, cvt, sfu, v, t, ls / arith, ...)
+  std::optional<int> threads;    // Mali: threads per core (occupancy)
+  std::optional<int> waves;      // Adreno: waves (occupancy)
+  std::optional<int> spills;     // Mali; ir3 22.3 prints none
 };
 
 struct GpuStats {
-  std::string gpu;                 // as asked, e.g. "mali-g57"
-  std::string renderer;            // as the driver names itself, e.g. "Mali-G57 (Panfrost)"
+  std::string gpu;       // as asked, e.g. "mali-g57"
+  std::string renderer;  // as the driver names itself, e.g. "Mali-G57 (Panfrost)"
   // Non-empty when this GPU gave no figures: the compilers are not built, the tool cannot run,
   // or a shader did not compile. The tool's own message, on one line.
   std::string unavailable;

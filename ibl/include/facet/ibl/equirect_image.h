@@ -18,7 +18,7 @@
 namespace facet::ibl {
 
 struct EquirectImage {
-  int width = 0;   // 2 × height for the environments Facet builds
+  int width = 0;  // 2 × height for the environments Facet builds
   int height = 0;
   std::vector<float> rgb;  // width × height × 3, row-major, row 0 = zenith
 
@@ -47,7 +47,8 @@ template <class Radiance>
 EquirectImage renderEquirect(int width, int height, const Radiance& radiance) {
   EquirectImage image(width, height);
   for (int row = 0; row < height; ++row)
-    for (int column = 0; column < width; ++column) image.setTexel(column, row, radiance(equirectDirection(image, column, row)));
+    for (int column = 0; column < width; ++column)
+      image.setTexel(column, row, radiance(equirectDirection(image, column, row)));
   return image;
 }
 

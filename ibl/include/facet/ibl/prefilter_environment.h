@@ -24,8 +24,8 @@
 
 #include <vector>
 
-#include "facet/ibl/equirect_image.h"
 #include "facet/ibl/cube_map.h"
+#include "facet/ibl/equirect_image.h"
 
 namespace facet::ibl {
 
@@ -53,6 +53,7 @@ std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, con
 /// runtime uploads; cube_map.h): level m has faces of (size >> m)², each texel the average around
 /// cubeTexelDirection. size must be divisible by 2^(levels − 1), and the source as above; throws
 /// std::invalid_argument otherwise.
-std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int size, const PrefilterOptions& options = {});
+std::vector<CubeImage> prefilterEnvironmentCube(const EquirectImage& source, int size,
+                                                const PrefilterOptions& options = {});
 
 }  // namespace facet::ibl

@@ -17,12 +17,12 @@ struct Expr {
   enum class Kind { Number, Bool, Name, Member, Call, Unary, Binary, Ternary };
   Kind kind = Kind::Number;
   SourceLoc loc;
-  std::string name;       // Name: identifier; Member: field; Call: callee
-  std::string spelling;   // Number: as written
+  std::string name;      // Name: identifier; Member: field; Call: callee
+  std::string spelling;  // Number: as written
   double number = 0.0;
   bool boolean = false;
-  Tok op = Tok::End;      // Unary / Binary operator
-  int height = 1;         // longest path to a leaf; bounded by the parser
+  Tok op = Tok::End;          // Unary / Binary operator
+  int height = 1;             // longest path to a leaf; bounded by the parser
   std::vector<ExprPtr> args;  // Member: {object}; Call: arguments; Unary: {x}; Binary: {a, b}; Ternary: {c, a, b}
 };
 

@@ -26,12 +26,22 @@ enum class Op {
   Attribute,  // interpolated vertex attribute `name` (see attributes below)
   Swizzle,    // name = component letters, args = {vector}
   Construct,  // vecN(args...) / float(x)
-  Neg, Not,
-  Add, Sub, Mul, Div,
-  Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual,
-  And, Or,
-  Select,     // args = {condition, ifTrue, ifFalse}
-  Builtin,    // name = GLSL built-in function
+  Neg,
+  Not,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Less,
+  LessEqual,
+  Greater,
+  GreaterEqual,
+  Equal,
+  NotEqual,
+  And,
+  Or,
+  Select,   // args = {condition, ifTrue, ifFalse}
+  Builtin,  // name = GLSL built-in function
 };
 
 struct Value {
@@ -45,10 +55,10 @@ struct Value {
 
 // Surface attributes a material may read, and the GLSL the templates provide for each.
 struct AttributeInfo {
-  const char* name;      // as written after `vertex.`
+  const char* name;  // as written after `vertex.`
   Type type;
-  const char* glsl;      // expression in the fragment stage
-  bool highp;            // positions and UVs need highp (DESIGN: precision policy)
+  const char* glsl;  // expression in the fragment stage
+  bool highp;        // positions and UVs need highp (DESIGN: precision policy)
 };
 const std::vector<AttributeInfo>& attributes();
 const AttributeInfo* findAttribute(std::string_view name);
@@ -66,10 +76,10 @@ const OutputInfo* findOutput(std::string_view name);
 struct Param {
   std::string name;
   Type type = Type::Float;
-  bool isColor = false;              // authored in sRGB; defaultValue holds the linear value
+  bool isColor = false;                            // authored in sRGB; defaultValue holds the linear value
   TextureSpace textureSpace = TextureSpace::None;  // textures: how the image is encoded; defaultValue
                                                    // is the RGBA (as encoded) a missing image samples as
-  std::vector<double> defaultValue;  // componentCount(type) values
+  std::vector<double> defaultValue;                // componentCount(type) values
   std::optional<double> rangeMin, rangeMax;
   SourceLoc loc;
   bool used = true;  // false once opt_eliminate_dead_code finds no output depends on it
@@ -129,8 +139,8 @@ const TierChoices& tierChoices();
 // A checked material: what every later stage reads.
 struct Material {
   std::string name;
-  std::string shading;   // "lit" | "unlit"
-  std::string blending;  // opaque | masked | transparent | additive
+  std::string shading;       // "lit" | "unlit"
+  std::string blending;      // opaque | masked | transparent | additive
   double alphaCutoff = 0.5;  // masked: fragments with alpha below it are discarded
   bool doubleSided = false;  // false: back faces are culled
   std::vector<Param> params;

@@ -20,7 +20,9 @@ namespace facet::ir {
 struct Interval {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
-  bool bounded() const { return lo > -std::numeric_limits<double>::infinity() && hi < std::numeric_limits<double>::infinity(); }
+  bool bounded() const {
+    return lo > -std::numeric_limits<double>::infinity() && hi < std::numeric_limits<double>::infinity();
+  }
   bool contains(double x) const { return lo <= x && x <= hi; }
   bool operator==(const Interval&) const = default;
 };

@@ -13,8 +13,8 @@ namespace facet::lint {
 using FigureLimits = std::map<std::string, double>;
 
 struct StageBudget {
-  FigureLimits max;                          // figure ≤ limit
-  std::optional<double> minRelaxedPercent;   // share of float ops in mediump ≥ this
+  FigureLimits max;                         // figure ≤ limit
+  std::optional<double> minRelaxedPercent;  // share of float ops in mediump ≥ this
 };
 
 struct Budgets {

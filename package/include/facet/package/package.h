@@ -53,28 +53,28 @@ std::optional<ParamType> paramTypeFromString(std::string_view);
 struct Param {
   std::string name;
   ParamType type = ParamType::Float;
-  std::vector<double> defaultValue;   // component count of the type; colours stored linear
-  std::optional<double> rangeMin;     // declared range `in [min, max]`, if any
+  std::vector<double> defaultValue;  // component count of the type; colours stored linear
+  std::optional<double> rangeMin;    // declared range `in [min, max]`, if any
   std::optional<double> rangeMax;
-  uint32_t offset = 0;                // byte offset in the block
-  uint32_t size = 0;                  // byte size in the block
+  uint32_t offset = 0;  // byte offset in the block
+  uint32_t size = 0;    // byte size in the block
   bool operator==(const Param&) const = default;
 };
 
 struct MaterialInfo {
   std::string name;
-  std::string shading;            // "lit" | "unlit"
-  std::string blending;           // "opaque" | "masked" | "transparent" | "additive"
-  bool doubleSided = false;       // false: the runtime culls back faces (counter-clockwise is front)
+  std::string shading;       // "lit" | "unlit"
+  std::string blending;      // "opaque" | "masked" | "transparent" | "additive"
+  bool doubleSided = false;  // false: the runtime culls back faces (counter-clockwise is front)
   std::vector<Param> params;
-  uint32_t paramBlockSize = 0;    // std140 size of "MaterialParams" in bytes (0: no block)
+  uint32_t paramBlockSize = 0;  // std140 size of "MaterialParams" in bytes (0: no block)
   bool operator==(const MaterialInfo&) const = default;
 };
 
 struct Shader {
   Stage stage = Stage::Vertex;
   Target target = Target::GlslEs300;
-  std::vector<uint8_t> code;      // text for GLSL/MSL, SPIR-V words as bytes
+  std::vector<uint8_t> code;  // text for GLSL/MSL, SPIR-V words as bytes
   bool operator==(const Shader&) const = default;
 };
 
@@ -96,7 +96,7 @@ inline uint32_t bytesPerTexel(TexelFormat) { return 1; }  // R8Unorm is the only
 // specular table of the `lut` tier. Stored in section TEXS; its texels are a blob, deduplicated
 // and compressed like shader code.
 struct Texture {
-  std::string name;                // the sampler the shaders declare, e.g. "facet_specularLut" (shader_abi.h)
+  std::string name;  // the sampler the shaders declare, e.g. "facet_specularLut" (shader_abi.h)
   uint32_t width = 0;
   uint32_t height = 0;
   TexelFormat format = TexelFormat::R8Unorm;
@@ -185,7 +185,7 @@ struct Package {
   std::string compilerVersion;
   MaterialInfo material;
   std::vector<Variant> variants;
-  std::vector<Texture> textures;  // written (as section TEXS) only when not empty
+  std::vector<Texture> textures;        // written (as section TEXS) only when not empty
   std::vector<MslBinding> mslBindings;  // written (as section MSLB, format 1.2) only when not empty
   Preshader preshader;                  // written (as section PRSH, format 1.3) only with programs
   bool operator==(const Package&) const = default;
@@ -196,13 +196,13 @@ std::vector<uint8_t> write(const Package& pkg);
 
 // Sizes as stored, for `matc info`.
 struct ShaderStats {
-  uint64_t rawSize = 0;       // bytes of code
-  uint64_t storedSize = 0;    // bytes in the file (compressed, shared if deduplicated)
+  uint64_t rawSize = 0;     // bytes of code
+  uint64_t storedSize = 0;  // bytes in the file (compressed, shared if deduplicated)
 };
 
 struct ReadResult {
-  std::optional<Package> package;   // set on success
-  std::string error;                // set on failure: what is wrong, and where (byte offset)
+  std::optional<Package> package;  // set on success
+  std::string error;               // set on failure: what is wrong, and where (byte offset)
   // Per variant, per shader (same order as Package::variants[i].shaders).
   std::vector<std::vector<ShaderStats>> stats;
   // Per texture (same order as Package::textures); a blob shared with a shader is charged there.

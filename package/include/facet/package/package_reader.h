@@ -89,8 +89,8 @@ class PackageReader {
   // variant (format 1.2; empty in older packages).
   const std::vector<MslBinding>& mslBindings() const;
   // The preshader (format 1.3; empty in older packages; its programs are checked against the
-  // block by semanticError(), package::preshaderError), and the program of one variant (nullptr: the variant computes its
-  // inputs per pixel from the parameter block alone).
+  // block by semanticError(), package::preshaderError), and the program of one variant (nullptr: the variant computes
+  // its inputs per pixel from the parameter block alone).
   const Preshader& preshader() const;
   const PreshaderProgram* preshaderProgram(std::string_view key) const;
 

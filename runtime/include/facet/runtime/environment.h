@@ -29,7 +29,7 @@ struct EnvironmentLighting {
   // shaderIrradianceCoefficients of the SH3 projection: irradiance / π = Σ sh[k] p_k(n).
   std::array<std::array<float, 3>, 9> sh{};
   std::array<float, 3> meanRadiance{};
-  uint32_t width = 0;                      // level 0's faces, square: level m's are width >> m × height >> m
+  uint32_t width = 0;  // level 0's faces, square: level m's are width >> m × height >> m
   uint32_t height = 0;
   // RGB floats per level: six faces one after the other (+X, −X, +Y, −Y, +Z, −Z), each row 0 at
   // t = 0 (facet/ibl/cube_map.h).

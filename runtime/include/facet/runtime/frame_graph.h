@@ -67,9 +67,9 @@ struct ResourceTraffic {
 };
 
 struct CompiledGraph {
-  std::vector<bool> culled;             // per pass
-  std::vector<RenderPass> renderPasses; // kept passes, grouped
-  std::vector<ResourceTraffic> traffic; // per resource
+  std::vector<bool> culled;              // per pass
+  std::vector<RenderPass> renderPasses;  // kept passes, grouped
+  std::vector<ResourceTraffic> traffic;  // per resource
   uint64_t loadedBytes() const;
   uint64_t storedBytes() const;
   uint64_t sampledBytes() const;

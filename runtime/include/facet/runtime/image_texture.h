@@ -37,9 +37,9 @@ bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::st
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error);
 
-// Loads a PNG (stb_image; JPEG and TGA are not decoded: stb_image_impl.cpp) as RGBA8, with every mip level down to 1×1. `srgb` tags the
-// image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the
-// encoded values (which would darken every level), and the sampler decodes.
+// Loads a PNG (stb_image; JPEG and TGA are not decoded: stb_image_impl.cpp) as RGBA8, with every mip level down to 1×1.
+// `srgb` tags the image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the encoded
+// values (which would darken every level), and the sampler decodes.
 std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error);
 
 // An equirect environment image held in memory (`name` is used in messages), as linear RGB: a

@@ -56,8 +56,7 @@ class LoadedMaterial {
   // `givenAsBool` names the values the scene wrote as true/false: only a bool parameter takes
   // one, and a bool parameter takes nothing else; an int parameter takes whole numbers only.
   std::optional<std::vector<uint8_t>> paramBlock(const std::map<std::string, std::vector<double>>& values,
-                                                 std::string* error,
-                                                 ColorEncoding colors = ColorEncoding::Linear,
+                                                 std::string* error, ColorEncoding colors = ColorEncoding::Linear,
                                                  const std::set<std::string>& givenAsBool = {}) const;
 
   // Completes a paramBlock() for a variant: with a preshader program (format 1.3), the block
@@ -71,14 +70,13 @@ class LoadedMaterial {
   // once per package and live as long as this LoadedMaterial. A texture this
   // runtime has no slot for is an error for the variants that sample it.
   // A texture is decompressed on the first request for a variant that samples it.
-  std::optional<std::vector<TextureBinding>> generatedTextures(const std::string& variantKey,
-                                                               std::string* error) const;
+  std::optional<std::vector<TextureBinding>> generatedTextures(const std::string& variantKey, std::string* error) const;
 
   struct SampledTexture {
-    std::string param;        // texture parameter name
-    uint32_t slot = 0;        // sampler slot: binding abi::kMaterialTextureBase + slot
-    std::string glslName;     // abi::kMaterialSamplerPrefix + <param>
-    std::string imagePath;    // "" when the scene gives none: use defaultValue
+    std::string param;      // texture parameter name
+    uint32_t slot = 0;      // sampler slot: binding abi::kMaterialTextureBase + slot
+    std::string glslName;   // abi::kMaterialSamplerPrefix + <param>
+    std::string imagePath;  // "" when the scene gives none: use defaultValue
     bool srgb = false;
     std::array<double, 4> defaultValue{};
   };

@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/material.h"
+#include "facet/runtime/render_backend.h"
 
 namespace facet::runtime {
 
@@ -69,11 +69,11 @@ class Material : public std::enable_shared_from_this<Material> {
   ColorEncoding colors_ = ColorEncoding::Linear;
   Blending blending_ = Blending::Opaque;
   bool doubleSided_ = false;
-  std::vector<uint8_t> defaults_;                    // std140 block of the declared defaults
-  std::vector<TextureBinding> generated_;            // package textures of the variant
-  std::vector<TextureBinding> defaultTextures_;      // package textures, then one per texture param
+  std::vector<uint8_t> defaults_;                        // std140 block of the declared defaults
+  std::vector<TextureBinding> generated_;                // package textures of the variant
+  std::vector<TextureBinding> defaultTextures_;          // package textures, then one per texture param
   std::vector<std::unique_ptr<Texture>> solidTextures_;  // the texture params' default colours
-  std::vector<int> textureOfParam_;  // per parameter: its index in defaultTextures_, or -1
+  std::vector<int> textureOfParam_;                      // per parameter: its index in defaultTextures_, or -1
 };
 
 class MaterialInstance {

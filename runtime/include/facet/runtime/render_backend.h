@@ -12,15 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/package/program_interface.h"
 #include "facet/runtime/render_path.h"
-#include "facet/abi/shader_abi.h"
 
 namespace facet::runtime {
 
 struct Mesh {
-  std::vector<float> vertices;   // abi::kVertexFloats per vertex, in shader_abi.h's layout (runtime/mesh.h: Vertex)
-  std::vector<uint32_t> indices; // triangle list
+  std::vector<float> vertices;    // abi::kVertexFloats per vertex, in shader_abi.h's layout (runtime/mesh.h: Vertex)
+  std::vector<uint32_t> indices;  // triangle list
 };
 
 enum class TextureFormat {
@@ -41,10 +41,10 @@ struct Texture {
   uint32_t height = 0;
   TextureFormat format = TextureFormat::Rgba8Unorm;
   std::vector<std::vector<uint8_t>> levels;
-  bool linearFilter = true;   // bilinear within a level, linear between levels (trilinear)
-  bool repeat = false;        // wrap (true) or clamp to edge (false) in s, and in t unless clampT
-  bool clampT = false;        // clamp to edge in t whatever `repeat` says: an equirect environment
-                              // wraps in longitude (s) but must not blend its zenith row with the nadir
+  bool linearFilter = true;  // bilinear within a level, linear between levels (trilinear)
+  bool repeat = false;       // wrap (true) or clamp to edge (false) in s, and in t unless clampT
+  bool clampT = false;       // clamp to edge in t whatever `repeat` says: an equirect environment
+                             // wraps in longitude (s) but must not blend its zenith row with the nadir
   // A cube map (samplerCube): each level holds six square faces one after the other, in the API
   // order +X, −X, +Y, −Y, +Z, −Z (facet/ibl/cube_map.h has the face conventions), each laid out
   // as above; width == height. Filtered across faces (seamless) by both backends; the wrap
@@ -53,16 +53,16 @@ struct Texture {
 };
 
 struct TextureBinding {
-  uint32_t binding = 0;       // abi::k*Binding; set abi::kTextureSet in Vulkan, texture unit in GL
-  std::string glslName;       // the sampler uniform's name in the GLSL ES shaders
+  uint32_t binding = 0;  // abi::k*Binding; set abi::kTextureSet in Vulkan, texture unit in GL
+  std::string glslName;  // the sampler uniform's name in the GLSL ES shaders
   const Texture* texture = nullptr;
 };
 
 // Shader code of one material variant, one field per API.
 struct ShaderProgram {
-  std::vector<uint32_t> vertexSpirv;    // Vulkan flavour, SPIR-V 1.0 words
+  std::vector<uint32_t> vertexSpirv;  // Vulkan flavour, SPIR-V 1.0 words
   std::vector<uint32_t> fragmentSpirv;
-  std::string vertexGlslEs;             // GLES flavour, "#version 300 es" source text
+  std::string vertexGlslEs;  // GLES flavour, "#version 300 es" source text
   std::string fragmentGlslEs;
   // What the variant's draws bind, when the code came from a package (LoadedMaterial::program,
   // which checked the SPIR-V against it): the GL backend checks the linked program's reflection
@@ -95,11 +95,11 @@ struct DrawItem {
                                // and re-uploaded when its bytes change (ResourceCounts)
   const ShaderProgram* program = nullptr;
   abi::ObjectUniforms object{};
-  std::vector<uint8_t> materialParams;  // std140 bytes of block "MaterialParams" (may be empty),
-                                        // copied into this frame's uniforms
+  std::vector<uint8_t> materialParams;          // std140 bytes of block "MaterialParams" (may be empty),
+                                                // copied into this frame's uniforms
   const UniformBlock* materialBlock = nullptr;  // when set, "MaterialParams" instead of
                                                 // materialParams, from its persistent GPU buffer
-  std::vector<TextureBinding> textures;  // the material's textures (bindings kMaterialTextureBase + i)
+  std::vector<TextureBinding> textures;         // the material's textures (bindings kMaterialTextureBase + i)
   Blending blending = Blending::Opaque;
   // Cull triangles whose vertices run clockwise on screen in GL conventions (the back faces of
   // a mesh wound counter-clockwise seen from outside). Off: two-sided (every test mesh's default).
@@ -123,7 +123,7 @@ struct FrameDesc {
   uint32_t width = 0;
   uint32_t height = 0;
   abi::FrameUniforms frame{};
-  float clearColor[4] = {0, 0, 0, 1};   // linear, pre-exposed HDR value
+  float clearColor[4] = {0, 0, 0, 1};         // linear, pre-exposed HDR value
   std::vector<TextureBinding> frameTextures;  // shared by every draw (bindings 0..7)
   std::vector<DrawItem> draws;
   // Inputs of the post effects the backend's variant runs (PostSettings), ignored otherwise:
@@ -141,18 +141,18 @@ struct PassTime {
 struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
-  std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
-  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F or
-                             // R11G11B10F target, alpha 1 for the latter); empty when the backend
-                             // does not read HDR back
+  std::vector<uint8_t> ldr;        // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
+  std::vector<float> hdr;          // RGBA float, rows top to bottom: the forward pass output (RGBA16F or
+                                   // R11G11B10F target, alpha 1 for the latter); empty when the backend
+                                   // does not read HDR back
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
 };
 
 // GPU resources a backend keeps across frames: what tests and budgets query instead of timing.
 struct ResourceCounts {
-  size_t meshBuffers = 0;    // meshes resident on the GPU: one per distinct Mesh drawn recently,
-                             // however many draws share it
-  uint64_t meshUploads = 0;  // mesh uploads since creation (a new mesh, or one whose bytes changed)
+  size_t meshBuffers = 0;        // meshes resident on the GPU: one per distinct Mesh drawn recently,
+                                 // however many draws share it
+  uint64_t meshUploads = 0;      // mesh uploads since creation (a new mesh, or one whose bytes changed)
   size_t materialBuffers = 0;    // persistent UniformBlocks resident on the GPU
   uint64_t materialUploads = 0;  // UniformBlock uploads since creation (new, or generation changed)
   // Vulkan only (0 on GL): vkAllocateMemory calls since creation. Meshes and material blocks are

@@ -44,6 +44,6 @@ struct ForwardPostGraph {
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
 // which forces it to be stored.
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
-                                      HdrFormat hdrFormat = HdrFormat::Rgba16Float);
+                                       HdrFormat hdrFormat = HdrFormat::Rgba16Float);
 
 }  // namespace facet::runtime

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "facet/runtime/render_backend.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/material.h"
 #include "facet/runtime/material_instance.h"
+#include "facet/runtime/render_backend.h"
 #include "facet/scene/scene.h"
 
 namespace facet::runtime {
@@ -31,9 +31,9 @@ class SceneFrame {
   SceneFrame() = default;
   const Texture* texture(const LoadedMaterial::SampledTexture& t, std::string* error);
   std::vector<std::shared_ptr<Material>> materials_;  // one per package the scene names
-  ColorEncoding colors_ = ColorEncoding::Linear;          // what the scene's tier expects
+  ColorEncoding colors_ = ColorEncoding::Linear;      // what the scene's tier expects
   Mesh sphere_;
-  std::map<std::string, std::unique_ptr<Mesh>> meshes_;  // glTF meshes by resolved path
+  std::map<std::string, std::unique_ptr<Mesh>> meshes_;       // glTF meshes by resolved path
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   EnvironmentLighting environment_;
   std::unique_ptr<Texture> environmentTexture_;

@@ -44,10 +44,10 @@ struct AppImage {
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
   uint32_t width = 0;
   uint32_t height = 0;
-  VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // its layout now (UNDEFINED: contents discarded)
+  VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;                 // its layout now (UNDEFINED: contents discarded)
   VkImageLayout newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;  // left in this layout
-  VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // as created
-  VkImageCreateFlags createFlags = 0;                         // as created
+  VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;           // as created
+  VkImageCreateFlags createFlags = 0;                                  // as created
 };
 
 class VulkanRenderer : public RenderBackend {
@@ -76,8 +76,7 @@ class VulkanRenderer : public RenderBackend {
   //   recorded frame has finished (its destructor waits for the device to be idle).
   // Texture uploads (a texture seen for the first time or changed) are still submitted by the
   // backend to AppDevice::queue and waited for during this call.
-  virtual bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd,
-                           std::string* error) = 0;
+  virtual bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd, std::string* error) = 0;
   // Releases what the backend keeps for `image` (see AppImage). The app calls it before
   // destroying an image it rendered into, once no submitted frame uses the image any more.
   virtual void forgetImage(VkImage image) = 0;

@@ -27,7 +27,7 @@ struct Camera {
   double nearPlane = 0.1;
   double farPlane = 100;
   // Physical settings: they give the exposure that pre-exposes every light.
-  double aperture = 16;        // f-number
+  double aperture = 16;  // f-number
   double shutterSeconds = 1.0 / 125;
   double iso = 100;
 };
@@ -56,20 +56,22 @@ struct PunctualLight {
 inline constexpr size_t kMaxSceneLights = 4;
 
 struct SceneObject {
-  std::string mesh = "sphere";     // or a .gltf/.glb path (resolved, inside the scene's folder)
-  std::string material;            // package name: <package dir>/<material>.matpkg
+  std::string mesh = "sphere";  // or a .gltf/.glb path (resolved, inside the scene's folder)
+  std::string material;         // package name: <package dir>/<material>.matpkg
   glm::dvec3 position{0, 0, 0};
   double radius = 1;
   std::map<std::string, std::vector<double>> params;
-  std::set<std::string> boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
-  std::map<std::string, std::string> textures;  // texture parameter -> image path (relative to the scene file, resolved)
+  std::set<std::string>
+      boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
+  std::map<std::string, std::string>
+      textures;  // texture parameter -> image path (relative to the scene file, resolved)
 };
 
 // The environment that lights a scene by image-based lighting (docs/scene-format.md,
 // "environment"). Radiance = luminance × the image's (or the sky's) relative value, in cd/m².
 struct Environment {
-  std::string image;               // equirect image path (resolved); empty: the analytic sky below
-  double luminance = 1000;         // cd/m² that a value of 1 in the image or sky colours stands for
+  std::string image;        // equirect image path (resolved); empty: the analytic sky below
+  double luminance = 1000;  // cd/m² that a value of 1 in the image or sky colours stands for
   // Analytic sky (evaluated into an equirect image on the CPU): mix(horizon, zenith, √y) above the
   // horizon, mix(horizon, ground, √−y) below it, y the direction's up component.
   glm::dvec3 zenith{0.25, 0.45, 1.0};
@@ -84,10 +86,10 @@ struct Scene {
   Camera camera;
   std::optional<Sun> sun;
   std::vector<PunctualLight> lights;
-  double skyLuminance = 0;         // cd/m², a constant environment (used when `environment` is absent)
+  double skyLuminance = 0;  // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
   std::vector<SceneObject> objects;
-  PostSettings post;               // the post pass's effects (docs/scene-format.md "post")
+  PostSettings post;  // the post pass's effects (docs/scene-format.md "post")
   // Their settings, read when post.colorGrading / post.vignette are on: grading from settings, or
   // from a .cube file (resolved, under the asset root) when gradingLut is not empty.
   ColorGradingSettings grading;

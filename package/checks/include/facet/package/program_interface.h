@@ -44,7 +44,7 @@ struct ProgramInterface {
   // Per 4-byte word of the block: written by the variant's preshader program (derived members).
   std::vector<bool> preshadedWords;
   struct Sampler {
-    std::string name;  // the GLSL ES sampler uniform
+    std::string name;      // the GLSL ES sampler uniform
     uint32_t binding = 0;  // Vulkan: set abi::kTextureSet; GL: texture unit
     bool cube = false;
   };
@@ -62,7 +62,7 @@ struct ReflectedMember {
   ValueType type;
 };
 struct ReflectedBlock {
-  std::string name;  // block type name, e.g. "MaterialParams"
+  std::string name;               // block type name, e.g. "MaterialParams"
   uint32_t set = 0, binding = 0;  // Vulkan; unused when the stage binds by name (GL)
   uint32_t bytes = 0;             // the block's size as the shader declares it
   uint32_t arraySize = 0;         // 0: one block
