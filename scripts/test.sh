@@ -2,7 +2,9 @@
 # Builds and runs the whole test suite, as CI does:
 #   docs        scripts/check-docs.sh: no date, commit hash, tracker reference or path outside the
 #               repository in docs/ or source comments (history files excepted)
-#   build/test  warnings as errors (-Werror), RelWithDebInfo
+#   format      scripts/check-format.sh: every C++ source as clang-format writes it
+#   build/test  warnings as errors (-Werror), RelWithDebInfo; then scripts/check-tidy.sh over what it
+#               compiled (.clang-tidy's naming and bug checks)
 #   build/fuzz  materials, packages, scenes, images, .cube LUTs and glTF meshes fuzzed for FACET_FUZZ_SECONDS each (default 60): clang,
 #               libFuzzer + ASan + UBSan (scripts/fuzz.sh); a crash, leak or hang fails the run
 #   build/asan  AddressSanitizer + UndefinedBehaviorSanitizer, Debug (last, so the run closes
@@ -14,6 +16,7 @@ cd "$(dirname "$0")/.."
 
 bash scripts/setup-deps.sh
 bash scripts/check-docs.sh
+bash scripts/check-format.sh
 
 # The configurations are CMakePresets.json's (build/<preset>): the same ones a developer uses.
 jobs=$(nproc)
@@ -25,6 +28,7 @@ run_suite() {
 
 run_suite test
 [ "${1:-}" = "--quick" ] && exit 0
+bash scripts/check-tidy.sh build/test
 
 # The seed corpus and every past finding already ran in the suite above (test_fuzz_regressions);
 # this explores new inputs for a bounded time, well inside CI's 90-minute limit.
