@@ -16,6 +16,9 @@ packages=(
   libglm-dev libzstd-dev libxxhash-dev nlohmann-json3-dev libcli11-dev libstb-dev
   # glTF 2.0 meshes in scenes (runtime/src/gltf_mesh.cpp)
   libtinygltf-dev
+  # mobile data formats: vertex-cache and overdraw optimisation of meshes (meshoptimizer) and
+  # ASTC texture encoding and decoding (Arm's astcenc)
+  libmeshoptimizer-dev libastcenc-dev
   # tests (python3-jsonschema: the SARIF schema check of matc lint's report)
   googletest libgtest-dev libgmock-dev python3-jsonschema
   # tests of tools/mesa_stats (Python, standard library only)
