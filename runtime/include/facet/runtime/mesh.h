@@ -40,4 +40,19 @@ struct MeshIdentity {
 // true sphere.
 Mesh makeSphere(int rings = 64, int segments = 128);
 
+// A unit square in the xz plane, x and z in [−0.5, 0.5], facing +y: normal +y, uv0 = uv1 = (x +
+// 0.5, z + 0.5) (seen from above with −z up, the image reads upright), tangent +x, w = −1. It is
+// a grid of segments² quads, not two triangles, because the mid and low tiers light diffuse per
+// vertex (forward.vert.glsl) and interpolate it: a point light at height h over the plane gives
+// irradiance ∝ h / (h² + x²)^(3/2), whose linear interpolation over a step Δ errs by at most
+// Δ² |f''| / 8 = (3/8) (Δ/h)² of its peak; 64 segments keep that under 5 % for a 20 m ground
+// (Δ = 0.31 m) lit from 0.9 m up, for 4225 vertices (half the sphere's).
+Mesh makePlane(int segments = 64);
+
+// A unit cube, each coordinate in [−0.5, 0.5], flat-shaded: each face its own segments² grid
+// (as makePlane) with its outward normal, its tangent along the face's u and w = −1, and uv0 =
+// uv1 covering [0, 1]² (side faces upright with +y up, the top as makePlane, the bottom with +z
+// up). 16 segments a face keep the per-vertex error above under 5 % for a 5 m face lit from 0.9 m.
+Mesh makeBox(int segments = 16);
+
 }  // namespace facet::runtime
