@@ -368,9 +368,9 @@ double compareWithRayCast(const ShapesRender& r, Expected expected, double toler
 
 // Each pixel's interpolated world normal (shown as n · 0.5 + 0.5) is the analytic shape's normal
 // there: the inverse-transpose of the model matrix keeps normals perpendicular to the squashed
-// sphere and the scaled boxes (the model matrix itself would tilt them by up to 25° here).
-// Tolerance 0.01 (0.02 of a normal component): measured worst 0.0045, on the sphere, whose facets
-// interpolate between exact vertex normals, and from fp16's 1/2048 steps near 1.
+// sphere and the scaled boxes (with the model matrix itself the sphere's pixels are 0.10 off).
+// Tolerance 0.01 (0.02 of a normal component): measured worst 0.0017, from the sphere's facets
+// (interpolated between exact vertex normals) and fp16's steps of 1/2048 near 1.
 TEST(BuiltinMeshes, RenderedNormalsMatchTheAnalyticShapesOnBothBackends) {
   const ShapesRender r = renderShapes("vertex.normal * 0.5 + 0.5");
   ASSERT_EQ(r.error, "");
@@ -379,7 +379,7 @@ TEST(BuiltinMeshes, RenderedNormalsMatchTheAnalyticShapesOnBothBackends) {
   const double worst = compareWithRayCast(r, [](const Hit& h) { return h.normal * 0.5 + 0.5; }, 0.01, checked);
   std::printf("normals: worst difference %.5f; pixels checked per object %zu %zu %zu %zu %zu\n", worst, checked[0],
               checked[1], checked[2], checked[3], checked[4]);
-  for (size_t n : checked) EXPECT_GT(n, 150u);
+  for (size_t n : checked) EXPECT_GT(n, 100u);
 }
 
 // uv0 (shown as (u, v, 0)) is where mesh.h puts it on the plane, on each box face and on the glTF
@@ -392,7 +392,7 @@ TEST(BuiltinMeshes, RenderedUvsMatchTheirDescriptionOnBothBackends) {
   const double worst = compareWithRayCast(
       r, [](const Hit& h) { return h.object == 3 ? glm::dvec3(-1) : glm::dvec3(h.uv, 0); }, 0.004, checked);
   std::printf("uvs: worst difference %.5f\n", worst);
-  for (size_t object : {0, 1, 2, 4}) EXPECT_GT(checked[object], 150u) << object;
+  for (size_t object : {0, 1, 2, 4}) EXPECT_GT(checked[object], 100u) << object;
 }
 
 }  // namespace facet::runtime
