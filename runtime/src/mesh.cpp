@@ -42,7 +42,8 @@ void appendGrid(Mesh& mesh, glm::vec3 centre, glm::vec3 right, glm::vec3 up, int
     for (int column = 0; column <= segments; ++column) {
       const float u = float(column) / float(segments), v = float(row) / float(segments);
       const glm::vec3 p = centre + (u - 0.5f) * right + (0.5f - v) * up;
-      appendVertex(mesh, {{p.x, p.y, p.z}, {n.x, n.y, n.z}, {u, v}, {u, v}, {1, 1, 1, 1}, {right.x, right.y, right.z, -1}});
+      appendVertex(mesh,
+                   {{p.x, p.y, p.z}, {n.x, n.y, n.z}, {u, v}, {u, v}, {1, 1, 1, 1}, {right.x, right.y, right.z, -1}});
     }
   }
   appendGridIndices(mesh, base, segments, segments);
@@ -97,8 +98,8 @@ Mesh makeBox(int segments) {
   // Each face's (right, up) as a viewer outside it sees them: sides upright (+y up), the top with
   // −z up (the plane's orientation), the bottom with +z up.
   const glm::vec3 faces[6][2] = {
-      {{0, 0, -1}, {0, 1, 0}}, {{0, 0, 1}, {0, 1, 0}},  {{1, 0, 0}, {0, 0, -1}},  // +x, −x, +y
-      {{1, 0, 0}, {0, 0, 1}},  {{1, 0, 0}, {0, 1, 0}},  {{-1, 0, 0}, {0, 1, 0}},  // −y, +z, −z
+      {{0, 0, -1}, {0, 1, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{1, 0, 0}, {0, 0, -1}},  // +x, −x, +y
+      {{1, 0, 0}, {0, 0, 1}},  {{1, 0, 0}, {0, 1, 0}}, {{-1, 0, 0}, {0, 1, 0}},  // −y, +z, −z
   };
   for (const auto& [right, up] : faces) appendGrid(mesh, 0.5f * glm::cross(right, up), right, up, segments);
   return mesh;

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <optional>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <optional>
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
@@ -141,7 +140,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     // .gltf or .glb (scene.cpp).
     auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
     if (added) {
-      std::optional<Mesh> made = o.mesh == "sphere" ? makeSphere()
+      std::optional<Mesh> made = o.mesh == "sphere"  ? makeSphere()
                                  : o.mesh == "plane" ? makePlane()
                                  : o.mesh == "box"   ? makeBox()
                                                      : loadGltfMesh(o.mesh, error, {scene.assetRoot, &meshBudget});
@@ -154,10 +153,9 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     draw.mesh = mesh->second.get();
     draw.program = &material.program();
-    // T · R · S; normals take the inverse-transpose, which stays perpendicular to the surface under
-    // a non-uniform scale (the forward vertex stage normalises the result).
-    const glm::dmat4 model = glm::translate(glm::dmat4(1), o.position) * glm::mat4_cast(o.rotation) *
-                             glm::scale(glm::dmat4(1), o.radius * o.scale);
+    // Normals take the inverse-transpose, which stays perpendicular to the surface under a
+    // non-uniform scale (the forward vertex stage normalises the result).
+    const glm::dmat4 model = modelMatrix(o);
     store(draw.object.model, glm::mat4(model));
     store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
     auto block = material.loaded().paramBlock(o.params, error, out->colors_, o.boolParams);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -189,7 +190,8 @@ Environment environment(const json& j, const AssetPaths& assets) {
 // about y), and a fixed order of fixed axes is the one thing a reader must know for several.
 glm::dquat eulerDegrees(const json& j, const std::string& pointer) {
   if (!j.is_array() || j.size() != 3)
-    fail(pointer, "expected [x, y, z]: angles in degrees about the x, y and z axes (a quaternion goes in 'quaternion')");
+    fail(pointer,
+         "expected [x, y, z]: angles in degrees about the x, y and z axes (a quaternion goes in 'quaternion')");
   glm::dvec3 a;
   for (int i = 0; i < 3; ++i) a[i] = glm::radians(number(j[size_t(i)], pointer + "/" + std::to_string(i), -360, 360));
   return glm::angleAxis(a.z, glm::dvec3(0, 0, 1)) * glm::angleAxis(a.y, glm::dvec3(0, 1, 0)) *
@@ -216,7 +218,8 @@ glm::dvec3 scale(const json& j, const std::string& pointer) {
   const auto component = [&](const json& c, const std::string& p) {
     if (c.is_number() && c.get<double>() == 0) fail(p, "a scale of 0 flattens the object; give a scale > 0");
     if (c.is_number() && c.get<double>() < 0)
-      fail(p, "a negative scale (" + c.dump() + ") would mirror the object; mirroring is not supported, give a scale > 0");
+      fail(p,
+           "a negative scale (" + c.dump() + ") would mirror the object; mirroring is not supported, give a scale > 0");
     return number(c, p, 1e-4, 1e6);
   };
   if (j.is_number()) return glm::dvec3(component(j, pointer));
@@ -231,8 +234,7 @@ std::string builtinMeshNames() {
 }
 
 SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
-  onlyKeys(j, pointer,
-           {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "params"});
+  onlyKeys(j, pointer, {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "params"});
   SceneObject o;
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
   if (std::find(std::begin(kBuiltinMeshes), std::end(kBuiltinMeshes), o.mesh) == std::end(kBuiltinMeshes)) {
@@ -240,8 +242,8 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
     // (runtime/gltf_mesh.h).
     const std::string extension = std::filesystem::path(o.mesh).extension().string();
     if (extension != ".gltf" && extension != ".glb")
-      fail(pointer + "/mesh", "unknown mesh '" + scene::pointerSegment(o.mesh) +
-                                  "' (built in: " + builtinMeshNames() + "; or a .gltf/.glb file)");
+      fail(pointer + "/mesh", "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (built in: " + builtinMeshNames() +
+                                  "; or a .gltf/.glb file)");
     o.mesh = assets.resolve(j["mesh"], pointer + "/mesh");
   }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
@@ -380,6 +382,11 @@ Scene scene(const json& j, const AssetPaths& assets) {
 }
 
 }  // namespace
+
+glm::dmat4 modelMatrix(const SceneObject& o) {
+  return glm::translate(glm::dmat4(1), o.position) * glm::mat4_cast(o.rotation) *
+         glm::scale(glm::dmat4(1), o.radius * o.scale);
+}
 
 std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
                                 const SceneReadOptions& options) {

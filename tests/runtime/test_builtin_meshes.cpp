@@ -39,8 +39,9 @@ struct NamedMesh {
                   // the sphere's facets span π/64 of latitude, so cos(π/64) ≈ 0.9988 at worst
 };
 
-std::vector<NamedMesh> builtinMeshes() { return {{"sphere", makeSphere(), 0.998}, {"plane", makePlane(), 1 - 1e-6},
-                                                 {"box", makeBox(), 1 - 1e-6}}; }
+std::vector<NamedMesh> builtinMeshes() {
+  return {{"sphere", makeSphere(), 0.998}, {"plane", makePlane(), 1 - 1e-6}, {"box", makeBox(), 1 - 1e-6}};
+}
 
 }  // namespace
 
@@ -270,7 +271,9 @@ glm::dmat4 trs(glm::dvec3 position, glm::dmat4 rotation, glm::dvec3 scale) {
 
 // Euler degrees as docs/scene-format.md defines them: about x, then y, then z (world axes).
 glm::dmat4 euler(double x, double y, double z) {
-  const auto about = [](double degrees, glm::dvec3 axis) { return glm::rotate(glm::dmat4(1), glm::radians(degrees), axis); };
+  const auto about = [](double degrees, glm::dvec3 axis) {
+    return glm::rotate(glm::dmat4(1), glm::radians(degrees), axis);
+  };
   return about(z, {0, 0, 1}) * about(y, {0, 1, 0}) * about(x, {1, 0, 0});
 }
 
@@ -376,7 +379,8 @@ TEST(BuiltinMeshes, RenderedNormalsMatchTheAnalyticShapesOnBothBackends) {
   ASSERT_EQ(r.error, "");
   EXPECT_EQ(r.validation, std::vector<std::string>{});
   size_t checked[5] = {};
-  const double worst = compareWithRayCast(r, [](const Hit& h) { return h.normal * 0.5 + 0.5; }, 0.01, checked);
+  const double worst = compareWithRayCast(
+      r, [](const Hit& h) { return h.normal * 0.5 + 0.5; }, 0.01, checked);
   std::printf("normals: worst difference %.5f; pixels checked per object %zu %zu %zu %zu %zu\n", worst, checked[0],
               checked[1], checked[2], checked[3], checked[4]);
   for (size_t n : checked) EXPECT_GT(n, 100u);

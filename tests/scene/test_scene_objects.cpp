@@ -88,7 +88,8 @@ TEST(SceneObjects, ZeroNegativeAndHugeScalesAreErrors) {
             "supported, give a scale > 0");
   EXPECT_EQ(errorOf(R"("scale": [1, 1e-5, 1])"),
             "s.json: error: /objects/0/scale/1: value 1e-05 is outside [0.0001, 1000000.0]");
-  EXPECT_EQ(errorOf(R"("scale": 1e300)"), "s.json: error: /objects/0/scale: value 1e+300 is outside [0.0001, 1000000.0]");
+  EXPECT_EQ(errorOf(R"("scale": 1e300)"),
+            "s.json: error: /objects/0/scale: value 1e+300 is outside [0.0001, 1000000.0]");
   // JSON has no infinity: an overflowing literal stops at the parser, with its line and column.
   EXPECT_EQ(errorOf(R"("scale": [1, 1e999, 1])"), "s.json:1:45: error: invalid JSON: number overflow parsing '1e999'");
   EXPECT_EQ(errorOf(R"("scale": [1, 2])"), "s.json: error: /objects/0/scale: expected a number or [x, y, z]");
@@ -111,7 +112,8 @@ TEST(SceneObjects, MalformedRotationsAreErrors) {
             "s.json: error: /objects/0/quaternion: a quaternion needs a length of at least 1e-6 to be normalised");
   EXPECT_EQ(errorOf(R"("quaternion": [0, 1e-300, 0, 0])"),
             "s.json: error: /objects/0/quaternion: a quaternion needs a length of at least 1e-6 to be normalised");
-  EXPECT_EQ(errorOf(R"("quaternion": [0, 0, 1])"), "s.json: error: /objects/0/quaternion: expected [x, y, z, w]: a quaternion");
+  EXPECT_EQ(errorOf(R"("quaternion": [0, 0, 1])"),
+            "s.json: error: /objects/0/quaternion: expected [x, y, z, w]: a quaternion");
   EXPECT_EQ(errorOf(R"("quaternion": [0, 0, 1, null])"), "s.json: error: /objects/0/quaternion/3: expected a number");
   EXPECT_EQ(errorOf(R"("rotation": [0, 0, 0], "quaternion": [0, 0, 0, 1])"),
             "s.json: error: /objects/0/quaternion: give either 'rotation' (degrees) or 'quaternion', not both");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "facet/scene/post_settings.h"
@@ -75,6 +76,9 @@ struct SceneObject {
   std::map<std::string, std::string>
       textures;  // texture parameter -> image path (relative to the scene file, resolved)
 };
+
+// The object's model matrix, T · R · S (the scene's `position`, `rotation`, `radius` · `scale`).
+glm::dmat4 modelMatrix(const SceneObject& o);
 
 // The environment that lights a scene by image-based lighting (docs/scene-format.md,
 // "environment"). Radiance = luminance × the image's (or the sky's) relative value, in cd/m².
