@@ -1,5 +1,6 @@
 #include "facet/eval/prepared_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -15,10 +16,14 @@ runtime::ColorEncoding encoding(const TierConfig& c) {
                                                              : runtime::ColorEncoding::Linear;
 }
 
+// Same position, rotation and scale: the draw's model matrix is the object's, rounded to float.
 bool samePlace(const runtime::DrawItem& draw, const runtime::SceneObject& o) {
-  const float* m = draw.object.model;
-  return std::abs(m[12] - float(o.position.x)) <= 1e-5f && std::abs(m[13] - float(o.position.y)) <= 1e-5f &&
-         std::abs(m[14] - float(o.position.z)) <= 1e-5f && std::abs(m[0] - float(o.radius)) <= 1e-5f;
+  const glm::dmat4 model = runtime::modelMatrix(o);
+  for (int i = 0; i < 16; ++i) {
+    const double want = model[i / 4][i % 4];
+    if (std::abs(draw.object.model[i] - want) > 1e-5 * std::max(1.0, std::abs(want))) return false;
+  }
+  return true;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <optional>
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
@@ -66,7 +67,6 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   // PreparedFrame overrides this for its swap).
   out->colors_ = permutations::preset(*tier).colorSpace == permutations::ColorSpace::GammaHack ? ColorEncoding::Srgb
                                                                                                : ColorEncoding::Linear;
-  out->sphere_ = makeSphere();
 
   // Lights are multiplied by the exposure here, on the CPU, so shaders see O(1) values
   // (chunks/precision.glsl: the pre-exposure contract that keeps mediump finite).
@@ -135,23 +135,27 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     const Material& material = *out->materials_[it->second];
     DrawItem draw;
-    draw.mesh = &out->sphere_;
-    if (o.mesh != "sphere") {
-      // One Mesh per file, shared by every object that names it (and so one GPU buffer).
-      auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
-      if (added) {
-        auto gltf = loadGltfMesh(o.mesh, error, {scene.assetRoot, &meshBudget});
-        if (!gltf) {
-          out->meshes_.erase(mesh);
-          *error = "object " + std::to_string(i) + ": " + *error;
-          return nullptr;
-        }
-        mesh->second = std::make_unique<Mesh>(std::move(*gltf));
+    // One Mesh per built-in name or file, built when first named and shared by every object that
+    // names it (and so one GPU buffer). A file's path never equals a built-in name: it ends in
+    // .gltf or .glb (scene.cpp).
+    auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
+    if (added) {
+      std::optional<Mesh> made = o.mesh == "sphere"  ? makeSphere()
+                                 : o.mesh == "plane" ? makePlane()
+                                 : o.mesh == "box"   ? makeBox()
+                                                     : loadGltfMesh(o.mesh, error, {scene.assetRoot, &meshBudget});
+      if (!made) {
+        out->meshes_.erase(mesh);
+        *error = "object " + std::to_string(i) + ": " + *error;
+        return nullptr;
       }
-      draw.mesh = mesh->second.get();
+      mesh->second = std::make_unique<Mesh>(std::move(*made));
     }
+    draw.mesh = mesh->second.get();
     draw.program = &material.program();
-    glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), o.position), glm::dvec3(o.radius));
+    // Normals take the inverse-transpose, which stays perpendicular to the surface under a
+    // non-uniform scale (the forward vertex stage normalises the result).
+    const glm::dmat4 model = modelMatrix(o);
     store(draw.object.model, glm::mat4(model));
     store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
     auto block = material.loaded().paramBlock(o.params, error, out->colors_, o.boolParams);

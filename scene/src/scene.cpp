@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -183,17 +184,66 @@ Environment environment(const json& j, const AssetPaths& assets) {
   return e;
 }
 
+// Euler angles as people write them by hand: degrees, about the world's x, y and z axes, applied
+// in that order (R = Rz · Ry · Rx, Blender's "XYZ Euler"), each counter-clockwise looking down its
+// axis towards the origin (right-hand rule). One angle is the common case (a wall turned by 30°
+// about y), and a fixed order of fixed axes is the one thing a reader must know for several.
+glm::dquat eulerDegrees(const json& j, const std::string& pointer) {
+  if (!j.is_array() || j.size() != 3)
+    fail(pointer,
+         "expected [x, y, z]: angles in degrees about the x, y and z axes (a quaternion goes in 'quaternion')");
+  glm::dvec3 a;
+  for (int i = 0; i < 3; ++i) a[i] = glm::radians(number(j[size_t(i)], pointer + "/" + std::to_string(i), -360, 360));
+  return glm::angleAxis(a.z, glm::dvec3(0, 0, 1)) * glm::angleAxis(a.y, glm::dvec3(0, 1, 0)) *
+         glm::angleAxis(a.x, glm::dvec3(1, 0, 0));
+}
+
+// A quaternion in glTF's order, [x, y, z, w], normalised here (so [0, 1, 0, 1] is 90° about y).
+// One too short to normalise has no rotation to give.
+glm::dquat quaternion(const json& j, const std::string& pointer) {
+  if (!j.is_array() || j.size() != 4) fail(pointer, "expected [x, y, z, w]: a quaternion");
+  double c[4];
+  for (int i = 0; i < 4; ++i) c[i] = number(j[size_t(i)], pointer + "/" + std::to_string(i), -1e6, 1e6);
+  const glm::dquat q(c[3], c[0], c[1], c[2]);  // glm's constructor takes w first
+  const double length = glm::length(q);
+  if (length < kMinDirectionLength) fail(pointer, "a quaternion needs a length of at least 1e-6 to be normalised");
+  return q / length;
+}
+
+// A scale per axis. Zero flattens the object (its normal matrix has no inverse). A negative one
+// mirrors it, which would turn its triangles' winding and tangent frames inside out; Facet refuses
+// it rather than draw the object's back faces: the built-in meshes are symmetric (a rotation gives
+// the same shape) and a glTF file mirrors in its own node transforms (runtime/gltf_mesh.h).
+glm::dvec3 scale(const json& j, const std::string& pointer) {
+  const auto component = [&](const json& c, const std::string& p) {
+    if (c.is_number() && c.get<double>() == 0) fail(p, "a scale of 0 flattens the object; give a scale > 0");
+    if (c.is_number() && c.get<double>() < 0)
+      fail(p,
+           "a negative scale (" + c.dump() + ") would mirror the object; mirroring is not supported, give a scale > 0");
+    return number(c, p, 1e-4, 1e6);
+  };
+  if (j.is_number()) return glm::dvec3(component(j, pointer));
+  if (!j.is_array() || j.size() != 3) fail(pointer, "expected a number or [x, y, z]");
+  return {component(j[0], pointer + "/0"), component(j[1], pointer + "/1"), component(j[2], pointer + "/2")};
+}
+
+std::string builtinMeshNames() {
+  std::string names;
+  for (const char* name : kBuiltinMeshes) names += std::string(names.empty() ? "" : ", ") + name;
+  return names;
+}
+
 SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
-  onlyKeys(j, pointer, {"mesh", "material", "position", "radius", "params"});
+  onlyKeys(j, pointer, {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "params"});
   SceneObject o;
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
-  if (o.mesh != "sphere") {
+  if (std::find(std::begin(kBuiltinMeshes), std::end(kBuiltinMeshes), o.mesh) == std::end(kBuiltinMeshes)) {
     // A glTF 2.0 file, relative to the scene's folder and inside the asset root, as images are
     // (runtime/gltf_mesh.h).
     const std::string extension = std::filesystem::path(o.mesh).extension().string();
     if (extension != ".gltf" && extension != ".glb")
-      fail(pointer + "/mesh",
-           "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (available: sphere, or a .gltf/.glb file)");
+      fail(pointer + "/mesh", "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (built in: " + builtinMeshNames() +
+                                  "; or a .gltf/.glb file)");
     o.mesh = assets.resolve(j["mesh"], pointer + "/mesh");
   }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
@@ -204,7 +254,15 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
     fail(pointer + "/material",
          "expected a material name (letters, digits, _), not '" + scene::pointerSegment(o.material) + "'");
   if (j.contains("position")) o.position = vec3(j["position"], pointer + "/position");
+  if (j.contains("rotation") && j.contains("quaternion"))
+    fail(pointer + "/quaternion", "give either 'rotation' (degrees) or 'quaternion', not both");
+  if (j.contains("rotation")) o.rotation = eulerDegrees(j["rotation"], pointer + "/rotation");
+  if (j.contains("quaternion")) o.rotation = quaternion(j["quaternion"], pointer + "/quaternion");
+  // Two sizes for one object would leave the reader guessing whether they multiply.
+  if (j.contains("radius") && j.contains("scale"))
+    fail(pointer + "/scale", "give either 'radius' (a uniform scale) or 'scale', not both");
   if (j.contains("radius")) o.radius = number(j["radius"], pointer + "/radius", 1e-4, 1e6);
+  if (j.contains("scale")) o.scale = scale(j["scale"], pointer + "/scale");
   if (j.contains("params")) {
     const json& params = j["params"];
     if (!params.is_object()) fail(pointer + "/params", "expected an object");
@@ -324,6 +382,11 @@ Scene scene(const json& j, const AssetPaths& assets) {
 }
 
 }  // namespace
+
+glm::dmat4 modelMatrix(const SceneObject& o) {
+  return glm::translate(glm::dmat4(1), o.position) * glm::mat4_cast(o.rotation) *
+         glm::scale(glm::dmat4(1), o.radius * o.scale);
+}
 
 std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
                                 const SceneReadOptions& options) {

@@ -262,6 +262,10 @@ TEST(EvalPreparedFrame, AGammaHackSwapSeesColoursAsAuthored) {
     auto material = checked(text);
     facet::runtime::SceneObject object;
     object.material = "flat";
+    // Turned and scaled: the adaptation finds the object of each draw by its whole transform.
+    object.mesh = "box";
+    object.rotation = glm::angleAxis(0.5, glm::normalize(glm::dvec3(1, 1, 0)));
+    object.scale = {1.5, 1.2, 1.0};
     scene.objects = {object};
     TierConfig gamma = facet::permutations::preset(Tier::Mid);
     gamma.colorSpace = facet::permutations::ColorSpace::GammaHack;

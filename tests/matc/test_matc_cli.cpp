@@ -414,6 +414,24 @@ TEST(MatcCli, SceneManifestBuildsOnlyTheVariantsItNeeds) {
   EXPECT_FALSE(fs::exists(dir + "/g.matpkg"));
 }
 
+// A scene of built-in meshes with rotations and scales (the yard) is a manifest like any other:
+// each material it names is built with the one variant it asks for, and info --scene finds it.
+TEST(MatcCli, SceneOfBuiltInMeshesIsAManifest) {
+  std::string dir = facet::test::scratchDir("cli-yard");
+  std::string scene = facet::test::examplePath("scenes/yard.json");
+  for (const char* name : {"red_plastic", "brushed_gold", "banded_ceramic"}) {
+    const std::string package = dir + "/" + name + ".matpkg";
+    auto r = run(kMatc + " compile " + facet::test::examplePath("materials/" + std::string(name) + ".mat") + " -o " +
+                 package + " --scene " + scene);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find(std::string(name) + ": 1 variant for scene " + scene), std::string::npos) << r.out;
+    auto info = run(kMatc + " info " + package + " --scene " + scene);
+    EXPECT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("asks for high.dir1; the package has 1 variant, including it"), std::string::npos)
+        << info.out;
+  }
+}
+
 // A scene with point lights asks for a .pt variant: a default build lacks it (info --scene says
 // so, exit 1), --point-lights or --scene builds it.
 TEST(MatcCli, PointLightVariantsAreBuiltOnRequestAndCheckedAgainstAScene) {

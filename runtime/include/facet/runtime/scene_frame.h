@@ -32,8 +32,8 @@ class SceneFrame {
   const Texture* texture(const LoadedMaterial::SampledTexture& t, std::string* error);
   std::vector<std::shared_ptr<Material>> materials_;  // one per package the scene names
   ColorEncoding colors_ = ColorEncoding::Linear;      // what the scene's tier expects
-  Mesh sphere_;
-  std::map<std::string, std::unique_ptr<Mesh>> meshes_;       // glTF meshes by resolved path
+  // Built-in meshes by name, glTF meshes by resolved path.
+  std::map<std::string, std::unique_ptr<Mesh>> meshes_;
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   EnvironmentLighting environment_;
   std::unique_ptr<Texture> environmentTexture_;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "facet/scene/post_settings.h"
@@ -55,17 +57,28 @@ struct PunctualLight {
 // (permutations::kMaxPointLights).
 inline constexpr size_t kMaxSceneLights = 4;
 
+// The meshes the runtime builds itself (runtime/mesh.h): a scene object's `mesh` is one of these
+// or a glTF file.
+inline constexpr const char* kBuiltinMeshes[] = {"sphere", "plane", "box"};
+
+// An object is placed by model = translate(position) · rotate(rotation) · scale(radius · scale):
+// scaled about its origin, then rotated, then moved (docs/scene-format.md, "Transforms").
 struct SceneObject {
-  std::string mesh = "sphere";  // or a .gltf/.glb path (resolved, inside the scene's folder)
+  std::string mesh = "sphere";  // a kBuiltinMeshes name, or a .gltf/.glb path (resolved, inside the scene's folder)
   std::string material;         // package name: <package dir>/<material>.matpkg
   glm::dvec3 position{0, 0, 0};
-  double radius = 1;
+  glm::dquat rotation{1, 0, 0, 0};  // unit length (w, x, y, z in glm's constructor)
+  double radius = 1;                // a uniform scale: the unit sphere's radius
+  glm::dvec3 scale{1, 1, 1};        // per axis, each > 0; multiplies radius (a scene gives one of the two)
   std::map<std::string, std::vector<double>> params;
   std::set<std::string>
       boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
   std::map<std::string, std::string>
       textures;  // texture parameter -> image path (relative to the scene file, resolved)
 };
+
+// The object's model matrix, T · R · S (the scene's `position`, `rotation`, `radius` · `scale`).
+glm::dmat4 modelMatrix(const SceneObject& o);
 
 // The environment that lights a scene by image-based lighting (docs/scene-format.md,
 // "environment"). Radiance = luminance × the image's (or the sky's) relative value, in cd/m².
