@@ -282,7 +282,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
   for (const DrawItem& draw : frame.draws) collect(draw.textures);
 
   std::vector<std::pair<const Texture*, Entry>> pending;
-  // What is uploaded for a texture the device cannot sample as it is: its RGBA8 decoding, kept
+  // What is uploaded for a texture the device cannot sample as it is: its CPU decoding, kept
   // until the upload is done.
   std::vector<std::unique_ptr<Texture>> decoded;
   std::vector<const Texture*> uploadSources;

@@ -173,7 +173,7 @@ struct ResourceCounts {
   // memory the host cannot map, or VulkanOptions::stageBufferUploads); 0 where written directly.
   uint64_t stagedUploadBytes = 0;
   // Textures in a block-compressed format (ASTC) since creation: uploaded as blocks, because the
-  // device samples them, or decoded to RGBA8 on the CPU first, because it does not.
+  // device samples them, or decoded on the CPU first, because it does not.
   uint64_t compressedTextureUploads = 0;
   uint64_t decodedTextureUploads = 0;
 };
@@ -241,7 +241,7 @@ struct GlOptions {
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
   // The HDR target's format; creation fails when the context cannot render to it.
   HdrFormat hdrFormat = HdrFormat::Rgba16Float;
-  // Decode ASTC textures to RGBA8 on the CPU even where the context samples ASTC
+  // Decode ASTC textures on the CPU even where the context samples ASTC
   // (GL_KHR_texture_compression_astc_ldr): the path of a context without it, for tests.
   bool decodeCompressedTextures = false;
 };
