@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "facet/runtime/image_texture.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
 #include "facet/runtime/scene_image_budget.h"
+#include "facet/texture/ktx2.h"
 #include "test_compile.h"
 #include "test_images.h"
 #include "test_support.h"
@@ -120,6 +122,37 @@ TEST(CompressedTextures, AstcSceneStaysCloseToThePngScene) {
   // Level 0 of the albedo keeps 48.5 dB and the normal map 42.0 dB (docs/runtime.md); lit and
   // tone-mapped, the frame stays above 40 dB of the PNG one.
   EXPECT_GT(db, 40.0);
+}
+
+// A KTX2 file of the PNG's own RGBA8 levels (what `matc texture --format rgba8` writes) draws the
+// very frame the PNG draws: the levels, their order and the rows' orientation are read as written.
+TEST(CompressedTextures, Rgba8Ktx2DrawsThePngsFrame) {
+  const std::string dir =
+      copyExampleScene("ktx2-rgba8", R"({"width": 160, "height": 96, "sun": {}, "camera": {"position": [0, 0, 3.2]},
+                        "objects": [{"material": "painted_tiles", "params": {"albedo": "textures/tiles.png"}}]})");
+  std::filesystem::copy_file(facet::test::examplePath("scenes/textures/tiles.png"), dir + "/textures/tiles.png");
+  std::string error;
+  auto png = facet::runtime::loadImageTexture(dir + "/textures/tiles.png", true, &error);
+  ASSERT_TRUE(png) << error;
+  const std::vector<uint8_t> bytes = facet::texture::writeKtx2({43, png->width, png->height, png->levels}, &error);
+  ASSERT_FALSE(bytes.empty()) << error;
+  std::ofstream(dir + "/textures/rgba8.ktx2", std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::string json = facet::test::readText(dir + "/scene.json");
+  json.replace(json.find("tiles.png"), 9, "rgba8.ktx2");
+  std::ofstream(dir + "/scene_ktx2.json") << json;
+
+  auto fromPng = prepare(dir + "/scene.json", &error);
+  auto fromKtx2 = prepare(dir + "/scene_ktx2.json", &error);
+  ASSERT_TRUE(fromPng && fromKtx2) << error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  FrameResult a, b;
+  ASSERT_TRUE(vk->render(fromPng->frame(), &a, &error)) << error;
+  ASSERT_TRUE(vk->render(fromKtx2->frame(), &b, &error)) << error;
+  EXPECT_EQ(maxDifference(a.ldr, b.ldr), 0);
+  EXPECT_EQ(vk->resources().compressedTextureUploads + vk->resources().decodedTextureUploads, 0u);
+  EXPECT_TRUE(vk->validationErrors().empty());
 }
 
 TEST(CompressedTextures, TextureEncodedForAnotherUsageIsRefusedNamingIt) {
