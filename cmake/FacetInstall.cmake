@@ -22,7 +22,7 @@ set(FACET_COMPONENTS core vulkan gl gltf scene)
 # facet_warnings: linked PRIVATE by every library, so an exported link-only entry; its flags are
 # BUILD_INTERFACE only, so the exported target is empty.
 set(FACET_COMPONENT_TARGETS_core facet_warnings facet_shader_abi facet_permutations facet_package
-    facet_package_checks facet_scene_types facet_ibl facet_ibl_embedded_dfg facet_runtime_core)
+    facet_package_checks facet_scene_types facet_ibl facet_ibl_embedded_dfg facet_ktx2 facet_astc facet_runtime_core)
 set(FACET_COMPONENT_TARGETS_vulkan facet_runtime_vulkan)
 set(FACET_COMPONENT_TARGETS_gl facet_runtime_gl)
 set(FACET_COMPONENT_TARGETS_gltf facet_runtime_gltf)
@@ -33,7 +33,7 @@ set(FACET_COMPONENT_TARGETS_scene facet_scene)
 # header listed here that includes one not installed fails the consumer test
 # (tests/examples/consumer_project.cmake compiles every installed header).
 set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h render_path.h
-    texture_checks.h environment.h exposure.h image_texture.h material.h material_instance.h mesh.h png.h
+    texture_checks.h compressed_texture.h environment.h exposure.h image_texture.h material.h material_instance.h mesh.h png.h
     preshader.h color_grading.h vignette.h)
 # The Scene type environment.h takes and the post settings; their reader is the scene component.
 set(FACET_SCENE_HEADERS_core scene.h post_settings.h)
@@ -56,7 +56,8 @@ set(FACET_EXTERNAL_DEPENDENCIES
   "Vulkan::Vulkan|package|Vulkan"
   "TinyGLTF::TinyGLTF|package|TinyGLTF"
   "nlohmann_json::nlohmann_json|package|nlohmann_json"
-  "Threads::Threads|package|Threads")
+  "Threads::Threads|package|Threads"
+  "astcenc::astcenc|package|astcenc")
 
 # The outside dependencies of one component's targets, as "target|how|what" entries.
 function(facet_component_dependencies component out)
@@ -99,6 +100,8 @@ set_target_properties(facet_package PROPERTIES EXPORT_NAME package)
 set_target_properties(facet_package_checks PROPERTIES EXPORT_NAME package_checks)
 set_target_properties(facet_ibl PROPERTIES EXPORT_NAME ibl)
 set_target_properties(facet_ibl_embedded_dfg PROPERTIES EXPORT_NAME ibl_embedded_dfg)
+set_target_properties(facet_ktx2 PROPERTIES EXPORT_NAME ktx2)
+set_target_properties(facet_astc PROPERTIES EXPORT_NAME astc)
 set_target_properties(facet_runtime_core PROPERTIES EXPORT_NAME runtime_core)
 set_target_properties(facet_runtime_vulkan PROPERTIES EXPORT_NAME runtime_vulkan)
 set_target_properties(facet_runtime_gl PROPERTIES EXPORT_NAME runtime_gl)
@@ -107,8 +110,10 @@ set_target_properties(facet_scene_types PROPERTIES EXPORT_NAME scene_types)
 set_target_properties(facet_scene PROPERTIES EXPORT_NAME scene)
 
 install(TARGETS matc EXPORT FacetTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# `matc eval` runs the facet-eval beside it (matc/run_facet_eval.cpp): a program, not an export.
+# `matc eval` runs the facet-eval beside it (matc/run_helper_program.cpp): a program, not an export.
 install(TARGETS facet-eval RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# `matc texture` runs the facet-texture beside it in the same way (texture/tool/).
+install(TARGETS facet-texture RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT FacetTargets NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
 
 set(FACET_CONFIG_COMPONENT_DEPENDENCIES "")

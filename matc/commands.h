@@ -63,9 +63,12 @@ struct PostArgs {
 };
 int postCommand(const PostArgs& args);
 
-// matc eval: runs facet-eval, the program that links the renderer (eval/tool/), with `args`,
-// the arguments after `eval`; `matc` is the path matc was run as. The process becomes facet-eval,
-// so this returns only when it cannot be run (1, with the error printed).
-int runFacetEval(const std::string& matc, const std::vector<std::string>& args);
+// matc eval and matc texture: run `program` (facet-eval, the program that links the renderer,
+// eval/tool/; facet-texture, the ASTC encoder, texture/tool/) with `args`, the arguments after
+// `command`; `matc` is the path matc was run as, `target` the CMake target that builds the
+// program. The process becomes the program, so this returns only when it cannot be run (1, with
+// the error printed).
+int runHelperProgram(const std::string& matc, const std::string& command, const std::string& program,
+                     const std::string& target, const std::vector<std::string>& args);
 
 }  // namespace facet::matc

@@ -127,12 +127,20 @@ int main(int argc, char** argv) {
       "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
   evalCmd->prefix_command();
   evalCmd->set_help_flag();
+  // Everything after `texture` is facet-texture's (texture/tool/main.cpp), in the same way.
+  CLI::App* textureCmd = app.add_subcommand(
+      "texture", "encode a PNG into an ASTC KTX2 texture with its mip levels (docs/texture-format.md)");
+  textureCmd->prefix_command();
+  textureCmd->set_help_flag();
 
   if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
   if (infoCmd->parsed()) return facet::matc::infoCommand(info);
   if (lintCmd->parsed()) return facet::matc::lintCommand(lint);
   if (postCmd->parsed()) return facet::matc::postCommand(post);
-  if (evalCmd->parsed()) return facet::matc::runFacetEval(argv[0], evalCmd->remaining());
+  if (evalCmd->parsed())
+    return facet::matc::runHelperProgram(argv[0], "eval", "facet-eval", "facet-eval", evalCmd->remaining());
+  if (textureCmd->parsed())
+    return facet::matc::runHelperProgram(argv[0], "texture", "facet-texture", "facet-texture", textureCmd->remaining());
   return 2;
 }

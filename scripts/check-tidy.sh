@@ -13,7 +13,7 @@ root=$(pwd)
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 run-clang-tidy -p "$dir" -j "$(nproc)" -quiet \
-  "^$root/(abi|cli|compiler|eval|gpu_stats|ibl|ir|lint|matc|package|permutations|runtime|scene|tests|tools|examples)/" >"$log" 2>&1 || true
+  "^$root/(abi|cli|compiler|eval|gpu_stats|ibl|ir|lint|matc|package|permutations|runtime|scene|tests|texture|tools|examples)/" >"$log" 2>&1 || true
 runs=$(grep -c '^clang-tidy' "$log" || true)
 if [ "$runs" -eq 0 ]; then
   cat "$log" >&2

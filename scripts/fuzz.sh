@@ -8,7 +8,8 @@
 # tests/fuzz/fuzz_package from real packages (tests/fuzz/package_corpus/) and its past findings
 # (tests/fuzz/package_regressions/), most mutants resealed with a recomputed checksum; then
 # tests/fuzz/fuzz_scene from examples/scenes/ and tests/fuzz/fuzz_image from examples/scenes/textures/ and
-# tests/fuzz/image_corpus/ (Radiance files), tests/fuzz/fuzz_cube from examples/scenes/looks/ and
+# tests/fuzz/image_corpus/ (Radiance files), tests/fuzz/fuzz_ktx2 (KTX2 reader, ASTC decoding) from
+# tests/fuzz/ktx2_corpus/ and its past findings (tests/fuzz/ktx2_regressions/), tests/fuzz/fuzz_cube from examples/scenes/looks/ and
 # tests/fuzz/cube_corpus/, then tests/fuzz/fuzz_gltf from tests/fuzz/gltf_corpus/ and its
 # past findings (tests/fuzz/gltf_regressions/), with tests/fuzz/gltf.dict. New inputs
 # go to a temporary working corpus, so the committed corpus never churns.
@@ -17,8 +18,9 @@
 # (> 2 GiB); the input that did it is left in build/fuzz/crashes/. To turn it into a regression:
 #   build/fuzz/tests/fuzz/fuzz_material -minimize_crash=1 -runs=100000 \
 #     -exact_artifact_path=tests/fuzz/regressions/<name>.mat build/fuzz/crashes/<file>
-# (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg; fuzz_gltf: tests/fuzz/gltf_regressions/) then fix the bug;
-# tests/ir/test_fuzz_regressions.cpp, tests/package/test_package.cpp and tests/runtime/test_gltf_hostile.cpp replay those folders in every test run.
+# (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg; fuzz_gltf: tests/fuzz/gltf_regressions/;
+# fuzz_ktx2: tests/fuzz/ktx2_regressions/) then fix the bug; tests/ir/test_fuzz_regressions.cpp,
+# tests/package/test_package.cpp, tests/runtime/test_gltf_hostile.cpp and tests/texture/test_ktx2.cpp replay those folders in every test run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,7 +34,7 @@ bash scripts/setup-deps.sh
 
 dir=build/fuzz
 cmake --preset fuzz >/dev/null  # build/fuzz, CMakePresets.json
-cmake --build --preset fuzz --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_cube fuzz_gltf --parallel "$(nproc)"
+cmake --build --preset fuzz --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_ktx2 fuzz_cube fuzz_gltf --parallel "$(nproc)"
 mkdir -p "$dir/crashes"
 
 # fuzz <target> <dict or ""> <committed corpus folders...>
@@ -70,5 +72,6 @@ fuzz fuzz_material tests/fuzz/material.dict tests/fuzz/corpus tests/fuzz/regress
 fuzz fuzz_package "" tests/fuzz/package_corpus tests/fuzz/package_regressions
 fuzz fuzz_scene "" examples/scenes
 fuzz fuzz_image "" examples/scenes/textures tests/fuzz/image_corpus tests/fuzz/image_regressions
+fuzz fuzz_ktx2 "" tests/fuzz/ktx2_corpus tests/fuzz/ktx2_regressions
 fuzz fuzz_cube "" examples/scenes/looks tests/fuzz/cube_corpus
 fuzz fuzz_gltf tests/fuzz/gltf.dict tests/fuzz/gltf_corpus tests/fuzz/gltf_regressions

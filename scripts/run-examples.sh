@@ -14,7 +14,7 @@ bash scripts/setup-deps.sh
 
 jobs=$(nproc)
 cmake --preset release  # build/release, CMakePresets.json
-cmake --build --preset release --parallel "$jobs" --target matc facet-eval facet-view facet-app-example facet-app-gl-example
+cmake --build --preset release --parallel "$jobs" --target matc facet-eval facet-texture facet-view facet-app-example facet-app-gl-example
 
 packages=build/examples/packages
 images=build/examples/images
@@ -26,6 +26,14 @@ for material in "${example_materials[@]}"; do
   build/release/matc/matc compile "$material" -o "$packages/$name.matpkg" "${example_compile_options[@]}" \
     --emit-source "$packages/sources"
 done
+# The ASTC textures of tiles_astc.json, encoded as a build encodes them (docs/texture-format.md):
+# the same bytes as the committed ones.
+mkdir -p build/examples/textures
+build/release/matc/matc texture examples/scenes/textures/tiles.png -o build/examples/textures/tiles.ktx2 --usage color
+build/release/matc/matc texture examples/scenes/textures/tiles_normal.png -o build/examples/textures/tiles_normal.ktx2 \
+  --usage normal
+cmp build/examples/textures/tiles.ktx2 examples/scenes/textures/tiles.ktx2
+cmp build/examples/textures/tiles_normal.ktx2 examples/scenes/textures/tiles_normal.ktx2
 for scene in examples/scenes/*.json; do
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
 done

@@ -1,5 +1,5 @@
 // facet-eval: `matc eval` (docs/eval.md) as a program of its own, so that matc links no renderer.
-// matc runs it (matc/run_facet_eval.cpp) as "<matc> eval": its usage and its messages then read as
+// matc runs it (matc/run_helper_program.cpp) as "<matc> eval": its usage and its messages then read as
 // matc's, and `matc eval`'s options and exit codes are these.
 #include <CLI/CLI.hpp>
 #include <optional>

@@ -38,6 +38,7 @@ namespace facet::runtime::gl {
   X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                                             \
   X(PFNGLCOLORMASKPROC, glColorMask)                                                     \
   X(PFNGLCOMPILESHADERPROC, glCompileShader)                                             \
+  X(PFNGLCOMPRESSEDTEXIMAGE2DPROC, glCompressedTexImage2D)                               \
   X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                                             \
   X(PFNGLCREATESHADERPROC, glCreateShader)                                               \
   X(PFNGLCULLFACEPROC, glCullFace)                                                       \
@@ -158,6 +159,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glClearBufferfv (::facet::runtime::gl::detail::current->glClearBufferfv)
 #define glColorMask (::facet::runtime::gl::detail::current->glColorMask)
 #define glCompileShader (::facet::runtime::gl::detail::current->glCompileShader)
+#define glCompressedTexImage2D (::facet::runtime::gl::detail::current->glCompressedTexImage2D)
 #define glCreateProgram (::facet::runtime::gl::detail::current->glCreateProgram)
 #define glCreateShader (::facet::runtime::gl::detail::current->glCreateShader)
 #define glCullFace (::facet::runtime::gl::detail::current->glCullFace)

@@ -109,8 +109,11 @@ class GlBackend final : public GlRenderer {
   bool renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
   ResourceCounts resources() const override {
-    return {meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
-            materialBlocks_.uploadCount()};
+    ResourceCounts counts{meshes_.residentCount(), meshes_.uploadCount(), materialBlocks_.residentCount(),
+                          materialBlocks_.uploadCount()};
+    counts.compressedTextureUploads = textures_.compressedUploads();
+    counts.decodedTextureUploads = textures_.decodedUploads();
+    return counts;
   }
 
  private:
@@ -220,7 +223,10 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   frameUniforms_ = gl::Buffer::generate();
   objectUniforms_ = gl::Buffer::generate();
   materialUniforms_ = gl::Buffer::generate();
-  if (!textures_.init(error)) {
+  // GL_KHR_texture_compression_astc_ldr (core in GLES 3.2) lets ASTC blocks be uploaded as they
+  // are; without it (or when told to) the texture cache decodes them to RGBA8 on the CPU.
+  const bool astc = context_->hasExtension("GL_KHR_texture_compression_astc_ldr");
+  if (!textures_.init(astc && !options.decodeCompressedTextures, error)) {
     if (error) *error = "GL backend: " + *error;
     return false;
   }

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <unordered_set>
+
+#include "facet/runtime/compressed_texture.h"
 
 namespace facet::runtime::gl {
 namespace {
@@ -23,6 +26,15 @@ FormatInfo formatInfo(TextureFormat format) {
     case TextureFormat::R8Unorm: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1};
     case TextureFormat::Rg16Float: return {GL_RG16F, GL_RG, GL_HALF_FLOAT, 4};
     case TextureFormat::Rgba16Float: return {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8};
+    // ASTC: glCompressedTexImage2D's internal format (KHR_texture_compression_astc_ldr).
+    case TextureFormat::Astc4x4Unorm: return {GL_COMPRESSED_RGBA_ASTC_4x4_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc4x4Srgb: return {GL_COMPRESSED_SRGB8_ALPHA8_ASTC_4x4_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc5x5Unorm: return {GL_COMPRESSED_RGBA_ASTC_5x5_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc5x5Srgb: return {GL_COMPRESSED_SRGB8_ALPHA8_ASTC_5x5_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc6x6Unorm: return {GL_COMPRESSED_RGBA_ASTC_6x6_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc6x6Srgb: return {GL_COMPRESSED_SRGB8_ALPHA8_ASTC_6x6_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc8x8Unorm: return {GL_COMPRESSED_RGBA_ASTC_8x8_KHR, GL_NONE, GL_NONE, 0};
+    case TextureFormat::Astc8x8Srgb: return {GL_COMPRESSED_SRGB8_ALPHA8_ASTC_8x8_KHR, GL_NONE, GL_NONE, 0};
   }
   return {GL_NONE, GL_NONE, GL_NONE, 0};
 }
@@ -41,13 +53,25 @@ void assignSamplerUnits(GLuint program, const std::vector<TextureBinding>& bindi
   }
 }
 
-bool TextureCache::init(std::string* error) {
+bool TextureCache::init(bool uploadAstc, std::string* error) {
+  uploadAstc_ = uploadAstc;
   const SourceTexture dummy = emptySlotTexture();
   forgetBindings();
   return upload(dummy, &dummy_, error);
 }
 
-bool TextureCache::upload(const SourceTexture& source, Texture* out, std::string* error) {
+bool TextureCache::upload(const SourceTexture& given, Texture* out, std::string* error) {
+  std::optional<SourceTexture> decoded;
+  if (isCompressed(given.format)) {
+    if (!uploadAstc_) {
+      decoded = decodeCompressedTexture(given, error);
+      if (!decoded) return false;
+      ++decodedUploads_;
+    } else {
+      ++compressedUploads_;
+    }
+  }
+  const SourceTexture& source = decoded ? *decoded : given;
   const FormatInfo info = formatInfo(source.format);
   const GLenum target = source.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
   const int faces = source.cube ? 6 : 1;
@@ -56,14 +80,19 @@ bool TextureCache::upload(const SourceTexture& source, Texture* out, std::string
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows tightly packed, whatever the width and format
   for (size_t level = 0; level < source.levels.size(); ++level) {
     const uint32_t width = mipExtent(source.width, level), height = mipExtent(source.height, level);
-    const size_t faceBytes = size_t{width} * height * info.bytesPerTexel;
+    const auto faceBytes = size_t(textureLevelBytes(source.format, width, height));
     for (int face = 0; face < faces; ++face) {
       // Row 0 of the data is t = 0 in GL as in the contract: no flip. A cube map's faces follow
       // each other in the level's bytes, in GL's order (POSITIVE_X + face).
       const GLenum image = source.cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GL_TEXTURE_2D;
-      glTexImage2D(image, static_cast<GLint>(level), static_cast<GLint>(info.internalFormat),
-                   static_cast<GLsizei>(width), static_cast<GLsizei>(height), 0, info.format, info.type,
-                   source.levels[level].data() + size_t(face) * faceBytes);
+      const uint8_t* data = source.levels[level].data() + size_t(face) * faceBytes;
+      if (isCompressed(source.format)) {
+        glCompressedTexImage2D(image, static_cast<GLint>(level), info.internalFormat, static_cast<GLsizei>(width),
+                               static_cast<GLsizei>(height), 0, static_cast<GLsizei>(faceBytes), data);
+      } else {
+        glTexImage2D(image, static_cast<GLint>(level), static_cast<GLint>(info.internalFormat),
+                     static_cast<GLsizei>(width), static_cast<GLsizei>(height), 0, info.format, info.type, data);
+      }
     }
   }
   // The given levels are the whole chain GL may use: a shorter chain is still complete.

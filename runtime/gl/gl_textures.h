@@ -37,8 +37,10 @@ void assignSamplerUnits(GLuint program, const std::vector<TextureBinding>& bindi
 // unused for kEvictAfterFrames frames is deleted.
 class TextureCache {
  public:
-  // Creates the 1x1 dummy texture bound to every unit a draw leaves empty.
-  bool init(std::string* error);
+  // Creates the 1x1 dummy texture bound to every unit a draw leaves empty. `uploadAstc`: the
+  // context samples ASTC (GL_KHR_texture_compression_astc_ldr); otherwise ASTC textures are
+  // decoded to RGBA8 on the CPU before upload.
+  bool init(bool uploadAstc, std::string* error);
 
   // Uploads every texture of the (already checked) frame that is new or changed, then deletes
   // the entries that went unused for too long. Changes the current unit's 2D and cube bindings.
@@ -52,6 +54,9 @@ class TextureCache {
     bound2D_.fill(~0u);
     boundCube_.fill(~0u);
   }
+  // ASTC textures uploaded as blocks, and decoded to RGBA8 first, since creation.
+  uint64_t compressedUploads() const { return compressedUploads_; }
+  uint64_t decodedUploads() const { return decodedUploads_; }
 
  private:
   struct Entry {
@@ -60,13 +65,16 @@ class TextureCache {
     uint64_t lastUsedFrame = 0;
   };
 
-  static bool upload(const facet::runtime::Texture& source, Texture* out, std::string* error);
+  bool upload(const facet::runtime::Texture& source, Texture* out, std::string* error);
 
   Texture dummy_;  // 1x1 RGBA8 (0, 0, 0, 1): what GL returns for an incomplete texture too
   std::unordered_map<const facet::runtime::Texture*, Entry> textures_;
   std::array<GLuint, kTextureUnits> bound2D_{};
   std::array<GLuint, kTextureUnits> boundCube_{};
   uint64_t frameNumber_ = 0;
+  bool uploadAstc_ = false;
+  uint64_t compressedUploads_ = 0;
+  uint64_t decodedUploads_ = 0;
 };
 
 }  // namespace facet::runtime::gl

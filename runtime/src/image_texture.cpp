@@ -192,7 +192,7 @@ std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool s
                                           std::string* error) {
   // stb_image here also reads Radiance files (for environments); a texture is PNG only.
   if (!isPng(bytes)) {
-    *error = name + ": cannot read image: textures are PNG files (no PNG signature)";
+    *error = name + ": cannot read image: textures are PNG or KTX2 files (no PNG signature)";
     return std::nullopt;
   }
   int w = 0, h = 0, channels = 0;

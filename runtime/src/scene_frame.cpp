@@ -11,6 +11,7 @@
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/runtime/color_grading.h"
+#include "facet/runtime/compressed_texture.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/gltf_mesh.h"
@@ -18,6 +19,7 @@
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/scene_image_budget.h"
+#include "facet/runtime/texture_checks.h"
 #include "facet/runtime/vignette.h"
 
 namespace facet::runtime {
@@ -208,11 +210,11 @@ const Texture* SceneFrame::texture(const LoadedMaterial::SampledTexture& t, std:
   if (t.imagePath.empty()) {
     made = solidTexture(t.defaultValue, t.srgb);
   } else {
-    made = loadImageTexture(t.imagePath, t.srgb, error);
+    made = loadTextureFile(t.imagePath, t.srgb, error);
     if (!made) return nullptr;
   }
   // Mip levels were still averaged in linear light; only the sampler's decoding is skipped.
-  if (t.srgb && !decode) made->format = TextureFormat::Rgba8Unorm;
+  if (t.srgb && !decode) made->format = withoutSrgbDecode(made->format);
   return textures_.emplace(key, std::make_unique<Texture>(std::move(*made))).first->second.get();
 }
 

@@ -10,6 +10,8 @@
 
 #include <stb_image.h>  // implementation: stb_image_impl.cpp
 
+#include "facet/texture/ktx2.h"
+
 namespace facet::runtime {
 namespace {
 
@@ -30,8 +32,27 @@ struct ImageCost {
   std::string description;  // "path (WxH)"
 };
 
+uint32_t little32(const std::vector<uint8_t>& b, size_t at) {
+  return uint32_t(b[at]) | uint32_t(b[at + 1]) << 8 | uint32_t(b[at + 2]) << 16 | uint32_t(b[at + 3]) << 24;
+}
+
+// A KTX2 texture takes the bytes its levels hold (ASTC blocks stay compressed on a GPU that
+// samples them), from the header's format, size and level count.
+std::optional<ImageCost> ktx2Cost(const std::string& path, const std::vector<uint8_t>& head) {
+  if (head.size() < 44) return std::nullopt;
+  const texture::Ktx2Format* format = texture::findKtx2Format(little32(head, 12));
+  const uint32_t w = little32(head, 20), h = little32(head, 24), levels = little32(head, 40);
+  if (!format || w == 0 || h == 0 || w > texture::kMaxKtx2Side || h > texture::kMaxKtx2Side) return std::nullopt;
+  uint64_t bytes = 0;
+  // At most the 14 levels of an 8192-texel side; a larger count is the reader's to refuse.
+  for (uint32_t i = 0; i < std::clamp(levels, 1u, 14u); ++i)
+    bytes += texture::ktx2LevelBytes(*format, std::max(1u, w >> i), std::max(1u, h >> i));
+  return ImageCost{bytes, path + " (" + std::to_string(w) + "x" + std::to_string(h) + ", " + format->name + ")"};
+}
+
 std::optional<ImageCost> decodedCost(const std::string& path, uint64_t bytesPerPixel, bool mipChain) {
   const std::vector<uint8_t> head = fileHead(path);
+  if (texture::isKtx2(head)) return ktx2Cost(path, head);
   int w = 0, h = 0, channels = 0;
   if (head.empty() || !stbi_info_from_memory(head.data(), int(head.size()), &w, &h, &channels) || w <= 0 || h <= 0)
     return std::nullopt;

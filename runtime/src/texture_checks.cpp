@@ -30,14 +30,18 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
              " is outside 1.." + std::to_string(maxImageSize);
     return false;
   }
-  const uint32_t texelBytes = bytesPerTexel(texture.format);
-  if (texelBytes == 0) {
+  const TextureBlock block = textureBlock(texture.format);
+  if (block.bytes == 0) {
     *error = which + ": unknown TextureFormat " + std::to_string(static_cast<int>(texture.format));
     return false;
   }
   if (texture.cube && texture.width != texture.height) {
     *error = which + ": a cube map's faces must be square, not " + std::to_string(texture.width) + "x" +
              std::to_string(texture.height);
+    return false;
+  }
+  if (texture.cube && isCompressed(texture.format)) {
+    *error = which + ": a cube map cannot be ASTC-compressed (compressed textures are 2D)";
     return false;
   }
   const size_t fullChain = fullChainLength(texture.width, texture.height);
@@ -51,11 +55,14 @@ bool checkTexture(const Texture& texture, uint32_t maxImageSize, const std::stri
     const uint32_t w = mipExtent(texture.width, i);
     const uint32_t h = mipExtent(texture.height, i);
     const size_t faces = texture.cube ? 6 : 1;
-    const size_t expected = faces * w * h * texelBytes;
+    const uint64_t expected = faces * textureLevelBytes(texture.format, w, h);
     if (texture.levels[i].size() != expected) {
       *error = which + ": level " + std::to_string(i) + " has " + std::to_string(texture.levels[i].size()) +
                " bytes, " + (texture.cube ? "6 faces of " : "") + std::to_string(w) + "x" + std::to_string(h) +
-               " texels of " + std::to_string(texelBytes) + " bytes need " + std::to_string(expected);
+               " texels " +
+               (block.width > 1 ? "in " + std::to_string(block.width) + "x" + std::to_string(block.height) + " blocks "
+                                : std::string()) +
+               "of " + std::to_string(block.bytes) + " bytes need " + std::to_string(expected);
       return false;
     }
   }
@@ -109,8 +116,51 @@ uint32_t bytesPerTexel(TextureFormat format) {
     case TextureFormat::Rgba8Unorm:
     case TextureFormat::Rgba8Srgb:
     case TextureFormat::Rg16Float: return 4;
+    default: return 0;  // compressed, or not an enumerator (rejected by checkTexture)
   }
-  return 0;  // not an enumerator: rejected by checkTexture
+}
+
+TextureBlock textureBlock(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Astc4x4Unorm:
+    case TextureFormat::Astc4x4Srgb: return {4, 4, 16};
+    case TextureFormat::Astc5x5Unorm:
+    case TextureFormat::Astc5x5Srgb: return {5, 5, 16};
+    case TextureFormat::Astc6x6Unorm:
+    case TextureFormat::Astc6x6Srgb: return {6, 6, 16};
+    case TextureFormat::Astc8x8Unorm:
+    case TextureFormat::Astc8x8Srgb: return {8, 8, 16};
+    default: return {1, 1, bytesPerTexel(format)};
+  }
+}
+
+bool isCompressed(TextureFormat format) { return textureBlock(format).width > 1; }
+
+bool isSrgb(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Rgba8Srgb:
+    case TextureFormat::Astc4x4Srgb:
+    case TextureFormat::Astc5x5Srgb:
+    case TextureFormat::Astc6x6Srgb:
+    case TextureFormat::Astc8x8Srgb: return true;
+    default: return false;
+  }
+}
+
+TextureFormat withoutSrgbDecode(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::Rgba8Srgb: return TextureFormat::Rgba8Unorm;
+    case TextureFormat::Astc4x4Srgb: return TextureFormat::Astc4x4Unorm;
+    case TextureFormat::Astc5x5Srgb: return TextureFormat::Astc5x5Unorm;
+    case TextureFormat::Astc6x6Srgb: return TextureFormat::Astc6x6Unorm;
+    case TextureFormat::Astc8x8Srgb: return TextureFormat::Astc8x8Unorm;
+    default: return format;
+  }
+}
+
+uint64_t textureLevelBytes(TextureFormat format, uint32_t width, uint32_t height) {
+  const TextureBlock block = textureBlock(format);
+  return uint64_t((width + block.width - 1) / block.width) * ((height + block.height - 1) / block.height) * block.bytes;
 }
 
 uint32_t mipExtent(uint32_t size, size_t level) { return std::max(1u, size >> level); }

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   facet::removeTemporaryFilesOnSignals();  // an interrupted PNG write leaves nothing behind
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
   std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
-  bool validation = false, stats = false, keepHdr = false, json = false;
+  bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false;
   size_t frames = 1, warmup = 2;
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
   uint32_t width = 0, height = 0;
@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
   app.add_flag("--json", json, "with --stats: print the statistics as JSON on stdout (other output goes to stderr)");
   app.add_option("--frames", frames, "frames to render and measure (the PNG is the last one)")
       ->check(CLI::Range(1, 100000));
+  app.add_flag("--decode-textures", decodeTextures,
+               "GL: decode ASTC textures on the CPU even where the context samples ASTC (the fallback path)");
   app.add_option("--warmup", warmup, "with --stats: frames rendered first and not measured (default 2)")
       ->check(CLI::Range(0, 1000));
   try {
@@ -110,6 +112,7 @@ int main(int argc, char** argv) {
       options.readBackHdr = keepHdr;
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
+      options.decodeCompressedTextures = decodeTextures;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);

@@ -73,8 +73,11 @@ class VulkanBackend final : public VulkanRenderer {
   void forgetImage(VkImage image) override { appImages_.forget(image); }
   const std::vector<std::string>& validationErrors() const override { return ctx_.messages.errors; }
   ResourceCounts resources() const override {
-    return {meshes_.residentCount(),       meshes_.uploadCount(),  materialBlocks_.residentCount(),
-            materialBlocks_.uploadCount(), ctx_.memoryAllocations, uploads_.stagedBytes()};
+    ResourceCounts counts{meshes_.residentCount(),       meshes_.uploadCount(),  materialBlocks_.residentCount(),
+                          materialBlocks_.uploadCount(), ctx_.memoryAllocations, uploads_.stagedBytes()};
+    counts.compressedTextureUploads = textures_.compressedUploads();
+    counts.decodedTextureUploads = textures_.decodedUploads();
+    return counts;
   }
 
  private:

@@ -328,11 +328,19 @@ bool Context::createDevice(bool float16Arithmetic, std::string* error) {
     info.enabledExtensionCount = 1;
     info.ppEnabledExtensionNames = &float16Extension;
   }
+  // ASTC textures are sampled as they are where the device can (phones); lavapipe cannot, and
+  // the texture cache decodes them there (vk_textures.cpp).
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(physicalDevice, &supported);
+  VkPhysicalDeviceFeatures enabled{};
+  enabled.textureCompressionASTC_LDR = supported.textureCompressionASTC_LDR;
+  info.pEnabledFeatures = &enabled;
   if (!check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice", error)) {
     device = VK_NULL_HANDLE;
     return false;
   }
   vkGetDeviceQueue(device, queueFamily, 0, &queue);
+  astcLdr = enabled.textureCompressionASTC_LDR == VK_TRUE;
   return true;
 }
 

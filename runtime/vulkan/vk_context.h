@@ -49,6 +49,10 @@ class Context {
   uint32_t timestampValidBits = 0;  // of queueFamily; 0: the queue cannot write timestamps
   VkQueue queue = VK_NULL_HANDLE;
   bool validationEnabled = false;
+  // textureCompressionASTC_LDR is enabled on the device: ASTC images may be created. Only the
+  // backend's own device sets it (an app's device may not have enabled it; its ASTC textures are
+  // decoded on the CPU).
+  bool astcLdr = false;
   DebugMessages messages;
   // vkAllocateMemory calls made for the backend so far (ResourceCounts::memoryAllocations);
   // counted where memory is allocated, which takes the Context as const.

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
+#include <optional>
 #include <unordered_set>
+
+#include "facet/runtime/compressed_texture.h"
 
 #include "vk_check.h"
 #include "vk_context.h"
@@ -26,8 +30,29 @@ VkFormat vulkanFormat(TextureFormat format) {
     case TextureFormat::R8Unorm: return VK_FORMAT_R8_UNORM;
     case TextureFormat::Rg16Float: return VK_FORMAT_R16G16_SFLOAT;
     case TextureFormat::Rgba16Float: return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case TextureFormat::Astc4x4Unorm: return VK_FORMAT_ASTC_4x4_UNORM_BLOCK;
+    case TextureFormat::Astc4x4Srgb: return VK_FORMAT_ASTC_4x4_SRGB_BLOCK;
+    case TextureFormat::Astc5x5Unorm: return VK_FORMAT_ASTC_5x5_UNORM_BLOCK;
+    case TextureFormat::Astc5x5Srgb: return VK_FORMAT_ASTC_5x5_SRGB_BLOCK;
+    case TextureFormat::Astc6x6Unorm: return VK_FORMAT_ASTC_6x6_UNORM_BLOCK;
+    case TextureFormat::Astc6x6Srgb: return VK_FORMAT_ASTC_6x6_SRGB_BLOCK;
+    case TextureFormat::Astc8x8Unorm: return VK_FORMAT_ASTC_8x8_UNORM_BLOCK;
+    case TextureFormat::Astc8x8Srgb: return VK_FORMAT_ASTC_8x8_SRGB_BLOCK;
   }
   return VK_FORMAT_UNDEFINED;
+}
+
+// Whether the device samples this texture's format as it is (with the filter the texture asks
+// for): always for the uncompressed formats the runtime makes, for ASTC only where the feature
+// is enabled and the format reports it.
+bool samplesAsIs(const Context& ctx, const Texture& texture) {
+  if (!isCompressed(texture.format)) return true;
+  if (!ctx.astcLdr) return false;
+  VkFormatProperties props{};
+  vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice, vulkanFormat(texture.format), &props);
+  VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  if (texture.linearFilter) needed |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  return (props.optimalTilingFeatures & needed) == needed;
 }
 
 }  // namespace
@@ -257,6 +282,10 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
   for (const DrawItem& draw : frame.draws) collect(draw.textures);
 
   std::vector<std::pair<const Texture*, Entry>> pending;
+  // What is uploaded for a texture the device cannot sample as it is: its CPU decoding, kept
+  // until the upload is done.
+  std::vector<std::unique_ptr<Texture>> decoded;
+  std::vector<const Texture*> uploadSources;
   for (const Texture* texture : used) {
     TextureIdentity key = TextureIdentity::of(*texture);
 
@@ -270,22 +299,30 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
       retireEntry(found->second);
       textures_.erase(found);
     }
+    const Texture* source = texture;
+    if (!samplesAsIs(*ctx_, *texture)) {
+      std::optional<Texture> rgba = decodeCompressedTexture(*texture, error);
+      if (!rgba) {
+        releasePending(&pending);
+        return false;
+      }
+      decoded.push_back(std::make_unique<Texture>(std::move(*rgba)));
+      source = decoded.back().get();
+    }
     Entry entry;
-    if (!createEntry(*texture, key, &entry, error)) {
+    if (!createEntry(*source, key, &entry, error)) {
       releasePending(&pending);
       return false;
     }
+    if (isCompressed(texture->format)) ++(source == texture ? compressedUploads_ : decodedUploads_);
     pending.emplace_back(texture, entry);
+    uploadSources.push_back(source);
   }
 
   if (!pending.empty()) {
-    std::vector<const Texture*> sources;
     std::vector<Entry*> targets;
-    for (auto& item : pending) {
-      sources.push_back(item.first);
-      targets.push_back(&item.second);
-    }
-    if (!upload(sources, targets, error)) {
+    for (auto& item : pending) targets.push_back(&item.second);
+    if (!upload(uploadSources, targets, error)) {
       releasePending(&pending);
       return false;
     }

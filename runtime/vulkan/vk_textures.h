@@ -68,6 +68,11 @@ class TextureCache {
   // upload command buffer, so the backend must stop.
   bool deviceFailed() const { return deviceFailed_; }
 
+  // ASTC textures uploaded as blocks, and decoded to RGBA8 first (the device cannot sample
+  // them), since creation.
+  uint64_t compressedUploads() const { return compressedUploads_; }
+  uint64_t decodedUploads() const { return decodedUploads_; }
+
  private:
   // Everything the reuse decision compares (see the class comment).
   struct Entry {
@@ -92,6 +97,8 @@ class TextureCache {
   VkFence fence_ = VK_NULL_HANDLE;
   HostBuffer staging_;  // exists only during an upload (or after one that did not finish)
   bool deviceFailed_ = false;
+  uint64_t compressedUploads_ = 0;
+  uint64_t decodedUploads_ = 0;
 
   Texture dummySource_;  // 1x1 RGBA8 (0, 0, 0, 1): what GL returns for an incomplete texture
   Entry dummy_;

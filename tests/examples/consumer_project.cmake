@@ -1,7 +1,8 @@
 # ConsumerProject test (cmake -P): installs this build's Facet package to a prefix, configures
 # examples/consumer against it with find_package(Facet COMPONENTS vulkan), builds it, and checks
 # the install (runtime libraries, headers, one export file per component; the installed `matc eval`
-# runs the installed facet-eval), that every installed header compiles from the prefix (no private
+# runs the installed facet-eval), the textures facet_add_textures encodes (the installed
+# facet-texture), that every installed header compiles from the prefix (no private
 # header included), that an app including the headers' old paths still compiles
 # (consumer_old_include_paths.cpp), the depfile-driven rebuilds
 # (nothing to do when nothing changed; touching one material rebuilds only its package), and
@@ -22,7 +23,7 @@ endfunction()
 file(REMOVE_RECURSE ${WORK})
 set(ENV{XDG_CACHE_HOME} ${WORK}/cache)  # matc's variant cache stays in the scratch folder
 run(${CMAKE_COMMAND} --install ${FACET_BINARY_DIR} --prefix ${WORK}/install)
-foreach(f bin/matc bin/facet-eval lib/cmake/Facet/FacetConfig.cmake lib/cmake/Facet/FacetMaterials.cmake
+foreach(f bin/matc bin/facet-eval bin/facet-texture lib/cmake/Facet/FacetConfig.cmake lib/cmake/Facet/FacetMaterials.cmake
         lib/cmake/Facet/FacetCoreTargets.cmake lib/cmake/Facet/FacetVulkanTargets.cmake
         lib/cmake/Facet/FacetGlTargets.cmake lib/cmake/Facet/FacetGltfTargets.cmake
         lib/cmake/Facet/FacetSceneTargets.cmake
@@ -47,6 +48,7 @@ file(COPY ${FACET_SOURCE_DIR}/examples/consumer/CMakeLists.txt ${FACET_SOURCE_DI
      DESTINATION ${WORK}/src)
 file(COPY ${FACET_SOURCE_DIR}/examples/materials/red_plastic.mat ${FACET_SOURCE_DIR}/examples/materials/brushed_gold.mat
      DESTINATION ${WORK}/materials)
+file(COPY ${FACET_SOURCE_DIR}/examples/scenes/textures/tiles.png DESTINATION ${WORK}/textures)
 set(compile_options -DCMAKE_CXX_COMPILER=${CXX})
 find_program(CCACHE ccache)
 if(CCACHE)
@@ -57,7 +59,8 @@ if(SANITIZE)
        "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
 endif()
 run(${CMAKE_COMMAND} -S ${WORK}/src -B ${WORK}/build -G Ninja -DCMAKE_PREFIX_PATH=${WORK}/install
-    -DFACET_CONSUMER_MATERIALS_DIR=${WORK}/materials -DFACET_CONSUMER_CHECK_HEADERS=ON
+    -DFACET_CONSUMER_MATERIALS_DIR=${WORK}/materials -DFACET_CONSUMER_TEXTURES_DIR=${WORK}/textures
+    -DFACET_CONSUMER_CHECK_HEADERS=ON
     -DFACET_CONSUMER_CHECK_SOURCES=${CMAKE_CURRENT_LIST_DIR}/consumer_old_include_paths.cpp ${compile_options})
 run(${CMAKE_COMMAND} --build ${WORK}/build)
 foreach(name red_plastic brushed_gold)
@@ -65,6 +68,13 @@ foreach(name red_plastic brushed_gold)
     message(FATAL_ERROR "the consumer build did not write ${name}.matpkg and its depfile")
   endif()
 endforeach()
+
+# facet_add_textures ran the installed matc texture: the same bytes as the example's KTX2.
+file(READ ${WORK}/build/textures/tiles.ktx2 built HEX)
+file(READ ${FACET_SOURCE_DIR}/examples/scenes/textures/tiles.ktx2 committed HEX)
+if(NOT built STREQUAL committed)
+  message(FATAL_ERROR "the consumer's textures/tiles.ktx2 differs from examples/scenes/textures/tiles.ktx2")
+endif()
 
 run(${CMAKE_COMMAND} --build ${WORK}/build)
 if(NOT out MATCHES "no work to do")

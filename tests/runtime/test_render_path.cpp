@@ -134,8 +134,12 @@ TEST(RenderPath, GlesMergedAndSeparatePathsGiveTheSameImageOnEveryExampleSceneAn
     // lavapipe), and llvmpipe computes mediump in fp16 where lavapipe uses fp32. Measured: at most
     // 2 steps of 8 bits (lamps.json, tiles.json), 1 elsewhere, except roughness_grid.json, whose
     // r = 0 mirror highlights of a 110 000 lux sun differ by 4 (fp16 rounding of the lobe peak).
+    // tiles_astc.json: llvmpipe's GLES samples the ASTC blocks through Mesa's decoder, lavapipe
+    // gets astcenc's decoding (docs/runtime.md); the two round the normal map's 16-bit texels to
+    // 8 bits differently, and the normal decode and the sun's highlight take that to 5 steps.
     const bool mirrorGrid = path.find("roughness_grid.json") != std::string::npos;
-    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : 2);
+    const bool astc = path.find("tiles_astc.json") != std::string::npos;
+    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : 2);
   }
   for (const auto* backend : {mergedBackend.get(), separateBackend.get(), osmesaBackend.get(), vulkan.get()}) {
     for (const std::string& message : backend->validationErrors()) ADD_FAILURE() << backend->name() << ": " << message;

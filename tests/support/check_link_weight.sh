@@ -7,7 +7,8 @@
 # gl: the same on the GL backend: the app's own EGL only; no OSMesa, no libGL/libGLESv2 (the
 #     runtime resolves GL through the app's eglGetProcAddress), no Vulkan.
 # compiler: matc, a build-time compiler: no Vulkan (neither the library nor a vk* symbol), no GL,
-#     EGL or OSMesa, no tinygltf, none of the runtime (matc eval's renderer is facet-eval's).
+#     EGL or OSMesa, no tinygltf, no astcenc, none of the runtime (matc eval's renderer is
+#     facet-eval's, matc texture's encoder facet-texture's).
 set -eu
 binary="$1"
 role="${2:-vulkan}"
@@ -19,7 +20,7 @@ case "$role" in
           symbols_forbidden="$app_symbols createGlBackend"; vk_symbols=allowed ;;
   gl) required=libEGL; forbidden="libOSMesa libGL libGLESv2 libgbm libvulkan"
       symbols_forbidden="$app_symbols createVulkanBackend"; vk_symbols=forbidden ;;
-  compiler) required=libspirv-cross-c; forbidden="libvulkan libOSMesa libGL libEGL libGLESv2 libgbm libtinygltf"
+  compiler) required=libspirv-cross-c; forbidden="libvulkan libOSMesa libGL libEGL libGLESv2 libgbm libtinygltf libastcenc"
             symbols_forbidden="facet::runtime::LoadedMaterial facet::runtime::SceneFrame createVulkanBackend createGlBackend tinygltf:: OSMesa"
             vk_symbols=forbidden ;;
   *) echo "error: role '$role' is neither vulkan, gl nor compiler"; exit 2 ;;

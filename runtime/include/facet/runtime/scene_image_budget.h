@@ -15,7 +15,9 @@ namespace facet::runtime {
 inline constexpr uint64_t kMaxSceneImageBytes = uint64_t(512) << 20;
 
 // What the scene's images decode to, from their headers only: RGBA8 with a full mip chain (4/3 of
-// level 0) per distinct texture image, float RGB for the environment image (before it is reduced
+// level 0) per distinct PNG texture, the bytes of its levels per KTX2 texture (ASTC blocks as
+// stored: what a GPU that samples ASTC holds; one that cannot holds their RGBA8 decoding, 4 to 16
+// times more), float RGB for the environment image (before it is reduced
 // to the environment's size). An image whose header cannot be read is left to its decoder, which
 // reports it. False with *error listing the largest images when the sum exceeds
 // kMaxSceneImageBytes.

@@ -19,7 +19,22 @@ inline constexpr uint32_t kTextureSlots = abi::kMaterialTextureBase + abi::kMaxM
 // ABI's cube slots (a Vulkan view's type must match the shader's sampler, even for the dummy).
 Texture emptySlotTexture(bool cube = false);
 
-uint32_t bytesPerTexel(TextureFormat format);  // 0 for a value that is not an enumerator
+uint32_t bytesPerTexel(TextureFormat format);  // 0 for a compressed format or a value that is not an enumerator
+
+// The blocks a format stores texels in: 1x1 of bytesPerTexel for uncompressed formats, 4x4..8x8
+// of 16 bytes for ASTC; bytes 0 for a value that is not an enumerator.
+struct TextureBlock {
+  uint32_t width = 1;
+  uint32_t height = 1;
+  uint32_t bytes = 0;
+};
+TextureBlock textureBlock(TextureFormat format);
+bool isCompressed(TextureFormat format);  // ASTC
+bool isSrgb(TextureFormat format);        // sampled with sRGB decoding
+// The same storage sampled without sRGB decoding (the gamma-hack tiers read colours encoded).
+TextureFormat withoutSrgbDecode(TextureFormat format);
+// Bytes of one width x height level (or face) in `format`: whole blocks at the edges.
+uint64_t textureLevelBytes(TextureFormat format, uint32_t width, uint32_t height);
 uint32_t mipExtent(uint32_t size, size_t level);
 
 // Everything an uploaded copy depends on. The hash covers every byte of every level, so a
