@@ -18,6 +18,7 @@ namespace facet::runtime::vulkan {
 // The long-lived objects a frame's commands refer to.
 struct FrameObjects {
   bool merged = false;  // the forward render pass is the one render pass; the post pass its subpass 1
+  bool msaa = false;    // the forward render pass has the multisampled colour as its last attachment
   VkPipelineLayout forwardLayout = VK_NULL_HANDLE;
   VkPipelineLayout postLayout = VK_NULL_HANDLE;
   VkPipeline postPipeline = VK_NULL_HANDLE;

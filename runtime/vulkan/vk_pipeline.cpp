@@ -43,10 +43,11 @@ AttachmentOps toVulkan(const fg::Attachment& attachment) {
 
 namespace {
 
-VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops, VkImageLayout finalLayout) {
+VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops, VkImageLayout finalLayout,
+                                           VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT) {
   VkAttachmentDescription a{};
   a.format = format;
-  a.samples = VK_SAMPLE_COUNT_1_BIT;
+  a.samples = samples;
   a.loadOp = ops.load;
   a.storeOp = ops.store;
   a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
@@ -85,16 +86,20 @@ bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRen
 }  // namespace
 
 bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
-                            AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error) {
+                            AttachmentOps ldr, ForwardSamples samples, LdrLayouts layouts, VkRenderPass* out,
+                            std::string* error) {
   const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
-  std::array<VkAttachmentDescription, 3> attachments{
+  const bool msaa = samples.count != VK_SAMPLE_COUNT_1_BIT;
+  std::array<VkAttachmentDescription, 4> attachments{
       describeAttachment(hdrFormat, hdr,
                          hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
-      describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
-      describeAttachment(kLdrFormat, ldr, layouts.final)};
+      describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, samples.count),
+      describeAttachment(kLdrFormat, ldr, layouts.final),
+      describeAttachment(hdrFormat, samples.colour, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, samples.count)};
   attachments[2].initialLayout = layouts.initial;
 
-  const VkAttachmentReference hdrColour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference hdrColour{msaa ? 3u : 0u, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference hdrResolve{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference hdrInput{0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   // Colour slot 1, not 0: the post shader writes LDR at location 1 in every API, because Metal
@@ -106,6 +111,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   subpasses[0].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpasses[0].colorAttachmentCount = 1;
   subpasses[0].pColorAttachments = &hdrColour;
+  subpasses[0].pResolveAttachments = msaa ? &hdrResolve : nullptr;
   subpasses[0].pDepthStencilAttachment = &depthRef;
   subpasses[1].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpasses[1].inputAttachmentCount = 1;
@@ -141,7 +147,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.attachmentCount = msaa ? 4 : 3;
   info.pAttachments = attachments.data();
   info.subpassCount = static_cast<uint32_t>(subpasses.size());
   info.pSubpasses = subpasses.data();
@@ -151,8 +157,9 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
 }
 
 bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depthOps,
-                             VkRenderPass* out, std::string* error) {
-  std::array<VkAttachmentDescription, 2> attachments{};
+                             ForwardSamples samples, VkRenderPass* out, std::string* error) {
+  const bool msaa = samples.count != VK_SAMPLE_COUNT_1_BIT;
+  std::array<VkAttachmentDescription, 3> attachments{};
   VkAttachmentDescription& colour = attachments[0];
   colour.format = hdrFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -164,20 +171,23 @@ bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps 
   colour.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   VkAttachmentDescription& depth = attachments[1];
   depth.format = kDepthFormat;
-  depth.samples = VK_SAMPLE_COUNT_1_BIT;
+  depth.samples = samples.count;
   depth.loadOp = depthOps.load;
   depth.storeOp = depthOps.store;
   depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  attachments[2] = describeAttachment(hdrFormat, samples.colour, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, samples.count);
 
-  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference colourRef{msaa ? 2u : 0u, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference resolveRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpass.colorAttachmentCount = 1;
   subpass.pColorAttachments = &colourRef;
+  subpass.pResolveAttachments = msaa ? &resolveRef : nullptr;
   subpass.pDepthStencilAttachment = &depthRef;
 
   std::array<VkSubpassDependency, 2> dependencies{};
@@ -192,7 +202,7 @@ bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps 
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.attachmentCount = msaa ? 3 : 2;
   info.pAttachments = attachments.data();
   info.subpassCount = 1;
   info.pSubpasses = &subpass;
@@ -381,7 +391,8 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
 
   VkPipelineMultisampleStateCreateInfo multisample{};
   multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  multisample.rasterizationSamples = desc.samples;
+  multisample.alphaToCoverageEnable = forward && desc.alphaToCoverage && desc.samples != VK_SAMPLE_COUNT_1_BIT;
 
   VkPipelineDepthStencilStateCreateInfo depth{};
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;

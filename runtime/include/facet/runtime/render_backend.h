@@ -104,6 +104,10 @@ struct DrawItem {
   // Cull triangles whose vertices run clockwise on screen in GL conventions (the back faces of
   // a mesh wound counter-clockwise seen from outside). Off: two-sided (every test mesh's default).
   bool cullBackFaces = false;
+  // An alpha-tested material (blending masked). With MSAA the backend turns on alpha to coverage
+  // for it and the shader writes its edge's coverage as alpha instead of discarding
+  // (output_blending.glsl, FrameUniforms::cameraPosition.w).
+  bool masked = false;
 };
 
 // The bytes a draw's "MaterialParams" block receives.
@@ -172,6 +176,7 @@ class RenderBackend {
   virtual PostPath postPath() const = 0;
   virtual bool readsBackHdr() const = 0;
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
+  virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -204,6 +209,11 @@ struct VulkanOptions {
   // compiler::BuildOptions::fp16TrueHalf; creation fails on a device without it. Only for the
   // backend's own device: an app's device (vulkan_backend.h) comes with the features it enabled.
   bool float16Arithmetic = false;
+  // MSAA samples per pixel of the forward pass: 1 (off), 2 or 4 (render_path.h). Colour and depth
+  // samples are transient and resolved inside the render pass; creation fails when the device
+  // offers the count for neither framebuffer colour and depth (framebufferColorSampleCounts,
+  // framebufferDepthSampleCounts) nor the HDR format.
+  uint32_t msaaSamples = 1;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -226,6 +236,9 @@ struct GlOptions {
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
   // The HDR target's format; creation fails when the context cannot render to it.
   HdrFormat hdrFormat = HdrFormat::Rgba16Float;
+  // MSAA samples per pixel of the forward pass: 1 (off), 2 or 4. Multisampled renderbuffers
+  // resolved by glBlitFramebuffer; creation fails above GL_MAX_SAMPLES or the formats' counts.
+  uint32_t msaaSamples = 1;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
