@@ -208,4 +208,30 @@ TEST(Msaa, AlphaToCoverageGivesAMaskedEdgeFractionalCoverage) {
   }
 }
 
+// The scene's "antialiasing": {"msaa": N}: 1, 2 or 4, errors at their JSON pointer.
+TEST(Msaa, TheSceneNamesTheSampleCount) {
+  const auto parse = [](const std::string& antialiasing, std::string* error) {
+    return parseScene("s.json", R"({"antialiasing": )" + antialiasing + R"(, "objects": []})", error);
+  };
+  std::string error;
+  auto four = parse(R"({"msaa": 4})", &error);
+  ASSERT_TRUE(four) << error;
+  EXPECT_EQ(four->msaaSamples, 4u);
+  auto defaulted = parseScene("s.json", R"({"objects": []})", &error);
+  ASSERT_TRUE(defaulted) << error;
+  EXPECT_EQ(defaulted->msaaSamples, 1u);
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"msaa": 3})", "s.json: error: /antialiasing/msaa: expected 1, 2 or 4 samples, not 3"},
+      {R"({"msaa": 8})", "s.json: error: /antialiasing/msaa: value 8 is outside [1.0, 4.0]"},
+      {R"({"msaa": 2.5})", "s.json: error: /antialiasing/msaa: expected a whole number, not 2.5"},
+      {R"({"fxaa": true})", "s.json: error: /antialiasing/fxaa: unknown key 'fxaa'"},
+      {R"("4x")", "s.json: error: /antialiasing: expected an object"},
+  };
+  for (const auto& [text, message] : bad) {
+    error.clear();
+    EXPECT_FALSE(parse(text, &error)) << text;
+    EXPECT_NE(error.find(message), std::string::npos) << error;
+  }
+}
+
 }  // namespace
