@@ -107,6 +107,9 @@ class GlBackend final : public GlRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_); }
+  std::string msaaMethod() const override {
+    return samples_ > 1 ? "multisampled renderbuffers resolved by glBlitFramebuffer, then invalidated" : "off";
+  }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }

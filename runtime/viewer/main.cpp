@@ -145,14 +145,15 @@ int main(int argc, char** argv) {
         entry["path"] = facet::runtime::toString(backend->postPath());
         entry["hdrFormat"] = facet::runtime::toString(backend->hdrFormat());
         entry["msaa"] = backend->msaaSamples();
+        entry["msaaMethod"] = backend->msaaMethod();
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux:\n%s", name.c_str(),
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux (%s):\n%s", name.c_str(),
                     facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
-                    result.width, result.height, backend->msaaSamples(),
+                    result.width, result.height, backend->msaaSamples(), backend->msaaMethod().c_str(),
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
       }
     }

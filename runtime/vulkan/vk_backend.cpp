@@ -68,6 +68,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
+  std::string msaaMethod() const override;
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
   bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd, std::string* error) override;
@@ -113,6 +114,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
   ForwardSamples samples_;  // MSAA: the count and the multisampled colour's ops
+  bool clearInSubpass_ = false;  // FrameObjects::clearInSubpass: lavapipe's render-to-single-sampled
 
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
@@ -217,8 +219,13 @@ VulkanBackend::~VulkanBackend() {
 
 bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
-  return planRenderPath(options, error) && ctx_.init(validation, options.float16Arithmetic, error) &&
-         createFixedObjects(error);
+  if (!planRenderPath(options, error) ||
+      !ctx_.init(validation, options.float16Arithmetic, options.msaaSamples > 1 && options.renderToSingleSampled,
+                 error))
+    return false;
+  samples_.renderToSingleSampled = ctx_.createRenderPass2;
+  clearInSubpass_ = samples_.renderToSingleSampled && std::strncmp(ctx_.properties.deviceName, "llvmpipe", 8) == 0;
+  return createFixedObjects(error);
 }
 
 bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options, std::string* error) {
@@ -269,6 +276,21 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
     }
   }
   return true;
+}
+
+std::string VulkanBackend::msaaMethod() const {
+  std::string method = samples_.count == VK_SAMPLE_COUNT_1_BIT ? "off"
+                       : samples_.renderToSingleSampled
+                           ? "VK_EXT_multisampled_render_to_single_sampled (samples kept by the driver)"
+                           : "multisampled attachments resolved by pResolveAttachments";
+  // createImage falls back to device-local memory where the device has no lazily allocated type.
+  const Image& transient = samples_.resolveAttachment() ? targets_.hdrSamples : targets_.depth;
+  if (depthTransient_ && transient.image) {
+    method += transient.lazilyAllocated ? "; transient attachments in lazily allocated memory"
+                                        : "; transient attachments in device-local memory (the device offers no "
+                                          "lazily allocated memory type)";
+  }
+  return method;
 }
 
 // A count the device does not offer is an error here, never a validation error later: the
@@ -447,8 +469,9 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     FrameOutput output;
     if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
     // Not timed: the query pool would be shared by frames in flight.
-    const FrameObjects objects{
-        path_ == PostPath::Merged, samples_.count != VK_SAMPLE_COUNT_1_BIT, forwardLayout_, postLayout_, postPipeline_, slot_->postSet, VK_NULL_HANDLE};
+    const FrameObjects objects{path_ == PostPath::Merged, samples_.resolveAttachment(), clearInSubpass_,
+                               forwardLayout_,           postLayout_,                 postPipeline_,
+                               slot_->postSet,           VK_NULL_HANDLE};
     if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
@@ -500,8 +523,9 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
-    const FrameObjects objects{
-        path_ == PostPath::Merged, samples_.count != VK_SAMPLE_COUNT_1_BIT, forwardLayout_, postLayout_, postPipeline_, slot_->postSet, timestamps_};
+    const FrameObjects objects{path_ == PostPath::Merged, samples_.resolveAttachment(), clearInSubpass_,
+                               forwardLayout_,           postLayout_,                 postPipeline_,
+                               slot_->postSet,           timestamps_};
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -560,6 +584,7 @@ TargetConfig VulkanBackend::targetConfig() const {
   config.hdrTransient = hdrTransient_;
   config.depthTransient = depthTransient_;
   config.samples = samples_.count;
+  config.renderToSingleSampled = samples_.renderToSingleSampled != nullptr;
   config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;

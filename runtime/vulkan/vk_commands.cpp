@@ -63,6 +63,16 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
   vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
+  if (objects.clearInSubpass) {
+    VkClearAttachment again[2]{};
+    again[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    again[0].colorAttachment = 0;
+    again[0].clearValue = clears[0];
+    again[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    again[1].clearValue = clears[1];
+    const VkClearRect rect{scissor, 0, 1};
+    vkCmdClearAttachments(cmd, 2, again, 1, &rect);
+  }
   VkPipeline bound = VK_NULL_HANDLE;
   for (const DrawSlot& slot : slots) {
     if (slot.mesh.vertexCount == 0) continue;

@@ -29,9 +29,16 @@ AttachmentOps toVulkan(const fg::Attachment& attachment);
 // the render pass (pResolveAttachments) into the single-sample HDR attachment the post pass reads.
 // The multisampled colour is the render pass's last attachment, so attachments 0..2 keep their
 // meaning at every sample count.
+// With renderToSingleSampled (VK_EXT_multisampled_render_to_single_sampled, the mobile form) there
+// is no multisampled attachment at all: HDR and depth are single-sample images and subpass 0
+// renders `count` samples into them, the driver resolving at the end of the subpass (on a tiler the
+// samples never leave tile memory and need no allocation).
 struct ForwardSamples {
   VkSampleCountFlagBits count = VK_SAMPLE_COUNT_1_BIT;
   AttachmentOps colour;  // of the multisampled colour (the resolve target's are `hdr`'s)
+  PFN_vkCreateRenderPass2KHR renderToSingleSampled = nullptr;
+  // An explicit multisampled colour attachment, resolved through pResolveAttachments.
+  bool resolveAttachment() const { return count != VK_SAMPLE_COUNT_1_BIT && !renderToSingleSampled; }
 };
 
 // Separate path, render pass 1: the forward pass into RGBA16F colour (left in

@@ -70,7 +70,7 @@ void destroyHostBuffer(VkDevice device, HostBuffer* buffer) {
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                  VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels, bool cube,
-                 VkSampleCountFlagBits samples) {
+                 VkSampleCountFlagBits samples, VkImageCreateFlags flags) {
   Image image;
   image.format = format;
   image.width = width;
@@ -85,7 +85,7 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
   info.extent = {width, height, 1};
   info.mipLevels = mipLevels;
   info.arrayLayers = image.layers;
-  if (cube) info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
+  info.flags = flags | (cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0);
   info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;

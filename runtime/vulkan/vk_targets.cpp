@@ -46,12 +46,17 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
   VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   if (config.depthTransient) depthUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   const bool own = config.ownOutput;
-  const bool msaa = config.samples != VK_SAMPLE_COUNT_1_BIT;
+  const bool msaa = config.samples != VK_SAMPLE_COUNT_1_BIT && !config.renderToSingleSampled;
+  const VkImageCreateFlags renderedMultisampled =
+      config.samples != VK_SAMPLE_COUNT_1_BIT && config.renderToSingleSampled
+          ? VK_IMAGE_CREATE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_BIT_EXT
+          : 0;
   // The samples are only cleared, drawn and resolved (the frame graph: transient).
   const VkImageUsageFlags samplesUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
-  bool ok = createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error) &&
+  bool ok = createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error, 1,
+                        false, VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
             createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error, 1,
-                        false, config.samples) &&
+                        false, msaa ? config.samples : VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
             (!msaa || createImage(ctx, width, height, config.hdrFormat, samplesUsage, VK_IMAGE_ASPECT_COLOR_BIT,
                                   &t.hdrSamples, error, 1, false, config.samples)) &&
             (!own || (createImage(ctx, width, height, kLdrFormat,

@@ -23,6 +23,9 @@ struct TargetConfig {
   // MSAA: the forward pass renders into hdrSamples and depth at this count and resolves into hdr
   // (vk_pipeline.h ForwardSamples); both multisampled images are transient.
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  // VK_EXT_multisampled_render_to_single_sampled: no hdrSamples image, HDR and depth single-sample
+  // images the render pass renders `samples` samples into.
+  bool renderToSingleSampled = false;
   // The backend's own LDR target, its readback buffers and the framebuffers holding it: needed
   // by render() and by copies into app images it cannot render to, not when every frame goes
   // straight into the app's image (then they would be an unused RGBA8 image and buffer).

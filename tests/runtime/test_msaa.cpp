@@ -4,7 +4,9 @@
 // coverage. Vulkan validation (with synchronization validation) and GL debug output stay clean.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -85,6 +87,17 @@ std::unique_ptr<RenderBackend> vulkan(PostPath path, uint32_t samples, std::stri
   return createVulkanBackend(options, error);
 }
 
+// The portable form: explicit multisampled attachments resolved by pResolveAttachments, forced
+// where VK_EXT_multisampled_render_to_single_sampled is offered (lavapipe offers it).
+std::unique_ptr<RenderBackend> vulkanPortable(PostPath path, uint32_t samples, std::string* error) {
+  VulkanOptions options;
+  options.validation = true;
+  options.postPath = path;
+  options.msaaSamples = samples;
+  options.renderToSingleSampled = false;
+  return createVulkanBackend(options, error);
+}
+
 std::unique_ptr<RenderBackend> gles(PostPath path, uint32_t samples, std::string* error) {
   GlOptions options;
   options.postPath = path;
@@ -97,14 +110,14 @@ using Factory = std::unique_ptr<RenderBackend> (*)(PostPath, uint32_t, std::stri
 // Every backend and path: at 1 sample the silhouette is a hard step (no value between sky and
 // surface); at 4 samples it is resolved (values between, in HDR and in the 8-bit output).
 TEST(Msaa, AResolvedSilhouetteHasIntermediateValuesOnEveryBackendAndPath) {
-  for (Factory make : {&vulkan, &gles}) {
+  for (Factory make : {&vulkan, &vulkanPortable, &gles}) {
     for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
       std::string error;
       auto one = make(path, 1, &error);
       ASSERT_TRUE(one) << error;
       auto four = make(path, 4, &error);
       ASSERT_TRUE(four) << error;
-      SCOPED_TRACE(std::string(four->name()) + " " + toString(path));
+      SCOPED_TRACE(std::string(four->name()) + " " + toString(path) + " " + four->msaaMethod());
       EXPECT_EQ(four->msaaSamples(), 4u);
       EXPECT_EQ(four->postPath(), path);
       FrameResult a, b;
@@ -135,6 +148,33 @@ TEST(Msaa, AResolvedSilhouetteHasIntermediateValuesOnEveryBackendAndPath) {
   }
 }
 
+// Both Vulkan forms, on both paths: the extension where the device offers it (lavapipe does) and
+// the portable fallback, forced, render the same image (the same standard 4-sample pattern).
+TEST(Msaa, VulkanRendersTheSameWithTheExtensionAndWithoutIt) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    std::string error;
+    auto extension = vulkan(path, 4, &error);
+    ASSERT_TRUE(extension) << error;
+    auto portable = vulkanPortable(path, 4, &error);
+    ASSERT_TRUE(portable) << error;
+    FrameResult a, b;
+    ASSERT_TRUE(render(*extension, "white", &a, &error)) << error;
+    ASSERT_TRUE(render(*portable, "white", &b, &error)) << error;
+    EXPECT_NE(portable->msaaMethod().find("pResolveAttachments"), std::string::npos) << portable->msaaMethod();
+    if (extension->msaaMethod().find("VK_EXT_multisampled_render_to_single_sampled") == std::string::npos) {
+      ADD_FAILURE() << "lavapipe offers VK_EXT_multisampled_render_to_single_sampled, not used: "
+                    << extension->msaaMethod();
+    }
+    ASSERT_EQ(a.ldr.size(), b.ldr.size());
+    int worst = 0;
+    for (size_t i = 0; i < a.ldr.size(); ++i) worst = std::max(worst, std::abs(int(a.ldr[i]) - int(b.ldr[i])));
+    EXPECT_LE(worst, 1);
+    for (const std::string& e : extension->validationErrors()) ADD_FAILURE() << e;
+    for (const std::string& e : portable->validationErrors()) ADD_FAILURE() << e;
+  }
+}
+
 // The mobile path (HDR not read back): the resolved HDR and both multisampled attachments are
 // transient, and the 8-bit output is that of the path that reads HDR back.
 TEST(Msaa, TheMobilePathGivesTheSameImage) {
@@ -142,17 +182,21 @@ TEST(Msaa, TheMobilePathGivesTheSameImage) {
   VulkanOptions options;
   options.validation = true;
   options.msaaSamples = 4;
-  auto readBack = createVulkanBackend(options, &error);
-  ASSERT_TRUE(readBack) << error;
-  options.readBackHdr = false;
-  auto mobile = createVulkanBackend(options, &error);
-  ASSERT_TRUE(mobile) << error;
-  FrameResult a, b;
-  ASSERT_TRUE(render(*readBack, "white", &a, &error)) << error;
-  ASSERT_TRUE(render(*mobile, "white", &b, &error)) << error;
-  EXPECT_TRUE(b.hdr.empty());
-  EXPECT_EQ(a.ldr, b.ldr);
-  EXPECT_TRUE(mobile->validationErrors().empty());
+  for (bool renderToSingleSampled : {true, false}) {
+    options.renderToSingleSampled = renderToSingleSampled;
+    options.readBackHdr = true;
+    auto readBack = createVulkanBackend(options, &error);
+    ASSERT_TRUE(readBack) << error;
+    options.readBackHdr = false;
+    auto mobile = createVulkanBackend(options, &error);
+    ASSERT_TRUE(mobile) << error;
+    FrameResult a, b;
+    ASSERT_TRUE(render(*readBack, "white", &a, &error)) << error;
+    ASSERT_TRUE(render(*mobile, "white", &b, &error)) << error;
+    EXPECT_TRUE(b.hdr.empty());
+    EXPECT_EQ(a.ldr, b.ldr);
+    for (const std::string& e : mobile->validationErrors()) ADD_FAILURE() << e;
+  }
 }
 
 // Counts that are not 1, 2 or 4, and counts the device does not offer, fail creation with a
@@ -179,7 +223,7 @@ TEST(Msaa, AnUnsupportedSampleCountIsAnError) {
 // keep a fraction of their samples (fractional coverage) and resolve between the two. Fails
 // without either half: alpha 1 written (no coverage) or alpha to coverage off (all samples kept).
 TEST(Msaa, AlphaToCoverageGivesAMaskedEdgeFractionalCoverage) {
-  for (Factory make : {&vulkan, &gles}) {
+  for (Factory make : {&vulkan, &vulkanPortable, &gles}) {
     std::string error;
     auto one = make(PostPath::Auto, 1, &error);
     ASSERT_TRUE(one) << error;

@@ -177,6 +177,10 @@ class RenderBackend {
   virtual bool readsBackHdr() const = 0;
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
+  // How MSAA samples are kept and resolved, and where transient attachments live, for --stats and
+  // tests: e.g. "resolve attachment; transient attachments in device-local memory (no lazily
+  // allocated type)". Complete after the first frame (the targets exist then).
+  virtual std::string msaaMethod() const { return msaaSamples() > 1 ? "multisampled" : "off"; }
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -214,6 +218,11 @@ struct VulkanOptions {
   // offers the count for neither framebuffer colour and depth (framebufferColorSampleCounts,
   // framebufferDepthSampleCounts) nor the HDR format.
   uint32_t msaaSamples = 1;
+  // With MSAA, use VK_EXT_multisampled_render_to_single_sampled where the backend's own device
+  // offers it (the samples are the driver's, never allocated by Facet); false forces the portable
+  // path (multisampled attachments resolved by pResolveAttachments), for tests. An app's device
+  // (vulkan_backend.h) always takes the portable path.
+  bool renderToSingleSampled = true;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
