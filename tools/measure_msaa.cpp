@@ -22,10 +22,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
-#include <glm/glm.hpp>
 
 #include "facet/eval/metrics.h"
 #include "facet/runtime/render_backend.h"
@@ -212,9 +212,10 @@ int main(int argc, char** argv) {
     }
     std::printf("| %s | %.4f | %.4f |\n", what, change / (kSteps - 1), excess / (kSteps - 1));
   };
-  std::printf("Flicker over %d camera positions 1/%d pixel apart: mean |frame-to-frame difference| and mean |that "
-              "difference - the reference's| (8-bit steps):\n\n",
-              kSteps, kSteps);
+  std::printf(
+      "Flicker over %d camera positions 1/%d pixel apart: mean |frame-to-frame difference| and mean |that "
+      "difference - the reference's| (8-bit steps):\n\n",
+      kSteps, kSteps);
   std::printf("| image | frame-to-frame | beyond the reference's |\n|---|---|---|\n");
   std::vector<std::vector<uint8_t>> frames;
   if (!sweep(*one, 1, &frames)) return fail(error);

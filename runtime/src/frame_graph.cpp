@@ -27,7 +27,9 @@ std::vector<ResourceId> outputsOf(const PassDesc& pass) {
 }
 
 // Outputs whose earlier contents the pass does not need: cleared or resolved into.
-bool overwrites(const PassDesc& pass, ResourceId id) { return contains(pass.clears, id) || contains(pass.resolves, id); }
+bool overwrites(const PassDesc& pass, ResourceId id) {
+  return contains(pass.clears, id) || contains(pass.resolves, id);
+}
 
 bool sameSize(const ResourceDesc& a, const ResourceDesc& b) { return a.width == b.width && a.height == b.height; }
 
@@ -250,9 +252,9 @@ std::string describe(const FrameGraph& graph, const CompiledGraph& compiled) {
     const ResourceTraffic& t = compiled.traffic[id];
     const ResourceDesc& r = graph.resource(id);
     const std::string name = r.samples > 1 ? r.name + " " + std::to_string(r.samples) + "x" : r.name;
-    std::snprintf(line, sizeof line, "  %-10s loaded %10llu B  stored %10llu B  sampled %10llu B%s\n", name.c_str(), static_cast<unsigned long long>(t.loadedBytes),
-                  static_cast<unsigned long long>(t.storedBytes), static_cast<unsigned long long>(t.sampledBytes),
-                  t.transient ? "  transient" : "");
+    std::snprintf(line, sizeof line, "  %-10s loaded %10llu B  stored %10llu B  sampled %10llu B%s\n", name.c_str(),
+                  static_cast<unsigned long long>(t.loadedBytes), static_cast<unsigned long long>(t.storedBytes),
+                  static_cast<unsigned long long>(t.sampledBytes), t.transient ? "  transient" : "");
     text += line;
   }
   std::snprintf(line, sizeof line, "total: loaded %llu B, stored %llu B, sampled %llu B per frame\n",

@@ -133,9 +133,9 @@ int main(int argc, char** argv) {
     std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(),
                  result.width, result.height, prepared->variantKey().c_str(), prepared->exposure());
     if (stats) {
-      const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
-          result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
-          backend->msaaSamples());
+      const facet::runtime::ForwardPostGraph graph =
+          facet::runtime::buildForwardPostGraph(result.width, result.height, backend->postPath(),
+                                                backend->readsBackHdr(), backend->hdrFormat(), backend->msaaSamples());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);

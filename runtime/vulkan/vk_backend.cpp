@@ -113,7 +113,7 @@ class VulkanBackend final : public VulkanRenderer {
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
-  ForwardSamples samples_;  // MSAA: the count and the multisampled colour's ops
+  ForwardSamples samples_;       // MSAA: the count and the multisampled colour's ops
   bool clearInSubpass_ = false;  // FrameObjects::clearInSubpass: lavapipe's render-to-single-sampled
 
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
@@ -219,9 +219,8 @@ VulkanBackend::~VulkanBackend() {
 
 bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
-  if (!planRenderPath(options, error) ||
-      !ctx_.init(validation, options.float16Arithmetic, options.msaaSamples > 1 && options.renderToSingleSampled,
-                 error))
+  if (!planRenderPath(options, error) || !ctx_.init(validation, options.float16Arithmetic,
+                                                    options.msaaSamples > 1 && options.renderToSingleSampled, error))
     return false;
   samples_.renderToSingleSampled = ctx_.createRenderPass2;
   clearInSubpass_ = samples_.renderToSingleSampled && std::strncmp(ctx_.properties.deviceName, "llvmpipe", 8) == 0;
@@ -469,9 +468,14 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     FrameOutput output;
     if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
     // Not timed: the query pool would be shared by frames in flight.
-    const FrameObjects objects{path_ == PostPath::Merged, samples_.resolveAttachment(), clearInSubpass_,
-                               forwardLayout_,           postLayout_,                 postPipeline_,
-                               slot_->postSet,           VK_NULL_HANDLE};
+    const FrameObjects objects{path_ == PostPath::Merged,
+                               samples_.resolveAttachment(),
+                               clearInSubpass_,
+                               forwardLayout_,
+                               postLayout_,
+                               postPipeline_,
+                               slot_->postSet,
+                               VK_NULL_HANDLE};
     if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
@@ -523,9 +527,14 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
-    const FrameObjects objects{path_ == PostPath::Merged, samples_.resolveAttachment(), clearInSubpass_,
-                               forwardLayout_,           postLayout_,                 postPipeline_,
-                               slot_->postSet,           timestamps_};
+    const FrameObjects objects{path_ == PostPath::Merged,
+                               samples_.resolveAttachment(),
+                               clearInSubpass_,
+                               forwardLayout_,
+                               postLayout_,
+                               postPipeline_,
+                               slot_->postSet,
+                               timestamps_};
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;

@@ -323,8 +323,8 @@ bool Context::createDevice(bool float16Arithmetic, bool renderToSingleSampled, s
   const char* const renderToSingleExtensions[] = {VK_KHR_CREATE_RENDERPASS_2_EXTENSION_NAME,
                                                   VK_KHR_DEPTH_STENCIL_RESOLVE_EXTENSION_NAME,
                                                   VK_EXT_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_EXTENSION_NAME};
-  if (renderToSingleSampled && std::all_of(std::begin(renderToSingleExtensions), std::end(renderToSingleExtensions),
-                                           offered)) {
+  if (renderToSingleSampled &&
+      std::all_of(std::begin(renderToSingleExtensions), std::end(renderToSingleExtensions), offered)) {
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.pNext = &renderToSingle;

@@ -272,7 +272,8 @@ bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps 
   depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  attachments[2] = describeAttachment(hdrFormat, samples.colour, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, samples.count);
+  attachments[2] =
+      describeAttachment(hdrFormat, samples.colour, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, samples.count);
 
   VkAttachmentReference colourRef{msaa ? 2u : 0u, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference resolveRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};

@@ -101,12 +101,12 @@ struct PipelineDesc {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   uint32_t subpass = 0;
-  uint32_t colourSlots = 1;  // colour attachments of that subpass (merged post subpass: 2)
+  uint32_t colourSlots = 1;                               // colour attachments of that subpass (merged post subpass: 2)
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the subpass's attachments' (forward: MSAA)
   // Masked materials under MSAA: the fragment's alpha (its coverage, output_blending.glsl) masks
   // the samples it writes, so an alpha-tested edge is antialiased like a geometric one.
   bool alphaToCoverage = false;
-  const char* what = "";     // names the shaders in error messages
+  const char* what = "";  // names the shaders in error messages
 };
 
 // Viewport and scissor are dynamic state, so a pipeline does not depend on the frame size.

@@ -38,10 +38,10 @@ struct TargetConfig {
 struct RenderTargets {
   uint32_t width = 0;
   uint32_t height = 0;
-  Image hdr;    // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
-  Image depth;  // D32, at TargetConfig::samples
+  Image hdr;         // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
+  Image depth;       // D32, at TargetConfig::samples
   Image hdrSamples;  // MSAA only: the forward pass's multisampled colour, resolved into hdr
-  Image ldr;    // RGBA8: post pass output, copied out (ownOutput only)
+  Image ldr;         // RGBA8: post pass output, copied out (ownOutput only)
   VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR (ownOutput only)
   VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only (ownOutput only)
   HostBuffer

@@ -299,8 +299,9 @@ uint32_t msaaSamples(const json& j) {
 }
 
 Scene scene(const json& j, const AssetPaths& assets) {
-  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post",
-                   "antialiasing"});
+  onlyKeys(
+      j, "",
+      {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post", "antialiasing"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);

@@ -157,8 +157,8 @@ const char* pathName(PostPath path) { return path == PostPath::Merged ? "merged"
 // render()'s, frame after frame (the second frame changes one instance), without and with MSAA.
 TEST_F(GlAppTargetTest, AppFramebufferGetsTheReadbackImageOnBothPaths) {
   for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
-    for (const auto& [image, samples] : {std::pair{Image::Texture, 1u}, std::pair{Image::Renderbuffer, 1u},
-                                         std::pair{Image::Texture, 4u}}) {
+    for (const auto& [image, samples] :
+         {std::pair{Image::Texture, 1u}, std::pair{Image::Renderbuffer, 1u}, std::pair{Image::Texture, 4u}}) {
       SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer") +
                    ", MSAA " + std::to_string(samples));
       auto renderer = embedded(path, samples);
