@@ -78,8 +78,10 @@ bool render(RenderBackend& backend, Scene scene, uint32_t scale, double shiftPix
   return frame && backend.render(frame->frame(), out, error);
 }
 
-// Each `scale`×`scale` block of the 8-bit output averaged in linear light.
-std::vector<uint8_t> downsampleLdr(const FrameResult& big, uint32_t scale) {
+// Each `scale`×`scale` block's values of one channel, read by value(index into the big image's
+// RGBA values), averaged, and written by finish(mean).
+template <typename Value, typename Finish>
+std::vector<uint8_t> downsample(const FrameResult& big, uint32_t scale, Value value, Finish finish) {
   const uint32_t w = big.width / scale, h = big.height / scale;
   std::vector<uint8_t> out(size_t{w} * h * 4, 255);
   for (uint32_t y = 0; y < h; ++y)
@@ -88,26 +90,22 @@ std::vector<uint8_t> downsampleLdr(const FrameResult& big, uint32_t scale) {
         double sum = 0;
         for (uint32_t j = 0; j < scale; ++j)
           for (uint32_t i = 0; i < scale; ++i)
-            sum += decode(big.ldr[((size_t{y} * scale + j) * big.width + x * scale + i) * 4 + ch]);
-        out[(size_t{y} * w + x) * 4 + ch] = encode(sum / (scale * scale));
+            sum += value(((size_t{y} * scale + j) * big.width + x * scale + i) * 4 + ch);
+        out[(size_t{y} * w + x) * 4 + ch] = finish(sum / (scale * scale));
       }
   return out;
 }
 
-// Each block's HDR samples averaged, then tone-mapped and encoded (resolve first).
+// The 8-bit output averaged in linear light.
+std::vector<uint8_t> downsampleLdr(const FrameResult& big, uint32_t scale) {
+  return downsample(
+      big, scale, [&](size_t i) { return decode(big.ldr[i]); }, encode);
+}
+
+// The HDR samples averaged, then tone-mapped and encoded (resolve first).
 std::vector<uint8_t> resolveThenToneMap(const FrameResult& big, uint32_t scale) {
-  const uint32_t w = big.width / scale, h = big.height / scale;
-  std::vector<uint8_t> out(size_t{w} * h * 4, 255);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x)
-      for (int ch = 0; ch < 3; ++ch) {
-        double sum = 0;
-        for (uint32_t j = 0; j < scale; ++j)
-          for (uint32_t i = 0; i < scale; ++i)
-            sum += big.hdr[((size_t{y} * scale + j) * big.width + x * scale + i) * 4 + ch];
-        out[(size_t{y} * w + x) * 4 + ch] = encode(aces(sum / (scale * scale)));
-      }
-  return out;
+  return downsample(
+      big, scale, [&](size_t i) { return double(big.hdr[i]); }, [](double mean) { return encode(aces(mean)); });
 }
 
 double meanAbsDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {

@@ -95,6 +95,7 @@ class VulkanBackend final : public VulkanRenderer {
   void writePostSet();
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
+  FrameObjects frameObjects(VkQueryPool timestamps) const;
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
@@ -468,14 +469,7 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     FrameOutput output;
     if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
     // Not timed: the query pool would be shared by frames in flight.
-    const FrameObjects objects{path_ == PostPath::Merged,
-                               samples_.resolveAttachment(),
-                               clearInSubpass_,
-                               forwardLayout_,
-                               postLayout_,
-                               postPipeline_,
-                               slot_->postSet,
-                               VK_NULL_HANDLE};
+    const FrameObjects objects = frameObjects(VK_NULL_HANDLE);
     if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
@@ -527,14 +521,7 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
-    const FrameObjects objects{path_ == PostPath::Merged,
-                               samples_.resolveAttachment(),
-                               clearInSubpass_,
-                               forwardLayout_,
-                               postLayout_,
-                               postPipeline_,
-                               slot_->postSet,
-                               timestamps_};
+    const FrameObjects objects = frameObjects(timestamps_);
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -584,6 +571,17 @@ bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std
     output->postPass = appImagePass_;
   }
   return appImages_.framebuffersFor(*appImage, targets_, targetConfig(), frameNumber_, &output->framebuffers, error);
+}
+
+FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
+  return {path_ == PostPath::Merged,
+          samples_.resolveAttachment(),
+          clearInSubpass_,
+          forwardLayout_,
+          postLayout_,
+          postPipeline_,
+          slot_->postSet,
+          timestamps};
 }
 
 TargetConfig VulkanBackend::targetConfig() const {

@@ -79,23 +79,24 @@ int countBetweenLdr(const FrameResult& r, uint8_t background, uint8_t surface) {
   return between;
 }
 
-std::unique_ptr<RenderBackend> vulkan(PostPath path, uint32_t samples, std::string* error) {
+std::unique_ptr<RenderBackend> vulkanWith(PostPath path, uint32_t samples, bool renderToSingleSampled,
+                                          std::string* error) {
   VulkanOptions options;
   options.validation = true;
   options.postPath = path;
   options.msaaSamples = samples;
+  options.renderToSingleSampled = renderToSingleSampled;
   return createVulkanBackend(options, error);
+}
+
+std::unique_ptr<RenderBackend> vulkan(PostPath path, uint32_t samples, std::string* error) {
+  return vulkanWith(path, samples, true, error);
 }
 
 // The portable form: explicit multisampled attachments resolved by pResolveAttachments, forced
 // where VK_EXT_multisampled_render_to_single_sampled is offered (lavapipe offers it).
 std::unique_ptr<RenderBackend> vulkanPortable(PostPath path, uint32_t samples, std::string* error) {
-  VulkanOptions options;
-  options.validation = true;
-  options.postPath = path;
-  options.msaaSamples = samples;
-  options.renderToSingleSampled = false;
-  return createVulkanBackend(options, error);
+  return vulkanWith(path, samples, false, error);
 }
 
 std::unique_ptr<RenderBackend> gles(PostPath path, uint32_t samples, std::string* error) {
