@@ -108,7 +108,9 @@ class GlBackend final : public GlRenderer {
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_); }
   std::string msaaMethod() const override {
-    return samples_ > 1 ? "multisampled renderbuffers resolved by glBlitFramebuffer, then invalidated" : "off";
+    if (samples_ == 1) return "off";
+    return renderToTexture_ ? "GL_EXT_multisampled_render_to_texture (samples kept by the driver)"
+                            : "multisampled renderbuffers resolved by glBlitFramebuffer, then invalidated";
   }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) override;
@@ -150,6 +152,8 @@ class GlBackend final : public GlRenderer {
   bool readBackHdr_ = true;
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLsizei samples_ = 1;  // MSAA samples of the forward pass
+  // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
+  bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;            // the path's post program: framebuffer fetch when merged
@@ -192,6 +196,7 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   }
   path_ = options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged;
   if (!checkSampleCount(options.msaaSamples, error)) return false;
+  renderToTexture_ = samples_ > 1 && options.renderToTexture && context_->renderToTexture().present();
 
   GLint maxTexture = 0;
   GLint maxRenderbuffer = 0;
@@ -378,7 +383,9 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
-  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, &targets_, error);
+  const gl::Context::RenderToTexture* renderToTexture = renderToTexture_ ? &context_->renderToTexture() : nullptr;
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture,
+                                 &targets_, error);
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error) {
@@ -444,7 +451,17 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
 // glBlitFramebuffer from multisampled to single-sample averages each pixel's samples (GLES 3.0,
 // 4.3.3: the formats match, so the resolve is exact in the target's format). Then colour and
 // depth samples are invalidated: a tiler keeps them in tile memory and never writes them out.
+// With GL_EXT_multisampled_render_to_texture the driver resolves into the texture when the
+// framebuffer is flushed (the caller binds the next one); only depth is invalidated, since an
+// invalidated colour would be discarded instead of resolved.
 void GlBackend::resolveSamples(uint32_t width, uint32_t height) {
+  if (targets_.renderToTexture) {
+    if (context_->canInvalidateFramebuffer()) {
+      const GLenum depth = GL_DEPTH_ATTACHMENT;
+      glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &depth);
+    }
+    return;
+  }
   const auto w = static_cast<GLint>(width);
   const auto h = static_cast<GLint>(height);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_.msaaFramebuffer.id());

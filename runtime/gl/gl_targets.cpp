@@ -79,7 +79,7 @@ GLint maxRenderbufferSamples(GLenum internalFormat) {
 }
 
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
-                         RenderTargets* targets, std::string* error) {
+                         const Context::RenderToTexture* renderToTexture, RenderTargets* targets, std::string* error) {
   const auto w = static_cast<GLsizei>(width);
   const auto h = static_cast<GLsizei>(height);
   RenderTargets created;
@@ -87,6 +87,7 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
   created.height = height;
   created.samples = samples;
   const bool msaa = samples > 1;
+  created.renderToTexture = msaa && renderToTexture;
 
   const bool packed = hdrFormat == HdrFormat::R11G11B10Float;
   created.hdrColor = packed ? createColorTexture(GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV, w, h)
@@ -94,7 +95,9 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
   const auto renderbuffer = [&](GLenum internalFormat, GLsizei count) {
     Renderbuffer made = Renderbuffer::generate();
     glBindRenderbuffer(GL_RENDERBUFFER, made.id());
-    if (count > 1) {
+    if (count > 1 && created.renderToTexture) {
+      renderToTexture->renderbufferStorage(GL_RENDERBUFFER, count, internalFormat, w, h);
+    } else if (count > 1) {
       glRenderbufferStorageMultisample(GL_RENDERBUFFER, count, internalFormat, w, h);
     } else {
       glRenderbufferStorage(GL_RENDERBUFFER, internalFormat, w, h);
@@ -109,11 +112,17 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
   if (!msaa) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
   bool hdrComplete = checkComplete(packed ? "HDR (R11F_G11F_B10F + DEPTH32F)" : "HDR (RGBA16F + DEPTH32F)", error);
   if (msaa && hdrComplete) {
-    created.hdrSamples = renderbuffer(hdrInternalFormat(hdrFormat), samples);
+    if (!created.renderToTexture) created.hdrSamples = renderbuffer(hdrInternalFormat(hdrFormat), samples);
     created.depthSamples = renderbuffer(kDepthInternalFormat, samples);
     created.msaaFramebuffer = Framebuffer::generate();
     glBindFramebuffer(GL_FRAMEBUFFER, created.msaaFramebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, created.hdrSamples.id());
+    if (created.renderToTexture) {
+      // The extension's rule: every attachment of the framebuffer has the same sample count.
+      renderToTexture->framebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(),
+                                            0, samples);
+    } else {
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, created.hdrSamples.id());
+    }
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depthSamples.id());
     hdrComplete = checkComplete("MSAA (multisampled HDR + DEPTH32F)", error);
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "facet/runtime/render_path.h"
+#include "gl_context.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {
@@ -21,10 +22,14 @@ struct RenderTargets {
   Framebuffer hdrFramebuffer;
   // MSAA only: multisampled HDR colour and depth renderbuffers, the forward pass's framebuffer.
   // Resolved into hdrColor by glBlitFramebuffer, then invalidated (never stored on a tiler).
+  // With GL_EXT_multisampled_render_to_texture (renderToTexture) there is no hdrSamples: hdrColor
+  // itself is attached with `samples` samples and the driver resolves it when the framebuffer is
+  // flushed (the next framebuffer bound), and depthSamples is that extension's renderbuffer.
   Renderbuffer hdrSamples;
   Renderbuffer depthSamples;
   Framebuffer msaaFramebuffer;
   GLsizei samples = 1;
+  bool renderToTexture = false;
   // Post pass: RGBA8 colour, the displayable image.
   Texture ldrColor;
   Framebuffer ldrFramebuffer;
@@ -45,8 +50,10 @@ bool checkComplete(const char* which, std::string* error);
 // Creates the framebuffers at width × height (the merged one when `merged`) with an HDR colour
 // target of `hdrFormat`, and `samples` > 1 the multisampled forward framebuffer, and checks their
 // completeness.
+// renderToTexture: the context's GL_EXT_multisampled_render_to_texture entry points, or null for
+// multisampled renderbuffers resolved by glBlitFramebuffer.
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
-                         RenderTargets* targets, std::string* error);
+                         const Context::RenderToTexture* renderToTexture, RenderTargets* targets, std::string* error);
 
 // The internal formats of the HDR target and of depth (GL_RGBA16F or GL_R11F_G11F_B10F;
 // GL_DEPTH_COMPONENT32F).

@@ -248,6 +248,10 @@ struct GlOptions {
   // MSAA samples per pixel of the forward pass: 1 (off), 2 or 4. Multisampled renderbuffers
   // resolved by glBlitFramebuffer; creation fails above GL_MAX_SAMPLES or the formats' counts.
   uint32_t msaaSamples = 1;
+  // With MSAA on a GLES context that lists GL_EXT_multisampled_render_to_texture, render into the
+  // HDR texture with the samples kept by the driver instead (no renderbuffer, no blit). Written to
+  // the extension's specification; llvmpipe lacks it, so this path is untested here.
+  bool renderToTexture = true;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
