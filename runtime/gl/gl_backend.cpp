@@ -448,9 +448,9 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   return checkGlError("forward pass", error);
 }
 
-// glBlitFramebuffer from multisampled to single-sample averages each pixel's samples (GLES 3.0,
-// 4.3.3: the formats match, so the resolve is exact in the target's format). Then colour and
-// depth samples are invalidated: a tiler keeps them in tile memory and never writes them out.
+// glBlitFramebuffer from multisampled to single-sample averages each pixel's samples (GLES 3.0
+// requires equal formats for it). Then colour and depth samples are invalidated, so no later use
+// keeps them (a tiler has written them out to blit them; the extension below avoids that).
 // With GL_EXT_multisampled_render_to_texture the driver resolves into the texture when the
 // framebuffer is flushed (the caller binds the next one); only depth is invalidated, since an
 // invalidated colour would be discarded instead of resolved.
