@@ -1,6 +1,7 @@
 // The fragment output of every blending mode (the material header's `blending`):
 //   opaque       rgb, alpha 1
-//   masked       discard where alpha < cutoff, else opaque (alpha-tested foliage, fences)
+//   masked       discard where alpha < cutoff, else opaque (alpha-tested foliage, fences); with
+//                MSAA, alpha to coverage instead (below)
 //   transparent  premultiplied (rgb·α, α): the blend unit computes src + (1 − α)·dst ("over")
 //   additive     premultiplied (rgb·α, α): the blend unit adds src to dst
 // Premultiplied output lets one blend function serve every alpha, and lets emissive surfaces
@@ -28,8 +29,22 @@ vec3 linear_from_shading_space(vec3 color) {
 #endif
 }
 
+// Masked with MSAA (the backend sets frame.cameraPosition.w to 1 and turns alpha to coverage on):
+// a discard would keep or drop all the samples of a pixel, so an alpha-tested edge stayed as
+// aliased as without MSAA. Instead alpha is sharpened into a ramp one pixel wide centred on the
+// cutoff, c = (α − cutoff) / fwidth(α) + 1/2 clamped to [0, 1] (Castaño's "sharpened alpha to
+// coverage"), and written as alpha: the hardware keeps about c of the pixel's samples, so the
+// edge resolves like a geometric one, and c ≥ 1/2 exactly where α ≥ cutoff (the alpha test's own
+// edge). The 1e-4 floor: a constant α (fwidth 0) steps at the cutoff, as the alpha test did; it
+// is above binary16's smallest normal (6.1e-5), so mediump keeps it. Only c = 0 is discarded (no
+// sample would be written, and a discarded fragment writes no depth either).
 vec4 blend_output(vec3 color, float alpha) {
 #if defined(FACET_BLENDING_MASKED)
+    if (frame.cameraPosition.w > 0.5) {
+        float coverage = clamp((alpha - FACET_ALPHA_CUTOFF) / max(fwidth(alpha), 1e-4) + 0.5, 0.0, 1.0);
+        if (coverage <= 0.0) discard;
+        return vec4(color, coverage);
+    }
     if (alpha < FACET_ALPHA_CUTOFF) discard;
     return vec4(color, 1.0);
 #elif defined(FACET_BLENDING_TRANSPARENT) || defined(FACET_BLENDING_ADDITIVE)

@@ -373,7 +373,8 @@ struct GpuEvaluator::Impl {
 
 GpuEvaluator::GpuEvaluator(bool validation) : impl_(std::make_unique<Impl>()) {
   const bool layers = validation || runtime::vulkan::validationRequestedByEnvironment();
-  if (impl_->ctx.init(layers, /*float16Arithmetic=*/false, &impl_->initError)) impl_->finishInit();
+  if (impl_->ctx.init(layers, /*float16Arithmetic=*/false, /*renderToSingleSampled=*/false, &impl_->initError))
+    impl_->finishInit();
 }
 
 GpuEvaluator::GpuEvaluator(const runtime::AppDevice& device) : impl_(std::make_unique<Impl>()) {

@@ -32,6 +32,7 @@ namespace facet::runtime::gl {
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                 \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                         \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                                     \
+  X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                                         \
   X(PFNGLBUFFERDATAPROC, glBufferData)                                                   \
   X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                                             \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)                           \
@@ -78,6 +79,7 @@ namespace facet::runtime::gl {
   X(PFNGLGETERRORPROC, glGetError)                                                       \
   X(PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC, glGetFramebufferAttachmentParameteriv) \
   X(PFNGLGETINTEGERVPROC, glGetIntegerv)                                                 \
+  X(PFNGLGETINTERNALFORMATIVPROC, glGetInternalformativ)                                 \
   X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                                     \
   X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                                               \
   X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                                       \
@@ -94,6 +96,7 @@ namespace facet::runtime::gl {
   X(PFNGLREADBUFFERPROC, glReadBuffer)                                                   \
   X(PFNGLREADPIXELSPROC, glReadPixels)                                                   \
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                                 \
+  X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample)           \
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                                               \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                                   \
   X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                                                   \
@@ -153,6 +156,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glBindTexture (::facet::runtime::gl::detail::current->glBindTexture)
 #define glBindVertexArray (::facet::runtime::gl::detail::current->glBindVertexArray)
 #define glBlendFunc (::facet::runtime::gl::detail::current->glBlendFunc)
+#define glBlitFramebuffer (::facet::runtime::gl::detail::current->glBlitFramebuffer)
 #define glBufferData (::facet::runtime::gl::detail::current->glBufferData)
 #define glBufferSubData (::facet::runtime::gl::detail::current->glBufferSubData)
 #define glCheckFramebufferStatus (::facet::runtime::gl::detail::current->glCheckFramebufferStatus)
@@ -200,6 +204,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glGetFramebufferAttachmentParameteriv \
   (::facet::runtime::gl::detail::current->glGetFramebufferAttachmentParameteriv)
 #define glGetIntegerv (::facet::runtime::gl::detail::current->glGetIntegerv)
+#define glGetInternalformativ (::facet::runtime::gl::detail::current->glGetInternalformativ)
 #define glGetProgramInfoLog (::facet::runtime::gl::detail::current->glGetProgramInfoLog)
 #define glGetProgramiv (::facet::runtime::gl::detail::current->glGetProgramiv)
 #define glGetShaderInfoLog (::facet::runtime::gl::detail::current->glGetShaderInfoLog)
@@ -216,6 +221,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glReadBuffer (::facet::runtime::gl::detail::current->glReadBuffer)
 #define glReadPixels (::facet::runtime::gl::detail::current->glReadPixels)
 #define glRenderbufferStorage (::facet::runtime::gl::detail::current->glRenderbufferStorage)
+#define glRenderbufferStorageMultisample (::facet::runtime::gl::detail::current->glRenderbufferStorageMultisample)
 #define glShaderSource (::facet::runtime::gl::detail::current->glShaderSource)
 #define glTexImage2D (::facet::runtime::gl::detail::current->glTexImage2D)
 #define glTexImage3D (::facet::runtime::gl::detail::current->glTexImage3D)

@@ -92,6 +92,7 @@ void leaveState(GLuint framebuffer, uint32_t width, uint32_t height) {
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glDepthMask(GL_TRUE);
 }
 
@@ -105,6 +106,12 @@ class GlBackend final : public GlRenderer {
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
+  uint32_t msaaSamples() const override { return uint32_t(samples_); }
+  std::string msaaMethod() const override {
+    if (samples_ == 1) return "off";
+    return renderToTexture_ ? "GL_EXT_multisampled_render_to_texture (samples kept by the driver)"
+                            : "multisampled renderbuffers resolved by glBlitFramebuffer, then invalidated";
+  }
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& target, std::string* error) override;
   const std::vector<std::string>& validationErrors() const override { return context_->debugErrors(); }
@@ -130,6 +137,9 @@ class GlBackend final : public GlRenderer {
   // textures checked, targets and textures made.
   bool beginFrame(const FrameDesc& frame, std::string* error);
   bool prepareTargets(uint32_t width, uint32_t height, std::string* error);
+  bool checkSampleCount(uint32_t samples, std::string* error);
+  // MSAA: the multisampled colour blitted into the HDR texture, then the samples invalidated.
+  void resolveSamples(uint32_t width, uint32_t height);
   // `framebuffer`: the merged one (HDR, LDR, depth) when `merged`, else the HDR one.
   bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error);
   bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
@@ -144,6 +154,9 @@ class GlBackend final : public GlRenderer {
   PostPath path_ = PostPath::Separate;
   bool readBackHdr_ = true;
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
+  GLsizei samples_ = 1;  // MSAA samples of the forward pass
+  // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
+  bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;            // the path's post program: framebuffer fetch when merged
@@ -185,6 +198,8 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
     return false;
   }
   path_ = options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged;
+  if (!checkSampleCount(options.msaaSamples, error)) return false;
+  renderToTexture_ = samples_ > 1 && options.renderToTexture && context_->renderToTexture().present();
 
   GLint maxTexture = 0;
   GLint maxRenderbuffer = 0;
@@ -231,6 +246,28 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
     return false;
   }
   return checkGlError("GL backend creation", error);
+}
+
+// A count the context does not offer is an error at creation, never a GL error in a frame:
+// GL_MAX_SAMPLES bounds every format, and each format's own list (glGetInternalformativ) may be
+// shorter (GLES 3.0 requires multisampling for RGBA16F only with EXT_color_buffer_float).
+bool GlBackend::checkSampleCount(uint32_t samples, std::string* error) {
+  if (!isMsaaSampleCount(samples)) {
+    if (error) *error = "GL backend: GlOptions::msaaSamples must be 1, 2 or 4, not " + std::to_string(samples);
+    return false;
+  }
+  samples_ = static_cast<GLsizei>(samples);
+  if (samples == 1) return true;
+  GLint maxSamples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  const GLint offered = std::min({maxSamples, gl::maxRenderbufferSamples(gl::hdrInternalFormat(hdrFormat_)),
+                                  gl::maxRenderbufferSamples(gl::kDepthInternalFormat)});
+  if (GLint(samples) <= offered) return true;
+  if (error)
+    *error = "GL backend: MSAA " + std::to_string(samples) + "x is not offered by this " + context_->kindName() +
+             " context for " + toString(hdrFormat_) + " colour with DEPTH32F (at most " + std::to_string(offered) +
+             " samples)";
+  return false;
 }
 
 GlBackend::~GlBackend() {
@@ -352,14 +389,19 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
 
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
-  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, &targets_, error);
+  const gl::Context::RenderToTexture* renderToTexture = renderToTexture_ ? &context_->renderToTexture() : nullptr;
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture,
+                                 &targets_, error);
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error) {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  // MSAA: the forward pass draws into the multisampled framebuffer, resolved into `framebuffer`'s
+  // HDR below; its only colour is the HDR samples.
+  const bool msaa = samples_ > 1;
+  glBindFramebuffer(GL_FRAMEBUFFER, msaa ? targets_.msaaFramebuffer.id() : framebuffer);
   // Merged: the forward pass writes colour 0 (HDR) only; LDR (colour 1) is the post pass's.
   const GLenum forwardBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
-  glDrawBuffers(merged ? 2 : 1, forwardBuffers);
+  glDrawBuffers(merged && !msaa ? 2 : 1, forwardBuffers);
   glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
   glDisable(GL_BLEND);
   glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
@@ -374,8 +416,10 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   const GLfloat farDepth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
+  abi::FrameUniforms frameUniforms = frame.frame;
+  frameUniforms.cameraPosition[3] = msaa ? 1.0f : 0.0f;  // masked materials: alpha to coverage (shader_abi.h)
   glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
-  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &frame.frame, GL_DYNAMIC_DRAW);
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &frameUniforms, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
   if (!checkGlError("forward pass setup", error)) return false;
 
@@ -391,8 +435,14 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   meshes_.endFrame();
   materialBlocks_.endFrame();
+  if (msaa) {
+    resolveSamples(frame.width, frame.height);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    return checkGlError("forward pass (MSAA resolve)", error);
+  }
 
   // Separate path: depth is dead once the forward pass ends. Invalidating it here, before the
   // framebuffer switch, is what lets a tiler skip writing depth tiles to memory (DESIGN: depth is
@@ -402,6 +452,34 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
     glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &depthAttachment);
   }
   return checkGlError("forward pass", error);
+}
+
+// glBlitFramebuffer from multisampled to single-sample averages each pixel's samples (GLES 3.0
+// requires equal formats for it). Then colour and depth samples are invalidated, so no later use
+// keeps them (a tiler has written them out to blit them; the extension below avoids that).
+// With GL_EXT_multisampled_render_to_texture the driver resolves into the texture when the
+// framebuffer is flushed (the caller binds the next one); only depth is invalidated, since an
+// invalidated colour would be discarded instead of resolved.
+void GlBackend::resolveSamples(uint32_t width, uint32_t height) {
+  if (targets_.renderToTexture) {
+    if (context_->canInvalidateFramebuffer()) {
+      const GLenum depth = GL_DEPTH_ATTACHMENT;
+      glInvalidateFramebuffer(GL_FRAMEBUFFER, 1, &depth);
+    }
+    return;
+  }
+  const auto w = static_cast<GLint>(width);
+  const auto h = static_cast<GLint>(height);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_.msaaFramebuffer.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_.hdrFramebuffer.id());
+  const GLenum colour0 = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &colour0);
+  glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (context_->canInvalidateFramebuffer()) {
+    const GLenum samples[2] = {GL_COLOR_ATTACHMENT0, GL_DEPTH_ATTACHMENT};
+    glInvalidateFramebuffer(GL_READ_FRAMEBUFFER, 2, samples);
+  }
 }
 
 bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error) {
@@ -452,6 +530,11 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
     glEnable(GL_CULL_FACE);
   else
     glDisable(GL_CULL_FACE);
+  // Masked materials under MSAA write their coverage as alpha (output_blending.glsl).
+  if (item.masked && samples_ > 1)
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  else
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   // Premultiplied colour for the blended modes; they test depth but do not write it.
   if (item.blending == Blending::Opaque) {
     glDisable(GL_BLEND);

@@ -85,6 +85,12 @@ bool Context::queryCapabilities(std::string* error) {
     resourceQueries_.values =
         reinterpret_cast<PFNGLGETPROGRAMRESOURCEIVPROC>(host_->getProcAddress("glGetProgramResourceiv"));
   }
+  if (es_ && hasExtension("GL_EXT_multisampled_render_to_texture")) {
+    renderToTexture_.framebufferTexture2D = reinterpret_cast<decltype(renderToTexture_.framebufferTexture2D)>(
+        host_->getProcAddress("glFramebufferTexture2DMultisampleEXT"));
+    renderToTexture_.renderbufferStorage = reinterpret_cast<decltype(renderToTexture_.renderbufferStorage)>(
+        host_->getProcAddress("glRenderbufferStorageMultisampleEXT"));
+  }
   return checkGlError("context creation", error);
 }
 

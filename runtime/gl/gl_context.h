@@ -47,6 +47,17 @@ class Context {
     PFNGLGETPROGRAMRESOURCEIVPROC values = nullptr;
   };
   const ResourceQueries& resourceQueries() const { return resourceQueries_; }
+  // GL_EXT_multisampled_render_to_texture (GLES): a single-sample texture attached for rendering
+  // with N samples, which the driver keeps and resolves on the tile flush (the mobile form of
+  // MSAA). Outside the required table (an extension); both null unless the context lists it.
+  struct RenderToTexture {
+    void(APIENTRYP framebufferTexture2D)(GLenum target, GLenum attachment, GLenum textarget, GLuint texture,
+                                         GLint level, GLsizei samples) = nullptr;
+    void(APIENTRYP renderbufferStorage)(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width,
+                                        GLsizei height) = nullptr;
+    bool present() const { return framebufferTexture2D && renderbufferStorage; }
+  };
+  const RenderToTexture& renderToTexture() const { return renderToTexture_; }
   // True when glDebugMessageCallback is installed and debug output is enabled.
   bool debugOutputEnabled() const { return debugOutput_; }
   // Debug messages of type error or severity high, formatted one per entry.
@@ -68,6 +79,7 @@ class Context {
   bool debugOutput_ = false;
   QueryResult64 queryResult64_ = nullptr;
   ResourceQueries resourceQueries_;
+  RenderToTexture renderToTexture_;
   std::vector<std::string> extensions_;
   std::vector<std::string> debugErrors_;
 };

@@ -65,27 +65,67 @@ bool checkComplete(const char* which, std::string* error) {
   return false;
 }
 
-bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, RenderTargets* targets,
-                         std::string* error) {
+GLenum hdrInternalFormat(HdrFormat format) {
+  return format == HdrFormat::R11G11B10Float ? GL_R11F_G11F_B10F : GL_RGBA16F;
+}
+
+GLint maxRenderbufferSamples(GLenum internalFormat) {
+  GLint count = 0;
+  glGetInternalformativ(GL_RENDERBUFFER, internalFormat, GL_NUM_SAMPLE_COUNTS, 1, &count);
+  if (count <= 0) return 0;
+  GLint largest = 0;
+  glGetInternalformativ(GL_RENDERBUFFER, internalFormat, GL_SAMPLES, 1, &largest);
+  return largest;
+}
+
+bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
+                         const Context::RenderToTexture* renderToTexture, RenderTargets* targets, std::string* error) {
   const auto w = static_cast<GLsizei>(width);
   const auto h = static_cast<GLsizei>(height);
   RenderTargets created;
   created.width = width;
   created.height = height;
+  created.samples = samples;
+  const bool msaa = samples > 1;
+  created.renderToTexture = msaa && renderToTexture;
 
   const bool packed = hdrFormat == HdrFormat::R11G11B10Float;
   created.hdrColor = packed ? createColorTexture(GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV, w, h)
                             : createColorTexture(GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, w, h);
-  created.depth = Renderbuffer::generate();
-  glBindRenderbuffer(GL_RENDERBUFFER, created.depth.id());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  const auto renderbuffer = [&](GLenum internalFormat, GLsizei count) {
+    Renderbuffer made = Renderbuffer::generate();
+    glBindRenderbuffer(GL_RENDERBUFFER, made.id());
+    if (count > 1 && created.renderToTexture) {
+      renderToTexture->renderbufferStorage(GL_RENDERBUFFER, count, internalFormat, w, h);
+    } else if (count > 1) {
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, count, internalFormat, w, h);
+    } else {
+      glRenderbufferStorage(GL_RENDERBUFFER, internalFormat, w, h);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    return made;
+  };
+  if (!msaa) created.depth = renderbuffer(kDepthInternalFormat, 1);
   created.hdrFramebuffer = Framebuffer::generate();
   glBindFramebuffer(GL_FRAMEBUFFER, created.hdrFramebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
-  const bool hdrComplete =
-      checkComplete(packed ? "HDR (R11F_G11F_B10F + DEPTH32F)" : "HDR (RGBA16F + DEPTH32F)", error);
+  if (!msaa) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
+  bool hdrComplete = checkComplete(packed ? "HDR (R11F_G11F_B10F + DEPTH32F)" : "HDR (RGBA16F + DEPTH32F)", error);
+  if (msaa && hdrComplete) {
+    if (!created.renderToTexture) created.hdrSamples = renderbuffer(hdrInternalFormat(hdrFormat), samples);
+    created.depthSamples = renderbuffer(kDepthInternalFormat, samples);
+    created.msaaFramebuffer = Framebuffer::generate();
+    glBindFramebuffer(GL_FRAMEBUFFER, created.msaaFramebuffer.id());
+    if (created.renderToTexture) {
+      // The extension's rule: every attachment of the framebuffer has the same sample count.
+      renderToTexture->framebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(),
+                                            0, samples);
+    } else {
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, created.hdrSamples.id());
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depthSamples.id());
+    hdrComplete = checkComplete("MSAA (multisampled HDR + DEPTH32F)", error);
+  }
 
   created.ldrColor = createColorTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
   created.ldrFramebuffer = Framebuffer::generate();
@@ -97,12 +137,12 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
     glBindFramebuffer(GL_FRAMEBUFFER, created.mergedFramebuffer.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, created.ldrColor.id(), 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
+    if (!msaa) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
     ldrComplete = checkComplete("merged (RGBA16F + RGBA8 + DEPTH32F)", error);
     created.appMergedFramebuffer = Framebuffer::generate();
     glBindFramebuffer(GL_FRAMEBUFFER, created.appMergedFramebuffer.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.hdrColor.id(), 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
+    if (!msaa) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, created.depth.id());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 

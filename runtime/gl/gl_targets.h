@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "facet/runtime/render_path.h"
+#include "gl_context.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {
@@ -14,9 +15,21 @@ struct RenderTargets {
   uint32_t width = 0;
   uint32_t height = 0;
   // Forward pass: RGBA16F colour (sampled by the post pass, read back for tests) + depth.
+  // With MSAA, depth is not made (the forward pass draws into msaaFramebuffer) and hdrFramebuffer
+  // holds colour only: the target of the resolve.
   Texture hdrColor;
   Renderbuffer depth;
   Framebuffer hdrFramebuffer;
+  // MSAA only: multisampled HDR colour and depth renderbuffers, the forward pass's framebuffer.
+  // Resolved into hdrColor by glBlitFramebuffer, then invalidated (never stored on a tiler).
+  // With GL_EXT_multisampled_render_to_texture (renderToTexture) there is no hdrSamples: hdrColor
+  // itself is attached with `samples` samples and the driver resolves it when the framebuffer is
+  // flushed (the next framebuffer bound), and depthSamples is that extension's renderbuffer.
+  Renderbuffer hdrSamples;
+  Renderbuffer depthSamples;
+  Framebuffer msaaFramebuffer;
+  GLsizei samples = 1;
+  bool renderToTexture = false;
   // Post pass: RGBA8 colour, the displayable image.
   Texture ldrColor;
   Framebuffer ldrFramebuffer;
@@ -35,9 +48,21 @@ const char* framebufferStatusName(GLenum status);
 bool checkComplete(const char* which, std::string* error);
 
 // Creates the framebuffers at width × height (the merged one when `merged`) with an HDR colour
-// target of `hdrFormat` and checks their completeness.
-bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, RenderTargets* targets,
-                         std::string* error);
+// target of `hdrFormat`, and `samples` > 1 the multisampled forward framebuffer, and checks their
+// completeness.
+// renderToTexture: the context's GL_EXT_multisampled_render_to_texture entry points, or null for
+// multisampled renderbuffers resolved by glBlitFramebuffer.
+bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
+                         const Context::RenderToTexture* renderToTexture, RenderTargets* targets, std::string* error);
+
+// The internal formats of the HDR target and of depth (GL_RGBA16F or GL_R11F_G11F_B10F;
+// GL_DEPTH_COMPONENT32F).
+GLenum hdrInternalFormat(HdrFormat format);
+inline constexpr GLenum kDepthInternalFormat = GL_DEPTH_COMPONENT32F;
+
+// The largest renderbuffer sample count of `internalFormat` (glGetInternalformativ GL_SAMPLES,
+// whose list is in descending order), 0 when none.
+GLint maxRenderbufferSamples(GLenum internalFormat);
 
 // Reads colour attachment `attachment` (GL_COLOR_ATTACHMENTi) of `framebuffer` with rows top to
 // bottom (GL returns bottom-up).

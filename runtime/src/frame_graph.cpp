@@ -7,19 +7,28 @@
 namespace facet::runtime::fg {
 namespace {
 
-uint64_t imageBytes(const ResourceDesc& r) { return uint64_t{r.width} * r.height * r.bytesPerPixel; }
+uint64_t imageBytes(const ResourceDesc& r) {
+  return uint64_t{r.width} * r.height * r.bytesPerPixel * std::max<uint32_t>(r.samples, 1);
+}
 
 bool contains(const std::vector<ResourceId>& ids, ResourceId id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
-// Outputs of a pass: what it writes or clears.
+// Outputs of a pass: what it writes, clears or resolves into.
 std::vector<ResourceId> outputsOf(const PassDesc& pass) {
   std::vector<ResourceId> out = pass.writes;
-  for (ResourceId id : pass.clears) {
-    if (!contains(out, id)) out.push_back(id);
+  for (const std::vector<ResourceId>* more : {&pass.clears, &pass.resolves}) {
+    for (ResourceId id : *more) {
+      if (!contains(out, id)) out.push_back(id);
+    }
   }
   return out;
+}
+
+// Outputs whose earlier contents the pass does not need: cleared or resolved into.
+bool overwrites(const PassDesc& pass, ResourceId id) {
+  return contains(pass.clears, id) || contains(pass.resolves, id);
 }
 
 bool sameSize(const ResourceDesc& a, const ResourceDesc& b) { return a.width == b.width && a.height == b.height; }
@@ -105,9 +114,11 @@ bool FrameGraph::compile(CompiledGraph* out, std::string* error) const {
     const bool needed = std::any_of(outputs.begin(), outputs.end(), [&](ResourceId id) { return live.count(id) != 0; });
     if (!needed) continue;
     g.culled[i] = false;
-    for (ResourceId id : pass.clears) live.erase(id);
+    for (ResourceId id : outputs) {
+      if (overwrites(pass, id)) live.erase(id);
+    }
     for (ResourceId id : pass.writes) {
-      if (!contains(pass.clears, id)) live.insert(id);
+      if (!overwrites(pass, id)) live.insert(id);
     }
     for (const auto& read : pass.reads) live.insert(read.first);
   }
@@ -165,6 +176,10 @@ bool FrameGraph::compile(CompiledGraph* out, std::string* error) const {
           a.load = LoadOp::Clear;
           break;
         }
+        if (contains(pass.resolves, a.resource)) {
+          a.load = LoadOp::DontCare;
+          break;
+        }
         if (contains(pass.writes, a.resource)) {
           a.load = hasContents[a.resource] ? LoadOp::Load : LoadOp::DontCare;
           break;
@@ -176,7 +191,7 @@ bool FrameGraph::compile(CompiledGraph* out, std::string* error) const {
         if (g.culled[p]) continue;
         const PassDesc& later = passes_[p];
         for (const auto& read : later.reads) usedLater |= read.first == a.resource;
-        usedLater |= contains(later.writes, a.resource) && !contains(later.clears, a.resource);
+        usedLater |= contains(later.writes, a.resource) && !overwrites(later, a.resource);
       }
       a.store = usedLater ? StoreOp::Store : StoreOp::DontCare;
       ResourceTraffic& t = g.traffic[a.resource];
@@ -235,10 +250,11 @@ std::string describe(const FrameGraph& graph, const CompiledGraph& compiled) {
   }
   for (ResourceId id = 0; id < graph.resourceCount(); ++id) {
     const ResourceTraffic& t = compiled.traffic[id];
-    std::snprintf(line, sizeof line, "  %-10s loaded %10llu B  stored %10llu B  sampled %10llu B%s\n",
-                  graph.resource(id).name.c_str(), static_cast<unsigned long long>(t.loadedBytes),
-                  static_cast<unsigned long long>(t.storedBytes), static_cast<unsigned long long>(t.sampledBytes),
-                  t.transient ? "  transient" : "");
+    const ResourceDesc& r = graph.resource(id);
+    const std::string name = r.samples > 1 ? r.name + " " + std::to_string(r.samples) + "x" : r.name;
+    std::snprintf(line, sizeof line, "  %-10s loaded %10llu B  stored %10llu B  sampled %10llu B%s\n", name.c_str(),
+                  static_cast<unsigned long long>(t.loadedBytes), static_cast<unsigned long long>(t.storedBytes),
+                  static_cast<unsigned long long>(t.sampledBytes), t.transient ? "  transient" : "");
     text += line;
   }
   std::snprintf(line, sizeof line, "total: loaded %llu B, stored %llu B, sampled %llu B per frame\n",

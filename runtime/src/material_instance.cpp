@@ -36,6 +36,7 @@ std::shared_ptr<Material> Material::create(LoadedMaterial loaded, const VariantR
   m->blending_ = info.blending == "transparent" ? Blending::Transparent
                  : info.blending == "additive"  ? Blending::Additive
                                                 : Blending::Opaque;
+  m->masked_ = info.blending == "masked";
   m->doubleSided_ = info.doubleSided;
   auto defaults = m->loaded_.paramBlock({}, error, m->colors_);
   if (!defaults || !m->loaded_.preshade(m->variantKey_, &*defaults, error)) return nullptr;
@@ -182,6 +183,7 @@ DrawItem MaterialInstance::draw(const Mesh& mesh, const std::array<float, 16>& m
   item.materialBlock = &block_;
   item.textures = textures_;
   item.blending = material_->blending_;
+  item.masked = material_->masked_;
   item.cullBackFaces = !material_->doubleSided_;
   return item;
 }

@@ -15,15 +15,21 @@ const char* toString(HdrFormat format) { return format == HdrFormat::R11G11B10Fl
 
 uint32_t bytesPerPixel(HdrFormat format) { return format == HdrFormat::R11G11B10Float ? 4 : 8; }
 
+bool isMsaaSampleCount(uint32_t samples) { return samples == 1 || samples == 2 || samples == 4; }
+
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
-                                       HdrFormat hdrFormat) {
+                                       HdrFormat hdrFormat, uint32_t samples) {
   ForwardPostGraph g;
-  g.hdr = g.graph.addResource({"hdr", width, height, bytesPerPixel(hdrFormat), false, readBackHdr});
-  g.depth = g.graph.addResource({"depth", width, height, 4, true, false});
-  g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true});
-  g.forwardPass = g.graph.addPass({"forward", {}, {g.hdr, g.depth}, {g.hdr, g.depth}});
+  const uint32_t hdrBytes = bytesPerPixel(hdrFormat);
+  g.hdr = g.graph.addResource({"hdr", width, height, hdrBytes, false, readBackHdr, 1});
+  g.hdrSamples = samples > 1 ? g.graph.addResource({"hdr_ms", width, height, hdrBytes, false, false, samples}) : g.hdr;
+  g.depth = g.graph.addResource({"depth", width, height, 4, true, false, samples});
+  g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true, 1});
+  fg::PassDesc forward{"forward", {}, {g.hdrSamples, g.depth}, {g.hdrSamples, g.depth}, {}};
+  if (samples > 1) forward.resolves.push_back(g.hdr);
+  g.forwardPass = g.graph.addPass(forward);
   const fg::ReadKind read = path == PostPath::Separate ? fg::ReadKind::WholeTexture : fg::ReadKind::OwnPixel;
-  g.postPass = g.graph.addPass({"post", {{g.hdr, read}}, {g.ldr}, {}});
+  g.postPass = g.graph.addPass({"post", {{g.hdr, read}}, {g.ldr}, {}, {}});
   return g;
 }
 

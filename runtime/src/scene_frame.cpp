@@ -168,6 +168,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     draw.materialParams = std::move(*block);
     draw.cullBackFaces = !material.doubleSided();
     draw.blending = material.blending();
+    draw.masked = material.masked();
     auto sampled = material.loaded().sampledTextures(o.textures, error);
     if (!sampled) {
       *error = "object " + std::to_string(i) + ": " + *error;

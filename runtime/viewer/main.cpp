@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false;
   size_t frames = 1, warmup = 2;
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
-  uint32_t width = 0, height = 0;
+  uint32_t width = 0, height = 0, msaa = 0;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
   app.add_option("--asset-root", assetRoot,
@@ -42,6 +42,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "merged", "separate"}));
   app.add_option("--hdr-format", hdrFormatName, "rgba16f (default) | r11g11b10f (half the bytes, 6/6/5 mantissa bits)")
       ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
+  app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
+      ->check(CLI::IsMember({1, 2, 4}));
   app.add_flag("--keep-hdr", keepHdr, "also store HDR and read it back (debugging; HDR is then not transient)");
   app.add_option("--gl-context", glContext, "auto (EGL GLES, else OSMesa) | egl | osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
@@ -75,6 +77,7 @@ int main(int argc, char** argv) {
   if (!tier.empty()) scene->tier = tier;
   if (width) scene->width = width;
   if (height) scene->height = height;
+  if (msaa) scene->msaaSamples = msaa;
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -102,6 +105,7 @@ int main(int argc, char** argv) {
       options.readBackHdr = keepHdr;
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
+      options.msaaSamples = scene->msaaSamples;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -113,6 +117,7 @@ int main(int argc, char** argv) {
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
       options.decodeCompressedTextures = decodeTextures;
+      options.msaaSamples = scene->msaaSamples;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);
@@ -131,8 +136,9 @@ int main(int argc, char** argv) {
     std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(),
                  result.width, result.height, prepared->variantKey().c_str(), prepared->exposure());
     if (stats) {
-      const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
-          result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat());
+      const facet::runtime::ForwardPostGraph graph =
+          facet::runtime::buildForwardPostGraph(result.width, result.height, backend->postPath(),
+                                                backend->readsBackHdr(), backend->hdrFormat(), backend->msaaSamples());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
@@ -141,14 +147,16 @@ int main(int argc, char** argv) {
         entry["backend"] = name;
         entry["path"] = facet::runtime::toString(backend->postPath());
         entry["hdrFormat"] = facet::runtime::toString(backend->hdrFormat());
+        entry["msaa"] = backend->msaaSamples();
+        entry["msaaMethod"] = backend->msaaMethod();
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, %s HDR, frame graph at %ux%u:\n%s", name.c_str(),
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux (%s):\n%s", name.c_str(),
                     facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
-                    result.width, result.height,
+                    result.width, result.height, backend->msaaSamples(), backend->msaaMethod().c_str(),
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
       }
     }

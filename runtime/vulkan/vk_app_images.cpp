@@ -61,8 +61,8 @@ bool AppImageCache::framebuffersFor(const AppImage& image, const RenderTargets& 
   }
   bool ok;
   if (config.merged) {
-    const std::array<VkImageView, 3> views{targets.hdr.view, targets.depth.view, entry.view};
-    ok = createFramebuffer(device_, config.forwardPass, views.data(), 3, image.width, image.height,
+    const std::vector<VkImageView> views = forwardViews(targets, true, entry.view);
+    ok = createFramebuffer(device_, config.forwardPass, views.data(), uint32_t(views.size()), image.width, image.height,
                            &entry.framebuffers.forward, error);
   } else {
     entry.framebuffers.forward = targets.forwardFramebuffer;  // the targets' own: HDR and depth

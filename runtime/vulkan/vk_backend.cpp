@@ -67,6 +67,8 @@ class VulkanBackend final : public VulkanRenderer {
   PostPath postPath() const override { return path_; }
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
+  uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
+  std::string msaaMethod() const override;
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
   bool recordFrame(const FrameDesc& frame, const AppImage& target, VkCommandBuffer cmd, std::string* error) override;
@@ -83,6 +85,7 @@ class VulkanBackend final : public VulkanRenderer {
  private:
   bool planRenderPath(const VulkanOptions& options, std::string* error);
   bool createFixedObjects(std::string* error);
+  bool checkSampleCount(std::string* error) const;
   bool ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error);
   bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
@@ -95,6 +98,7 @@ class VulkanBackend final : public VulkanRenderer {
   void writePostSet();
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
+  FrameObjects frameObjects(VkQueryPool timestamps) const;
   bool submitAndWait(std::string* error);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
@@ -113,6 +117,8 @@ class VulkanBackend final : public VulkanRenderer {
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
+  ForwardSamples samples_;       // MSAA: the count and the multisampled colour's ops
+  bool clearInSubpass_ = false;  // FrameObjects::clearInSubpass: lavapipe's render-to-single-sampled
 
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
@@ -170,8 +176,8 @@ class VulkanBackend final : public VulkanRenderer {
   // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
   // the queue before reusing a frame slot that one of them may still read.
   bool recordedSinceIdle_ = false;
-  // Keyed by program and the fixed-function state a draw asks for (blending, culling).
-  std::map<std::tuple<const ShaderProgram*, Blending, bool>, CachedPipeline> pipelines_;
+  // Keyed by program and the fixed-function state a draw asks for (blending, culling, masked).
+  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool>, CachedPipeline> pipelines_;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -217,8 +223,12 @@ VulkanBackend::~VulkanBackend() {
 
 bool VulkanBackend::init(const VulkanOptions& options, std::string* error) {
   const bool validation = options.validation || validationRequestedByEnvironment();
-  return planRenderPath(options, error) && ctx_.init(validation, options.float16Arithmetic, error) &&
-         createFixedObjects(error);
+  if (!planRenderPath(options, error) || !ctx_.init(validation, options.float16Arithmetic,
+                                                    options.msaaSamples > 1 && options.renderToSingleSampled, error))
+    return false;
+  samples_.renderToSingleSampled = ctx_.createRenderPass2;
+  clearInSubpass_ = samples_.renderToSingleSampled && std::strncmp(ctx_.properties.deviceName, "llvmpipe", 8) == 0;
+  return createFixedObjects(error);
 }
 
 bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options, std::string* error) {
@@ -241,7 +251,12 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   hdrVkFormat_ = hdrFormat_ == HdrFormat::R11G11B10Float ? VK_FORMAT_B10G11R11_UFLOAT_PACK32 : kHdrFormat;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
-  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_);
+  if (!isMsaaSampleCount(options.msaaSamples)) {
+    *error = "VulkanOptions::msaaSamples must be 1, 2 or 4, not " + std::to_string(options.msaaSamples);
+    return false;
+  }
+  samples_.count = static_cast<VkSampleCountFlagBits>(options.msaaSamples);
+  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
   const size_t expected = path_ == PostPath::Merged ? 1 : 2;
@@ -256,7 +271,52 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.ldr));
   hdrTransient_ = compiled.traffic[g.hdr].transient;
   depthTransient_ = compiled.traffic[g.depth].transient;
+  if (g.hdrSamples != g.hdr) {
+    samples_.colour = toVulkan(*compiled.attachment(0, g.hdrSamples));
+    if (!compiled.traffic[g.hdrSamples].transient || !depthTransient_) {
+      *error = "frame graph stores the MSAA samples";  // render_path.h resolves them in the pass
+      return false;
+    }
+  }
   return true;
+}
+
+std::string VulkanBackend::msaaMethod() const {
+  std::string method = samples_.count == VK_SAMPLE_COUNT_1_BIT ? "off"
+                       : samples_.renderToSingleSampled
+                           ? "VK_EXT_multisampled_render_to_single_sampled (samples kept by the driver)"
+                           : "multisampled attachments resolved by pResolveAttachments";
+  // createImage falls back to device-local memory where the device has no lazily allocated type.
+  const Image& transient = samples_.resolveAttachment() ? targets_.hdrSamples : targets_.depth;
+  if (depthTransient_ && transient.image) {
+    method += transient.lazilyAllocated ? "; transient attachments in lazily allocated memory"
+                                        : "; transient attachments in device-local memory (the device offers no "
+                                          "lazily allocated memory type)";
+  }
+  return method;
+}
+
+// A count the device does not offer is an error here, never a validation error later: the
+// framebuffer limits bound every attachment, the image format's own counts the HDR format's.
+bool VulkanBackend::checkSampleCount(std::string* error) const {
+  const VkPhysicalDeviceLimits& limits = ctx_.properties.limits;
+  VkImageFormatProperties hdrImage{};
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  const VkSampleCountFlags hdrCounts =
+      vkGetPhysicalDeviceImageFormatProperties(ctx_.physicalDevice, hdrVkFormat_, VK_IMAGE_TYPE_2D,
+                                               VK_IMAGE_TILING_OPTIMAL, usage, 0, &hdrImage) == VK_SUCCESS
+          ? hdrImage.sampleCounts
+          : VkSampleCountFlags{VK_SAMPLE_COUNT_1_BIT};
+  const VkSampleCountFlags offered =
+      limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts & hdrCounts;
+  if ((offered & samples_.count) != 0) return true;
+  std::string list;
+  for (uint32_t n = 1; n <= 64; n *= 2) {
+    if (offered & n) list += (list.empty() ? "" : ", ") + std::to_string(n);
+  }
+  *error = "MSAA " + std::to_string(uint32_t(samples_.count)) + "x is not offered by this device for " +
+           toString(hdrFormat_) + " colour with D32F depth (sample counts offered: " + list + ")";
+  return false;
 }
 
 // Objects that live as long as the backend and do not depend on the frame.
@@ -269,6 +329,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
 
   const bool merged = path_ == PostPath::Merged;
+  if (!checkSampleCount(error)) return false;
   // RGBA16F is checked with the context's required formats; R11G11B10F's colour-attachment use is
   // optional in Vulkan (supported on lavapipe and current mobile GPUs), so it is checked here.
   VkFormatProperties hdrProperties{};
@@ -284,11 +345,11 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, LdrLayouts{}, &forwardPass_,
-                                      error) &&
-                   createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, kAppImageLdrLayouts,
-                                          &appImagePass_, error)
-             : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, &forwardPass_, error) &&
+      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_, LdrLayouts{},
+                                      &forwardPass_, error) &&
+                   createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_,
+                                          kAppImageLdrLayouts, &appImagePass_, error)
+             : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, samples_, &forwardPass_, error) &&
                    createPostRenderPass(device, ldrOps_, LdrLayouts{}, &postPass_, error) &&
                    createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
@@ -411,8 +472,7 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     FrameOutput output;
     if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
     // Not timed: the query pool would be shared by frames in flight.
-    const FrameObjects objects{
-        path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_, slot_->postSet, VK_NULL_HANDLE};
+    const FrameObjects objects = frameObjects(VK_NULL_HANDLE);
     if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
@@ -464,8 +524,7 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
-    const FrameObjects objects{
-        path_ == PostPath::Merged, forwardLayout_, postLayout_, postPipeline_, slot_->postSet, timestamps_};
+    const FrameObjects objects = frameObjects(timestamps_);
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -517,12 +576,25 @@ bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std
   return appImages_.framebuffersFor(*appImage, targets_, targetConfig(), frameNumber_, &output->framebuffers, error);
 }
 
+FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
+  return {path_ == PostPath::Merged,
+          samples_.resolveAttachment(),
+          clearInSubpass_,
+          forwardLayout_,
+          postLayout_,
+          postPipeline_,
+          slot_->postSet,
+          timestamps};
+}
+
 TargetConfig VulkanBackend::targetConfig() const {
   TargetConfig config;
   config.merged = path_ == PostPath::Merged;
   config.readBackHdr = readBackHdr_;
   config.hdrTransient = hdrTransient_;
   config.depthTransient = depthTransient_;
+  config.samples = samples_.count;
+  config.renderToSingleSampled = samples_.renderToSingleSampled != nullptr;
   config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
@@ -564,7 +636,7 @@ void VulkanBackend::writePostSet() {
 
 bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out,
                                 std::string* error) {
-  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces);
+  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked);
   auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
@@ -581,6 +653,8 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   desc.kind = PipelineKind::Forward;
   desc.blending = draw.blending;
   desc.cullBackFaces = draw.cullBackFaces;
+  desc.samples = samples_.count;
+  desc.alphaToCoverage = draw.masked;
   desc.vertexSpirv = &program.vertexSpirv;
   desc.fragmentSpirv = &program.fragmentSpirv;
   desc.layout = forwardLayout_;
@@ -622,7 +696,7 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
         frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : slot_->arena.buffer;
   }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
-  writeFrame(frame, *slots, slot_->arena.mapped);
+  writeFrame(frame, *slots, samples_.count != VK_SAMPLE_COUNT_1_BIT, slot_->arena.mapped);
   return true;
 }
 

@@ -46,20 +46,33 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     vkCmdResetQueryPool(cmd, objects.timestamps, 0, kTimestampCount);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, objects.timestamps, 0);
   }
-  // Indexed by attachment; LDR's (merged path) is unused: its loadOp is DONT_CARE.
-  VkClearValue clears[3]{};
-  for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = clearColor[c];
+  // Indexed by attachment (vk_pipeline.h): colour for HDR and the multisampled HDR after LDR,
+  // whichever is the one cleared; LDR's (merged path) is unused: its loadOp is DONT_CARE.
+  VkClearValue clears[4]{};
+  for (VkClearValue& clear : clears) {
+    for (int c = 0; c < 4; ++c) clear.color.float32[c] = clearColor[c];
+  }
   clears[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo passInfo{};
   passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
   passInfo.renderPass = output.forwardPass;
   passInfo.framebuffer = output.framebuffers.forward;
   passInfo.renderArea = scissor;
-  passInfo.clearValueCount = objects.merged ? 3 : 2;
+  passInfo.clearValueCount = (objects.merged ? 3 : 2) + (objects.msaa ? 1 : 0);
   passInfo.pClearValues = clears;
   vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
+  if (objects.clearInSubpass) {
+    VkClearAttachment again[2]{};
+    again[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    again[0].colorAttachment = 0;
+    again[0].clearValue = clears[0];
+    again[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    again[1].clearValue = clears[1];
+    const VkClearRect rect{scissor, 0, 1};
+    vkCmdClearAttachments(cmd, 2, again, 1, &rect);
+  }
   VkPipeline bound = VK_NULL_HANDLE;
   for (const DrawSlot& slot : slots) {
     if (slot.mesh.vertexCount == 0) continue;

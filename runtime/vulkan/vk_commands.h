@@ -18,6 +18,11 @@ namespace facet::runtime::vulkan {
 // The long-lived objects a frame's commands refer to.
 struct FrameObjects {
   bool merged = false;  // the forward render pass is the one render pass; the post pass its subpass 1
+  bool msaa = false;    // the forward render pass has the multisampled colour as its last attachment
+  // Clear HDR and depth again with vkCmdClearAttachments as the forward subpass starts: lavapipe
+  // (Mesa 22.3) leaves the implicit samples of VK_EXT_multisampled_render_to_single_sampled
+  // uncleared by loadOp CLEAR (measured: the background read 0 instead of the clear colour).
+  bool clearInSubpass = false;
   VkPipelineLayout forwardLayout = VK_NULL_HANDLE;
   VkPipelineLayout postLayout = VK_NULL_HANDLE;
   VkPipeline postPipeline = VK_NULL_HANDLE;

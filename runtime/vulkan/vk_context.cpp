@@ -1,5 +1,6 @@
 #include "vk_context.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -122,8 +123,9 @@ Context::~Context() {
   if (instance) vkDestroyInstance(instance, nullptr);
 }
 
-bool Context::init(bool validation, bool float16Arithmetic, std::string* error) {
-  return createInstance(validation, error) && pickPhysicalDevice(error) && createDevice(float16Arithmetic, error);
+bool Context::init(bool validation, bool float16Arithmetic, bool renderToSingleSampled, std::string* error) {
+  return createInstance(validation, error) && pickPhysicalDevice(error) &&
+         createDevice(float16Arithmetic, renderToSingleSampled, error);
 }
 
 bool Context::adopt(const AppDevice& app, std::string* error) {
@@ -288,7 +290,7 @@ bool Context::pickPhysicalDevice(std::string* error) {
   return true;
 }
 
-bool Context::createDevice(bool float16Arithmetic, std::string* error) {
+bool Context::createDevice(bool float16Arithmetic, bool renderToSingleSampled, std::string* error) {
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{};
   queueInfo.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
@@ -305,14 +307,36 @@ bool Context::createDevice(bool float16Arithmetic, std::string* error) {
   VkPhysicalDeviceShaderFloat16Int8Features float16{};
   float16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
   const char* float16Extension = VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME;
+  uint32_t extensionCount = 0;
+  vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &extensionCount, nullptr);
+  std::vector<VkExtensionProperties> extensions(extensionCount);
+  vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &extensionCount, extensions.data());
+  const auto offered = [&](const char* name) {
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+  };
+  std::vector<const char*> enabled;
+  // The mobile form of MSAA (multisampled attachments the app never allocates), on a Vulkan 1.1
+  // device through the two extensions it requires there (core in 1.2).
+  VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT renderToSingle{};
+  renderToSingle.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_FEATURES_EXT;
+  const char* const renderToSingleExtensions[] = {VK_KHR_CREATE_RENDERPASS_2_EXTENSION_NAME,
+                                                  VK_KHR_DEPTH_STENCIL_RESOLVE_EXTENSION_NAME,
+                                                  VK_EXT_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_EXTENSION_NAME};
+  if (renderToSingleSampled &&
+      std::all_of(std::begin(renderToSingleExtensions), std::end(renderToSingleExtensions), offered)) {
+    VkPhysicalDeviceFeatures2 features{};
+    features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    features.pNext = &renderToSingle;
+    vkGetPhysicalDeviceFeatures2(physicalDevice, &features);
+    if (renderToSingle.multisampledRenderToSingleSampled) {
+      renderToSingle.pNext = nullptr;
+      info.pNext = &renderToSingle;
+      enabled.insert(enabled.end(), std::begin(renderToSingleExtensions), std::end(renderToSingleExtensions));
+    }
+  }
   if (float16Arithmetic) {
-    uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> extensions(count);
-    vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, extensions.data());
-    bool listed = false;
-    for (const VkExtensionProperties& e : extensions)
-      listed = listed || std::strcmp(e.extensionName, float16Extension) == 0;
+    const bool listed = offered(float16Extension);
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.pNext = &float16;
@@ -324,23 +348,29 @@ bool Context::createDevice(bool float16Arithmetic, std::string* error) {
     float16 = {};
     float16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
     float16.shaderFloat16 = VK_TRUE;
+    float16.pNext = const_cast<void*>(info.pNext);
     info.pNext = &float16;
-    info.enabledExtensionCount = 1;
-    info.ppEnabledExtensionNames = &float16Extension;
+    enabled.push_back(float16Extension);
   }
   // ASTC textures are sampled as they are where the device can (phones); lavapipe cannot, and
   // the texture cache decodes them there (vk_textures.cpp).
   VkPhysicalDeviceFeatures supported{};
   vkGetPhysicalDeviceFeatures(physicalDevice, &supported);
-  VkPhysicalDeviceFeatures enabled{};
-  enabled.textureCompressionASTC_LDR = supported.textureCompressionASTC_LDR;
-  info.pEnabledFeatures = &enabled;
+  VkPhysicalDeviceFeatures enabledFeatures{};
+  enabledFeatures.textureCompressionASTC_LDR = supported.textureCompressionASTC_LDR;
+  info.pEnabledFeatures = &enabledFeatures;
+  info.enabledExtensionCount = static_cast<uint32_t>(enabled.size());
+  info.ppEnabledExtensionNames = enabled.data();
   if (!check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice", error)) {
     device = VK_NULL_HANDLE;
     return false;
   }
   vkGetDeviceQueue(device, queueFamily, 0, &queue);
-  astcLdr = enabled.textureCompressionASTC_LDR == VK_TRUE;
+  astcLdr = enabledFeatures.textureCompressionASTC_LDR == VK_TRUE;
+  if (renderToSingle.multisampledRenderToSingleSampled) {
+    createRenderPass2 =
+        reinterpret_cast<PFN_vkCreateRenderPass2KHR>(vkGetDeviceProcAddr(device, "vkCreateRenderPass2KHR"));
+  }
   return true;
 }
 

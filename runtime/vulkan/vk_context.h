@@ -31,7 +31,9 @@ class Context {
   // destroyed by the destructor.
   // float16Arithmetic: enable VK_KHR_shader_float16_int8's shaderFloat16, failing where the
   // device has none (VulkanOptions::float16Arithmetic).
-  bool init(bool validation, bool float16Arithmetic, std::string* error);
+  // renderToSingleSampled: enable VK_EXT_multisampled_render_to_single_sampled (with the
+  // VK_KHR_create_renderpass2 and VK_KHR_depth_stencil_resolve it needs) where the device offers it.
+  bool init(bool validation, bool float16Arithmetic, bool renderToSingleSampled, std::string* error);
   // Uses the app's instance, device and queue instead (vulkan_backend.h), checking that the
   // device can run Facet; destroys none of them. Validation is the app's instance's business:
   // its layers report to the app's messenger, and `messages` stays empty.
@@ -57,11 +59,14 @@ class Context {
   // vkAllocateMemory calls made for the backend so far (ResourceCounts::memoryAllocations);
   // counted where memory is allocated, which takes the Context as const.
   mutable uint64_t memoryAllocations = 0;
+  // Set when VK_EXT_multisampled_render_to_single_sampled is enabled on the device: MSAA renders
+  // into single-sample attachments and the driver keeps the samples (vk_pipeline.h ForwardSamples).
+  PFN_vkCreateRenderPass2KHR createRenderPass2 = nullptr;
 
  private:
   bool createInstance(bool validation, std::string* error);
   bool pickPhysicalDevice(std::string* error);
-  bool createDevice(bool float16Arithmetic, std::string* error);
+  bool createDevice(bool float16Arithmetic, bool renderToSingleSampled, std::string* error);
 
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   bool owned_ = true;  // false: the app's device and instance (adopt)

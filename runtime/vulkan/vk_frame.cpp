@@ -74,10 +74,11 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
   return size;
 }
 
-void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void* arena) {
+void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, bool alphaToCoverage, void* arena) {
   auto* base = static_cast<uint8_t*>(arena);
   abi::FrameUniforms frameUniforms = frame.frame;
   glToVulkanClip(frame.frame.viewProjection, frameUniforms.viewProjection);
+  frameUniforms.cameraPosition[3] = alphaToCoverage ? 1.0f : 0.0f;
   std::memcpy(base, &frameUniforms, sizeof(frameUniforms));
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];

@@ -42,7 +42,8 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
 VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::vector<DrawSlot>* slots);
 
 // Copies the frame into the mapped arena at the offsets of layoutFrame, converting the
-// view-projection to Vulkan's clip space on the way.
-void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, void* arena);
+// view-projection to Vulkan's clip space on the way, and telling masked materials whether their
+// coverage goes to alpha to coverage (abi::FrameUniforms::cameraPosition.w).
+void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, bool alphaToCoverage, void* arena);
 
 }  // namespace facet::runtime::vulkan

@@ -43,10 +43,11 @@ AttachmentOps toVulkan(const fg::Attachment& attachment) {
 
 namespace {
 
-VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops, VkImageLayout finalLayout) {
+VkAttachmentDescription describeAttachment(VkFormat format, AttachmentOps ops, VkImageLayout finalLayout,
+                                           VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT) {
   VkAttachmentDescription a{};
   a.format = format;
-  a.samples = VK_SAMPLE_COUNT_1_BIT;
+  a.samples = samples;
   a.loadOp = ops.load;
   a.storeOp = ops.store;
   a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
@@ -74,7 +75,100 @@ VkSubpassDependency previousFrameToForwardPass() {
   return d;
 }
 
-bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRenderPass* out, std::string* error) {
+VkAttachmentReference2 reference2(const VkAttachmentReference& r, VkImageAspectFlags aspect) {
+  VkAttachmentReference2 out{};
+  out.sType = VK_STRUCTURE_TYPE_ATTACHMENT_REFERENCE_2;
+  out.attachment = r.attachment;
+  out.layout = r.layout;
+  out.aspectMask = aspect;  // read for input attachments only
+  return out;
+}
+
+// The render pass `info` describes, made by vkCreateRenderPass2 with subpass 0 rendering
+// samples.count samples into its single-sample attachments (VkMultisampledRenderToSingleSampledInfoEXT).
+bool createRenderingToSingleSampled(VkDevice device, const VkRenderPassCreateInfo& info, const ForwardSamples& samples,
+                                    VkRenderPass* out, std::string* error) {
+  std::vector<VkAttachmentDescription2> attachments(info.attachmentCount);
+  for (uint32_t i = 0; i < info.attachmentCount; ++i) {
+    const VkAttachmentDescription& a = info.pAttachments[i];
+    VkAttachmentDescription2& b = attachments[i];
+    b.sType = VK_STRUCTURE_TYPE_ATTACHMENT_DESCRIPTION_2;
+    b.format = a.format;
+    b.samples = a.samples;
+    b.loadOp = a.loadOp;
+    b.storeOp = a.storeOp;
+    b.stencilLoadOp = a.stencilLoadOp;
+    b.stencilStoreOp = a.stencilStoreOp;
+    b.initialLayout = a.initialLayout;
+    b.finalLayout = a.finalLayout;
+  }
+  // Per subpass: its input, colour and depth references (sized up front: the subpasses point into them).
+  std::vector<std::vector<VkAttachmentReference2>> inputs(info.subpassCount), colours(info.subpassCount);
+  std::vector<VkAttachmentReference2> depths(info.subpassCount);
+  std::vector<VkSubpassDescription2> subpasses(info.subpassCount);
+  VkMultisampledRenderToSingleSampledInfoEXT multisampled{};
+  multisampled.sType = VK_STRUCTURE_TYPE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_INFO_EXT;
+  multisampled.multisampledRenderToSingleSampledEnable = VK_TRUE;
+  multisampled.rasterizationSamples = samples.count;
+  for (uint32_t s = 0; s < info.subpassCount; ++s) {
+    const VkSubpassDescription& a = info.pSubpasses[s];
+    VkSubpassDescription2& b = subpasses[s];
+    b.sType = VK_STRUCTURE_TYPE_SUBPASS_DESCRIPTION_2;
+    b.pipelineBindPoint = a.pipelineBindPoint;
+    for (uint32_t i = 0; i < a.inputAttachmentCount; ++i)
+      inputs[s].push_back(reference2(a.pInputAttachments[i], VK_IMAGE_ASPECT_COLOR_BIT));
+    for (uint32_t i = 0; i < a.colorAttachmentCount; ++i)
+      colours[s].push_back(reference2(a.pColorAttachments[i], VK_IMAGE_ASPECT_COLOR_BIT));
+    b.inputAttachmentCount = a.inputAttachmentCount;
+    b.pInputAttachments = inputs[s].data();
+    b.colorAttachmentCount = a.colorAttachmentCount;
+    b.pColorAttachments = colours[s].data();
+    if (a.pDepthStencilAttachment) {
+      depths[s] = reference2(*a.pDepthStencilAttachment, VK_IMAGE_ASPECT_DEPTH_BIT);
+      b.pDepthStencilAttachment = &depths[s];
+    }
+  }
+  // The extension resolves depth too and requires a mode for it (SAMPLE_ZERO: the one every
+  // device supports); depth's storeOp is DONT_CARE (the frame graph), so the result never
+  // reaches memory.
+  VkSubpassDescriptionDepthStencilResolve depthResolve{};
+  depthResolve.sType = VK_STRUCTURE_TYPE_SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE;
+  depthResolve.depthResolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
+  depthResolve.stencilResolveMode = VK_RESOLVE_MODE_NONE;
+  multisampled.pNext = &depthResolve;
+  subpasses[0].pNext = &multisampled;
+  std::vector<VkSubpassDependency2> dependencies(info.dependencyCount);
+  for (uint32_t i = 0; i < info.dependencyCount; ++i) {
+    const VkSubpassDependency& a = info.pDependencies[i];
+    VkSubpassDependency2& b = dependencies[i];
+    b.sType = VK_STRUCTURE_TYPE_SUBPASS_DEPENDENCY_2;
+    b.srcSubpass = a.srcSubpass;
+    b.dstSubpass = a.dstSubpass;
+    b.srcStageMask = a.srcStageMask;
+    b.dstStageMask = a.dstStageMask;
+    b.srcAccessMask = a.srcAccessMask;
+    b.dstAccessMask = a.dstAccessMask;
+    b.dependencyFlags = a.dependencyFlags;
+  }
+  VkRenderPassCreateInfo2 info2{};
+  info2.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO_2;
+  info2.attachmentCount = uint32_t(attachments.size());
+  info2.pAttachments = attachments.data();
+  info2.subpassCount = uint32_t(subpasses.size());
+  info2.pSubpasses = subpasses.data();
+  info2.dependencyCount = uint32_t(dependencies.size());
+  info2.pDependencies = dependencies.data();
+  if (!check(samples.renderToSingleSampled(device, &info2, nullptr, out), "vkCreateRenderPass2KHR", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, const ForwardSamples& samples,
+                      VkRenderPass* out, std::string* error) {
+  if (samples.count != VK_SAMPLE_COUNT_1_BIT && samples.renderToSingleSampled)
+    return createRenderingToSingleSampled(device, info, samples, out, error);
   if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
     *out = VK_NULL_HANDLE;
     return false;
@@ -85,16 +179,21 @@ bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, VkRen
 }  // namespace
 
 bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
-                            AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error) {
+                            AttachmentOps ldr, ForwardSamples samples, LdrLayouts layouts, VkRenderPass* out,
+                            std::string* error) {
   const bool hdrStored = hdr.store == VK_ATTACHMENT_STORE_OP_STORE;
-  std::array<VkAttachmentDescription, 3> attachments{
+  const bool msaa = samples.resolveAttachment();
+  std::array<VkAttachmentDescription, 4> attachments{
       describeAttachment(hdrFormat, hdr,
                          hdrStored ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
-      describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
-      describeAttachment(kLdrFormat, ldr, layouts.final)};
+      describeAttachment(kDepthFormat, depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                         msaa ? samples.count : VK_SAMPLE_COUNT_1_BIT),
+      describeAttachment(kLdrFormat, ldr, layouts.final),
+      describeAttachment(hdrFormat, samples.colour, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, samples.count)};
   attachments[2].initialLayout = layouts.initial;
 
-  const VkAttachmentReference hdrColour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference hdrColour{msaa ? 3u : 0u, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference hdrResolve{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference hdrInput{0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   // Colour slot 1, not 0: the post shader writes LDR at location 1 in every API, because Metal
@@ -106,6 +205,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   subpasses[0].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpasses[0].colorAttachmentCount = 1;
   subpasses[0].pColorAttachments = &hdrColour;
+  subpasses[0].pResolveAttachments = msaa ? &hdrResolve : nullptr;
   subpasses[0].pDepthStencilAttachment = &depthRef;
   subpasses[1].pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpasses[1].inputAttachmentCount = 1;
@@ -141,18 +241,19 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.attachmentCount = msaa ? 4 : 3;
   info.pAttachments = attachments.data();
   info.subpassCount = static_cast<uint32_t>(subpasses.size());
   info.pSubpasses = subpasses.data();
   info.dependencyCount = static_cast<uint32_t>(dependencies.size());
   info.pDependencies = dependencies.data();
-  return createRenderPass(device, info, out, error);
+  return createRenderPass(device, info, samples, out, error);
 }
 
 bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depthOps,
-                             VkRenderPass* out, std::string* error) {
-  std::array<VkAttachmentDescription, 2> attachments{};
+                             ForwardSamples samples, VkRenderPass* out, std::string* error) {
+  const bool msaa = samples.resolveAttachment();
+  std::array<VkAttachmentDescription, 3> attachments{};
   VkAttachmentDescription& colour = attachments[0];
   colour.format = hdrFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -164,20 +265,24 @@ bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps 
   colour.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   VkAttachmentDescription& depth = attachments[1];
   depth.format = kDepthFormat;
-  depth.samples = VK_SAMPLE_COUNT_1_BIT;
+  depth.samples = msaa ? samples.count : VK_SAMPLE_COUNT_1_BIT;
   depth.loadOp = depthOps.load;
   depth.storeOp = depthOps.store;
   depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  attachments[2] =
+      describeAttachment(hdrFormat, samples.colour, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, samples.count);
 
-  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference colourRef{msaa ? 2u : 0u, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference resolveRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpass.colorAttachmentCount = 1;
   subpass.pColorAttachments = &colourRef;
+  subpass.pResolveAttachments = msaa ? &resolveRef : nullptr;
   subpass.pDepthStencilAttachment = &depthRef;
 
   std::array<VkSubpassDependency, 2> dependencies{};
@@ -192,17 +297,13 @@ bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps 
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.attachmentCount = msaa ? 3 : 2;
   info.pAttachments = attachments.data();
   info.subpassCount = 1;
   info.pSubpasses = &subpass;
   info.dependencyCount = static_cast<uint32_t>(dependencies.size());
   info.pDependencies = dependencies.data();
-  if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
-    *out = VK_NULL_HANDLE;
-    return false;
-  }
-  return true;
+  return createRenderPass(device, info, samples, out, error);
 }
 
 bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out,
@@ -381,7 +482,8 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
 
   VkPipelineMultisampleStateCreateInfo multisample{};
   multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  multisample.rasterizationSamples = desc.samples;
+  multisample.alphaToCoverageEnable = forward && desc.alphaToCoverage && desc.samples != VK_SAMPLE_COUNT_1_BIT;
 
   VkPipelineDepthStencilStateCreateInfo depth{};
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;

@@ -24,10 +24,28 @@ struct AttachmentOps {
 };
 AttachmentOps toVulkan(const fg::Attachment& attachment);
 
+// MSAA of the forward pass (render_path.h): with more than one sample, its colour and depth are
+// multisampled attachments (cleared, never stored: transient) and the colour is resolved inside
+// the render pass (pResolveAttachments) into the single-sample HDR attachment the post pass reads.
+// The multisampled colour is the render pass's last attachment, so attachments 0..2 keep their
+// meaning at every sample count.
+// With renderToSingleSampled (VK_EXT_multisampled_render_to_single_sampled, the mobile form) there
+// is no multisampled attachment at all: HDR and depth are single-sample images and subpass 0
+// renders `count` samples into them, the driver resolving at the end of the subpass (on a tiler the
+// samples never leave tile memory and need no allocation).
+struct ForwardSamples {
+  VkSampleCountFlagBits count = VK_SAMPLE_COUNT_1_BIT;
+  AttachmentOps colour;  // of the multisampled colour (the resolve target's are `hdr`'s)
+  PFN_vkCreateRenderPass2KHR renderToSingleSampled = nullptr;
+  // An explicit multisampled colour attachment, resolved through pResolveAttachments.
+  bool resolveAttachment() const { return count != VK_SAMPLE_COUNT_1_BIT && !renderToSingleSampled; }
+};
+
 // Separate path, render pass 1: the forward pass into RGBA16F colour (left in
-// SHADER_READ_ONLY_OPTIMAL for the post pass to sample) and D32 depth.
+// SHADER_READ_ONLY_OPTIMAL for the post pass to sample) and D32 depth. Attachments: 0 HDR,
+// 1 depth, 2 the multisampled HDR (MSAA only).
 bool createForwardRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
-                             VkRenderPass* out, std::string* error);
+                             ForwardSamples samples, VkRenderPass* out, std::string* error);
 // Where the LDR attachment starts and ends. The backend's own LDR target: undefined (every pixel
 // is written) to TRANSFER_SRC_OPTIMAL for readback. The app's image (vulkan_backend.h):
 // COLOR_ATTACHMENT_OPTIMAL throughout, the transitions from and to the app's layouts being
@@ -43,13 +61,15 @@ inline constexpr LdrLayouts kAppImageLdrLayouts{VK_IMAGE_LAYOUT_COLOR_ATTACHMENT
 // Separate path, render pass 2: the post pass into RGBA8.
 bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out,
                           std::string* error);
-// Merged path: one render pass, attachments 0 HDR, 1 depth, 2 LDR. Subpass 0 is the forward
+// Merged path: one render pass, attachments 0 HDR, 1 depth, 2 LDR, 3 the multisampled HDR (MSAA
+// only, resolved into 0 at the end of subpass 0). Subpass 0 is the forward
 // pass (colour HDR, depth); subpass 1 the post pass (input attachment HDR; colour slots
 // {unused, LDR}, so LDR is location 1 as in the GLES and Metal fetch forms), joined by
 // a BY_REGION dependency so a tiler keeps HDR in tile memory. HDR ends in TRANSFER_SRC_OPTIMAL
 // when it is stored for readback; LDR as `layouts` say.
 bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
-                            AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out, std::string* error);
+                            AttachmentOps ldr, ForwardSamples samples, LdrLayouts layouts, VkRenderPass* out,
+                            std::string* error);
 
 // Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
@@ -81,8 +101,12 @@ struct PipelineDesc {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   uint32_t subpass = 0;
-  uint32_t colourSlots = 1;  // colour attachments of that subpass (merged post subpass: 2)
-  const char* what = "";     // names the shaders in error messages
+  uint32_t colourSlots = 1;                               // colour attachments of that subpass (merged post subpass: 2)
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the subpass's attachments' (forward: MSAA)
+  // Masked materials under MSAA: the fragment's alpha (its coverage, output_blending.glsl) masks
+  // the samples it writes, so an alpha-tested edge is antialiased like a geometric one.
+  bool alphaToCoverage = false;
+  const char* what = "";  // names the shaders in error messages
 };
 
 // Viewport and scissor are dynamic state, so a pipeline does not depend on the frame size.

@@ -69,7 +69,8 @@ void destroyHostBuffer(VkDevice device, HostBuffer* buffer) {
 }
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
-                 VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels, bool cube) {
+                 VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels, bool cube,
+                 VkSampleCountFlagBits samples, VkImageCreateFlags flags) {
   Image image;
   image.format = format;
   image.width = width;
@@ -84,8 +85,8 @@ bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat f
   info.extent = {width, height, 1};
   info.mipLevels = mipLevels;
   info.arrayLayers = image.layers;
-  if (cube) info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.flags = flags | (cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0);
+  info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;

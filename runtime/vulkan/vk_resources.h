@@ -44,7 +44,8 @@ struct Image {
 };
 
 bool createImage(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
-                 VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels = 1, bool cube = false);
+                 VkImageAspectFlags aspect, Image* out, std::string* error, uint32_t mipLevels = 1, bool cube = false,
+                 VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT, VkImageCreateFlags flags = 0);
 // Safe on a default-constructed or partly created image; leaves *image default-constructed.
 void destroyImage(VkDevice device, Image* image);
 

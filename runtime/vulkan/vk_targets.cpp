@@ -25,6 +25,13 @@ bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* vi
   return true;
 }
 
+std::vector<VkImageView> forwardViews(const RenderTargets& targets, bool merged, VkImageView ldr) {
+  std::vector<VkImageView> views{targets.hdr.view, targets.depth.view};
+  if (merged) views.push_back(ldr);
+  if (targets.hdrSamples.view) views.push_back(targets.hdrSamples.view);
+  return views;
+}
+
 bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, const TargetConfig& config,
                          RenderTargets* targets, std::string* error) {
   RenderTargets t;
@@ -39,8 +46,19 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
   VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   if (config.depthTransient) depthUsage |= VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
   const bool own = config.ownOutput;
-  bool ok = createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error) &&
-            createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error) &&
+  const bool msaa = config.samples != VK_SAMPLE_COUNT_1_BIT && !config.renderToSingleSampled;
+  const VkImageCreateFlags renderedMultisampled =
+      config.samples != VK_SAMPLE_COUNT_1_BIT && config.renderToSingleSampled
+          ? VK_IMAGE_CREATE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_BIT_EXT
+          : 0;
+  // The samples are only cleared, drawn and resolved (the frame graph: transient).
+  const VkImageUsageFlags samplesUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  bool ok = createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error, 1,
+                        false, VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
+            createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error, 1,
+                        false, msaa ? config.samples : VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
+            (!msaa || createImage(ctx, width, height, config.hdrFormat, samplesUsage, VK_IMAGE_ASPECT_COLOR_BIT,
+                                  &t.hdrSamples, error, 1, false, config.samples)) &&
             (!own || (createImage(ctx, width, height, kLdrFormat,
                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
@@ -50,13 +68,13 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
                       createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
   if (ok && config.merged) {
     // Without an own output, each app image has its own framebuffer (vk_app_images.h).
-    const std::array<VkImageView, 3> views{t.hdr.view, t.depth.view, t.ldr.view};
-    ok = !own || createFramebuffer(ctx.device, config.forwardPass, views.data(), 3, width, height,
+    const std::vector<VkImageView> views = forwardViews(t, true, t.ldr.view);
+    ok = !own || createFramebuffer(ctx.device, config.forwardPass, views.data(), uint32_t(views.size()), width, height,
                                    &t.forwardFramebuffer, error);
   } else if (ok) {
-    const std::array<VkImageView, 2> forwardViews{t.hdr.view, t.depth.view};
-    ok = createFramebuffer(ctx.device, config.forwardPass, forwardViews.data(), 2, width, height, &t.forwardFramebuffer,
-                           error) &&
+    const std::vector<VkImageView> views = forwardViews(t, false, VK_NULL_HANDLE);
+    ok = createFramebuffer(ctx.device, config.forwardPass, views.data(), uint32_t(views.size()), width, height,
+                           &t.forwardFramebuffer, error) &&
          (!own ||
           createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height, &t.postFramebuffer, error));
   }
@@ -74,6 +92,7 @@ void destroyRenderTargets(VkDevice device, RenderTargets* targets) {
   if (targets->postFramebuffer) vkDestroyFramebuffer(device, targets->postFramebuffer, nullptr);
   destroyImage(device, &targets->hdr);
   destroyImage(device, &targets->depth);
+  destroyImage(device, &targets->hdrSamples);
   destroyImage(device, &targets->ldr);
   destroyHostBuffer(device, &targets->hdrReadback);
   destroyHostBuffer(device, &targets->ldrReadback);

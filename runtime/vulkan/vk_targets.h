@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "vk_resources.h"
 
@@ -19,6 +20,12 @@ struct TargetConfig {
   bool readBackHdr = false;   // HDR is copied to hdrReadback after the frame
   bool hdrTransient = false;  // never loaded or stored: TRANSIENT_ATTACHMENT usage
   bool depthTransient = false;
+  // MSAA: the forward pass renders into hdrSamples and depth at this count and resolves into hdr
+  // (vk_pipeline.h ForwardSamples); both multisampled images are transient.
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  // VK_EXT_multisampled_render_to_single_sampled: no hdrSamples image, HDR and depth single-sample
+  // images the render pass renders `samples` samples into.
+  bool renderToSingleSampled = false;
   // The backend's own LDR target, its readback buffers and the framebuffers holding it: needed
   // by render() and by copies into app images it cannot render to, not when every frame goes
   // straight into the app's image (then they would be an unused RGBA8 image and buffer).
@@ -31,15 +38,20 @@ struct TargetConfig {
 struct RenderTargets {
   uint32_t width = 0;
   uint32_t height = 0;
-  Image hdr;    // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
-  Image depth;  // D32
-  Image ldr;    // RGBA8: post pass output, copied out (ownOutput only)
+  Image hdr;         // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
+  Image depth;       // D32, at TargetConfig::samples
+  Image hdrSamples;  // MSAA only: the forward pass's multisampled colour, resolved into hdr
+  Image ldr;         // RGBA8: post pass output, copied out (ownOutput only)
   VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR (ownOutput only)
   VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only (ownOutput only)
   HostBuffer
       hdrReadback;  // width*height texels as stored (8 or 4 bytes), rows top to bottom (when read back; ownOutput only)
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom (ownOutput only)
 };
+
+// The views of the forward render pass's framebuffer in its attachment order (vk_pipeline.h):
+// HDR, depth, then (merged) the LDR view `ldr`, then the multisampled HDR when there is one.
+std::vector<VkImageView> forwardViews(const RenderTargets& targets, bool merged, VkImageView ldr);
 
 // A framebuffer of `count` views for `pass` (or any render pass compatible with it).
 bool createFramebuffer(VkDevice device, VkRenderPass pass, const VkImageView* views, uint32_t count, uint32_t width,

@@ -347,14 +347,26 @@ void post(const json& j, const AssetPaths& assets, Scene* s) {
   }
 }
 
+// "antialiasing": {"msaa": N}, N the forward pass's samples per pixel (render_path.h).
+uint32_t msaaSamples(const json& j) {
+  onlyKeys(j, "/antialiasing", {"msaa"});
+  if (!j.contains("msaa")) return 1;
+  const uint32_t n = wholeNumber(j["msaa"], "/antialiasing/msaa", 1, 4);
+  if (n == 3) fail("/antialiasing/msaa", "expected 1, 2 or 4 samples, not 3");
+  return n;
+}
+
 Scene scene(const json& j, const AssetPaths& assets) {
-  onlyKeys(j, "", {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post"});
+  onlyKeys(
+      j, "",
+      {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post", "antialiasing"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
   if (j.contains("post")) post(j["post"], assets, &s);
+  if (j.contains("antialiasing")) s.msaaSamples = msaaSamples(j["antialiasing"]);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");

@@ -51,6 +51,24 @@ TEST(FacetView, RendersTheGradedSceneWithAPackedHdrTarget) {
       << r.out;
 }
 
+// --msaa 4 reaches both backends and the frame graph: the samples are transient, so the bytes
+// stored are those of one sample; --msaa 3 is a usage error (exit 2).
+TEST(FacetView, MsaaReachesTheBackendsAndTheFrameGraph) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-msaa-out");
+  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+               " --out " + out + " --backend both --validation --msaa 4 --stats --frames 1 --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("vulkan: merged path, rgba16f HDR, frame graph at 256x256, MSAA 4x"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("gl: merged path, rgba16f HDR, frame graph at 256x256, MSAA 4x"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hdr_ms 4x"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total: loaded 0 B, stored 262144 B, sampled 0 B per frame"), std::string::npos) << r.out;
+  auto bad = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+                 " --out " + out + " --msaa 3");
+  EXPECT_EQ(bad.exitCode, 2) << bad.out << bad.err;
+}
+
 // A package whose shaders read another interface than it declares (here: the preshader section
 // dropped, so they read a 64-byte block where a draw binds 32) makes facet-view exit 1 naming the
 // material, variant and stage, and write no image: on Vulkan at load (the SPIR-V), on GL before the

@@ -76,6 +76,41 @@ TEST(FrameGraph, ReadingHdrBackAfterTheFrameStoresItEvenWhenMerged) {
   EXPECT_EQ(c.storedBytes(), 64u * 32 * (8 + 4));
 }
 
+// MSAA (Filament's mobile recipe): the samples of colour and depth stay in tile memory and only
+// the resolved colour can reach DRAM, so 4x stores and samples exactly the bytes of 1x on both paths.
+TEST(FrameGraph, MsaaSamplesAreTransientAndAddNoStoredBytes) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    const ForwardPostGraph one = buildForwardPostGraph(kW, kH, path, false);
+    const ForwardPostGraph four = buildForwardPostGraph(kW, kH, path, false, HdrFormat::Rgba16Float, 4);
+    const CompiledGraph c1 = compileOrFail(one.graph);
+    const CompiledGraph c4 = compileOrFail(four.graph);
+    ASSERT_EQ(c4.renderPasses.size(), c1.renderPasses.size()) << describe(four.graph, c4);
+    EXPECT_NE(four.hdrSamples, four.hdr);
+    EXPECT_EQ(four.graph.resource(four.hdrSamples).samples, 4u);
+    EXPECT_EQ(four.graph.resource(four.depth).samples, 4u);
+    EXPECT_TRUE(c4.traffic[four.hdrSamples].transient) << describe(four.graph, c4);
+    EXPECT_TRUE(c4.traffic[four.depth].transient);
+    const Attachment* samples = c4.attachment(0, four.hdrSamples);
+    const Attachment* resolved = c4.attachment(0, four.hdr);
+    ASSERT_TRUE(samples && resolved);
+    EXPECT_EQ(samples->load, LoadOp::Clear);
+    EXPECT_EQ(samples->store, StoreOp::DontCare);
+    EXPECT_EQ(resolved->load, LoadOp::DontCare);  // the resolve overwrites every pixel
+    EXPECT_EQ(resolved->inputAttachment, path == PostPath::Merged);
+    EXPECT_EQ(c4.traffic[four.hdr].transient, c1.traffic[one.hdr].transient);
+    EXPECT_EQ(c4.loadedBytes(), c1.loadedBytes());
+    EXPECT_EQ(c4.storedBytes(), c1.storedBytes());
+    EXPECT_EQ(c4.sampledBytes(), c1.sampledBytes());
+    EXPECT_NE(describe(four.graph, c4).find("hdr_ms 4x"), std::string::npos);
+  }
+  // Stored, the samples would be four times the image: what keeping them in the tile saves.
+  FrameGraph graph;
+  const ResourceId ms = graph.addResource({"ms", kW, kH, 8, false, true, 4});
+  graph.addPass({"draw", {}, {ms}, {ms}});
+  EXPECT_EQ(compileOrFail(graph).storedBytes(), kPixels * 8 * 4);
+}
+
 TEST(FrameGraph, ShadowMapIsStoredAndDoesNotMerge) {
   FrameGraph graph;
   const ResourceId shadow = graph.addResource({"shadow", 2048, 2048, 4, true, false});

@@ -117,9 +117,10 @@ class GlAppTargetTest : public ::testing::Test {
   }
 
   // The backend the app embeds, with the test's GL table current afterwards.
-  std::unique_ptr<GlRenderer> embedded(PostPath path) {
+  std::unique_ptr<GlRenderer> embedded(PostPath path, uint32_t msaaSamples = 1) {
     GlOptions options;
     options.postPath = path;
+    options.msaaSamples = msaaSamples;
     options.readBackHdr = false;  // the mobile path, as an app runs it
     std::string error;
     auto renderer = createGlBackend(eglApp(), options, &error);
@@ -153,12 +154,14 @@ const char* pathName(PostPath path) { return path == PostPath::Merged ? "merged"
 
 // Merged: the app's texture or renderbuffer is lent to the fetch framebuffer as colour 1;
 // separate: the post pass draws into the app's framebuffer. Either way the app's image is
-// render()'s, frame after frame (the second frame changes one instance).
+// render()'s, frame after frame (the second frame changes one instance), without and with MSAA.
 TEST_F(GlAppTargetTest, AppFramebufferGetsTheReadbackImageOnBothPaths) {
   for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
-    for (Image image : {Image::Texture, Image::Renderbuffer}) {
-      SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer"));
-      auto renderer = embedded(path);
+    for (const auto& [image, samples] :
+         {std::pair{Image::Texture, 1u}, std::pair{Image::Renderbuffer, 1u}, std::pair{Image::Texture, 4u}}) {
+      SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer") +
+                   ", MSAA " + std::to_string(samples));
+      auto renderer = embedded(path, samples);
       ASSERT_NE(renderer, nullptr);
       std::string error;
       AppFramebuffer target = makeAppFramebuffer(image, GL_RGBA8, kWidth, kHeight);

@@ -18,7 +18,7 @@ struct AllocatorFixture {
   bool ok = false;
   AllocatorFixture() {
     std::string error;
-    ok = ctx.init(/*validation=*/true, /*float16Arithmetic=*/false, &error);
+    ok = ctx.init(/*validation=*/true, /*float16Arithmetic=*/false, /*renderToSingleSampled=*/false, &error);
     EXPECT_TRUE(ok) << error;
     allocator.init(&ctx, false);
   }

@@ -42,7 +42,8 @@ struct AppFixture {
   AppVulkan app;
   std::unique_ptr<VulkanRenderer> renderer;
 
-  explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true, bool stageBufferUploads = false) {
+  explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true, bool stageBufferUploads = false,
+                      uint32_t msaaSamples = 1) {
     std::string error;
     if (!app.create(/*validation=*/true, &error)) {
       ADD_FAILURE() << error;
@@ -52,6 +53,7 @@ struct AppFixture {
     options.postPath = path;
     options.readBackHdr = readBackHdr;
     options.stageBufferUploads = stageBufferUploads;
+    options.msaaSamples = msaaSamples;
     renderer = createVulkanBackend(app.appDevice(), options, &error);
     EXPECT_NE(renderer, nullptr) << error;
   }
@@ -97,7 +99,8 @@ struct ImageKind {
 };
 
 // Rendered into (UNORM; SRGB viewed as UNORM) and copied into (no COLOR_ATTACHMENT usage): the
-// same bytes as render()'s readback, on both render paths.
+// same bytes as render()'s readback, on both render paths, without and with MSAA (the app's
+// image then shares the framebuffer with the multisampled attachments).
 TEST(VulkanAppImage, PostPassWritesTheAppsImageAsRenderReadsBack) {
   const ImageKind kinds[] = {
       {"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0},
@@ -105,9 +108,10 @@ TEST(VulkanAppImage, PostPassWritesTheAppsImageAsRenderReadsBack) {
        VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT},
       {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0},
   };
-  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
-    SCOPED_TRACE(toString(path));
-    AppFixture f(path);
+  for (const auto& [path, samples] : {std::pair{PostPath::Merged, 1u}, std::pair{PostPath::Separate, 1u},
+                                      std::pair{PostPath::Merged, 4u}, std::pair{PostPath::Separate, 4u}}) {
+    SCOPED_TRACE(std::string(toString(path)) + ", MSAA " + std::to_string(samples));
+    AppFixture f(path, true, false, samples);
     ASSERT_NE(f.renderer, nullptr);
     TestScene scene;
     const FrameDesc frame = scene.frame(kRed);

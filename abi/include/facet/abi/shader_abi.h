@@ -116,7 +116,9 @@ inline constexpr uint32_t kMaxPunctualLights = 4;
 
 struct FrameUniforms {
   float viewProjection[16];
-  float cameraPosition[4];  // xyz: world-space eye position; w: unused
+  float cameraPosition[4];  // xyz: world-space eye position; w: 1 when masked materials write their
+                            // edge coverage as alpha for alpha to coverage (MSAA on), else 0: set
+                            // by the backend, whatever the app wrote (output_blending.glsl)
   float lightDirection[4];  // xyz: unit vector from the surface towards the light; w: unused.
                             // Unit length is a guarantee the shaders rely on (they no longer
                             // normalize it per pixel): SceneFrame normalizes the scene's sun; an

@@ -26,6 +26,10 @@ struct ResourceDesc {
   bool depth = false;
   // Read after the frame by someone outside the graph (presented, read back): always stored.
   bool readAfterFrame = false;
+  // Samples per pixel (MSAA): the bytes a load or store would move are samples × bytesPerPixel
+  // per pixel. A multisampled attachment that is only resolved is transient: its samples stay in
+  // tile memory and only the resolved image can reach DRAM.
+  uint32_t samples = 1;
 };
 
 enum class ReadKind {
@@ -38,6 +42,10 @@ struct PassDesc {
   std::vector<std::pair<ResourceId, ReadKind>> reads;
   std::vector<ResourceId> writes;  // render-target outputs (colour or depth)
   std::vector<ResourceId> clears;  // cleared at the start of the pass (and then written)
+  // Single-sample images the pass's multisampled outputs are resolved into at its end (Vulkan
+  // pResolveAttachments, GL glBlitFramebuffer). A resolve overwrites every pixel, so like a clear
+  // it needs none of the image's earlier contents.
+  std::vector<ResourceId> resolves;
 };
 
 enum class LoadOp { Load, Clear, DontCare };

@@ -50,6 +50,7 @@ class Material : public std::enable_shared_from_this<Material> {
   const ShaderProgram& program() const { return program_; }
   ColorEncoding colors() const { return colors_; }
   Blending blending() const { return blending_; }
+  bool masked() const { return masked_; }  // blending masked: alpha tested (DrawItem::masked)
   bool doubleSided() const { return doubleSided_; }
   // The package textures the variant samples (LoadedMaterial::generatedTextures), made once.
   const std::vector<TextureBinding>& generatedTextures() const { return generated_; }
@@ -68,6 +69,7 @@ class Material : public std::enable_shared_from_this<Material> {
   ShaderProgram program_;
   ColorEncoding colors_ = ColorEncoding::Linear;
   Blending blending_ = Blending::Opaque;
+  bool masked_ = false;
   bool doubleSided_ = false;
   std::vector<uint8_t> defaults_;                        // std140 block of the declared defaults
   std::vector<TextureBinding> generated_;                // package textures of the variant

@@ -115,6 +115,10 @@ struct DrawItem {
   // Cull triangles whose vertices run clockwise on screen in GL conventions (the back faces of
   // a mesh wound counter-clockwise seen from outside). Off: two-sided (every test mesh's default).
   bool cullBackFaces = false;
+  // An alpha-tested material (blending masked). With MSAA the backend turns on alpha to coverage
+  // for it and the shader writes its edge's coverage as alpha instead of discarding
+  // (output_blending.glsl, FrameUniforms::cameraPosition.w).
+  bool masked = false;
 };
 
 // The bytes a draw's "MaterialParams" block receives.
@@ -187,6 +191,11 @@ class RenderBackend {
   virtual PostPath postPath() const = 0;
   virtual bool readsBackHdr() const = 0;
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
+  virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
+  // How MSAA samples are kept and resolved, and where transient attachments live, for --stats and
+  // tests: e.g. "resolve attachment; transient attachments in device-local memory (no lazily
+  // allocated type)". Complete after the first frame (the targets exist then).
+  virtual std::string msaaMethod() const { return msaaSamples() > 1 ? "multisampled" : "off"; }
   // Renders the frame: forward pass into an RGBA16F target with depth, then the post pass into
   // RGBA8. Returns false and sets *error on failure; never throws, never aborts.
   virtual bool render(const FrameDesc& frame, FrameResult* result, std::string* error) = 0;
@@ -219,6 +228,16 @@ struct VulkanOptions {
   // compiler::BuildOptions::fp16TrueHalf; creation fails on a device without it. Only for the
   // backend's own device: an app's device (vulkan_backend.h) comes with the features it enabled.
   bool float16Arithmetic = false;
+  // MSAA samples per pixel of the forward pass: 1 (off), 2 or 4 (render_path.h). Colour and depth
+  // samples are transient and resolved inside the render pass; creation fails when the device
+  // offers the count for neither framebuffer colour and depth (framebufferColorSampleCounts,
+  // framebufferDepthSampleCounts) nor the HDR format.
+  uint32_t msaaSamples = 1;
+  // With MSAA, use VK_EXT_multisampled_render_to_single_sampled where the backend's own device
+  // offers it (the samples are the driver's, never allocated by Facet); false forces the portable
+  // path (multisampled attachments resolved by pResolveAttachments), for tests. An app's device
+  // (vulkan_backend.h) always takes the portable path.
+  bool renderToSingleSampled = true;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -244,6 +263,13 @@ struct GlOptions {
   // Decode ASTC textures on the CPU even where the context samples ASTC
   // (GL_KHR_texture_compression_astc_ldr): the path of a context without it, for tests.
   bool decodeCompressedTextures = false;
+  // MSAA samples per pixel of the forward pass: 1 (off), 2 or 4. Multisampled renderbuffers
+  // resolved by glBlitFramebuffer; creation fails above GL_MAX_SAMPLES or the formats' counts.
+  uint32_t msaaSamples = 1;
+  // With MSAA on a GLES context that lists GL_EXT_multisampled_render_to_texture, render into the
+  // HDR texture with the samples kept by the driver instead (no renderbuffer, no blit). Written to
+  // the extension's specification; llvmpipe lacks it, so this path is untested here.
+  bool renderToTexture = true;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).

@@ -34,16 +34,23 @@ uint32_t bytesPerPixel(HdrFormat format);
 
 struct ForwardPostGraph {
   fg::FrameGraph graph;
-  fg::ResourceId hdr = 0;    // RGBA16F or R11G11B10F
-  fg::ResourceId depth = 0;  // D32
+  fg::ResourceId hdr = 0;  // RGBA16F or R11G11B10F, one sample: what the post pass reads
+  // The forward pass's colour: hdr itself at one sample; with MSAA a multisampled image of hdr's
+  // format, resolved into hdr at the end of the forward pass (and transient).
+  fg::ResourceId hdrSamples = 0;
+  fg::ResourceId depth = 0;  // D32, as many samples as hdrSamples (never resolved: not stored)
   fg::ResourceId ldr = 0;    // RGBA8, read after the frame (presented or read back)
   uint32_t forwardPass = 0;
   uint32_t postPass = 0;
 };
 
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
-// which forces it to be stored.
+// which forces it to be stored. samples: the forward pass's MSAA sample count (1, 2 or 4).
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
-                                       HdrFormat hdrFormat = HdrFormat::Rgba16Float);
+                                       HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1);
+
+// The MSAA sample counts Facet renders with: 1 (off), 2 and 4. The backends refuse a count the
+// device does not offer for both the HDR colour and the depth format.
+bool isMsaaSampleCount(uint32_t samples);
 
 }  // namespace facet::runtime
