@@ -16,6 +16,7 @@
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/vignette.h"
 
@@ -66,7 +67,9 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   // PreparedFrame overrides this for its swap).
   out->colors_ = permutations::preset(*tier).colorSpace == permutations::ColorSpace::GammaHack ? ColorEncoding::Srgb
                                                                                                : ColorEncoding::Linear;
+  // Built-in and glTF meshes are reordered for the vertex cache once, here (mesh_optimize.h).
   out->sphere_ = makeSphere();
+  optimizeMesh(&out->sphere_);
 
   // Lights are multiplied by the exposure here, on the CPU, so shaders see O(1) values
   // (chunks/precision.glsl: the pre-exposure contract that keeps mediump finite).
@@ -147,6 +150,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
           return nullptr;
         }
         mesh->second = std::make_unique<Mesh>(std::move(*gltf));
+        optimizeMesh(mesh->second.get());
       }
       draw.mesh = mesh->second.get();
     }

@@ -1,6 +1,6 @@
 // The API-neutral description of one frame, and the interface each graphics backend implements.
 //
-// A backend receives everything already resolved: meshes as interleaved vertices, uniform block
+// A backend receives everything already resolved: meshes as fp32 vertices (it packs them), uniform block
 // bytes in std140, and shader code for its API (with, for a package's, the interface its draws bind:
 // program_interface.h). It reads no package and no scene.
 // The app's-own-device entry points of the Vulkan backend are in vulkan_backend.h.
@@ -18,9 +18,18 @@
 
 namespace facet::runtime {
 
+// The authoring form of a mesh: what apps and loaders fill. A backend packs it into the two
+// vertex streams of shader_abi.h when it uploads it (runtime/vertex_packing.h).
 struct Mesh {
   std::vector<float> vertices;    // abi::kVertexFloats per vertex, in shader_abi.h's layout (runtime/mesh.h: Vertex)
   std::vector<uint32_t> indices;  // triangle list
+};
+
+// How a backend packs the meshes it uploads (runtime/vertex_packing.h has the formats and the
+// rules): VulkanOptions / GlOptions::vertexPacking.
+enum class VertexPacking {
+  Packed,         // 28 bytes a vertex (32 where positions keep fp32)
+  FullPrecision,  // fp32 in both streams, 72 bytes a vertex: the reference of tests and measurements
 };
 
 enum class TextureFormat {
@@ -204,6 +213,9 @@ struct VulkanOptions {
   // compiler::BuildOptions::fp16TrueHalf; creation fails on a device without it. Only for the
   // backend's own device: an app's device (vulkan_backend.h) comes with the features it enabled.
   bool float16Arithmetic = false;
+  // How meshes are packed at upload; creation fails on a device whose vertex fetch cannot read
+  // the packed formats.
+  VertexPacking vertexPacking = VertexPacking::Packed;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -226,6 +238,8 @@ struct GlOptions {
   PostSettings post;  // the post variant (tone curve, dithering); creation fails on one not embedded
   // The HDR target's format; creation fails when the context cannot render to it.
   HdrFormat hdrFormat = HdrFormat::Rgba16Float;
+  // How meshes are packed at upload (every packed format is core GLES 3.0).
+  VertexPacking vertexPacking = VertexPacking::Packed;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
