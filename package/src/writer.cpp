@@ -148,12 +148,12 @@ std::vector<uint8_t> write(const Package& pkg) {
   // 1.5, and a lit material's shaders sample the environment as a cube map: 1.4, so that an
   // older runtime (which binds one fp32 stream, or an octahedral map) refuses the file instead
   // of drawing it wrong.
-  out.u16(pkg.packedVertices                ? kFirstMinorWithPackedVertices
+  out.u16(pkg.packedVertices              ? kFirstMinorWithPackedVertices
           : pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
-          : preshaded                   ? kFirstMinorWithPreshader
-          : !pkg.mslBindings.empty()    ? kFirstMinorWithMslBindings
-          : usesDictionary              ? kFirstMinorWithDictionary
-                                        : 0);
+          : preshaded                     ? kFirstMinorWithPreshader
+          : !pkg.mslBindings.empty()      ? kFirstMinorWithMslBindings
+          : usesDictionary                ? kFirstMinorWithDictionary
+                                          : 0);
   out.u32(uint32_t(sections.size()));
   out.u64(0);  // file size, patched below
   out.u64(0);  // checksum, patched below

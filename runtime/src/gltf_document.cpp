@@ -69,9 +69,8 @@ bool checkExtensions(const json& document, std::string* error) {
   }
   for (size_t i = 0; i < required->size(); ++i) {
     const json& name = (*required)[i];
-    if (name.is_string() &&
-        std::find(std::begin(kImplementedExtensions), std::end(kImplementedExtensions), name.get<std::string>()) !=
-            std::end(kImplementedExtensions)) {
+    if (name.is_string() && std::find(std::begin(kImplementedExtensions), std::end(kImplementedExtensions),
+                                      name.get<std::string>()) != std::end(kImplementedExtensions)) {
       continue;
     }
     *error = "/extensionsRequired/" + std::to_string(i) + ": the file requires " +

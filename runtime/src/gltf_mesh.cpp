@@ -39,12 +39,12 @@ constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 constexpr ComponentRule kFloats[] = {{kFloat, false}};
 constexpr ComponentRule kCoreUvs[] = {{kFloat, false}, {kUByte, true}, {kUShort, true}};
 constexpr ComponentRule kCoreColours[] = {{kFloat, false}, {kUByte, true}, {kUShort, true}};
-constexpr ComponentRule kQuantizedPositions[] = {{kFloat, false}, {kByte, false}, {kByte, true},
-                                                 {kUByte, false}, {kUByte, true}, {kShort, false},
+constexpr ComponentRule kQuantizedPositions[] = {{kFloat, false}, {kByte, false},   {kByte, true},
+                                                 {kUByte, false}, {kUByte, true},   {kShort, false},
                                                  {kShort, true},  {kUShort, false}, {kUShort, true}};
 constexpr ComponentRule kQuantizedDirections[] = {{kFloat, false}, {kByte, true}, {kShort, true}};
-constexpr ComponentRule kQuantizedUvs[] = {{kFloat, false}, {kByte, false},  {kByte, true},
-                                           {kUByte, false}, {kUByte, true},  {kShort, false},
+constexpr ComponentRule kQuantizedUvs[] = {{kFloat, false}, {kByte, false},   {kByte, true},
+                                           {kUByte, false}, {kUByte, true},   {kShort, false},
                                            {kShort, true},  {kUShort, false}, {kUShort, true}};
 constexpr ComponentRule kIndices[] = {{kUByte, false}, {kUShort, false}, {kUInt, false}};
 

@@ -11,29 +11,31 @@ using abi::kAttributeStream;
 using abi::kPositionStream;
 
 // kVertexAttributes' order: position, normal, uv0, uv1, colour, tangent.
-constexpr VertexLayoutDesc kFullPrecision{
-    {12, 60},
-    {{abi::kAttribPosition, kPositionStream, VertexFormat::Float32x3, 0},
-     {abi::kAttribNormal, kAttributeStream, VertexFormat::Float32x3, 0},
-     {abi::kAttribUv0, kAttributeStream, VertexFormat::Float32x2, 12},
-     {abi::kAttribUv1, kAttributeStream, VertexFormat::Float32x2, 20},
-     {abi::kAttribColor, kAttributeStream, VertexFormat::Float32x4, 28},
-     {abi::kAttribTangent, kAttributeStream, VertexFormat::Float32x4, 44}}};
+constexpr VertexLayoutDesc kFullPrecision{{12, 60},
+                                          {{abi::kAttribPosition, kPositionStream, VertexFormat::Float32x3, 0},
+                                           {abi::kAttribNormal, kAttributeStream, VertexFormat::Float32x3, 0},
+                                           {abi::kAttribUv0, kAttributeStream, VertexFormat::Float32x2, 12},
+                                           {abi::kAttribUv1, kAttributeStream, VertexFormat::Float32x2, 20},
+                                           {abi::kAttribColor, kAttributeStream, VertexFormat::Float32x4, 28},
+                                           {abi::kAttribTangent, kAttributeStream, VertexFormat::Float32x4, 44}}};
 constexpr uint32_t kPackedAttributeStride = 20;
-constexpr StreamAttribute kPackedAttributes[] = {
-    {abi::kAttribNormal, kAttributeStream, VertexFormat::Snorm10x3w2, 0},
-    {abi::kAttribUv0, kAttributeStream, VertexFormat::Unorm16x2, 8},
-    {abi::kAttribUv1, kAttributeStream, VertexFormat::Unorm16x2, 12},
-    {abi::kAttribColor, kAttributeStream, VertexFormat::Unorm8x4, 16},
-    {abi::kAttribTangent, kAttributeStream, VertexFormat::Snorm10x3w2, 4}};
-constexpr VertexLayoutDesc kPacked{
-    {8, kPackedAttributeStride},
-    {{abi::kAttribPosition, kPositionStream, VertexFormat::Snorm16x4, 0}, kPackedAttributes[0], kPackedAttributes[1],
-     kPackedAttributes[2], kPackedAttributes[3], kPackedAttributes[4]}};
-constexpr VertexLayoutDesc kPackedFloatPositions{
-    {12, kPackedAttributeStride},
-    {{abi::kAttribPosition, kPositionStream, VertexFormat::Float32x3, 0}, kPackedAttributes[0], kPackedAttributes[1],
-     kPackedAttributes[2], kPackedAttributes[3], kPackedAttributes[4]}};
+constexpr StreamAttribute kPackedAttributes[] = {{abi::kAttribNormal, kAttributeStream, VertexFormat::Snorm10x3w2, 0},
+                                                 {abi::kAttribUv0, kAttributeStream, VertexFormat::Unorm16x2, 8},
+                                                 {abi::kAttribUv1, kAttributeStream, VertexFormat::Unorm16x2, 12},
+                                                 {abi::kAttribColor, kAttributeStream, VertexFormat::Unorm8x4, 16},
+                                                 {abi::kAttribTangent, kAttributeStream, VertexFormat::Snorm10x3w2, 4}};
+// The packed layouts: `position` in stream 0 (`positionBytes` a vertex), the rest as above.
+constexpr VertexLayoutDesc packedLayout(VertexFormat position, uint32_t positionBytes) {
+  return {{positionBytes, kPackedAttributeStride},
+          {{abi::kAttribPosition, kPositionStream, position, 0},
+           kPackedAttributes[0],
+           kPackedAttributes[1],
+           kPackedAttributes[2],
+           kPackedAttributes[3],
+           kPackedAttributes[4]}};
+}
+constexpr VertexLayoutDesc kPacked = packedLayout(VertexFormat::Snorm16x4, 8);
+constexpr VertexLayoutDesc kPackedFloatPositions = packedLayout(VertexFormat::Float32x3, 12);
 
 constexpr double kSnorm16 = 32767.0;
 constexpr double kUnorm16 = 65535.0;

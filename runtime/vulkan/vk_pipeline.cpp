@@ -339,8 +339,7 @@ bool supportsVertexLayout(VkPhysicalDevice device, VertexLayout layout, std::str
     vkGetPhysicalDeviceFormatProperties(device, vertexFormat(a.format), &properties);
     if ((properties.bufferFeatures & VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT) == 0) {
       *error = "the device cannot fetch vertex format " + std::to_string(int(vertexFormat(a.format))) +
-               " (VkFormat) of the " + toString(layout) +
-               " vertex layout; use VertexPacking::FullPrecision";
+               " (VkFormat) of the " + toString(layout) + " vertex layout; use VertexPacking::FullPrecision";
       return false;
     }
   }

@@ -75,8 +75,8 @@ enum class PipelineKind {
 
 struct PipelineDesc {
   PipelineKind kind = PipelineKind::Forward;
-  Blending blending = Blending::Opaque;  // forward pipelines only
-  bool cullBackFaces = false;            // forward pipelines only
+  Blending blending = Blending::Opaque;                     // forward pipelines only
+  bool cullBackFaces = false;                               // forward pipelines only
   VertexLayout vertexLayout = VertexLayout::FullPrecision;  // forward pipelines only: the streams' formats
   const std::vector<uint32_t>* vertexSpirv = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;

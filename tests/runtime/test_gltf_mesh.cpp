@@ -186,11 +186,11 @@ TEST(GltfMesh, QuantizedAttributesReadAsKhrMeshQuantizationSays) {
   std::vector<uint8_t> bin;
   // 0: positions, SHORT normalized VEC3, stride 8 (each element 4-byte aligned).
   append<int16_t>(&bin, {-32767, -32767, 0, 0, 32767, -32768, 0, 0, 32767, 32767, 0, 0, -32767, 32767, 16384, 0});
-  append<int8_t>(&bin, {0, 0, 127, 0, 0, 0, 127, 0, 0, 90, 90, 0, 0, 0, -128, 0});   // 32: normals, BYTE normalized
+  append<int8_t>(&bin, {0, 0, 127, 0, 0, 0, 127, 0, 0, 90, 90, 0, 0, 0, -128, 0});  // 32: normals, BYTE normalized
   append<int8_t>(&bin, {127, 0, 0, 127, 127, 0, 0, 127, 127, 0, 0, -127, 127, 0, 0, -128});  // 48: tangents
-  append<uint16_t>(&bin, {0, 0, 3, 0, 3, 3, 0, 3});       // 64: uv0, UNSIGNED_SHORT (not normalized): tiled 3×
-  append<int16_t>(&bin, {-32767, 0, 32767, 0, 0, 16384, 0, -32768});  // 80: uv1, SHORT normalized
-  append<uint16_t>(&bin, {0, 1, 2, 0, 2, 3});             // 96: indices
+  append<uint16_t>(&bin, {0, 0, 3, 0, 3, 3, 0, 3});  // 64: uv0, UNSIGNED_SHORT (not normalized): tiled 3×
+  append<int16_t>(&bin, {-32767, 0, 32767, 0, 0, 16384, 0, -32768});        // 80: uv1, SHORT normalized
+  append<uint16_t>(&bin, {0, 1, 2, 0, 2, 3});                               // 96: indices
   append<int8_t>(&bin, {-2, 0, 5, 0, 7, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0});  // 108: positions, BYTE (not normalized)
   writeBytes(dir + "/quantized.bin", bin);
   const auto write = [&](const std::string& name, const std::string& extensions, int positionAccessor) {
@@ -211,12 +211,13 @@ TEST(GltfMesh, QuantizedAttributesReadAsKhrMeshQuantizationSays) {
                     {"bufferView": 5, "componentType": 5123, "count": 6, "type": "SCALAR"},
                     {"bufferView": 6, "componentType": 5120, "count": 4, "type": "VEC3"}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": )" +
-                                        std::to_string(positionAccessor) + R"(, "NORMAL": 1, "TANGENT": 2,
+                                    std::to_string(positionAccessor) + R"(, "NORMAL": 1, "TANGENT": 2,
                                    "TEXCOORD_0": 3, "TEXCOORD_1": 4}, "indices": 5}]}],
       "nodes": [{"mesh": 0, "scale": [2, 2, 2]}], "scenes": [{"nodes": [0]}], "scene": 0})");
     return dir + "/" + name;
   };
-  const std::string used = R"("extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],)";
+  const std::string used =
+      R"("extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],)";
   std::string error;
   auto mesh = loadGltfMesh(write("normalized.gltf", used, 0), &error);
   ASSERT_TRUE(mesh) << error;
@@ -225,14 +226,14 @@ TEST(GltfMesh, QuantizedAttributesReadAsKhrMeshQuantizationSays) {
   EXPECT_EQ(v0.position[0], -2.0f);  // −32767 / 32767, scaled 2 by the node
   EXPECT_EQ(v1.position[1], -2.0f);  // −32768 clamps to −1
   EXPECT_FLOAT_EQ(v3.position[2], float(2 * 16384 / 32767.0));
-  EXPECT_EQ(v0.normal[2], 1.0f);  // 127 / 127
+  EXPECT_EQ(v0.normal[2], 1.0f);                         // 127 / 127
   EXPECT_FLOAT_EQ(v2.normal[1], float(std::sqrt(0.5)));  // (0, 90, 90) / 127, normalised
-  EXPECT_EQ(v3.normal[2], -1.0f);  // −128 clamps to −1
+  EXPECT_EQ(v3.normal[2], -1.0f);                        // −128 clamps to −1
   EXPECT_EQ(v0.tangent[0], 1.0f);
   EXPECT_EQ(v0.tangent[3], 1.0f);
   EXPECT_EQ(v2.tangent[3], -1.0f);  // −127 / 127
   EXPECT_EQ(v3.tangent[3], -1.0f);  // −128 clamps to −1
-  EXPECT_EQ(v2.uv0[0], 3.0f);  // not normalized: the integer
+  EXPECT_EQ(v2.uv0[0], 3.0f);       // not normalized: the integer
   EXPECT_EQ(v2.uv0[1], 3.0f);
   EXPECT_EQ(v0.uv1[0], -1.0f);
   EXPECT_FLOAT_EQ(v2.uv1[1], float(16384 / 32767.0));
