@@ -63,15 +63,18 @@ uint32_t packSnorm10x3w2(const float* v, float w) {
   return packed | (uint32_t(sign) & 0x3u) << 30;
 }
 
-// The median of the mesh's non-degenerate edge lengths; 0 when it has none.
+// The median of the mesh's non-degenerate edge lengths; 0 when it has none. A mesh without
+// indices is drawn as a triangle list of its vertices (Vulkan's non-indexed draw).
 double medianEdgeLength(const Mesh& mesh) {
   std::vector<double> lengths;
-  lengths.reserve(mesh.indices.size());
   const auto position = [&](uint32_t v) { return &mesh.vertices[size_t(v) * abi::kVertexFloats]; };
   const size_t vertexCount = mesh.vertices.size() / abi::kVertexFloats;
-  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+  const size_t corners = mesh.indices.empty() ? vertexCount : mesh.indices.size();
+  const auto corner = [&](size_t i) { return mesh.indices.empty() ? uint32_t(i) : mesh.indices[i]; };
+  lengths.reserve(corners);
+  for (size_t t = 0; t + 2 < corners; t += 3) {
     for (int e = 0; e < 3; ++e) {
-      const uint32_t a = mesh.indices[t + size_t(e)], b = mesh.indices[t + size_t((e + 1) % 3)];
+      const uint32_t a = corner(t + size_t(e)), b = corner(t + size_t((e + 1) % 3));
       if (a >= vertexCount || b >= vertexCount) continue;  // the backend refuses the mesh
       const float *p = position(a), *q = position(b);
       const double length = std::hypot(double(p[0]) - q[0], double(p[1]) - q[1], double(p[2]) - q[2]);

@@ -207,6 +207,13 @@ TEST(VertexPacking, PositionsKeepFp32WhereSixteenBitsWouldMoveThemTooFar) {
   EXPECT_EQ(packed.layout, VertexLayout::PackedFloatPositions);
   EXPECT_EQ(packed.bytesPerVertex(), 32u);
   EXPECT_EQ(decode(packed, 4).position[0], double(1e4f + 0.01f));
+  // Without indices (a non-indexed draw), consecutive vertices are the triangles: the sphere's
+  // corners unrolled still pack 16-bit.
+  const Mesh indexed = makeSphere(8, 16);
+  Mesh unrolled;
+  for (uint32_t i : indexed.indices) appendVertex(unrolled, vertexAt(indexed, i));
+  ASSERT_TRUE(packMesh(unrolled, VertexPacking::Packed, &packed, &error)) << error;
+  EXPECT_EQ(packed.layout, VertexLayout::Packed);
   // A flat mesh (z = 0 everywhere) packs with scale 1 on the flat axis, never 0.
   Mesh flat = makeSphere(4, 8);
   for (size_t v = 0; v < flat.vertices.size(); v += abi::kVertexFloats) flat.vertices[v + 2] = 0.25f;
