@@ -34,7 +34,7 @@ set(FACET_COMPONENT_TARGETS_scene facet_scene)
 # (tests/examples/consumer_project.cmake compiles every installed header).
 set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h render_backend.h render_path.h
     texture_checks.h compressed_texture.h environment.h exposure.h image_texture.h material.h material_instance.h mesh.h png.h
-    preshader.h color_grading.h vignette.h)
+    preshader.h color_grading.h vignette.h vertex_packing.h mesh_optimize.h)
 # The Scene type environment.h takes and the post settings; their reader is the scene component.
 set(FACET_SCENE_HEADERS_core scene.h post_settings.h)
 set(FACET_RUNTIME_HEADERS_vulkan vulkan_backend.h)
@@ -55,6 +55,7 @@ set(FACET_EXTERNAL_DEPENDENCIES
   "PkgConfig::SPIRV_CROSS_C|pkg-config|spirv-cross-c-shared"
   "Vulkan::Vulkan|package|Vulkan"
   "TinyGLTF::TinyGLTF|package|TinyGLTF"
+  "meshoptimizer::meshoptimizer|package|meshoptimizer"
   "nlohmann_json::nlohmann_json|package|nlohmann_json"
   "Threads::Threads|package|Threads"
   "astcenc::astcenc|package|astcenc")

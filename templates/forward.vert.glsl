@@ -17,7 +17,11 @@ vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n)
 #endif
 
 void main() {
-    highp vec4 worldPosition = object.model * vec4(a_position, 1.0);
+    // The position stream may hold 16-bit normalized values over the mesh's bounds
+    // (runtime/vertex_packing.h): one FMA decodes them to object space, in highp (fp32: the
+    // 16-bit step is extent / 65534, far above fp32's rounding). fp32 streams get scale 1, offset 0.
+    highp vec3 position = a_position * object.positionScale.xyz + object.positionOffset.xyz;
+    highp vec4 worldPosition = object.model * vec4(position, 1.0);
 #if defined(FACET_VARYING_WORLD_POSITION)
     v_worldPosition = worldPosition.xyz;
 #else
@@ -32,11 +36,12 @@ void main() {
     // normal lost every tilt below 0.061 rad (the grazing_glint hard case, docs/fp16-emulation.md).
     // A unit normal keeps 11 significant bits in every component ≥ 2^-14: tilts ≥ 6.1e-5 rad.
     v_normal = normalize(mat3(object.normalMatrix) * a_normal);
+    // UVs likewise: unorm16 over the UV set's bounds, one FMA each (scale in xy, offset in zw).
 #if defined(FACET_VARYING_UV0)
-    v_uv0 = a_uv0;
+    v_uv0 = a_uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw;
 #endif
 #if defined(FACET_VARYING_UV1)
-    v_uv1 = a_uv1;
+    v_uv1 = a_uv1 * object.uv1ScaleOffset.xy + object.uv1ScaleOffset.zw;
 #endif
 #if defined(FACET_VARYING_COLOR)
     v_color = a_color;

@@ -52,6 +52,16 @@ std::string loadError(const PackageReader& reader) {
            std::to_string(kFirstMinorWithCubeEnvironment) +
            "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
   }
+  // Before format 1.5 every shader read one interleaved fp32 vertex stream with no decode; this
+  // runtime binds two packed streams (runtime/vertex_packing.h): such a package would draw its
+  // meshes squashed into the unit cube.
+  if (minor < kFirstMinorWithPackedVertices && !reader.variants().empty()) {
+    return "package format 1." + std::to_string(minor) +
+           " reads one interleaved fp32 vertex stream, which this runtime no longer provides (two packed "
+           "streams since format 1." +
+           std::to_string(kFirstMinorWithPackedVertices) +
+           "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
+  }
   // A table of another shape, even one of the same byte count, would be sampled at the wrong
   // texels: the shaders address it with the ABI's size.
   for (const TextureInfo& t : reader.textures()) {

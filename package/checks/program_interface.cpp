@@ -152,6 +152,8 @@ class StageCheck {
       if (!v.name.empty() && v.name != supplies)
         return "reads " + what + " at location " + std::to_string(a.location) + ", where the runtime supplies " +
                supplies;
+      // Float vecN whatever the mesh's packed format: the vertex fetch converts the normalized
+      // integers (runtime/vertex_packing.h), so an integer input would read garbage.
       const ValueType supplied{ScalarKind::Float, a.components};
       if (v.type != supplied)
         return "reads " + what + " at location " + std::to_string(a.location) + " as " + toString(v.type) +

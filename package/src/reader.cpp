@@ -91,6 +91,7 @@ ReadResult readChecked(std::span<const uint8_t> file) {
 
   result.formatMajor = reader->formatMajor();
   result.formatMinor = reader->formatMinor();
+  pkg.packedVertices = result.formatMinor >= kFirstMinorWithPackedVertices;
   result.package = std::move(pkg);
   return result;
 }

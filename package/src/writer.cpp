@@ -144,14 +144,16 @@ std::vector<uint8_t> write(const Package& pkg) {
   ByteWriter out(file);
   out.bytes(kMagic);
   out.u16(kFormatMajor);
-  // The lowest minor that describes the file. A lit material's shaders sample the environment
-  // as a cube map: 1.4, so that a runtime of 1.3 or older (which binds an octahedral map there)
-  // refuses the file instead of drawing it wrong.
-  out.u16(pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
-          : preshaded                   ? kFirstMinorWithPreshader
-          : !pkg.mslBindings.empty()    ? kFirstMinorWithMslBindings
-          : usesDictionary              ? kFirstMinorWithDictionary
-                                        : 0);
+  // The lowest minor that describes the file. Shaders reading the two packed vertex streams:
+  // 1.5, and a lit material's shaders sample the environment as a cube map: 1.4, so that an
+  // older runtime (which binds one fp32 stream, or an octahedral map) refuses the file instead
+  // of drawing it wrong.
+  out.u16(pkg.packedVertices              ? kFirstMinorWithPackedVertices
+          : pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
+          : preshaded                     ? kFirstMinorWithPreshader
+          : !pkg.mslBindings.empty()      ? kFirstMinorWithMslBindings
+          : usesDictionary                ? kFirstMinorWithDictionary
+                                          : 0);
   out.u32(uint32_t(sections.size()));
   out.u64(0);  // file size, patched below
   out.u64(0);  // checksum, patched below

@@ -189,6 +189,7 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   context_ = gl::Context::create(std::move(host), error);
   if (!context_) return false;
   readBackHdr_ = options.readBackHdr;
+  meshes_ = gl::MeshCache(options.vertexPacking);
   hdrFormat_ = options.hdrFormat;
   const bool canFetch = context_->hasExtension("GL_EXT_shader_framebuffer_fetch");
   if (options.postPath == PostPath::Merged && !canFetch) {
@@ -515,7 +516,8 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   // One buffer per block, re-specified per draw: glBufferData gives the driver fresh storage
   // while earlier draws still read the old contents.
   glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.id());
-  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &item.object, GL_DYNAMIC_DRAW);
+  const abi::ObjectUniforms object = withVertexDecode(item.object, mesh->decode);
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &object, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
   if (item.materialBlock && !item.materialBlock->bytes.empty()) {
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialBlocks_.resident(*item.materialBlock));

@@ -6,16 +6,29 @@
 namespace facet::runtime::gl {
 namespace {
 
-void vertexAttribute(GLuint location, GLint components, size_t offsetBytes) {
-  glEnableVertexAttribArray(location);
-  // GL takes a buffer offset through the pointer parameter.
-  glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(abi::kVertexStride),
-                        reinterpret_cast<const void*>(offsetBytes));
+// GL's description of a stream attribute: the shader reads every one as float vecN.
+struct GlFormat {
+  GLint size;
+  GLenum type;
+  GLboolean normalized;
+};
+GlFormat glFormat(VertexFormat format) {
+  switch (format) {
+    case VertexFormat::Float32x2: return {2, GL_FLOAT, GL_FALSE};
+    case VertexFormat::Float32x3: return {3, GL_FLOAT, GL_FALSE};
+    case VertexFormat::Float32x4: return {4, GL_FLOAT, GL_FALSE};
+    case VertexFormat::Snorm16x4: return {4, GL_SHORT, GL_TRUE};
+    case VertexFormat::Unorm16x2: return {2, GL_UNSIGNED_SHORT, GL_TRUE};
+    // Core in GLES 3.0 (and its max(c / 511, −1) conversion, which keeps ±1 exact).
+    case VertexFormat::Snorm10x3w2: return {4, GL_INT_2_10_10_10_REV, GL_TRUE};
+    case VertexFormat::Unorm8x4: return {4, GL_UNSIGNED_BYTE, GL_TRUE};
+  }
+  return {4, GL_FLOAT, GL_FALSE};
 }
 
 }  // namespace
 
-bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
+bool uploadMesh(const Mesh& mesh, VertexPacking packing, MeshBuffers* buffers, std::string* error) {
   if (mesh.vertices.empty() || mesh.vertices.size() % abi::kVertexFloats != 0) {
     if (error) {
       *error = "mesh has " + std::to_string(mesh.vertices.size()) + " floats, not a positive multiple of " +
@@ -36,23 +49,40 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error) {
     }
     return false;
   }
+  PackedMesh packed;
+  std::string why;
+  if (!packMesh(mesh, packing, &packed, &why)) {
+    if (error) *error = why;
+    return false;
+  }
 
   MeshBuffers uploaded;
   uploaded.vertexArray = VertexArray::generate();
-  uploaded.vertices = Buffer::generate();
   uploaded.indices = Buffer::generate();
   uploaded.indexCount = static_cast<GLsizei>(mesh.indices.size());
+  uploaded.decode = packed.decode;
 
   glBindVertexArray(uploaded.vertexArray.id());
-  glBindBuffer(GL_ARRAY_BUFFER, uploaded.vertices.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(),
-               GL_STATIC_DRAW);
+  const VertexLayoutDesc& layout = vertexLayout(packed.layout);
+  for (uint32_t s = 0; s < abi::kVertexStreams; ++s) {
+    uploaded.streams[s] = Buffer::generate();
+    glBindBuffer(GL_ARRAY_BUFFER, uploaded.streams[s].id());
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(packed.streams[s].size()), packed.streams[s].data(),
+                 GL_STATIC_DRAW);
+    // The attribute pointers take the buffer bound now.
+    for (const StreamAttribute& a : layout.attributes) {
+      if (a.stream != s) continue;
+      const GlFormat f = glFormat(a.format);
+      glEnableVertexAttribArray(a.location);
+      // GL takes a buffer offset through the pointer parameter.
+      glVertexAttribPointer(a.location, f.size, f.type, f.normalized, static_cast<GLsizei>(layout.strides[s]),
+                            reinterpret_cast<const void*>(size_t(a.offset)));
+    }
+  }
   // The element array binding is VAO state, so it is bound while the VAO is.
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, uploaded.indices.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
                mesh.indices.data(), GL_STATIC_DRAW);
-  for (const abi::VertexAttribute& a : abi::kVertexAttributes)
-    vertexAttribute(a.location, GLint(a.components), a.offsetFloats * sizeof(float));
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 
@@ -73,7 +103,7 @@ const MeshBuffers* MeshCache::resident(const Mesh& mesh, std::string* error) {
   Entry entry;
   entry.key = key;
   entry.lastUsedFrame = frameNumber_;
-  if (!uploadMesh(mesh, &entry.buffers, error)) return nullptr;
+  if (!uploadMesh(mesh, packing_, &entry.buffers, error)) return nullptr;
   ++uploads_;
   // A changed mesh's old buffers are deleted here; earlier draws that used them keep their
   // contents (GL orphans storage still referenced by queued commands).

@@ -1,4 +1,4 @@
-// A Mesh uploaded into GL buffers with the ABI's vertex layout.
+// A Mesh packed (vertex_packing.h) and uploaded into GL buffers: the two streams of shader_abi.h.
 #pragma once
 
 #include <cstdint>
@@ -8,20 +8,23 @@
 #include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/render_backend.h"
+#include "facet/runtime/vertex_packing.h"
 #include "gl_objects.h"
 
 namespace facet::runtime::gl {
 
 struct MeshBuffers {
-  VertexArray vertexArray;  // records the attribute layout and the index buffer binding
-  Buffer vertices;
+  VertexArray vertexArray;  // records the streams' formats and the index buffer binding
+  Buffer streams[abi::kVertexStreams];
   Buffer indices;
   GLsizei indexCount = 0;
+  VertexDecode decode;  // what the draw's ObjectUniforms carry to the vertex shader
 };
 
-// Checks the mesh (whole vertices, indices in range) and uploads it. Returns false with *error
-// set on a malformed mesh: an out-of-range index would read past the buffer in the driver.
-bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error);
+// Checks the mesh (whole vertices, finite values, indices in range), packs and uploads it.
+// Returns false with *error set on a malformed mesh: an out-of-range index would read past the
+// buffer in the driver.
+bool uploadMesh(const Mesh& mesh, VertexPacking packing, MeshBuffers* buffers, std::string* error);
 
 // GL buffers of the Meshes a backend has drawn with, keyed by the Mesh's address, shared by every
 // draw of a mesh in this frame and later ones. Cache rule as vulkan::MeshCache's (vk_meshes.h):
@@ -29,6 +32,7 @@ bool uploadMesh(const Mesh& mesh, MeshBuffers* buffers, std::string* error);
 // unchanged, deleted after kEvictAfterFrames frames unused.
 class MeshCache {
  public:
+  explicit MeshCache(VertexPacking packing = VertexPacking::Packed) : packing_(packing) {}
   void beginFrame() { ++frameNumber_; }
   // The mesh's buffers, uploaded if new or changed; nullptr with *error set on a malformed mesh.
   const MeshBuffers* resident(const Mesh& mesh, std::string* error);
@@ -45,6 +49,7 @@ class MeshCache {
     uint64_t lastUsedFrame = 0;
   };
 
+  VertexPacking packing_;
   std::unordered_map<const Mesh*, Entry> meshes_;
   uint64_t frameNumber_ = 0;
   uint64_t uploads_ = 0;

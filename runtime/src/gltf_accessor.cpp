@@ -42,17 +42,18 @@ const unsigned char* locate(const tinygltf::Model& model, int viewIndex, size_t 
 
 std::optional<AccessorReader> AccessorReader::open(const tinygltf::Model& model, int index,
                                                    std::initializer_list<int> types,
-                                                   std::initializer_list<int> components, bool integers,
-                                                   const std::string& field, std::string* error) {
+                                                   std::span<const ComponentRule> components, const std::string& field,
+                                                   std::string* error) {
   if (index < 0 || size_t(index) >= model.accessors.size()) {
     *error = field + ": accessor " + std::to_string(index) + " does not exist";
     return std::nullopt;
   }
   const tinygltf::Accessor& a = model.accessors[size_t(index)];
   const std::string name = field + ": accessor " + std::to_string(index);
-  if (std::find(types.begin(), types.end(), a.type) == types.end() ||
-      std::find(components.begin(), components.end(), a.componentType) == components.end() ||
-      (!integers && a.normalized != (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT))) {
+  const bool accepted = std::any_of(components.begin(), components.end(), [&](const ComponentRule& r) {
+    return r.componentType == a.componentType && r.normalized == a.normalized;
+  });
+  if (std::find(types.begin(), types.end(), a.type) == types.end() || !accepted) {
     *error = name + " has a type or component type this attribute cannot have";
     return std::nullopt;
   }
@@ -60,6 +61,7 @@ std::optional<AccessorReader> AccessorReader::open(const tinygltf::Model& model,
   r.count_ = a.count;
   r.components_ = tinygltf::GetNumComponentsInType(uint32_t(a.type));
   r.componentType_ = a.componentType;
+  r.normalized_ = a.normalized;
   r.componentSize_ = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
   const size_t elementSize = r.componentSize_ * size_t(r.components_);
 
@@ -142,8 +144,14 @@ double AccessorReader::raw(const unsigned char* element, int c) const {
       return f;
     }
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return int8_t(p[0]);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
       uint16_t v;
+      std::memcpy(&v, p, 2);
+      return v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      int16_t v;
       std::memcpy(&v, p, 2);
       return v;
     }
@@ -155,7 +163,7 @@ double AccessorReader::raw(const unsigned char* element, int c) const {
   }
 }
 
-double AccessorReader::get(size_t e, int c, bool normalise) const {
+double AccessorReader::get(size_t e, int c) const {
   double value = 0;
   const auto sparse = std::lower_bound(sparseIndices_.begin(), sparseIndices_.end(), e);
   if (sparse != sparseIndices_.end() && *sparse == e) {
@@ -163,10 +171,12 @@ double AccessorReader::get(size_t e, int c, bool normalise) const {
   } else if (dense_.base) {
     value = raw(dense_.base + e * dense_.stride, c);
   }
-  if (!normalise) return value;
+  if (!normalized_) return value;
   switch (componentType_) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return value / 255.0;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return value / 65535.0;
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(value / 127.0, -1.0);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(value / 32767.0, -1.0);
     default: return value;
   }
 }

@@ -1,6 +1,8 @@
 #include "gltf_document.h"
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 
 #include "facet/scene/json_document.h"
 
@@ -54,6 +56,10 @@ bool checkAsset(const json& document, std::string* error) {
   return true;
 }
 
+// The required extensions this loader implements: KHR_mesh_quantization (integer attribute
+// types, read by gltf_mesh.cpp). Every other one is refused, as the glTF spec asks.
+constexpr const char* kImplementedExtensions[] = {"KHR_mesh_quantization"};
+
 bool checkExtensions(const json& document, std::string* error) {
   const json* required = member(document, "extensionsRequired");
   if (!required) return true;
@@ -61,13 +67,17 @@ bool checkExtensions(const json& document, std::string* error) {
     *error = "/extensionsRequired: expected an array of extension names";
     return false;
   }
-  if (!required->empty()) {
-    const json& first = (*required)[0];
-    *error = "/extensionsRequired/0: the file requires " +
-             (first.is_string() ? "extension '" + scene::shownValue(first.get<std::string>()) + "'"
-                                : std::string("an extension")) +
-             ", which this loader does not implement (it implements none; the glTF spec says such a file must not be "
-             "loaded)";
+  for (size_t i = 0; i < required->size(); ++i) {
+    const json& name = (*required)[i];
+    if (name.is_string() && std::find(std::begin(kImplementedExtensions), std::end(kImplementedExtensions),
+                                      name.get<std::string>()) != std::end(kImplementedExtensions)) {
+      continue;
+    }
+    *error = "/extensionsRequired/" + std::to_string(i) + ": the file requires " +
+             (name.is_string() ? "extension '" + scene::shownValue(name.get<std::string>()) + "'"
+                               : std::string("an extension")) +
+             ", which this loader does not implement (it implements KHR_mesh_quantization only; the glTF spec says "
+             "such a file must not be loaded)";
     return false;
   }
   return true;

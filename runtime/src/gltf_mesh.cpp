@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <span>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -23,10 +24,34 @@ namespace fs = std::filesystem;
 
 using gltf::AccessorReader;
 
+using gltf::ComponentRule;
+
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
 constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT;
 constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+
+// The attributes' component types: glTF 2.0 core (§3.7.2.1), and what KHR_mesh_quantization adds
+// when the file uses it (its "Extending Mesh Attributes" table). A non-normalized integer is read
+// as the integer: the file's node transforms (positions) or texture transforms scale it.
+constexpr ComponentRule kFloats[] = {{kFloat, false}};
+constexpr ComponentRule kCoreUvs[] = {{kFloat, false}, {kUByte, true}, {kUShort, true}};
+constexpr ComponentRule kCoreColours[] = {{kFloat, false}, {kUByte, true}, {kUShort, true}};
+constexpr ComponentRule kQuantizedPositions[] = {{kFloat, false}, {kByte, false},   {kByte, true},
+                                                 {kUByte, false}, {kUByte, true},   {kShort, false},
+                                                 {kShort, true},  {kUShort, false}, {kUShort, true}};
+constexpr ComponentRule kQuantizedDirections[] = {{kFloat, false}, {kByte, true}, {kShort, true}};
+constexpr ComponentRule kQuantizedUvs[] = {{kFloat, false}, {kByte, false},   {kByte, true},
+                                           {kUByte, false}, {kUByte, true},   {kShort, false},
+                                           {kShort, true},  {kUShort, false}, {kUShort, true}};
+constexpr ComponentRule kIndices[] = {{kUByte, false}, {kUShort, false}, {kUInt, false}};
+
+bool usesQuantization(const tinygltf::Model& model) {
+  return std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization") !=
+         model.extensionsUsed.end();
+}
 
 // A node's world transform, and what it does to normals and tangents.
 struct Placement {
@@ -101,22 +126,26 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
     const char* name;
     Attribute* attribute;
     std::initializer_list<int> types;
-    std::initializer_list<int> components;
+    std::span<const ComponentRule> components;
   };
+  const bool quantized = usesQuantization(model);
+  using Rules = std::span<const ComponentRule>;
+  const Rules directions = quantized ? Rules(kQuantizedDirections) : Rules(kFloats);
+  const Rules uvs = quantized ? Rules(kQuantizedUvs) : Rules(kCoreUvs);
   const Use uses[] = {
-      {"POSITION", &positions, {TINYGLTF_TYPE_VEC3}, {kFloat}},
-      {"NORMAL", &normals, {TINYGLTF_TYPE_VEC3}, {kFloat}},
-      {"TANGENT", &tangents, {TINYGLTF_TYPE_VEC4}, {kFloat}},
-      {"TEXCOORD_0", &uv0, {TINYGLTF_TYPE_VEC2}, {kFloat, kUByte, kUShort}},
-      {"TEXCOORD_1", &uv1, {TINYGLTF_TYPE_VEC2}, {kFloat, kUByte, kUShort}},
-      {"COLOR_0", &colours, {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUByte, kUShort}},
+      {"POSITION", &positions, {TINYGLTF_TYPE_VEC3}, quantized ? Rules(kQuantizedPositions) : Rules(kFloats)},
+      {"NORMAL", &normals, {TINYGLTF_TYPE_VEC3}, directions},
+      {"TANGENT", &tangents, {TINYGLTF_TYPE_VEC4}, directions},
+      {"TEXCOORD_0", &uv0, {TINYGLTF_TYPE_VEC2}, uvs},
+      {"TEXCOORD_1", &uv1, {TINYGLTF_TYPE_VEC2}, uvs},
+      {"COLOR_0", &colours, {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, kCoreColours},
   };
   for (const Use& use : uses) {
     Attribute& a = *use.attribute;
     a.accessor = accessorOf(use.name);
     if (a.accessor < 0) continue;
     a.field = attributes + use.name;
-    a.reader = AccessorReader::open(model, a.accessor, use.types, use.components, false, a.field, error);
+    a.reader = AccessorReader::open(model, a.accessor, use.types, use.components, a.field, error);
     if (!a.reader) return false;
     if (a.reader->count() != positions.reader->count()) {
       *error = a.field + ": " + std::to_string(a.reader->count()) + " elements, but POSITION has " +
@@ -199,15 +228,15 @@ bool appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
     flipWinding();
     return true;
   }
-  auto indices = AccessorReader::open(model, primitive.indices, {TINYGLTF_TYPE_SCALAR}, {kUByte, kUShort, kUInt}, true,
-                                      pointer + "/indices", error);
+  auto indices =
+      AccessorReader::open(model, primitive.indices, {TINYGLTF_TYPE_SCALAR}, kIndices, pointer + "/indices", error);
   if (!indices) return false;
   if (indices->count() % 3 != 0) {
     *error = pointer + "/indices: " + std::to_string(indices->count()) + " indices are not whole triangles";
     return false;
   }
   for (size_t i = 0; i < indices->count(); ++i) {
-    const double index = indices->get(i, 0, false);
+    const double index = indices->get(i, 0);
     if (index >= double(count)) {
       *error = pointer + "/indices: index " + std::to_string(uint64_t(index)) + " is past the " +
                std::to_string(count) + " vertices";

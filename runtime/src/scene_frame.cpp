@@ -18,6 +18,7 @@
 #include "facet/runtime/image_texture.h"
 #include "facet/runtime/material_instance.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/scene_image_budget.h"
 #include "facet/runtime/texture_checks.h"
 #include "facet/runtime/vignette.h"
@@ -151,6 +152,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
         *error = "object " + std::to_string(i) + ": " + *error;
         return nullptr;
       }
+      // Built-in and glTF meshes are reordered for the vertex cache once, here (mesh_optimize.h).
+      optimizeMesh(&*made);
       mesh->second = std::make_unique<Mesh>(std::move(*made));
     }
     draw.mesh = mesh->second.get();

@@ -87,7 +87,8 @@ class VulkanBackend final : public VulkanRenderer {
   bool createFixedObjects(std::string* error);
   bool checkSampleCount(std::string* error) const;
   bool ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error);
-  bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out, std::string* error);
+  bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout, VkPipeline* out,
+                   std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool prepareTextures(const FrameDesc& frame, std::string* error);
@@ -113,6 +114,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readBackHdr_ = true;
   uint32_t framesInFlight_ = 2;
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
+  VertexPacking vertexPacking_ = VertexPacking::Packed;
   VkFormat hdrVkFormat_ = kHdrFormat;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
   bool hdrTransient_ = false;
@@ -176,8 +178,9 @@ class VulkanBackend final : public VulkanRenderer {
   // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
   // the queue before reusing a frame slot that one of them may still read.
   bool recordedSinceIdle_ = false;
-  // Keyed by program and the fixed-function state a draw asks for (blending, culling, masked).
-  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool>, CachedPipeline> pipelines_;
+  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked) and its
+  // mesh's vertex layout (packed with 16-bit or fp32 positions, or full precision).
+  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout>, CachedPipeline> pipelines_;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -248,6 +251,7 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   framesInFlight_ = options.framesInFlight;
   stageBufferUploads_ = options.stageBufferUploads;
   hdrFormat_ = options.hdrFormat;
+  vertexPacking_ = options.vertexPacking;
   hdrVkFormat_ = hdrFormat_ == HdrFormat::R11G11B10Float ? VK_FORMAT_B10G11R11_UFLOAT_PACK32 : kHdrFormat;
   post_ = findPostShaders(options.post, error);
   if (!post_) return false;
@@ -342,6 +346,12 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
              std::to_string(hdrProperties.optimalTilingFeatures) + ", needs " + std::to_string(hdrNeeds) + ")";
     return false;
   }
+  // Both packed layouts: a mesh gets one or the other by its positions' error (vertex_packing.h).
+  if (vertexPacking_ == VertexPacking::Packed &&
+      (!supportsVertexLayout(ctx_.physicalDevice, VertexLayout::Packed, error) ||
+       !supportsVertexLayout(ctx_.physicalDevice, VertexLayout::PackedFloatPositions, error))) {
+    return false;
+  }
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const bool passesMade =
@@ -363,7 +373,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   appImages_.init(device, &retire_);
   allocator_.init(&ctx_, stageBufferUploads_);
   uploads_.init(&allocator_, &retire_);
-  meshes_.init(&allocator_, &uploads_, &retire_);
+  meshes_.init(&allocator_, &uploads_, &retire_, vertexPacking_);
   materialBlocks_.init(&allocator_, &uploads_, &retire_);
 
   if (ctx_.timestampValidBits > 0) {
@@ -634,9 +644,9 @@ void VulkanBackend::writePostSet() {
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
 }
 
-bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VkPipeline* out,
-                                std::string* error) {
-  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked);
+bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout,
+                                VkPipeline* out, std::string* error) {
+  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout);
   auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
@@ -655,6 +665,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   desc.cullBackFaces = draw.cullBackFaces;
   desc.samples = samples_.count;
   desc.alphaToCoverage = draw.masked;
+  desc.vertexLayout = layout;
   desc.vertexSpirv = &program.vertexSpirv;
   desc.fragmentSpirv = &program.fragmentSpirv;
   desc.layout = forwardLayout_;
@@ -676,22 +687,22 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
   return createHostBuffer(ctx_, capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena, error);
 }
 
-// Builds (or finds) each draw's pipeline, makes its mesh resident, then lays the frame's
-// uniforms out in the arena and copies them in.
+// Makes each draw's mesh resident, builds (or finds) its pipeline for the mesh's vertex layout,
+// then lays the frame's uniforms out in the arena and copies them in.
 bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error) {
   const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
+  if (!meshes_.prepare(frame, error)) return false;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
-    if (!pipelineFor(*frame.draws[i].program, frame.draws[i], &(*slots)[i].pipeline, error)) {
+    DrawSlot& slot = (*slots)[i];
+    slot.mesh = meshes_.locate(frame.draws[i].mesh);
+    if (!pipelineFor(*frame.draws[i].program, frame.draws[i], slot.mesh.layout, &slot.pipeline, error)) {
       *error = "draw " + std::to_string(i) + ": " + *error;
       return false;
     }
   }
-  if (!meshes_.prepare(frame, error) || !materialBlocks_.prepare(frame, error) || !ensureArena(size, error)) {
-    return false;
-  }
+  if (!materialBlocks_.prepare(frame, error) || !ensureArena(size, error)) return false;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     DrawSlot& slot = (*slots)[i];
-    slot.mesh = meshes_.locate(frame.draws[i].mesh);
     slot.materialBuffer =
         frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : slot_->arena.buffer;
   }

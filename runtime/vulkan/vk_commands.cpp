@@ -82,8 +82,8 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     }
     const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2, sets, 0, nullptr);
-    const VkDeviceSize vertexOffset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &slot.mesh.buffer, &vertexOffset);
+    const VkBuffer streams[abi::kVertexStreams] = {slot.mesh.buffer, slot.mesh.buffer};
+    vkCmdBindVertexBuffers(cmd, 0, abi::kVertexStreams, streams, slot.mesh.streamOffsets);
     if (slot.mesh.indexCount > 0) {
       vkCmdBindIndexBuffer(cmd, slot.mesh.buffer, slot.mesh.indexOffset, VK_INDEX_TYPE_UINT32);
       vkCmdDrawIndexed(cmd, slot.mesh.indexCount, 1, 0, 0, 0);

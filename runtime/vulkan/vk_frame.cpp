@@ -83,7 +83,8 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, bool
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     const DrawSlot& slot = slots[i];
-    std::memcpy(base + slot.objectOffset, &draw.object, sizeof(draw.object));
+    const abi::ObjectUniforms object = withVertexDecode(draw.object, slot.mesh.decode);
+    std::memcpy(base + slot.objectOffset, &object, sizeof(object));
     if (draw.materialBlock) continue;
     std::memset(base + slot.materialOffset, 0, slot.materialSize);
     if (!draw.materialParams.empty()) {

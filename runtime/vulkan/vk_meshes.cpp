@@ -13,30 +13,41 @@ void MeshCache::release(const Entry& entry) {
 }
 
 bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
-  const VkDeviceSize vertexBytes = mesh.vertices.size() * sizeof(float);
+  PackedMesh packed;
+  if (!packMesh(mesh, packing_, &packed, error)) return false;
+  MeshLocation& location = entry->location;
+  location.vertexCount = packed.vertexCount;
+  location.indexCount = static_cast<uint32_t>(mesh.indices.size());
+  location.layout = packed.layout;
+  location.decode = packed.decode;
+  // Every stride is a multiple of 4 bytes, so each stream, and the indices after them, start at
+  // the 4-byte offset vkCmdBindIndexBuffer requires for UINT32.
+  VkDeviceSize offset = 0;
+  for (uint32_t s = 0; s < abi::kVertexStreams; ++s) {
+    location.streamOffsets[s] = offset;
+    offset += packed.streams[s].size();
+  }
+  location.indexOffset = offset;
   const VkDeviceSize indexBytes = mesh.indices.size() * sizeof(uint32_t);
-  entry->location.vertexCount = static_cast<uint32_t>(mesh.vertices.size() / abi::kVertexFloats);
-  entry->location.indexCount = static_cast<uint32_t>(mesh.indices.size());
-  // A whole number of 64-byte vertices keeps the indices at the 4-byte offset
-  // vkCmdBindIndexBuffer requires for UINT32.
-  entry->location.indexOffset = vertexBytes;
-  if (vertexBytes == 0) return true;
+  if (packed.vertexCount == 0) return true;
   if (!allocator_->create(
-          vertexBytes + indexBytes,
+          offset + indexBytes,
           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
           BufferUse::DeviceRead, &entry->buffer, error)) {
     return false;
   }
-  uploads_->write(entry->buffer, 0, mesh.vertices.data(), vertexBytes);
-  uploads_->write(entry->buffer, vertexBytes, mesh.indices.data(), indexBytes);
-  entry->location.buffer = entry->buffer.buffer;
+  for (uint32_t s = 0; s < abi::kVertexStreams; ++s)
+    uploads_->write(entry->buffer, location.streamOffsets[s], packed.streams[s].data(), packed.streams[s].size());
+  uploads_->write(entry->buffer, location.indexOffset, mesh.indices.data(), indexBytes);
+  location.buffer = entry->buffer.buffer;
   ++uploadCount_;
   return true;
 }
 
 bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
   ++frameNumber_;
-  for (const DrawItem& draw : frame.draws) {
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
+    const DrawItem& draw = frame.draws[i];
     auto found = meshes_.find(draw.mesh);
     // Already seen this frame: its identity was checked by the first draw of it.
     if (found != meshes_.end() && found->second.lastUsedFrame == frameNumber_) continue;
@@ -53,6 +64,7 @@ bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
     entry.key = key;
     entry.lastUsedFrame = frameNumber_;
     if (!upload(*draw.mesh, &entry, error)) {
+      *error = "draw " + std::to_string(i) + ": " + *error;
       allocator_->release(&entry.buffer);
       return false;
     }

@@ -1,5 +1,6 @@
-// Meshes on the device: one buffer per distinct Mesh (vertices, then indices), uploaded when the
-// mesh is first drawn and shared by every draw of it, in this frame and later ones.
+// Meshes on the device: one buffer per distinct Mesh (its two packed vertex streams,
+// vertex_packing.h, then its indices), uploaded when the mesh is first drawn and shared by every
+// draw of it, in this frame and later ones.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -11,6 +12,7 @@
 #include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/render_backend.h"
+#include "facet/runtime/vertex_packing.h"
 #include "vk_memory.h"
 #include "vk_retire.h"
 #include "vk_uploads.h"
@@ -20,7 +22,10 @@ namespace facet::runtime::vulkan {
 // Where a resident mesh is. buffer is null for a mesh without vertices (nothing is drawn).
 struct MeshLocation {
   VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceSize streamOffsets[abi::kVertexStreams] = {};
   VkDeviceSize indexOffset = 0;
+  VertexLayout layout = VertexLayout::FullPrecision;  // the pipeline's vertex input state
+  VertexDecode decode;                                // the draw's ObjectUniforms carry it
   uint32_t vertexCount = 0;
   uint32_t indexCount = 0;  // 0: non-indexed draw of vertexCount vertices
 };
@@ -41,7 +46,8 @@ class MeshCache {
 
   // The three must outlive this cache, and destroy() must be called before the allocator's.
   // Replaced and evicted buffers go through `retire`: frames in flight may use them.
-  void init(BufferAllocator* allocator, UploadQueue* uploads, RetireQueue* retire) {
+  void init(BufferAllocator* allocator, UploadQueue* uploads, RetireQueue* retire, VertexPacking packing) {
+    packing_ = packing;
     allocator_ = allocator;
     uploads_ = uploads;
     retire_ = retire;
@@ -70,6 +76,7 @@ class MeshCache {
 
   void release(const Entry& entry);
 
+  VertexPacking packing_ = VertexPacking::Packed;
   BufferAllocator* allocator_ = nullptr;
   UploadQueue* uploads_ = nullptr;
   RetireQueue* retire_ = nullptr;

@@ -421,6 +421,32 @@ bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayo
   return true;
 }
 
+VkFormat vertexFormat(VertexFormat format) {
+  switch (format) {
+    case VertexFormat::Float32x2: return VK_FORMAT_R32G32_SFLOAT;
+    case VertexFormat::Float32x3: return VK_FORMAT_R32G32B32_SFLOAT;
+    case VertexFormat::Float32x4: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case VertexFormat::Snorm16x4: return VK_FORMAT_R16G16B16A16_SNORM;
+    case VertexFormat::Unorm16x2: return VK_FORMAT_R16G16_UNORM;
+    case VertexFormat::Snorm10x3w2: return VK_FORMAT_A2B10G10R10_SNORM_PACK32;
+    case VertexFormat::Unorm8x4: return VK_FORMAT_R8G8B8A8_UNORM;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+bool supportsVertexLayout(VkPhysicalDevice device, VertexLayout layout, std::string* error) {
+  for (const StreamAttribute& a : vertexLayout(layout).attributes) {
+    VkFormatProperties properties{};
+    vkGetPhysicalDeviceFormatProperties(device, vertexFormat(a.format), &properties);
+    if ((properties.bufferFeatures & VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT) == 0) {
+      *error = "the device cannot fetch vertex format " + std::to_string(int(vertexFormat(a.format))) +
+               " (VkFormat) of the " + toString(layout) + " vertex layout; use VertexPacking::FullPrecision";
+      return false;
+    }
+  }
+  return true;
+}
+
 bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out, std::string* error) {
   const bool forward = desc.kind == PipelineKind::Forward;
   VkShaderModule vertex = VK_NULL_HANDLE;
@@ -443,19 +469,20 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   stages[1].module = fragment;
   stages[1].pName = "main";
 
-  // The one interleaved vertex stream of shader_abi.h. Attributes the shaders do not read are
-  // allowed by Vulkan (they are simply not fetched).
-  VkVertexInputBindingDescription binding{0, abi::kVertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
-  const VkFormat floatFormats[] = {VK_FORMAT_UNDEFINED, VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32_SFLOAT,
-                                   VK_FORMAT_R32G32B32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
+  // The two streams of shader_abi.h in the mesh's packed formats (vertex_packing.h): the
+  // shaders read the same vecN from any of them. Attributes the shaders do not read are allowed
+  // by Vulkan (they are simply not fetched).
+  const VertexLayoutDesc& layout = vertexLayout(desc.vertexLayout);
+  std::array<VkVertexInputBindingDescription, abi::kVertexStreams> bindings{};
+  for (uint32_t s = 0; s < abi::kVertexStreams; ++s) bindings[s] = {s, layout.strides[s], VK_VERTEX_INPUT_RATE_VERTEX};
   std::vector<VkVertexInputAttributeDescription> attributes;
-  for (const abi::VertexAttribute& a : abi::kVertexAttributes)
-    attributes.push_back({a.location, 0, floatFormats[a.components], uint32_t(a.offsetFloats * sizeof(float))});
+  for (const StreamAttribute& a : layout.attributes)
+    attributes.push_back({a.location, a.stream, vertexFormat(a.format), a.offset});
   VkPipelineVertexInputStateCreateInfo vertexInput{};
   vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
   if (forward) {
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexBindingDescriptionCount = static_cast<uint32_t>(bindings.size());
+    vertexInput.pVertexBindingDescriptions = bindings.data();
     vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
     vertexInput.pVertexAttributeDescriptions = attributes.data();
   }

@@ -10,6 +10,7 @@
 
 #include "facet/runtime/frame_graph.h"
 #include "facet/runtime/render_backend.h"
+#include "facet/runtime/vertex_packing.h"
 
 namespace facet::runtime::vulkan {
 
@@ -94,8 +95,9 @@ enum class PipelineKind {
 
 struct PipelineDesc {
   PipelineKind kind = PipelineKind::Forward;
-  Blending blending = Blending::Opaque;  // forward pipelines only
-  bool cullBackFaces = false;            // forward pipelines only
+  Blending blending = Blending::Opaque;                     // forward pipelines only
+  bool cullBackFaces = false;                               // forward pipelines only
+  VertexLayout vertexLayout = VertexLayout::FullPrecision;  // forward pipelines only: the streams' formats
   const std::vector<uint32_t>* vertexSpirv = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;
   VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -108,6 +110,12 @@ struct PipelineDesc {
   bool alphaToCoverage = false;
   const char* what = "";  // names the shaders in error messages
 };
+
+// The Vulkan format of a stream attribute (vertex_packing.h).
+VkFormat vertexFormat(VertexFormat format);
+// Whether the device's vertex fetch reads every format of the layout; false with *error naming
+// the first one it cannot.
+bool supportsVertexLayout(VkPhysicalDevice device, VertexLayout layout, std::string* error);
 
 // Viewport and scissor are dynamic state, so a pipeline does not depend on the frame size.
 bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out, std::string* error);

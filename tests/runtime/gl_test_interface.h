@@ -1,7 +1,7 @@
 // The interface the hand-written GLSL ES 3.00 test shaders share (test_gl_backend, test_textures):
-// shader_abi.h's first three vertex inputs and the leading members of its frame and object
-// blocks. A block may end early: the GL backend checks only that it is no larger than the ABI's.
-// Macros of string literals, so a shader is written as adjacent literals around them.
+// shader_abi.h's first three vertex inputs, the leading members of its frame block and its
+// object block with the decode of the packed streams. A block may end early: the GL backend checks only that it is no
+// larger than the ABI's. Macros of string literals, so a shader is written as adjacent literals around them.
 #pragma once
 
 #define FACET_GL_TEST_FRAME_BLOCK            \
@@ -20,4 +20,12 @@
   "layout(std140) uniform ObjectUniforms {\n"                     \
   "  mat4 model;\n"                                               \
   "  mat4 normalMatrix;\n"                                        \
+  "  vec4 positionScale;\n"                                       \
+  "  vec4 positionOffset;\n"                                      \
+  "  vec4 uv0ScaleOffset;\n"                                      \
+  "  vec4 uv1ScaleOffset;\n"                                      \
   "};\n"
+
+// The object-space position and uv0 of the mesh's packed streams (shader_abi.h's decode).
+#define FACET_GL_TEST_POSITION "(position * positionScale.xyz + positionOffset.xyz)"
+#define FACET_GL_TEST_UV0 "(uv0 * uv0ScaleOffset.xy + uv0ScaleOffset.zw)"

@@ -20,8 +20,8 @@ namespace {
 
 constexpr const char* kVertexShader = "#version 300 es\n" FACET_GL_TEST_VERTEX_INTERFACE R"(out vec2 vUv;
 void main() {
-  vUv = uv0 + normal.xy * 0.0;
-  gl_Position = viewProjection * model * vec4(position, 1.0);
+  vUv = )" FACET_GL_TEST_UV0 R"( + normal.xy * 0.0;
+  gl_Position = viewProjection * model * vec4()" FACET_GL_TEST_POSITION R"(, 1.0);
 }
 )";
 

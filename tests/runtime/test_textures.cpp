@@ -32,9 +32,9 @@ constexpr const char* kTexturedVertex =
 out vec2 vUv;
 out vec4 vVertexSample;
 void main() {
-  vUv = uv0 + vec2(0.0 * normal.x);
+  vUv = )" FACET_GL_TEST_UV0 R"( + vec2(0.0 * normal.x);
   vVertexSample = textureLod(vertexTexture, vec2(0.5), 0.0);
-  gl_Position = viewProjection * model * vec4(position, 1.0);
+  gl_Position = viewProjection * model * vec4()" FACET_GL_TEST_POSITION R"(, 1.0);
 }
 )";
 

@@ -18,12 +18,16 @@ layout(std140, set = 0, binding = 0) uniform FrameUniforms {
 layout(std140, set = 0, binding = 1) uniform ObjectUniforms {
     mat4 model;
     mat4 normalMatrix;
+    vec4 positionScale;  // the decode of the mesh's packed streams (shader_abi.h)
+    vec4 positionOffset;
+    vec4 uv0ScaleOffset;
+    vec4 uv1ScaleOffset;
 } object;
 
 layout(location = 0) out vec2 vUv;
 
 void main() {
     // normal is consumed (with weight 0) so every attribute of the ABI stream is read.
-    vUv = uv0 + vec2(0.0 * normal.x);
-    gl_Position = frame.viewProjection * object.model * vec4(position, 1.0);
+    vUv = uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw + vec2(0.0 * normal.x);
+    gl_Position = frame.viewProjection * object.model * vec4(position * object.positionScale.xyz + object.positionOffset.xyz, 1.0);
 }

@@ -20,6 +20,10 @@ layout(std140, set = 0, binding = 0) uniform FrameUniforms {
 layout(std140, set = 0, binding = 1) uniform ObjectUniforms {
     mat4 model;
     mat4 normalMatrix;
+    vec4 positionScale;  // the decode of the mesh's packed streams (shader_abi.h)
+    vec4 positionOffset;
+    vec4 uv0ScaleOffset;
+    vec4 uv1ScaleOffset;
 } object;
 
 layout(set = 1, binding = 9) uniform highp sampler2D vertexTexture;
@@ -28,7 +32,7 @@ layout(location = 0) out vec2 vUv;
 layout(location = 1) out vec4 vVertexSample;
 
 void main() {
-    vUv = uv0 + vec2(0.0 * normal.x);
+    vUv = uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw + vec2(0.0 * normal.x);
     vVertexSample = textureLod(vertexTexture, vec2(0.5), 0.0);
-    gl_Position = frame.viewProjection * object.model * vec4(position, 1.0);
+    gl_Position = frame.viewProjection * object.model * vec4(position * object.positionScale.xyz + object.positionOffset.xyz, 1.0);
 }

@@ -11,10 +11,20 @@
 
 namespace facet::abi {
 
-// Vertex inputs. One interleaved float stream holding every attribute (18 floats, 72-byte
-// stride); a shader declares only the locations its material reads (the compiler derives them),
-// so an unread attribute costs memory bandwidth in the fetch but no shader work. Production
-// engines split streams per attribute set; one stream keeps this small renderer simple.
+// Vertex inputs, in two streams (vertex buffer bindings): binding kPositionStream holds positions
+// only, binding kAttributeStream every other attribute. A tiler's binning pass runs a
+// position-only vertex shader and a shadow or depth pass reads positions only: with positions in
+// their own stream neither fetches the rest (S. Aaltonen, "HypeHype Mobile Rendering
+// Architecture", SIGGRAPH 2023: positions in their own stream, vertices packed 2.16x smaller). The
+// runtime packs each mesh at upload (runtime/vertex_packing.h: 16-bit normalized positions and
+// UVs, 10:10:10:2 normals and tangents, unorm8 colours, or fp32 everywhere as the reference);
+// the formats are pipeline state, so every shader declares the same `in highp vecN a_<name>` and
+// decodes positions and UVs with one FMA each from ObjectUniforms (positionScale, ...). A shader
+// declares only the locations its material reads (the compiler derives them), so an unread
+// attribute costs memory bandwidth in the fetch but no shader work.
+inline constexpr uint32_t kPositionStream = 0;
+inline constexpr uint32_t kAttributeStream = 1;
+inline constexpr uint32_t kVertexStreams = 2;
 inline constexpr uint32_t kAttribPosition = 0;  // vec3, object space
 inline constexpr uint32_t kAttribNormal = 1;    // vec3, object space, unit length
 inline constexpr uint32_t kAttribUv0 = 2;       // vec2
@@ -23,20 +33,25 @@ inline constexpr uint32_t kAttribColor = 4;     // vec4, linear RGBA in [0, 1]
 inline constexpr uint32_t kAttribTangent = 5;   // vec4: xyz object-space unit tangent (direction of
                                                 // +u), w = ±1 bitangent sign (MikkTSpace convention:
                                                 // bitangent = w · cross(normal, tangent))
+// The authoring form of a vertex (runtime::Mesh, runtime::Vertex): 18 floats in the order of
+// kVertexAttributes' offsetFloats, which the runtime packs into the two streams.
 inline constexpr uint32_t kVertexFloats = 18;
 inline constexpr uint32_t kVertexStride = kVertexFloats * sizeof(float);
-// Every attribute of the stream: location, float components, float offset within a vertex, and
-// its name: the shaders declare `in highp vecN a_<name>` (N = components). Both backends describe
-// the stream from this table; the compiler declares the inputs from it.
+// Every attribute: location, float components the shader reads, float offset within an authoring
+// vertex, the stream that carries it, and its name: the shaders declare `in highp vecN a_<name>`
+// (N = components). Both backends describe the streams from this table and the packing's
+// formats; the compiler declares the inputs from it.
 struct VertexAttribute {
   uint32_t location;
   uint32_t components;
   uint32_t offsetFloats;
+  uint32_t stream;
   std::string_view name;
 };
 inline constexpr VertexAttribute kVertexAttributes[] = {
-    {kAttribPosition, 3, 0, "position"}, {kAttribNormal, 3, 3, "normal"}, {kAttribUv0, 2, 6, "uv0"},
-    {kAttribUv1, 2, 8, "uv1"},           {kAttribColor, 4, 10, "color"},  {kAttribTangent, 4, 14, "tangent"},
+    {kAttribPosition, 3, 0, kPositionStream, "position"}, {kAttribNormal, 3, 3, kAttributeStream, "normal"},
+    {kAttribUv0, 2, 6, kAttributeStream, "uv0"},          {kAttribUv1, 2, 8, kAttributeStream, "uv1"},
+    {kAttribColor, 4, 10, kAttributeStream, "color"},     {kAttribTangent, 4, 14, kAttributeStream, "tangent"},
 };
 constexpr const VertexAttribute& vertexAttribute(uint32_t location) {
   for (const VertexAttribute& a : kVertexAttributes)
@@ -139,8 +154,16 @@ static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
 struct ObjectUniforms {
   float model[16];
   float normalMatrix[16];  // inverse-transpose of model's upper 3×3, stored as a mat4
+  // How the mesh's streams decode (runtime/vertex_packing.h), written by the backend from the
+  // mesh it draws (whatever a DrawItem holds here is replaced): object-space position =
+  // a_position · positionScale.xyz + positionOffset.xyz, uvN = a_uvN · uvNScaleOffset.xy +
+  // uvNScaleOffset.zw, one FMA each. (1, 1, 1) and 0 for fp32 streams.
+  float positionScale[4];
+  float positionOffset[4];
+  float uv0ScaleOffset[4];
+  float uv1ScaleOffset[4];
 };
-static_assert(sizeof(ObjectUniforms) == 128, "std140 layout of ObjectUniforms");
+static_assert(sizeof(ObjectUniforms) == 192, "std140 layout of ObjectUniforms");
 
 // Per-frame data of the post pass (block "PostUniforms", chunks/vignette.glsl reads it).
 struct PostUniforms {
@@ -205,8 +228,8 @@ inline constexpr MemberDesc kFrameMembers[] = {
     {"highp vec4", "sh", kShCoefficients},
 };
 inline constexpr MemberDesc kObjectMembers[] = {
-    {"highp mat4", "model"},
-    {"highp mat4", "normalMatrix"},
+    {"highp mat4", "model"},          {"highp mat4", "normalMatrix"},   {"highp vec4", "positionScale"},
+    {"highp vec4", "positionOffset"}, {"highp vec4", "uv0ScaleOffset"}, {"highp vec4", "uv1ScaleOffset"},
 };
 
 inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame",       kBlockSet,
@@ -257,11 +280,14 @@ inline constexpr SamplerDesc kPostColorLutSampler{kPostColorLutName, kPostHdrSet
 // variant of every material uses the same ones (SPIRV-Cross otherwise numbers resources in order
 // of use, per shader): a block at [[buffer(binding)]]; a sampler of set kTextureSet at
 // [[texture(binding)]] and [[sampler(binding)]] (bindings 0..15 fit iOS's 16 samplers). The
-// vertex stream (stage_in) should use buffer index kMslVertexBufferIndex, clear of the blocks.
+// vertex streams (stage_in) should use buffer indices kMslVertexBufferIndex + stream (positions
+// at 29, the other attributes at 30; MTLVertexDescriptor's layouts), clear of the blocks.
 // The package records these slots (section MSLB, docs/package-format.md).
 constexpr uint32_t mslBufferIndex(const BlockDesc& block) { return block.binding; }
 constexpr uint32_t mslTextureIndex(uint32_t textureBinding) { return textureBinding; }
-inline constexpr uint32_t kMslVertexBufferIndex = 30;
+inline constexpr uint32_t kMslVertexBufferIndex = 29;
+constexpr uint32_t mslVertexBufferIndex(uint32_t stream) { return kMslVertexBufferIndex + stream; }
+static_assert(mslVertexBufferIndex(kVertexStreams - 1) <= 30, "Metal has buffer indices 0..30");
 
 static_assert(vertexAttribute(kAttribTangent).location == kAttribTangent && vertexAttribute(kAttribUv0).components == 2,
               "kVertexAttributes lists every kAttrib* location");

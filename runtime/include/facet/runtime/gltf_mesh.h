@@ -63,10 +63,10 @@ struct GltfReadOptions {
 // What is refused before tinygltf sees the bytes (docs/security.md, "Files"): a file over the
 // budget's bytes; JSON nested more than kMaxJsonDepth deep or that tinygltf would expand past
 // 256 MiB in memory; a .glb whose header or chunks do not fit the file exactly; asset versions
-// other than 2.x (and minVersion above 2.0), extensionsRequired naming any extension (none is
-// implemented), byteStride outside 4..252 or not a multiple of 4, a buffer URI that is not a
-// relative path or a base64 data: URI (NUL, %00, malformed %-escapes, other schemes, queries).
-// Only regular files are read: the file itself and its buffers, which must lie in the asset root
+// other than 2.x (and minVersion above 2.0), extensionsRequired naming any extension but
+// KHR_mesh_quantization (whose integer attribute types a file that uses it may have), byteStride outside 4..252 or not
+// a multiple of 4, a buffer URI that is not a relative path or a base64 data: URI (NUL, %00, malformed %-escapes, other
+// schemes, queries). Only regular files are read: the file itself and its buffers, which must lie in the asset root
 // (real paths: symbolic links followed); a path outside gets the same error whether or not it
 // exists. Image files the glTF names are never opened.
 //

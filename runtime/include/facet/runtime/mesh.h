@@ -7,7 +7,7 @@
 
 namespace facet::runtime {
 
-// One vertex of shader_abi.h's stream, in its layout. The defaults are what a mesh without the
+// One vertex of a Mesh, which backends pack (vertex_packing.h). The defaults are what a mesh without the
 // attribute carries: white vertex colour, uv1 = (0, 0), and a tangent along +x with w = +1.
 struct Vertex {
   float position[3] = {0, 0, 0};

@@ -1,6 +1,6 @@
 // The API-neutral description of one frame, and the interface each graphics backend implements.
 //
-// A backend receives everything already resolved: meshes as interleaved vertices, uniform block
+// A backend receives everything already resolved: meshes as fp32 vertices (it packs them), uniform block
 // bytes in std140, and shader code for its API (with, for a package's, the interface its draws bind:
 // program_interface.h). It reads no package and no scene.
 // The app's-own-device entry points of the Vulkan backend are in vulkan_backend.h.
@@ -18,9 +18,18 @@
 
 namespace facet::runtime {
 
+// The authoring form of a mesh: what apps and loaders fill. A backend packs it into the two
+// vertex streams of shader_abi.h when it uploads it (runtime/vertex_packing.h).
 struct Mesh {
   std::vector<float> vertices;    // abi::kVertexFloats per vertex, in shader_abi.h's layout (runtime/mesh.h: Vertex)
   std::vector<uint32_t> indices;  // triangle list
+};
+
+// How a backend packs the meshes it uploads (runtime/vertex_packing.h has the formats and the
+// rules): VulkanOptions / GlOptions::vertexPacking.
+enum class VertexPacking {
+  Packed,         // 28 bytes a vertex (32 where positions keep fp32)
+  FullPrecision,  // fp32 in both streams, 72 bytes a vertex: the reference of tests and measurements
 };
 
 enum class TextureFormat {
@@ -238,6 +247,9 @@ struct VulkanOptions {
   // path (multisampled attachments resolved by pResolveAttachments), for tests. An app's device
   // (vulkan_backend.h) always takes the portable path.
   bool renderToSingleSampled = true;
+  // How meshes are packed at upload; creation fails on a device whose vertex fetch cannot read
+  // the packed formats.
+  VertexPacking vertexPacking = VertexPacking::Packed;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -270,6 +282,8 @@ struct GlOptions {
   // HDR texture with the samples kept by the driver instead (no renderbuffer, no blit). Written to
   // the extension's specification; llvmpipe lacks it, so this path is untested here.
   bool renderToTexture = true;
+  // How meshes are packed at upload (every packed format is core GLES 3.0).
+  VertexPacking vertexPacking = VertexPacking::Packed;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).

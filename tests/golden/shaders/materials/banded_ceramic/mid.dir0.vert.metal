@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -45,18 +49,18 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _164 = object.model * float4(in.a_position, 1.0);
-    out.v_worldPosition = _164.xyz;
+    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    out.v_worldPosition = _174.xyz;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _327 = half3(out.v_normal);
-    half _228 = _327.y;
-    half3 _329 = half3(out.v_normal);
-    half _233 = _329.z;
-    half3 _331 = half3(out.v_normal);
-    half _238 = _331.x;
-    float3 _306 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_228))) + (frame.sh[2].xyz * float(_233))) + (frame.sh[3].xyz * float(_238))) + (((((frame.sh[4].xyz * (float(_238) * float(_228))) + (frame.sh[5].xyz * (float(_228) * float(_233)))) + (frame.sh[6].xyz * fma(3.0 * float(_233), float(_233), -1.0))) + (frame.sh[7].xyz * (float(_238) * float(_233)))) + (frame.sh[8].xyz * fma(float(_238), float(_238), -(float(_228) * float(_228))))), float3(0.0));
-    out.v_diffuseLight = _306;
-    out.gl_Position = frame.viewProjection * _164;
+    half3 _337 = half3(out.v_normal);
+    half _238 = _337.y;
+    half3 _339 = half3(out.v_normal);
+    half _243 = _339.z;
+    half3 _341 = half3(out.v_normal);
+    half _248 = _341.x;
+    float3 _316 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_238))) + (frame.sh[2].xyz * float(_243))) + (frame.sh[3].xyz * float(_248))) + (((((frame.sh[4].xyz * (float(_248) * float(_238))) + (frame.sh[5].xyz * (float(_238) * float(_243)))) + (frame.sh[6].xyz * fma(3.0 * float(_243), float(_243), -1.0))) + (frame.sh[7].xyz * (float(_248) * float(_243)))) + (frame.sh[8].xyz * fma(float(_248), float(_248), -(float(_238) * float(_238))))), float3(0.0));
+    out.v_diffuseLight = _316;
+    out.gl_Position = frame.viewProjection * _174;
     return out;
 }
 

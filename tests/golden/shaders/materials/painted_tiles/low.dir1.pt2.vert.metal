@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -49,26 +53,26 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _186 = object.model * float4(in.a_position, 1.0);
-    float3 _190 = _186.xyz;
-    out.v_worldPosition = _190;
+    float4 _196 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float3 _200 = _196.xyz;
+    out.v_worldPosition = _200;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    out.v_uv0 = in.a_uv0;
+    out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
     out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    float3 _372 = float3(frame.punctualLights[0].positionFalloff.xyz) - _190;
-    float _375 = dot(_372, _372);
-    float3 _380 = _372 * rsqrt(fast::max(_375, 9.9999999392252902907785028219223e-09));
-    float _384 = _375 * float(frame.punctualLights[0].positionFalloff.w);
-    float _389 = fast::clamp(fma(-_384, _384, 1.0), 0.0, 1.0);
-    float _408 = fast::clamp(fma(dot(-_380, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _450 = float3(frame.punctualLights[1].positionFalloff.xyz) - _190;
-    float _453 = dot(_450, _450);
-    float3 _458 = _450 * rsqrt(fast::max(_453, 9.9999999392252902907785028219223e-09));
-    float _462 = _453 * float(frame.punctualLights[1].positionFalloff.w);
-    float _467 = fast::clamp(fma(-_462, _462, 1.0), 0.0, 1.0);
-    float _486 = fast::clamp(fma(dot(-_458, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_389 * _389) / fast::max(_375, 9.9999997473787516355514526367188e-05)) * _408) * _408), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _380), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_467 * _467) / fast::max(_453, 9.9999997473787516355514526367188e-05)) * _486) * _486), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _458), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _186;
+    float3 _391 = float3(frame.punctualLights[0].positionFalloff.xyz) - _200;
+    float _394 = dot(_391, _391);
+    float3 _399 = _391 * rsqrt(fast::max(_394, 9.9999999392252902907785028219223e-09));
+    float _403 = _394 * float(frame.punctualLights[0].positionFalloff.w);
+    float _408 = fast::clamp(fma(-_403, _403, 1.0), 0.0, 1.0);
+    float _427 = fast::clamp(fma(dot(-_399, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _469 = float3(frame.punctualLights[1].positionFalloff.xyz) - _200;
+    float _472 = dot(_469, _469);
+    float3 _477 = _469 * rsqrt(fast::max(_472, 9.9999999392252902907785028219223e-09));
+    float _481 = _472 * float(frame.punctualLights[1].positionFalloff.w);
+    float _486 = fast::clamp(fma(-_481, _481, 1.0), 0.0, 1.0);
+    float _505 = fast::clamp(fma(dot(-_477, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_408 * _408) / fast::max(_394, 9.9999997473787516355514526367188e-05)) * _427) * _427), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _399), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_486 * _486) / fast::max(_472, 9.9999997473787516355514526367188e-05)) * _505) * _505), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _477), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _196;
     return out;
 }
 

@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -49,33 +53,33 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _260 = object.model * float4(in.a_position, 1.0);
-    float3 _264 = _260.xyz;
-    out.v_worldPosition = _264;
+    float4 _270 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float3 _274 = _270.xyz;
+    out.v_worldPosition = _274;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    out.v_uv0 = in.a_uv0;
+    out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
     out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    half3 _696 = half3(out.v_normal);
-    half _392 = _696.y;
-    half3 _698 = half3(out.v_normal);
-    half _397 = _698.z;
-    half3 _700 = half3(out.v_normal);
-    half _402 = _700.x;
-    float3 _470 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_392))) + (frame.sh[2].xyz * float(_397))) + (frame.sh[3].xyz * float(_402))) + (((((frame.sh[4].xyz * (float(_402) * float(_392))) + (frame.sh[5].xyz * (float(_392) * float(_397)))) + (frame.sh[6].xyz * fma(3.0 * float(_397), float(_397), -1.0))) + (frame.sh[7].xyz * (float(_402) * float(_397)))) + (frame.sh[8].xyz * fma(float(_402), float(_402), -(float(_392) * float(_392))))), float3(0.0));
-    float3 _501 = float3(frame.punctualLights[0].positionFalloff.xyz) - _264;
-    float _504 = dot(_501, _501);
-    float3 _509 = _501 * rsqrt(fast::max(_504, 9.9999999392252902907785028219223e-09));
-    float _513 = _504 * float(frame.punctualLights[0].positionFalloff.w);
-    float _518 = fast::clamp(fma(-_513, _513, 1.0), 0.0, 1.0);
-    float _537 = fast::clamp(fma(dot(-_509, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _579 = float3(frame.punctualLights[1].positionFalloff.xyz) - _264;
-    float _582 = dot(_579, _579);
-    float3 _587 = _579 * rsqrt(fast::max(_582, 9.9999999392252902907785028219223e-09));
-    float _591 = _582 * float(frame.punctualLights[1].positionFalloff.w);
-    float _596 = fast::clamp(fma(-_591, _591, 1.0), 0.0, 1.0);
-    float _615 = fast::clamp(fma(dot(-_587, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = (_470 + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_518 * _518) / fast::max(_504, 9.9999997473787516355514526367188e-05)) * _537) * _537), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _509), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_596 * _596) / fast::max(_582, 9.9999997473787516355514526367188e-05)) * _615) * _615), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _587), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _260;
+    half3 _714 = half3(out.v_normal);
+    half _410 = _714.y;
+    half3 _716 = half3(out.v_normal);
+    half _415 = _716.z;
+    half3 _718 = half3(out.v_normal);
+    half _420 = _718.x;
+    float3 _488 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_410))) + (frame.sh[2].xyz * float(_415))) + (frame.sh[3].xyz * float(_420))) + (((((frame.sh[4].xyz * (float(_420) * float(_410))) + (frame.sh[5].xyz * (float(_410) * float(_415)))) + (frame.sh[6].xyz * fma(3.0 * float(_415), float(_415), -1.0))) + (frame.sh[7].xyz * (float(_420) * float(_415)))) + (frame.sh[8].xyz * fma(float(_420), float(_420), -(float(_410) * float(_410))))), float3(0.0));
+    float3 _519 = float3(frame.punctualLights[0].positionFalloff.xyz) - _274;
+    float _522 = dot(_519, _519);
+    float3 _527 = _519 * rsqrt(fast::max(_522, 9.9999999392252902907785028219223e-09));
+    float _531 = _522 * float(frame.punctualLights[0].positionFalloff.w);
+    float _536 = fast::clamp(fma(-_531, _531, 1.0), 0.0, 1.0);
+    float _555 = fast::clamp(fma(dot(-_527, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _597 = float3(frame.punctualLights[1].positionFalloff.xyz) - _274;
+    float _600 = dot(_597, _597);
+    float3 _605 = _597 * rsqrt(fast::max(_600, 9.9999999392252902907785028219223e-09));
+    float _609 = _600 * float(frame.punctualLights[1].positionFalloff.w);
+    float _614 = fast::clamp(fma(-_609, _609, 1.0), 0.0, 1.0);
+    float _633 = fast::clamp(fma(dot(-_605, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = (_488 + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_536 * _536) / fast::max(_522, 9.9999997473787516355514526367188e-05)) * _555) * _555), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _527), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_614 * _614) / fast::max(_600, 9.9999997473787516355514526367188e-05)) * _633) * _633), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _605), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _270;
     return out;
 }
 

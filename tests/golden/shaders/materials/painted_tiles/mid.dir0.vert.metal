@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -49,20 +53,20 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _164 = object.model * float4(in.a_position, 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _164.xyz;
+    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    out.v_uv0 = in.a_uv0;
+    out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
     out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    half3 _360 = half3(out.v_normal);
-    half _261 = _360.y;
-    half3 _362 = half3(out.v_normal);
-    half _266 = _362.z;
-    half3 _364 = half3(out.v_normal);
-    half _271 = _364.x;
-    float3 _339 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_261))) + (frame.sh[2].xyz * float(_266))) + (frame.sh[3].xyz * float(_271))) + (((((frame.sh[4].xyz * (float(_271) * float(_261))) + (frame.sh[5].xyz * (float(_261) * float(_266)))) + (frame.sh[6].xyz * fma(3.0 * float(_266), float(_266), -1.0))) + (frame.sh[7].xyz * (float(_271) * float(_266)))) + (frame.sh[8].xyz * fma(float(_271), float(_271), -(float(_261) * float(_261))))), float3(0.0));
-    out.v_diffuseLight = _339;
-    out.gl_Position = frame.viewProjection * _164;
+    half3 _378 = half3(out.v_normal);
+    half _279 = _378.y;
+    half3 _380 = half3(out.v_normal);
+    half _284 = _380.z;
+    half3 _382 = half3(out.v_normal);
+    half _289 = _382.x;
+    float3 _357 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_279))) + (frame.sh[2].xyz * float(_284))) + (frame.sh[3].xyz * float(_289))) + (((((frame.sh[4].xyz * (float(_289) * float(_279))) + (frame.sh[5].xyz * (float(_279) * float(_284)))) + (frame.sh[6].xyz * fma(3.0 * float(_284), float(_284), -1.0))) + (frame.sh[7].xyz * (float(_289) * float(_284)))) + (frame.sh[8].xyz * fma(float(_289), float(_289), -(float(_279) * float(_279))))), float3(0.0));
+    out.v_diffuseLight = _357;
+    out.gl_Position = frame.viewProjection * _174;
     return out;
 }
 

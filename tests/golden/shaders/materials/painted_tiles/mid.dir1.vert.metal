@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -49,20 +53,20 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _164 = object.model * float4(in.a_position, 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _164.xyz;
+    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    out.v_uv0 = in.a_uv0;
+    out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
     out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    half3 _374 = half3(out.v_normal);
-    half _275 = _374.y;
-    half3 _376 = half3(out.v_normal);
-    half _280 = _376.z;
-    half3 _378 = half3(out.v_normal);
-    half _285 = _378.x;
-    float3 _353 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_275))) + (frame.sh[2].xyz * float(_280))) + (frame.sh[3].xyz * float(_285))) + (((((frame.sh[4].xyz * (float(_285) * float(_275))) + (frame.sh[5].xyz * (float(_275) * float(_280)))) + (frame.sh[6].xyz * fma(3.0 * float(_280), float(_280), -1.0))) + (frame.sh[7].xyz * (float(_285) * float(_280)))) + (frame.sh[8].xyz * fma(float(_285), float(_285), -(float(_275) * float(_275))))), float3(0.0));
-    out.v_diffuseLight = _353 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _164;
+    half3 _392 = half3(out.v_normal);
+    half _293 = _392.y;
+    half3 _394 = half3(out.v_normal);
+    half _298 = _394.z;
+    half3 _396 = half3(out.v_normal);
+    half _303 = _396.x;
+    float3 _371 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_293))) + (frame.sh[2].xyz * float(_298))) + (frame.sh[3].xyz * float(_303))) + (((((frame.sh[4].xyz * (float(_303) * float(_293))) + (frame.sh[5].xyz * (float(_293) * float(_298)))) + (frame.sh[6].xyz * fma(3.0 * float(_298), float(_298), -1.0))) + (frame.sh[7].xyz * (float(_303) * float(_298)))) + (frame.sh[8].xyz * fma(float(_303), float(_303), -(float(_293) * float(_293))))), float3(0.0));
+    out.v_diffuseLight = _371 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _174;
     return out;
 }
 
