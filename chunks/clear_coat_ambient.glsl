@@ -12,7 +12,15 @@
 // L_base ≤ 1, the base's own furnace) it is ≤ 1 for any Fc ∈ [0, 1]: energy-conserving by
 // construction (Filament weights it the same way). The 1 − Fc on the base stands for light that
 // crossed the coat twice, in and out, to first order: the second crossing is not counted (as
-// Filament). Needs shading_standard.glsl's inputs and ibl_prefiltered.glsl.
+// Filament).
+// Every light's base is attenuated by the same 1 − Fc(n_c·v), not by Filament's 1 − Fc(l·h) per
+// light. Why: with Fc(l·h) the layered directional albedo (coat lobe + a white base under it)
+// reaches 1.30 at n·v = 0.2 and 1.66 at n·v = 0.05 for a smooth coat (the coat reflects Fc(n·v) of
+// a grazing view while most of the base's light directions see l·h far from grazing, so the base
+// keeps 0.91–0.96), where with Fc(n_c·v) it stays ≤ 1 + 1e-5 over n·v and r_c: the coat lobe's
+// albedo never exceeds Fc(n_c·v) by more than that (tests/reference/clear_coat.h integrates both;
+// Reference.ClearCoatLayeredFurnaceIsAtMostOne). It is also one Fresnel per pixel instead of one
+// per light. Needs shading_standard.glsl's inputs and ibl_prefiltered.glsl.
 //
 // Two tiers' forms share this file (docs/material-models.md):
 //   ggx_kelemen (reference, high): clear_coat_layer over the ambient terms only; each light adds
@@ -25,6 +33,9 @@
 
 // The coat's normal in world space, set once per pixel by the template before shading.
 vec3 shading_clear_coat_normal;
+// 1 − Fc(n_c·v), set by clear_coat_layer before any light is shaded (the ggx_kelemen form: each
+// light's base is multiplied by it, shading_standard.glsl).
+float shading_clear_coat_attenuation = 1.0;
 
 float clear_coat_strength(MaterialInputs material) {
     return clamp(material.clearCoat, 0.0, 1.0);
@@ -45,6 +56,7 @@ float clear_coat_fresnel(float cosTheta) {
 vec3 clear_coat_layer(MaterialInputs material, vec3 base, vec3 v) {
     vec3 n = shading_clear_coat_normal;
     float Fc = clear_coat_fresnel(max(dot(n, v), MIN_N_DOT_V)) * clear_coat_strength(material);
+    shading_clear_coat_attenuation = 1.0 - Fc;
     vec3 coat = prefiltered_radiance(reflect(-v, n), clear_coat_perceptual_roughness(material));
     return mix(base, coat, Fc);
 }

@@ -1,7 +1,9 @@
 // The clear coat's lobe for each light (the `ggx_kelemen` clear coat of reference and high):
 //   f_c  = D(h; α_c) · V_K(l·h) · Fc(l·h)              α_c = r_c², Fc with the strength (clear_coat_ambient.glsl)
 //   V_K  = 1 / (4 (l·h)²)                               Kelemen and Szirmay-Kalos 2001
-//   L    = L_base · (1 − Fc(l·h)) + f_c · E_light · n_c·l
+//   L    = L_base · (1 − Fc(n_c·v)) + f_c · E_light · n_c·l
+// (the base's attenuation is the view's, shading_clear_coat_attenuation: clear_coat_ambient.glsl
+// has why, and the lobe's own Fc is at l·h as the talk's)
 // Sources: R. Guy and M. Agopian, "Physically Based Rendering in Filament", "Clear coat model"
 // (isotropic GGX, Kelemen's visibility: a smooth coat over a rough base needs no Smith term's
 // cost, and f0 fixed at 0.04); Kelemen and Szirmay-Kalos, "A Microfacet Based Coupled
@@ -30,14 +32,13 @@ float visibility_kelemen(float LoH) {
     return 0.25 / max(LoH * LoH, 6.103515625e-5);  // 2^-14, derivation above
 }
 
-// The coat's light for one light, and Fc(l·h) (with the strength) for the caller to attenuate the
-// base by. lightColor is the pre-exposed illuminance at normal incidence.
-vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 lightColor, out float Fc) {
+// The coat's light for one light; lightColor is the pre-exposed illuminance at normal incidence.
+vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 lightColor) {
     vec3 n = shading_clear_coat_normal;
     float NoL = clamp(dot(n, l), 0.0, 1.0);
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float r = clear_coat_perceptual_roughness(material);
-    Fc = clear_coat_fresnel(LoH) * clear_coat_strength(material);
+    float Fc = clear_coat_fresnel(LoH) * clear_coat_strength(material);
     float DV = saturateMediump(distribution_ggx(r * r, NoH, n, h) * visibility_kelemen(LoH));
     return DV * Fc * (lightColor * NoL);
 }

@@ -159,11 +159,10 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     // (saturateMediump is an identity in the highp `reference`).
     vec3 irradiance = lightColor * NoL;
 #if defined(FACET_CLEAR_COAT_GGX_KELEMEN)
-    // Under a clear coat (clear_coat_ggx_kelemen.glsl): the base is lit through it, × (1 − Fc(l·h)),
+    // Under a clear coat (clear_coat_ggx_kelemen.glsl): the base is lit through it, × (1 − Fc(n_c·v)),
     // and the coat adds its own lobe (finite: ≤ 65504 · E · n·l, saturated with the sum below).
-    float coatFresnel;
-    vec3 coat = clear_coat_direct(material, l, h, LoH, lightColor, coatFresnel);
-    irradiance *= 1.0 - coatFresnel;
+    vec3 coat = clear_coat_direct(material, l, h, LoH, lightColor);
+    irradiance *= shading_clear_coat_attenuation;
 #endif
     // Linear in every colour space: with FACET_GAMMA_HACK the caller adds it to the linear sum
     // with add_light (shading_ambient.glsl), as the ambient specular.
