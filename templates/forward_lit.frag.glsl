@@ -19,7 +19,7 @@
 #include "environment_cube.glsl"
 // (The clear coat reads the prefiltered environment at its own roughness whatever the tier's
 // ambient model.)
-#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC) || defined(FACET_CLEAR_COAT_GGX_KELEMEN) || \
+#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC) || defined(FACET_CLEAR_COAT_LOBE) || \
     defined(FACET_CLEAR_COAT_AMBIENT)
 #include "ibl_prefiltered.glsl"
 #endif
@@ -33,11 +33,14 @@
 #include "ibl_two_mip.glsl"
 #endif
 // The clear coat's forms (docs/material-models.md); a tier that drops it includes neither.
-#if defined(FACET_CLEAR_COAT_GGX_KELEMEN) || defined(FACET_CLEAR_COAT_AMBIENT)
+#if defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
 #include "clear_coat_ambient.glsl"
 #endif
 #if defined(FACET_CLEAR_COAT_GGX_KELEMEN)
 #include "clear_coat_ggx_kelemen.glsl"
+#endif
+#if defined(FACET_CLEAR_COAT_FUSED)
+#include "clear_coat_fused.glsl"
 #endif
 #include "shading_standard.glsl"
 #include "shading_ambient.glsl"
@@ -65,7 +68,7 @@ void main() {
     evaluate_surface(material);
 #if defined(FACET_MATERIAL_CLEAR_COAT_NORMAL)
     shading_clear_coat_normal = tangent_to_world(material.clearCoatNormal);
-#elif defined(FACET_CLEAR_COAT_GGX_KELEMEN) || defined(FACET_CLEAR_COAT_AMBIENT)
+#elif defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
     shading_clear_coat_normal = shading_normal;  // the interpolated one: a base normal map stays under the coat
 #endif
 #if defined(FACET_MATERIAL_NORMAL)
@@ -84,7 +87,7 @@ void main() {
     color = linear_from_shading_space(color);
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
-#if defined(FACET_CLEAR_COAT_GGX_KELEMEN)
+#if defined(FACET_CLEAR_COAT_LOBE)
     // The ambient base under the coat, and the coat's environment; each light layers its own.
     color = clear_coat_layer(material, color, shading_view);
 #endif

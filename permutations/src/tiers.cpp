@@ -41,7 +41,7 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               2,
               true,
-              ClearCoatModel::None};
+              ClearCoatModel::Ambient};
   }
   return {};
 }

@@ -25,16 +25,19 @@ enum class PrecisionPolicy { Highp, Mediump };
 //             times Zioma's 2015 environment BRDF (saturated): no variable lod, no table
 enum class AmbientModel { SplitSum, Analytic, TwoMip };
 // The clear coat of materials that write `clearCoat` (docs/material-models.md); a material without
-// it compiles the same shaders whatever this says.
+// it compiles the same shaders whatever this says. reference and high: GgxKelemen; mid and low:
+// Ambient, the form within their budget (half of high's coat cost in the mobile cost model).
 //   GgxKelemen  the coat's own GGX lobe with Kelemen's visibility and Schlick's Fresnel at f0 0.04
 //               for every light, and its prefiltered environment at its roughness; the base
-//               lit through it × (1 − Fc) (chunks/clear_coat_ggx_kelemen.glsl, clear_coat_ambient.glsl)
+//               lit through it × (1 − Fc(n·v)) (chunks/clear_coat_ggx_kelemen.glsl, clear_coat_ambient.glsl)
+//   Fused       the same lobe in one division with Fresnel at n_c·v, the layer's
+//               (chunks/clear_coat_fused.glsl)
 //   Ambient     the coat's environment only, over the whole base × (1 − Fc(n·v)): no lobe per light
 //               (chunks/clear_coat_ambient.glsl)
 //   None        the coat dropped from the shader
-enum class ClearCoatModel { GgxKelemen, Ambient, None };
+enum class ClearCoatModel { GgxKelemen, Fused, Ambient, None };
 // The material language's names, indexed by ClearCoatModel (`tier mid { clear_coat = none }`).
-inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "ambient", "none"};
+inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "fused", "ambient", "none"};
 static_assert(sizeof kClearCoatModelNames / sizeof *kClearCoatModelNames == size_t(ClearCoatModel::None) + 1,
               "one name per ClearCoatModel, in its order");
 

@@ -31,17 +31,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _484 = normalize(half3(in.v_normal));
-    float3 _488 = fast::normalize(in.v_toEye);
-    half _737 = max(dot(_484, half3(_488)), half(9.9999997473787516355514526367188e-05));
-    half3 _741 = reflect(-half3(_488), _484);
-    float4 _776 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_737, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _802 = facet_environment.sample(facet_environmentSmplr, float3(_741), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _848 = half(1.0) - _737;
-    half _851 = _848 * _848;
-    float4 _875 = facet_environment.sample(facet_environmentSmplr, float3(_741), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _842 = mix(half4(_802).xyz * (mix(half4(_776).xxx, half4(_776).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_776).y) - half(1.0))))), half4(_875).xyz, half3(fma(half(0.959999978542327880859375), (_851 * _851) * _848, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_842, half(1.0)));
+    half3 _488 = normalize(half3(in.v_normal));
+    float3 _492 = fast::normalize(in.v_toEye);
+    half _741 = max(dot(_488, half3(_492)), half(9.9999997473787516355514526367188e-05));
+    half3 _745 = reflect(-half3(_492), _488);
+    float4 _780 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_741, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _806 = facet_environment.sample(facet_environmentSmplr, float3(_745), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _854 = half(1.0) - _741;
+    half _857 = _854 * _854;
+    float4 _881 = facet_environment.sample(facet_environmentSmplr, float3(_745), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _848 = mix(half4(_806).xyz * (mix(half4(_780).xxx, half4(_780).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_780).y) - half(1.0))))), half4(_881).xyz, half3(fma(half(0.959999978542327880859375), (_857 * _857) * _854, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_848, half(1.0)));
     return out;
 }
 

@@ -132,6 +132,7 @@ vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 shading_clear_coat_normal;
+float shading_clear_coat_attenuation=1.0;
 float clear_coat_strength(MaterialInputs material){
 return clamp(material.clearCoat,0.0,1.0);
 }
@@ -146,18 +147,19 @@ return 0.04+0.96*(f2*f2*f);
 vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
 float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
+shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
 return mix(base,coat,Fc);
 }
 float visibility_kelemen(float LoH){
 return 0.25/max(LoH*LoH,6.103515625e-5);
 }
-vec3 clear_coat_direct(MaterialInputs material,vec3 l,vec3 h,float LoH,vec3 lightColor,out float Fc){
+vec3 clear_coat_direct(MaterialInputs material,vec3 l,vec3 h,float LoH,vec3 lightColor){
 vec3 n=shading_clear_coat_normal;
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float r=clear_coat_perceptual_roughness(material);
-Fc=clear_coat_fresnel(LoH)*clear_coat_strength(material);
+float Fc=clear_coat_fresnel(LoH)*clear_coat_strength(material);
 float DV=min(distribution_ggx(r*r,NoH,n,h)*visibility_kelemen(LoH),65504.0);
 return DV*Fc*(lightColor*NoL);
 }
@@ -191,9 +193,8 @@ float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
-float coatFresnel;
-vec3 coat=clear_coat_direct(material,l,h,LoH,lightColor,coatFresnel);
-irradiance*=1.0-coatFresnel;
+vec3 coat=clear_coat_direct(material,l,h,LoH,lightColor);
+irradiance*=shading_clear_coat_attenuation;
 vec3 diffuseColor=material_diffuse_color(material);
 return min((diffuseColor*diffuse_lambert()+specular)*irradiance+coat,65504.0);
 }

@@ -41,6 +41,7 @@ params;
 uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -104,6 +105,26 @@ return mix(dfg.xxx,dfg.yyy,f0);
 }
 vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
+}
+vec3 shading_clear_coat_normal;
+float shading_clear_coat_attenuation=1.0;
+float clear_coat_strength(MaterialInputs material){
+return clamp(material.clearCoat,0.0,1.0);
+}
+float clear_coat_perceptual_roughness(MaterialInputs material){
+return clamp(material.clearCoatRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
+}
+float clear_coat_fresnel(float cosTheta){
+float f=1.0-cosTheta;
+float f2=f*f;
+return 0.04+0.96*(f2*f2*f);
+}
+vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
+vec3 n=shading_clear_coat_normal;
+float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
+shading_clear_coat_attenuation=1.0-Fc;
+vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
+return mix(base,coat,Fc);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -184,6 +205,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
+shading_clear_coat_normal=shading_normal;
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
@@ -191,5 +213,6 @@ highp vec3 l=frame.lightDirection.xyz;
 color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));
 color=add_light(color,shade_punctual(material,frame.punctualLights[1]));
+color=clear_coat_layer(material,color,shading_view);
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }

@@ -31,17 +31,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _347 = normalize(half3(in.v_normal));
-    float3 _351 = fast::normalize(in.v_toEye);
-    half _497 = max(dot(_347, half3(_351)), half(9.9999997473787516355514526367188e-05));
-    half3 _501 = reflect(-half3(_351), _347);
-    float4 _536 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_497, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _562 = facet_environment.sample(facet_environmentSmplr, float3(_501), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _608 = half(1.0) - _497;
-    half _611 = _608 * _608;
-    float4 _635 = facet_environment.sample(facet_environmentSmplr, float3(_501), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _602 = mix(half4(_562).xyz * (mix(half4(_536).xxx, half4(_536).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_536).y) - half(1.0))))), half4(_635).xyz, half3(fma(half(0.959999978542327880859375), (_611 * _611) * _608, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_602, half(1.0)));
+    half3 _351 = normalize(half3(in.v_normal));
+    float3 _355 = fast::normalize(in.v_toEye);
+    half _501 = max(dot(_351, half3(_355)), half(9.9999997473787516355514526367188e-05));
+    half3 _505 = reflect(-half3(_355), _351);
+    float4 _540 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_501, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _566 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _614 = half(1.0) - _501;
+    half _617 = _614 * _614;
+    float4 _641 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _608 = mix(half4(_566).xyz * (mix(half4(_540).xxx, half4(_540).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_540).y) - half(1.0))))), half4(_641).xyz, half3(fma(half(0.959999978542327880859375), (_617 * _617) * _614, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_608, half(1.0)));
     return out;
 }
 

@@ -105,6 +105,7 @@ vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 shading_clear_coat_normal;
+float shading_clear_coat_attenuation=1.0;
 float clear_coat_strength(MaterialInputs material){
 return clamp(material.clearCoat,0.0,1.0);
 }
@@ -119,6 +120,7 @@ return 0.04+0.96*(f2*f2*f);
 vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
 float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
+shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
 return mix(base,coat,Fc);
 }

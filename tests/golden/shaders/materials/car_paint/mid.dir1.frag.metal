@@ -50,25 +50,25 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _542 = normalize(half3(in.v_normal));
-    float3 _546 = fast::normalize(in.v_toEye);
-    half _712 = max(dot(_542, half3(_546)), half(9.9999997473787516355514526367188e-05));
-    half3 _716 = reflect(-half3(_546), _542);
-    float4 _751 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_712, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _770 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_751).y) - half(1.0)));
-    float4 _777 = facet_environment.sample(facet_environmentSmplr, float3(_716), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _594 = half4(frame.lightDirection).xyz;
-    half3 _884 = normalize(half3(_546) + _594);
-    half _835 = clamp(dot(_542, _594), half(0.0), half(1.0));
-    half3 _911 = cross(_542, _884);
-    half _914 = clamp(dot(_542, _884), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _931 = max(mix((half(2.0) * _835) * _712, _835 + _712, half(params.facet_alpha)), half(0.000244140625));
-    half _938 = (half(1024.0) * half(params.facet_alpha)) / (fma(_914, _914, dot(_911, _911)) * (half(6433.98193359375) * _931));
-    half _987 = half(1.0) - _712;
-    half _990 = _987 * _987;
-    float4 _1014 = facet_environment.sample(facet_environmentSmplr, float3(_716), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _981 = mix(fma(half4(_777).xyz, mix(half4(_751).xxx, half4(_751).yyy, half3(float3(params.facet_f0))) * _770, min(((half3(float3(params.facet_f0)) * min(_938 * (_938 * (half(6.283185482025146484375) * _931)), half(65504.0))) * _770) * (half4(frame.lightColor).xyz * _835), half3(float3(65504.0)))), half4(_1014).xyz, half3(fma(half(0.959999978542327880859375), (_990 * _990) * _987, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_981, half(1.0)));
+    half3 _546 = normalize(half3(in.v_normal));
+    float3 _550 = fast::normalize(in.v_toEye);
+    half _716 = max(dot(_546, half3(_550)), half(9.9999997473787516355514526367188e-05));
+    half3 _720 = reflect(-half3(_550), _546);
+    float4 _755 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_716, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _774 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_755).y) - half(1.0)));
+    float4 _781 = facet_environment.sample(facet_environmentSmplr, float3(_720), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _598 = half4(frame.lightDirection).xyz;
+    half3 _888 = normalize(half3(_550) + _598);
+    half _839 = clamp(dot(_546, _598), half(0.0), half(1.0));
+    half3 _915 = cross(_546, _888);
+    half _918 = clamp(dot(_546, _888), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _935 = max(mix((half(2.0) * _839) * _716, _839 + _716, half(params.facet_alpha)), half(0.000244140625));
+    half _942 = (half(1024.0) * half(params.facet_alpha)) / (fma(_918, _918, dot(_915, _915)) * (half(6433.98193359375) * _935));
+    half _993 = half(1.0) - _716;
+    half _996 = _993 * _993;
+    float4 _1020 = facet_environment.sample(facet_environmentSmplr, float3(_720), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _987 = mix(fma(half4(_781).xyz, mix(half4(_755).xxx, half4(_755).yyy, half3(float3(params.facet_f0))) * _774, min(((half3(float3(params.facet_f0)) * min(_942 * (_942 * (half(6.283185482025146484375) * _935)), half(65504.0))) * _774) * (half4(frame.lightColor).xyz * _839), half3(float3(65504.0)))), half4(_1020).xyz, half3(fma(half(0.959999978542327880859375), (_996 * _996) * _993, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_987, half(1.0)));
     return out;
 }
 

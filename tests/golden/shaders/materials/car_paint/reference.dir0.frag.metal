@@ -31,14 +31,14 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _484 = fast::normalize(in.v_normal);
-    float3 _488 = fast::normalize(in.v_toEye);
-    float _737 = fast::max(dot(_484, _488), 9.9999997473787516355514526367188e-05);
-    float3 _741 = reflect(-_488, _484);
-    float4 _776 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_737, params.facet_perceptualRoughness), level(0.0));
-    float _848 = 1.0 - _737;
-    float _851 = _848 * _848;
-    out.fragColor = float4(mix(facet_environment.sample(facet_environmentSmplr, _741, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_776.xxx, _776.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _776.y) - 1.0)))), facet_environment.sample(facet_environmentSmplr, _741, level(fast::clamp(params.coatRoughness, 0.08900000154972076416015625, 1.0) * 4.0)).xyz, float3(fma(0.959999978542327880859375, (_851 * _851) * _848, 0.039999999105930328369140625) * fast::clamp(params.coat, 0.0, 1.0))), 1.0);
+    float3 _488 = fast::normalize(in.v_normal);
+    float3 _492 = fast::normalize(in.v_toEye);
+    float _741 = fast::max(dot(_488, _492), 9.9999997473787516355514526367188e-05);
+    float3 _745 = reflect(-_492, _488);
+    float4 _780 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_741, params.facet_perceptualRoughness), level(0.0));
+    float _854 = 1.0 - _741;
+    float _857 = _854 * _854;
+    out.fragColor = float4(mix(facet_environment.sample(facet_environmentSmplr, _745, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_780.xxx, _780.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _780.y) - 1.0)))), facet_environment.sample(facet_environmentSmplr, _745, level(fast::clamp(params.coatRoughness, 0.08900000154972076416015625, 1.0) * 4.0)).xyz, float3(fma(0.959999978542327880859375, (_857 * _857) * _854, 0.039999999105930328369140625) * fast::clamp(params.coat, 0.0, 1.0))), 1.0);
     return out;
 }
 
