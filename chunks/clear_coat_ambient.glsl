@@ -25,7 +25,6 @@
 // Two tiers' forms share this file (docs/material-models.md):
 //   ggx_kelemen (reference, high): clear_coat_layer over the ambient terms only; each light adds
 //     its own lobe and attenuates its base by Fc(l·h) (clear_coat_ggx_kelemen.glsl).
-//   fused (an option): as ggx_kelemen, each light's lobe from clear_coat_fused.glsl.
 //   ambient (mid, low): clear_coat_layer over the whole base, lights included: one Fresnel at
 //     n_c·v and one environment read, no lobe per light (the coat's sharp highlight of the sun is
 //     lost; its error and cost against the other forms are in docs/material-models.md).

@@ -159,7 +159,7 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     // (saturateMediump is an identity in the highp `reference`).
     vec3 irradiance = lightColor * NoL;
 #if defined(FACET_CLEAR_COAT_LOBE)
-    // Under a clear coat (clear_coat_ggx_kelemen.glsl, clear_coat_fused.glsl): the base is lit through it, × (1 − Fc(n_c·v)),
+    // Under a clear coat (clear_coat_ggx_kelemen.glsl): the base is lit through it, × (1 − Fc(n_c·v)),
     // and the coat adds its own lobe (finite: ≤ 65504 · E · n·l, saturated with the sum below).
     vec3 coat = clear_coat_direct(material, l, h, LoH, lightColor);
     irradiance *= shading_clear_coat_attenuation;

@@ -39,9 +39,6 @@
 #if defined(FACET_CLEAR_COAT_GGX_KELEMEN)
 #include "clear_coat_ggx_kelemen.glsl"
 #endif
-#if defined(FACET_CLEAR_COAT_FUSED)
-#include "clear_coat_fused.glsl"
-#endif
 #include "shading_standard.glsl"
 #include "shading_ambient.glsl"
 #include "output_blending.glsl"

@@ -184,16 +184,12 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     s += "#define FACET_MATERIAL_AMBIENT_OCCLUSION 1\n";
   if (writesClearCoat(in)) {
     const char* forms[] = {"its GGX/Kelemen lobe per light and its environment",
-                           "its GGX/Kelemen lobe in one division, Fresnel at n.v, and its environment",
                            "its environment over the lit base, no lobe per light", "dropped in this tier"};
     s += "// Clear coat: " + std::string(permutations::kClearCoatModelNames[int(in.tier.clearCoat)]) + ", " +
          forms[int(in.tier.clearCoat)] + " (docs/material-models.md).\n";
-    if (in.tier.clearCoat == permutations::ClearCoatModel::GgxKelemen) s += "#define FACET_CLEAR_COAT_GGX_KELEMEN 1\n";
-    if (in.tier.clearCoat == permutations::ClearCoatModel::Fused) s += "#define FACET_CLEAR_COAT_FUSED 1\n";
-    // The forms with a lobe per light: the base under the coat is attenuated before any light.
-    if (in.tier.clearCoat == permutations::ClearCoatModel::GgxKelemen ||
-        in.tier.clearCoat == permutations::ClearCoatModel::Fused)
-      s += "#define FACET_CLEAR_COAT_LOBE 1\n";
+    // FACET_CLEAR_COAT_LOBE: a lobe per light (the base under the coat is attenuated before any light).
+    if (in.tier.clearCoat == permutations::ClearCoatModel::GgxKelemen)
+      s += "#define FACET_CLEAR_COAT_GGX_KELEMEN 1\n#define FACET_CLEAR_COAT_LOBE 1\n";
     if (in.tier.clearCoat == permutations::ClearCoatModel::Ambient) s += "#define FACET_CLEAR_COAT_AMBIENT 1\n";
     if (usesClearCoatNormal(in)) s += "#define FACET_MATERIAL_CLEAR_COAT_NORMAL 1\n";
   }

@@ -55,7 +55,7 @@ const TierChoices& tierChoices() {
       {"reference", "high", "mid", "low"},
       {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}},
        {"diffuse", {"pixel", "vertex"}},
-       {"clear_coat", {"ggx_kelemen", "fused", "ambient", "none"}}},
+       {"clear_coat", {"ggx_kelemen", "ambient", "none"}}},
   };
   return choices;
 }

@@ -470,7 +470,7 @@ TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
 // The clear coat's chunks with a minimal MaterialInputs, and the prefiltered environment replaced
 // by a constant white one (a white furnace for clear_coat_layer).
 std::vector<std::string> clearCoatChunks() {
-  std::vector<std::string> out = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl"});
+  std::vector<std::string> out = chunks({"precision.glsl", "math.glsl"});
   out.push_back(
       "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
       "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n");
@@ -478,21 +478,17 @@ std::vector<std::string> clearCoatChunks() {
   return out;
 }
 
-// A coat lobe chunk's f_c · E · n·l for a unit light, l in the plane of v on the mirror side
+// The coat's lobe f_c · E · n·l for a unit light, l in the plane of v on the mirror side
 // (φ = π) and towards the viewer (φ = 0), over coat roughness × n·v × n·l, against the double
 // model (standard_model.h) with the chunks' fp16 bounds: (l·h)² floored at 2^-14 and D · V
-// saturated at 65504 (the chunks run here without FACET_PRECISION_HIGHP). Fresnel at l·h
-// (ggx_kelemen) or at n·v, the layer's (fused: the attenuation set as clear_coat_layer sets it).
-void checkClearCoatLobe(const char* chunk, bool fresnelAtNoV, double relative) {
+// saturated at 65504 (the chunk runs here without FACET_PRECISION_HIGHP). 1e-5 relative: D · V_K
+// in one division (k rounded twice), Schlick by products; no cancellation.
+TEST(Chunks, ClearCoatLobeMatchesReference) {
   GpuEvalRequest req;
   req.chunks = clearCoatChunks();
-  req.chunks.pop_back();  // clear_coat_ggx_kelemen.glsl, replaced by the chunk under test
-  for (std::string& text : chunks({chunk})) req.chunks.push_back(text);
-  // in0 = (l, coat roughness), in1 = (h, l·h), formed in double on the CPU (n = +z); v = 2 (l·h) h − l.
+  // in0 = (l, coat roughness), in1 = (h, l·h), formed in double on the CPU (n = +z).
   req.body = R"(
     shading_clear_coat_normal = vec3(0.0, 0.0, 1.0);
-    float NoV = 2.0 * in1.w * in1.z - in0.z;
-    shading_clear_coat_attenuation = 1.0 - clear_coat_fresnel(max(NoV, MIN_N_DOT_V));
     result.x = clear_coat_direct(MaterialInputs(1.0, in0.w), in0.xyz, in1.xyz, in1.w, vec3(1.0)).x;)";
   struct Point {
     double r, NoV, NoL, NoH, LoH;
@@ -520,20 +516,13 @@ void checkClearCoatLobe(const char* chunk, bool fresnelAtNoV, double relative) {
       double rc = std::clamp(a.r, 0.089, 1.0);
       double dv = reference::distributionGgx(rc * rc, a.NoH) * 0.25 / std::max(a.LoH * a.LoH, 1.0 / 16384.0);
       dv = std::min(dv, kMediumpMax);
-      double fresnel = reference::fresnelClearCoat(fresnelAtNoV ? std::max(a.NoV, 1e-4) : a.LoH);
-      double ref = dv * fresnel * a.NoL;
-      expectClose(out[i].x, ref, relative, 1e-7,
-                  std::string(chunk) + " r=" + std::to_string(a.r) + " NoV=" + std::to_string(a.NoV) +
+      double ref = dv * reference::fresnelClearCoat(a.LoH) * a.NoL;
+      expectClose(out[i].x, ref, 1e-5, 1e-7,
+                  "clear coat r=" + std::to_string(a.r) + " NoV=" + std::to_string(a.NoV) +
                       " NoL=" + std::to_string(a.NoL) + " NoH=" + std::to_string(a.NoH));
     }
   }
 }
-
-// 1e-5 relative: D's Lagrange form, one division in V, three products; no cancellation.
-TEST(Chunks, ClearCoatLobeMatchesReference) { checkClearCoatLobe("clear_coat_ggx_kelemen.glsl", false, 1e-5); }
-
-// The same bound holds for the fused single division (k rounded twice, no cancellation either).
-TEST(Chunks, ClearCoatFusedLobeMatchesReference) { checkClearCoatLobe("clear_coat_fused.glsl", true, 1e-5); }
 
 // clear_coat_layer in a white furnace (the environment 1 everywhere): a base that reflects b ≤ 1
 // comes out as mix(b, 1, Fc) ≤ 1, with Fc = Fc(n·v) · strength; and it leaves 1 − Fc for the lights.

@@ -30,14 +30,12 @@ enum class AmbientModel { SplitSum, Analytic, TwoMip };
 //   GgxKelemen  the coat's own GGX lobe with Kelemen's visibility and Schlick's Fresnel at f0 0.04
 //               for every light, and its prefiltered environment at its roughness; the base
 //               lit through it × (1 − Fc(n·v)) (chunks/clear_coat_ggx_kelemen.glsl, clear_coat_ambient.glsl)
-//   Fused       the same lobe in one division with Fresnel at n_c·v, the layer's
-//               (chunks/clear_coat_fused.glsl)
 //   Ambient     the coat's environment only, over the whole base × (1 − Fc(n·v)): no lobe per light
 //               (chunks/clear_coat_ambient.glsl)
 //   None        the coat dropped from the shader
-enum class ClearCoatModel { GgxKelemen, Fused, Ambient, None };
+enum class ClearCoatModel { GgxKelemen, Ambient, None };
 // The material language's names, indexed by ClearCoatModel (`tier mid { clear_coat = none }`).
-inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "fused", "ambient", "none"};
+inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "ambient", "none"};
 static_assert(sizeof kClearCoatModelNames / sizeof *kClearCoatModelNames == size_t(ClearCoatModel::None) + 1,
               "one name per ClearCoatModel, in its order");
 
