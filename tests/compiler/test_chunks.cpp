@@ -558,10 +558,9 @@ TEST(Reference, ClearCoatLayeredFurnaceIsAtMostOne) {
   double worstView = 0, worstHalfVector = 0;
   for (double r : {0.089, 0.2, 0.4, 0.6, 0.8, 1.0})
     for (double NoV : {1.0, 0.7, 0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01}) {
-      worstView = std::max(worstView,
-                           reference::clearCoatLayeredAlbedo(r, NoV, reference::CoatAttenuation::View));
-      worstHalfVector = std::max(
-          worstHalfVector, reference::clearCoatLayeredAlbedo(r, NoV, reference::CoatAttenuation::HalfVector));
+      worstView = std::max(worstView, reference::clearCoatLayeredAlbedo(r, NoV, reference::CoatAttenuation::View));
+      worstHalfVector =
+          std::max(worstHalfVector, reference::clearCoatLayeredAlbedo(r, NoV, reference::CoatAttenuation::HalfVector));
     }
   std::printf("clear coat + white base, layered albedo: max %.5f (1 - Fc(n.v)), %.5f (1 - Fc(l.h))\n", worstView,
               worstHalfVector);

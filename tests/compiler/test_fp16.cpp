@@ -413,8 +413,9 @@ TEST(Fp16Shading, ClearCoatLobeStaysFiniteAtItsHazards) {
   GpuEvalRequest r;
   r.chunks = shadingChunks("specular_ggx_smith.glsl", false);
   r.chunks.resize(r.chunks.size() - 1);  // no shading_standard.glsl: the coat's own chunks instead
-  r.chunks[0] = "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
-                "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n";
+  r.chunks[0] =
+      "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
+      "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n";
   for (const char* f : {"clear_coat_ambient.glsl", "clear_coat_ggx_kelemen.glsl"}) {
     std::string text = test::readText(test::sourceDir() + "/chunks/" + f), kept, line;
     std::istringstream lines(text);
@@ -458,9 +459,9 @@ TEST(Fp16Shading, ClearCoatLobeStaysFiniteAtItsHazards) {
     glm::dvec3 v(r.in0[i]), l(r.in1[i]), h = glm::normalize(v + l);
     double LoH = std::clamp(glm::dot(l, h), 0.0, 1.0), NoL = std::clamp(l.z, 0.0, 1.0);
     double rc = std::clamp(p.r, 0.089, 1.0);
-    double dv = std::min(reference::distributionGgx(rc * rc, std::clamp(h.z, 0.0, 1.0)) * 0.25 /
-                             std::max(LoH * LoH, 1.0 / 16384.0),
-                         65504.0);
+    double dv = std::min(
+        reference::distributionGgx(rc * rc, std::clamp(h.z, 0.0, 1.0)) * 0.25 / std::max(LoH * LoH, 1.0 / 16384.0),
+        65504.0);
     double expected = dv * reference::fresnelClearCoat(LoH) * double(light) * NoL;
     std::string where = "coat roughness " + std::to_string(p.r) + " n.v " + std::to_string(v.z) + " n.l " +
                         std::to_string(l.z) + " l.h " + std::to_string(LoH);
@@ -882,7 +883,8 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
         clearCoatRoughness = params.coatRoughness
     }
 })";
-  const std::string plainDir = test::scratchDir("fp16-coat-plain"), emulatedDir = test::scratchDir("fp16-coat-emulated");
+  const std::string plainDir = test::scratchDir("fp16-coat-plain"),
+                    emulatedDir = test::scratchDir("fp16-coat-emulated");
   for (auto [dir, emulate] : {std::pair{&plainDir, false}, {&emulatedDir, true}}) {
     auto built = build(material, emulate);
     ASSERT_TRUE(built);
@@ -890,19 +892,17 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
     ASSERT_TRUE(package::writeFile(*dir + "/coat_case.matpkg", package::write(built->package), &error)) << error;
   }
   const std::pair<const char*, std::string> scenes[] = {
-      {"coat_frontal",
-       R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN(
-           "[-0.4, -0.55, -0.73]") R"(,
+      {"coat_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                           "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
          "objects": [
            {"material": "coat_case", "position": [-1.1, 0, 0], "params": {"coatRoughness": 0}},
            {"material": "coat_case", "position": [1.1, 0, 0], "params": {"coatRoughness": 0.3, "roughness": 0.2}}
          ]})"},
-      {"coat_grazing_glint",
-       R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN(
-           "[0.0, -0.006, 1.0]") R"(,
+      {"coat_grazing_glint", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
          "objects": [{"material": "coat_case", "position": [0, -1000, 0], "radius": 1000}]})"},
-      {"coat_grazing_rims",
-       R"({"width": 256, "height": 256, )" FACET_CAMERA("[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.85, 0.2, 0.5]") R"(,
+      {"coat_grazing_rims", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.85, 0.2, 0.5]") R"(,
          "objects": [
            {"material": "coat_case", "position": [-1.1, 0, 0]},
            {"material": "coat_case", "position": [1.1, 0, 0], "params": {"coatRoughness": 0.2}}
@@ -927,9 +927,10 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
     render("high", emulatedDir, &emulated);
     ASSERT_FALSE(HasFatalFailure());
     Comparison own = compare(emulated, plain), ref = compare(emulated, reference);
-    std::printf("fp16 clear coat %-20s high fp16-emulated vs high fp32: PSNR %5.1f dB, max |dHDR| %9.4g | vs reference: "
-                "%5.1f dB; NaN/Inf %zu, black-where-lit %zu\n",
-                name, own.psnr, own.maxAbsHdr, ref.psnr, own.nonFinite, own.blackWhereLit);
+    std::printf(
+        "fp16 clear coat %-20s high fp16-emulated vs high fp32: PSNR %5.1f dB, max |dHDR| %9.4g | vs reference: "
+        "%5.1f dB; NaN/Inf %zu, black-where-lit %zu\n",
+        name, own.psnr, own.maxAbsHdr, ref.psnr, own.nonFinite, own.blackWhereLit);
     EXPECT_EQ(own.nonFinite, 0u);
     EXPECT_EQ(own.blackWhereLit, 0u);
     EXPECT_GE(own.psnr, 50.0);
