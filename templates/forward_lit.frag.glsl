@@ -6,7 +6,7 @@
 #include "math.glsl"
 #include "precision.glsl"
 #include "facet:material"
-#if defined(FACET_MATERIAL_NORMAL)
+#if defined(FACET_MATERIAL_NORMAL) || defined(FACET_MATERIAL_CLEAR_COAT_NORMAL)
 #include "normal_mapping.glsl"
 #endif
 #include "diffuse_lambert.glsl"
@@ -17,7 +17,10 @@
 // The assembler places each chunk once, at its first #include, whatever the #if around it: a
 // chunk shared by several ambient models is included outside the conditionals.
 #include "environment_cube.glsl"
-#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC)
+// (The clear coat reads the prefiltered environment at its own roughness whatever the tier's
+// ambient model.)
+#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC) || defined(FACET_CLEAR_COAT_LOBE) || \
+    defined(FACET_CLEAR_COAT_AMBIENT)
 #include "ibl_prefiltered.glsl"
 #endif
 #if defined(FACET_IBL_SPLIT_SUM)
@@ -28,6 +31,13 @@
 #endif
 #if defined(FACET_IBL_TWO_MIP)
 #include "ibl_two_mip.glsl"
+#endif
+// The clear coat's forms (docs/material-models.md); a tier that drops it includes neither.
+#if defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
+#include "clear_coat_ambient.glsl"
+#endif
+#if defined(FACET_CLEAR_COAT_GGX_KELEMEN)
+#include "clear_coat_ggx_kelemen.glsl"
 #endif
 #include "shading_standard.glsl"
 #include "shading_ambient.glsl"
@@ -53,6 +63,11 @@ void main() {
     shading_view = shading_view_highp;
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
+#if defined(FACET_MATERIAL_CLEAR_COAT_NORMAL)
+    shading_clear_coat_normal = tangent_to_world(material.clearCoatNormal);
+#elif defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
+    shading_clear_coat_normal = shading_normal;  // the interpolated one: a base normal map stays under the coat
+#endif
 #if defined(FACET_MATERIAL_NORMAL)
     // vertex.normal reads in the surface program saw the interpolated normal; shading uses the
     // mapped one. Per-vertex diffuse (mid, low) was lit before any map: it keeps the vertex normal.
@@ -69,6 +84,10 @@ void main() {
     color = linear_from_shading_space(color);
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
+#if defined(FACET_CLEAR_COAT_LOBE)
+    // The ambient base under the coat, and the coat's environment; each light layers its own.
+    color = clear_coat_layer(material, color, shading_view);
+#endif
 #if defined(FACET_DIRECTIONAL_LIGHT)
     // A unit vector by the ABI (shader_abi.h FrameUniforms::lightDirection): the runtime
     // normalizes it once per frame on the CPU instead of every pixel doing so.
@@ -84,6 +103,10 @@ void main() {
 #if FACET_POINT_LIGHTS > 2
     color = add_light(color, shade_punctual(material, frame.punctualLights[2]));
     color = add_light(color, shade_punctual(material, frame.punctualLights[3]));
+#endif
+#if defined(FACET_CLEAR_COAT_AMBIENT)
+    // The whole lit base under the coat, and the coat's environment (no lobe per light).
+    color = clear_coat_layer(material, color, shading_view);
 #endif
     fragColor = blend_output(add_light(color, linear_from_shading_space(material.emissive)), material.alpha);
 }

@@ -42,6 +42,23 @@ bool usesNormalOutput(const AssemblyInput& in) {
   return in.material.shading == "lit" && in.material.surface.outputs.count("normal") > 0;
 }
 
+// A material writing `clearCoat` has a coat (lit only: the checker drops it from unlit ones); the
+// tier says in which form, or drops it (permutations::ClearCoatModel).
+bool writesClearCoat(const AssemblyInput& in) {
+  return in.material.shading == "lit" && in.material.surface.outputs.count("clearCoat") > 0;
+}
+
+bool shadesClearCoat(const AssemblyInput& in) {
+  return writesClearCoat(in) && in.tier.clearCoat != permutations::ClearCoatModel::None;
+}
+
+bool usesClearCoatNormal(const AssemblyInput& in) {
+  return shadesClearCoat(in) && in.material.surface.outputs.count("clearCoatNormal") > 0;
+}
+
+// Tangent-space outputs need the per-pixel tangent frame (normal_mapping.glsl).
+bool needsTangentFrame(const AssemblyInput& in) { return usesNormalOutput(in) || usesClearCoatNormal(in); }
+
 // The world position reaches the fragment stage only where something there reads it: point
 // lights, or a surface program reading vertex.worldPosition. Otherwise the vertex stage sends the
 // vector to the eye instead, camera − position: affine in the position, so its interpolation is
@@ -51,7 +68,7 @@ bool worldPositionVarying(const AssemblyInput& in) {
 }
 
 bool needs(const AssemblyInput& in, const OptionalInput& v) {
-  if (v.location == abi::kAttribTangent) return usesNormalOutput(in);
+  if (v.location == abi::kAttribTangent) return needsTangentFrame(in);
   return in.surface.attributes.count(std::string(v.name())) > 0;
 }
 
@@ -165,6 +182,17 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     s += "#define FACET_TO_EYE v_toEye\n";
   if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0)
     s += "#define FACET_MATERIAL_AMBIENT_OCCLUSION 1\n";
+  if (writesClearCoat(in)) {
+    const char* forms[] = {"its GGX/Kelemen lobe per light and its environment",
+                           "its environment over the lit base, no lobe per light", "dropped in this tier"};
+    s += "// Clear coat: " + std::string(permutations::kClearCoatModelNames[int(in.tier.clearCoat)]) + ", " +
+         forms[int(in.tier.clearCoat)] + " (docs/material-models.md).\n";
+    // FACET_CLEAR_COAT_LOBE: a lobe per light (the base under the coat is attenuated before any light).
+    if (in.tier.clearCoat == permutations::ClearCoatModel::GgxKelemen)
+      s += "#define FACET_CLEAR_COAT_GGX_KELEMEN 1\n#define FACET_CLEAR_COAT_LOBE 1\n";
+    if (in.tier.clearCoat == permutations::ClearCoatModel::Ambient) s += "#define FACET_CLEAR_COAT_AMBIENT 1\n";
+    if (usesClearCoatNormal(in)) s += "#define FACET_MATERIAL_CLEAR_COAT_NORMAL 1\n";
+  }
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
   if (in.material.blending != "opaque") s += "#define FACET_BLENDING_" + upper(in.material.blending) + " 1\n";
@@ -233,10 +261,16 @@ std::string vertexInputs(const AssemblyInput& in) {
 std::string materialSection(const AssemblyInput& in) {
   std::string s =
       "// Surface outputs; an output the material does not write keeps its default.\nstruct MaterialInputs {\n";
-  for (const ir::OutputInfo& o : ir::outputs()) s += "    " + std::string(ir::glslName(o.type)) + " " + o.name + ";\n";
+  // An output that exists only with another is a member only where the material writes that one
+  // (ir::OutputInfo::presentWith): other materials' shaders stay as they were.
+  auto member = [&](const ir::OutputInfo& o) {
+    return !o.presentWith || in.material.surface.outputs.count(o.presentWith) > 0;
+  };
+  for (const ir::OutputInfo& o : ir::outputs())
+    if (member(o)) s += "    " + std::string(ir::glslName(o.type)) + " " + o.name + ";\n";
   s += "};\n\nMaterialInputs material_defaults() {\n    MaterialInputs m;\n";
   for (const ir::OutputInfo& o : ir::outputs())
-    s += "    m." + std::string(o.name) + " = " + ir::glslConstant(o.type, o.defaultValue) + ";\n";
+    if (member(o)) s += "    m." + std::string(o.name) + " = " + ir::glslConstant(o.type, o.defaultValue) + ";\n";
   s += "    return m;\n}\n\n";
   s += "// The interpolated, normalized world-space normal (vertex.normal in the material), and the\n"
        "// unit vector from the surface to the eye (vertex.viewDirection).\nvec3 shading_normal;\nvec3 "

@@ -59,6 +59,12 @@ const std::vector<Axis>& axes() {
        [](const TierConfig& c) { return std::string(c.energyCompensation ? "on" : "off"); },
        [](TierConfig* c, const std::string& o) { c->energyCompensation = o == "on"; },
        [](const TierConfig& c) { return c.ambient == AmbientModel::SplitSum; }},
+      {"clear_coat",
+       {std::begin(permutations::kClearCoatModelNames), std::end(permutations::kClearCoatModelNames)},
+       [](const TierConfig& c) { return std::string(permutations::kClearCoatModelNames[int(c.clearCoat)]); },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "clear_coat", o); },
+       nullptr,
+       [](const ir::Material& m) { return m.shading == "lit" && m.surface.outputs.count("clearCoat") > 0; }},
   };
   return list;
 }
@@ -82,6 +88,7 @@ std::vector<Configuration> configurations(const ir::Material& material, const st
       continue;
     for (const Axis& axis : axes()) {
       if (axis.applies && !axis.applies(shipped.config)) continue;
+      if (axis.appliesToMaterial && !axis.appliesToMaterial(material)) continue;
       const std::string current = axis.get(shipped.config);
       for (const std::string& option : axis.options) {
         if (option == current) continue;

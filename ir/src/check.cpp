@@ -323,6 +323,14 @@ class Checker {
       module().outputs[s.name] = *value;
     }
     letsAhead_ = nullptr;
+    // Outputs that exist only with another (OutputInfo::presentWith): without it nothing reads them.
+    for (const OutputInfo& o : outputs()) {
+      if (!o.presentWith || !module().outputs.count(o.name) || module().outputs.count(o.presentWith)) continue;
+      diags_.warning(written.at(o.name),
+                     "output '" + std::string(o.name) + "' has no effect without '" + o.presentWith + "'",
+                     "unused-output");
+      module().outputs.erase(o.name);
+    }
   }
 
   // --- expressions ---

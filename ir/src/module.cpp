@@ -26,14 +26,20 @@ const AttributeInfo* findAttribute(std::string_view name) {
 const std::vector<OutputInfo>& outputs() {
   // Defaults follow Filament's material model: white, dielectric, fully rough, 4 % reflectance.
   static const std::vector<OutputInfo> list = {
-      {"baseColor", Type::Vec3, {1, 1, 1, 0}, false},
-      {"alpha", Type::Float, {1, 0, 0, 0}, false},
-      {"metallic", Type::Float, {0, 0, 0, 0}, true},
-      {"roughness", Type::Float, {1, 0, 0, 0}, true},
-      {"reflectance", Type::Float, {0.5, 0, 0, 0}, true},
-      {"normal", Type::Vec3, {0, 0, 1, 0}, true},  // tangent space: (0, 0, 1) is the interpolated normal
-      {"emissive", Type::Vec3, {0, 0, 0, 0}, false},
-      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}, true},
+      {"baseColor", Type::Vec3, {1, 1, 1, 0}, false, nullptr},
+      {"alpha", Type::Float, {1, 0, 0, 0}, false, nullptr},
+      {"metallic", Type::Float, {0, 0, 0, 0}, true, nullptr},
+      {"roughness", Type::Float, {1, 0, 0, 0}, true, nullptr},
+      {"reflectance", Type::Float, {0.5, 0, 0, 0}, true, nullptr},
+      {"normal", Type::Vec3, {0, 0, 1, 0}, true, nullptr},  // tangent space: (0, 0, 1) is the interpolated normal
+      {"emissive", Type::Vec3, {0, 0, 0, 0}, false, nullptr},
+      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}, true, nullptr},
+      // The clear coat (Filament's): strength 0..1, its perceptual roughness (Filament's default,
+      // a smooth coat) and its tangent-space normal ((0, 0, 1): the interpolated normal, not the
+      // base's mapped one).
+      {"clearCoat", Type::Float, {0, 0, 0, 0}, true, "clearCoat"},
+      {"clearCoatRoughness", Type::Float, {0, 0, 0, 0}, true, "clearCoat"},
+      {"clearCoatNormal", Type::Vec3, {0, 0, 1, 0}, true, "clearCoat"},
   };
   return list;
 }
@@ -47,7 +53,9 @@ const OutputInfo* findOutput(std::string_view name) {
 const TierChoices& tierChoices() {
   static const TierChoices choices = {
       {"reference", "high", "mid", "low"},
-      {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}}, {"diffuse", {"pixel", "vertex"}}},
+      {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}},
+       {"diffuse", {"pixel", "vertex"}},
+       {"clear_coat", {"ggx_kelemen", "ambient", "none"}}},
   };
   return choices;
 }

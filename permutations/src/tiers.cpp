@@ -13,7 +13,8 @@ TierConfig preset(Tier tier) {
               PrecisionPolicy::Highp,
               AmbientModel::SplitSum,
               3,
-              true};
+              true,
+              ClearCoatModel::GgxKelemen};
     case Tier::High:
       return {SpecularModel::GgxSmith,
               DiffuseModel::Pixel,
@@ -21,7 +22,8 @@ TierConfig preset(Tier tier) {
               PrecisionPolicy::Mediump,
               AmbientModel::SplitSum,
               3,
-              true};
+              true,
+              ClearCoatModel::GgxKelemen};
     case Tier::Mid:
       return {SpecularModel::FusedHammon,
               DiffuseModel::Vertex,
@@ -29,7 +31,8 @@ TierConfig preset(Tier tier) {
               PrecisionPolicy::Mediump,
               AmbientModel::SplitSum,
               3,
-              true};
+              true,
+              ClearCoatModel::Ambient};
     case Tier::Low:
       return {SpecularModel::Lut,
               DiffuseModel::Vertex,
@@ -37,7 +40,8 @@ TierConfig preset(Tier tier) {
               PrecisionPolicy::Mediump,
               AmbientModel::SplitSum,
               2,
-              true};
+              true,
+              ClearCoatModel::Ambient};
   }
   return {};
 }
@@ -54,6 +58,14 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
   if (axis == "diffuse" && (option == "pixel" || option == "vertex")) {
     config->diffuse = option == "pixel" ? DiffuseModel::Pixel : DiffuseModel::Vertex;
     return true;
+  }
+  if (axis == "clear_coat") {
+    for (size_t i = 0; i < std::size(kClearCoatModelNames); ++i) {
+      if (option == kClearCoatModelNames[i]) {
+        config->clearCoat = ClearCoatModel(i);
+        return true;
+      }
+    }
   }
   return false;
 }

@@ -402,6 +402,74 @@ TEST(Fp16Shading, FusedHammonGlintFollowsItsFormulaAtGrazingMirror) {
   }
 }
 
+// The clear coat's lobe (clear_coat_ggx_kelemen.glsl) fp16-emulated at its hazards: the grazing
+// mirror (h = n, l·h = n·l = n·v = c down to 0.001, D at its peak 1/(π α_c²) and V_K = 1/(4c²)),
+// n·l = 0 there, and v and l both grazing and nearly opposite off the mirror plane, where l·h is
+// 0.005 (its square subnormal in binary16, flushed to 0 without the chunk's 2^-14 floor, and
+// then k · (k · X) = inf · 0). The chunk's header says what fails without each of its bounds.
+// Expected: the chunk's formula in double, floor and saturation included, times the 110 000 lux
+// sun's 2.86 and n·l.
+TEST(Fp16Shading, ClearCoatLobeStaysFiniteAtItsHazards) {
+  GpuEvalRequest r;
+  r.chunks = shadingChunks("specular_ggx_smith.glsl", false);
+  r.chunks.resize(r.chunks.size() - 1);  // no shading_standard.glsl: the coat's own chunks instead
+  r.chunks[0] =
+      "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
+      "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n";
+  for (const char* f : {"clear_coat_ambient.glsl", "clear_coat_ggx_kelemen.glsl"}) {
+    std::string text = test::readText(test::sourceDir() + "/chunks/" + f), kept, line;
+    std::istringstream lines(text);
+    while (std::getline(lines, line))
+      if (line.rfind("#include", 0) != 0) kept += line + "\n";
+    r.chunks.push_back(kept);
+  }
+  r.highpInputs = true;
+  r.body = R"(
+        highp vec3 v = in0.xyz, l = in1.xyz;
+        highp vec3 h = normalize(v + l);
+        shading_clear_coat_normal = vec3(0.0, 0.0, 1.0);
+        float LoH = clamp(dot(l, h), 0.0, 1.0);
+        result = vec4(clear_coat_direct(MaterialInputs(1.0, in0.w), l, h, LoH, vec3(in1.w)), 0.0);
+)";
+  const float light = float(110000.0 / (1.2 * 256.0 / 0.008));
+  struct Point {
+    glm::dvec3 v, l;
+    double r;
+  };
+  std::vector<Point> points;
+  for (double rough : {0.0, 0.1, 0.3}) {
+    for (double c : {1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001}) {
+      double s = std::sqrt(1 - c * c);
+      points.push_back({{s, 0, c}, {-s, 0, c}, rough});
+    }
+    points.push_back({{std::sqrt(1 - 1e-8), 0, 1e-4}, {-1, 0, 0}, rough});  // n·l = 0
+    for (double phi : {0.01, 0.005}) {  // grazing, nearly opposite, off the mirror plane
+      double c = 1e-4, s = std::sqrt(1 - c * c);
+      points.push_back({{s, 0, c}, {-s * std::cos(phi), -s * std::sin(phi), c}, rough});
+    }
+  }
+  for (const Point& p : points) {
+    r.in0.push_back(glm::vec4(glm::vec3(p.v), float(p.r)));
+    r.in1.push_back(glm::vec4(glm::vec3(p.l), light));
+  }
+  auto out = runEmulated(r, true);
+  ASSERT_EQ(out.size(), points.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const Point& p = points[i];
+    glm::dvec3 v(r.in0[i]), l(r.in1[i]), h = glm::normalize(v + l);
+    double LoH = std::clamp(glm::dot(l, h), 0.0, 1.0), NoL = std::clamp(l.z, 0.0, 1.0);
+    double rc = std::clamp(p.r, 0.089, 1.0);
+    double dv = std::min(
+        reference::distributionGgx(rc * rc, std::clamp(h.z, 0.0, 1.0)) * 0.25 / std::max(LoH * LoH, 1.0 / 16384.0),
+        65504.0);
+    double expected = dv * reference::fresnelClearCoat(LoH) * double(light) * NoL;
+    std::string where = "coat roughness " + std::to_string(p.r) + " n.v " + std::to_string(v.z) + " n.l " +
+                        std::to_string(l.z) + " l.h " + std::to_string(LoH);
+    ASSERT_TRUE(std::isfinite(out[i].x)) << where << ": " << out[i].x;
+    EXPECT_NEAR(out[i].x, expected, 0.02 * expected + 1e-3) << where;
+  }
+}
+
 // The half vector where the light faces the eye (shading_standard.glsl, half_vector): v and l
 // nearly opposite, |v + l| = 2 l·h from 0.2 down to 0.002, the pair rotated about an oblique axis
 // so that their components do not round alike. v and l arrive highp as the templates pass them
@@ -794,6 +862,81 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
   }
   for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
   for (const auto& m : vkHalf->validationErrors()) ADD_FAILURE() << "Vulkan validation (float16 device): " << m;
+}
+
+// The clear coat's fp16 hazards (chunks/clear_coat_ggx_kelemen.glsl: D at the coat's roughness
+// floor, Kelemen's 1/(l·h)² at grazing) in `high`, fp16-emulated, against the same tier in fp32
+// (lavapipe: its highp form) and against `reference`: a smooth coat over a rough red metal,
+// (a) seen from the front under the sun, (b) the grazing glint (the camera skimming a large
+// coated sphere, the sun straight ahead: l·h → small, the coat's lobe at its peak near the
+// horizon), (c) grazing rims lit from behind. Pass: finite, ≥ 50 dB, no black where lit.
+TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
+  const char* material = R"(material coat_case {
+    shading lit
+    param roughness: float = 0.5 in [0, 1]
+    param coatRoughness: float = 0.0 in [0, 1]
+    surface {
+        baseColor = vec3(0.6, 0.05, 0.05)
+        metallic = 1.0
+        roughness = params.roughness
+        clearCoat = 1.0
+        clearCoatRoughness = params.coatRoughness
+    }
+})";
+  const std::string plainDir = test::scratchDir("fp16-coat-plain"),
+                    emulatedDir = test::scratchDir("fp16-coat-emulated");
+  for (auto [dir, emulate] : {std::pair{&plainDir, false}, {&emulatedDir, true}}) {
+    auto built = build(material, emulate);
+    ASSERT_TRUE(built);
+    std::string error;
+    ASSERT_TRUE(package::writeFile(*dir + "/coat_case.matpkg", package::write(built->package), &error)) << error;
+  }
+  const std::pair<const char*, std::string> scenes[] = {
+      {"coat_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                           "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+         "objects": [
+           {"material": "coat_case", "position": [-1.1, 0, 0], "params": {"coatRoughness": 0}},
+           {"material": "coat_case", "position": [1.1, 0, 0], "params": {"coatRoughness": 0.3, "roughness": 0.2}}
+         ]})"},
+      {"coat_grazing_glint", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+         "objects": [{"material": "coat_case", "position": [0, -1000, 0], "radius": 1000}]})"},
+      {"coat_grazing_rims", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.85, 0.2, 0.5]") R"(,
+         "objects": [
+           {"material": "coat_case", "position": [-1.1, 0, 0]},
+           {"material": "coat_case", "position": [1.1, 0, 0], "params": {"coatRoughness": 0.2}}
+         ]})"},
+  };
+  std::string error;
+  auto vk = runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  for (const auto& [name, json] : scenes) {
+    SCOPED_TRACE(name);
+    auto scene = runtime::parseScene(std::string(name) + ".json", json, &error);
+    ASSERT_TRUE(scene) << error;
+    auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out) {
+      scene->tier = tier;
+      auto frame = runtime::SceneFrame::prepare(*scene, dir, &error);
+      ASSERT_TRUE(frame) << error;
+      ASSERT_TRUE(vk->render(frame->frame(), out, &error)) << error;
+    };
+    runtime::FrameResult reference, plain, emulated;
+    render("reference", plainDir, &reference);
+    render("high", plainDir, &plain);
+    render("high", emulatedDir, &emulated);
+    ASSERT_FALSE(HasFatalFailure());
+    Comparison own = compare(emulated, plain), ref = compare(emulated, reference);
+    std::printf(
+        "fp16 clear coat %-20s high fp16-emulated vs high fp32: PSNR %5.1f dB, max |dHDR| %9.4g | vs reference: "
+        "%5.1f dB; NaN/Inf %zu, black-where-lit %zu\n",
+        name, own.psnr, own.maxAbsHdr, ref.psnr, own.nonFinite, own.blackWhereLit);
+    EXPECT_EQ(own.nonFinite, 0u);
+    EXPECT_EQ(own.blackWhereLit, 0u);
+    EXPECT_GE(own.psnr, 50.0);
+    EXPECT_GE(ref.psnr, 50.0);
+  }
+  for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Fp16HardCase, ::testing::ValuesIn(kHardCases),

@@ -610,3 +610,62 @@ TEST(Tiers, TheVectorToTheEyeReplacesTheWorldPositionWhereNothingReadsIt) {
   EXPECT_NE(text.find("%v_worldPosition"), std::string::npos);
   EXPECT_EQ(text.find("%v_toEye"), std::string::npos);
 }
+
+namespace {
+
+// The shipped GLSL ES text of a variant's stage.
+std::string esText(const facet::compiler::BuildResult& built, const std::string& key, Stage stage) {
+  for (const auto& v : built.package.variants) {
+    if (v.key != key) continue;
+    for (const auto& s : v.shaders)
+      if (s.stage == stage && s.target == facet::package::Target::GlslEs300) return {s.code.begin(), s.code.end()};
+  }
+  ADD_FAILURE() << "no " << key << " GLSL ES";
+  return {};
+}
+
+}  // namespace
+
+// The clear coat per tier (docs/material-models.md): reference and high shade its lobe per light
+// and its environment with four divisions in all (the coat's D · V_K is one); mid and low read its
+// environment only (one more texture sample, no lobe, no division); a tier told `clear_coat = none`
+// has no coat code at all, so it costs what the coat-less material costs; a material without
+// clearCoat has no coat code in any tier, and clearCoatNormal brings the tangent frame.
+TEST(Tiers, ClearCoatFormsPerTierAndNoCoatCodeWithoutIt) {
+  const std::string surface = "param rough: float = 0.4 in [0, 1]\n param coat: float = 1 in [0, 1]\n";
+  auto bare = facet::test::buildText("material m { " + surface + " surface { roughness = params.rough } }");
+  auto coated = facet::test::buildText("material m { " + surface +
+                                       " surface { roughness = params.rough\n clearCoat = params.coat } }");
+  auto dropped = facet::test::buildText("material m { tier low { clear_coat = none }\n " + surface +
+                                        " surface { roughness = params.rough\n clearCoat = params.coat } }");
+  auto mapped = facet::test::buildText("material m { " + surface +
+                                       " surface { roughness = params.rough\n clearCoat = params.coat\n "
+                                       "clearCoatNormal = normalize(vec3(0.1, 0.0, 1.0)) } }");
+  ASSERT_TRUE(bare && coated && dropped && mapped);
+  for (const auto& v : bare->package.variants)
+    EXPECT_EQ(esText(*bare, v.key, Stage::Fragment).find("clear"), std::string::npos) << v.key;
+  for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir1"}) {
+    SCOPED_TRACE(key);
+    const std::string text = esText(*coated, key, Stage::Fragment);
+    const bool lobe = std::string(key).rfind("reference", 0) == 0 || std::string(key).rfind("high", 0) == 0;
+    EXPECT_NE(text.find("clear_coat_layer"), std::string::npos);
+    EXPECT_EQ(text.find("clear_coat_direct") != std::string::npos, lobe);
+    auto with = costOf(spirvOf(*coated, key, Stage::Fragment)), without = costOf(spirvOf(*bare, key, Stage::Fragment));
+    EXPECT_EQ(with.textureSamples, without.textureSamples + 1);  // the coat's environment
+    EXPECT_EQ(with.divisions, without.divisions + (lobe ? 1u : 0u));
+    if (lobe) {
+      EXPECT_EQ(with.divisions, 4u);
+    }
+    EXPECT_GT(with.aluOps, without.aluOps);
+  }
+  const std::string low = esText(*dropped, "low.dir1", Stage::Fragment);
+  EXPECT_EQ(low.find("clear_coat"), std::string::npos);
+  auto droppedCost = costOf(spirvOf(*dropped, "low.dir1", Stage::Fragment));
+  auto bareCost = costOf(spirvOf(*bare, "low.dir1", Stage::Fragment));
+  EXPECT_EQ(droppedCost.aluOps, bareCost.aluOps);
+  EXPECT_EQ(droppedCost.scalarAluOps, bareCost.scalarAluOps);
+  EXPECT_EQ(droppedCost.textureSamples, bareCost.textureSamples);
+  EXPECT_EQ(esText(*coated, "high.dir1", Stage::Vertex).find("v_tangent"), std::string::npos);
+  EXPECT_NE(esText(*mapped, "high.dir1", Stage::Vertex).find("v_tangent"), std::string::npos);
+  EXPECT_NE(esText(*mapped, "high.dir1", Stage::Fragment).find("tangent_to_world"), std::string::npos);
+}

@@ -145,6 +145,14 @@ TEST(EvalConfigurations, ReferenceFirstThenEachTierAndItsSingleSwaps) {
   EXPECT_EQ(names.count("low:color_space=gamma_hack"), 1u);
   EXPECT_EQ(names.count("low:energy_compensation=on"), 0u);  // two-mip ambient: nothing to compensate
   EXPECT_EQ(facet::eval::fileStem("high:specular=zioma"), "high.specular-zioma");
+  // The clear coat is swapped only in materials that write clearCoat: elsewhere every form
+  // compiles the same shaders.
+  for (const auto& c : configs) EXPECT_NE(c.axis, std::string("clear_coat")) << c.name;
+  std::set<std::string> coatSwaps;
+  for (const auto& c : facet::eval::configurations(example("car_paint"), {Tier::High, Tier::Low}))
+    if (c.axis == std::string("clear_coat")) coatSwaps.insert(c.name);
+  EXPECT_EQ(coatSwaps, (std::set<std::string>{"high:clear_coat=ambient", "high:clear_coat=none",
+                                              "low:clear_coat=ggx_kelemen", "low:clear_coat=none"}));
   // A material's override is part of its tier as shipped.
   auto overridden = checked(
       "material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");

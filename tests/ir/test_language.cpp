@@ -195,6 +195,39 @@ TEST(Language, NormalMapsSampleAsVec3AndUnlitIgnoresLightingOutputs) {
   EXPECT_EQ(d.find("error"), std::string::npos) << d;
 }
 
+// The clear coat's roughness and normal count wherever clearCoat is written, before or after them;
+// without it they are dropped with a warning at their line, and the coat's tier choice is checked.
+TEST(Language, ClearCoatOutputsNeedClearCoat) {
+  std::string d;
+  auto coated = checkText(R"(material m {
+    tier low { clear_coat = none }
+    surface {
+        clearCoatRoughness = 0.2
+        clearCoat = 1.0
+    }
+}
+)",
+                          &d);
+  ASSERT_TRUE(coated) << d;
+  EXPECT_EQ(d, "");
+  EXPECT_EQ(coated->surface.outputs.count("clearCoatRoughness"), 1u);
+  auto bare = checkText(R"(material m {
+    surface {
+        clearCoatRoughness = 0.2
+    }
+}
+)",
+                        &d);
+  ASSERT_TRUE(bare) << d;
+  EXPECT_NE(d.find("test.mat:3:9: warning: output 'clearCoatRoughness' has no effect without 'clearCoat' "
+                   "[unused-output]"),
+            std::string::npos)
+      << d;
+  EXPECT_EQ(bare->surface.outputs.count("clearCoatRoughness"), 0u);
+  d = diagnosticsFor("material m { tier mid { clear_coat = ambiant }\n surface { clearCoat = 1.0 } }");
+  EXPECT_NE(d.find("error: unknown clear_coat option 'ambiant'; did you mean 'ambient'?"), std::string::npos) << d;
+}
+
 TEST(Language, TierOverridesAreCheckedWhereTheyAreWritten) {
   std::string d = diagnosticsFor(R"(material m {
     tier reference { specular = zioma }

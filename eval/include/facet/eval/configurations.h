@@ -30,6 +30,8 @@ struct Axis {
   void (*set)(permutations::TierConfig*, const std::string&);
   // Whether the axis means anything for this configuration (energy compensation: split-sum only).
   bool (*applies)(const permutations::TierConfig&) = nullptr;
+  // Whether the axis means anything for this material (the clear coat: materials writing clearCoat).
+  bool (*appliesToMaterial)(const ir::Material&) = nullptr;
 };
 const std::vector<Axis>& axes();
 

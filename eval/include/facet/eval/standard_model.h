@@ -2,6 +2,9 @@
 // the same formulas (not the same code): the ground truth the GPU images are checked against.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 namespace facet::reference {
@@ -15,6 +18,8 @@ struct Surface {
   double reflectance = 0.5;
   double ambientOcclusion = 1;
   glm::dvec3 emissive{0.0};
+  double clearCoat = 0;           // strength; 0: no coat
+  double clearCoatRoughness = 0;  // perceptual
 };
 
 // GGX D in the textbook form (the GPU uses the Lagrange form; equal in exact arithmetic).
@@ -32,6 +37,21 @@ inline double visibilitySmithGgxCorrelated(double alpha, double NoV, double NoL)
 }
 
 inline glm::dvec3 fresnelSchlick(glm::dvec3 f0, double LoH) { return f0 + (1.0 - f0) * std::pow(1.0 - LoH, 5.0); }
+
+// The clear coat (chunks/clear_coat_ambient.glsl, clear_coat_ggx_kelemen.glsl): Schlick at
+// f0 = 0.04 (IOR 1.5), f90 = 1, without the strength.
+inline double fresnelClearCoat(double cosTheta) { return 0.04 + 0.96 * std::pow(1.0 - cosTheta, 5.0); }
+
+// Kelemen and Szirmay-Kalos 2001: V = 1 / (4 (l·h)²), unclamped (the chunk's 2^-14 floor on (l·h)²
+// is an fp16 bound that acts only where n·v + n·l < 2^-6).
+inline double visibilityKelemen(double LoH) { return 0.25 / (LoH * LoH); }
+
+// The coat's lobe f_c = D(α_c) · V_K · Fc(l·h) · strength, α_c = r_c², r_c clamped as the chunk does.
+inline double clearCoatLobe(const Surface& s, double NoH, double LoH) {
+  double r = std::clamp(s.clearCoatRoughness, 0.089, 1.0);
+  return distributionGgx(r * r, NoH) * visibilityKelemen(LoH) * fresnelClearCoat(LoH) *
+         std::clamp(s.clearCoat, 0.0, 1.0);
+}
 
 // Outgoing pre-exposed radiance towards v, for one directional light (l towards the light,
 // lightColor pre-exposed) and a constant ambient radiance. specularScale is the tier's
@@ -53,7 +73,15 @@ inline glm::dvec3 shadeStandard(const Surface& s, glm::dvec3 n, glm::dvec3 v, gl
   glm::dvec3 specular = distributionGgx(alpha, NoH) * visibilitySmithGgxCorrelated(alpha, NoV, NoL) *
                         fresnelSchlick(f0, LoH) * specularScale;
   glm::dvec3 direct = (diffuseColor / kPi + specular) * lightColor * NoL;
-  return direct + diffuseColor * ambient * glm::clamp(s.ambientOcclusion, 0.0, 1.0) + s.emissive;
+  glm::dvec3 ambientTerm = diffuseColor * ambient * glm::clamp(s.ambientOcclusion, 0.0, 1.0);
+  if (s.clearCoat > 0) {
+    // The ggx_kelemen form, coat normal = n: the base × (1 − Fc(n·v)), the coat's lobe per light
+    // and, in a constant environment, the coat's prefiltered radiance is that constant.
+    double Fc = fresnelClearCoat(NoV) * std::clamp(s.clearCoat, 0.0, 1.0);
+    direct = direct * (1.0 - Fc) + clearCoatLobe(s, NoH, LoH) * lightColor * NoL;
+    ambientTerm = ambientTerm * (1.0 - Fc) + ambient * Fc;
+  }
+  return direct + ambientTerm + s.emissive;
 }
 
 }  // namespace facet::reference

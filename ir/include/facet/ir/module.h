@@ -69,6 +69,11 @@ struct OutputInfo {
   Type type;
   std::array<double, 4> defaultValue;
   bool litOnly;  // read by lighting only: an unlit material drops it (with a warning)
+  // An output that only exists with another: MaterialInputs holds it only in variants of
+  // materials that write `presentWith` (the clear coat's outputs, with `clearCoat`), so a material
+  // without that output compiles the shaders it compiled before the output existed. Written
+  // without it, it is dropped with a warning. nullptr: always a member.
+  const char* presentWith;
 };
 const std::vector<OutputInfo>& outputs();
 const OutputInfo* findOutput(std::string_view name);

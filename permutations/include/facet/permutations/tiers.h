@@ -24,6 +24,20 @@ enum class PrecisionPolicy { Highp, Mediump };
 //   TwoMip    two samples of the environment at fixed mips (0 and the last) lerped by roughness,
 //             times Zioma's 2015 environment BRDF (saturated): no variable lod, no table
 enum class AmbientModel { SplitSum, Analytic, TwoMip };
+// The clear coat of materials that write `clearCoat` (docs/material-models.md); a material without
+// it compiles the same shaders whatever this says. reference and high: GgxKelemen; mid and low:
+// Ambient, the form within their budget (half of high's coat cost in the mobile cost model).
+//   GgxKelemen  the coat's own GGX lobe with Kelemen's visibility and Schlick's Fresnel at f0 0.04
+//               for every light, and its prefiltered environment at its roughness; the base
+//               lit through it × (1 − Fc(n·v)) (chunks/clear_coat_ggx_kelemen.glsl, clear_coat_ambient.glsl)
+//   Ambient     the coat's environment only, over the whole base × (1 − Fc(n·v)): no lobe per light
+//               (chunks/clear_coat_ambient.glsl)
+//   None        the coat dropped from the shader
+enum class ClearCoatModel { GgxKelemen, Ambient, None };
+// The material language's names, indexed by ClearCoatModel (`tier mid { clear_coat = none }`).
+inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "ambient", "none"};
+static_assert(sizeof kClearCoatModelNames / sizeof *kClearCoatModelNames == size_t(ClearCoatModel::None) + 1,
+              "one name per ClearCoatModel, in its order");
 
 struct TierConfig {
   SpecularModel specular = SpecularModel::GgxSmith;
@@ -33,6 +47,7 @@ struct TierConfig {
   AmbientModel ambient = AmbientModel::SplitSum;
   int shBands = 3;                  // SH irradiance bands: 3 (9 coefficients) or 2 (4)
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
+  ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
   bool operator==(const TierConfig&) const = default;
 };
 
@@ -52,7 +67,7 @@ struct TierConfig {
 // docs/specular-tiers.md has the measurements.
 TierConfig preset(Tier tier);
 
-// Replaces one choice of a preset by name (axis "specular" | "diffuse", option as in the
+// Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat", option as in the
 // material language). Returns false for names it does not know.
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
 

@@ -1,0 +1,62 @@
+// The clear coat's lobe for each light (the `ggx_kelemen` clear coat of reference and high):
+//   f_c = D(h; α_c) · V_K(l·h) · Fc(l·h)              α_c = r_c², Fc with the strength (clear_coat_ambient.glsl)
+//   V_K = 1 / (4 (l·h)²)                               Kelemen and Szirmay-Kalos 2001
+//   L   = L_base · (1 − Fc(n_c·v)) + f_c · E_light · n_c·l
+// (the base's attenuation is the view's, shading_clear_coat_attenuation: clear_coat_ambient.glsl
+// has why; the lobe's own Fresnel is at l·h, as the talk's).
+// Sources: R. Guy and M. Agopian, "Physically Based Rendering in Filament", "Clear coat model"
+// (isotropic GGX, Kelemen's visibility: a smooth coat needs no Smith term's cost, and f0 fixed at
+// 0.04); Kelemen and Szirmay-Kalos, "A Microfacet Based Coupled Specular-Matte BRDF Model with
+// Importance Sampling", Eurographics 2001 (V_K). h is the base lobe's half vector (l and v are
+// shared, only the normal differs), formed in highp where the tier asks (shading_standard.glsl).
+// D · V_K in one division (Zioma's fusion, "Optimizing PBR", SIGGRAPH 2015, as
+// specular_fused_hammon.glsl does for the base; the same value, not an approximation):
+//   D · V_K = α_c² / (d² · X),   d = |n_c × h|² + (α_c n_c·h)²  (GGX by Lagrange's identity,
+//   brdf_ggx.glsl),   X = 4π (l·h)²,   computed as k · (k · X) with k = α_c / (d X)
+// Why: it keeps high's fragment stage at four divisions (base D and V, the energy
+// compensation, this one) where D and V_K apart need two.
+// Energy: the layered directional albedo is integrated in double in tests/reference/clear_coat.h
+// (docs/material-models.md, "Energy").
+// fp16 (mediump), the two hazards the talk names, for α_c ≥ 0.089² and d ∈ [α_c², 1]:
+//   - D at a smooth coat: α_c² = r_c⁴ in the textbook denominator underflows binary16 below
+//     r_c = 0.0884; the clamp to MIN_PERCEPTUAL_ROUGHNESS (0.089, r⁴ = 6.27e-5 ≥ 2^-14) and the
+//     Lagrange form (no 1 − (n·h)² cancellation) keep d ≥ α_c² a normal number.
+//   - V_K at grazing: (l·h)² underflows binary16's smallest normal 2^-14 for l·h < 2^-7 and is
+//     flushed: X = 0, k = +inf and k · (k · X) = inf · 0 = NaN. It is floored at 2^-14, so X ≥ 4π · 2^-14 =
+//     7.7e-4. Where the floor acts it changes nothing visible: 2 (n·h)(l·h) = n·v + n·l for the
+//     unit half vector, so l·h < 2^-7 means n_c·l < 2^-6 (with the base normal equal to the
+//     coat's; a mapped coat normal tilts this by its angle), and the term is multiplied by n·l.
+//   - d X can fall to 6.27e-5 · 7.7e-4 = 4.8e-8, subnormal: the division runs on 2^11 X with the
+//     numerator 2^11 α_c, so d · 2^11 X ≥ 9.9e-5 (normal; 2^10 would give 4.9e-5, below 2^-14),
+//     ≤ 2^11 · 4π = 25736, and 2^11 α_c ≤ 2048.
+//   - k · X = α_c / d ≤ 1/α_c ≤ 127, so k · (k · X) overflows only where the true value exceeds
+//     65504 (the grazing mirror of a smooth coat), and saturateMediump returns 65504 (k may be
+//     +inf there; X > 0, so never NaN); the light's sum is saturated by the caller.
+// Fp16Shading.ClearCoatLobeStaysFiniteAtItsHazards runs it at the hazards, fp16-emulated: it
+// fails without the floor (where v and l graze nearly opposite: NaN, which lavapipe's min turns
+// into a false glint of 65504 · E · n·l, 18 instead of 2e-5), without the scale (the mirror
+// at n·v = 0.2: d X flushed, 65504 where the lobe is finite) and without the saturation (+inf at
+// the mirror from n·v = 0.1). 2^10 passes too, because where d · 2^10 X is subnormal the true lobe
+// is beyond 65504 anyway; only 2^11 keeps the bound above without relying on that. highp
+// (`reference`): the same formula, saturateMediump an identity.
+// Needs: math.glsl, precision.glsl, clear_coat_ambient.glsl.
+
+const float CLEAR_COAT_LOH2_MIN = 6.103515625e-5;  // 2^-14, the floor of (l·h)² (above)
+const float CLEAR_COAT_SCALE = 2048.0;             // 2^11: keeps d·X a normal fp16 number (above)
+
+// The coat's light for one light; lightColor is the pre-exposed illuminance at normal incidence.
+vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 lightColor) {
+    vec3 n = shading_clear_coat_normal;
+    float NoL = clamp(dot(n, l), 0.0, 1.0);
+    float NoH = clamp(dot(n, h), 0.0, 1.0);
+    float r = clear_coat_perceptual_roughness(material);
+    float alpha = r * r;
+    vec3 NxH = cross(n, h);
+    float a = NoH * alpha;
+    float d = dot(NxH, NxH) + a * a;
+    float x = (4.0 * PI) * max(LoH * LoH, CLEAR_COAT_LOH2_MIN);
+    float k = (CLEAR_COAT_SCALE * alpha) / (d * (CLEAR_COAT_SCALE * x));
+    float DV = saturateMediump(k * (k * x));
+    float Fc = clear_coat_fresnel(LoH) * clear_coat_strength(material);
+    return DV * Fc * (lightColor * NoL);
+}

@@ -1,0 +1,53 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct ObjectUniforms
+{
+    float4x4 model;
+    float4x4 normalMatrix;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float4 gl_Position [[position]];
+};
+
+struct main0_in
+{
+    float3 a_position [[attribute(0)]];
+    float3 a_normal [[attribute(1)]];
+};
+
+vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
+{
+    main0_out out = {};
+    float4 _28 = object.model * float4(in.a_position, 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _28.xyz;
+    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    out.gl_Position = frame.viewProjection * _28;
+    return out;
+}
+

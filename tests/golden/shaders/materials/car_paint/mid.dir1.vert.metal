@@ -1,0 +1,62 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct ObjectUniforms
+{
+    float4x4 model;
+    float4x4 normalMatrix;
+};
+
+struct main0_out
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float3 v_diffuseLight [[user(locn2)]];
+    float4 gl_Position [[position]];
+};
+
+struct main0_in
+{
+    float3 a_position [[attribute(0)]];
+    float3 a_normal [[attribute(1)]];
+};
+
+vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
+{
+    main0_out out = {};
+    float4 _164 = object.model * float4(in.a_position, 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _164.xyz;
+    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    half3 _345 = half3(out.v_normal);
+    half _246 = _345.y;
+    half3 _347 = half3(out.v_normal);
+    half _251 = _347.z;
+    half3 _349 = half3(out.v_normal);
+    half _256 = _349.x;
+    float3 _324 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_246))) + (frame.sh[2].xyz * float(_251))) + (frame.sh[3].xyz * float(_256))) + (((((frame.sh[4].xyz * (float(_256) * float(_246))) + (frame.sh[5].xyz * (float(_246) * float(_251)))) + (frame.sh[6].xyz * fma(3.0 * float(_251), float(_251), -1.0))) + (frame.sh[7].xyz * (float(_256) * float(_251)))) + (frame.sh[8].xyz * fma(float(_256), float(_256), -(float(_246) * float(_246))))), float3(0.0));
+    out.v_diffuseLight = _324 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _164;
+    return out;
+}
+
