@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -45,24 +49,24 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _186 = object.model * float4(in.a_position, 1.0);
-    float3 _190 = _186.xyz;
-    out.v_worldPosition = _190;
+    float4 _196 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float3 _200 = _196.xyz;
+    out.v_worldPosition = _200;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    float3 _331 = float3(frame.punctualLights[0].positionFalloff.xyz) - _190;
-    float _334 = dot(_331, _331);
-    float3 _339 = _331 * rsqrt(fast::max(_334, 9.9999999392252902907785028219223e-09));
-    float _343 = _334 * float(frame.punctualLights[0].positionFalloff.w);
-    float _348 = fast::clamp(fma(-_343, _343, 1.0), 0.0, 1.0);
-    float _367 = fast::clamp(fma(dot(-_339, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _409 = float3(frame.punctualLights[1].positionFalloff.xyz) - _190;
-    float _412 = dot(_409, _409);
-    float3 _417 = _409 * rsqrt(fast::max(_412, 9.9999999392252902907785028219223e-09));
-    float _421 = _412 * float(frame.punctualLights[1].positionFalloff.w);
-    float _426 = fast::clamp(fma(-_421, _421, 1.0), 0.0, 1.0);
-    float _445 = fast::clamp(fma(dot(-_417, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = (fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_348 * _348) / fast::max(_334, 9.9999997473787516355514526367188e-05)) * _367) * _367), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _339), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_426 * _426) / fast::max(_412, 9.9999997473787516355514526367188e-05)) * _445) * _445), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _417), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _186;
+    float3 _341 = float3(frame.punctualLights[0].positionFalloff.xyz) - _200;
+    float _344 = dot(_341, _341);
+    float3 _349 = _341 * rsqrt(fast::max(_344, 9.9999999392252902907785028219223e-09));
+    float _353 = _344 * float(frame.punctualLights[0].positionFalloff.w);
+    float _358 = fast::clamp(fma(-_353, _353, 1.0), 0.0, 1.0);
+    float _377 = fast::clamp(fma(dot(-_349, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _419 = float3(frame.punctualLights[1].positionFalloff.xyz) - _200;
+    float _422 = dot(_419, _419);
+    float3 _427 = _419 * rsqrt(fast::max(_422, 9.9999999392252902907785028219223e-09));
+    float _431 = _422 * float(frame.punctualLights[1].positionFalloff.w);
+    float _436 = fast::clamp(fma(-_431, _431, 1.0), 0.0, 1.0);
+    float _455 = fast::clamp(fma(dot(-_427, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = (fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_358 * _358) / fast::max(_344, 9.9999997473787516355514526367188e-05)) * _377) * _377), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _349), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_436 * _436) / fast::max(_422, 9.9999997473787516355514526367188e-05)) * _455) * _455), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _427), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _196;
     return out;
 }
 

@@ -25,6 +25,10 @@ frame;
 layout(std140)uniform ObjectUniforms{
 highp mat4 model;
 highp mat4 normalMatrix;
+highp vec4 positionScale;
+highp vec4 positionOffset;
+highp vec4 uv0ScaleOffset;
+highp vec4 uv1ScaleOffset;
 }
 object;
 vec3 sh_irradiance_over_pi(vec3 n){
@@ -36,7 +40,8 @@ vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
 return max(e,vec3(0.0));
 }
 void main(){
-highp vec4 worldPosition=object.model*vec4(a_position,1.0);
+highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
+highp vec4 worldPosition=object.model*vec4(position,1.0);
 v_toEye=frame.cameraPosition.xyz-worldPosition.xyz;
 v_normal=normalize(mat3(object.normalMatrix)*a_normal);
 vec3 n=v_normal;

@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -45,31 +49,31 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _260 = object.model * float4(in.a_position, 1.0);
-    float3 _264 = _260.xyz;
-    out.v_worldPosition = _264;
+    float4 _270 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float3 _274 = _270.xyz;
+    out.v_worldPosition = _274;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _668 = half3(out.v_normal);
-    half _364 = _668.y;
-    half3 _670 = half3(out.v_normal);
-    half _369 = _670.z;
-    half3 _672 = half3(out.v_normal);
-    half _374 = _672.x;
-    float3 _442 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_364))) + (frame.sh[2].xyz * float(_369))) + (frame.sh[3].xyz * float(_374))) + (((((frame.sh[4].xyz * (float(_374) * float(_364))) + (frame.sh[5].xyz * (float(_364) * float(_369)))) + (frame.sh[6].xyz * fma(3.0 * float(_369), float(_369), -1.0))) + (frame.sh[7].xyz * (float(_374) * float(_369)))) + (frame.sh[8].xyz * fma(float(_374), float(_374), -(float(_364) * float(_364))))), float3(0.0));
-    float3 _473 = float3(frame.punctualLights[0].positionFalloff.xyz) - _264;
-    float _476 = dot(_473, _473);
-    float3 _481 = _473 * rsqrt(fast::max(_476, 9.9999999392252902907785028219223e-09));
-    float _485 = _476 * float(frame.punctualLights[0].positionFalloff.w);
-    float _490 = fast::clamp(fma(-_485, _485, 1.0), 0.0, 1.0);
-    float _509 = fast::clamp(fma(dot(-_481, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _551 = float3(frame.punctualLights[1].positionFalloff.xyz) - _264;
-    float _554 = dot(_551, _551);
-    float3 _559 = _551 * rsqrt(fast::max(_554, 9.9999999392252902907785028219223e-09));
-    float _563 = _554 * float(frame.punctualLights[1].positionFalloff.w);
-    float _568 = fast::clamp(fma(-_563, _563, 1.0), 0.0, 1.0);
-    float _587 = fast::clamp(fma(dot(-_559, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = (_442 + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_490 * _490) / fast::max(_476, 9.9999997473787516355514526367188e-05)) * _509) * _509), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _481), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_568 * _568) / fast::max(_554, 9.9999997473787516355514526367188e-05)) * _587) * _587), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _559), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _260;
+    half3 _678 = half3(out.v_normal);
+    half _374 = _678.y;
+    half3 _680 = half3(out.v_normal);
+    half _379 = _680.z;
+    half3 _682 = half3(out.v_normal);
+    half _384 = _682.x;
+    float3 _452 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_374))) + (frame.sh[2].xyz * float(_379))) + (frame.sh[3].xyz * float(_384))) + (((((frame.sh[4].xyz * (float(_384) * float(_374))) + (frame.sh[5].xyz * (float(_374) * float(_379)))) + (frame.sh[6].xyz * fma(3.0 * float(_379), float(_379), -1.0))) + (frame.sh[7].xyz * (float(_384) * float(_379)))) + (frame.sh[8].xyz * fma(float(_384), float(_384), -(float(_374) * float(_374))))), float3(0.0));
+    float3 _483 = float3(frame.punctualLights[0].positionFalloff.xyz) - _274;
+    float _486 = dot(_483, _483);
+    float3 _491 = _483 * rsqrt(fast::max(_486, 9.9999999392252902907785028219223e-09));
+    float _495 = _486 * float(frame.punctualLights[0].positionFalloff.w);
+    float _500 = fast::clamp(fma(-_495, _495, 1.0), 0.0, 1.0);
+    float _519 = fast::clamp(fma(dot(-_491, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _561 = float3(frame.punctualLights[1].positionFalloff.xyz) - _274;
+    float _564 = dot(_561, _561);
+    float3 _569 = _561 * rsqrt(fast::max(_564, 9.9999999392252902907785028219223e-09));
+    float _573 = _564 * float(frame.punctualLights[1].positionFalloff.w);
+    float _578 = fast::clamp(fma(-_573, _573, 1.0), 0.0, 1.0);
+    float _597 = fast::clamp(fma(dot(-_569, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = (_452 + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_500 * _500) / fast::max(_486, 9.9999997473787516355514526367188e-05)) * _519) * _519), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _491), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_578 * _578) / fast::max(_564, 9.9999997473787516355514526367188e-05)) * _597) * _597), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _569), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _270;
     return out;
 }
 

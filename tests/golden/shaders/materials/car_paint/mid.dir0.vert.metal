@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -45,18 +49,18 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _164 = object.model * float4(in.a_position, 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _164.xyz;
+    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _331 = half3(out.v_normal);
-    half _232 = _331.y;
-    half3 _333 = half3(out.v_normal);
-    half _237 = _333.z;
-    half3 _335 = half3(out.v_normal);
-    half _242 = _335.x;
-    float3 _310 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_232))) + (frame.sh[2].xyz * float(_237))) + (frame.sh[3].xyz * float(_242))) + (((((frame.sh[4].xyz * (float(_242) * float(_232))) + (frame.sh[5].xyz * (float(_232) * float(_237)))) + (frame.sh[6].xyz * fma(3.0 * float(_237), float(_237), -1.0))) + (frame.sh[7].xyz * (float(_242) * float(_237)))) + (frame.sh[8].xyz * fma(float(_242), float(_242), -(float(_232) * float(_232))))), float3(0.0));
-    out.v_diffuseLight = _310;
-    out.gl_Position = frame.viewProjection * _164;
+    half3 _341 = half3(out.v_normal);
+    half _242 = _341.y;
+    half3 _343 = half3(out.v_normal);
+    half _247 = _343.z;
+    half3 _345 = half3(out.v_normal);
+    half _252 = _345.x;
+    float3 _320 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_242))) + (frame.sh[2].xyz * float(_247))) + (frame.sh[3].xyz * float(_252))) + (((((frame.sh[4].xyz * (float(_252) * float(_242))) + (frame.sh[5].xyz * (float(_242) * float(_247)))) + (frame.sh[6].xyz * fma(3.0 * float(_247), float(_247), -1.0))) + (frame.sh[7].xyz * (float(_252) * float(_247)))) + (frame.sh[8].xyz * fma(float(_252), float(_252), -(float(_242) * float(_242))))), float3(0.0));
+    out.v_diffuseLight = _320;
+    out.gl_Position = frame.viewProjection * _174;
     return out;
 }
 

@@ -25,6 +25,10 @@ frame;
 layout(std140)uniform ObjectUniforms{
 highp mat4 model;
 highp mat4 normalMatrix;
+highp vec4 positionScale;
+highp vec4 positionOffset;
+highp vec4 uv0ScaleOffset;
+highp vec4 uv1ScaleOffset;
 }
 object;
 vec3 sh_irradiance_over_pi(vec3 n){
@@ -57,7 +61,8 @@ vec3 illuminance=punctual_light_illuminance(light,worldPosition,l);
 return illuminance*(clamp(dot(n,l),0.0,1.0)*0.31830988618);
 }
 void main(){
-highp vec4 worldPosition=object.model*vec4(a_position,1.0);
+highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
+highp vec4 worldPosition=object.model*vec4(position,1.0);
 v_worldPosition=worldPosition.xyz;
 v_normal=normalize(mat3(object.normalMatrix)*a_normal);
 vec3 n=v_normal;

@@ -26,6 +26,10 @@ struct ObjectUniforms
 {
     float4x4 model;
     float4x4 normalMatrix;
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
 };
 
 struct main0_out
@@ -45,18 +49,18 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _164 = object.model * float4(in.a_position, 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _164.xyz;
+    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
     out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _345 = half3(out.v_normal);
-    half _246 = _345.y;
-    half3 _347 = half3(out.v_normal);
-    half _251 = _347.z;
-    half3 _349 = half3(out.v_normal);
-    half _256 = _349.x;
-    float3 _324 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_246))) + (frame.sh[2].xyz * float(_251))) + (frame.sh[3].xyz * float(_256))) + (((((frame.sh[4].xyz * (float(_256) * float(_246))) + (frame.sh[5].xyz * (float(_246) * float(_251)))) + (frame.sh[6].xyz * fma(3.0 * float(_251), float(_251), -1.0))) + (frame.sh[7].xyz * (float(_256) * float(_251)))) + (frame.sh[8].xyz * fma(float(_256), float(_256), -(float(_246) * float(_246))))), float3(0.0));
-    out.v_diffuseLight = _324 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _164;
+    half3 _355 = half3(out.v_normal);
+    half _256 = _355.y;
+    half3 _357 = half3(out.v_normal);
+    half _261 = _357.z;
+    half3 _359 = half3(out.v_normal);
+    half _266 = _359.x;
+    float3 _334 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_256))) + (frame.sh[2].xyz * float(_261))) + (frame.sh[3].xyz * float(_266))) + (((((frame.sh[4].xyz * (float(_266) * float(_256))) + (frame.sh[5].xyz * (float(_256) * float(_261)))) + (frame.sh[6].xyz * fma(3.0 * float(_261), float(_261), -1.0))) + (frame.sh[7].xyz * (float(_266) * float(_261)))) + (frame.sh[8].xyz * fma(float(_266), float(_266), -(float(_256) * float(_256))))), float3(0.0));
+    out.v_diffuseLight = _334 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _174;
     return out;
 }
 

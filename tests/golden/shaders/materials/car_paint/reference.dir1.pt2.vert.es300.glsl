@@ -24,10 +24,15 @@ frame;
 layout(std140)uniform ObjectUniforms{
 highp mat4 model;
 highp mat4 normalMatrix;
+highp vec4 positionScale;
+highp vec4 positionOffset;
+highp vec4 uv0ScaleOffset;
+highp vec4 uv1ScaleOffset;
 }
 object;
 void main(){
-highp vec4 worldPosition=object.model*vec4(a_position,1.0);
+highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
+highp vec4 worldPosition=object.model*vec4(position,1.0);
 v_worldPosition=worldPosition.xyz;
 v_normal=normalize(mat3(object.normalMatrix)*a_normal);
 gl_Position=frame.viewProjection*worldPosition;
