@@ -104,11 +104,13 @@ std::string frameSampler(Flavour flavour, const abi::SamplerDesc& sampler, const
          (sampler.cube ? " samplerCube " : " sampler2D ") + std::string(sampler.name) + ";\n";
 }
 
-// The per-frame and per-object blocks, identical text in both stages (GLSL ES requires blocks
-// shared between stages to match member for member, precision included).
-std::string frameAndObjectBlocks(Flavour flavour) {
+// The per-frame block, identical text in both stages (GLSL ES requires blocks shared between
+// stages to match member for member, precision included). The per-object block is the vertex
+// stage's alone: no fragment chunk reads the transforms or the dequantisation, and its text
+// would only lengthen every fragment shader a driver parses.
+std::string frameBlock(Flavour flavour) {
   return "struct " + std::string(abi::kPunctualLightStruct.name) + " {\n" + members(abi::kPunctualLightStruct.members) +
-         "};\n" + fixedBlock(flavour, abi::kFrameBlock) + fixedBlock(flavour, abi::kObjectBlock);
+         "};\n" + fixedBlock(flavour, abi::kFrameBlock);
 }
 
 // Parameters are read at the tier's precision: a block member needs an explicit qualifier (the
@@ -393,7 +395,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
     return false;
 
   std::string vs = prologue(in, flavour, "vertex", "highp");
-  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameAndObjectBlocks(flavour) + "\n";
+  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) + fixedBlock(flavour, abi::kObjectBlock) + "\n";
   out->libraryFiles = {"forward.vert.glsl", fragmentName};
   if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
 
@@ -403,7 +405,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   std::string fs = prologue(in, flavour, "fragment", fragmentPrecision);
   fs += varyings(in, flavour, "in") + "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out " +
         fragmentPrecision + " vec4 fragColor;\n\n";
-  fs += frameAndObjectBlocks(flavour) + materialBlock(flavour, in.material, in.params, in.preshade, fragmentPrecision) +
+  fs += frameBlock(flavour) + materialBlock(flavour, in.material, in.params, in.preshade, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
         iblSamplers(in, flavour, fragmentPrecision) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;

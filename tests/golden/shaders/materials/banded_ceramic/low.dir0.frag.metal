@@ -49,13 +49,13 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _334 = normalize(half3(in.v_normal));
     float3 _351 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _447 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _556 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _447)), half(0.0), half(1.0));
-    half3 _564 = half3((half(0.1599999964237213134765625) * _556) * _556);
-    half _573 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _447)), half(0.08900000154972076416015625), half(1.0));
-    float4 _580 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_334, half3(_351)), half(9.9999997473787516355514526367188e-05)), _573)), level(0.0));
-    float4 _606 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_351), _334)), level(_573 * half(4.0)));
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_447))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_606).xyz * (mix(half4(_580).xxx, half4(_580).yyy, _564) * (half3(float3(1.0)) + (_564 * ((half(1.0) / half4(_580).y) - half(1.0)))))), half(1.0)));
+    float _444 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _553 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _444)), half(0.0), half(1.0));
+    half3 _561 = half3((half(0.1599999964237213134765625) * _553) * _553);
+    half _570 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _444)), half(0.08900000154972076416015625), half(1.0));
+    float4 _577 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_334, half3(_351)), half(9.9999997473787516355514526367188e-05)), _570)), level(0.0));
+    float4 _603 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_351), _334)), level(_570 * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_444))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_603).xyz * (mix(half4(_577).xxx, half4(_577).yyy, _561) * (half3(float3(1.0)) + (_561 * ((half(1.0) / half4(_577).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

@@ -49,20 +49,20 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _515 = normalize(half3(in.v_normal));
     float3 _532 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _647 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _756 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _647)), half(0.0), half(1.0));
-    half3 _764 = half3((half(0.1599999964237213134765625) * _756) * _756);
-    half _773 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _647)), half(0.08900000154972076416015625), half(1.0));
-    half3 _719 = reflect(-half3(_532), _515);
-    float4 _780 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_515, half3(_532)), half(9.9999997473787516355514526367188e-05)), _773)), level(0.0));
-    float4 _806 = facet_environment.sample(facet_environmentSmplr, float3(_719), level(_773 * half(4.0)));
-    half3 _734 = mix(half4(_780).xxx, half4(_780).yyy, _764) * (half3(float3(1.0)) + (_764 * ((half(1.0) / half4(_780).y) - half(1.0))));
+    float _644 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _753 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _644)), half(0.0), half(1.0));
+    half3 _761 = half3((half(0.1599999964237213134765625) * _753) * _753);
+    half _770 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _644)), half(0.08900000154972076416015625), half(1.0));
+    half3 _716 = reflect(-half3(_532), _515);
+    float4 _777 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_515, half3(_532)), half(9.9999997473787516355514526367188e-05)), _770)), level(0.0));
+    float4 _803 = facet_environment.sample(facet_environmentSmplr, float3(_716), level(_770 * half(4.0)));
+    half3 _731 = mix(half4(_777).xxx, half4(_777).yyy, _761) * (half3(float3(1.0)) + (_761 * ((half(1.0) / half4(_777).y) - half(1.0))));
     half3 _569 = half4(frame.lightDirection).xyz;
-    half _970 = clamp(dot(_719, _569), half(0.0), half(1.0));
-    half _973 = _970 * _970;
-    half4 _1119 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_973 * _973, _773), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _985 = _1119.x;
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_647))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_806).xyz * _734) + min((_734 * ((_985 * _985) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_515, _569), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
+    half _967 = clamp(dot(_716, _569), half(0.0), half(1.0));
+    half _970 = _967 * _967;
+    half4 _1116 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_970 * _970, _770), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _982 = _1116.x;
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_644))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_803).xyz * _731) + min((_731 * ((_982 * _982) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_515, _569), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

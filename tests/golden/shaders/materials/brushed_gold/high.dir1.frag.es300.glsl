@@ -20,15 +20,6 @@ PunctualLightData punctualLights[4];
 highp vec4 sh[9];
 }
 frame;
-layout(std140)uniform ObjectUniforms{
-highp mat4 model;
-highp mat4 normalMatrix;
-highp vec4 positionScale;
-highp vec4 positionOffset;
-highp vec4 uv0ScaleOffset;
-highp vec4 uv1ScaleOffset;
-}
-object;
 layout(std140)uniform MaterialParams{
 mediump vec3 tint;
 mediump float roughness;

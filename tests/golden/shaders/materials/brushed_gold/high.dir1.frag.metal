@@ -48,21 +48,21 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _663 = normalize(half3(in.v_normal));
     float3 _667 = fast::normalize(in.v_toEye);
-    half _921 = max(dot(_663, half3(_667)), half(9.9999997473787516355514526367188e-05));
-    float4 _960 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_921, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _979 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_960).y) - half(1.0)));
-    float4 _986 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_667), _663)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    float3 _1102 = fast::normalize(_667 + frame.lightDirection.xyz);
-    half _1046 = clamp(dot(_663, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
-    half3 _1142 = cross(_663, half3(_1102));
-    half _1145 = clamp(dot(_663, half3(_1102)), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _1154 = half(params.facet_alpha) / fma(_1145, _1145, dot(_1142, _1142));
-    half _1168 = half(params.facet_alpha) * half(params.facet_alpha);
-    half _1174 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
-    half _1202 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1102)), half(0.0), half(1.0));
-    half _1205 = _1202 * _1202;
-    half4 _1251 = half4(fma(half4(_986).xyz, mix(half4(_960).xxx, half4(_960).yyy, half3(float3(params.facet_f0))) * _979, min((((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1205 * _1205) * _1202))) * min(min((_1154 * _1154) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1046, sqrt(fma(_921 * _921, _1174, _1168)), _921 * sqrt(fma(_1046 * _1046, _1174, _1168))), half(65504.0)), half(65504.0))) * _979) * (half4(frame.lightColor).xyz * _1046), half3(float3(65504.0)))), half(1.0));
-    out.fragColor = float4(_1251);
+    half _918 = max(dot(_663, half3(_667)), half(9.9999997473787516355514526367188e-05));
+    float4 _957 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_918, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _976 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_957).y) - half(1.0)));
+    float4 _983 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_667), _663)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    float3 _1099 = fast::normalize(_667 + frame.lightDirection.xyz);
+    half _1043 = clamp(dot(_663, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    half3 _1139 = cross(_663, half3(_1099));
+    half _1142 = clamp(dot(_663, half3(_1099)), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _1151 = half(params.facet_alpha) / fma(_1142, _1142, dot(_1139, _1139));
+    half _1165 = half(params.facet_alpha) * half(params.facet_alpha);
+    half _1171 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
+    half _1199 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1099)), half(0.0), half(1.0));
+    half _1202 = _1199 * _1199;
+    half4 _1248 = half4(fma(half4(_983).xyz, mix(half4(_957).xxx, half4(_957).yyy, half3(float3(params.facet_f0))) * _976, min((((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1202 * _1202) * _1199))) * min(min((_1151 * _1151) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1043, sqrt(fma(_918 * _918, _1171, _1165)), _918 * sqrt(fma(_1043 * _1043, _1171, _1165))), half(65504.0)), half(65504.0))) * _976) * (half4(frame.lightColor).xyz * _1043), half3(float3(65504.0)))), half(1.0));
+    out.fragColor = float4(_1248);
     return out;
 }
 

@@ -48,16 +48,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _437 = normalize(half3(in.v_normal));
     float3 _441 = fast::normalize(in.v_toEye);
-    half3 _598 = reflect(-half3(_441), _437);
-    float4 _634 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_437, half3(_441)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _660 = facet_environment.sample(facet_environmentSmplr, float3(_598), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _613 = mix(half4(_634).xxx, half4(_634).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_634).y) - half(1.0))));
+    half3 _595 = reflect(-half3(_441), _437);
+    float4 _631 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_437, half3(_441)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _657 = facet_environment.sample(facet_environmentSmplr, float3(_595), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _610 = mix(half4(_631).xxx, half4(_631).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_631).y) - half(1.0))));
     half3 _488 = half4(frame.lightDirection).xyz;
-    half _789 = clamp(dot(_598, _488), half(0.0), half(1.0));
-    half _792 = _789 * _789;
-    half4 _919 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_792 * _792, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _804 = _919.x;
-    out.fragColor = float4(half4(fma(half4(_660).xyz, _613, min((_613 * ((_804 * _804) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_437, _488), half(0.0), half(1.0))), half3(float3(65504.0)))), half(1.0)));
+    half _786 = clamp(dot(_595, _488), half(0.0), half(1.0));
+    half _789 = _786 * _786;
+    half4 _916 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_789 * _789, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _801 = _916.x;
+    out.fragColor = float4(half4(fma(half4(_657).xyz, _610, min((_610 * ((_801 * _801) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_437, _488), half(0.0), half(1.0))), half3(float3(65504.0)))), half(1.0)));
     return out;
 }
 

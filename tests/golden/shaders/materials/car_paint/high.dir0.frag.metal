@@ -33,15 +33,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _488 = normalize(half3(in.v_normal));
     float3 _492 = fast::normalize(in.v_toEye);
-    half _743 = max(dot(_488, half3(_492)), half(9.9999997473787516355514526367188e-05));
-    half3 _747 = reflect(-half3(_492), _488);
-    float4 _782 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_743, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _808 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _856 = half(1.0) - _743;
-    half _859 = _856 * _856;
-    float4 _883 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _850 = mix(half4(_808).xyz * (mix(half4(_782).xxx, half4(_782).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_782).y) - half(1.0))))), half4(_883).xyz, half3(fma(half(0.959999978542327880859375), (_859 * _859) * _856, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_850, half(1.0)));
+    half _740 = max(dot(_488, half3(_492)), half(9.9999997473787516355514526367188e-05));
+    half3 _744 = reflect(-half3(_492), _488);
+    float4 _779 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_740, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _805 = facet_environment.sample(facet_environmentSmplr, float3(_744), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _853 = half(1.0) - _740;
+    half _856 = _853 * _853;
+    float4 _880 = facet_environment.sample(facet_environmentSmplr, float3(_744), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _847 = mix(half4(_805).xyz * (mix(half4(_779).xxx, half4(_779).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_779).y) - half(1.0))))), half4(_880).xyz, half3(fma(half(0.959999978542327880859375), (_856 * _856) * _853, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_847, half(1.0)));
     return out;
 }
 

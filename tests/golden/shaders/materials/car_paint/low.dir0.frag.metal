@@ -33,15 +33,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _353 = normalize(half3(in.v_normal));
     float3 _357 = fast::normalize(in.v_toEye);
-    half _506 = max(dot(_353, half3(_357)), half(9.9999997473787516355514526367188e-05));
-    half3 _510 = reflect(-half3(_357), _353);
-    float4 _546 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_506, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _572 = facet_environment.sample(facet_environmentSmplr, float3(_510), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _620 = half(1.0) - _506;
-    half _623 = _620 * _620;
-    float4 _647 = facet_environment.sample(facet_environmentSmplr, float3(_510), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _614 = mix(half4(_572).xyz * (mix(half4(_546).xxx, half4(_546).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_546).y) - half(1.0))))), half4(_647).xyz, half3(fma(half(0.959999978542327880859375), (_623 * _623) * _620, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_614, half(1.0)));
+    half _503 = max(dot(_353, half3(_357)), half(9.9999997473787516355514526367188e-05));
+    half3 _507 = reflect(-half3(_357), _353);
+    float4 _543 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_503, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _569 = facet_environment.sample(facet_environmentSmplr, float3(_507), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _617 = half(1.0) - _503;
+    half _620 = _617 * _617;
+    float4 _644 = facet_environment.sample(facet_environmentSmplr, float3(_507), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _611 = mix(half4(_569).xyz * (mix(half4(_543).xxx, half4(_543).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_543).y) - half(1.0))))), half4(_644).xyz, half3(fma(half(0.959999978542327880859375), (_620 * _620) * _617, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_611, half(1.0)));
     return out;
 }
 

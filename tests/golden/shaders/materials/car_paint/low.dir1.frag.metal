@@ -52,21 +52,21 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _529 = normalize(half3(in.v_normal));
     float3 _533 = fast::normalize(in.v_toEye);
-    half _702 = max(dot(_529, half3(_533)), half(9.9999997473787516355514526367188e-05));
-    half3 _706 = reflect(-half3(_533), _529);
-    float4 _742 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_702, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _768 = facet_environment.sample(facet_environmentSmplr, float3(_706), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _721 = mix(half4(_742).xxx, half4(_742).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_742).y) - half(1.0))));
+    half _699 = max(dot(_529, half3(_533)), half(9.9999997473787516355514526367188e-05));
+    half3 _703 = reflect(-half3(_533), _529);
+    float4 _739 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_699, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _765 = facet_environment.sample(facet_environmentSmplr, float3(_703), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _718 = mix(half4(_739).xxx, half4(_739).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_739).y) - half(1.0))));
     half3 _581 = half4(frame.lightDirection).xyz;
-    half _897 = clamp(dot(_706, _581), half(0.0), half(1.0));
-    half _900 = _897 * _897;
-    half4 _1113 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_900 * _900, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _912 = _1113.x;
-    half _960 = half(1.0) - _702;
-    half _963 = _960 * _960;
-    float4 _987 = facet_environment.sample(facet_environmentSmplr, float3(_706), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _954 = mix(fma(half4(_768).xyz, _721, min((_721 * ((_912 * _912) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_529, _581), half(0.0), half(1.0))), half3(float3(65504.0)))), half4(_987).xyz, half3(fma(half(0.959999978542327880859375), (_963 * _963) * _960, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_954, half(1.0)));
+    half _894 = clamp(dot(_703, _581), half(0.0), half(1.0));
+    half _897 = _894 * _894;
+    half4 _1110 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_897 * _897, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _909 = _1110.x;
+    half _957 = half(1.0) - _699;
+    half _960 = _957 * _957;
+    float4 _984 = facet_environment.sample(facet_environmentSmplr, float3(_703), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _951 = mix(fma(half4(_765).xyz, _718, min((_718 * ((_909 * _909) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_529, _581), half(0.0), half(1.0))), half3(float3(65504.0)))), half4(_984).xyz, half3(fma(half(0.959999978542327880859375), (_960 * _960) * _957, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_951, half(1.0)));
     return out;
 }
 

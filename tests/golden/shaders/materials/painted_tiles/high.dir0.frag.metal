@@ -49,26 +49,26 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
 {
     main0_out out = {};
     float3 _507 = fast::normalize(in.v_toEye);
-    float2 _597 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _600 = facet_material_albedo.sample(facet_material_albedoSmplr, _597);
-    float4 _610 = facet_material_relief.sample(facet_material_reliefSmplr, _597);
-    half3 _614 = (half4(_610).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1007;
+    float2 _594 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _597 = facet_material_albedo.sample(facet_material_albedoSmplr, _594);
+    float4 _607 = facet_material_relief.sample(facet_material_reliefSmplr, _594);
+    half3 _611 = (half4(_607).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1004;
     do
     {
-        half3 _627 = half4(in.v_tangent).xyz;
-        if (float(dot(_627, _627)) == 0.0)
+        half3 _624 = half4(in.v_tangent).xyz;
+        if (float(dot(_624, _624)) == 0.0)
         {
-            _1007 = normalize(half3(in.v_normal));
+            _1004 = normalize(half3(in.v_normal));
             break;
         }
-        _1007 = normalize(((_627 * _614.x) + ((cross(half3(in.v_normal), _627) * half(in.v_tangent.w)) * _614.y)) + (half3(in.v_normal) * _614.z));
+        _1004 = normalize(((_624 * _611.x) + ((cross(half3(in.v_normal), _624) * half(in.v_tangent.w)) * _611.y)) + (half3(in.v_normal) * _611.z));
         break;
     } while(false);
-    half3 _764 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1007.y)) + (half4(frame.sh[2]).xyz * _1007.z)) + (half4(frame.sh[3]).xyz * _1007.x)) + (((((half4(frame.sh[4]).xyz * (_1007.x * _1007.y)) + (half4(frame.sh[5]).xyz * (_1007.y * _1007.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1007.z, _1007.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1007.x * _1007.z))) + (half4(frame.sh[8]).xyz * fma(_1007.x, _1007.x, half(-float(_1007.y * _1007.y))))), half3(float3(0.0)));
-    float4 _885 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1007, half3(_507)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _911 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_507), _1007)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(clamp(half4(_600).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), _764, half4(_911).xyz * (mix(half4(_885).xxx, half4(_885).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_885).y) - half(1.0)))))), half(1.0)));
+    half3 _761 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1004.y)) + (half4(frame.sh[2]).xyz * _1004.z)) + (half4(frame.sh[3]).xyz * _1004.x)) + (((((half4(frame.sh[4]).xyz * (_1004.x * _1004.y)) + (half4(frame.sh[5]).xyz * (_1004.y * _1004.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1004.z, _1004.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1004.x * _1004.z))) + (half4(frame.sh[8]).xyz * fma(_1004.x, _1004.x, half(-float(_1004.y * _1004.y))))), half3(float3(0.0)));
+    float4 _882 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1004, half3(_507)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _908 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_507), _1004)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half4(_597).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), _761, half4(_908).xyz * (mix(half4(_882).xxx, half4(_882).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_882).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

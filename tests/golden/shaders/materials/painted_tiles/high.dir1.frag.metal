@@ -49,39 +49,39 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
 {
     main0_out out = {};
     float3 _773 = fast::normalize(in.v_toEye);
-    float2 _884 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _887 = facet_material_albedo.sample(facet_material_albedoSmplr, _884);
-    float4 _897 = facet_material_relief.sample(facet_material_reliefSmplr, _884);
-    half3 _901 = (half4(_897).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1568;
+    float2 _881 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _884 = facet_material_albedo.sample(facet_material_albedoSmplr, _881);
+    float4 _894 = facet_material_relief.sample(facet_material_reliefSmplr, _881);
+    half3 _898 = (half4(_894).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1565;
     do
     {
-        half3 _914 = half4(in.v_tangent).xyz;
-        if (float(dot(_914, _914)) == 0.0)
+        half3 _911 = half4(in.v_tangent).xyz;
+        if (float(dot(_911, _911)) == 0.0)
         {
-            _1568 = normalize(half3(in.v_normal));
+            _1565 = normalize(half3(in.v_normal));
             break;
         }
-        _1568 = normalize(((_914 * _901.x) + ((cross(half3(in.v_normal), _914) * half(in.v_tangent.w)) * _901.y)) + (half3(in.v_normal) * _901.z));
+        _1565 = normalize(((_911 * _898.x) + ((cross(half3(in.v_normal), _911) * half(in.v_tangent.w)) * _898.y)) + (half3(in.v_normal) * _898.z));
         break;
     } while(false);
-    half3 _1051 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1568.y)) + (half4(frame.sh[2]).xyz * _1568.z)) + (half4(frame.sh[3]).xyz * _1568.x)) + (((((half4(frame.sh[4]).xyz * (_1568.x * _1568.y)) + (half4(frame.sh[5]).xyz * (_1568.y * _1568.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1568.z, _1568.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1568.x * _1568.z))) + (half4(frame.sh[8]).xyz * fma(_1568.x, _1568.x, half(-float(_1568.y * _1568.y))))), half3(float3(0.0)));
-    half3 _1074 = clamp(half4(_887).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _1109 = max(dot(_1568, half3(_773)), half(9.9999997473787516355514526367188e-05));
-    float4 _1172 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1109, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _1191 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1172).y) - half(1.0)));
-    float4 _1198 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_773), _1568)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    float3 _1338 = fast::normalize(_773 + frame.lightDirection.xyz);
-    half _1258 = clamp(dot(_1568, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
-    half3 _1378 = cross(_1568, half3(_1338));
-    half _1381 = clamp(dot(_1568, half3(_1338)), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _1390 = half(params.facet_alpha) / fma(_1381, _1381, dot(_1378, _1378));
-    half _1404 = half(params.facet_alpha) * half(params.facet_alpha);
-    half _1410 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
-    half _1438 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1338)), half(0.0), half(1.0));
-    half _1441 = _1438 * _1438;
-    half3 _1471 = fma(_1074, _1051, half4(_1198).xyz * (mix(half4(_1172).xxx, half4(_1172).yyy, half3(float3(0.039999999105930328369140625))) * _1191)) + min(fma((half3(float3(0.039999999105930328369140625)) + (half3(float3(0.959999978542327880859375)) * ((_1441 * _1441) * _1438))) * min(min((_1390 * _1390) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1258, sqrt(fma(_1109 * _1109, _1410, _1404)), _1109 * sqrt(fma(_1258 * _1258, _1410, _1404))), half(65504.0)), half(65504.0)), _1191, _1074 * half(0.3183098733425140380859375)) * (half4(frame.lightColor).xyz * _1258), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1471, half(1.0)));
+    half3 _1048 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1565.y)) + (half4(frame.sh[2]).xyz * _1565.z)) + (half4(frame.sh[3]).xyz * _1565.x)) + (((((half4(frame.sh[4]).xyz * (_1565.x * _1565.y)) + (half4(frame.sh[5]).xyz * (_1565.y * _1565.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1565.z, _1565.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1565.x * _1565.z))) + (half4(frame.sh[8]).xyz * fma(_1565.x, _1565.x, half(-float(_1565.y * _1565.y))))), half3(float3(0.0)));
+    half3 _1071 = clamp(half4(_884).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _1106 = max(dot(_1565, half3(_773)), half(9.9999997473787516355514526367188e-05));
+    float4 _1169 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1106, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _1188 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1169).y) - half(1.0)));
+    float4 _1195 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_773), _1565)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    float3 _1335 = fast::normalize(_773 + frame.lightDirection.xyz);
+    half _1255 = clamp(dot(_1565, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    half3 _1375 = cross(_1565, half3(_1335));
+    half _1378 = clamp(dot(_1565, half3(_1335)), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _1387 = half(params.facet_alpha) / fma(_1378, _1378, dot(_1375, _1375));
+    half _1401 = half(params.facet_alpha) * half(params.facet_alpha);
+    half _1407 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
+    half _1435 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1335)), half(0.0), half(1.0));
+    half _1438 = _1435 * _1435;
+    half3 _1468 = fma(_1071, _1048, half4(_1195).xyz * (mix(half4(_1169).xxx, half4(_1169).yyy, half3(float3(0.039999999105930328369140625))) * _1188)) + min(fma((half3(float3(0.039999999105930328369140625)) + (half3(float3(0.959999978542327880859375)) * ((_1438 * _1438) * _1435))) * min(min((_1387 * _1387) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1255, sqrt(fma(_1106 * _1106, _1407, _1401)), _1106 * sqrt(fma(_1255 * _1255, _1407, _1401))), half(65504.0)), half(65504.0)), _1188, _1071 * half(0.3183098733425140380859375)) * (half4(frame.lightColor).xyz * _1255), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1468, half(1.0)));
     return out;
 }
 

@@ -31,25 +31,25 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
 {
     main0_out out = {};
     float3 _373 = fast::normalize(in.v_toEye);
-    float2 _480 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _483 = facet_material_albedo.sample(facet_material_albedoSmplr, _480);
-    float4 _493 = facet_material_relief.sample(facet_material_reliefSmplr, _480);
-    half3 _497 = (half4(_493).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _765;
+    float2 _477 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _480 = facet_material_albedo.sample(facet_material_albedoSmplr, _477);
+    float4 _490 = facet_material_relief.sample(facet_material_reliefSmplr, _477);
+    half3 _494 = (half4(_490).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _762;
     do
     {
-        half3 _510 = half4(in.v_tangent).xyz;
-        if (float(dot(_510, _510)) == 0.0)
+        half3 _507 = half4(in.v_tangent).xyz;
+        if (float(dot(_507, _507)) == 0.0)
         {
-            _765 = normalize(half3(in.v_normal));
+            _762 = normalize(half3(in.v_normal));
             break;
         }
-        _765 = normalize(((_510 * _497.x) + ((cross(half3(in.v_normal), _510) * half(in.v_tangent.w)) * _497.y)) + (half3(in.v_normal) * _497.z));
+        _762 = normalize(((_507 * _494.x) + ((cross(half3(in.v_normal), _507) * half(in.v_tangent.w)) * _494.y)) + (half3(in.v_normal) * _494.z));
         break;
     } while(false);
-    float4 _652 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_765, half3(_373)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _678 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_373), _765)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(clamp(half4(_483).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_678).xyz * (mix(half4(_652).xxx, half4(_652).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_652).y) - half(1.0)))))), half(1.0)));
+    float4 _649 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_762, half3(_373)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _675 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_373), _762)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half4(_480).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_675).xyz * (mix(half4(_649).xxx, half4(_649).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_649).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

@@ -50,33 +50,33 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
 {
     main0_out out = {};
     float3 _548 = fast::normalize(in.v_toEye);
-    float2 _675 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _678 = facet_material_albedo.sample(facet_material_albedoSmplr, _675);
-    float4 _688 = facet_material_relief.sample(facet_material_reliefSmplr, _675);
-    half3 _692 = (half4(_688).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1128;
+    float2 _672 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _675 = facet_material_albedo.sample(facet_material_albedoSmplr, _672);
+    float4 _685 = facet_material_relief.sample(facet_material_reliefSmplr, _672);
+    half3 _689 = (half4(_685).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1125;
     do
     {
-        half3 _705 = half4(in.v_tangent).xyz;
-        if (float(dot(_705, _705)) == 0.0)
+        half3 _702 = half4(in.v_tangent).xyz;
+        if (float(dot(_702, _702)) == 0.0)
         {
-            _1128 = normalize(half3(in.v_normal));
+            _1125 = normalize(half3(in.v_normal));
             break;
         }
-        _1128 = normalize(((_705 * _692.x) + ((cross(half3(in.v_normal), _705) * half(in.v_tangent.w)) * _692.y)) + (half3(in.v_normal) * _692.z));
+        _1125 = normalize(((_702 * _689.x) + ((cross(half3(in.v_normal), _702) * half(in.v_tangent.w)) * _689.y)) + (half3(in.v_normal) * _689.z));
         break;
     } while(false);
-    half3 _787 = reflect(-half3(_548), _1128);
-    float4 _847 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1128, half3(_548)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _873 = facet_environment.sample(facet_environmentSmplr, float3(_787), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _802 = mix(half4(_847).xxx, half4(_847).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_847).y) - half(1.0))));
+    half3 _784 = reflect(-half3(_548), _1125);
+    float4 _844 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1125, half3(_548)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _870 = facet_environment.sample(facet_environmentSmplr, float3(_784), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _799 = mix(half4(_844).xxx, half4(_844).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_844).y) - half(1.0))));
     half3 _599 = half4(frame.lightDirection).xyz;
-    half _1026 = clamp(dot(_787, _599), half(0.0), half(1.0));
-    half _1029 = _1026 * _1026;
-    half4 _1191 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1029 * _1029, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1041 = _1191.x;
-    half3 _1050 = fma(clamp(half4(_678).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_873).xyz * _802) + min((_802 * ((_1041 * _1041) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1128, _599), half(0.0), half(1.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1050, half(1.0)));
+    half _1023 = clamp(dot(_784, _599), half(0.0), half(1.0));
+    half _1026 = _1023 * _1023;
+    half4 _1188 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1026 * _1026, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1038 = _1188.x;
+    half3 _1047 = fma(clamp(half4(_675).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_870).xyz * _799) + min((_799 * ((_1038 * _1038) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1125, _599), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1047, half(1.0)));
     return out;
 }
 

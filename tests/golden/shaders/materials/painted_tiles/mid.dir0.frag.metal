@@ -31,25 +31,25 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
 {
     main0_out out = {};
     float3 _371 = fast::normalize(in.v_toEye);
-    float2 _475 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _478 = facet_material_albedo.sample(facet_material_albedoSmplr, _475);
-    float4 _488 = facet_material_relief.sample(facet_material_reliefSmplr, _475);
-    half3 _492 = (half4(_488).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _759;
+    float2 _472 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _475 = facet_material_albedo.sample(facet_material_albedoSmplr, _472);
+    float4 _485 = facet_material_relief.sample(facet_material_reliefSmplr, _472);
+    half3 _489 = (half4(_485).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _756;
     do
     {
-        half3 _505 = half4(in.v_tangent).xyz;
-        if (float(dot(_505, _505)) == 0.0)
+        half3 _502 = half4(in.v_tangent).xyz;
+        if (float(dot(_502, _502)) == 0.0)
         {
-            _759 = normalize(half3(in.v_normal));
+            _756 = normalize(half3(in.v_normal));
             break;
         }
-        _759 = normalize(((_505 * _492.x) + ((cross(half3(in.v_normal), _505) * half(in.v_tangent.w)) * _492.y)) + (half3(in.v_normal) * _492.z));
+        _756 = normalize(((_502 * _489.x) + ((cross(half3(in.v_normal), _502) * half(in.v_tangent.w)) * _489.y)) + (half3(in.v_normal) * _489.z));
         break;
     } while(false);
-    float4 _646 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_759, half3(_371)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _672 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_371), _759)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(clamp(half4(_478).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_672).xyz * (mix(half4(_646).xxx, half4(_646).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_646).y) - half(1.0)))))), half(1.0)));
+    float4 _643 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_756, half3(_371)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _669 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_371), _756)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half4(_475).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_669).xyz * (mix(half4(_643).xxx, half4(_643).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_643).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

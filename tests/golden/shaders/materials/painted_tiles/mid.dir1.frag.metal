@@ -50,35 +50,35 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
 {
     main0_out out = {};
     float3 _565 = fast::normalize(in.v_toEye);
-    float2 _689 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _692 = facet_material_albedo.sample(facet_material_albedoSmplr, _689);
-    float4 _702 = facet_material_relief.sample(facet_material_reliefSmplr, _689);
-    half3 _706 = (half4(_702).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1167;
+    float2 _686 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _689 = facet_material_albedo.sample(facet_material_albedoSmplr, _686);
+    float4 _699 = facet_material_relief.sample(facet_material_reliefSmplr, _686);
+    half3 _703 = (half4(_699).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1164;
     do
     {
-        half3 _719 = half4(in.v_tangent).xyz;
-        if (float(dot(_719, _719)) == 0.0)
+        half3 _716 = half4(in.v_tangent).xyz;
+        if (float(dot(_716, _716)) == 0.0)
         {
-            _1167 = normalize(half3(in.v_normal));
+            _1164 = normalize(half3(in.v_normal));
             break;
         }
-        _1167 = normalize(((_719 * _706.x) + ((cross(half3(in.v_normal), _719) * half(in.v_tangent.w)) * _706.y)) + (half3(in.v_normal) * _706.z));
+        _1164 = normalize(((_716 * _703.x) + ((cross(half3(in.v_normal), _716) * half(in.v_tangent.w)) * _703.y)) + (half3(in.v_normal) * _703.z));
         break;
     } while(false);
-    half _797 = max(dot(_1167, half3(_565)), half(9.9999997473787516355514526367188e-05));
-    float4 _860 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_797, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _879 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_860).y) - half(1.0)));
-    float4 _886 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_565), _1167)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _794 = max(dot(_1164, half3(_565)), half(9.9999997473787516355514526367188e-05));
+    float4 _857 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_794, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _876 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_857).y) - half(1.0)));
+    float4 _883 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_565), _1164)), level(half(params.facet_perceptualRoughness) * half(4.0)));
     half3 _616 = half4(frame.lightDirection).xyz;
-    half3 _1017 = normalize(half3(_565) + _616);
-    half _944 = clamp(dot(_1167, _616), half(0.0), half(1.0));
-    half3 _1044 = cross(_1167, _1017);
-    half _1047 = clamp(dot(_1167, _1017), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _1064 = max(mix((half(2.0) * _944) * _797, _944 + _797, half(params.facet_alpha)), half(0.000244140625));
-    half _1071 = (half(1024.0) * half(params.facet_alpha)) / (fma(_1047, _1047, dot(_1044, _1044)) * (half(6433.98193359375) * _1064));
-    half3 _1083 = fma(clamp(half4(_692).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_886).xyz * (mix(half4(_860).xxx, half4(_860).yyy, half3(float3(0.039999999105930328369140625))) * _879)) + min(((half3(float3(0.039999999105930328369140625)) * min(_1071 * (_1071 * (half(6.283185482025146484375) * _1064)), half(65504.0))) * _879) * (half4(frame.lightColor).xyz * _944), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1083, half(1.0)));
+    half3 _1014 = normalize(half3(_565) + _616);
+    half _941 = clamp(dot(_1164, _616), half(0.0), half(1.0));
+    half3 _1041 = cross(_1164, _1014);
+    half _1044 = clamp(dot(_1164, _1014), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _1061 = max(mix((half(2.0) * _941) * _794, _941 + _794, half(params.facet_alpha)), half(0.000244140625));
+    half _1068 = (half(1024.0) * half(params.facet_alpha)) / (fma(_1044, _1044, dot(_1041, _1041)) * (half(6433.98193359375) * _1061));
+    half3 _1080 = fma(clamp(half4(_689).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_883).xyz * (mix(half4(_857).xxx, half4(_857).yyy, half3(float3(0.039999999105930328369140625))) * _876)) + min(((half3(float3(0.039999999105930328369140625)) * min(_1068 * (_1068 * (half(6.283185482025146484375) * _1061)), half(65504.0))) * _876) * (half4(frame.lightColor).xyz * _941), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1080, half(1.0)));
     return out;
 }
 
