@@ -395,7 +395,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
     return false;
 
   std::string vs = prologue(in, flavour, "vertex", "highp");
-  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) + fixedBlock(flavour, abi::kObjectBlock) + "\n";
+  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) +
+        fixedBlock(flavour, abi::kObjectBlock) + "\n";
   out->libraryFiles = {"forward.vert.glsl", fragmentName};
   if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
 
