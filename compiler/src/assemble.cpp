@@ -256,6 +256,7 @@ std::string vertexInputs(const AssemblyInput& in) {
   std::string s = vertexInput(abi::kAttribPosition) + vertexInput(abi::kAttribNormal);
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) s += vertexInput(v.location);
+  for (const abi::VertexAttribute& a : abi::kInstanceAttributes) s += vertexInput(a.location);
   return s;
 }
 
@@ -395,7 +396,8 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
     return false;
 
   std::string vs = prologue(in, flavour, "vertex", "highp");
-  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) + fixedBlock(flavour, abi::kObjectBlock) + "\n";
+  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) +
+        fixedBlock(flavour, abi::kObjectBlock) + "\n";
   out->libraryFiles = {"forward.vert.glsl", fragmentName};
   if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
 
