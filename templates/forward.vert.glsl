@@ -21,7 +21,10 @@ void main() {
     // (runtime/vertex_packing.h): one FMA decodes them to object space, in highp (fp32: the
     // 16-bit step is extent / 65534, far above fp32's rounding). fp32 streams get scale 1, offset 0.
     highp vec3 position = a_position * object.positionScale.xyz + object.positionOffset.xyz;
-    highp vec4 worldPosition = object.model * vec4(position, 1.0);
+    // The instance's 4×3 transform (shader_abi.h InstanceTransform): three rows, one dot each.
+    highp vec4 objectPosition = vec4(position, 1.0);
+    highp vec4 worldPosition = vec4(dot(a_instanceRow0, objectPosition), dot(a_instanceRow1, objectPosition),
+                                    dot(a_instanceRow2, objectPosition), 1.0);
 #if defined(FACET_VARYING_WORLD_POSITION)
     v_worldPosition = worldPosition.xyz;
 #else
@@ -35,7 +38,15 @@ void main() {
     // component below 2^-14 ≈ 6.1e-5 is flushed to 0 (subnormal) or keeps few bits, so such a
     // normal lost every tilt below 0.061 rad (the grazing_glint hard case, docs/fp16-emulation.md).
     // A unit normal keeps 11 significant bits in every component ≥ 2^-14: tilts ≥ 6.1e-5 rad.
-    v_normal = normalize(mat3(object.normalMatrix) * a_normal);
+    // Normals take the inverse-transpose of the upper 3×3 M, which stays perpendicular to the
+    // surface under a non-uniform scale. Its rows are the cross products of M's rows divided by
+    // det M (the cofactor matrix over the determinant): the normalize removes the scale, and the
+    // determinant's sign (negative for a mirroring transform) is kept so the normal still points
+    // out. 3 cross products and a dot instead of a second matrix per instance (36 bytes).
+    highp vec3 row0 = a_instanceRow0.xyz, row1 = a_instanceRow1.xyz, row2 = a_instanceRow2.xyz;
+    highp vec3 cofactor0 = cross(row1, row2);
+    highp vec3 objectNormal = dot(row0, cofactor0) < 0.0 ? -a_normal : a_normal;
+    v_normal = normalize(objectNormal * mat3(cofactor0, cross(row2, row0), cross(row0, row1)));
     // UVs likewise: unorm16 over the UV set's bounds, one FMA each (scale in xy, offset in zw).
 #if defined(FACET_VARYING_UV0)
     v_uv0 = a_uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw;
@@ -49,7 +60,7 @@ void main() {
 #if defined(FACET_VARYING_TANGENT)
     // A tangent lies in the surface, so it transforms with the model matrix itself (the normal
     // matrix is for normals); the handedness sign passes through.
-    v_tangent = vec4(mat3(object.model) * a_tangent.xyz, a_tangent.w);
+    v_tangent = vec4(a_tangent.xyz * mat3(row0, row1, row2), a_tangent.w);
 #endif
 #if defined(FACET_VERTEX_DIFFUSE)
     // Per-vertex diffuse (Zioma 2015: diffuse varies slowly, so mid and low tiers light it per

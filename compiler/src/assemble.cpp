@@ -256,6 +256,7 @@ std::string vertexInputs(const AssemblyInput& in) {
   std::string s = vertexInput(abi::kAttribPosition) + vertexInput(abi::kAttribNormal);
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) s += vertexInput(v.location);
+  for (const abi::VertexAttribute& a : abi::kInstanceAttributes) s += vertexInput(a.location);
   return s;
 }
 

@@ -472,7 +472,8 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   const PreshadeLayout preshade = options.preshader ? planPreshade(material, layout) : PreshadeLayout{};
   ir::SurfaceGlsl surface = ir::emitSurface(material);
   result.package.compilerVersion = compilerVersion();
-  result.package.packedVertices = true;  // templates/forward.vert.glsl decodes the packed streams
+  result.package.packedVertices = true;      // templates/forward.vert.glsl decodes the packed streams
+  result.package.instanceTransforms = true;  // and reads the instance stream's transforms
   result.package.material = materialInfo(material, layout);
 
   permutations::MaterialNeeds needs;

@@ -16,13 +16,17 @@ runtime::ColorEncoding encoding(const TierConfig& c) {
                                                              : runtime::ColorEncoding::Linear;
 }
 
-// Same position, rotation and scale: the draw's model matrix is the object's, rounded to float.
+// Same position, rotation and scale: the draw's first instance is the object's transform, rounded
+// to float (the draws of one instanced group share their parameters and textures, so the first
+// object stands for them all).
 bool samePlace(const runtime::DrawItem& draw, const runtime::SceneObject& o) {
   const glm::dmat4 model = runtime::modelMatrix(o);
-  for (int i = 0; i < 16; ++i) {
-    const double want = model[i / 4][i % 4];
-    if (std::abs(draw.object.model[i] - want) > 1e-5 * std::max(1.0, std::abs(want))) return false;
-  }
+  const abi::InstanceTransform& t = draw.instances.front();
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 4; ++column) {
+      const double want = model[column][row];
+      if (std::abs(t.rows[row][column] - want) > 1e-5 * std::max(1.0, std::abs(want))) return false;
+    }
   return true;
 }
 

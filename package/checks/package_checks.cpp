@@ -62,6 +62,15 @@ std::string loadError(const PackageReader& reader) {
            std::to_string(kFirstMinorWithPackedVertices) +
            "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
   }
+  // Before format 1.6 the vertex shaders read the model and normal matrices from ObjectUniforms;
+  // this runtime's block holds only the mesh's decoding and streams the transform per instance.
+  if (minor < kFirstMinorWithInstanceTransforms && !reader.variants().empty()) {
+    return "package format 1." + std::to_string(minor) +
+           " reads its transform from ObjectUniforms, which this runtime no longer provides (per-instance "
+           "transforms since format 1." +
+           std::to_string(kFirstMinorWithInstanceTransforms) +
+           "); rebuild it with this release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg";
+  }
   // A table of another shape, even one of the same byte count, would be sampled at the wrong
   // texels: the shaders address it with the ABI's size.
   for (const TextureInfo& t : reader.textures()) {

@@ -144,8 +144,11 @@ class StageCheck {
   std::string vertexInput(const ReflectedVariable& v) const {
     const std::string what = "vertex input '" + v.name + "'";
     if (!v.location) return "declares " + what + " without a location";
-    for (const abi::VertexAttribute& a : abi::kVertexAttributes) {
-      if (a.location != *v.location) continue;
+    const bool known =
+        std::ranges::any_of(abi::kVertexAttributes, [&](const auto& a) { return a.location == *v.location; }) ||
+        std::ranges::any_of(abi::kInstanceAttributes, [&](const auto& a) { return a.location == *v.location; });
+    if (known) {
+      const abi::VertexAttribute& a = abi::vertexAttribute(*v.location);
       // By name too, where the shader keeps names: an input at another attribute's location reads
       // that attribute (GL assigns locations the shader leaves out).
       const std::string supplies = "a_" + std::string(a.name);

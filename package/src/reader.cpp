@@ -92,6 +92,7 @@ ReadResult readChecked(std::span<const uint8_t> file) {
   result.formatMajor = reader->formatMajor();
   result.formatMinor = reader->formatMinor();
   pkg.packedVertices = result.formatMinor >= kFirstMinorWithPackedVertices;
+  pkg.instanceTransforms = result.formatMinor >= kFirstMinorWithInstanceTransforms;
   result.package = std::move(pkg);
   return result;
 }

@@ -144,11 +144,12 @@ std::vector<uint8_t> write(const Package& pkg) {
   ByteWriter out(file);
   out.bytes(kMagic);
   out.u16(kFormatMajor);
-  // The lowest minor that describes the file. Shaders reading the two packed vertex streams:
-  // 1.5, and a lit material's shaders sample the environment as a cube map: 1.4, so that an
+  // The lowest minor that describes the file. Shaders reading instance transforms: 1.6; the two
+  // packed vertex streams: 1.5, and a lit material's shaders sample the environment as a cube map: 1.4, so that an
   // older runtime (which binds one fp32 stream, or an octahedral map) refuses the file instead
   // of drawing it wrong.
-  out.u16(pkg.packedVertices              ? kFirstMinorWithPackedVertices
+  out.u16(pkg.instanceTransforms          ? kFirstMinorWithInstanceTransforms
+          : pkg.packedVertices            ? kFirstMinorWithPackedVertices
           : pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
           : preshaded                     ? kFirstMinorWithPreshader
           : !pkg.mslBindings.empty()      ? kFirstMinorWithMslBindings

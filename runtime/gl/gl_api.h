@@ -58,6 +58,7 @@ namespace facet::runtime::gl {
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                                   \
   X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                                                 \
   X(PFNGLDRAWELEMENTSPROC, glDrawElements)                                               \
+  X(PFNGLDRAWELEMENTSINSTANCEDPROC, glDrawElementsInstanced)                             \
   X(PFNGLENABLEPROC, glEnable)                                                           \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)                         \
   X(PFNGLENDQUERYPROC, glEndQuery)                                                       \
@@ -106,6 +107,7 @@ namespace facet::runtime::gl {
   X(PFNGLUNIFORM1IPROC, glUniform1i)                                                     \
   X(PFNGLUNIFORMBLOCKBINDINGPROC, glUniformBlockBinding)                                 \
   X(PFNGLUSEPROGRAMPROC, glUseProgram)                                                   \
+  X(PFNGLVERTEXATTRIBDIVISORPROC, glVertexAttribDivisor)                                 \
   X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)                                 \
   X(PFNGLVIEWPORTPROC, glViewport)
 
@@ -182,6 +184,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glDrawArrays (::facet::runtime::gl::detail::current->glDrawArrays)
 #define glDrawBuffers (::facet::runtime::gl::detail::current->glDrawBuffers)
 #define glDrawElements (::facet::runtime::gl::detail::current->glDrawElements)
+#define glDrawElementsInstanced (::facet::runtime::gl::detail::current->glDrawElementsInstanced)
 #define glEnable (::facet::runtime::gl::detail::current->glEnable)
 #define glEnableVertexAttribArray (::facet::runtime::gl::detail::current->glEnableVertexAttribArray)
 #define glEndQuery (::facet::runtime::gl::detail::current->glEndQuery)
@@ -231,5 +234,6 @@ bool checkGlError(const char* phase, std::string* error);
 #define glUniform1i (::facet::runtime::gl::detail::current->glUniform1i)
 #define glUniformBlockBinding (::facet::runtime::gl::detail::current->glUniformBlockBinding)
 #define glUseProgram (::facet::runtime::gl::detail::current->glUseProgram)
+#define glVertexAttribDivisor (::facet::runtime::gl::detail::current->glVertexAttribDivisor)
 #define glVertexAttribPointer (::facet::runtime::gl::detail::current->glVertexAttribPointer)
 #define glViewport (::facet::runtime::gl::detail::current->glViewport)

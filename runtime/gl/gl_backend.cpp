@@ -8,6 +8,7 @@
 // (one framebuffer, the post pass reads HDR by GL_EXT_shader_framebuffer_fetch, then HDR and
 // depth are invalidated) or separate (post samples the HDR texture).
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <optional>
 #include <unordered_map>
@@ -166,6 +167,8 @@ class GlBackend final : public GlRenderer {
   gl::VertexArray emptyVertexArray_;  // core profile draws need a VAO even without attributes
   gl::Buffer frameUniforms_;
   gl::Buffer objectUniforms_;
+  gl::Buffer instances_;      // every draw's InstanceTransforms of the frame, one after the other
+  size_t firstInstance_ = 0;  // the next draw's first instance in instances_
   gl::Buffer materialUniforms_;
   gl::RenderTargets targets_;
   gl::TextureCache textures_;             // kept across frames; see gl_textures.h for the reuse rule
@@ -238,6 +241,7 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   emptyVertexArray_ = gl::VertexArray::generate();
   frameUniforms_ = gl::Buffer::generate();
   objectUniforms_ = gl::Buffer::generate();
+  instances_ = gl::Buffer::generate();
   materialUniforms_ = gl::Buffer::generate();
   // GL_KHR_texture_compression_astc_ldr (core in GLES 3.2) lets ASTC blocks be uploaded as they
   // are; without it (or when told to) the texture cache decodes them to RGBA8 on the CPU.
@@ -303,6 +307,7 @@ bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
 }
 
 bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string* error) {
+  const auto start = std::chrono::steady_clock::now();
   std::string message;
   const auto renderFrame = [&] {
     if (!result) {
@@ -316,6 +321,8 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
         forwardPass(frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!forwardDone) return false;
+    result->cpuSubmitMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     result->hdr.clear();
     // Merged: HDR is read back before the post pass, because Mesa 22.3's llvmpipe writes the
     // framebuffer-fetch `inout` colour back as zero (measured on these machines, GLES 3.2 and
@@ -424,6 +431,18 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
   if (!checkGlError("forward pass setup", error)) return false;
 
+  if (std::string why = instanceCountError(frame); !why.empty()) {
+    if (error) *error = why;
+    return false;
+  }
+  // The frame's transforms in one upload; each draw points the instance attributes at its own.
+  std::vector<abi::InstanceTransform> instances;
+  for (const DrawItem& draw : frame.draws)
+    instances.insert(instances.end(), draw.instances.begin(), draw.instances.end());
+  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(abi::InstanceTransform)),
+               instances.data(), GL_STREAM_DRAW);
+  firstInstance_ = 0;
   meshes_.beginFrame();
   materialBlocks_.beginFrame();
   for (size_t i = 0; i < frame.draws.size(); ++i) {
@@ -435,6 +454,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
     }
   }
   glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
   glUseProgram(0);
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   meshes_.endFrame();
@@ -516,7 +536,7 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   // One buffer per block, re-specified per draw: glBufferData gives the driver fresh storage
   // while earlier draws still read the old contents.
   glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.id());
-  const abi::ObjectUniforms object = withVertexDecode(item.object, mesh->decode);
+  const abi::ObjectUniforms object = objectUniforms(mesh->decode);
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &object, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
   if (item.materialBlock && !item.materialBlock->bytes.empty()) {
@@ -552,7 +572,15 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   gl::assignSamplerUnits(program->program.id(), item.textures, &cached->samplerUnits);
   textures_.bind(frame, item);
   glBindVertexArray(mesh->vertexArray.id());
-  glDrawElements(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+  for (const abi::VertexAttribute& a : abi::kInstanceAttributes) {
+    const size_t offset = firstInstance_ * sizeof(abi::InstanceTransform) + a.offsetFloats * sizeof(float);
+    glVertexAttribPointer(a.location, 4, GL_FLOAT, GL_FALSE, sizeof(abi::InstanceTransform),
+                          reinterpret_cast<const void*>(offset));
+  }
+  const auto instanceCount = static_cast<GLsizei>(item.instances.size());
+  firstInstance_ += item.instances.size();
+  glDrawElementsInstanced(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr, instanceCount);
   return checkGlError("draw", error);
 }
 

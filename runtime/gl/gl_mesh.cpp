@@ -79,6 +79,12 @@ bool uploadMesh(const Mesh& mesh, VertexPacking packing, MeshBuffers* buffers, s
                             reinterpret_cast<const void*>(size_t(a.offset)));
     }
   }
+  // The instance stream's attributes advance once per instance (divisor 1, VAO state); their
+  // pointers are set per draw, into the frame's instance buffer (GLES 3.0 has no base instance).
+  for (const abi::VertexAttribute& a : abi::kInstanceAttributes) {
+    glEnableVertexAttribArray(a.location);
+    glVertexAttribDivisor(a.location, 1);
+  }
   // The element array binding is VAO state, so it is bound while the VAO is.
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, uploaded.indices.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),

@@ -174,12 +174,15 @@ bool MaterialInstance::setTexture(std::string_view name, const Texture* texture,
 }
 
 DrawItem MaterialInstance::draw(const Mesh& mesh, const std::array<float, 16>& model) const {
+  return draw(mesh, std::span(&model, 1));
+}
+
+DrawItem MaterialInstance::draw(const Mesh& mesh, std::span<const std::array<float, 16>> models) const {
   DrawItem item;
   item.mesh = &mesh;
   item.program = &material_->program_;
-  std::memcpy(item.object.model, model.data(), sizeof(item.object.model));
-  const glm::mat4 normal(glm::inverseTranspose(glm::mat3(glm::make_mat4(model.data()))));
-  std::memcpy(item.object.normalMatrix, glm::value_ptr(normal), sizeof(item.object.normalMatrix));
+  item.instances.reserve(models.size());
+  for (const std::array<float, 16>& model : models) item.instances.push_back(instanceTransform(model.data()));
   item.materialBlock = &block_;
   item.textures = textures_;
   item.blending = material_->blending_;

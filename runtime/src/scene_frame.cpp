@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <optional>
+#include <unordered_map>
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
@@ -27,6 +28,48 @@ namespace facet::runtime {
 namespace {
 
 void store(float* dst, const glm::mat4& m) { std::memcpy(dst, glm::value_ptr(m), sizeof(float) * 16); }
+
+// What a draw shares with the draws it may be merged with: all but its instances, as bytes.
+std::string instancingKey(const DrawItem& d) {
+  std::string key;
+  auto add = [&](const void* bytes, size_t size) { key.append(static_cast<const char*>(bytes), size); };
+  add(&d.mesh, sizeof d.mesh);
+  add(&d.program, sizeof d.program);
+  add(&d.materialBlock, sizeof d.materialBlock);
+  const bool flags[2] = {d.cullBackFaces, d.masked};
+  add(flags, sizeof flags);
+  for (const TextureBinding& t : d.textures) {
+    add(&t.binding, sizeof t.binding);
+    add(&t.texture, sizeof t.texture);
+    key += t.glslName + '\0';
+  }
+  key += '|';
+  add(d.materialParams.data(), d.materialParams.size());
+  return key;
+}
+
+// Opaque objects that differ only in their transform become one instanced draw, at the place of
+// the first of them, their instances in scene order. Opaque draws test and write depth, so
+// their order changes no pixel except between coplanar surfaces at equal depth (GL_LESS keeps
+// the first drawn: the same one as before when both are in one group, since the group keeps
+// scene order). Blended draws are not merged: they are sorted far to near, per object, and one
+// draw's instances would blend in their own order, whatever the camera.
+void mergeInstances(std::vector<DrawItem>* draws) {
+  std::vector<DrawItem> merged;
+  std::unordered_map<std::string, size_t> groups;
+  for (DrawItem& d : *draws) {
+    if (d.blending == Blending::Opaque) {
+      auto [it, fresh] = groups.try_emplace(instancingKey(d), merged.size());
+      if (!fresh && merged[it->second].instances.size() < abi::kMaxInstancesPerDraw) {
+        merged[it->second].instances.push_back(d.instances.front());
+        continue;
+      }
+      it->second = merged.size();  // a new group, or the full one's successor
+    }
+    merged.push_back(std::move(d));
+  }
+  *draws = std::move(merged);
+}
 void store(float* dst, const glm::dvec3& v, double w = 0) {
   dst[0] = float(v.x);
   dst[1] = float(v.y);
@@ -158,11 +201,9 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     draw.mesh = mesh->second.get();
     draw.program = &material.program();
-    // Normals take the inverse-transpose, which stays perpendicular to the surface under a
-    // non-uniform scale (the forward vertex stage normalises the result).
-    const glm::dmat4 model = modelMatrix(o);
-    store(draw.object.model, glm::mat4(model));
-    store(draw.object.normalMatrix, glm::mat4(glm::inverseTranspose(glm::dmat3(model))));
+    // The normal's transform is derived in the vertex stage from these rows (forward.vert.glsl).
+    const glm::mat4 model(modelMatrix(o));
+    draw.instances.push_back(instanceTransform(glm::value_ptr(model)));
     auto block = material.loaded().paramBlock(o.params, error, out->colors_, o.boolParams);
     if (!block || !material.loaded().preshade(material.variantKey(), &*block, error)) {
       *error = "object " + std::to_string(i) + ": " + *error;
@@ -188,11 +229,14 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     out->frame_.draws.push_back(std::move(draw));
   }
-  // Opaque draws first, in scene order; blended ones after them, far to near, so each blends
-  // over everything behind it (sorted by object centre: exact for the separate spheres here).
+  mergeInstances(&out->frame_.draws);
+  // Opaque draws first, in scene order (of each draw's first object); blended ones after them,
+  // far to near, so each blends over everything behind it (sorted by object centre: exact for
+  // the separate spheres here).
   auto& draws = out->frame_.draws;
   auto distance = [&](const DrawItem& d) {
-    glm::dvec3 centre(d.object.model[12], d.object.model[13], d.object.model[14]);
+    const abi::InstanceTransform& t = d.instances.front();
+    glm::dvec3 centre(t.rows[0][3], t.rows[1][3], t.rows[2][3]);
     return glm::length(centre - cam.position);
   };
   std::stable_sort(draws.begin(), draws.end(), [&](const DrawItem& a, const DrawItem& b) {

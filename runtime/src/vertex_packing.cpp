@@ -291,8 +291,8 @@ bool checkPackedMesh(const PackedMesh& packed, std::string* error) {
   return true;
 }
 
-abi::ObjectUniforms withVertexDecode(const abi::ObjectUniforms& object, const VertexDecode& decode) {
-  abi::ObjectUniforms out = object;
+abi::ObjectUniforms objectUniforms(const VertexDecode& decode) {
+  abi::ObjectUniforms out{};
   for (int c = 0; c < 3; ++c) {
     out.positionScale[c] = decode.positionScale[c];
     out.positionOffset[c] = decode.positionOffset[c];

@@ -4,15 +4,13 @@
 #include <cstdio>
 
 namespace facet::viewer {
-namespace {
 
 double median(std::vector<double> values) {
+  if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
-
-}  // namespace
 
 std::vector<MedianTime> medianTimes(const std::vector<std::vector<runtime::PassTime>>& frames) {
   std::vector<MedianTime> out;

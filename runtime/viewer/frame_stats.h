@@ -16,6 +16,8 @@ struct MedianTime {
   double milliseconds = 0;
 };
 
+// The median of the values (0 for none).
+double median(std::vector<double> values);
 // The median of each pass over frames (every frame lists the same passes in the same order);
 // empty when the backend gave no times. A "total" entry sums the passes frame by frame.
 std::vector<MedianTime> medianTimes(const std::vector<std::vector<runtime::PassTime>>& frames);

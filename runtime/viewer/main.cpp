@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false;
   size_t frames = 1, warmup = 2;
+  bool oneDrawPerObject = false;
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
   uint32_t width = 0, height = 0, msaa = 0;
   app.add_option("scene", scenePath, "scene JSON")->required();
@@ -55,6 +56,8 @@ int main(int argc, char** argv) {
   app.add_flag("--json", json, "with --stats: print the statistics as JSON on stdout (other output goes to stderr)");
   app.add_option("--frames", frames, "frames to render and measure (the PNG is the last one)")
       ->check(CLI::Range(1, 100000));
+  app.add_flag("--one-draw-per-object", oneDrawPerObject,
+               "draw every object with its own call instead of instancing those that share all but the transform");
   app.add_flag("--decode-textures", decodeTextures,
                "GL: decode ASTC textures on the CPU even where the context samples ASTC (the fallback path)");
   app.add_option("--warmup", warmup, "with --stats: frames rendered first and not measured (default 2)")
@@ -123,10 +126,16 @@ int main(int argc, char** argv) {
     if (!backend) return fail(name + ": " + error);
     facet::runtime::FrameResult result;
     std::vector<std::vector<facet::runtime::PassTime>> times;
+    std::vector<double> cpuTimes;
+    facet::runtime::FrameDesc frame = prepared->frame();
+    if (oneDrawPerObject) frame.draws = facet::runtime::oneDrawPerInstance(frame.draws);
     const size_t total = frames + (stats ? warmup : 0);
     for (size_t i = 0; i < total; ++i) {
-      if (!backend->render(prepared->frame(), &result, &error)) return fail(name + ": " + error);
-      if (i >= total - frames) times.push_back(result.gpuTimes);
+      if (!backend->render(frame, &result, &error)) return fail(name + ": " + error);
+      if (i >= total - frames) {
+        times.push_back(result.gpuTimes);
+        cpuTimes.push_back(result.cpuSubmitMilliseconds);
+      }
     }
     for (const std::string& message : backend->validationErrors())
       std::fprintf(stderr, "%s validation: %s\n", name.c_str(), message.c_str());
@@ -152,12 +161,16 @@ int main(int argc, char** argv) {
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
+        entry["draws"] = frame.draws.size();
+        entry["cpuSubmitMs"] = facet::viewer::median(cpuTimes);
         report.push_back(std::move(entry));
       } else {
         std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux (%s):\n%s", name.c_str(),
                     facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
                     result.width, result.height, backend->msaaSamples(), backend->msaaMethod().c_str(),
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
+        std::printf("  %zu draw calls; CPU issuing the frame (FrameResult::cpuSubmitMilliseconds): median %.3f ms\n",
+                    frame.draws.size(), facet::viewer::median(cpuTimes));
       }
     }
   }

@@ -7,6 +7,7 @@
 // unfinished. So what a frame writes exists once per frame in flight (FrameSlot), and what it
 // replaces is retired, not destroyed (vk_retire.h); the LDR attachment is the backend's own
 // target or a view of the app's image (vk_app_images.h).
+#include <chrono>
 #include <cstring>
 #include <exception>
 #include <map>
@@ -100,7 +101,9 @@ class VulkanBackend final : public VulkanRenderer {
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
   FrameObjects frameObjects(VkQueryPool timestamps) const;
-  bool submitAndWait(std::string* error);
+  // Submits the frame's command buffer and waits for it; *cpuMilliseconds (when not null): from
+  // `start` until the submission returned (FrameResult::cpuSubmitMilliseconds).
+  bool submitAndWait(std::string* error, double* cpuMilliseconds, std::chrono::steady_clock::time_point start);
   void readBack(FrameResult* result) const;
   void readTimes(FrameResult* result) const;
 
@@ -515,6 +518,7 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
 // result: read back into (render); null when the frame goes into appImage (renderToImage).
 bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage, FrameResult* result,
                                 std::string* error) {
+  const auto start = std::chrono::steady_clock::now();
   if (!deviceFailure_.empty()) {
     *error = "Vulkan backend unusable after an earlier failure: " + deviceFailure_;
     return false;
@@ -551,7 +555,7 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
       recordCopyToAppImage(cmd, targets_, *appImage);
     }
     if (!check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error)) return false;
-    if (!submitAndWait(error)) {
+    if (!submitAndWait(error, result ? &result->cpuSubmitMilliseconds : nullptr, start)) {
       deviceFailure_ = *error;
       return false;
     }
@@ -594,7 +598,8 @@ FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
           postLayout_,
           postPipeline_,
           slot_->postSet,
-          timestamps};
+          timestamps,
+          slot_->arena.buffer};
 }
 
 TargetConfig VulkanBackend::targetConfig() const {
@@ -684,7 +689,8 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
   destroyHostBuffer(ctx_.device, &arena);  // the slot's previous frame has finished
   VkDeviceSize capacity = 64 * 1024;
   while (capacity < size) capacity *= 2;
-  return createHostBuffer(ctx_, capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &arena, error);
+  return createHostBuffer(ctx_, capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                          &arena, error);
 }
 
 // Makes each draw's mesh resident, builds (or finds) its pipeline for the mesh's vertex layout,
@@ -801,7 +807,8 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   return true;
 }
 
-bool VulkanBackend::submitAndWait(std::string* error) {
+bool VulkanBackend::submitAndWait(std::string* error, double* cpuMilliseconds,
+                                  std::chrono::steady_clock::time_point start) {
   if (!check(vkResetFences(ctx_.device, 1, &fence_), "vkResetFences", error)) return false;
   VkSubmitInfo submit{};
   submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
@@ -810,6 +817,8 @@ bool VulkanBackend::submitAndWait(std::string* error) {
   if (!check(vkQueueSubmit(ctx_.queue, 1, &submit, fence_), "vkQueueSubmit", error)) {
     return false;
   }
+  if (cpuMilliseconds)
+    *cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return check(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, kFenceTimeoutNs), "vkWaitForFences", error);
 }
 

@@ -82,13 +82,15 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     }
     const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2, sets, 0, nullptr);
-    const VkBuffer streams[abi::kVertexStreams] = {slot.mesh.buffer, slot.mesh.buffer};
-    vkCmdBindVertexBuffers(cmd, 0, abi::kVertexStreams, streams, slot.mesh.streamOffsets);
+    const VkBuffer streams[abi::kStreams] = {slot.mesh.buffer, slot.mesh.buffer, objects.arena};
+    const VkDeviceSize offsets[abi::kStreams] = {slot.mesh.streamOffsets[0], slot.mesh.streamOffsets[1],
+                                                 slot.instanceOffset};
+    vkCmdBindVertexBuffers(cmd, 0, abi::kStreams, streams, offsets);
     if (slot.mesh.indexCount > 0) {
       vkCmdBindIndexBuffer(cmd, slot.mesh.buffer, slot.mesh.indexOffset, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, slot.mesh.indexCount, 1, 0, 0, 0);
+      vkCmdDrawIndexed(cmd, slot.mesh.indexCount, slot.instanceCount, 0, 0, 0);
     } else {
-      vkCmdDraw(cmd, slot.mesh.vertexCount, 1, 0, 0);
+      vkCmdDraw(cmd, slot.mesh.vertexCount, slot.instanceCount, 0, 0);
     }
   }
   // Post pass: one full-screen triangle reading the HDR image (its own pixel when merged).

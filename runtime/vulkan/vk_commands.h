@@ -29,6 +29,7 @@ struct FrameObjects {
   VkDescriptorSet postSet = VK_NULL_HANDLE;
   // kTimestampCount timestamps: frame start, forward pass done, post pass done. Null: not timed.
   VkQueryPool timestamps = VK_NULL_HANDLE;
+  VkBuffer arena = VK_NULL_HANDLE;  // this frame's uniforms and instance transforms (DrawSlot offsets)
 };
 
 // Where the passes write: render passes and framebuffers, and, when the LDR attachment is the

@@ -25,6 +25,10 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
              std::to_string(maxSize);
     return false;
   }
+  if (std::string why = instanceCountError(frame); !why.empty()) {
+    *error = why;
+    return false;
+  }
   std::unordered_set<const Mesh*> checkedMeshes;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
@@ -66,6 +70,10 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
     slot.materialSize = materialRange(materialBytes(draw).size());
     slot.objectOffset = size;
     size = alignUp(size + sizeof(abi::ObjectUniforms), alignment);
+    // The instance stream reads the arena as a vertex buffer: 16-byte alignment suits its vec4s.
+    slot.instanceOffset = size;
+    slot.instanceCount = static_cast<uint32_t>(draw.instances.size());
+    size = alignUp(size + draw.instances.size() * sizeof(abi::InstanceTransform), alignment);
     // A persistent block (material instance) lives in its own buffer, not the arena.
     if (draw.materialBlock) continue;
     slot.materialOffset = size;
@@ -83,8 +91,10 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, bool
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     const DrawSlot& slot = slots[i];
-    const abi::ObjectUniforms object = withVertexDecode(draw.object, slot.mesh.decode);
+    const abi::ObjectUniforms object = objectUniforms(slot.mesh.decode);
     std::memcpy(base + slot.objectOffset, &object, sizeof(object));
+    std::memcpy(base + slot.instanceOffset, draw.instances.data(),
+                draw.instances.size() * sizeof(abi::InstanceTransform));
     if (draw.materialBlock) continue;
     std::memset(base + slot.materialOffset, 0, slot.materialSize);
     if (!draw.materialParams.empty()) {

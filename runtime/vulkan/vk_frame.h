@@ -28,12 +28,14 @@ struct DrawSlot {
   VkBuffer materialBuffer = VK_NULL_HANDLE;  // a persistent block's buffer; null: the arena
   VkDeviceSize materialOffset = 0;           // in the arena; 0 in a persistent block's buffer
   VkDeviceSize materialSize = 0;             // >= 16 bytes: an empty MaterialParams binds 16 zero bytes
-  MeshLocation mesh;                         // the draw's mesh buffer (MeshCache), filled by the backend
+  VkDeviceSize instanceOffset = 0;           // the draw's InstanceTransforms in the arena (binding 2)
+  uint32_t instanceCount = 0;
+  MeshLocation mesh;  // the draw's mesh buffer (MeshCache), filled by the backend
 };
 
 // Rejects what the device cannot draw or would read out of bounds: an empty or oversized frame,
-// null meshes or programs, partial vertices, indices past the last vertex, oversized params,
-// and malformed texture bindings (checkFrameTextures in vk_textures.h).
+// null meshes or programs, instance counts out of bounds (instanceCountError), partial vertices, indices past the last
+// vertex, oversized params, and malformed texture bindings (checkFrameTextures in vk_textures.h).
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error);
 
 // Fills the uniform offsets of slots (one per draw; pipeline, sets, mesh and materialBuffer are

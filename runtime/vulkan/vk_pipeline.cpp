@@ -473,11 +473,17 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   // shaders read the same vecN from any of them. Attributes the shaders do not read are allowed
   // by Vulkan (they are simply not fetched).
   const VertexLayoutDesc& layout = vertexLayout(desc.vertexLayout);
-  std::array<VkVertexInputBindingDescription, abi::kVertexStreams> bindings{};
+  // Then the instance stream: fp32 rows, advanced per instance.
+  std::array<VkVertexInputBindingDescription, abi::kStreams> bindings{};
   for (uint32_t s = 0; s < abi::kVertexStreams; ++s) bindings[s] = {s, layout.strides[s], VK_VERTEX_INPUT_RATE_VERTEX};
+  bindings[abi::kInstanceStream] = {abi::kInstanceStream, sizeof(abi::InstanceTransform),
+                                    VK_VERTEX_INPUT_RATE_INSTANCE};
   std::vector<VkVertexInputAttributeDescription> attributes;
   for (const StreamAttribute& a : layout.attributes)
     attributes.push_back({a.location, a.stream, vertexFormat(a.format), a.offset});
+  for (const abi::VertexAttribute& a : abi::kInstanceAttributes)
+    attributes.push_back(
+        {a.location, abi::kInstanceStream, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(a.offsetFloats * sizeof(float))});
   VkPipelineVertexInputStateCreateInfo vertexInput{};
   vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
   if (forward) {

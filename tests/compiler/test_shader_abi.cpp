@@ -130,11 +130,15 @@ TEST(ShaderAbi, FrameAndObjectBlocksMatchTheRuntimeStructs) {
   const Block& object = vs.blocks.at("ObjectUniforms");
   EXPECT_EQ(object.binding, facet::abi::kObjectBinding);
   EXPECT_EQ(object.size, sizeof(ObjectUniforms));
-  EXPECT_EQ(object.offsets.at("model"), offsetof(ObjectUniforms, model));
-  EXPECT_EQ(object.offsets.at("normalMatrix"), offsetof(ObjectUniforms, normalMatrix));
+  EXPECT_EQ(object.offsets.at("positionScale"), offsetof(ObjectUniforms, positionScale));
+  EXPECT_EQ(object.offsets.at("positionOffset"), offsetof(ObjectUniforms, positionOffset));
 
   EXPECT_EQ(vs.inputs.at("a_position"), facet::abi::kAttribPosition);
   EXPECT_EQ(vs.inputs.at("a_normal"), facet::abi::kAttribNormal);
+  // Every forward variant reads the instance stream (a draw of one object is one instance).
+  EXPECT_EQ(vs.inputs.at("a_instanceRow0"), facet::abi::kAttribInstanceRow0);
+  EXPECT_EQ(vs.inputs.at("a_instanceRow1"), facet::abi::kAttribInstanceRow1);
+  EXPECT_EQ(vs.inputs.at("a_instanceRow2"), facet::abi::kAttribInstanceRow2);
 }
 
 // The compiler prints the blocks from shader_abi.h's tables: what SPIR-V declares is the table,
@@ -262,7 +266,7 @@ TEST(ShaderAbi, OptionalVertexInputsExistOnlyWhenTheMaterialNeedsThem) {
   ASSERT_TRUE(without);
   Reflection noneVs = reflect(spirv(highDir1(*without), facet::package::Stage::Vertex));
   Reflection noneFs = reflect(spirv(highDir1(*without), facet::package::Stage::Fragment));
-  EXPECT_EQ(noneVs.inputs.size(), 2u);  // a_position, a_normal
+  EXPECT_EQ(noneVs.inputs.size(), 5u);  // a_position, a_normal, a_instanceRow0..2
   for (const Case& c : cases) {
     SCOPED_TRACE(c.input);
     const std::string attribute = std::string("a_") + c.input, varying = std::string("v_") + c.input;
@@ -274,7 +278,7 @@ TEST(ShaderAbi, OptionalVertexInputsExistOnlyWhenTheMaterialNeedsThem) {
     Reflection fs = reflect(spirv(highDir1(*with), facet::package::Stage::Fragment));
     ASSERT_EQ(vs.inputs.count(attribute), 1u);
     EXPECT_EQ(vs.inputs.at(attribute), c.location);
-    EXPECT_EQ(vs.inputs.size(), 3u) << "only the one input is added";
+    EXPECT_EQ(vs.inputs.size(), 6u) << "only the one input is added";
     EXPECT_EQ(fs.inputs.count(varying), 1u);
   }
 }
@@ -440,7 +444,7 @@ TEST(ShaderAbi, MslSlotOfEverySamplerAndBlockIsTheSameInEveryVariantAndMaterial)
             ASSERT_TRUE(recorded.count(resource))
                 << kind << " " << resource.second << " is not in the package's record";
             EXPECT_EQ(slot, recorded.at(resource)) << kind << " " << resource.second;
-            // The two vertex streams take buffers kMslVertexBufferIndex + stream (29 and 30): no
+            // The three vertex streams take buffers kMslVertexBufferIndex + stream (28..30): no
             // block may sit there.
             if (std::string(kind) == "buffer") {
               EXPECT_LT(slot, facet::abi::mslVertexBufferIndex(0)) << resource.second;

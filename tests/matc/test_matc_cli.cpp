@@ -181,7 +181,7 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["material"], "red_plastic");
-  EXPECT_EQ(doc["format"], "1.5");                 // 1.5: shaders read the packed vertex streams
+  EXPECT_EQ(doc["format"], "1.6");                 // 1.6: shaders read per-instance transforms
   EXPECT_EQ(doc["preshadedBlockSize"], 64);        // 32 bytes of parameters, 32 of derived inputs
   ASSERT_EQ(doc["preshaderPrograms"].size(), 1u);  // every tier is linear: one program
   EXPECT_EQ(doc["preshaderPrograms"][0]["variants"].size(), 8u);

@@ -21,7 +21,8 @@ namespace {
 constexpr const char* kVertexShader = "#version 300 es\n" FACET_GL_TEST_VERTEX_INTERFACE R"(out vec2 vUv;
 void main() {
   vUv = )" FACET_GL_TEST_UV0 R"( + normal.xy * 0.0;
-  gl_Position = viewProjection * model * vec4()" FACET_GL_TEST_POSITION R"(, 1.0);
+  vec4 objectPosition = vec4()" FACET_GL_TEST_POSITION R"(, 1.0);
+  gl_Position = viewProjection * )" FACET_GL_TEST_WORLD("objectPosition") R"(;
 }
 )";
 
@@ -58,12 +59,13 @@ void setIdentity(float* m) {
   m[0] = m[5] = m[10] = m[15] = 1.0f;
 }
 
-// Column-major translation, as the ABI stores matrices.
-void setTranslation(float* m, float x, float y, float z) {
-  setIdentity(m);
-  m[12] = x;
-  m[13] = y;
-  m[14] = z;
+// A translation: the last column of the instance's rows.
+abi::InstanceTransform translation(float x, float y, float z) {
+  abi::InstanceTransform t = kIdentityInstance;
+  t.rows[0][3] = x;
+  t.rows[1][3] = y;
+  t.rows[2][3] = z;
+  return t;
 }
 
 FrameDesc makeFrame(uint32_t width, uint32_t height) {
@@ -78,8 +80,7 @@ DrawItem makeDraw(const Mesh& mesh, const ShaderProgram& program) {
   DrawItem draw;
   draw.mesh = &mesh;
   draw.program = &program;
-  setIdentity(draw.object.model);
-  setIdentity(draw.object.normalMatrix);
+  draw.instances = {kIdentityInstance};
   return draw;
 }
 
@@ -247,8 +248,8 @@ TEST(GlBackend, TwoThousandDrawsShareOneMeshBuffer) {
   FrameDesc frame = makeFrame(2 * kColumns, 2 * kRows);
   for (uint32_t i = 0; i < kColumns * kRows; ++i) {
     frame.draws.push_back(makeDraw(cell, shaders));
-    setTranslation(frame.draws.back().object.model, -1.0f + float(i % kColumns) * cellW,
-                   -1.0f + float(i / kColumns) * cellH, 0);
+    frame.draws.back().instances = {
+        translation(-1.0f + float(i % kColumns) * cellW, -1.0f + float(i / kColumns) * cellH, 0)};
     const Rgba colour = i % 3 == 0 ? Rgba{0, 1, 0, 1} : Rgba{1, 0, 0, 1};
     frame.draws.back().materialParams = materialBytes(colour, {0, 0, 0, 0});
   }
@@ -357,7 +358,7 @@ TEST(GlBackend, FrameAndObjectUniformsReachShaders) {
   const float light[4] = {0.5f, 1.5f, 3.0f, 1.0f};
   std::memcpy(frame.frame.lightColor, light, sizeof(light));
   frame.draws.push_back(makeDraw(mesh, shaders));  // no MaterialParams: the shader has none
-  setTranslation(frame.draws.back().object.model, 1.0f, 1.0f, 0.0f);
+  frame.draws.back().instances = {translation(1.0f, 1.0f, 0.0f)};
   FrameResult result;
   std::string error;
   ASSERT_TRUE(backend->render(frame, &result, &error)) << error;

@@ -34,7 +34,8 @@ out vec4 vVertexSample;
 void main() {
   vUv = )" FACET_GL_TEST_UV0 R"( + vec2(0.0 * normal.x);
   vVertexSample = textureLod(vertexTexture, vec2(0.5), 0.0);
-  gl_Position = viewProjection * model * vec4()" FACET_GL_TEST_POSITION R"(, 1.0);
+  vec4 objectPosition = vec4()" FACET_GL_TEST_POSITION R"(, 1.0);
+  gl_Position = viewProjection * )" FACET_GL_TEST_WORLD("objectPosition") R"(;
 }
 )";
 
@@ -148,8 +149,7 @@ DrawItem texturedDraw(const Mesh& mesh, const Params& params) {
   DrawItem draw;
   draw.mesh = &mesh;
   draw.program = &texturedProgram();
-  setIdentity(draw.object.model);
-  setIdentity(draw.object.normalMatrix);
+  draw.instances = {kIdentityInstance};
   draw.materialParams.resize(sizeof(Params));
   std::memcpy(draw.materialParams.data(), &params, sizeof(Params));
   return draw;

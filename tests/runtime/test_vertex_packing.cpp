@@ -394,8 +394,9 @@ TEST(VertexPacking, BackendsRefuseAMeshThatCannotBePacked) {
   }
 }
 
-// Format 1.5: packages from before it read one fp32 stream without a decode. The runtime refuses
-// to draw them with the message that says how to rebuild (the mechanism of lit packages before 1.4).
+// Formats 1.5 and 1.6: packages from before 1.5 read one fp32 stream without a decode, from
+// before 1.6 their transform from ObjectUniforms. The runtime refuses to draw them with the
+// message that says how to rebuild (the mechanism of lit packages before 1.4).
 TEST(PackedVertexFormat, AnOlderPackageIsRefusedWithARebuildMessage) {
   auto built = test::buildFile(test::examplePath("materials/red_plastic.mat"), [] {
     compiler::BuildOptions o;
@@ -413,9 +414,18 @@ TEST(PackedVertexFormat, AnOlderPackageIsRefusedWithARebuildMessage) {
   std::string error;
   EXPECT_TRUE(built->package.packedVertices);
   EXPECT_TRUE(LoadedMaterial::load(save(built->package, "current.matpkg"), &error)) << error;
+  EXPECT_TRUE(built->package.instanceTransforms);
   package::Package older = built->package;
+  older.instanceTransforms = false;  // as the 1.5 writer stamped it
+  std::string path = save(older, "older15.matpkg");
+  EXPECT_FALSE(LoadedMaterial::load(path, &error));
+  EXPECT_NE(error.find(path + ": package format 1.5 reads its transform from ObjectUniforms, which this runtime no "
+                              "longer provides (per-instance transforms since format 1.6); rebuild it with this "
+                              "release's compiler: matc compile MATERIAL.mat -o PACKAGE.matpkg"),
+            std::string::npos)
+      << error;
   older.packedVertices = false;  // as the 1.4 writer stamped it
-  const std::string path = save(older, "older.matpkg");
+  path = save(older, "older.matpkg");
   EXPECT_FALSE(LoadedMaterial::load(path, &error));
   EXPECT_NE(error.find(path + ": package format 1.4 reads one interleaved fp32 vertex stream, which this runtime no "
                               "longer provides (two packed streams since format 1.5); rebuild it with this release's "

@@ -103,8 +103,8 @@ TEST(VulkanBackend, TriangleCoversExpectedPixelsUpright) {
   frame.frame.viewProjection[0] = 0.5f;
   frame.frame.viewProjection[5] = 0.5f;
   DrawItem draw = solidDraw(mesh, kRed);
-  draw.object.model[12] = -1.0f;  // translation, column-major
-  draw.object.model[13] = 1.0f;
+  draw.instances[0].rows[0][3] = -1.0f;  // translation: the rows' last column
+  draw.instances[0].rows[1][3] = 1.0f;
   frame.draws.push_back(draw);
   FrameResult result = renderOrFail(*backend, frame);
   ASSERT_EQ(result.hdr.size(), 32u * 32u * 4u);
@@ -237,8 +237,8 @@ struct Grid {
       blocks[i] = {draw.materialParams, nextUniformGeneration()};
       draw.materialParams.clear();
       draw.materialBlock = &blocks[i];
-      draw.object.model[12] = -1.0f + float(i % kColumns) * cellW;
-      draw.object.model[13] = -1.0f + float(i / kColumns) * cellH;
+      draw.instances[0].rows[0][3] = -1.0f + float(i % kColumns) * cellW;
+      draw.instances[0].rows[1][3] = -1.0f + float(i / kColumns) * cellH;
       frame.draws.push_back(draw);
     }
   }

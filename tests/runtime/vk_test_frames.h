@@ -53,8 +53,7 @@ inline DrawItem solidDraw(const Mesh& mesh, const Rgba& colour) {
   DrawItem draw;
   draw.mesh = &mesh;
   draw.program = &solidProgram();
-  setIdentity(draw.object.model);
-  setIdentity(draw.object.normalMatrix);
+  draw.instances = {kIdentityInstance};
   draw.materialParams = materialBytes(colour);
   return draw;
 }

@@ -24,15 +24,28 @@ namespace facet::abi {
 // attribute costs memory bandwidth in the fetch but no shader work.
 inline constexpr uint32_t kPositionStream = 0;
 inline constexpr uint32_t kAttributeStream = 1;
-inline constexpr uint32_t kVertexStreams = 2;
-inline constexpr uint32_t kAttribPosition = 0;  // vec3, object space
-inline constexpr uint32_t kAttribNormal = 1;    // vec3, object space, unit length
-inline constexpr uint32_t kAttribUv0 = 2;       // vec2
-inline constexpr uint32_t kAttribUv1 = 3;       // vec2
-inline constexpr uint32_t kAttribColor = 4;     // vec4, linear RGBA in [0, 1]
-inline constexpr uint32_t kAttribTangent = 5;   // vec4: xyz object-space unit tangent (direction of
-                                                // +u), w = ±1 bitangent sign (MikkTSpace convention:
-                                                // bitangent = w · cross(normal, tangent))
+inline constexpr uint32_t kVertexStreams = 2;  // the mesh's streams; the instance stream follows
+// Per-instance transforms: binding kInstanceStream, advanced once per instance (Vulkan
+// VK_VERTEX_INPUT_RATE_INSTANCE, GLES 3.0 glVertexAttribDivisor 1), so N objects that differ only
+// in their transform are one draw (Aaltonen 2023 above: instanced draws with 4×3 matrices). A
+// vertex stream rather than a uniform array: GLES 3.0 has no storage buffers and a uniform
+// block may be as small as 16 KB (341 transforms), while an attribute stream has no such bound.
+// Every forward variant reads it (a draw of one object is one instance): no variant axis, so no
+// doubled package, and the three vec4 fetches replace the mat4 model matrix the uniform block held.
+inline constexpr uint32_t kInstanceStream = 2;
+inline constexpr uint32_t kStreams = 3;  // bindings 0..kStreams-1: two of the mesh, one of instances
+
+inline constexpr uint32_t kAttribPosition = 0;      // vec3, object space
+inline constexpr uint32_t kAttribNormal = 1;        // vec3, object space, unit length
+inline constexpr uint32_t kAttribUv0 = 2;           // vec2
+inline constexpr uint32_t kAttribUv1 = 3;           // vec2
+inline constexpr uint32_t kAttribColor = 4;         // vec4, linear RGBA in [0, 1]
+inline constexpr uint32_t kAttribTangent = 5;       // vec4: xyz object-space unit tangent (direction of
+                                                    // +u), w = ±1 bitangent sign (MikkTSpace convention:
+                                                    // bitangent = w · cross(normal, tangent))
+inline constexpr uint32_t kAttribInstanceRow0 = 6;  // vec4 each: rows 0..2 of the instance's 4×3
+inline constexpr uint32_t kAttribInstanceRow1 = 7;  // object-to-world matrix (InstanceTransform)
+inline constexpr uint32_t kAttribInstanceRow2 = 8;
 // The authoring form of a vertex (runtime::Mesh, runtime::Vertex): 18 floats in the order of
 // kVertexAttributes' offsetFloats, which the runtime packs into the two streams.
 inline constexpr uint32_t kVertexFloats = 18;
@@ -53,8 +66,16 @@ inline constexpr VertexAttribute kVertexAttributes[] = {
     {kAttribUv0, 2, 6, kAttributeStream, "uv0"},          {kAttribUv1, 2, 8, kAttributeStream, "uv1"},
     {kAttribColor, 4, 10, kAttributeStream, "color"},     {kAttribTangent, 4, 14, kAttributeStream, "tangent"},
 };
+// The instance stream: one InstanceTransform per instance, fp32, its rows at offsetFloats 0, 4, 8.
+inline constexpr VertexAttribute kInstanceAttributes[] = {
+    {kAttribInstanceRow0, 4, 0, kInstanceStream, "instanceRow0"},
+    {kAttribInstanceRow1, 4, 4, kInstanceStream, "instanceRow1"},
+    {kAttribInstanceRow2, 4, 8, kInstanceStream, "instanceRow2"},
+};
 constexpr const VertexAttribute& vertexAttribute(uint32_t location) {
   for (const VertexAttribute& a : kVertexAttributes)
+    if (a.location == location) return a;
+  for (const VertexAttribute& a : kInstanceAttributes)
     if (a.location == location) return a;
   return kVertexAttributes[0];  // unreachable for the kAttrib* constants (a static_assert below checks them)
 }
@@ -150,10 +171,23 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
 
-// Per-object data.
+// One instance's object-to-world transform: the top three rows of the column-major 4×4 model
+// matrix (the fourth is 0 0 0 1 for an affine transform), row r = (m[0][r], m[1][r], m[2][r],
+// m[3][r]); world = (dot(row0, p), dot(row1, p), dot(row2, p)) for p = (object position, 1).
+// 48 bytes where a mat4 and its normal matrix took 128: the forward vertex stage derives the
+// normal's transform from these rows (templates/forward.vert.glsl).
+struct InstanceTransform {
+  float rows[3][4];
+};
+static_assert(sizeof(InstanceTransform) == 48, "three vec4 attributes");
+// Bounds on instances, from memory: 64 Ki per draw is 3 MiB of transforms, and the frame's
+// 256 Ki (12 MiB) are copied into a buffer per frame in flight (8 at most: 96 MiB). A scene
+// holds far fewer objects (scene/scene.h); an app past them splits its draws or frames.
+inline constexpr uint32_t kMaxInstancesPerDraw = 64 * 1024;
+inline constexpr uint32_t kMaxInstancesPerFrame = 256 * 1024;
+
+// Per-draw data: how the mesh decodes. The transform is per instance (InstanceTransform).
 struct ObjectUniforms {
-  float model[16];
-  float normalMatrix[16];  // inverse-transpose of model's upper 3×3, stored as a mat4
   // How the mesh's streams decode (runtime/vertex_packing.h), written by the backend from the
   // mesh it draws (whatever a DrawItem holds here is replaced): object-space position =
   // a_position · positionScale.xyz + positionOffset.xyz, uvN = a_uvN · uvNScaleOffset.xy +
@@ -163,7 +197,7 @@ struct ObjectUniforms {
   float uv0ScaleOffset[4];
   float uv1ScaleOffset[4];
 };
-static_assert(sizeof(ObjectUniforms) == 192, "std140 layout of ObjectUniforms");
+static_assert(sizeof(ObjectUniforms) == 64, "std140 layout of ObjectUniforms");
 
 // Per-frame data of the post pass (block "PostUniforms", chunks/vignette.glsl reads it).
 struct PostUniforms {
@@ -228,8 +262,10 @@ inline constexpr MemberDesc kFrameMembers[] = {
     {"highp vec4", "sh", kShCoefficients},
 };
 inline constexpr MemberDesc kObjectMembers[] = {
-    {"highp mat4", "model"},          {"highp mat4", "normalMatrix"},   {"highp vec4", "positionScale"},
-    {"highp vec4", "positionOffset"}, {"highp vec4", "uv0ScaleOffset"}, {"highp vec4", "uv1ScaleOffset"},
+    {"highp vec4", "positionScale"},
+    {"highp vec4", "positionOffset"},
+    {"highp vec4", "uv0ScaleOffset"},
+    {"highp vec4", "uv1ScaleOffset"},
 };
 
 inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame",       kBlockSet,
@@ -281,13 +317,14 @@ inline constexpr SamplerDesc kPostColorLutSampler{kPostColorLutName, kPostHdrSet
 // of use, per shader): a block at [[buffer(binding)]]; a sampler of set kTextureSet at
 // [[texture(binding)]] and [[sampler(binding)]] (bindings 0..15 fit iOS's 16 samplers). The
 // vertex streams (stage_in) should use buffer indices kMslVertexBufferIndex + stream (positions
-// at 29, the other attributes at 30; MTLVertexDescriptor's layouts), clear of the blocks.
+// at 28, the other attributes at 29, instance transforms at 30; MTLVertexDescriptor's layouts),
+// clear of the blocks.
 // The package records these slots (section MSLB, docs/package-format.md).
 constexpr uint32_t mslBufferIndex(const BlockDesc& block) { return block.binding; }
 constexpr uint32_t mslTextureIndex(uint32_t textureBinding) { return textureBinding; }
-inline constexpr uint32_t kMslVertexBufferIndex = 29;
+inline constexpr uint32_t kMslVertexBufferIndex = 28;
 constexpr uint32_t mslVertexBufferIndex(uint32_t stream) { return kMslVertexBufferIndex + stream; }
-static_assert(mslVertexBufferIndex(kVertexStreams - 1) <= 30, "Metal has buffer indices 0..30");
+static_assert(mslVertexBufferIndex(kStreams - 1) <= 30, "Metal has buffer indices 0..30");
 
 static_assert(vertexAttribute(kAttribTangent).location == kAttribTangent && vertexAttribute(kAttribUv0).components == 2,
               "kVertexAttributes lists every kAttrib* location");

@@ -20,13 +20,15 @@ namespace facet::package {
 // both and the command that rebuilds the package. The writer stamps the lowest minor that
 // describes the file, so packages that use no newer feature stay readable by older readers.
 inline constexpr uint16_t kFormatMajor = 1;
-inline constexpr uint16_t kFormatMinor = 5;  // 1.1: shader blobs compressed against a package dictionary;
+inline constexpr uint16_t kFormatMinor = 6;  // 1.1: shader blobs compressed against a package dictionary;
                                              // 1.2: the Metal argument slots (section MSLB);
                                              // 1.3: the preshader (section PRSH);
                                              // 1.4: lit shaders sample the environment as a cube map;
-                                             // 1.5: shaders read two packed vertex streams
+                                             // 1.5: shaders read two packed vertex streams;
+                                             // 1.6: and per-instance 4×3 transforms (stream 2)
 inline constexpr uint16_t kFirstMinorWithCubeEnvironment = 4;
 inline constexpr uint16_t kFirstMinorWithPackedVertices = 5;
+inline constexpr uint16_t kFirstMinorWithInstanceTransforms = 6;
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 
@@ -193,6 +195,9 @@ struct Package {
   // The shaders read shader_abi.h's two vertex streams and decode positions and UVs from
   // ObjectUniforms (what matc builds since format 1.5): stamped 1.5, and read back from it.
   bool packedVertices = false;
+  // The vertex shaders read their transform from the instance stream (shader_abi.h
+  // InstanceTransform) instead of ObjectUniforms (what matc builds since format 1.6): stamped 1.6.
+  bool instanceTransforms = false;
   bool operator==(const Package&) const = default;
 };
 

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -105,6 +106,10 @@ class MaterialInstance {
   // A draw of `mesh` with this instance, `model` column-major (object to world). The draw points
   // at this instance's block and textures: the instance must outlive the frame it is drawn in.
   DrawItem draw(const Mesh& mesh, const std::array<float, 16>& model) const;
+  // One draw of `mesh` at each of `models` (an instance each, drawn in this order): what N
+  // objects sharing the mesh and this instance cost as one draw call. At most
+  // abi::kMaxInstancesPerDraw models (the backend refuses the frame otherwise).
+  DrawItem draw(const Mesh& mesh, std::span<const std::array<float, 16>> models) const;
 
   const Material& material() const { return *material_; }
   const UniformBlock& block() const { return block_; }

@@ -114,7 +114,11 @@ struct DrawItem {
   const Mesh* mesh = nullptr;  // shared by draws: one GPU copy per distinct Mesh, kept across frames
                                // and re-uploaded when its bytes change (ResourceCounts)
   const ShaderProgram* program = nullptr;
-  abi::ObjectUniforms object{};
+  // One instance per object drawn, at least one and at most abi::kMaxInstancesPerDraw (and
+  // kMaxInstancesPerFrame over the frame): one draw call draws them all, in this order, with
+  // everything else of the item in common (instanceTransform() converts a 4×4 model matrix).
+  // ObjectUniforms is the backend's: it holds the mesh's decoding.
+  std::vector<abi::InstanceTransform> instances;
   std::vector<uint8_t> materialParams;          // std140 bytes of block "MaterialParams" (may be empty),
                                                 // copied into this frame's uniforms
   const UniformBlock* materialBlock = nullptr;  // when set, "MaterialParams" instead of
@@ -129,6 +133,10 @@ struct DrawItem {
   // (output_blending.glsl, FrameUniforms::cameraPosition.w).
   bool masked = false;
 };
+
+inline constexpr abi::InstanceTransform kIdentityInstance{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+// The instance of a column-major object-to-world matrix (its last row is taken as 0 0 0 1).
+abi::InstanceTransform instanceTransform(const float model[16]);
 
 // The bytes a draw's "MaterialParams" block receives.
 inline const std::vector<uint8_t>& materialBytes(const DrawItem& draw) {
@@ -156,6 +164,14 @@ struct FrameDesc {
   abi::PostUniforms postUniforms{};
 };
 
+// Empty, or why the frame's instances are out of bounds: the first draw with none or more than
+// abi::kMaxInstancesPerDraw, or the draw that takes the frame past abi::kMaxInstancesPerFrame, as
+// "draw N: ..." (both backends refuse such a frame with it).
+std::string instanceCountError(const FrameDesc& frame);
+// The draws with each instanced draw split into draws of one instance, in the same order: the
+// same image in as many draw calls as instances (tests, and the before of measurements).
+std::vector<DrawItem> oneDrawPerInstance(const std::vector<DrawItem>& draws);
+
 // GPU time of one pass of a frame, from the API's timer (Vulkan timestamps, GL timer queries).
 struct PassTime {
   std::string pass;  // "forward", "post"
@@ -170,6 +186,11 @@ struct FrameResult {
                                    // R11G11B10F target, alpha 1 for the latter); empty when the backend
                                    // does not read HDR back
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
+  // CPU time render() spent on the application's thread issuing the frame: Vulkan, from the call
+  // until vkQueueSubmit returned (checks, uploads, descriptor sets, recording, submission); GL,
+  // until the forward pass's last draw call returned (with a software driver such as llvmpipe
+  // this includes the vertex shading it does inside the draw call). Waiting and readback excluded.
+  double cpuSubmitMilliseconds = 0;
 };
 
 // GPU resources a backend keeps across frames: what tests and budgets query instead of timing.

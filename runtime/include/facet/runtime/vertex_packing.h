@@ -105,8 +105,8 @@ bool packMesh(const Mesh& mesh, VertexPacking packing, PackedMesh* out, std::str
 // draw nothing at all, with no message).
 bool checkPackedMesh(const PackedMesh& packed, std::string* error);
 
-// The ObjectUniforms a draw of the packed mesh binds: the draw's matrices, the mesh's decode.
-abi::ObjectUniforms withVertexDecode(const abi::ObjectUniforms& object, const VertexDecode& decode);
+// The ObjectUniforms a draw of the packed mesh binds: the mesh's decode.
+abi::ObjectUniforms objectUniforms(const VertexDecode& decode);
 
 // The rule above: whether a mesh with this position extent (widest axis) and median edge
 // length gets 16-bit positions. Exposed for tests and documentation.

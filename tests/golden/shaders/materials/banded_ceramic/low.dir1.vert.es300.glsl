@@ -3,6 +3,9 @@ precision highp float;
 precision highp int;
 layout(location=0)in highp vec3 a_position;
 layout(location=1)in highp vec3 a_normal;
+layout(location=6)in highp vec4 a_instanceRow0;
+layout(location=7)in highp vec4 a_instanceRow1;
+layout(location=8)in highp vec4 a_instanceRow2;
 out highp vec3 v_worldPosition;
 out mediump vec3 v_normal;
 out mediump vec3 v_diffuseLight;
@@ -23,8 +26,6 @@ highp vec4 sh[9];
 }
 frame;
 layout(std140)uniform ObjectUniforms{
-highp mat4 model;
-highp mat4 normalMatrix;
 highp vec4 positionScale;
 highp vec4 positionOffset;
 highp vec4 uv0ScaleOffset;
@@ -41,9 +42,13 @@ return max(e,vec3(0.0));
 }
 void main(){
 highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
-highp vec4 worldPosition=object.model*vec4(position,1.0);
+highp vec4 objectPosition=vec4(position,1.0);
+highp vec4 worldPosition=vec4(dot(a_instanceRow0,objectPosition),dot(a_instanceRow1,objectPosition),dot(a_instanceRow2,objectPosition),1.0);
 v_worldPosition=worldPosition.xyz;
-v_normal=normalize(mat3(object.normalMatrix)*a_normal);
+highp vec3 row0=a_instanceRow0.xyz,row1=a_instanceRow1.xyz,row2=a_instanceRow2.xyz;
+highp vec3 cofactor0=cross(row1,row2);
+highp vec3 objectNormal=dot(row0,cofactor0)<0.0?-a_normal:a_normal;
+v_normal=normalize(objectNormal*mat3(cofactor0,cross(row2,row0),cross(row0,row1)));
 vec3 n=v_normal;
 vec3 irradiance=sh_irradiance_over_pi(n);
 irradiance+=frame.lightColor.rgb*(clamp(dot(n,frame.lightDirection.xyz),0.0,1.0)*0.31830988618);

@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -44,23 +42,37 @@ struct main0_in
 {
     float3 a_position [[attribute(0)]];
     float3 a_normal [[attribute(1)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_worldPosition = _174.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _337 = half3(out.v_normal);
-    half _238 = _337.y;
-    half3 _339 = half3(out.v_normal);
-    half _243 = _339.z;
-    half3 _341 = half3(out.v_normal);
-    half _248 = _341.x;
-    float3 _316 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_238))) + (frame.sh[2].xyz * float(_243))) + (frame.sh[3].xyz * float(_248))) + (((((frame.sh[4].xyz * (float(_248) * float(_238))) + (frame.sh[5].xyz * (float(_238) * float(_243)))) + (frame.sh[6].xyz * fma(3.0 * float(_243), float(_243), -1.0))) + (frame.sh[7].xyz * (float(_248) * float(_243)))) + (frame.sh[8].xyz * fma(float(_248), float(_248), -(float(_238) * float(_238))))), float3(0.0));
-    out.v_diffuseLight = _316;
-    out.gl_Position = frame.viewProjection * _174;
+    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
+    out.v_worldPosition = _185.xyz;
+    float3 _202 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _382;
+    if (dot(in.a_instanceRow0.xyz, _202) < 0.0)
+    {
+        _382 = -in.a_normal;
+    }
+    else
+    {
+        _382 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_382 * float3x3(_202, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    half3 _388 = half3(out.v_normal);
+    half _288 = _388.y;
+    half3 _390 = half3(out.v_normal);
+    half _293 = _390.z;
+    half3 _392 = half3(out.v_normal);
+    half _298 = _392.x;
+    float3 _366 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_288))) + (frame.sh[2].xyz * float(_293))) + (frame.sh[3].xyz * float(_298))) + (((((frame.sh[4].xyz * (float(_298) * float(_288))) + (frame.sh[5].xyz * (float(_288) * float(_293)))) + (frame.sh[6].xyz * fma(3.0 * float(_293), float(_293), -1.0))) + (frame.sh[7].xyz * (float(_298) * float(_293)))) + (frame.sh[8].xyz * fma(float(_298), float(_298), -(float(_288) * float(_288))))), float3(0.0));
+    out.v_diffuseLight = _366;
+    out.gl_Position = frame.viewProjection * _185;
     return out;
 }
 

@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -44,23 +42,37 @@ struct main0_in
 {
     float3 a_position [[attribute(0)]];
     float3 a_normal [[attribute(1)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_worldPosition = _174.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _351 = half3(out.v_normal);
-    half _252 = _351.y;
-    half3 _353 = half3(out.v_normal);
-    half _257 = _353.z;
-    half3 _355 = half3(out.v_normal);
-    half _262 = _355.x;
-    float3 _330 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_252))) + (frame.sh[2].xyz * float(_257))) + (frame.sh[3].xyz * float(_262))) + (((((frame.sh[4].xyz * (float(_262) * float(_252))) + (frame.sh[5].xyz * (float(_252) * float(_257)))) + (frame.sh[6].xyz * fma(3.0 * float(_257), float(_257), -1.0))) + (frame.sh[7].xyz * (float(_262) * float(_257)))) + (frame.sh[8].xyz * fma(float(_262), float(_262), -(float(_252) * float(_252))))), float3(0.0));
-    out.v_diffuseLight = _330 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _174;
+    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
+    out.v_worldPosition = _185.xyz;
+    float3 _202 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _396;
+    if (dot(in.a_instanceRow0.xyz, _202) < 0.0)
+    {
+        _396 = -in.a_normal;
+    }
+    else
+    {
+        _396 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_396 * float3x3(_202, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    half3 _402 = half3(out.v_normal);
+    half _302 = _402.y;
+    half3 _404 = half3(out.v_normal);
+    half _307 = _404.z;
+    half3 _406 = half3(out.v_normal);
+    half _312 = _406.x;
+    float3 _380 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_302))) + (frame.sh[2].xyz * float(_307))) + (frame.sh[3].xyz * float(_312))) + (((((frame.sh[4].xyz * (float(_312) * float(_302))) + (frame.sh[5].xyz * (float(_302) * float(_307)))) + (frame.sh[6].xyz * fma(3.0 * float(_307), float(_307), -1.0))) + (frame.sh[7].xyz * (float(_312) * float(_307)))) + (frame.sh[8].xyz * fma(float(_312), float(_312), -(float(_302) * float(_302))))), float3(0.0));
+    out.v_diffuseLight = _380 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _185;
     return out;
 }
 

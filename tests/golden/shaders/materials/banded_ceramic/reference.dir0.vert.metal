@@ -5,8 +5,6 @@ using namespace metal;
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -43,15 +41,29 @@ struct main0_in
 {
     float3 a_position [[attribute(0)]];
     float3 a_normal [[attribute(1)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _42 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_worldPosition = _42.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    out.gl_Position = frame.viewProjection * _42;
+    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
+    out.v_worldPosition = _51.xyz;
+    float3 _68 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _130;
+    if (dot(in.a_instanceRow0.xyz, _68) < 0.0)
+    {
+        _130 = -in.a_normal;
+    }
+    else
+    {
+        _130 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_130 * float3x3(_68, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.gl_Position = frame.viewProjection * _51;
     return out;
 }
 

@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -44,23 +42,37 @@ struct main0_in
 {
     float3 a_position [[attribute(0)]];
     float3 a_normal [[attribute(1)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
-    half3 _341 = half3(out.v_normal);
-    half _242 = _341.y;
-    half3 _343 = half3(out.v_normal);
-    half _247 = _343.z;
-    half3 _345 = half3(out.v_normal);
-    half _252 = _345.x;
-    float3 _320 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_242))) + (frame.sh[2].xyz * float(_247))) + (frame.sh[3].xyz * float(_252))) + (((((frame.sh[4].xyz * (float(_252) * float(_242))) + (frame.sh[5].xyz * (float(_242) * float(_247)))) + (frame.sh[6].xyz * fma(3.0 * float(_247), float(_247), -1.0))) + (frame.sh[7].xyz * (float(_252) * float(_247)))) + (frame.sh[8].xyz * fma(float(_252), float(_252), -(float(_242) * float(_242))))), float3(0.0));
-    out.v_diffuseLight = _320;
-    out.gl_Position = frame.viewProjection * _174;
+    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
+    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _386;
+    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    {
+        _386 = -in.a_normal;
+    }
+    else
+    {
+        _386 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_386 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    half3 _392 = half3(out.v_normal);
+    half _292 = _392.y;
+    half3 _394 = half3(out.v_normal);
+    half _297 = _394.z;
+    half3 _396 = half3(out.v_normal);
+    half _302 = _396.x;
+    float3 _370 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_292))) + (frame.sh[2].xyz * float(_297))) + (frame.sh[3].xyz * float(_302))) + (((((frame.sh[4].xyz * (float(_302) * float(_292))) + (frame.sh[5].xyz * (float(_292) * float(_297)))) + (frame.sh[6].xyz * fma(3.0 * float(_297), float(_297), -1.0))) + (frame.sh[7].xyz * (float(_302) * float(_297)))) + (frame.sh[8].xyz * fma(float(_302), float(_302), -(float(_292) * float(_292))))), float3(0.0));
+    out.v_diffuseLight = _370;
+    out.gl_Position = frame.viewProjection * _185;
     return out;
 }
 

@@ -5,8 +5,6 @@ using namespace metal;
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -47,17 +45,31 @@ struct main0_in
     float3 a_normal [[attribute(1)]];
     float2 a_uv0 [[attribute(2)]];
     float4 a_tangent [[attribute(5)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _42 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _42.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
+    float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _178;
+    if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
+    {
+        _178 = -in.a_normal;
+    }
+    else
+    {
+        _178 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_178 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    out.gl_Position = frame.viewProjection * _42;
+    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    out.gl_Position = frame.viewProjection * _51;
     return out;
 }
 

@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -48,31 +46,45 @@ struct main0_in
     float3 a_normal [[attribute(1)]];
     float2 a_uv0 [[attribute(2)]];
     float4 a_tangent [[attribute(5)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _196 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float3 _200 = _196.xyz;
-    out.v_worldPosition = _200;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    float4 _192 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _207 = float4(dot(in.a_instanceRow0, _192), dot(in.a_instanceRow1, _192), dot(in.a_instanceRow2, _192), 1.0);
+    float3 _211 = _207.xyz;
+    out.v_worldPosition = _211;
+    float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _621;
+    if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
+    {
+        _621 = -in.a_normal;
+    }
+    else
+    {
+        _621 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_621 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    float3 _391 = float3(frame.punctualLights[0].positionFalloff.xyz) - _200;
-    float _394 = dot(_391, _391);
-    float3 _399 = _391 * rsqrt(fast::max(_394, 9.9999999392252902907785028219223e-09));
-    float _403 = _394 * float(frame.punctualLights[0].positionFalloff.w);
-    float _408 = fast::clamp(fma(-_403, _403, 1.0), 0.0, 1.0);
-    float _427 = fast::clamp(fma(dot(-_399, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _469 = float3(frame.punctualLights[1].positionFalloff.xyz) - _200;
-    float _472 = dot(_469, _469);
-    float3 _477 = _469 * rsqrt(fast::max(_472, 9.9999999392252902907785028219223e-09));
-    float _481 = _472 * float(frame.punctualLights[1].positionFalloff.w);
-    float _486 = fast::clamp(fma(-_481, _481, 1.0), 0.0, 1.0);
-    float _505 = fast::clamp(fma(dot(-_477, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_408 * _408) / fast::max(_394, 9.9999997473787516355514526367188e-05)) * _427) * _427), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _399), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_486 * _486) / fast::max(_472, 9.9999997473787516355514526367188e-05)) * _505) * _505), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _477), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _196;
+    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    float3 _446 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
+    float _449 = dot(_446, _446);
+    float3 _454 = _446 * rsqrt(fast::max(_449, 9.9999999392252902907785028219223e-09));
+    float _458 = _449 * float(frame.punctualLights[0].positionFalloff.w);
+    float _463 = fast::clamp(fma(-_458, _458, 1.0), 0.0, 1.0);
+    float _482 = fast::clamp(fma(dot(-_454, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _524 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
+    float _527 = dot(_524, _524);
+    float3 _532 = _524 * rsqrt(fast::max(_527, 9.9999999392252902907785028219223e-09));
+    float _536 = _527 * float(frame.punctualLights[1].positionFalloff.w);
+    float _541 = fast::clamp(fma(-_536, _536, 1.0), 0.0, 1.0);
+    float _560 = fast::clamp(fma(dot(-_532, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_463 * _463) / fast::max(_449, 9.9999997473787516355514526367188e-05)) * _482) * _482), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _454), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_541 * _541) / fast::max(_527, 9.9999997473787516355514526367188e-05)) * _560) * _560), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _532), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _207;
     return out;
 }
 

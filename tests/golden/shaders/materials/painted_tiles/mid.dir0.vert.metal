@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -48,25 +46,39 @@ struct main0_in
     float3 a_normal [[attribute(1)]];
     float2 a_uv0 [[attribute(2)]];
     float4 a_tangent [[attribute(5)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
+    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _429;
+    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    {
+        _429 = -in.a_normal;
+    }
+    else
+    {
+        _429 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_429 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    half3 _378 = half3(out.v_normal);
-    half _279 = _378.y;
-    half3 _380 = half3(out.v_normal);
-    half _284 = _380.z;
-    half3 _382 = half3(out.v_normal);
-    half _289 = _382.x;
-    float3 _357 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_279))) + (frame.sh[2].xyz * float(_284))) + (frame.sh[3].xyz * float(_289))) + (((((frame.sh[4].xyz * (float(_289) * float(_279))) + (frame.sh[5].xyz * (float(_279) * float(_284)))) + (frame.sh[6].xyz * fma(3.0 * float(_284), float(_284), -1.0))) + (frame.sh[7].xyz * (float(_289) * float(_284)))) + (frame.sh[8].xyz * fma(float(_289), float(_289), -(float(_279) * float(_279))))), float3(0.0));
-    out.v_diffuseLight = _357;
-    out.gl_Position = frame.viewProjection * _174;
+    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    half3 _435 = half3(out.v_normal);
+    half _335 = _435.y;
+    half3 _437 = half3(out.v_normal);
+    half _340 = _437.z;
+    half3 _439 = half3(out.v_normal);
+    half _345 = _439.x;
+    float3 _413 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_335))) + (frame.sh[2].xyz * float(_340))) + (frame.sh[3].xyz * float(_345))) + (((((frame.sh[4].xyz * (float(_345) * float(_335))) + (frame.sh[5].xyz * (float(_335) * float(_340)))) + (frame.sh[6].xyz * fma(3.0 * float(_340), float(_340), -1.0))) + (frame.sh[7].xyz * (float(_345) * float(_340)))) + (frame.sh[8].xyz * fma(float(_345), float(_345), -(float(_335) * float(_335))))), float3(0.0));
+    out.v_diffuseLight = _413;
+    out.gl_Position = frame.viewProjection * _185;
     return out;
 }
 

@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -48,38 +46,52 @@ struct main0_in
     float3 a_normal [[attribute(1)]];
     float2 a_uv0 [[attribute(2)]];
     float4 a_tangent [[attribute(5)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _270 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float3 _274 = _270.xyz;
-    out.v_worldPosition = _274;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    float4 _266 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _281 = float4(dot(in.a_instanceRow0, _266), dot(in.a_instanceRow1, _266), dot(in.a_instanceRow2, _266), 1.0);
+    float3 _285 = _281.xyz;
+    out.v_worldPosition = _285;
+    float3 _298 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _775;
+    if (dot(in.a_instanceRow0.xyz, _298) < 0.0)
+    {
+        _775 = -in.a_normal;
+    }
+    else
+    {
+        _775 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_775 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    half3 _727 = half3(out.v_normal);
-    half _423 = _727.y;
-    half3 _729 = half3(out.v_normal);
-    half _428 = _729.z;
-    half3 _731 = half3(out.v_normal);
-    half _433 = _731.x;
-    float3 _501 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_423))) + (frame.sh[2].xyz * float(_428))) + (frame.sh[3].xyz * float(_433))) + (((((frame.sh[4].xyz * (float(_433) * float(_423))) + (frame.sh[5].xyz * (float(_423) * float(_428)))) + (frame.sh[6].xyz * fma(3.0 * float(_428), float(_428), -1.0))) + (frame.sh[7].xyz * (float(_433) * float(_428)))) + (frame.sh[8].xyz * fma(float(_433), float(_433), -(float(_423) * float(_423))))), float3(0.0));
-    float3 _532 = float3(frame.punctualLights[0].positionFalloff.xyz) - _274;
-    float _535 = dot(_532, _532);
-    float3 _540 = _532 * rsqrt(fast::max(_535, 9.9999999392252902907785028219223e-09));
-    float _544 = _535 * float(frame.punctualLights[0].positionFalloff.w);
-    float _549 = fast::clamp(fma(-_544, _544, 1.0), 0.0, 1.0);
-    float _568 = fast::clamp(fma(dot(-_540, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _610 = float3(frame.punctualLights[1].positionFalloff.xyz) - _274;
-    float _613 = dot(_610, _610);
-    float3 _618 = _610 * rsqrt(fast::max(_613, 9.9999999392252902907785028219223e-09));
-    float _622 = _613 * float(frame.punctualLights[1].positionFalloff.w);
-    float _627 = fast::clamp(fma(-_622, _622, 1.0), 0.0, 1.0);
-    float _646 = fast::clamp(fma(dot(-_618, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = ((_501 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_549 * _549) / fast::max(_535, 9.9999997473787516355514526367188e-05)) * _568) * _568), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _540), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_627 * _627) / fast::max(_613, 9.9999997473787516355514526367188e-05)) * _646) * _646), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _618), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _270;
+    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    half3 _784 = half3(out.v_normal);
+    half _479 = _784.y;
+    half3 _786 = half3(out.v_normal);
+    half _484 = _786.z;
+    half3 _788 = half3(out.v_normal);
+    half _489 = _788.x;
+    float3 _557 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_479))) + (frame.sh[2].xyz * float(_484))) + (frame.sh[3].xyz * float(_489))) + (((((frame.sh[4].xyz * (float(_489) * float(_479))) + (frame.sh[5].xyz * (float(_479) * float(_484)))) + (frame.sh[6].xyz * fma(3.0 * float(_484), float(_484), -1.0))) + (frame.sh[7].xyz * (float(_489) * float(_484)))) + (frame.sh[8].xyz * fma(float(_489), float(_489), -(float(_479) * float(_479))))), float3(0.0));
+    float3 _588 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
+    float _591 = dot(_588, _588);
+    float3 _596 = _588 * rsqrt(fast::max(_591, 9.9999999392252902907785028219223e-09));
+    float _600 = _591 * float(frame.punctualLights[0].positionFalloff.w);
+    float _605 = fast::clamp(fma(-_600, _600, 1.0), 0.0, 1.0);
+    float _624 = fast::clamp(fma(dot(-_596, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _666 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
+    float _669 = dot(_666, _666);
+    float3 _674 = _666 * rsqrt(fast::max(_669, 9.9999999392252902907785028219223e-09));
+    float _678 = _669 * float(frame.punctualLights[1].positionFalloff.w);
+    float _683 = fast::clamp(fma(-_678, _678, 1.0), 0.0, 1.0);
+    float _702 = fast::clamp(fma(dot(-_674, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((_557 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_605 * _605) / fast::max(_591, 9.9999997473787516355514526367188e-05)) * _624) * _624), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _596), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_683 * _683) / fast::max(_669, 9.9999997473787516355514526367188e-05)) * _702) * _702), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _674), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _281;
     return out;
 }
 

@@ -24,8 +24,6 @@ struct FrameUniforms
 
 struct ObjectUniforms
 {
-    float4x4 model;
-    float4x4 normalMatrix;
     float4 positionScale;
     float4 positionOffset;
     float4 uv0ScaleOffset;
@@ -48,25 +46,39 @@ struct main0_in
     float3 a_normal [[attribute(1)]];
     float2 a_uv0 [[attribute(2)]];
     float4 a_tangent [[attribute(5)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
 };
 
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _174 = object.model * float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _174.xyz;
-    out.v_normal = fast::normalize(float3x3(object.normalMatrix[0].xyz, object.normalMatrix[1].xyz, object.normalMatrix[2].xyz) * in.a_normal);
+    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
+    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _443;
+    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    {
+        _443 = -in.a_normal;
+    }
+    else
+    {
+        _443 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_443 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(float3x3(object.model[0].xyz, object.model[1].xyz, object.model[2].xyz) * in.a_tangent.xyz, in.a_tangent.w);
-    half3 _392 = half3(out.v_normal);
-    half _293 = _392.y;
-    half3 _394 = half3(out.v_normal);
-    half _298 = _394.z;
-    half3 _396 = half3(out.v_normal);
-    half _303 = _396.x;
-    float3 _371 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_293))) + (frame.sh[2].xyz * float(_298))) + (frame.sh[3].xyz * float(_303))) + (((((frame.sh[4].xyz * (float(_303) * float(_293))) + (frame.sh[5].xyz * (float(_293) * float(_298)))) + (frame.sh[6].xyz * fma(3.0 * float(_298), float(_298), -1.0))) + (frame.sh[7].xyz * (float(_303) * float(_298)))) + (frame.sh[8].xyz * fma(float(_303), float(_303), -(float(_293) * float(_293))))), float3(0.0));
-    out.v_diffuseLight = _371 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _174;
+    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    half3 _449 = half3(out.v_normal);
+    half _349 = _449.y;
+    half3 _451 = half3(out.v_normal);
+    half _354 = _451.z;
+    half3 _453 = half3(out.v_normal);
+    half _359 = _453.x;
+    float3 _427 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_349))) + (frame.sh[2].xyz * float(_354))) + (frame.sh[3].xyz * float(_359))) + (((((frame.sh[4].xyz * (float(_359) * float(_349))) + (frame.sh[5].xyz * (float(_349) * float(_354)))) + (frame.sh[6].xyz * fma(3.0 * float(_354), float(_354), -1.0))) + (frame.sh[7].xyz * (float(_359) * float(_354)))) + (frame.sh[8].xyz * fma(float(_359), float(_359), -(float(_349) * float(_349))))), float3(0.0));
+    out.v_diffuseLight = _427 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _185;
     return out;
 }
 
