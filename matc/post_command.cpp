@@ -27,6 +27,11 @@ int postCommand(const PostArgs& args) {
       return 1;
     }
   }
+  compiler::PostStage fxaa;
+  if (!compiler::buildFxaaShader(&fxaa, &error)) {
+    cli::printError(error);
+    return 1;
+  }
   // Every output, checked against the others and written together.
   namespace fs = std::filesystem;
   std::vector<cli::NamedFile> outputs;
@@ -46,11 +51,17 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs);
     add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
   }
-  add("--cpp", args.cpp, compiler::postShadersCpp(variants));
+  if (!args.emitSource.empty()) {
+    const std::string stem = (fs::path(args.emitSource) / "post.fxaa").string();
+    add("--emit-source", stem + ".frag.es300.glsl", fxaa.glslEs);
+    add("--emit-source", stem + ".frag.metal", fxaa.msl);
+  }
+  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
     std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(),
                 shaders.vertex.spirv.size(), shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());
+  std::printf("post fxaa: %zu SPIR-V words\n", fxaa.spirv.size());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }

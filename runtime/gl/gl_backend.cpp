@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <exception>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
 
 #include "facet/runtime/gl_backend.h"
@@ -29,10 +30,10 @@ namespace {
 
 using gl::checkGlError;
 
-// Builds a post program; a `sampled` one (separate path) gets its HDR sampler pointed at its unit
-// once, since sampler uniforms are program state.
+// Builds a post program; a `sampled` one (separate path, FXAA) gets its sampler `samplerName` pointed
+// at unit kPostHdrBinding once, since sampler uniforms are program state.
 bool buildPostProgram(const std::string& vertex, const std::string& fragment, bool sampled, gl::LinkedProgram* out,
-                      std::string* error) {
+                      std::string* error, std::string_view samplerName = abi::kPostHdrName) {
   std::string buildError;
   std::optional<gl::LinkedProgram> post = gl::buildProgram(vertex, fragment, &buildError);
   if (!post) {
@@ -41,9 +42,9 @@ bool buildPostProgram(const std::string& vertex, const std::string& fragment, bo
   }
   *out = std::move(*post);
   if (!sampled) return true;
-  const GLint hdrLocation = glGetUniformLocation(out->program.id(), std::string(abi::kPostHdrName).c_str());
+  const GLint hdrLocation = glGetUniformLocation(out->program.id(), std::string(samplerName).c_str());
   if (hdrLocation < 0) {
-    *error = "post-pass fragment shader has no sampler uniform '" + std::string(abi::kPostHdrName) + "'";
+    *error = "post-pass fragment shader has no sampler uniform '" + std::string(samplerName) + "'";
     return false;
   }
   glUseProgram(out->program.id());
@@ -107,6 +108,7 @@ class GlBackend final : public GlRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_); }
+  bool fxaa() const override { return fxaa_; }
   std::string msaaMethod() const override {
     if (samples_ == 1) return "off";
     return renderToTexture_ ? "GL_EXT_multisampled_render_to_texture (samples kept by the driver)"
@@ -147,6 +149,8 @@ class GlBackend final : public GlRenderer {
   bool postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error);
   // Merged path, into the framebuffer the forward pass drew into; HDR invalidated unless `keepHdr`.
   bool mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string* error);
+  // FXAA: samples the post pass's image (targets_.ldrColor), draws into `framebuffer`.
+  bool fxaaPass(GLuint framebuffer, std::string* error);
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
@@ -155,6 +159,8 @@ class GlBackend final : public GlRenderer {
   bool readBackHdr_ = true;
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLsizei samples_ = 1;  // MSAA samples of the forward pass
+  bool fxaa_ = false;
+  gl::LinkedProgram fxaaProgram_;  // FXAA only
   // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
   bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
@@ -222,7 +228,9 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
       postInputs_.init(post_.program.id(), shaders.effects, &postError) &&
       (!merged || (buildPostProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, true, &sampledPost_, &postError) &&
                    postInputs_.pointProgram(sampledPost_.program.id(), &postError)));
-  if (!built) {
+  fxaa_ = options.fxaa;
+  if (!built || (fxaa_ && !buildPostProgram(shaders.vertexGlslEs, fxaaShader().fragmentGlslEs, true, &fxaaProgram_,
+                                            &postError, abi::kFxaaInputName))) {
     if (error) *error = "GL backend: " + postError;
     return false;
   }
@@ -331,7 +339,10 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!posted) return false;
     if (readBackHdr_ && !merged) readHdr();
-    if (merged) {
+    if (fxaa_) {
+      if (!fxaaPass(targets_.fxaaFramebuffer.id(), &message)) return false;
+      gl::readRgba8(targets_.fxaaFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
+    } else if (merged) {
       gl::readRgba8(targets_.mergedFramebuffer.id(), GL_COLOR_ATTACHMENT1, frame.width, frame.height, &result->ldr);
     } else {
       gl::readRgba8(targets_.ldrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
@@ -368,6 +379,17 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
       return false;
     }
+    // FXAA: forward and post into the backend's targets, then FXAA into the app's framebuffer.
+    if (fxaa_) {
+      const bool ownMerged = path_ == PostPath::Merged;
+      bool done = forwardPass(frame, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
+                              ownMerged, &message) &&
+                  (ownMerged ? mergedPostPass(frame, false, &message)
+                             : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
+                  fxaaPass(target.framebuffer, &message);
+      leaveState(target.framebuffer, frame.width, frame.height);
+      return done && checkGlError("drawing into the app's framebuffer", &message);
+    }
     const bool merged = path_ == PostPath::Merged && attachment.type != GL_FRAMEBUFFER_DEFAULT;
     if (merged) {
       glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
@@ -391,7 +413,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
   const gl::Context::RenderToTexture* renderToTexture = renderToTexture_ ? &context_->renderToTexture() : nullptr;
-  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture,
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture, fxaa_,
                                  &targets_, error);
 }
 
@@ -641,6 +663,25 @@ bool GlBackend::postPass(const FrameDesc& frame, GLuint framebuffer, std::string
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
   return checkGlError("post pass", error);
+}
+
+bool GlBackend::fxaaPass(GLuint framebuffer, std::string* error) {
+  // Like postPass: the app's framebuffer keeps the draw buffers the app gave it.
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glUseProgram(fxaaProgram_.program.id());
+  glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
+  glBindTexture(GL_TEXTURE_2D, targets_.ldrColor.id());
+  textures_.forgetBindings();
+  glBindVertexArray(emptyVertexArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
+  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+  return checkGlError("FXAA pass", error);
 }
 
 }  // namespace

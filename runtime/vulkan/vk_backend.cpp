@@ -68,6 +68,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
+  bool fxaa() const override { return fxaa_; }
   std::string msaaMethod() const override;
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
@@ -97,6 +98,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots, FrameOutput* output,
                     std::string* error);
   void writePostSet();
+  bool createFxaaObjects(std::string* error);
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
   FrameObjects frameObjects(VkQueryPool timestamps) const;
@@ -117,6 +119,9 @@ class VulkanBackend final : public VulkanRenderer {
   VertexPacking vertexPacking_ = VertexPacking::Packed;
   VkFormat hdrVkFormat_ = kHdrFormat;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
+  // FXAA: ldrOps_ are the tone-mapped image's (the post pass's output), fxaaOps_ the output's.
+  bool fxaa_ = false;
+  AttachmentOps fxaaOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
   ForwardSamples samples_;       // MSAA: the count and the multisampled colour's ops
@@ -139,6 +144,14 @@ class VulkanBackend final : public VulkanRenderer {
   VkPipelineLayout postLayout_ = VK_NULL_HANDLE;
   VkPipeline postPipeline_ = VK_NULL_HANDLE;
   VkSampler hdrSampler_ = VK_NULL_HANDLE;
+  // FXAA only: its render pass into the own LDR target, its set (the tone-mapped image, bilinear
+  // through fxaaSampler_) and pipeline.
+  VkRenderPass fxaaPass_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout fxaaSetLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout fxaaLayout_ = VK_NULL_HANDLE;
+  VkPipeline fxaaPipeline_ = VK_NULL_HANDLE;
+  VkSampler fxaaSampler_ = VK_NULL_HANDLE;
+  VkDescriptorPool fxaaPool_ = VK_NULL_HANDLE;
 
   // What one frame writes and the next frames in flight must not: its uniforms, its draw
   // descriptor sets and the post pass's set. Frame n uses slots_[n % framesInFlight]; when it is
@@ -151,6 +164,7 @@ class VulkanBackend final : public VulkanRenderer {
     VkDescriptorPool drawPool = VK_NULL_HANDLE;
     uint32_t drawPoolCapacity = 0;
     VkDescriptorSet postSet = VK_NULL_HANDLE;  // from postPool_, written every use (HDR view)
+    VkDescriptorSet fxaaSet = VK_NULL_HANDLE;  // FXAA only, from fxaaPool_, written every use
   };
   std::vector<FrameSlot> slots_;
   FrameSlot* slot_ = nullptr;  // the frame being prepared
@@ -209,6 +223,12 @@ VulkanBackend::~VulkanBackend() {
   if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
   postInputs_.destroy();
   if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
+  if (fxaaPool_) vkDestroyDescriptorPool(device, fxaaPool_, nullptr);
+  if (fxaaSampler_) vkDestroySampler(device, fxaaSampler_, nullptr);
+  if (fxaaPipeline_) vkDestroyPipeline(device, fxaaPipeline_, nullptr);
+  if (fxaaLayout_) vkDestroyPipelineLayout(device, fxaaLayout_, nullptr);
+  if (fxaaSetLayout_) vkDestroyDescriptorSetLayout(device, fxaaSetLayout_, nullptr);
+  if (fxaaPass_) vkDestroyRenderPass(device, fxaaPass_, nullptr);
   if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
   if (postLayout_) vkDestroyPipelineLayout(device, postLayout_, nullptr);
   if (forwardLayout_) vkDestroyPipelineLayout(device, forwardLayout_, nullptr);
@@ -260,10 +280,12 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
     return false;
   }
   samples_.count = static_cast<VkSampleCountFlagBits>(options.msaaSamples);
-  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples);
+  fxaa_ = options.fxaa;
+  const ForwardPostGraph g =
+      buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples, options.fxaa);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
-  const size_t expected = path_ == PostPath::Merged ? 1 : 2;
+  const size_t expected = (path_ == PostPath::Merged ? 1 : 2) + (fxaa_ ? 1 : 0);
   if (compiled.renderPasses.size() != expected) {
     *error = std::string("frame graph gave ") + std::to_string(compiled.renderPasses.size()) +
              " render passes for the " + toString(path_) + " path";
@@ -272,7 +294,8 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   const uint32_t postRenderPass = path_ == PostPath::Merged ? 0 : 1;
   hdrOps_ = toVulkan(*compiled.attachment(0, g.hdr));
   depthOps_ = toVulkan(*compiled.attachment(0, g.depth));
-  ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.ldr));
+  ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.toneMapped));
+  if (fxaa_) fxaaOps_ = toVulkan(*compiled.attachment(postRenderPass + 1, g.ldr));
   hdrTransient_ = compiled.traffic[g.hdr].transient;
   depthTransient_ = compiled.traffic[g.depth].transient;
   if (g.hdrSamples != g.hdr) {
@@ -354,13 +377,14 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  const LdrLayouts postOutput = fxaa_ ? kFxaaInputLayouts : LdrLayouts{};
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_, LdrLayouts{},
+      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_, postOutput,
                                       &forwardPass_, error) &&
                    createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_,
                                           kAppImageLdrLayouts, &appImagePass_, error)
              : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, samples_, &forwardPass_, error) &&
-                   createPostRenderPass(device, ldrOps_, LdrLayouts{}, &postPass_, error) &&
+                   createPostRenderPass(device, ldrOps_, postOutput, &postPass_, error) &&
                    createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
@@ -440,6 +464,61 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
     return false;
   }
   for (uint32_t i = 0; i < slotCount; ++i) slots_[i].postSet = postSets[i];
+  return !fxaa_ || createFxaaObjects(error);
+}
+
+// The FXAA pass: a render pass into the own LDR target, a pipeline sampling the tone-mapped image
+// bilinearly (chunks/fxaa.glsl reads between texel centres), and a set per frame slot.
+bool VulkanBackend::createFxaaObjects(std::string* error) {
+  VkDevice device = ctx_.device;
+  if (!createPostRenderPass(device, fxaaOps_, LdrLayouts{}, &fxaaPass_, error) ||
+      !createPostSetLayout(device, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, &fxaaSetLayout_, error) ||
+      !createPipelineLayout(device, {fxaaSetLayout_}, &fxaaLayout_, error)) {
+    return false;
+  }
+  PipelineDesc desc;
+  desc.kind = PipelineKind::Post;
+  desc.vertexSpirv = &post_->vertexSpirv;
+  desc.fragmentSpirv = &fxaaShader().fragmentSpirv;
+  desc.layout = fxaaLayout_;
+  desc.renderPass = fxaaPass_;
+  desc.subpass = 0;
+  desc.colourSlots = 1;
+  desc.what = "FXAA pass shaders";
+  if (!createGraphicsPipeline(device, desc, &fxaaPipeline_, error)) return false;
+  VkSamplerCreateInfo samplerInfo{};
+  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  samplerInfo.magFilter = VK_FILTER_LINEAR;
+  samplerInfo.minFilter = VK_FILTER_LINEAR;
+  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  samplerInfo.maxLod = 0.0f;
+  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &fxaaSampler_), "vkCreateSampler", error)) {
+    fxaaSampler_ = VK_NULL_HANDLE;
+    return false;
+  }
+  const auto slotCount = static_cast<uint32_t>(slots_.size());
+  const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, slotCount};
+  VkDescriptorPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  poolInfo.maxSets = slotCount;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &poolSize;
+  if (!check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &fxaaPool_), "vkCreateDescriptorPool", error)) {
+    fxaaPool_ = VK_NULL_HANDLE;
+    return false;
+  }
+  const std::vector<VkDescriptorSetLayout> layouts(slotCount, fxaaSetLayout_);
+  std::vector<VkDescriptorSet> sets(slotCount);
+  VkDescriptorSetAllocateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  setInfo.descriptorPool = fxaaPool_;
+  setInfo.descriptorSetCount = slotCount;
+  setInfo.pSetLayouts = layouts.data();
+  if (!check(vkAllocateDescriptorSets(device, &setInfo, sets.data()), "vkAllocateDescriptorSets", error)) return false;
+  for (uint32_t i = 0; i < slotCount; ++i) slots_[i].fxaaSet = sets[i];
   return true;
 }
 
@@ -501,8 +580,9 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
                                  FrameOutput* output, std::string* error) {
   retire_.beginFrame(++frameNumber_);
   slot_ = &slots_[frameNumber_ % slots_.size()];
-  // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput).
-  const bool ownOutput = !appImage || !rendersDirectly(*appImage);
+  // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput). FXAA
+  // writes the own target and the frame is copied into the app's image.
+  const bool ownOutput = !appImage || !rendersDirectly(*appImage) || fxaa_;
   if (!checkFrame(frame, ctx_.properties.limits, error) ||
       !ensureTargets(frame.width, frame.height, ownOutput, error) || !uploadFrame(frame, slots, error) ||
       !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) || !outputFor(appImage, output, error)) {
@@ -576,7 +656,9 @@ bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std
   output->forwardPass = forwardPass_;
   output->postPass = postPass_;
   output->framebuffers = {targets_.forwardFramebuffer, targets_.postFramebuffer};
-  if (!appImage || !rendersDirectly(*appImage)) return true;
+  output->fxaaPass = fxaaPass_;
+  output->fxaaFramebuffer = targets_.fxaaFramebuffer;
+  if (!appImage || !rendersDirectly(*appImage) || fxaa_) return true;
   output->directImage = appImage;
   if (merged) {
     output->forwardPass = appImagePass_;
@@ -594,6 +676,9 @@ FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
           postLayout_,
           postPipeline_,
           slot_->postSet,
+          fxaaLayout_,
+          fxaaPipeline_,
+          slot_->fxaaSet,
           timestamps};
 }
 
@@ -608,6 +693,8 @@ TargetConfig VulkanBackend::targetConfig() const {
   config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
+  config.fxaa = fxaa_;
+  config.fxaaPass = fxaaPass_;
   return config;
 }
 
@@ -641,6 +728,13 @@ void VulkanBackend::writePostSet() {
   write.descriptorCount = 1;
   write.descriptorType = merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &imageInfo;
+  vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
+  if (!fxaa_) return;
+  const VkDescriptorImageInfo toneMapped{fxaaSampler_, targets_.toneMapped.view,
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  write.dstSet = slot_->fxaaSet;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &toneMapped;
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
 }
 

@@ -117,6 +117,22 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postLayout, 0, 1, &objects.postSet, 0, nullptr);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
+  if (objects.fxaaPipeline) {
+    // The post pass's render pass made its output visible to this pass's fragment shader
+    // (vk_pipeline.h kFxaaInputLayouts).
+    passInfo.renderPass = output.fxaaPass;
+    passInfo.framebuffer = output.fxaaFramebuffer;
+    passInfo.clearValueCount = 0;
+    passInfo.pClearValues = nullptr;
+    vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.fxaaPipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.fxaaLayout, 0, 1, &objects.fxaaSet, 0,
+                            nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRenderPass(cmd);
+  }
   if (objects.timestamps) {
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 2);
   }
