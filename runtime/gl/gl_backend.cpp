@@ -149,8 +149,14 @@ class GlBackend final : public GlRenderer {
   bool postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error);
   // Merged path, into the framebuffer the forward pass drew into; HDR invalidated unless `keepHdr`.
   bool mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string* error);
+  // A full-screen triangle of `program` sampling `input` at unit kPostHdrBinding into
+  // `framebuffer`; postFrame: the post variant's inputs are bound from it (null: none).
+  bool sampledPass(GLuint framebuffer, const gl::LinkedProgram& program, const gl::Texture& input,
+                   const FrameDesc* postFrame, const char* what, std::string* error);
   // FXAA: samples the post pass's image (targets_.ldrColor), draws into `framebuffer`.
-  bool fxaaPass(GLuint framebuffer, std::string* error);
+  bool fxaaPass(GLuint framebuffer, std::string* error) {
+    return sampledPass(framebuffer, fxaaProgram_, targets_.ldrColor, nullptr, "FXAA pass", error);
+  }
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
@@ -644,44 +650,32 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string
 }
 
 bool GlBackend::postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error) {
-  // Separate path: a second pass that samples the stored HDR target.
+  // Separate path: a second pass that samples the stored HDR target. A merged backend runs this
+  // pass only for frames into the app's default framebuffer.
+  return sampledPass(framebuffer, path_ == PostPath::Merged ? sampledPost_ : post_, targets_.hdrColor, &frame,
+                     "post pass", error);
+}
+
+bool GlBackend::sampledPass(GLuint framebuffer, const gl::LinkedProgram& program, const gl::Texture& input,
+                            const FrameDesc* postFrame, const char* what, std::string* error) {
+  // The app's framebuffer keeps the draw buffers the app gave it.
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
   glDisable(GL_DEPTH_TEST);  // the LDR target has no depth; the triangle covers every pixel
   glDisable(GL_BLEND);       // the last forward draw may have been blended
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
-  // A merged backend runs this pass only for frames into the app's default framebuffer.
-  glUseProgram(path_ == PostPath::Merged ? sampledPost_.program.id() : post_.program.id());
+  glUseProgram(program.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
-  glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
-  if (!postInputs_.bind(frame, error)) return false;
+  glBindTexture(GL_TEXTURE_2D, input.id());
+  if (postFrame && !postInputs_.bind(*postFrame, error)) return false;
   textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
-  return checkGlError("post pass", error);
-}
-
-bool GlBackend::fxaaPass(GLuint framebuffer, std::string* error) {
-  // Like postPass: the app's framebuffer keeps the draw buffers the app gave it.
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
-  glUseProgram(fxaaProgram_.program.id());
-  glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
-  glBindTexture(GL_TEXTURE_2D, targets_.ldrColor.id());
-  textures_.forgetBindings();
-  glBindVertexArray(emptyVertexArray_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
-  glBindVertexArray(0);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glUseProgram(0);
-  return checkGlError("FXAA pass", error);
+  return checkGlError(what, error);
 }
 
 }  // namespace

@@ -39,6 +39,46 @@ namespace {
 
 using namespace vulkan;
 
+// A single-level sampler clamped to the edge, filtering with `filter`.
+bool createClampedSampler(VkDevice device, VkFilter filter, VkSampler* out, std::string* error) {
+  VkSamplerCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.maxLod = 0.0f;
+  if (!check(vkCreateSampler(device, &info, nullptr, out), "vkCreateSampler", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+// A pool of `count` sets of `layout` (one per frame slot) and the sets.
+bool createSlotSets(VkDevice device, VkDescriptorSetLayout layout, const std::vector<VkDescriptorPoolSize>& sizes,
+                    uint32_t count, VkDescriptorPool* pool, std::vector<VkDescriptorSet>* sets, std::string* error) {
+  VkDescriptorPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  poolInfo.maxSets = count;
+  poolInfo.poolSizeCount = uint32_t(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  if (!check(vkCreateDescriptorPool(device, &poolInfo, nullptr, pool), "vkCreateDescriptorPool", error)) {
+    *pool = VK_NULL_HANDLE;
+    return false;
+  }
+  const std::vector<VkDescriptorSetLayout> layouts(count, layout);
+  sets->assign(count, VK_NULL_HANDLE);
+  VkDescriptorSetAllocateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  setInfo.descriptorPool = *pool;
+  setInfo.descriptorSetCount = count;
+  setInfo.pSetLayouts = layouts.data();
+  return check(vkAllocateDescriptorSets(device, &setInfo, sets->data()), "vkAllocateDescriptorSets", error);
+}
+
 // A frame in flight may use what a cache evicts only if it is younger than the eviction age.
 static_assert(kMaxFramesInFlight <= kEvictAfterFrames, "evicted entries must not be in use by frames in flight");
 
@@ -424,19 +464,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   if (!createGraphicsPipeline(device, postDesc, &postPipeline_, error)) return false;
 
   // Nearest + clamp: the post pass reads exactly one HDR texel per output pixel.
-  VkSamplerCreateInfo samplerInfo{};
-  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  samplerInfo.magFilter = VK_FILTER_NEAREST;
-  samplerInfo.minFilter = VK_FILTER_NEAREST;
-  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.maxLod = 0.0f;
-  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &hdrSampler_), "vkCreateSampler", error)) {
-    hdrSampler_ = VK_NULL_HANDLE;
-    return false;
-  }
+  if (!createClampedSampler(device, VK_FILTER_NEAREST, &hdrSampler_, error)) return false;
 
   slots_.resize(framesInFlight_);
   const auto slotCount = static_cast<uint32_t>(slots_.size());
@@ -444,25 +472,8 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   std::vector<VkDescriptorPoolSize> postPoolSizes{{hdrType, slotCount}};
   for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects))
     postPoolSizes.push_back({b.descriptorType, slotCount});
-  VkDescriptorPoolCreateInfo postPoolInfo{};
-  postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-  postPoolInfo.maxSets = slotCount;
-  postPoolInfo.poolSizeCount = uint32_t(postPoolSizes.size());
-  postPoolInfo.pPoolSizes = postPoolSizes.data();
-  if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_), "vkCreateDescriptorPool", error)) {
-    postPool_ = VK_NULL_HANDLE;
-    return false;
-  }
-  const std::vector<VkDescriptorSetLayout> postLayouts(slotCount, postSetLayout_);
-  std::vector<VkDescriptorSet> postSets(slotCount);
-  VkDescriptorSetAllocateInfo setInfo{};
-  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  setInfo.descriptorPool = postPool_;
-  setInfo.descriptorSetCount = slotCount;
-  setInfo.pSetLayouts = postLayouts.data();
-  if (!check(vkAllocateDescriptorSets(device, &setInfo, postSets.data()), "vkAllocateDescriptorSets", error)) {
-    return false;
-  }
+  std::vector<VkDescriptorSet> postSets;
+  if (!createSlotSets(device, postSetLayout_, postPoolSizes, slotCount, &postPool_, &postSets, error)) return false;
   for (uint32_t i = 0; i < slotCount; ++i) slots_[i].postSet = postSets[i];
   return !fxaa_ || createFxaaObjects(error);
 }
@@ -486,38 +497,12 @@ bool VulkanBackend::createFxaaObjects(std::string* error) {
   desc.colourSlots = 1;
   desc.what = "FXAA pass shaders";
   if (!createGraphicsPipeline(device, desc, &fxaaPipeline_, error)) return false;
-  VkSamplerCreateInfo samplerInfo{};
-  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  samplerInfo.magFilter = VK_FILTER_LINEAR;
-  samplerInfo.minFilter = VK_FILTER_LINEAR;
-  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.maxLod = 0.0f;
-  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &fxaaSampler_), "vkCreateSampler", error)) {
-    fxaaSampler_ = VK_NULL_HANDLE;
-    return false;
-  }
+  if (!createClampedSampler(device, VK_FILTER_LINEAR, &fxaaSampler_, error)) return false;
   const auto slotCount = static_cast<uint32_t>(slots_.size());
-  const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, slotCount};
-  VkDescriptorPoolCreateInfo poolInfo{};
-  poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-  poolInfo.maxSets = slotCount;
-  poolInfo.poolSizeCount = 1;
-  poolInfo.pPoolSizes = &poolSize;
-  if (!check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &fxaaPool_), "vkCreateDescriptorPool", error)) {
-    fxaaPool_ = VK_NULL_HANDLE;
+  std::vector<VkDescriptorSet> sets;
+  if (!createSlotSets(device, fxaaSetLayout_, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, slotCount}}, slotCount,
+                      &fxaaPool_, &sets, error))
     return false;
-  }
-  const std::vector<VkDescriptorSetLayout> layouts(slotCount, fxaaSetLayout_);
-  std::vector<VkDescriptorSet> sets(slotCount);
-  VkDescriptorSetAllocateInfo setInfo{};
-  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  setInfo.descriptorPool = fxaaPool_;
-  setInfo.descriptorSetCount = slotCount;
-  setInfo.pSetLayouts = layouts.data();
-  if (!check(vkAllocateDescriptorSets(device, &setInfo, sets.data()), "vkAllocateDescriptorSets", error)) return false;
   for (uint32_t i = 0; i < slotCount; ++i) slots_[i].fxaaSet = sets[i];
   return true;
 }
