@@ -340,13 +340,14 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     };
     if (readBackHdr_ && merged) readHdr();
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
-    const bool posted = merged ? mergedPostPass(frame, readBackHdr_, &message)
-                               : postPass(frame, targets_.ldrFramebuffer.id(), &message);
+    // "post" times the FXAA pass too, as on Vulkan.
+    const bool posted = (merged ? mergedPostPass(frame, readBackHdr_, &message)
+                                : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
+                        (!fxaa_ || fxaaPass(targets_.fxaaFramebuffer.id(), &message));
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!posted) return false;
     if (readBackHdr_ && !merged) readHdr();
     if (fxaa_) {
-      if (!fxaaPass(targets_.fxaaFramebuffer.id(), &message)) return false;
       gl::readRgba8(targets_.fxaaFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
     } else if (merged) {
       gl::readRgba8(targets_.mergedFramebuffer.id(), GL_COLOR_ATTACHMENT1, frame.width, frame.height, &result->ldr);
