@@ -6,10 +6,26 @@
 #include "commands.h"
 #include "facet/cli/inputs.h"
 #include "facet/cli/outputs.h"
+#include "facet/compiler/mobile_cost.h"
 #include "facet/compiler/post.h"
 #include "facet/package/package.h"
 
 namespace facet::matc {
+namespace {
+
+// The static mobile cost model's estimate of a fragment stage (docs/eval.md, "The mobile cost
+// model"), as `matc info` prints it for a material's: "12.3 cycles (arithmetic-bound), 1 sample".
+std::string fragmentCost(const std::vector<uint32_t>& spirv) {
+  compiler::MobileStageCost cost;
+  std::string error;
+  if (!compiler::estimateMobileCost(spirv, &cost, &error)) return "cost unknown (" + error + ")";
+  char text[96];
+  std::snprintf(text, sizeof text, "%.1f cycles (%s-bound), %.0f samples", cost.cycles, cost.bound(),
+                cost.textureSamples);
+  return text;
+}
+
+}  // namespace
 
 int postCommand(const PostArgs& args) {
   compiler::PostEffects chosen;
@@ -26,6 +42,11 @@ int postCommand(const PostArgs& args) {
       cli::printError(error);
       return 1;
     }
+  }
+  compiler::PostStage fxaa;
+  if (!compiler::buildFxaaShader(&fxaa, &error)) {
+    cli::printError(error);
+    return 1;
   }
   // Every output, checked against the others and written together.
   namespace fs = std::filesystem;
@@ -46,11 +67,19 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs);
     add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
   }
-  add("--cpp", args.cpp, compiler::postShadersCpp(variants));
+  if (!args.emitSource.empty()) {
+    const std::string stem = (fs::path(args.emitSource) / "post.fxaa").string();
+    add("--emit-source", stem + ".frag.es300.glsl", fxaa.glslEs);
+    add("--emit-source", stem + ".frag.metal", fxaa.msl);
+  }
+  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
-    std::printf("post %s: %zu + %zu + %zu SPIR-V words\n", compiler::postVariantKey(shaders.effects).c_str(),
-                shaders.vertex.spirv.size(), shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size());
+    std::printf("post %s: %zu + %zu + %zu SPIR-V words; fragment: sampled %s, fetch %s\n",
+                compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
+                shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size(),
+                fragmentCost(shaders.sampledFragment.spirv).c_str(), fragmentCost(shaders.fetchFragment.spirv).c_str());
+  std::printf("post fxaa: %zu SPIR-V words; fragment %s\n", fxaa.spirv.size(), fragmentCost(fxaa.spirv).c_str());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }

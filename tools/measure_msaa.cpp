@@ -2,7 +2,8 @@
 //
 // Renders a scene (tests/data/scenes/thin_edges.json: high-contrast silhouettes and a row of
 // sub-pixel highlights) and compares, against a 16-sample reference:
-// 1. edge quality: PSNR of 1 sample and of MSAA 2x/4x per pixel. The reference is the scene rendered
+// 1. edge quality: PSNR of 1 sample, of MSAA 2x/4x per pixel and of FXAA (alone and after MSAA 4x).
+//    The reference is the scene rendered
 //    at 4x the width and height with one sample, box-filtered over each 4x4 block in linear light
 //    (each 8-bit output decoded from sRGB, averaged, encoded and rounded): 16 tone-mapped samples
 //    per pixel, what the display should show;
@@ -12,7 +13,7 @@
 //    tone-mapped and then averaged (what tone mapping per sample would do);
 // 3. flicker: the mean absolute difference of consecutive frames (8-bit RGB values) over a sweep of
 //    16 camera positions 1/16 pixel apart (the camera and its target moved sideways together by
-//    1/16 of a pixel at the target's distance), for 1 sample, MSAA and the reference; and the mean
+//    1/16 of a pixel at the target's distance), for 1 sample, MSAA, FXAA and the reference; and the mean
 //    absolute difference between an image's frame-to-frame change and the reference's, value by
 //    value: the reference's change is the motion itself, what differs from it is temporal aliasing
 //    (an aliased edge pops by whole steps where the reference moves smoothly).
@@ -53,14 +54,17 @@ double aces(double x) {
   return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 
-std::unique_ptr<RenderBackend> makeBackend(const std::string& api, uint32_t samples, std::string* error) {
+std::unique_ptr<RenderBackend> makeBackend(const std::string& api, uint32_t samples, std::string* error,
+                                           bool fxaa = false) {
   if (api == "gl") {
     GlOptions options;
     options.msaaSamples = samples;
+    options.fxaa = fxaa;
     return createGlBackend(options, error);
   }
   VulkanOptions options;
   options.msaaSamples = samples;
+  options.fxaa = fxaa;
   return createVulkanBackend(options, error);
 }
 
@@ -152,6 +156,18 @@ int main(int argc, char** argv) {
       std::printf("MSAA %ux: not offered (%s)\n\n", samples, why.c_str());
     }
   }
+  // FXAA after the post pass, alone and on top of MSAA 4x.
+  std::vector<std::pair<std::string, std::unique_ptr<RenderBackend>>> fxaa;
+  for (uint32_t samples : {1u, 4u}) {
+    std::string why;
+    auto backend = makeBackend(api, samples, &why, true);
+    const std::string name = samples == 1 ? "FXAA" : "MSAA " + std::to_string(samples) + "x + FXAA";
+    if (backend) {
+      fxaa.emplace_back(name, std::move(backend));
+    } else {
+      std::printf("%s: not offered (%s)\n\n", name.c_str(), why.c_str());
+    }
+  }
 
   // 1 and 2: one camera position.
   FrameResult reference16, reference4, single;
@@ -169,6 +185,11 @@ int main(int argc, char** argv) {
     if (!render(*backend, *scene, 1, 0, packages, &r, &error)) return fail(error);
     std::printf("| MSAA %ux (%s) | %.2f dB |\n", samples, backend->msaaMethod().c_str(),
                 facet::eval::psnr8(r.ldr, reference));
+  }
+  for (auto& [name, backend] : fxaa) {
+    FrameResult r;
+    if (!render(*backend, *scene, 1, 0, packages, &r, &error)) return fail(error);
+    std::printf("| %s | %.2f dB |\n", name.c_str(), facet::eval::psnr8(r.ldr, reference));
   }
   std::printf("| 4 ordered samples, tone-mapped then averaged | %.2f dB |\n",
               facet::eval::psnr8(downsampleLdr(reference4, 2), reference));
@@ -222,6 +243,11 @@ int main(int argc, char** argv) {
     frames.clear();
     if (!sweep(*backend, 1, &frames)) return fail(error);
     report(("MSAA " + std::to_string(samples) + "x").c_str(), frames);
+  }
+  for (auto& [name, backend] : fxaa) {
+    frames.clear();
+    if (!sweep(*backend, 1, &frames)) return fail(error);
+    report(name.c_str(), frames);
   }
   for (bool resolveFirst : {false, true}) {
     frames.clear();

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <exception>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
 
 #include "facet/runtime/gl_backend.h"
@@ -30,10 +31,10 @@ namespace {
 
 using gl::checkGlError;
 
-// Builds a post program; a `sampled` one (separate path) gets its HDR sampler pointed at its unit
-// once, since sampler uniforms are program state.
+// Builds a post program; a `sampled` one (separate path, FXAA) gets its sampler `samplerName` pointed
+// at unit kPostHdrBinding once, since sampler uniforms are program state.
 bool buildPostProgram(const std::string& vertex, const std::string& fragment, bool sampled, gl::LinkedProgram* out,
-                      std::string* error) {
+                      std::string* error, std::string_view samplerName = abi::kPostHdrName) {
   std::string buildError;
   std::optional<gl::LinkedProgram> post = gl::buildProgram(vertex, fragment, &buildError);
   if (!post) {
@@ -42,9 +43,9 @@ bool buildPostProgram(const std::string& vertex, const std::string& fragment, bo
   }
   *out = std::move(*post);
   if (!sampled) return true;
-  const GLint hdrLocation = glGetUniformLocation(out->program.id(), std::string(abi::kPostHdrName).c_str());
+  const GLint hdrLocation = glGetUniformLocation(out->program.id(), std::string(samplerName).c_str());
   if (hdrLocation < 0) {
-    *error = "post-pass fragment shader has no sampler uniform '" + std::string(abi::kPostHdrName) + "'";
+    *error = "post-pass fragment shader has no sampler uniform '" + std::string(samplerName) + "'";
     return false;
   }
   glUseProgram(out->program.id());
@@ -108,6 +109,7 @@ class GlBackend final : public GlRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_); }
+  bool fxaa() const override { return fxaa_; }
   std::string msaaMethod() const override {
     if (samples_ == 1) return "off";
     return renderToTexture_ ? "GL_EXT_multisampled_render_to_texture (samples kept by the driver)"
@@ -148,6 +150,14 @@ class GlBackend final : public GlRenderer {
   bool postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error);
   // Merged path, into the framebuffer the forward pass drew into; HDR invalidated unless `keepHdr`.
   bool mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string* error);
+  // A full-screen triangle of `program` sampling `input` at unit kPostHdrBinding into
+  // `framebuffer`; postFrame: the post variant's inputs are bound from it (null: none).
+  bool sampledPass(GLuint framebuffer, const gl::LinkedProgram& program, const gl::Texture& input,
+                   const FrameDesc* postFrame, const char* what, std::string* error);
+  // FXAA: samples the post pass's image (targets_.ldrColor), draws into `framebuffer`.
+  bool fxaaPass(GLuint framebuffer, std::string* error) {
+    return sampledPass(framebuffer, fxaaProgram_, targets_.ldrColor, nullptr, "FXAA pass", error);
+  }
   CachedProgram* programFor(const ShaderProgram& program, std::string* error);
 
   // Declared first so it is destroyed last: every GL object below is deleted in this context.
@@ -156,6 +166,8 @@ class GlBackend final : public GlRenderer {
   bool readBackHdr_ = true;
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLsizei samples_ = 1;  // MSAA samples of the forward pass
+  bool fxaa_ = false;
+  gl::LinkedProgram fxaaProgram_;  // FXAA only
   // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
   bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
@@ -225,7 +237,9 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
       postInputs_.init(post_.program.id(), shaders.effects, &postError) &&
       (!merged || (buildPostProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, true, &sampledPost_, &postError) &&
                    postInputs_.pointProgram(sampledPost_.program.id(), &postError)));
-  if (!built) {
+  fxaa_ = options.fxaa;
+  if (!built || (fxaa_ && !buildPostProgram(shaders.vertexGlslEs, fxaaShader().fragmentGlslEs, true, &fxaaProgram_,
+                                            &postError, abi::kFxaaInputName))) {
     if (error) *error = "GL backend: " + postError;
     return false;
   }
@@ -333,12 +347,16 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     };
     if (readBackHdr_ && merged) readHdr();
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
-    const bool posted = merged ? mergedPostPass(frame, readBackHdr_, &message)
-                               : postPass(frame, targets_.ldrFramebuffer.id(), &message);
+    // "post" times the FXAA pass too, as on Vulkan.
+    const bool posted = (merged ? mergedPostPass(frame, readBackHdr_, &message)
+                                : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
+                        (!fxaa_ || fxaaPass(targets_.fxaaFramebuffer.id(), &message));
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!posted) return false;
     if (readBackHdr_ && !merged) readHdr();
-    if (merged) {
+    if (fxaa_) {
+      gl::readRgba8(targets_.fxaaFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
+    } else if (merged) {
       gl::readRgba8(targets_.mergedFramebuffer.id(), GL_COLOR_ATTACHMENT1, frame.width, frame.height, &result->ldr);
     } else {
       gl::readRgba8(targets_.ldrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->ldr);
@@ -375,6 +393,17 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
       return false;
     }
+    // FXAA: forward and post into the backend's targets, then FXAA into the app's framebuffer.
+    if (fxaa_) {
+      const bool ownMerged = path_ == PostPath::Merged;
+      bool done = forwardPass(frame, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
+                              ownMerged, &message) &&
+                  (ownMerged ? mergedPostPass(frame, false, &message)
+                             : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
+                  fxaaPass(target.framebuffer, &message);
+      leaveState(target.framebuffer, frame.width, frame.height);
+      return done && checkGlError("drawing into the app's framebuffer", &message);
+    }
     const bool merged = path_ == PostPath::Merged && attachment.type != GL_FRAMEBUFFER_DEFAULT;
     if (merged) {
       glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
@@ -398,7 +427,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
 bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* error) {
   if (targets_.width == width && targets_.height == height) return true;
   const gl::Context::RenderToTexture* renderToTexture = renderToTexture_ ? &context_->renderToTexture() : nullptr;
-  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture,
+  return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture, fxaa_,
                                  &targets_, error);
 }
 
@@ -650,25 +679,32 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string
 }
 
 bool GlBackend::postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error) {
-  // Separate path: a second pass that samples the stored HDR target.
+  // Separate path: a second pass that samples the stored HDR target. A merged backend runs this
+  // pass only for frames into the app's default framebuffer.
+  return sampledPass(framebuffer, path_ == PostPath::Merged ? sampledPost_ : post_, targets_.hdrColor, &frame,
+                     "post pass", error);
+}
+
+bool GlBackend::sampledPass(GLuint framebuffer, const gl::LinkedProgram& program, const gl::Texture& input,
+                            const FrameDesc* postFrame, const char* what, std::string* error) {
+  // The app's framebuffer keeps the draw buffers the app gave it.
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, static_cast<GLsizei>(targets_.width), static_cast<GLsizei>(targets_.height));
   glDisable(GL_DEPTH_TEST);  // the LDR target has no depth; the triangle covers every pixel
   glDisable(GL_BLEND);       // the last forward draw may have been blended
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
-  // A merged backend runs this pass only for frames into the app's default framebuffer.
-  glUseProgram(path_ == PostPath::Merged ? sampledPost_.program.id() : post_.program.id());
+  glUseProgram(program.program.id());
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
-  glBindTexture(GL_TEXTURE_2D, targets_.hdrColor.id());
-  if (!postInputs_.bind(frame, error)) return false;
+  glBindTexture(GL_TEXTURE_2D, input.id());
+  if (postFrame && !postInputs_.bind(*postFrame, error)) return false;
   textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
   glBindVertexArray(0);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
-  return checkGlError("post pass", error);
+  return checkGlError(what, error);
 }
 
 }  // namespace

@@ -79,7 +79,8 @@ GLint maxRenderbufferSamples(GLenum internalFormat) {
 }
 
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
-                         const Context::RenderToTexture* renderToTexture, RenderTargets* targets, std::string* error) {
+                         const Context::RenderToTexture* renderToTexture, bool fxaa, RenderTargets* targets,
+                         std::string* error) {
   const auto w = static_cast<GLsizei>(width);
   const auto h = static_cast<GLsizei>(height);
   RenderTargets created;
@@ -132,6 +133,18 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
   glBindFramebuffer(GL_FRAMEBUFFER, created.ldrFramebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.ldrColor.id(), 0);
   bool ldrComplete = hdrComplete && checkComplete("LDR (RGBA8)", error);
+  if (fxaa && ldrComplete) {
+    // FXAA's taps between texel centres average their 2×2 neighbours (chunks/fxaa.glsl).
+    glBindTexture(GL_TEXTURE_2D, created.ldrColor.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    created.fxaaColor = createColorTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+    created.fxaaFramebuffer = Framebuffer::generate();
+    glBindFramebuffer(GL_FRAMEBUFFER, created.fxaaFramebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, created.fxaaColor.id(), 0);
+    ldrComplete = checkComplete("FXAA (RGBA8)", error);
+  }
   if (merged && ldrComplete) {
     created.mergedFramebuffer = Framebuffer::generate();
     glBindFramebuffer(GL_FRAMEBUFFER, created.mergedFramebuffer.id());

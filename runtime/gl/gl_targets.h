@@ -30,9 +30,13 @@ struct RenderTargets {
   Framebuffer msaaFramebuffer;
   GLsizei samples = 1;
   bool renderToTexture = false;
-  // Post pass: RGBA8 colour, the displayable image.
+  // Post pass: RGBA8 colour, the displayable image; with FXAA the tone-mapped image the FXAA
+  // pass samples (bilinear then, not nearest).
   Texture ldrColor;
   Framebuffer ldrFramebuffer;
+  // FXAA only: the FXAA pass's RGBA8 output, the displayable image.
+  Texture fxaaColor;
+  Framebuffer fxaaFramebuffer;
   // Merged path only: HDR at colour 0, LDR at colour 1, depth, in one framebuffer (the
   // framebuffer-fetch post pass reads colour 0 of the pixel it writes colour 1 of).
   Framebuffer mergedFramebuffer;
@@ -51,9 +55,10 @@ bool checkComplete(const char* which, std::string* error);
 // target of `hdrFormat`, and `samples` > 1 the multisampled forward framebuffer, and checks their
 // completeness.
 // renderToTexture: the context's GL_EXT_multisampled_render_to_texture entry points, or null for
-// multisampled renderbuffers resolved by glBlitFramebuffer.
+// multisampled renderbuffers resolved by glBlitFramebuffer. fxaa: the FXAA pass's target too.
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
-                         const Context::RenderToTexture* renderToTexture, RenderTargets* targets, std::string* error);
+                         const Context::RenderToTexture* renderToTexture, bool fxaa, RenderTargets* targets,
+                         std::string* error);
 
 // The internal formats of the HDR target and of depth (GL_RGBA16F or GL_R11F_G11F_B10F;
 // GL_DEPTH_COMPONENT32F).

@@ -18,18 +18,20 @@ uint32_t bytesPerPixel(HdrFormat format) { return format == HdrFormat::R11G11B10
 bool isMsaaSampleCount(uint32_t samples) { return samples == 1 || samples == 2 || samples == 4; }
 
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
-                                       HdrFormat hdrFormat, uint32_t samples) {
+                                       HdrFormat hdrFormat, uint32_t samples, bool fxaa) {
   ForwardPostGraph g;
   const uint32_t hdrBytes = bytesPerPixel(hdrFormat);
   g.hdr = g.graph.addResource({"hdr", width, height, hdrBytes, false, readBackHdr, 1});
   g.hdrSamples = samples > 1 ? g.graph.addResource({"hdr_ms", width, height, hdrBytes, false, false, samples}) : g.hdr;
   g.depth = g.graph.addResource({"depth", width, height, 4, true, false, samples});
   g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true, 1});
+  g.toneMapped = fxaa ? g.graph.addResource({"tonemapped", width, height, 4, false, false, 1}) : g.ldr;
   fg::PassDesc forward{"forward", {}, {g.hdrSamples, g.depth}, {g.hdrSamples, g.depth}, {}};
   if (samples > 1) forward.resolves.push_back(g.hdr);
   g.forwardPass = g.graph.addPass(forward);
   const fg::ReadKind read = path == PostPath::Separate ? fg::ReadKind::WholeTexture : fg::ReadKind::OwnPixel;
-  g.postPass = g.graph.addPass({"post", {{g.hdr, read}}, {g.ldr}, {}, {}});
+  g.postPass = g.graph.addPass({"post", {{g.hdr, read}}, {g.toneMapped}, {}, {}});
+  if (fxaa) g.fxaaPass = g.graph.addPass({"fxaa", {{g.toneMapped, fg::ReadKind::WholeTexture}}, {g.ldr}, {}, {}});
   return g;
 }
 

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   facet::removeTemporaryFilesOnSignals();  // an interrupted PNG write leaves nothing behind
   CLI::App app{"facet-view: renders a Facet scene headless to PNG"};
   std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
-  bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false;
+  bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false, fxaa = false;
   size_t frames = 1, warmup = 2;
   bool oneDrawPerObject = false;
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
   app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
       ->check(CLI::IsMember({1, 2, 4}));
+  app.add_flag("--fxaa", fxaa, "an FXAA pass after the post pass (default: the scene's \"antialiasing\")");
   app.add_flag("--keep-hdr", keepHdr, "also store HDR and read it back (debugging; HDR is then not transient)");
   app.add_option("--gl-context", glContext, "auto (EGL GLES, else OSMesa) | egl | osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
   if (width) scene->width = width;
   if (height) scene->height = height;
   if (msaa) scene->msaaSamples = msaa;
+  if (fxaa) scene->fxaa = true;
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -109,6 +111,7 @@ int main(int argc, char** argv) {
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
       options.msaaSamples = scene->msaaSamples;
+      options.fxaa = scene->fxaa;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -121,6 +124,7 @@ int main(int argc, char** argv) {
       options.hdrFormat = hdrFormat;
       options.decodeCompressedTextures = decodeTextures;
       options.msaaSamples = scene->msaaSamples;
+      options.fxaa = scene->fxaa;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);
@@ -145,9 +149,9 @@ int main(int argc, char** argv) {
     std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(),
                  result.width, result.height, prepared->variantKey().c_str(), prepared->exposure());
     if (stats) {
-      const facet::runtime::ForwardPostGraph graph =
-          facet::runtime::buildForwardPostGraph(result.width, result.height, backend->postPath(),
-                                                backend->readsBackHdr(), backend->hdrFormat(), backend->msaaSamples());
+      const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
+          result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
+          backend->msaaSamples(), backend->fxaa());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
@@ -158,6 +162,7 @@ int main(int argc, char** argv) {
         entry["hdrFormat"] = facet::runtime::toString(backend->hdrFormat());
         entry["msaa"] = backend->msaaSamples();
         entry["msaaMethod"] = backend->msaaMethod();
+        entry["fxaa"] = backend->fxaa();
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
@@ -165,9 +170,10 @@ int main(int argc, char** argv) {
         entry["cpuSubmitMs"] = facet::viewer::median(cpuTimes);
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux (%s):\n%s", name.c_str(),
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux (%s)%s:\n%s", name.c_str(),
                     facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
                     result.width, result.height, backend->msaaSamples(), backend->msaaMethod().c_str(),
+                    backend->fxaa() ? ", FXAA" : "",
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
         std::printf("  %zu draw calls; CPU issuing the frame (FrameResult::cpuSubmitMilliseconds): median %.3f ms\n",
                     frame.draws.size(), facet::viewer::median(cpuTimes));

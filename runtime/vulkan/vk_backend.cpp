@@ -40,6 +40,46 @@ namespace {
 
 using namespace vulkan;
 
+// A single-level sampler clamped to the edge, filtering with `filter`.
+bool createClampedSampler(VkDevice device, VkFilter filter, VkSampler* out, std::string* error) {
+  VkSamplerCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.maxLod = 0.0f;
+  if (!check(vkCreateSampler(device, &info, nullptr, out), "vkCreateSampler", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+// A pool of `count` sets of `layout` (one per frame slot) and the sets.
+bool createSlotSets(VkDevice device, VkDescriptorSetLayout layout, const std::vector<VkDescriptorPoolSize>& sizes,
+                    uint32_t count, VkDescriptorPool* pool, std::vector<VkDescriptorSet>* sets, std::string* error) {
+  VkDescriptorPoolCreateInfo poolInfo{};
+  poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  poolInfo.maxSets = count;
+  poolInfo.poolSizeCount = uint32_t(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  if (!check(vkCreateDescriptorPool(device, &poolInfo, nullptr, pool), "vkCreateDescriptorPool", error)) {
+    *pool = VK_NULL_HANDLE;
+    return false;
+  }
+  const std::vector<VkDescriptorSetLayout> layouts(count, layout);
+  sets->assign(count, VK_NULL_HANDLE);
+  VkDescriptorSetAllocateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  setInfo.descriptorPool = *pool;
+  setInfo.descriptorSetCount = count;
+  setInfo.pSetLayouts = layouts.data();
+  return check(vkAllocateDescriptorSets(device, &setInfo, sets->data()), "vkAllocateDescriptorSets", error);
+}
+
 // A frame in flight may use what a cache evicts only if it is younger than the eviction age.
 static_assert(kMaxFramesInFlight <= kEvictAfterFrames, "evicted entries must not be in use by frames in flight");
 
@@ -69,6 +109,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
+  bool fxaa() const override { return fxaa_; }
   std::string msaaMethod() const override;
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
@@ -98,6 +139,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool prepareFrame(const FrameDesc& frame, const AppImage* appImage, std::vector<DrawSlot>* slots, FrameOutput* output,
                     std::string* error);
   void writePostSet();
+  bool createFxaaObjects(std::string* error);
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
   FrameObjects frameObjects(VkQueryPool timestamps) const;
@@ -120,6 +162,9 @@ class VulkanBackend final : public VulkanRenderer {
   VertexPacking vertexPacking_ = VertexPacking::Packed;
   VkFormat hdrVkFormat_ = kHdrFormat;
   AttachmentOps hdrOps_, depthOps_, ldrOps_;
+  // FXAA: ldrOps_ are the tone-mapped image's (the post pass's output), fxaaOps_ the output's.
+  bool fxaa_ = false;
+  AttachmentOps fxaaOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
   ForwardSamples samples_;       // MSAA: the count and the multisampled colour's ops
@@ -142,6 +187,14 @@ class VulkanBackend final : public VulkanRenderer {
   VkPipelineLayout postLayout_ = VK_NULL_HANDLE;
   VkPipeline postPipeline_ = VK_NULL_HANDLE;
   VkSampler hdrSampler_ = VK_NULL_HANDLE;
+  // FXAA only: its render pass into the own LDR target, its set (the tone-mapped image, bilinear
+  // through fxaaSampler_) and pipeline.
+  VkRenderPass fxaaPass_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout fxaaSetLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout fxaaLayout_ = VK_NULL_HANDLE;
+  VkPipeline fxaaPipeline_ = VK_NULL_HANDLE;
+  VkSampler fxaaSampler_ = VK_NULL_HANDLE;
+  VkDescriptorPool fxaaPool_ = VK_NULL_HANDLE;
 
   // What one frame writes and the next frames in flight must not: its uniforms, its draw
   // descriptor sets and the post pass's set. Frame n uses slots_[n % framesInFlight]; when it is
@@ -154,6 +207,7 @@ class VulkanBackend final : public VulkanRenderer {
     VkDescriptorPool drawPool = VK_NULL_HANDLE;
     uint32_t drawPoolCapacity = 0;
     VkDescriptorSet postSet = VK_NULL_HANDLE;  // from postPool_, written every use (HDR view)
+    VkDescriptorSet fxaaSet = VK_NULL_HANDLE;  // FXAA only, from fxaaPool_, written every use
   };
   std::vector<FrameSlot> slots_;
   FrameSlot* slot_ = nullptr;  // the frame being prepared
@@ -212,6 +266,12 @@ VulkanBackend::~VulkanBackend() {
   if (postPool_) vkDestroyDescriptorPool(device, postPool_, nullptr);
   postInputs_.destroy();
   if (hdrSampler_) vkDestroySampler(device, hdrSampler_, nullptr);
+  if (fxaaPool_) vkDestroyDescriptorPool(device, fxaaPool_, nullptr);
+  if (fxaaSampler_) vkDestroySampler(device, fxaaSampler_, nullptr);
+  if (fxaaPipeline_) vkDestroyPipeline(device, fxaaPipeline_, nullptr);
+  if (fxaaLayout_) vkDestroyPipelineLayout(device, fxaaLayout_, nullptr);
+  if (fxaaSetLayout_) vkDestroyDescriptorSetLayout(device, fxaaSetLayout_, nullptr);
+  if (fxaaPass_) vkDestroyRenderPass(device, fxaaPass_, nullptr);
   if (postPipeline_) vkDestroyPipeline(device, postPipeline_, nullptr);
   if (postLayout_) vkDestroyPipelineLayout(device, postLayout_, nullptr);
   if (forwardLayout_) vkDestroyPipelineLayout(device, forwardLayout_, nullptr);
@@ -263,10 +323,12 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
     return false;
   }
   samples_.count = static_cast<VkSampleCountFlagBits>(options.msaaSamples);
-  const ForwardPostGraph g = buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples);
+  fxaa_ = options.fxaa;
+  const ForwardPostGraph g =
+      buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples, options.fxaa);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
-  const size_t expected = path_ == PostPath::Merged ? 1 : 2;
+  const size_t expected = (path_ == PostPath::Merged ? 1 : 2) + (fxaa_ ? 1 : 0);
   if (compiled.renderPasses.size() != expected) {
     *error = std::string("frame graph gave ") + std::to_string(compiled.renderPasses.size()) +
              " render passes for the " + toString(path_) + " path";
@@ -275,7 +337,8 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   const uint32_t postRenderPass = path_ == PostPath::Merged ? 0 : 1;
   hdrOps_ = toVulkan(*compiled.attachment(0, g.hdr));
   depthOps_ = toVulkan(*compiled.attachment(0, g.depth));
-  ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.ldr));
+  ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.toneMapped));
+  if (fxaa_) fxaaOps_ = toVulkan(*compiled.attachment(postRenderPass + 1, g.ldr));
   hdrTransient_ = compiled.traffic[g.hdr].transient;
   depthTransient_ = compiled.traffic[g.depth].transient;
   if (g.hdrSamples != g.hdr) {
@@ -357,13 +420,14 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
   const VkDescriptorType hdrType =
       merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  const LdrLayouts postOutput = fxaa_ ? kFxaaInputLayouts : LdrLayouts{};
   const bool passesMade =
-      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_, LdrLayouts{},
+      merged ? createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_, postOutput,
                                       &forwardPass_, error) &&
                    createMergedRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, ldrOps_, samples_,
                                           kAppImageLdrLayouts, &appImagePass_, error)
              : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, samples_, &forwardPass_, error) &&
-                   createPostRenderPass(device, ldrOps_, LdrLayouts{}, &postPass_, error) &&
+                   createPostRenderPass(device, ldrOps_, postOutput, &postPass_, error) &&
                    createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
@@ -403,19 +467,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   if (!createGraphicsPipeline(device, postDesc, &postPipeline_, error)) return false;
 
   // Nearest + clamp: the post pass reads exactly one HDR texel per output pixel.
-  VkSamplerCreateInfo samplerInfo{};
-  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  samplerInfo.magFilter = VK_FILTER_NEAREST;
-  samplerInfo.minFilter = VK_FILTER_NEAREST;
-  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  samplerInfo.maxLod = 0.0f;
-  if (!check(vkCreateSampler(device, &samplerInfo, nullptr, &hdrSampler_), "vkCreateSampler", error)) {
-    hdrSampler_ = VK_NULL_HANDLE;
-    return false;
-  }
+  if (!createClampedSampler(device, VK_FILTER_NEAREST, &hdrSampler_, error)) return false;
 
   slots_.resize(framesInFlight_);
   const auto slotCount = static_cast<uint32_t>(slots_.size());
@@ -423,26 +475,38 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   std::vector<VkDescriptorPoolSize> postPoolSizes{{hdrType, slotCount}};
   for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects))
     postPoolSizes.push_back({b.descriptorType, slotCount});
-  VkDescriptorPoolCreateInfo postPoolInfo{};
-  postPoolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-  postPoolInfo.maxSets = slotCount;
-  postPoolInfo.poolSizeCount = uint32_t(postPoolSizes.size());
-  postPoolInfo.pPoolSizes = postPoolSizes.data();
-  if (!check(vkCreateDescriptorPool(device, &postPoolInfo, nullptr, &postPool_), "vkCreateDescriptorPool", error)) {
-    postPool_ = VK_NULL_HANDLE;
-    return false;
-  }
-  const std::vector<VkDescriptorSetLayout> postLayouts(slotCount, postSetLayout_);
-  std::vector<VkDescriptorSet> postSets(slotCount);
-  VkDescriptorSetAllocateInfo setInfo{};
-  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  setInfo.descriptorPool = postPool_;
-  setInfo.descriptorSetCount = slotCount;
-  setInfo.pSetLayouts = postLayouts.data();
-  if (!check(vkAllocateDescriptorSets(device, &setInfo, postSets.data()), "vkAllocateDescriptorSets", error)) {
-    return false;
-  }
+  std::vector<VkDescriptorSet> postSets;
+  if (!createSlotSets(device, postSetLayout_, postPoolSizes, slotCount, &postPool_, &postSets, error)) return false;
   for (uint32_t i = 0; i < slotCount; ++i) slots_[i].postSet = postSets[i];
+  return !fxaa_ || createFxaaObjects(error);
+}
+
+// The FXAA pass: a render pass into the own LDR target, a pipeline sampling the tone-mapped image
+// bilinearly (chunks/fxaa.glsl reads between texel centres), and a set per frame slot.
+bool VulkanBackend::createFxaaObjects(std::string* error) {
+  VkDevice device = ctx_.device;
+  if (!createPostRenderPass(device, fxaaOps_, LdrLayouts{}, &fxaaPass_, error) ||
+      !createPostSetLayout(device, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, &fxaaSetLayout_, error) ||
+      !createPipelineLayout(device, {fxaaSetLayout_}, &fxaaLayout_, error)) {
+    return false;
+  }
+  PipelineDesc desc;
+  desc.kind = PipelineKind::Post;
+  desc.vertexSpirv = &post_->vertexSpirv;
+  desc.fragmentSpirv = &fxaaShader().fragmentSpirv;
+  desc.layout = fxaaLayout_;
+  desc.renderPass = fxaaPass_;
+  desc.subpass = 0;
+  desc.colourSlots = 1;
+  desc.what = "FXAA pass shaders";
+  if (!createGraphicsPipeline(device, desc, &fxaaPipeline_, error)) return false;
+  if (!createClampedSampler(device, VK_FILTER_LINEAR, &fxaaSampler_, error)) return false;
+  const auto slotCount = static_cast<uint32_t>(slots_.size());
+  std::vector<VkDescriptorSet> sets;
+  if (!createSlotSets(device, fxaaSetLayout_, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, slotCount}}, slotCount,
+                      &fxaaPool_, &sets, error))
+    return false;
+  for (uint32_t i = 0; i < slotCount; ++i) slots_[i].fxaaSet = sets[i];
   return true;
 }
 
@@ -504,8 +568,9 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
                                  FrameOutput* output, std::string* error) {
   retire_.beginFrame(++frameNumber_);
   slot_ = &slots_[frameNumber_ % slots_.size()];
-  // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput).
-  const bool ownOutput = !appImage || !rendersDirectly(*appImage);
+  // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput). FXAA
+  // writes the own target and the frame is copied into the app's image.
+  const bool ownOutput = !appImage || !rendersDirectly(*appImage) || fxaa_;
   if (!checkFrame(frame, ctx_.properties.limits, error) ||
       !ensureTargets(frame.width, frame.height, ownOutput, error) || !uploadFrame(frame, slots, error) ||
       !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) || !outputFor(appImage, output, error)) {
@@ -580,7 +645,9 @@ bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std
   output->forwardPass = forwardPass_;
   output->postPass = postPass_;
   output->framebuffers = {targets_.forwardFramebuffer, targets_.postFramebuffer};
-  if (!appImage || !rendersDirectly(*appImage)) return true;
+  output->fxaaPass = fxaaPass_;
+  output->fxaaFramebuffer = targets_.fxaaFramebuffer;
+  if (!appImage || !rendersDirectly(*appImage) || fxaa_) return true;
   output->directImage = appImage;
   if (merged) {
     output->forwardPass = appImagePass_;
@@ -598,6 +665,9 @@ FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
           postLayout_,
           postPipeline_,
           slot_->postSet,
+          fxaaLayout_,
+          fxaaPipeline_,
+          slot_->fxaaSet,
           timestamps,
           slot_->arena.buffer};
 }
@@ -613,6 +683,8 @@ TargetConfig VulkanBackend::targetConfig() const {
   config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
+  config.fxaa = fxaa_;
+  config.fxaaPass = fxaaPass_;
   return config;
 }
 
@@ -646,6 +718,13 @@ void VulkanBackend::writePostSet() {
   write.descriptorCount = 1;
   write.descriptorType = merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &imageInfo;
+  vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
+  if (!fxaa_) return;
+  const VkDescriptorImageInfo toneMapped{fxaaSampler_, targets_.toneMapped.view,
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  write.dstSet = slot_->fxaaSet;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &toneMapped;
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
 }
 

@@ -97,6 +97,16 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
   // BOTTOM_OF_PIPE: written once everything recorded before it has finished. Inside the merged
   // render pass this splits the subpasses on an immediate-mode GPU like lavapipe; on a tiler the
   // two subpasses interleave per tile and only the total is meaningful.
+  // A render pass of one full-screen triangle, nothing cleared.
+  const auto beginUncleared = [&](VkRenderPass renderPass, VkFramebuffer framebuffer) {
+    passInfo.renderPass = renderPass;
+    passInfo.framebuffer = framebuffer;
+    passInfo.clearValueCount = 0;
+    passInfo.pClearValues = nullptr;
+    vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+  };
   if (objects.merged) {
     if (objects.timestamps) {
       vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
@@ -107,18 +117,22 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     if (objects.timestamps) {
       vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
     }
-    passInfo.renderPass = output.postPass;
-    passInfo.framebuffer = output.framebuffers.post;
-    passInfo.clearValueCount = 0;
-    passInfo.pClearValues = nullptr;
-    vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    beginUncleared(output.postPass, output.framebuffers.post);
   }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postPipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postLayout, 0, 1, &objects.postSet, 0, nullptr);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
+  if (objects.fxaaPipeline) {
+    // The post pass's render pass made its output visible to this pass's fragment shader
+    // (vk_pipeline.h kFxaaInputLayouts).
+    beginUncleared(output.fxaaPass, output.fxaaFramebuffer);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.fxaaPipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.fxaaLayout, 0, 1, &objects.fxaaSet, 0,
+                            nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRenderPass(cmd);
+  }
   if (objects.timestamps) {
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 2);
   }

@@ -27,7 +27,12 @@ struct FrameObjects {
   VkPipelineLayout postLayout = VK_NULL_HANDLE;
   VkPipeline postPipeline = VK_NULL_HANDLE;
   VkDescriptorSet postSet = VK_NULL_HANDLE;
-  // kTimestampCount timestamps: frame start, forward pass done, post pass done. Null: not timed.
+  // FXAA (null when off): a render pass of its own after the post pass, sampling its output.
+  VkPipelineLayout fxaaLayout = VK_NULL_HANDLE;
+  VkPipeline fxaaPipeline = VK_NULL_HANDLE;
+  VkDescriptorSet fxaaSet = VK_NULL_HANDLE;
+  // kTimestampCount timestamps: frame start, forward pass done, post (and FXAA) passes done.
+  // Null: not timed.
   VkQueryPool timestamps = VK_NULL_HANDLE;
   VkBuffer arena = VK_NULL_HANDLE;  // this frame's uniforms and instance transforms (DrawSlot offsets)
 };
@@ -38,6 +43,8 @@ struct FrameOutput {
   VkRenderPass forwardPass = VK_NULL_HANDLE;
   VkRenderPass postPass = VK_NULL_HANDLE;  // separate path only
   Framebuffers framebuffers;
+  VkRenderPass fxaaPass = VK_NULL_HANDLE;  // FXAA only, into the targets' own LDR
+  VkFramebuffer fxaaFramebuffer = VK_NULL_HANDLE;
   const AppImage* directImage = nullptr;
 };
 

@@ -178,6 +178,23 @@ bool createRenderPass(VkDevice device, const VkRenderPassCreateInfo& info, const
 
 }  // namespace
 
+namespace {
+
+// Who reads the LDR attachment after its render pass: the readback or copy (TRANSFER_SRC), or,
+// with FXAA, the FXAA pass's fragment shader (SHADER_READ_ONLY). The readers of the previous
+// frame's image must also be done before this frame writes it (write after read).
+struct LdrReaders {
+  VkPipelineStageFlags stages;
+  VkAccessFlags access;
+};
+LdrReaders ldrReaders(LdrLayouts layouts) {
+  if (layouts.final == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+    return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT};
+  return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
+}
+
+}  // namespace
+
 bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps hdr, AttachmentOps depth,
                             AttachmentOps ldr, ForwardSamples samples, LdrLayouts layouts, VkRenderPass* out,
                             std::string* error) {
@@ -218,7 +235,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   // Before subpass 1: the previous frame's readback copy of LDR (write after read).
   dependencies[1].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[1].dstSubpass = 1;
-  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | ldrReaders(layouts).stages;
   dependencies[1].srcAccessMask = 0;
   dependencies[1].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[1].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
@@ -231,13 +248,13 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   dependencies[2].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   dependencies[2].dstAccessMask = VK_ACCESS_INPUT_ATTACHMENT_READ_BIT;
   dependencies[2].dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
-  // After: the readback copies LDR (and HDR when stored).
+  // After: the readback copies LDR (or the FXAA pass samples it), and HDR when stored.
   dependencies[3].srcSubpass = 1;
   dependencies[3].dstSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[3].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   dependencies[3].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  dependencies[3].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[3].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  dependencies[3].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | ldrReaders(layouts).stages;
+  dependencies[3].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | ldrReaders(layouts).access;
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
@@ -328,17 +345,18 @@ bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts
   // Before: the previous frame's readback copy of this image must finish (write after read).
   dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].srcStageMask =
+      VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | ldrReaders(layouts).stages;
   dependencies[0].srcAccessMask = 0;
   dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  // After: the readback copies it.
+  // After: the readback copies it (or the FXAA pass samples it).
   dependencies[1].srcSubpass = 0;
   dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  dependencies[1].dstStageMask = ldrReaders(layouts).stages;
+  dependencies[1].dstAccessMask = ldrReaders(layouts).access;
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;

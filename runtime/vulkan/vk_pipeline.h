@@ -58,6 +58,8 @@ struct LdrLayouts {
 };
 inline constexpr LdrLayouts kAppImageLdrLayouts{VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+// FXAA: the post pass's output is the tone-mapped image the FXAA pass samples.
+inline constexpr LdrLayouts kFxaaInputLayouts{VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 
 // Separate path, render pass 2: the post pass into RGBA8.
 bool createPostRenderPass(VkDevice device, AttachmentOps ldr, LdrLayouts layouts, VkRenderPass* out,

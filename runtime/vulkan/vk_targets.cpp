@@ -66,9 +66,16 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
                        createHostBuffer(ctx, pixels * (config.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4),
                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.hdrReadback, error)) &&
                       createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
+  // FXAA: the post pass writes toneMapped, the FXAA pass samples it and writes ldr.
+  ok = ok &&
+       (!config.fxaa ||
+        (createImage(ctx, width, height, kLdrFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                     VK_IMAGE_ASPECT_COLOR_BIT, &t.toneMapped, error) &&
+         createFramebuffer(ctx.device, config.fxaaPass, &t.ldr.view, 1, width, height, &t.fxaaFramebuffer, error)));
+  const VkImageView postOutput = config.fxaa ? t.toneMapped.view : t.ldr.view;
   if (ok && config.merged) {
     // Without an own output, each app image has its own framebuffer (vk_app_images.h).
-    const std::vector<VkImageView> views = forwardViews(t, true, t.ldr.view);
+    const std::vector<VkImageView> views = forwardViews(t, true, postOutput);
     ok = !own || createFramebuffer(ctx.device, config.forwardPass, views.data(), uint32_t(views.size()), width, height,
                                    &t.forwardFramebuffer, error);
   } else if (ok) {
@@ -76,7 +83,7 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
     ok = createFramebuffer(ctx.device, config.forwardPass, views.data(), uint32_t(views.size()), width, height,
                            &t.forwardFramebuffer, error) &&
          (!own ||
-          createFramebuffer(ctx.device, config.postPass, &t.ldr.view, 1, width, height, &t.postFramebuffer, error));
+          createFramebuffer(ctx.device, config.postPass, &postOutput, 1, width, height, &t.postFramebuffer, error));
   }
   if (!ok) {
     destroyRenderTargets(ctx.device, &t);
@@ -90,6 +97,8 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
 void destroyRenderTargets(VkDevice device, RenderTargets* targets) {
   if (targets->forwardFramebuffer) vkDestroyFramebuffer(device, targets->forwardFramebuffer, nullptr);
   if (targets->postFramebuffer) vkDestroyFramebuffer(device, targets->postFramebuffer, nullptr);
+  if (targets->fxaaFramebuffer) vkDestroyFramebuffer(device, targets->fxaaFramebuffer, nullptr);
+  destroyImage(device, &targets->toneMapped);
   destroyImage(device, &targets->hdr);
   destroyImage(device, &targets->depth);
   destroyImage(device, &targets->hdrSamples);

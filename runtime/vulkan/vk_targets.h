@@ -33,6 +33,10 @@ struct TargetConfig {
   VkFormat hdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // or VK_FORMAT_B10G11R11_UFLOAT_PACK32
   VkRenderPass forwardPass = VK_NULL_HANDLE;           // merged: the one render pass
   VkRenderPass postPass = VK_NULL_HANDLE;              // separate path only
+  // FXAA: the post pass writes toneMapped (sampled) and the FXAA pass, fxaaPass, writes ldr. Needs
+  // ownOutput (the FXAA pass does not write an app's image directly).
+  bool fxaa = false;
+  VkRenderPass fxaaPass = VK_NULL_HANDLE;
 };
 
 struct RenderTargets {
@@ -41,9 +45,11 @@ struct RenderTargets {
   Image hdr;         // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
   Image depth;       // D32, at TargetConfig::samples
   Image hdrSamples;  // MSAA only: the forward pass's multisampled colour, resolved into hdr
-  Image ldr;         // RGBA8: post pass output, copied out (ownOutput only)
+  Image ldr;         // RGBA8: post pass output (FXAA pass output with FXAA), copied out (ownOutput only)
+  Image toneMapped;  // FXAA only: RGBA8, the post pass output the FXAA pass samples
   VkFramebuffer forwardFramebuffer = VK_NULL_HANDLE;  // merged: HDR, depth, LDR (ownOutput only)
   VkFramebuffer postFramebuffer = VK_NULL_HANDLE;     // separate path only (ownOutput only)
+  VkFramebuffer fxaaFramebuffer = VK_NULL_HANDLE;     // FXAA only: ldr
   HostBuffer
       hdrReadback;  // width*height texels as stored (8 or 4 bytes), rows top to bottom (when read back; ownOutput only)
   HostBuffer ldrReadback;  // width*height*4 bytes, rows top to bottom (ownOutput only)

@@ -347,13 +347,19 @@ void post(const json& j, const AssetPaths& assets, Scene* s) {
   }
 }
 
-// "antialiasing": {"msaa": N}, N the forward pass's samples per pixel (render_path.h).
-uint32_t msaaSamples(const json& j) {
-  onlyKeys(j, "/antialiasing", {"msaa"});
-  if (!j.contains("msaa")) return 1;
-  const uint32_t n = wholeNumber(j["msaa"], "/antialiasing/msaa", 1, 4);
-  if (n == 3) fail("/antialiasing/msaa", "expected 1, 2 or 4 samples, not 3");
-  return n;
+// "antialiasing": {"msaa": N, "fxaa": bool}, N the forward pass's samples per pixel
+// (render_path.h); fxaa an FXAA pass after the post pass.
+void antialiasing(const json& j, Scene* s) {
+  onlyKeys(j, "/antialiasing", {"msaa", "fxaa"});
+  if (j.contains("msaa")) {
+    const uint32_t n = wholeNumber(j["msaa"], "/antialiasing/msaa", 1, 4);
+    if (n == 3) fail("/antialiasing/msaa", "expected 1, 2 or 4 samples, not 3");
+    s->msaaSamples = n;
+  }
+  if (j.contains("fxaa")) {
+    if (!j["fxaa"].is_boolean()) fail("/antialiasing/fxaa", "expected true or false");
+    s->fxaa = j["fxaa"].get<bool>();
+  }
 }
 
 Scene scene(const json& j, const AssetPaths& assets) {
@@ -366,7 +372,7 @@ Scene scene(const json& j, const AssetPaths& assets) {
   if (j.contains("tier")) s.tier = string(j["tier"], "/tier");
   if (j.contains("camera")) s.camera = camera(j["camera"]);
   if (j.contains("post")) post(j["post"], assets, &s);
-  if (j.contains("antialiasing")) s.msaaSamples = msaaSamples(j["antialiasing"]);
+  if (j.contains("antialiasing")) antialiasing(j["antialiasing"], &s);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");

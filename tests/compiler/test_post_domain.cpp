@@ -92,12 +92,17 @@ TEST(PostDomain, KeysNameTheEffectsAndEachEffectOnlyItsOwnCode) {
 TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {
   PostEffects neutral;
   neutral.toneCurve = ToneCurve::Neutral;
-  const std::string cpp = postShadersCpp({build({}), build(neutral)});
+  PostStage fxaa;
+  std::string error;
+  ASSERT_TRUE(buildFxaaShader(&fxaa, &error)) << error;
+  const std::string cpp = postShadersCpp({build({}), build(neutral)}, fxaa);
   EXPECT_TRUE(contains(cpp, "const std::vector<PostShaders>& postVariants()"));
   EXPECT_TRUE(contains(cpp, "kFetchSpirv1"));
   EXPECT_TRUE(contains(cpp, "{{\"neutral\", false, false, false}, vs1,"));
   EXPECT_EQ(everyPostEffects().size(), 24u);  // 3 tone curves × grading × vignette × dither
   EXPECT_TRUE(contains(cpp, "GL_EXT_shader_framebuffer_fetch"));
+  EXPECT_TRUE(contains(cpp, "const FxaaShader& fxaaShader()"));
+  EXPECT_TRUE(contains(cpp, "fxaa_console(toneMapped"));
 }
 
 }  // namespace

@@ -69,6 +69,24 @@ TEST(FacetView, MsaaReachesTheBackendsAndTheFrameGraph) {
   EXPECT_EQ(bad.exitCode, 2) << bad.out << bad.err;
 }
 
+// --fxaa reaches both backends and the frame graph: the tone-mapped image is stored and sampled
+// (4 + 4 bytes a pixel more than without), on top of the LDR output.
+TEST(FacetView, FxaaReachesTheBackendsAndTheFrameGraph) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-fxaa-out");
+  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+               " --out " + out + " --backend both --validation --fxaa --stats --frames 1 --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("vulkan: merged path, rgba16f HDR, frame graph at 256x256, MSAA 1x (off"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("), FXAA:\nrender pass 0: forward post\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("render pass 1: fxaa\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gl: merged path, rgba16f HDR, frame graph at 256x256, MSAA 1x (off), FXAA:"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("tonemapped"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total: loaded 0 B, stored 524288 B, sampled 262144 B per frame"), std::string::npos) << r.out;
+}
+
 // A package whose shaders read another interface than it declares (here: the preshader section
 // dropped, so they read a 64-byte block where a draw binds 32) makes facet-view exit 1 naming the
 // material, variant and stage, and write no image: on Vulkan at load (the SPIR-V), on GL before the

@@ -111,6 +111,36 @@ TEST(FrameGraph, MsaaSamplesAreTransientAndAddNoStoredBytes) {
   EXPECT_EQ(compileOrFail(graph).storedBytes(), kPixels * 8 * 4);
 }
 
+// FXAA reads neighbouring pixels, so the tone-mapped image cannot stay in tile memory: it is
+// stored once and sampled once (4 + 4 bytes a pixel more than without FXAA on either path), and
+// the FXAA pass is a render pass of its own. Off, the graph has no such pass and no such image.
+TEST(FrameGraph, FxaaStoresAndSamplesTheToneMappedImageAndNothingWhenOff) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    const ForwardPostGraph off = buildForwardPostGraph(kW, kH, path, false);
+    const ForwardPostGraph on = buildForwardPostGraph(kW, kH, path, false, HdrFormat::Rgba16Float, 1, true);
+    EXPECT_EQ(off.fxaaPass, UINT32_MAX);
+    EXPECT_EQ(off.toneMapped, off.ldr);
+    EXPECT_EQ(off.graph.passCount(), 2u);
+    EXPECT_EQ(off.graph.resourceCount(), 3u);
+    const CompiledGraph c0 = compileOrFail(off.graph);
+    const CompiledGraph c1 = compileOrFail(on.graph);
+    ASSERT_EQ(c1.renderPasses.size(), c0.renderPasses.size() + 1) << describe(on.graph, c1);
+    EXPECT_EQ(c1.renderPasses.back().subpasses, std::vector<uint32_t>{on.fxaaPass});
+    const uint32_t postRenderPass = uint32_t(c1.renderPasses.size() - 2);
+    const Attachment* toneMapped = c1.attachment(postRenderPass, on.toneMapped);
+    ASSERT_NE(toneMapped, nullptr);
+    EXPECT_EQ(toneMapped->store, StoreOp::Store);
+    EXPECT_EQ(c1.attachment(postRenderPass, on.ldr), nullptr);
+    EXPECT_EQ(c1.traffic[on.toneMapped].storedBytes, kPixels * 4);
+    EXPECT_EQ(c1.traffic[on.toneMapped].sampledBytes, kPixels * 4);
+    EXPECT_EQ(c1.storedBytes(), c0.storedBytes() + kPixels * 4);
+    EXPECT_EQ(c1.sampledBytes(), c0.sampledBytes() + kPixels * 4);
+    EXPECT_EQ(c1.traffic[on.hdr].transient, c0.traffic[off.hdr].transient);
+    EXPECT_NE(describe(on.graph, c1).find("fxaa"), std::string::npos);
+  }
+}
+
 TEST(FrameGraph, ShadowMapIsStoredAndDoesNotMerge) {
   FrameGraph graph;
   const ResourceId shadow = graph.addResource({"shadow", 2048, 2048, 4, true, false});

@@ -117,10 +117,11 @@ class GlAppTargetTest : public ::testing::Test {
   }
 
   // The backend the app embeds, with the test's GL table current afterwards.
-  std::unique_ptr<GlRenderer> embedded(PostPath path, uint32_t msaaSamples = 1) {
+  std::unique_ptr<GlRenderer> embedded(PostPath path, uint32_t msaaSamples = 1, bool fxaa = false) {
     GlOptions options;
     options.postPath = path;
     options.msaaSamples = msaaSamples;
+    options.fxaa = fxaa;
     options.readBackHdr = false;  // the mobile path, as an app runs it
     std::string error;
     auto renderer = createGlBackend(eglApp(), options, &error);
@@ -173,6 +174,26 @@ TEST_F(GlAppTargetTest, AppFramebufferGetsTheReadbackImageOnBothPaths) {
         EXPECT_EQ(content_.checkInstances(drawn), "") << "frame " << i;
       }
       EXPECT_GT(maxDifference(first, second), 1) << "the second frame changed the rough instance's roughness";
+      ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
+    }
+  }
+}
+
+// FXAA: forward and post into the backend's targets, the FXAA pass into the app's framebuffer
+// (a texture, a renderbuffer): render()'s image on both paths.
+TEST_F(GlAppTargetTest, WithFxaaTheAppFramebufferGetsTheReadbackImage) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    for (Image image : {Image::Texture, Image::Renderbuffer}) {
+      SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer"));
+      auto renderer = embedded(path, 1, true);
+      ASSERT_NE(renderer, nullptr);
+      EXPECT_TRUE(renderer->fxaa());
+      std::string error;
+      AppFramebuffer target = makeAppFramebuffer(image, GL_RGBA8, kWidth, kHeight);
+      std::vector<uint8_t> readBack;
+      const std::vector<uint8_t> drawn = renderBoth(*renderer, 0, target.id(), &readBack);
+      EXPECT_LE(maxDifference(drawn, readBack), 1);
+      EXPECT_EQ(content_.checkInstances(drawn), "");
       ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
     }
   }

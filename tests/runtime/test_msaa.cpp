@@ -253,8 +253,9 @@ TEST(Msaa, AlphaToCoverageGivesAMaskedEdgeFractionalCoverage) {
   }
 }
 
-// The scene's "antialiasing": {"msaa": N}: 1, 2 or 4, errors at their JSON pointer.
-TEST(Msaa, TheSceneNamesTheSampleCount) {
+// The scene's "antialiasing": {"msaa": N, "fxaa": bool}: 1, 2 or 4 samples, FXAA on or off,
+// errors at their JSON pointer.
+TEST(Msaa, TheSceneNamesTheSampleCountAndFxaa) {
   const auto parse = [](const std::string& antialiasing, std::string* error) {
     return parseScene("s.json", R"({"antialiasing": )" + antialiasing + R"(, "objects": []})", error);
   };
@@ -265,11 +266,18 @@ TEST(Msaa, TheSceneNamesTheSampleCount) {
   auto defaulted = parseScene("s.json", R"({"objects": []})", &error);
   ASSERT_TRUE(defaulted) << error;
   EXPECT_EQ(defaulted->msaaSamples, 1u);
+  EXPECT_FALSE(four->fxaa);
+  EXPECT_FALSE(defaulted->fxaa);
+  auto both = parse(R"({"msaa": 4, "fxaa": true})", &error);
+  ASSERT_TRUE(both) << error;
+  EXPECT_EQ(both->msaaSamples, 4u);
+  EXPECT_TRUE(both->fxaa);
   const std::pair<const char*, const char*> bad[] = {
       {R"({"msaa": 3})", "s.json: error: /antialiasing/msaa: expected 1, 2 or 4 samples, not 3"},
       {R"({"msaa": 8})", "s.json: error: /antialiasing/msaa: value 8 is outside [1.0, 4.0]"},
       {R"({"msaa": 2.5})", "s.json: error: /antialiasing/msaa: expected a whole number, not 2.5"},
-      {R"({"fxaa": true})", "s.json: error: /antialiasing/fxaa: unknown key 'fxaa'"},
+      {R"({"taa": true})", "s.json: error: /antialiasing/taa: unknown key 'taa'"},
+      {R"({"fxaa": 1})", "s.json: error: /antialiasing/fxaa: expected true or false"},
       {R"("4x")", "s.json: error: /antialiasing: expected an object"},
   };
   for (const auto& [text, message] : bad) {

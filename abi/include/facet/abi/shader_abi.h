@@ -303,6 +303,10 @@ inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;
 inline constexpr uint32_t kPostHdrColorLocation = 0;     // merged path: HDR is colour 0 of the pass
 inline constexpr uint32_t kPostMergedLdrLocation = 1;    // merged path: LDR is colour 1
 inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR is the only colour
+// The FXAA pass (after the post pass, when on) samples the post pass's tone-mapped RGBA8 image
+// as `toneMapped` at set kPostHdrSet / binding kPostHdrBinding (GL: that texture unit), bilinear
+// and clamped, and writes colour kPostSeparateLdrLocation.
+inline constexpr std::string_view kFxaaInputName = "toneMapped";
 // The post pass's block and grading sampler, at the HDR input's set.
 inline constexpr MemberDesc kPostMembers[] = {
     {"mediump vec4", "vignette"},

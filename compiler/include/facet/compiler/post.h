@@ -56,6 +56,11 @@ struct PostShaders {
 // Returns false with *error set when a backend rejects the assembled code (a compiler defect).
 bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string* error);
 
+// The FXAA pass's fragment stage (chunks/fxaa.glsl, templates/post_fxaa.frag.glsl), one form for
+// both render paths (it samples the stored tone-mapped image); its vertex stage is any post
+// variant's full-screen triangle.
+bool buildFxaaShader(PostStage* fragment, std::string* error);
+
 // Every combination of effects: what the runtime embeds.
 std::vector<PostEffects> everyPostEffects();
 
@@ -64,8 +69,8 @@ std::vector<PostEffects> everyPostEffects();
 std::vector<package::MslBinding> postMslBindings(const PostEffects& effects);
 
 // C++ source defining facet::runtime::postVariants() (runtime/include/facet/runtime/render_backend.h)
-// with these variants' SPIR-V words and GLSL ES texts: how the runtime gets its post pass
-// without linking the compiler.
-std::string postShadersCpp(const std::vector<PostShaders>& variants);
+// with these variants' SPIR-V words and GLSL ES texts, and fxaaShader() with the FXAA pass's:
+// how the runtime gets its post passes without linking the compiler.
+std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostStage& fxaa);
 
 }  // namespace facet::compiler

@@ -222,6 +222,7 @@ class RenderBackend {
   virtual bool readsBackHdr() const = 0;
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
+  virtual bool fxaa() const { return false; }         // an FXAA pass follows the post pass
   // How MSAA samples are kept and resolved, and where transient attachments live, for --stats and
   // tests: e.g. "resolve attachment; transient attachments in device-local memory (no lazily
   // allocated type)". Complete after the first frame (the targets exist then).
@@ -271,6 +272,10 @@ struct VulkanOptions {
   // How meshes are packed at upload; creation fails on a device whose vertex fetch cannot read
   // the packed formats.
   VertexPacking vertexPacking = VertexPacking::Packed;
+  // FXAA after the post pass (chunks/fxaa.glsl): the post pass writes an RGBA8 image that is
+  // stored and sampled by an FXAA render pass of its own, which writes the output
+  // (render_path.h, buildForwardPostGraph's fxaa). Off: no such pass, image or bytes.
+  bool fxaa = false;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -305,6 +310,8 @@ struct GlOptions {
   bool renderToTexture = true;
   // How meshes are packed at upload (every packed format is core GLES 3.0).
   VertexPacking vertexPacking = VertexPacking::Packed;
+  // As VulkanOptions::fxaa: the post pass writes a texture the FXAA pass samples.
+  bool fxaa = false;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
@@ -328,6 +335,13 @@ struct PostShaders {
 };
 // Every post variant the runtime embeds (each tone curve, with and without dithering).
 const std::vector<PostShaders>& postVariants();
+// The FXAA pass's fragment stage (chunks/fxaa.glsl; its vertex stage is a post variant's):
+// samples the tone-mapped image (abi::kFxaaInputName) and writes the anti-aliased LDR.
+struct FxaaShader {
+  const std::vector<uint32_t>& fragmentSpirv;
+  const std::string& fragmentGlslEs;
+};
+const FxaaShader& fxaaShader();
 // The variant running `settings`, or nullptr with *error listing the embedded ones.
 const PostShaders* findPostShaders(const PostSettings& settings, std::string* error);
 

@@ -40,14 +40,20 @@ struct ForwardPostGraph {
   fg::ResourceId hdrSamples = 0;
   fg::ResourceId depth = 0;  // D32, as many samples as hdrSamples (never resolved: not stored)
   fg::ResourceId ldr = 0;    // RGBA8, read after the frame (presented or read back)
+  // What the post pass writes: ldr itself, or with FXAA an RGBA8 image the FXAA pass samples
+  // (it reads neighbouring pixels, so the image leaves tile memory: stored, then sampled).
+  fg::ResourceId toneMapped = 0;
   uint32_t forwardPass = 0;
   uint32_t postPass = 0;
+  uint32_t fxaaPass = UINT32_MAX;  // UINT32_MAX when FXAA is off: no pass, no image
 };
 
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
 // which forces it to be stored. samples: the forward pass's MSAA sample count (1, 2 or 4).
+// fxaa: an FXAA pass after the post pass (chunks/fxaa.glsl) writes ldr.
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
-                                       HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1);
+                                       HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1,
+                                       bool fxaa = false);
 
 // The MSAA sample counts Facet renders with: 1 (off), 2 and 4. The backends refuse a count the
 // device does not offer for both the HDR colour and the depth format.
