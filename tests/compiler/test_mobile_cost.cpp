@@ -233,7 +233,7 @@ TEST(MobileCost, RedPlasticTiersRankAsOnMali) {
 // file is what fit.py generates.)
 TEST(MobileCost, CalibratedEstimateIsTheCommittedFit) {
   auto load = [](const std::string& name) {
-    std::ifstream in(std::string(FACET_SOURCE_DIR) + "/tools/calibration/" + name);
+    std::ifstream in(facet::test::sourceDir() + "/tools/calibration/" + name);
     return nlohmann::json::parse(in);
   };
   const nlohmann::json stats = load("mesa-stats.json"), fits = load("mesa-fit.json")["fits"];

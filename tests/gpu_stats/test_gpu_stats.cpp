@@ -88,8 +88,8 @@ TEST(Report, DescribesMaliAndAdrenoStages) {
 
 namespace {
 
-std::string matc() { return std::string(FACET_BINARY_DIR) + "/matc/matc"; }
-std::string material() { return std::string(FACET_SOURCE_DIR) + "/examples/materials/red_plastic.mat"; }
+std::string matc() { return facet::test::binaryDir() + "/matc/matc"; }
+std::string material() { return facet::test::sourceDir() + "/examples/materials/red_plastic.mat"; }
 
 TEST(GpuOption, AnUnknownGpuIsAUsageErrorInLintAndEval) {
   for (const char* command : {"lint", "eval"}) {

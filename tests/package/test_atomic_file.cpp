@@ -13,13 +13,14 @@
 
 #include "facet/package/atomic_file.h"
 #include "facet/package/package.h"
+#include "test_support.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 std::string freshDir(const std::string& name) {
-  fs::path dir = fs::path(FACET_BINARY_DIR) / "test-scratch" / name;
+  fs::path dir = fs::path(facet::test::binaryDir()) / "test-scratch" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

@@ -17,6 +17,7 @@
 
 #include "facet/package/package.h"
 #include "facet/package/package_reader.h"
+#include "test_support.h"
 
 namespace pkg = facet::package;
 
@@ -661,7 +662,7 @@ TEST(Package, TextureWhoseTexelsDoNotFitItsSizeIsRejected) {
 TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
   size_t seeds = 0;
   for (const char* folder : {"package_corpus", "package_regressions"}) {
-    const std::filesystem::path dir = std::filesystem::path(FACET_SOURCE_DIR) / "tests/fuzz" / folder;
+    const std::filesystem::path dir = std::filesystem::path(facet::test::sourceDir()) / "tests/fuzz" / folder;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
       if (entry.path().extension() == ".md") continue;
       SCOPED_TRACE(entry.path().string());

@@ -19,11 +19,12 @@
 #include "facet/runtime/render_backend.h"
 #include "gl_context.h"
 #include "gl_objects.h"
+#include "test_support.h"
 
 namespace facet::runtime {
 namespace {
 
-constexpr const char* kPackage = FACET_BINARY_DIR "/examples/app/red_plastic.matpkg";
+std::string packagePath() { return facet::test::binaryDir() + "/examples/app/red_plastic.matpkg"; }
 constexpr uint32_t kWidth = example::ExampleContent::kWidth;
 constexpr uint32_t kHeight = example::ExampleContent::kHeight;
 
@@ -107,7 +108,7 @@ class GlAppTargetTest : public ::testing::Test {
     // The test's own GL calls, on the app's context through the same kind of table.
     appGl_ = gl::Context::create(adoptGlContext(eglApp(), &error), &error);
     ASSERT_NE(appGl_, nullptr) << error;
-    ASSERT_TRUE(content_.create(kPackage, &error)) << error;
+    ASSERT_TRUE(content_.create(packagePath().c_str(), &error)) << error;
   }
   void TearDown() override {
     // The test's GL objects die with the test body; what remains must be clean.

@@ -15,6 +15,9 @@ namespace facet::test {
 
 namespace fs = std::filesystem;
 
+std::string sourceDir() { return FACET_SOURCE_DIR; }
+std::string binaryDir() { return FACET_BINARY_DIR; }
+
 std::vector<std::string> exampleScenes() {
   std::vector<std::string> scenes;
   for (const auto& entry : fs::directory_iterator(examplePath("scenes")))
@@ -40,7 +43,7 @@ std::vector<std::string> exampleMaterials() {
 
 std::string scratchDir(const std::string& name) {
   // ctest runs test cases as parallel processes: the pid keeps their folders apart.
-  fs::path dir = fs::path(FACET_BINARY_DIR) / "test-scratch" / (name + "." + std::to_string(getpid()));
+  fs::path dir = fs::path(binaryDir()) / "test-scratch" / (name + "." + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();
@@ -48,7 +51,7 @@ std::string scratchDir(const std::string& name) {
 
 CommandResult run(const std::string& command) {
   // matc caches compiled variants under $XDG_CACHE_HOME; tests never touch the user's cache.
-  setenv("XDG_CACHE_HOME", (std::string(FACET_BINARY_DIR) + "/test-cache").c_str(), 1);
+  setenv("XDG_CACHE_HOME", (binaryDir() + "/test-cache").c_str(), 1);
   std::string errFile = scratchDir("run-stderr") + "/stderr.txt";
   CommandResult r;
   FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");

@@ -9,7 +9,9 @@
 
 namespace facet::test {
 
-inline std::string sourceDir() { return FACET_SOURCE_DIR; }
+// The source tree and the build tree this test was built from.
+std::string sourceDir();
+std::string binaryDir();
 inline std::string examplePath(const std::string& relative) { return sourceDir() + "/examples/" + relative; }
 // Every examples/scenes/*.json, sorted.
 std::vector<std::string> exampleScenes();
