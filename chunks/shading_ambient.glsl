@@ -4,7 +4,8 @@
 // E_env/π comes from SH (ambient_sh.glsl), L_spec,ibl from the tier's image-based specular:
 // the split sum (ibl_split_sum.glsl: prefiltered environment × DFG table, every tier's preset),
 // or the options `matc eval` measures: the prefiltered environment × Karis's
-// analytic environment BRDF (env_brdf_karis.glsl), two fixed mips × Zioma's fit (ibl_two_mip.glsl). With FACET_ENERGY_COMPENSATION it also
+// analytic environment BRDF (env_brdf_karis.glsl), two fixed mips × Zioma's fit (ibl_two_mip.glsl),
+// or, for measurement, both integrals sampled (ibl_sampled.glsl: the albedo is then 1). With FACET_ENERGY_COMPENSATION it also
 // sets shading_energy_compensation from the DFG terms it reads, and for a lobe scaled by the
 // albedo (SPECULAR_LOBE_SCALED_BY_ALBEDO) shading_specular_albedo, before any light is shaded.
 // Needs: shading_standard.glsl and the tier's IBL chunks. fp16: radiance is pre-exposed.
@@ -45,6 +46,13 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
 #elif defined(FACET_IBL_ANALYTIC)
     vec3 albedo = env_brdf_karis(f0, NoV, perceptualRoughness);
     vec3 specular = prefiltered_radiance(r, perceptualRoughness);
+#elif defined(FACET_IBL_SAMPLED)
+    // The integral has f0 and Fresnel in it; the table gives only the compensation.
+    vec3 albedo = vec3(1.0);
+#if defined(FACET_ENERGY_COMPENSATION)
+    shading_energy_compensation = energy_compensation(dfg_terms(NoV, perceptualRoughness), f0);
+#endif
+    vec3 specular = sampled_specular_radiance(material, n, v);
 #else
     vec3 albedo = env_brdf_zioma_saturated(f0, NoV, perceptualRoughness);
     vec3 specular = two_mip_radiance(r, perceptualRoughness);

@@ -19,11 +19,11 @@
 #include "environment_cube.glsl"
 // (The clear coat reads the prefiltered environment at its own roughness whatever the tier's
 // ambient model.)
-#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC) || defined(FACET_CLEAR_COAT_LOBE) || \
-    defined(FACET_CLEAR_COAT_AMBIENT)
+#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_ANALYTIC) || defined(FACET_IBL_SAMPLED) || \
+    defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
 #include "ibl_prefiltered.glsl"
 #endif
-#if defined(FACET_IBL_SPLIT_SUM)
+#if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_SAMPLED)
 #include "ibl_split_sum.glsl"
 #endif
 #if defined(FACET_IBL_ANALYTIC)
@@ -40,6 +40,9 @@
 #include "clear_coat_ggx_kelemen.glsl"
 #endif
 #include "shading_standard.glsl"
+#if defined(FACET_IBL_SAMPLED)
+#include "ibl_sampled.glsl"
+#endif
 #include "shading_ambient.glsl"
 #include "output_blending.glsl"
 // The view vector at highp, for the half vector of each light (shading_standard.glsl,
@@ -76,6 +79,8 @@ void main() {
 
 #if defined(FACET_VERTEX_DIFFUSE)
     vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * v_diffuseLight);
+#elif defined(FACET_IBL_SAMPLED)
+    vec3 color = shade_standard_ambient(material, sampled_irradiance_over_pi(shading_normal));
 #else
     vec3 color = shade_standard_ambient(material, sh_irradiance_over_pi(shading_normal));
 #endif

@@ -215,8 +215,15 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
       case permutations::AmbientModel::SplitSum: s += "#define FACET_IBL_SPLIT_SUM 1\n"; break;
       case permutations::AmbientModel::Analytic: s += "#define FACET_IBL_ANALYTIC 1\n"; break;
       case permutations::AmbientModel::TwoMip: s += "#define FACET_IBL_TWO_MIP 1\n"; break;
+      case permutations::AmbientModel::Sampled:
+        s += "#define FACET_IBL_SAMPLED 1\n#define FACET_IBL_SAMPLES " +
+             std::to_string(std::max(in.tier.ambientSamples, 1)) + "\n";
+        break;
     }
-    if (in.tier.energyCompensation && in.tier.ambient == permutations::AmbientModel::SplitSum)
+    // The sampled ground truth applies the same factor (from the same table) as the split sum it
+    // measures: it integrates the single-scattering lobe, the factor is part of the model.
+    if (in.tier.energyCompensation && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
+                                       in.tier.ambient == permutations::AmbientModel::Sampled))
       s += "#define FACET_ENERGY_COMPENSATION 1\n";
     s += "#define FACET_SH_BANDS " + std::to_string(in.tier.shBands == 2 ? 2 : 3) + "\n";
     s += "#define FACET_ENVIRONMENT_LEVELS " + std::to_string(kEnvironmentLevels) + "\n";
@@ -293,13 +300,13 @@ std::string specularLutSampler(const AssemblyInput& in, Flavour flavour, const c
 }
 
 // The frame textures of image-based lighting (shader_abi.h): the prefiltered environment in every
-// lit variant, the DFG table in split-sum ones.
+// lit variant, the DFG table in split-sum ones (and the sampled ground truth's, for the energy
+// compensation).
 // Fragment stage only: the vertex stage evaluates SH from the frame block, never a texture.
 std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* precision) {
   if (in.material.shading != "lit") return "";
   std::string s = frameSampler(flavour, abi::kEnvironmentSampler, precision);
-  if (in.tier.ambient == permutations::AmbientModel::SplitSum)
-    s += frameSampler(flavour, abi::kDfgLutSampler, precision);
+  if (samplesDfgLut(in)) s += frameSampler(flavour, abi::kDfgLutSampler, precision);
   return s;
 }
 
@@ -377,7 +384,8 @@ bool templateText(const char* name, const std::string** text, std::string* error
 bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading == "lit"; }
 
 bool samplesDfgLut(const AssemblyInput& in) {
-  return in.material.shading == "lit" && in.tier.ambient == permutations::AmbientModel::SplitSum;
+  return in.material.shading == "lit" && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
+                                          in.tier.ambient == permutations::AmbientModel::Sampled);
 }
 
 // Every light of a lut tier reads the table (specular_lut_lobe.glsl): the sun and each point or

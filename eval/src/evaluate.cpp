@@ -102,7 +102,7 @@ class Evaluation {
     if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
     if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
 
-    ErrorAccumulator all;
+    ErrorAccumulator all, truthError;
     for (size_t vi = 0; vi < views_.size(); ++vi) {
       runtime::Scene scene = views_[vi].scene;
       scene.tier = permutations::toString(c.tier);
@@ -123,7 +123,8 @@ class Evaluation {
       if (!runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
         return fail(c, message, error);
       if (isReference) {
-        backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
+        if (backgrounds_.size() == vi)
+          backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
         referenceImages_.push_back(std::move(image));
         if (vi == 0) referenceFrame_ = std::move(prepared);  // for the paired timing of the others
       }
@@ -135,9 +136,46 @@ class Evaluation {
       all.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
       view.error = one.metrics();
       r->views.push_back(std::move(view));
+      if (!groundTruth_.empty()) {
+        const runtime::FrameResult& truth = groundTruth_[vi];
+        truthError.add(mine.ldr, truth.ldr, mine.hdr, truth.hdr, coverageMask(mine.hdr, truth.hdr, backgrounds_[vi]));
+      }
     }
     r->error = all.metrics();
+    if (!groundTruth_.empty()) r->groundTruthError = truthError.metrics();
     return material_.shading != "lit" || furnace(c, packageDir, r, error);
+  }
+
+  // The ground truth (EvalOptions::groundTruthSamples): `reference` as shipped with its ambient
+  // integrated by importance sampling, kept per view; the same at a quarter of the samples against
+  // it bounds the truth's own error (quasi-Monte Carlo error falls about as 1/N, so the truth's is
+  // about a quarter of that figure). Before any configuration is measured, so that every one is
+  // compared with it.
+  bool renderGroundTruth(const Configuration& reference, ImageMetrics* convergence, std::vector<ViewResult>* views,
+                         EvalError* error) {
+    std::vector<runtime::FrameResult> coarse;
+    const int samples = options_.groundTruthSamples;
+    if (!renderSampled(reference, std::max(samples / 4, 1), &coarse, error) ||
+        !renderSampled(reference, samples, &groundTruth_, error))
+      return false;
+    ErrorAccumulator change;
+    for (size_t vi = 0; vi < views_.size(); ++vi) {
+      const runtime::FrameResult& truth = groundTruth_[vi];
+      const std::vector<bool> mask = coverageMask(coarse[vi].hdr, truth.hdr, backgrounds_[vi]);
+      change.add(coarse[vi].ldr, truth.ldr, coarse[vi].hdr, truth.hdr, mask);
+      ViewResult view;
+      view.name = views_[vi].name;
+      view.image = (fs::path("images") / ("ground_truth." + view.name + ".png")).string();
+      std::string message;
+      if (!runtime::encodePng(truth.width, truth.height, truth.ldr, &view.png, &message))
+        return fail(reference, message, error);
+      ErrorAccumulator one;
+      one.add(coarse[vi].ldr, truth.ldr, coarse[vi].hdr, truth.hdr, mask);
+      view.error = one.metrics();
+      views->push_back(std::move(view));
+    }
+    *convergence = change.metrics();
+    return true;
   }
 
   // Which clock the timings used (EvalReport::timingClock); empty when nothing was timed.
@@ -167,6 +205,40 @@ class Evaluation {
     const float* clear = prepared->frame().clearColor;
     const std::vector<bool> covered = coverageMask(image.hdr, image.hdr, {clear[0], clear[1], clear[2]});
     r->furnaceGain = furnaceGain(image.hdr, kFurnaceLuminance * prepared->exposure(), covered);
+    return true;
+  }
+
+  // Every view of `reference` with AmbientModel::Sampled at `samples` points per integral; also
+  // records each view's background (the clear colour), which the reference's images share.
+  bool renderSampled(Configuration c, int samples, std::vector<runtime::FrameResult>* images, EvalError* error) {
+    c.config.ambient = permutations::AmbientModel::Sampled;
+    c.config.ambientSamples = samples;
+    c.name = "ground_truth." + std::to_string(samples);
+    std::string key;
+    std::optional<compiler::BuildResult> built = build(c, false, &key, error);
+    if (!built) return false;
+    const fs::path packageDir = workDir_ / c.name;
+    std::error_code ec;
+    fs::create_directories(packageDir, ec);
+    if (!package::writeFile((packageDir / (material_.name + ".matpkg")).string(), package::write(built->package),
+                            &error->message))
+      return false;
+    backgrounds_.clear();
+    images->clear();
+    for (const View& v : views_) {
+      runtime::Scene scene = v.scene;
+      scene.tier = permutations::toString(c.tier);
+      std::string message;
+      std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
+      if (!prepared) return fail(c, message, error);
+      runtime::FrameResult image;
+      if (!backend_->render(prepared->frame(), &image, &message)) return fail(c, "render failed: " + message, error);
+      if (!backend_->validationErrors().empty())
+        return fail(c, "Vulkan validation reported: " + backend_->validationErrors().front(), error);
+      const float* clear = prepared->frame().clearColor;
+      backgrounds_.push_back({clear[0], clear[1], clear[2]});
+      images->push_back(std::move(image));
+    }
     return true;
   }
 
@@ -266,6 +338,7 @@ class Evaluation {
   std::unique_ptr<runtime::RenderBackend> backend_;
   fs::path workDir_;
   std::vector<runtime::FrameResult> referenceImages_;  // per view
+  std::vector<runtime::FrameResult> groundTruth_;      // per view; empty unless measured
   std::vector<std::array<float, 3>> backgrounds_;      // per view: the clear colour
   std::unique_ptr<PreparedFrame> referenceFrame_;      // the reference's first view
   std::optional<bool> gpuClock_;                       // timed by the forward pass's GPU time
@@ -324,6 +397,11 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
 
   Evaluation evaluation(material, options, std::move(views), std::move(backend), work.path);
   const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
+  if (options.groundTruthSamples > 0 && material.shading == "lit") {
+    report.groundTruthSamples = options.groundTruthSamples;
+    if (!evaluation.renderGroundTruth(configs[0], &report.groundTruthConvergence, &report.groundTruthViews, error))
+      return std::nullopt;
+  }
   for (size_t i = 0; i < configs.size(); ++i) {
     const Configuration& c = configs[i];
     // Identical maths (e.g. high with energy compensation = reference in mediump): the same

@@ -134,6 +134,10 @@ Json reportJson(const EvalReport& r) {
                      {"frames", r.timingFrames},
                      {"warmup_frames", r.warmupFrames}};
   j["cost_model"] = weightsJson(r.weights);
+  if (r.groundTruthSamples > 0)
+    j["ground_truth"] = Json{{"what", "reference with its environment integrated per pixel by importance sampling"},
+                             {"samples", r.groundTruthSamples},
+                             {"quarter_samples_error", errorJson(r.groundTruthConvergence)}};
   Json configs = Json::array();
   for (const ConfigurationResult& c : r.results) {
     Json k;
@@ -146,6 +150,7 @@ Json reportJson(const EvalReport& r) {
     k["variant"] = c.variantKey;
     k["same_as"] = c.sameAs;
     k["error"] = errorJson(c.error);
+    k["ground_truth_error"] = c.groundTruthError ? errorJson(*c.groundTruthError) : Json(nullptr);
     Json views = Json::array();
     for (const ViewResult& v : c.views)
       views.push_back(Json{{"name", v.name}, {"image", v.image}, {"error", errorJson(v.error)}});
@@ -278,6 +283,26 @@ std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfS
   return s;
 }
 
+// Each configuration against the ground truth beside its error against reference (docs/eval.md,
+// "The ground truth").
+std::string groundTruthMarkdown(const EvalReport& r) {
+  std::string s =
+      "\nAgainst the ground truth: reference with its environment integrated per pixel by importance "
+      "sampling, " +
+      std::to_string(r.groundTruthSamples) + " points per integral (at a quarter of them it differs by " +
+      psnrText(r.groundTruthConvergence) + " dB PSNR, relative RMSE " +
+      fmt("%.4f", r.groundTruthConvergence.relativeRmse) + ").\n\n";
+  s += "Images: `images/ground_truth.<view>.png`.\n\n";
+  s += "| configuration | PSNR dB vs ground truth | rel. RMSE vs ground truth | PSNR dB vs reference |\n";
+  s += "|---|--:|--:|--:|\n";
+  for (const ConfigurationResult& c : r.results) {
+    if (!c.groundTruthError) continue;
+    s += "| " + c.configuration.name + " | " + psnrText(*c.groundTruthError) + " | " +
+         fmt("%.4f", c.groundTruthError->relativeRmse) + " | " + psnrText(c.error) + " |\n";
+  }
+  return s;
+}
+
 }  // namespace
 
 std::string reportMarkdown(const EvalReport& r) {
@@ -338,6 +363,7 @@ std::string reportMarkdown(const EvalReport& r) {
          "factor): reference " +
          fmt("%.3f", referenceGain) + ", largest " + fmt("%.3f", largest) + "; " +
          (gains.empty() ? std::string("no configuration gains energy") : "energy gain: " + gains) + ".\n";
+  if (r.groundTruthSamples > 0) s += groundTruthMarkdown(r);
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep, r.brdfDomain);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
@@ -486,6 +512,7 @@ std::vector<package::OutputFile> reportFiles(const EvalReport& report, const std
   for (const ConfigurationResult& r : report.results)
     if (r.sameAs.empty())  // the others show the images of the configuration they are the same as
       for (const ViewResult& v : r.views) files.push_back({(fs::path(outDir) / v.image).string(), v.png});
+  for (const ViewResult& v : report.groundTruthViews) files.push_back({(fs::path(outDir) / v.image).string(), v.png});
   return files;
 }
 

@@ -17,7 +17,8 @@ struct EvalArgs {
   bool noSwaps = false;            // the tiers as shipped only
   bool validation = false;
   bool fp16Emulation = false;
-  std::string gpu;  // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
+  int groundTruth = 0;  // samples of the ground truth (0: not measured)
+  std::string gpu;      // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
   std::string mesaPrefix;
 };
 // 0 with the report written, 1 for input errors, 2 for usage errors.

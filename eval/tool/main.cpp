@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
   app.add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
   app.add_flag("--fp16-emulation", eval.fp16Emulation,
                "build mediump SPIR-V with every result rounded to binary16 (docs/fp16-emulation.md)");
+  app.add_option("--ground-truth", eval.groundTruth,
+                 "also measure every configuration against reference with its environment integrated by "
+                 "importance sampling, N points per integral and pixel (docs/eval.md)")
+      ->check(CLI::Range(4, 65536));
   if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   return facet::eval::evalCommand(eval);
 }

@@ -75,8 +75,12 @@ std::string describe(const TierConfig& c) {
   s += c.diffuse == DiffuseModel::Pixel ? ", pixel diffuse" : ", vertex diffuse";
   s += c.colorSpace == ColorSpace::Linear ? ", linear" : ", gamma_hack";
   s += c.precision == PrecisionPolicy::Highp ? ", highp" : ", mediump";
-  const char* ambient[] = {"split_sum", "analytic_env_brdf", "two_mip"};
-  s += std::string(", ") + ambient[int(c.ambient)] + " + sh" + std::to_string(c.shBands);
+  const char* ambient[] = {"split_sum", "analytic_env_brdf", "two_mip", "sampled"};
+  s += std::string(", ") + ambient[int(c.ambient)];
+  if (c.ambient == AmbientModel::Sampled)
+    s += " (" + std::to_string(c.ambientSamples) + " samples)";
+  else
+    s += " + sh" + std::to_string(c.shBands);
   if (c.energyCompensation) s += ", energy compensation";
   return s;
 }

@@ -491,3 +491,53 @@ TEST(Eval, ASceneFileReplacesTheGridAndOtherMaterialsAreLeftOut) {
   EXPECT_NE(error.message.find("no object of the scene uses material 'not_in_the_scene'"), std::string::npos)
       << error.message;
 }
+
+// The ground truth (docs/eval.md, "The ground truth"). In a constant environment the split sum is
+// exact but for its table's resolution (the DFG table holds the same integral the sampling
+// estimates), so the two must agree; an estimator with a wrong weight (a missing 4 v·h, the pdf of
+// h used as that of l) is off by tens of percent here.
+TEST(EvalGroundTruth, AgreesWithTheSplitSumInAConstantEnvironment) {
+  std::string dir = facet::test::scratchDir("eval-ground-truth-constant");
+  std::string scenePath = dir + "/constant.json";
+  std::ofstream(scenePath) << R"({"width": 96, "height": 48, "tier": "high",
+    "sky": {"luminance": 5000},
+    "objects": [{"material": "brushed_gold", "position": [-1.1, 0, 0], "params": {"roughness": 0.25}},
+                {"material": "brushed_gold", "position": [1.1, 0, 0], "params": {"roughness": 0.9}}]})";
+  auto options = tinyOptions();
+  options.sceneFile = scenePath;
+  options.swaps = false;
+  options.timingFrames = 0;
+  options.brdfSweep = false;
+  options.groundTruthSamples = 1024;
+  facet::eval::EvalError error;
+  auto report = facet::eval::evaluate(example("brushed_gold"), options, &error);
+  ASSERT_TRUE(report) << error.message;
+  EXPECT_EQ(report->groundTruthSamples, 1024);
+  EXPECT_LT(report->groundTruthConvergence.relativeRmse, 0.01);
+  ASSERT_TRUE(report->results[0].groundTruthError);
+  EXPECT_GT(report->results[0].groundTruthError->pixels, 1000u);
+  EXPECT_LT(report->results[0].groundTruthError->relativeRmse, 0.015);
+}
+
+// Under an image with a bright source the split sum is an approximation: the ground truth must
+// see its error, well above its own (the same at a quarter of the samples), and the report must
+// show it beside the error against reference.
+TEST(EvalGroundTruth, SeesTheSplitSumErrorUnderAnImageEnvironment) {
+  auto options = tinyOptions();
+  options.sceneFile = facet::test::sourceDir() + "/tests/data/scenes/image_lit_grid.json";
+  options.swaps = false;
+  options.timingFrames = 0;
+  options.brdfSweep = false;
+  options.groundTruthSamples = 4096;
+  facet::eval::EvalError error;
+  auto report = facet::eval::evaluate(example("brushed_gold"), options, &error);
+  ASSERT_TRUE(report) << error.message;
+  ASSERT_TRUE(report->results[0].groundTruthError);
+  const double referenceError = report->results[0].groundTruthError->relativeRmse;
+  EXPECT_GT(referenceError, 0.05);
+  EXPECT_GT(referenceError, 5 * report->groundTruthConvergence.relativeRmse);
+  const std::string md = facet::eval::reportMarkdown(*report);
+  EXPECT_NE(md.find("| configuration | PSNR dB vs ground truth | rel. RMSE vs ground truth | PSNR dB vs reference |"),
+            std::string::npos);
+  EXPECT_TRUE(facet::eval::reportJson(*report)["configurations"][0]["ground_truth_error"].is_object());
+}

@@ -31,6 +31,10 @@ struct EvalOptions {
                                // the cost is still that of the shaders as shipped
   compiler::MobileCostWeights weights;
   bool brdfSweep = true;  // also each lobe over the BRDF domain (brdf_sweep.h; lit materials)
+  // Lit materials: also measure every configuration against the ground truth, `reference` with its
+  // environment integrated per pixel by importance sampling with this many points per integral
+  // (AmbientModel::Sampled), and the same at a quarter of the points against it. 0: off.
+  int groundTruthSamples = 0;
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
 };
 
@@ -47,6 +51,8 @@ struct ConfigurationResult {
   std::string sameAs;      // the earlier configuration with identical maths whose results these are
   compiler::MobileStageCost fragment, vertex;
   ImageMetrics error;  // all views together
+  // Against the ground truth (EvalOptions::groundTruthSamples), all views together; unset when off.
+  std::optional<ImageMetrics> groundTruthError;
   std::vector<ViewResult> views;
   double seconds = 0;       // lavapipe: median render() time of the first view
   double cyclesVsHigh = 0;  // fragment cycles ÷ high's as shipped (0 when high was not evaluated)
@@ -91,6 +97,11 @@ struct EvalReport {
   std::string timingClock;
   bool fp16Emulation = false;
   compiler::MobileCostWeights weights;
+  // The ground truth's samples (EvalOptions::groundTruthSamples; 0: not measured) and a bound on
+  // its own error: the image at a quarter of the samples against it, all views together.
+  int groundTruthSamples = 0;
+  ImageMetrics groundTruthConvergence;
+  std::vector<ViewResult> groundTruthViews;  // images/ground_truth.<view>.png; error: the quarter-samples image's
   std::vector<ConfigurationResult> results;  // results[0] is reference as shipped
   // Per-GPU figures from Mesa's compilers (addGpuFigures), one per GPU asked for; the pairs are
   // named by configuration. Empty: the cost model's figures only.

@@ -23,7 +23,11 @@ enum class PrecisionPolicy { Highp, Mediump };
 //   Analytic  the same environment sample, times Karis's 2014 analytic environment BRDF: no table
 //   TwoMip    two samples of the environment at fixed mips (0 and the last) lerped by roughness,
 //             times Zioma's 2015 environment BRDF (saturated): no variable lod, no table
-enum class AmbientModel { SplitSum, Analytic, TwoMip };
+//   Sampled   the ground truth for measurement (`matc eval --ground-truth`; no preset, no material
+//             override): diffuse and the tier's specular lobe integrated over the environment's
+//             level 0 by importance sampling, TierConfig::ambientSamples reads each
+//             (chunks/ibl_sampled.glsl)
+enum class AmbientModel { SplitSum, Analytic, TwoMip, Sampled };
 // The clear coat of materials that write `clearCoat` (docs/material-models.md); a material without
 // it compiles the same shaders whatever this says. reference and high: GgxKelemen; mid and low:
 // Ambient, the form within their budget (half of high's coat cost in the mobile cost model).
@@ -48,6 +52,7 @@ struct TierConfig {
   int shBands = 3;                  // SH irradiance bands: 3 (9 coefficients) or 2 (4)
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
+  int ambientSamples = 0;  // AmbientModel::Sampled: points per integral and pixel
   bool operator==(const TierConfig&) const = default;
 };
 
