@@ -30,12 +30,31 @@ vec3 shade_standard_ambient(MaterialInputs material, vec3 irradianceOverPi) {
     return apply_ambient_occlusion(material, material_diffuse_color(material) * irradianceOverPi);
 }
 
+// The direction the prefiltered environment is read along. The split sum prefilters each level
+// with the lobe seen head-on (n = v = r), where the lobe's axis is the mirror direction r; off
+// normal incidence the GGX lobe times n·l leans from r towards n, the more the rougher (Lagarde &
+// de Rousiers 2014, "Moving Frostbite to Physically Based Rendering", §4.9.3, their fit of that
+// dominant direction, α = r²):
+//   d = mix(n, r, (1 − α)(√(1 − α) + α))
+// Not normalized: environment_cube.glsl's lookup takes any length (a cube face and its ratios).
+// fp16: α ∈ [0.0079, 1], the factor in [0, 1]; a mix of two unit vectors is finite.
+// FACET_IBL_DOMINANT_DIRECTION (an option `matc eval` measures against its ground truth).
+#if defined(FACET_IBL_DOMINANT_DIRECTION)
+vec3 specular_dominant_direction(vec3 n, vec3 r, float perceptualRoughness) {
+    float alpha = perceptualRoughness * perceptualRoughness;
+    return mix(n, r, (1.0 - alpha) * (sqrt(1.0 - alpha) + alpha));
+}
+#endif
+
 // Specular ambient: the environment reflected about n, weighted by the tier's environment BRDF.
 vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     vec3 f0 = material_f0(material);
     float perceptualRoughness = material_perceptual_roughness(material);
     float NoV = max(dot(n, v), MIN_N_DOT_V);
     vec3 r = reflect(-v, n);
+#if defined(FACET_IBL_DOMINANT_DIRECTION)
+    r = specular_dominant_direction(n, r, perceptualRoughness);
+#endif
 #if defined(FACET_IBL_SPLIT_SUM)
     vec2 dfg = dfg_terms(NoV, perceptualRoughness);
     vec3 albedo = split_sum_albedo(dfg, f0);

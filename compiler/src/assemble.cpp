@@ -225,6 +225,8 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     if (in.tier.energyCompensation && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
                                        in.tier.ambient == permutations::AmbientModel::Sampled))
       s += "#define FACET_ENERGY_COMPENSATION 1\n";
+    if (in.tier.dominantDirection && in.tier.ambient != permutations::AmbientModel::Sampled)
+      s += "#define FACET_IBL_DOMINANT_DIRECTION 1\n";
     s += "#define FACET_SH_BANDS " + std::to_string(in.tier.shBands == 2 ? 2 : 3) + "\n";
     s += "#define FACET_ENVIRONMENT_LEVELS " + std::to_string(kEnvironmentLevels) + "\n";
   }

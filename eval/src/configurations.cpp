@@ -16,7 +16,7 @@ using permutations::PrecisionPolicy;
 using permutations::SpecularModel;
 using permutations::TierConfig;
 
-const char* const kAmbient[] = {"split_sum", "analytic", "two_mip"};
+const char* const kAmbient[] = {"split_sum", "analytic", "two_mip", "sampled"};
 
 }  // namespace
 
@@ -59,6 +59,10 @@ const std::vector<Axis>& axes() {
        [](const TierConfig& c) { return std::string(c.energyCompensation ? "on" : "off"); },
        [](TierConfig* c, const std::string& o) { c->energyCompensation = o == "on"; },
        [](const TierConfig& c) { return c.ambient == AmbientModel::SplitSum; }},
+      {"dominant_direction",
+       {"off", "on"},
+       [](const TierConfig& c) { return std::string(c.dominantDirection ? "on" : "off"); },
+       [](TierConfig* c, const std::string& o) { c->dominantDirection = o == "on"; }},
       {"clear_coat",
        {std::begin(permutations::kClearCoatModelNames), std::end(permutations::kClearCoatModelNames)},
        [](const TierConfig& c) { return std::string(permutations::kClearCoatModelNames[int(c.clearCoat)]); },

@@ -82,6 +82,7 @@ std::string describe(const TierConfig& c) {
   else
     s += " + sh" + std::to_string(c.shBands);
   if (c.energyCompensation) s += ", energy compensation";
+  if (c.dominantDirection) s += ", dominant direction";
   return s;
 }
 

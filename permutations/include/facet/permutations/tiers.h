@@ -53,6 +53,9 @@ struct TierConfig {
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
   int ambientSamples = 0;  // AmbientModel::Sampled: points per integral and pixel
+  // The environment read along the lobe's dominant direction instead of the mirror direction
+  // (chunks/shading_ambient.glsl, specular_dominant_direction); prefiltered ambient models only.
+  bool dominantDirection = false;
   bool operator==(const TierConfig&) const = default;
 };
 
