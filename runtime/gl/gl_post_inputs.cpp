@@ -79,7 +79,10 @@ bool PostInputs::bind(const FrameDesc& frame, std::string* error) {
   if (readsBlock()) {
     abi::PostUniforms uniforms = frame.postUniforms;
     // The upscaled read divides by the output's size, which the backend knows whatever the frame says.
-    if (upscale_) uniforms.viewport[0] = 1.0f / float(frame.width), uniforms.viewport[1] = 1.0f / float(frame.height);
+    if (upscale_) {
+      uniforms.viewport[0] = 1.0f / float(frame.width);
+      uniforms.viewport[1] = 1.0f / float(frame.height);
+    }
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kPostUniformsBinding, uniforms_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(abi::PostUniforms), &uniforms);
   }

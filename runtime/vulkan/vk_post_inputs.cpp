@@ -214,7 +214,10 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
   if (effects_.vignette || upscale_) {
     abi::PostUniforms uniforms = frame.postUniforms;
     // The upscaled read divides by the output's size, which the backend knows whatever the frame says.
-    if (upscale_) uniforms.viewport[0] = 1.0f / float(frame.width), uniforms.viewport[1] = 1.0f / float(frame.height);
+    if (upscale_) {
+      uniforms.viewport[0] = 1.0f / float(frame.width);
+      uniforms.viewport[1] = 1.0f / float(frame.height);
+    }
     std::memcpy(uniforms_[slot].mapped, &uniforms, sizeof(abi::PostUniforms));
     buffer = {uniforms_[slot].buffer, 0, sizeof(abi::PostUniforms)};
   }
