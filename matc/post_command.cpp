@@ -66,6 +66,8 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", stem + ".frag.metal", shaders.sampledFragment.msl);
     add("--emit-source", stem + ".fetch.frag.es300.glsl", shaders.fetchFragment.glslEs);
     add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
+    add("--emit-source", stem + ".upscaled.frag.es300.glsl", shaders.upscaledFragment.glslEs);
+    add("--emit-source", stem + ".upscaled.frag.metal", shaders.upscaledFragment.msl);
   }
   if (!args.emitSource.empty()) {
     const std::string stem = (fs::path(args.emitSource) / "post.fxaa").string();
@@ -75,10 +77,12 @@ int postCommand(const PostArgs& args) {
   add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
-    std::printf("post %s: %zu + %zu + %zu SPIR-V words; fragment: sampled %s, fetch %s\n",
+    std::printf("post %s: %zu + %zu + %zu + %zu SPIR-V words; fragment: sampled %s, fetch %s, upscaled %s\n",
                 compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
                 shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size(),
-                fragmentCost(shaders.sampledFragment.spirv).c_str(), fragmentCost(shaders.fetchFragment.spirv).c_str());
+                shaders.upscaledFragment.spirv.size(), fragmentCost(shaders.sampledFragment.spirv).c_str(),
+                fragmentCost(shaders.fetchFragment.spirv).c_str(),
+                fragmentCost(shaders.upscaledFragment.spirv).c_str());
   std::printf("post fxaa: %zu SPIR-V words; fragment %s\n", fxaa.spirv.size(), fragmentCost(fxaa.spirv).c_str());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;

@@ -17,7 +17,7 @@
 #       scripts/run-examples.sh compiles (the materials and options of scripts/example-packages.sh),
 #       GLSL ES 3.00 and MSL, the bytes the package holds (`matc info PKG --variant K --stage S
 #       --target T` prints them)
-#   post/<effects>.<vert|frag|fetch.frag>.es300.glsl: every post-pass variant the runtime embeds
+#   post/<effects>.<vert|frag|fetch.frag|upscaled.frag>.es300.glsl: every post-pass variant the runtime embeds
 #       (`matc post --every-variant`; its Vulkan stages ship as SPIR-V only, so it has no MSL)
 #
 # Review the result with `git diff tests/golden`.

@@ -13,7 +13,9 @@
 namespace facet::compiler {
 namespace {
 
-enum class PostRead { Sampled, SubpassInput, FramebufferFetch };
+// Upscaled: the separate path's read of an HDR image rendered at a smaller size (render scale),
+// filtered bilinearly at the output pixel's centre.
+enum class PostRead { Sampled, SubpassInput, FramebufferFetch, Upscaled };
 
 // The post fragment stage's interface, printed from shader_abi.h's attachment constants: where
 // the HDR colour of the forward pass is read from, and where the LDR result goes.
@@ -32,6 +34,7 @@ std::string postInterface(Flavour flavour, PostRead read) {
       return "layout(location = " + std::to_string(abi::kPostHdrColorLocation) + ") inout mediump vec4 " + hdr + ";\n" +
              ldr(abi::kPostMergedLdrLocation);
     case PostRead::Sampled:
+    case PostRead::Upscaled:
       return (flavour == Flavour::Vulkan ? "layout(" + setBinding + ") " : std::string()) +
              "uniform mediump sampler2D " + hdr + ";\n" + ldr(abi::kPostSeparateLdrLocation);
   }
@@ -40,7 +43,7 @@ std::string postInterface(Flavour flavour, PostRead read) {
 
 // The effects' own inputs, also from shader_abi.h: the grading LUT (sampler3D has no default
 // precision in GLSL ES, so it is given) and the PostUniforms block.
-std::string effectInputs(Flavour flavour, const PostEffects& effects) {
+std::string effectInputs(Flavour flavour, const PostEffects& effects, PostRead read) {
   std::string text;
   if (effects.colorGrading) {
     const abi::SamplerDesc& lut = abi::kPostColorLutSampler;
@@ -49,7 +52,8 @@ std::string effectInputs(Flavour flavour, const PostEffects& effects) {
       text += "layout(set = " + std::to_string(lut.set) + ", binding = " + std::to_string(lut.binding) + ") ";
     text += "uniform mediump sampler3D " + std::string(lut.name) + ";\n";
   }
-  if (effects.vignette) text += uniformBlockDeclaration(flavour, abi::kPostBlock);
+  // The upscaled read takes the output's pixel size from the block's viewport.
+  if (effects.vignette || read == PostRead::Upscaled) text += uniformBlockDeclaration(flavour, abi::kPostBlock);
   return text;
 }
 
@@ -74,6 +78,7 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   if (read == PostRead::FramebufferFetch) text += "#extension GL_EXT_shader_framebuffer_fetch : require\n";
   if (read == PostRead::SubpassInput) text += "#define FACET_POST_SUBPASS_INPUT 1\n";
   if (read == PostRead::FramebufferFetch) text += "#define FACET_POST_FRAMEBUFFER_FETCH 1\n";
+  if (read == PostRead::Upscaled) text += "#define FACET_POST_UPSCALE 1\n";
   if (effects.toneCurve == ToneCurve::Aces) text += "#define FACET_POST_ACES 1\n";
   if (effects.toneCurve == ToneCurve::Neutral) text += "#define FACET_POST_NEUTRAL 1\n";
   if (effects.dither) text += "#define FACET_POST_DITHER 1\n";
@@ -82,7 +87,7 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   text += "precision mediump float;\nprecision highp int;\n";
   std::vector<std::string> files;
   if (std::string(templateName).find(".frag.") != std::string::npos) {
-    text += postInterface(flavour, read) + effectInputs(flavour, effects);
+    text += postInterface(flavour, read) + effectInputs(flavour, effects, read);
     if (effects.toneCurve == ToneCurve::Aces) files.push_back("tonemap_aces.glsl");
     if (effects.toneCurve == ToneCurve::Neutral) files.push_back("tonemap_neutral.glsl");
     files.push_back("srgb.glsl");
@@ -142,16 +147,18 @@ bool toMsl(const std::vector<uint32_t>& words, std::span<const package::MslBindi
 // glslang can, and fills the fragment's targets (and the vertex's, when asked).
 bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, PostStage* vertex, std::string* error) {
   StageSources vk, es;
-  const PostRead esRead = read == PostRead::SubpassInput ? PostRead::FramebufferFetch : PostRead::Sampled;
+  const PostRead esRead = read == PostRead::SubpassInput ? PostRead::FramebufferFetch : read;
   if (!assemblePost(effects, Flavour::Vulkan, read, "post_fullscreen.vert.glsl", &vk.vertex, error) ||
       !assemblePost(effects, Flavour::Vulkan, read, "post_tonemap.frag.glsl", &vk.fragment, error) ||
       !assemblePost(effects, Flavour::GlslEs300, esRead, "post_fullscreen.vert.glsl", &es.vertex, error) ||
       !assemblePost(effects, Flavour::GlslEs300, esRead, "post_tonemap.frag.glsl", &es.fragment, error)) {
     return false;
   }
-  const std::string what = read == PostRead::Sampled ? "sampled form" : "fetch form";
+  const std::string what = read == PostRead::Sampled    ? "sampled form"
+                           : read == PostRead::Upscaled ? "upscaled form"
+                                                        : "fetch form";
   std::string log;
-  if (esRead == PostRead::Sampled && !checkGlslEs300(es, &log)) {
+  if (esRead != PostRead::FramebufferFetch && !checkGlslEs300(es, &log)) {
     *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
     return false;
   }
@@ -161,7 +168,7 @@ bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, P
     return false;
   }
   if (!finishStage(&spirv.fragment, what, error) ||
-      !toMsl(spirv.fragment, postMslBindings(effects), what, &fragment->msl, error))
+      !toMsl(spirv.fragment, postMslBindings(effects, read == PostRead::Upscaled), what, &fragment->msl, error))
     return false;
   fragment->spirv = std::move(spirv.fragment);
   fragment->glslEs = std::move(es.fragment);
@@ -217,7 +224,7 @@ std::string postVariantKey(const PostEffects& effects) {
          (effects.vignette ? "+vignette" : "") + (effects.dither ? "+dither" : "");
 }
 
-std::vector<package::MslBinding> postMslBindings(const PostEffects& effects) {
+std::vector<package::MslBinding> postMslBindings(const PostEffects& effects, bool upscaled) {
   // The sampled form's HDR texture; the fetch form reads [[color(0)]] instead and ignores it.
   std::vector<package::MslBinding> slots{{std::string(abi::kPostHdrName), package::MslResource::Texture,
                                           abi::kPostHdrSet, abi::kPostHdrBinding,
@@ -227,7 +234,7 @@ std::vector<package::MslBinding> postMslBindings(const PostEffects& effects) {
     slots.push_back({std::string(lut.name), package::MslResource::Texture, lut.set, lut.binding,
                      abi::mslTextureIndex(lut.binding)});
   }
-  if (effects.vignette) {
+  if (effects.vignette || upscaled) {
     const abi::BlockDesc& block = abi::kPostBlock;
     slots.push_back(
         {std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)});
@@ -239,7 +246,8 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
   PostShaders shaders;
   shaders.effects = effects;
   if (!buildForm(effects, PostRead::Sampled, &shaders.sampledFragment, &shaders.vertex, error) ||
-      !buildForm(effects, PostRead::SubpassInput, &shaders.fetchFragment, nullptr, error)) {
+      !buildForm(effects, PostRead::SubpassInput, &shaders.fetchFragment, nullptr, error) ||
+      !buildForm(effects, PostRead::Upscaled, &shaders.upscaledFragment, nullptr, error)) {
     return false;
   }
   *out = std::move(shaders);
@@ -295,9 +303,11 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
     appendWords(&cpp, ("kVertexSpirv" + n).c_str(), shaders.vertex.spirv);
     appendWords(&cpp, ("kSampledSpirv" + n).c_str(), shaders.sampledFragment.spirv);
     appendWords(&cpp, ("kFetchSpirv" + n).c_str(), shaders.fetchFragment.spirv);
+    appendWords(&cpp, ("kUpscaledSpirv" + n).c_str(), shaders.upscaledFragment.spirv);
     appendText(&cpp, ("kVertexEs" + n).c_str(), shaders.vertex.glslEs);
     appendText(&cpp, ("kSampledEs" + n).c_str(), shaders.sampledFragment.glslEs);
     appendText(&cpp, ("kFetchEs" + n).c_str(), shaders.fetchFragment.glslEs);
+    appendText(&cpp, ("kUpscaledEs" + n).c_str(), shaders.upscaledFragment.glslEs);
   }
   cpp += "// The FXAA pass\n";
   appendWords(&cpp, "kFxaaSpirv", fxaa.spirv);
@@ -311,9 +321,10 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
   for (size_t i = 0; i < variants.size(); ++i) {
     const std::string n = std::to_string(i);
     cpp += "  static const std::vector<uint32_t> vs" + n + " = words(kVertexSpirv" + n + "), fs" + n +
-           " = words(kSampledSpirv" + n + "), fsFetch" + n + " = words(kFetchSpirv" + n + ");\n";
+           " = words(kSampledSpirv" + n + "), fsFetch" + n + " = words(kFetchSpirv" + n + "), fsUpscaled" + n +
+           " = words(kUpscaledSpirv" + n + ");\n";
     cpp += "  static const std::string vsText" + n + "(kVertexEs" + n + "), fsText" + n + "(kSampledEs" + n +
-           "), fsFetchText" + n + "(kFetchEs" + n + ");\n";
+           "), fsFetchText" + n + "(kFetchEs" + n + "), fsUpscaledText" + n + "(kUpscaledEs" + n + ");\n";
   }
   cpp += "  static const std::vector<PostShaders> variants{\n";
   for (size_t i = 0; i < variants.size(); ++i) {
@@ -322,7 +333,7 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
     auto flag = [](bool on) { return on ? ", true" : ", false"; };
     cpp += std::string("      {{\"") + toString(e.toneCurve) + "\"" + flag(e.dither) + flag(e.colorGrading) +
            flag(e.vignette) + "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" + n +
-           ", fsFetchText" + n + "},\n";
+           ", fsFetchText" + n + ", fsUpscaled" + n + ", fsUpscaledText" + n + "},\n";
   }
   cpp +=
       "  };\n"

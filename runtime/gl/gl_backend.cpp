@@ -110,6 +110,7 @@ class GlBackend final : public GlRenderer {
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_); }
   bool fxaa() const override { return fxaa_; }
+  double renderScale() const override { return renderScale_; }
   std::string msaaMethod() const override {
     if (samples_ == 1) return "off";
     return renderToTexture_ ? "GL_EXT_multisampled_render_to_texture (samples kept by the driver)"
@@ -167,6 +168,7 @@ class GlBackend final : public GlRenderer {
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   GLsizei samples_ = 1;  // MSAA samples of the forward pass
   bool fxaa_ = false;
+  double renderScale_ = 1.0;       // below 1: a smaller HDR texture, upscaled by the post pass (separate path)
   gl::LinkedProgram fxaaProgram_;  // FXAA only
   // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
   bool renderToTexture_ = false;
@@ -213,7 +215,13 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
                context_->kindName() + " context lacks";
     return false;
   }
-  path_ = options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged;
+  if (!isRenderScale(options.renderScale)) {
+    if (error) *error = "GL backend: " + renderScaleError("GlOptions::renderScale", options.renderScale);
+    return false;
+  }
+  renderScale_ = options.renderScale;
+  path_ = effectivePostPath(options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged,
+                            renderScale_);
   if (!checkSampleCount(options.msaaSamples, error)) return false;
   renderToTexture_ = samples_ > 1 && options.renderToTexture && context_->renderToTexture().present();
 
@@ -230,11 +238,14 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   if (!chosen) return false;
   const PostShaders& shaders = *chosen;
   const bool merged = path_ == PostPath::Merged;
+  const bool upscale = renderScale_ < 1.0;
+  const std::string& postFragment = merged    ? shaders.fragmentFetchGlslEs
+                                    : upscale ? shaders.fragmentUpscaledGlslEs
+                                              : shaders.fragmentGlslEs;
   std::string postError;
   const bool built =
-      buildPostProgram(shaders.vertexGlslEs, merged ? shaders.fragmentFetchGlslEs : shaders.fragmentGlslEs, !merged,
-                       &post_, &postError) &&
-      postInputs_.init(post_.program.id(), shaders.effects, &postError) &&
+      buildPostProgram(shaders.vertexGlslEs, postFragment, !merged, &post_, &postError) &&
+      postInputs_.init(post_.program.id(), shaders.effects, upscale, &postError) &&
       (!merged || (buildPostProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, true, &sampledPost_, &postError) &&
                    postInputs_.pointProgram(sampledPost_.program.id(), &postError)));
   fxaa_ = options.fxaa;
@@ -343,7 +354,8 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     // OSMesa alike, assigned or not). Only this debug readback sees HDR after the pass; the
     // mobile path invalidates it.
     const auto readHdr = [&] {
-      gl::readRgbaFloat(targets_.hdrFramebuffer.id(), GL_COLOR_ATTACHMENT0, frame.width, frame.height, &result->hdr);
+      gl::readRgbaFloat(targets_.hdrFramebuffer.id(), GL_COLOR_ATTACHMENT0, targets_.forwardWidth,
+                        targets_.forwardHeight, &result->hdr);
     };
     if (readBackHdr_ && merged) readHdr();
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, postTimer_.id());
@@ -364,6 +376,8 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     leaveState(0, frame.width, frame.height);
     result->width = frame.width;
     result->height = frame.height;
+    result->hdrWidth = targets_.forwardWidth;
+    result->hdrHeight = targets_.forwardHeight;
     result->gpuTimes.clear();
     if (timed_) {
       // Nanoseconds, waited for (GL_QUERY_RESULT). 64 bits: the 32-bit getter saturates at 4.3 s.
@@ -428,7 +442,7 @@ bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* err
   if (targets_.width == width && targets_.height == height) return true;
   const gl::Context::RenderToTexture* renderToTexture = renderToTexture_ ? &context_->renderToTexture() : nullptr;
   return gl::createRenderTargets(width, height, path_ == PostPath::Merged, hdrFormat_, samples_, renderToTexture, fxaa_,
-                                 &targets_, error);
+                                 &targets_, error, renderScale_);
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error) {
@@ -439,7 +453,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   // Merged: the forward pass writes colour 0 (HDR) only; LDR (colour 1) is the post pass's.
   const GLenum forwardBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
   glDrawBuffers(merged && !msaa ? 2 : 1, forwardBuffers);
-  glViewport(0, 0, static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height));
+  glViewport(0, 0, static_cast<GLsizei>(targets_.forwardWidth), static_cast<GLsizei>(targets_.forwardHeight));
   glDisable(GL_BLEND);
   glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
   glCullFace(GL_BACK);
@@ -489,7 +503,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   meshes_.endFrame();
   materialBlocks_.endFrame();
   if (msaa) {
-    resolveSamples(frame.width, frame.height);
+    resolveSamples(targets_.forwardWidth, targets_.forwardHeight);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     return checkGlError("forward pass (MSAA resolve)", error);
   }

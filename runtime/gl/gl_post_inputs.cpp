@@ -8,8 +8,9 @@ constexpr GLsizei kLutSize = GLsizei(abi::kColorLutSize);
 constexpr size_t kLutValues = size_t(kLutSize) * kLutSize * kLutSize * 4;
 }  // namespace
 
-bool PostInputs::init(GLuint program, const PostSettings& effects, std::string* error) {
+bool PostInputs::init(GLuint program, const PostSettings& effects, bool upscale, std::string* error) {
   effects_ = effects;
+  upscale_ = upscale;
   if (effects.colorGrading) {
     lut_ = Texture::generate();
     glBindTexture(GL_TEXTURE_3D, lut_.id());
@@ -23,7 +24,7 @@ bool PostInputs::init(GLuint program, const PostSettings& effects, std::string* 
     glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, kLutSize, kLutSize, kLutSize, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
     glBindTexture(GL_TEXTURE_3D, 0);
   }
-  if (effects.vignette) {
+  if (readsBlock()) {
     uniforms_ = Buffer::generate();
     glBindBuffer(GL_UNIFORM_BUFFER, uniforms_.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::PostUniforms), nullptr, GL_DYNAMIC_DRAW);
@@ -43,7 +44,7 @@ bool PostInputs::pointProgram(GLuint program, std::string* error) {
     }
     glUniform1i(location, GLint(abi::kPostColorLutBinding));  // program state: once
   }
-  if (effects_.vignette) {
+  if (readsBlock()) {
     const std::string name(abi::kPostBlock.name);
     const GLuint index = glGetUniformBlockIndex(program, name.c_str());
     if (index == GL_INVALID_INDEX) {
@@ -75,9 +76,15 @@ bool PostInputs::bind(const FrameDesc& frame, std::string* error) {
       lutUploaded_ = true;
     }
   }
-  if (effects_.vignette) {
+  if (readsBlock()) {
+    abi::PostUniforms uniforms = frame.postUniforms;
+    // The upscaled read divides by the output's size, which the backend knows whatever the frame says.
+    if (upscale_) {
+      uniforms.viewport[0] = 1.0f / float(frame.width);
+      uniforms.viewport[1] = 1.0f / float(frame.height);
+    }
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kPostUniformsBinding, uniforms_.id());
-    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(abi::PostUniforms), &frame.postUniforms);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(abi::PostUniforms), &uniforms);
   }
   return checkGlError("post-pass effect inputs", error);
 }

@@ -17,7 +17,8 @@ class PostInputs {
  public:
   // Points the linked post program's LUT sampler and block at their units/bindings and creates
   // the texture and buffer its effects need. Fails when the program lacks one of them.
-  bool init(GLuint program, const PostSettings& effects, std::string* error);
+  // upscale: the upscaled form (render scale < 1), which reads the output's size from the block.
+  bool init(GLuint program, const PostSettings& effects, bool upscale, std::string* error);
   // Points one more post program of the same effects (the merged backend's sampled fallback) at
   // the same units and bindings.
   bool pointProgram(GLuint program, std::string* error);
@@ -26,6 +27,8 @@ class PostInputs {
 
  private:
   PostSettings effects_;
+  bool upscale_ = false;
+  bool readsBlock() const { return effects_.vignette || upscale_; }
   Texture lut_;
   Buffer uniforms_;
   uint64_t lutHash_ = 0;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "facet/runtime/render_path.h"
+
 namespace facet::runtime::gl {
 namespace {
 
@@ -80,12 +82,15 @@ GLint maxRenderbufferSamples(GLenum internalFormat) {
 
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
                          const Context::RenderToTexture* renderToTexture, bool fxaa, RenderTargets* targets,
-                         std::string* error) {
-  const auto w = static_cast<GLsizei>(width);
-  const auto h = static_cast<GLsizei>(height);
+                         std::string* error, double renderScale) {
   RenderTargets created;
   created.width = width;
   created.height = height;
+  created.forwardWidth = scaledSize(width, renderScale);
+  created.forwardHeight = scaledSize(height, renderScale);
+  // The forward pass's size; the LDR targets below are the output's.
+  auto w = static_cast<GLsizei>(created.forwardWidth);
+  auto h = static_cast<GLsizei>(created.forwardHeight);
   created.samples = samples;
   const bool msaa = samples > 1;
   created.renderToTexture = msaa && renderToTexture;
@@ -93,6 +98,14 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
   const bool packed = hdrFormat == HdrFormat::R11G11B10Float;
   created.hdrColor = packed ? createColorTexture(GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV, w, h)
                             : createColorTexture(GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, w, h);
+  if (renderScale < 1.0) {
+    // Upscaling: bilinear between the smaller HDR texture's texels (RGBA16F and R11F_G11F_B10F
+    // are filterable in GLES 3.0).
+    glBindTexture(GL_TEXTURE_2D, created.hdrColor.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
   const auto renderbuffer = [&](GLenum internalFormat, GLsizei count) {
     Renderbuffer made = Renderbuffer::generate();
     glBindRenderbuffer(GL_RENDERBUFFER, made.id());
@@ -128,6 +141,8 @@ bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat
     hdrComplete = checkComplete("MSAA (multisampled HDR + DEPTH32F)", error);
   }
 
+  w = static_cast<GLsizei>(width);
+  h = static_cast<GLsizei>(height);
   created.ldrColor = createColorTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
   created.ldrFramebuffer = Framebuffer::generate();
   glBindFramebuffer(GL_FRAMEBUFFER, created.ldrFramebuffer.id());

@@ -12,8 +12,10 @@
 namespace facet::runtime::gl {
 
 struct RenderTargets {
-  uint32_t width = 0;
+  uint32_t width = 0;  // the output's (LDR) size
   uint32_t height = 0;
+  uint32_t forwardWidth = 0;  // HDR's and depth's: the output's, or scaled by the render scale
+  uint32_t forwardHeight = 0;
   // Forward pass: RGBA16F colour (sampled by the post pass, read back for tests) + depth.
   // With MSAA, depth is not made (the forward pass draws into msaaFramebuffer) and hdrFramebuffer
   // holds colour only: the target of the resolve.
@@ -56,9 +58,11 @@ bool checkComplete(const char* which, std::string* error);
 // completeness.
 // renderToTexture: the context's GL_EXT_multisampled_render_to_texture entry points, or null for
 // multisampled renderbuffers resolved by glBlitFramebuffer. fxaa: the FXAA pass's target too.
+// renderScale < 1: HDR and depth are scaledSize() of width × height (render_path.h), and HDR is
+// filtered bilinearly for the post pass's upscaled read.
 bool createRenderTargets(uint32_t width, uint32_t height, bool merged, HdrFormat hdrFormat, GLsizei samples,
                          const Context::RenderToTexture* renderToTexture, bool fxaa, RenderTargets* targets,
-                         std::string* error);
+                         std::string* error, double renderScale = 1.0);
 
 // The internal formats of the HDR target and of depth (GL_RGBA16F or GL_R11F_G11F_B10F;
 // GL_DEPTH_COMPONENT32F).

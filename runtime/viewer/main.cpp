@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   bool oneDrawPerObject = false;
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
   uint32_t width = 0, height = 0, msaa = 0;
+  double renderScale = 1.0;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
   app.add_option("--asset-root", assetRoot,
@@ -46,6 +47,10 @@ int main(int argc, char** argv) {
   app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
       ->check(CLI::IsMember({1, 2, 4}));
   app.add_flag("--fxaa", fxaa, "an FXAA pass after the post pass (default: the scene's \"antialiasing\")");
+  CLI::Option* renderScaleOption = app.add_option(
+      "--render-scale", renderScale,
+      "render the forward pass at this fraction of the output size, 0.5..1, upscaled by the post pass (default: the "
+      "scene's \"renderScale\", else 1)");
   app.add_flag("--keep-hdr", keepHdr, "also store HDR and read it back (debugging; HDR is then not transient)");
   app.add_option("--gl-context", glContext, "auto (EGL GLES, else OSMesa) | egl | osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
@@ -71,6 +76,12 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
+  // Checked here, not by CLI::Range, which lets NaN through.
+  if (renderScaleOption->count() && !facet::runtime::isRenderScale(renderScale)) {
+    std::fprintf(stderr, "facet-view: error: %s\n",
+                 facet::runtime::renderScaleError("--render-scale", renderScale).c_str());
+    return 2;
+  }
 
   std::string error;
   auto scene = facet::runtime::loadScene(scenePath, &error, {.assetRoot = assetRoot});
@@ -83,6 +94,7 @@ int main(int argc, char** argv) {
   if (height) scene->height = height;
   if (msaa) scene->msaaSamples = msaa;
   if (fxaa) scene->fxaa = true;
+  if (renderScaleOption->count()) scene->renderScale = renderScale;
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -112,6 +124,7 @@ int main(int argc, char** argv) {
       options.hdrFormat = hdrFormat;
       options.msaaSamples = scene->msaaSamples;
       options.fxaa = scene->fxaa;
+      options.renderScale = scene->renderScale;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -125,6 +138,7 @@ int main(int argc, char** argv) {
       options.decodeCompressedTextures = decodeTextures;
       options.msaaSamples = scene->msaaSamples;
       options.fxaa = scene->fxaa;
+      options.renderScale = scene->renderScale;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);
@@ -151,7 +165,7 @@ int main(int argc, char** argv) {
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
           result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
-          backend->msaaSamples(), backend->fxaa());
+          backend->msaaSamples(), backend->fxaa(), backend->renderScale());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
@@ -163,6 +177,7 @@ int main(int argc, char** argv) {
         entry["msaa"] = backend->msaaSamples();
         entry["msaaMethod"] = backend->msaaMethod();
         entry["fxaa"] = backend->fxaa();
+        entry["renderScale"] = backend->renderScale();
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
@@ -170,9 +185,14 @@ int main(int argc, char** argv) {
         entry["cpuSubmitMs"] = facet::viewer::median(cpuTimes);
         report.push_back(std::move(entry));
       } else {
-        std::printf("%s: %s path, %s HDR, frame graph at %ux%u, MSAA %ux (%s)%s:\n%s", name.c_str(),
+        const std::string scaled = backend->renderScale() < 1.0
+                                       ? ", forward pass at " + std::to_string(result.hdrWidth) + "x" +
+                                             std::to_string(result.hdrHeight) + " (render scale " +
+                                             nlohmann::json(backend->renderScale()).dump() + ")"
+                                       : std::string();
+        std::printf("%s: %s path, %s HDR, frame graph at %ux%u%s, MSAA %ux (%s)%s:\n%s", name.c_str(),
                     facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
-                    result.width, result.height, backend->msaaSamples(), backend->msaaMethod().c_str(),
+                    result.width, result.height, scaled.c_str(), backend->msaaSamples(), backend->msaaMethod().c_str(),
                     backend->fxaa() ? ", FXAA" : "",
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
         std::printf("  %zu draw calls; CPU issuing the frame (FrameResult::cpuSubmitMilliseconds): median %.3f ms\n",

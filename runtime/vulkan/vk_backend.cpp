@@ -110,6 +110,7 @@ class VulkanBackend final : public VulkanRenderer {
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
   bool fxaa() const override { return fxaa_; }
+  double renderScale() const override { return renderScale_; }
   std::string msaaMethod() const override;
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
@@ -142,6 +143,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool createFxaaObjects(std::string* error);
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
+  bool upscales() const { return renderScale_ < 1.0; }
   FrameObjects frameObjects(VkQueryPool timestamps) const;
   // Submits the frame's command buffer and waits for it; *cpuMilliseconds (when not null): from
   // `start` until the submission returned (FrameResult::cpuSubmitMilliseconds).
@@ -167,6 +169,9 @@ class VulkanBackend final : public VulkanRenderer {
   AttachmentOps fxaaOps_;
   bool hdrTransient_ = false;
   bool depthTransient_ = false;
+  // Below 1: HDR and depth at scaledSize() of the output, sampled bilinearly by the post pass's
+  // upscaled form (the separate path).
+  double renderScale_ = 1.0;
   ForwardSamples samples_;       // MSAA: the count and the multisampled colour's ops
   bool clearInSubpass_ = false;  // FrameObjects::clearInSubpass: lavapipe's render-to-single-sampled
 
@@ -304,7 +309,13 @@ bool VulkanBackend::initOn(const AppDevice& device, const VulkanOptions& options
 // Derives the render passes' load/store ops and the transient targets from the frame graph.
 // They do not depend on the frame size, so a 1x1 graph decides them once.
 bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* error) {
-  path_ = options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged;
+  if (!isRenderScale(options.renderScale)) {
+    *error = renderScaleError("VulkanOptions::renderScale", options.renderScale);
+    return false;
+  }
+  renderScale_ = options.renderScale;
+  path_ =
+      effectivePostPath(options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged, renderScale_);
   readBackHdr_ = options.readBackHdr;
   if (options.framesInFlight < 1 || options.framesInFlight > kMaxFramesInFlight) {
     *error = "VulkanOptions::framesInFlight must be 1.." + std::to_string(kMaxFramesInFlight) + ", not " +
@@ -325,7 +336,7 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   samples_.count = static_cast<VkSampleCountFlagBits>(options.msaaSamples);
   fxaa_ = options.fxaa;
   const ForwardPostGraph g =
-      buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples, options.fxaa);
+      buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples, options.fxaa, renderScale_);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
   const size_t expected = (path_ == PostPath::Merged ? 1 : 2) + (fxaa_ ? 1 : 0);
@@ -406,7 +417,8 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   vkGetPhysicalDeviceFormatProperties(ctx_.physicalDevice, hdrVkFormat_, &hdrProperties);
   const VkFormatFeatureFlags hdrNeeds =
       VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
-      (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) | (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0);
+      (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) | (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0) |
+      (upscales() ? VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT : 0);
   if ((hdrProperties.optimalTilingFeatures & hdrNeeds) != hdrNeeds) {
     *error = std::string("the device cannot use ") + toString(hdrFormat_) + " as the HDR target (format features " +
              std::to_string(hdrProperties.optimalTilingFeatures) + ", needs " + std::to_string(hdrNeeds) + ")";
@@ -430,7 +442,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
                    createPostRenderPass(device, ldrOps_, postOutput, &postPass_, error) &&
                    createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
   if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
-      !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects), &postSetLayout_, error) ||
+      !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects, upscales()), &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
       !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_, error) ||
       !createPipelineLayout(device, {postSetLayout_}, &postLayout_, error)) {
@@ -458,7 +470,9 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   PipelineDesc postDesc;
   postDesc.kind = PipelineKind::Post;
   postDesc.vertexSpirv = &post.vertexSpirv;
-  postDesc.fragmentSpirv = merged ? &post.fragmentFetchSpirv : &post.fragmentSpirv;
+  postDesc.fragmentSpirv = merged       ? &post.fragmentFetchSpirv
+                           : upscales() ? &post.fragmentUpscaledSpirv
+                                        : &post.fragmentSpirv;
   postDesc.layout = postLayout_;
   postDesc.renderPass = merged ? forwardPass_ : postPass_;
   postDesc.subpass = merged ? 1 : 0;
@@ -467,13 +481,15 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   if (!createGraphicsPipeline(device, postDesc, &postPipeline_, error)) return false;
 
   // Nearest + clamp: the post pass reads exactly one HDR texel per output pixel.
-  if (!createClampedSampler(device, VK_FILTER_NEAREST, &hdrSampler_, error)) return false;
+  // Upscaling: bilinear between the smaller HDR image's texels.
+  if (!createClampedSampler(device, upscales() ? VK_FILTER_LINEAR : VK_FILTER_NEAREST, &hdrSampler_, error))
+    return false;
 
   slots_.resize(framesInFlight_);
   const auto slotCount = static_cast<uint32_t>(slots_.size());
-  if (!postInputs_.init(&ctx_, post_->effects, slotCount, error)) return false;
+  if (!postInputs_.init(&ctx_, post_->effects, upscales(), slotCount, error)) return false;
   std::vector<VkDescriptorPoolSize> postPoolSizes{{hdrType, slotCount}};
-  for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects))
+  for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects, upscales()))
     postPoolSizes.push_back({b.descriptorType, slotCount});
   std::vector<VkDescriptorSet> postSets;
   if (!createSlotSets(device, postSetLayout_, postPoolSizes, slotCount, &postPool_, &postSets, error)) return false;
@@ -551,7 +567,8 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     // Not timed: the query pool would be shared by frames in flight.
     const FrameObjects objects = frameObjects(VK_NULL_HANDLE);
     if (!uploads_.record(cmd, error)) return false;
-    recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
+    recordPasses(cmd, objects, output, {targets_.forwardWidth, targets_.forwardHeight}, {frame.width, frame.height},
+                 frame.clearColor, slots);
     if (!output.directImage) recordCopyToAppImage(cmd, targets_, target);
     appImages_.evictUnused(frameNumber_);
     recordedSinceIdle_ = true;
@@ -613,7 +630,8 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
       return false;
     }
     if (!uploads_.record(cmd, error)) return false;
-    recordPasses(cmd, objects, output, frame.width, frame.height, frame.clearColor, slots);
+    recordPasses(cmd, objects, output, {targets_.forwardWidth, targets_.forwardHeight}, {frame.width, frame.height},
+                 frame.clearColor, slots);
     if (!appImage) {
       recordReadback(cmd, objects.merged, readBackHdr_, targets_);
     } else if (!output.directImage) {
@@ -685,6 +703,7 @@ TargetConfig VulkanBackend::targetConfig() const {
   config.postPass = postPass_;
   config.fxaa = fxaa_;
   config.fxaaPass = fxaaPass_;
+  config.renderScale = renderScale_;
   return config;
 }
 
@@ -905,18 +924,21 @@ void VulkanBackend::readBack(FrameResult* result) const {
   const size_t values = size_t{targets_.width} * targets_.height * 4;
   result->width = targets_.width;
   result->height = targets_.height;
+  result->hdrWidth = targets_.forwardWidth;
+  result->hdrHeight = targets_.forwardHeight;
   result->hdr.clear();
   if (readBackHdr_) {
-    result->hdr.resize(values);
+    const size_t hdrValues = size_t{targets_.forwardWidth} * targets_.forwardHeight * 4;
+    result->hdr.resize(hdrValues);
     if (hdrFormat_ == HdrFormat::R11G11B10Float) {
       const auto* texels = static_cast<const uint32_t*>(targets_.hdrReadback.mapped);
-      for (size_t i = 0; i < values / 4; ++i) {
+      for (size_t i = 0; i < hdrValues / 4; ++i) {
         unpackB10G11R11(texels[i], &result->hdr[4 * i]);
         result->hdr[4 * i + 3] = 1.0f;  // no alpha stored: what a sampler returns for it
       }
     } else {
       const auto* halves = static_cast<const uint16_t*>(targets_.hdrReadback.mapped);
-      for (size_t i = 0; i < values; ++i) result->hdr[i] = halfToFloat(halves[i]);
+      for (size_t i = 0; i < hdrValues; ++i) result->hdr[i] = halfToFloat(halves[i]);
     }
   }
   result->ldr.resize(values);

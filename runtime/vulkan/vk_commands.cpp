@@ -28,10 +28,15 @@ constexpr VkAccessFlags kAnyAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMOR
 
 }  // namespace
 
-void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, uint32_t width,
-                  uint32_t height, const float clearColor[4], const std::vector<DrawSlot>& slots) {
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, {width, height}};
+void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, VkExtent2D forward,
+                  VkExtent2D extent, const float clearColor[4], const std::vector<DrawSlot>& slots) {
+  const auto viewportOf = [](VkExtent2D size) {
+    return VkViewport{0.0f, 0.0f, static_cast<float>(size.width), static_cast<float>(size.height), 0.0f, 1.0f};
+  };
+  const VkViewport forwardViewport = viewportOf(forward);
+  const VkRect2D forwardScissor{{0, 0}, forward};
+  const VkViewport viewport = viewportOf(extent);
+  const VkRect2D scissor{{0, 0}, extent};
 
   if (output.directImage) {
     const VkImageMemoryBarrier toAttachment =
@@ -57,12 +62,12 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
   passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
   passInfo.renderPass = output.forwardPass;
   passInfo.framebuffer = output.framebuffers.forward;
-  passInfo.renderArea = scissor;
+  passInfo.renderArea = forwardScissor;
   passInfo.clearValueCount = (objects.merged ? 3 : 2) + (objects.msaa ? 1 : 0);
   passInfo.pClearValues = clears;
   vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdSetViewport(cmd, 0, 1, &forwardViewport);
+  vkCmdSetScissor(cmd, 0, 1, &forwardScissor);
   if (objects.clearInSubpass) {
     VkClearAttachment again[2]{};
     again[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
@@ -70,7 +75,7 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     again[0].clearValue = clears[0];
     again[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     again[1].clearValue = clears[1];
-    const VkClearRect rect{scissor, 0, 1};
+    const VkClearRect rect{forwardScissor, 0, 1};
     vkCmdClearAttachments(cmd, 2, again, 1, &rect);
   }
   VkPipeline bound = VK_NULL_HANDLE;
@@ -101,6 +106,7 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
   const auto beginUncleared = [&](VkRenderPass renderPass, VkFramebuffer framebuffer) {
     passInfo.renderPass = renderPass;
     passInfo.framebuffer = framebuffer;
+    passInfo.renderArea = scissor;
     passInfo.clearValueCount = 0;
     passInfo.pClearValues = nullptr;
     vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
@@ -152,7 +158,7 @@ void recordReadback(VkCommandBuffer cmd, bool merged, bool readBackHdr, const Re
   VkBufferImageCopy region{};
   region.bufferRowLength = 0;  // tightly packed; image row 0 (the top) first
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {targets.width, targets.height, 1};
+  region.imageExtent = {targets.forwardWidth, targets.forwardHeight, 1};
   if (readBackHdr && !merged) {
     VkImageMemoryBarrier hdrBarrier{};
     hdrBarrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
@@ -171,6 +177,7 @@ void recordReadback(VkCommandBuffer cmd, bool merged, bool readBackHdr, const Re
     vkCmdCopyImageToBuffer(cmd, targets.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, targets.hdrReadback.buffer, 1,
                            &region);
   }
+  region.imageExtent = {targets.width, targets.height, 1};
   vkCmdCopyImageToBuffer(cmd, targets.ldr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, targets.ldrReadback.buffer, 1,
                          &region);
   VkMemoryBarrier hostBarrier{};

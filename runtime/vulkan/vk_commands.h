@@ -54,9 +54,9 @@ inline constexpr uint32_t kTimestampCount = 3;
 // buffer) and the post pass (a second render pass, or the next subpass when merged). With
 // output.directImage, the image goes from its oldLayout to COLOR_ATTACHMENT_OPTIMAL after
 // whatever the app did with it before, and to its newLayout afterwards, visible to any later
-// command.
-void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, uint32_t width,
-                  uint32_t height, const float clearColor[4], const std::vector<DrawSlot>& slots);
+// command. forward: the forward pass's size (the HDR and depth targets'); extent: the output's.
+void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, VkExtent2D forward,
+                  VkExtent2D extent, const float clearColor[4], const std::vector<DrawSlot>& slots);
 
 // After recordPasses into the targets' own LDR: copies LDR (and HDR with readBackHdr) into the
 // targets' readback buffers, made visible to the host.

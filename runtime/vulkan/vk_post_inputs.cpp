@@ -16,23 +16,25 @@ constexpr uint64_t kUploadTimeoutNs = 60ull * 1000 * 1000 * 1000;  // as the fra
 
 }  // namespace
 
-std::vector<VkDescriptorSetLayoutBinding> PostInputs::bindings(const PostSettings& effects) {
+std::vector<VkDescriptorSetLayoutBinding> PostInputs::bindings(const PostSettings& effects, bool upscale) {
   std::vector<VkDescriptorSetLayoutBinding> out;
   if (effects.colorGrading)
     out.push_back({abi::kPostColorLutBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                    VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-  if (effects.vignette)
+  if (effects.vignette || upscale)
     out.push_back(
         {abi::kPostUniformsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   return out;
 }
 
-bool PostInputs::init(const Context* ctx, const PostSettings& effects, uint32_t slots, std::string* error) {
+bool PostInputs::init(const Context* ctx, const PostSettings& effects, bool upscale, uint32_t slots,
+                      std::string* error) {
   ctx_ = ctx;
   effects_ = effects;
+  upscale_ = upscale;
   written_.assign(slots, VK_NULL_HANDLE);
   VkDevice device = ctx->device;
-  if (effects.vignette) {
+  if (effects.vignette || upscale) {
     uniforms_.resize(slots);
     for (HostBuffer& buffer : uniforms_)
       if (!createHostBuffer(*ctx, sizeof(abi::PostUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &buffer, error))
@@ -209,14 +211,20 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
     }
   }
   VkDescriptorBufferInfo buffer{};
-  if (effects_.vignette) {
-    std::memcpy(uniforms_[slot].mapped, &frame.postUniforms, sizeof(abi::PostUniforms));
+  if (effects_.vignette || upscale_) {
+    abi::PostUniforms uniforms = frame.postUniforms;
+    // The upscaled read divides by the output's size, which the backend knows whatever the frame says.
+    if (upscale_) {
+      uniforms.viewport[0] = 1.0f / float(frame.width);
+      uniforms.viewport[1] = 1.0f / float(frame.height);
+    }
+    std::memcpy(uniforms_[slot].mapped, &uniforms, sizeof(abi::PostUniforms));
     buffer = {uniforms_[slot].buffer, 0, sizeof(abi::PostUniforms)};
   }
   if (written_[slot] == set) return true;
   VkDescriptorImageInfo image{lutSampler_, lutView_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   std::vector<VkWriteDescriptorSet> writes;
-  for (const VkDescriptorSetLayoutBinding& b : bindings(effects_)) {
+  for (const VkDescriptorSetLayoutBinding& b : bindings(effects_, upscale_)) {
     VkWriteDescriptorSet write{};
     write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     write.dstSet = set;

@@ -26,12 +26,13 @@ class PostInputs {
   PostInputs(const PostInputs&) = delete;
   PostInputs& operator=(const PostInputs&) = delete;
 
-  // The post set's bindings besides HDR, for the layout and the pool.
-  static std::vector<VkDescriptorSetLayoutBinding> bindings(const PostSettings& effects);
+  // The post set's bindings besides HDR, for the layout and the pool. upscale: the upscaled form
+  // (render scale < 1), which reads the output's size from the PostUniforms block.
+  static std::vector<VkDescriptorSetLayoutBinding> bindings(const PostSettings& effects, bool upscale);
 
   // Creates the LUT image and sampler and the uniform buffers (one per frame slot) the effects
   // need. ctx must outlive this, and destroy() must run before the device is destroyed.
-  bool init(const Context* ctx, const PostSettings& effects, uint32_t slots, std::string* error);
+  bool init(const Context* ctx, const PostSettings& effects, bool upscale, uint32_t slots, std::string* error);
   // Safe twice and on a partly initialised object. The device must be idle.
   void destroy();
 
@@ -44,6 +45,7 @@ class PostInputs {
 
   const Context* ctx_ = nullptr;
   PostSettings effects_;
+  bool upscale_ = false;
   VkImage lutImage_ = VK_NULL_HANDLE;
   VkDeviceMemory lutMemory_ = VK_NULL_HANDLE;
   VkImageView lutView_ = VK_NULL_HANDLE;

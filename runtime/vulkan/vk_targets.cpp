@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "facet/runtime/render_path.h"
 #include "vk_check.h"
 #include "vk_context.h"
 #include "vk_pipeline.h"
@@ -37,6 +38,10 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
   RenderTargets t;
   t.width = width;
   t.height = height;
+  t.forwardWidth = scaledSize(width, config.renderScale);
+  t.forwardHeight = scaledSize(height, config.renderScale);
+  const uint32_t fw = t.forwardWidth;
+  const uint32_t fh = t.forwardHeight;
   const VkDeviceSize pixels = VkDeviceSize{width} * height;
   // A transient image may only be used as an attachment (no sampling, no copies).
   VkImageUsageFlags hdrUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
@@ -53,19 +58,21 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
           : 0;
   // The samples are only cleared, drawn and resolved (the frame graph: transient).
   const VkImageUsageFlags samplesUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
-  bool ok = createImage(ctx, width, height, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error, 1,
-                        false, VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
-            createImage(ctx, width, height, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error, 1,
-                        false, msaa ? config.samples : VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
-            (!msaa || createImage(ctx, width, height, config.hdrFormat, samplesUsage, VK_IMAGE_ASPECT_COLOR_BIT,
-                                  &t.hdrSamples, error, 1, false, config.samples)) &&
-            (!own || (createImage(ctx, width, height, kLdrFormat,
-                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                  VK_IMAGE_ASPECT_COLOR_BIT, &t.ldr, error) &&
-                      (!config.readBackHdr ||
-                       createHostBuffer(ctx, pixels * (config.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4),
-                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.hdrReadback, error)) &&
-                      createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
+  bool ok =
+      createImage(ctx, fw, fh, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error, 1, false,
+                  VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
+      createImage(ctx, fw, fh, kDepthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, &t.depth, error, 1, false,
+                  msaa ? config.samples : VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&
+      (!msaa || createImage(ctx, fw, fh, config.hdrFormat, samplesUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdrSamples,
+                            error, 1, false, config.samples)) &&
+      (!own ||
+       (createImage(ctx, width, height, kLdrFormat,
+                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+                    &t.ldr, error) &&
+        (!config.readBackHdr ||
+         createHostBuffer(ctx, VkDeviceSize{fw} * fh * (config.hdrFormat == VK_FORMAT_R16G16B16A16_SFLOAT ? 8 : 4),
+                          VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.hdrReadback, error)) &&
+        createHostBuffer(ctx, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &t.ldrReadback, error)));
   // FXAA: the post pass writes toneMapped, the FXAA pass samples it and writes ldr.
   ok = ok &&
        (!config.fxaa ||
@@ -80,7 +87,7 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
                                    &t.forwardFramebuffer, error);
   } else if (ok) {
     const std::vector<VkImageView> views = forwardViews(t, false, VK_NULL_HANDLE);
-    ok = createFramebuffer(ctx.device, config.forwardPass, views.data(), uint32_t(views.size()), width, height,
+    ok = createFramebuffer(ctx.device, config.forwardPass, views.data(), uint32_t(views.size()), fw, fh,
                            &t.forwardFramebuffer, error) &&
          (!own ||
           createFramebuffer(ctx.device, config.postPass, &postOutput, 1, width, height, &t.postFramebuffer, error));

@@ -37,11 +37,15 @@ struct TargetConfig {
   // ownOutput (the FXAA pass does not write an app's image directly).
   bool fxaa = false;
   VkRenderPass fxaaPass = VK_NULL_HANDLE;
+  // Below 1: HDR, depth and the forward framebuffer are scaledSize() of the output (render_path.h).
+  double renderScale = 1.0;
 };
 
 struct RenderTargets {
-  uint32_t width = 0;
+  uint32_t width = 0;  // the output's (LDR) size
   uint32_t height = 0;
+  uint32_t forwardWidth = 0;  // HDR's and depth's: the output's, or scaled by TargetConfig::renderScale
+  uint32_t forwardHeight = 0;
   Image hdr;         // RGBA16F or B10G11R11: forward colour attachment, read by the post pass, maybe copied out
   Image depth;       // D32, at TargetConfig::samples
   Image hdrSamples;  // MSAA only: the forward pass's multisampled colour, resolved into hdr

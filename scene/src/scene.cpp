@@ -363,9 +363,9 @@ void antialiasing(const json& j, Scene* s) {
 }
 
 Scene scene(const json& j, const AssetPaths& assets) {
-  onlyKeys(
-      j, "",
-      {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post", "antialiasing"});
+  onlyKeys(j, "",
+           {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post",
+            "antialiasing", "renderScale"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
@@ -373,6 +373,8 @@ Scene scene(const json& j, const AssetPaths& assets) {
   if (j.contains("camera")) s.camera = camera(j["camera"]);
   if (j.contains("post")) post(j["post"], assets, &s);
   if (j.contains("antialiasing")) antialiasing(j["antialiasing"], &s);
+  // The range of render_path.h's isRenderScale (the scene library does not link the runtime).
+  if (j.contains("renderScale")) s.renderScale = number(j["renderScale"], "/renderScale", 0.5, 1.0);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");

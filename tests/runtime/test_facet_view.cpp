@@ -87,6 +87,31 @@ TEST(FacetView, FxaaReachesTheBackendsAndTheFrameGraph) {
   EXPECT_NE(r.out.find("total: loaded 0 B, stored 524288 B, sampled 262144 B per frame"), std::string::npos) << r.out;
 }
 
+// --render-scale 0.5 reaches both backends and the frame graph: the merged path becomes the
+// separate one, HDR (128 × 128 at 8 bytes) is stored and sampled beside the 256 × 256 LDR; a
+// scale outside 0.5..1, or NaN, is a usage error (exit 2).
+TEST(FacetView, RenderScaleReachesTheBackendsAndTheFrameGraph) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-scale-out");
+  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+               " --out " + out + " --backend both --validation --render-scale 0.5 --stats --frames 1 --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  for (const char* api : {"vulkan", "gl"}) {
+    EXPECT_NE(r.out.find(std::string(api) +
+                         ": separate path, rgba16f HDR, frame graph at 256x256, forward pass at 128x128 (render "
+                         "scale 0.5)"),
+              std::string::npos)
+        << r.out;
+  }
+  EXPECT_NE(r.out.find("total: loaded 0 B, stored 393216 B, sampled 131072 B per frame"), std::string::npos) << r.out;
+  for (const char* scale : {"0.3", "1.5", "nan"}) {
+    auto bad = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+                   " --out " + out + " --render-scale " + scale);
+    EXPECT_EQ(bad.exitCode, 2) << scale << bad.out << bad.err;
+    EXPECT_NE(bad.err.find("--render-scale must be in 0.5..1"), std::string::npos) << scale << bad.err;
+  }
+}
+
 // A package whose shaders read another interface than it declares (here: the preshader section
 // dropped, so they read a 64-byte block where a draw binds 32) makes facet-view exit 1 naming the
 // material, variant and stage, and write no image: on Vulkan at load (the SPIR-V), on GL before the

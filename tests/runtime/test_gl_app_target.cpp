@@ -118,17 +118,20 @@ class GlAppTargetTest : public ::testing::Test {
   }
 
   // The backend the app embeds, with the test's GL table current afterwards.
-  std::unique_ptr<GlRenderer> embedded(PostPath path, uint32_t msaaSamples = 1, bool fxaa = false) {
+  std::unique_ptr<GlRenderer> embedded(PostPath path, uint32_t msaaSamples = 1, bool fxaa = false,
+                                       double renderScale = 1.0) {
     GlOptions options;
     options.postPath = path;
     options.msaaSamples = msaaSamples;
     options.fxaa = fxaa;
+    options.renderScale = renderScale;
     options.readBackHdr = false;  // the mobile path, as an app runs it
     std::string error;
     auto renderer = createGlBackend(eglApp(), options, &error);
     EXPECT_NE(renderer, nullptr) << error;
     if (renderer) {
-      EXPECT_EQ(renderer->postPath(), path) << "EGL GLES offers GL_EXT_shader_framebuffer_fetch";
+      EXPECT_EQ(renderer->postPath(), effectivePostPath(path, renderScale))
+          << "EGL GLES offers GL_EXT_shader_framebuffer_fetch";
     }
     EXPECT_TRUE(appGl_->makeCurrent(&error)) << error;
     return renderer;
@@ -145,6 +148,20 @@ class GlAppTargetTest : public ::testing::Test {
     EXPECT_TRUE(renderer.render(content_.frame, &result, &error)) << error;
     *readBack = result.ldr;
     return pixels;
+  }
+
+  // One frame into a new app framebuffer of `image`'s kind: render()'s image (and, when
+  // checkInstances, the content's instances where they belong: a full-size frame).
+  void expectOneFrameIsTheReadback(GlRenderer& renderer, Image image, bool checkInstances) {
+    AppFramebuffer target = makeAppFramebuffer(image, GL_RGBA8, kWidth, kHeight);
+    std::vector<uint8_t> readBack;
+    const std::vector<uint8_t> drawn = renderBoth(renderer, 0, target.id(), &readBack);
+    EXPECT_LE(maxDifference(drawn, readBack), 1);
+    if (checkInstances) {
+      EXPECT_EQ(content_.checkInstances(drawn), "");
+    }
+    std::string error;
+    ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
   }
 
   std::unique_ptr<RenderBackend> app_;
@@ -189,13 +206,20 @@ TEST_F(GlAppTargetTest, WithFxaaTheAppFramebufferGetsTheReadbackImage) {
       auto renderer = embedded(path, 1, true);
       ASSERT_NE(renderer, nullptr);
       EXPECT_TRUE(renderer->fxaa());
-      std::string error;
-      AppFramebuffer target = makeAppFramebuffer(image, GL_RGBA8, kWidth, kHeight);
-      std::vector<uint8_t> readBack;
-      const std::vector<uint8_t> drawn = renderBoth(*renderer, 0, target.id(), &readBack);
-      EXPECT_LE(maxDifference(drawn, readBack), 1);
-      EXPECT_EQ(content_.checkInstances(drawn), "");
-      ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
+      expectOneFrameIsTheReadback(*renderer, image, true);
+    }
+  }
+}
+
+// A render scale: the post pass upscales into the app's framebuffer (a texture, a renderbuffer),
+// render()'s image, from either requested path (both run the separate one).
+TEST_F(GlAppTargetTest, WithARenderScaleTheAppFramebufferGetsTheReadbackImage) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    for (Image image : {Image::Texture, Image::Renderbuffer}) {
+      SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer"));
+      auto renderer = embedded(path, 1, false, 0.5);
+      ASSERT_NE(renderer, nullptr);
+      expectOneFrameIsTheReadback(*renderer, image, false);
     }
   }
 }

@@ -43,7 +43,7 @@ struct AppFixture {
   std::unique_ptr<VulkanRenderer> renderer;
 
   explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true, bool stageBufferUploads = false,
-                      uint32_t msaaSamples = 1, bool fxaa = false) {
+                      uint32_t msaaSamples = 1, bool fxaa = false, double renderScale = 1.0) {
     std::string error;
     if (!app.create(/*validation=*/true, &error)) {
       ADD_FAILURE() << error;
@@ -55,6 +55,7 @@ struct AppFixture {
     options.stageBufferUploads = stageBufferUploads;
     options.msaaSamples = msaaSamples;
     options.fxaa = fxaa;
+    options.renderScale = renderScale;
     renderer = createVulkanBackend(app.appDevice(), options, &error);
     EXPECT_NE(renderer, nullptr) << error;
   }
@@ -134,35 +135,53 @@ TEST(VulkanAppImage, PostPassWritesTheAppsImageAsRenderReadsBack) {
   }
 }
 
+// Frames into an image of each kind (rendered into where its usage allows, else copied) are the
+// bytes of render()'s readback, validation-clean.
+void expectAppImagesAreTheReadback(AppFixture& f, std::initializer_list<ImageKind> kinds) {
+  TestScene scene;
+  const FrameDesc frame = scene.frame(kRed);
+  const std::vector<uint8_t> want = f.renderLdr(frame);
+  for (const ImageKind& kind : kinds) {
+    SCOPED_TRACE(kind.name);
+    auto image = f.image(kind.format, frame.width, frame.height, kind.usage, kind.flags);
+    AppImage target = image->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    std::string error;
+    ASSERT_TRUE(f.renderer->renderToImage(frame, target, &error)) << error;
+    target.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    ASSERT_TRUE(f.renderer->renderToImage(frame, target, &error)) << error;
+    expectSameImage(f.read(*image), want, kind.name);
+    f.renderer->forgetImage(image->image);
+    image.reset();
+  }
+  f.expectNoValidationErrors();
+}
+
 // With FXAA the post pass writes the backend's tone-mapped image and the FXAA pass its own
 // output, copied into the app's image whatever its usage: the same bytes as render()'s readback.
 TEST(VulkanAppImage, WithFxaaTheAppsImageIsRenderReadsBack) {
-  const ImageKind kinds[] = {
-      {"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM,
-       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0},
-      {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0},
-  };
   for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
     SCOPED_TRACE(toString(path));
     AppFixture f(path, false, false, 1, true);
     ASSERT_NE(f.renderer, nullptr);
     EXPECT_TRUE(f.renderer->fxaa());
-    TestScene scene;
-    const FrameDesc frame = scene.frame(kRed);
-    const std::vector<uint8_t> want = f.renderLdr(frame);
-    for (const ImageKind& kind : kinds) {
-      SCOPED_TRACE(kind.name);
-      auto image = f.image(kind.format, frame.width, frame.height, kind.usage, kind.flags);
-      AppImage target = image->describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-      std::string error;
-      ASSERT_TRUE(f.renderer->renderToImage(frame, target, &error)) << error;
-      target.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-      ASSERT_TRUE(f.renderer->renderToImage(frame, target, &error)) << error;
-      expectSameImage(f.read(*image), want, kind.name);
-      f.renderer->forgetImage(image->image);
-      image.reset();
-    }
-    f.expectNoValidationErrors();
+    expectAppImagesAreTheReadback(
+        f, {{"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM,
+             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0},
+            {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0}});
+  }
+}
+
+// With a render scale the post pass upscales into the app's image (rendered into, or copied into):
+// the same bytes as render()'s readback, from either requested path (both run the separate one).
+TEST(VulkanAppImage, WithARenderScaleTheAppsImageIsRenderReadsBack) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    AppFixture f(path, false, false, 1, false, 0.5);
+    ASSERT_NE(f.renderer, nullptr);
+    EXPECT_EQ(f.renderer->postPath(), PostPath::Separate);
+    expectAppImagesAreTheReadback(
+        f, {{"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0},
+            {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0}});
   }
 }
 

@@ -51,6 +51,8 @@ struct PostShaders {
   // Merged path. glslang 12 rejects the GL_EXT_shader_framebuffer_fetch #extension, so the GLES
   // text is assembled but not checked here: tests compile it with Mesa (OSMesa / EGL).
   PostStage fetchFragment;
+  // Render scale < 1 (separate path): samples an HDR image smaller than the output bilinearly.
+  PostStage upscaledFragment;
 };
 
 // Returns false with *error set when a backend rejects the assembled code (a compiler defect).
@@ -66,7 +68,8 @@ std::vector<PostEffects> everyPostEffects();
 
 // Where a Metal app binds the post fragment stage's resources (HDR texture when sampled, the
 // grading LUT, the PostUniforms block): pinned from shader_abi.h like a material's slots.
-std::vector<package::MslBinding> postMslBindings(const PostEffects& effects);
+// upscaled: the upscaled form, which reads the block for the output's size.
+std::vector<package::MslBinding> postMslBindings(const PostEffects& effects, bool upscaled = false);
 
 // C++ source defining facet::runtime::postVariants() (runtime/include/facet/runtime/render_backend.h)
 // with these variants' SPIR-V words and GLSL ES texts, and fxaaShader() with the FXAA pass's:

@@ -181,10 +181,14 @@ struct PassTime {
 struct FrameResult {
   uint32_t width = 0;
   uint32_t height = 0;
-  std::vector<uint8_t> ldr;        // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
-  std::vector<float> hdr;          // RGBA float, rows top to bottom: the forward pass output (RGBA16F or
-                                   // R11G11B10F target, alpha 1 for the latter); empty when the backend
-                                   // does not read HDR back
+  std::vector<uint8_t> ldr;  // RGBA8, rows top to bottom: the post pass output (tone mapped, sRGB-encoded)
+  std::vector<float> hdr;    // RGBA float, rows top to bottom: the forward pass output (RGBA16F or
+                             // R11G11B10F target, alpha 1 for the latter); empty when the backend
+                             // does not read HDR back
+  // The forward pass's (hdr's) size: width × height, or with a render scale below 1 scaledSize()
+  // of each (render_path.h).
+  uint32_t hdrWidth = 0;
+  uint32_t hdrHeight = 0;
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
   // CPU time render() spent on the application's thread issuing the frame: Vulkan, from the call
   // until vkQueueSubmit returned (checks, uploads, descriptor sets, recording, submission); GL,
@@ -223,6 +227,7 @@ class RenderBackend {
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
   virtual bool fxaa() const { return false; }         // an FXAA pass follows the post pass
+  virtual double renderScale() const { return 1.0; }  // the forward pass's size / the output's
   // How MSAA samples are kept and resolved, and where transient attachments live, for --stats and
   // tests: e.g. "resolve attachment; transient attachments in device-local memory (no lazily
   // allocated type)". Complete after the first frame (the targets exist then).
@@ -276,6 +281,11 @@ struct VulkanOptions {
   // stored and sampled by an FXAA render pass of its own, which writes the output
   // (render_path.h, buildForwardPostGraph's fxaa). Off: no such pass, image or bytes.
   bool fxaa = false;
+  // The forward pass renders at scaledSize(output, renderScale) and the post pass upscales it
+  // bilinearly (the post variant's upscaled form). 0.5..1.0 (render_path.h); creation fails
+  // outside it or on NaN. Below 1 the merged path becomes the separate one: a subpass cannot
+  // change resolution, so HDR is stored and sampled (buildForwardPostGraph's renderScale).
+  double renderScale = 1.0;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -312,6 +322,8 @@ struct GlOptions {
   VertexPacking vertexPacking = VertexPacking::Packed;
   // As VulkanOptions::fxaa: the post pass writes a texture the FXAA pass samples.
   bool fxaa = false;
+  // As VulkanOptions::renderScale: below 1, the separate path with a smaller HDR texture.
+  double renderScale = 1.0;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
@@ -332,6 +344,10 @@ struct PostShaders {
   const std::string& vertexGlslEs;
   const std::string& fragmentGlslEs;       // samples the stored HDR texture
   const std::string& fragmentFetchGlslEs;  // GL_EXT_shader_framebuffer_fetch: HDR inout at 0, LDR at 1
+  // Render scale < 1: samples the smaller HDR texture bilinearly at the output pixel's centre,
+  // reading the output's size from the PostUniforms block (viewport).
+  const std::vector<uint32_t>& fragmentUpscaledSpirv;
+  const std::string& fragmentUpscaledGlslEs;
 };
 // Every post variant the runtime embeds (each tone curve, with and without dithering).
 const std::vector<PostShaders>& postVariants();

@@ -32,6 +32,17 @@ enum class HdrFormat {
 const char* toString(HdrFormat format);  // "rgba16f", "r11g11b10f"
 uint32_t bytesPerPixel(HdrFormat format);
 
+// Render scale: the forward pass renders at scale × the output size and the post pass upscales
+// (bilinear). 0.5..1.0: below half the output an upscaled pixel covers more than 2×2 output
+// pixels, where a bilinear filter shows its blocks.
+inline constexpr double kMinRenderScale = 0.5;
+inline constexpr double kMaxRenderScale = 1.0;
+bool isRenderScale(double scale);  // in [kMinRenderScale, kMaxRenderScale]; false for NaN
+// "<what> must be in 0.5..1, not <scale>": the message for a scale isRenderScale refuses.
+std::string renderScaleError(const char* what, double scale);
+// The forward pass's size for an output of `size` pixels: rounded to nearest, at least 1.
+uint32_t scaledSize(uint32_t size, double scale);
+
 struct ForwardPostGraph {
   fg::FrameGraph graph;
   fg::ResourceId hdr = 0;  // RGBA16F or R11G11B10F, one sample: what the post pass reads
@@ -50,10 +61,15 @@ struct ForwardPostGraph {
 
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
 // which forces it to be stored. samples: the forward pass's MSAA sample count (1, 2 or 4).
-// fxaa: an FXAA pass after the post pass (chunks/fxaa.glsl) writes ldr.
+// fxaa: an FXAA pass after the post pass (chunks/fxaa.glsl) writes ldr. renderScale < 1: HDR and
+// depth are scaledSize() of width × height and the post pass samples HDR (a subpass cannot change
+// resolution), so the merged path becomes the separate one.
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
                                        HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1,
-                                       bool fxaa = false);
+                                       bool fxaa = false, double renderScale = 1.0);
+
+// The path a backend runs: a render scale below 1 turns the merged path into the separate one.
+PostPath effectivePostPath(PostPath requested, double renderScale);
 
 // The MSAA sample counts Facet renders with: 1 (off), 2 and 4. The backends refuse a count the
 // device does not offer for both the HDR colour and the depth format.

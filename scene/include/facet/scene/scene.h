@@ -110,6 +110,8 @@ struct Scene {
   VignetteSettings vignette;
   uint32_t msaaSamples = 1;  // "antialiasing": {"msaa": 1 | 2 | 4}: the forward pass's samples per pixel
   bool fxaa = false;         // "antialiasing": {"fxaa": true}: an FXAA pass after the post pass
+  // "renderScale": 0.5..1, the forward pass's size / the output's (render_path.h)
+  double renderScale = 1.0;
   // The real folder the scene's files were confined to (SceneReadOptions), which also confines
   // what its glTF files read; "" for a Scene built in code.
   std::string assetRoot;

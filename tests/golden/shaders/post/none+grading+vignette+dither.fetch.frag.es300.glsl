@@ -99,14 +99,22 @@ vec3 dither_triangular_8bit(vec3 encoded, highp vec2 pixel) {
 //                                  LDR written to colour slot 1;
 //   FACET_POST_FRAMEBUFFER_FETCH   merged path, GLES: GL_EXT_shader_framebuffer_fetch, HDR is
 //                                  colour output 0 declared inout, LDR is output 1;
-//   neither                        separate path: texelFetch of the stored HDR texture at
+//   FACET_POST_UPSCALE             render scale < 1 (separate path): the HDR texture is
+//                                  smaller than the output; a bilinear sample at the output
+//                                  pixel's centre, uv = gl_FragCoord.xy / output size (from
+//                                  post.viewport), in highp: a mediump uv is 2^-11 relative, a
+//                                  whole texel at 2048 texels;
+//   none of these                  separate path: texelFetch of the stored HDR texture at
 //                                  gl_FragCoord (each API's window origin matches its own
 //                                  texture row 0, so no flip is needed).
-// All forms read exactly the pixel being shaded, so the paths give the same image.
+// All forms but the upscaled one read exactly the pixel being shaded, so the paths give the same
+// image.
 #if defined(FACET_POST_SUBPASS_INPUT)
 #define FACET_POST_HDR() subpassLoad(hdrColor).rgb
 #elif defined(FACET_POST_FRAMEBUFFER_FETCH)
 #define FACET_POST_HDR() hdrColor.rgb
+#elif defined(FACET_POST_UPSCALE)
+#define FACET_POST_HDR() texture(hdrColor, gl_FragCoord.xy * post.viewport.xy).rgb
 #else
 #define FACET_POST_HDR() texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb
 #endif

@@ -1,0 +1,90 @@
+#version 300 es
+#define FACET_POST_UPSCALE 1
+#define FACET_POST_VIGNETTE 1
+precision mediump float;
+precision highp int;
+uniform mediump sampler2D hdrColor;
+layout(location = 0) out vec4 fragColor;
+layout(std140) uniform PostUniforms {
+    mediump vec4 vignette;
+    highp vec4 viewport;
+} post;
+// sRGB transfer functions, IEC 61966-2-1:1999 (piecewise: linear toe below 0.0031308).
+// fp16: inputs are in [0, 1]; pow of a value in [0.0031308, 1] is well conditioned in mediump
+// and the 8-bit output step (1/255) is far above fp16's 2^-11 relative precision.
+vec3 srgb_from_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    vec3 lo = c * 12.92;
+    vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    return mix(lo, hi, step(vec3(0.0031308), c));
+}
+// Vignette: the frame darkens towards its corners, applied "on top at the end of the shader" (on
+// the graded, encoded value, before dithering) as in HypeHype's single-pass mobile post stack
+// (Aaltonen, "Transitioning HypeHype to Physically Based Rendering", SIGGRAPH 2024).
+//   p = (2 · pixel / size − 1) · (mix(1, width / height, roundness), 1): the centre is 0, the top
+//       and bottom edges are at |p.y| = 1; roundness 1 makes the falloff a circle on screen,
+//       0 an ellipse fitting the frame (the side edges at |p.x| = 1 too);
+//   factor = 1 − intensity · smoothstep(radius, radius + smoothness, |p|).
+// Multiplying the encoded value scales perceived lightness (sRGB encoding is close to it), so
+// intensity 0.5 reads as "half as light" in the corners whatever their colour.
+// Precision: the pixel and the reciprocal size are highp (pixel coordinates reach 4096, beyond
+// fp16's integers); |p| < 3 and the factor in [0, 1] are fine in mediump.
+// params: x intensity, y radius, z smoothness, w roundness; viewport: x 1/width, y 1/height, z width/height.
+float vignette_factor(highp vec2 pixel, highp vec4 viewport, vec4 params) {
+    highp vec2 p = pixel * viewport.xy * 2.0 - 1.0;
+    p.x *= mix(1.0, viewport.z, params.w);
+    float d = length(vec2(p));
+    return 1.0 - params.x * smoothstep(params.y, params.y + max(params.z, 1e-3), d);
+}
+// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, grade
+// through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
+// when enabled (compiler/post.h PostEffects).
+// Lights were pre-exposed on the CPU, so no exposure multiply happens here.
+// Assembled by the compiler's post domain (compiler/src/post.cpp), which declares `hdrColor` and
+// `fragColor` from shader_abi.h's attachment constants and defines one way to read the pixel:
+//   FACET_POST_SUBPASS_INPUT       merged path, Vulkan (and MSL [[color(0)]] via SPIRV-Cross):
+//                                  subpassLoad of the input attachment of the same render pass,
+//                                  LDR written to colour slot 1;
+//   FACET_POST_FRAMEBUFFER_FETCH   merged path, GLES: GL_EXT_shader_framebuffer_fetch, HDR is
+//                                  colour output 0 declared inout, LDR is output 1;
+//   FACET_POST_UPSCALE             render scale < 1 (separate path): the HDR texture is
+//                                  smaller than the output; a bilinear sample at the output
+//                                  pixel's centre, uv = gl_FragCoord.xy / output size (from
+//                                  post.viewport), in highp: a mediump uv is 2^-11 relative, a
+//                                  whole texel at 2048 texels;
+//   none of these                  separate path: texelFetch of the stored HDR texture at
+//                                  gl_FragCoord (each API's window origin matches its own
+//                                  texture row 0, so no flip is needed).
+// All forms but the upscaled one read exactly the pixel being shaded, so the paths give the same
+// image.
+#if defined(FACET_POST_SUBPASS_INPUT)
+#define FACET_POST_HDR() subpassLoad(hdrColor).rgb
+#elif defined(FACET_POST_FRAMEBUFFER_FETCH)
+#define FACET_POST_HDR() hdrColor.rgb
+#elif defined(FACET_POST_UPSCALE)
+#define FACET_POST_HDR() texture(hdrColor, gl_FragCoord.xy * post.viewport.xy).rgb
+#else
+#define FACET_POST_HDR() texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb
+#endif
+
+void main() {
+    vec3 hdr = FACET_POST_HDR();
+#if defined(FACET_POST_ACES)
+    vec3 display = tonemap_aces_fitted(hdr);
+#elif defined(FACET_POST_NEUTRAL)
+    vec3 display = tonemap_khronos_neutral(hdr);
+#else
+    vec3 display = hdr;  // no tone curve: srgb_from_linear clamps to [0, 1]
+#endif
+    vec3 encoded = srgb_from_linear(display);
+#if defined(FACET_POST_COLOR_GRADING)
+    encoded = grade_color_lut(facet_colorLut, encoded);  // display-referred, encoded: see the chunk
+#endif
+#if defined(FACET_POST_VIGNETTE)
+    encoded *= vignette_factor(gl_FragCoord.xy, post.viewport, post.vignette);
+#endif
+#if defined(FACET_POST_DITHER)
+    encoded = dither_triangular_8bit(encoded, gl_FragCoord.xy);  // last, on the value the target quantises
+#endif
+    fragColor = vec4(encoded, 1.0);
+}
