@@ -462,6 +462,46 @@ TEST(MatcCli, PointLightVariantsAreBuiltOnRequestAndCheckedAgainstAScene) {
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
 }
 
+// A scene whose sun casts asks for receiver variants (.sh): none is built by default (today's
+// output does not grow), --shadows or --scene builds them, and objects that do not receive keep the
+// plain key, so such a scene asks for both.
+TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
+  std::string dir = facet::test::scratchDir("cli-shadows");
+  std::string scene = write(dir, "yard.json", R"({"tier": "mid", "sun": {"castShadows": true},
+      "shadows": {"cascades": 2}, "objects": [
+      {"mesh": "plane", "material": "red_plastic", "scale": 10},
+      {"mesh": "box", "material": "red_plastic", "position": [0, 1, 0], "receiveShadows": false}]})");
+  std::string material = facet::test::examplePath("materials/red_plastic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/plain.matpkg").exitCode, 0);
+  auto missing = run(kMatc + " info " + dir + "/plain.matpkg --scene " + scene);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.out.find("asks for mid.dir1; the package has 8 variants, including it\n"), std::string::npos)
+      << missing.out;
+  EXPECT_NE(missing.out.find("asks for mid.dir1.sh2; the package has 8 variants\n"), std::string::npos) << missing.out;
+  EXPECT_NE(missing.err.find("not built with mid.dir1.sh2"), std::string::npos) << missing.err;
+
+  auto built = run(kMatc + " compile " + material + " -o " + dir + "/shadows.matpkg --shadows 0,1,2,4");
+  ASSERT_EQ(built.exitCode, 0) << built.err;
+  EXPECT_NE(built.out.find("20 variants"), std::string::npos) << built.out;
+  // The runtime's own checks accept the receivers' interface (block, compare sampler).
+  auto found = run(kMatc + " info " + dir + "/shadows.matpkg --scene " + scene);
+  EXPECT_EQ(found.exitCode, 0) << found.err;
+  auto fragment =
+      run(kMatc + " info " + dir + "/shadows.matpkg --variant low.dir1.sh4 --stage fragment --target glsl_es_300");
+  ASSERT_EQ(fragment.exitCode, 0) << fragment.err;
+  EXPECT_NE(fragment.out.find("uniform highp sampler2DShadow facet_shadowAtlas;"), std::string::npos) << fragment.out;
+  auto plain = run(kMatc + " info " + dir + "/shadows.matpkg --variant low.dir1 --stage fragment --target glsl_es_300");
+  EXPECT_EQ(plain.out.find("facet_shadowAtlas"), std::string::npos) << plain.out;
+
+  auto forScene = run(kMatc + " compile " + material + " -o " + dir + "/scene.matpkg --scene " + scene);
+  ASSERT_EQ(forScene.exitCode, 0) << forScene.err;
+  EXPECT_NE(forScene.out.find("2 variants for scene " + scene + " (8 without it)"), std::string::npos) << forScene.out;
+  EXPECT_EQ(run(kMatc + " info " + dir + "/scene.matpkg --scene " + scene).exitCode, 0);
+
+  EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --shadows 3").exitCode, 2);
+  EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
+}
+
 TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {
   std::string dir = facet::test::scratchDir("cli-tiers");
   std::string mat = facet::test::examplePath("materials/red_plastic.mat");
