@@ -89,8 +89,8 @@ std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vect
   // A scene names its own counts; without one, the caller's lists apply.
   std::vector<int> counts =
       scene ? std::vector<int>(std::begin(kPointLightCounts), std::end(kPointLightCounts)) : pointLightCounts;
-  std::vector<int> cascades = scene ? std::vector<int>(std::begin(kShadowCascadeCounts), std::end(kShadowCascadeCounts))
-                                    : shadowCascadeCounts;
+  std::vector<int> cascades =
+      scene ? std::vector<int>(std::begin(kShadowCascadeCounts), std::end(kShadowCascadeCounts)) : shadowCascadeCounts;
   for (Tier t : tiers) {
     for (bool light : {false, true}) {
       for (int points : counts) {

@@ -247,8 +247,8 @@ std::string builtinMeshNames() {
 
 SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
   onlyKeys(j, pointer,
-           {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "castShadows", "receiveShadows",
-            "params"});
+           {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "castShadows",
+            "receiveShadows", "params"});
   SceneObject o;
   if (j.contains("castShadows")) o.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
   if (j.contains("receiveShadows")) o.receiveShadows = boolean(j["receiveShadows"], pointer + "/receiveShadows");
@@ -383,8 +383,7 @@ void antialiasing(const json& j, Scene* s) {
 // 2D image every Vulkan 1.0 and GLES 3.0 device class Facet targets may allow (the device's own
 // limit is checked again when the atlas is made).
 ShadowSettings shadows(const json& j) {
-  onlyKeys(j, "/shadows",
-           {"atlasSize", "cascades", "distance", "splitLambda", "depthBias", "slopeBias", "normalBias"});
+  onlyKeys(j, "/shadows", {"atlasSize", "cascades", "distance", "splitLambda", "depthBias", "slopeBias", "normalBias"});
   ShadowSettings s;
   if (j.contains("atlasSize")) {
     s.atlasSize = wholeNumber(j["atlasSize"], "/shadows/atlasSize", 256, kMaxShadowAtlasSize);

@@ -53,7 +53,8 @@ TEST(ShadowKeys, ReceiversAreBuiltOnlyWhenAskedFor) {
   EXPECT_EQ(names(enumerate({true}, {Tier::High})), (std::vector<std::string>{"high.dir0", "high.dir1"}));
   EXPECT_EQ(names(enumerate({true}, {Tier::High}, nullptr, {0}, {0, 1, 2, 4})),
             (std::vector<std::string>{"high.dir0", "high.dir1", "high.dir1.sh1", "high.dir1.sh2", "high.dir1.sh4"}));
-  EXPECT_EQ(names(enumerate({false}, {Tier::High}, nullptr, {0}, {0, 1, 2, 4})), (std::vector<std::string>{"high.dir0"}));
+  EXPECT_EQ(names(enumerate({false}, {Tier::High}, nullptr, {0}, {0, 1, 2, 4})),
+            (std::vector<std::string>{"high.dir0"}));
   const SceneNeeds scene{{requestKey({true}, Tier::Mid, true, 0, 2), requestKey({true}, Tier::Mid, true, 0, 0)}};
   EXPECT_EQ(names(enumerate({true}, {Tier::Mid, Tier::High}, &scene)),
             (std::vector<std::string>{"mid.dir1", "mid.dir1.sh2"}));

@@ -118,7 +118,7 @@ struct Scene {
   Camera camera;
   std::optional<Sun> sun;
   std::vector<PunctualLight> lights;
-  ShadowSettings shadows;  // the "shadows" block; used when sun->castShadows
+  ShadowSettings shadows;   // the "shadows" block; used when sun->castShadows
   double skyLuminance = 0;  // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
   std::vector<SceneObject> objects;
