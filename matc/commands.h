@@ -19,6 +19,7 @@ struct CompileArgs {
   std::vector<std::string> tiers;   // tier names; empty: every tier this compiler supports
   std::string scene;                // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
+  std::vector<int> shadows{0};      // sun shadow-cascade permutations to build without a scene
   unsigned jobs = 0;                // variants compiled at once; 0: one per hardware thread
   std::string cacheDir;             // --cache; "" for the default (defaultCacheDir())
   bool noCache = false;             // --no-cache

@@ -66,6 +66,7 @@ std::string defaultCacheDir() {
 int buildOptions(const CompileArgs& args, const ir::Material& material, compiler::BuildOptions* options) {
   if (int status = cli::parseTiers(args.tiers, &options->tiers); status != 0) return status;
   options->pointLightCounts = args.pointLights;
+  options->shadowCascadeCounts = args.shadows;
   if (args.scene.empty()) return 0;
   std::string error;
   auto scene = loadSceneManifest(args.scene, &error);
@@ -73,16 +74,16 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
-  auto key = sceneKeyFor(*scene, args.scene, material.name, material.shading == "lit", &error);
-  if (!key) {
+  auto keys = sceneKeysFor(*scene, args.scene, material.name, material.shading == "lit", &error);
+  if (!keys) {
     cli::printError(error);
     return 1;
   }
-  if (std::find(options->tiers.begin(), options->tiers.end(), key->tier) == options->tiers.end()) {
+  if (std::find(options->tiers.begin(), options->tiers.end(), keys->front().tier) == options->tiers.end()) {
     cli::printError(args.scene + ": the scene asks for tier '" + scene->tier + "', which this build does not include");
     return 1;
   }
-  options->scene = permutations::SceneNeeds{{*key}};
+  options->scene = permutations::SceneNeeds{*keys};
   return 0;
 }
 
@@ -155,9 +156,10 @@ int compileCommand(const CompileArgs& args) {
   std::string forScene;
   if (options.scene) {
     permutations::MaterialNeeds needs{material->shading == "lit"};
-    forScene = " for scene " + args.scene + " (" +
-               std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights).size()) +
-               " without it)";
+    forScene =
+        " for scene " + args.scene + " (" +
+        std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights, args.shadows).size()) +
+        " without it)";
   }
   std::string cached;
   if (built->cacheHits > 0) cached = " (" + std::to_string(built->cacheHits) + " from the cache)";

@@ -261,18 +261,22 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
-  auto key = sceneKeyFor(*scene, scenePath, pkg.material.name, pkg.material.shading == "lit", &error);
-  if (!key) {
+  auto keys = sceneKeysFor(*scene, scenePath, pkg.material.name, pkg.material.shading == "lit", &error);
+  if (!keys) {
     cli::printError(error);
     return 1;
   }
-  bool built = std::any_of(pkg.variants.begin(), pkg.variants.end(),
-                           [&](const package::Variant& v) { return v.key == key->toString(); });
-  std::printf("%s: scene %s asks for %s; the package has %zu variant%s%s\n", pkg.material.name.c_str(),
-              scenePath.c_str(), key->toString().c_str(), pkg.variants.size(), pkg.variants.size() == 1 ? "" : "s",
-              built ? ", including it" : "");
-  if (built) return 0;
-  cli::printError("the package was not built with " + key->toString() + "; compile with --scene " + scenePath);
+  std::string missing;
+  for (const permutations::VariantKey& key : *keys) {
+    bool built = std::any_of(pkg.variants.begin(), pkg.variants.end(),
+                             [&](const package::Variant& v) { return v.key == key.toString(); });
+    std::printf("%s: scene %s asks for %s; the package has %zu variant%s%s\n", pkg.material.name.c_str(),
+                scenePath.c_str(), key.toString().c_str(), pkg.variants.size(), pkg.variants.size() == 1 ? "" : "s",
+                built ? ", including it" : "");
+    if (!built) missing += (missing.empty() ? "" : ", ") + key.toString();
+  }
+  if (missing.empty()) return 0;
+  cli::printError("the package was not built with " + missing + "; compile with --scene " + scenePath);
   return 1;
 }
 

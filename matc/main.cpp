@@ -67,6 +67,12 @@ int main(int argc, char** argv) {
                    "point/spot light counts to build, from 0, 1, 2, 4 (default: 0; a --scene decides its own)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
+  compileCmd
+      ->add_option("--shadows", compile.shadows,
+                   "sun shadow cascades to build receivers for (dir1 variants), from 0, 1, 2, 4 (default: 0, none; "
+                   "a --scene decides its own)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({0, 1, 2, 4}));
   compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
                        "testing only: round every mediump result to binary16 in the SPIR-V of mediump tiers "
                        "(docs/fp16-emulation.md); never ship such a package");

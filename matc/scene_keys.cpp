@@ -8,8 +8,10 @@ std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::st
   return runtime::loadScene(path, error, runtime::SceneReadOptions{.assetRoot = "/"});
 }
 
-std::optional<permutations::VariantKey> sceneKeyFor(const runtime::Scene& scene, const std::string& scenePath,
-                                                    const std::string& material, bool lit, std::string* error) {
+std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime::Scene& scene,
+                                                                  const std::string& scenePath,
+                                                                  const std::string& material, bool lit,
+                                                                  std::string* error) {
   auto tier = permutations::tierFromString(scene.tier);
   if (!tier) {
     *error = scenePath + ": unknown tier '" + scene.tier + "'";
@@ -21,8 +23,16 @@ std::optional<permutations::VariantKey> sceneKeyFor(const runtime::Scene& scene,
     *error = scenePath + ": no object of the scene uses material '" + material + "'";
     return std::nullopt;
   }
-  // Every object of a material shares the scene's lights, so they all ask for one key.
-  return permutations::requestKey({lit}, *tier, scene.sun.has_value(), int(scene.lights.size()));
+  // Every object of a material shares the scene's lights; only receiving the sun's shadow differs.
+  std::vector<permutations::VariantKey> keys;
+  for (const runtime::SceneObject& o : scene.objects) {
+    if (o.material != material) continue;
+    const int cascades = o.receiveShadows ? int(runtime::sunShadowCascades(scene)) : 0;
+    keys.push_back(permutations::requestKey({lit}, *tier, scene.sun.has_value(), int(scene.lights.size()), cascades));
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
 }
 
 }  // namespace facet::matc

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "facet/permutations/variant_key.h"
 #include "facet/scene/scene.h"
@@ -15,9 +16,12 @@ namespace facet::matc {
 // images a scene names, so it does not confine them to the scene's folder as a renderer must.
 std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::string* error);
 
-// Nullopt, with *error set, when the scene's tier is unknown or no object of the scene uses the
-// material.
-std::optional<permutations::VariantKey> sceneKeyFor(const runtime::Scene& scene, const std::string& scenePath,
-                                                    const std::string& material, bool lit, std::string* error);
+// The keys the scene's objects of this material ask for, sorted: one, or two when the sun casts
+// and some of them receive its shadow while others do not (`receiveShadows`). Nullopt, with
+// *error set, when the scene's tier is unknown or no object of the scene uses the material.
+std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime::Scene& scene,
+                                                                  const std::string& scenePath,
+                                                                  const std::string& material, bool lit,
+                                                                  std::string* error);
 
 }  // namespace facet::matc

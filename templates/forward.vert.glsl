@@ -2,6 +2,9 @@
 // fragment stage in highp/mediump as the precision policy says: positions far from the origin
 // need fp32 (a fp16 world position 1 km away has 0.5 m steps).
 #include "math.glsl"
+#if defined(FACET_SHADOW_CASCADES)
+#include "shadow_cascade.glsl"
+#endif
 #if defined(FACET_VERTEX_DIFFUSE)
 #include "ambient_sh.glsl"
 #endif
@@ -70,7 +73,11 @@ void main() {
     // which per-vertex evaluation and interpolation follow closely.
     vec3 n = v_normal;  // unit length (above)
     vec3 irradiance = sh_irradiance_over_pi(n);
-#if defined(FACET_DIRECTIONAL_LIGHT)
+#if defined(FACET_DIRECTIONAL_LIGHT) && defined(FACET_SHADOW_CASCADES)
+    // A shadow receiver darkens the sun alone: its n·l / π goes to the fragment stage on its own
+    // (one channel: the sun's colour is uniform), which scales it by the visibility there.
+    v_sunDiffuse = clamp(dot(n, frame.lightDirection.xyz), 0.0, 1.0) * INV_PI;
+#elif defined(FACET_DIRECTIONAL_LIGHT)
     irradiance += frame.lightColor.rgb * (clamp(dot(n, frame.lightDirection.xyz), 0.0, 1.0) * INV_PI);  // a unit vector by the ABI
 #endif
 #if FACET_POINT_LIGHTS > 0
@@ -87,6 +94,16 @@ void main() {
     irradiance = sqrt(irradiance);  // gamma hack: light encoded per vertex, γ = 2 (shading_standard.glsl)
 #endif
     v_diffuseLight = irradiance;
+#endif
+#if defined(FACET_SHADOW_CASCADES)
+    // The sun's frame and the view depth for the fragment stage's shadow lookup (chunks/shadow_sun.glsl),
+    // moved along the normal by its cascade's normal offset (the vertex's own cascade: a triangle
+    // across a split blends the two offsets, a bias that varies smoothly).
+    highp float viewDepth = shadow_view_depth(worldPosition.xyz);
+    highp float normalOffset = shadow_select(viewDepth, shadow.cascadeScale[0], shadow.cascadeScale[1],
+                                             shadow.cascadeScale[2], shadow.cascadeScale[3]).w;
+    highp vec4 offsetPosition = vec4(worldPosition.xyz + v_normal * normalOffset, 1.0);
+    v_shadowPosition = vec4((shadow.lightView * offsetPosition).xyz, viewDepth);
 #endif
     gl_Position = frame.viewProjection * worldPosition;
 }

@@ -48,6 +48,9 @@
 // The view vector at highp, for the half vector of each light (shading_standard.glsl,
 // half_vector: at a grazing glint v ≈ −l and v + l cancels in fp16).
 highp vec3 shading_view_highp;
+#if defined(FACET_SHADOW_CASCADES)
+#include "shadow_sun.glsl"
+#endif
 #if FACET_POINT_LIGHTS > 0
 #include "light_punctual.glsl"
 
@@ -60,6 +63,9 @@ vec3 shade_punctual(MaterialInputs material, PunctualLightData light) {
 
 void main() {
     shading_normal = normalize(v_normal);
+#if defined(FACET_SHADOW_CASCADES)
+    float sunVisibility = shadow_sun_visibility();
+#endif
     // The view vector comes from highp positions; the surface program and the ambient terms read
     // it at the tier's precision, the lights' half vectors at highp.
     shading_view_highp = normalize(FACET_TO_EYE);
@@ -77,7 +83,16 @@ void main() {
     shading_normal = tangent_to_world(material.normal);
 #endif
 
-#if defined(FACET_VERTEX_DIFFUSE)
+#if defined(FACET_VERTEX_DIFFUSE) && defined(FACET_SHADOW_CASCADES)
+    // The sun's per-vertex n·l / π, shadowed here, joins the rest of the per-vertex light.
+    vec3 sunDiffuse = frame.lightColor.rgb * (v_sunDiffuse * sunVisibility);
+#if defined(FACET_GAMMA_HACK)
+    vec3 diffuseLight = sqrt(v_diffuseLight * v_diffuseLight + sunDiffuse);  // both in the gamma-2 encoding
+#else
+    vec3 diffuseLight = v_diffuseLight + sunDiffuse;
+#endif
+    vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * diffuseLight);
+#elif defined(FACET_VERTEX_DIFFUSE)
     vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * v_diffuseLight);
 #elif defined(FACET_IBL_SAMPLED)
     vec3 color = shade_standard_ambient(material, sampled_irradiance_over_pi(shading_normal));
@@ -97,7 +112,12 @@ void main() {
     // A unit vector by the ABI (shader_abi.h FrameUniforms::lightDirection): the runtime
     // normalizes it once per frame on the CPU instead of every pixel doing so.
     highp vec3 l = frame.lightDirection.xyz;
+#if defined(FACET_SHADOW_CASCADES)
+    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l,
+                                                   frame.lightColor.rgb * sunVisibility));
+#else
     color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
+#endif
 #endif
 #if FACET_POINT_LIGHTS > 0
     color = add_light(color, shade_punctual(material, frame.punctualLights[0]));

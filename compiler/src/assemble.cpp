@@ -33,6 +33,11 @@ const OptionalInput kOptionalInputs[] = {
     {abi::kAttribTangent, "vec4", "v_tangent"},
 };
 
+// A sun-shadow receiver (VariantKey shadowCascades; requestKey gives it lit dir1 variants only).
+bool receivesShadow(const AssemblyInput& in) {
+  return in.key.shadowCascades > 0 && in.key.directionalLight && in.material.shading == "lit";
+}
+
 bool vertexDiffuse(const AssemblyInput& in) {
   return in.tier.diffuse == permutations::DiffuseModel::Vertex && in.material.shading == "lit";
 }
@@ -197,6 +202,10 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   }
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
+  if (receivesShadow(in)) {
+    s += "#define FACET_SHADOW_CASCADES " + std::to_string(in.key.shadowCascades) + "\n";
+    if (in.tier.shadowFilter == permutations::ShadowFilter::Tent3x3) s += "#define FACET_SHADOW_FILTER_TENT 1\n";
+  }
   if (in.material.blending != "opaque") s += "#define FACET_BLENDING_" + upper(in.material.blending) + " 1\n";
   if (in.material.blending == "masked")
     s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";
@@ -250,6 +259,10 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) declare(v.varyingType, v.varying);
   if (vertexDiffuse(in)) declare("vec3", "v_diffuseLight");  // diffuse irradiance / π, lit per vertex
+  // The sun's n·l / π alone, for a receiver to shadow (templates/forward.vert.glsl).
+  if (vertexDiffuse(in) && receivesShadow(in)) declare("float", "v_sunDiffuse");
+  // The sun's frame and view depth of the normal-offset position (chunks/shadow_sun.glsl).
+  if (receivesShadow(in)) declare("highp vec4", "v_shadowPosition");
   return s;
 }
 
@@ -310,6 +323,21 @@ std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* pr
   std::string s = frameSampler(flavour, abi::kEnvironmentSampler, precision);
   if (samplesDfgLut(in)) s += frameSampler(flavour, abi::kDfgLutSampler, precision);
   return s;
+}
+
+// The sun's shadow: its block and its compare sampler (fragment stage only), highp: the sampler's
+// coordinate is an atlas position and a depth (chunks/shadow_sun.glsl).
+// The block is in both stages (the vertex stage moves the position into the sun's frame), the same
+// text in each as GLSL ES requires.
+std::string shadowBlock(const AssemblyInput& in, Flavour flavour) {
+  return receivesShadow(in) ? fixedBlock(flavour, abi::kShadowBlock) : "";
+}
+
+std::string shadowAtlasSampler(const AssemblyInput& in, Flavour flavour) {
+  if (!receivesShadow(in)) return "";
+  const abi::SamplerDesc& atlas = abi::kShadowAtlasSampler;
+  return samplerLayout(flavour, atlas.set, atlas.binding) + "uniform highp sampler2DShadow " + std::string(atlas.name) +
+         ";\n";
 }
 
 // The chunk that defines specular_lobe() for a tier's specular model.
@@ -385,6 +413,8 @@ bool templateText(const char* name, const std::string** text, std::string* error
 
 bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading == "lit"; }
 
+bool samplesShadowAtlas(const AssemblyInput& in) { return receivesShadow(in); }
+
 bool samplesDfgLut(const AssemblyInput& in) {
   return in.material.shading == "lit" && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
                                           in.tier.ambient == permutations::AmbientModel::Sampled);
@@ -407,7 +437,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
 
   std::string vs = prologue(in, flavour, "vertex", "highp");
   vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) +
-        fixedBlock(flavour, abi::kObjectBlock) + "\n";
+        fixedBlock(flavour, abi::kObjectBlock) + shadowBlock(in, flavour) + "\n";
   out->libraryFiles = {"forward.vert.glsl", fragmentName};
   if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
 
@@ -419,7 +449,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
         fragmentPrecision + " vec4 fragColor;\n\n";
   fs += frameBlock(flavour) + materialBlock(flavour, in.material, in.params, in.preshade, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
-        iblSamplers(in, flavour, fragmentPrecision) + "\n";
+        iblSamplers(in, flavour, fragmentPrecision) + shadowBlock(in, flavour) + shadowAtlasSampler(in, flavour) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;
   const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
   if (size_t at = fs.find(bodyStart); at != std::string::npos)

@@ -112,9 +112,12 @@ std::optional<ProgramInterface> variantInterface(const PackageReader& reader, si
   const std::optional<permutations::VariantKey> parsed = permutations::VariantKey::parse(key);
   const bool splitSum = parsed && permutations::preset(parsed->tier).ambient == permutations::AmbientModel::SplitSum;
   const auto frame = [&](const abi::SamplerDesc& d) {
-    out.samplers.push_back({std::string(d.name), d.binding, d.cube});
+    out.samplers.push_back({std::string(d.name), d.binding, d.cube, d.shadow});
   };
   if (m.shading == "lit") frame(abi::kEnvironmentSampler);
+  // Receivers bind the sun's shadow block and atlas (chunks/shadow_sun.glsl).
+  out.shadowReceiver = parsed && parsed->shadowCascades > 0 && m.shading == "lit";
+  if (out.shadowReceiver) frame(abi::kShadowAtlasSampler);
   if (m.shading == "lit" && splitSum) frame(abi::kDfgLutSampler);
   for (const TextureInfo& t : reader.textures()) {
     if (std::find(t.variants.begin(), t.variants.end(), variant) == t.variants.end()) continue;

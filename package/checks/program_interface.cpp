@@ -58,6 +58,8 @@ class StageCheck {
              ", where the runtime binds no block";
     }
     const std::string name(desc->name);
+    if (desc->name == abi::kShadowBlock.name && !declared_.shadowReceiver)
+      return "reads " + name + ", which only a shadow receiver's (.sh) draws bind";
     if (b.arraySize != 0) return "declares " + name + " as an array of blocks; the runtime binds one";
     const bool material = desc->std140Size == 0;
     const uint32_t bound = material ? declared_.materialBlockBytes : desc->std140Size;
@@ -119,7 +121,9 @@ class StageCheck {
     const std::string what = "sampler '" + s.name + "'" + at;
     if (!bound) return "samples " + what + ", which the variant's draws do not bind" + missingTexture(s);
     if (s.arraySize != 0) return "declares " + what + " as an array; the runtime binds one texture there";
-    const SamplerShape expected = bound->cube ? SamplerShape::Cube : SamplerShape::Flat2D;
+    const SamplerShape expected = bound->shadow ? SamplerShape::Shadow2D
+                                  : bound->cube ? SamplerShape::Cube
+                                                : SamplerShape::Flat2D;
     if (s.shape != expected)
       return "samples " + what + " as " + shapeName(s.shape) + "; the runtime binds " + shapeName(expected) + " there";
     return "";
@@ -136,6 +140,7 @@ class StageCheck {
     switch (shape) {
       case SamplerShape::Flat2D: return "a 2D texture";
       case SamplerShape::Cube: return "a cube map";
+      case SamplerShape::Shadow2D: return "a 2D depth texture with compare";
       case SamplerShape::Other: break;
     }
     return "a texture type other than a float 2D texture or cube map";

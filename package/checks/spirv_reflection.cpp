@@ -104,11 +104,12 @@ class Reflector {
     s.arraySize = arraySize(type);
     spvc_type image = spvc_compiler_get_type_handle(compiler_, r.base_type_id);
     const SpvDim dim = spvc_type_get_image_dimension(image);
-    const bool plain = !spvc_type_get_image_is_depth(image) && !spvc_type_get_image_arrayed(image) &&
-                       !spvc_type_get_image_multisampled(image) &&
+    const bool depth = spvc_type_get_image_is_depth(image);
+    const bool plain = !spvc_type_get_image_arrayed(image) && !spvc_type_get_image_multisampled(image) &&
                        spvc_type_get_basetype(spvc_compiler_get_type_handle(
                            compiler_, spvc_type_get_image_sampled_type(image))) == SPVC_BASETYPE_FP32;
     s.shape = !plain              ? SamplerShape::Other
+              : depth             ? (dim == SpvDim2D ? SamplerShape::Shadow2D : SamplerShape::Other)
               : dim == SpvDim2D   ? SamplerShape::Flat2D
               : dim == SpvDimCube ? SamplerShape::Cube
                                   : SamplerShape::Other;

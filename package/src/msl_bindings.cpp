@@ -7,7 +7,7 @@
 
 namespace facet::package {
 
-std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material) {
+std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadowReceivers) {
   std::vector<MslBinding> out;
   auto block = [&](const abi::BlockDesc& b) {
     out.push_back({std::string(b.name), MslResource::Buffer, b.set, b.binding, abi::mslBufferIndex(b)});
@@ -20,15 +20,22 @@ std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material) {
   if (material.paramBlockSize != 0) block(abi::kMaterialBlock);
   if (material.shading == "lit")
     for (const abi::SamplerDesc& s : abi::kFrameSamplers) sampler(std::string(s.name), s.set, s.binding);
+  // Only packages holding receivers (.sh variants) declare the shadow's block and atlas: the others'
+  // bytes stay as they were.
+  if (material.shading == "lit" && shadowReceivers) {
+    block(abi::kShadowBlock);
+    sampler(std::string(abi::kShadowAtlasSampler.name), abi::kShadowAtlasSampler.set, abi::kShadowAtlasSampler.binding);
+  }
   for (const Param& p : material.params)
     if (isTexture(p.type) && p.offset != kNoTextureSlot)
       sampler(abi::kMaterialSamplerPrefix + p.name, abi::kTextureSet, abi::materialTextureBinding(p.offset));
   return out;
 }
 
-std::string mslBindingsError(const MaterialInfo& material, const std::vector<MslBinding>& bindings) {
+std::string mslBindingsError(const MaterialInfo& material, const std::vector<MslBinding>& bindings,
+                             bool shadowReceivers) {
   if (bindings.empty()) return "";  // none recorded: a package before format 1.2
-  const std::vector<MslBinding> pinned = mslBindingsFor(material);
+  const std::vector<MslBinding> pinned = mslBindingsFor(material, shadowReceivers);
   for (const MslBinding& b : bindings) {
     const MslBinding* expected = nullptr;
     for (const MslBinding& p : pinned)

@@ -131,17 +131,19 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
   }
   if (std::string e = layoutError(m); !e.empty()) return e;
   std::set<std::string> keys;
+  bool shadowReceivers = false;
   for (const VariantInfo& v : variants) {
     auto key = permutations::VariantKey::parse(v.key);
     if (!key || key->toString() != v.key)
       return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
+    shadowReceivers = shadowReceivers || key->shadowCascades > 0;
     if (!keys.insert(v.key).second) return "variant '" + v.key + "' is stored twice";
     std::set<std::pair<Stage, Target>> slots;
     for (const ShaderInfo& s : v.shaders)
       if (!slots.insert({s.stage, s.target}).second)
         return "variant '" + v.key + "' has two " + toString(s.stage) + " " + toString(s.target) + " shaders";
   }
-  if (std::string e = mslBindingsError(m, mslBindings); !e.empty()) return e;
+  if (std::string e = mslBindingsError(m, mslBindings, shadowReceivers); !e.empty()) return e;
   return preshaderSemanticError(m, preshader);
 }
 

@@ -32,7 +32,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               3,
               true,
-              ClearCoatModel::Ambient};
+              ClearCoatModel::Ambient,
+              ShadowFilter::OneTap};
     case Tier::Low:
       return {SpecularModel::Lut,
               DiffuseModel::Vertex,
@@ -41,7 +42,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               2,
               true,
-              ClearCoatModel::Ambient};
+              ClearCoatModel::Ambient,
+              ShadowFilter::OneTap};
   }
   return {};
 }

@@ -1,6 +1,7 @@
 #include "facet/permutations/variant_key.h"
 
 #include <algorithm>
+#include <span>
 
 namespace facet::permutations {
 
@@ -26,8 +27,15 @@ std::optional<int> pointLightPermutation(int lights) {
   return std::nullopt;
 }
 
+std::optional<int> shadowCascadePermutation(int cascades) {
+  for (int count : kShadowCascadeCounts)
+    if (cascades <= count) return count;
+  return std::nullopt;
+}
+
 std::string VariantKey::toString() const {
   std::string s = std::string(permutations::toString(tier)) + (directionalLight ? ".dir1" : ".dir0");
+  if (shadowCascades > 0) s += ".sh" + std::to_string(shadowCascades);
   if (pointLights > 0) s += ".pt" + std::to_string(pointLights);
   return s;
 }
@@ -40,16 +48,24 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
     if (dot == std::string_view::npos) break;
     start = dot + 1;
   }
-  if (fields.size() < 2 || fields.size() > 3) return std::nullopt;
+  if (fields.size() < 2 || fields.size() > 4) return std::nullopt;
   auto tier = tierFromString(fields[0]);
   if (!tier || (fields[1] != "dir0" && fields[1] != "dir1")) return std::nullopt;
-  VariantKey key{*tier, fields[1] == "dir1", 0};
-  if (fields.size() == 3) {
-    bool known = false;
-    for (int count : kPointLightCounts)
-      if (count > 0 && fields[2] == "pt" + std::to_string(count)) key.pointLights = count, known = true;
-    if (!known) return std::nullopt;
-  }
+  VariantKey key{*tier, fields[1] == "dir1", 0, 0};
+  // The optional fields in their one order: "sh" (after dir1 only), then "pt".
+  size_t next = 2;
+  const auto field = [&](const char* prefix, std::span<const int> counts, int* value) {
+    if (next >= fields.size()) return;
+    for (int count : counts)
+      if (count > 0 && fields[next] == prefix + std::to_string(count)) {
+        *value = count;
+        ++next;
+        return;
+      }
+  };
+  if (key.directionalLight) field("sh", kShadowCascadeCounts, &key.shadowCascades);
+  field("pt", kPointLightCounts, &key.pointLights);
+  if (next != fields.size()) return std::nullopt;
   return key;
 }
 
@@ -59,22 +75,30 @@ const std::vector<Tier>& supportedTiers() {
   return tiers;
 }
 
-VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights) {
-  return {tier, material.lit && directionalLight, material.lit ? pointLightPermutation(pointLights).value_or(0) : 0};
+VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights,
+                      int shadowCascades) {
+  const bool sun = material.lit && directionalLight;
+  return {tier, sun, material.lit ? pointLightPermutation(pointLights).value_or(0) : 0,
+          sun ? shadowCascadePermutation(shadowCascades).value_or(0) : 0};
 }
 
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
-                                  const SceneNeeds* scene, const std::vector<int>& pointLightCounts) {
+                                  const SceneNeeds* scene, const std::vector<int>& pointLightCounts,
+                                  const std::vector<int>& shadowCascadeCounts) {
   std::vector<VariantKey> keys;
-  // A scene names its own point-light counts; without one, the caller's list applies.
+  // A scene names its own counts; without one, the caller's lists apply.
   std::vector<int> counts =
       scene ? std::vector<int>(std::begin(kPointLightCounts), std::end(kPointLightCounts)) : pointLightCounts;
+  std::vector<int> cascades =
+      scene ? std::vector<int>(std::begin(kShadowCascadeCounts), std::end(kShadowCascadeCounts)) : shadowCascadeCounts;
   for (Tier t : tiers) {
     for (bool light : {false, true}) {
       for (int points : counts) {
-        VariantKey key = requestKey(material, t, light, points);
-        bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
-        if (wanted) keys.push_back(key);
+        for (int shadow : cascades) {
+          VariantKey key = requestKey(material, t, light, points, shadow);
+          bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
+          if (wanted) keys.push_back(key);
+        }
       }
     }
   }

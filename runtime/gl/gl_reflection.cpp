@@ -62,9 +62,10 @@ std::string withoutArraySuffix(std::string name) {
 }
 
 SamplerShape samplerShape(GLenum type) {
-  return type == GL_SAMPLER_2D     ? SamplerShape::Flat2D
-         : type == GL_SAMPLER_CUBE ? SamplerShape::Cube
-                                   : SamplerShape::Other;
+  return type == GL_SAMPLER_2D          ? SamplerShape::Flat2D
+         : type == GL_SAMPLER_CUBE      ? SamplerShape::Cube
+         : type == GL_SAMPLER_2D_SHADOW ? SamplerShape::Shadow2D
+                                        : SamplerShape::Other;
 }
 
 struct Active {

@@ -96,6 +96,12 @@ void storePunctual(const PunctualLight& light, double exposure, abi::PunctualLig
 }  // namespace
 
 std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::string& packageDir, std::string* error) {
+  // The compiler builds shadow receivers, but the renderer has no shadow pass yet: a scene asking
+  // for the sun's shadow is refused rather than drawn without it (docs/shadows.md, "Status").
+  if (sunShadowCascades(scene) > 0) {
+    *error = "the sun casts shadows (/sun/castShadows), which this renderer does not draw yet (docs/shadows.md)";
+    return nullptr;
+  }
   if (!checkSceneImageBudget(scene, error)) return nullptr;  // before any image is decoded
   std::unique_ptr<SceneFrame> out(new SceneFrame());
   auto tier = permutations::tierFromString(scene.tier);

@@ -101,6 +101,11 @@ glm::dvec3 direction(const json& j, const std::string& pointer) {
   return d;
 }
 
+bool boolean(const json& j, const std::string& pointer) {
+  if (!j.is_boolean()) fail(pointer, "expected true or false");
+  return j.get<bool>();
+}
+
 std::string string(const json& j, const std::string& pointer) {
   if (!j.is_string()) fail(pointer, "expected a string");
   return j.get<std::string>();
@@ -136,8 +141,9 @@ Camera camera(const json& j) {
 }
 
 Sun sun(const json& j) {
-  onlyKeys(j, "/sun", {"direction", "illuminance", "color"});
+  onlyKeys(j, "/sun", {"direction", "illuminance", "color", "castShadows"});
   Sun s;
+  if (j.contains("castShadows")) s.castShadows = boolean(j["castShadows"], "/sun/castShadows");
   if (j.contains("direction")) s.direction = direction(j["direction"], "/sun/direction");
   if (j.contains("illuminance")) s.illuminance = number(j["illuminance"], "/sun/illuminance", 0, 1e6);
   if (j.contains("color")) s.color = colour(j["color"], "/sun/color");
@@ -145,11 +151,17 @@ Sun sun(const json& j) {
 }
 
 PunctualLight light(const json& j, const std::string& pointer) {
-  onlyKeys(j, pointer, {"type", "position", "intensity", "color", "range", "direction", "innerAngle", "outerAngle"});
+  onlyKeys(j, pointer,
+           {"type", "position", "intensity", "color", "range", "direction", "innerAngle", "outerAngle", "castShadows"});
   PunctualLight l;
   std::string type = j.contains("type") ? string(j["type"], pointer + "/type") : "";
   if (type != "point" && type != "spot") fail(pointer + "/type", "expected \"point\" or \"spot\"");
   l.spot = type == "spot";
+  // Only the sun casts so far (docs/shadows.md, "Scope"): a light asking for a shadow it would
+  // not get is an error, not an unshadowed image.
+  if (j.contains("castShadows") && boolean(j["castShadows"], pointer + "/castShadows"))
+    fail(pointer + "/castShadows", l.spot ? "spot-light shadows are not supported yet; only the sun casts shadows"
+                                          : "point-light shadows are not supported; only the sun casts shadows");
   if (!l.spot)
     for (const char* key : {"direction", "innerAngle", "outerAngle"})
       if (j.contains(key)) fail(pointer + "/" + key, "only a spot light has a " + std::string(key));
@@ -234,8 +246,12 @@ std::string builtinMeshNames() {
 }
 
 SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
-  onlyKeys(j, pointer, {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "params"});
+  onlyKeys(j, pointer,
+           {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "castShadows",
+            "receiveShadows", "params"});
   SceneObject o;
+  if (j.contains("castShadows")) o.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
+  if (j.contains("receiveShadows")) o.receiveShadows = boolean(j["receiveShadows"], pointer + "/receiveShadows");
   if (j.contains("mesh")) o.mesh = string(j["mesh"], pointer + "/mesh");
   if (std::find(std::begin(kBuiltinMeshes), std::end(kBuiltinMeshes), o.mesh) == std::end(kBuiltinMeshes)) {
     // A glTF 2.0 file, relative to the scene's folder and inside the asset root, as images are
@@ -362,10 +378,31 @@ void antialiasing(const json& j, Scene* s) {
   }
 }
 
+// "shadows": the sun's atlas and cascades (docs/shadows.md). The atlas is square and a power of
+// two so that texel snapping and the cascades' rectangles divide it exactly; 8192 is the largest
+// 2D image every Vulkan 1.0 and GLES 3.0 device class Facet targets may allow (the device's own
+// limit is checked again when the atlas is made).
+ShadowSettings shadows(const json& j) {
+  onlyKeys(j, "/shadows", {"atlasSize", "cascades", "distance", "splitLambda", "depthBias", "slopeBias", "normalBias"});
+  ShadowSettings s;
+  if (j.contains("atlasSize")) {
+    s.atlasSize = wholeNumber(j["atlasSize"], "/shadows/atlasSize", 256, kMaxShadowAtlasSize);
+    if ((s.atlasSize & (s.atlasSize - 1)) != 0)
+      fail("/shadows/atlasSize", "expected a power of two, not " + std::to_string(s.atlasSize));
+  }
+  if (j.contains("cascades")) s.cascades = wholeNumber(j["cascades"], "/shadows/cascades", 1, 4);
+  if (j.contains("distance")) s.distance = number(j["distance"], "/shadows/distance", 0.01, 1e6);
+  if (j.contains("splitLambda")) s.splitLambda = number(j["splitLambda"], "/shadows/splitLambda", 0, 1);
+  if (j.contains("depthBias")) s.depthBias = number(j["depthBias"], "/shadows/depthBias", 0, 64);
+  if (j.contains("slopeBias")) s.slopeBias = number(j["slopeBias"], "/shadows/slopeBias", 0, 64);
+  if (j.contains("normalBias")) s.normalBias = number(j["normalBias"], "/shadows/normalBias", 0, 64);
+  return s;
+}
+
 Scene scene(const json& j, const AssetPaths& assets) {
   onlyKeys(j, "",
            {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post",
-            "antialiasing", "renderScale"});
+            "antialiasing", "renderScale", "shadows"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
@@ -376,6 +413,7 @@ Scene scene(const json& j, const AssetPaths& assets) {
   // The range of render_path.h's isRenderScale (the scene library does not link the runtime).
   if (j.contains("renderScale")) s.renderScale = number(j["renderScale"], "/renderScale", 0.5, 1.0);
   if (j.contains("sun")) s.sun = sun(j["sun"]);
+  if (j.contains("shadows")) s.shadows = shadows(j["shadows"]);
   if (j.contains("lights")) {
     if (!j["lights"].is_array()) fail("/lights", "expected an array of lights");
     if (j["lights"].size() > kMaxSceneLights)
@@ -402,6 +440,8 @@ Scene scene(const json& j, const AssetPaths& assets) {
 }
 
 }  // namespace
+
+uint32_t sunShadowCascades(const Scene& s) { return s.sun && s.sun->castShadows ? s.shadows.cascades : 0; }
 
 glm::dmat4 modelMatrix(const SceneObject& o) {
   return glm::translate(glm::dmat4(1), o.position) * glm::mat4_cast(o.rotation) *

@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -460,6 +463,104 @@ TEST(MatcCli, PointLightVariantsAreBuiltOnRequestAndCheckedAgainstAScene) {
 
   EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --point-lights 3").exitCode, 2);
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
+}
+
+// A scene whose sun casts asks for receiver variants (.sh): none is built by default (today's
+// output does not grow), --shadows or --scene builds them, and objects that do not receive keep the
+// plain key, so such a scene asks for both.
+TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
+  std::string dir = facet::test::scratchDir("cli-shadows");
+  std::string scene = write(dir, "yard.json", R"({"tier": "mid", "sun": {"castShadows": true},
+      "shadows": {"cascades": 2}, "objects": [
+      {"mesh": "plane", "material": "red_plastic", "scale": 10},
+      {"mesh": "box", "material": "red_plastic", "position": [0, 1, 0], "receiveShadows": false}]})");
+  std::string material = facet::test::examplePath("materials/red_plastic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/plain.matpkg").exitCode, 0);
+  auto missing = run(kMatc + " info " + dir + "/plain.matpkg --scene " + scene);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.out.find("asks for mid.dir1; the package has 8 variants, including it\n"), std::string::npos)
+      << missing.out;
+  EXPECT_NE(missing.out.find("asks for mid.dir1.sh2; the package has 8 variants\n"), std::string::npos) << missing.out;
+  EXPECT_NE(missing.err.find("not built with mid.dir1.sh2"), std::string::npos) << missing.err;
+
+  auto built = run(kMatc + " compile " + material + " -o " + dir + "/shadows.matpkg --shadows 0,1,2,4");
+  ASSERT_EQ(built.exitCode, 0) << built.err;
+  EXPECT_NE(built.out.find("20 variants"), std::string::npos) << built.out;
+  // The runtime's own checks accept the receivers' interface (block, compare sampler).
+  auto found = run(kMatc + " info " + dir + "/shadows.matpkg --scene " + scene);
+  EXPECT_EQ(found.exitCode, 0) << found.err;
+  auto fragment =
+      run(kMatc + " info " + dir + "/shadows.matpkg --variant low.dir1.sh4 --stage fragment --target glsl_es_300");
+  ASSERT_EQ(fragment.exitCode, 0) << fragment.err;
+  EXPECT_NE(fragment.out.find("uniform highp sampler2DShadow facet_shadowAtlas;"), std::string::npos) << fragment.out;
+  auto plain = run(kMatc + " info " + dir + "/shadows.matpkg --variant low.dir1 --stage fragment --target glsl_es_300");
+  EXPECT_EQ(plain.out.find("facet_shadowAtlas"), std::string::npos) << plain.out;
+
+  auto forScene = run(kMatc + " compile " + material + " -o " + dir + "/scene.matpkg --scene " + scene);
+  ASSERT_EQ(forScene.exitCode, 0) << forScene.err;
+  EXPECT_NE(forScene.out.find("2 variants for scene " + scene + " (8 without it)"), std::string::npos) << forScene.out;
+  EXPECT_EQ(run(kMatc + " info " + dir + "/scene.matpkg --scene " + scene).exitCode, 0);
+
+  EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --shadows 3").exitCode, 2);
+  EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
+}
+
+// Ids in a SPIR-V disassembly that feed a depth-compare sample (its coordinate and reference,
+// and everything computed on the way to them), and the ids decorated RelaxedPrecision.
+struct CompareInputs {
+  std::set<std::string> feeding;
+  std::set<std::string> relaxed;
+  int samples = 0;
+};
+
+CompareInputs compareInputs(const std::string& disassembly) {
+  CompareInputs out;
+  std::map<std::string, std::vector<std::string>> operands;  // result id -> the ids it reads
+  std::vector<std::string> pending;
+  std::istringstream lines(disassembly);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+    if (w.size() >= 3 && w[0] == "OpDecorate" && w[2] == "RelaxedPrecision") out.relaxed.insert(w[1]);
+    if (w.size() < 4 || w[1] != "=") continue;
+    std::vector<std::string> ids;
+    for (size_t i = 4; i < w.size(); ++i)
+      if (w[i][0] == '%') ids.push_back(w[i]);
+    operands[w[0]] = ids;
+    // OpImageSampleDref*: result type, sampled image, coordinate, reference.
+    if (w[2].rfind("OpImageSampleDref", 0) == 0 && w.size() >= 7) {
+      ++out.samples;
+      pending.push_back(w[5]);
+      pending.push_back(w[6]);
+    }
+  }
+  while (!pending.empty()) {
+    std::string id = pending.back();
+    pending.pop_back();
+    if (!out.feeding.insert(id).second) continue;
+    for (const std::string& from : operands[id]) pending.push_back(from);
+  }
+  return out;
+}
+
+// Light-space coordinates stay highp in every tier (docs/shadows.md): an atlas position needs
+// steps of 1/8192 and a D16 depth 1/65536, which fp16 cannot hold. Checked in the SPIR-V a driver
+// gets: nothing on the way to a compare sample's coordinate or reference is RelaxedPrecision.
+TEST(MatcCli, ShadowCoordinatesStayHighpInEveryTier) {
+  std::string dir = facet::test::scratchDir("cli-shadow-precision");
+  std::string material = facet::test::examplePath("materials/red_plastic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/p.matpkg --shadows 1,4").exitCode, 0);
+  for (const char* key :
+       {"reference.dir1.sh4", "high.dir1.sh1", "high.dir1.sh4", "mid.dir1.sh4", "low.dir1.sh1", "low.dir1.sh4"}) {
+    auto spirv = run(kMatc + " info " + dir + "/p.matpkg --variant " + key + " --stage fragment --target spirv");
+    ASSERT_EQ(spirv.exitCode, 0) << spirv.err;
+    const CompareInputs inputs = compareInputs(spirv.out);
+    EXPECT_EQ(inputs.samples, std::string(key).rfind("low", 0) == 0 || std::string(key).rfind("mid", 0) == 0 ? 1 : 4)
+        << key;
+    EXPECT_GT(inputs.feeding.size(), 5u) << key;
+    for (const std::string& id : inputs.feeding)
+      EXPECT_FALSE(inputs.relaxed.count(id)) << key << ": " << id << " feeds a shadow compare in mediump";
+  }
 }
 
 TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {

@@ -86,6 +86,9 @@ constexpr const VertexAttribute& vertexAttribute(uint32_t location) {
 inline constexpr uint32_t kFrameBinding = 0;     // block "FrameUniforms"
 inline constexpr uint32_t kObjectBinding = 1;    // block "ObjectUniforms"
 inline constexpr uint32_t kMaterialBinding = 2;  // block "MaterialParams" (layout recorded in the package)
+// block "ShadowUniforms", shadow receivers only (.sh variants); 3 is the post pass's binding point
+// in GL, which shares binding points across programs.
+inline constexpr uint32_t kShadowBinding = 4;
 
 // Textures: combined image samplers. Vulkan: descriptor set 1 (set 0 holds the uniform blocks),
 // binding = the value below; GL: texture unit = the same value, and the sampler uniform is found
@@ -96,6 +99,7 @@ inline constexpr uint32_t kTextureSet = 1;
 inline constexpr uint32_t kDfgLutBinding = 0;       // "facet_dfgLut": split-sum DFG terms
 inline constexpr uint32_t kSpecularLutBinding = 1;  // "facet_specularLut": low-tier specular LUT (from the package)
 inline constexpr uint32_t kEnvironmentBinding = 2;  // "facet_environment": prefiltered radiance, mip = roughness
+inline constexpr uint32_t kShadowAtlasBinding = 3;  // "facet_shadowAtlas": the sun's depth atlas, compare sampler
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
 // The specular table's size, R8: chunks/specular_lut.glsl addresses its texel centres with these
 // numbers, so the runtime refuses a package table of any other shape (even one of the same bytes).
@@ -170,6 +174,31 @@ struct FrameUniforms {
   float sh[kShCoefficients][4];
 };
 static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
+
+// The sun's shadow, read by receiver variants (VariantKey shadowCascades > 0; docs/shadows.md).
+// Every cascade is an orthographic view of the sun in its own rectangle of one square depth atlas,
+// so all of them share one rotation: the vertex stage takes the position into the sun's frame once
+// (lightView: x, y across the rays, z along them, metres), and cascade i is a scale and an offset
+// of it, (atlas u, atlas v, depth) = light · cascadeScale[i].xyz + cascadeOffset[i].xyz, with u, v
+// in [0, 1] over the whole atlas (the rectangle folded in) and depth in [0, 1] as the atlas stores
+// it, 0 nearest the sun: the same numbers for Vulkan and GL (a depth texture holds window depth in
+// [0, 1] in both). All of it highp in the shaders: an atlas coordinate needs 1/4096 of a texel
+// step at 8192² (fp16 has 1/2048 of 1), a depth 1/65536 (a D16 step).
+inline constexpr uint32_t kMaxShadowCascades = 4;
+struct ShadowUniforms {
+  float lightView[16];  // column-major, world → the sun's frame (metres); only its top three rows are read
+  float cascadeScale[kMaxShadowCascades][4];   // xyz: the sun's frame → atlas scale; w: normal offset, metres
+  float cascadeOffset[kMaxShadowCascades][4];  // xyz: the offset; w: unused
+  // The view depth (metres along the camera's forward axis) at which cascade i ends: a position
+  // takes the first cascade whose split lies beyond it. Entries past the scene's cascades repeat
+  // the last one's (and cascades past it repeat its scale and offset).
+  float splits[4];
+  float cameraForward[4];  // xyz: the camera's unit forward axis; w: unused
+  // x, y: visibility fades to 1 as clamp(viewDepth · x + y, 0, 1) goes from 0 to 1 (the shadow
+  // distance's fade); z: the atlas's texels per side; w: 1 / z.
+  float fadeAtlas[4];
+};
+static_assert(sizeof(ShadowUniforms) == 240, "std140 layout of ShadowUniforms");
 
 // One instance's object-to-world transform: the top three rows of the column-major 4×4 model
 // matrix (the fourth is 0 0 0 1 for an affine transform), row r = (m[0][r], m[1][r], m[2][r],
@@ -273,19 +302,34 @@ inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame",       kBlockSet
 inline constexpr BlockDesc kObjectBlock{"ObjectUniforms", "object",       kBlockSet,
                                         kObjectBinding,   kObjectMembers, uint32_t(sizeof(ObjectUniforms))};
 inline constexpr BlockDesc kMaterialBlock{"MaterialParams", "params", kBlockSet, kMaterialBinding, {}, 0};
-inline constexpr BlockDesc kBlocks[] = {kFrameBlock, kObjectBlock, kMaterialBlock};
+inline constexpr MemberDesc kShadowMembers[] = {
+    {"highp mat4", "lightView"},
+    {"highp vec4", "cascadeScale", kMaxShadowCascades},
+    {"highp vec4", "cascadeOffset", kMaxShadowCascades},
+    {"highp vec4", "splits"},
+    {"highp vec4", "cameraForward"},
+    {"highp vec4", "fadeAtlas"},
+};
+inline constexpr BlockDesc kShadowBlock{"ShadowUniforms", "shadow",       kBlockSet,
+                                        kShadowBinding,   kShadowMembers, uint32_t(sizeof(ShadowUniforms))};
+inline constexpr BlockDesc kBlocks[] = {kFrameBlock, kObjectBlock, kMaterialBlock, kShadowBlock};
 
 // A combined image sampler of the frame (every draw binds the same texture).
 struct SamplerDesc {
   std::string_view name;
   uint32_t set = 0;
   uint32_t binding = 0;
-  bool cube = false;  // samplerCube (the runtime binds a cube map there), else sampler2D
+  bool cube = false;    // samplerCube (the runtime binds a cube map there), else sampler2D
+  bool shadow = false;  // sampler2DShadow: a depth texture read with a less-or-equal compare
 };
 inline constexpr SamplerDesc kDfgLutSampler{kDfgLutName, kTextureSet, kDfgLutBinding};
 inline constexpr SamplerDesc kSpecularLutSampler{kSpecularLutName, kTextureSet, kSpecularLutBinding};
 inline constexpr SamplerDesc kEnvironmentSampler{kEnvironmentName, kTextureSet, kEnvironmentBinding, true};
 inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSampler, kEnvironmentSampler};
+// The sun's shadow atlas (ShadowUniforms), receiver variants only: depth compare on, bilinear where
+// the device filters depth (docs/shadows.md), clamped to the edge.
+inline constexpr const char* kShadowAtlasName = "facet_shadowAtlas";
+inline constexpr SamplerDesc kShadowAtlasSampler{kShadowAtlasName, kTextureSet, kShadowAtlasBinding, false, true};
 // The material's texture parameter in sampler slot i: kMaterialSamplerPrefix + name, set
 // kTextureSet, binding materialTextureBinding(i).
 constexpr uint32_t materialTextureBinding(uint32_t slot) { return kMaterialTextureBase + slot; }

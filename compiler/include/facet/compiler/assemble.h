@@ -52,6 +52,8 @@ inline constexpr uint32_t kEnvironmentLevels = abi::kEnvironmentLevels;
 // the DFG table (lit variants of split-sum tiers).
 bool samplesEnvironment(const AssemblyInput& input);
 bool samplesDfgLut(const AssemblyInput& input);
+// Shadow receivers (VariantKey shadowCascades > 0) read ShadowUniforms and the shadow atlas.
+bool samplesShadowAtlas(const AssemblyInput& input);
 
 // Whether the variant's fragment stage samples the specular table (a lit variant with a light
 // whose tier uses `lut` specular): the package must then carry the table (compiler/specular_lut.h).

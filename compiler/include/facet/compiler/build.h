@@ -64,6 +64,7 @@ struct BuildOptions {
   std::vector<permutations::Tier> tiers = permutations::supportedTiers();
   std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
   std::vector<int> pointLightCounts{0};           // without a scene: the point-light permutations to build
+  std::vector<int> shadowCascadeCounts{0};        // without a scene: the sun-shadow receiver permutations
   // Testing only, never for shipping: the SPIR-V (Vulkan) target of mediump tiers rounds every
   // RelaxedPrecision float result to binary16 (OpQuantizeToF16), so lavapipe, which computes
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers

@@ -128,12 +128,14 @@ inline constexpr uint32_t kMslBufferSlots = 31;
 inline constexpr uint32_t kMslSamplerSlots = 16;
 // The Metal slots of a material's shaders, pinned from shader_abi.h: the frame and object blocks,
 // the material's block when it has one, the frame samplers of lit materials, and one sampler per
-// texture parameter with a sampler slot. The same for every variant; what the compiler records.
-std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material);
+// texture parameter with a sampler slot, and in a package holding shadow receivers (.sh variants)
+// the shadow's block and atlas. The same for every variant; what the compiler records.
+std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadowReceivers = false);
 // Recorded slots against the material (part of semanticError): each names a block or sampler the
 // material's shaders declare, with that resource's kind, Vulkan set and binding and pinned index,
 // and every such resource has one. "" when they agree or none are recorded (before format 1.2).
-std::string mslBindingsError(const MaterialInfo& material, const std::vector<MslBinding>& bindings);
+std::string mslBindingsError(const MaterialInfo& material, const std::vector<MslBinding>& bindings,
+                             bool shadowReceivers = false);
 
 // The preshader (Unreal's term; format 1.3, section PRSH): shading inputs that depend only on
 // parameters (f0, diffuse colour, clamped roughness, α), computed once on the CPU when an

@@ -43,6 +43,11 @@ inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "ambient",
 static_assert(sizeof kClearCoatModelNames / sizeof *kClearCoatModelNames == size_t(ClearCoatModel::None) + 1,
               "one name per ClearCoatModel, in its order");
 
+// How a shadow receiver filters the sun's atlas (chunks/shadow_sun.glsl, docs/shadows.md): a 3×3
+// tent from 4 bilinear compare taps, or one compare tap (bilinear 2×2 where the device filters
+// depth).
+enum class ShadowFilter { Tent3x3, OneTap };
+
 struct TierConfig {
   SpecularModel specular = SpecularModel::GgxSmith;
   DiffuseModel diffuse = DiffuseModel::Pixel;
@@ -52,6 +57,7 @@ struct TierConfig {
   int shBands = 3;                  // SH irradiance bands: 3 (9 coefficients) or 2 (4)
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
+  ShadowFilter shadowFilter = ShadowFilter::Tent3x3;
   int ambientSamples = 0;  // AmbientModel::Sampled: points per integral and pixel
   // The environment read along the lobe's dominant direction instead of the mirror direction
   // (chunks/shading_ambient.glsl, specular_dominant_direction); prefiltered ambient models only.

@@ -1,8 +1,10 @@
 // A variant key names one permutation of a material: one value per axis. Its string form is
-// stable across compiler versions (apps store it), e.g. "high.dir1" or "mid.dir0.pt2":
-//   <tier> "." "dir" <0|1> [ "." "pt" <1|2|4> ]
-// The point-light field is absent when the count is 0, so keys written before the axis existed
-// still name the same variants. A reader that meets a field it does not know rejects the key
+// stable across compiler versions (apps store it), e.g. "high.dir1", "mid.dir0.pt2" or
+// "low.dir1.sh4.pt1":
+//   <tier> "." "dir" <0|1> [ "." "sh" <1|2|4> ] [ "." "pt" <1|2|4> ]
+// The shadow field follows dir1 only (the sun is what casts). The shadow and point-light fields
+// are absent when their count is 0, so keys written before an axis existed still name the same
+// variants. A reader that meets a field it does not know rejects the key
 // rather than guessing.
 #pragma once
 
@@ -28,10 +30,19 @@ inline constexpr int kMaxPointLights = 4;
 // kMaxPointLights.
 std::optional<int> pointLightPermutation(int lights);
 
+// Sun shadows likewise: a receiver variant reads cascades 0..N-1 of the shadow block; a scene
+// with 3 cascades uses the 4-cascade variant (the 4th never selected: its split is the fade's end).
+inline constexpr int kShadowCascadeCounts[] = {0, 1, 2, 4};
+inline constexpr int kMaxShadowCascades = 4;
+// The receiver permutation for `cascades` sun cascades (0: no shadow), or nullopt beyond
+// kMaxShadowCascades.
+std::optional<int> shadowCascadePermutation(int cascades);
+
 struct VariantKey {
   Tier tier = Tier::High;
   bool directionalLight = true;
-  int pointLights = 0;  // one of kPointLightCounts
+  int pointLights = 0;     // one of kPointLightCounts
+  int shadowCascades = 0;  // one of kShadowCascadeCounts; non-zero only with directionalLight
 
   std::string toString() const;
   static std::optional<VariantKey> parse(std::string_view text);
@@ -49,17 +60,21 @@ struct SceneNeeds {
   std::vector<VariantKey> keys;
 };
 
-// The key a renderer asks for: the scene's tier, whether a directional light is present, and the
-// point-light permutation (pointLightPermutation of the frame's count). Axes the material
-// ignores are normalised (an unlit material has only dir0 and no point lights), so compiler and
-// runtime agree on the key without either knowing the other.
-VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights = 0);
+// The key a renderer asks for: the scene's tier, whether a directional light is present, the
+// point-light permutation (pointLightPermutation of the frame's count) and the sun's shadow
+// cascades as the object receives them (shadowCascadePermutation; 0 for an object that does not
+// receive, or when nothing casts). Axes the material ignores are normalised (an unlit material
+// has only dir0, no point lights and no shadows; no sun, no shadow), so compiler and runtime agree
+// on the key without either knowing the other.
+VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights = 0,
+                      int shadowCascades = 0);
 
-// Every variant the given tiers and point-light counts allow for the material, in a stable
-// (sorted) order; with a scene, exactly those of the scene's keys the tiers allow (the scene's
-// own point-light counts, whatever pointLightCounts says).
+// Every variant the given tiers, point-light counts and shadow-cascade counts allow for the
+// material, in a stable (sorted) order; with a scene, exactly those of the scene's keys the tiers
+// allow (the scene's own counts, whatever the lists say).
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
-                                  const SceneNeeds* scene = nullptr, const std::vector<int>& pointLightCounts = {0});
+                                  const SceneNeeds* scene = nullptr, const std::vector<int>& pointLightCounts = {0},
+                                  const std::vector<int>& shadowCascadeCounts = {0});
 
 // Tiers this compiler version builds shaders for.
 const std::vector<Tier>& supportedTiers();

@@ -38,6 +38,23 @@ struct Sun {
   glm::dvec3 direction{0, -1, 0};  // the direction the light travels (from the sun to the scene)
   double illuminance = 110000;     // lux, on a surface facing the sun
   glm::dvec3 color{1, 1, 1};       // linear, multiplies illuminance
+  bool castShadows = false;        // receivers in the scene take the sun's shadow map (docs/shadows.md)
+};
+
+// The largest shadow atlas a scene may ask for, texels per side.
+inline constexpr uint32_t kMaxShadowAtlasSize = 8192;
+
+// The sun's shadow map (docs/shadows.md): every cascade a viewport rectangle of one square depth
+// atlas. Biases are in shadow texels of the cascade they apply to, so one setting holds for every
+// cascade and atlas size.
+struct ShadowSettings {
+  uint32_t atlasSize = 2048;  // texels per side, a power of two in [256, 8192] (and the device's limit)
+  uint32_t cascades = 4;      // 1..4; 3 uses the 4-cascade receiver variant
+  double distance = 60;       // metres from the camera at which the shadow has faded out
+  double splitLambda = 0.75;  // 0: uniform splits, 1: logarithmic (the practical split scheme)
+  double depthBias = 1.0;     // constant depth bias, in texels
+  double slopeBias = 2.0;     // depth bias per unit of depth slope, in texels
+  double normalBias = 1.0;    // lookup offset along the surface normal, in texels
 };
 
 // A punctual light: a point light radiating equally in all directions, or a spot light
@@ -70,6 +87,8 @@ struct SceneObject {
   glm::dquat rotation{1, 0, 0, 0};  // unit length (w, x, y, z in glm's constructor)
   double radius = 1;                // a uniform scale: the unit sphere's radius
   glm::dvec3 scale{1, 1, 1};        // per axis, each > 0; multiplies radius (a scene gives one of the two)
+  bool castShadows = true;          // drawn into the shadow atlas (transparent materials never are)
+  bool receiveShadows = true;       // shaded with the receiver variant when the scene casts
   std::map<std::string, std::vector<double>> params;
   std::set<std::string>
       boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
@@ -99,6 +118,7 @@ struct Scene {
   Camera camera;
   std::optional<Sun> sun;
   std::vector<PunctualLight> lights;
+  ShadowSettings shadows;   // the "shadows" block; used when sun->castShadows
   double skyLuminance = 0;  // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
   std::vector<SceneObject> objects;
@@ -125,6 +145,10 @@ struct Scene {
 struct SceneReadOptions {
   std::string assetRoot;  // "": the scene file's folder
 };
+
+// The number of sun cascades a scene renders: 0 when nothing casts (no sun, or the sun's
+// castShadows off), else shadows.cascades.
+uint32_t sunShadowCascades(const Scene& s);
 
 // Parses scene JSON. Errors read `<path>:<line>:<col>: error: ...` for syntax errors and
 // `<path>: error: <json pointer>: ...` for wrong values.

@@ -47,8 +47,10 @@ struct ProgramInterface {
     std::string name;      // the GLSL ES sampler uniform
     uint32_t binding = 0;  // Vulkan: set abi::kTextureSet; GL: texture unit
     bool cube = false;
+    bool shadow = false;  // a depth texture with compare (the shadow atlas)
   };
   std::vector<Sampler> samplers;  // every sampler a draw of the variant binds
+  bool shadowReceiver = false;    // draws bind ShadowUniforms (a .sh variant)
   // Textures the package ships for this variant (section TEXS), by sampler name: some stage
   // samples each, as the package says.
   std::vector<std::string> packageTextures;
@@ -68,7 +70,8 @@ struct ReflectedBlock {
   uint32_t arraySize = 0;         // 0: one block
   std::vector<ReflectedMember> members;
 };
-enum class SamplerShape : uint8_t { Flat2D, Cube, Other };  // Other: 3D, arrayed, multisampled, shadow, integer
+// Other: 3D, arrayed, multisampled, integer, or a depth-compare type other than a 2D one.
+enum class SamplerShape : uint8_t { Flat2D, Cube, Shadow2D, Other };
 struct ReflectedSampler {
   std::string name;
   uint32_t set = 0, binding = 0;  // Vulkan; unused when the stage binds by name (GL)
