@@ -14,7 +14,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               3,
               true,
-              ClearCoatModel::GgxKelemen};
+              ClearCoatModel::GgxKelemen,
+              AnisotropyModel::GgxSmith};
     case Tier::High:
       return {SpecularModel::GgxSmith,
               DiffuseModel::Pixel,
@@ -23,7 +24,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               3,
               true,
-              ClearCoatModel::GgxKelemen};
+              ClearCoatModel::GgxKelemen,
+              AnisotropyModel::GgxSmith};
     case Tier::Mid:
       return {SpecularModel::FusedHammon,
               DiffuseModel::Vertex,
@@ -32,7 +34,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               3,
               true,
-              ClearCoatModel::Ambient};
+              ClearCoatModel::Ambient,
+              AnisotropyModel::BentIbl};
     case Tier::Low:
       return {SpecularModel::Lut,
               DiffuseModel::Vertex,
@@ -41,7 +44,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               2,
               true,
-              ClearCoatModel::Ambient};
+              ClearCoatModel::Ambient,
+              AnisotropyModel::BentIbl};
   }
   return {};
 }
@@ -63,6 +67,14 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
     for (size_t i = 0; i < std::size(kClearCoatModelNames); ++i) {
       if (option == kClearCoatModelNames[i]) {
         config->clearCoat = ClearCoatModel(i);
+        return true;
+      }
+    }
+  }
+  if (axis == "anisotropy") {
+    for (size_t i = 0; i < std::size(kAnisotropyModelNames); ++i) {
+      if (option == kAnisotropyModelNames[i]) {
+        config->anisotropy = AnisotropyModel(i);
         return true;
       }
     }

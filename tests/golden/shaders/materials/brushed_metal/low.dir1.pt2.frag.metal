@@ -1,0 +1,106 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    packed_float3 tint;
+    float roughness;
+    float anisotropy;
+    float facet_pad20;
+    float facet_pad24;
+    float facet_pad28;
+    float facet_perceptualRoughness;
+    char _m7_pad[12];
+    packed_float3 facet_f0;
+    float facet_alpha;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_worldPosition [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float4 v_tangent [[user(locn2)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    half3 _656 = normalize(half3(in.v_normal));
+    float3 _672 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half3 _817 = half4(in.v_tangent).xyz;
+    half _870 = max(dot(_656, half3(_672)), half(9.9999997473787516355514526367188e-05));
+    half _980 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
+    half3 _1747;
+    if (float(_980) >= 0.0)
+    {
+        _1747 = _817;
+    }
+    else
+    {
+        _1747 = cross(_656, _817);
+    }
+    half _931 = dot(_1747, half3(_672));
+    half _938 = min(abs(_980) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
+    half _943 = fma(half(-float(_938)), half(1.0) - _870, half(1.0));
+    half _946 = _938 * _931;
+    half _962 = (half(2.0) * fma(_943, _870, _946 * _931)) / fma(_943, _943, _946 * _946);
+    float4 _987 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_870, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1013 = facet_environment.sample(facet_environmentSmplr, float3((((_656 * (_943 * _962)) + (_1747 * (_946 * _962))) - half3(_672))), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _891 = mix(half4(_987).xxx, half4(_987).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_987).y) - half(1.0))));
+    half3 _714 = half4(frame.lightDirection).xyz;
+    half3 _1126 = reflect(-half3(_672), _656);
+    half _1142 = clamp(dot(_1126, _714), half(0.0), half(1.0));
+    half _1145 = _1142 * _1142;
+    half4 _1808 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1145 * _1145, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1157 = _1808.x;
+    float3 _1202 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1205 = dot(_1202, _1202);
+    float3 _1210 = _1202 * rsqrt(fast::max(_1205, 9.9999999392252902907785028219223e-09));
+    float _1214 = _1205 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1219 = fast::clamp(fma(-_1214, _1214, 1.0), 0.0, 1.0);
+    float _1238 = fast::clamp(fma(dot(-_1210, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1370 = clamp(dot(_1126, half3(_1210)), half(0.0), half(1.0));
+    half _1373 = _1370 * _1370;
+    half4 _1833 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1373 * _1373, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1385 = _1833.x;
+    float3 _1430 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1433 = dot(_1430, _1430);
+    float3 _1438 = _1430 * rsqrt(fast::max(_1433, 9.9999999392252902907785028219223e-09));
+    float _1442 = _1433 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1447 = fast::clamp(fma(-_1442, _1442, 1.0), 0.0, 1.0);
+    float _1466 = fast::clamp(fma(dot(-_1438, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1598 = clamp(dot(_1126, half3(_1438)), half(0.0), half(1.0));
+    half _1601 = _1598 * _1598;
+    half4 _1859 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1601 * _1601, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1613 = _1859.x;
+    half3 _1622 = (fma(half4(_1013).xyz, _891, min((_891 * ((_1157 * _1157) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_656, _714), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_891 * ((_1385 * _1385) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1219) * half(_1219)) / fast::max(_1205, 9.9999997473787516355514526367188e-05)) * half(_1238)) * half(_1238)), float3(65504.0))) * clamp(dot(_656, half3(_1210)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_891 * ((_1613 * _1613) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1447) * half(_1447)) / fast::max(_1433, 9.9999997473787516355514526367188e-05)) * half(_1466)) * half(_1466)), float3(65504.0))) * clamp(dot(_656, half3(_1438)), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1622, half(1.0)));
+    return out;
+}
+
