@@ -55,47 +55,46 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _672 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
     half3 _796 = half4(in.v_tangent).xyz;
     half _849 = max(dot(_656, half3(_672)), half(9.9999997473787516355514526367188e-05));
-    half _959 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
-    half3 _1582;
-    if (float(_959) >= 0.0)
+    half _958 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
+    half3 _1581;
+    if (float(_958) >= 0.0)
     {
-        _1582 = _796;
+        _1581 = _796;
     }
     else
     {
-        _1582 = cross(_656, _796);
+        _1581 = cross(_656, _796);
     }
-    half _910 = dot(_1582, half3(_672));
-    half _917 = min(abs(_959) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
+    half _910 = dot(_1581, half3(_672));
+    half _917 = min(abs(_958) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
     half _922 = fma(half(-float(_917)), half(1.0) - _849, half(1.0));
     half _925 = _917 * _910;
-    half _941 = (half(2.0) * fma(_922, _849, _925 * _910)) / fma(_922, _922, _925 * _925);
-    float4 _966 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_849, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _992 = facet_environment.sample(facet_environmentSmplr, float3((((_656 * (_922 * _941)) + (_1582 * (_925 * _941))) - half3(_672))), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _870 = mix(half4(_966).xxx, half4(_966).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_966).y) - half(1.0))));
-    float3 _1037 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1040 = dot(_1037, _1037);
-    float3 _1045 = _1037 * rsqrt(fast::max(_1040, 9.9999999392252902907785028219223e-09));
-    float _1049 = _1040 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1054 = fast::clamp(fma(-_1049, _1049, 1.0), 0.0, 1.0);
-    float _1073 = fast::clamp(fma(dot(-_1045, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1189 = reflect(-half3(_672), _656);
-    half _1205 = clamp(dot(_1189, half3(_1045)), half(0.0), half(1.0));
-    half _1208 = _1205 * _1205;
-    half4 _1654 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1208 * _1208, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1220 = _1654.x;
-    float3 _1265 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1268 = dot(_1265, _1265);
-    float3 _1273 = _1265 * rsqrt(fast::max(_1268, 9.9999999392252902907785028219223e-09));
-    float _1277 = _1268 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1282 = fast::clamp(fma(-_1277, _1277, 1.0), 0.0, 1.0);
-    float _1301 = fast::clamp(fma(dot(-_1273, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half _1433 = clamp(dot(_1189, half3(_1273)), half(0.0), half(1.0));
-    half _1436 = _1433 * _1433;
-    half4 _1680 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1436 * _1436, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1448 = _1680.x;
-    half3 _1457 = fma(half4(_992).xyz, _870, min((_870 * ((_1220 * _1220) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1054) * half(_1054)) / fast::max(_1040, 9.9999997473787516355514526367188e-05)) * half(_1073)) * half(_1073)), float3(65504.0))) * clamp(dot(_656, half3(_1045)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_870 * ((_1448 * _1448) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1282) * half(_1282)) / fast::max(_1268, 9.9999997473787516355514526367188e-05)) * half(_1301)) * half(_1301)), float3(65504.0))) * clamp(dot(_656, half3(_1273)), half(0.0), half(1.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1457, half(1.0)));
+    float4 _965 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_849, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _991 = facet_environment.sample(facet_environmentSmplr, float3(((((_656 * _922) + (_1581 * _925)) * (half(512.0) * fma(_922, _849, _925 * _910))) - (half3(_672) * (half(256.0) * fma(_922, _922, _925 * _925))))), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _870 = mix(half4(_965).xxx, half4(_965).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_965).y) - half(1.0))));
+    float3 _1036 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1039 = dot(_1036, _1036);
+    float3 _1044 = _1036 * rsqrt(fast::max(_1039, 9.9999999392252902907785028219223e-09));
+    float _1048 = _1039 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1053 = fast::clamp(fma(-_1048, _1048, 1.0), 0.0, 1.0);
+    float _1072 = fast::clamp(fma(dot(-_1044, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half3 _1188 = reflect(-half3(_672), _656);
+    half _1204 = clamp(dot(_1188, half3(_1044)), half(0.0), half(1.0));
+    half _1207 = _1204 * _1204;
+    half4 _1654 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1207 * _1207, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1219 = _1654.x;
+    float3 _1264 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1267 = dot(_1264, _1264);
+    float3 _1272 = _1264 * rsqrt(fast::max(_1267, 9.9999999392252902907785028219223e-09));
+    float _1276 = _1267 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1281 = fast::clamp(fma(-_1276, _1276, 1.0), 0.0, 1.0);
+    float _1300 = fast::clamp(fma(dot(-_1272, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1432 = clamp(dot(_1188, half3(_1272)), half(0.0), half(1.0));
+    half _1435 = _1432 * _1432;
+    half4 _1680 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1435 * _1435, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1447 = _1680.x;
+    half3 _1456 = fma(half4(_991).xyz, _870, min((_870 * ((_1219 * _1219) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1053) * half(_1053)) / fast::max(_1039, 9.9999997473787516355514526367188e-05)) * half(_1072)) * half(_1072)), float3(65504.0))) * clamp(dot(_656, half3(_1044)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_870 * ((_1447 * _1447) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1281) * half(_1281)) / fast::max(_1267, 9.9999997473787516355514526367188e-05)) * half(_1300)) * half(_1300)), float3(65504.0))) * clamp(dot(_656, half3(_1272)), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1456, half(1.0)));
     return out;
 }
 

@@ -36,34 +36,33 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     float3 _641 = fast::normalize(in.v_toEye);
     float3 _746 = in.v_tangent.xyz - (_637 * dot(_637, in.v_tangent.xyz));
     float _748 = _637.z;
-    float3 _1244;
+    float3 _1243;
     if (abs(_748) < 0.5)
     {
-        _1244 = float3(-_637.y, _637.x, 0.0);
+        _1243 = float3(-_637.y, _637.x, 0.0);
     }
     else
     {
-        _1244 = float3(0.0, -_748, _637.y);
+        _1243 = float3(0.0, -_748, _637.y);
     }
-    float3 _775 = fast::normalize(select(_1244, _746, bool3(dot(_746, _746) > 0.001000000047497451305389404296875)));
+    float3 _775 = fast::normalize(select(_1243, _746, bool3(dot(_746, _746) > 0.001000000047497451305389404296875)));
     float _1008 = fast::max(dot(_637, _641), 9.9999997473787516355514526367188e-05);
-    float _1117 = fast::clamp(params.anisotropy, -1.0, 1.0);
-    float3 _1246;
-    if (_1117 >= 0.0)
+    float _1116 = fast::clamp(params.anisotropy, -1.0, 1.0);
+    float3 _1245;
+    if (_1116 >= 0.0)
     {
-        _1246 = _775;
+        _1245 = _775;
     }
     else
     {
-        _1246 = cross(_637, _775);
+        _1245 = cross(_637, _775);
     }
-    float _1068 = dot(_1246, _641);
-    float _1075 = fast::min(abs(_1117) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
+    float _1068 = dot(_1245, _641);
+    float _1075 = fast::min(abs(_1116) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
     float _1080 = fma(-_1075, 1.0 - _1008, 1.0);
     float _1083 = _1075 * _1068;
-    float _1099 = (2.0 * fma(_1080, _1008, _1083 * _1068)) / fma(_1080, _1080, _1083 * _1083);
-    float4 _1124 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1008, params.facet_perceptualRoughness), level(0.0));
-    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, (((_637 * (_1080 * _1099)) + (_1246 * (_1083 * _1099))) - _641), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_1124.xxx, _1124.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1124.y) - 1.0)))), 1.0);
+    float4 _1123 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1008, params.facet_perceptualRoughness), level(0.0));
+    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, ((((_637 * _1080) + (_1245 * _1083)) * (512.0 * fma(_1080, _1008, _1083 * _1068))) - (_641 * (256.0 * fma(_1080, _1080, _1083 * _1083)))), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_1123.xxx, _1123.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1123.y) - 1.0)))), 1.0);
     return out;
 }
 

@@ -55,16 +55,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _935 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
     float3 _1077 = in.v_tangent.xyz - (_929 * dot(_929, in.v_tangent.xyz));
     float _1079 = _929.z;
-    float3 _2180;
+    float3 _2179;
     if (abs(_1079) < 0.5)
     {
-        _2180 = float3(-_929.y, _929.x, 0.0);
+        _2179 = float3(-_929.y, _929.x, 0.0);
     }
     else
     {
-        _2180 = float3(0.0, -_1079, _929.y);
+        _2179 = float3(0.0, -_1079, _929.y);
     }
-    float3 _1106 = fast::normalize(select(_2180, _1077, bool3(dot(_1077, _1077) > 0.001000000047497451305389404296875)));
+    float3 _1106 = fast::normalize(select(_2179, _1077, bool3(dot(_1077, _1077) > 0.001000000047497451305389404296875)));
     float _955 = fast::max(dot(_929, _935), 9.9999997473787516355514526367188e-05);
     float3 _1119 = cross(_929, _1106);
     float _1170 = fast::clamp(params.anisotropy, -1.0, 1.0);
@@ -73,42 +73,41 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float2 _1127 = _1165 * 128.0;
     float _1133 = 0.3183098733425140380859375 * (_1125.x * _1125.y);
     float _1149 = length(float3(_1127 * float2(dot(_1106, _935), dot(_1119, _935)), 128.0 * _955));
-    float3 _2196 = select(_1119, _1106, bool3(_1170 >= 0.0));
-    float _1399 = dot(_2196, _935);
+    float3 _2195 = select(_1119, _1106, bool3(_1170 >= 0.0));
+    float _1399 = dot(_2195, _935);
     float _1406 = fast::min(abs(_1170) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
     float _1411 = fma(-_1406, 1.0 - _955, 1.0);
     float _1414 = _1406 * _1399;
-    float _1430 = (2.0 * fma(_1411, _955, _1414 * _1399)) / fma(_1411, _1411, _1414 * _1414);
-    float4 _1455 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_955, params.facet_perceptualRoughness), level(0.0));
-    float3 _1525 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1528 = dot(_1525, _1525);
-    float3 _1533 = _1525 * rsqrt(fast::max(_1528, 9.9999999392252902907785028219223e-09));
-    float _1537 = _1528 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1542 = fast::clamp(fma(-_1537, _1537, 1.0), 0.0, 1.0);
-    float _1561 = fast::clamp(fma(dot(-_1533, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1667 = fast::normalize(_935 + _1533);
-    float _1617 = fast::clamp(dot(_929, _1533), 0.0, 1.0);
-    float _1621 = fast::clamp(dot(_929, _1667), 0.0, 1.0);
-    float2 _1684 = float2(dot(_1106, _1667), dot(_1119, _1667)) * _1125;
-    float _1692 = 1.0 / fma(_1621, _1621, dot(_1684, _1684));
-    float _1731 = 1.0 - fast::clamp(dot(_1533, _1667), 0.0, 1.0);
-    float _1734 = _1731 * _1731;
-    float3 _1742 = float3(1.0) - float3(params.facet_f0);
-    float3 _1799 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1802 = dot(_1799, _1799);
-    float3 _1807 = _1799 * rsqrt(fast::max(_1802, 9.9999999392252902907785028219223e-09));
-    float _1811 = _1802 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1816 = fast::clamp(fma(-_1811, _1811, 1.0), 0.0, 1.0);
-    float _1835 = fast::clamp(fma(dot(-_1807, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1941 = fast::normalize(_935 + _1807);
-    float _1891 = fast::clamp(dot(_929, _1807), 0.0, 1.0);
-    float _1895 = fast::clamp(dot(_929, _1941), 0.0, 1.0);
-    float2 _1958 = float2(dot(_1106, _1941), dot(_1119, _1941)) * _1125;
-    float _1966 = 1.0 / fma(_1895, _1895, dot(_1958, _1958));
-    float _2005 = 1.0 - fast::clamp(dot(_1807, _1941), 0.0, 1.0);
-    float _2008 = _2005 * _2005;
-    float3 _2038 = fma(facet_environment.sample(facet_environmentSmplr, (((_929 * (_1411 * _1430)) + (_2196 * (_1414 * _1430))) - _935), level(params.facet_perceptualRoughness * 4.0)).xyz, mix(_1455.xxx, _1455.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1455.y) - 1.0))), fast::min(((float3(params.facet_f0) + (_1742 * ((_1734 * _1734) * _1731))) * (((_1133 * _1692) * _1692) * (64.0 / fma(_1617, _1149, _955 * length(float3(_1127 * float2(dot(_1106, _1533), dot(_1119, _1533)), 128.0 * _1617)))))) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1542 * _1542) / fast::max(_1528, 9.9999997473787516355514526367188e-05)) * _1561) * _1561)) * _1617), float3(65504.0))) + fast::min(((float3(params.facet_f0) + (_1742 * ((_2008 * _2008) * _2005))) * (((_1133 * _1966) * _1966) * (64.0 / fma(_1891, _1149, _955 * length(float3(_1127 * float2(dot(_1106, _1807), dot(_1119, _1807)), 128.0 * _1891)))))) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1816 * _1816) / fast::max(_1802, 9.9999997473787516355514526367188e-05)) * _1835) * _1835)) * _1891), float3(65504.0));
-    out.fragColor = float4(_2038, 1.0);
+    float4 _1454 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_955, params.facet_perceptualRoughness), level(0.0));
+    float3 _1524 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1527 = dot(_1524, _1524);
+    float3 _1532 = _1524 * rsqrt(fast::max(_1527, 9.9999999392252902907785028219223e-09));
+    float _1536 = _1527 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1541 = fast::clamp(fma(-_1536, _1536, 1.0), 0.0, 1.0);
+    float _1560 = fast::clamp(fma(dot(-_1532, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1666 = fast::normalize(_935 + _1532);
+    float _1616 = fast::clamp(dot(_929, _1532), 0.0, 1.0);
+    float _1620 = fast::clamp(dot(_929, _1666), 0.0, 1.0);
+    float2 _1683 = float2(dot(_1106, _1666), dot(_1119, _1666)) * _1125;
+    float _1691 = 1.0 / fma(_1620, _1620, dot(_1683, _1683));
+    float _1730 = 1.0 - fast::clamp(dot(_1532, _1666), 0.0, 1.0);
+    float _1733 = _1730 * _1730;
+    float3 _1741 = float3(1.0) - float3(params.facet_f0);
+    float3 _1798 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1801 = dot(_1798, _1798);
+    float3 _1806 = _1798 * rsqrt(fast::max(_1801, 9.9999999392252902907785028219223e-09));
+    float _1810 = _1801 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1815 = fast::clamp(fma(-_1810, _1810, 1.0), 0.0, 1.0);
+    float _1834 = fast::clamp(fma(dot(-_1806, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1940 = fast::normalize(_935 + _1806);
+    float _1890 = fast::clamp(dot(_929, _1806), 0.0, 1.0);
+    float _1894 = fast::clamp(dot(_929, _1940), 0.0, 1.0);
+    float2 _1957 = float2(dot(_1106, _1940), dot(_1119, _1940)) * _1125;
+    float _1965 = 1.0 / fma(_1894, _1894, dot(_1957, _1957));
+    float _2004 = 1.0 - fast::clamp(dot(_1806, _1940), 0.0, 1.0);
+    float _2007 = _2004 * _2004;
+    float3 _2037 = fma(facet_environment.sample(facet_environmentSmplr, ((((_929 * _1411) + (_2195 * _1414)) * (512.0 * fma(_1411, _955, _1414 * _1399))) - (_935 * (256.0 * fma(_1411, _1411, _1414 * _1414)))), level(params.facet_perceptualRoughness * 4.0)).xyz, mix(_1454.xxx, _1454.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1454.y) - 1.0))), fast::min(((float3(params.facet_f0) + (_1741 * ((_1733 * _1733) * _1730))) * (((_1133 * _1691) * _1691) * (64.0 / fma(_1616, _1149, _955 * length(float3(_1127 * float2(dot(_1106, _1532), dot(_1119, _1532)), 128.0 * _1616)))))) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1541 * _1541) / fast::max(_1527, 9.9999997473787516355514526367188e-05)) * _1560) * _1560)) * _1616), float3(65504.0))) + fast::min(((float3(params.facet_f0) + (_1741 * ((_2007 * _2007) * _2004))) * (((_1133 * _1965) * _1965) * (64.0 / fma(_1890, _1149, _955 * length(float3(_1127 * float2(dot(_1106, _1806), dot(_1119, _1806)), 128.0 * _1890)))))) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1815 * _1815) / fast::max(_1801, 9.9999997473787516355514526367188e-05)) * _1834) * _1834)) * _1890), float3(65504.0));
+    out.fragColor = float4(_2037, 1.0);
     return out;
 }
 

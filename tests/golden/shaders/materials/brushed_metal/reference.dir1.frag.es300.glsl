@@ -129,8 +129,8 @@ float EoV=dot(e,v);
 float bend=min(abs(k)*clamp(5.0*perceptualRoughness,0.0,1.0),ANISOTROPY_BEND_MAX);
 float c1=1.0-bend*(1.0-NoV);
 float c2=bend*EoV;
-float twoMoV=2.0*(c1*NoV+c2*EoV)/(c1*c1+c2*c2);
-return(c1*twoMoV)*n+(c2*twoMoV)*e-v;
+float MoV=c1*NoV+c2*EoV;
+return(512.0*MoV)*(c1*n+c2*e)-(256.0*(c1*c1+c2*c2))*v;
 }
 const float ANISOTROPY_V_SCALE=128.0;
 vec3 shading_anisotropic_b;
