@@ -35,7 +35,7 @@ TierConfig preset(Tier tier) {
               3,
               true,
               ClearCoatModel::Ambient,
-              AnisotropyModel::BentIbl};
+              AnisotropyModel::None};
     case Tier::Low:
       return {SpecularModel::Lut,
               DiffuseModel::Vertex,
@@ -45,7 +45,7 @@ TierConfig preset(Tier tier) {
               2,
               true,
               ClearCoatModel::Ambient,
-              AnisotropyModel::BentIbl};
+              AnisotropyModel::None};
   }
   return {};
 }

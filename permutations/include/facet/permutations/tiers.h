@@ -39,8 +39,10 @@ inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "ambient",
 static_assert(sizeof kClearCoatModelNames / sizeof *kClearCoatModelNames == size_t(ClearCoatModel::None) + 1,
               "one name per ClearCoatModel, in its order");
 // Anisotropy of materials that write `anisotropy` (docs/material-models.md); a material without it
-// compiles the same shaders whatever this says. reference and high: GgxSmith; mid and low: BentIbl,
-// the form within half of high's cost (Mesa's Mali-G57 figures in docs/material-models.md).
+// compiles the same shaders whatever this says. reference and high: GgxSmith; mid and low: None. The
+// full lobe costs mid and low more than half of what it costs high (Mesa's Mali-G57), and BentIbl,
+// within that half, wins back 0.1 dB of the 19 dB they lose without it on matc eval's grid
+// (docs/material-models.md): the loss is the sun's highlight, which it leaves isotropic.
 //   GgxSmith  anisotropic GGX D (Burley 2012) with the matching height-correlated Smith visibility
 //             (Heitz 2014) for every light, in place of the tier's isotropic lobe, and the
 //             environment read along a bent reflection vector (chunks/anisotropy_ggx_smith.glsl,

@@ -34,8 +34,7 @@ struct main0_out
 {
     float3 v_worldPosition [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float4 v_tangent [[user(locn2)]];
-    float3 v_diffuseLight [[user(locn3)]];
+    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -43,7 +42,6 @@ struct main0_in
 {
     float3 a_position [[attribute(0)]];
     float3 a_normal [[attribute(1)]];
-    float4 a_tangent [[attribute(5)]];
     float4 a_instanceRow0 [[attribute(6)]];
     float4 a_instanceRow1 [[attribute(7)]];
     float4 a_instanceRow2 [[attribute(8)]];
@@ -57,30 +55,29 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _211 = _207.xyz;
     out.v_worldPosition = _211;
     float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _607;
+    float3 _579;
     if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
     {
-        _607 = -in.a_normal;
+        _579 = -in.a_normal;
     }
     else
     {
-        _607 = in.a_normal;
+        _579 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_607 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    float3 _432 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
-    float _435 = dot(_432, _432);
-    float3 _440 = _432 * rsqrt(fast::max(_435, 9.9999999392252902907785028219223e-09));
-    float _444 = _435 * float(frame.punctualLights[0].positionFalloff.w);
-    float _449 = fast::clamp(fma(-_444, _444, 1.0), 0.0, 1.0);
-    float _468 = fast::clamp(fma(dot(-_440, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _510 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
-    float _513 = dot(_510, _510);
-    float3 _518 = _510 * rsqrt(fast::max(_513, 9.9999999392252902907785028219223e-09));
-    float _522 = _513 * float(frame.punctualLights[1].positionFalloff.w);
-    float _527 = fast::clamp(fma(-_522, _522, 1.0), 0.0, 1.0);
-    float _546 = fast::clamp(fma(dot(-_518, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_449 * _449) / fast::max(_435, 9.9999997473787516355514526367188e-05)) * _468) * _468), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _440), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_527 * _527) / fast::max(_513, 9.9999997473787516355514526367188e-05)) * _546) * _546), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _518), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.v_normal = fast::normalize(_579 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    float3 _404 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
+    float _407 = dot(_404, _404);
+    float3 _412 = _404 * rsqrt(fast::max(_407, 9.9999999392252902907785028219223e-09));
+    float _416 = _407 * float(frame.punctualLights[0].positionFalloff.w);
+    float _421 = fast::clamp(fma(-_416, _416, 1.0), 0.0, 1.0);
+    float _440 = fast::clamp(fma(dot(-_412, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _482 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
+    float _485 = dot(_482, _482);
+    float3 _490 = _482 * rsqrt(fast::max(_485, 9.9999999392252902907785028219223e-09));
+    float _494 = _485 * float(frame.punctualLights[1].positionFalloff.w);
+    float _499 = fast::clamp(fma(-_494, _494, 1.0), 0.0, 1.0);
+    float _518 = fast::clamp(fma(dot(-_490, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_421 * _421) / fast::max(_407, 9.9999997473787516355514526367188e-05)) * _440) * _440), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _412), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_499 * _499) / fast::max(_485, 9.9999997473787516355514526367188e-05)) * _518) * _518), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _490), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _207;
     return out;
 }

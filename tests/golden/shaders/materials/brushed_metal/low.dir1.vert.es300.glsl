@@ -3,13 +3,11 @@ precision highp float;
 precision highp int;
 layout(location=0)in highp vec3 a_position;
 layout(location=1)in highp vec3 a_normal;
-layout(location=5)in highp vec4 a_tangent;
 layout(location=6)in highp vec4 a_instanceRow0;
 layout(location=7)in highp vec4 a_instanceRow1;
 layout(location=8)in highp vec4 a_instanceRow2;
 out highp vec3 v_toEye;
 out mediump vec3 v_normal;
-out mediump vec4 v_tangent;
 out mediump vec3 v_diffuseLight;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -51,7 +49,6 @@ highp vec3 row0=a_instanceRow0.xyz,row1=a_instanceRow1.xyz,row2=a_instanceRow2.x
 highp vec3 cofactor0=cross(row1,row2);
 highp vec3 objectNormal=dot(row0,cofactor0)<0.0?-a_normal:a_normal;
 v_normal=normalize(objectNormal*mat3(cofactor0,cross(row2,row0),cross(row0,row1)));
-v_tangent=vec4(a_tangent.xyz*mat3(row0,row1,row2),a_tangent.w);
 vec3 n=v_normal;
 vec3 irradiance=sh_irradiance_over_pi(n);
 irradiance+=frame.lightColor.rgb*(clamp(dot(n,frame.lightDirection.xyz),0.0,1.0)*0.31830988618);

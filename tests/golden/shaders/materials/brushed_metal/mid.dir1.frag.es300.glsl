@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_toEye;
 in mediump vec3 v_normal;
-in mediump vec4 v_tangent;
 in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
@@ -96,25 +95,6 @@ return mix(dfg.xxx,dfg.yyy,f0);
 vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
 }
-const float ANISOTROPY_BEND_MAX=0.9921875;
-vec3 shading_anisotropic_t;
-float anisotropy_strength(MaterialInputs material){
-return clamp(material.anisotropy,-1.0,1.0);
-}
-void anisotropy_frame(MaterialInputs material,vec3 n){
-vec3 t=v_tangent.xyz;
-shading_anisotropic_t=t;
-}
-vec3 anisotropic_reflection(MaterialInputs material,vec3 n,vec3 v,float NoV,float perceptualRoughness){
-float k=anisotropy_strength(material);
-vec3 e=k>=0.0?shading_anisotropic_t:cross(n,shading_anisotropic_t);
-float EoV=dot(e,v);
-float bend=min(abs(k)*clamp(5.0*perceptualRoughness,0.0,1.0),ANISOTROPY_BEND_MAX);
-float c1=1.0-bend*(1.0-NoV);
-float c2=bend*EoV;
-float MoV=c1*NoV+c2*EoV;
-return(512.0*MoV)*(c1*n+c2*e)-(256.0*(c1*c1+c2*c2))*v;
-}
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
 }
@@ -154,7 +134,7 @@ vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
 float perceptualRoughness=material_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
-vec3 r=anisotropic_reflection(material,n,v,NoV,perceptualRoughness);
+vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
 shading_energy_compensation=energy_compensation(dfg,f0);
@@ -178,7 +158,6 @@ shading_view_highp=normalize(v_toEye);
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-anisotropy_frame(material,shading_normal);
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));

@@ -34,8 +34,7 @@ struct main0_out
 {
     float3 v_toEye [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float4 v_tangent [[user(locn2)]];
-    float3 v_diffuseLight [[user(locn3)]];
+    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -43,7 +42,6 @@ struct main0_in
 {
     float3 a_position [[attribute(0)]];
     float3 a_normal [[attribute(1)]];
-    float4 a_tangent [[attribute(5)]];
     float4 a_instanceRow0 [[attribute(6)]];
     float4 a_instanceRow1 [[attribute(7)]];
     float4 a_instanceRow2 [[attribute(8)]];
@@ -56,25 +54,24 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
     float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _429;
+    float3 _400;
     if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
     {
-        _429 = -in.a_normal;
+        _400 = -in.a_normal;
     }
     else
     {
-        _429 = in.a_normal;
+        _400 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_429 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _435 = half3(out.v_normal);
-    half _335 = _435.y;
-    half3 _437 = half3(out.v_normal);
-    half _340 = _437.z;
-    half3 _439 = half3(out.v_normal);
-    half _345 = _439.x;
-    float3 _413 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_335))) + (frame.sh[2].xyz * float(_340))) + (frame.sh[3].xyz * float(_345))) + (((((frame.sh[4].xyz * (float(_345) * float(_335))) + (frame.sh[5].xyz * (float(_335) * float(_340)))) + (frame.sh[6].xyz * fma(3.0 * float(_340), float(_340), -1.0))) + (frame.sh[7].xyz * (float(_345) * float(_340)))) + (frame.sh[8].xyz * fma(float(_345), float(_345), -(float(_335) * float(_335))))), float3(0.0));
-    out.v_diffuseLight = _413 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.v_normal = fast::normalize(_400 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    half3 _406 = half3(out.v_normal);
+    half _306 = _406.y;
+    half3 _408 = half3(out.v_normal);
+    half _311 = _408.z;
+    half3 _410 = half3(out.v_normal);
+    half _316 = _410.x;
+    float3 _384 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_306))) + (frame.sh[2].xyz * float(_311))) + (frame.sh[3].xyz * float(_316))) + (((((frame.sh[4].xyz * (float(_316) * float(_306))) + (frame.sh[5].xyz * (float(_306) * float(_311)))) + (frame.sh[6].xyz * fma(3.0 * float(_311), float(_311), -1.0))) + (frame.sh[7].xyz * (float(_316) * float(_311)))) + (frame.sh[8].xyz * fma(float(_316), float(_316), -(float(_306) * float(_306))))), float3(0.0));
+    out.v_diffuseLight = _384 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }
