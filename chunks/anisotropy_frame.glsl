@@ -7,9 +7,9 @@
 //   (the `bent_ibl` form takes t₀ as it is: no projection, no normalization, no fallback. R below stays
 //   finite for any t (its bounds rest on c₁ alone); an interpolated tangent a little short of
 //   unit length or off the normal's plane bends the reflection a little less or off-axis, a zero
-//   tangent not at all. It is what keeps
-//   mid's and low's anisotropy within half of high's Mali-G57 budget: the frame costs 0.27
-//   cycles there, docs/material-models.md.)
+//   tangent not at all. It is what keeps the
+//   option within half of high's Mali-G57 cost in mid and low: the frame costs 0.27 cycles
+//   there, docs/material-models.md.)
 //   α_t = clamp(α (1 + k), α_min, 1),   α_b = clamp(α (1 − k), α_min, 1),   k = anisotropy ∈ [−1, 1]
 // The roughness mapping is the one Filament's PBR document (§4.9.1, "Anisotropic specular BRDF")
 // takes from Kulla and Conty, "Revisiting Physically Based Shading at Imageworks", SIGGRAPH 2017:
