@@ -51,9 +51,13 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     vec3 f0 = material_f0(material);
     float perceptualRoughness = material_perceptual_roughness(material);
     float NoV = max(dot(n, v), MIN_N_DOT_V);
+#if defined(FACET_ANISOTROPY)
+    vec3 r = anisotropic_reflection(material, n, v, NoV, perceptualRoughness);  // anisotropy_frame.glsl
+#else
     vec3 r = reflect(-v, n);
 #if defined(FACET_IBL_DOMINANT_DIRECTION)
     r = specular_dominant_direction(n, r, perceptualRoughness);
+#endif
 #endif
 #if defined(FACET_IBL_SPLIT_SUM)
     vec2 dfg = dfg_terms(NoV, perceptualRoughness);

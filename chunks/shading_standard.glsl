@@ -141,6 +141,12 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float LoH = clamp(dot(l, h), 0.0, 1.0);
 
+#if defined(FACET_ANISOTROPY_LOBE)
+    // The anisotropic lobe replaces the tier's (anisotropy_ggx_smith.glsl), without the energy
+    // compensation: the isotropic factor 1/E(α) on it (Filament's) reflects up to 1.74 of the
+    // light in a white furnace (anisotropy_ggx_smith.glsl has the figures).
+    vec3 specular = anisotropic_ggx_smith(NoV, NoL, NoH, l, h) * fresnel_schlick(f0, LoH);
+#else
 #if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
     vec3 specular = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, LoH, n, v, l, h, shading_specular_albedo);
 #else
@@ -148,6 +154,7 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
 #endif
 #if defined(FACET_ENERGY_COMPENSATION) && !defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
     specular *= shading_energy_compensation;  // (an albedo-scaled lobe's albedo carries it already)
+#endif
 #endif
     // fp16: the lobe is ≤ 65504 (saturated) but the outgoing light need not be: at a grazing
     // sun glint (n = h, n·v = n·l = c; specular_ggx_smith.glsl) f_s · E · n·l ≈ 1269 E / c at the

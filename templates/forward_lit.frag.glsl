@@ -39,6 +39,14 @@
 #if defined(FACET_CLEAR_COAT_GGX_KELEMEN)
 #include "clear_coat_ggx_kelemen.glsl"
 #endif
+// Anisotropy's forms (docs/material-models.md); a tier that drops it includes neither.
+#if defined(FACET_ANISOTROPY)
+#include "anisotropy_frame.glsl"
+#endif
+#if defined(FACET_ANISOTROPY_LOBE)
+#include "brdf_ggx.glsl"
+#include "anisotropy_ggx_smith.glsl"
+#endif
 #include "shading_standard.glsl"
 #if defined(FACET_IBL_SAMPLED)
 #include "ibl_sampled.glsl"
@@ -81,6 +89,14 @@ void main() {
     // vertex.normal reads in the surface program saw the interpolated normal; shading uses the
     // mapped one. Per-vertex diffuse (mid, low) was lit before any map: it keeps the vertex normal.
     shading_normal = tangent_to_world(material.normal);
+#endif
+#if defined(FACET_ANISOTROPY)
+    // The brushing's frame about the final shading normal, before the ambient and the lights.
+    anisotropy_frame(material, shading_normal);
+#endif
+#if defined(FACET_ANISOTROPY_LOBE)
+    anisotropy_setup(material, material_alpha(material), shading_normal,
+                     max(dot(shading_normal, shading_view), MIN_N_DOT_V), shading_view);
 #endif
 
 #if defined(FACET_VERTEX_DIFFUSE) && defined(FACET_SHADOW_CASCADES)

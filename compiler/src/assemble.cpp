@@ -61,8 +61,21 @@ bool usesClearCoatNormal(const AssemblyInput& in) {
   return shadesClearCoat(in) && in.material.surface.outputs.count("clearCoatNormal") > 0;
 }
 
-// Tangent-space outputs need the per-pixel tangent frame (normal_mapping.glsl).
-bool needsTangentFrame(const AssemblyInput& in) { return usesNormalOutput(in) || usesClearCoatNormal(in); }
+// A material writing `anisotropy` is anisotropic (lit only); the tier says in which form, or drops
+// it (permutations::AnisotropyModel).
+bool writesAnisotropy(const AssemblyInput& in) {
+  return in.material.shading == "lit" && in.material.surface.outputs.count("anisotropy") > 0;
+}
+
+bool shadesAnisotropy(const AssemblyInput& in) {
+  return writesAnisotropy(in) && in.tier.anisotropy != permutations::AnisotropyModel::None;
+}
+
+// Tangent-space outputs, and anisotropy's direction (the mesh's tangent by default), need the
+// per-pixel tangent frame (normal_mapping.glsl).
+bool needsTangentFrame(const AssemblyInput& in) {
+  return usesNormalOutput(in) || usesClearCoatNormal(in) || shadesAnisotropy(in);
+}
 
 // The world position reaches the fragment stage only where something there reads it: point
 // lights, or a surface program reading vertex.worldPosition. Otherwise the vertex stage sends the
@@ -199,6 +212,18 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
       s += "#define FACET_CLEAR_COAT_GGX_KELEMEN 1\n#define FACET_CLEAR_COAT_LOBE 1\n";
     if (in.tier.clearCoat == permutations::ClearCoatModel::Ambient) s += "#define FACET_CLEAR_COAT_AMBIENT 1\n";
     if (usesClearCoatNormal(in)) s += "#define FACET_MATERIAL_CLEAR_COAT_NORMAL 1\n";
+  }
+  if (writesAnisotropy(in)) {
+    const char* forms[] = {"its GGX/Smith lobe per light and the bent reflection vector",
+                           "the bent reflection vector, the tier's isotropic lobe per light", "dropped in this tier"};
+    s += "// Anisotropy: " + std::string(permutations::kAnisotropyModelNames[int(in.tier.anisotropy)]) + ", " +
+         forms[int(in.tier.anisotropy)] + " (docs/material-models.md).\n";
+    if (in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith)
+      s += "#define FACET_ANISOTROPY_LOBE 1\n#define FACET_ANISOTROPY 1\n";
+    if (in.tier.anisotropy == permutations::AnisotropyModel::BentIbl) s += "#define FACET_ANISOTROPY 1\n";
+    // Without it the direction is the mesh's tangent, with no frame to apply (anisotropy_frame.glsl).
+    if (shadesAnisotropy(in) && in.material.surface.outputs.count("anisotropyDirection") > 0)
+      s += "#define FACET_MATERIAL_ANISOTROPY_DIRECTION 1\n";
   }
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
@@ -421,9 +446,10 @@ bool samplesDfgLut(const AssemblyInput& in) {
 }
 
 // Every light of a lut tier reads the table (specular_lut_lobe.glsl): the sun and each point or
-// spot light.
+// spot light; unless the anisotropic lobe replaces the tier's (anisotropy_ggx_smith.glsl).
 bool samplesSpecularLut(const AssemblyInput& in) {
-  return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" &&
+  bool anisotropicLobe = shadesAnisotropy(in) && in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith;
+  return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" && !anisotropicLobe &&
          (in.key.directionalLight || in.key.pointLights > 0);
 }
 

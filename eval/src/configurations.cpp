@@ -69,6 +69,12 @@ const std::vector<Axis>& axes() {
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "clear_coat", o); },
        nullptr,
        [](const ir::Material& m) { return m.shading == "lit" && m.surface.outputs.count("clearCoat") > 0; }},
+      {"anisotropy",
+       {std::begin(permutations::kAnisotropyModelNames), std::end(permutations::kAnisotropyModelNames)},
+       [](const TierConfig& c) { return std::string(permutations::kAnisotropyModelNames[int(c.anisotropy)]); },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "anisotropy", o); },
+       nullptr,
+       [](const ir::Material& m) { return m.shading == "lit" && m.surface.outputs.count("anisotropy") > 0; }},
   };
   return list;
 }

@@ -40,6 +40,10 @@ const std::vector<OutputInfo>& outputs() {
       {"clearCoat", Type::Float, {0, 0, 0, 0}, true, "clearCoat"},
       {"clearCoatRoughness", Type::Float, {0, 0, 0, 0}, true, "clearCoat"},
       {"clearCoatNormal", Type::Vec3, {0, 0, 1, 0}, true, "clearCoat"},
+      // Anisotropy (Filament's): −1..1 (positive stretches the highlight along the direction,
+      // negative across it) and its direction in tangent space ((1, 0, 0): the mesh's tangent).
+      {"anisotropy", Type::Float, {0, 0, 0, 0}, true, "anisotropy"},
+      {"anisotropyDirection", Type::Vec3, {1, 0, 0, 0}, true, "anisotropy"},
   };
   return list;
 }
@@ -55,7 +59,8 @@ const TierChoices& tierChoices() {
       {"reference", "high", "mid", "low"},
       {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}},
        {"diffuse", {"pixel", "vertex"}},
-       {"clear_coat", {"ggx_kelemen", "ambient", "none"}}},
+       {"clear_coat", {"ggx_kelemen", "ambient", "none"}},
+       {"anisotropy", {"ggx_smith", "bent_ibl", "none"}}},
   };
   return choices;
 }

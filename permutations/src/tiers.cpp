@@ -14,7 +14,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               3,
               true,
-              ClearCoatModel::GgxKelemen};
+              ClearCoatModel::GgxKelemen,
+              AnisotropyModel::GgxSmith};
     case Tier::High:
       return {SpecularModel::GgxSmith,
               DiffuseModel::Pixel,
@@ -23,7 +24,8 @@ TierConfig preset(Tier tier) {
               AmbientModel::SplitSum,
               3,
               true,
-              ClearCoatModel::GgxKelemen};
+              ClearCoatModel::GgxKelemen,
+              AnisotropyModel::GgxSmith};
     case Tier::Mid:
       return {SpecularModel::FusedHammon,
               DiffuseModel::Vertex,
@@ -33,6 +35,7 @@ TierConfig preset(Tier tier) {
               3,
               true,
               ClearCoatModel::Ambient,
+              AnisotropyModel::None,
               ShadowFilter::OneTap};
     case Tier::Low:
       return {SpecularModel::Lut,
@@ -43,6 +46,7 @@ TierConfig preset(Tier tier) {
               2,
               true,
               ClearCoatModel::Ambient,
+              AnisotropyModel::None,
               ShadowFilter::OneTap};
   }
   return {};
@@ -65,6 +69,14 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
     for (size_t i = 0; i < std::size(kClearCoatModelNames); ++i) {
       if (option == kClearCoatModelNames[i]) {
         config->clearCoat = ClearCoatModel(i);
+        return true;
+      }
+    }
+  }
+  if (axis == "anisotropy") {
+    for (size_t i = 0; i < std::size(kAnisotropyModelNames); ++i) {
+      if (option == kAnisotropyModelNames[i]) {
+        config->anisotropy = AnisotropyModel(i);
         return true;
       }
     }

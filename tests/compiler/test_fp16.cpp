@@ -864,6 +864,51 @@ TEST_P(Fp16HardCase, EmulatedMobileTiersStayFiniteLitAndClose) {
   for (const auto& m : vkHalf->validationErrors()) ADD_FAILURE() << "Vulkan validation (float16 device): " << m;
 }
 
+// Renders each scene in `high` from a package of `material` built plainly and fp16-emulated, and
+// in `reference`; the emulated image against the plain one (lavapipe: high's highp form) and
+// against the reference must be finite, ≥ 50 dB, and lit wherever the plain one is.
+void expectHighFp16Above50Db(const char* what, const std::string& material, const std::string& packageName,
+                             std::span<const std::pair<const char*, std::string>> scenes) {
+  const std::string plainDir = test::scratchDir(std::string("fp16-") + what + "-plain"),
+                    emulatedDir = test::scratchDir(std::string("fp16-") + what + "-emulated");
+  for (auto [dir, emulate] : {std::pair{&plainDir, false}, {&emulatedDir, true}}) {
+    auto built = build(material, emulate);
+    ASSERT_TRUE(built);
+    std::string error;
+    ASSERT_TRUE(package::writeFile(*dir + "/" + packageName + ".matpkg", package::write(built->package), &error))
+        << error;
+  }
+  std::string error;
+  auto vk = runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  for (const auto& [name, json] : scenes) {
+    SCOPED_TRACE(name);
+    auto scene = runtime::parseScene(std::string(name) + ".json", json, &error);
+    ASSERT_TRUE(scene) << error;
+    auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out) {
+      scene->tier = tier;
+      auto frame = runtime::SceneFrame::prepare(*scene, dir, &error);
+      ASSERT_TRUE(frame) << error;
+      ASSERT_TRUE(vk->render(frame->frame(), out, &error)) << error;
+    };
+    runtime::FrameResult reference, plain, emulated;
+    render("reference", plainDir, &reference);
+    render("high", plainDir, &plain);
+    render("high", emulatedDir, &emulated);
+    ASSERT_FALSE(::testing::Test::HasFatalFailure());
+    Comparison own = compare(emulated, plain), ref = compare(emulated, reference);
+    std::printf(
+        "fp16 %s %-20s high fp16-emulated vs high fp32: PSNR %5.1f dB, max |dHDR| %9.4g | vs reference: "
+        "%5.1f dB; NaN/Inf %zu, black-where-lit %zu\n",
+        what, name, own.psnr, own.maxAbsHdr, ref.psnr, own.nonFinite, own.blackWhereLit);
+    EXPECT_EQ(own.nonFinite, 0u);
+    EXPECT_EQ(own.blackWhereLit, 0u);
+    EXPECT_GE(own.psnr, 50.0);
+    EXPECT_GE(ref.psnr, 50.0);
+  }
+  for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
+}
+
 // The clear coat's fp16 hazards (chunks/clear_coat_ggx_kelemen.glsl: D at the coat's roughness
 // floor, Kelemen's 1/(l·h)² at grazing) in `high`, fp16-emulated, against the same tier in fp32
 // (lavapipe: its highp form) and against `reference`: a smooth coat over a rough red metal,
@@ -883,14 +928,6 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
         clearCoatRoughness = params.coatRoughness
     }
 })";
-  const std::string plainDir = test::scratchDir("fp16-coat-plain"),
-                    emulatedDir = test::scratchDir("fp16-coat-emulated");
-  for (auto [dir, emulate] : {std::pair{&plainDir, false}, {&emulatedDir, true}}) {
-    auto built = build(material, emulate);
-    ASSERT_TRUE(built);
-    std::string error;
-    ASSERT_TRUE(package::writeFile(*dir + "/coat_case.matpkg", package::write(built->package), &error)) << error;
-  }
   const std::pair<const char*, std::string> scenes[] = {
       {"coat_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
                            "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
@@ -908,35 +945,51 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
            {"material": "coat_case", "position": [1.1, 0, 0], "params": {"coatRoughness": 0.2}}
          ]})"},
   };
-  std::string error;
-  auto vk = runtime::createVulkanBackend({true}, &error);
-  ASSERT_TRUE(vk) << error;
-  for (const auto& [name, json] : scenes) {
-    SCOPED_TRACE(name);
-    auto scene = runtime::parseScene(std::string(name) + ".json", json, &error);
-    ASSERT_TRUE(scene) << error;
-    auto render = [&](const char* tier, const std::string& dir, runtime::FrameResult* out) {
-      scene->tier = tier;
-      auto frame = runtime::SceneFrame::prepare(*scene, dir, &error);
-      ASSERT_TRUE(frame) << error;
-      ASSERT_TRUE(vk->render(frame->frame(), out, &error)) << error;
-    };
-    runtime::FrameResult reference, plain, emulated;
-    render("reference", plainDir, &reference);
-    render("high", plainDir, &plain);
-    render("high", emulatedDir, &emulated);
-    ASSERT_FALSE(HasFatalFailure());
-    Comparison own = compare(emulated, plain), ref = compare(emulated, reference);
-    std::printf(
-        "fp16 clear coat %-20s high fp16-emulated vs high fp32: PSNR %5.1f dB, max |dHDR| %9.4g | vs reference: "
-        "%5.1f dB; NaN/Inf %zu, black-where-lit %zu\n",
-        name, own.psnr, own.maxAbsHdr, ref.psnr, own.nonFinite, own.blackWhereLit);
-    EXPECT_EQ(own.nonFinite, 0u);
-    EXPECT_EQ(own.blackWhereLit, 0u);
-    EXPECT_GE(own.psnr, 50.0);
-    EXPECT_GE(ref.psnr, 50.0);
-  }
-  for (const auto& m : vk->validationErrors()) ADD_FAILURE() << "Vulkan validation: " << m;
+  expectHighFp16Above50Db("clear coat", material, "coat_case", scenes);
+}
+
+// Anisotropy's fp16 hazard (chunks/anisotropy_ggx_smith.glsl: α_t α_b at the roughness floor and
+// anisotropy ±1, and V at grazing views) in `high`, fp16-emulated, against its fp32 form and against
+// `reference`: a metal at roughness 0 (clamped to 0.089: α = 0.0079, α_b = α_min) and anisotropy 1
+// and −1, (a) seen from the front under the sun, (b) the grazing glint (the camera skimming a large
+// brushed sphere towards the sun), (c) rims lit from behind, (d) rougher brushing (0.35, 0.8) whose
+// bent reflection reads the environment.
+TEST(Fp16Anisotropy, HighAbove50DbAtItsHardCases) {
+  const char* material = R"(material brush_case {
+    shading lit
+    param roughness: float = 0.0 in [0, 1]
+    param anisotropy: float = 1.0 in [-1, 1]
+    surface {
+        baseColor = vec3(0.9, 0.9, 0.9)
+        metallic = 1.0
+        roughness = params.roughness
+        anisotropy = params.anisotropy
+    }
+})";
+  const std::pair<const char*, std::string> scenes[] = {
+      {"brush_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                            "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+         "objects": [
+           {"material": "brush_case", "position": [-1.1, 0, 0]},
+           {"material": "brush_case", "position": [1.1, 0, 0], "params": {"anisotropy": -1.0}}
+         ]})"},
+      {"brush_grazing_glint", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                  "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+         "objects": [{"material": "brush_case", "position": [0, -1000, 0], "radius": 1000}]})"},
+      {"brush_grazing_rims", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.85, 0.2, 0.5]") R"(,
+         "objects": [
+           {"material": "brush_case", "position": [-1.1, 0, 0]},
+           {"material": "brush_case", "position": [1.1, 0, 0], "params": {"anisotropy": -1.0}}
+         ]})"},
+      {"brush_rough", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                          "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+         "objects": [
+           {"material": "brush_case", "position": [-1.1, 0, 0], "params": {"roughness": 0.35, "anisotropy": 0.8}},
+           {"material": "brush_case", "position": [1.1, 0, 0], "params": {"roughness": 0.35, "anisotropy": -0.8}}
+         ]})"},
+  };
+  expectHighFp16Above50Db("anisotropy", material, "brush_case", scenes);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Fp16HardCase, ::testing::ValuesIn(kHardCases),

@@ -669,3 +669,62 @@ TEST(Tiers, ClearCoatFormsPerTierAndNoCoatCodeWithoutIt) {
   EXPECT_NE(esText(*mapped, "high.dir1", Stage::Vertex).find("v_tangent"), std::string::npos);
   EXPECT_NE(esText(*mapped, "high.dir1", Stage::Fragment).find("tangent_to_world"), std::string::npos);
 }
+
+// Anisotropy per tier (docs/material-models.md): reference and high replace the tier's lobe by the
+// anisotropic GGX/Smith one (its two divisions in place of ggx_smith's two, one more per pixel for
+// 1/α_t and 1/α_b: high stays within its budget of four) and bend the environment's reflection
+// vector (no division); mid and low drop it: exactly what the material without anisotropy costs,
+// no tangent; `bent_ibl` bends the reflection only (the tier's own lobe per light, the tangent as
+// interpolated: no normalization); a material without anisotropy has no anisotropy code and no
+// tangent in any tier; anisotropyDirection applies the tangent frame.
+TEST(Tiers, AnisotropyFormsPerTierAndNoCodeWithoutIt) {
+  const std::string surface = "param rough: float = 0.4 in [0, 1]\n param k: float = 0.8 in [-1, 1]\n";
+  auto bare = facet::test::buildText("material m { " + surface + " surface { roughness = params.rough } }");
+  auto brushed = facet::test::buildText("material m { " + surface +
+                                        " surface { roughness = params.rough\n anisotropy = params.k } }");
+  auto bent = facet::test::buildText(
+      "material m { tier mid { anisotropy = bent_ibl }\n tier low { anisotropy = "
+      "bent_ibl }\n " +
+      surface + " surface { roughness = params.rough\n anisotropy = params.k } }");
+  auto directed = facet::test::buildText("material m { " + surface +
+                                         " surface { roughness = params.rough\n anisotropy = params.k\n "
+                                         "anisotropyDirection = vec3(0.0, 1.0, 0.0) } }");
+  ASSERT_TRUE(bare && brushed && bent && directed);
+  for (const auto& v : bare->package.variants) {
+    EXPECT_EQ(esText(*bare, v.key, Stage::Fragment).find("anisotrop"), std::string::npos) << v.key;
+    EXPECT_EQ(esText(*bare, v.key, Stage::Vertex).find("v_tangent"), std::string::npos) << v.key;
+  }
+  for (const char* key : {"reference.dir1", "high.dir1"}) {
+    SCOPED_TRACE(key);
+    const std::string text = esText(*brushed, key, Stage::Fragment);
+    EXPECT_NE(text.find("anisotropic_reflection"), std::string::npos);
+    EXPECT_NE(text.find("anisotropic_ggx_smith"), std::string::npos);
+    EXPECT_NE(text.find("normalize(dot(t,t)"), std::string::npos);  // the projected, normalized frame
+    EXPECT_NE(esText(*brushed, key, Stage::Vertex).find("v_tangent"), std::string::npos);
+    auto with = costOf(spirvOf(*brushed, key, Stage::Fragment)), without = costOf(spirvOf(*bare, key, Stage::Fragment));
+    EXPECT_EQ(with.textureSamples, without.textureSamples);  // the same environment read, bent
+    EXPECT_EQ(with.divisions, without.divisions + 1);
+    EXPECT_LE(with.divisions, 4u);
+    EXPECT_GT(with.aluOps, without.aluOps);
+  }
+  for (const char* key : {"mid.dir1", "low.dir1"}) {
+    SCOPED_TRACE(key);
+    EXPECT_EQ(esText(*brushed, key, Stage::Fragment).find("anisotropic"), std::string::npos);
+    EXPECT_EQ(esText(*brushed, key, Stage::Vertex).find("v_tangent"), std::string::npos);
+    auto dropped = costOf(spirvOf(*brushed, key, Stage::Fragment)),
+         plain = costOf(spirvOf(*bare, key, Stage::Fragment));
+    EXPECT_EQ(dropped.aluOps, plain.aluOps);
+    EXPECT_EQ(dropped.scalarAluOps, plain.scalarAluOps);
+    EXPECT_EQ(dropped.textureSamples, plain.textureSamples);
+    const std::string text = esText(*bent, key, Stage::Fragment);
+    EXPECT_NE(text.find("anisotropic_reflection"), std::string::npos);
+    EXPECT_EQ(text.find("anisotropic_ggx_smith"), std::string::npos);
+    EXPECT_EQ(text.find("normalize(dot(t,t)"), std::string::npos);
+    auto bentCost = costOf(spirvOf(*bent, key, Stage::Fragment));
+    EXPECT_EQ(bentCost.divisions, plain.divisions);
+    EXPECT_EQ(bentCost.textureSamples, plain.textureSamples);
+    EXPECT_GT(bentCost.aluOps, plain.aluOps);
+  }
+  EXPECT_EQ(esText(*brushed, "high.dir1", Stage::Fragment).find("cross(v_normal"), std::string::npos);
+  EXPECT_NE(esText(*directed, "high.dir1", Stage::Fragment).find("cross(v_normal"), std::string::npos);
+}

@@ -153,6 +153,13 @@ TEST(EvalConfigurations, ReferenceFirstThenEachTierAndItsSingleSwaps) {
     if (c.axis == std::string("clear_coat")) coatSwaps.insert(c.name);
   EXPECT_EQ(coatSwaps, (std::set<std::string>{"high:clear_coat=ambient", "high:clear_coat=none",
                                               "low:clear_coat=ggx_kelemen", "low:clear_coat=none"}));
+  // Anisotropy likewise, only in materials that write anisotropy.
+  for (const auto& c : configs) EXPECT_NE(c.axis, std::string("anisotropy")) << c.name;
+  std::set<std::string> anisotropySwaps;
+  for (const auto& c : facet::eval::configurations(example("brushed_metal"), {Tier::High, Tier::Low}))
+    if (c.axis == std::string("anisotropy")) anisotropySwaps.insert(c.name);
+  EXPECT_EQ(anisotropySwaps, (std::set<std::string>{"high:anisotropy=bent_ibl", "high:anisotropy=none",
+                                                    "low:anisotropy=ggx_smith", "low:anisotropy=bent_ibl"}));
   // A material's override is part of its tier as shipped.
   auto overridden = checked(
       "material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");

@@ -228,6 +228,39 @@ TEST(Language, ClearCoatOutputsNeedClearCoat) {
   EXPECT_NE(d.find("error: unknown clear_coat option 'ambiant'; did you mean 'ambient'?"), std::string::npos) << d;
 }
 
+// anisotropyDirection counts wherever anisotropy is written; without it it is dropped with a
+// warning at its line, and anisotropy's tier choice is checked.
+TEST(Language, AnisotropyDirectionNeedsAnisotropy) {
+  std::string d;
+  auto brushed = checkText(R"(material m {
+    tier mid { anisotropy = none }
+    surface {
+        anisotropyDirection = vec3(0.0, 1.0, 0.0)
+        anisotropy = -0.5
+    }
+}
+)",
+                           &d);
+  ASSERT_TRUE(brushed) << d;
+  EXPECT_EQ(d, "");
+  EXPECT_EQ(brushed->surface.outputs.count("anisotropyDirection"), 1u);
+  auto bare = checkText(R"(material m {
+    surface {
+        anisotropyDirection = vec3(0.0, 1.0, 0.0)
+    }
+}
+)",
+                        &d);
+  ASSERT_TRUE(bare) << d;
+  EXPECT_NE(d.find("test.mat:3:9: warning: output 'anisotropyDirection' has no effect without 'anisotropy' "
+                   "[unused-output]"),
+            std::string::npos)
+      << d;
+  EXPECT_EQ(bare->surface.outputs.count("anisotropyDirection"), 0u);
+  d = diagnosticsFor("material m { tier low { anisotropy = bent_ib }\n surface { anisotropy = 1.0 } }");
+  EXPECT_NE(d.find("error: unknown anisotropy option 'bent_ib'; did you mean 'bent_ibl'?"), std::string::npos) << d;
+}
+
 TEST(Language, TierOverridesAreCheckedWhereTheyAreWritten) {
   std::string d = diagnosticsFor(R"(material m {
     tier reference { specular = zioma }

@@ -53,6 +53,37 @@ inline double clearCoatLobe(const Surface& s, double NoH, double LoH) {
          std::clamp(s.clearCoat, 0.0, 1.0);
 }
 
+// Anisotropy (chunks/anisotropy_frame.glsl, anisotropy_ggx_smith.glsl). (α_t, α_b) for α and
+// anisotropy k: Filament's mapping (from Kulla and Conty 2017), each clamped to [α_min, 1] as the chunk
+// does, α_min = 0.089².
+inline glm::dvec2 anisotropicAlpha(double alpha, double k) {
+  k = std::clamp(k, -1.0, 1.0);
+  return glm::clamp(alpha * glm::dvec2(1.0 + k, 1.0 - k), 0.089 * 0.089, 1.0);
+}
+
+// Burley 2012's anisotropic GGX D in the frame (t, b, n): 1 / (π α_t α_b ((t·h/α_t)² + (b·h/α_b)² + (n·h)²)²).
+inline double distributionGgxAnisotropic(double at, double ab, double ToH, double BoH, double NoH) {
+  double x = ToH / at, y = BoH / ab;
+  double s = x * x + y * y + NoH * NoH;
+  return 1.0 / (kPi * at * ab * s * s);
+}
+
+// Heitz 2014's height-correlated Smith visibility of the anisotropic GGX, G₂ / (4 n·l n·v).
+inline double visibilitySmithGgxCorrelatedAnisotropic(double at, double ab, double ToV, double BoV, double NoV,
+                                                      double ToL, double BoL, double NoL) {
+  double lambdaV = NoL * glm::length(glm::dvec3(at * ToV, ab * BoV, NoV));
+  double lambdaL = NoV * glm::length(glm::dvec3(at * ToL, ab * BoL, NoL));
+  return 0.5 / (lambdaV + lambdaL);
+}
+
+// D_aniso · V_aniso for unit v, l in the frame t = +x, b = +y, n = +z (n·v clamped as the chunk does).
+inline double anisotropicLobe(glm::dvec2 alpha, glm::dvec3 v, glm::dvec3 l) {
+  glm::dvec3 h = glm::normalize(v + l);
+  double NoV = std::max(v.z, 1e-4), NoL = std::clamp(l.z, 0.0, 1.0);
+  return distributionGgxAnisotropic(alpha.x, alpha.y, h.x, h.y, std::clamp(h.z, 0.0, 1.0)) *
+         visibilitySmithGgxCorrelatedAnisotropic(alpha.x, alpha.y, v.x, v.y, NoV, l.x, l.y, NoL);
+}
+
 // Outgoing pre-exposed radiance towards v, for one directional light (l towards the light,
 // lightColor pre-exposed) and a constant ambient radiance. specularScale is the tier's
 // multiple-scattering compensation, 1 + f0 (1/dfg.y − 1) (chunks/ibl_split_sum.glsl), or 1.

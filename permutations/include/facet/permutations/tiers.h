@@ -42,6 +42,23 @@ enum class ClearCoatModel { GgxKelemen, Ambient, None };
 inline constexpr const char* kClearCoatModelNames[] = {"ggx_kelemen", "ambient", "none"};
 static_assert(sizeof kClearCoatModelNames / sizeof *kClearCoatModelNames == size_t(ClearCoatModel::None) + 1,
               "one name per ClearCoatModel, in its order");
+// Anisotropy of materials that write `anisotropy` (docs/material-models.md); a material without it
+// compiles the same shaders whatever this says. reference and high: GgxSmith; mid and low: None. The
+// full lobe costs mid and low more than half of what it costs high (Mesa's Mali-G57), and BentIbl,
+// within that half, wins back 0.1 dB of the 19 dB they lose without it on matc eval's grid
+// (docs/material-models.md): the loss is the sun's highlight, which it leaves isotropic.
+//   GgxSmith  anisotropic GGX D (Burley 2012) with the matching height-correlated Smith visibility
+//             (Heitz 2014) for every light, in place of the tier's isotropic lobe, and the
+//             environment read along a bent reflection vector (chunks/anisotropy_ggx_smith.glsl,
+//             anisotropy_frame.glsl)
+//   BentIbl   the bent reflection vector only: the lights keep the tier's isotropic lobe
+//             (chunks/anisotropy_frame.glsl)
+//   None      anisotropy dropped from the shader
+enum class AnisotropyModel { GgxSmith, BentIbl, None };
+// The material language's names, indexed by AnisotropyModel (`tier mid { anisotropy = none }`).
+inline constexpr const char* kAnisotropyModelNames[] = {"ggx_smith", "bent_ibl", "none"};
+static_assert(sizeof kAnisotropyModelNames / sizeof *kAnisotropyModelNames == size_t(AnisotropyModel::None) + 1,
+              "one name per AnisotropyModel, in its order");
 
 // How a shadow receiver filters the sun's atlas (chunks/shadow_sun.glsl, docs/shadows.md): a 3×3
 // tent from 4 bilinear compare taps, or one compare tap (bilinear 2×2 where the device filters
@@ -57,6 +74,7 @@ struct TierConfig {
   int shBands = 3;                  // SH irradiance bands: 3 (9 coefficients) or 2 (4)
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
+  AnisotropyModel anisotropy = AnisotropyModel::GgxSmith;
   ShadowFilter shadowFilter = ShadowFilter::Tent3x3;
   int ambientSamples = 0;  // AmbientModel::Sampled: points per integral and pixel
   // The environment read along the lobe's dominant direction instead of the mirror direction
@@ -81,7 +99,7 @@ struct TierConfig {
 // docs/specular-tiers.md has the measurements.
 TierConfig preset(Tier tier);
 
-// Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat", option as in the
+// Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat" | "anisotropy", option as in the
 // material language). Returns false for names it does not know.
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
 
