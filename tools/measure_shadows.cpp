@@ -70,6 +70,11 @@ int main(int argc, char** argv) {
   visibility->excludes(shadowed)->excludes(unshadowed);
   app.add_option("--asset-root", assetRoot, "folder the scene's files may be read from (default: the scene's)");
   if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
+  // CLI11's range check lets NaN through (no comparison with it is true).
+  if (!(options.footprintRadius >= 0)) {
+    facet::cli::printError("--footprint: expected a radius in [0, 1000] metres");
+    return 2;
+  }
 
   std::vector<facet::cli::NamedFile> inputs{{"the scene", scenePath}}, outputs;
   for (const auto& [role, path] : {std::pair{"--visibility", visibilityPath}, std::pair{"--shadowed", shadowedPath},

@@ -60,7 +60,14 @@ std::optional<ShadowScene> parseShadowScene(const std::string& path, const std::
     }
   }
   // Only keys were removed: every JSON pointer the scene reader reports is still the file's.
-  std::optional<runtime::Scene> scene = runtime::parseScene(path, document->dump(), error, options);
+  std::string stripped;
+  try {
+    stripped = document->dump();
+  } catch (const json::exception& e) {  // the strict reader took only valid UTF-8: not expected
+    *error = path + ": error: " + e.what();
+    return std::nullopt;
+  }
+  std::optional<runtime::Scene> scene = runtime::parseScene(path, stripped, error, options);
   if (!scene) return std::nullopt;
   out.scene = std::move(*scene);
   out.casts.resize(out.scene.objects.size(), true);
