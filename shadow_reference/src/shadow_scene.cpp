@@ -1,11 +1,5 @@
 #include "facet/shadow_reference/shadow_scene.h"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 #include "facet/scene/json_document.h"
 
 namespace facet::shadow_reference {
@@ -77,29 +71,9 @@ std::optional<ShadowScene> parseShadowScene(const std::string& path, const std::
 
 std::optional<ShadowScene> loadShadowScene(const std::string& path, std::string* error,
                                            const runtime::SceneReadOptions& options) {
-  std::error_code ec;
-  auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) {
-    *error = path + ": error: cannot open the scene file: no such file";
-    return std::nullopt;
-  }
-  // A FIFO or device would block or never end: only regular files are read.
-  if (!std::filesystem::is_regular_file(status)) {
-    *error = path + ": error: cannot open the scene file: not a regular file";
-    return std::nullopt;
-  }
-  if (std::filesystem::file_size(path, ec) > (16u << 20)) {
-    *error = path + ": error: scene files are limited to 16 MiB";
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in || in.bad()) {
-    *error = path + ": error: cannot read the scene file: " + std::strerror(errno);
-    return std::nullopt;
-  }
-  return parseShadowScene(path, text.str(), error, options);
+  std::optional<std::string> text = runtime::readSceneFile(path, error);
+  if (!text) return std::nullopt;
+  return parseShadowScene(path, *text, error, options);
 }
 
 }  // namespace facet::shadow_reference

@@ -27,7 +27,7 @@ struct ShadowScene {
 // true or false, a `shadows` block that is not an object).
 std::optional<ShadowScene> parseShadowScene(const std::string& path, const std::string& text, std::string* error,
                                             const runtime::SceneReadOptions& options = {});
-// Reads the file first: a regular file of at most 16 MiB, as loadScene.
+// Reads the file first, as loadScene (runtime::readSceneFile).
 std::optional<ShadowScene> loadShadowScene(const std::string& path, std::string* error,
                                            const runtime::SceneReadOptions& options = {});
 
