@@ -6,8 +6,9 @@
 //             h_i drawn with density D(h)(n·h) (GGX: Walter et al. 2007, "Microfacet Models for
 //             Refraction through Rough Surfaces", eqs. 35–36), l_i = reflect(−v, h_i), and
 //             p(l) = D(h)(n·h) / (4 v·h) (the Jacobian of the reflection, eq. 14 there);
-//             f_s is the tier's own lobe (specular_lobe), so a tier's ambient is measured
-//             against the integral of the lobe it lights its sun with.
+//             f_s is the tier's own lobe (specular_lobe, or the anisotropic lobe that replaces
+//             it), so a tier's ambient is measured against the integral of the lobe it lights
+//             its sun with; the isotropic GGX density stays positive wherever either lobe is.
 //   diffuse   E(n)/π = 1/π ∫ L(l)(n·l) dl ≈ 1/N Σ L(l_j), l_j with density (n·l)/π
 // Points: the Hammersley set, the same for every pixel, so what error remains varies smoothly
 // over the image instead of as noise; eval reports the change from N to 4N samples.
@@ -75,7 +76,11 @@ highp vec3 sampled_specular_radiance(MaterialInputs material, highp vec3 n, high
         highp float NoH = cosTheta;
         highp float k = (NoH * NoH) * (a2 - 1.0) + 1.0;
         highp float pdfOverNoH = a2 / (PI * k * k);  // D(h); p(l) = D (n·h) / (4 v·h)
+#if defined(FACET_ANISOTROPY_LOBE)
+        highp vec3 lobe = anisotropic_ggx_smith(NoV, NoL, NoH, l, h) * fresnel_schlick(f0, VoH);
+#else
         highp vec3 lobe = specular_lobe(perceptualRoughness, alpha, NoV, NoL, NoH, VoH, n, v, l, h, f0);
+#endif
         sum += textureLod(facet_environment, l, 0.0).rgb * lobe * (NoL * 4.0 * VoH / (pdfOverNoH * NoH));
     }
     return sum / float(FACET_IBL_SAMPLES);

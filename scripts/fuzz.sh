@@ -7,7 +7,7 @@
 # tests/fuzz/regressions/, with the dictionary tests/fuzz/material.dict; then
 # tests/fuzz/fuzz_package from real packages (tests/fuzz/package_corpus/) and its past findings
 # (tests/fuzz/package_regressions/), most mutants resealed with a recomputed checksum; then
-# tests/fuzz/fuzz_scene from examples/scenes/ and tests/fuzz/fuzz_image from examples/scenes/textures/ and
+# tests/fuzz/fuzz_scene from examples/scenes/ (and tests/data/scenes/shadows/) and tests/fuzz/fuzz_image from examples/scenes/textures/ and
 # tests/fuzz/image_corpus/ (Radiance files), tests/fuzz/fuzz_ktx2 (KTX2 reader, ASTC decoding) from
 # tests/fuzz/ktx2_corpus/ and its past findings (tests/fuzz/ktx2_regressions/), tests/fuzz/fuzz_cube from examples/scenes/looks/ and
 # tests/fuzz/cube_corpus/, then tests/fuzz/fuzz_gltf from tests/fuzz/gltf_corpus/ and its
@@ -70,7 +70,7 @@ fuzz() {
 
 fuzz fuzz_material tests/fuzz/material.dict tests/fuzz/corpus tests/fuzz/regressions
 fuzz fuzz_package "" tests/fuzz/package_corpus tests/fuzz/package_regressions
-fuzz fuzz_scene "" examples/scenes
+fuzz fuzz_scene "" examples/scenes tests/data/scenes/shadows
 fuzz fuzz_image "" examples/scenes/textures tests/fuzz/image_corpus tests/fuzz/image_regressions
 fuzz fuzz_ktx2 "" tests/fuzz/ktx2_corpus tests/fuzz/ktx2_regressions
 fuzz fuzz_cube "" examples/scenes/looks tests/fuzz/cube_corpus

@@ -465,7 +465,7 @@ std::optional<Scene> parseScene(const std::string& path, const std::string& text
   return std::nullopt;
 }
 
-std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options) {
+std::optional<std::string> readSceneFile(const std::string& path, std::string* error) {
   std::error_code ec;
   auto status = std::filesystem::status(path, ec);
   if (!std::filesystem::exists(status)) {
@@ -492,7 +492,13 @@ std::optional<Scene> loadScene(const std::string& path, std::string* error, cons
     *error = path + ": error: cannot read the scene file: " + std::strerror(errno);
     return std::nullopt;
   }
-  return parseScene(path, text.str(), error, options);
+  return text.str();
+}
+
+std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options) {
+  std::optional<std::string> text = readSceneFile(path, error);
+  if (!text) return std::nullopt;
+  return parseScene(path, *text, error, options);
 }
 
 }  // namespace facet::runtime

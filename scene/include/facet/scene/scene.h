@@ -155,5 +155,7 @@ uint32_t sunShadowCascades(const Scene& s);
 std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,
                                 const SceneReadOptions& options = {});
 std::optional<Scene> loadScene(const std::string& path, std::string* error, const SceneReadOptions& options = {});
+// The text of a scene file, as loadScene reads it: a regular file of at most 16 MiB.
+std::optional<std::string> readSceneFile(const std::string& path, std::string* error);
 
 }  // namespace facet::runtime
