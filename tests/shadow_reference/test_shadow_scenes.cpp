@@ -14,7 +14,7 @@ namespace {
 
 const std::string kScene = R"({
   "sun": {"direction": [0, -1, 0], "castShadows": true},
-  "shadows": {"anything": "the renderer's"},
+  "shadows": {"cascades": 2},
   "objects": [
     {"mesh": "plane", "material": "red_plastic", "receiveShadows": false},
     {"material": "red_plastic", "castShadows": false},

@@ -83,7 +83,7 @@ TEST(RenderedVisibility, FromFramesIsTheLuminanceRatioAndDarkPixelsAreUnmeasured
   EXPECT_EQ(image->values, (std::vector<float>{188 / 255.0f, 0, 1, 4 / 255.0f}));
 }
 
-std::string tool() { return std::string(FACET_BINARY_DIR) + "/shadow_reference/facet-measure-shadows"; }
+std::string tool() { return facet::test::binaryDir() + "/shadow_reference/facet-measure-shadows"; }
 std::string scene(const std::string& name) {
   return test::sourceDir() + "/tests/data/scenes/shadows/" + name + ".json";
 }
