@@ -48,6 +48,7 @@ set(FACET_RUNTIME_HEADERS_gltf gltf_mesh.h)
 set(FACET_EXTERNAL_DEPENDENCIES
   "PkgConfig::ZSTD|pkg-config|libzstd"
   "PkgConfig::XXHASH|pkg-config|libxxhash"
+  "PkgConfig::JPEG|pkg-config|libjpeg"
   "PkgConfig::OSMESA|pkg-config|osmesa"
   "PkgConfig::EGL|pkg-config|egl"
   "PkgConfig::GLESV2|pkg-config|glesv2"
