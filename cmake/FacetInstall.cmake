@@ -116,6 +116,8 @@ install(TARGETS matc EXPORT FacetTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BIN
 install(TARGETS facet-eval RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # `matc texture` runs the facet-texture beside it in the same way (texture/tool/).
 install(TARGETS facet-texture RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# and `matc import` the facet-gltf-import beside it (runtime/gltf_import/).
+install(TARGETS facet-gltf-import RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT FacetTargets NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
 
 set(FACET_CONFIG_COMPONENT_DEPENDENCIES "")

@@ -56,9 +56,10 @@ bool checkAsset(const json& document, std::string* error) {
   return true;
 }
 
-// The required extensions this loader implements: KHR_mesh_quantization (integer attribute
-// types, read by gltf_mesh.cpp). Every other one is refused, as the glTF spec asks.
-constexpr const char* kImplementedExtensions[] = {"KHR_mesh_quantization"};
+// The required extensions Facet implements: KHR_mesh_quantization (integer attribute types, read
+// by gltf_mesh.cpp) and KHR_texture_transform (the materials `matc import` writes apply it:
+// gltf_materials.cpp). Every other one is refused, as the glTF spec asks.
+constexpr const char* kImplementedExtensions[] = {"KHR_mesh_quantization", "KHR_texture_transform"};
 
 bool checkExtensions(const json& document, std::string* error) {
   const json* required = member(document, "extensionsRequired");
@@ -76,7 +77,8 @@ bool checkExtensions(const json& document, std::string* error) {
     *error = "/extensionsRequired/" + std::to_string(i) + ": the file requires " +
              (name.is_string() ? "extension '" + scene::shownValue(name.get<std::string>()) + "'"
                                : std::string("an extension")) +
-             ", which this loader does not implement (it implements KHR_mesh_quantization only; the glTF spec says "
+             ", which this loader does not implement (it implements KHR_mesh_quantization and KHR_texture_transform; "
+             "the glTF spec says "
              "such a file must not be loaded)";
     return false;
   }

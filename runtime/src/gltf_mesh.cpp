@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <span>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -299,8 +300,17 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
   return true;
 }
 
+// The meshes being built: one for the whole file, or one per glTF material (the key: the
+// primitive's `material`, -1 for none) when split.
+struct Meshes {
+  bool split = false;
+  std::map<int, Mesh> byMaterial;
+
+  Mesh& of(const tinygltf::Primitive& p) { return byMaterial[split ? std::max(p.material, -1) : 0]; }
+};
+
 bool appendMesh(const tinygltf::Model& model, int index, const std::string& from, const Placement& placement,
-                Mesh* mesh, std::string* error) {
+                Meshes* meshes, std::string* error) {
   if (index < 0 || size_t(index) >= model.meshes.size()) {
     *error = from + ": mesh " + std::to_string(index) + " does not exist";
     return false;
@@ -308,7 +318,12 @@ bool appendMesh(const tinygltf::Model& model, int index, const std::string& from
   const tinygltf::Mesh& m = model.meshes[size_t(index)];
   for (size_t p = 0; p < m.primitives.size(); ++p) {
     const std::string pointer = "/meshes/" + std::to_string(index) + "/primitives/" + std::to_string(p);
-    if (!appendPrimitive(model, m.primitives[p], pointer, placement, mesh, error)) return false;
+    const int material = m.primitives[p].material;
+    if (meshes->split && material >= 0 && size_t(material) >= model.materials.size()) {
+      *error = pointer + "/material: material " + std::to_string(material) + " does not exist";
+      return false;
+    }
+    if (!appendPrimitive(model, m.primitives[p], pointer, placement, &meshes->of(m.primitives[p]), error)) return false;
   }
   return true;
 }
@@ -393,9 +408,9 @@ bool collectScene(const tinygltf::Model& model, int sceneIndex, std::vector<Inst
   return true;
 }
 
-}  // namespace
-
-std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options) {
+// loadGltfMesh, or loadGltfMeshesByMaterial when `split`.
+std::optional<std::map<int, Mesh>> loadMeshes(const std::string& path, bool split, std::string* error,
+                                              const GltfReadOptions& options) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
@@ -434,18 +449,20 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
   }
   Totals totals;
   ok = ok && checkTotals(*model, instances, budget, &totals, &why);
-  Mesh mesh;
-  if (ok) {
+  Meshes meshes{split, {}};
+  if (ok && !split) {
+    Mesh& mesh = meshes.byMaterial[0];
     mesh.vertices.reserve(size_t(totals.vertices) * abi::kVertexFloats);
     mesh.indices.reserve(size_t(totals.indices));
   }
   for (size_t i = 0; ok && i < instances.size(); ++i)
-    ok = appendMesh(*model, instances[i].mesh, instances[i].from, instances[i].placement, &mesh, &why);
+    ok = appendMesh(*model, instances[i].mesh, instances[i].from, instances[i].placement, &meshes, &why);
   if (!ok) {
     *error = path + ": error: " + why;
     return std::nullopt;
   }
-  if (mesh.indices.empty()) {
+  std::erase_if(meshes.byMaterial, [](const auto& entry) { return entry.second.indices.empty(); });
+  if (meshes.byMaterial.empty()) {
     *error = path + ": error: " +
              (scene >= 0 ? "/scenes/" + std::to_string(scene) + ": no triangles" : "/meshes: no triangles");
     return std::nullopt;
@@ -454,7 +471,20 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
   budget.indices -= totals.indices;
   budget.primitives -= totals.primitives;
   budget.fileBytes -= bytesRead;
-  return mesh;
+  return std::move(meshes.byMaterial);
+}
+
+}  // namespace
+
+std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options) {
+  auto meshes = loadMeshes(path, false, error, options);
+  if (!meshes) return std::nullopt;
+  return std::move(meshes->begin()->second);
+}
+
+std::optional<std::map<int, Mesh>> loadGltfMeshesByMaterial(const std::string& path, std::string* error,
+                                                            const GltfReadOptions& options) {
+  return loadMeshes(path, true, error, options);
 }
 
 }  // namespace facet::runtime
