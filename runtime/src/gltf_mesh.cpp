@@ -17,6 +17,7 @@
 #include "facet/runtime/mesh.h"
 #include "gltf_accessor.h"
 #include "gltf_source.h"
+#include "mikktspace_tangents.h"
 
 namespace facet::runtime {
 namespace {
@@ -300,6 +301,23 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
   return true;
 }
 
+// The UV set to generate a primitive's tangents from: that of its material's normal texture when
+// the primitive is normal-mapped but has no TANGENT (and has the normals and UVs to derive them
+// from); -1 otherwise.
+int tangentUvSet(const tinygltf::Model& model, const tinygltf::Primitive& p) {
+  if (p.attributes.count("TANGENT") || !p.attributes.count("NORMAL") || p.material < 0 ||
+      size_t(p.material) >= model.materials.size())
+    return -1;
+  const tinygltf::NormalTextureInfo& normal = model.materials[size_t(p.material)].normalTexture;
+  if (normal.index < 0) return -1;
+  int set = normal.texCoord;
+  // KHR_texture_transform's texCoord, when given, replaces the textureInfo's (gltf_materials.cpp).
+  if (auto t = normal.extensions.find("KHR_texture_transform");
+      t != normal.extensions.end() && t->second.Has("texCoord") && t->second.Get("texCoord").IsNumber())
+    set = t->second.Get("texCoord").GetNumberAsInt();
+  return (set == 0 || set == 1) && p.attributes.count("TEXCOORD_" + std::to_string(set)) ? set : -1;
+}
+
 // The meshes being built: one for the whole file, or one per glTF material (the key: the
 // primitive's `material`, -1 for none) when split.
 struct Meshes {
@@ -323,7 +341,14 @@ bool appendMesh(const tinygltf::Model& model, int index, const std::string& from
       *error = pointer + "/material: material " + std::to_string(material) + " does not exist";
       return false;
     }
-    if (!appendPrimitive(model, m.primitives[p], pointer, placement, &meshes->of(m.primitives[p]), error)) return false;
+    Mesh& target = meshes->of(m.primitives[p]);
+    const size_t firstVertex = target.vertices.size() / abi::kVertexFloats, firstIndex = target.indices.size();
+    if (!appendPrimitive(model, m.primitives[p], pointer, placement, &target, error)) return false;
+    const int tangentSet = tangentUvSet(model, m.primitives[p]);
+    if (tangentSet >= 0 && !generateMikkTSpaceTangents(&target, firstVertex, firstIndex, tangentSet)) {
+      *error = pointer + ": MikkTSpace could not generate its tangents (out of memory)";
+      return false;
+    }
   }
   return true;
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <set>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/runtime/gl_backend.h"
 #include "facet/runtime/gltf_materials.h"
 #include "facet/runtime/render_backend.h"
@@ -158,6 +159,43 @@ TEST(GltfMaterials, SceneObjectsPickPrimitivesByMaterial) {
   EXPECT_EQ(meshes->size(), 6u);
   EXPECT_EQ(meshes->at(2).indices.size(), 6u);
   EXPECT_EQ(meshes->at(-1).indices.size(), 6u);
+}
+
+// A normal-mapped primitive without TANGENT gets MikkTSpace's, from the normal texture's UV set,
+// after its node's transform: the quads turned 90° about z have u along +y, and v down the
+// image along +x, so the tangent is +y and the bitangent w · (n × t) = −x points up the image
+// (green's direction in glTF's normal maps). A primitive that is not normal-mapped keeps the
+// default tangent.
+TEST(GltfMaterials, MissingTangentsOfNormalMappedPrimitivesAreMikkTSpaces) {
+  const std::string dir = facet::test::scratchDir("gltf-mikktspace");
+  std::string text = facet::test::readText(featuresFile());
+  for (size_t at; (at = text.find(R"("TANGENT": 2, )")) != std::string::npos;) text.erase(at, 14);
+  const std::string node = R"("nodes": [{"mesh": 0}])";
+  ASSERT_NE(text.find(node), std::string::npos);
+  text.replace(text.find(node), node.size(), R"("nodes": [{"mesh": 0, "rotation": [0, 0, 0.70710678, 0.70710678]}])");
+  std::ofstream(dir + "/f.gltf") << text;
+  fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png");
+  std::string error;
+  auto meshes = facet::runtime::loadGltfMeshesByMaterial(dir + "/f.gltf", &error);
+  ASSERT_TRUE(meshes) << error;
+  const auto tangentsOf = [&](int material) {
+    // The tangents of the vertices the material's triangles use (every primitive of the file
+    // shares one accessor, so each brings all 24 vertices and indexes 4).
+    std::vector<std::array<float, 4>> out;
+    const facet::runtime::Mesh& m = meshes->at(material);
+    for (uint32_t index : m.indices) {
+      const float* t = &m.vertices[size_t(index) * facet::abi::kVertexFloats + 14];
+      out.push_back({t[0], t[1], t[2], t[3]});
+    }
+    return out;
+  };
+  for (const auto& t : tangentsOf(0)) {
+    EXPECT_NEAR(t[0], 0, 1e-5);
+    EXPECT_NEAR(t[1], 1, 1e-5);
+    EXPECT_NEAR(t[2], 0, 1e-5);
+    EXPECT_EQ(t[3], 1);
+  }
+  for (const auto& t : tangentsOf(2)) EXPECT_EQ(t, (std::array<float, 4>{1, 0, 0, 1}));
 }
 
 int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
