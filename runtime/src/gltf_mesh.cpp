@@ -257,6 +257,23 @@ struct Instance {
   std::string from;  // the JSON pointer naming the mesh, for errors
 };
 
+// The UV set to generate a primitive's tangents from: that of its material's normal texture when
+// the primitive is normal-mapped but has no TANGENT (and has the normals and UVs to derive them
+// from); -1 otherwise.
+int tangentUvSet(const tinygltf::Model& model, const tinygltf::Primitive& p) {
+  if (p.attributes.count("TANGENT") || !p.attributes.count("NORMAL") || p.material < 0 ||
+      size_t(p.material) >= model.materials.size())
+    return -1;
+  const tinygltf::NormalTextureInfo& normal = model.materials[size_t(p.material)].normalTexture;
+  if (normal.index < 0) return -1;
+  int set = normal.texCoord;
+  // KHR_texture_transform's texCoord, when given, replaces the textureInfo's (gltf_materials.cpp).
+  if (auto t = normal.extensions.find("KHR_texture_transform");
+      t != normal.extensions.end() && t->second.Has("texCoord") && t->second.Get("texCoord").IsNumber())
+    set = t->second.Get("texCoord").GetNumberAsInt();
+  return (set == 0 || set == 1) && p.attributes.count("TEXCOORD_" + std::to_string(set)) ? set : -1;
+}
+
 // What the instances' primitives will build, from the accessors' declared counts.
 struct Totals {
   uint64_t vertices = 0;
@@ -287,7 +304,9 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
     if (instance.mesh < 0 || size_t(instance.mesh) >= model.meshes.size()) continue;  // appendMesh names it
     for (const tinygltf::Primitive& p : model.meshes[size_t(instance.mesh)].primitives) {
       const auto position = p.attributes.find("POSITION");
-      const uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
+      uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
+      // Generated tangents may split vertices (mikktspace_tangents.h): at most one per corner.
+      if (tangentUvSet(model, p) >= 0) count = std::max(count, p.indices >= 0 ? declared(p.indices) : count);
       // Each term is clamped, so the sums cannot wrap however many primitives there are.
       sum.vertices += std::min(count, left.vertices + 1);
       sum.indices += std::min(p.indices >= 0 ? declared(p.indices) : count, left.indices + 1);
@@ -299,23 +318,6 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
   }
   *totals = sum;
   return true;
-}
-
-// The UV set to generate a primitive's tangents from: that of its material's normal texture when
-// the primitive is normal-mapped but has no TANGENT (and has the normals and UVs to derive them
-// from); -1 otherwise.
-int tangentUvSet(const tinygltf::Model& model, const tinygltf::Primitive& p) {
-  if (p.attributes.count("TANGENT") || !p.attributes.count("NORMAL") || p.material < 0 ||
-      size_t(p.material) >= model.materials.size())
-    return -1;
-  const tinygltf::NormalTextureInfo& normal = model.materials[size_t(p.material)].normalTexture;
-  if (normal.index < 0) return -1;
-  int set = normal.texCoord;
-  // KHR_texture_transform's texCoord, when given, replaces the textureInfo's (gltf_materials.cpp).
-  if (auto t = normal.extensions.find("KHR_texture_transform");
-      t != normal.extensions.end() && t->second.Has("texCoord") && t->second.Get("texCoord").IsNumber())
-    set = t->second.Get("texCoord").GetNumberAsInt();
-  return (set == 0 || set == 1) && p.attributes.count("TEXCOORD_" + std::to_string(set)) ? set : -1;
 }
 
 // The meshes being built: one for the whole file, or one per glTF material (the key: the

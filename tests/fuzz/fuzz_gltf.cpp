@@ -1,4 +1,5 @@
-// libFuzzer target for the glTF loader (runtime::loadGltfMesh): the .gltf JSON, the .glb container
+// libFuzzer target for the glTF loader (runtime::loadGltfMesh, and runtime::readGltfMaterials, the
+// material path of `matc import`, with MikkTSpace's tangents): the .gltf JSON, the .glb container
 // and an external buffer, from one input split as tests/fuzz/gltf_fuzz_input.h says. Any bytes end
 // in a mesh or an error naming the file, never a crash, a hang, a sanitizer report or an
 // allocation past the loader's limits. tinygltf is compiled in (tinygltf_impl.cpp) with the same
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <string>
 
+#include "facet/runtime/gltf_materials.h"
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/vertex_packing.h"
@@ -41,6 +43,13 @@ const std::string& workFolder() {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = facet::fuzz::writeGltfFuzzInput({reinterpret_cast<const char*>(data), size}, workFolder());
   std::string error;
+  // The material path (matc import's reader and the .mat text it writes) on the same files.
+  if (auto materials = facet::runtime::readGltfMaterials(path, &error)) {
+    for (const auto& m : materials->materials) (void)facet::runtime::gltfMaterialSource(m.features);
+  } else if (error.rfind(path + ":", 0) != 0) {
+    std::fprintf(stderr, "fuzz_gltf: materials rejected without naming the file: %.300s\n", error.c_str());
+    std::abort();
+  }
   auto mesh = facet::runtime::loadGltfMesh(path, &error);
   if (!mesh && error.rfind(path + ":", 0) != 0) {
     std::fprintf(stderr, "fuzz_gltf: rejected without naming the file: %.300s\n", error.c_str());

@@ -17,6 +17,7 @@
 #include "facet/runtime/scene_frame.h"
 #include "facet/runtime/vulkan_backend.h"
 #include "test_compile.h"
+#include "test_images.h"
 #include "test_support.h"
 
 namespace {
@@ -244,6 +245,24 @@ TEST(GltfMaterials, ImportedSceneRendersOnVulkanAndGles) {
   EXPECT_LE(double(beyond1), 0.001 * double(a.ldr.size()));
   EXPECT_TRUE(vk->validationErrors().empty());
   EXPECT_TRUE(gl->validationErrors().empty());
+
+  // Each tier against `reference` (Vulkan; docs/gltf.md quotes these lines).
+  facet::runtime::FrameResult reference;
+  for (const char* tier : {"reference", "high", "mid", "low"}) {
+    scene->tier = tier;
+    auto tierFrame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+    ASSERT_TRUE(tierFrame) << error;
+    facet::runtime::FrameResult result;
+    ASSERT_TRUE(vk->render(tierFrame->frame(), &result, &error)) << error;
+    if (std::string(tier) == "reference") {
+      reference = std::move(result);
+      continue;
+    }
+    const double db = facet::test::psnr(reference.ldr, result.ldr);
+    std::printf("features.gltf %s vs reference: PSNR %.1f dB\n", tier, db);
+    // Every tier lights these flat quads close to the reference (measured: docs/gltf.md).
+    EXPECT_GE(db, 30.0) << tier;
+  }
 }
 
 }  // namespace
