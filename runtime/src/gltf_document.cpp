@@ -109,50 +109,6 @@ int hexDigit(char c) {
   return -1;
 }
 
-// The path a relative URI reference names (RFC 3986 §2.1: %XX is the byte XX); "" with *why set
-// when it is refused.
-std::string uriPath(const std::string& uri, std::string* why) {
-  if (uri.empty()) {
-    *why = "is empty";
-    return {};
-  }
-  // A scheme (RFC 3986 §3.1) before the first '/': http:, file:, C: (another data: type).
-  const size_t colon = uri.find(':');
-  if (colon != std::string::npos && colon < uri.find('/') && std::isalpha(static_cast<unsigned char>(uri[0])) &&
-      uri.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+-.", 0) == colon) {
-    *why = "'" + scene::shownValue(uri) +
-           "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
-           "or application/gltf-buffer";
-    return {};
-  }
-  std::string path;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    const char c = uri[i];
-    if (c == '\0') {
-      *why = "'" + scene::shownValue(uri) + "' holds a NUL character, which would cut the file name short";
-      return {};
-    }
-    if (c == '?' || c == '#') {
-      *why = "'" + scene::shownValue(uri) +
-             "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
-      return {};
-    }
-    if (c != '%') {
-      path += c;
-      continue;
-    }
-    const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1,
-              low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
-    if (high < 0 || low < 0 || (high == 0 && low == 0)) {
-      *why = "'" + scene::shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
-      return {};
-    }
-    path += char(high * 16 + low);
-    i += 2;
-  }
-  return path;
-}
-
 bool isBase64BufferUri(const std::string& uri) {
   return uri.rfind("data:application/octet-stream;base64,", 0) == 0 ||
          uri.rfind("data:application/gltf-buffer;base64,", 0) == 0;
@@ -196,6 +152,48 @@ std::optional<std::vector<ExternalBuffer>> checkBuffers(const json& document, bo
 }
 
 }  // namespace
+
+std::string uriPath(const std::string& uri, std::string* why) {
+  if (uri.empty()) {
+    *why = "is empty";
+    return {};
+  }
+  // A scheme (RFC 3986 §3.1) before the first '/': http:, file:, C: (another data: type).
+  const size_t colon = uri.find(':');
+  if (colon != std::string::npos && colon < uri.find('/') && std::isalpha(static_cast<unsigned char>(uri[0])) &&
+      uri.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+-.", 0) == colon) {
+    *why = "'" + scene::shownValue(uri) +
+           "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
+           "or application/gltf-buffer";
+    return {};
+  }
+  std::string path;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    const char c = uri[i];
+    if (c == '\0') {
+      *why = "'" + scene::shownValue(uri) + "' holds a NUL character, which would cut the file name short";
+      return {};
+    }
+    if (c == '?' || c == '#') {
+      *why = "'" + scene::shownValue(uri) +
+             "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
+      return {};
+    }
+    if (c != '%') {
+      path += c;
+      continue;
+    }
+    const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1,
+              low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
+    if (high < 0 || low < 0 || (high == 0 && low == 0)) {
+      *why = "'" + scene::shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
+      return {};
+    }
+    path += char(high * 16 + low);
+    i += 2;
+  }
+  return path;
+}
 
 std::optional<std::vector<ExternalBuffer>> checkDocument(const json& document, bool binary, std::string* error) {
   if (!document.is_object()) {

@@ -9,6 +9,7 @@
 
 #include "facet/package/package.h"
 #include "facet/runtime/gltf_materials.h"
+#include "gltf_document.h"
 
 namespace facet::runtime {
 namespace {
@@ -18,21 +19,6 @@ using ordered = nlohmann::ordered_json;
 
 const char* const kSlotParameters[kGltfSlots] = {"baseColorTexture", "metallicRoughnessTexture", "normalTexture",
                                                  "occlusionTexture", "emissiveTexture"};
-
-// A relative URI's %-escapes decoded (glTF 2.0 §3.7.2.2: URIs are RFC 3986 references).
-std::string decodedUri(const std::string& uri) {
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uint8_t(uri[i + 1])) &&
-        std::isxdigit(uint8_t(uri[i + 2]))) {
-      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
-}
 
 // `target` relative to the scene's folder when it lies inside the asset root (all resolved), else "".
 std::string relativeInside(const fs::path& sceneFolder, const fs::path& root, const fs::path& target) {
@@ -108,7 +94,13 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
       relative = stem + "_images/" + std::to_string(index) + imageExtension(image);
       files.push_back({(out / relative).string(), image.bytes});
     } else {
-      relative = relativeInside(out, root, fs::absolute(fs::path(path).parent_path() / decodedUri(image.uri)));
+      std::string why;
+      const std::string file = gltf::uriPath(image.uri, &why);
+      if (file.empty()) {
+        *error = path + ": error: /images/" + std::to_string(index) + "/uri: " + why;
+        return std::nullopt;
+      }
+      relative = relativeInside(out, root, fs::absolute(fs::path(path).parent_path() / file));
       if (relative.empty()) {
         *error = path + ": error: /images/" + std::to_string(index) + "/uri: the image" + outside;
         return std::nullopt;

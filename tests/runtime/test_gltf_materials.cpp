@@ -199,6 +199,32 @@ TEST(GltfMaterials, MissingTangentsOfNormalMappedPrimitivesAreMikkTSpaces) {
   for (const auto& t : tangentsOf(2)) EXPECT_EQ(t, (std::array<float, 4>{1, 0, 0, 1}));
 }
 
+// `matc import` writes a scene only over files the scene may read: the glTF file and its image
+// files inside the asset root, image URIs read as RFC 3986 says (no %00 cutting a name short).
+TEST(GltfMaterials, ImportRefusesFilesOutsideTheAssetRoot) {
+  const std::string dir = facet::test::scratchDir("gltf-import-outside");
+  fs::create_directories(dir + "/out");
+  const std::string text = facet::test::readText(featuresFile());
+  const auto importWith = [&](const std::string& uri, const std::string& outDir) {
+    std::string edited = text;
+    edited.replace(edited.find(R"("features_base.png")"), 19, "\"" + uri + "\"");
+    std::ofstream(dir + "/out/f.gltf") << edited;
+    facet::runtime::GltfImport imported;
+    std::string error;
+    EXPECT_FALSE(facet::runtime::importGltf(dir + "/out/f.gltf", outDir, "", &imported, &error));
+    return error;
+  };
+  EXPECT_EQ(importWith("../secret.png", dir + "/out"),
+            dir + "/out/f.gltf: error: /images/4/uri: the image is outside " + dir +
+                "/out, the folder the scene may read files from (the output folder, or --asset-root)");
+  EXPECT_EQ(importWith("a%00b.png", dir + "/out"),
+            dir + "/out/f.gltf: error: /images/4/uri: 'a%00b.png' has a malformed %-escape or %00 at character 1");
+  EXPECT_EQ(importWith("features_base.png", dir + "/out/scenes"),
+            dir + "/out/f.gltf: error: the glTF file is outside " + dir +
+                "/out/scenes, the folder the scene may read files from (the output folder, or --asset-root)");
+  EXPECT_FALSE(fs::exists(dir + "/out/scenes/f.json"));
+}
+
 int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
   int worst = 0;
   for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(int(a[i]) - int(b[i])));
