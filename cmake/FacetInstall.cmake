@@ -25,7 +25,7 @@ set(FACET_COMPONENT_TARGETS_core facet_warnings facet_shader_abi facet_permutati
     facet_package_checks facet_scene_types facet_ibl facet_ibl_embedded_dfg facet_ktx2 facet_astc facet_runtime_core)
 set(FACET_COMPONENT_TARGETS_vulkan facet_runtime_vulkan)
 set(FACET_COMPONENT_TARGETS_gl facet_runtime_gl)
-set(FACET_COMPONENT_TARGETS_gltf facet_runtime_gltf)
+set(FACET_COMPONENT_TARGETS_gltf facet_mikktspace facet_runtime_gltf)
 set(FACET_COMPONENT_TARGETS_scene facet_scene)
 
 # Public headers per component, as they sit under <folder>/include/facet/<folder>/ in the source
@@ -48,6 +48,7 @@ set(FACET_RUNTIME_HEADERS_gltf gltf_mesh.h)
 set(FACET_EXTERNAL_DEPENDENCIES
   "PkgConfig::ZSTD|pkg-config|libzstd"
   "PkgConfig::XXHASH|pkg-config|libxxhash"
+  "PkgConfig::JPEG|pkg-config|libjpeg"
   "PkgConfig::OSMESA|pkg-config|osmesa"
   "PkgConfig::EGL|pkg-config|egl"
   "PkgConfig::GLESV2|pkg-config|glesv2"
@@ -107,6 +108,7 @@ set_target_properties(facet_runtime_core PROPERTIES EXPORT_NAME runtime_core)
 set_target_properties(facet_runtime_vulkan PROPERTIES EXPORT_NAME runtime_vulkan)
 set_target_properties(facet_runtime_gl PROPERTIES EXPORT_NAME runtime_gl)
 set_target_properties(facet_runtime_gltf PROPERTIES EXPORT_NAME runtime_gltf)
+set_target_properties(facet_mikktspace PROPERTIES EXPORT_NAME mikktspace)
 set_target_properties(facet_scene_types PROPERTIES EXPORT_NAME scene_types)
 set_target_properties(facet_scene PROPERTIES EXPORT_NAME scene)
 
@@ -115,6 +117,8 @@ install(TARGETS matc EXPORT FacetTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BIN
 install(TARGETS facet-eval RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # `matc texture` runs the facet-texture beside it in the same way (texture/tool/).
 install(TARGETS facet-texture RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# and `matc import` the facet-gltf-import beside it (runtime/gltf_import/).
+install(TARGETS facet-gltf-import RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT FacetTargets NAMESPACE Facet:: DESTINATION ${FACET_CMAKE_INSTALL_DIR})
 
 set(FACET_CONFIG_COMPONENT_DEPENDENCIES "")

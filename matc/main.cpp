@@ -138,6 +138,11 @@ int main(int argc, char** argv) {
       "texture", "encode a PNG into an ASTC KTX2 texture with its mip levels (docs/texture-format.md)");
   textureCmd->prefix_command();
   textureCmd->set_help_flag();
+  // Everything after `import` is facet-gltf-import's (runtime/gltf_import/main.cpp), in the same way.
+  CLI::App* importCmd = app.add_subcommand(
+      "import", "write a glTF file's materials as .mat files and a scene drawing it with them (docs/gltf.md)");
+  importCmd->prefix_command();
+  importCmd->set_help_flag();
 
   if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   if (compileCmd->parsed()) return facet::matc::compileCommand(compile);
@@ -148,5 +153,8 @@ int main(int argc, char** argv) {
     return facet::matc::runHelperProgram(argv[0], "eval", "facet-eval", "facet-eval", evalCmd->remaining());
   if (textureCmd->parsed())
     return facet::matc::runHelperProgram(argv[0], "texture", "facet-texture", "facet-texture", textureCmd->remaining());
+  if (importCmd->parsed())
+    return facet::matc::runHelperProgram(argv[0], "import", "facet-gltf-import", "facet-gltf-import",
+                                         importCmd->remaining());
   return 2;
 }

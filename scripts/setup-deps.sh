@@ -19,6 +19,8 @@ packages=(
   # mobile data formats: vertex-cache and overdraw optimisation of meshes (meshoptimizer) and
   # ASTC texture encoding and decoding (Arm's astcenc)
   libmeshoptimizer-dev libastcenc-dev
+  # JPEG images (glTF content is mostly JPEG): libjpeg-turbo, runtime/src/jpeg.cpp
+  libjpeg62-turbo-dev
   # tests (python3-jsonschema: the SARIF schema check of matc lint's report)
   googletest libgtest-dev libgmock-dev python3-jsonschema
   # tests of tools/mesa_stats (Python, standard library only)

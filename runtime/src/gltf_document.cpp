@@ -56,9 +56,10 @@ bool checkAsset(const json& document, std::string* error) {
   return true;
 }
 
-// The required extensions this loader implements: KHR_mesh_quantization (integer attribute
-// types, read by gltf_mesh.cpp). Every other one is refused, as the glTF spec asks.
-constexpr const char* kImplementedExtensions[] = {"KHR_mesh_quantization"};
+// The required extensions Facet implements: KHR_mesh_quantization (integer attribute types, read
+// by gltf_mesh.cpp) and KHR_texture_transform (the materials `matc import` writes apply it:
+// gltf_materials.cpp). Every other one is refused, as the glTF spec asks.
+constexpr const char* kImplementedExtensions[] = {"KHR_mesh_quantization", "KHR_texture_transform"};
 
 bool checkExtensions(const json& document, std::string* error) {
   const json* required = member(document, "extensionsRequired");
@@ -76,7 +77,8 @@ bool checkExtensions(const json& document, std::string* error) {
     *error = "/extensionsRequired/" + std::to_string(i) + ": the file requires " +
              (name.is_string() ? "extension '" + scene::shownValue(name.get<std::string>()) + "'"
                                : std::string("an extension")) +
-             ", which this loader does not implement (it implements KHR_mesh_quantization only; the glTF spec says "
+             ", which this loader does not implement (it implements KHR_mesh_quantization and KHR_texture_transform; "
+             "the glTF spec says "
              "such a file must not be loaded)";
     return false;
   }
@@ -105,50 +107,6 @@ int hexDigit(char c) {
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
   if (c >= 'A' && c <= 'F') return c - 'A' + 10;
   return -1;
-}
-
-// The path a relative URI reference names (RFC 3986 §2.1: %XX is the byte XX); "" with *why set
-// when it is refused.
-std::string uriPath(const std::string& uri, std::string* why) {
-  if (uri.empty()) {
-    *why = "is empty";
-    return {};
-  }
-  // A scheme (RFC 3986 §3.1) before the first '/': http:, file:, C: (another data: type).
-  const size_t colon = uri.find(':');
-  if (colon != std::string::npos && colon < uri.find('/') && std::isalpha(static_cast<unsigned char>(uri[0])) &&
-      uri.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+-.", 0) == colon) {
-    *why = "'" + scene::shownValue(uri) +
-           "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
-           "or application/gltf-buffer";
-    return {};
-  }
-  std::string path;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    const char c = uri[i];
-    if (c == '\0') {
-      *why = "'" + scene::shownValue(uri) + "' holds a NUL character, which would cut the file name short";
-      return {};
-    }
-    if (c == '?' || c == '#') {
-      *why = "'" + scene::shownValue(uri) +
-             "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
-      return {};
-    }
-    if (c != '%') {
-      path += c;
-      continue;
-    }
-    const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1,
-              low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
-    if (high < 0 || low < 0 || (high == 0 && low == 0)) {
-      *why = "'" + scene::shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
-      return {};
-    }
-    path += char(high * 16 + low);
-    i += 2;
-  }
-  return path;
 }
 
 bool isBase64BufferUri(const std::string& uri) {
@@ -194,6 +152,48 @@ std::optional<std::vector<ExternalBuffer>> checkBuffers(const json& document, bo
 }
 
 }  // namespace
+
+std::string uriPath(const std::string& uri, std::string* why) {
+  if (uri.empty()) {
+    *why = "is empty";
+    return {};
+  }
+  // A scheme (RFC 3986 §3.1) before the first '/': http:, file:, C: (another data: type).
+  const size_t colon = uri.find(':');
+  if (colon != std::string::npos && colon < uri.find('/') && std::isalpha(static_cast<unsigned char>(uri[0])) &&
+      uri.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+-.", 0) == colon) {
+    *why = "'" + scene::shownValue(uri) +
+           "' is neither a relative path nor a base64 data: URI of type application/octet-stream "
+           "or application/gltf-buffer";
+    return {};
+  }
+  std::string path;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    const char c = uri[i];
+    if (c == '\0') {
+      *why = "'" + scene::shownValue(uri) + "' holds a NUL character, which would cut the file name short";
+      return {};
+    }
+    if (c == '?' || c == '#') {
+      *why = "'" + scene::shownValue(uri) +
+             "' has a query or fragment (a buffer is a file: write '?' and '#' as %3F and %23)";
+      return {};
+    }
+    if (c != '%') {
+      path += c;
+      continue;
+    }
+    const int high = i + 2 < uri.size() ? hexDigit(uri[i + 1]) : -1,
+              low = i + 2 < uri.size() ? hexDigit(uri[i + 2]) : -1;
+    if (high < 0 || low < 0 || (high == 0 && low == 0)) {
+      *why = "'" + scene::shownValue(uri) + "' has a malformed %-escape or %00 at character " + std::to_string(i);
+      return {};
+    }
+    path += char(high * 16 + low);
+    i += 2;
+  }
+  return path;
+}
 
 std::optional<std::vector<ExternalBuffer>> checkDocument(const json& document, bool binary, std::string* error) {
   if (!document.is_object()) {

@@ -22,8 +22,8 @@ struct ExternalBuffer {
 // Refuses, with `<JSON pointer>: <why>` in *error:
 //   - asset.version other than 2.x, asset.minVersion above 2.0 (glTF 2.0 §3.2: a loader must
 //     not load an asset whose minVersion it does not support);
-//   - extensionsRequired naming any extension: none is implemented, and §3.12 says a loader must
-//     not load a file requiring one it does not support;
+//   - extensionsRequired naming an extension other than KHR_mesh_quantization and
+//     KHR_texture_transform (§3.12: a loader must not load a file requiring one it does not support);
 //   - a bufferView byteStride present but outside 4..252 or not a multiple of 4 (§5.11; tinygltf
 //     ignores 0 and negative values);
 //   - buffer URIs that tinygltf would read as another file than RFC 3986 says (a NUL or %00
@@ -32,6 +32,10 @@ struct ExternalBuffer {
 //     without a URI except a .glb's first (tinygltf gives each a copy of the BIN chunk), a
 //     byteLength that is not a whole number of at least 1.
 // Returns the buffers to read from files, in the order tinygltf asks for them.
+// The path a relative URI reference names (RFC 3986 §2.1: %XX is the byte XX); "" with *why set
+// when it is refused: empty, another scheme, a NUL or %00, a query or fragment, a malformed escape.
+std::string uriPath(const std::string& uri, std::string* why);
+
 std::optional<std::vector<ExternalBuffer>> checkDocument(const nlohmann::json& document, bool binary,
                                                          std::string* error);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <span>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -16,6 +17,7 @@
 #include "facet/runtime/mesh.h"
 #include "gltf_accessor.h"
 #include "gltf_source.h"
+#include "mikktspace_tangents.h"
 
 namespace facet::runtime {
 namespace {
@@ -255,6 +257,23 @@ struct Instance {
   std::string from;  // the JSON pointer naming the mesh, for errors
 };
 
+// The UV set to generate a primitive's tangents from: that of its material's normal texture when
+// the primitive is normal-mapped but has no TANGENT (and has the normals and UVs to derive them
+// from); -1 otherwise.
+int tangentUvSet(const tinygltf::Model& model, const tinygltf::Primitive& p) {
+  if (p.attributes.count("TANGENT") || !p.attributes.count("NORMAL") || p.material < 0 ||
+      size_t(p.material) >= model.materials.size())
+    return -1;
+  const tinygltf::NormalTextureInfo& normal = model.materials[size_t(p.material)].normalTexture;
+  if (normal.index < 0) return -1;
+  int set = normal.texCoord;
+  // KHR_texture_transform's texCoord, when given, replaces the textureInfo's (gltf_materials.cpp).
+  if (auto t = normal.extensions.find("KHR_texture_transform");
+      t != normal.extensions.end() && t->second.Has("texCoord") && t->second.Get("texCoord").IsNumber())
+    set = t->second.Get("texCoord").GetNumberAsInt();
+  return (set == 0 || set == 1) && p.attributes.count("TEXCOORD_" + std::to_string(set)) ? set : -1;
+}
+
 // What the instances' primitives will build, from the accessors' declared counts.
 struct Totals {
   uint64_t vertices = 0;
@@ -285,7 +304,9 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
     if (instance.mesh < 0 || size_t(instance.mesh) >= model.meshes.size()) continue;  // appendMesh names it
     for (const tinygltf::Primitive& p : model.meshes[size_t(instance.mesh)].primitives) {
       const auto position = p.attributes.find("POSITION");
-      const uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
+      uint64_t count = position == p.attributes.end() ? 0 : declared(position->second);
+      // Generated tangents may split vertices (mikktspace_tangents.h): at most one per corner.
+      if (tangentUvSet(model, p) >= 0) count = std::max(count, p.indices >= 0 ? declared(p.indices) : count);
       // Each term is clamped, so the sums cannot wrap however many primitives there are.
       sum.vertices += std::min(count, left.vertices + 1);
       sum.indices += std::min(p.indices >= 0 ? declared(p.indices) : count, left.indices + 1);
@@ -299,8 +320,17 @@ bool checkTotals(const tinygltf::Model& model, const std::vector<Instance>& inst
   return true;
 }
 
+// The meshes being built: one for the whole file, or one per glTF material (the key: the
+// primitive's `material`, -1 for none) when split.
+struct Meshes {
+  bool split = false;
+  std::map<int, Mesh> byMaterial;
+
+  Mesh& of(const tinygltf::Primitive& p) { return byMaterial[split ? std::max(p.material, -1) : 0]; }
+};
+
 bool appendMesh(const tinygltf::Model& model, int index, const std::string& from, const Placement& placement,
-                Mesh* mesh, std::string* error) {
+                Meshes* meshes, std::string* error) {
   if (index < 0 || size_t(index) >= model.meshes.size()) {
     *error = from + ": mesh " + std::to_string(index) + " does not exist";
     return false;
@@ -308,7 +338,19 @@ bool appendMesh(const tinygltf::Model& model, int index, const std::string& from
   const tinygltf::Mesh& m = model.meshes[size_t(index)];
   for (size_t p = 0; p < m.primitives.size(); ++p) {
     const std::string pointer = "/meshes/" + std::to_string(index) + "/primitives/" + std::to_string(p);
-    if (!appendPrimitive(model, m.primitives[p], pointer, placement, mesh, error)) return false;
+    const int material = m.primitives[p].material;
+    if (meshes->split && material >= 0 && size_t(material) >= model.materials.size()) {
+      *error = pointer + "/material: material " + std::to_string(material) + " does not exist";
+      return false;
+    }
+    Mesh& target = meshes->of(m.primitives[p]);
+    const size_t firstVertex = target.vertices.size() / abi::kVertexFloats, firstIndex = target.indices.size();
+    if (!appendPrimitive(model, m.primitives[p], pointer, placement, &target, error)) return false;
+    const int tangentSet = tangentUvSet(model, m.primitives[p]);
+    if (tangentSet >= 0 && !generateMikkTSpaceTangents(&target, firstVertex, firstIndex, tangentSet)) {
+      *error = pointer + ": MikkTSpace could not generate its tangents (out of memory)";
+      return false;
+    }
   }
   return true;
 }
@@ -393,9 +435,9 @@ bool collectScene(const tinygltf::Model& model, int sceneIndex, std::vector<Inst
   return true;
 }
 
-}  // namespace
-
-std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options) {
+// loadGltfMesh, or loadGltfMeshesByMaterial when `split`.
+std::optional<std::map<int, Mesh>> loadMeshes(const std::string& path, bool split, std::string* error,
+                                              const GltfReadOptions& options) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
@@ -434,18 +476,20 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
   }
   Totals totals;
   ok = ok && checkTotals(*model, instances, budget, &totals, &why);
-  Mesh mesh;
-  if (ok) {
+  Meshes meshes{split, {}};
+  if (ok && !split) {
+    Mesh& mesh = meshes.byMaterial[0];
     mesh.vertices.reserve(size_t(totals.vertices) * abi::kVertexFloats);
     mesh.indices.reserve(size_t(totals.indices));
   }
   for (size_t i = 0; ok && i < instances.size(); ++i)
-    ok = appendMesh(*model, instances[i].mesh, instances[i].from, instances[i].placement, &mesh, &why);
+    ok = appendMesh(*model, instances[i].mesh, instances[i].from, instances[i].placement, &meshes, &why);
   if (!ok) {
     *error = path + ": error: " + why;
     return std::nullopt;
   }
-  if (mesh.indices.empty()) {
+  std::erase_if(meshes.byMaterial, [](const auto& entry) { return entry.second.indices.empty(); });
+  if (meshes.byMaterial.empty()) {
     *error = path + ": error: " +
              (scene >= 0 ? "/scenes/" + std::to_string(scene) + ": no triangles" : "/meshes: no triangles");
     return std::nullopt;
@@ -454,7 +498,20 @@ std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, co
   budget.indices -= totals.indices;
   budget.primitives -= totals.primitives;
   budget.fileBytes -= bytesRead;
-  return mesh;
+  return std::move(meshes.byMaterial);
+}
+
+}  // namespace
+
+std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options) {
+  auto meshes = loadMeshes(path, false, error, options);
+  if (!meshes) return std::nullopt;
+  return std::move(meshes->begin()->second);
+}
+
+std::optional<std::map<int, Mesh>> loadGltfMeshesByMaterial(const std::string& path, std::string* error,
+                                                            const GltfReadOptions& options) {
+  return loadMeshes(path, true, error, options);
 }
 
 }  // namespace facet::runtime

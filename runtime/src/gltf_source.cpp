@@ -126,6 +126,15 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
+// An embedded image's encoded bytes, kept as they are (the image decoders check them when a
+// scene loads them); their size is bounded by the file's, read within the budget.
+bool keepImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+               int size, void*) {
+  if (size > 0) image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
 // tinygltf's error, on one line and short: it quotes names from the file in full (an image's name
 // of megabytes) and ends each of its messages with a newline.
 std::string tinygltfMessage(const std::string& err) {
@@ -223,7 +232,7 @@ std::optional<tinygltf::Model> readSource(const std::string& path, const SourceO
 
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({fileExists, expandPath, readPreparedFile, writeWholeFile, &files});
-  loader.SetImageLoader(skipImage, nullptr);
+  loader.SetImageLoader(options.keepImageBytes ? keepImage : skipImage, nullptr);
   tinygltf::Model model;
   std::string err, warn;
   const bool loaded =

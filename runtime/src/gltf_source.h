@@ -14,6 +14,9 @@ namespace facet::runtime::gltf {
 struct SourceOptions {
   std::string assetRoot;   // the folder buffers may come from; "": the file's own folder
   uint64_t fileBytes = 0;  // what the file and its buffers may take together
+  // Keep the encoded bytes of embedded images (data: URIs, bufferViews) in Image::image, for
+  // the material path (gltf_materials.cpp); image files are never opened either way.
+  bool keepImageBytes = false;
 };
 
 // The model, and in *bytesRead what was read from files. *error is a whole message:

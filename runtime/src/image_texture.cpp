@@ -10,6 +10,8 @@
 
 #include <stb_image.h>  // implementation: stb_image_impl.cpp
 
+#include "jpeg.h"
+
 namespace facet::runtime {
 namespace {
 
@@ -138,6 +140,27 @@ std::string radianceHdrError(std::span<const uint8_t> bytes) {
   return "";
 }
 
+// The 8-bit RGBA pixels of an image probeImage accepted: JPEG through libjpeg-turbo, the rest
+// (PNG) through stb_image.
+bool decodeRgba8(std::span<const uint8_t> bytes, const std::string& name, int* w, int* h, std::vector<uint8_t>* rgba,
+                 std::string* error) {
+  std::string why;
+  if (isJpeg(bytes)) {
+    if (decodeJpeg(bytes, rgba, w, h, &why)) return true;
+    *error = name + ": cannot decode image: " + why;
+    return false;
+  }
+  int channels = 0;
+  uint8_t* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), w, h, &channels, 4);
+  if (!pixels) {
+    *error = name + ": cannot decode image: " + decodeFailure();
+    return false;
+  }
+  rgba->assign(pixels, pixels + size_t(*w) * size_t(*h) * 4);
+  stbi_image_free(pixels);
+  return true;
+}
+
 }  // namespace
 
 std::string decodeFailure() {
@@ -153,8 +176,13 @@ bool probeImage(std::span<const uint8_t> bytes, const std::string& name, int* wi
     return false;
   }
   int channels = 0;
-  if (bytes.size() > size_t(std::numeric_limits<int>::max()) ||
-      !stbi_info_from_memory(bytes.data(), int(bytes.size()), width, height, &channels)) {
+  if (isJpeg(bytes)) {
+    if (!probeJpeg(bytes, width, height, &why)) {
+      *error = name + ": cannot read image: " + why;
+      return false;
+    }
+  } else if (bytes.size() > size_t(std::numeric_limits<int>::max()) ||
+             !stbi_info_from_memory(bytes.data(), int(bytes.size()), width, height, &channels)) {
     *error = name + ": cannot read image: " + decodeFailure();
     return false;
   }
@@ -190,27 +218,22 @@ bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::st
 
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error) {
-  // stb_image here also reads Radiance files (for environments); a texture is PNG only.
-  if (!isPng(bytes)) {
-    *error = name + ": cannot read image: textures are PNG or KTX2 files (no PNG signature)";
+  // stb_image here also reads Radiance files (for environments); a texture is PNG or JPEG.
+  if (!isPng(bytes) && !isJpeg(bytes)) {
+    *error = name + ": cannot read image: textures are PNG, JPEG or KTX2 files (no PNG or JPEG signature)";
     return std::nullopt;
   }
-  int w = 0, h = 0, channels = 0;
+  int w = 0, h = 0;
   if (!probeImage(bytes, name, &w, &h, error)) return std::nullopt;
-  // stb_image stores the first row (the top of the picture) first; the texture convention puts
+  // Both decoders store the first row (the top of the picture) first; the texture convention puts
   // t = 0 first, so an image's top row is t = 0, as in glTF and most engines' UV conventions.
-  uint8_t* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &channels, 4);
-  if (!pixels) {
-    *error = name + ": cannot decode image: " + decodeFailure();
-    return std::nullopt;
-  }
   Texture t;
+  t.levels.emplace_back();
+  if (!decodeRgba8(bytes, name, &w, &h, &t.levels[0], error)) return std::nullopt;
   t.width = uint32_t(w);
   t.height = uint32_t(h);
   t.format = srgb ? TextureFormat::Rgba8Srgb : TextureFormat::Rgba8Unorm;
   t.repeat = true;
-  t.levels.emplace_back(pixels, pixels + size_t(w) * size_t(h) * 4);
-  stbi_image_free(pixels);
   for (uint32_t lw = t.width, lh = t.height; lw > 1 || lh > 1; lw = std::max(1u, lw / 2), lh = std::max(1u, lh / 2))
     t.levels.push_back(halve(t.levels.back(), lw, lh, srgb));
   return t;
@@ -242,13 +265,9 @@ std::optional<ibl::EquirectImage> decodeEquirectImage(std::span<const uint8_t> b
     std::memcpy(image.rgb.data(), pixels, image.rgb.size() * sizeof(float));
     stbi_image_free(pixels);
   } else {
-    uint8_t* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 3);
-    if (!pixels) {
-      *error = name + ": cannot decode image: " + decodeFailure();
-      return std::nullopt;
-    }
-    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = float(decode(pixels[i]));
-    stbi_image_free(pixels);
+    std::vector<uint8_t> rgba;
+    if (!decodeRgba8(bytes, name, &w, &h, &rgba, error)) return std::nullopt;
+    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = float(decode(rgba[i / 3 * 4 + i % 3]));
   }
   for (float v : image.rgb) {
     if (!std::isfinite(v) || v < 0) {

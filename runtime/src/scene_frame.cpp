@@ -189,8 +189,30 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     DrawItem draw;
     // One Mesh per built-in name or file, built when first named and shared by every object that
     // names it (and so one GPU buffer). A file's path never equals a built-in name: it ends in
-    // .gltf or .glb (scene.cpp).
-    auto [mesh, added] = out->meshes_.try_emplace(o.mesh);
+    // .gltf or .glb (scene.cpp). A file drawn by glTF material is read once, split into one Mesh
+    // per material, each under "<path>\n<material>" (a material missing once the file is read is
+    // an error, so a file is never read twice).
+    const auto materialKey = [&](int index) { return o.mesh + "\n" + std::to_string(index); };
+    if (o.gltfMaterial && !out->meshes_.count(materialKey(*o.gltfMaterial))) {
+      std::optional<std::map<int, Mesh>> split =
+          loadGltfMeshesByMaterial(o.mesh, error, {scene.assetRoot, &meshBudget});
+      if (!split) {
+        *error = "object " + std::to_string(i) + ": " + *error;
+        return nullptr;
+      }
+      for (auto& [index, part] : *split) {
+        optimizeMesh(&part);
+        out->meshes_[materialKey(index)] = std::make_unique<Mesh>(std::move(part));
+      }
+      if (!out->meshes_.count(materialKey(*o.gltfMaterial))) {
+        *error = "object " + std::to_string(i) + ": " + o.mesh + ": error: no primitive of the file's scene " +
+                 (*o.gltfMaterial < 0 ? std::string("is without a material")
+                                      : "uses /materials/" + std::to_string(*o.gltfMaterial)) +
+                 " (the object's gltfMaterial)";
+        return nullptr;
+      }
+    }
+    auto [mesh, added] = out->meshes_.try_emplace(o.gltfMaterial ? materialKey(*o.gltfMaterial) : o.mesh);
     if (added) {
       std::optional<Mesh> made = o.mesh == "sphere"  ? makeSphere()
                                  : o.mesh == "plane" ? makePlane()

@@ -10,12 +10,15 @@
 
 #include <stb_image.h>  // implementation: stb_image_impl.cpp
 
+#include "facet/runtime/image_texture.h"
 #include "facet/texture/ktx2.h"
+#include "jpeg.h"
 
 namespace facet::runtime {
 namespace {
 
-// The first bytes of a regular file: enough for a PNG's IHDR (byte 16) and a Radiance header.
+// The first bytes of a regular file: enough for a PNG's IHDR (byte 16), a Radiance header and
+// most JPEGs' frame headers.
 std::vector<uint8_t> fileHead(const std::string& path) {
   constexpr size_t kHeadBytes = 64 * 1024;
   std::error_code ec;
@@ -54,8 +57,17 @@ std::optional<ImageCost> decodedCost(const std::string& path, uint64_t bytesPerP
   const std::vector<uint8_t> head = fileHead(path);
   if (texture::isKtx2(head)) return ktx2Cost(path, head);
   int w = 0, h = 0, channels = 0;
-  if (head.empty() || !stbi_info_from_memory(head.data(), int(head.size()), &w, &h, &channels) || w <= 0 || h <= 0)
+  if (isJpeg(head)) {
+    // A JPEG's frame header comes after its application segments (Exif, ICC profiles: up to 64 KiB
+    // each), so it may lie past the head: then the whole file is read.
+    std::string why;
+    std::vector<uint8_t> whole;
+    if (!probeJpeg(head, &w, &h, &why) && (!readImageFile(path, &whole, &why) || !probeJpeg(whole, &w, &h, &why)))
+      return std::nullopt;
+  } else if (head.empty() || !stbi_info_from_memory(head.data(), int(head.size()), &w, &h, &channels)) {
     return std::nullopt;
+  }
+  if (w <= 0 || h <= 0) return std::nullopt;
   uint64_t bytes = 0;
   for (uint64_t lw = uint64_t(w), lh = uint64_t(h);;
        lw = std::max<uint64_t>(1, lw / 2), lh = std::max<uint64_t>(1, lh / 2)) {

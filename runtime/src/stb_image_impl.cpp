@@ -6,7 +6,8 @@
 // Formats: PNG for textures and 8-bit environments, Radiance .hdr for environments. JPEG and TGA
 // are left out: fuzz_image found this stb_image's JPEG Huffman-table builder reading past its
 // array (stb_image.h:1990, input in tests/fuzz/image_regressions/), and a texture format whose
-// decoder reads out of bounds on hostile input is not one the runtime can offer.
+// decoder reads out of bounds on hostile input is not one the runtime can offer. JPEG is read by
+// libjpeg-turbo instead (jpeg.cpp).
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #define STBI_ONLY_HDR  // environments (environment.cpp): Radiance .hdr via stbi_loadf

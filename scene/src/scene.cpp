@@ -247,7 +247,7 @@ std::string builtinMeshNames() {
 
 SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
   onlyKeys(j, pointer,
-           {"mesh", "material", "position", "rotation", "quaternion", "radius", "scale", "castShadows",
+           {"mesh", "gltfMaterial", "material", "position", "rotation", "quaternion", "radius", "scale", "castShadows",
             "receiveShadows", "params"});
   SceneObject o;
   if (j.contains("castShadows")) o.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
@@ -261,6 +261,14 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
       fail(pointer + "/mesh", "unknown mesh '" + scene::pointerSegment(o.mesh) + "' (built in: " + builtinMeshNames() +
                                   "; or a .gltf/.glb file)");
     o.mesh = assets.resolve(j["mesh"], pointer + "/mesh");
+  }
+  if (j.contains("gltfMaterial")) {
+    if (std::find(std::begin(kBuiltinMeshes), std::end(kBuiltinMeshes), o.mesh) != std::end(kBuiltinMeshes))
+      fail(pointer + "/gltfMaterial", "only a glTF mesh has materials to choose from");
+    // glTF indices are JSON integers; 2^20 materials is far beyond any file the budgets admit.
+    const double index = number(j["gltfMaterial"], pointer + "/gltfMaterial", -1, double(1 << 20));
+    if (index != std::floor(index)) fail(pointer + "/gltfMaterial", "expected a material index (an integer, or -1)");
+    o.gltfMaterial = int(index);
   }
   if (!j.contains("material")) fail(pointer, "missing 'material'");
   o.material = string(j["material"], pointer + "/material");

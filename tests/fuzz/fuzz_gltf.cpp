@@ -1,4 +1,5 @@
-// libFuzzer target for the glTF loader (runtime::loadGltfMesh): the .gltf JSON, the .glb container
+// libFuzzer target for the glTF loader (runtime::loadGltfMesh, and runtime::readGltfMaterials, the
+// material path of `matc import`, with MikkTSpace's tangents): the .gltf JSON, the .glb container
 // and an external buffer, from one input split as tests/fuzz/gltf_fuzz_input.h says. Any bytes end
 // in a mesh or an error naming the file, never a crash, a hang, a sanitizer report or an
 // allocation past the loader's limits. tinygltf is compiled in (tinygltf_impl.cpp) with the same
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <string>
 
+#include "facet/runtime/gltf_materials.h"
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/vertex_packing.h"
@@ -47,6 +49,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::abort();
   }
   if (!mesh) return 0;
+  // The material path (matc import's reader and the .mat text it writes) on files whose meshes
+  // load (it reads the meshes first and fails where loadGltfMesh does): one read of the others.
+  if (auto materials = facet::runtime::readGltfMaterials(path, &error)) {
+    for (const auto& m : materials->materials) (void)facet::runtime::gltfMaterialSource(m.features);
+  } else if (error.rfind(path + ":", 0) != 0) {
+    std::fprintf(stderr, "fuzz_gltf: materials rejected without naming the file: %.300s\n", error.c_str());
+    std::abort();
+  }
   const size_t vertices = mesh->vertices.size() / facet::abi::kVertexFloats;
   bool valid = !mesh->indices.empty() && mesh->indices.size() % 3 == 0 &&
                mesh->vertices.size() % facet::abi::kVertexFloats == 0 &&

@@ -443,7 +443,8 @@ TEST(GltfHostile, SpecRulesTinygltfIgnoresAreEnforced) {
                         R"("asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"],)")),
       dir +
           "/draco.gltf: error: /extensionsRequired/0: the file requires extension 'KHR_draco_mesh_compression', which "
-          "this loader does not implement (it implements KHR_mesh_quantization only; the glTF spec says such a file "
+          "this loader does not implement (it implements KHR_mesh_quantization and KHR_texture_transform; the glTF "
+          "spec says such a file "
           "must not be loaded)");
   // KHR_mesh_quantization is implemented; an unknown one after it is still named.
   EXPECT_EQ(withJson("after.gltf", replaced(R"("asset": {"version": "2.0"},)",
@@ -451,7 +452,8 @@ TEST(GltfHostile, SpecRulesTinygltfIgnoresAreEnforced) {
                                  "extensionsRequired": ["KHR_mesh_quantization", "EXT_meshopt_compression"],)")),
             dir +
                 "/after.gltf: error: /extensionsRequired/1: the file requires extension 'EXT_meshopt_compression', "
-                "which this loader does not implement (it implements KHR_mesh_quantization only; the glTF spec says "
+                "which this loader does not implement (it implements KHR_mesh_quantization and KHR_texture_transform; "
+                "the glTF spec says "
                 "such a file must not be loaded)");
   // byteStride, when present: a multiple of 4 in 4..252 (tinygltf ignored 0 and negative ones).
   for (const char* stride : {"0", "-12", "6", "256", "12.5"}) {

@@ -306,8 +306,9 @@ TEST(HostileScenes, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
   EXPECT_NE(error.find("remain in the file"), std::string::npos) << error;
 }
 
-// fuzz_image's JPEG finding (stb_image reads past a Huffman table): JPEG is not decoded at all.
-TEST(HostileScenes, JpegIsRefusedNotDecoded) {
+// fuzz_image's JPEG finding in stb_image (it read past a Huffman table): libjpeg-turbo, which
+// decodes JPEG now, refuses the file with a diagnostic naming it.
+TEST(HostileScenes, JpegHuffmanTableFindingIsRefused) {
   std::string bytes =
       facet::test::readText(facet::test::sourceDir() + "/tests/fuzz/image_regressions/jpeg_huffman_table_overrun.jpg");
   ASSERT_FALSE(bytes.empty());
@@ -392,16 +393,26 @@ TEST(HostileScenes, TruncatedRadianceImageIsRefused) {
   EXPECT_EQ(error.rfind(dir + "/cut.hdr: cannot read image: Radiance pixel data ends", 0), 0u) << error;
 }
 
-// The fuzzer's Radiance seeds are valid files (flat and run-length coded), so fuzzing starts from
-// inputs that reach the pixel decoder.
-TEST(HostileScenes, RadianceFuzzSeedsDecode) {
+// The image fuzzer's seeds are valid files (Radiance flat and run-length coded; baseline,
+// progressive and greyscale JPEG), so fuzzing starts from inputs that reach the pixel decoders.
+TEST(HostileScenes, ImageFuzzSeedsDecode) {
+  size_t radiance = 0, jpeg = 0;
   for (const auto& entry : std::filesystem::directory_iterator(facet::test::sourceDir() + "/tests/fuzz/image_corpus")) {
     std::string bytes = facet::test::readText(entry.path().string());
     std::string error;
+    if (entry.path().extension() == ".jpg") {  // the JPEG seeds are textures (3:2, not equirect)
+      EXPECT_TRUE(facet::runtime::decodeImageTexture(bytesOf(bytes), true, entry.path().filename().string(), &error))
+          << error;
+      ++jpeg;
+      continue;
+    }
     auto image = facet::runtime::decodeEquirectImage(bytesOf(bytes), entry.path().filename().string(), &error);
     ASSERT_TRUE(image) << error;
     EXPECT_GT(*std::max_element(image->rgb.begin(), image->rgb.end()), 0.0f) << entry.path();
+    ++radiance;
   }
+  EXPECT_EQ(radiance, 2u);
+  EXPECT_EQ(jpeg, 3u);
 }
 
 namespace {

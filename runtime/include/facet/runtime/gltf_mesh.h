@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -74,5 +75,11 @@ struct GltfReadOptions {
 // (for a .glb, the line and column in its JSON chunk), else `m.gltf: error: <JSON pointer>: ...`,
 // e.g. `m.gltf: error: /meshes/0/primitives/0/attributes/NORMAL: /accessors/1 element 7 is not finite`.
 std::optional<Mesh> loadGltfMesh(const std::string& path, std::string* error, const GltfReadOptions& options = {});
+
+// The same triangles split by the glTF material their primitive names (the key: its index in
+// `materials`, -1 for primitives without one), for drawing each with its own material: one read
+// of the file and one budget for all of them. Only materials some placed primitive uses appear.
+std::optional<std::map<int, Mesh>> loadGltfMeshesByMaterial(const std::string& path, std::string* error,
+                                                            const GltfReadOptions& options = {});
 
 }  // namespace facet::runtime

@@ -16,7 +16,8 @@ namespace facet::runtime {
 inline constexpr int kMaxImageSide = 8192;
 
 // Reads the size of an image held in memory without decoding it (`name` is used in messages);
-// false, with *error naming it, when stb_image cannot read it, it is larger than kMaxImageSide
+// false, with *error naming it, when stb_image (PNG, Radiance) or libjpeg-turbo (JPEG, a CMYK one
+// refused) cannot read its header, it is larger than kMaxImageSide
 // on a side, or its container is unsafe or incomplete: a PNG chunk declaring more bytes than the
 // file holds (stb_image would allocate what it declares), a Radiance .hdr whose pixel block is
 // cut short (stb_image would decode the missing pixels as black). Every decoder calls it first.
@@ -32,18 +33,19 @@ inline constexpr uintmax_t kMaxImageFileBytes = 256u << 20;
 // kMaxImageFileBytes. False with *error naming the file otherwise.
 bool readImageFile(const std::string& path, std::vector<uint8_t>* bytes, std::string* error);
 
-// Decodes a PNG held in memory (loadImageTexture without the file); `name` is used in
+// Decodes a PNG or JPEG held in memory (loadImageTexture without the file); `name` is used in
 // messages. The fuzz target fuzz_image drives it with arbitrary bytes.
 std::optional<Texture> decodeImageTexture(std::span<const uint8_t> bytes, bool srgb, const std::string& name,
                                           std::string* error);
 
-// Loads a PNG (stb_image; JPEG and TGA are not decoded: stb_image_impl.cpp) as RGBA8, with every mip level down to 1×1.
+// Loads a PNG (stb_image) or JPEG (libjpeg-turbo, runtime/src/jpeg.cpp; TGA is not decoded:
+// stb_image_impl.cpp) as RGBA8, with every mip level down to 1×1.
 // `srgb` tags the image as sRGB-encoded (colour data): levels are then averaged in linear light, not in the encoded
 // values (which would darken every level), and the sampler decodes.
 std::optional<Texture> loadImageTexture(const std::string& path, bool srgb, std::string* error);
 
 // An equirect environment image held in memory (`name` is used in messages), as linear RGB: a
-// Radiance .hdr as stored, a PNG decoded from sRGB. Checked by probeImage first; 2:1, finite and
+// Radiance .hdr as stored, a PNG or JPEG decoded from sRGB. Checked by probeImage first; 2:1, finite and
 // non-negative. The fuzz target fuzz_image drives it with arbitrary bytes.
 std::optional<ibl::EquirectImage> decodeEquirectImage(std::span<const uint8_t> bytes, const std::string& name,
                                                       std::string* error);

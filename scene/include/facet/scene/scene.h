@@ -83,6 +83,9 @@ inline constexpr const char* kBuiltinMeshes[] = {"sphere", "plane", "box"};
 struct SceneObject {
   std::string mesh = "sphere";  // a kBuiltinMeshes name, or a .gltf/.glb path (resolved, inside the scene's folder)
   std::string material;         // package name: <package dir>/<material>.matpkg
+  // With a glTF mesh: draw only the primitives whose glTF material is this index (-1: those
+  // without one), so that each glTF material is drawn with its own Facet material (docs/gltf.md).
+  std::optional<int> gltfMaterial;
   glm::dvec3 position{0, 0, 0};
   glm::dquat rotation{1, 0, 0, 0};  // unit length (w, x, y, z in glm's constructor)
   double radius = 1;                // a uniform scale: the unit sphere's radius

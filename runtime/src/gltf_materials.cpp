@@ -1,0 +1,426 @@
+#include "facet/runtime/gltf_materials.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "gltf_source.h"
+
+namespace facet::runtime {
+namespace {
+
+struct SlotInfo {
+  const char* prefix;     // of the feature name
+  const char* parameter;  // the texture parameter; its transform's are <parameter>Offset, ...
+  const char* pointer;    // under /materials/N
+  const char* kind;       // the .mat texture type
+  const char* fallback;   // what a missing image samples as
+};
+
+constexpr SlotInfo kSlots[kGltfSlots] = {
+    {"bc", "baseColorTexture", "/pbrMetallicRoughness/baseColorTexture", "srgb", "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"mr", "metallicRoughnessTexture", "/pbrMetallicRoughness/metallicRoughnessTexture", "linear",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"n", "normalTexture", "/normalTexture", "normal", "vec4(0.5, 0.5, 1.0, 1.0)"},
+    {"ao", "occlusionTexture", "/occlusionTexture", "linear", "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"em", "emissiveTexture", "/emissiveTexture", "srgb", "vec4(1.0, 1.0, 1.0, 1.0)"},
+};
+
+// The extensions the material path reads; any other optional one is reported and skipped (a
+// required one was refused with the file: gltf_document.cpp).
+constexpr const char* kReadExtensions[] = {"KHR_texture_transform", "KHR_materials_emissive_strength",
+                                           "KHR_materials_ior", "KHR_mesh_quantization"};
+
+// A number for a .mat file or a feature name: the shortest text that reads back as the double.
+std::string number(double v) {
+  char text[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  std::string s = text;
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string featureNumber(double v) {
+  std::string s = number(v);
+  std::replace(s.begin(), s.end(), '.', 'p');
+  std::replace(s.begin(), s.end(), '-', 'm');
+  std::replace(s.begin(), s.end(), '+', '_');
+  return s;
+}
+
+class Reader {
+ public:
+  Reader(const tinygltf::Model& model, GltfMaterialSet* out) : model_(model), out_(out) {}
+
+  bool material(int index, bool vertexColors, std::string* error) {
+    GltfMaterial m;
+    m.index = index;
+    m.features.vertexColors = vertexColors;
+    if (index < 0) {  // glTF 2.0 §3.9.6: the default material is metallic 1, roughness 1, white
+      out_->materials.push_back(std::move(m));
+      return true;
+    }
+    const tinygltf::Material& g = model_.materials[size_t(index)];
+    const std::string at = "/materials/" + std::to_string(index);
+    m.name = g.name;
+    const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+    if (!factors(pbr.baseColorFactor, 4, at + "/pbrMetallicRoughness/baseColorFactor", 0, 1, m.baseColorFactor.data(),
+                 error) ||
+        !unit(pbr.metallicFactor, at + "/pbrMetallicRoughness/metallicFactor", &m.metallicFactor, error) ||
+        !unit(pbr.roughnessFactor, at + "/pbrMetallicRoughness/roughnessFactor", &m.roughnessFactor, error) ||
+        !factors(g.emissiveFactor, 3, at + "/emissiveFactor", 0, 1, m.emissiveFactor.data(), error) ||
+        !unit(g.occlusionTexture.strength, at + "/occlusionTexture/strength", &m.occlusionStrength, error))
+      return false;
+    m.normalScale = g.normalTexture.scale;
+    if (!(std::abs(m.normalScale) <= kMaxNormalScale)) {
+      *error = at + "/normalTexture/scale: " + number(m.normalScale) + " is outside [-" + number(kMaxNormalScale) +
+               ", " + number(kMaxNormalScale) + "]";
+      return false;
+    }
+    const struct {
+      int index, texCoord;
+      const tinygltf::ExtensionMap& extensions;
+    } infos[kGltfSlots] = {
+        {pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions},
+        {pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+         pbr.metallicRoughnessTexture.extensions},
+        {g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions},
+        {g.occlusionTexture.index, g.occlusionTexture.texCoord, g.occlusionTexture.extensions},
+        {g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions},
+    };
+    for (size_t s = 0; s < kGltfSlots; ++s) {
+      if (infos[s].index < 0) continue;
+      if (!texture(infos[s].index, infos[s].texCoord, infos[s].extensions, at + kSlots[s].pointer, &m.textures[s],
+                   error))
+        return false;
+      m.features.textured[s] = true;
+      m.features.texCoord[s] = m.textures[s].texCoord;
+      m.features.transformed[s] = m.textures[s].transformed;
+    }
+    if (g.alphaMode != "OPAQUE" && g.alphaMode != "MASK" && g.alphaMode != "BLEND") {
+      *error = at + "/alphaMode: '" + g.alphaMode + "' is not OPAQUE, MASK or BLEND";
+      return false;
+    }
+    m.features.alphaMode = g.alphaMode;
+    if (g.alphaMode == "MASK") {
+      if (!(g.alphaCutoff >= 0 && g.alphaCutoff <= 1)) {
+        *error = at + "/alphaCutoff: " + number(g.alphaCutoff) + " is outside [0, 1]";
+        return false;
+      }
+      m.features.alphaCutoff = g.alphaCutoff;
+    }
+    m.features.doubleSided = g.doubleSided;
+    for (const auto& [name, value] : g.extensions) {
+      const std::string where = at + "/extensions/" + name;
+      if (name == "KHR_materials_emissive_strength") {
+        const double strength = numberIn(value, "emissiveStrength", 1);
+        if (!(strength >= 0 && strength <= kMaxEmissiveStrength)) {
+          *error = where + "/emissiveStrength: " + number(strength) + " is outside [0, " +
+                   number(kMaxEmissiveStrength) + "]";
+          return false;
+        }
+        for (double& c : m.emissiveFactor) c *= strength;
+      } else if (name == "KHR_materials_ior") {
+        m.ior = numberIn(value, "ior", 1.5);
+        // 0 stands for an infinite index (a perfect mirror, f0 = 1); otherwise at least 1.
+        if (!(m.ior == 0 || (m.ior >= 1 && m.ior <= kMaxIor))) {
+          *error = where + "/ior: " + number(m.ior) + " is neither 0 nor in [1, " + number(kMaxIor) + "]";
+          return false;
+        }
+      } else {
+        note(where + ": extension not read; the material is drawn without it");
+      }
+    }
+    out_->materials.push_back(std::move(m));
+    return true;
+  }
+
+  void note(std::string text) {
+    if (std::find(out_->notes.begin(), out_->notes.end(), text) == out_->notes.end())
+      out_->notes.push_back(std::move(text));
+  }
+
+  // Well beyond what content uses; bounds for the .mat parameter ranges.
+  static constexpr double kMaxNormalScale = 100;
+  static constexpr double kMaxEmissiveStrength = 10000;
+  static constexpr double kMaxIor = 10;
+
+ private:
+  static double numberIn(const tinygltf::Value& object, const char* key, double fallback) {
+    if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
+    return object.Get(key).GetNumberAsDouble();
+  }
+
+  bool unit(double v, const std::string& at, double* out, std::string* error) {
+    if (!(v >= 0 && v <= 1)) {
+      *error = at + ": " + number(v) + " is outside [0, 1]";
+      return false;
+    }
+    *out = v;
+    return true;
+  }
+
+  // An array factor: exactly `count` numbers in [lo, hi] (tinygltf leaves the default when absent).
+  bool factors(const std::vector<double>& values, size_t count, const std::string& at, double lo, double hi,
+               double* out, std::string* error) {
+    if (values.size() != count) {
+      *error = at + ": expected " + std::to_string(count) + " numbers";
+      return false;
+    }
+    for (size_t i = 0; i < count; ++i) {
+      if (!(values[i] >= lo && values[i] <= hi)) {
+        *error = at + "/" + std::to_string(i) + ": " + number(values[i]) + " is outside [" + number(lo) + ", " +
+                 number(hi) + "]";
+        return false;
+      }
+      out[i] = values[i];
+    }
+    return true;
+  }
+
+  bool texture(int index, int texCoord, const tinygltf::ExtensionMap& extensions, const std::string& at,
+               GltfTextureUse* use, std::string* error) {
+    if (size_t(index) >= model_.textures.size()) {
+      *error = at + "/index: texture " + std::to_string(index) + " does not exist";
+      return false;
+    }
+    const tinygltf::Texture& t = model_.textures[size_t(index)];
+    const std::string textureAt = "/textures/" + std::to_string(index);
+    if (t.source < 0 || size_t(t.source) >= model_.images.size()) {
+      *error = textureAt + "/source: " +
+               (t.source < 0 ? std::string("no image in a format Facet reads (PNG or JPEG)")
+                             : "image " + std::to_string(t.source) + " does not exist");
+      return false;
+    }
+    for (const auto& [name, value] : t.extensions) note(textureAt + "/extensions/" + name + ": extension not read");
+    use->texture = index;
+    use->image = t.source;
+    use->texCoord = texCoord;
+    for (const auto& [name, value] : extensions) {
+      if (name != "KHR_texture_transform") {
+        note(at + "/extensions/" + name + ": extension not read");
+        continue;
+      }
+      const std::string where = at + "/extensions/KHR_texture_transform";
+      use->transformed = true;
+      if (!pair(value, "offset", where, &use->offset, error) || !pair(value, "scale", where, &use->scale, error))
+        return false;
+      use->rotation = numberIn(value, "rotation", 0);
+      if (!(std::abs(use->rotation) <= kMaxUvValue)) {
+        *error = where + "/rotation: " + number(use->rotation) + " is not a finite angle";
+        return false;
+      }
+      if (value.Has("texCoord")) use->texCoord = int(numberIn(value, "texCoord", texCoord));
+    }
+    if (use->texCoord != 0 && use->texCoord != 1) {
+      *error = at + "/texCoord: " + std::to_string(use->texCoord) + " (Facet reads TEXCOORD_0 and TEXCOORD_1)";
+      return false;
+    }
+    if (t.sampler >= 0) {
+      if (size_t(t.sampler) >= model_.samplers.size()) {
+        *error = textureAt + "/sampler: sampler " + std::to_string(t.sampler) + " does not exist";
+        return false;
+      }
+      const tinygltf::Sampler& s = model_.samplers[size_t(t.sampler)];
+      const std::string samplerAt = "/samplers/" + std::to_string(t.sampler);
+      if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
+        note(samplerAt + ": wrap modes other than REPEAT are drawn as REPEAT");
+      if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST || s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+          s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST ||
+          s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR ||
+          s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST || s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR)
+        note(samplerAt + ": filters are drawn as LINEAR_MIPMAP_LINEAR (trilinear)");
+    }
+    return true;
+  }
+
+  // UV offsets and scales: finite and well inside fp32's exact integers.
+  static constexpr double kMaxUvValue = 1e6;
+
+  bool pair(const tinygltf::Value& object, const char* key, const std::string& at, std::array<double, 2>* out,
+            std::string* error) {
+    if (!object.IsObject() || !object.Has(key)) return true;
+    const tinygltf::Value& v = object.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) {
+      *error = at + "/" + key + ": expected 2 numbers";
+      return false;
+    }
+    for (int i = 0; i < 2; ++i) {
+      (*out)[size_t(i)] = v.Get(i).GetNumberAsDouble();
+      if (!(std::abs((*out)[size_t(i)]) <= kMaxUvValue)) {
+        *error =
+            at + "/" + key + "/" + std::to_string(i) + ": " + number((*out)[size_t(i)]) + " is outside [-1e6, 1e6]";
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const tinygltf::Model& model_;
+  GltfMaterialSet* out_;
+};
+
+bool readImage(const tinygltf::Image& image, size_t index, GltfImage* out, std::string* error) {
+  if (!image.image.empty()) {  // a data: URI or a bufferView, delivered by the image callback
+    out->bytes.assign(image.image.begin(), image.image.end());
+    out->mimeType = image.mimeType;
+    return true;
+  }
+  if (image.uri.empty() || image.uri.rfind("data:", 0) == 0) {
+    *error = "/images/" + std::to_string(index) + ": no image data (a uri or a bufferView)";
+    return false;
+  }
+  out->uri = image.uri;
+  return true;
+}
+
+}  // namespace
+
+std::string GltfFeatures::name() const {
+  std::string name = "gltf";
+  for (size_t s = 0; s < kGltfSlots; ++s)
+    if (textured[s])
+      name += "_" + std::string(kSlots[s].prefix) + std::to_string(texCoord[s]) + (transformed[s] ? "t" : "");
+  if (vertexColors) name += "_vc";
+  if (alphaMode == "MASK") name += "_mask" + featureNumber(alphaCutoff);
+  if (alphaMode == "BLEND") name += "_blend";
+  if (doubleSided) name += "_ds";
+  return name;
+}
+
+std::optional<GltfMaterialSet> readGltfMaterials(const std::string& path, std::string* error,
+                                                 const GltfReadOptions& options) {
+  // The primitives the scene draws, split by material: which materials are used, and the file
+  // checked as a scene would load it.
+  auto meshes = loadGltfMeshesByMaterial(path, error, options);
+  if (!meshes) return std::nullopt;
+  GltfBudget own;
+  uint64_t bytesRead = 0;
+  std::optional<tinygltf::Model> model =
+      gltf::readSource(path, {options.assetRoot, own.fileBytes, true}, &bytesRead, error);
+  if (!model) return std::nullopt;
+  GltfMaterialSet set;
+  set.boundsMin.fill(std::numeric_limits<double>::max());
+  set.boundsMax.fill(std::numeric_limits<double>::lowest());
+  for (const auto& [index, mesh] : *meshes) {
+    for (size_t v = 0; v + abi::kVertexFloats <= mesh.vertices.size(); v += abi::kVertexFloats) {
+      for (size_t c = 0; c < 3; ++c) {
+        set.boundsMin[c] = std::min(set.boundsMin[c], double(mesh.vertices[v + c]));
+        set.boundsMax[c] = std::max(set.boundsMax[c], double(mesh.vertices[v + c]));
+      }
+    }
+  }
+  Reader reader(*model, &set);
+  for (const std::string& name : model->extensionsUsed)
+    if (std::find(std::begin(kReadExtensions), std::end(kReadExtensions), name) == std::end(kReadExtensions))
+      reader.note("/extensionsUsed: optional extension '" + name + "' is not read; skipped");
+  // Vertex colours belong to primitives: a material gets them when any primitive drawn with it
+  // has COLOR_0 (a primitive without them reads white, runtime::Vertex's default).
+  std::set<int> coloured;
+  for (const tinygltf::Mesh& mesh : model->meshes)
+    for (const tinygltf::Primitive& p : mesh.primitives)
+      if (p.attributes.count("COLOR_0")) coloured.insert(std::max(p.material, -1));
+  std::string why;
+  for (const auto& [index, mesh] : *meshes) {
+    if (!reader.material(index, coloured.count(index) > 0, &why)) {
+      *error = path + ": error: " + why;
+      return std::nullopt;
+    }
+  }
+  set.images.resize(model->images.size());
+  for (size_t i = 0; i < model->images.size(); ++i) {
+    if (!readImage(model->images[i], i, &set.images[i], &why)) {
+      *error = path + ": error: " + why;
+      return std::nullopt;
+    }
+  }
+  return set;
+}
+
+std::string gltfMaterialSource(const GltfFeatures& f) {
+  using S = GltfSlot;
+  const auto has = [&](S s) { return f.textured[size_t(s)]; };
+  std::string text =
+      "// glTF 2.0 metallic-roughness (glTF 2.0 §3.9), written by `matc import` for the feature set\n"
+      "// its name spells (docs/gltf.md, \"The materials\"). Factors multiply texels and vertex\n"
+      "// colours as the specification's appendix B does.\n";
+  text += "material " + f.name() + " {\n    shading lit\n";
+  if (f.alphaMode == "MASK") text += "    blending masked(" + number(f.alphaCutoff) + ")\n";
+  if (f.alphaMode == "BLEND") text += "    blending transparent\n";
+  if (f.doubleSided) text += "    doubleSided\n";
+  text +=
+      "\n    param baseColorFactor: vec4 = vec4(1.0, 1.0, 1.0, 1.0) in [0, 1]\n"
+      "    param metallicFactor: float = 1.0 in [0, 1]\n"
+      "    param roughnessFactor: float = 1.0 in [0, 1]\n"
+      "    param emissiveFactor: vec3 = vec3(0.0, 0.0, 0.0) in [0, " +
+      number(Reader::kMaxEmissiveStrength) +
+      "]\n"
+      "    // Filament's reflectance from KHR_materials_ior: f0 = ((ior - 1) / (ior + 1))^2 = 0.16 reflectance^2\n"
+      "    param reflectance: float = 0.5 in [0, 2.5]\n";
+  if (has(S::Normal)) text += "    param normalScale: float = 1.0 in [-100, 100]\n";
+  if (has(S::Occlusion)) text += "    param occlusionStrength: float = 1.0 in [0, 1]\n";
+  for (size_t s = 0; s < kGltfSlots; ++s) {
+    if (!f.textured[s]) continue;
+    const SlotInfo& slot = kSlots[s];
+    text += "    param " + std::string(slot.parameter) + ": texture(" + slot.kind + ") = " + slot.fallback + "\n";
+    if (f.transformed[s])
+      text += "    param " + std::string(slot.parameter) + "Offset: vec2 = vec2(0.0, 0.0) in [-1e6, 1e6]\n" +
+              "    param " + slot.parameter + "Rotation: float = 0.0 in [-1e6, 1e6]\n" + "    param " + slot.parameter +
+              "Scale: vec2 = vec2(1.0, 1.0) in [-1e6, 1e6]\n";
+  }
+  text += "\n    surface {\n";
+  // KHR_texture_transform: uv' = T · R · S · uv, R turning counter-clockwise by `rotation`
+  // (the extension's GLSL: rotation = mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1), column-major).
+  std::string sampled[kGltfSlots];
+  for (size_t s = 0; s < kGltfSlots; ++s) {
+    if (!f.textured[s]) continue;
+    const std::string p = kSlots[s].parameter, uv = "vertex.uv" + std::to_string(f.texCoord[s]);
+    std::string coordinate = uv;
+    if (f.transformed[s]) {
+      text += "        let " + p + "Uv = vec2(cos(params." + p + "Rotation) * params." + p + "Scale.x * " + uv +
+              ".x - sin(params." + p + "Rotation) * params." + p + "Scale.y * " + uv + ".y,\n" +
+              "            sin(params." + p + "Rotation) * params." + p + "Scale.x * " + uv + ".x + cos(params." + p +
+              "Rotation) * params." + p + "Scale.y * " + uv + ".y) + params." + p + "Offset\n";
+      coordinate = p + "Uv";
+    }
+    sampled[s] = "sample(params." + p + ", " + coordinate + ")";
+  }
+  const std::string colour = f.vertexColors ? " * vertex.color" : "";
+  if (has(S::BaseColor)) {
+    text += "        let base = params.baseColorFactor * " + sampled[size_t(S::BaseColor)] + colour + "\n";
+  } else {
+    text += "        let base = params.baseColorFactor" + colour + "\n";
+  }
+  text += "        baseColor = base.rgb\n";
+  if (f.alphaMode != "OPAQUE") text += "        alpha = base.a\n";
+  if (has(S::MetallicRoughness)) {
+    text += "        let metalRough = " + sampled[size_t(S::MetallicRoughness)] + "\n" +
+            "        metallic = params.metallicFactor * metalRough.b\n" +
+            "        roughness = params.roughnessFactor * metalRough.g\n";
+  } else {
+    text += "        metallic = params.metallicFactor\n        roughness = params.roughnessFactor\n";
+  }
+  text += "        reflectance = params.reflectance\n";
+  if (has(S::Normal)) {
+    text += "        let mapped = " + sampled[size_t(S::Normal)] + "\n" +
+            "        normal = vec3(mapped.xy * params.normalScale, mapped.z)\n";
+  }
+  if (has(S::Occlusion))
+    text +=
+        "        ambientOcclusion = 1.0 + params.occlusionStrength * (" + sampled[size_t(S::Occlusion)] + ".r - 1.0)\n";
+  text += has(S::Emissive) ? "        emissive = params.emissiveFactor * " + sampled[size_t(S::Emissive)] + ".rgb\n"
+                           : "        emissive = params.emissiveFactor\n";
+  text += "    }\n}\n";
+  return text;
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,294 @@
+// glTF materials as Facet materials (docs/gltf.md): the feature sets and instances read from
+// tests/data/gltf/features.gltf (tests/data/gltf/make_features.py says what each material
+// covers), the .mat each feature set becomes (compiled for every tier), `matc import`'s scene,
+// and that scene rendered on Vulkan and GLES.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "facet/abi/shader_abi.h"
+#include "facet/runtime/gl_backend.h"
+#include "facet/runtime/gltf_materials.h"
+#include "facet/runtime/render_backend.h"
+#include "facet/runtime/scene_frame.h"
+#include "facet/runtime/vulkan_backend.h"
+#include "test_compile.h"
+#include "test_images.h"
+#include "test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using facet::runtime::GltfMaterial;
+using facet::runtime::GltfSlot;
+
+std::string featuresFile() { return facet::test::sourceDir() + "/tests/data/gltf/features.gltf"; }
+
+const GltfMaterial* find(const facet::runtime::GltfMaterialSet& set, int index) {
+  for (const GltfMaterial& m : set.materials)
+    if (m.index == index) return &m;
+  return nullptr;
+}
+
+bool hasNote(const std::vector<std::string>& notes, const std::string& text) {
+  return std::find(notes.begin(), notes.end(), text) != notes.end();
+}
+
+TEST(GltfMaterials, FeatureSetsAndInstancesFollowTheFile) {
+  std::string error;
+  auto set = facet::runtime::readGltfMaterials(featuresFile(), &error);
+  ASSERT_TRUE(set) << error;
+  ASSERT_EQ(set->materials.size(), 6u);
+  const std::pair<int, const char*> names[] = {{-1, "gltf"},
+                                               {0, "gltf_bc0_mr0_n0_ao1_em0"},
+                                               {1, "gltf_bc0_mr0_n0_ao1_em0"},
+                                               {2, "gltf_bc0_mask0p3_ds"},
+                                               {3, "gltf_vc_blend"},
+                                               {4, "gltf_bc1t"}};
+  for (const auto& [index, name] : names) {
+    const GltfMaterial* m = find(*set, index);
+    ASSERT_NE(m, nullptr) << index;
+    EXPECT_EQ(m->features.name(), name) << index;
+  }
+  const GltfMaterial& everything = *find(*set, 0);
+  EXPECT_EQ(everything.baseColorFactor, (std::array<double, 4>{1, 0.9, 0.8, 1}));
+  EXPECT_DOUBLE_EQ(everything.metallicFactor, 0.7);
+  EXPECT_DOUBLE_EQ(everything.roughnessFactor, 0.6);
+  EXPECT_DOUBLE_EQ(everything.normalScale, 0.5);
+  EXPECT_DOUBLE_EQ(everything.occlusionStrength, 0.8);
+  // KHR_materials_emissive_strength multiplies the factor.
+  EXPECT_EQ(everything.emissiveFactor, (std::array<double, 3>{2, 1, 0.4}));
+  EXPECT_EQ(everything.textures[size_t(GltfSlot::Occlusion)].texCoord, 1);
+  // The twin shares the feature set, with its own factors and base colour image.
+  const GltfMaterial& twin = *find(*set, 1);
+  EXPECT_DOUBLE_EQ(twin.metallicFactor, 0.1);
+  EXPECT_EQ(twin.textures[size_t(GltfSlot::BaseColor)].image, 4);
+  const GltfMaterial& transformed = *find(*set, 4);
+  const auto& t = transformed.textures[size_t(GltfSlot::BaseColor)];
+  EXPECT_TRUE(t.transformed);
+  EXPECT_EQ(t.texCoord, 1);  // the transform's texCoord replaces the textureInfo's
+  EXPECT_EQ(t.offset, (std::array<double, 2>{0.25, -0.5}));
+  EXPECT_DOUBLE_EQ(t.rotation, 0.5);
+  EXPECT_EQ(t.scale, (std::array<double, 2>{2, 3}));
+  EXPECT_DOUBLE_EQ(transformed.ior, 1.45);
+  // Embedded images keep their bytes; a file beside the glTF is named by its URI.
+  ASSERT_EQ(set->images.size(), 5u);
+  for (size_t i = 0; i < 4; ++i) EXPECT_EQ(set->images[i].bytes.size() > 8 ? set->images[i].bytes[1] : 0, 'P') << i;
+  EXPECT_EQ(set->images[4].uri, "features_base.png");
+  EXPECT_TRUE(hasNote(set->notes, "/extensionsUsed: optional extension 'EXT_facet_unknown' is not read; skipped"));
+  EXPECT_TRUE(hasNote(set->notes,
+                      "/materials/0/extensions/EXT_facet_unknown: extension not read; the material is "
+                      "drawn without it"));
+  EXPECT_TRUE(hasNote(set->notes, "/samplers/1: wrap modes other than REPEAT are drawn as REPEAT"));
+}
+
+TEST(GltfMaterials, EveryFeatureSetCompilesForEveryTier) {
+  std::string error;
+  auto set = facet::runtime::readGltfMaterials(featuresFile(), &error);
+  ASSERT_TRUE(set) << error;
+  std::set<std::string> built;
+  for (const GltfMaterial& m : set->materials) {
+    if (!built.insert(m.features.name()).second) continue;
+    const std::string source = facet::runtime::gltfMaterialSource(m.features);
+    EXPECT_TRUE(facet::test::buildText(source, m.features.name() + ".mat")) << source;
+  }
+  EXPECT_EQ(built.size(), 5u);
+}
+
+// What a file must not get through: an unknown required extension, a material the spec's ranges
+// exclude, a texture that does not exist. Each error names the file and the JSON pointer.
+TEST(GltfMaterials, BadMaterialsAreErrorsNamingThePlace) {
+  const std::string dir = facet::test::scratchDir("gltf-materials-bad");
+  const std::string text = facet::test::readText(featuresFile());
+  const auto expectError = [&](const std::string& from, const std::string& to, const std::string& why) {
+    std::string edited = text;
+    const size_t at = edited.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    edited.replace(at, from.size(), to);
+    std::ofstream(dir + "/bad.gltf") << edited;
+    std::string error;
+    EXPECT_FALSE(facet::runtime::readGltfMaterials(dir + "/bad.gltf", &error));
+    EXPECT_EQ(error, dir + "/bad.gltf: error: " + why);
+  };
+  expectError(R"("extensionsUsed": [)", R"("extensionsRequired": ["KHR_draco_mesh_compression"], "extensionsUsed": [)",
+              "/extensionsRequired/0: the file requires extension 'KHR_draco_mesh_compression', which this loader does "
+              "not implement (it implements KHR_mesh_quantization and KHR_texture_transform; the glTF spec says such "
+              "a file must not be loaded)");
+  expectError(R"("metallicFactor": 0.7)", R"("metallicFactor": 1.5)",
+              "/materials/0/pbrMetallicRoughness/metallicFactor: 1.5 is outside [0, 1]");
+  expectError(R"("normalTexture": {"index": 2, "scale": 0.5})", R"("normalTexture": {"index": 9})",
+              "/materials/0/normalTexture/index: texture 9 does not exist");
+  expectError(R"("occlusionTexture": {"index": 1, "texCoord": 1, "strength": 0.8})",
+              R"("occlusionTexture": {"index": 1, "texCoord": 2})",
+              "/materials/0/occlusionTexture/texCoord: 2 (Facet reads TEXCOORD_0 and TEXCOORD_1)");
+  expectError(R"("alphaMode": "BLEND")", R"("alphaMode": "ADD")",
+              "/materials/3/alphaMode: 'ADD' is not OPAQUE, MASK or BLEND");
+}
+
+// `gltfMaterial` picks a glTF material's primitives: only on a glTF mesh, an integer, and one the
+// file's scene draws.
+TEST(GltfMaterials, SceneObjectsPickPrimitivesByMaterial) {
+  const std::string dir = facet::test::scratchDir("gltf-material-pick");
+  for (const char* name : {"features.gltf", "features_base.png"})
+    fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/" + name, dir + "/" + name);
+  const auto scene = [&](const std::string& mesh, const std::string& index) {
+    return R"({"objects": [{"mesh": ")" + mesh + R"(", "gltfMaterial": )" + index + R"(, "material": "m"}]})";
+  };
+  std::string error;
+  EXPECT_FALSE(facet::runtime::parseScene(dir + "/s.json", scene("sphere", "0"), &error));
+  EXPECT_NE(error.find("/objects/0/gltfMaterial: only a glTF mesh has materials to choose from"), std::string::npos)
+      << error;
+  EXPECT_FALSE(facet::runtime::parseScene(dir + "/s.json", scene("features.gltf", "1.5"), &error));
+  EXPECT_NE(error.find("/objects/0/gltfMaterial: expected a material index (an integer, or -1)"), std::string::npos)
+      << error;
+  EXPECT_FALSE(facet::runtime::parseScene(dir + "/s.json", scene("features.gltf", "-2"), &error));
+  const std::string packages = facet::test::writePackagesFromTexts(
+      "gltf-material-pick-packages", {"material m { shading unlit\n surface { baseColor = vec3(1.0) } }"});
+  auto parsed = facet::runtime::parseScene(dir + "/s.json", scene("features.gltf", "7"), &error);
+  ASSERT_TRUE(parsed) << error;
+  EXPECT_FALSE(facet::runtime::SceneFrame::prepare(*parsed, packages, &error));
+  EXPECT_EQ(error, "object 0: " + dir +
+                       "/features.gltf: error: no primitive of the file's scene uses /materials/7 "
+                       "(the object's gltfMaterial)");
+  // Each material's primitives are a Mesh of their own: the quad of material 2 (2 triangles).
+  auto meshes = facet::runtime::loadGltfMeshesByMaterial(dir + "/features.gltf", &error);
+  ASSERT_TRUE(meshes) << error;
+  EXPECT_EQ(meshes->size(), 6u);
+  EXPECT_EQ(meshes->at(2).indices.size(), 6u);
+  EXPECT_EQ(meshes->at(-1).indices.size(), 6u);
+}
+
+// A normal-mapped primitive without TANGENT gets MikkTSpace's, from the normal texture's UV set,
+// after its node's transform: the quads turned 90° about z have u along +y, and v down the
+// image along +x, so the tangent is +y and the bitangent w · (n × t) = −x points up the image
+// (green's direction in glTF's normal maps). A primitive that is not normal-mapped keeps the
+// default tangent.
+TEST(GltfMaterials, MissingTangentsOfNormalMappedPrimitivesAreMikkTSpaces) {
+  const std::string dir = facet::test::scratchDir("gltf-mikktspace");
+  std::string text = facet::test::readText(featuresFile());
+  for (size_t at; (at = text.find(R"("TANGENT": 2, )")) != std::string::npos;) text.erase(at, 14);
+  const std::string node = R"("nodes": [{"mesh": 0}])";
+  ASSERT_NE(text.find(node), std::string::npos);
+  text.replace(text.find(node), node.size(), R"("nodes": [{"mesh": 0, "rotation": [0, 0, 0.70710678, 0.70710678]}])");
+  std::ofstream(dir + "/f.gltf") << text;
+  fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png");
+  std::string error;
+  auto meshes = facet::runtime::loadGltfMeshesByMaterial(dir + "/f.gltf", &error);
+  ASSERT_TRUE(meshes) << error;
+  const auto tangentsOf = [&](int material) {
+    // The tangents of the vertices the material's triangles use (every primitive of the file
+    // shares one accessor, so each brings all 24 vertices and indexes 4).
+    std::vector<std::array<float, 4>> out;
+    const facet::runtime::Mesh& m = meshes->at(material);
+    for (uint32_t index : m.indices) {
+      const float* t = &m.vertices[size_t(index) * facet::abi::kVertexFloats + 14];
+      out.push_back({t[0], t[1], t[2], t[3]});
+    }
+    return out;
+  };
+  for (const auto& t : tangentsOf(0)) {
+    EXPECT_NEAR(t[0], 0, 1e-5);
+    EXPECT_NEAR(t[1], 1, 1e-5);
+    EXPECT_NEAR(t[2], 0, 1e-5);
+    EXPECT_EQ(t[3], 1);
+  }
+  for (const auto& t : tangentsOf(2)) EXPECT_EQ(t, (std::array<float, 4>{1, 0, 0, 1}));
+}
+
+// `matc import` writes a scene only over files the scene may read: the glTF file and its image
+// files inside the asset root, image URIs read as RFC 3986 says (no %00 cutting a name short).
+TEST(GltfMaterials, ImportRefusesFilesOutsideTheAssetRoot) {
+  const std::string dir = facet::test::scratchDir("gltf-import-outside");
+  fs::create_directories(dir + "/out");
+  const std::string text = facet::test::readText(featuresFile());
+  const auto importWith = [&](const std::string& uri, const std::string& outDir) {
+    std::string edited = text;
+    edited.replace(edited.find(R"("features_base.png")"), 19, "\"" + uri + "\"");
+    std::ofstream(dir + "/out/f.gltf") << edited;
+    facet::runtime::GltfImport imported;
+    std::string error;
+    EXPECT_FALSE(facet::runtime::importGltf(dir + "/out/f.gltf", outDir, "", &imported, &error));
+    return error;
+  };
+  EXPECT_EQ(importWith("../secret.png", dir + "/out"),
+            dir + "/out/f.gltf: error: /images/4/uri: the image is outside " + dir +
+                "/out, the folder the scene may read files from (the output folder, or --asset-root)");
+  EXPECT_EQ(importWith("a%00b.png", dir + "/out"),
+            dir + "/out/f.gltf: error: /images/4/uri: 'a%00b.png' has a malformed %-escape or %00 at character 1");
+  EXPECT_EQ(importWith("features_base.png", dir + "/out/scenes"),
+            dir + "/out/f.gltf: error: the glTF file is outside " + dir +
+                "/out/scenes, the folder the scene may read files from (the output folder, or --asset-root)");
+  EXPECT_FALSE(fs::exists(dir + "/out/scenes/f.json"));
+}
+
+int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  int worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(int(a[i]) - int(b[i])));
+  return worst;
+}
+
+// `matc import` writes a .mat per feature set, the embedded images and a scene that draws every
+// primitive with its own material; the scene renders on both APIs, and they agree.
+TEST(GltfMaterials, ImportedSceneRendersOnVulkanAndGles) {
+  const std::string dir = facet::test::scratchDir("gltf-import");
+  fs::remove_all(dir + "/out");
+  fs::create_directories(dir + "/out/asset");
+  for (const char* name : {"features.gltf", "features_base.png"})
+    fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/" + name, dir + "/out/asset/" + name,
+                  fs::copy_options::overwrite_existing);
+  facet::runtime::GltfImport imported;
+  std::string error;
+  ASSERT_TRUE(facet::runtime::importGltf(dir + "/out/asset/features.gltf", dir + "/out", "", &imported, &error))
+      << error;
+  EXPECT_EQ(imported.materials.size(), 5u);
+  EXPECT_EQ(imported.images.size(), 5u);  // four embedded, written out; one file beside the glTF
+  EXPECT_TRUE(fs::exists(dir + "/out/features_images/0.png"));
+  std::vector<std::string> texts;
+  for (const std::string& path : imported.materials) texts.push_back(facet::test::readText(path));
+  const std::string packages = facet::test::writePackagesFromTexts("gltf-import-packages", texts);
+  auto scene = facet::runtime::loadScene(imported.scene, &error);
+  ASSERT_TRUE(scene) << error;
+  EXPECT_EQ(scene->objects.size(), 6u);
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+  ASSERT_TRUE(frame) << error;
+  EXPECT_EQ(frame->frame().draws.size(), 6u);
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  auto gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(vk && gl) << error;
+  facet::runtime::FrameResult a, b;
+  ASSERT_TRUE(vk->render(frame->frame(), &a, &error)) << error;
+  ASSERT_TRUE(gl->render(frame->frame(), &b, &error)) << error;
+  ASSERT_EQ(a.ldr.size(), b.ldr.size());
+  size_t beyond1 = 0;
+  for (size_t i = 0; i < a.ldr.size(); ++i) beyond1 += std::abs(int(a.ldr[i]) - int(b.ldr[i])) > 1;
+  std::printf("features.gltf Vulkan vs GLES: max %d steps, %zu of %zu values beyond 1 step\n",
+              maxDifference(a.ldr, b.ldr), beyond1, a.ldr.size());
+  EXPECT_LE(maxDifference(a.ldr, b.ldr), 2);
+  EXPECT_LE(double(beyond1), 0.001 * double(a.ldr.size()));
+  EXPECT_TRUE(vk->validationErrors().empty());
+  EXPECT_TRUE(gl->validationErrors().empty());
+
+  // Each tier against `reference` (Vulkan; docs/gltf.md quotes these lines).
+  facet::runtime::FrameResult reference;
+  for (const char* tier : {"reference", "high", "mid", "low"}) {
+    scene->tier = tier;
+    auto tierFrame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+    ASSERT_TRUE(tierFrame) << error;
+    facet::runtime::FrameResult result;
+    ASSERT_TRUE(vk->render(tierFrame->frame(), &result, &error)) << error;
+    if (std::string(tier) == "reference") {
+      reference = std::move(result);
+      continue;
+    }
+    const double db = facet::test::psnr(reference.ldr, result.ldr);
+    std::printf("features.gltf %s vs reference: PSNR %.1f dB\n", tier, db);
+    // Every tier lights these flat quads close to the reference (measured: docs/gltf.md).
+    EXPECT_GE(db, 30.0) << tier;
+  }
+}
+
+}  // namespace
