@@ -51,6 +51,9 @@
 #if defined(FACET_IBL_SAMPLED)
 #include "ibl_sampled.glsl"
 #endif
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+#include "ambient_occlusion.glsl"
+#endif
 #include "shading_ambient.glsl"
 #include "output_blending.glsl"
 // The view vector at highp, for the half vector of each light (shading_standard.glsl,

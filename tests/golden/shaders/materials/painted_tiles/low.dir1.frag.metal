@@ -49,34 +49,37 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    float3 _548 = fast::normalize(in.v_toEye);
-    float2 _672 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _675 = facet_material_albedo.sample(facet_material_albedoSmplr, _672);
-    float4 _685 = facet_material_relief.sample(facet_material_reliefSmplr, _672);
-    half3 _689 = (half4(_685).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1125;
+    float3 _612 = fast::normalize(in.v_toEye);
+    float2 _747 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _750 = facet_material_albedo.sample(facet_material_albedoSmplr, _747);
+    float4 _760 = facet_material_relief.sample(facet_material_reliefSmplr, _747);
+    half3 _764 = (half4(_760).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _770 = fract(_747 * 4.0);
+    float _772 = _770.x;
+    float _779 = _770.y;
+    half3 _1247;
     do
     {
-        half3 _702 = half4(in.v_tangent).xyz;
-        if (float(dot(_702, _702)) == 0.0)
+        half3 _804 = half4(in.v_tangent).xyz;
+        if (float(dot(_804, _804)) == 0.0)
         {
-            _1125 = normalize(half3(in.v_normal));
+            _1247 = normalize(half3(in.v_normal));
             break;
         }
-        _1125 = normalize(((_702 * _689.x) + ((cross(half3(in.v_normal), _702) * half(in.v_tangent.w)) * _689.y)) + (half3(in.v_normal) * _689.z));
+        _1247 = normalize(((_804 * _764.x) + ((cross(half3(in.v_normal), _804) * half(in.v_tangent.w)) * _764.y)) + (half3(in.v_normal) * _764.z));
         break;
     } while(false);
-    half3 _784 = reflect(-half3(_548), _1125);
-    float4 _844 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1125, half3(_548)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _870 = facet_environment.sample(facet_environmentSmplr, float3(_784), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _799 = mix(half4(_844).xxx, half4(_844).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_844).y) - half(1.0))));
-    half3 _599 = half4(frame.lightDirection).xyz;
-    half _1023 = clamp(dot(_784, _599), half(0.0), half(1.0));
-    half _1026 = _1023 * _1023;
-    half4 _1188 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1026 * _1026, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1038 = _1188.x;
-    half3 _1047 = fma(clamp(half4(_675).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_870).xyz * _799) + min((_799 * ((_1038 * _1038) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1125, _599), half(0.0), half(1.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1047, half(1.0)));
+    half _853 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_772, 1.0 - _772), fast::min(_779, 1.0 - _779))))), half(0.0), half(1.0));
+    half3 _892 = reflect(-half3(_612), _1247);
+    float4 _954 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1247, half3(_612)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _980 = facet_environment.sample(facet_environmentSmplr, float3(_892), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _907 = mix(half4(_954).xxx, half4(_954).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_954).y) - half(1.0))));
+    half3 _663 = half4(frame.lightDirection).xyz;
+    half _1139 = clamp(dot(_892, _663), half(0.0), half(1.0));
+    half _1142 = _1139 * _1139;
+    half4 _1313 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1142 * _1142, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1154 = _1313.x;
+    out.fragColor = float4(half4(((((clamp(half4(_750).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0)) * half3(in.v_diffuseLight)) * _853) + ((half4(_980).xyz * _907) * _853)) + min((_907 * ((_1154 * _1154) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1247, _663), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

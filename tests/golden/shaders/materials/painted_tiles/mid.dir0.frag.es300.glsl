@@ -71,6 +71,18 @@ material.baseColor=t3;
 material.roughness=params.roughness;
 vec3 t4=texture(facet_material_relief,m_uv).xyz*(255.0/127.0)-(128.0/127.0);
 material.normal=t4;
+highp vec2 t5=m_uv*4.0;
+highp vec2 m_tile=fract(t5);
+highp float t6=m_tile.x;
+highp float t7=1.0-t6;
+highp float t8=min(t6,t7);
+highp float t9=m_tile.y;
+highp float t10=1.0-t9;
+highp float t11=min(t9,t10);
+highp float m_edge=min(t8,t11);
+highp float t12=smoothstep(0.0,0.35,m_edge);
+highp float t13=mix(0.4,1.0,t12);
+material.ambientOcclusion=t13;
 }
 vec3 tangent_to_world(vec3 tangentNormal){
 vec3 n=v_normal;
@@ -105,7 +117,11 @@ return params.facet_perceptualRoughness;
 }
 vec3 shading_energy_compensation=vec3(1.0);
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
-return ambient;
+return ambient*clamp(material.ambientOcclusion,0.0,1.0);
+}
+vec3 apply_specular_occlusion(MaterialInputs material,vec3 specular,float NoV,float perceptualRoughness){
+float visibility=clamp(material.ambientOcclusion,0.0,1.0);
+return specular*visibility;
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -117,7 +133,7 @@ vec3 albedo=split_sum_albedo(dfg,f0);
 shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
 albedo*=shading_energy_compensation;
-return apply_ambient_occlusion(material,specular*albedo);
+return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }
 vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
