@@ -295,6 +295,9 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
   if (vertexDiffuse(in)) declare("vec3", "v_diffuseLight");  // diffuse irradiance / π, lit per vertex
   // The sun's n·l / π alone, for a receiver to shadow (templates/forward.vert.glsl).
   if (vertexDiffuse(in) && receivesShadow(in)) declare("float", "v_sunDiffuse");
+  // The lights' per-vertex diffuse apart from the ambient's, which ambient occlusion scales.
+  if (vertexDiffuse(in) && in.material.surface.outputs.count("ambientOcclusion") > 0)
+    declare("vec3", "v_directDiffuse");
   // The sun's frame and view depth of the normal-offset position (chunks/shadow_sun.glsl).
   if (receivesShadow(in)) declare("highp vec4", "v_shadowPosition");
   return s;

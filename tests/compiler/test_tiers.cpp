@@ -360,9 +360,7 @@ TEST(Tiers, TexturedExampleRendersAtLowOnBothBackends) {
   // ES path stores the mediump normal varying as fp16 (tests/runtime/test_gl_backend.cpp), and R·L good
   // to about 2^-10 moves the (R·L)⁴ lookup by up to a texel there (chunks/specular_lut.glsl).
   // Measured: 1 value of 3 · 480 · 280, 7 steps beyond its neighbourhood, since the table's rows
-  // are normalised (their rough highlights brighter and steeper); 4 values, up to 7 steps beyond,
-  // since the tiles' ambient occlusion (painted_tiles.mat), which varies across a few pixels per
-  // tile at this distance, shades the highlights' neighbourhoods.
+  // are normalised (their rough highlights brighter and steeper).
   EXPECT_LE(valuesOutsideNeighbourhood(a, b), 4);
   EXPECT_TRUE(vk->validationErrors().empty());
   EXPECT_TRUE(gl->validationErrors().empty());

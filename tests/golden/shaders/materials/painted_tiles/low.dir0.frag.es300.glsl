@@ -6,6 +6,7 @@ in mediump vec3 v_normal;
 in highp vec2 v_uv0;
 in mediump vec4 v_tangent;
 in mediump vec3 v_diffuseLight;
+in mediump vec3 v_directDiffuse;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -155,7 +156,10 @@ shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);
+vec3 directLight=v_directDiffuse;
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 directDiffuse=material_diffuse_color(material)*directLight;
+color+=directDiffuse;
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

@@ -44,70 +44,72 @@ struct main0_in
     float2 v_uv0 [[user(locn2)]];
     float4 v_tangent [[user(locn3)]];
     float3 v_diffuseLight [[user(locn4)]];
+    float3 v_directDiffuse [[user(locn5)]];
 };
 
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
     float3 _741 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float2 _900 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _903 = facet_material_albedo.sample(facet_material_albedoSmplr, _900);
-    float4 _913 = facet_material_relief.sample(facet_material_reliefSmplr, _900);
-    half3 _917 = (half4(_913).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _923 = fract(_900 * 4.0);
-    float _925 = _923.x;
-    float _932 = _923.y;
-    half3 _2027;
+    float2 _912 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _915 = facet_material_albedo.sample(facet_material_albedoSmplr, _912);
+    float4 _925 = facet_material_relief.sample(facet_material_reliefSmplr, _912);
+    half3 _929 = (half4(_925).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _935 = fract(_912 * 4.0);
+    float _937 = _935.x;
+    float _944 = _935.y;
+    half3 _2055;
     do
     {
-        half3 _957 = half4(in.v_tangent).xyz;
-        if (float(dot(_957, _957)) == 0.0)
+        half3 _969 = half4(in.v_tangent).xyz;
+        if (float(dot(_969, _969)) == 0.0)
         {
-            _2027 = normalize(half3(in.v_normal));
+            _2055 = normalize(half3(in.v_normal));
             break;
         }
-        _2027 = normalize(((_957 * _917.x) + ((cross(half3(in.v_normal), _957) * half(in.v_tangent.w)) * _917.y)) + (half3(in.v_normal) * _917.z));
+        _2055 = normalize(((_969 * _929.x) + ((cross(half3(in.v_normal), _969) * half(in.v_tangent.w)) * _929.y)) + (half3(in.v_normal) * _929.z));
         break;
     } while(false);
-    half _1006 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_925, 1.0 - _925), fast::min(_932, 1.0 - _932))))), half(0.0), half(1.0));
-    half _1041 = max(dot(_2027, half3(_741)), half(9.9999997473787516355514526367188e-05));
-    float4 _1106 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1041, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _1125 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1106).y) - half(1.0)));
-    float4 _1132 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_741), _2027)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _782 = half4(frame.lightDirection).xyz;
-    half3 _1269 = normalize(half3(_741) + _782);
-    half _1196 = clamp(dot(_2027, _782), half(0.0), half(1.0));
-    half3 _1296 = cross(_2027, _1269);
-    half _1299 = clamp(dot(_2027, _1269), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _1316 = max(mix((half(2.0) * _1196) * _1041, _1196 + _1041, half(params.facet_alpha)), half(0.000244140625));
-    half _1318 = half(1024.0) * half(params.facet_alpha);
-    half _1323 = _1318 / (fma(_1299, _1299, dot(_1296, _1296)) * (half(6433.98193359375) * _1316));
-    float3 _1371 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1374 = dot(_1371, _1371);
-    float3 _1379 = _1371 * rsqrt(fast::max(_1374, 9.9999999392252902907785028219223e-09));
-    float _1383 = _1374 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1388 = fast::clamp(fma(-_1383, _1383, 1.0), 0.0, 1.0);
-    float _1407 = fast::clamp(fma(dot(-_1379, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1541 = normalize(half3(_741) + half3(_1379));
-    half _1468 = clamp(dot(_2027, half3(_1379)), half(0.0), half(1.0));
-    half3 _1568 = cross(_2027, _1541);
-    half _1571 = clamp(dot(_2027, _1541), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _1588 = max(mix((half(2.0) * _1468) * _1041, _1468 + _1041, half(params.facet_alpha)), half(0.000244140625));
-    half _1595 = _1318 / (fma(_1571, _1571, dot(_1568, _1568)) * (half(6433.98193359375) * _1588));
-    float3 _1643 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1646 = dot(_1643, _1643);
-    float3 _1651 = _1643 * rsqrt(fast::max(_1646, 9.9999999392252902907785028219223e-09));
-    float _1655 = _1646 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1660 = fast::clamp(fma(-_1655, _1655, 1.0), 0.0, 1.0);
-    float _1679 = fast::clamp(fma(dot(-_1651, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1813 = normalize(half3(_741) + half3(_1651));
-    half _1740 = clamp(dot(_2027, half3(_1651)), half(0.0), half(1.0));
-    half3 _1840 = cross(_2027, _1813);
-    half _1843 = clamp(dot(_2027, _1813), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _1860 = max(mix((half(2.0) * _1740) * _1041, _1740 + _1041, half(params.facet_alpha)), half(0.000244140625));
-    half _1867 = _1318 / (fma(_1843, _1843, dot(_1840, _1840)) * (half(6433.98193359375) * _1860));
-    half3 _1879 = ((((((clamp(half4(_903).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0)) * half3(in.v_diffuseLight)) * _1006) + ((half4(_1132).xyz * (mix(half4(_1106).xxx, half4(_1106).yyy, half3(float3(0.039999999105930328369140625))) * _1125)) * _1006)) + min(((half3(float3(0.039999999105930328369140625)) * min(_1323 * (_1323 * (half(6.283185482025146484375) * _1316)), half(65504.0))) * _1125) * (half4(frame.lightColor).xyz * _1196), half3(float3(65504.0)))) + min(((half3(float3(0.039999999105930328369140625)) * min(_1595 * (_1595 * (half(6.283185482025146484375) * _1588)), half(65504.0))) * _1125) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1388) * half(_1388)) / fast::max(_1374, 9.9999997473787516355514526367188e-05)) * half(_1407)) * half(_1407)), float3(65504.0))) * _1468), half3(float3(65504.0)))) + min(((half3(float3(0.039999999105930328369140625)) * min(_1867 * (_1867 * (half(6.283185482025146484375) * _1860)), half(65504.0))) * _1125) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1660) * half(_1660)) / fast::max(_1646, 9.9999997473787516355514526367188e-05)) * half(_1679)) * half(_1679)), float3(65504.0))) * _1740), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1879, half(1.0)));
+    half3 _1012 = clamp(half4(_915).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _1018 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_937, 1.0 - _937), fast::min(_944, 1.0 - _944))))), half(0.0), half(1.0));
+    half _1065 = max(dot(_2055, half3(_741)), half(9.9999997473787516355514526367188e-05));
+    float4 _1130 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1065, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _1149 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1130).y) - half(1.0)));
+    float4 _1156 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_741), _2055)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _794 = half4(frame.lightDirection).xyz;
+    half3 _1293 = normalize(half3(_741) + _794);
+    half _1220 = clamp(dot(_2055, _794), half(0.0), half(1.0));
+    half3 _1320 = cross(_2055, _1293);
+    half _1323 = clamp(dot(_2055, _1293), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _1340 = max(mix((half(2.0) * _1220) * _1065, _1220 + _1065, half(params.facet_alpha)), half(0.000244140625));
+    half _1342 = half(1024.0) * half(params.facet_alpha);
+    half _1347 = _1342 / (fma(_1323, _1323, dot(_1320, _1320)) * (half(6433.98193359375) * _1340));
+    float3 _1395 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1398 = dot(_1395, _1395);
+    float3 _1403 = _1395 * rsqrt(fast::max(_1398, 9.9999999392252902907785028219223e-09));
+    float _1407 = _1398 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1412 = fast::clamp(fma(-_1407, _1407, 1.0), 0.0, 1.0);
+    float _1431 = fast::clamp(fma(dot(-_1403, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half3 _1565 = normalize(half3(_741) + half3(_1403));
+    half _1492 = clamp(dot(_2055, half3(_1403)), half(0.0), half(1.0));
+    half3 _1592 = cross(_2055, _1565);
+    half _1595 = clamp(dot(_2055, _1565), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _1612 = max(mix((half(2.0) * _1492) * _1065, _1492 + _1065, half(params.facet_alpha)), half(0.000244140625));
+    half _1619 = _1342 / (fma(_1595, _1595, dot(_1592, _1592)) * (half(6433.98193359375) * _1612));
+    float3 _1667 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1670 = dot(_1667, _1667);
+    float3 _1675 = _1667 * rsqrt(fast::max(_1670, 9.9999999392252902907785028219223e-09));
+    float _1679 = _1670 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1684 = fast::clamp(fma(-_1679, _1679, 1.0), 0.0, 1.0);
+    float _1703 = fast::clamp(fma(dot(-_1675, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half3 _1837 = normalize(half3(_741) + half3(_1675));
+    half _1764 = clamp(dot(_2055, half3(_1675)), half(0.0), half(1.0));
+    half3 _1864 = cross(_2055, _1837);
+    half _1867 = clamp(dot(_2055, _1837), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _1884 = max(mix((half(2.0) * _1764) * _1065, _1764 + _1065, half(params.facet_alpha)), half(0.000244140625));
+    half _1891 = _1342 / (fma(_1867, _1867, dot(_1864, _1864)) * (half(6433.98193359375) * _1884));
+    half3 _1903 = (((fma(_1012, half3(in.v_directDiffuse), (_1012 * half3(in.v_diffuseLight)) * _1018) + ((half4(_1156).xyz * (mix(half4(_1130).xxx, half4(_1130).yyy, half3(float3(0.039999999105930328369140625))) * _1149)) * _1018)) + min(((half3(float3(0.039999999105930328369140625)) * min(_1347 * (_1347 * (half(6.283185482025146484375) * _1340)), half(65504.0))) * _1149) * (half4(frame.lightColor).xyz * _1220), half3(float3(65504.0)))) + min(((half3(float3(0.039999999105930328369140625)) * min(_1619 * (_1619 * (half(6.283185482025146484375) * _1612)), half(65504.0))) * _1149) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1412) * half(_1412)) / fast::max(_1398, 9.9999997473787516355514526367188e-05)) * half(_1431)) * half(_1431)), float3(65504.0))) * _1492), half3(float3(65504.0)))) + min(((half3(float3(0.039999999105930328369140625)) * min(_1891 * (_1891 * (half(6.283185482025146484375) * _1884)), half(65504.0))) * _1149) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1684) * half(_1684)) / fast::max(_1670, 9.9999997473787516355514526367188e-05)) * half(_1703)) * half(_1703)), float3(65504.0))) * _1764), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1903, half(1.0)));
     return out;
 }
 
