@@ -154,8 +154,14 @@ vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,sh
 vec3 irradiance=lightColor*NoL;
 return min(specular*irradiance,65504.0);
 }
+vec3 multi_bounce_ao(float visibility,vec3 albedo){
+vec3 a=2.0404*albedo-0.3324;
+vec3 b= -4.7951*albedo+0.6417;
+vec3 c=2.7552*albedo+0.6903;
+return max(vec3(visibility),((visibility*a+b)*visibility+c)*visibility);
+}
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
-return ambient*clamp(material.ambientOcclusion,0.0,1.0);
+return ambient*multi_bounce_ao(clamp(material.ambientOcclusion,0.0,1.0),material_diffuse_color(material));
 }
 vec3 apply_specular_occlusion(MaterialInputs material,vec3 specular,float NoV,float perceptualRoughness){
 float visibility=clamp(material.ambientOcclusion,0.0,1.0);
