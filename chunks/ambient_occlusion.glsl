@@ -23,10 +23,11 @@ vec3 multi_bounce_ao(float visibility, vec3 albedo) {
 //   S = saturate((n·v + V)^e − 1 + V),  e = 2^(−16α − 1)
 // A smooth lobe at grazing view sees less of the unoccluded cone than the diffuse lobe does: S
 // falls below V there. S ≤ (1 + e)·V (as (n·v + V)^e ≤ 1 + e·V): S → 0 as V → 0; S = 1 at V = 1.
-// pow is written as exp2(e·log2 x): what mobile compilers emit for pow anyway (two transcendental
-// ops), with the exponent's exp2 a third. x = n·v + V ≥ MIN_N_DOT_V > 0: log2 is finite.
-// fp16: x ∈ (0, 2], log2 x ∈ [log2 MIN_N_DOT_V, 1]; e ∈ [2^-17, 0.46] (α ≥ 0.0079); 2^-17 is an
-// fp16 subnormal: flushed to 0 it gives x^0 = 1 and S = V, off by at most e·|log2 x|·ln 2 < 1e-4.
+// pow is written as exp2(e·log2 x): two transcendental ops (what the mobile cost model counts for a
+// pow, docs/eval.md), the exponent's exp2 a third. x = n·v + V ≥ MIN_N_DOT_V > 0: log2 is finite.
+// fp16: x ∈ (0, 2], log2 x ∈ [log2 MIN_N_DOT_V, 1] = [−13.3, 1]; e ∈ [2^-17, 0.46] (α ≥ 0.0079);
+// e < 2^-14 (α > 0.81) is an fp16 subnormal: flushed to 0 it gives x^0 = 1 and S = V, off by at
+// most e·|log2 x|·ln 2 < 2^-14 · 13.3 · 0.69 = 6e-4.
 float specular_occlusion_lagarde(float NoV, float visibility, float alpha) {
     float exponent = exp2(-16.0 * alpha - 1.0);
     return clamp(exp2(exponent * log2(NoV + visibility)) - 1.0 + visibility, 0.0, 1.0);
