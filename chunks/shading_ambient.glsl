@@ -14,13 +14,30 @@
 // then the multiply is left out: glslang and spirv-opt fold the clamp of the constant but keep
 // the vector × 1.0 (OpVectorTimesScalar has no folding rule): two vec3 multiplies at mediump, 3 FMA
 // slots per pixel in the cost model (docs/eval.md; red_plastic high.dir1 1.63 → 1.59 cycles).
+// With FACET_AO_MULTI_BOUNCE the diffuse ambient takes Jimenez's multi-bounce visibility in the
+// diffuse albedo (ambient_occlusion.glsl) instead of ao itself.
 vec3 apply_ambient_occlusion(MaterialInputs material, vec3 ambient) {
-#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+#if defined(FACET_AO_MULTI_BOUNCE)
+    return ambient * multi_bounce_ao(clamp(material.ambientOcclusion, 0.0, 1.0), material_diffuse_color(material));
+#elif defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
     return ambient * clamp(material.ambientOcclusion, 0.0, 1.0);
 #else
     return ambient;
 #endif
 }
+
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+// The specular ambient's occlusion: Lagarde's specular occlusion from ao, n·v and α with
+// FACET_SPECULAR_OCCLUSION_LAGARDE (ambient_occlusion.glsl), else ao itself.
+vec3 apply_specular_occlusion(MaterialInputs material, vec3 specular, float NoV, float perceptualRoughness) {
+    float visibility = clamp(material.ambientOcclusion, 0.0, 1.0);
+#if defined(FACET_SPECULAR_OCCLUSION_LAGARDE)
+    return specular * specular_occlusion_lagarde(NoV, visibility, perceptualRoughness * perceptualRoughness);
+#else
+    return specular * visibility;
+#endif
+}
+#endif
 
 // Diffuse ambient lit per pixel: irradiance / π from SH at the shading normal.
 vec3 shade_standard_ambient(MaterialInputs material, vec3 irradianceOverPi) {
@@ -86,7 +103,11 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
 #if defined(SPECULAR_LOBE_SCALED_BY_ALBEDO)
     shading_specular_albedo = albedo;  // compensated: the lobe takes it as it is
 #endif
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+    return apply_specular_occlusion(material, specular * albedo, NoV, perceptualRoughness);
+#else
     return apply_ambient_occlusion(material, specular * albedo);
+#endif
 }
 
 // Adds linear radiance to the linear sum (with FACET_GAMMA_HACK the encoded diffuse was decoded

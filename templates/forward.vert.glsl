@@ -73,6 +73,12 @@ void main() {
     // which per-vertex evaluation and interpolation follow closely.
     vec3 n = v_normal;  // unit length (above)
     vec3 irradiance = sh_irradiance_over_pi(n);
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+    // Ambient occlusion occludes the ambient alone (shading_ambient.glsl): the lights' diffuse
+    // goes to the fragment stage on its own varying, added after the occlusion.
+    vec3 ambientIrradiance = irradiance;
+    irradiance = vec3(0.0);
+#endif
 #if defined(FACET_DIRECTIONAL_LIGHT) && defined(FACET_SHADOW_CASCADES)
     // A shadow receiver darkens the sun alone: its n·l / π goes to the fragment stage on its own
     // (one channel: the sun's colour is uniform), which scales it by the visibility there.
@@ -93,7 +99,15 @@ void main() {
 #if defined(FACET_GAMMA_HACK)
     irradiance = sqrt(irradiance);  // gamma hack: light encoded per vertex, γ = 2 (shading_standard.glsl)
 #endif
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION) && defined(FACET_GAMMA_HACK)
+    v_directDiffuse = irradiance;
+    v_diffuseLight = sqrt(ambientIrradiance);
+#elif defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+    v_directDiffuse = irradiance;
+    v_diffuseLight = ambientIrradiance;
+#else
     v_diffuseLight = irradiance;
+#endif
 #endif
 #if defined(FACET_SHADOW_CASCADES)
     // The sun's frame and the view depth for the fragment stage's shadow lookup (chunks/shadow_sun.glsl),

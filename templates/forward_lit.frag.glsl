@@ -51,6 +51,9 @@
 #if defined(FACET_IBL_SAMPLED)
 #include "ibl_sampled.glsl"
 #endif
+#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+#include "ambient_occlusion.glsl"
+#endif
 #include "shading_ambient.glsl"
 #include "output_blending.glsl"
 // The view vector at highp, for the half vector of each light (shading_standard.glsl,
@@ -99,7 +102,23 @@ void main() {
                      max(dot(shading_normal, shading_view), MIN_N_DOT_V), shading_view);
 #endif
 
-#if defined(FACET_VERTEX_DIFFUSE) && defined(FACET_SHADOW_CASCADES)
+#if defined(FACET_VERTEX_DIFFUSE) && defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+    // The occluded ambient, then the lights' per-vertex diffuse (forward.vert.glsl), the sun's
+    // shadowed here; with FACET_GAMMA_HACK summed in the gamma-2 encoding.
+    vec3 directLight = v_directDiffuse;
+#if defined(FACET_SHADOW_CASCADES) && defined(FACET_GAMMA_HACK)
+    directLight = sqrt(directLight * directLight + frame.lightColor.rgb * (v_sunDiffuse * sunVisibility));
+#elif defined(FACET_SHADOW_CASCADES)
+    directLight += frame.lightColor.rgb * (v_sunDiffuse * sunVisibility);
+#endif
+    vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * v_diffuseLight);
+    vec3 directDiffuse = material_diffuse_color(material) * directLight;
+#if defined(FACET_GAMMA_HACK)
+    color = sqrt(color * color + directDiffuse * directDiffuse);
+#else
+    color += directDiffuse;
+#endif
+#elif defined(FACET_VERTEX_DIFFUSE) && defined(FACET_SHADOW_CASCADES)
     // The sun's per-vertex n·l / π, shadowed here, joins the rest of the per-vertex light.
     vec3 sunDiffuse = frame.lightColor.rgb * (v_sunDiffuse * sunVisibility);
 #if defined(FACET_GAMMA_HACK)

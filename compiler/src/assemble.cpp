@@ -200,8 +200,17 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     s += "#define FACET_VARYING_WORLD_POSITION 1\n#define FACET_TO_EYE (frame.cameraPosition.xyz - v_worldPosition)\n";
   else
     s += "#define FACET_TO_EYE v_toEye\n";
-  if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0)
+  if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0) {
     s += "#define FACET_MATERIAL_AMBIENT_OCCLUSION 1\n";
+    s += "// Ambient occlusion: " +
+         std::string(permutations::kAmbientOcclusionModelNames[int(in.tier.ambientOcclusion)]) + " on the diffuse, " +
+         permutations::kSpecularOcclusionModelNames[int(in.tier.specularOcclusion)] +
+         " on the specular (docs/material-models.md).\n";
+    if (in.tier.ambientOcclusion == permutations::AmbientOcclusionModel::MultiBounce)
+      s += "#define FACET_AO_MULTI_BOUNCE 1\n";
+    if (in.tier.specularOcclusion == permutations::SpecularOcclusionModel::Lagarde)
+      s += "#define FACET_SPECULAR_OCCLUSION_LAGARDE 1\n";
+  }
   if (writesClearCoat(in)) {
     const char* forms[] = {"its GGX/Kelemen lobe per light and its environment",
                            "its environment over the lit base, no lobe per light", "dropped in this tier"};
@@ -286,6 +295,9 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
   if (vertexDiffuse(in)) declare("vec3", "v_diffuseLight");  // diffuse irradiance / π, lit per vertex
   // The sun's n·l / π alone, for a receiver to shadow (templates/forward.vert.glsl).
   if (vertexDiffuse(in) && receivesShadow(in)) declare("float", "v_sunDiffuse");
+  // The lights' per-vertex diffuse apart from the ambient's, which ambient occlusion scales.
+  if (vertexDiffuse(in) && in.material.surface.outputs.count("ambientOcclusion") > 0)
+    declare("vec3", "v_directDiffuse");
   // The sun's frame and view depth of the normal-offset position (chunks/shadow_sun.glsl).
   if (receivesShadow(in)) declare("highp vec4", "v_shadowPosition");
   return s;

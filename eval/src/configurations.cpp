@@ -75,6 +75,22 @@ const std::vector<Axis>& axes() {
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "anisotropy", o); },
        nullptr,
        [](const ir::Material& m) { return m.shading == "lit" && m.surface.outputs.count("anisotropy") > 0; }},
+      {"ao",
+       {std::begin(permutations::kAmbientOcclusionModelNames), std::end(permutations::kAmbientOcclusionModelNames)},
+       [](const TierConfig& c) {
+         return std::string(permutations::kAmbientOcclusionModelNames[int(c.ambientOcclusion)]);
+       },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "ao", o); },
+       nullptr,
+       [](const ir::Material& m) { return m.shading == "lit" && m.surface.outputs.count("ambientOcclusion") > 0; }},
+      {"specular_occlusion",
+       {std::begin(permutations::kSpecularOcclusionModelNames), std::end(permutations::kSpecularOcclusionModelNames)},
+       [](const TierConfig& c) {
+         return std::string(permutations::kSpecularOcclusionModelNames[int(c.specularOcclusion)]);
+       },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "specular_occlusion", o); },
+       nullptr,
+       [](const ir::Material& m) { return m.shading == "lit" && m.surface.outputs.count("ambientOcclusion") > 0; }},
   };
   return list;
 }

@@ -60,7 +60,9 @@ const TierChoices& tierChoices() {
       {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}},
        {"diffuse", {"pixel", "vertex"}},
        {"clear_coat", {"ggx_kelemen", "ambient", "none"}},
-       {"anisotropy", {"ggx_smith", "bent_ibl", "none"}}},
+       {"anisotropy", {"ggx_smith", "bent_ibl", "none"}},
+       {"ao", {"single", "multi_bounce"}},
+       {"specular_occlusion", {"ao", "lagarde"}}},
   };
   return choices;
 }

@@ -705,6 +705,86 @@ TEST(Reference, AnisotropicFurnaceIsAtMostOne) {
   EXPECT_GT(worstCompensated, 1.7);
 }
 
+// chunks/ambient_occlusion.glsl against the double forms in eval/standard_model.h.
+std::vector<std::string> ambientOcclusionChunks() { return chunks({"precision.glsl", "ambient_occlusion.glsl"}); }
+
+const std::vector<double> kVisibility{0.0, 0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 0.99, 1.0};
+
+// Jimenez's cubic per channel over visibility × albedo: 1e-6 absolute (Horner terms ≤ 4.2 in fp32).
+TEST(Chunks, MultiBounceAoMatchesReference) {
+  GpuEvalRequest req;
+  req.chunks = ambientOcclusionChunks();
+  req.body = "result.xyz = multi_bounce_ao(in0.x, in1.xyz);";
+  for (double v : kVisibility)
+    for (double albedo : {0.0, 0.02, 0.1, 0.3, 0.5, 0.8, 0.95, 1.0})
+      req.in0.push_back(glm::vec4(float(v), 0, 0, 0)), req.in1.push_back(glm::vec4(float(albedo), 0.5f, 1.0f, 0));
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    const double v = req.in0[i].x;
+    for (int c = 0; c < 3; ++c)
+      expectClose(result[c], reference::multiBounceAo(v, req.in1[i][c]), 0.0, 1e-6,
+                  "V=" + std::to_string(v) + " albedo=" + std::to_string(req.in1[i][c]));
+  });
+}
+
+// Lagarde's specular occlusion over n·v × visibility × roughness: 2e-6 absolute (exp2 and log2 of
+// lavapipe's fp32, a few ulp each, on values ≤ 2).
+TEST(Chunks, SpecularOcclusionLagardeMatchesReference) {
+  GpuEvalRequest req;
+  req.chunks = ambientOcclusionChunks();
+  req.body = "result.x = specular_occlusion_lagarde(in0.x, in0.y, in0.z * in0.z);";
+  for (double NoV : kCosines)
+    for (double v : kVisibility)
+      for (double r : kRoughness)
+        req.in0.push_back(glm::vec4(float(NoV), float(v), float(r), 0)), req.in1.push_back({});
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    const glm::dvec4 a(req.in0[i]);
+    expectClose(result.x, reference::specularOcclusionLagarde(a.x, a.y, a.z * a.z), 0.0, 2e-6,
+                "NoV=" + std::to_string(a.x) + " V=" + std::to_string(a.y) + " r=" + std::to_string(a.z));
+  });
+}
+
+// What a material relies on, on the GPU: with V = 1 both factors leave the ambient as it was
+// (multi-bounce within 1e-4 above 1: the fit's 0.9996 + 0.0005ρ under the max), multi-bounce
+// brightens an occluded bright albedo and not a dark one, and specular occlusion goes to 0 with V
+// (at most (1 + e)·V ≤ 1.5·V) and never exceeds 1.
+TEST(Chunks, AmbientOcclusionFactorsKeepTheirPromises) {
+  GpuEvalRequest req;
+  req.chunks = ambientOcclusionChunks();
+  req.body = R"(
+    result.xyz = multi_bounce_ao(in0.y, in1.xyz);
+    result.w = specular_occlusion_lagarde(in0.x, in0.y, in0.z * in0.z);)";
+  for (double NoV : kCosines)
+    for (double v : kVisibility)
+      for (double r : kRoughness)
+        req.in0.push_back(glm::vec4(float(NoV), float(v), float(r), 0)),
+            req.in1.push_back(glm::vec4(0.9f, 0.02f, 0.0f, 0));
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    const glm::dvec4 a(req.in0[i]);
+    const std::string where = "NoV=" + std::to_string(a.x) + " V=" + std::to_string(a.y) + " r=" + std::to_string(a.z);
+    if (a.y == 1.0) {
+      EXPECT_EQ(result.w, 1.0f) << where;
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(result[c], 1.0f) << where;
+        EXPECT_LE(result[c], 1.0001f) << where;
+      }
+    }
+    if (a.y > 0.0 && a.y < 1.0) {
+      // Bright albedo 0.9: at least 25 % more light than V alone where V ≤ 0.75 (the fit gives
+      // 0.75 → 0.945, 0.5 → 0.855, 0.1 → 0.282); dark albedo 0.02: within 0.1 % of V (the fit
+      // exceeds V by at most 0.08 %, near V = 0.9); black: exactly V.
+      if (a.y <= 0.75) {
+        EXPECT_GT(result.x, 1.25 * a.y) << where;
+      }
+      EXPECT_LE(result.y, 1.001 * a.y) << where;
+      EXPECT_GE(result.y, float(a.y)) << where;
+      EXPECT_EQ(result.z, float(a.y)) << where;
+    }
+    EXPECT_LE(result.w, 1.5 * a.y + 1e-6) << where;
+    EXPECT_GE(result.w, 0.0f) << where;
+    EXPECT_LE(result.w, 1.0f) << where;
+  });
+}
+
 // The published fused V·F creates energy: for f0 = 1 and a smooth surface the mirror lobe's
 // albedo tends to 1/(α + 0.5) → 2.
 TEST(Zioma, PublishedFormCreatesEnergy) {

@@ -160,6 +160,14 @@ TEST(EvalConfigurations, ReferenceFirstThenEachTierAndItsSingleSwaps) {
     if (c.axis == std::string("anisotropy")) anisotropySwaps.insert(c.name);
   EXPECT_EQ(anisotropySwaps, (std::set<std::string>{"high:anisotropy=bent_ibl", "high:anisotropy=none",
                                                     "low:anisotropy=ggx_smith", "low:anisotropy=bent_ibl"}));
+  // Ambient occlusion likewise, only in materials that write ambientOcclusion.
+  for (const auto& c : configs)
+    EXPECT_TRUE(c.axis != std::string("ao") && c.axis != std::string("specular_occlusion")) << c.name;
+  std::set<std::string> occlusionSwaps;
+  for (const auto& c : facet::eval::configurations(example("painted_tiles"), {Tier::High, Tier::Low}))
+    if (c.axis == std::string("ao") || c.axis == std::string("specular_occlusion")) occlusionSwaps.insert(c.name);
+  EXPECT_EQ(occlusionSwaps, (std::set<std::string>{"high:ao=single", "high:specular_occlusion=ao", "low:ao=single",
+                                                   "low:specular_occlusion=lagarde"}));
   // A material's override is part of its tier as shipped.
   auto overridden = checked(
       "material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");

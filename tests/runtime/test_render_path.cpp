@@ -137,9 +137,12 @@ TEST(RenderPath, GlesMergedAndSeparatePathsGiveTheSameImageOnEveryExampleSceneAn
     // tiles_astc.json: llvmpipe's GLES samples the ASTC blocks through Mesa's decoder, lavapipe
     // gets astcenc's decoding (docs/runtime.md); the two round the normal map's 16-bit texels to
     // 8 bits differently, and the normal decode and the sun's highlight take that to 5 steps.
+    // tiles.json: painted_tiles' multi-bounce AO, a cubic whose terms up to 4 cancel to about 1
+    // (chunks/ambient_occlusion.glsl: ~0.004 absolute in fp16), measured 3.
     const bool mirrorGrid = path.find("roughness_grid.json") != std::string::npos;
     const bool astc = path.find("tiles_astc.json") != std::string::npos;
-    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : 2);
+    const bool occludedTiles = path.find("/tiles.json") != std::string::npos;
+    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : occludedTiles ? 3 : 2);
   }
   for (const auto* backend : {mergedBackend.get(), separateBackend.get(), osmesaBackend.get(), vulkan.get()}) {
     for (const std::string& message : backend->validationErrors()) ADD_FAILURE() << backend->name() << ": " << message;

@@ -15,7 +15,8 @@ struct Configuration {
   permutations::Tier tier = permutations::Tier::High;
   permutations::TierConfig config;  // the maths the variant is built with
   std::string axis;    // "" as shipped; else specular | diffuse | ambient | sh_bands | color_space | precision |
-                       // energy_compensation | dominant_direction | clear_coat
+                       // energy_compensation | dominant_direction | clear_coat | anisotropy | ao |
+                       // specular_occlusion
   std::string option;  // the option swapped in
   std::string change;  // "as shipped" or e.g. "specular ggx_smith → zioma"
   bool swap() const { return !axis.empty(); }

@@ -84,6 +84,18 @@ inline double anisotropicLobe(glm::dvec2 alpha, glm::dvec3 v, glm::dvec3 l) {
          visibilitySmithGgxCorrelatedAnisotropic(alpha.x, alpha.y, v.x, v.y, NoV, l.x, l.y, NoL);
 }
 
+// Ambient occlusion (chunks/ambient_occlusion.glsl). Jimenez et al. 2016's multi-bounce visibility
+// for visibility V and diffuse albedo ρ (one channel): max(V, ((a V + b) V + c) V).
+inline double multiBounceAo(double visibility, double albedo) {
+  const double a = 2.0404 * albedo - 0.3324, b = -4.7951 * albedo + 0.6417, c = 2.7552 * albedo + 0.6903;
+  return std::max(visibility, ((a * visibility + b) * visibility + c) * visibility);
+}
+
+// Lagarde & de Rousiers 2014's specular occlusion: saturate((n·v + V)^(2^(−16α − 1)) − 1 + V).
+inline double specularOcclusionLagarde(double NoV, double visibility, double alpha) {
+  return std::clamp(std::pow(NoV + visibility, std::exp2(-16.0 * alpha - 1.0)) - 1.0 + visibility, 0.0, 1.0);
+}
+
 // Outgoing pre-exposed radiance towards v, for one directional light (l towards the light,
 // lightColor pre-exposed) and a constant ambient radiance. specularScale is the tier's
 // multiple-scattering compensation, 1 + f0 (1/dfg.y − 1) (chunks/ibl_split_sum.glsl), or 1.

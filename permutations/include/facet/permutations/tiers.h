@@ -60,6 +60,29 @@ inline constexpr const char* kAnisotropyModelNames[] = {"ggx_smith", "bent_ibl",
 static_assert(sizeof kAnisotropyModelNames / sizeof *kAnisotropyModelNames == size_t(AnisotropyModel::None) + 1,
               "one name per AnisotropyModel, in its order");
 
+// The ambient occlusion of materials that write `ambientOcclusion` (docs/material-models.md,
+// chunks/ambient_occlusion.glsl); a material without it compiles the same shaders whatever these say.
+// reference and high: MultiBounce and Lagarde; mid and low: MultiBounce and Ao (specular occlusion
+// costs them as much as it costs high for 0.5–1.1 dB; multi-bounce wins them 10–14 dB).
+//   Single       the diffuse ambient × ao
+//   MultiBounce  the diffuse ambient × Jimenez et al.'s 2016 multi-bounce visibility, a cubic in ao
+//                and the diffuse albedo (≥ ao: light interreflected by bright occluders)
+enum class AmbientOcclusionModel { Single, MultiBounce };
+// The material language's names, indexed by AmbientOcclusionModel (`tier low { ao = single }`).
+inline constexpr const char* kAmbientOcclusionModelNames[] = {"single", "multi_bounce"};
+static_assert(sizeof kAmbientOcclusionModelNames / sizeof *kAmbientOcclusionModelNames ==
+                  size_t(AmbientOcclusionModel::MultiBounce) + 1,
+              "one name per AmbientOcclusionModel, in its order");
+//   Ao       the specular ambient × ao, as the diffuse
+//   Lagarde  the specular ambient × Lagarde & de Rousiers's 2014 specular occlusion from ao, n·v
+//            and roughness (less than ao for smooth lobes at grazing views)
+enum class SpecularOcclusionModel { Ao, Lagarde };
+// The material language's names, indexed by SpecularOcclusionModel (`tier low { specular_occlusion = ao }`).
+inline constexpr const char* kSpecularOcclusionModelNames[] = {"ao", "lagarde"};
+static_assert(sizeof kSpecularOcclusionModelNames / sizeof *kSpecularOcclusionModelNames ==
+                  size_t(SpecularOcclusionModel::Lagarde) + 1,
+              "one name per SpecularOcclusionModel, in its order");
+
 // How a shadow receiver filters the sun's atlas (chunks/shadow_sun.glsl, docs/shadows.md): a 3×3
 // tent from 4 bilinear compare taps, or one compare tap (bilinear 2×2 where the device filters
 // depth).
@@ -80,6 +103,8 @@ struct TierConfig {
   // The environment read along the lobe's dominant direction instead of the mirror direction
   // (chunks/shading_ambient.glsl, specular_dominant_direction); prefiltered ambient models only.
   bool dominantDirection = false;
+  AmbientOcclusionModel ambientOcclusion = AmbientOcclusionModel::MultiBounce;
+  SpecularOcclusionModel specularOcclusion = SpecularOcclusionModel::Lagarde;
   bool operator==(const TierConfig&) const = default;
 };
 
@@ -99,8 +124,8 @@ struct TierConfig {
 // docs/specular-tiers.md has the measurements.
 TierConfig preset(Tier tier);
 
-// Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat" | "anisotropy", option as in the
-// material language). Returns false for names it does not know.
+// Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat" | "anisotropy" | "ao" |
+// "specular_occlusion", option as in the material language). Returns false for names it does not know.
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
 
 // e.g. "ggx_smith, pixel diffuse, linear, mediump, split_sum + sh3"

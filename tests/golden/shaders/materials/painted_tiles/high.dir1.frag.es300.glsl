@@ -70,6 +70,18 @@ material.baseColor=t3;
 material.roughness=params.roughness;
 vec3 t4=texture(facet_material_relief,m_uv).xyz*(255.0/127.0)-(128.0/127.0);
 material.normal=t4;
+highp vec2 t5=m_uv*4.0;
+highp vec2 m_tile=fract(t5);
+highp float t6=m_tile.x;
+highp float t7=1.0-t6;
+highp float t8=min(t6,t7);
+highp float t9=m_tile.y;
+highp float t10=1.0-t9;
+highp float t11=min(t9,t10);
+highp float m_edge=min(t8,t11);
+highp float t12=smoothstep(0.0,0.35,m_edge);
+highp float t13=mix(0.4,1.0,t12);
+material.ambientOcclusion=t13;
 }
 vec3 tangent_to_world(vec3 tangentNormal){
 vec3 n=v_normal;
@@ -167,8 +179,22 @@ vec3 irradiance=lightColor*NoL;
 vec3 diffuseColor=material_diffuse_color(material);
 return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
+vec3 multi_bounce_ao(float visibility,vec3 albedo){
+vec3 a=2.0404*albedo-0.3324;
+vec3 b= -4.7951*albedo+0.6417;
+vec3 c=2.7552*albedo+0.6903;
+return max(vec3(visibility),((visibility*a+b)*visibility+c)*visibility);
+}
+float specular_occlusion_lagarde(float NoV,float visibility,float alpha){
+float exponent=exp2(-16.0*alpha-1.0);
+return clamp(exp2(exponent*log2(NoV+visibility))-1.0+visibility,0.0,1.0);
+}
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
-return ambient;
+return ambient*multi_bounce_ao(clamp(material.ambientOcclusion,0.0,1.0),material_diffuse_color(material));
+}
+vec3 apply_specular_occlusion(MaterialInputs material,vec3 specular,float NoV,float perceptualRoughness){
+float visibility=clamp(material.ambientOcclusion,0.0,1.0);
+return specular*specular_occlusion_lagarde(NoV,visibility,perceptualRoughness*perceptualRoughness);
 }
 vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
 return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
@@ -183,7 +209,7 @@ vec3 albedo=split_sum_albedo(dfg,f0);
 shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
 albedo*=shading_energy_compensation;
-return apply_ambient_occlusion(material,specular*albedo);
+return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }
 vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;

@@ -6,6 +6,7 @@ in mediump vec3 v_normal;
 in highp vec2 v_uv0;
 in mediump vec4 v_tangent;
 in mediump vec3 v_diffuseLight;
+in mediump vec3 v_directDiffuse;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -72,6 +73,18 @@ material.baseColor=t3;
 material.roughness=params.roughness;
 vec3 t4=texture(facet_material_relief,m_uv).xyz*(255.0/127.0)-(128.0/127.0);
 material.normal=t4;
+highp vec2 t5=m_uv*4.0;
+highp vec2 m_tile=fract(t5);
+highp float t6=m_tile.x;
+highp float t7=1.0-t6;
+highp float t8=min(t6,t7);
+highp float t9=m_tile.y;
+highp float t10=1.0-t9;
+highp float t11=min(t9,t10);
+highp float m_edge=min(t8,t11);
+highp float t12=smoothstep(0.0,0.35,m_edge);
+highp float t13=mix(0.4,1.0,t12);
+material.ambientOcclusion=t13;
 }
 vec3 tangent_to_world(vec3 tangentNormal){
 vec3 n=v_normal;
@@ -106,8 +119,18 @@ return params.facet_perceptualRoughness;
 }
 vec3 shading_specular_albedo=vec3(0.0);
 vec3 shading_energy_compensation=vec3(1.0);
+vec3 multi_bounce_ao(float visibility,vec3 albedo){
+vec3 a=2.0404*albedo-0.3324;
+vec3 b= -4.7951*albedo+0.6417;
+vec3 c=2.7552*albedo+0.6903;
+return max(vec3(visibility),((visibility*a+b)*visibility+c)*visibility);
+}
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
-return ambient;
+return ambient*multi_bounce_ao(clamp(material.ambientOcclusion,0.0,1.0),material_diffuse_color(material));
+}
+vec3 apply_specular_occlusion(MaterialInputs material,vec3 specular,float NoV,float perceptualRoughness){
+float visibility=clamp(material.ambientOcclusion,0.0,1.0);
+return specular*visibility;
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -120,7 +143,7 @@ shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
 albedo*=shading_energy_compensation;
 shading_specular_albedo=albedo;
-return apply_ambient_occlusion(material,specular*albedo);
+return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }
 vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
@@ -139,7 +162,10 @@ shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);
+vec3 directLight=v_directDiffuse;
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 directDiffuse=material_diffuse_color(material)*directLight;
+color+=directDiffuse;
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

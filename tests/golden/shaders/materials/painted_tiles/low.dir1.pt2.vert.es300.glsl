@@ -13,6 +13,7 @@ out mediump vec3 v_normal;
 out highp vec2 v_uv0;
 out mediump vec4 v_tangent;
 out mediump vec3 v_diffuseLight;
+out mediump vec3 v_directDiffuse;
 struct PunctualLightData{
 highp vec4 positionFalloff;
 highp vec4 colorIntensity;
@@ -72,9 +73,12 @@ v_uv0=a_uv0*object.uv0ScaleOffset.xy+object.uv0ScaleOffset.zw;
 v_tangent=vec4(a_tangent.xyz*mat3(row0,row1,row2),a_tangent.w);
 vec3 n=v_normal;
 vec3 irradiance=sh_irradiance_over_pi(n);
+vec3 ambientIrradiance=irradiance;
+irradiance=vec3(0.0);
 irradiance+=frame.lightColor.rgb*(clamp(dot(n,frame.lightDirection.xyz),0.0,1.0)*0.31830988618);
 irradiance+=punctual_diffuse(frame.punctualLights[0],worldPosition.xyz,n);
 irradiance+=punctual_diffuse(frame.punctualLights[1],worldPosition.xyz,n);
-v_diffuseLight=irradiance;
+v_directDiffuse=irradiance;
+v_diffuseLight=ambientIrradiance;
 gl_Position=frame.viewProjection*worldPosition;
 }

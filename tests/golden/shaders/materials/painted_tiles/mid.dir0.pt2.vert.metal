@@ -37,6 +37,7 @@ struct main0_out
     float2 v_uv0 [[user(locn2)]];
     float4 v_tangent [[user(locn3)]];
     float3 v_diffuseLight [[user(locn4)]];
+    float3 v_directDiffuse [[user(locn5)]];
     float4 gl_Position [[position]];
 };
 
@@ -59,38 +60,39 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _285 = _281.xyz;
     out.v_worldPosition = _285;
     float3 _298 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _762;
+    float3 _766;
     if (dot(in.a_instanceRow0.xyz, _298) < 0.0)
     {
-        _762 = -in.a_normal;
+        _766 = -in.a_normal;
     }
     else
     {
-        _762 = in.a_normal;
+        _766 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_762 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_766 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
     out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _771 = half3(out.v_normal);
-    half _466 = _771.y;
-    half3 _773 = half3(out.v_normal);
-    half _471 = _773.z;
     half3 _775 = half3(out.v_normal);
-    half _476 = _775.x;
-    float3 _544 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_466))) + (frame.sh[2].xyz * float(_471))) + (frame.sh[3].xyz * float(_476))) + (((((frame.sh[4].xyz * (float(_476) * float(_466))) + (frame.sh[5].xyz * (float(_466) * float(_471)))) + (frame.sh[6].xyz * fma(3.0 * float(_471), float(_471), -1.0))) + (frame.sh[7].xyz * (float(_476) * float(_471)))) + (frame.sh[8].xyz * fma(float(_476), float(_476), -(float(_466) * float(_466))))), float3(0.0));
-    float3 _575 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
-    float _578 = dot(_575, _575);
-    float3 _583 = _575 * rsqrt(fast::max(_578, 9.9999999392252902907785028219223e-09));
-    float _587 = _578 * float(frame.punctualLights[0].positionFalloff.w);
-    float _592 = fast::clamp(fma(-_587, _587, 1.0), 0.0, 1.0);
-    float _611 = fast::clamp(fma(dot(-_583, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _653 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
-    float _656 = dot(_653, _653);
-    float3 _661 = _653 * rsqrt(fast::max(_656, 9.9999999392252902907785028219223e-09));
-    float _665 = _656 * float(frame.punctualLights[1].positionFalloff.w);
-    float _670 = fast::clamp(fma(-_665, _665, 1.0), 0.0, 1.0);
-    float _689 = fast::clamp(fma(dot(-_661, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = (_544 + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_592 * _592) / fast::max(_578, 9.9999997473787516355514526367188e-05)) * _611) * _611), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _583), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_670 * _670) / fast::max(_656, 9.9999997473787516355514526367188e-05)) * _689) * _689), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _661), 0.0, 1.0) * 0.3183098733425140380859375));
+    half _470 = _775.y;
+    half3 _777 = half3(out.v_normal);
+    half _475 = _777.z;
+    half3 _779 = half3(out.v_normal);
+    half _480 = _779.x;
+    float3 _548 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_470))) + (frame.sh[2].xyz * float(_475))) + (frame.sh[3].xyz * float(_480))) + (((((frame.sh[4].xyz * (float(_480) * float(_470))) + (frame.sh[5].xyz * (float(_470) * float(_475)))) + (frame.sh[6].xyz * fma(3.0 * float(_475), float(_475), -1.0))) + (frame.sh[7].xyz * (float(_480) * float(_475)))) + (frame.sh[8].xyz * fma(float(_480), float(_480), -(float(_470) * float(_470))))), float3(0.0));
+    float3 _579 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
+    float _582 = dot(_579, _579);
+    float3 _587 = _579 * rsqrt(fast::max(_582, 9.9999999392252902907785028219223e-09));
+    float _591 = _582 * float(frame.punctualLights[0].positionFalloff.w);
+    float _596 = fast::clamp(fma(-_591, _591, 1.0), 0.0, 1.0);
+    float _615 = fast::clamp(fma(dot(-_587, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _657 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
+    float _660 = dot(_657, _657);
+    float3 _665 = _657 * rsqrt(fast::max(_660, 9.9999999392252902907785028219223e-09));
+    float _669 = _660 * float(frame.punctualLights[1].positionFalloff.w);
+    float _674 = fast::clamp(fma(-_669, _669, 1.0), 0.0, 1.0);
+    float _693 = fast::clamp(fma(dot(-_665, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_directDiffuse = (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_596 * _596) / fast::max(_582, 9.9999997473787516355514526367188e-05)) * _615) * _615), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _587), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_674 * _674) / fast::max(_660, 9.9999997473787516355514526367188e-05)) * _693) * _693), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _665), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.v_diffuseLight = _548;
     out.gl_Position = frame.viewProjection * _281;
     return out;
 }
