@@ -300,10 +300,12 @@ struct RealAsset {
   const char* scene;  // examples/scenes/<scene>.json
   const char* gltf;   // examples/assets/<scene>/<gltf>
   size_t featureSets;
+  size_t notes;  // what `matc import` reports it does not draw as the file says
   // The largest Vulkan/GLES difference allowed, in 8-bit steps: 2, except where measured
-  // otherwise. The water bottle has two pixels 3 steps apart (4 of 691 200 values beyond 1
-  // step), both on its silhouette where normal-mapped metal is seen at grazing angles; the
-  // cause is not found yet (docs/gltf.md, "Not done yet").
+  // otherwise, each time at isolated pixels whose cause is not found yet (docs/gltf.md, "Not
+  // done yet"): the water bottle has two pixels 3 steps apart (4 of 691 200 values beyond 1
+  // step) on its silhouette, normal-mapped metal seen at grazing angles; the truck one pixel 4
+  // steps apart (3 values), a lone bright texel of its atlas inside a wheel arch.
   int maxSteps;
 };
 
@@ -320,7 +322,8 @@ TEST_P(GltfRealAssets, RenderOnVulkanAndGlesWithTheirOwnMaterials) {
                                          &imported, &error))
       << error;
   ASSERT_EQ(imported.materials.size(), asset.featureSets);
-  EXPECT_TRUE(imported.notes.empty()) << imported.notes.front();
+  EXPECT_EQ(imported.notes.size(), asset.notes);
+  for (const std::string& note : imported.notes) std::printf("%s\n", note.c_str());
   std::vector<std::string> texts;
   std::set<std::string> featureSets;
   for (const std::string& path : imported.materials) {
@@ -346,7 +349,8 @@ TEST_P(GltfRealAssets, RenderOnVulkanAndGlesWithTheirOwnMaterials) {
   size_t beyond1 = 0, covered = 0;
   for (size_t i = 0; i < a.ldr.size(); ++i) beyond1 += std::abs(int(a.ldr[i]) - int(b.ldr[i])) > 1;
   // The asset is drawn: a tenth of the pixels at least differ from the background's colour
-  // (the corner pixel; the avocado covers 13 %, the bottle 21 %), so an empty frame cannot pass.
+  // (the corner pixel; the avocado covers 13 %, the bottle 21 %, the truck 23 %), so an empty
+  // frame cannot pass.
   for (size_t i = 0; i + 3 < a.ldr.size(); i += 4)
     covered += std::abs(int(a.ldr[i]) - int(a.ldr[0])) + std::abs(int(a.ldr[i + 1]) - int(a.ldr[1])) +
                    std::abs(int(a.ldr[i + 2]) - int(a.ldr[2])) >
@@ -377,8 +381,9 @@ TEST_P(GltfRealAssets, RenderOnVulkanAndGlesWithTheirOwnMaterials) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Committed, GltfRealAssets,
-                         testing::Values(RealAsset{"avocado", "Avocado.gltf", 1, 2},
-                                         RealAsset{"water_bottle", "WaterBottle.gltf", 1, 3}),
+                         testing::Values(RealAsset{"avocado", "Avocado.gltf", 1, 0, 2},
+                                         RealAsset{"water_bottle", "WaterBottle.gltf", 1, 0, 3},
+                                         RealAsset{"milk_truck", "CesiumMilkTruck.gltf", 2, 1, 4}),
                          [](const testing::TestParamInfo<RealAsset>& param) { return std::string(param.param.scene); });
 
 }  // namespace
