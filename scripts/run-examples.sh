@@ -35,8 +35,12 @@ build/release/matc/matc texture examples/scenes/textures/tiles_normal.png -o bui
   --usage normal
 cmp build/examples/textures/tiles.ktx2 examples/scenes/textures/tiles.ktx2
 cmp build/examples/textures/tiles_normal.ktx2 examples/scenes/textures/tiles_normal.ktx2
-# The committed glTF assets' own materials (docs/gltf.md): `matc import` writes a .mat per feature
-# set, compiled beside the example materials; examples/scenes/<asset>.json draws the asset with them.
+for scene in examples/scenes/*.json; do
+  build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
+done
+# The committed glTF assets with their own materials (docs/gltf.md): `matc import` writes a .mat
+# per feature set, compiled beside the example materials; examples/scenes/gltf/<asset>.json draws
+# the asset with them, reading its files from examples/assets/ (hence --asset-root examples).
 for gltf in examples/assets/*/*.gltf; do
   imported=build/examples/imported/$(basename "$(dirname "$gltf")")
   rm -rf "$imported"
@@ -46,8 +50,7 @@ for gltf in examples/assets/*/*.gltf; do
       --emit-source "$packages/sources"
   done
 done
-# --asset-root examples: those scenes read their glTF files and images from examples/assets/.
-for scene in examples/scenes/*.json; do
+for scene in examples/scenes/gltf/*.json; do
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --asset-root examples \
     --validation
 done

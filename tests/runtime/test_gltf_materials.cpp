@@ -292,12 +292,12 @@ TEST(GltfMaterials, ImportedSceneRendersOnVulkanAndGles) {
 }
 
 // The committed third-party assets (examples/assets/, CC0) as the example scenes draw them
-// (examples/scenes/<name>.json: the asset's own materials, imported by `matc import`, under an
+// (examples/scenes/gltf/<name>.json: the asset's own materials, imported by `matc import`, under an
 // analytic sky): every feature set the scene names is one `matc import` writes, and the scene
 // renders on both APIs (at most 0.1 % of the values more than 1 step apart), each tier measured
 // against `reference` (docs/gltf.md quotes the printed lines).
 struct RealAsset {
-  const char* scene;  // examples/scenes/<scene>.json
+  const char* scene;  // examples/scenes/gltf/<scene>.json
   const char* gltf;   // examples/assets/<scene>/<gltf>
   size_t featureSets;
   size_t notes;  // what `matc import` reports it does not draw as the file says
@@ -334,7 +334,7 @@ TEST_P(GltfRealAssets, RenderOnVulkanAndGlesWithTheirOwnMaterials) {
       facet::test::writePackagesFromTexts(std::string("gltf-asset-packages-") + asset.scene, texts);
 
   auto scene =
-      facet::runtime::loadScene(examples + "/scenes/" + asset.scene + ".json", &error, {.assetRoot = examples});
+      facet::runtime::loadScene(examples + "/scenes/gltf/" + asset.scene + ".json", &error, {.assetRoot = examples});
   ASSERT_TRUE(scene) << error;
   for (const auto& object : scene->objects) EXPECT_TRUE(featureSets.count(object.material)) << object.material;
   auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
