@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <set>
 
 #include "facet/abi/shader_abi.h"
@@ -308,6 +309,9 @@ struct RealAsset {
   // steps apart (3 values), a lone bright texel of its atlas inside a wheel arch.
   int maxSteps;
 };
+
+// Names the asset in test listings (gtest would print the struct's bytes).
+void PrintTo(const RealAsset& asset, std::ostream* os) { *os << asset.gltf; }
 
 class GltfRealAssets : public testing::TestWithParam<RealAsset> {};
 
