@@ -3,6 +3,7 @@
 # render the example scenes with both backends (Vulkan on lavapipe, GL on OSMesa) to PNG.
 #   build/release/                     the build
 #   build/examples/packages/*.matpkg   compiled materials (+ sources/ with every generated shader)
+#   build/examples/imported/<asset>/   `matc import` of each glTF asset in examples/assets/
 #   build/examples/images/*.png        rendered scenes, one per backend
 #   build/examples/eval/               matc eval of red_plastic: report.md, report.json, plot.svg, images/
 #   build/examples/images/app.png      examples/app: the runtime embedded on the app's own Vulkan device
@@ -14,7 +15,7 @@ bash scripts/setup-deps.sh
 
 jobs=$(nproc)
 cmake --preset release  # build/release, CMakePresets.json
-cmake --build --preset release --parallel "$jobs" --target matc facet-eval facet-texture facet-view facet-app-example facet-app-gl-example
+cmake --build --preset release --parallel "$jobs" --target matc facet-gltf-import facet-eval facet-texture facet-view facet-app-example facet-app-gl-example
 
 packages=build/examples/packages
 images=build/examples/images
@@ -36,6 +37,22 @@ cmp build/examples/textures/tiles.ktx2 examples/scenes/textures/tiles.ktx2
 cmp build/examples/textures/tiles_normal.ktx2 examples/scenes/textures/tiles_normal.ktx2
 for scene in examples/scenes/*.json; do
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
+done
+# The committed glTF assets with their own materials (docs/gltf.md): `matc import` writes a .mat
+# per feature set, compiled beside the example materials; examples/scenes/gltf/<asset>.json draws
+# the asset with them, reading its files from examples/assets/ (hence --asset-root examples).
+for gltf in examples/assets/*/*.gltf; do
+  imported=build/examples/imported/$(basename "$(dirname "$gltf")")
+  rm -rf "$imported"
+  build/release/matc/matc import "$gltf" -o "$imported" --asset-root examples
+  for material in "$imported"/*.mat; do
+    build/release/matc/matc compile "$material" -o "$packages/$(basename "$material" .mat).matpkg" \
+      --emit-source "$packages/sources"
+  done
+done
+for scene in examples/scenes/gltf/*.json; do
+  build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --asset-root examples \
+    --validation
 done
 # The three-material scene once per tier, to compare what each tier's maths looks like.
 for tier in reference high mid low; do
