@@ -125,10 +125,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   const Camera& cam = scene.camera;
   out->exposure_ = exposureFromEv100(ev100(cam.aperture, cam.shutterSeconds, cam.iso));
   abi::FrameUniforms& f = out->frame_.frame;
-  glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
-  glm::dmat4 projection =
-      glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height, cam.nearPlane, cam.farPlane);
-  store(f.viewProjection, glm::mat4(projection * view));
+  store(f.viewProjection, glm::mat4(viewProjection(scene)));
   store(f.cameraPosition, cam.position, 1);
   if (scene.sun) {
     store(f.lightDirection, -glm::normalize(scene.sun->direction));

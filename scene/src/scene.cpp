@@ -451,6 +451,13 @@ Scene scene(const json& j, const AssetPaths& assets) {
 
 uint32_t sunShadowCascades(const Scene& s) { return s.sun && s.sun->castShadows ? s.shadows.cascades : 0; }
 
+glm::dmat4 viewProjection(const Scene& s) {
+  const Camera& cam = s.camera;
+  const glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
+  return glm::perspective(glm::radians(cam.fovYDegrees), double(s.width) / s.height, cam.nearPlane, cam.farPlane) *
+         view;
+}
+
 glm::dmat4 modelMatrix(const SceneObject& o) {
   return glm::translate(glm::dmat4(1), o.position) * glm::mat4_cast(o.rotation) *
          glm::scale(glm::dmat4(1), o.radius * o.scale);

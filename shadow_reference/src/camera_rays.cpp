@@ -1,21 +1,12 @@
 #include "facet/shadow_reference/camera_rays.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
 namespace facet::shadow_reference {
 
-glm::dmat4 cameraViewProjection(const runtime::Scene& scene) {
-  const runtime::Camera& cam = scene.camera;
-  const glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
-  const glm::dmat4 projection =
-      glm::perspective(glm::radians(cam.fovYDegrees), double(scene.width) / scene.height, cam.nearPlane, cam.farPlane);
-  return projection * view;
-}
-
 CameraRays::CameraRays(const runtime::Scene& scene)
-    : inverseViewProjection_(glm::inverse(cameraViewProjection(scene))),
+    : inverseViewProjection_(glm::inverse(runtime::viewProjection(scene))),
       position_(scene.camera.position),
       forward_(glm::normalize(scene.camera.target - scene.camera.position)),
       near_(scene.camera.nearPlane),

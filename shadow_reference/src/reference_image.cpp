@@ -29,7 +29,7 @@ ReferenceImage renderReference(const ShadowScene& scene, const SunVisibility& su
         continue;
       }
       pixel.kind = PixelKind::Surface;
-      if (!scene.receives[t.object]) {
+      if (!scene.scene.objects[t.object].receiveShadows) {
         pixel.visibility = pixel.footprint = 1;
         continue;
       }

@@ -6,14 +6,7 @@ std::optional<ShadowScene> parseShadowScene(const std::string& path, const std::
                                             const runtime::SceneReadOptions& options) {
   std::optional<runtime::Scene> scene = runtime::parseScene(path, text, error, options);
   if (!scene) return std::nullopt;
-  ShadowScene out;
-  out.sunCastsShadows = scene->sun && scene->sun->castShadows;
-  for (const runtime::SceneObject& o : scene->objects) {
-    out.casts.push_back(o.castShadows);
-    out.receives.push_back(o.receiveShadows);
-  }
-  out.scene = std::move(*scene);
-  return out;
+  return ShadowScene{std::move(*scene)};
 }
 
 std::optional<ShadowScene> loadShadowScene(const std::string& path, std::string* error,

@@ -23,7 +23,9 @@ std::optional<SunVisibility> SunVisibility::build(const ShadowScene& scene, std:
   }
   auto triangles = buildWorldTriangles(scene.scene, error);
   if (!triangles) return std::nullopt;
-  return SunVisibility(std::move(*triangles), scene.casts, -glm::normalize(scene.scene.sun->direction));
+  std::vector<bool> casts;
+  for (const runtime::SceneObject& o : scene.scene.objects) casts.push_back(o.castShadows);
+  return SunVisibility(std::move(*triangles), std::move(casts), -glm::normalize(scene.scene.sun->direction));
 }
 
 bool SunVisibility::visible(const glm::dvec3& point, uint32_t receiver) const {

@@ -22,20 +22,28 @@ const std::string kScene = R"({
   ]
 })";
 
+// One flag of every object, in scene order.
+std::vector<bool> objectFlags(const facet::runtime::Scene& scene, bool facet::runtime::SceneObject::*flag) {
+  std::vector<bool> out;
+  for (const facet::runtime::SceneObject& o : scene.objects) out.push_back(o.*flag);
+  return out;
+}
+
 TEST(ShadowScene, ReadsTheFlagsWithTheirDefaults) {
   std::string error;
   std::optional<ShadowScene> s = parseShadowScene("s.json", kScene, &error);
   ASSERT_TRUE(s) << error;
-  EXPECT_TRUE(s->sunCastsShadows);
-  EXPECT_EQ(s->casts, (std::vector<bool>{true, false, true}));
-  EXPECT_EQ(s->receives, (std::vector<bool>{false, true, true}));
+  EXPECT_TRUE(s->scene.sun->castShadows);
+  EXPECT_EQ(objectFlags(s->scene, &facet::runtime::SceneObject::castShadows), (std::vector<bool>{true, false, true}));
+  EXPECT_EQ(objectFlags(s->scene, &facet::runtime::SceneObject::receiveShadows),
+            (std::vector<bool>{false, true, true}));
   ASSERT_EQ(s->scene.objects.size(), 3u);
   EXPECT_EQ(s->scene.objects[0].mesh, "plane");
   s = parseShadowScene("s.json", R"({"sun": {"direction": [0, -1, 0]}, "objects": [{"material": "m"}]})", &error);
   ASSERT_TRUE(s) << error;
-  EXPECT_FALSE(s->sunCastsShadows);
-  EXPECT_EQ(s->casts, std::vector<bool>{true});
-  EXPECT_EQ(s->receives, std::vector<bool>{true});
+  EXPECT_FALSE(s->scene.sun->castShadows);
+  EXPECT_EQ(objectFlags(s->scene, &facet::runtime::SceneObject::castShadows), std::vector<bool>{true});
+  EXPECT_EQ(objectFlags(s->scene, &facet::runtime::SceneObject::receiveShadows), std::vector<bool>{true});
 }
 
 TEST(ShadowScene, WrongValuesNameTheirPointer) {
@@ -86,8 +94,8 @@ Loaded load(const std::string& name, bool secondObjectCasts = true) {
   const std::string path = test::sourceDir() + "/tests/data/scenes/shadows/" + name + ".json";
   std::optional<ShadowScene> s = loadShadowScene(path, &error);
   EXPECT_TRUE(s) << error;
-  EXPECT_TRUE(s->sunCastsShadows) << name;
-  if (!secondObjectCasts) s->casts.at(1) = false;
+  EXPECT_TRUE(s->scene.sun->castShadows) << name;
+  if (!secondObjectCasts) s->scene.objects.at(1).castShadows = false;
   std::optional<SunVisibility> sun = SunVisibility::build(*s, &error);
   EXPECT_TRUE(sun) << error;
   ReferenceImage image = renderReference(*s, *sun, {});

@@ -33,8 +33,6 @@ ShadowScene sceneOf(const glm::dvec3& sunDirection, std::vector<runtime::SceneOb
   s.scene.sun = runtime::Sun{};
   s.scene.sun->direction = sunDirection;
   s.scene.objects = std::move(objects);
-  s.casts.assign(s.scene.objects.size(), true);
-  s.receives.assign(s.scene.objects.size(), true);
   return s;
 }
 
@@ -139,7 +137,7 @@ TEST(SunVisibility, SelfShadowingFollowsCastShadows) {
   s.scene.assetRoot = test::examplePath("scenes");
   EXPECT_FALSE(build(s).visible({0.55, 0, 0}));
   EXPECT_TRUE(build(s).visible({0, 0.5, 0}));
-  s.casts[0] = false;
+  s.scene.objects[0].castShadows = false;
   EXPECT_TRUE(build(s).visible({0.55, 0, 0}));
 }
 
@@ -150,12 +148,12 @@ TEST(SunVisibility, CastAndReceiveFlags) {
   s.scene.camera.target = {0, 0, 0};
   const ReferenceCounts casting = countReference(renderReference(s, build(s), {}));
   EXPECT_GT(casting.occluded, 500u);
-  s.casts[1] = false;  // the sphere no longer casts
+  s.scene.objects[1].castShadows = false;  // the sphere no longer casts
   const ReferenceCounts notCasting = countReference(renderReference(s, build(s), {}));
   EXPECT_EQ(notCasting.occluded, 0u);
   EXPECT_EQ(notCasting.lit, casting.lit + casting.occluded);
-  s.casts[1] = true;
-  s.receives[0] = false;  // the ground no longer receives
+  s.scene.objects[1].castShadows = true;
+  s.scene.objects[0].receiveShadows = false;  // the ground no longer receives
   EXPECT_EQ(countReference(renderReference(s, build(s), {})).occluded, 0u);
 }
 
@@ -188,14 +186,14 @@ TEST(SunVisibility, CameraMatchesTheRenderers) {
   std::string error;
   auto frame = runtime::SceneFrame::prepare(s.scene, "", &error);
   ASSERT_TRUE(frame) << error;
-  const glm::mat4 reference(cameraViewProjection(s.scene));
+  const glm::mat4 reference(facet::runtime::viewProjection(s.scene));
   const float* uploaded = frame->frame().frame.viewProjection;
   for (int i = 0; i < 16; ++i) EXPECT_EQ(uploaded[i], glm::value_ptr(reference)[i]) << i;
   const CameraRays camera(s.scene);
   for (uint32_t y : {0u, 57u, 169u})
     for (uint32_t x : {0u, 123u, 299u}) {
       const Ray ray = camera.ray(x, y);
-      const glm::dvec4 clip = cameraViewProjection(s.scene) * glm::dvec4(ray.origin + 5.0 * ray.direction, 1);
+      const glm::dvec4 clip = facet::runtime::viewProjection(s.scene) * glm::dvec4(ray.origin + 5.0 * ray.direction, 1);
       EXPECT_NEAR((clip.x / clip.w + 1) / 2 * 300, x + 0.5, 1e-9);
       EXPECT_NEAR((1 - clip.y / clip.w) / 2 * 170, y + 0.5, 1e-9);
       EXPECT_NEAR(glm::length(ray.direction), 1, 1e-12);

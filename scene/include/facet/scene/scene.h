@@ -153,6 +153,10 @@ struct SceneReadOptions {
 // castShadows off), else shadows.cascades.
 uint32_t sunShadowCascades(const Scene& s);
 
+// The camera's projection × view in double precision: what the renderer uploads (as float) and
+// what a CPU reference of the same image must use to cast the same rays.
+glm::dmat4 viewProjection(const Scene& s);
+
 // Parses scene JSON. Errors read `<path>:<line>:<col>: error: ...` for syntax errors and
 // `<path>: error: <json pointer>: ...` for wrong values.
 std::optional<Scene> parseScene(const std::string& path, const std::string& text, std::string* error,

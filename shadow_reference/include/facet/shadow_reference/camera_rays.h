@@ -13,9 +13,6 @@
 
 namespace facet::shadow_reference {
 
-// projection · view, as the frame block's viewProjection (in double).
-glm::dmat4 cameraViewProjection(const runtime::Scene& scene);
-
 class CameraRays {
  public:
   explicit CameraRays(const runtime::Scene& scene);

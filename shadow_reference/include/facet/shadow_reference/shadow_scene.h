@@ -1,6 +1,5 @@
-// A scene as the shadow reference reads it: the scene itself (facet/scene/scene.h, which reads
-// and checks the shadow flags of the scene format, docs/shadows.md) and those flags gathered in
-// scene order: the sun's `castShadows`, each object's `castShadows` and `receiveShadows`.
+// A scene as the shadow reference reads it (facet/scene/scene.h reads and checks the shadow flags
+// of the scene format, docs/shadows.md).
 #pragma once
 
 #include <optional>
@@ -12,12 +11,8 @@
 namespace facet::shadow_reference {
 
 struct ShadowScene {
-  runtime::Scene scene;
-  bool sunCastsShadows = false;  // the sun's `castShadows`: whether the renderer draws its shadow
-  // Per object, in scene order: drawn into the shadow map (castShadows), darkened by it
-  // (receiveShadows).
-  std::vector<bool> casts;
-  std::vector<bool> receives;
+  runtime::Scene
+      scene;  // the flags are the scene's own: sun->castShadows, each object's castShadows and receiveShadows
 };
 
 // Parses scene JSON with its shadow flags; errors are parseScene's.
