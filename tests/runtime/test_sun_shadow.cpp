@@ -379,6 +379,12 @@ TEST(SunShadow, DegenerateSunsCamerasAndSettingsStayFinite) {
 TEST(SunShadow, ShimmerFigure) {
   const Scene start = sunScene();
   const SunShadowFit first = fitSunShadow(start, {});
+  std::printf("| cascade | view depths (m) | sphere radius (m) | texel (mm) | depth range (m) |\n");
+  for (size_t i = 0; i < first.cascades.size(); ++i) {
+    const SunCascade& c = first.cascades[i];
+    std::printf("| %zu | %.2f – %.2f | %.2f | %.2f | %.2f |\n", i, c.splitNear, c.splitFar, c.radius,
+                1000 * c.texelSize, c.depthRange);
+  }
   const glm::dmat4 view = glm::lookAt(start.camera.position, start.camera.target, start.camera.up);
   const double near = start.camera.nearPlane, far = start.shadows.distance;
   std::mt19937 random(11);
