@@ -42,6 +42,7 @@ struct LintArgs {
   std::vector<std::string> inputs;  // material files, or folders of them
   std::vector<std::string> tiers;
   std::vector<int> pointLights{0};
+  std::vector<int> shadows{0};  // sun-shadow receivers to build and check
   std::string config;           // budgets JSON (docs/lint.md), or ""
   std::string baseline;         // baseline JSON, or ""
   bool updateBaseline = false;  // rewrite the baseline from this run's figures

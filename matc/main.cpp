@@ -96,6 +96,11 @@ int main(int argc, char** argv) {
       ->add_option("--point-lights", lint.pointLights, "point/spot light counts to check, from 0, 1, 2, 4 (default: 0)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
+  lintCmd
+      ->add_option("--shadows", lint.shadows,
+                   "sun shadow cascades to build and check receivers for, from 0, 1, 2, 4 (default: 0, none)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({0, 1, 2, 4}));
   lintCmd->add_option("--config", lint.config, "budgets per tier and stage (JSON; examples/lint/budgets.json)");
   lintCmd->add_option("--baseline", lint.baseline,
                       "committed figures: fail when a variant's figure grows past the tolerance");

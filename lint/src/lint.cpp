@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <tuple>
 
 #include "facet/compiler/build.h"
 #include "facet/gpu_stats/package_pairs.h"
@@ -48,6 +49,8 @@ class VariantRules {
       budget(v.key, name, *figures);
       baseline(v.key, name, *figures);
     }
+    shadowPrecision(v.key, "vertex", v.shadow.vertexRelaxed);
+    shadowPrecision(v.key, "fragment", v.shadow.fragmentRelaxed);
   }
 
  private:
@@ -92,6 +95,17 @@ class VariantRules {
       if (mustBeHighp.count(name))
         finding(ir::Severity::Error,
                 where(key, stage) + " reads '" + name + "' in mediump; positions and UVs need highp", "highp-required");
+  }
+
+  // A receiver's atlas coordinate and compare depth (shadow_precision.h): fp16 holds neither.
+  void shadowPrecision(const std::string& key, const char* stage, const std::vector<std::string>& relaxed) {
+    if (relaxed.empty()) return;
+    std::string names;
+    for (const std::string& name : relaxed) names += (names.empty() ? "" : ", ") + name;
+    finding(ir::Severity::Error,
+            where(key, stage) + " computes a shadow coordinate or compare depth in mediump (" + names +
+                "); atlas coordinates and depths need highp",
+            "shadow-precision");
   }
 
   void budget(const std::string& key, const char* stage, const StageFigures& f) {
@@ -152,18 +166,19 @@ class VariantRules {
 // Reads the SPIR-V of both stages into figures; false with *error when it cannot.
 bool variantFigures(const package::Variant& v, VariantFigures* figures, std::string* error) {
   figures->key = v.key;
-  for (auto [stage, dest] :
-       {std::pair{package::Stage::Vertex, &figures->vertex}, {package::Stage::Fragment, &figures->fragment}}) {
-    std::vector<uint32_t> words;
-    if (!spirvOf(v, stage, &words)) {
+  std::vector<uint32_t> words[2];
+  for (auto [stage, dest, stageWords] : {std::tuple{package::Stage::Vertex, &figures->vertex, &words[0]},
+                                         {package::Stage::Fragment, &figures->fragment, &words[1]}}) {
+    if (!spirvOf(v, stage, stageWords)) {
       *error = "no SPIR-V";
       return false;
     }
-    if (!compiler::estimateMobileCost(words, &dest->mobile, error) ||
-        !compiler::analyseStageInterface(words, &dest->interface, error))
+    if (!compiler::estimateMobileCost(*stageWords, &dest->mobile, error) ||
+        !compiler::analyseStageInterface(*stageWords, &dest->interface, error))
       return false;
   }
-  return true;
+  // The shadow-precision rule's reading of the same code (shadow_precision.h).
+  return analyseShadowPrecision(words[0], words[1], &figures->shadow, error);
 }
 
 }  // namespace
@@ -224,6 +239,7 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
   compiler::BuildOptions build;
   build.tiers = options.tiers;
   build.pointLightCounts = options.pointLightCounts;
+  build.shadowCascadeCounts = options.shadowCascadeCounts;
   compiler::BuildError error;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*checked, build, &error);
   if (!built) {

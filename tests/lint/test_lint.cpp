@@ -2,8 +2,12 @@
 // stays silent on the example materials; budgets, baselines and the report formats.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
+#include "facet/compiler/glslang_backend.h"
+#include "facet/compiler/spirv_tools_backend.h"
 #include "facet/lint/lint.h"
 #include "facet/lint/report.h"
 #include "test_support.h"
@@ -292,4 +296,157 @@ TEST(Lint, InterfaceFiguresComeFromTheCompiledStage) {
   // Mediump varyings exist (the normal, the tangent); none is a position or UV.
   EXPECT_FALSE(f.relaxedInputs.empty());
   for (const std::string& name : f.relaxedInputs) EXPECT_TRUE(name != "v_uv0" && name != "v_worldPosition") << name;
+}
+
+namespace {
+namespace shadow {
+
+// A hand-made receiver, the shape of templates/forward.vert.glsl and chunks/shadow_sun.glsl:
+// the vertex stage offsets the position along the mediump normal and writes the sun-frame
+// position; the fragment stage scales it into the atlas and compares. Each case below turns one
+// value on that way mediump.
+std::string block(const std::string& depth) {
+  return "layout(set = 0, binding = 4, std140) uniform ShadowUniforms {\n"
+         "  highp mat4 lightView; highp vec4 scale; " +
+         depth + " vec4 depthScaleOffset;\n} shadow;\n";
+}
+
+std::string vertexStage(const std::string& shadowPosition = "highp", const std::string& light = "highp",
+                        const std::string& depth = "highp") {
+  return std::string("#version 310 es\nprecision highp float;\n") + block(depth) +
+         "layout(location = 0) in highp vec3 a_position;\n"
+         "layout(location = 1) in highp vec3 a_normal;\n"
+         "layout(location = 0) out mediump vec3 v_normal;\n"
+         "layout(location = 1) out " +
+         shadowPosition +
+         " vec4 v_shadowPosition;\n"
+         "void main() {\n"
+         "  v_normal = normalize(a_normal);\n"
+         "  highp vec3 offsetPosition = a_position + v_normal * shadow.scale.w;\n"
+         "  " +
+         light +
+         " vec3 light = (shadow.lightView * vec4(offsetPosition, 1.0)).xyz;\n"
+         "  v_shadowPosition = vec4(light, 1.0);\n"
+         "  gl_Position = vec4(a_position, 1.0);\n"
+         "}\n";
+}
+
+std::string fragmentStage(const std::string& shadowPosition = "highp", const std::string& depth = "highp") {
+  return std::string("#version 310 es\nprecision mediump float;\n") + block(depth) +
+         "layout(set = 1, binding = 3) uniform highp sampler2DShadow facet_shadowAtlas;\n"
+         "layout(location = 0) in mediump vec3 v_normal;\n"
+         "layout(location = 1) in " +
+         shadowPosition +
+         " vec4 v_shadowPosition;\n"
+         "layout(location = 0) out vec4 fragColor;\n"
+         "void main() {\n"
+         "  highp vec2 coord = v_shadowPosition.xy * shadow.scale.xy;\n"
+         "  highp float reference = v_shadowPosition.z * shadow.depthScaleOffset.x + shadow.depthScaleOffset.y;\n"
+         "  float lit = texture(facet_shadowAtlas, vec3(coord, reference));\n"
+         "  fragColor = vec4(v_normal * lit, 1.0);\n"
+         "}\n";
+}
+
+// Compiled and optimised as matc builds a variant's SPIR-V, then analysed and linted.
+facet::lint::VariantFigures lintReceiver(const std::string& vertex, const std::string& fragment,
+                                         std::vector<facet::ir::Diagnostic>* found) {
+  facet::compiler::StageSources sources;
+  sources.vertex = vertex;
+  sources.fragment = fragment;
+  facet::compiler::SpirvStages spirv;
+  std::string log;
+  facet::lint::VariantFigures figures;
+  figures.key = "low.dir1.sh1";
+  EXPECT_TRUE(facet::compiler::compileToSpirv(sources, &spirv, &log)) << log;
+  EXPECT_TRUE(facet::compiler::optimizeSpirv(&spirv.vertex, &log)) << log;
+  EXPECT_TRUE(facet::compiler::optimizeSpirv(&spirv.fragment, &log)) << log;
+  EXPECT_TRUE(facet::lint::analyseShadowPrecision(spirv.vertex, spirv.fragment, &figures.shadow, &log)) << log;
+  facet::lint::lintVariant("m", figures, LintOptions{}, found);
+  return figures;
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace shadow
+}  // namespace
+
+TEST(Lint, MediumpShadowCoordinatesAndCompareDepthsAreErrors) {
+  using namespace shadow;
+  {
+    SCOPED_TRACE("highp on the whole way; the normal offset's mediump direction is allowed");
+    std::vector<facet::ir::Diagnostic> found;
+    const auto figures = lintReceiver(vertexStage(), fragmentStage(), &found);
+    EXPECT_EQ(figures.shadow.compares, 1u);
+    EXPECT_GT(figures.shadow.feeding, 5u);
+    EXPECT_TRUE(figures.shadow.vertexRelaxed.empty()) << figures.shadow.vertexRelaxed.front();
+    EXPECT_TRUE(figures.shadow.fragmentRelaxed.empty()) << figures.shadow.fragmentRelaxed.front();
+    EXPECT_TRUE(found.empty()) << found.front().message;
+  }
+  {
+    SCOPED_TRACE("the fragment stage reads the shadow position in mediump");
+    std::vector<facet::ir::Diagnostic> found;
+    const auto figures = lintReceiver(vertexStage(), fragmentStage("mediump"), &found);
+    EXPECT_TRUE(contains(figures.shadow.fragmentRelaxed, "v_shadowPosition"));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].code, "shadow-precision");
+    EXPECT_EQ(found[0].severity, Severity::Error);
+    EXPECT_EQ(found[0].message.rfind("material 'm' variant low.dir1.sh1 fragment stage computes a shadow coordinate "
+                                     "or compare depth in mediump (",
+                                     0),
+              0u)
+        << found[0].message;
+    EXPECT_NE(found[0].message.find("v_shadowPosition"), std::string::npos) << found[0].message;
+  }
+  {
+    SCOPED_TRACE("the vertex stage writes it in mediump");
+    std::vector<facet::ir::Diagnostic> found;
+    const auto figures = lintReceiver(vertexStage("mediump"), fragmentStage(), &found);
+    EXPECT_TRUE(contains(figures.shadow.vertexRelaxed, "v_shadowPosition"));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_NE(found[0].message.find("vertex stage"), std::string::npos) << found[0].message;
+  }
+  {
+    SCOPED_TRACE("the vertex stage computes the sun-frame position in mediump, into a highp output");
+    std::vector<facet::ir::Diagnostic> found;
+    const auto figures = lintReceiver(vertexStage("highp", "mediump"), fragmentStage(), &found);
+    EXPECT_FALSE(figures.shadow.vertexRelaxed.empty());
+    EXPECT_TRUE(figures.shadow.fragmentRelaxed.empty());
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].code, "shadow-precision");
+  }
+  {
+    SCOPED_TRACE("the compare depth computed from a mediump scale and offset");
+    std::vector<facet::ir::Diagnostic> found;
+    const auto figures =
+        lintReceiver(vertexStage("highp", "highp", "mediump"), fragmentStage("highp", "mediump"), &found);
+    EXPECT_FALSE(figures.shadow.fragmentRelaxed.empty());
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].code, "shadow-precision");
+  }
+}
+
+// Light-space coordinates stay highp in every tier (docs/shadows.md): what the compiler writes for
+// every receiver passes the rule, whose analysis finds each compare and the values feeding it.
+TEST(Lint, ShadowCoordinatesStayHighpInEveryTier) {
+  facet::ir::SourceFile file{"red_plastic.mat",
+                             facet::test::readText(facet::test::examplePath("materials/red_plastic.mat"))};
+  LintOptions options;
+  options.shadowCascadeCounts = {0, 1, 4};
+  MaterialLint r = facet::lint::lintMaterial(file, options);
+  EXPECT_FALSE(r.hasErrors());
+  size_t receivers = 0;
+  for (const auto& v : r.variants) {
+    SCOPED_TRACE(v.key);
+    const bool receiver = v.key.find(".sh") != std::string::npos;
+    const bool oneTap = v.key.rfind("low", 0) == 0 || v.key.rfind("mid", 0) == 0;
+    EXPECT_EQ(v.shadow.compares, receiver ? (oneTap ? 1u : 4u) : 0u);
+    if (!receiver) continue;
+    ++receivers;
+    EXPECT_GT(v.shadow.feeding, 5u);
+    EXPECT_TRUE(v.shadow.vertexRelaxed.empty());
+    EXPECT_TRUE(v.shadow.fragmentRelaxed.empty());
+  }
+  EXPECT_EQ(receivers, 8u);  // dir1 of four tiers, .sh1 and .sh4
 }

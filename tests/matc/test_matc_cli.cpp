@@ -9,8 +9,6 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
-#include <map>
-#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -505,62 +503,18 @@ TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
 }
 
-// Ids in a SPIR-V disassembly that feed a depth-compare sample (its coordinate and reference,
-// and everything computed on the way to them), and the ids decorated RelaxedPrecision.
-struct CompareInputs {
-  std::set<std::string> feeding;
-  std::set<std::string> relaxed;
-  int samples = 0;
-};
-
-CompareInputs compareInputs(const std::string& disassembly) {
-  CompareInputs out;
-  std::map<std::string, std::vector<std::string>> operands;  // result id -> the ids it reads
-  std::vector<std::string> pending;
-  std::istringstream lines(disassembly);
-  for (std::string line; std::getline(lines, line);) {
-    std::istringstream words(line);
-    std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
-    if (w.size() >= 3 && w[0] == "OpDecorate" && w[2] == "RelaxedPrecision") out.relaxed.insert(w[1]);
-    if (w.size() < 4 || w[1] != "=") continue;
-    std::vector<std::string> ids;
-    for (size_t i = 4; i < w.size(); ++i)
-      if (w[i][0] == '%') ids.push_back(w[i]);
-    operands[w[0]] = ids;
-    // OpImageSampleDref*: result type, sampled image, coordinate, reference.
-    if (w[2].rfind("OpImageSampleDref", 0) == 0 && w.size() >= 7) {
-      ++out.samples;
-      pending.push_back(w[5]);
-      pending.push_back(w[6]);
-    }
-  }
-  while (!pending.empty()) {
-    std::string id = pending.back();
-    pending.pop_back();
-    if (!out.feeding.insert(id).second) continue;
-    for (const std::string& from : operands[id]) pending.push_back(from);
-  }
-  return out;
-}
-
-// Light-space coordinates stay highp in every tier (docs/shadows.md): an atlas position needs
-// steps of 1/8192 and a D16 depth 1/65536, which fp16 cannot hold. Checked in the SPIR-V a driver
-// gets: nothing on the way to a compare sample's coordinate or reference is RelaxedPrecision.
-TEST(MatcCli, ShadowCoordinatesStayHighpInEveryTier) {
-  std::string dir = facet::test::scratchDir("cli-shadow-precision");
+// matc lint builds receivers when asked (--shadows, as compile) and checks that their shadow
+// coordinates stay highp (the shadow-precision rule, tests/lint/test_lint.cpp).
+TEST(MatcCli, LintChecksShadowReceiversWhenAskedFor) {
   std::string material = facet::test::examplePath("materials/red_plastic.mat");
-  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/p.matpkg --shadows 1,4").exitCode, 0);
-  for (const char* key :
-       {"reference.dir1.sh4", "high.dir1.sh1", "high.dir1.sh4", "mid.dir1.sh4", "low.dir1.sh1", "low.dir1.sh4"}) {
-    auto spirv = run(kMatc + " info " + dir + "/p.matpkg --variant " + key + " --stage fragment --target spirv");
-    ASSERT_EQ(spirv.exitCode, 0) << spirv.err;
-    const CompareInputs inputs = compareInputs(spirv.out);
-    EXPECT_EQ(inputs.samples, std::string(key).rfind("low", 0) == 0 || std::string(key).rfind("mid", 0) == 0 ? 1 : 4)
-        << key;
-    EXPECT_GT(inputs.feeding.size(), 5u) << key;
-    for (const std::string& id : inputs.feeding)
-      EXPECT_FALSE(inputs.relaxed.count(id)) << key << ": " << id << " feeds a shadow compare in mediump";
-  }
+  auto r = run(kMatc + " lint " + material + " --tiers high,low --shadows 0,1,4 --format json");
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  for (const char* key : {"\"high.dir1\"", "\"high.dir1.sh1\"", "\"low.dir1.sh4\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
+  EXPECT_EQ(r.out.find("shadow-precision"), std::string::npos) << r.out;
+  r = run(kMatc + " lint " + material + " --tiers low --format json");
+  EXPECT_EQ(r.out.find(".sh"), std::string::npos) << "no receivers unless asked for\n" << r.out;
+  EXPECT_EQ(run(kMatc + " lint " + material + " --shadows 3").exitCode, 2);
 }
 
 TEST(MatcCli, TiersOptionSelectsTiersAndRejectsUnknownOnes) {

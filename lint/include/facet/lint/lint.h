@@ -15,6 +15,7 @@
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/diagnostics.h"
 #include "facet/lint/budgets.h"
+#include "facet/lint/shadow_precision.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::lint {
@@ -26,6 +27,7 @@ using StageFigures = compiler::StageFigures;
 struct VariantFigures {
   std::string key;  // e.g. "high.dir1"
   StageFigures vertex, fragment;
+  ShadowPrecision shadow;  // what feeds its depth compares (receiver variants; none elsewhere)
 };
 
 struct LintOptions {
@@ -34,6 +36,8 @@ struct LintOptions {
   const Budgets* budgets = nullptr;    // per-tier limits (budgets.h); none: no budget rules
   const Baseline* baseline = nullptr;  // committed figures; none: no regression rule
   double baselineTolerance = 0.05;     // a figure may grow by this fraction over the baseline
+  // Sun-shadow receivers to build and check, as `matc compile --shadows` (0: none).
+  std::vector<int> shadowCascadeCounts{0};
   // Per-GPU figures from Mesa's compilers (docs/mesa-statistics.md), e.g. {"mali-g57"}; none:
   // the cost model's figures only. Informational: no rule reads them.
   std::vector<std::string> gpus;
