@@ -20,14 +20,7 @@ vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n)
 #endif
 
 void main() {
-    // The position stream may hold 16-bit normalized values over the mesh's bounds
-    // (runtime/vertex_packing.h): one FMA decodes them to object space, in highp (fp32: the
-    // 16-bit step is extent / 65534, far above fp32's rounding). fp32 streams get scale 1, offset 0.
-    highp vec3 position = a_position * object.positionScale.xyz + object.positionOffset.xyz;
-    // The instance's 4×3 transform (shader_abi.h InstanceTransform): three rows, one dot each.
-    highp vec4 objectPosition = vec4(position, 1.0);
-    highp vec4 worldPosition = vec4(dot(a_instanceRow0, objectPosition), dot(a_instanceRow1, objectPosition),
-                                    dot(a_instanceRow2, objectPosition), 1.0);
+#include "object_to_world.glsl"
 #if defined(FACET_VARYING_WORLD_POSITION)
     v_worldPosition = worldPosition.xyz;
 #else

@@ -1,0 +1,22 @@
+// Shadow pass, vertex stage: the depth-only program of a material that casts (docs/shadows.md).
+// The position goes through the forward vertex stage's own decode and instance transform
+// (chunks/object_to_world.glsl), so the atlas's depths and the receivers' positions agree to the
+// bit; frame.viewProjection is the cascade's (the shadow pass binds one frame block per cascade).
+// A masked material also sends what its alpha reads (templates/depth.frag.glsl), nothing else.
+void main() {
+#include "object_to_world.glsl"
+#if defined(FACET_VARYING_WORLD_POSITION)
+    v_worldPosition = worldPosition.xyz;
+#endif
+    // UVs as the forward stage decodes them: unorm16 over the UV set's bounds, one FMA each.
+#if defined(FACET_VARYING_UV0)
+    v_uv0 = a_uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw;
+#endif
+#if defined(FACET_VARYING_UV1)
+    v_uv1 = a_uv1 * object.uv1ScaleOffset.xy + object.uv1ScaleOffset.zw;
+#endif
+#if defined(FACET_VARYING_COLOR)
+    v_color = a_color;
+#endif
+    gl_Position = frame.viewProjection * worldPosition;
+}
