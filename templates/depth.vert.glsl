@@ -8,15 +8,6 @@ void main() {
 #if defined(FACET_VARYING_WORLD_POSITION)
     v_worldPosition = worldPosition.xyz;
 #endif
-    // UVs as the forward stage decodes them: unorm16 over the UV set's bounds, one FMA each.
-#if defined(FACET_VARYING_UV0)
-    v_uv0 = a_uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw;
-#endif
-#if defined(FACET_VARYING_UV1)
-    v_uv1 = a_uv1 * object.uv1ScaleOffset.xy + object.uv1ScaleOffset.zw;
-#endif
-#if defined(FACET_VARYING_COLOR)
-    v_color = a_color;
-#endif
+#include "uv_color_varyings.glsl"
     gl_Position = frame.viewProjection * worldPosition;
 }

@@ -43,16 +43,7 @@ void main() {
     highp vec3 cofactor0 = cross(row1, row2);
     highp vec3 objectNormal = dot(row0, cofactor0) < 0.0 ? -a_normal : a_normal;
     v_normal = normalize(objectNormal * mat3(cofactor0, cross(row2, row0), cross(row0, row1)));
-    // UVs likewise: unorm16 over the UV set's bounds, one FMA each (scale in xy, offset in zw).
-#if defined(FACET_VARYING_UV0)
-    v_uv0 = a_uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw;
-#endif
-#if defined(FACET_VARYING_UV1)
-    v_uv1 = a_uv1 * object.uv1ScaleOffset.xy + object.uv1ScaleOffset.zw;
-#endif
-#if defined(FACET_VARYING_COLOR)
-    v_color = a_color;
-#endif
+#include "uv_color_varyings.glsl"
 #if defined(FACET_VARYING_TANGENT)
     // A tangent lies in the surface, so it transforms with the model matrix itself (the normal
     // matrix is for normals); the handedness sign passes through.

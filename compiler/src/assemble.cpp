@@ -280,14 +280,24 @@ const char* tierPrecision(const permutations::TierConfig& tier) {
   return tier.precision == permutations::PrecisionPolicy::Highp ? "highp" : "mediump";
 }
 
-std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direction) {
-  std::string s;
+// Varying declarations in order: locations from 0 on the Vulkan flavour, the tier's precision
+// unless the type says highp.
+struct VaryingDeclarations {
+  const AssemblyInput& in;
+  Flavour flavour;
+  const char* direction;  // "out" or "in"
+  std::string text;
   int location = 0;
-  auto declare = [&](const std::string& type, const char* name) {
-    if (flavour == Flavour::Vulkan) s += "layout(location = " + std::to_string(location++) + ") ";
+
+  void operator()(const std::string& type, const char* name) {
+    if (flavour == Flavour::Vulkan) text += "layout(location = " + std::to_string(location++) + ") ";
     std::string qualified = type.rfind("highp ", 0) == 0 ? type : tierPrecision(in.tier) + std::string(" ") + type;
-    s += std::string(direction) + " " + qualified + " " + name + ";\n";
-  };
+    text += std::string(direction) + " " + qualified + " " + name + ";\n";
+  }
+};
+
+std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direction) {
+  VaryingDeclarations declare{in, flavour, direction};
   declare("highp vec3", worldPositionVarying(in) ? "v_worldPosition" : "v_toEye");
   declare("vec3", "v_normal");
   for (const OptionalInput& v : kOptionalInputs)
@@ -300,7 +310,7 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
     declare("vec3", "v_directDiffuse");
   // The sun's frame and view depth of the normal-offset position (chunks/shadow_sun.glsl).
   if (receivesShadow(in)) declare("highp vec4", "v_shadowPosition");
-  return s;
+  return declare.text;
 }
 
 // The vertex inputs the variant reads, from shader_abi.h's attribute table: always highp (read as
@@ -477,17 +487,11 @@ std::string depthPrologue(const AssemblyInput& in, Flavour flavour, const char* 
 }
 
 std::string depthVaryings(const AssemblyInput& in, Flavour flavour, const char* direction) {
-  std::string s;
-  int location = 0;
-  auto declare = [&](const std::string& type, const char* name) {
-    if (flavour == Flavour::Vulkan) s += "layout(location = " + std::to_string(location++) + ") ";
-    std::string qualified = type.rfind("highp ", 0) == 0 ? type : tierPrecision(in.tier) + std::string(" ") + type;
-    s += std::string(direction) + " " + qualified + " " + name + ";\n";
-  };
+  VaryingDeclarations declare{in, flavour, direction};
   if (depthWorldPosition(in)) declare("highp vec3", "v_worldPosition");
   for (const OptionalInput& v : kOptionalInputs)
     if (depthInput(in, v)) declare(v.varyingType, v.varying);
-  return s;
+  return declare.text;
 }
 
 bool assembleDepth(const AssemblyInput& in, Flavour flavour, StageSources* out, std::string* error) {

@@ -277,8 +277,8 @@ class VariantJobs {
     const permutations::VariantKey& key = keys_[i];
     v.keyText = key.toString();
     v.tier = tierConfig(ctx_.material, key.tier, ctx_.options);
-    AssemblyInput input{ctx_.material,    key.depthOnly ? ctx_.alphaSurface : ctx_.surface, ctx_.layout, key, v.tier,
-                        compilerVersion()};
+    const ir::SurfaceGlsl& surface = key.depthOnly ? ctx_.alphaSurface : ctx_.surface;
+    AssemblyInput input{ctx_.material, surface, ctx_.layout, key, v.tier, compilerVersion()};
     // A depth-only program reads alpha alone, which is never preshaded.
     if (!key.depthOnly) v.preshader = preshaderProgram(ctx_.material, ctx_.layout, ctx_.preshade, v.tier);
     if (!v.preshader.empty()) input.preshade = &ctx_.preshade;
