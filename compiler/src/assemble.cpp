@@ -456,6 +456,16 @@ bool templateText(const char* name, const std::string** text, std::string* error
   return true;
 }
 
+// Both stages' text into *out, with the line where the surface program's body starts (so that a
+// backend's error there maps back to the material).
+void finishStages(std::string vertex, std::string fragment, StageSources* out) {
+  const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
+  if (size_t at = fragment.find(bodyStart); at != std::string::npos)
+    out->fragmentSurfaceLine = uint32_t(std::count(fragment.begin(), fragment.begin() + long(at), '\n')) + 2;
+  out->vertex = std::move(vertex);
+  out->fragment = std::move(fragment);
+}
+
 // The shadow pass's depth-only program (VariantKey::depthOnly; templates/depth.*.glsl). Its
 // inputs: the position and instance rows, and for a masked material what its alpha reads, given
 // here by in.surface (the surface program reduced to `alpha`, compiler/build.cpp).
@@ -530,11 +540,7 @@ bool assembleDepth(const AssemblyInput& in, Flavour flavour, StageSources* out, 
           materialSamplers(flavour, in.params, fragmentPrecision) + "\n";
   }
   if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;
-  const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
-  if (size_t at = fs.find(bodyStart); at != std::string::npos)
-    out->fragmentSurfaceLine = uint32_t(std::count(fs.begin(), fs.begin() + long(at), '\n')) + 2;
-  out->vertex = std::move(vs);
-  out->fragment = std::move(fs);
+  finishStages(std::move(vs), std::move(fs), out);
   return true;
 }
 
@@ -583,12 +589,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
         iblSamplers(in, flavour, fragmentPrecision) + shadowBlock(in, flavour) + shadowAtlasSampler(in, flavour) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;
-  const std::string bodyStart = "void evaluate_surface(inout MaterialInputs material) {\n";
-  if (size_t at = fs.find(bodyStart); at != std::string::npos)
-    out->fragmentSurfaceLine = uint32_t(std::count(fs.begin(), fs.begin() + long(at), '\n')) + 2;
-
-  out->vertex = std::move(vs);
-  out->fragment = std::move(fs);
+  finishStages(std::move(vs), std::move(fs), out);
   return true;
 }
 
