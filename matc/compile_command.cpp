@@ -74,7 +74,7 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
-  auto keys = sceneKeysFor(*scene, args.scene, material.name, material.shading == "lit", &error);
+  auto keys = sceneKeysFor(*scene, args.scene, material.name, compiler::materialNeeds(material), &error);
   if (!keys) {
     cli::printError(error);
     return 1;
@@ -155,7 +155,7 @@ int compileCommand(const CompileArgs& args) {
   size_t variants = built->package.variants.size();
   std::string forScene;
   if (options.scene) {
-    permutations::MaterialNeeds needs{material->shading == "lit"};
+    const permutations::MaterialNeeds needs = compiler::materialNeeds(*material);
     forScene =
         " for scene " + args.scene + " (" +
         std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights, args.shadows).size()) +

@@ -103,6 +103,14 @@ void printMslSlots(const package::Package& pkg) {
   }
 }
 
+// The keys of the package's depth-only programs (`<tier>.depth`), in package order.
+std::vector<std::string> depthPrograms(const package::Package& pkg) {
+  std::vector<std::string> keys;
+  for (const package::Variant& v : pkg.variants)
+    if (package::isDepthProgramKey(v.key)) keys.push_back(v.key);
+  return keys;
+}
+
 void printSummary(const package::ReadResult& r) {
   const package::Package& pkg = *r.package;
   const package::MaterialInfo& m = pkg.material;
@@ -142,6 +150,14 @@ void printSummary(const package::ReadResult& r) {
       std::printf("    %-8s %-11s %7llu bytes (%llu stored)\n", package::toString(s.stage), package::toString(s.target),
                   static_cast<unsigned long long>(st.rawSize), static_cast<unsigned long long>(st.storedSize));
     }
+  }
+  // The shadow pass's programs (format 1.7), among the variants above.
+  if (std::vector<std::string> depth = depthPrograms(pkg); !depth.empty()) {
+    std::string keys;
+    for (const std::string& k : depth) keys += (keys.empty() ? "" : ", ") + k;
+    std::printf("depth      %zu depth-only program%s for the shadow pass (%s): %s\n", depth.size(),
+                depth.size() == 1 ? "" : "s",
+                pkg.material.blending == "masked" ? "position and the alpha test" : "position only", keys.c_str());
   }
   if (!pkg.textures.empty()) std::printf("textures   %zu\n", pkg.textures.size());
   for (size_t i = 0; i < pkg.textures.size(); ++i) {
@@ -198,6 +214,7 @@ void printJson(const package::ReadResult& r) {
     doc["variants"].push_back(
         {{"key", pkg.variants[i].key}, {"shaders", std::move(shaders)}, {"costs", costsJson(pkg.variants[i])}});
   }
+  doc["depthPrograms"] = depthPrograms(pkg);
   doc["textures"] = nlohmann::ordered_json::array();
   for (size_t i = 0; i < pkg.textures.size(); ++i) {
     const package::Texture& t = pkg.textures[i];
@@ -261,7 +278,9 @@ int printSceneNeeds(const package::Package& pkg, const std::string& scenePath) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
-  auto keys = sceneKeysFor(*scene, scenePath, pkg.material.name, pkg.material.shading == "lit", &error);
+  const permutations::MaterialNeeds needs{pkg.material.shading == "lit",
+                                          permutations::blendingCastsShadows(pkg.material.blending)};
+  auto keys = sceneKeysFor(*scene, scenePath, pkg.material.name, needs, &error);
   if (!keys) {
     cli::printError(error);
     return 1;

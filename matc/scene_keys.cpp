@@ -10,7 +10,8 @@ std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::st
 
 std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime::Scene& scene,
                                                                   const std::string& scenePath,
-                                                                  const std::string& material, bool lit,
+                                                                  const std::string& material,
+                                                                  const permutations::MaterialNeeds& needs,
                                                                   std::string* error) {
   auto tier = permutations::tierFromString(scene.tier);
   if (!tier) {
@@ -28,7 +29,9 @@ std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime:
   for (const runtime::SceneObject& o : scene.objects) {
     if (o.material != material) continue;
     const int cascades = o.receiveShadows ? int(runtime::sunShadowCascades(scene)) : 0;
-    keys.push_back(permutations::requestKey({lit}, *tier, scene.sun.has_value(), int(scene.lights.size()), cascades));
+    keys.push_back(permutations::requestKey(needs, *tier, scene.sun.has_value(), int(scene.lights.size()), cascades));
+    if (o.castShadows && needs.castsShadows && runtime::sunShadowCascades(scene) > 0)
+      keys.push_back(permutations::depthKey(*tier));
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

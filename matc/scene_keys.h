@@ -17,11 +17,14 @@ namespace facet::matc {
 std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::string* error);
 
 // The keys the scene's objects of this material ask for, sorted: one, or two when the sun casts
-// and some of them receive its shadow while others do not (`receiveShadows`). Nullopt, with
-// *error set, when the scene's tier is unknown or no object of the scene uses the material.
+// and some of them receive its shadow while others do not (`receiveShadows`); and the tier's
+// depth-only program when the sun casts and one of them casts (`castShadows`, a material that
+// casts: MaterialNeeds::castsShadows). Nullopt, with *error set, when the scene's tier is unknown
+// or no object of the scene uses the material.
 std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime::Scene& scene,
                                                                   const std::string& scenePath,
-                                                                  const std::string& material, bool lit,
+                                                                  const std::string& material,
+                                                                  const permutations::MaterialNeeds& needs,
                                                                   std::string* error);
 
 }  // namespace facet::matc

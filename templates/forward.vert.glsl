@@ -20,14 +20,7 @@ vec3 punctual_diffuse(PunctualLightData light, highp vec3 worldPosition, vec3 n)
 #endif
 
 void main() {
-    // The position stream may hold 16-bit normalized values over the mesh's bounds
-    // (runtime/vertex_packing.h): one FMA decodes them to object space, in highp (fp32: the
-    // 16-bit step is extent / 65534, far above fp32's rounding). fp32 streams get scale 1, offset 0.
-    highp vec3 position = a_position * object.positionScale.xyz + object.positionOffset.xyz;
-    // The instance's 4×3 transform (shader_abi.h InstanceTransform): three rows, one dot each.
-    highp vec4 objectPosition = vec4(position, 1.0);
-    highp vec4 worldPosition = vec4(dot(a_instanceRow0, objectPosition), dot(a_instanceRow1, objectPosition),
-                                    dot(a_instanceRow2, objectPosition), 1.0);
+#include "object_to_world.glsl"
 #if defined(FACET_VARYING_WORLD_POSITION)
     v_worldPosition = worldPosition.xyz;
 #else
@@ -50,16 +43,7 @@ void main() {
     highp vec3 cofactor0 = cross(row1, row2);
     highp vec3 objectNormal = dot(row0, cofactor0) < 0.0 ? -a_normal : a_normal;
     v_normal = normalize(objectNormal * mat3(cofactor0, cross(row2, row0), cross(row0, row1)));
-    // UVs likewise: unorm16 over the UV set's bounds, one FMA each (scale in xy, offset in zw).
-#if defined(FACET_VARYING_UV0)
-    v_uv0 = a_uv0 * object.uv0ScaleOffset.xy + object.uv0ScaleOffset.zw;
-#endif
-#if defined(FACET_VARYING_UV1)
-    v_uv1 = a_uv1 * object.uv1ScaleOffset.xy + object.uv1ScaleOffset.zw;
-#endif
-#if defined(FACET_VARYING_COLOR)
-    v_color = a_color;
-#endif
+#include "uv_color_varyings.glsl"
 #if defined(FACET_VARYING_TANGENT)
     // A tangent lies in the surface, so it transforms with the model matrix itself (the normal
     // matrix is for normals); the handedness sign passes through.

@@ -106,10 +106,22 @@ void reportGlslangFailure(const std::string& log, const StageSources& sources, c
   failure->message = "internal error: generated " + what + " does not compile:\n" + log;
 }
 
+// The surface program reduced to what `alpha` depends on: a masked material's depth-only program
+// evaluates it (templates/depth.frag.glsl), reading only the attributes and textures its alpha
+// test needs. The material's parameters keep the full program's layout: the block is the one the
+// runtime binds for every variant.
+ir::SurfaceGlsl alphaOnlySurface(const ir::Material& optimized) {
+  ir::Material alpha = optimized;
+  std::erase_if(alpha.surface.outputs, [](const auto& output) { return output.first != "alpha"; });
+  ir::optimize(alpha);
+  return ir::emitSurface(alpha);
+}
+
 // What every variant of one material shares; read-only while variants build in parallel.
 struct MaterialContext {
   const ir::Material& material;
   const ir::SurfaceGlsl& surface;
+  const ir::SurfaceGlsl& alphaSurface;  // what the depth-only programs evaluate (alphaOnlySurface)
   const ParamLayout& layout;
   const PreshadeLayout& preshade;
   const BuildOptions& options;
@@ -265,8 +277,10 @@ class VariantJobs {
     const permutations::VariantKey& key = keys_[i];
     v.keyText = key.toString();
     v.tier = tierConfig(ctx_.material, key.tier, ctx_.options);
-    AssemblyInput input{ctx_.material, ctx_.surface, ctx_.layout, key, v.tier, compilerVersion()};
-    v.preshader = preshaderProgram(ctx_.material, ctx_.layout, ctx_.preshade, v.tier);
+    const ir::SurfaceGlsl& surface = key.depthOnly ? ctx_.alphaSurface : ctx_.surface;
+    AssemblyInput input{ctx_.material, surface, ctx_.layout, key, v.tier, compilerVersion()};
+    // A depth-only program reads alpha alone, which is never preshaded.
+    if (!key.depthOnly) v.preshader = preshaderProgram(ctx_.material, ctx_.layout, ctx_.preshade, v.tier);
     if (!v.preshader.empty()) input.preshade = &ctx_.preshade;
     std::string* error = &v.failures[Assemble].message;
     if (!assemble(input, Flavour::GlslEs300, &v.es, error) || !assemble(input, Flavour::Vulkan, &v.vk, error)) {
@@ -459,6 +473,10 @@ permutations::TierConfig tierConfig(const ir::Material& material, permutations::
   return tier;
 }
 
+permutations::MaterialNeeds materialNeeds(const ir::Material& material) {
+  return {material.shading == "lit", permutations::blendingCastsShadows(material.blending)};
+}
+
 std::optional<BuildResult> buildMaterial(const ir::Material& checked, const BuildOptions& options,
                                          BuildError* failure) {
   if (options.fp16Emulation && options.fp16TrueHalf) {
@@ -471,13 +489,13 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   ParamLayout layout = layoutParams(material.params);
   const PreshadeLayout preshade = options.preshader ? planPreshade(material, layout) : PreshadeLayout{};
   ir::SurfaceGlsl surface = ir::emitSurface(material);
+  const ir::SurfaceGlsl alphaSurface = alphaOnlySurface(material);
   result.package.compilerVersion = compilerVersion();
   result.package.packedVertices = true;      // templates/forward.vert.glsl decodes the packed streams
   result.package.instanceTransforms = true;  // and reads the instance stream's transforms
   result.package.material = materialInfo(material, layout);
 
-  permutations::MaterialNeeds needs;
-  needs.lit = material.shading == "lit";
+  const permutations::MaterialNeeds needs = materialNeeds(material);
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
   const std::vector<permutations::VariantKey> keys =
       permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts, options.shadowCascadeCounts);
@@ -488,7 +506,7 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   const bool shadowReceivers =
       std::any_of(keys.begin(), keys.end(), [](const permutations::VariantKey& k) { return k.shadowCascades > 0; });
   result.package.mslBindings = package::mslBindingsFor(result.package.material, shadowReceivers);
-  MaterialContext ctx{material, surface, layout, preshade, options, cache, result.package.mslBindings};
+  MaterialContext ctx{material, surface, alphaSurface, layout, preshade, options, cache, result.package.mslBindings};
   VariantJobs jobs(ctx, keys);
   jobs.run(options.jobs);
 

@@ -114,11 +114,15 @@ std::optional<ProgramInterface> variantInterface(const PackageReader& reader, si
   const auto frame = [&](const abi::SamplerDesc& d) {
     out.samplers.push_back({std::string(d.name), d.binding, d.cube, d.shadow});
   };
-  if (m.shading == "lit") frame(abi::kEnvironmentSampler);
+  // The shadow pass binds no frame texture: a depth-only program reads the position, and a masked
+  // material's alpha its own textures.
+  out.depthOnly = parsed && parsed->depthOnly;
+  const bool lit = m.shading == "lit" && !out.depthOnly;
+  if (lit) frame(abi::kEnvironmentSampler);
   // Receivers bind the sun's shadow block and atlas (chunks/shadow_sun.glsl).
   out.shadowReceiver = parsed && parsed->shadowCascades > 0 && m.shading == "lit";
   if (out.shadowReceiver) frame(abi::kShadowAtlasSampler);
-  if (m.shading == "lit" && splitSum) frame(abi::kDfgLutSampler);
+  if (lit && splitSum) frame(abi::kDfgLutSampler);
   for (const TextureInfo& t : reader.textures()) {
     if (std::find(t.variants.begin(), t.variants.end(), variant) == t.variants.end()) continue;
     const GeneratedTextureSlot* slot = generatedTextureSlot(t.name);

@@ -173,6 +173,9 @@ class StageCheck {
   }
 
   std::string fragmentOutput(const ReflectedVariable& v) const {
+    if (declared_.depthOnly)
+      return "writes output '" + v.name +
+             "'; the shadow pass, which draws the depth-only program, has no colour target";
     const ValueType colour{ScalarKind::Float, 4};
     if (v.location != abi::kForwardColorLocation || v.type != colour)
       return "writes output '" + v.name + "' (" + toString(v.type) +

@@ -275,6 +275,15 @@ bool PackageReader::State::parse(std::string& error) {
       !decodeSection(file, vars, error, [&](ByteReader& in) { decodeVariantTable(in, variants); }) ||
       !decodeSection(file, table, error, [&](ByteReader& in) { decodeBlobTable(in, data.size, minor, entries); }))
     return false;
+  // A depth-only program (format 1.7) in an older package: no writer of that version made it.
+  if (minor < kFirstMinorWithDepthPrograms)
+    for (const VariantInfo& v : variants)
+      if (isDepthProgramKey(v.key)) {
+        error = "package format 1." + std::to_string(minor) + " has variant '" + v.key +
+                "', a depth-only program, which only format 1." + std::to_string(kFirstMinorWithDepthPrograms) +
+                " and later have";
+        return false;
+      }
   if (texs && !decodeSection(file, *texs, error,
                              [&](ByteReader& in) { decodeTextureTable(in, variants.size(), entries, textures); }))
     return false;

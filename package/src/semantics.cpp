@@ -110,6 +110,11 @@ std::string shaderCodeError(Target target, std::span<const uint8_t> code) {
   return "";
 }
 
+bool isDepthProgramKey(std::string_view key) {
+  const std::optional<permutations::VariantKey> parsed = permutations::VariantKey::parse(key);
+  return parsed && parsed->depthOnly;
+}
+
 std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>& variants, const Preshader& preshader,
                           const std::vector<MslBinding>& mslBindings) {
   if (!isValidName(m.name))
@@ -137,6 +142,10 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
     if (!key || key->toString() != v.key)
       return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
     shadowReceivers = shadowReceivers || key->shadowCascades > 0;
+    // The shadow pass draws only what casts: a transparent or additive material never does.
+    if (key->depthOnly && !permutations::blendingCastsShadows(m.blending))
+      return "variant '" + v.key + "' is a depth-only program, but a " + m.blending +
+             " material casts no shadow (only opaque and masked ones do)";
     if (!keys.insert(v.key).second) return "variant '" + v.key + "' is stored twice";
     std::set<std::pair<Stage, Target>> slots;
     for (const ShaderInfo& s : v.shaders)

@@ -1,5 +1,6 @@
 // Package -> bytes. Everything here is a pure function of the Package (and the zstd version), so
 // the same input always gives the same file.
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -148,7 +149,12 @@ std::vector<uint8_t> write(const Package& pkg) {
   // packed vertex streams: 1.5, and a lit material's shaders sample the environment as a cube map: 1.4, so that an
   // older runtime (which binds one fp32 stream, or an octahedral map) refuses the file instead
   // of drawing it wrong.
-  out.u16(pkg.instanceTransforms          ? kFirstMinorWithInstanceTransforms
+  // Depth-only programs: 1.7, so that a runtime without the shadow pass does not take a
+  // `<tier>.depth` variant for a key it cannot parse.
+  const bool depthPrograms =
+      std::any_of(pkg.variants.begin(), pkg.variants.end(), [](const Variant& v) { return isDepthProgramKey(v.key); });
+  out.u16(depthPrograms                   ? kFirstMinorWithDepthPrograms
+          : pkg.instanceTransforms        ? kFirstMinorWithInstanceTransforms
           : pkg.packedVertices            ? kFirstMinorWithPackedVertices
           : pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment
           : preshaded                     ? kFirstMinorWithPreshader

@@ -33,7 +33,16 @@ std::optional<int> shadowCascadePermutation(int cascades) {
   return std::nullopt;
 }
 
+std::strong_ordering VariantKey::operator<=>(const VariantKey& o) const {
+  if (auto c = tier <=> o.tier; c != 0) return c;
+  if (auto c = depthOnly <=> o.depthOnly; c != 0) return c;
+  if (auto c = directionalLight <=> o.directionalLight; c != 0) return c;
+  if (auto c = pointLights <=> o.pointLights; c != 0) return c;
+  return shadowCascades <=> o.shadowCascades;
+}
+
 std::string VariantKey::toString() const {
+  if (depthOnly) return std::string(permutations::toString(tier)) + ".depth";
   std::string s = std::string(permutations::toString(tier)) + (directionalLight ? ".dir1" : ".dir0");
   if (shadowCascades > 0) s += ".sh" + std::to_string(shadowCascades);
   if (pointLights > 0) s += ".pt" + std::to_string(pointLights);
@@ -50,6 +59,7 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
   }
   if (fields.size() < 2 || fields.size() > 4) return std::nullopt;
   auto tier = tierFromString(fields[0]);
+  if (tier && fields.size() == 2 && fields[1] == "depth") return depthKey(*tier);
   if (!tier || (fields[1] != "dir0" && fields[1] != "dir1")) return std::nullopt;
   VariantKey key{*tier, fields[1] == "dir1", 0, 0};
   // The optional fields in their one order: "sh" (after dir1 only), then "pt".
@@ -73,6 +83,14 @@ const std::vector<Tier>& supportedTiers() {
   // Tiers whose shading maths this compiler version implements (see tiers.h for the presets).
   static const std::vector<Tier> tiers = {Tier::Reference, Tier::High, Tier::Mid, Tier::Low};
   return tiers;
+}
+
+bool blendingCastsShadows(std::string_view blending) { return blending == "opaque" || blending == "masked"; }
+
+VariantKey depthKey(Tier tier) {
+  VariantKey key{tier, false, 0, 0};
+  key.depthOnly = true;
+  return key;
 }
 
 VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights,
@@ -101,6 +119,11 @@ std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vect
         }
       }
     }
+    // The shadow pass draws casters with it: built with the receivers, or when the scene asks.
+    const bool shadows = std::any_of(cascades.begin(), cascades.end(), [](int c) { return c > 0; });
+    const VariantKey depth = depthKey(t);
+    const bool asked = scene ? std::find(scene->keys.begin(), scene->keys.end(), depth) != scene->keys.end() : shadows;
+    if (asked && material.castsShadows) keys.push_back(depth);
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

@@ -51,10 +51,12 @@ TEST(ShadowKeys, KeysRoundTripAndMalformedOnesAreRefused) {
 // Today's default output does not grow: receivers are built only when asked for.
 TEST(ShadowKeys, ReceiversAreBuiltOnlyWhenAskedFor) {
   EXPECT_EQ(names(enumerate({true}, {Tier::High})), (std::vector<std::string>{"high.dir0", "high.dir1"}));
+  // With the tier's depth-only program for the shadow pass (test_depth_programs.cpp).
   EXPECT_EQ(names(enumerate({true}, {Tier::High}, nullptr, {0}, {0, 1, 2, 4})),
-            (std::vector<std::string>{"high.dir0", "high.dir1", "high.dir1.sh1", "high.dir1.sh2", "high.dir1.sh4"}));
+            (std::vector<std::string>{"high.dir0", "high.dir1", "high.dir1.sh1", "high.dir1.sh2", "high.dir1.sh4",
+                                      "high.depth"}));
   EXPECT_EQ(names(enumerate({false}, {Tier::High}, nullptr, {0}, {0, 1, 2, 4})),
-            (std::vector<std::string>{"high.dir0"}));
+            (std::vector<std::string>{"high.dir0", "high.depth"}));
   const SceneNeeds scene{{requestKey({true}, Tier::Mid, true, 0, 2), requestKey({true}, Tier::Mid, true, 0, 0)}};
   EXPECT_EQ(names(enumerate({true}, {Tier::Mid, Tier::High}, &scene)),
             (std::vector<std::string>{"mid.dir1", "mid.dir1.sh2"}));

@@ -479,11 +479,20 @@ TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
   EXPECT_NE(missing.out.find("asks for mid.dir1; the package has 8 variants, including it\n"), std::string::npos)
       << missing.out;
   EXPECT_NE(missing.out.find("asks for mid.dir1.sh2; the package has 8 variants\n"), std::string::npos) << missing.out;
-  EXPECT_NE(missing.err.find("not built with mid.dir1.sh2"), std::string::npos) << missing.err;
+  // The casters' depth-only program (the shadow pass) is missing too.
+  EXPECT_NE(missing.out.find("asks for mid.depth; the package has 8 variants\n"), std::string::npos) << missing.out;
+  EXPECT_NE(missing.err.find("not built with mid.dir1.sh2, mid.depth"), std::string::npos) << missing.err;
 
+  // 8 + 3 receivers and a depth-only program per tier.
   auto built = run(kMatc + " compile " + material + " -o " + dir + "/shadows.matpkg --shadows 0,1,2,4");
   ASSERT_EQ(built.exitCode, 0) << built.err;
-  EXPECT_NE(built.out.find("20 variants"), std::string::npos) << built.out;
+  EXPECT_NE(built.out.find("24 variants"), std::string::npos) << built.out;
+  auto listed = run(kMatc + " info " + dir + "/shadows.matpkg");
+  EXPECT_NE(listed.out.find("\nformat     1.7\n"), std::string::npos) << listed.out;
+  EXPECT_NE(listed.out.find("\ndepth      4 depth-only programs for the shadow pass (position only): reference.depth, "
+                            "high.depth, mid.depth, low.depth\n"),
+            std::string::npos)
+      << listed.out;
   // The runtime's own checks accept the receivers' interface (block, compare sampler).
   auto found = run(kMatc + " info " + dir + "/shadows.matpkg --scene " + scene);
   EXPECT_EQ(found.exitCode, 0) << found.err;
@@ -496,7 +505,7 @@ TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
 
   auto forScene = run(kMatc + " compile " + material + " -o " + dir + "/scene.matpkg --scene " + scene);
   ASSERT_EQ(forScene.exitCode, 0) << forScene.err;
-  EXPECT_NE(forScene.out.find("2 variants for scene " + scene + " (8 without it)"), std::string::npos) << forScene.out;
+  EXPECT_NE(forScene.out.find("3 variants for scene " + scene + " (8 without it)"), std::string::npos) << forScene.out;
   EXPECT_EQ(run(kMatc + " info " + dir + "/scene.matpkg --scene " + scene).exitCode, 0);
 
   EXPECT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --shadows 3").exitCode, 2);

@@ -290,6 +290,46 @@ TEST(Package, NewerMinorIsRefusedNamingBothVersionsAndTheRebuildCommand) {
                          "matc compile MATERIAL.mat -o PACKAGE.matpkg");
 }
 
+// A depth-only program of the shadow pass (`<tier>.depth`) stamps 1.7; a reader finding one in an
+// older minor refuses the file (no writer of that version made it), naming the variant.
+TEST(Package, DepthProgramsAreStampedOneSevenAndRefusedInOlderMinors) {
+  pkg::Package p = samplePackage();
+  std::vector<uint8_t> plain = pkg::write(p);
+  EXPECT_LT(loadLE(plain, 10, 2), pkg::kFirstMinorWithDepthPrograms);
+  p.variants[1].key = "mid.depth";
+  std::vector<uint8_t> bytes = pkg::write(p);
+  EXPECT_EQ(loadLE(bytes, 10, 2), pkg::kFirstMinorWithDepthPrograms);
+  pkg::ReadResult r = pkg::read(bytes);
+  ASSERT_TRUE(r.package) << r.error;
+  EXPECT_EQ(r.package->variants[1].key, "mid.depth");
+  storeLE(bytes, 10, pkg::kFirstMinorWithDepthPrograms - 1, 2);
+  resealChecksum(bytes);
+  r = pkg::read(bytes);
+  EXPECT_FALSE(r.package);
+  EXPECT_EQ(r.error,
+            "package format 1.6 has variant 'mid.depth', a depth-only program, which only format 1.7 and "
+            "later have");
+}
+
+// The shadow pass draws only materials that cast: a transparent or additive one with a depth-only
+// program is a package no compiler wrote.
+TEST(Package, ADepthProgramOfAMaterialThatCastsNoShadowIsRefused) {
+  pkg::Package p = samplePackage();
+  p.variants[0].key = "mid.dir0";
+  p.variants[1].key = "mid.depth";
+  p.variants[2].key = "low.dir0";
+  p.material.params.clear();  // sample ranges and layout are not what is under test
+  p.material.paramBlockSize = 0;
+  EXPECT_EQ(pkg::semanticError(p), "");
+  for (const char* blending : {"transparent", "additive"}) {
+    p.material.blending = blending;
+    EXPECT_EQ(pkg::semanticError(p), "variant 'mid.depth' is a depth-only program, but a " + std::string(blending) +
+                                         " material casts no shadow (only opaque and masked ones do)");
+  }
+  p.material.blending = "masked";
+  EXPECT_EQ(pkg::semanticError(p), "");
+}
+
 TEST(Package, OtherMajorVersionsAreRefusedAndZeroIsInvalid) {
   const std::vector<uint8_t> good = pkg::write(samplePackage());
   expectEditRejected(
@@ -683,7 +723,7 @@ TEST(Package, FuzzSeedsAndRegressionsAreReadWithoutCrashing) {
       EXPECT_EQ(pkg::write(*again.package), written);
     }
   }
-  EXPECT_EQ(seeds, 5u);
+  EXPECT_EQ(seeds, 6u);
 }
 
 // Format 1.4: a lit material's shaders sample the environment as a cube map, so a lit package is

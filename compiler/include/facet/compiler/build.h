@@ -115,6 +115,9 @@ struct BuildError {
   std::optional<ir::SourceLoc> loc;
 };
 
+// What the material asks of the permutation space: lit or not, casts the sun's shadow or not.
+permutations::MaterialNeeds materialNeeds(const ir::Material& material);
+
 // Builds every variant. Returns nullopt with *error set when a backend rejects generated code.
 std::optional<BuildResult> buildMaterial(const ir::Material& material, const BuildOptions& options, BuildError* error);
 

@@ -20,15 +20,17 @@ namespace facet::package {
 // both and the command that rebuilds the package. The writer stamps the lowest minor that
 // describes the file, so packages that use no newer feature stay readable by older readers.
 inline constexpr uint16_t kFormatMajor = 1;
-inline constexpr uint16_t kFormatMinor = 6;  // 1.1: shader blobs compressed against a package dictionary;
+inline constexpr uint16_t kFormatMinor = 7;  // 1.1: shader blobs compressed against a package dictionary;
                                              // 1.2: the Metal argument slots (section MSLB);
                                              // 1.3: the preshader (section PRSH);
                                              // 1.4: lit shaders sample the environment as a cube map;
                                              // 1.5: shaders read two packed vertex streams;
-                                             // 1.6: and per-instance 4×3 transforms (stream 2)
+                                             // 1.6: and per-instance 4×3 transforms (stream 2);
+                                             // 1.7: depth-only programs for the shadow pass
 inline constexpr uint16_t kFirstMinorWithCubeEnvironment = 4;
 inline constexpr uint16_t kFirstMinorWithPackedVertices = 5;
 inline constexpr uint16_t kFirstMinorWithInstanceTransforms = 6;
+inline constexpr uint16_t kFirstMinorWithDepthPrograms = 7;
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 
@@ -237,6 +239,10 @@ inline constexpr size_t kMaxNameBytes = 128;
 // A material or parameter name as the language writes it: letters, digits and _, not starting
 // with a digit, at most kMaxNameBytes. Scenes name packages and parameters with the same rule.
 bool isValidName(std::string_view name);
+
+// Whether a variant key names a depth-only program of the shadow pass (`<tier>.depth`,
+// permutations::VariantKey::depthOnly): such variants need format 1.7.
+bool isDepthProgramKey(std::string_view key);
 
 // What a decoded package means, checked for a package the app did not build (the runtime's
 // loader calls it on every package): identifier names, known shading and blending, unique

@@ -2,6 +2,7 @@
 // stable across compiler versions (apps store it), e.g. "high.dir1", "mid.dir0.pt2" or
 // "low.dir1.sh4.pt1":
 //   <tier> "." "dir" <0|1> [ "." "sh" <1|2|4> ] [ "." "pt" <1|2|4> ]
+// or, for the shadow pass's depth-only program of a tier, <tier> "." "depth" (e.g. "mid.depth").
 // The shadow field follows dir1 only (the sun is what casts). The shadow and point-light fields
 // are absent when their count is 0, so keys written before an axis existed still name the same
 // variants. A reader that meets a field it does not know rejects the key
@@ -43,17 +44,31 @@ struct VariantKey {
   bool directionalLight = true;
   int pointLights = 0;     // one of kPointLightCounts
   int shadowCascades = 0;  // one of kShadowCascadeCounts; non-zero only with directionalLight
+  // The shadow pass's depth-only program (position only; a masked material's alpha test): no
+  // lights, no shadow, no point lights. Its tier picks the alpha test's precision.
+  bool depthOnly = false;
 
   std::string toString() const;
   static std::optional<VariantKey> parse(std::string_view text);
-  auto operator<=>(const VariantKey&) const = default;
+  // A tier's forward variants, then its depth-only program.
+  std::strong_ordering operator<=>(const VariantKey& other) const;
+  bool operator==(const VariantKey&) const = default;
 };
 
 // What a material needs from the permutation space (filled from the IR by the compiler, or
 // from a package's metadata by the runtime).
 struct MaterialNeeds {
   bool lit = true;
+  // Whether its objects can cast the sun's shadow: opaque and masked materials; transparent and
+  // additive ones do not cast (a shadow map stores one depth, not a coverage).
+  bool castsShadows = true;
 };
+
+// Whether a material of this blending mode casts shadows (MaterialNeeds::castsShadows).
+bool blendingCastsShadows(std::string_view blending);
+
+// The key of a tier's depth-only program (VariantKey::depthOnly).
+VariantKey depthKey(Tier tier);
 
 // The variants a scene asks a material for (filled by matc from a scene manifest).
 struct SceneNeeds {
@@ -71,7 +86,8 @@ VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directional
 
 // Every variant the given tiers, point-light counts and shadow-cascade counts allow for the
 // material, in a stable (sorted) order; with a scene, exactly those of the scene's keys the tiers
-// allow (the scene's own counts, whatever the lists say).
+// allow (the scene's own counts, whatever the lists say). A non-zero shadow count adds each tier's
+// depth-only program for a material that casts.
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
                                   const SceneNeeds* scene = nullptr, const std::vector<int>& pointLightCounts = {0},
                                   const std::vector<int>& shadowCascadeCounts = {0});
