@@ -53,11 +53,16 @@ ordered camera(const GltfMaterialSet& set) {
   // from the front (+z, glTF's front) and a little above.
   const double distance = 2.92 * radius, rise = 0.35;
   const double norm = std::sqrt(1 + rise * rise);
+  // Near and far bracket the sphere, [distance − radius, distance + radius] = [1.92, 3.92] radius,
+  // with room to move the camera halfway in or twice as far out: far / near ≈ 8. Depth is
+  // d = f / (f − n) · (1 − n / z), stored as D32F near 1 (24-bit mantissa), so z resolves to about
+  // z² / n · 2⁻²⁴: the near plane sets the precision, and far / 400 lost close surfaces (the
+  // avocado's pit and flesh) to depth fighting.
   return {{"position", {centre[0], centre[1] + distance * rise / norm, centre[2] + distance / norm}},
           {"target", centre},
           {"fovY", 40},
-          {"near", radius * 0.05},
-          {"far", radius * 20}};
+          {"near", (distance - radius) / 2},
+          {"far", (distance + radius) * 2}};
 }
 
 }  // namespace
