@@ -34,13 +34,6 @@ std::string imageExtension(const GltfImage& image) {
   return ".png";  // the decoder tells any other format by its bytes and names the file
 }
 
-// Filament's reflectance for KHR_materials_ior: f0 = ((ior − 1) / (ior + 1))² = 0.16 · reflectance²;
-// ior 0 stands for an infinite index (f0 = 1).
-double reflectanceOf(double ior) {
-  const double f0 = ior == 0 ? 1.0 : std::pow((ior - 1) / (ior + 1), 2);
-  return std::sqrt(f0 / 0.16);
-}
-
 ordered camera(const GltfMaterialSet& set) {
   std::array<double, 3> centre;
   double radius = 0;
@@ -129,7 +122,7 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
     params["metallicFactor"] = m.metallicFactor;
     params["roughnessFactor"] = m.roughnessFactor;
     params["emissiveFactor"] = m.emissiveFactor;
-    params["reflectance"] = reflectanceOf(m.ior);
+    params["reflectance"] = m.reflectance();
     if (m.features.textured[size_t(GltfSlot::Normal)]) params["normalScale"] = m.normalScale;
     if (m.features.textured[size_t(GltfSlot::Occlusion)]) params["occlusionStrength"] = m.occlusionStrength;
     for (size_t s = 0; s < kGltfSlots; ++s) {

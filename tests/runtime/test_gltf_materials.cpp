@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -76,6 +77,23 @@ TEST(GltfMaterials, FeatureSetsAndInstancesFollowTheFile) {
   EXPECT_DOUBLE_EQ(t.rotation, 0.5);
   EXPECT_EQ(t.scale, (std::array<double, 2>{2, 3}));
   EXPECT_DOUBLE_EQ(transformed.ior, 1.45);
+  // KHR_materials_specular: f0 = min(f0(ior) · colour, 1) · factor, as Facet's reflectance
+  // (f0 = 0.16 · reflectance²): a grey colour maps exactly; a coloured one by its luminance.
+  EXPECT_NEAR(0.16 * std::pow(transformed.reflectance(), 2), std::pow(0.45 / 2.45, 2) * 1.5, 1e-12);
+  EXPECT_NEAR(0.16 * std::pow(find(*set, 2)->reflectance(), 2),
+              0.04 * (0.2126 * 1 + 0.7152 * 0.5 + 0.0722 * 0.25) * 0.5, 1e-12);
+  EXPECT_NEAR(find(*set, 0)->reflectance(), 0.5, 1e-12);  // neither extension: ior 1.5, f0 = 0.04
+  EXPECT_TRUE(hasNote(set->notes,
+                      "/materials/2/extensions/KHR_materials_specular/specularColorFactor: drawn by its luminance "
+                      "(Facet's f0 is one number)"));
+  EXPECT_TRUE(hasNote(
+      set->notes, "/materials/2/extensions/KHR_materials_specular/specularFactor: scales f0 only (Facet's f90 is 1)"));
+  EXPECT_TRUE(hasNote(set->notes,
+                      "/materials/2/extensions/KHR_materials_specular/specularTexture: not sampled; drawn with the "
+                      "factors"));
+  EXPECT_FALSE(hasNote(set->notes,
+                       "/materials/4/extensions/KHR_materials_specular/specularColorFactor: drawn by its luminance "
+                       "(Facet's f0 is one number)"));
   // Embedded images keep their bytes; a file beside the glTF is named by its URI.
   ASSERT_EQ(set->images.size(), 5u);
   for (size_t i = 0; i < 4; ++i) EXPECT_EQ(set->images[i].bytes.size() > 8 ? set->images[i].bytes[1] : 0, 'P') << i;
@@ -128,6 +146,12 @@ TEST(GltfMaterials, BadMaterialsAreErrorsNamingThePlace) {
               "/materials/0/occlusionTexture/texCoord: 2 (Facet reads TEXCOORD_0 and TEXCOORD_1)");
   expectError(R"("alphaMode": "BLEND")", R"("alphaMode": "ADD")",
               "/materials/3/alphaMode: 'ADD' is not OPAQUE, MASK or BLEND");
+  expectError(R"("specularFactor": 0.5)", R"("specularFactor": 1.5)",
+              "/materials/2/extensions/KHR_materials_specular/specularFactor: 1.5 is outside [0, 1]");
+  expectError(R"("specularColorFactor": [1.5, 1.5, 1.5])", R"("specularColorFactor": [1.5, -1, 1.5])",
+              "/materials/4/extensions/KHR_materials_specular/specularColorFactor/1: -1.0 is outside [0, 10000]");
+  expectError(R"("specularColorFactor": [1.5, 1.5, 1.5])", R"("specularColorFactor": [1.5, 1.5])",
+              "/materials/4/extensions/KHR_materials_specular/specularColorFactor: expected 3 numbers");
 }
 
 // `gltfMaterial` picks a glTF material's primitives: only on a glTF mesh, an integer, and one the
