@@ -344,7 +344,7 @@ TEST(GltfMaterials, ImportedCameraFitsNearAndFarToTheAsset) {
   EXPECT_LE(camera.farPlane / camera.nearPlane, 10.0);
 }
 
-// The committed third-party assets (examples/assets/, CC0) as the example scenes draw them
+// The committed third-party assets (examples/assets/, CC0 and CC BY) as the example scenes draw them
 // (examples/scenes/gltf/<name>.json: the asset's own materials, imported by `matc import`, under an
 // analytic sky): every feature set the scene names is one `matc import` writes, and the scene
 // renders on both APIs (at most 0.1 % of the values more than 1 step apart), each tier measured
@@ -405,8 +405,8 @@ TEST_P(GltfRealAssets, RenderOnVulkanAndGlesWithTheirOwnMaterials) {
   size_t beyond1 = 0, covered = 0;
   for (size_t i = 0; i < a.ldr.size(); ++i) beyond1 += std::abs(int(a.ldr[i]) - int(b.ldr[i])) > 1;
   // The asset is drawn: a tenth of the pixels at least differ from the background's colour
-  // (the corner pixel; the avocado covers 13 %, the bottle 21 %, the truck 23 %), so an empty
-  // frame cannot pass.
+  // (the corner pixel; the avocado covers 13 %, the bottle 21 %, the truck 23 %, the alpha test
+  // board 46 %), so an empty frame cannot pass.
   for (size_t i = 0; i + 3 < a.ldr.size(); i += 4)
     covered += std::abs(int(a.ldr[i]) - int(a.ldr[0])) + std::abs(int(a.ldr[i + 1]) - int(a.ldr[1])) +
                    std::abs(int(a.ldr[i + 2]) - int(a.ldr[2])) >
@@ -439,7 +439,8 @@ TEST_P(GltfRealAssets, RenderOnVulkanAndGlesWithTheirOwnMaterials) {
 INSTANTIATE_TEST_SUITE_P(Committed, GltfRealAssets,
                          testing::Values(RealAsset{"avocado", "Avocado.gltf", 1, 0, 2},
                                          RealAsset{"water_bottle", "WaterBottle.gltf", 1, 0, 3},
-                                         RealAsset{"milk_truck", "CesiumMilkTruck.gltf", 2, 1, 4}),
+                                         RealAsset{"milk_truck", "CesiumMilkTruck.gltf", 2, 1, 4},
+                                         RealAsset{"alpha_blend_mode", "AlphaBlendModeTest.gltf", 6, 0, 2}),
                          [](const testing::TestParamInfo<RealAsset>& param) { return std::string(param.param.scene); });
 
 }  // namespace
