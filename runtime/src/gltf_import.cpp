@@ -34,6 +34,17 @@ std::string imageExtension(const GltfImage& image) {
   return ".png";  // the decoder tells any other format by its bytes and names the file
 }
 
+// A scene object's sampler (scene-format.md, "samplers"), every field spelled out.
+ordered samplerJson(const TextureSampler& s) {
+  const char* const wraps[] = {"repeat", "clampToEdge", "mirroredRepeat"};
+  std::string min = s.minLinear ? "linear" : "nearest";
+  if (s.mipmaps) min += s.mipLinear ? "MipmapLinear" : "MipmapNearest";
+  return {{"wrapS", wraps[size_t(s.wrapS)]},
+          {"wrapT", wraps[size_t(s.wrapT)]},
+          {"magFilter", s.magLinear ? "linear" : "nearest"},
+          {"minFilter", min}};
+}
+
 ordered camera(const GltfMaterialSet& set) {
   std::array<double, 3> centre;
   double radius = 0;
@@ -117,7 +128,7 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
       files.push_back({(out / (name + ".mat")).string(), {source.begin(), source.end()}});
       result->materials.push_back((out / (name + ".mat")).string());
     }
-    ordered params;
+    ordered params, samplers;
     params["baseColorFactor"] = m.baseColorFactor;
     params["metallicFactor"] = m.metallicFactor;
     params["roughnessFactor"] = m.roughnessFactor;
@@ -137,8 +148,11 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
         params[p + "Rotation"] = t.rotation;
         params[p + "Scale"] = t.scale;
       }
+      if (!(t.sampler == TextureSampler{})) samplers[p] = samplerJson(t.sampler);
     }
-    objects.push_back({{"mesh", mesh}, {"gltfMaterial", m.index}, {"material", name}, {"params", params}});
+    ordered object = {{"mesh", mesh}, {"gltfMaterial", m.index}, {"material", name}, {"params", params}};
+    if (!samplers.empty()) object["samplers"] = samplers;
+    objects.push_back(object);
   }
   ordered scene = {{"width", 480},
                    {"height", 360},

@@ -269,15 +269,55 @@ class Reader {
         *error = textureAt + "/sampler: sampler " + std::to_string(t.sampler) + " does not exist";
         return false;
       }
-      const tinygltf::Sampler& s = model_.samplers[size_t(t.sampler)];
-      const std::string samplerAt = "/samplers/" + std::to_string(t.sampler);
-      if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-        note(samplerAt + ": wrap modes other than REPEAT are drawn as REPEAT");
-      if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST || s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
-          s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST ||
-          s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR ||
-          s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST || s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR)
-        note(samplerAt + ": filters are drawn as LINEAR_MIPMAP_LINEAR (trilinear)");
+      if (!sampler(t.sampler, &use->sampler, error)) return false;
+    }
+    return true;
+  }
+
+  // glTF 2.0 §3.8.4 and its sampler schema: the enums' GL values; an absent filter is the
+  // implementation's choice, trilinear here.
+  bool sampler(int index, TextureSampler* out, std::string* error) {
+    const tinygltf::Sampler& s = model_.samplers[size_t(index)];
+    const std::string at = "/samplers/" + std::to_string(index);
+    const auto wrap = [&](int value, const char* key, TextureWrap* w) {
+      if (value == TINYGLTF_TEXTURE_WRAP_REPEAT)
+        *w = TextureWrap::Repeat;
+      else if (value == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+        *w = TextureWrap::ClampToEdge;
+      else if (value == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT)
+        *w = TextureWrap::MirroredRepeat;
+      else {
+        *error = at + "/" + key + ": " + std::to_string(value) +
+                 " is not REPEAT (10497), CLAMP_TO_EDGE (33071) or MIRRORED_REPEAT (33648)";
+        return false;
+      }
+      return true;
+    };
+    if (!wrap(s.wrapS, "wrapS", &out->wrapS) || !wrap(s.wrapT, "wrapT", &out->wrapT)) return false;
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST)
+      out->magLinear = false;
+    else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR) {
+      *error = at + "/magFilter: " + std::to_string(s.magFilter) + " is not NEAREST (9728) or LINEAR (9729)";
+      return false;
+    }
+    switch (s.minFilter) {
+      case -1:
+      case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      case TINYGLTF_TEXTURE_FILTER_LINEAR:
+        out->mipmaps = false;
+        out->minLinear = s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+        out->mipLinear = false;
+        out->minLinear = s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: out->minLinear = false; break;
+      default:
+        *error = at + "/minFilter: " + std::to_string(s.minFilter) +
+                 " is not a glTF minification filter (9728, 9729, 9984 to 9987)";
+        return false;
     }
     return true;
   }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "facet/runtime/gltf_mesh.h"
+#include "facet/scene/texture_sampler.h"
 
 namespace facet::runtime {
 
@@ -28,6 +29,7 @@ struct GltfTextureUse {
   std::array<double, 2> offset{0, 0};
   double rotation = 0;  // radians
   std::array<double, 2> scale{1, 1};
+  TextureSampler sampler;  // its /samplers entry (default: repeat, trilinear)
 };
 
 // What decides the compiled material. Two glTF materials with equal features share one.
