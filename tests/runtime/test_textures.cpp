@@ -424,11 +424,17 @@ TEST_P(Textures, VertexStageSamplesTextures) {
                    Rgba{0, 0.25f, 0.5f, 1}, 0.0f));
 }
 
-TEST_P(Textures, RepeatWrapsAndClampStopsAtEdge) {
-  // Two texels, red then green, sampled at u = -0.75, -0.25, 0.25, 0.75 (uv = clip x).
+// Two texels, red then green, on a quad whose uv is its clip x: four pixels sample them at
+// u = -0.75, -0.25, 0.25, 0.75.
+Texture redThenGreen() {
   Texture texture = solidLevels(2, 1, {{0, 0, 0, 0}}, false);
   texture.levels[0].clear();
   appendHalves(&texture.levels[0], {1, 0, 0, 1, 0, 1, 0, 1});
+  return texture;
+}
+
+TEST_P(Textures, RepeatWrapsAndClampStopsAtEdge) {
+  Texture texture = redThenGreen();
   const Mesh mesh = quad(-1, 1, -1, 1);
   const Rgba red{1, 0, 0, 1};
   const Rgba green{0, 1, 0, 1};
@@ -447,10 +453,8 @@ TEST_P(Textures, RepeatWrapsAndClampStopsAtEdge) {
 }
 
 TEST_P(Textures, BindingSamplerReplacesTheTexturesWrap) {
-  // The same two texels as above, the texture clamping; each binding's sampler decides.
-  Texture texture = solidLevels(2, 1, {{0, 0, 0, 0}}, false);
-  texture.levels[0].clear();
-  appendHalves(&texture.levels[0], {1, 0, 0, 1, 0, 1, 0, 1});
+  // The texture clamps; each binding's sampler decides.
+  const Texture texture = redThenGreen();
   const Mesh mesh = quad(-1, 1, -1, 1);
   const Rgba red{1, 0, 0, 1};
   const Rgba green{0, 1, 0, 1};
