@@ -12,7 +12,7 @@
 #   gl        runtime_gl            the GL backend (createGlBackend)
 #   gltf      runtime_gltf          glTF meshes (tinygltf; links scene: its JSON reader, path rule)
 #   scene     scene                 the scene reader (scene.h's parse/load functions; JSON)
-# The scene's types (scene_types: scene.h, post_settings.h) are core's: its frames are made from them.
+# The scene's types (scene_types: scene.h, post_settings.h, texture_sampler.h) are core's: its frames are made from them.
 # The libraries are static, so their private dependencies (zstd, xxHash, SPIRV-Tools, SPIRV-Cross, ...) are
 # exported as link-only dependencies, and FacetConfig.cmake finds them again in the app's build.
 include(CMakePackageConfigHelpers)
@@ -36,7 +36,7 @@ set(FACET_RUNTIME_HEADERS_core content_hash.h frame_eviction.h frame_graph.h ren
     texture_checks.h compressed_texture.h environment.h exposure.h image_texture.h material.h material_instance.h mesh.h png.h
     preshader.h color_grading.h vignette.h vertex_packing.h mesh_optimize.h)
 # The Scene type environment.h takes and the post settings; their reader is the scene component.
-set(FACET_SCENE_HEADERS_core scene.h post_settings.h)
+set(FACET_SCENE_HEADERS_core scene.h post_settings.h texture_sampler.h)
 set(FACET_RUNTIME_HEADERS_vulkan vulkan_backend.h)
 set(FACET_RUNTIME_HEADERS_gl gl_backend.h)
 set(FACET_RUNTIME_HEADERS_gltf gltf_mesh.h)

@@ -29,6 +29,7 @@ namespace facet::runtime::gl {
   X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                                           \
   X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                                         \
   X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                                       \
+  X(PFNGLBINDSAMPLERPROC, glBindSampler)                                                 \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                 \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                         \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                                     \
@@ -48,6 +49,7 @@ namespace facet::runtime::gl {
   X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                                             \
   X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                                             \
   X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)                                 \
+  X(PFNGLDELETESAMPLERSPROC, glDeleteSamplers)                                           \
   X(PFNGLDELETESHADERPROC, glDeleteShader)                                               \
   X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                                           \
   X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                                   \
@@ -69,6 +71,7 @@ namespace facet::runtime::gl {
   X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                                         \
   X(PFNGLGENQUERIESPROC, glGenQueries)                                                   \
   X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                                       \
+  X(PFNGLGENSAMPLERSPROC, glGenSamplers)                                                 \
   X(PFNGLGENTEXTURESPROC, glGenTextures)                                                 \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                                         \
   X(PFNGLGETACTIVEATTRIBPROC, glGetActiveAttrib)                                         \
@@ -98,6 +101,7 @@ namespace facet::runtime::gl {
   X(PFNGLREADPIXELSPROC, glReadPixels)                                                   \
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                                 \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample)           \
+  X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)                                     \
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                                               \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                                   \
   X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                                                   \
@@ -155,6 +159,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glBindBufferBase (::facet::runtime::gl::detail::current->glBindBufferBase)
 #define glBindFramebuffer (::facet::runtime::gl::detail::current->glBindFramebuffer)
 #define glBindRenderbuffer (::facet::runtime::gl::detail::current->glBindRenderbuffer)
+#define glBindSampler (::facet::runtime::gl::detail::current->glBindSampler)
 #define glBindTexture (::facet::runtime::gl::detail::current->glBindTexture)
 #define glBindVertexArray (::facet::runtime::gl::detail::current->glBindVertexArray)
 #define glBlendFunc (::facet::runtime::gl::detail::current->glBlendFunc)
@@ -174,6 +179,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glDeleteProgram (::facet::runtime::gl::detail::current->glDeleteProgram)
 #define glDeleteQueries (::facet::runtime::gl::detail::current->glDeleteQueries)
 #define glDeleteRenderbuffers (::facet::runtime::gl::detail::current->glDeleteRenderbuffers)
+#define glDeleteSamplers (::facet::runtime::gl::detail::current->glDeleteSamplers)
 #define glDeleteShader (::facet::runtime::gl::detail::current->glDeleteShader)
 #define glDeleteTextures (::facet::runtime::gl::detail::current->glDeleteTextures)
 #define glDeleteVertexArrays (::facet::runtime::gl::detail::current->glDeleteVertexArrays)
@@ -195,6 +201,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glGenFramebuffers (::facet::runtime::gl::detail::current->glGenFramebuffers)
 #define glGenQueries (::facet::runtime::gl::detail::current->glGenQueries)
 #define glGenRenderbuffers (::facet::runtime::gl::detail::current->glGenRenderbuffers)
+#define glGenSamplers (::facet::runtime::gl::detail::current->glGenSamplers)
 #define glGenTextures (::facet::runtime::gl::detail::current->glGenTextures)
 #define glGenVertexArrays (::facet::runtime::gl::detail::current->glGenVertexArrays)
 #define glGetActiveAttrib (::facet::runtime::gl::detail::current->glGetActiveAttrib)
@@ -225,6 +232,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glReadPixels (::facet::runtime::gl::detail::current->glReadPixels)
 #define glRenderbufferStorage (::facet::runtime::gl::detail::current->glRenderbufferStorage)
 #define glRenderbufferStorageMultisample (::facet::runtime::gl::detail::current->glRenderbufferStorageMultisample)
+#define glSamplerParameteri (::facet::runtime::gl::detail::current->glSamplerParameteri)
 #define glShaderSource (::facet::runtime::gl::detail::current->glShaderSource)
 #define glTexImage2D (::facet::runtime::gl::detail::current->glTexImage2D)
 #define glTexImage3D (::facet::runtime::gl::detail::current->glTexImage3D)

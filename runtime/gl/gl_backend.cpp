@@ -680,6 +680,7 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string
   glDepthMask(GL_TRUE);
   glUseProgram(post_.program.id());
   if (!postInputs_.bind(frame, error)) return false;
+  textures_.clearSamplers();
   textures_.forgetBindings();  // the LUT's unit is a forward texture's too
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
@@ -712,6 +713,7 @@ bool GlBackend::sampledPass(GLuint framebuffer, const gl::LinkedProgram& program
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, input.id());
   if (postFrame && !postInputs_.bind(*postFrame, error)) return false;
+  textures_.clearSamplers();
   textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID

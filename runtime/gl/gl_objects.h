@@ -10,7 +10,7 @@
 
 namespace facet::runtime::gl {
 
-enum class Kind { Buffer, VertexArray, Texture, Renderbuffer, Framebuffer, Shader, Program, Query };
+enum class Kind { Buffer, VertexArray, Texture, Renderbuffer, Framebuffer, Shader, Program, Query, Sampler };
 
 template <Kind K>
 class Object {
@@ -40,6 +40,7 @@ class Object {
     if constexpr (K == Kind::Renderbuffer) glGenRenderbuffers(1, &id);
     if constexpr (K == Kind::Framebuffer) glGenFramebuffers(1, &id);
     if constexpr (K == Kind::Query) glGenQueries(1, &id);
+    if constexpr (K == Kind::Sampler) glGenSamplers(1, &id);
     static_assert(K != Kind::Shader && K != Kind::Program, "use the GLuint constructor");
     return Object(id);
   }
@@ -56,6 +57,7 @@ class Object {
     if constexpr (K == Kind::Shader) glDeleteShader(id_);
     if constexpr (K == Kind::Program) glDeleteProgram(id_);
     if constexpr (K == Kind::Query) glDeleteQueries(1, &id_);
+    if constexpr (K == Kind::Sampler) glDeleteSamplers(1, &id_);
     id_ = 0;
   }
 
@@ -71,5 +73,6 @@ using Framebuffer = Object<Kind::Framebuffer>;
 using Shader = Object<Kind::Shader>;
 using Program = Object<Kind::Program>;
 using Query = Object<Kind::Query>;
+using Sampler = Object<Kind::Sampler>;
 
 }  // namespace facet::runtime::gl

@@ -149,16 +149,22 @@ void TextureCache::bind(const FrameDesc& frame, const DrawItem& draw) {
   std::array<GLuint, kTextureUnits> wanted2D, wantedCube;
   wanted2D.fill(dummy_.id());
   wantedCube.fill(0);
+  std::array<GLuint, kTextureUnits> wantedSamplers{};
   const auto assign = [&](const std::vector<TextureBinding>& bindings) {
     for (const TextureBinding& binding : bindings) {
       auto found = textures_.find(binding.texture);
       if (found != textures_.end() && binding.binding < kTextureUnits) {
         (found->second.key.cube ? wantedCube : wanted2D)[binding.binding] = found->second.texture.id();
+        if (binding.sampler) wantedSamplers[binding.binding] = samplerFor(*binding.sampler);
       }
     }
   };
   assign(frame.frameTextures);
   assign(draw.textures);
+  for (uint32_t unit = 0; unit < kTextureUnits; ++unit) {
+    if (boundSamplers_[unit] != wantedSamplers[unit]) glBindSampler(unit, wantedSamplers[unit]);
+    boundSamplers_[unit] = wantedSamplers[unit];
+  }
   for (uint32_t unit = 0; unit < kTextureUnits; ++unit) {
     if (bound2D_[unit] == wanted2D[unit] && boundCube_[unit] == wantedCube[unit]) continue;
     glActiveTexture(GL_TEXTURE0 + unit);
@@ -168,6 +174,39 @@ void TextureCache::bind(const FrameDesc& frame, const DrawItem& draw) {
     boundCube_[unit] = wantedCube[unit];
   }
   glActiveTexture(GL_TEXTURE0);
+}
+
+void TextureCache::clearSamplers() {
+  for (uint32_t unit = 0; unit < kTextureUnits; ++unit) {
+    if (boundSamplers_[unit] != 0) glBindSampler(unit, 0);
+    boundSamplers_[unit] = 0;
+  }
+}
+
+GLuint TextureCache::samplerFor(const TextureSampler& sampler) {
+  auto found = samplers_.find(sampler.key());
+  if (found != samplers_.end()) return found->second.id();
+  Sampler made = Sampler::generate();
+  const auto wrap = [](TextureWrap w) {
+    switch (w) {
+      case TextureWrap::Repeat: return GL_REPEAT;
+      case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+      case TextureWrap::ClampToEdge: break;
+    }
+    return GL_CLAMP_TO_EDGE;
+  };
+  GLint min = sampler.minLinear ? GL_LINEAR : GL_NEAREST;
+  if (sampler.mipmaps) {
+    min = sampler.minLinear ? (sampler.mipLinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST)
+                            : (sampler.mipLinear ? GL_NEAREST_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST);
+  }
+  glSamplerParameteri(made.id(), GL_TEXTURE_MIN_FILTER, min);
+  glSamplerParameteri(made.id(), GL_TEXTURE_MAG_FILTER, sampler.magLinear ? GL_LINEAR : GL_NEAREST);
+  glSamplerParameteri(made.id(), GL_TEXTURE_WRAP_S, wrap(sampler.wrapS));
+  glSamplerParameteri(made.id(), GL_TEXTURE_WRAP_T, wrap(sampler.wrapT));
+  const GLuint id = made.id();
+  samplers_.emplace(sampler.key(), std::move(made));
+  return id;
 }
 
 }  // namespace facet::runtime::gl

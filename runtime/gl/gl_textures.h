@@ -49,10 +49,14 @@ class TextureCache {
   // Binds units 0..15 for one draw: the frame's textures, the draw's, the dummy elsewhere, so a
   // texture of an earlier draw never leaks into this one. Skips units already bound right.
   void bind(const FrameDesc& frame, const DrawItem& draw);
+  // Binds sampler object 0 on every unit that may hold another (bind()'s, or an app's), so that
+  // a pass binding textures itself samples with their own parameters.
+  void clearSamplers();
   // Forgets what bind() left on the units (call when something else rebinds them).
   void forgetBindings() {
     bound2D_.fill(~0u);
     boundCube_.fill(~0u);
+    boundSamplers_.fill(~0u);
   }
   // ASTC textures uploaded as blocks, and decoded to RGBA8 first, since creation.
   uint64_t compressedUploads() const { return compressedUploads_; }
@@ -71,6 +75,12 @@ class TextureCache {
   std::unordered_map<const facet::runtime::Texture*, Entry> textures_;
   std::array<GLuint, kTextureUnits> bound2D_{};
   std::array<GLuint, kTextureUnits> boundCube_{};
+  // Sampler objects for the bindings that carry a TextureSampler, by TextureSampler::key() (at
+  // most 144, kept); a unit without one has sampler 0 bound, so the texture's own parameters
+  // apply and a sampler an app left bound does not.
+  std::unordered_map<uint32_t, Sampler> samplers_;
+  std::array<GLuint, kTextureUnits> boundSamplers_{};
+  GLuint samplerFor(const TextureSampler& sampler);
   uint64_t frameNumber_ = 0;
   bool uploadAstc_ = false;
   uint64_t compressedUploads_ = 0;

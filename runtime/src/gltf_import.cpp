@@ -34,11 +34,15 @@ std::string imageExtension(const GltfImage& image) {
   return ".png";  // the decoder tells any other format by its bytes and names the file
 }
 
-// Filament's reflectance for KHR_materials_ior: f0 = ((ior − 1) / (ior + 1))² = 0.16 · reflectance²;
-// ior 0 stands for an infinite index (f0 = 1).
-double reflectanceOf(double ior) {
-  const double f0 = ior == 0 ? 1.0 : std::pow((ior - 1) / (ior + 1), 2);
-  return std::sqrt(f0 / 0.16);
+// A scene object's sampler (scene-format.md, "samplers"), every field spelled out.
+ordered samplerJson(const TextureSampler& s) {
+  const char* const wraps[] = {"repeat", "clampToEdge", "mirroredRepeat"};
+  std::string min = s.minLinear ? "linear" : "nearest";
+  if (s.mipmaps) min += s.mipLinear ? "MipmapLinear" : "MipmapNearest";
+  return {{"wrapS", wraps[size_t(s.wrapS)]},
+          {"wrapT", wraps[size_t(s.wrapT)]},
+          {"magFilter", s.magLinear ? "linear" : "nearest"},
+          {"minFilter", min}};
 }
 
 ordered camera(const GltfMaterialSet& set) {
@@ -53,11 +57,16 @@ ordered camera(const GltfMaterialSet& set) {
   // from the front (+z, glTF's front) and a little above.
   const double distance = 2.92 * radius, rise = 0.35;
   const double norm = std::sqrt(1 + rise * rise);
+  // Near and far bracket the sphere, [distance − radius, distance + radius] = [1.92, 3.92] radius,
+  // with room to move the camera halfway in or twice as far out: far / near ≈ 8. Depth is
+  // d = f / (f − n) · (1 − n / z), stored as D32F near 1 (24-bit mantissa), so z resolves to about
+  // z² / n · 2⁻²⁴: the near plane sets the precision, and far / 400 lost close surfaces (the
+  // avocado's pit and flesh) to depth fighting.
   return {{"position", {centre[0], centre[1] + distance * rise / norm, centre[2] + distance / norm}},
           {"target", centre},
           {"fovY", 40},
-          {"near", radius * 0.05},
-          {"far", radius * 20}};
+          {"near", (distance - radius) / 2},
+          {"far", (distance + radius) * 2}};
 }
 
 }  // namespace
@@ -119,12 +128,12 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
       files.push_back({(out / (name + ".mat")).string(), {source.begin(), source.end()}});
       result->materials.push_back((out / (name + ".mat")).string());
     }
-    ordered params;
+    ordered params, samplers;
     params["baseColorFactor"] = m.baseColorFactor;
     params["metallicFactor"] = m.metallicFactor;
     params["roughnessFactor"] = m.roughnessFactor;
     params["emissiveFactor"] = m.emissiveFactor;
-    params["reflectance"] = reflectanceOf(m.ior);
+    params["reflectance"] = m.reflectance();
     if (m.features.textured[size_t(GltfSlot::Normal)]) params["normalScale"] = m.normalScale;
     if (m.features.textured[size_t(GltfSlot::Occlusion)]) params["occlusionStrength"] = m.occlusionStrength;
     for (size_t s = 0; s < kGltfSlots; ++s) {
@@ -139,8 +148,11 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
         params[p + "Rotation"] = t.rotation;
         params[p + "Scale"] = t.scale;
       }
+      if (!(t.sampler == TextureSampler{})) samplers[p] = samplerJson(t.sampler);
     }
-    objects.push_back({{"mesh", mesh}, {"gltfMaterial", m.index}, {"material", name}, {"params", params}});
+    ordered object = {{"mesh", mesh}, {"gltfMaterial", m.index}, {"material", name}, {"params", params}};
+    if (!samplers.empty()) object["samplers"] = samplers;
+    objects.push_back(object);
   }
   ordered scene = {{"width", 480},
                    {"height", 360},

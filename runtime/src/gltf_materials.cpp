@@ -35,7 +35,7 @@ constexpr SlotInfo kSlots[kGltfSlots] = {
 // The extensions the material path reads; any other optional one is reported and skipped (a
 // required one was refused with the file: gltf_document.cpp).
 constexpr const char* kReadExtensions[] = {"KHR_texture_transform", "KHR_materials_emissive_strength",
-                                           "KHR_materials_ior", "KHR_mesh_quantization"};
+                                           "KHR_materials_ior", "KHR_materials_specular", "KHR_mesh_quantization"};
 
 // A number for a .mat file or a feature name: the shortest text that reads back as the double.
 std::string number(double v) {
@@ -136,6 +136,8 @@ class Reader {
           *error = where + "/ior: " + number(m.ior) + " is neither 0 nor in [1, " + number(kMaxIor) + "]";
           return false;
         }
+      } else if (name == "KHR_materials_specular") {
+        if (!specular(value, where, &m, error)) return false;
       } else {
         note(where + ": extension not read; the material is drawn without it");
       }
@@ -153,8 +155,45 @@ class Reader {
   static constexpr double kMaxNormalScale = 100;
   static constexpr double kMaxEmissiveStrength = 10000;
   static constexpr double kMaxIor = 10;
+  // f0 saturates at 1 once the colour reaches 1 / f0(ior) (25 at ior 1.5, 1 / 0.0007 at ior 1.05).
+  static constexpr double kMaxSpecularColor = 10000;
 
  private:
+  // KHR_materials_specular's factors; Facet's f0 is a scalar with f90 = 1, so a coloured factor
+  // is drawn by its luminance and a specularFactor below 1 scales f0 but not f90 (both noted),
+  // and its textures are not sampled (noted).
+  bool specular(const tinygltf::Value& value, const std::string& where, GltfMaterial* m, std::string* error) {
+    m->specularFactor = numberIn(value, "specularFactor", 1);
+    if (!(m->specularFactor >= 0 && m->specularFactor <= 1)) {
+      *error = where + "/specularFactor: " + number(m->specularFactor) + " is outside [0, 1]";
+      return false;
+    }
+    if (value.IsObject() && value.Has("specularColorFactor")) {
+      const tinygltf::Value& c = value.Get("specularColorFactor");
+      if (!c.IsArray() || c.ArrayLen() != 3) {
+        *error = where + "/specularColorFactor: expected 3 numbers";
+        return false;
+      }
+      for (int i = 0; i < 3; ++i) {
+        const double v = c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : -1;
+        if (!(v >= 0 && v <= kMaxSpecularColor)) {
+          *error = where + "/specularColorFactor/" + std::to_string(i) + ": " +
+                   (c.Get(i).IsNumber() ? number(v) : std::string("not a number")) + " is outside [0, " +
+                   std::to_string(int(kMaxSpecularColor)) + "]";
+          return false;
+        }
+        m->specularColorFactor[size_t(i)] = v;
+      }
+    }
+    const auto& c = m->specularColorFactor;
+    if (c[0] != c[1] || c[1] != c[2])
+      note(where + "/specularColorFactor: drawn by its luminance (Facet's f0 is one number)");
+    if (m->specularFactor != 1) note(where + "/specularFactor: scales f0 only (Facet's f90 is 1)");
+    for (const char* texture : {"specularTexture", "specularColorTexture"})
+      if (value.IsObject() && value.Has(texture)) note(where + "/" + texture + ": not sampled; drawn with the factors");
+    return true;
+  }
+
   static double numberIn(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
     return object.Get(key).GetNumberAsDouble();
@@ -230,15 +269,55 @@ class Reader {
         *error = textureAt + "/sampler: sampler " + std::to_string(t.sampler) + " does not exist";
         return false;
       }
-      const tinygltf::Sampler& s = model_.samplers[size_t(t.sampler)];
-      const std::string samplerAt = "/samplers/" + std::to_string(t.sampler);
-      if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-        note(samplerAt + ": wrap modes other than REPEAT are drawn as REPEAT");
-      if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST || s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
-          s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST ||
-          s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR ||
-          s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST || s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR)
-        note(samplerAt + ": filters are drawn as LINEAR_MIPMAP_LINEAR (trilinear)");
+      if (!sampler(t.sampler, &use->sampler, error)) return false;
+    }
+    return true;
+  }
+
+  // glTF 2.0 §3.8.4 and its sampler schema: the enums' GL values; an absent filter is the
+  // implementation's choice, trilinear here.
+  bool sampler(int index, TextureSampler* out, std::string* error) {
+    const tinygltf::Sampler& s = model_.samplers[size_t(index)];
+    const std::string at = "/samplers/" + std::to_string(index);
+    const auto wrap = [&](int value, const char* key, TextureWrap* w) {
+      if (value == TINYGLTF_TEXTURE_WRAP_REPEAT)
+        *w = TextureWrap::Repeat;
+      else if (value == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+        *w = TextureWrap::ClampToEdge;
+      else if (value == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT)
+        *w = TextureWrap::MirroredRepeat;
+      else {
+        *error = at + "/" + key + ": " + std::to_string(value) +
+                 " is not REPEAT (10497), CLAMP_TO_EDGE (33071) or MIRRORED_REPEAT (33648)";
+        return false;
+      }
+      return true;
+    };
+    if (!wrap(s.wrapS, "wrapS", &out->wrapS) || !wrap(s.wrapT, "wrapT", &out->wrapT)) return false;
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST)
+      out->magLinear = false;
+    else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR) {
+      *error = at + "/magFilter: " + std::to_string(s.magFilter) + " is not NEAREST (9728) or LINEAR (9729)";
+      return false;
+    }
+    switch (s.minFilter) {
+      case -1:
+      case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      case TINYGLTF_TEXTURE_FILTER_LINEAR:
+        out->mipmaps = false;
+        out->minLinear = s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+        out->mipLinear = false;
+        out->minLinear = s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: out->minLinear = false; break;
+      default:
+        *error = at + "/minFilter: " + std::to_string(s.minFilter) +
+                 " is not a glTF minification filter (9728, 9729, 9984 to 9987)";
+        return false;
     }
     return true;
   }
@@ -284,6 +363,17 @@ bool readImage(const tinygltf::Image& image, size_t index, GltfImage* out, std::
 }
 
 }  // namespace
+
+double GltfMaterial::reflectance() const {
+  // Filament's reflectance: f0 = 0.16 · reflectance². KHR_materials_ior: f0 = ((ior − 1) / (ior + 1))²,
+  // ior 0 standing for an infinite index (f0 = 1); KHR_materials_specular scales it by the colour
+  // (its Rec. 709 luminance), clamps at 1 and scales by the factor.
+  const double f0Ior = ior == 0 ? 1.0 : std::pow((ior - 1) / (ior + 1), 2);
+  const auto& c = specularColorFactor;
+  const double colour = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+  const double f0 = std::min(f0Ior * colour, 1.0) * specularFactor;
+  return std::sqrt(f0 / 0.16);
+}
 
 std::string GltfFeatures::name() const {
   std::string name = "gltf";

@@ -243,6 +243,16 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       *error = "object " + std::to_string(i) + ": " + *error;
       return nullptr;
     }
+    for (const auto& [name, sampler] : o.samplers) {
+      bool texture = false;
+      for (const package::Param& p : material.loaded().info().params)
+        texture = texture || (p.name == name && package::isTexture(p.type));
+      if (!texture) {
+        *error = "object " + std::to_string(i) + ": /objects/" + std::to_string(i) + "/samplers/" + name +
+                 ": material '" + o.material + "' has no texture parameter '" + name + "'";
+        return nullptr;
+      }
+    }
     draw.textures = material.generatedTextures();
     for (const LoadedMaterial::SampledTexture& t : *sampled) {
       const Texture* texture = out->texture(t, error);
@@ -250,7 +260,9 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
         *error = "object " + std::to_string(i) + ": " + *error;
         return nullptr;
       }
-      draw.textures.push_back({abi::kMaterialTextureBase + t.slot, t.glslName, texture});
+      TextureBinding binding{abi::kMaterialTextureBase + t.slot, t.glslName, texture, std::nullopt};
+      if (auto given = o.samplers.find(t.param); given != o.samplers.end()) binding.sampler = given->second;
+      draw.textures.push_back(std::move(binding));
     }
     out->frame_.draws.push_back(std::move(draw));
   }

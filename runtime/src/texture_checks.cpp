@@ -91,6 +91,15 @@ bool checkBindings(const std::vector<TextureBinding>& bindings, const std::strin
       return false;
     }
     if (!checkTexture(*binding.texture, maxImageSize, which, error)) return false;
+    if (binding.sampler && binding.texture->cube) {
+      *error = which + ": a sampler is for 2D textures (a cube map is filtered across its faces)";
+      return false;
+    }
+    const auto wrapKnown = [](TextureWrap w) { return uint8_t(w) <= uint8_t(TextureWrap::MirroredRepeat); };
+    if (binding.sampler && !(wrapKnown(binding.sampler->wrapS) && wrapKnown(binding.sampler->wrapT))) {
+      *error = which + ": sampler wrap mode is not a TextureWrap";
+      return false;
+    }
   }
   return true;
 }

@@ -90,6 +90,8 @@ void TextureCache::destroy() {
   abandoned_.clear();
   destroyEntry(&dummy_);
   destroyEntry(&dummyCube_);
+  for (auto& [key, sampler] : bindingSamplers_) vkDestroySampler(ctx_->device, sampler, nullptr);
+  bindingSamplers_.clear();
   destroyHostBuffer(ctx_->device, &staging_);
   if (fence_) vkDestroyFence(ctx_->device, fence_, nullptr);
   fence_ = VK_NULL_HANDLE;
@@ -269,8 +271,43 @@ void TextureCache::releasePending(std::vector<std::pair<const Texture*, Entry>>*
   pending->clear();
 }
 
+bool TextureCache::bindingSampler(const TextureSampler& sampler, std::string* error) {
+  if (bindingSamplers_.count(sampler.key())) return true;
+  const auto address = [](TextureWrap wrap) {
+    switch (wrap) {
+      case TextureWrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+      case TextureWrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+      case TextureWrap::ClampToEdge: break;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  };
+  VkSamplerCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.magFilter = sampler.magLinear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  info.minFilter = sampler.minLinear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  info.mipmapMode =
+      sampler.mipmaps && sampler.mipLinear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = address(sampler.wrapS);
+  info.addressModeV = address(sampler.wrapT);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.minLod = 0.0f;
+  // Without mipmaps, level 0 only: GL's GL_NEAREST / GL_LINEAR minification, emulated as the
+  // Vulkan specification's note on VkSamplerCreateInfo says (mipmap mode nearest, minLod 0,
+  // maxLod 0.25).
+  info.maxLod = sampler.mipmaps ? VK_LOD_CLAMP_NONE : 0.25f;
+  VkSampler made = VK_NULL_HANDLE;
+  if (!check(vkCreateSampler(ctx_->device, &info, nullptr, &made), "vkCreateSampler", error)) return false;
+  bindingSamplers_[sampler.key()] = made;
+  return true;
+}
+
 bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
   ++frameNumber_;
+  for (const DrawItem& draw : frame.draws)
+    for (const TextureBinding& binding : draw.textures)
+      if (binding.sampler && !bindingSampler(*binding.sampler, error)) return false;
+  for (const TextureBinding& binding : frame.frameTextures)
+    if (binding.sampler && !bindingSampler(*binding.sampler, error)) return false;
   std::vector<const Texture*> used;
   std::unordered_set<const Texture*> seen;
   const auto collect = [&](const std::vector<TextureBinding>& bindings) {
@@ -340,7 +377,9 @@ TextureSlots TextureCache::slotsFor(const FrameDesc& frame, const DrawItem& draw
     for (const TextureBinding& binding : bindings) {
       auto found = textures_.find(binding.texture);
       if (found == textures_.end() || binding.binding >= kTextureSlots) continue;  // checked
-      slots[binding.binding] = {found->second.image.view, found->second.sampler};
+      const VkSampler sampler =
+          binding.sampler ? bindingSamplers_.at(binding.sampler->key()) : found->second.sampler;  // prepare() made it
+      slots[binding.binding] = {found->second.image.view, sampler};
     }
   };
   assign(frame.frameTextures);

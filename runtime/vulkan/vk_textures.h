@@ -1,7 +1,7 @@
 // Sampled textures of the forward pass (descriptor set abi::kTextureSet): checking the frame's
 // TextureBindings, uploading Texture data into device images with all their given mip levels,
-// a sampler per texture, a cache so that a texture seen in an earlier frame is not uploaded
-// again, and the 1x1 dummy texture bound to every slot a draw leaves empty.
+// a sampler per texture (or per sampler description a binding gives), a cache so that a texture seen in an earlier
+// frame is not uploaded again, and the 1x1 dummy texture bound to every slot a draw leaves empty.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -108,6 +108,10 @@ class TextureCache {
   Entry dummyCube_;
   TextureSlots emptySlots_{};  // every slot's dummy, by its ABI sampler type (init)
   std::unordered_map<const Texture*, Entry> textures_;
+  // The samplers bindings ask for (TextureBinding::sampler), by TextureSampler::key(): at most
+  // one per distinct description (144 in all), kept until destroy().
+  std::unordered_map<uint32_t, VkSampler> bindingSamplers_;
+  bool bindingSampler(const TextureSampler& sampler, std::string* error);
   // Entries of an upload whose submission did not finish: released only in destroy(), after
   // the backend has waited for the device.
   std::vector<Entry> abandoned_;

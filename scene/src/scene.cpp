@@ -245,10 +245,41 @@ std::string builtinMeshNames() {
   return names;
 }
 
+// One of `names`, given as its index; the error lists them.
+template <size_t N>
+size_t oneOf(const json& j, const std::string& pointer, const char* const (&names)[N]) {
+  const std::string v = string(j, pointer);
+  for (size_t i = 0; i < N; ++i)
+    if (v == names[i]) return i;
+  std::string list;
+  for (const char* name : names) list += std::string(list.empty() ? "" : ", ") + name;
+  fail(pointer, "'" + scene::pointerSegment(v) + "' is not one of " + list);
+}
+
+// A texture parameter's sampler: glTF 2.0's wrap modes and filters by their names in camel case.
+TextureSampler sampler(const json& j, const std::string& pointer) {
+  onlyKeys(j, pointer, {"wrapS", "wrapT", "magFilter", "minFilter"});
+  constexpr const char* kWraps[] = {"repeat", "clampToEdge", "mirroredRepeat"};
+  constexpr const char* kMagFilters[] = {"nearest", "linear"};
+  constexpr const char* kMinFilters[] = {
+      "nearest", "linear", "nearestMipmapNearest", "linearMipmapNearest", "nearestMipmapLinear", "linearMipmapLinear"};
+  TextureSampler s;
+  if (j.contains("wrapS")) s.wrapS = TextureWrap(oneOf(j["wrapS"], pointer + "/wrapS", kWraps));
+  if (j.contains("wrapT")) s.wrapT = TextureWrap(oneOf(j["wrapT"], pointer + "/wrapT", kWraps));
+  if (j.contains("magFilter")) s.magLinear = oneOf(j["magFilter"], pointer + "/magFilter", kMagFilters) == 1;
+  if (j.contains("minFilter")) {
+    const size_t min = oneOf(j["minFilter"], pointer + "/minFilter", kMinFilters);
+    s.minLinear = min % 2 == 1;
+    s.mipmaps = min >= 2;
+    s.mipLinear = min >= 4;
+  }
+  return s;
+}
+
 SceneObject object(const json& j, const std::string& pointer, const AssetPaths& assets) {
   onlyKeys(j, pointer,
            {"mesh", "gltfMaterial", "material", "position", "rotation", "quaternion", "radius", "scale", "castShadows",
-            "receiveShadows", "params"});
+            "receiveShadows", "params", "samplers"});
   SceneObject o;
   if (j.contains("castShadows")) o.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
   if (j.contains("receiveShadows")) o.receiveShadows = boolean(j["receiveShadows"], pointer + "/receiveShadows");
@@ -309,6 +340,15 @@ SceneObject object(const json& j, const std::string& pointer, const AssetPaths& 
       else
         fail(p, "expected a number, a bool, an array of 1 to 4 numbers, or an image path");
       o.params[name] = std::move(v);
+    }
+  }
+  if (j.contains("samplers")) {
+    const json& samplers = j["samplers"];
+    if (!samplers.is_object()) fail(pointer + "/samplers", "expected an object");
+    for (const auto& [name, value] : samplers.items()) {
+      const std::string p = pointer + "/samplers/" + scene::pointerSegment(name);
+      if (!package::isValidName(name)) fail(p, "expected a texture parameter name (letters, digits, _)");
+      o.samplers[name] = sampler(value, p);  // that it names a texture parameter is checked with the package
     }
   }
   return o;

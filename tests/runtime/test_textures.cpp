@@ -424,11 +424,17 @@ TEST_P(Textures, VertexStageSamplesTextures) {
                    Rgba{0, 0.25f, 0.5f, 1}, 0.0f));
 }
 
-TEST_P(Textures, RepeatWrapsAndClampStopsAtEdge) {
-  // Two texels, red then green, sampled at u = -0.75, -0.25, 0.25, 0.75 (uv = clip x).
+// Two texels, red then green, on a quad whose uv is its clip x: four pixels sample them at
+// u = -0.75, -0.25, 0.25, 0.75.
+Texture redThenGreen() {
   Texture texture = solidLevels(2, 1, {{0, 0, 0, 0}}, false);
   texture.levels[0].clear();
   appendHalves(&texture.levels[0], {1, 0, 0, 1, 0, 1, 0, 1});
+  return texture;
+}
+
+TEST_P(Textures, RepeatWrapsAndClampStopsAtEdge) {
+  Texture texture = redThenGreen();
   const Mesh mesh = quad(-1, 1, -1, 1);
   const Rgba red{1, 0, 0, 1};
   const Rgba green{0, 1, 0, 1};
@@ -443,6 +449,32 @@ TEST_P(Textures, RepeatWrapsAndClampStopsAtEdge) {
     for (uint32_t col = 0; col < 4; ++col) {
       EXPECT_TRUE(near(hdrAt(result, 0, col), want[repeat][col], 0.0f)) << "col " << col;
     }
+  }
+}
+
+TEST_P(Textures, BindingSamplerReplacesTheTexturesWrap) {
+  // The texture clamps; each binding's sampler decides.
+  const Texture texture = redThenGreen();
+  const Mesh mesh = quad(-1, 1, -1, 1);
+  const Rgba red{1, 0, 0, 1};
+  const Rgba green{0, 1, 0, 1};
+  const struct {
+    TextureWrap wrap;
+    Rgba want[4];
+  } cases[] = {{TextureWrap::Repeat, {red, green, red, green}},
+               {TextureWrap::MirroredRepeat, {green, red, red, green}},
+               {TextureWrap::ClampToEdge, {red, red, red, green}}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(int(c.wrap));
+    FrameDesc frame = makeFrame(4, 1);
+    frame.draws.push_back(texturedDraw(mesh, Params{{1, 0, 0, 0}, {}}));
+    TextureBinding binding = bind(kMaterialTexture, "materialTexture", &texture);
+    binding.sampler = TextureSampler{};
+    binding.sampler->wrapS = c.wrap;
+    binding.sampler->magLinear = binding.sampler->minLinear = false;  // nearest, as the texture's own
+    frame.draws.back().textures = {binding};
+    const FrameResult result = render(frame);
+    for (uint32_t col = 0; col < 4; ++col) EXPECT_TRUE(near(hdrAt(result, 0, col), c.want[col], 0.0f)) << "col " << col;
   }
 }
 
@@ -514,6 +546,19 @@ TEST_P(Textures, BadTextureIsRejectedWithMessage) {
   FrameDesc clash = frameWith({bind(abi::kDfgLutBinding, "materialTexture", &good)});
   clash.frameTextures = {bind(abi::kDfgLutBinding, "facet_dfgLut", &good)};
   EXPECT_TRUE(contains(renderError(clash), "binding 0 is already given by a frame texture"));
+  TextureBinding cubeSampler = bind(kMaterialTexture, "materialTexture", &oblongCube);
+  Texture cube = solidLevels(1, 1, {{1, 1, 1, 1}}, false);
+  cube.cube = true;
+  cube.levels[0].clear();
+  for (int face = 0; face < 6; ++face) appendHalves(&cube.levels[0], {1, 1, 1, 1});
+  cubeSampler.texture = &cube;
+  cubeSampler.sampler = TextureSampler{};
+  EXPECT_TRUE(contains(renderError(frameWith({cubeSampler})),
+                       "binding 8): a sampler is for 2D textures (a cube map is filtered across its faces)"));
+  TextureBinding badWrap = bind(kMaterialTexture, "materialTexture", &good);
+  badWrap.sampler = TextureSampler{};
+  badWrap.sampler->wrapT = TextureWrap(7);
+  EXPECT_TRUE(contains(renderError(frameWith({badWrap})), "sampler wrap mode is not a TextureWrap"));
   FrameDesc badFrameTexture = makeFrame(2, 2);  // checked even with no draws
   badFrameTexture.frameTextures = {bind(abi::kDfgLutBinding, "facet_dfgLut", &shortLevel)};
   EXPECT_TRUE(

@@ -3,9 +3,11 @@
 covering what the material path reads (tests/runtime/test_gltf_materials.cpp):
   0 every texture slot, occlusion on TEXCOORD_1, emissive strength, an unknown optional extension
   1 the same feature set as 0 with other factors (one shared .mat)
-  2 MASK (cutoff 0.3), double-sided, a clamping sampler (reported: drawn as repeat)
+  2 MASK (cutoff 0.3), double-sided, a clamping sampler (reported: drawn as repeat),
+    KHR_materials_specular coloured, halved and textured (drawn by its luminance; reported)
   3 BLEND without textures, with vertex colours
-  4 KHR_texture_transform (offset, rotation, scale, texCoord 1) and KHR_materials_ior
+  4 KHR_texture_transform (offset, rotation, scale, texCoord 1), KHR_materials_ior and a grey
+    KHR_materials_specular colour
   a primitive without a material (glTF's default material)
 Run from this folder: python3 make_features.py"""
 import base64, json, struct, zlib
@@ -86,7 +88,7 @@ for q, material in enumerate([0, 1, 2, 3, 4, None]):
 gltf = {
     "asset": {"version": "2.0", "generator": "Facet tests/data/gltf/make_features.py"},
     "extensionsUsed": ["KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_ior",
-                       "EXT_facet_unknown"],
+                       "KHR_materials_specular", "EXT_facet_unknown"],
     "scene": 0,
     "scenes": [{"nodes": [0]}],
     "nodes": [{"mesh": 0}],
@@ -108,7 +110,9 @@ gltf = {
          "occlusionTexture": {"index": 1, "texCoord": 1},
          "emissiveTexture": {"index": 0}},
         {"name": "cutout", "alphaMode": "MASK", "alphaCutoff": 0.3, "doubleSided": True,
-         "pbrMetallicRoughness": {"baseColorTexture": {"index": 3}, "metallicFactor": 0}},
+         "pbrMetallicRoughness": {"baseColorTexture": {"index": 3}, "metallicFactor": 0},
+         "extensions": {"KHR_materials_specular": {"specularFactor": 0.5, "specularColorFactor": [1, 0.5, 0.25],
+                                                   "specularTexture": {"index": 1}}}},
         {"name": "glass", "alphaMode": "BLEND",
          "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.6, 0.9, 0.5], "metallicFactor": 0,
                                   "roughnessFactor": 0.1}},
@@ -116,7 +120,8 @@ gltf = {
          "pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {
              "offset": [0.25, -0.5], "rotation": 0.5, "scale": [2, 3], "texCoord": 1}}},
              "metallicFactor": 0, "roughnessFactor": 0.4},
-         "extensions": {"KHR_materials_ior": {"ior": 1.45}}},
+         "extensions": {"KHR_materials_ior": {"ior": 1.45},
+                        "KHR_materials_specular": {"specularColorFactor": [1.5, 1.5, 1.5]}}},
     ],
     "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}, {"source": 2, "sampler": 0},
                  {"source": 3, "sampler": 1}, {"source": 4, "sampler": 0}],

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "facet/runtime/gltf_mesh.h"
+#include "facet/scene/texture_sampler.h"
 
 namespace facet::runtime {
 
@@ -28,6 +29,7 @@ struct GltfTextureUse {
   std::array<double, 2> offset{0, 0};
   double rotation = 0;  // radians
   std::array<double, 2> scale{1, 1};
+  TextureSampler sampler;  // its /samplers entry (default: repeat, trilinear)
 };
 
 // What decides the compiled material. Two glTF materials with equal features share one.
@@ -55,7 +57,14 @@ struct GltfMaterial {
   double occlusionStrength = 1;
   std::array<double, 3> emissiveFactor{0, 0, 0};  // × KHR_materials_emissive_strength
   double ior = 1.5;                               // KHR_materials_ior
+  // KHR_materials_specular: the dielectric f0 = min(f0(ior) · specularColorFactor, 1) · specularFactor.
+  double specularFactor = 1;
+  std::array<double, 3> specularColorFactor{1, 1, 1};
   std::array<GltfTextureUse, kGltfSlots> textures;
+
+  // Facet's `reflectance` (f0 = 0.16 · reflectance², a scalar, f90 = 1; docs/gltf.md): from the
+  // ior and KHR_materials_specular's factors, the colour taken by its luminance.
+  double reflectance() const;
 };
 
 // An image a material uses: a relative URI of a file beside the glTF file (as stored, decoded),

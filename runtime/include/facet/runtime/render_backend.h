@@ -15,6 +15,7 @@
 #include "facet/abi/shader_abi.h"
 #include "facet/package/program_interface.h"
 #include "facet/runtime/render_path.h"
+#include "facet/scene/texture_sampler.h"
 
 namespace facet::runtime {
 
@@ -76,6 +77,9 @@ struct TextureBinding {
   uint32_t binding = 0;  // abi::k*Binding; set abi::kTextureSet in Vulkan, texture unit in GL
   std::string glslName;  // the sampler uniform's name in the GLSL ES shaders
   const Texture* texture = nullptr;
+  // How this binding samples a 2D texture, replacing the Texture's own filter and wrap flags
+  // (a material texture with a glTF sampler); absent: those flags. Not for cube maps.
+  std::optional<TextureSampler> sampler;
 };
 
 // Shader code of one material variant, one field per API.

@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "facet/scene/post_settings.h"
+#include "facet/scene/texture_sampler.h"
 
 // The scene library's folder, the runtime's namespace: these types are the runtime's description
 // of a frame (environment.h and scene_frame.h take them), apps built against an installed Facet
@@ -97,6 +98,8 @@ struct SceneObject {
       boolParams;  // params given as JSON true/false (1/0 in `params`): only a bool parameter takes one
   std::map<std::string, std::string>
       textures;  // texture parameter -> image path (relative to the scene file, resolved)
+  std::map<std::string, TextureSampler>
+      samplers;  // texture parameter -> how it is sampled (default: repeat, trilinear)
 };
 
 // The object's model matrix, T · R · S (the scene's `position`, `rotation`, `radius` · `scale`).
