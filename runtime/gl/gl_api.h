@@ -31,6 +31,7 @@ namespace facet::runtime::gl {
   X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                                       \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                 \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                         \
+  X(PFNGLBLENDCOLORPROC, glBlendColor)                                                   \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                                     \
   X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                                         \
   X(PFNGLBUFFERDATAPROC, glBufferData)                                                   \
@@ -157,6 +158,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glBindRenderbuffer (::facet::runtime::gl::detail::current->glBindRenderbuffer)
 #define glBindTexture (::facet::runtime::gl::detail::current->glBindTexture)
 #define glBindVertexArray (::facet::runtime::gl::detail::current->glBindVertexArray)
+#define glBlendColor (::facet::runtime::gl::detail::current->glBlendColor)
 #define glBlendFunc (::facet::runtime::gl::detail::current->glBlendFunc)
 #define glBlitFramebuffer (::facet::runtime::gl::detail::current->glBlitFramebuffer)
 #define glBufferData (::facet::runtime::gl::detail::current->glBufferData)
