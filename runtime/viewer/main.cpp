@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "facet-view: error: --bloom-levels and --bloom-threshold need --bloom INTENSITY\n");
     return 2;
   }
-  if (const std::string why = facet::runtime::bloomSettingsError("--bloom", bloom);
+  if (const std::string why = facet::runtime::bloomSettingsError("bloom", bloom);
       bloomOption->count() && !why.empty()) {
     std::fprintf(stderr, "facet-view: error: %s\n", why.c_str());
     return 2;
