@@ -289,6 +289,43 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
   return true;
 }
 
+namespace {
+
+// A pass of one sampled input (FXAA, the bloom chain) from its assembled sources: GLSL ES checked,
+// SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's targets too
+// when `vertex` is not null.
+bool buildSampledPass(const StageSources& vk, const StageSources& es, const std::vector<package::MslBinding>& slots,
+                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error) {
+  std::string log;
+  if (!checkGlslEs300(es, &log)) {
+    *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
+    return false;
+  }
+  SpirvStages spirv;
+  if (!compileToSpirv(vk, &spirv, &log)) {
+    *error = "post " + what + ": glslang failed:\n" + log;
+    return false;
+  }
+  if (!finishStage(&spirv.fragment, what, error) || !toMsl(spirv.fragment, slots, what, &fragment->msl, error))
+    return false;
+  fragment->spirv = std::move(spirv.fragment);
+  fragment->glslEs = es.fragment;
+  if (!vertex) return true;
+  if (!finishStage(&spirv.vertex, what + " vertex stage", error) ||
+      !toMsl(spirv.vertex, {}, what + " vertex stage", &vertex->msl, error))
+    return false;
+  vertex->spirv = std::move(spirv.vertex);
+  vertex->glslEs = es.vertex;
+  return true;
+}
+
+package::MslBinding sourceTexture(std::string_view name) {
+  return {std::string(name), package::MslResource::Texture, abi::kPostHdrSet, abi::kPostHdrBinding,
+          abi::mslTextureIndex(abi::kPostHdrBinding)};
+}
+
+}  // namespace
+
 bool buildFxaaShader(PostStage* fragment, std::string* error) {
   StageSources vk, es;
   if (!assembleFxaa(Flavour::Vulkan, "post_fullscreen.vert.glsl", &vk.vertex, error) ||
@@ -297,24 +334,7 @@ bool buildFxaaShader(PostStage* fragment, std::string* error) {
       !assembleFxaa(Flavour::GlslEs300, "post_fxaa.frag.glsl", &es.fragment, error)) {
     return false;
   }
-  std::string log;
-  if (!checkGlslEs300(es, &log)) {
-    *error = "post fxaa: GLSL ES 3.00 rejected:\n" + log;
-    return false;
-  }
-  SpirvStages spirv;
-  if (!compileToSpirv(vk, &spirv, &log)) {
-    *error = "post fxaa: glslang failed:\n" + log;
-    return false;
-  }
-  const std::vector<package::MslBinding> slots{{std::string(abi::kFxaaInputName), package::MslResource::Texture,
-                                                abi::kPostHdrSet, abi::kPostHdrBinding,
-                                                abi::mslTextureIndex(abi::kPostHdrBinding)}};
-  if (!finishStage(&spirv.fragment, "fxaa", error) || !toMsl(spirv.fragment, slots, "fxaa", &fragment->msl, error))
-    return false;
-  fragment->spirv = std::move(spirv.fragment);
-  fragment->glslEs = std::move(es.fragment);
-  return true;
+  return buildSampledPass(vk, es, {sourceTexture(abi::kFxaaInputName)}, "fxaa", fragment, nullptr, error);
 }
 
 bool buildBloomShaders(BloomStages* out, std::string* error) {
@@ -336,36 +356,15 @@ bool buildBloomShaders(BloomStages* out, std::string* error) {
         !assembleBloom(Flavour::GlslEs300, form.threshold, form.templateName, &es.fragment, error)) {
       return false;
     }
-    std::string log;
-    if (!checkGlslEs300(es, &log)) {
-      *error = std::string("post ") + form.what + ": GLSL ES 3.00 rejected:\n" + log;
-      return false;
-    }
-    SpirvStages spirv;
-    if (!compileToSpirv(vk, &spirv, &log)) {
-      *error = std::string("post ") + form.what + ": glslang failed:\n" + log;
-      return false;
-    }
-    std::vector<package::MslBinding> slots{{std::string(abi::kBloomSourceName), package::MslResource::Texture,
-                                            abi::kPostHdrSet, abi::kPostHdrBinding,
-                                            abi::mslTextureIndex(abi::kPostHdrBinding)}};
+    std::vector<package::MslBinding> slots{sourceTexture(abi::kBloomSourceName)};
     if (form.threshold) {
       const abi::BlockDesc& block = abi::kPostBlock;
       slots.push_back({std::string(block.name), package::MslResource::Buffer, block.set, block.binding,
                        abi::mslBufferIndex(block)});
     }
-    if (!finishStage(&spirv.fragment, form.what, error) ||
-        !toMsl(spirv.fragment, slots, form.what, &form.stage->msl, error))
-      return false;
-    form.stage->spirv = std::move(spirv.fragment);
-    form.stage->glslEs = std::move(es.fragment);
-    if (stages.vertex.spirv.empty()) {
-      if (!finishStage(&spirv.vertex, "bloom vertex stage", error) ||
-          !toMsl(spirv.vertex, {}, "bloom vertex stage", &stages.vertex.msl, error))
-        return false;
-      stages.vertex.spirv = std::move(spirv.vertex);
-      stages.vertex.glslEs = std::move(es.vertex);
-    }
+    // The vertex stage is the same for every form: kept from the first.
+    PostStage* vertex = stages.vertex.spirv.empty() ? &stages.vertex : nullptr;
+    if (!buildSampledPass(vk, es, slots, form.what, form.stage, vertex, error)) return false;
   }
   *out = std::move(stages);
   return true;
