@@ -61,6 +61,7 @@ struct PostArgs {
   bool dither = false;
   bool grading = false;  // 3D LUT colour grading
   bool vignette = false;
+  bool bloom = false;
   bool everyVariant = false;  // every combination of effects (what the runtime embeds)
 };
 int postCommand(const PostArgs& args);

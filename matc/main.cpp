@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
   postCmd->add_flag("--dither", post.dither, "add triangular noise of one 8-bit step before quantisation (no banding)");
   postCmd->add_flag("--grading", post.grading, "grade the encoded colour through a 3D LUT (the frame gives the LUT)");
   postCmd->add_flag("--vignette", post.vignette, "darken the corners (the frame gives the vignette's uniforms)");
+  postCmd->add_flag("--bloom", post.bloom, "composite the bloom chain's image before the tone curve");
   postCmd->add_flag("--every-variant", post.everyVariant,
                     "build every combination of effects into the C++ source (the runtime's build does)");
   // Everything after `eval` is facet-eval's (eval/tool/main.cpp, whose summary this is), --help

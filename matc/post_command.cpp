@@ -33,6 +33,7 @@ int postCommand(const PostArgs& args) {
   chosen.dither = args.dither;
   chosen.colorGrading = args.grading;
   chosen.vignette = args.vignette;
+  chosen.bloom = args.bloom;
   const std::vector<compiler::PostEffects> effects =
       args.everyVariant ? compiler::everyPostEffects() : std::vector<compiler::PostEffects>{chosen};
   std::vector<compiler::PostShaders> variants(effects.size());
@@ -44,7 +45,8 @@ int postCommand(const PostArgs& args) {
     }
   }
   compiler::PostStage fxaa;
-  if (!compiler::buildFxaaShader(&fxaa, &error)) {
+  compiler::BloomStages bloom;
+  if (!compiler::buildFxaaShader(&fxaa, &error) || !compiler::buildBloomShaders(&bloom, &error)) {
     cli::printError(error);
     return 1;
   }
@@ -73,8 +75,17 @@ int postCommand(const PostArgs& args) {
     const std::string stem = (fs::path(args.emitSource) / "post.fxaa").string();
     add("--emit-source", stem + ".frag.es300.glsl", fxaa.glslEs);
     add("--emit-source", stem + ".frag.metal", fxaa.msl);
+    const std::string bloomStem = (fs::path(args.emitSource) / "post.bloom").string();
+    add("--emit-source", bloomStem + ".vert.es300.glsl", bloom.vertex.glslEs);
+    add("--emit-source", bloomStem + ".vert.metal", bloom.vertex.msl);
+    add("--emit-source", bloomStem + ".down.frag.es300.glsl", bloom.downsample.glslEs);
+    add("--emit-source", bloomStem + ".down.frag.metal", bloom.downsample.msl);
+    add("--emit-source", bloomStem + ".threshold.frag.es300.glsl", bloom.downsampleThreshold.glslEs);
+    add("--emit-source", bloomStem + ".threshold.frag.metal", bloom.downsampleThreshold.msl);
+    add("--emit-source", bloomStem + ".up.frag.es300.glsl", bloom.upsample.glslEs);
+    add("--emit-source", bloomStem + ".up.frag.metal", bloom.upsample.msl);
   }
-  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa));
+  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa, bloom));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
     std::printf("post %s: %zu + %zu + %zu + %zu SPIR-V words; fragment: sampled %s, fetch %s, upscaled %s\n",
@@ -84,6 +95,8 @@ int postCommand(const PostArgs& args) {
                 fragmentCost(shaders.fetchFragment.spirv).c_str(),
                 fragmentCost(shaders.upscaledFragment.spirv).c_str());
   std::printf("post fxaa: %zu SPIR-V words; fragment %s\n", fxaa.spirv.size(), fragmentCost(fxaa.spirv).c_str());
+  std::printf("post bloom: downsample %s, threshold %s, upsample %s\n", fragmentCost(bloom.downsample.spirv).c_str(),
+              fragmentCost(bloom.downsampleThreshold.spirv).c_str(), fragmentCost(bloom.upsample.spirv).c_str());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }

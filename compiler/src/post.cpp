@@ -52,8 +52,16 @@ std::string effectInputs(Flavour flavour, const PostEffects& effects, PostRead r
       text += "layout(set = " + std::to_string(lut.set) + ", binding = " + std::to_string(lut.binding) + ") ";
     text += "uniform mediump sampler3D " + std::string(lut.name) + ";\n";
   }
-  // The upscaled read takes the output's pixel size from the block's viewport.
-  if (effects.vignette || read == PostRead::Upscaled) text += uniformBlockDeclaration(flavour, abi::kPostBlock);
+  if (effects.bloom) {
+    if (flavour == Flavour::Vulkan)
+      text += "layout(set = " + std::to_string(abi::kPostHdrSet) +
+              ", binding = " + std::to_string(abi::kPostBloomBinding) + ") ";
+    text += "uniform mediump sampler2D " + std::string(abi::kPostBloomName) + ";\n";
+  }
+  // The upscaled read takes the output's pixel size from the block's viewport, bloom its parameters
+  // and the output's size.
+  if (effects.vignette || effects.bloom || read == PostRead::Upscaled)
+    text += uniformBlockDeclaration(flavour, abi::kPostBlock);
   return text;
 }
 
@@ -84,10 +92,12 @@ bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, co
   if (effects.dither) text += "#define FACET_POST_DITHER 1\n";
   if (effects.colorGrading) text += "#define FACET_POST_COLOR_GRADING 1\n";
   if (effects.vignette) text += "#define FACET_POST_VIGNETTE 1\n";
+  if (effects.bloom) text += "#define FACET_POST_BLOOM 1\n";
   text += "precision mediump float;\nprecision highp int;\n";
   std::vector<std::string> files;
   if (std::string(templateName).find(".frag.") != std::string::npos) {
     text += postInterface(flavour, read) + effectInputs(flavour, effects, read);
+    if (effects.bloom) files.push_back("bloom.glsl");
     if (effects.toneCurve == ToneCurve::Aces) files.push_back("tonemap_aces.glsl");
     if (effects.toneCurve == ToneCurve::Neutral) files.push_back("tonemap_neutral.glsl");
     files.push_back("srgb.glsl");
@@ -114,6 +124,28 @@ bool assembleFxaa(Flavour flavour, const char* templateName, std::string* out, s
     text += "uniform mediump sampler2D " + std::string(abi::kFxaaInputName) + ";\n";
     text += "layout(location = " + std::to_string(abi::kPostSeparateLdrLocation) + ") out vec4 fragColor;\n";
     files.push_back("fxaa.glsl");
+  }
+  files.push_back(templateName);
+  if (!appendLibraryFiles(files, &text, error)) return false;
+  *out = std::move(text);
+  return true;
+}
+
+// A bloom pass: the source image as a sampler at the post pass's HDR set and binding (the passes
+// never bind at once), the PostUniforms block for the threshold form, one colour out.
+bool assembleBloom(Flavour flavour, bool threshold, const char* templateName, std::string* out, std::string* error) {
+  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n" : "#version 300 es\n";
+  if (threshold) text += "#define FACET_BLOOM_THRESHOLD 1\n";
+  text += "precision mediump float;\nprecision highp int;\n";
+  std::vector<std::string> files;
+  if (std::string(templateName).find(".frag.") != std::string::npos) {
+    if (flavour == Flavour::Vulkan)
+      text += "layout(set = " + std::to_string(abi::kPostHdrSet) +
+              ", binding = " + std::to_string(abi::kPostHdrBinding) + ") ";
+    text += "uniform mediump sampler2D " + std::string(abi::kBloomSourceName) + ";\n";
+    if (threshold) text += uniformBlockDeclaration(flavour, abi::kPostBlock);
+    text += "layout(location = " + std::to_string(abi::kPostSeparateLdrLocation) + ") out vec4 fragColor;\n";
+    files.push_back("bloom.glsl");
   }
   files.push_back(templateName);
   if (!appendLibraryFiles(files, &text, error)) return false;
@@ -221,7 +253,7 @@ std::optional<ToneCurve> toneCurveFromString(std::string_view name) {
 
 std::string postVariantKey(const PostEffects& effects) {
   return std::string(toString(effects.toneCurve)) + (effects.colorGrading ? "+grading" : "") +
-         (effects.vignette ? "+vignette" : "") + (effects.dither ? "+dither" : "");
+         (effects.vignette ? "+vignette" : "") + (effects.dither ? "+dither" : "") + (effects.bloom ? "+bloom" : "");
 }
 
 std::vector<package::MslBinding> postMslBindings(const PostEffects& effects, bool upscaled) {
@@ -234,7 +266,10 @@ std::vector<package::MslBinding> postMslBindings(const PostEffects& effects, boo
     slots.push_back({std::string(lut.name), package::MslResource::Texture, lut.set, lut.binding,
                      abi::mslTextureIndex(lut.binding)});
   }
-  if (effects.vignette || upscaled) {
+  if (effects.bloom)
+    slots.push_back({std::string(abi::kPostBloomName), package::MslResource::Texture, abi::kPostHdrSet,
+                     abi::kPostBloomBinding, abi::mslTextureIndex(abi::kPostBloomBinding)});
+  if (effects.vignette || effects.bloom || upscaled) {
     const abi::BlockDesc& block = abi::kPostBlock;
     slots.push_back(
         {std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)});
@@ -254,6 +289,43 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
   return true;
 }
 
+namespace {
+
+// A pass of one sampled input (FXAA, the bloom chain) from its assembled sources: GLSL ES checked,
+// SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's targets too
+// when `vertex` is not null.
+bool buildSampledPass(const StageSources& vk, const StageSources& es, const std::vector<package::MslBinding>& slots,
+                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error) {
+  std::string log;
+  if (!checkGlslEs300(es, &log)) {
+    *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
+    return false;
+  }
+  SpirvStages spirv;
+  if (!compileToSpirv(vk, &spirv, &log)) {
+    *error = "post " + what + ": glslang failed:\n" + log;
+    return false;
+  }
+  if (!finishStage(&spirv.fragment, what, error) || !toMsl(spirv.fragment, slots, what, &fragment->msl, error))
+    return false;
+  fragment->spirv = std::move(spirv.fragment);
+  fragment->glslEs = es.fragment;
+  if (!vertex) return true;
+  if (!finishStage(&spirv.vertex, what + " vertex stage", error) ||
+      !toMsl(spirv.vertex, {}, what + " vertex stage", &vertex->msl, error))
+    return false;
+  vertex->spirv = std::move(spirv.vertex);
+  vertex->glslEs = es.vertex;
+  return true;
+}
+
+package::MslBinding sourceTexture(std::string_view name) {
+  return {std::string(name), package::MslResource::Texture, abi::kPostHdrSet, abi::kPostHdrBinding,
+          abi::mslTextureIndex(abi::kPostHdrBinding)};
+}
+
+}  // namespace
+
 bool buildFxaaShader(PostStage* fragment, std::string* error) {
   StageSources vk, es;
   if (!assembleFxaa(Flavour::Vulkan, "post_fullscreen.vert.glsl", &vk.vertex, error) ||
@@ -262,36 +334,53 @@ bool buildFxaaShader(PostStage* fragment, std::string* error) {
       !assembleFxaa(Flavour::GlslEs300, "post_fxaa.frag.glsl", &es.fragment, error)) {
     return false;
   }
-  std::string log;
-  if (!checkGlslEs300(es, &log)) {
-    *error = "post fxaa: GLSL ES 3.00 rejected:\n" + log;
-    return false;
+  return buildSampledPass(vk, es, {sourceTexture(abi::kFxaaInputName)}, "fxaa", fragment, nullptr, error);
+}
+
+bool buildBloomShaders(BloomStages* out, std::string* error) {
+  struct Form {
+    const char* templateName;
+    bool threshold;
+    PostStage* stage;
+    const char* what;
+  };
+  BloomStages stages;
+  const Form forms[] = {{"post_bloom_down.frag.glsl", false, &stages.downsample, "bloom downsample"},
+                        {"post_bloom_down.frag.glsl", true, &stages.downsampleThreshold, "bloom threshold"},
+                        {"post_bloom_up.frag.glsl", false, &stages.upsample, "bloom upsample"}};
+  for (const Form& form : forms) {
+    StageSources vk, es;
+    if (!assembleBloom(Flavour::Vulkan, form.threshold, "post_bloom.vert.glsl", &vk.vertex, error) ||
+        !assembleBloom(Flavour::Vulkan, form.threshold, form.templateName, &vk.fragment, error) ||
+        !assembleBloom(Flavour::GlslEs300, form.threshold, "post_bloom.vert.glsl", &es.vertex, error) ||
+        !assembleBloom(Flavour::GlslEs300, form.threshold, form.templateName, &es.fragment, error)) {
+      return false;
+    }
+    std::vector<package::MslBinding> slots{sourceTexture(abi::kBloomSourceName)};
+    if (form.threshold) {
+      const abi::BlockDesc& block = abi::kPostBlock;
+      slots.push_back({std::string(block.name), package::MslResource::Buffer, block.set, block.binding,
+                       abi::mslBufferIndex(block)});
+    }
+    // The vertex stage is the same for every form: kept from the first.
+    PostStage* vertex = stages.vertex.spirv.empty() ? &stages.vertex : nullptr;
+    if (!buildSampledPass(vk, es, slots, form.what, form.stage, vertex, error)) return false;
   }
-  SpirvStages spirv;
-  if (!compileToSpirv(vk, &spirv, &log)) {
-    *error = "post fxaa: glslang failed:\n" + log;
-    return false;
-  }
-  const std::vector<package::MslBinding> slots{{std::string(abi::kFxaaInputName), package::MslResource::Texture,
-                                                abi::kPostHdrSet, abi::kPostHdrBinding,
-                                                abi::mslTextureIndex(abi::kPostHdrBinding)}};
-  if (!finishStage(&spirv.fragment, "fxaa", error) || !toMsl(spirv.fragment, slots, "fxaa", &fragment->msl, error))
-    return false;
-  fragment->spirv = std::move(spirv.fragment);
-  fragment->glslEs = std::move(es.fragment);
+  *out = std::move(stages);
   return true;
 }
 
 std::vector<PostEffects> everyPostEffects() {
   std::vector<PostEffects> all;
-  for (ToneCurve curve : {ToneCurve::Aces, ToneCurve::Neutral, ToneCurve::None})
-    for (bool grading : {false, true})
-      for (bool vignette : {false, true})
-        for (bool dither : {false, true}) all.push_back({curve, dither, grading, vignette});
+  for (bool bloom : {false, true})
+    for (ToneCurve curve : {ToneCurve::Aces, ToneCurve::Neutral, ToneCurve::None})
+      for (bool grading : {false, true})
+        for (bool vignette : {false, true})
+          for (bool dither : {false, true}) all.push_back({curve, dither, grading, vignette, bloom});
   return all;
 }
 
-std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostStage& fxaa) {
+std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostStage& fxaa, const BloomStages& bloom) {
   std::string cpp =
       "// Generated by `matc post` (compiler/src/post.cpp) from templates/post_* and chunks/. Do not edit.\n"
       "#include <cstdint>\n#include <iterator>\n#include <string>\n#include <vector>\n\n"
@@ -312,6 +401,15 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
   cpp += "// The FXAA pass\n";
   appendWords(&cpp, "kFxaaSpirv", fxaa.spirv);
   appendText(&cpp, "kFxaaEs", fxaa.glslEs);
+  cpp += "// The bloom chain\n";
+  appendWords(&cpp, "kBloomVertexSpirv", bloom.vertex.spirv);
+  appendWords(&cpp, "kBloomDownSpirv", bloom.downsample.spirv);
+  appendWords(&cpp, "kBloomThresholdSpirv", bloom.downsampleThreshold.spirv);
+  appendWords(&cpp, "kBloomUpSpirv", bloom.upsample.spirv);
+  appendText(&cpp, "kBloomVertexEs", bloom.vertex.glslEs);
+  appendText(&cpp, "kBloomDownEs", bloom.downsample.glslEs);
+  appendText(&cpp, "kBloomThresholdEs", bloom.downsampleThreshold.glslEs);
+  appendText(&cpp, "kBloomUpEs", bloom.upsample.glslEs);
   cpp +=
       "template <size_t N>\nstd::vector<uint32_t> words(const uint32_t (&w)[N]) { return {std::begin(w), std::end(w)}; "
       "}\n"
@@ -332,8 +430,8 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
     const PostEffects& e = variants[i].effects;
     auto flag = [](bool on) { return on ? ", true" : ", false"; };
     cpp += std::string("      {{\"") + toString(e.toneCurve) + "\"" + flag(e.dither) + flag(e.colorGrading) +
-           flag(e.vignette) + "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" + n +
-           ", fsFetchText" + n + ", fsUpscaled" + n + ", fsUpscaledText" + n + "},\n";
+           flag(e.vignette) + flag(e.bloom) + "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" +
+           n + ", fsFetchText" + n + ", fsUpscaled" + n + ", fsUpscaledText" + n + "},\n";
   }
   cpp +=
       "  };\n"
@@ -344,6 +442,12 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
       "  static const std::string text(kFxaaEs);\n"
       "  static const FxaaShader shader{spirv, text};\n"
       "  return shader;\n"
+      "}\n"
+      "const BloomShaders& bloomShaders() {\n"
+      "  static const BloomShaders shaders{words(kBloomVertexSpirv), words(kBloomDownSpirv),\n"
+      "                                    words(kBloomThresholdSpirv), words(kBloomUpSpirv),\n"
+      "                                    kBloomVertexEs, kBloomDownEs, kBloomThresholdEs, kBloomUpEs};\n"
+      "  return shaders;\n"
       "}\n"
       "}  // namespace facet::runtime\n";
   return cpp;

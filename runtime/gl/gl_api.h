@@ -32,6 +32,7 @@ namespace facet::runtime::gl {
   X(PFNGLBINDSAMPLERPROC, glBindSampler)                                                 \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                 \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                         \
+  X(PFNGLBLENDCOLORPROC, glBlendColor)                                                   \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                                     \
   X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                                         \
   X(PFNGLBUFFERDATAPROC, glBufferData)                                                   \
@@ -162,6 +163,7 @@ bool checkGlError(const char* phase, std::string* error);
 #define glBindSampler (::facet::runtime::gl::detail::current->glBindSampler)
 #define glBindTexture (::facet::runtime::gl::detail::current->glBindTexture)
 #define glBindVertexArray (::facet::runtime::gl::detail::current->glBindVertexArray)
+#define glBlendColor (::facet::runtime::gl::detail::current->glBlendColor)
 #define glBlendFunc (::facet::runtime::gl::detail::current->glBlendFunc)
 #define glBlitFramebuffer (::facet::runtime::gl::detail::current->glBlitFramebuffer)
 #define glBufferData (::facet::runtime::gl::detail::current->glBufferData)

@@ -17,6 +17,7 @@
 #include "facet/runtime/gl_backend.h"
 #include "facet/runtime/render_backend.h"
 #include "gl_app_target.h"
+#include "gl_bloom.h"
 #include "gl_context.h"
 #include "gl_mesh.h"
 #include "gl_post_inputs.h"
@@ -111,6 +112,7 @@ class GlBackend final : public GlRenderer {
   uint32_t msaaSamples() const override { return uint32_t(samples_); }
   bool fxaa() const override { return fxaa_; }
   double renderScale() const override { return renderScale_; }
+  int bloomLevels() const override { return bloomOn_ ? bloom_.levels : 0; }
   std::string msaaMethod() const override {
     if (samples_ == 1) return "off";
     return renderToTexture_ ? "GL_EXT_multisampled_render_to_texture (samples kept by the driver)"
@@ -170,6 +172,10 @@ class GlBackend final : public GlRenderer {
   bool fxaa_ = false;
   double renderScale_ = 1.0;       // below 1: a smaller HDR texture, upscaled by the post pass (separate path)
   gl::LinkedProgram fxaaProgram_;  // FXAA only
+  // Bloom (the post variant composites it): the chain, run by postPass before the post program.
+  bool bloomOn_ = false;
+  BloomSettings bloom_;
+  gl::BloomChain bloomChain_;
   // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
   bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
@@ -220,8 +226,16 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
     return false;
   }
   renderScale_ = options.renderScale;
+  bloomOn_ = options.post.bloom;
+  bloom_ = options.bloom;
+  if (bloomOn_) {
+    if (const std::string why = bloomSettingsError("GlOptions::bloom", bloom_); !why.empty()) {
+      if (error) *error = "GL backend: " + why;
+      return false;
+    }
+  }
   path_ = effectivePostPath(options.postPath == PostPath::Separate || !canFetch ? PostPath::Separate : PostPath::Merged,
-                            renderScale_);
+                            renderScale_, bloomOn_);
   if (!checkSampleCount(options.msaaSamples, error)) return false;
   renderToTexture_ = samples_ > 1 && options.renderToTexture && context_->renderToTexture().present();
 
@@ -248,9 +262,11 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
       postInputs_.init(post_.program.id(), shaders.effects, upscale, &postError) &&
       (!merged || (buildPostProgram(shaders.vertexGlslEs, shaders.fragmentGlslEs, true, &sampledPost_, &postError) &&
                    postInputs_.pointProgram(sampledPost_.program.id(), &postError)));
+  postInputs_.setBloom(bloom_);
   fxaa_ = options.fxaa;
-  if (!built || (fxaa_ && !buildPostProgram(shaders.vertexGlslEs, fxaaShader().fragmentGlslEs, true, &fxaaProgram_,
-                                            &postError, abi::kFxaaInputName))) {
+  if (!built || (bloomOn_ && !bloomChain_.init(hdrFormat_, bloom_, &postError)) ||
+      (fxaa_ && !buildPostProgram(shaders.vertexGlslEs, fxaaShader().fragmentGlslEs, true, &fxaaProgram_, &postError,
+                                  abi::kFxaaInputName))) {
     if (error) *error = "GL backend: " + postError;
     return false;
   }
@@ -378,6 +394,10 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     result->height = frame.height;
     result->hdrWidth = targets_.forwardWidth;
     result->hdrHeight = targets_.forwardHeight;
+    result->bloom.clear();
+    result->bloomWidth = result->bloomHeight = 0;
+    result->bloomLevels = bloomOn_ ? bloomChain_.levelCount() : 0;
+    if (bloomOn_ && readBackHdr_) bloomChain_.readLevel0(&result->bloom, &result->bloomWidth, &result->bloomHeight);
     result->gpuTimes.clear();
     if (timed_) {
       // Nanoseconds, waited for (GL_QUERY_RESULT). 64 bits: the 32-bit getter saturates at 4.3 s.
@@ -695,7 +715,13 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string
 
 bool GlBackend::postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error) {
   // Separate path: a second pass that samples the stored HDR target. A merged backend runs this
-  // pass only for frames into the app's default framebuffer.
+  // pass only for frames into the app's default framebuffer. Bloom's chain runs first (the
+  // threshold reads the block the post inputs bind). A glTF sampler object the forward pass left
+  // on a unit would otherwise override the chain's own clamp-to-edge, linear filtering.
+  if (bloomOn_) textures_.clearSamplers();
+  if (bloomOn_ && (!bloomChain_.ensureTargets(targets_.forwardWidth, targets_.forwardHeight, error) ||
+                   !postInputs_.bind(frame, error) || !bloomChain_.run(targets_.hdrColor, error)))
+    return false;
   return sampledPass(framebuffer, path_ == PostPath::Merged ? sampledPost_ : post_, targets_.hdrColor, &frame,
                      "post pass", error);
 }
@@ -713,6 +739,10 @@ bool GlBackend::sampledPass(GLuint framebuffer, const gl::LinkedProgram& program
   glActiveTexture(GL_TEXTURE0 + abi::kPostHdrBinding);
   glBindTexture(GL_TEXTURE_2D, input.id());
   if (postFrame && !postInputs_.bind(*postFrame, error)) return false;
+  if (postFrame && bloomOn_) {
+    glActiveTexture(GL_TEXTURE0 + abi::kPostBloomBinding);
+    glBindTexture(GL_TEXTURE_2D, bloomChain_.level0().id());
+  }
   textures_.clearSamplers();
   textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());

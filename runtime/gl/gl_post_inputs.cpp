@@ -1,6 +1,7 @@
 #include "gl_post_inputs.h"
 
 #include "facet/runtime/content_hash.h"
+#include "facet/runtime/vignette.h"
 
 namespace facet::runtime::gl {
 namespace {
@@ -35,6 +36,15 @@ bool PostInputs::init(GLuint program, const PostSettings& effects, bool upscale,
 
 bool PostInputs::pointProgram(GLuint program, std::string* error) {
   glUseProgram(program);
+  if (effects_.bloom) {
+    const GLint location = glGetUniformLocation(program, abi::kPostBloomName);
+    if (location < 0) {
+      *error = std::string("post-pass fragment shader has no sampler uniform '") + abi::kPostBloomName + "'";
+      glUseProgram(0);
+      return false;
+    }
+    glUniform1i(location, GLint(abi::kPostBloomBinding));  // the backend binds the chain's level 0 there
+  }
   if (effects_.colorGrading) {
     const GLint location = glGetUniformLocation(program, abi::kPostColorLutName);
     if (location < 0) {
@@ -77,12 +87,8 @@ bool PostInputs::bind(const FrameDesc& frame, std::string* error) {
     }
   }
   if (readsBlock()) {
-    abi::PostUniforms uniforms = frame.postUniforms;
-    // The upscaled read divides by the output's size, which the backend knows whatever the frame says.
-    if (upscale_) {
-      uniforms.viewport[0] = 1.0f / float(frame.width);
-      uniforms.viewport[1] = 1.0f / float(frame.height);
-    }
+    const abi::PostUniforms uniforms =
+        postUniformsFor(frame, effects_.bloom || upscale_, effects_.bloom ? &bloom_ : nullptr);
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kPostUniformsBinding, uniforms_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(abi::PostUniforms), &uniforms);
   }

@@ -24,11 +24,14 @@ class PostInputs {
   bool pointProgram(GLuint program, std::string* error);
   // Uploads what changed and binds both for the post pass's draw. Changes the active texture unit.
   bool bind(const FrameDesc& frame, std::string* error);
+  // Bloom's parameters, written into the block's `bloom` whatever the frame says.
+  void setBloom(const BloomSettings& bloom) { bloom_ = bloom; }
 
  private:
   PostSettings effects_;
   bool upscale_ = false;
-  bool readsBlock() const { return effects_.vignette || upscale_; }
+  BloomSettings bloom_;
+  bool readsBlock() const { return effects_.vignette || effects_.bloom || upscale_; }
   Texture lut_;
   Buffer uniforms_;
   uint64_t lutHash_ = 0;

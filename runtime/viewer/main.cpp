@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
   uint32_t width = 0, height = 0, msaa = 0;
   double renderScale = 1.0;
+  facet::runtime::BloomSettings bloom;
   app.add_option("scene", scenePath, "scene JSON")->required();
   app.add_option("--packages", packageDir, "folder holding <material>.matpkg files");
   app.add_option("--asset-root", assetRoot,
@@ -47,6 +48,13 @@ int main(int argc, char** argv) {
   app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
       ->check(CLI::IsMember({1, 2, 4}));
   app.add_flag("--fxaa", fxaa, "an FXAA pass after the post pass (default: the scene's \"antialiasing\")");
+  CLI::Option* bloomOption =
+      app.add_option("--bloom", bloom.intensity,
+                     "bloom of this intensity, 0..1 (default: the scene's \"post\": {\"bloom\"}, else none)");
+  CLI::Option* bloomLevelsOption =
+      app.add_option("--bloom-levels", bloom.levels, "with bloom: the chain's levels, 1..12 (each doubles the radius)");
+  CLI::Option* bloomThresholdOption =
+      app.add_option("--bloom-threshold", bloom.threshold, "with bloom: the brightness it starts from, 0 (none) up");
   CLI::Option* renderScaleOption = app.add_option(
       "--render-scale", renderScale,
       "render the forward pass at this fraction of the output size, 0.5..1, upscaled by the post pass (default: the "
@@ -83,6 +91,16 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if ((bloomLevelsOption->count() || bloomThresholdOption->count()) && !bloomOption->count()) {
+    std::fprintf(stderr, "facet-view: error: --bloom-levels and --bloom-threshold need --bloom INTENSITY\n");
+    return 2;
+  }
+  if (const std::string why = facet::runtime::bloomSettingsError("bloom", bloom);
+      bloomOption->count() && !why.empty()) {
+    std::fprintf(stderr, "facet-view: error: %s\n", why.c_str());
+    return 2;
+  }
+
   std::string error;
   auto scene = facet::runtime::loadScene(scenePath, &error, {.assetRoot = assetRoot});
   if (!scene) {
@@ -95,6 +113,10 @@ int main(int argc, char** argv) {
   if (msaa) scene->msaaSamples = msaa;
   if (fxaa) scene->fxaa = true;
   if (renderScaleOption->count()) scene->renderScale = renderScale;
+  if (bloomOption->count()) {
+    scene->post.bloom = true;
+    scene->bloom = bloom;
+  }
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
 
@@ -125,6 +147,7 @@ int main(int argc, char** argv) {
       options.msaaSamples = scene->msaaSamples;
       options.fxaa = scene->fxaa;
       options.renderScale = scene->renderScale;
+      options.bloom = scene->bloom;
       backend = facet::runtime::createVulkanBackend(options, &error);
     } else {
       facet::runtime::GlOptions options;
@@ -139,6 +162,7 @@ int main(int argc, char** argv) {
       options.msaaSamples = scene->msaaSamples;
       options.fxaa = scene->fxaa;
       options.renderScale = scene->renderScale;
+      options.bloom = scene->bloom;
       backend = facet::runtime::createGlBackend(options, &error);
     }
     if (!backend) return fail(name + ": " + error);
@@ -165,7 +189,7 @@ int main(int argc, char** argv) {
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
           result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
-          backend->msaaSamples(), backend->fxaa(), backend->renderScale());
+          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels));
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
@@ -178,6 +202,7 @@ int main(int argc, char** argv) {
         entry["msaaMethod"] = backend->msaaMethod();
         entry["fxaa"] = backend->fxaa();
         entry["renderScale"] = backend->renderScale();
+        entry["bloomLevels"] = result.bloomLevels;
         entry["width"] = result.width;
         entry["height"] = result.height;
         entry["scene"] = scenePath;
@@ -193,7 +218,9 @@ int main(int argc, char** argv) {
         std::printf("%s: %s path, %s HDR, frame graph at %ux%u%s, MSAA %ux (%s)%s:\n%s", name.c_str(),
                     facet::runtime::toString(backend->postPath()), facet::runtime::toString(backend->hdrFormat()),
                     result.width, result.height, scaled.c_str(), backend->msaaSamples(), backend->msaaMethod().c_str(),
-                    backend->fxaa() ? ", FXAA" : "",
+                    (std::string(backend->fxaa() ? ", FXAA" : "") +
+                     (result.bloomLevels ? ", bloom of " + std::to_string(result.bloomLevels) + " levels" : ""))
+                        .c_str(),
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
         std::printf("  %zu draw calls; CPU issuing the frame (FrameResult::cpuSubmitMilliseconds): median %.3f ms\n",
                     frame.draws.size(), facet::viewer::median(cpuTimes));

@@ -20,6 +20,7 @@
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/vulkan_backend.h"
 #include "vk_app_images.h"
+#include "vk_bloom.h"
 #include "vk_check.h"
 #include "vk_commands.h"
 #include "vk_context.h"
@@ -111,6 +112,7 @@ class VulkanBackend final : public VulkanRenderer {
   uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
   bool fxaa() const override { return fxaa_; }
   double renderScale() const override { return renderScale_; }
+  int bloomLevels() const override { return bloomOn_ ? bloom_.levels : 0; }
   std::string msaaMethod() const override;
   bool render(const FrameDesc& frame, FrameResult* result, std::string* error) override;
   bool renderToImage(const FrameDesc& frame, const AppImage& target, std::string* error) override;
@@ -172,6 +174,12 @@ class VulkanBackend final : public VulkanRenderer {
   // Below 1: HDR and depth at scaledSize() of the output, sampled bilinearly by the post pass's
   // upscaled form (the separate path).
   double renderScale_ = 1.0;
+  // Bloom (post_->effects.bloom): the chain between the forward and the post pass, its passes'
+  // ops from the frame graph.
+  bool bloomOn_ = false;
+  BloomSettings bloom_;
+  AttachmentOps bloomDownOps_, bloomUpOps_;
+  BloomChain bloomChain_;
   ForwardSamples samples_;       // MSAA: the count and the multisampled colour's ops
   bool clearInSubpass_ = false;  // FrameObjects::clearInSubpass: lavapipe's render-to-single-sampled
 
@@ -263,6 +271,7 @@ VulkanBackend::~VulkanBackend() {
   materialBlocks_.destroy();
   allocator_.destroy();  // after everything sub-allocated from it was released
   destroyRenderTargets(device, &targets_);
+  bloomChain_.destroy();
   // Destroying a pool frees its sets.
   for (FrameSlot& slot : slots_) {
     destroyHostBuffer(device, &slot.arena);
@@ -314,8 +323,11 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
     return false;
   }
   renderScale_ = options.renderScale;
-  path_ =
-      effectivePostPath(options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged, renderScale_);
+  bloomOn_ = options.post.bloom;
+  bloom_ = options.bloom;
+  if (bloomOn_ && !(*error = bloomSettingsError("VulkanOptions::bloom", bloom_)).empty()) return false;
+  path_ = effectivePostPath(options.postPath == PostPath::Separate ? PostPath::Separate : PostPath::Merged,
+                            renderScale_, bloomOn_);
   readBackHdr_ = options.readBackHdr;
   if (options.framesInFlight < 1 || options.framesInFlight > kMaxFramesInFlight) {
     *error = "VulkanOptions::framesInFlight must be 1.." + std::to_string(kMaxFramesInFlight) + ", not " +
@@ -335,21 +347,37 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
   }
   samples_.count = static_cast<VkSampleCountFlagBits>(options.msaaSamples);
   fxaa_ = options.fxaa;
-  const ForwardPostGraph g =
-      buildForwardPostGraph(1, 1, path_, readBackHdr_, hdrFormat_, options.msaaSamples, options.fxaa, renderScale_);
+  // Large enough for every bloom level (bloomLevelSizes): the ops do not depend on the size.
+  const uint32_t planSize = bloomOn_ ? 2u << bloom_.levels : 1;
+  const int bloomLevels = bloomOn_ ? bloom_.levels : 0;
+  const ForwardPostGraph g = buildForwardPostGraph(planSize, planSize, path_, readBackHdr_, hdrFormat_,
+                                                   options.msaaSamples, options.fxaa, renderScale_, bloomLevels);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
-  const size_t expected = (path_ == PostPath::Merged ? 1 : 2) + (fxaa_ ? 1 : 0);
+  const size_t expected =
+      (path_ == PostPath::Merged ? 1 : 2) + (fxaa_ ? 1 : 0) + (bloomOn_ ? 2 * bloom_.levels - 1 : 0);
   if (compiled.renderPasses.size() != expected) {
     *error = std::string("frame graph gave ") + std::to_string(compiled.renderPasses.size()) +
              " render passes for the " + toString(path_) + " path";
     return false;
   }
-  const uint32_t postRenderPass = path_ == PostPath::Merged ? 0 : 1;
+  // The render pass each pass runs in (bloom's chain sits between the forward and the post pass).
+  const auto renderPassOf = [&](uint32_t pass) {
+    for (uint32_t r = 0; r < compiled.renderPasses.size(); ++r)
+      for (uint32_t p : compiled.renderPasses[r].subpasses)
+        if (p == pass) return r;
+    return uint32_t(0);
+  };
+  const uint32_t postRenderPass = renderPassOf(g.postPass);
+  if (bloomOn_) {
+    bloomDownOps_ = toVulkan(*compiled.attachment(renderPassOf(g.bloomDownPasses[0]), g.bloom[0]));
+    if (!g.bloomUpPasses.empty())
+      bloomUpOps_ = toVulkan(*compiled.attachment(renderPassOf(g.bloomUpPasses.back()), g.bloom[0]));
+  }
   hdrOps_ = toVulkan(*compiled.attachment(0, g.hdr));
   depthOps_ = toVulkan(*compiled.attachment(0, g.depth));
   ldrOps_ = toVulkan(*compiled.attachment(postRenderPass, g.toneMapped));
-  if (fxaa_) fxaaOps_ = toVulkan(*compiled.attachment(postRenderPass + 1, g.ldr));
+  if (fxaa_) fxaaOps_ = toVulkan(*compiled.attachment(renderPassOf(g.fxaaPass), g.ldr));
   hdrTransient_ = compiled.traffic[g.hdr].transient;
   depthTransient_ = compiled.traffic[g.depth].transient;
   if (g.hdrSamples != g.hdr) {
@@ -418,7 +446,7 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   const VkFormatFeatureFlags hdrNeeds =
       VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
       (merged ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) | (readBackHdr_ ? VK_FORMAT_FEATURE_TRANSFER_SRC_BIT : 0) |
-      (upscales() ? VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT : 0);
+      (upscales() || bloomOn_ ? VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT : 0);
   if ((hdrProperties.optimalTilingFeatures & hdrNeeds) != hdrNeeds) {
     *error = std::string("the device cannot use ") + toString(hdrFormat_) + " as the HDR target (format features " +
              std::to_string(hdrProperties.optimalTilingFeatures) + ", needs " + std::to_string(hdrNeeds) + ")";
@@ -488,6 +516,10 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   slots_.resize(framesInFlight_);
   const auto slotCount = static_cast<uint32_t>(slots_.size());
   if (!postInputs_.init(&ctx_, post_->effects, upscales(), slotCount, error)) return false;
+  postInputs_.setBloom(bloom_);
+  if (bloomOn_ &&
+      !bloomChain_.init(&ctx_, hdrVkFormat_, bloom_, bloomDownOps_, bloomUpOps_, slotCount, readBackHdr_, error))
+    return false;
   std::vector<VkDescriptorPoolSize> postPoolSizes{{hdrType, slotCount}};
   for (const VkDescriptorSetLayoutBinding& b : PostInputs::bindings(post_->effects, upscales()))
     postPoolSizes.push_back({b.descriptorType, slotCount});
@@ -593,6 +625,16 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
       !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) || !outputFor(appImage, output, error)) {
     return false;
   }
+  if (bloomOn_) {
+    BloomChain::Targets old;
+    if (!bloomChain_.ensureTargets(targets_.forwardWidth, targets_.forwardHeight, &old, error)) return false;
+    if (!old.levels.empty()) {
+      VkDevice device = ctx_.device;
+      retire_.retire([device, old]() mutable { BloomChain::destroyTargets(device, &old); });
+    }
+    const auto slot = uint32_t(frameNumber_ % slots_.size());
+    bloomChain_.writeSets(slot, targets_.hdr.view, postInputs_.uniformBuffer(slot));
+  }
   writePostSet();
   return postInputs_.prepare(frame, slot_->postSet, size_t(frameNumber_ % slots_.size()), error);
 }
@@ -634,6 +676,7 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
                  frame.clearColor, slots);
     if (!appImage) {
       recordReadback(cmd, objects.merged, readBackHdr_, targets_);
+      if (bloomOn_ && readBackHdr_) bloomChain_.recordReadback(cmd);
     } else if (!output.directImage) {
       recordCopyToAppImage(cmd, targets_, *appImage);
     }
@@ -686,6 +729,8 @@ FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
           fxaaLayout_,
           fxaaPipeline_,
           slot_->fxaaSet,
+          bloomOn_ ? &bloomChain_ : nullptr,
+          uint32_t(frameNumber_ % slots_.size()),
           timestamps,
           slot_->arena.buffer};
 }
@@ -738,6 +783,15 @@ void VulkanBackend::writePostSet() {
   write.descriptorType = merged ? VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &imageInfo;
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
+  if (bloomOn_) {
+    const VkDescriptorImageInfo bloom{bloomChain_.sampler(), bloomChain_.level0(),
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    write.dstBinding = abi::kPostBloomBinding;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &bloom;
+    vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
+    write.dstBinding = abi::kPostHdrBinding;
+  }
   if (!fxaa_) return;
   const VkDescriptorImageInfo toneMapped{fxaaSampler_, targets_.toneMapped.view,
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -943,6 +997,10 @@ void VulkanBackend::readBack(FrameResult* result) const {
   }
   result->ldr.resize(values);
   std::memcpy(result->ldr.data(), targets_.ldrReadback.mapped, values);
+  result->bloom.clear();
+  result->bloomWidth = result->bloomHeight = 0;
+  result->bloomLevels = bloomOn_ ? bloomChain_.levelCount() : 0;
+  if (bloomOn_ && readBackHdr_) bloomChain_.readLevel0(&result->bloom, &result->bloomWidth, &result->bloomHeight);
 }
 
 // Timestamps are in ticks of timestampPeriod nanoseconds, valid in their low timestampValidBits.
@@ -950,7 +1008,8 @@ void VulkanBackend::readTimes(FrameResult* result) const {
   result->gpuTimes.clear();
   if (!timestamps_) return;
   uint64_t ticks[kTimestampCount] = {};
-  if (vkGetQueryPoolResults(ctx_.device, timestamps_, 0, kTimestampCount, sizeof ticks, ticks, sizeof(uint64_t),
+  const uint32_t written = bloomOn_ ? kTimestampCount : kTimestampCount - 1;  // the last is bloom's
+  if (vkGetQueryPoolResults(ctx_.device, timestamps_, 0, written, written * sizeof(uint64_t), ticks, sizeof(uint64_t),
                             VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
     return;  // not available: the frame is still valid, only untimed
   }
@@ -958,7 +1017,12 @@ void VulkanBackend::readTimes(FrameResult* result) const {
   const double msPerTick = double(ctx_.properties.limits.timestampPeriod) * 1e-6;
   const auto span = [&](int from, int to) { return double((ticks[to] - ticks[from]) & mask) * msPerTick; };
   result->gpuTimes.push_back({"forward", span(0, 1)});
-  result->gpuTimes.push_back({"post", span(1, 2)});
+  if (bloomOn_) {
+    result->gpuTimes.push_back({"bloom", span(1, 3)});
+    result->gpuTimes.push_back({"post", span(3, 2)});
+  } else {
+    result->gpuTimes.push_back({"post", span(1, 2)});
+  }
 }
 
 }  // namespace

@@ -123,6 +123,10 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     if (objects.timestamps) {
       vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 1);
     }
+    if (objects.bloom) {
+      objects.bloom->record(cmd, objects.slot);
+      if (objects.timestamps) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, objects.timestamps, 3);
+    }
     beginUncleared(output.postPass, output.framebuffers.post);
   }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.postPipeline);

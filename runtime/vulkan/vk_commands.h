@@ -10,6 +10,7 @@
 
 #include "facet/runtime/vulkan_backend.h"
 #include "vk_app_images.h"
+#include "vk_bloom.h"
 #include "vk_frame.h"
 #include "vk_targets.h"
 
@@ -31,7 +32,12 @@ struct FrameObjects {
   VkPipelineLayout fxaaLayout = VK_NULL_HANDLE;
   VkPipeline fxaaPipeline = VK_NULL_HANDLE;
   VkDescriptorSet fxaaSet = VK_NULL_HANDLE;
-  // kTimestampCount timestamps: frame start, forward pass done, post (and FXAA) passes done.
+  // Bloom (null when off; the separate path): its chain's passes after the forward pass, with the
+  // frame slot's sets.
+  const BloomChain* bloom = nullptr;
+  uint32_t slot = 0;
+  // kTimestampCount timestamps: frame start, forward pass done, post (and FXAA) passes done, bloom
+  // chain done (with bloom).
   // Null: not timed.
   VkQueryPool timestamps = VK_NULL_HANDLE;
   VkBuffer arena = VK_NULL_HANDLE;  // this frame's uniforms and instance transforms (DrawSlot offsets)
@@ -48,7 +54,7 @@ struct FrameOutput {
   const AppImage* directImage = nullptr;
 };
 
-inline constexpr uint32_t kTimestampCount = 3;
+inline constexpr uint32_t kTimestampCount = 4;
 
 // The forward pass (clear to clearColor and depth 1, then each slot, each with its own mesh
 // buffer) and the post pass (a second render pass, or the next subpass when merged). With

@@ -560,6 +560,15 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
     blendAttachment.dstAlphaBlendFactor = dst;
     blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   }
+  if (!forward && desc.constantBlend) {
+    blendAttachment.blendEnable = VK_TRUE;
+    blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_CONSTANT_ALPHA;
+    blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_CONSTANT_ALPHA;
+    blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+    blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_CONSTANT_ALPHA;
+    blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_CONSTANT_ALPHA;
+    blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
+  }
   // The merged post subpass has colour slots {unused, LDR}: one state per slot, the same for both.
   const std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{blendAttachment, blendAttachment};
   VkPipelineColorBlendStateCreateInfo blend{};
@@ -567,10 +576,11 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   blend.attachmentCount = desc.colourSlots;
   blend.pAttachments = blendAttachments.data();
 
-  const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  const std::array<VkDynamicState, 3> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                                    VK_DYNAMIC_STATE_BLEND_CONSTANTS};
   VkPipelineDynamicStateCreateInfo dynamic{};
   dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-  dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+  dynamic.dynamicStateCount = desc.constantBlend ? 3 : 2;
   dynamic.pDynamicStates = dynamicStates.data();
 
   VkGraphicsPipelineCreateInfo info{};

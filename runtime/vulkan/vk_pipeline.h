@@ -110,6 +110,9 @@ struct PipelineDesc {
   // Masked materials under MSAA: the fragment's alpha (its coverage, output_blending.glsl) masks
   // the samples it writes, so an alpha-tested edge is antialiased like a geometric one.
   bool alphaToCoverage = false;
+  // Post pipelines only: src · (1 − constant alpha) + dst · constant alpha, the constant a dynamic
+  // state (the bloom upsample, chunks/bloom.glsl).
+  bool constantBlend = false;
   const char* what = "";  // names the shaders in error messages
 };
 

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "facet/runtime/content_hash.h"
+#include "facet/runtime/vignette.h"
 #include "vk_check.h"
 #include "vk_context.h"
 
@@ -21,7 +22,10 @@ std::vector<VkDescriptorSetLayoutBinding> PostInputs::bindings(const PostSetting
   if (effects.colorGrading)
     out.push_back({abi::kPostColorLutBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                    VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-  if (effects.vignette || upscale)
+  if (effects.bloom)
+    out.push_back(
+        {abi::kPostBloomBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  if (effects.vignette || effects.bloom || upscale)
     out.push_back(
         {abi::kPostUniformsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   return out;
@@ -34,7 +38,7 @@ bool PostInputs::init(const Context* ctx, const PostSettings& effects, bool upsc
   upscale_ = upscale;
   written_.assign(slots, VK_NULL_HANDLE);
   VkDevice device = ctx->device;
-  if (effects.vignette || upscale) {
+  if (effects.vignette || effects.bloom || upscale) {
     uniforms_.resize(slots);
     for (HostBuffer& buffer : uniforms_)
       if (!createHostBuffer(*ctx, sizeof(abi::PostUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &buffer, error))
@@ -211,13 +215,9 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
     }
   }
   VkDescriptorBufferInfo buffer{};
-  if (effects_.vignette || upscale_) {
-    abi::PostUniforms uniforms = frame.postUniforms;
-    // The upscaled read divides by the output's size, which the backend knows whatever the frame says.
-    if (upscale_) {
-      uniforms.viewport[0] = 1.0f / float(frame.width);
-      uniforms.viewport[1] = 1.0f / float(frame.height);
-    }
+  if (effects_.vignette || effects_.bloom || upscale_) {
+    const abi::PostUniforms uniforms =
+        postUniformsFor(frame, effects_.bloom || upscale_, effects_.bloom ? &bloom_ : nullptr);
     std::memcpy(uniforms_[slot].mapped, &uniforms, sizeof(abi::PostUniforms));
     buffer = {uniforms_[slot].buffer, 0, sizeof(abi::PostUniforms)};
   }
@@ -225,6 +225,7 @@ bool PostInputs::prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slo
   VkDescriptorImageInfo image{lutSampler_, lutView_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   std::vector<VkWriteDescriptorSet> writes;
   for (const VkDescriptorSetLayoutBinding& b : bindings(effects_, upscale_)) {
+    if (b.binding == abi::kPostBloomBinding) continue;  // the backend's (setBloom)
     VkWriteDescriptorSet write{};
     write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     write.dstSet = set;

@@ -36,6 +36,12 @@ class PostInputs {
   // Safe twice and on a partly initialised object. The device must be idle.
   void destroy();
 
+  // Bloom's parameters, written into the block's `bloom` whatever the frame says (the post set's
+  // bloom image, abi::kPostBloomBinding, is the backend's to write: it moves with the frame size).
+  void setBloom(const BloomSettings& bloom) { bloom_ = bloom; }
+  // The slot's PostUniforms buffer (null when the variant reads no block).
+  VkBuffer uniformBuffer(size_t slot) const { return uniforms_.empty() ? VK_NULL_HANDLE : uniforms_[slot].buffer; }
+
   // Uploads the frame's LUT if it changed, writes its uniforms into `slot`'s buffer, and points
   // `set` (that slot's post set) at both.
   bool prepare(const FrameDesc& frame, VkDescriptorSet set, size_t slot, std::string* error);
@@ -46,6 +52,7 @@ class PostInputs {
   const Context* ctx_ = nullptr;
   PostSettings effects_;
   bool upscale_ = false;
+  BloomSettings bloom_;
   VkImage lutImage_ = VK_NULL_HANDLE;
   VkDeviceMemory lutMemory_ = VK_NULL_HANDLE;
   VkImageView lutView_ = VK_NULL_HANDLE;

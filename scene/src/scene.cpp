@@ -386,10 +386,20 @@ void vignette(const json& j, VignetteSettings* v) {
   if (j.contains("roundness")) v->roundness = number(j["roundness"], "/post/vignette/roundness", 0, 1);
 }
 
+// Bloom's levels are bounded by kMaxBloomLevels here; a frame whose quarter-resolution image has
+// fewer mips renders that many (render_path.h bloomLevelSizes), since the scene's size may change.
+void bloom(const json& j, BloomSettings* b) {
+  onlyKeys(j, "/post/bloom", {"intensity", "levels", "threshold"});
+  if (j.contains("intensity")) b->intensity = number(j["intensity"], "/post/bloom/intensity", 0, 1);
+  if (j.contains("levels"))
+    b->levels = int(wholeNumber(j["levels"], "/post/bloom/levels", 1, uint32_t(kMaxBloomLevels)));
+  if (j.contains("threshold")) b->threshold = number(j["threshold"], "/post/bloom/threshold", 0, 65504);
+}
+
 // The effects of the post pass. The tone curves are those the runtime embeds a post variant for
-// (compiler/post.h ToneCurve; a backend refuses any other); grading and vignette are on when given.
+// (compiler/post.h ToneCurve; a backend refuses any other); grading, vignette and bloom are on when given.
 void post(const json& j, const AssetPaths& assets, Scene* s) {
-  onlyKeys(j, "/post", {"toneCurve", "dither", "grading", "vignette"});
+  onlyKeys(j, "/post", {"toneCurve", "dither", "grading", "vignette", "bloom"});
   PostSettings& p = s->post;
   if (j.contains("toneCurve")) {
     p.toneCurve = string(j["toneCurve"], "/post/toneCurve");
@@ -408,6 +418,10 @@ void post(const json& j, const AssetPaths& assets, Scene* s) {
   if (j.contains("vignette")) {
     vignette(j["vignette"], &s->vignette);
     p.vignette = true;
+  }
+  if (j.contains("bloom")) {
+    bloom(j["bloom"], &s->bloom);
+    p.bloom = true;
   }
 }
 

@@ -93,13 +93,17 @@ TEST(PostDomain, GeneratedRuntimeSourceDefinesPostShaders) {
   PostEffects neutral;
   neutral.toneCurve = ToneCurve::Neutral;
   PostStage fxaa;
+  BloomStages bloom;
   std::string error;
   ASSERT_TRUE(buildFxaaShader(&fxaa, &error)) << error;
-  const std::string cpp = postShadersCpp({build({}), build(neutral)}, fxaa);
+  ASSERT_TRUE(buildBloomShaders(&bloom, &error)) << error;
+  const std::string cpp = postShadersCpp({build({}), build(neutral)}, fxaa, bloom);
   EXPECT_TRUE(contains(cpp, "const std::vector<PostShaders>& postVariants()"));
   EXPECT_TRUE(contains(cpp, "kFetchSpirv1"));
-  EXPECT_TRUE(contains(cpp, "{{\"neutral\", false, false, false}, vs1,"));
-  EXPECT_EQ(everyPostEffects().size(), 24u);  // 3 tone curves × grading × vignette × dither
+  EXPECT_TRUE(contains(cpp, "{{\"neutral\", false, false, false, false}, vs1,"));
+  EXPECT_EQ(everyPostEffects().size(), 48u);  // 3 tone curves × grading × vignette × dither × bloom
+  EXPECT_TRUE(contains(cpp, "const BloomShaders& bloomShaders()"));
+  EXPECT_TRUE(contains(cpp, "bloom_downsample13(bloomSource"));
   EXPECT_TRUE(contains(cpp, "GL_EXT_shader_framebuffer_fetch"));
   EXPECT_TRUE(contains(cpp, "const FxaaShader& fxaaShader()"));
   EXPECT_TRUE(contains(cpp, "fxaa_console(toneMapped"));
@@ -147,4 +151,38 @@ TEST(PostDomain, GradingAndVignetteAreCompiledOutWhenOffAndBoundFromTheAbiWhenOn
   EXPECT_LT(off.sampledFragment.spirv.size(), v.sampledFragment.spirv.size());
   EXPECT_EQ(postMslBindings({}).size(), 1u);
   EXPECT_EQ(postMslBindings({ToneCurve::Aces, false, true, true}).size(), 3u);
+}
+
+// Bloom off is compiled out (no bloom sampler, chunk or block); on, the chain's image and the block
+// sit at shader_abi.h's bindings, and the composite runs before the tone curve.
+TEST(PostDomain, BloomIsCompiledOutWhenOffAndBoundFromTheAbiWhenOn) {
+  PostEffects bloomed;
+  bloomed.bloom = true;
+  const PostShaders off = build({}), b = build(bloomed);
+  EXPECT_EQ(postVariantKey(b.effects), "aces+bloom");
+  for (const PostStage* stage : {&off.sampledFragment, &off.fetchFragment, &off.upscaledFragment}) {
+    EXPECT_FALSE(contains(stage->glslEs, "sampler2D facet_bloom"));
+    EXPECT_FALSE(contains(stage->glslEs, "vec3 bloom_composite("));
+    EXPECT_FALSE(contains(stage->glslEs, "#define FACET_POST_BLOOM"));
+    EXPECT_FALSE(contains(disassembleSpirv(stage->spirv), "facet_bloom"));
+    EXPECT_FALSE(contains(stage->msl, "facet_bloom"));
+  }
+  for (const PostStage* stage : {&b.sampledFragment, &b.upscaledFragment}) {
+    EXPECT_TRUE(contains(stage->glslEs, "uniform mediump sampler2D facet_bloom;"));
+    EXPECT_TRUE(contains(stage->glslEs, "layout(std140) uniform PostUniforms"));
+    EXPECT_TRUE(contains(disassembleSpirv(stage->spirv), "OpDecorate %facet_bloom Binding 2"))
+        << disassembleSpirv(stage->spirv);
+    EXPECT_TRUE(contains(stage->msl, "facet_bloom [[texture(2)]]")) << stage->msl;
+    const size_t composite = stage->glslEs.find("hdr = bloom_composite(");
+    ASSERT_NE(composite, std::string::npos);
+    EXPECT_LT(composite, stage->glslEs.find("tonemap_aces_fitted(hdr)"));
+  }
+  EXPECT_EQ(postMslBindings(bloomed).size(), 3u);
+  BloomStages chain;
+  std::string error;
+  ASSERT_TRUE(buildBloomShaders(&chain, &error)) << error;
+  EXPECT_FALSE(contains(chain.downsample.glslEs, "uniform PostUniforms"));
+  EXPECT_TRUE(contains(chain.downsampleThreshold.glslEs, "layout(std140) uniform PostUniforms"));
+  EXPECT_TRUE(contains(chain.upsample.glslEs, "bloom_tent9(bloomSource"));
+  EXPECT_TRUE(contains(chain.vertex.glslEs, "out highp vec2 bloomUv;"));
 }

@@ -87,6 +87,35 @@ TEST(FacetView, FxaaReachesTheBackendsAndTheFrameGraph) {
   EXPECT_NE(r.out.find("total: loaded 0 B, stored 524288 B, sampled 262144 B per frame"), std::string::npos) << r.out;
 }
 
+// --bloom reaches both backends and the frame graph: the path is the separate one, HDR (256 × 256
+// at 8 bytes) is stored and sampled twice, and the chain of 3 levels (128², 64², 32² at 8 bytes) is
+// stored after each downsample, loaded and stored again by the upsamples of the two finer levels;
+// settings out of range and levels without --bloom are usage errors (exit 2).
+TEST(FacetView, BloomReachesTheBackendsAndTheFrameGraph) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-bloom-out");
+  auto r = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+               " --out " + out +
+               " --backend both --validation --bloom 0.5 --bloom-levels 3 --bloom-threshold 1 --stats --frames 1 "
+               "--warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  for (const char* api : {"vulkan", "gl"}) {
+    EXPECT_NE(r.out.find(std::string(api) + ": separate path, rgba16f HDR, frame graph at 256x256"), std::string::npos)
+        << r.out;
+  }
+  EXPECT_NE(r.out.find("), bloom of 3 levels:\nrender pass 0: forward\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("render pass 5: bloom_up0\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total: loaded 163840 B, stored 1122304 B, sampled 1384448 B per frame"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(" bloom "), std::string::npos) << "Vulkan times the chain: " << r.out;
+  for (const char* bad : {"--bloom 2", "--bloom 0.5 --bloom-levels 13", "--bloom-levels 3", "--bloom nan"}) {
+    auto u = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+                 " --out " + out + " --backend vulkan " + bad);
+    EXPECT_EQ(u.exitCode, 2) << bad << ": " << u.err;
+    EXPECT_NE(u.err.find("facet-view: error: "), std::string::npos) << bad << ": " << u.err;
+  }
+}
+
 // --render-scale 0.5 reaches both backends and the frame graph: the merged path becomes the
 // separate one, HDR (128 × 128 at 8 bytes) is stored and sampled beside the 256 × 256 LDR; a
 // scale outside 0.5..1, or NaN, is a usage error (exit 2).

@@ -141,6 +141,73 @@ TEST(FrameGraph, FxaaStoresAndSamplesTheToneMappedImageAndNothingWhenOff) {
   }
 }
 
+// Off, nothing of bloom exists and the merged path stores only the LDR image (HDR and depth
+// transient). On, HDR is stored and sampled by the chain's first downsample and by the post pass
+// (the path is the separate one), and each level is stored after its downsample, loaded and stored
+// again by its upsample (all but the coarsest) and sampled by the next pass.
+TEST(FrameGraph, BloomStoresTheHdrImageAndTheChainAndNothingWhenOff) {
+  const ForwardPostGraph off = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
+  const CompiledGraph c0 = compileOrFail(off.graph);
+  EXPECT_TRUE(off.bloom.empty());
+  ASSERT_EQ(c0.renderPasses.size(), 1u);
+  EXPECT_EQ(c0.storedBytes(), kPixels * 4);
+  EXPECT_EQ(c0.traffic[off.ldr].storedBytes, kPixels * 4);
+  EXPECT_EQ(c0.loadedBytes(), 0u);
+  EXPECT_EQ(c0.sampledBytes(), 0u);
+  EXPECT_TRUE(c0.traffic[off.hdr].transient);
+  EXPECT_TRUE(c0.traffic[off.depth].transient);
+
+  const int levels = 5;
+  const ForwardPostGraph on =
+      buildForwardPostGraph(kW, kH, PostPath::Merged, false, HdrFormat::Rgba16Float, 1, false, 1.0, levels);
+  const CompiledGraph c1 = compileOrFail(on.graph);
+  const std::vector<ImageSize> sizes = bloomLevelSizes(kW, kH, levels);
+  ASSERT_EQ(on.bloom.size(), size_t(levels));
+  ASSERT_EQ(on.bloomUpPasses.size(), size_t(levels - 1));
+  // forward, the downsamples, the upsamples, post: none merges (each samples the whole image before).
+  EXPECT_EQ(c1.renderPasses.size(), size_t(2 * levels + 1)) << describe(on.graph, c1);
+  EXPECT_FALSE(c1.traffic[on.hdr].transient);
+  EXPECT_EQ(c1.traffic[on.hdr].storedBytes, kPixels * 8);
+  EXPECT_EQ(c1.traffic[on.hdr].sampledBytes, 2 * kPixels * 8);  // the first downsample and the post pass
+  uint64_t chainStored = 0, chainLoaded = 0, chainSampled = 0;
+  for (int i = 0; i < levels; ++i) {
+    const uint64_t bytes = uint64_t(sizes[size_t(i)].width) * sizes[size_t(i)].height * 8;
+    const ResourceTraffic& t = c1.traffic[on.bloom[size_t(i)]];
+    const bool blended = i + 1 < levels;  // every level but the coarsest gets an upsample
+    EXPECT_EQ(t.storedBytes, bytes * (blended ? 2 : 1)) << i;
+    EXPECT_EQ(t.loadedBytes, blended ? bytes : 0) << i;
+    // Sampled by the next downsample and by the finer level's upsample; level 0 by the post pass.
+    EXPECT_EQ(t.sampledBytes, bytes * ((i + 1 < levels ? 1 : 0) + 1)) << i;
+    chainStored += t.storedBytes;
+    chainLoaded += t.loadedBytes;
+    chainSampled += t.sampledBytes;
+  }
+  EXPECT_EQ(c1.storedBytes(), kPixels * 4 + kPixels * 8 + chainStored);
+  EXPECT_EQ(c1.loadedBytes(), chainLoaded);
+  EXPECT_EQ(c1.sampledBytes(), 2 * kPixels * 8 + chainSampled);
+  EXPECT_EQ(sizes[0].width, (kW + 1) / 2);
+  EXPECT_NE(describe(on.graph, c1).find("bloom_up0"), std::string::npos);
+}
+
+TEST(FrameGraph, BloomLevelsStopAtTheFirstImagesMipCount) {
+  // 317 × 199: image 0 is 159 × 100, then 80 × 50, 40 × 25, 20 × 13, 10 × 7, 5 × 4, 3 × 2, 2 × 1, 1 × 1.
+  const std::vector<ImageSize> odd = bloomLevelSizes(317, 199, 12);
+  ASSERT_EQ(odd.size(), 9u);
+  EXPECT_EQ(odd[0].width, 159u);
+  EXPECT_EQ(odd[0].height, 100u);
+  EXPECT_EQ(odd[3].width, 20u);
+  EXPECT_EQ(odd[3].height, 13u);
+  EXPECT_EQ(odd.back().width, 1u);
+  EXPECT_EQ(odd.back().height, 1u);
+  EXPECT_EQ(bloomLevelSizes(317, 199, 4).size(), 4u);
+  EXPECT_EQ(bloomLevelSizes(1, 1, 6).size(), 1u);
+  EXPECT_EQ(bloomLevelSizes(5, 3, 6).size(), 3u);  // 3 × 2, 2 × 1, 1 × 1
+  const ForwardPostGraph tiny =
+      buildForwardPostGraph(5, 3, PostPath::Separate, false, HdrFormat::Rgba16Float, 1, false, 1.0, 6);
+  EXPECT_EQ(tiny.bloom.size(), 3u);
+  compileOrFail(tiny.graph);
+}
+
 TEST(FrameGraph, ShadowMapIsStoredAndDoesNotMerge) {
   FrameGraph graph;
   const ResourceId shadow = graph.addResource({"shadow", 2048, 2048, 4, true, false});

@@ -119,18 +119,20 @@ class GlAppTargetTest : public ::testing::Test {
 
   // The backend the app embeds, with the test's GL table current afterwards.
   std::unique_ptr<GlRenderer> embedded(PostPath path, uint32_t msaaSamples = 1, bool fxaa = false,
-                                       double renderScale = 1.0) {
+                                       double renderScale = 1.0, bool bloom = false) {
     GlOptions options;
     options.postPath = path;
     options.msaaSamples = msaaSamples;
     options.fxaa = fxaa;
     options.renderScale = renderScale;
+    options.post.bloom = bloom;
+    options.bloom = {0.3, 5, 0.5};
     options.readBackHdr = false;  // the mobile path, as an app runs it
     std::string error;
     auto renderer = createGlBackend(eglApp(), options, &error);
     EXPECT_NE(renderer, nullptr) << error;
     if (renderer) {
-      EXPECT_EQ(renderer->postPath(), effectivePostPath(path, renderScale))
+      EXPECT_EQ(renderer->postPath(), effectivePostPath(path, renderScale, bloom))
           << "EGL GLES offers GL_EXT_shader_framebuffer_fetch";
     }
     EXPECT_TRUE(appGl_->makeCurrent(&error)) << error;
@@ -219,6 +221,20 @@ TEST_F(GlAppTargetTest, WithARenderScaleTheAppFramebufferGetsTheReadbackImage) {
       SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer"));
       auto renderer = embedded(path, 1, false, 0.5);
       ASSERT_NE(renderer, nullptr);
+      expectOneFrameIsTheReadback(*renderer, image, false);
+    }
+  }
+}
+
+// Bloom: the chain, then the post pass into the app's framebuffer (a texture, a renderbuffer),
+// render()'s image, from either requested path (both run the separate one).
+TEST_F(GlAppTargetTest, WithBloomTheAppFramebufferGetsTheReadbackImage) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    for (Image image : {Image::Texture, Image::Renderbuffer}) {
+      SCOPED_TRACE(std::string(pathName(path)) + (image == Image::Texture ? ", texture" : ", renderbuffer"));
+      auto renderer = embedded(path, 1, false, 1.0, true);
+      ASSERT_NE(renderer, nullptr);
+      EXPECT_EQ(renderer->bloomLevels(), 5);
       expectOneFrameIsTheReadback(*renderer, image, false);
     }
   }

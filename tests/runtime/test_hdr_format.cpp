@@ -78,6 +78,7 @@ TEST(HdrFormat, R11G11B10FRendersEveryExampleSceneWithBoundedError) {
       options.validation = true;
       options.readBackHdr = false;
       options.post = scene->post;
+      options.bloom = scene->bloom;
       options.hdrFormat = format;
       auto backend = createVulkanBackend(options, &error);
       ASSERT_TRUE(backend) << error;
@@ -99,6 +100,7 @@ TEST(HdrFormat, R11G11B10FRendersEveryExampleSceneWithBoundedError) {
       options.context = GlContextKind::EglGles;
       options.postPath = gpuPath;
       options.post = scene->post;
+      options.bloom = scene->bloom;
       options.hdrFormat = HdrFormat::R11G11B10Float;
       auto gl = createGlBackend(options, &error);
       ASSERT_TRUE(gl) << error;

@@ -145,7 +145,7 @@ TEST(PostEffects, AnEffectNotBuiltInIsRefusedAtCreation) {
   EXPECT_FALSE(facet::runtime::createVulkanBackend(vk, &error));
   EXPECT_NE(error.find(
                 "no post variant with tone curve 'filmic' (built in: tone curves aces, neutral, none, each with any of "
-                "colour grading, vignette and dithering)"),
+                "colour grading, vignette, dithering and bloom)"),
             std::string::npos)
       << error;
   facet::runtime::GlOptions gl;

@@ -43,7 +43,7 @@ struct AppFixture {
   std::unique_ptr<VulkanRenderer> renderer;
 
   explicit AppFixture(PostPath path = PostPath::Auto, bool readBackHdr = true, bool stageBufferUploads = false,
-                      uint32_t msaaSamples = 1, bool fxaa = false, double renderScale = 1.0) {
+                      uint32_t msaaSamples = 1, bool fxaa = false, double renderScale = 1.0, bool bloom = false) {
     std::string error;
     if (!app.create(/*validation=*/true, &error)) {
       ADD_FAILURE() << error;
@@ -56,6 +56,8 @@ struct AppFixture {
     options.msaaSamples = msaaSamples;
     options.fxaa = fxaa;
     options.renderScale = renderScale;
+    options.post.bloom = bloom;
+    options.bloom = {0.3, 5, 0.5};
     renderer = createVulkanBackend(app.appDevice(), options, &error);
     EXPECT_NE(renderer, nullptr) << error;
   }
@@ -179,6 +181,22 @@ TEST(VulkanAppImage, WithARenderScaleTheAppsImageIsRenderReadsBack) {
     AppFixture f(path, false, false, 1, false, 0.5);
     ASSERT_NE(f.renderer, nullptr);
     EXPECT_EQ(f.renderer->postPath(), PostPath::Separate);
+    expectAppImagesAreTheReadback(
+        f, {{"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0},
+            {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0}});
+  }
+}
+
+// With bloom the chain runs between the forward and the post pass, which writes the app's image
+// (rendered into, or copied into): the same bytes as render()'s readback, from either requested
+// path (both run the separate one).
+TEST(VulkanAppImage, WithBloomTheAppsImageIsRenderReadsBack) {
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(toString(path));
+    AppFixture f(path, false, false, 1, false, 1.0, true);
+    ASSERT_NE(f.renderer, nullptr);
+    EXPECT_EQ(f.renderer->postPath(), PostPath::Separate);
+    EXPECT_EQ(f.renderer->bloomLevels(), 5);
     expectAppImagesAreTheReadback(
         f, {{"UNORM attachment", VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0},
             {"SRGB copy destination", VK_FORMAT_R8G8B8A8_SRGB, VK_IMAGE_USAGE_TRANSFER_DST_BIT, 0}});

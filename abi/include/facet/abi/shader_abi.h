@@ -133,6 +133,12 @@ inline constexpr uint32_t kColorLutSize = 32;
 // binding kPostUniformsBinding; GL uniform buffer binding point kPostUniformsBinding (clear of the
 // forward blocks' 0..2); Metal [[buffer(kPostUniformsBinding)]].
 inline constexpr uint32_t kPostUniformsBinding = 3;
+// Bloom (post variants with bloom only): the bloom chain's finest level, RGBA16F or the HDR format,
+// a quarter of the output's pixels, sampled bilinearly and clamped at the output pixel's centre;
+// set kPostHdrSet binding kPostBloomBinding (Vulkan), texture unit kPostBloomBinding (GL),
+// [[texture(kPostBloomBinding)]] (Metal).
+inline constexpr uint32_t kPostBloomBinding = 2;
+inline constexpr const char* kPostBloomName = "facet_bloom";
 
 // Per-frame data. Matrices are column-major, OpenGL clip conventions (right-handed world,
 // clip y up, clip z in [-w, w]); the Vulkan backend converts to its own clip space.
@@ -235,8 +241,11 @@ struct PostUniforms {
   // Distances are in units of half the frame's height from its centre (runtime/post_uniforms.h).
   float vignette[4];
   float viewport[4];  // x: 1 / width, y: 1 / height (pixels), z: width / height, w: unused
+  // Bloom (chunks/bloom.glsl): x: intensity in [0, 1], y: threshold (0: none), z: the soft knee's
+  // half width, w: unused. Filled by the backend from its options whatever the frame says.
+  float bloom[4];
 };
-static_assert(sizeof(PostUniforms) == 32, "std140 layout of PostUniforms");
+static_assert(sizeof(PostUniforms) == 48, "std140 layout of PostUniforms");
 
 // ---------------------------------------------------------------------------------------------
 // The interface as data. The compiler prints the shaders' declarations from these tables
@@ -351,10 +360,15 @@ inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR i
 // as `toneMapped` at set kPostHdrSet / binding kPostHdrBinding (GL: that texture unit), bilinear
 // and clamped, and writes colour kPostSeparateLdrLocation.
 inline constexpr std::string_view kFxaaInputName = "toneMapped";
+// The bloom chain's passes (chunks/bloom.glsl) sample the level before as `bloomSource` at set
+// kPostHdrSet / binding kPostHdrBinding (GL: that texture unit), bilinear and clamped; the
+// threshold form reads the PostUniforms block; they write colour kPostSeparateLdrLocation.
+inline constexpr std::string_view kBloomSourceName = "bloomSource";
 // The post pass's block and grading sampler, at the HDR input's set.
 inline constexpr MemberDesc kPostMembers[] = {
     {"mediump vec4", "vignette"},
     {"highp vec4", "viewport"},
+    {"mediump vec4", "bloom"},
 };
 inline constexpr BlockDesc kPostBlock{"PostUniforms",       "post",       kPostHdrSet,
                                       kPostUniformsBinding, kPostMembers, uint32_t(sizeof(PostUniforms))};

@@ -32,6 +32,9 @@ struct PostEffects {
   bool colorGrading = false;
   // chunks/vignette.glsl: darker corners, from the PostUniforms block (shader_abi.h kPostBlock)
   bool vignette = false;
+  // chunks/bloom.glsl: the bloom chain's finest level (PostShaders' bloom passes make it, the
+  // runtime's abi::kPostBloomBinding) composited into HDR before the tone curve, from the block
+  bool bloom = false;
 };
 
 // A stable name of the effects, e.g. "aces", "neutral+dither" or "aces+grading+vignette+dither":
@@ -63,6 +66,18 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
 // variant's full-screen triangle.
 bool buildFxaaShader(PostStage* fragment, std::string* error);
 
+// The bloom chain's passes (chunks/bloom.glsl): their vertex stage (the full-screen triangle with
+// a texture coordinate), the 13-tap downsample, the same with the threshold (the first level when
+// a threshold is set; it reads the PostUniforms block) and the tent upsample. Each samples
+// abi::kBloomSourceName and writes one colour.
+struct BloomStages {
+  PostStage vertex;
+  PostStage downsample;
+  PostStage downsampleThreshold;
+  PostStage upsample;
+};
+bool buildBloomShaders(BloomStages* out, std::string* error);
+
 // Every combination of effects: what the runtime embeds.
 std::vector<PostEffects> everyPostEffects();
 
@@ -72,8 +87,9 @@ std::vector<PostEffects> everyPostEffects();
 std::vector<package::MslBinding> postMslBindings(const PostEffects& effects, bool upscaled = false);
 
 // C++ source defining facet::runtime::postVariants() (runtime/include/facet/runtime/render_backend.h)
-// with these variants' SPIR-V words and GLSL ES texts, and fxaaShader() with the FXAA pass's:
-// how the runtime gets its post passes without linking the compiler.
-std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostStage& fxaa);
+// with these variants' SPIR-V words and GLSL ES texts, fxaaShader() with the FXAA pass's and
+// bloomShaders() with the bloom chain's: how the runtime gets its post passes without linking the
+// compiler.
+std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostStage& fxaa, const BloomStages& bloom);
 
 }  // namespace facet::compiler

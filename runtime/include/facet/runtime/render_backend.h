@@ -178,7 +178,7 @@ std::vector<DrawItem> oneDrawPerInstance(const std::vector<DrawItem>& draws);
 
 // GPU time of one pass of a frame, from the API's timer (Vulkan timestamps, GL timer queries).
 struct PassTime {
-  std::string pass;  // "forward", "post"
+  std::string pass;  // "forward", "bloom" (when on), "post"
   double milliseconds = 0;
 };
 
@@ -193,6 +193,13 @@ struct FrameResult {
   // of each (render_path.h).
   uint32_t hdrWidth = 0;
   uint32_t hdrHeight = 0;
+  // Bloom (PostSettings::bloom) with HDR read back: the chain's level 0 as the post pass samples it
+  // (RGBA float, rows top to bottom, bloomWidth × bloomHeight: half the HDR size rounded up), and
+  // the levels the frame ran (BloomSettings::levels, or fewer for a small frame: bloomLevelSizes).
+  std::vector<float> bloom;
+  uint32_t bloomWidth = 0;
+  uint32_t bloomHeight = 0;
+  uint32_t bloomLevels = 0;
   std::vector<PassTime> gpuTimes;  // per pass, in order; empty when the API cannot time
   // CPU time render() spent on the application's thread issuing the frame: Vulkan, from the call
   // until vkQueueSubmit returned (checks, uploads, descriptor sets, recording, submission); GL,
@@ -232,6 +239,8 @@ class RenderBackend {
   virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
   virtual bool fxaa() const { return false; }         // an FXAA pass follows the post pass
   virtual double renderScale() const { return 1.0; }  // the forward pass's size / the output's
+  // The bloom chain's levels asked for (BloomSettings::levels), 0 when bloom is off.
+  virtual int bloomLevels() const { return 0; }
   // How MSAA samples are kept and resolved, and where transient attachments live, for --stats and
   // tests: e.g. "resolve attachment; transient attachments in device-local memory (no lazily
   // allocated type)". Complete after the first frame (the targets exist then).
@@ -290,6 +299,11 @@ struct VulkanOptions {
   // outside it or on NaN. Below 1 the merged path becomes the separate one: a subpass cannot
   // change resolution, so HDR is stored and sampled (buildForwardPostGraph's renderScale).
   double renderScale = 1.0;
+  // Bloom's parameters, used when post.bloom is on (its post variant composites the chain): the
+  // chain's passes between the forward and the post pass (render_path.h, buildForwardPostGraph's
+  // bloomLevels); HDR is stored and sampled, so the path is the separate one. Creation fails on
+  // settings out of range (bloomSettingsError).
+  BloomSettings bloom;
 };
 inline constexpr uint32_t kMaxFramesInFlight = 8;
 
@@ -328,6 +342,8 @@ struct GlOptions {
   bool fxaa = false;
   // As VulkanOptions::renderScale: below 1, the separate path with a smaller HDR texture.
   double renderScale = 1.0;
+  // As VulkanOptions::bloom: used when post.bloom is on; the separate path.
+  BloomSettings bloom;
 };
 
 // Each returns nullptr and sets *error when the API is unavailable (no device, no driver).
@@ -353,7 +369,7 @@ struct PostShaders {
   const std::vector<uint32_t>& fragmentUpscaledSpirv;
   const std::string& fragmentUpscaledGlslEs;
 };
-// Every post variant the runtime embeds (each tone curve, with and without dithering).
+// Every post variant the runtime embeds (each tone curve, with and without each effect).
 const std::vector<PostShaders>& postVariants();
 // The FXAA pass's fragment stage (chunks/fxaa.glsl; its vertex stage is a post variant's):
 // samples the tone-mapped image (abi::kFxaaInputName) and writes the anti-aliased LDR.
@@ -362,6 +378,14 @@ struct FxaaShader {
   const std::string& fragmentGlslEs;
 };
 const FxaaShader& fxaaShader();
+// The bloom chain's passes (chunks/bloom.glsl, render_path.h): one vertex stage (a full-screen
+// triangle with its texture coordinate) for the 13-tap downsample, the downsample keeping the
+// part above the threshold (the first level, when a threshold is set) and the tent upsample.
+struct BloomShaders {
+  std::vector<uint32_t> vertexSpirv, downsampleSpirv, thresholdSpirv, upsampleSpirv;
+  std::string vertexGlslEs, downsampleGlslEs, thresholdGlslEs, upsampleGlslEs;
+};
+const BloomShaders& bloomShaders();
 // The variant running `settings`, or nullptr with *error listing the embedded ones.
 const PostShaders* findPostShaders(const PostSettings& settings, std::string* error);
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "facet/runtime/frame_graph.h"
 #include "facet/scene/post_settings.h"
@@ -43,6 +44,18 @@ std::string renderScaleError(const char* what, double scale);
 // The forward pass's size for an output of `size` pixels: rounded to nearest, at least 1.
 uint32_t scaledSize(uint32_t size, double scale);
 
+// Bloom's chain (chunks/bloom.glsl): image 0 is half the HDR image's width and height rounded up
+// (a quarter of its pixels), each next one half the one before, rounded up, down to 1 × 1. The
+// sizes of min(levels, the mip count of image 0) images: a frame too small for the levels asked
+// renders fewer (the documented fallback: a scene's levels cannot know every window size).
+struct ImageSize {
+  uint32_t width = 0;
+  uint32_t height = 0;
+};
+std::vector<ImageSize> bloomLevelSizes(uint32_t hdrWidth, uint32_t hdrHeight, int levels);
+// "" for settings in range, else "<what>.intensity must be in 0..1, not 2" and the like.
+std::string bloomSettingsError(const char* what, const BloomSettings& bloom);
+
 struct ForwardPostGraph {
   fg::FrameGraph graph;
   fg::ResourceId hdr = 0;  // RGBA16F or R11G11B10F, one sample: what the post pass reads
@@ -57,19 +70,27 @@ struct ForwardPostGraph {
   uint32_t forwardPass = 0;
   uint32_t postPass = 0;
   uint32_t fxaaPass = UINT32_MAX;  // UINT32_MAX when FXAA is off: no pass, no image
+  // Bloom: the chain's images (bloomLevelSizes), written by a downsample pass each and, all but
+  // the last, loaded and blended into by an upsample pass; the post pass samples bloom[0]. Empty
+  // when bloom is off.
+  std::vector<fg::ResourceId> bloom;
+  std::vector<uint32_t> bloomDownPasses, bloomUpPasses;  // up passes from the coarsest: level n-2 first
 };
 
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
 // which forces it to be stored. samples: the forward pass's MSAA sample count (1, 2 or 4).
 // fxaa: an FXAA pass after the post pass (chunks/fxaa.glsl) writes ldr. renderScale < 1: HDR and
 // depth are scaledSize() of width × height and the post pass samples HDR (a subpass cannot change
-// resolution), so the merged path becomes the separate one.
+// resolution), so the merged path becomes the separate one. bloomLevels > 0: the bloom chain of
+// that many levels (fewer for a small frame, bloomLevelSizes), in the HDR format; its downsample
+// samples the whole HDR image, so HDR is stored and the merged path becomes the separate one.
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
                                        HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1,
-                                       bool fxaa = false, double renderScale = 1.0);
+                                       bool fxaa = false, double renderScale = 1.0, int bloomLevels = 0);
 
-// The path a backend runs: a render scale below 1 turns the merged path into the separate one.
-PostPath effectivePostPath(PostPath requested, double renderScale);
+// The path a backend runs: a render scale below 1, or bloom (its chain samples the whole HDR
+// image, which must be stored anyway), turns the merged path into the separate one.
+PostPath effectivePostPath(PostPath requested, double renderScale, bool bloom = false);
 
 // The MSAA sample counts Facet renders with: 1 (off), 2 and 4. The backends refuse a count the
 // device does not offer for both the HDR colour and the depth format.

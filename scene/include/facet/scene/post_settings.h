@@ -17,6 +17,7 @@ struct PostSettings {
   bool dither = false;             // triangular noise of ±1 step before 8-bit quantisation
   bool colorGrading = false;       // the encoded colour through FrameDesc::colorLut (3D LUT)
   bool vignette = false;           // darker corners, from FrameDesc::postUniforms
+  bool bloom = false;              // the bloom chain (BloomSettings) composited before the tone curve
   bool operator==(const PostSettings&) const = default;
 };
 
@@ -46,6 +47,19 @@ struct VignetteSettings {
   double radius = 0.8;      // distance from the centre where darkening starts (1: the top edge)
   double smoothness = 0.8;  // width of the transition beyond the radius
   double roundness = 1;     // in [0, 1]: 1 a circle on screen, 0 an ellipse fitting the frame
+};
+
+// Bloom (chunks/bloom.glsl has the filters and the composite; render_path.h the chain's images).
+inline constexpr int kMaxBloomLevels = 12;  // the mip count of the quarter-resolution image of 4096 × 4096
+struct BloomSettings {
+  // In [0, 1]: the fraction of each pixel's light (of its part above the threshold) spread over
+  // the chain's blur: hdr + intensity · (bloom − bright(hdr)), which keeps the frame's energy.
+  double intensity = 0.1;
+  // 1..kMaxBloomLevels: images in the chain from a quarter of the HDR image's pixels; each level
+  // doubles the radius. A frame too small for them renders as many as its first image has mips.
+  int levels = 6;
+  // ≥ 0, 0: none. The brightest channel's value from which a pixel blooms (soft knee of t / 2).
+  double threshold = 0;
 };
 
 }  // namespace facet::runtime

@@ -134,6 +134,7 @@ struct Scene {
   ColorGradingSettings grading;
   std::string gradingLut;
   VignetteSettings vignette;
+  BloomSettings bloom;       // read when post.bloom is on
   uint32_t msaaSamples = 1;  // "antialiasing": {"msaa": 1 | 2 | 4}: the forward pass's samples per pixel
   bool fxaa = false;         // "antialiasing": {"fxaa": true}: an FXAA pass after the post pass
   // "renderScale": 0.5..1, the forward pass's size / the output's (render_path.h)

@@ -23,7 +23,7 @@ vec3 srgb_from_linear(vec3 c) {
     vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
     return mix(lo, hi, step(vec3(0.0031308), c));
 }
-// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, grade
+// Post pass fragment stage: read the HDR colour of this pixel, add bloom, tone map, encode sRGB, grade
 // through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
 // when enabled (compiler/post.h PostEffects).
 // Lights were pre-exposed on the CPU, so no exposure multiply happens here.
@@ -56,6 +56,11 @@ vec3 srgb_from_linear(vec3 c) {
 
 void main() {
     vec3 hdr = FACET_POST_HDR();
+#if defined(FACET_POST_BLOOM)
+    // The bloom chain's finest level (half the HDR image's size), bilinear at this pixel's centre.
+    vec3 bloom = texture(facet_bloom, gl_FragCoord.xy * post.viewport.xy).rgb;
+    hdr = bloom_composite(hdr, bloom, post.bloom);  // redistributes energy: see chunks/bloom.glsl
+#endif
 #if defined(FACET_POST_ACES)
     vec3 display = tonemap_aces_fitted(hdr);
 #elif defined(FACET_POST_NEUTRAL)

@@ -12,6 +12,7 @@ uniform mediump sampler3D facet_colorLut;
 layout(std140) uniform PostUniforms {
     mediump vec4 vignette;
     highp vec4 viewport;
+    mediump vec4 bloom;
 } post;
 // Neutral tone curve for display: Khronos PBR Neutral (E. Lalish, Khronos 3D Formats WG, 2024,
 // "Khronos PBR Neutral Tone Mapper"). Unlike a filmic curve it keeps hue and saturation of
@@ -97,7 +98,7 @@ vec3 dither_triangular_8bit(vec3 encoded, highp vec2 pixel) {
     highp float n = interleaved_gradient_noise(pixel) + interleaved_gradient_noise(pixel.yx + vec2(17.0, 31.0)) - 1.0;
     return encoded + vec3(n / 255.0);
 }
-// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, grade
+// Post pass fragment stage: read the HDR colour of this pixel, add bloom, tone map, encode sRGB, grade
 // through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
 // when enabled (compiler/post.h PostEffects).
 // Lights were pre-exposed on the CPU, so no exposure multiply happens here.
@@ -130,6 +131,11 @@ vec3 dither_triangular_8bit(vec3 encoded, highp vec2 pixel) {
 
 void main() {
     vec3 hdr = FACET_POST_HDR();
+#if defined(FACET_POST_BLOOM)
+    // The bloom chain's finest level (half the HDR image's size), bilinear at this pixel's centre.
+    vec3 bloom = texture(facet_bloom, gl_FragCoord.xy * post.viewport.xy).rgb;
+    hdr = bloom_composite(hdr, bloom, post.bloom);  // redistributes energy: see chunks/bloom.glsl
+#endif
 #if defined(FACET_POST_ACES)
     vec3 display = tonemap_aces_fitted(hdr);
 #elif defined(FACET_POST_NEUTRAL)

@@ -12,6 +12,7 @@ uniform mediump sampler3D facet_colorLut;
 layout(std140) uniform PostUniforms {
     mediump vec4 vignette;
     highp vec4 viewport;
+    mediump vec4 bloom;
 } post;
 // sRGB transfer functions, IEC 61966-2-1:1999 (piecewise: linear toe below 0.0031308).
 // fp16: inputs are in [0, 1]; pow of a value in [0.0031308, 1] is well conditioned in mediump
@@ -65,7 +66,7 @@ float vignette_factor(highp vec2 pixel, highp vec4 viewport, vec4 params) {
     float d = length(vec2(p));
     return 1.0 - params.x * smoothstep(params.y, params.y + max(params.z, 1e-3), d);
 }
-// Post pass fragment stage: read the HDR colour of this pixel, tone map, encode sRGB, grade
+// Post pass fragment stage: read the HDR colour of this pixel, add bloom, tone map, encode sRGB, grade
 // through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
 // when enabled (compiler/post.h PostEffects).
 // Lights were pre-exposed on the CPU, so no exposure multiply happens here.
@@ -98,6 +99,11 @@ float vignette_factor(highp vec2 pixel, highp vec4 viewport, vec4 params) {
 
 void main() {
     vec3 hdr = FACET_POST_HDR();
+#if defined(FACET_POST_BLOOM)
+    // The bloom chain's finest level (half the HDR image's size), bilinear at this pixel's centre.
+    vec3 bloom = texture(facet_bloom, gl_FragCoord.xy * post.viewport.xy).rgb;
+    hdr = bloom_composite(hdr, bloom, post.bloom);  // redistributes energy: see chunks/bloom.glsl
+#endif
 #if defined(FACET_POST_ACES)
     vec3 display = tonemap_aces_fitted(hdr);
 #elif defined(FACET_POST_NEUTRAL)

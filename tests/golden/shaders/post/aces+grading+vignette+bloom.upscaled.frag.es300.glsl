@@ -1,0 +1,202 @@
+#version 300 es
+#define FACET_POST_UPSCALE 1
+#define FACET_POST_ACES 1
+#define FACET_POST_COLOR_GRADING 1
+#define FACET_POST_VIGNETTE 1
+#define FACET_POST_BLOOM 1
+precision mediump float;
+precision highp int;
+uniform mediump sampler2D hdrColor;
+layout(location = 0) out vec4 fragColor;
+#define FACET_COLOR_LUT_SIZE 32
+uniform mediump sampler3D facet_colorLut;
+uniform mediump sampler2D facet_bloom;
+layout(std140) uniform PostUniforms {
+    mediump vec4 vignette;
+    highp vec4 viewport;
+    mediump vec4 bloom;
+} post;
+// Bloom: a chain of images, each half the width and height of the one before (rounded up), the
+// first a quarter of the HDR image's pixels, after J. Jimenez, "Next Generation Post Processing in
+// Call of Duty: Advanced Warfare" (SIGGRAPH 2014):
+//   downsample (13 bilinear taps of the finer image around the coarser texel's centre, offsets in
+//   finer texels): the centre e at 0.125, the inner four (±1, ±1) at 0.125 each, the four at
+//   (±2, 0), (0, ±2) at 0.0625, the corners (±2, ±2) at 0.03125. These are the paper's five overlapping
+//   4×4-texel boxes of four bilinear taps each (the inner box 0.5, the four outer ones 0.125), the
+//   taps they share merged; the weights sum to 1, so a flat image keeps its value and the mean is kept up to
+//   the clamped border;
+//   upsample: a 3×3 tent of the coarser image at ±1 of its texels, weights (1 2 1; 2 4 2; 1 2 1)/16
+//   (sum 1). The runtime blends it into the finer level with the fixed-function constant blend,
+//   up_i = w_i · down_i + (1 − w_i) · tent(up_{i+1}) with w_i = 1 / (levels − i), so the finished
+//   finest level is the mean of every level's blur, each of weight 1 / levels: a normalised blur
+//   (the paper adds the levels; dividing by their count is what keeps the energy).
+// No Karis average on the first level: it weights each box by 1 / (1 + luma), which removes energy
+// from bright pixels by design (against fireflies), and no firefly was measured that needs it.
+// Threshold (optional): bloom_bright keeps the part of a colour above a threshold t on its
+// brightest channel b, weight max(b − t, q(b)) / b with the soft knee q(b) = clamp(b − t + k, 0,
+// 2k)² / 4k: a parabola from 0 at b = t − k to b − t at b = t + k, where value and slope meet the
+// line (C¹), so no edge appears in the image where b crosses t. k = t / 2. With t = 0 the weight is
+// 1 (b > 0) and the bright part is the colour itself.
+// Composite (energy-redistributing, not adding): hdr + intensity · (bloom − bright(hdr)). Without a
+// threshold this is mix(hdr, bloom, intensity): the frame's mean radiance is the mean of hdr,
+// since the blur keeps the mean; with one, only the bright part is moved. Every term is ≥ 0
+// (bright ≤ hdr, intensity ≤ 1), so nothing turns negative.
+// Precision: colours are mediump (fp16, up to 65504, as the RGBA16F HDR target); texel offsets and
+// texture coordinates highp (a coordinate of a 4096-texel image needs 2^-13).
+vec3 bloom_downsample13(mediump sampler2D image, highp vec2 uv, highp vec2 texel) {
+    vec3 a = texture(image, uv + texel * vec2(-2.0, -2.0)).rgb;
+    vec3 b = texture(image, uv + texel * vec2(0.0, -2.0)).rgb;
+    vec3 c = texture(image, uv + texel * vec2(2.0, -2.0)).rgb;
+    vec3 d = texture(image, uv + texel * vec2(-2.0, 0.0)).rgb;
+    vec3 e = texture(image, uv).rgb;
+    vec3 f = texture(image, uv + texel * vec2(2.0, 0.0)).rgb;
+    vec3 g = texture(image, uv + texel * vec2(-2.0, 2.0)).rgb;
+    vec3 h = texture(image, uv + texel * vec2(0.0, 2.0)).rgb;
+    vec3 i = texture(image, uv + texel * vec2(2.0, 2.0)).rgb;
+    vec3 j = texture(image, uv + texel * vec2(-1.0, -1.0)).rgb;
+    vec3 k = texture(image, uv + texel * vec2(1.0, -1.0)).rgb;
+    vec3 l = texture(image, uv + texel * vec2(-1.0, 1.0)).rgb;
+    vec3 m = texture(image, uv + texel * vec2(1.0, 1.0)).rgb;
+    return (e + j + k + l + m) * 0.125 + (b + d + f + h) * 0.0625 + (a + c + g + i) * 0.03125;
+}
+
+vec3 bloom_tent9(mediump sampler2D image, highp vec2 uv, highp vec2 texel) {
+    vec3 sum = texture(image, uv).rgb * 4.0;
+    sum += (texture(image, uv + vec2(-texel.x, 0.0)).rgb + texture(image, uv + vec2(texel.x, 0.0)).rgb +
+            texture(image, uv + vec2(0.0, -texel.y)).rgb + texture(image, uv + vec2(0.0, texel.y)).rgb) * 2.0;
+    sum += texture(image, uv - texel).rgb + texture(image, uv + texel).rgb +
+           texture(image, uv + vec2(texel.x, -texel.y)).rgb + texture(image, uv + vec2(-texel.x, texel.y)).rgb;
+    return sum * (1.0 / 16.0);
+}
+
+// threshold: t (0: none); knee: k.
+vec3 bloom_bright(vec3 colour, float threshold, float knee) {
+    float b = max(colour.r, max(colour.g, colour.b));
+    float q = clamp(b - threshold + knee, 0.0, 2.0 * knee);
+    q = q * q / (4.0 * knee + 1e-4);
+    return colour * (max(q, b - threshold) / max(b, 1e-4));
+}
+
+// params: PostUniforms.bloom (x intensity, y threshold, z knee).
+vec3 bloom_composite(vec3 hdr, vec3 bloom, vec4 params) {
+    return hdr + params.x * (bloom - bloom_bright(hdr, params.y, params.z));
+}
+// ACES filmic tone curve, fitted: f(x) = x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14)
+// Source: K. Narkowicz, "ACES Filmic Tone Mapping Curve" (2015), a rational fit of the ACES
+// RRT+ODT; Filament offers it among its mobile tone mappers.
+// fp16: the input is pre-exposed (≈1 at middle grey × 5), so x² stays far below 65504 for any
+// x < 160; the clamp keeps a stray very bright value from overflowing the product in mediump.
+// 160 = sqrt(65504 / 2.51), rounded down.
+vec3 tonemap_aces_fitted(vec3 x) {
+    x = clamp(x, 0.0, 160.0);
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+// sRGB transfer functions, IEC 61966-2-1:1999 (piecewise: linear toe below 0.0031308).
+// fp16: inputs are in [0, 1]; pow of a value in [0.0031308, 1] is well conditioned in mediump
+// and the 8-bit output step (1/255) is far above fp16's 2^-11 relative precision.
+vec3 srgb_from_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    vec3 lo = c * 12.92;
+    vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    return mix(lo, hi, step(vec3(0.0031308), c));
+}
+// Colour grading through a 3D lookup table of N³ texels (N = FACET_COLOR_LUT_SIZE, printed from
+// shader_abi.h kColorLutSize), built on the CPU from the scene's settings (white balance,
+// contrast, saturation, lift/gamma/gain) or loaded from an Adobe/Resolve .cube file
+// (runtime/color_grading.h); HypeHype's mobile post stack grades the same way, one LUT built on
+// the CPU whenever a slider moves (Aaltonen, "Transitioning HypeHype to Physically Based
+// Rendering", SIGGRAPH 2024).
+// Where: after the tone curve and the sRGB encoding, on display-referred values in [0, 1]. A
+// lattice needs a bounded domain, which HDR is not; and the encoded values spread the lattice
+// evenly in perceived lightness (on linear input half of the 32 points would go to the
+// brightest stop and the shadows would get four), which is also how .cube files for SDR
+// displays are authored (sRGB/Rec.709-encoded in and out).
+// Texture: a sampler3D (core in GLES 3.0 and Vulkan), so the lookup is one hardware-trilinear
+// fetch; a 2D strip of N slices would need two bilinear fetches and a blend between slices.
+// Lookup: lattice point i lies at the texel centre (i + 0.5) / N,
+// so [0, 1] maps onto [0.5/N, 1 − 0.5/N]: coord = c·(N − 1)/N + 0.5/N (J. Selan, "Using Lookup
+// Tables to Accelerate Color Transformations", GPU Gems 2, ch. 24, 2005).
+// fp16: the coordinate's error (2^-11 near 1 in mediump) is 1/64 of a texel at N = 32; texels are
+// RGBA16F (2^-11 relative, 1/8 of an 8-bit step). Filtering weights have the GPU's fixed-point
+// subTexelPrecisionBits (8 on lavapipe, queried; Vulkan guarantees 4): with 8, a linear LUT is
+// interpolated to within 1/256 of a lattice step, 1/8000 of the range; with 4, 1/500 (half a step).
+vec3 grade_color_lut(mediump sampler3D lut, vec3 encoded) {
+    const float n = float(FACET_COLOR_LUT_SIZE);
+    vec3 coord = clamp(encoded, 0.0, 1.0) * ((n - 1.0) / n) + 0.5 / n;
+    return texture(lut, coord).rgb;
+}
+// Vignette: the frame darkens towards its corners, applied "on top at the end of the shader" (on
+// the graded, encoded value, before dithering) as in HypeHype's single-pass mobile post stack
+// (Aaltonen, "Transitioning HypeHype to Physically Based Rendering", SIGGRAPH 2024).
+//   p = (2 · pixel / size − 1) · (mix(1, width / height, roundness), 1): the centre is 0, the top
+//       and bottom edges are at |p.y| = 1; roundness 1 makes the falloff a circle on screen,
+//       0 an ellipse fitting the frame (the side edges at |p.x| = 1 too);
+//   factor = 1 − intensity · smoothstep(radius, radius + smoothness, |p|).
+// Multiplying the encoded value scales perceived lightness (sRGB encoding is close to it), so
+// intensity 0.5 reads as "half as light" in the corners whatever their colour.
+// Precision: the pixel and the reciprocal size are highp (pixel coordinates reach 4096, beyond
+// fp16's integers); |p| < 3 and the factor in [0, 1] are fine in mediump.
+// params: x intensity, y radius, z smoothness, w roundness; viewport: x 1/width, y 1/height, z width/height.
+float vignette_factor(highp vec2 pixel, highp vec4 viewport, vec4 params) {
+    highp vec2 p = pixel * viewport.xy * 2.0 - 1.0;
+    p.x *= mix(1.0, viewport.z, params.w);
+    float d = length(vec2(p));
+    return 1.0 - params.x * smoothstep(params.y, params.y + max(params.z, 1e-3), d);
+}
+// Post pass fragment stage: read the HDR colour of this pixel, add bloom, tone map, encode sRGB, grade
+// through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
+// when enabled (compiler/post.h PostEffects).
+// Lights were pre-exposed on the CPU, so no exposure multiply happens here.
+// Assembled by the compiler's post domain (compiler/src/post.cpp), which declares `hdrColor` and
+// `fragColor` from shader_abi.h's attachment constants and defines one way to read the pixel:
+//   FACET_POST_SUBPASS_INPUT       merged path, Vulkan (and MSL [[color(0)]] via SPIRV-Cross):
+//                                  subpassLoad of the input attachment of the same render pass,
+//                                  LDR written to colour slot 1;
+//   FACET_POST_FRAMEBUFFER_FETCH   merged path, GLES: GL_EXT_shader_framebuffer_fetch, HDR is
+//                                  colour output 0 declared inout, LDR is output 1;
+//   FACET_POST_UPSCALE             render scale < 1 (separate path): the HDR texture is
+//                                  smaller than the output; a bilinear sample at the output
+//                                  pixel's centre, uv = gl_FragCoord.xy / output size (from
+//                                  post.viewport), in highp: a mediump uv is 2^-11 relative, a
+//                                  whole texel at 2048 texels;
+//   none of these                  separate path: texelFetch of the stored HDR texture at
+//                                  gl_FragCoord (each API's window origin matches its own
+//                                  texture row 0, so no flip is needed).
+// All forms but the upscaled one read exactly the pixel being shaded, so the paths give the same
+// image.
+#if defined(FACET_POST_SUBPASS_INPUT)
+#define FACET_POST_HDR() subpassLoad(hdrColor).rgb
+#elif defined(FACET_POST_FRAMEBUFFER_FETCH)
+#define FACET_POST_HDR() hdrColor.rgb
+#elif defined(FACET_POST_UPSCALE)
+#define FACET_POST_HDR() texture(hdrColor, gl_FragCoord.xy * post.viewport.xy).rgb
+#else
+#define FACET_POST_HDR() texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb
+#endif
+
+void main() {
+    vec3 hdr = FACET_POST_HDR();
+#if defined(FACET_POST_BLOOM)
+    // The bloom chain's finest level (half the HDR image's size), bilinear at this pixel's centre.
+    vec3 bloom = texture(facet_bloom, gl_FragCoord.xy * post.viewport.xy).rgb;
+    hdr = bloom_composite(hdr, bloom, post.bloom);  // redistributes energy: see chunks/bloom.glsl
+#endif
+#if defined(FACET_POST_ACES)
+    vec3 display = tonemap_aces_fitted(hdr);
+#elif defined(FACET_POST_NEUTRAL)
+    vec3 display = tonemap_khronos_neutral(hdr);
+#else
+    vec3 display = hdr;  // no tone curve: srgb_from_linear clamps to [0, 1]
+#endif
+    vec3 encoded = srgb_from_linear(display);
+#if defined(FACET_POST_COLOR_GRADING)
+    encoded = grade_color_lut(facet_colorLut, encoded);  // display-referred, encoded: see the chunk
+#endif
+#if defined(FACET_POST_VIGNETTE)
+    encoded *= vignette_factor(gl_FragCoord.xy, post.viewport, post.vignette);
+#endif
+#if defined(FACET_POST_DITHER)
+    encoded = dither_triangular_8bit(encoded, gl_FragCoord.xy);  // last, on the value the target quantises
+#endif
+    fragColor = vec4(encoded, 1.0);
+}

@@ -1,0 +1,83 @@
+#version 300 es
+precision mediump float;
+precision highp int;
+uniform mediump sampler2D bloomSource;
+layout(location = 0) out vec4 fragColor;
+// Bloom: a chain of images, each half the width and height of the one before (rounded up), the
+// first a quarter of the HDR image's pixels, after J. Jimenez, "Next Generation Post Processing in
+// Call of Duty: Advanced Warfare" (SIGGRAPH 2014):
+//   downsample (13 bilinear taps of the finer image around the coarser texel's centre, offsets in
+//   finer texels): the centre e at 0.125, the inner four (±1, ±1) at 0.125 each, the four at
+//   (±2, 0), (0, ±2) at 0.0625, the corners (±2, ±2) at 0.03125. These are the paper's five overlapping
+//   4×4-texel boxes of four bilinear taps each (the inner box 0.5, the four outer ones 0.125), the
+//   taps they share merged; the weights sum to 1, so a flat image keeps its value and the mean is kept up to
+//   the clamped border;
+//   upsample: a 3×3 tent of the coarser image at ±1 of its texels, weights (1 2 1; 2 4 2; 1 2 1)/16
+//   (sum 1). The runtime blends it into the finer level with the fixed-function constant blend,
+//   up_i = w_i · down_i + (1 − w_i) · tent(up_{i+1}) with w_i = 1 / (levels − i), so the finished
+//   finest level is the mean of every level's blur, each of weight 1 / levels: a normalised blur
+//   (the paper adds the levels; dividing by their count is what keeps the energy).
+// No Karis average on the first level: it weights each box by 1 / (1 + luma), which removes energy
+// from bright pixels by design (against fireflies), and no firefly was measured that needs it.
+// Threshold (optional): bloom_bright keeps the part of a colour above a threshold t on its
+// brightest channel b, weight max(b − t, q(b)) / b with the soft knee q(b) = clamp(b − t + k, 0,
+// 2k)² / 4k: a parabola from 0 at b = t − k to b − t at b = t + k, where value and slope meet the
+// line (C¹), so no edge appears in the image where b crosses t. k = t / 2. With t = 0 the weight is
+// 1 (b > 0) and the bright part is the colour itself.
+// Composite (energy-redistributing, not adding): hdr + intensity · (bloom − bright(hdr)). Without a
+// threshold this is mix(hdr, bloom, intensity): the frame's mean radiance is the mean of hdr,
+// since the blur keeps the mean; with one, only the bright part is moved. Every term is ≥ 0
+// (bright ≤ hdr, intensity ≤ 1), so nothing turns negative.
+// Precision: colours are mediump (fp16, up to 65504, as the RGBA16F HDR target); texel offsets and
+// texture coordinates highp (a coordinate of a 4096-texel image needs 2^-13).
+vec3 bloom_downsample13(mediump sampler2D image, highp vec2 uv, highp vec2 texel) {
+    vec3 a = texture(image, uv + texel * vec2(-2.0, -2.0)).rgb;
+    vec3 b = texture(image, uv + texel * vec2(0.0, -2.0)).rgb;
+    vec3 c = texture(image, uv + texel * vec2(2.0, -2.0)).rgb;
+    vec3 d = texture(image, uv + texel * vec2(-2.0, 0.0)).rgb;
+    vec3 e = texture(image, uv).rgb;
+    vec3 f = texture(image, uv + texel * vec2(2.0, 0.0)).rgb;
+    vec3 g = texture(image, uv + texel * vec2(-2.0, 2.0)).rgb;
+    vec3 h = texture(image, uv + texel * vec2(0.0, 2.0)).rgb;
+    vec3 i = texture(image, uv + texel * vec2(2.0, 2.0)).rgb;
+    vec3 j = texture(image, uv + texel * vec2(-1.0, -1.0)).rgb;
+    vec3 k = texture(image, uv + texel * vec2(1.0, -1.0)).rgb;
+    vec3 l = texture(image, uv + texel * vec2(-1.0, 1.0)).rgb;
+    vec3 m = texture(image, uv + texel * vec2(1.0, 1.0)).rgb;
+    return (e + j + k + l + m) * 0.125 + (b + d + f + h) * 0.0625 + (a + c + g + i) * 0.03125;
+}
+
+vec3 bloom_tent9(mediump sampler2D image, highp vec2 uv, highp vec2 texel) {
+    vec3 sum = texture(image, uv).rgb * 4.0;
+    sum += (texture(image, uv + vec2(-texel.x, 0.0)).rgb + texture(image, uv + vec2(texel.x, 0.0)).rgb +
+            texture(image, uv + vec2(0.0, -texel.y)).rgb + texture(image, uv + vec2(0.0, texel.y)).rgb) * 2.0;
+    sum += texture(image, uv - texel).rgb + texture(image, uv + texel).rgb +
+           texture(image, uv + vec2(texel.x, -texel.y)).rgb + texture(image, uv + vec2(-texel.x, texel.y)).rgb;
+    return sum * (1.0 / 16.0);
+}
+
+// threshold: t (0: none); knee: k.
+vec3 bloom_bright(vec3 colour, float threshold, float knee) {
+    float b = max(colour.r, max(colour.g, colour.b));
+    float q = clamp(b - threshold + knee, 0.0, 2.0 * knee);
+    q = q * q / (4.0 * knee + 1e-4);
+    return colour * (max(q, b - threshold) / max(b, 1e-4));
+}
+
+// params: PostUniforms.bloom (x intensity, y threshold, z knee).
+vec3 bloom_composite(vec3 hdr, vec3 bloom, vec4 params) {
+    return hdr + params.x * (bloom - bloom_bright(hdr, params.y, params.z));
+}
+// Bloom upsample pass (chunks/bloom.glsl): the coarser level `bloomSource` through the 3×3 tent,
+// written over the finer level with the constant blend the runtime sets (weight 1 / (levels − i)
+// for the finer level's own blur). Assembled by the compiler's post domain (compiler/src/post.cpp).
+#ifdef FACET_VULKAN
+layout(location = 0) in highp vec2 bloomUv;
+#else
+in highp vec2 bloomUv;
+#endif
+
+void main() {
+    highp vec2 texel = 1.0 / vec2(textureSize(bloomSource, 0));
+    fragColor = vec4(bloom_tent9(bloomSource, bloomUv, texel), 1.0);
+}

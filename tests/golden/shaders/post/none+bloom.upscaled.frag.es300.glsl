@@ -1,0 +1,144 @@
+#version 300 es
+#define FACET_POST_UPSCALE 1
+#define FACET_POST_BLOOM 1
+precision mediump float;
+precision highp int;
+uniform mediump sampler2D hdrColor;
+layout(location = 0) out vec4 fragColor;
+uniform mediump sampler2D facet_bloom;
+layout(std140) uniform PostUniforms {
+    mediump vec4 vignette;
+    highp vec4 viewport;
+    mediump vec4 bloom;
+} post;
+// Bloom: a chain of images, each half the width and height of the one before (rounded up), the
+// first a quarter of the HDR image's pixels, after J. Jimenez, "Next Generation Post Processing in
+// Call of Duty: Advanced Warfare" (SIGGRAPH 2014):
+//   downsample (13 bilinear taps of the finer image around the coarser texel's centre, offsets in
+//   finer texels): the centre e at 0.125, the inner four (±1, ±1) at 0.125 each, the four at
+//   (±2, 0), (0, ±2) at 0.0625, the corners (±2, ±2) at 0.03125. These are the paper's five overlapping
+//   4×4-texel boxes of four bilinear taps each (the inner box 0.5, the four outer ones 0.125), the
+//   taps they share merged; the weights sum to 1, so a flat image keeps its value and the mean is kept up to
+//   the clamped border;
+//   upsample: a 3×3 tent of the coarser image at ±1 of its texels, weights (1 2 1; 2 4 2; 1 2 1)/16
+//   (sum 1). The runtime blends it into the finer level with the fixed-function constant blend,
+//   up_i = w_i · down_i + (1 − w_i) · tent(up_{i+1}) with w_i = 1 / (levels − i), so the finished
+//   finest level is the mean of every level's blur, each of weight 1 / levels: a normalised blur
+//   (the paper adds the levels; dividing by their count is what keeps the energy).
+// No Karis average on the first level: it weights each box by 1 / (1 + luma), which removes energy
+// from bright pixels by design (against fireflies), and no firefly was measured that needs it.
+// Threshold (optional): bloom_bright keeps the part of a colour above a threshold t on its
+// brightest channel b, weight max(b − t, q(b)) / b with the soft knee q(b) = clamp(b − t + k, 0,
+// 2k)² / 4k: a parabola from 0 at b = t − k to b − t at b = t + k, where value and slope meet the
+// line (C¹), so no edge appears in the image where b crosses t. k = t / 2. With t = 0 the weight is
+// 1 (b > 0) and the bright part is the colour itself.
+// Composite (energy-redistributing, not adding): hdr + intensity · (bloom − bright(hdr)). Without a
+// threshold this is mix(hdr, bloom, intensity): the frame's mean radiance is the mean of hdr,
+// since the blur keeps the mean; with one, only the bright part is moved. Every term is ≥ 0
+// (bright ≤ hdr, intensity ≤ 1), so nothing turns negative.
+// Precision: colours are mediump (fp16, up to 65504, as the RGBA16F HDR target); texel offsets and
+// texture coordinates highp (a coordinate of a 4096-texel image needs 2^-13).
+vec3 bloom_downsample13(mediump sampler2D image, highp vec2 uv, highp vec2 texel) {
+    vec3 a = texture(image, uv + texel * vec2(-2.0, -2.0)).rgb;
+    vec3 b = texture(image, uv + texel * vec2(0.0, -2.0)).rgb;
+    vec3 c = texture(image, uv + texel * vec2(2.0, -2.0)).rgb;
+    vec3 d = texture(image, uv + texel * vec2(-2.0, 0.0)).rgb;
+    vec3 e = texture(image, uv).rgb;
+    vec3 f = texture(image, uv + texel * vec2(2.0, 0.0)).rgb;
+    vec3 g = texture(image, uv + texel * vec2(-2.0, 2.0)).rgb;
+    vec3 h = texture(image, uv + texel * vec2(0.0, 2.0)).rgb;
+    vec3 i = texture(image, uv + texel * vec2(2.0, 2.0)).rgb;
+    vec3 j = texture(image, uv + texel * vec2(-1.0, -1.0)).rgb;
+    vec3 k = texture(image, uv + texel * vec2(1.0, -1.0)).rgb;
+    vec3 l = texture(image, uv + texel * vec2(-1.0, 1.0)).rgb;
+    vec3 m = texture(image, uv + texel * vec2(1.0, 1.0)).rgb;
+    return (e + j + k + l + m) * 0.125 + (b + d + f + h) * 0.0625 + (a + c + g + i) * 0.03125;
+}
+
+vec3 bloom_tent9(mediump sampler2D image, highp vec2 uv, highp vec2 texel) {
+    vec3 sum = texture(image, uv).rgb * 4.0;
+    sum += (texture(image, uv + vec2(-texel.x, 0.0)).rgb + texture(image, uv + vec2(texel.x, 0.0)).rgb +
+            texture(image, uv + vec2(0.0, -texel.y)).rgb + texture(image, uv + vec2(0.0, texel.y)).rgb) * 2.0;
+    sum += texture(image, uv - texel).rgb + texture(image, uv + texel).rgb +
+           texture(image, uv + vec2(texel.x, -texel.y)).rgb + texture(image, uv + vec2(-texel.x, texel.y)).rgb;
+    return sum * (1.0 / 16.0);
+}
+
+// threshold: t (0: none); knee: k.
+vec3 bloom_bright(vec3 colour, float threshold, float knee) {
+    float b = max(colour.r, max(colour.g, colour.b));
+    float q = clamp(b - threshold + knee, 0.0, 2.0 * knee);
+    q = q * q / (4.0 * knee + 1e-4);
+    return colour * (max(q, b - threshold) / max(b, 1e-4));
+}
+
+// params: PostUniforms.bloom (x intensity, y threshold, z knee).
+vec3 bloom_composite(vec3 hdr, vec3 bloom, vec4 params) {
+    return hdr + params.x * (bloom - bloom_bright(hdr, params.y, params.z));
+}
+// sRGB transfer functions, IEC 61966-2-1:1999 (piecewise: linear toe below 0.0031308).
+// fp16: inputs are in [0, 1]; pow of a value in [0.0031308, 1] is well conditioned in mediump
+// and the 8-bit output step (1/255) is far above fp16's 2^-11 relative precision.
+vec3 srgb_from_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    vec3 lo = c * 12.92;
+    vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    return mix(lo, hi, step(vec3(0.0031308), c));
+}
+// Post pass fragment stage: read the HDR colour of this pixel, add bloom, tone map, encode sRGB, grade
+// through a 3D LUT, vignette, dither, for an RGBA8 UNORM target. Each effect is compiled in only
+// when enabled (compiler/post.h PostEffects).
+// Lights were pre-exposed on the CPU, so no exposure multiply happens here.
+// Assembled by the compiler's post domain (compiler/src/post.cpp), which declares `hdrColor` and
+// `fragColor` from shader_abi.h's attachment constants and defines one way to read the pixel:
+//   FACET_POST_SUBPASS_INPUT       merged path, Vulkan (and MSL [[color(0)]] via SPIRV-Cross):
+//                                  subpassLoad of the input attachment of the same render pass,
+//                                  LDR written to colour slot 1;
+//   FACET_POST_FRAMEBUFFER_FETCH   merged path, GLES: GL_EXT_shader_framebuffer_fetch, HDR is
+//                                  colour output 0 declared inout, LDR is output 1;
+//   FACET_POST_UPSCALE             render scale < 1 (separate path): the HDR texture is
+//                                  smaller than the output; a bilinear sample at the output
+//                                  pixel's centre, uv = gl_FragCoord.xy / output size (from
+//                                  post.viewport), in highp: a mediump uv is 2^-11 relative, a
+//                                  whole texel at 2048 texels;
+//   none of these                  separate path: texelFetch of the stored HDR texture at
+//                                  gl_FragCoord (each API's window origin matches its own
+//                                  texture row 0, so no flip is needed).
+// All forms but the upscaled one read exactly the pixel being shaded, so the paths give the same
+// image.
+#if defined(FACET_POST_SUBPASS_INPUT)
+#define FACET_POST_HDR() subpassLoad(hdrColor).rgb
+#elif defined(FACET_POST_FRAMEBUFFER_FETCH)
+#define FACET_POST_HDR() hdrColor.rgb
+#elif defined(FACET_POST_UPSCALE)
+#define FACET_POST_HDR() texture(hdrColor, gl_FragCoord.xy * post.viewport.xy).rgb
+#else
+#define FACET_POST_HDR() texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb
+#endif
+
+void main() {
+    vec3 hdr = FACET_POST_HDR();
+#if defined(FACET_POST_BLOOM)
+    // The bloom chain's finest level (half the HDR image's size), bilinear at this pixel's centre.
+    vec3 bloom = texture(facet_bloom, gl_FragCoord.xy * post.viewport.xy).rgb;
+    hdr = bloom_composite(hdr, bloom, post.bloom);  // redistributes energy: see chunks/bloom.glsl
+#endif
+#if defined(FACET_POST_ACES)
+    vec3 display = tonemap_aces_fitted(hdr);
+#elif defined(FACET_POST_NEUTRAL)
+    vec3 display = tonemap_khronos_neutral(hdr);
+#else
+    vec3 display = hdr;  // no tone curve: srgb_from_linear clamps to [0, 1]
+#endif
+    vec3 encoded = srgb_from_linear(display);
+#if defined(FACET_POST_COLOR_GRADING)
+    encoded = grade_color_lut(facet_colorLut, encoded);  // display-referred, encoded: see the chunk
+#endif
+#if defined(FACET_POST_VIGNETTE)
+    encoded *= vignette_factor(gl_FragCoord.xy, post.viewport, post.vignette);
+#endif
+#if defined(FACET_POST_DITHER)
+    encoded = dither_triangular_8bit(encoded, gl_FragCoord.xy);  // last, on the value the target quantises
+#endif
+    fragColor = vec4(encoded, 1.0);
+}
