@@ -1,0 +1,60 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    float3 fabric;
+    packed_float3 sheen;
+    float roughness;
+    packed_float3 subsurface;
+    float facet_pad44;
+    packed_float3 facet_diffuseColor;
+    float facet_perceptualRoughness;
+    float facet_alpha;
+};
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    float3 _348 = fast::normalize(in.v_normal);
+    float3 _352 = fast::normalize(in.v_toEye);
+    float _453 = _348.y;
+    float _458 = _348.z;
+    float _463 = _348.x;
+    float3 _615 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _453)) + (frame.sh[2].xyz * _458)) + (frame.sh[3].xyz * _463)) + (((((frame.sh[4].xyz * (_463 * _453)) + (frame.sh[5].xyz * (_453 * _458))) + (frame.sh[6].xyz * fma(3.0 * _458, _458, -1.0))) + (frame.sh[7].xyz * (_463 * _458))) + (frame.sh[8].xyz * fma(_463, _463, -(_453 * _453)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_352, _348), level(params.facet_perceptualRoughness * 4.0)).xyz * (fast::clamp(float3(params.sheen), float3(0.0), float3(1.0)) * facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_348, _352), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0)).z));
+    out.fragColor = float4(_615, 1.0);
+    return out;
+}
+
