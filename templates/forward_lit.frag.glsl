@@ -23,7 +23,7 @@
     defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
 #include "ibl_prefiltered.glsl"
 #endif
-#if defined(FACET_SHADING_CLOTH) && !defined(FACET_IBL_TWO_MIP)
+#if defined(FACET_SHEEN_AMBIENT) && !defined(FACET_IBL_TWO_MIP)
 #include "ibl_prefiltered.glsl"
 #endif
 #if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_SAMPLED)
@@ -53,8 +53,10 @@
 #include "shading_standard.glsl"
 // The cloth model (docs/material-models.md) in place of the standard one's lights and ambient
 // specular; it reads the standard chunk's material terms.
-#if defined(FACET_SHADING_CLOTH)
+#if defined(FACET_SHEEN_LOBE)
 #include "sheen_charlie_neubelt.glsl"
+#endif
+#if defined(FACET_SHADING_CLOTH)
 #include "shading_cloth.glsl"
 #endif
 #if defined(FACET_IBL_SAMPLED)
@@ -151,10 +153,11 @@ void main() {
     // summed in linear (shading_ambient.glsl).
     color = linear_from_shading_space(color);
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
-#if defined(FACET_SHADING_CLOTH)
-    // Before the lights: it sets the sheen's energy correction they use.
-    color = add_light(color, shade_cloth_ambient_specular(material, shading_normal, shading_view));
-#else
+#if defined(FACET_SHEEN_AMBIENT)
+    // The sheen over the fabric lit so far, before the lights: it sets the sheen's energy
+    // correction and the fabric's scale they use.
+    color = cloth_sheen_layer(material, color, shading_normal, shading_view);
+#elif !defined(FACET_SHADING_CLOTH)
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
 #endif
 #if defined(FACET_CLEAR_COAT_LOBE)

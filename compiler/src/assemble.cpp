@@ -238,8 +238,12 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
       s += "#define FACET_MATERIAL_ANISOTROPY_DIRECTION 1\n";
   }
   if (shadesCloth(in)) {
-    s += "// Cloth: Charlie's sheen with Neubelt's visibility, no Fresnel, and its environment from the DFG "
-         "texture's sheen channels (docs/material-models.md).\n#define FACET_SHADING_CLOTH 1\n";
+    const char* forms[] = {"Charlie's D with Neubelt's V per light and its environment",
+                           "its environment only, no lobe per light", "dropped in this tier"};
+    s += "// Cloth: sheen " + std::string(permutations::kSheenModelNames[int(in.tier.sheen)]) + ", " +
+         forms[int(in.tier.sheen)] + " (docs/material-models.md).\n#define FACET_SHADING_CLOTH 1\n";
+    if (in.tier.sheen == permutations::SheenModel::CharlieNeubelt) s += "#define FACET_SHEEN_LOBE 1\n";
+    if (in.tier.sheen != permutations::SheenModel::None) s += "#define FACET_SHEEN_AMBIENT 1\n";
     if (in.material.surface.outputs.count("sheenColor") > 0) s += "#define FACET_MATERIAL_SHEEN_COLOR 1\n";
     if (in.material.surface.outputs.count("subsurfaceColor") > 0) s += "#define FACET_MATERIAL_SUBSURFACE_COLOR 1\n";
   }
@@ -464,8 +468,8 @@ bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading ==
 bool samplesShadowAtlas(const AssemblyInput& in) { return receivesShadow(in); }
 
 bool samplesDfgLut(const AssemblyInput& in) {
-  // A cloth material reads its sheen terms from the table whatever the ambient model.
-  if (shadesCloth(in)) return true;
+  // A cloth material's sheen reads its terms from the table whatever the ambient model.
+  if (shadesCloth(in) && in.tier.sheen != permutations::SheenModel::None) return true;
   return in.material.shading == "lit" && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
                                           in.tier.ambient == permutations::AmbientModel::Sampled);
 }

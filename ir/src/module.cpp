@@ -68,7 +68,8 @@ const TierChoices& tierChoices() {
        {"clear_coat", {"ggx_kelemen", "ambient", "none"}},
        {"anisotropy", {"ggx_smith", "bent_ibl", "none"}},
        {"ao", {"single", "multi_bounce"}},
-       {"specular_occlusion", {"ao", "lagarde"}}},
+       {"specular_occlusion", {"ao", "lagarde"}},
+       {"sheen", {"charlie_neubelt", "ambient", "none"}}},
   };
   return choices;
 }

@@ -115,28 +115,33 @@ vec3 cloth_sheen_color(MaterialInputs material){
 return clamp(material.sheenColor,0.0,1.0);
 }
 float shading_sheen_scale=1.0;
+float shading_sheen_base_scale=1.0;
 vec3 shade_cloth_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
-float alpha=material_alpha(material);
-vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
-float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoLSigned=dot(n,l);
 float NoL=clamp(NoLSigned,0.0,1.0);
+float alpha=material_alpha(material);
+vec3 v=viewHighp;
+vec3 h=half_vector(viewHighp,lightHighp);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoH=clamp(dot(n,h),0.0,1.0);
 vec3 sheen=cloth_sheen_color(material)*(sheen_lobe_times_n_dot_l(alpha,NoV,NoL,NoH)*shading_sheen_scale);
 vec3 diffuseColor=material_diffuse_color(material);
 vec3 diffuse=diffuseColor*(diffuse_lambert()*clamp((NoLSigned+0.5)*(1.0/2.25),0.0,1.0))*clamp(material.subsurfaceColor+NoL,0.0,1.0);
+diffuse*=shading_sheen_base_scale;
 return min((diffuse+sheen)*lightColor,65504.0);
 }
-vec3 shade_cloth_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
+vec3 cloth_sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
 float perceptualRoughness=material_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
+vec3 sheenColor=cloth_sheen_color(material);
+float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
 shading_sheen_scale=sheenTerms.y;
+shading_sheen_base_scale=baseScale;
 vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
-vec3 specular=radiance*(cloth_sheen_color(material)*sheenTerms.x);
-return specular;
+vec3 specular=radiance*(sheenColor*sheenTerms.x);
+return base*baseScale+specular;
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
@@ -177,7 +182,7 @@ MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
-color=add_light(color,shade_cloth_ambient_specular(material,shading_normal,shading_view));
+color=cloth_sheen_layer(material,color,shading_normal,shading_view);
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));
 color=add_light(color,shade_punctual(material,frame.punctualLights[1]));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
