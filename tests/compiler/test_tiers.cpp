@@ -754,7 +754,7 @@ TEST(Tiers, ClothFormsPerTierAndNoClothCodeElsewhere) {
   for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir1"}) {
     SCOPED_TRACE(key);
     const std::string text = esText(*cloth, key, Stage::Fragment);
-    EXPECT_NE(text.find("charlie_distribution"), std::string::npos);
+    EXPECT_NE(text.find("sheen_lobe_times_n_dot_l"), std::string::npos);
     EXPECT_NE(text.find(".ba;"), std::string::npos);  // the sheen's terms from the DFG texture
     // The wrap, (n·l + 0.5) / 1.5², where diffuse is lit per pixel; mid and low light it per vertex.
     const bool pixelDiffuse = std::string(key).starts_with("reference") || std::string(key).starts_with("high");
@@ -767,7 +767,7 @@ TEST(Tiers, ClothFormsPerTierAndNoClothCodeElsewhere) {
   }
   const std::string lobe = esText(*defaults, "high.dir1", Stage::Fragment);
   const std::string env = esText(*ambient, "high.dir1", Stage::Fragment);
-  EXPECT_EQ(env.find("charlie_distribution"), std::string::npos);
+  EXPECT_EQ(env.find("sheen_lobe_times_n_dot_l"), std::string::npos);
   EXPECT_NE(env.find("cloth_sheen_layer"), std::string::npos);
   auto full = costOf(spirvOf(*defaults, "high.dir1", Stage::Fragment)),
        envOnly = costOf(spirvOf(*ambient, "high.dir1", Stage::Fragment)),

@@ -48,24 +48,26 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _548 = normalize(half3(in.v_normal));
-    float3 _552 = fast::normalize(in.v_toEye);
-    half _672 = _548.y;
-    half _677 = _548.z;
-    half _682 = _548.x;
-    half3 _750 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _672)) + (half4(frame.sh[2]).xyz * _677)) + (half4(frame.sh[3]).xyz * _682)) + (((((half4(frame.sh[4]).xyz * (_682 * _672)) + (half4(frame.sh[5]).xyz * (_672 * _677))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _677, _677, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_682 * _677))) + (half4(frame.sh[8]).xyz * fma(_682, _682, half(-float(_672 * _672))))), half3(float3(0.0)));
-    half _790 = max(dot(_548, half3(_552)), half(9.9999997473787516355514526367188e-05));
-    float4 _795 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_790, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _841 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _1147 = half4(_795);
-    half _808 = _1147.z;
-    half _810 = fma(half(-float(max(_841.x, max(_841.y, _841.z)))), _808, half(1.0));
-    float4 _848 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_552), _548)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _875 = dot(_548, half3(frame.lightDirection.xyz));
-    half _877 = clamp(_875, half(0.0), half(1.0));
-    half _891 = clamp(dot(_548, half3(fast::normalize(_552 + frame.lightDirection.xyz))), half(0.0), half(1.0));
-    half3 _928 = ((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_875 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_877), half3(float3(0.0)), half3(float3(1.0)))) * _810) + (_841 * (((((half(2.0) + (half(1.0) / half(params.facet_alpha))) * pow(max(fma(half(-float(_891)), _891, half(1.0)), half(0.0)), half(0.5) / half(params.facet_alpha))) * half(0.15915493667125701904296875)) * (_877 / (half(4.0) * fma(half(-float(_877)), _790, _877 + _790)))) * half4(_795).w))) * half4(frame.lightColor).xyz;
-    out.fragColor = float4(half4(fma(half4(_848).xyz, _841 * _808, (half3(float3(params.facet_diffuseColor)) * _750) * _810) + min(_928, half3(float3(65504.0))), half(1.0)));
+    half3 _540 = normalize(half3(in.v_normal));
+    float3 _544 = fast::normalize(in.v_toEye);
+    half _664 = _540.y;
+    half _669 = _540.z;
+    half _674 = _540.x;
+    half3 _742 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _664)) + (half4(frame.sh[2]).xyz * _669)) + (half4(frame.sh[3]).xyz * _674)) + (((((half4(frame.sh[4]).xyz * (_674 * _664)) + (half4(frame.sh[5]).xyz * (_664 * _669))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _669, _669, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_674 * _669))) + (half4(frame.sh[8]).xyz * fma(_674, _674, half(-float(_664 * _664))))), half3(float3(0.0)));
+    half _782 = max(dot(_540, half3(_544)), half(9.9999997473787516355514526367188e-05));
+    float4 _787 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_782, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _833 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _1138 = half4(_787);
+    half _800 = _1138.z;
+    half _802 = fma(half(-float(max(_833.x, max(_833.y, _833.z)))), _800, half(1.0));
+    float4 _840 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_544), _540)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _867 = dot(_540, half3(frame.lightDirection.xyz));
+    half _869 = clamp(_867, half(0.0), half(1.0));
+    half _883 = clamp(dot(_540, half3(fast::normalize(_544 + frame.lightDirection.xyz))), half(0.0), half(1.0));
+    half _956 = half(8192.0) * fma(half(-float(_869)), _782, _869 + _782);
+    half _960 = half(1.0) / (half(params.facet_alpha) * _956);
+    half3 _922 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_867 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_869), half3(float3(0.0)), half3(float3(1.0)))) * _802) + (_833 * ((((fma(_960, _956, half(2.0)) * pow(max(fma(half(-float(_883)), _883, half(1.0)), half(0.0)), half(0.5) * (_960 * _956))) * half(0.15915493667125701904296875)) * (_869 * (_960 * (half(2048.0) * half(params.facet_alpha))))) * half4(_787).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    out.fragColor = float4(half4(fma(half4(_840).xyz, _833 * _800, (half3(float3(params.facet_diffuseColor)) * _742) * _802) + _922, half(1.0)));
     return out;
 }
 

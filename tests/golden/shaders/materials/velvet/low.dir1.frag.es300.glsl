@@ -85,16 +85,13 @@ return params.facet_alpha;
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
-float charlie_distribution(float alpha,float NoH){
-float invAlpha=1.0/alpha;
-float sin2h=max(1.0-NoH*NoH,0.0);
-return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618);
-}
-float neubelt_visibility_times_n_dot_l(float NoV,float NoL){
-return NoL/(4.0*(NoL+NoV-NoL*NoV));
-}
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
-return charlie_distribution(alpha,NoH)*neubelt_visibility_times_n_dot_l(NoV,NoL);
+float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
+float k=1.0/(alpha*scaledQ);
+float invAlpha=k*scaledQ;
+float visibilityTimesNoL=NoL*(k*(2048.0*alpha));
+float sin2h=max(1.0-NoH*NoH,0.0);
+return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618)*visibilityTimesNoL;
 }
 vec3 cloth_sheen_color(MaterialInputs material){
 return clamp(material.sheenColor,0.0,1.0);
