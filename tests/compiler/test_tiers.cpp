@@ -739,8 +739,8 @@ TEST(Tiers, ClothFormsPerTierAndNoClothCodeElsewhere) {
   auto cloth = facet::test::buildText("material m { shading cloth\n " + params +
                                       " surface { roughness = params.rough\n sheenColor = vec3(0.8)\n "
                                       "subsurfaceColor = vec3(0.3, 0.1, 0.1) } }");
-  auto defaults = facet::test::buildText("material m { shading cloth\n " + params +
-                                         " surface { roughness = params.rough } }");
+  auto defaults =
+      facet::test::buildText("material m { shading cloth\n " + params + " surface { roughness = params.rough } }");
   auto ambient = facet::test::buildText("material m { shading cloth\n tier high { sheen = ambient }\n " + params +
                                         " surface { roughness = params.rough } }");
   auto none = facet::test::buildText("material m { shading cloth\n tier high { sheen = none }\n " + params +
