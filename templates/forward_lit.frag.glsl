@@ -23,6 +23,9 @@
     defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
 #include "ibl_prefiltered.glsl"
 #endif
+#if defined(FACET_SHEEN_AMBIENT) && !defined(FACET_IBL_TWO_MIP)
+#include "ibl_prefiltered.glsl"
+#endif
 #if defined(FACET_IBL_SPLIT_SUM) || defined(FACET_IBL_SAMPLED)
 #include "ibl_split_sum.glsl"
 #endif
@@ -48,6 +51,14 @@
 #include "anisotropy_ggx_smith.glsl"
 #endif
 #include "shading_standard.glsl"
+// The cloth model (docs/material-models.md) in place of the standard one's lights and ambient
+// specular; it reads the standard chunk's material terms.
+#if defined(FACET_SHEEN_LOBE)
+#include "sheen_charlie_neubelt.glsl"
+#endif
+#if defined(FACET_SHADING_CLOTH)
+#include "shading_cloth.glsl"
+#endif
 #if defined(FACET_IBL_SAMPLED)
 #include "ibl_sampled.glsl"
 #endif
@@ -68,7 +79,11 @@ highp vec3 shading_view_highp;
 vec3 shade_punctual(MaterialInputs material, PunctualLightData light) {
     highp vec3 l;
     vec3 illuminance = punctual_light_illuminance(light, v_worldPosition, l);
+#if defined(FACET_SHADING_CLOTH)
+    return shade_cloth_direct(material, shading_normal, shading_view_highp, l, illuminance);
+#else
     return shade_standard_direct(material, shading_normal, shading_view_highp, l, illuminance);
+#endif
 }
 #endif
 
@@ -138,7 +153,13 @@ void main() {
     // summed in linear (shading_ambient.glsl).
     color = linear_from_shading_space(color);
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
+#if defined(FACET_SHEEN_AMBIENT)
+    // The sheen over the fabric lit so far, before the lights: it sets the sheen's energy
+    // correction and the fabric's scale they use.
+    color = cloth_sheen_layer(material, color, shading_normal, shading_view);
+#elif !defined(FACET_SHADING_CLOTH)
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
+#endif
 #if defined(FACET_CLEAR_COAT_LOBE)
     // The ambient base under the coat, and the coat's environment; each light layers its own.
     color = clear_coat_layer(material, color, shading_view);
@@ -147,7 +168,12 @@ void main() {
     // A unit vector by the ABI (shader_abi.h FrameUniforms::lightDirection): the runtime
     // normalizes it once per frame on the CPU instead of every pixel doing so.
     highp vec3 l = frame.lightDirection.xyz;
-#if defined(FACET_SHADOW_CASCADES)
+#if defined(FACET_SHADING_CLOTH) && defined(FACET_SHADOW_CASCADES)
+    color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_highp, l,
+                                                frame.lightColor.rgb * sunVisibility));
+#elif defined(FACET_SHADING_CLOTH)
+    color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
+#elif defined(FACET_SHADOW_CASCADES)
     color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l,
                                                    frame.lightColor.rgb * sunVisibility));
 #else

@@ -71,6 +71,9 @@ bool shadesAnisotropy(const AssemblyInput& in) {
   return writesAnisotropy(in) && in.tier.anisotropy != permutations::AnisotropyModel::None;
 }
 
+// `shading cloth`: a lit material shaded by the cloth model (chunks/shading_cloth.glsl).
+bool shadesCloth(const AssemblyInput& in) { return in.material.shading == "lit" && in.material.cloth; }
+
 // Tangent-space outputs, and anisotropy's direction (the mesh's tangent by default), need the
 // per-pixel tangent frame (normal_mapping.glsl).
 bool needsTangentFrame(const AssemblyInput& in) {
@@ -234,6 +237,16 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     if (shadesAnisotropy(in) && in.material.surface.outputs.count("anisotropyDirection") > 0)
       s += "#define FACET_MATERIAL_ANISOTROPY_DIRECTION 1\n";
   }
+  if (shadesCloth(in)) {
+    const char* forms[] = {"Charlie's D with Neubelt's V per light and its environment",
+                           "its environment only, no lobe per light", "dropped in this tier"};
+    s += "// Cloth: sheen " + std::string(permutations::kSheenModelNames[int(in.tier.sheen)]) + ", " +
+         forms[int(in.tier.sheen)] + " (docs/material-models.md).\n#define FACET_SHADING_CLOTH 1\n";
+    if (in.tier.sheen == permutations::SheenModel::CharlieNeubelt) s += "#define FACET_SHEEN_LOBE 1\n";
+    if (in.tier.sheen != permutations::SheenModel::None) s += "#define FACET_SHEEN_AMBIENT 1\n";
+    if (in.material.surface.outputs.count("sheenColor") > 0) s += "#define FACET_MATERIAL_SHEEN_COLOR 1\n";
+    if (in.material.surface.outputs.count("subsurfaceColor") > 0) s += "#define FACET_MATERIAL_SUBSURFACE_COLOR 1\n";
+  }
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
   if (receivesShadow(in)) {
@@ -335,8 +348,10 @@ std::string materialSection(const AssemblyInput& in) {
       "// Surface outputs; an output the material does not write keeps its default.\nstruct MaterialInputs {\n";
   // An output that exists only with another is a member only where the material writes that one
   // (ir::OutputInfo::presentWith): other materials' shaders stay as they were.
+  // The cloth model's outputs likewise exist only in cloth materials' variants.
   auto member = [&](const ir::OutputInfo& o) {
-    return !o.presentWith || in.material.surface.outputs.count(o.presentWith) > 0;
+    return (!o.presentWith || in.material.surface.outputs.count(o.presentWith) > 0) &&
+           (o.model != ir::OutputModel::Cloth || shadesCloth(in));
   };
   for (const ir::OutputInfo& o : ir::outputs())
     if (member(o)) s += "    " + std::string(ir::glslName(o.type)) + " " + o.name + ";\n";
@@ -551,9 +566,11 @@ bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading ==
 bool samplesShadowAtlas(const AssemblyInput& in) { return receivesShadow(in); }
 
 bool samplesDfgLut(const AssemblyInput& in) {
-  return in.material.shading == "lit" && !in.key.depthOnly &&
-         (in.tier.ambient == permutations::AmbientModel::SplitSum ||
-          in.tier.ambient == permutations::AmbientModel::Sampled);
+  if (in.key.depthOnly) return false;
+  // A cloth material's sheen reads its terms from the table whatever the ambient model.
+  if (shadesCloth(in) && in.tier.sheen != permutations::SheenModel::None) return true;
+  return in.material.shading == "lit" && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
+                                          in.tier.ambient == permutations::AmbientModel::Sampled);
 }
 
 // Every light of a lut tier reads the table (specular_lut_lobe.glsl): the sun and each point or
@@ -561,7 +578,7 @@ bool samplesDfgLut(const AssemblyInput& in) {
 bool samplesSpecularLut(const AssemblyInput& in) {
   bool anisotropicLobe = shadesAnisotropy(in) && in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith;
   return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" && !anisotropicLobe &&
-         (in.key.directionalLight || in.key.pointLights > 0);
+         !shadesCloth(in) && (in.key.directionalLight || in.key.pointLights > 0);
 }
 
 bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::string* error) {

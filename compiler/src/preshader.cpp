@@ -249,7 +249,9 @@ PreshadeLayout planPreshade(const ir::Material& material, const ParamLayout& par
   const bool pureMetal = metallic && material.surface.value(*metallic).op == ir::Op::Constant &&
                          material.surface.value(*metallic).constant[0] >= 1.0;
   layout.diffuseColor = in.baseColor && in.metallic && !pureMetal && reads({"baseColor", "metallic"});
-  layout.f0 = in.baseColor && in.metallic && in.reflectance && reads({"baseColor", "metallic", "reflectance"});
+  // The cloth model reads no f0 (chunks/shading_cloth.glsl).
+  layout.f0 = !material.cloth && in.baseColor && in.metallic && in.reflectance &&
+              reads({"baseColor", "metallic", "reflectance"});
   layout.roughness = in.roughness && reads({"roughness"});
   if (!layout.diffuseColor && !layout.f0 && !layout.roughness) return layout;
   uint32_t offset = params.blockSize;

@@ -397,7 +397,8 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
 
   Evaluation evaluation(material, options, std::move(views), std::move(backend), work.path);
   const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
-  if (options.groundTruthSamples > 0 && material.shading == "lit") {
+  // (The sampled ground truth integrates the standard model's lobes: not the cloth model's.)
+  if (options.groundTruthSamples > 0 && material.shading == "lit" && !material.cloth) {
     report.groundTruthSamples = options.groundTruthSamples;
     if (!evaluation.renderGroundTruth(configs[0], &report.groundTruthConvergence, &report.groundTruthViews, error))
       return std::nullopt;
@@ -442,7 +443,7 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
   markPareto(&report.results);
 
   // The lobes on their own, over the whole BRDF domain (lit materials: unlit ones have no lobe).
-  if (options.brdfSweep && material.shading == "lit") {
+  if (options.brdfSweep && material.shading == "lit" && !material.cloth) {
     GpuEvaluator gpu(options.validation);
     if (!gpu.ready()) {
       error->message = "no Vulkan device for the BRDF-domain sweep: " + gpu.initError();

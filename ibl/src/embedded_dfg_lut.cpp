@@ -13,4 +13,14 @@ const DfgLut& embeddedDfgLut() {
   return lut;
 }
 
+const SheenLut& embeddedSheenLut() {
+  static const SheenLut lut = [] {
+    SheenLut l;
+    l.size = generated::kEmbeddedDfgLutSize;
+    l.albedo.assign(generated::kEmbeddedSheenAlbedo, generated::kEmbeddedSheenAlbedo + size_t(l.size) * size_t(l.size));
+    return l;
+  }();
+  return lut;
+}
+
 }  // namespace facet::ibl

@@ -1,14 +1,14 @@
 // ibl/tools/write_dfg_table.cpp — run at build time: writes the split-sum DFG table
-// (generateDfgLut(kDfgLutSize), ~1 s of one core) as a C++ source file, so the runtime links the
-// table instead of integrating it in every process (0.65 s of CPU each: docs/ibl.md). Floats are
-// written as hexadecimal
-// literals (%a), so the embedded table is bit for bit what the generator returns
+// (generateDfgLut(kDfgLutSize), ~1 s of one core) and the sheen's albedo (generateSheenLut, ~2 s) as a C++ source file,
+// so the runtime links the table instead of integrating it in every process (0.65 s of CPU each: docs/ibl.md). Floats
+// are written as hexadecimal literals (%a), so the embedded table is bit for bit what the generator returns
 // (Dfg.EmbeddedTableIsTheGeneratedOne checks it).
 //
 // Usage: facet_write_dfg_table OUTPUT.cpp
 #include <cstdio>
 
 #include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/sheen_lut.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -27,6 +27,12 @@ int main(int argc, char** argv) {
   std::fprintf(out, "const float kEmbeddedDfgLutTexels[%zu] = {\n", lut.texels.size());
   for (size_t i = 0; i < lut.texels.size(); ++i)
     std::fprintf(out, "%a,%s", double(lut.texels[i]), (i + 1) % 8 == 0 ? "\n" : " ");
+  std::fprintf(out, "};\n\n");
+  // The sheen's albedo at the same texel centres (sheen_lut.h), for the table's B and A channels.
+  const facet::ibl::SheenLut sheen = facet::ibl::generateSheenLut(lut.size);
+  std::fprintf(out, "const float kEmbeddedSheenAlbedo[%zu] = {\n", sheen.albedo.size());
+  for (size_t i = 0; i < sheen.albedo.size(); ++i)
+    std::fprintf(out, "%a,%s", double(sheen.albedo[i]), (i + 1) % 8 == 0 ? "\n" : " ");
   std::fprintf(out, "};\n\n}  // namespace facet::ibl::generated\n");
   return std::fclose(out) == 0 ? 0 : 1;
 }

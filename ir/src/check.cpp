@@ -68,14 +68,16 @@ class Checker {
   // --- header and parameters ---
 
   void checkHeader(const ast::Material& src) {
-    static const std::vector<std::string> shadings = {"lit", "unlit"};
+    static const std::vector<std::string> shadings = {"lit", "unlit", "cloth"};
     static const std::vector<std::string> blendings = {"opaque", "masked", "transparent", "additive"};
-    material_.shading = src.shading;
+    // A cloth material is lit (the same lights, environment and variants); only its model differs.
+    material_.shading = src.shading == "cloth" ? "lit" : src.shading;
+    material_.cloth = src.shading == "cloth";
     material_.blending = src.blending;
     material_.doubleSided = src.doubleSided;
     if (std::find(shadings.begin(), shadings.end(), src.shading) == shadings.end())
       error(src.shadingLoc,
-            "unknown shading model '" + src.shading + "' (lit or unlit)" +
+            "unknown shading model '" + src.shading + "' (lit, unlit or cloth)" +
                 suggestion(closestMatch(src.shading, shadings)),
             "unknown-name");
     if (std::find(blendings.begin(), blendings.end(), src.blending) == blendings.end())
@@ -318,6 +320,17 @@ class Checker {
       }
       if (out->litOnly && material_.shading == "unlit") {
         diags_.warning(s.loc, "output '" + s.name + "' has no effect on an unlit material", "unused-output");
+        continue;
+      }
+      if (out->model == OutputModel::Standard && material_.cloth) {
+        diags_.warning(s.loc, "output '" + s.name + "' has no effect on a cloth material (the standard model's)",
+                       "unused-output");
+        continue;
+      }
+      if (out->model == OutputModel::Cloth && material_.shading == "lit" && !material_.cloth) {
+        diags_.warning(s.loc,
+                       "output '" + s.name + "' has no effect on a lit material (the cloth model's: 'shading cloth')",
+                       "unused-output");
         continue;
       }
       module().outputs[s.name] = *value;

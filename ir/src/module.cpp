@@ -26,24 +26,30 @@ const AttributeInfo* findAttribute(std::string_view name) {
 const std::vector<OutputInfo>& outputs() {
   // Defaults follow Filament's material model: white, dielectric, fully rough, 4 % reflectance.
   static const std::vector<OutputInfo> list = {
-      {"baseColor", Type::Vec3, {1, 1, 1, 0}, false, nullptr},
-      {"alpha", Type::Float, {1, 0, 0, 0}, false, nullptr},
-      {"metallic", Type::Float, {0, 0, 0, 0}, true, nullptr},
-      {"roughness", Type::Float, {1, 0, 0, 0}, true, nullptr},
-      {"reflectance", Type::Float, {0.5, 0, 0, 0}, true, nullptr},
-      {"normal", Type::Vec3, {0, 0, 1, 0}, true, nullptr},  // tangent space: (0, 0, 1) is the interpolated normal
-      {"emissive", Type::Vec3, {0, 0, 0, 0}, false, nullptr},
-      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}, true, nullptr},
+      {"baseColor", Type::Vec3, {1, 1, 1, 0}, false, nullptr, OutputModel::Any},
+      {"alpha", Type::Float, {1, 0, 0, 0}, false, nullptr, OutputModel::Any},
+      {"metallic", Type::Float, {0, 0, 0, 0}, true, nullptr, OutputModel::Standard},
+      {"roughness", Type::Float, {1, 0, 0, 0}, true, nullptr, OutputModel::Any},
+      {"reflectance", Type::Float, {0.5, 0, 0, 0}, true, nullptr, OutputModel::Standard},
+      {"normal", Type::Vec3, {0, 0, 1, 0}, true, nullptr, OutputModel::Any},  // tangent space: (0, 0, 1) is the
+                                                                              // interpolated normal
+      {"emissive", Type::Vec3, {0, 0, 0, 0}, false, nullptr, OutputModel::Any},
+      {"ambientOcclusion", Type::Float, {1, 0, 0, 0}, true, nullptr, OutputModel::Any},
       // The clear coat (Filament's): strength 0..1, its perceptual roughness (Filament's default,
       // a smooth coat) and its tangent-space normal ((0, 0, 1): the interpolated normal, not the
       // base's mapped one).
-      {"clearCoat", Type::Float, {0, 0, 0, 0}, true, "clearCoat"},
-      {"clearCoatRoughness", Type::Float, {0, 0, 0, 0}, true, "clearCoat"},
-      {"clearCoatNormal", Type::Vec3, {0, 0, 1, 0}, true, "clearCoat"},
+      {"clearCoat", Type::Float, {0, 0, 0, 0}, true, "clearCoat", OutputModel::Standard},
+      {"clearCoatRoughness", Type::Float, {0, 0, 0, 0}, true, "clearCoat", OutputModel::Standard},
+      {"clearCoatNormal", Type::Vec3, {0, 0, 1, 0}, true, "clearCoat", OutputModel::Standard},
       // Anisotropy (Filament's): −1..1 (positive stretches the highlight along the direction,
       // negative across it) and its direction in tangent space ((1, 0, 0): the mesh's tangent).
-      {"anisotropy", Type::Float, {0, 0, 0, 0}, true, "anisotropy"},
-      {"anisotropyDirection", Type::Vec3, {1, 0, 0, 0}, true, "anisotropy"},
+      {"anisotropy", Type::Float, {0, 0, 0, 0}, true, "anisotropy", OutputModel::Standard},
+      {"anisotropyDirection", Type::Vec3, {1, 0, 0, 0}, true, "anisotropy", OutputModel::Standard},
+      // The cloth model (`shading cloth`, Filament's): the sheen's colour (without it, √baseColor,
+      // Filament's default: chunks/shading_cloth.glsl) and the colour light takes through the
+      // fabric (wrap diffuse; without it, Lambert's diffuse).
+      {"sheenColor", Type::Vec3, {0, 0, 0, 0}, true, nullptr, OutputModel::Cloth},
+      {"subsurfaceColor", Type::Vec3, {0, 0, 0, 0}, true, nullptr, OutputModel::Cloth},
   };
   return list;
 }
@@ -62,7 +68,8 @@ const TierChoices& tierChoices() {
        {"clear_coat", {"ggx_kelemen", "ambient", "none"}},
        {"anisotropy", {"ggx_smith", "bent_ibl", "none"}},
        {"ao", {"single", "multi_bounce"}},
-       {"specular_occlusion", {"ao", "lagarde"}}},
+       {"specular_occlusion", {"ao", "lagarde"}},
+       {"sheen", {"charlie_neubelt", "ambient", "none"}}},
   };
   return choices;
 }

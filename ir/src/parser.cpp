@@ -118,7 +118,7 @@ class Parser {
   void item(ast::Material& m) {
     if (atKeyword("shading")) {
       advance();
-      const Token& t = expect(Tok::Identifier, "a shading model (lit or unlit)");
+      const Token& t = expect(Tok::Identifier, "a shading model (lit, unlit or cloth)");
       m.shading = t.text;
       m.shadingLoc = t.loc;
     } else if (atKeyword("blending")) {

@@ -110,6 +110,14 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
       }
     }
   }
+  if (axis == "sheen") {
+    for (size_t i = 0; i < std::size(kSheenModelNames); ++i) {
+      if (option == kSheenModelNames[i]) {
+        config->sheen = SheenModel(i);
+        return true;
+      }
+    }
+  }
   return false;
 }
 

@@ -157,16 +157,24 @@ const DfgTable& dfgTable() { return ibl::embeddedDfgLut(); }
 const Texture& dfgTexture() {
   static const Texture texture = [] {
     const DfgTable& table = dfgTable();
+    const ibl::SheenLut& sheen = ibl::embeddedSheenLut();
     Texture t;
     t.width = t.height = uint32_t(table.size);
-    t.format = TextureFormat::Rg16Float;
+    // The sheen in the same texture, not a table of its own: a material with a sheen layer over
+    // the standard model reads all four channels in one fetch (docs/material-models.md, "Cloth").
+    t.format = TextureFormat::Rgba16Float;
     t.linearFilter = true;
     t.repeat = false;
-    std::vector<uint8_t> bytes(table.texels.size() * 2);
-    for (size_t i = 0; i < table.texels.size(); ++i) {
-      uint16_t h = floatToHalf(table.texels[i]);
-      bytes[2 * i] = uint8_t(h & 0xff);
-      bytes[2 * i + 1] = uint8_t(h >> 8);
+    const size_t count = size_t(table.size) * size_t(table.size);
+    std::vector<uint8_t> bytes(count * 8);
+    for (size_t i = 0; i < count; ++i) {
+      const ibl::SheenTerms s = ibl::correctedSheen(sheen.albedo[i]);
+      const float rgba[4] = {table.texels[2 * i], table.texels[2 * i + 1], float(s.albedo), float(s.scale)};
+      for (size_t c = 0; c < 4; ++c) {
+        uint16_t h = floatToHalf(rgba[c]);
+        bytes[8 * i + 2 * c] = uint8_t(h & 0xff);
+        bytes[8 * i + 2 * c + 1] = uint8_t(h >> 8);
+      }
     }
     t.levels.push_back(std::move(bytes));
     return t;

@@ -525,6 +525,32 @@ TEST(Chunks, ClearCoatLobeMatchesReference) {
   }
 }
 
+// The cloth model's sheen lobe D · V · n·l (sheen_charlie_neubelt.glsl) over roughness (the floor
+// and above) × n·v (grazing included) × n·l × n·h, against the double model
+// (standard_model.h sheenLobeTimesNoL). 2e-5 relative: pow(x, 0.5/α) with exponents up to 63
+// amplifies fp32's log2/exp2 rounding (≈ 1e-7) to ≈ 4e-6; the rest are products and one division.
+TEST(Chunks, SheenLobeMatchesReference) {
+  GpuEvalRequest req;
+  req.chunks = chunks({"precision.glsl", "math.glsl", "sheen_charlie_neubelt.glsl"});
+  // in0 = (r, n·v, n·l, n·h); the caller's clamp of r as shading_cloth.glsl's material_alpha.
+  req.body = R"(
+    float r = max(in0.x, MIN_PERCEPTUAL_ROUGHNESS);
+    result.x = sheen_lobe_times_n_dot_l(r * r, max(in0.y, MIN_N_DOT_V), in0.z, in0.w);)";
+  for (double r : {0.0, 0.089, 0.2, 0.5, 1.0})
+    for (double cv : kCosines)
+      for (double cl : {0.0, 0.01, 0.1, 0.5, 1.0})
+        for (double ch : {0.0, 0.05, 0.3, 0.7, 0.99, 1.0})
+          req.in0.push_back(glm::vec4(float(r), float(cv), float(cl), float(ch))), req.in1.push_back({});
+  checkAtBothPrecisions(req, [&](size_t i, const glm::vec4& result) {
+    glm::dvec4 a(req.in0[i]);
+    double ref = reference::sheenLobeTimesNoL(a.x, a.y, a.z, a.w);
+    EXPECT_LE(ref, 5.2);  // the chunk's bound: D ≤ 20.5, V · n·l ≤ 1/4
+    expectClose(result.x, ref, 2e-5, 1e-7,
+                "r=" + std::to_string(a.x) + " NoV=" + std::to_string(a.y) + " NoL=" + std::to_string(a.z) +
+                    " NoH=" + std::to_string(a.w));
+  });
+}
+
 // clear_coat_layer in a white furnace (the environment 1 everywhere): a base that reflects b ≤ 1
 // comes out as mix(b, 1, Fc) ≤ 1, with Fc = Fc(n·v) · strength; and it leaves 1 − Fc for the lights.
 TEST(Chunks, ClearCoatLayerIsAConvexMixAndLeavesOneMinusFcForTheLights) {

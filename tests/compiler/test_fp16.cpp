@@ -948,6 +948,43 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
   expectHighFp16Above50Db("clear coat", material, "coat_case", scenes);
 }
 
+// The cloth model's fp16 hazards (chunks/sheen_charlie_neubelt.glsl: Charlie's pow(sin² θ_h, 0.5/α)
+// at the roughness floor, Neubelt's V as n·v → 0) in `high`, fp16-emulated, against its fp32 form
+// and against `reference`: a sheen of roughness 0 (clamped to 0.089) and 0.5 over a dark fabric,
+// (a) seen from the front under the sun, (b) n·v → 0 over the whole image: the camera skimming a
+// cloth sphere 1000 m in radius, the sun ahead (the sheen's grazing peak, where its uncorrected
+// albedo reaches 3.7 in the table), (c) rims lit from behind (n·v → 0 at every silhouette).
+TEST(Fp16Cloth, HighAbove50DbWhereTheViewGrazes) {
+  const char* material = R"(material cloth_case {
+    shading cloth
+    param roughness: float = 0.0 in [0, 1]
+    surface {
+        baseColor = vec3(0.3, 0.02, 0.05)
+        sheenColor = vec3(1.0, 0.8, 0.8)
+        subsurfaceColor = vec3(0.3, 0.05, 0.05)
+        roughness = params.roughness
+    }
+})";
+  const std::pair<const char*, std::string> scenes[] = {
+      {"cloth_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                            "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+         "objects": [
+           {"material": "cloth_case", "position": [-1.1, 0, 0]},
+           {"material": "cloth_case", "position": [1.1, 0, 0], "params": {"roughness": 0.5}}
+         ]})"},
+      {"cloth_grazing_view", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+         "objects": [{"material": "cloth_case", "position": [0, -1000, 0], "radius": 1000}]})"},
+      {"cloth_backlit_rims", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.3, -0.2, 0.93]") R"(,
+         "objects": [
+           {"material": "cloth_case", "position": [-1.1, 0, 0]},
+           {"material": "cloth_case", "position": [1.1, 0, 0], "params": {"roughness": 0.5}}
+         ]})"},
+  };
+  expectHighFp16Above50Db("cloth", material, "cloth_case", scenes);
+}
+
 // Anisotropy's fp16 hazard (chunks/anisotropy_ggx_smith.glsl: α_t α_b at the roughness floor and
 // anisotropy ±1, and V at grazing views) in `high`, fp16-emulated, against its fp32 form and against
 // `reference`: a metal at roughness 0 (clamped to 0.089: α = 0.0079, α_b = α_min) and anisotropy 1

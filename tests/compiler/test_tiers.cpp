@@ -728,3 +728,53 @@ TEST(Tiers, AnisotropyFormsPerTierAndNoCodeWithoutIt) {
   EXPECT_EQ(esText(*brushed, "high.dir1", Stage::Fragment).find("cross(v_normal"), std::string::npos);
   EXPECT_NE(esText(*directed, "high.dir1", Stage::Fragment).find("cross(v_normal"), std::string::npos);
 }
+
+// The cloth model (docs/material-models.md, "Cloth"): only cloth materials carry its code; each
+// sheen form does what it says (the full lobe per light; the environment alone, with the same
+// reads; nothing, without the table's read); the wrap only with subsurfaceColor, √baseColor only
+// without sheenColor.
+TEST(Tiers, ClothFormsPerTierAndNoClothCodeElsewhere) {
+  const std::string params = "param rough: float = 0.6 in [0, 1]\n";
+  auto plain = facet::test::buildText("material m { " + params + " surface { roughness = params.rough } }");
+  auto cloth = facet::test::buildText("material m { shading cloth\n " + params +
+                                      " surface { roughness = params.rough\n sheenColor = vec3(0.8)\n "
+                                      "subsurfaceColor = vec3(0.3, 0.1, 0.1) } }");
+  auto defaults =
+      facet::test::buildText("material m { shading cloth\n " + params + " surface { roughness = params.rough } }");
+  auto ambient = facet::test::buildText("material m { shading cloth\n tier high { sheen = ambient }\n " + params +
+                                        " surface { roughness = params.rough } }");
+  auto none = facet::test::buildText("material m { shading cloth\n tier high { sheen = none }\n " + params +
+                                     " surface { roughness = params.rough } }");
+  ASSERT_TRUE(plain && cloth && defaults && ambient && none);
+  for (const auto& v : plain->package.variants) {
+    const std::string text = esText(*plain, v.key, Stage::Fragment);
+    EXPECT_EQ(text.find("sheen"), std::string::npos) << v.key;
+    EXPECT_EQ(text.find("cloth"), std::string::npos) << v.key;
+  }
+  for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir1"}) {
+    SCOPED_TRACE(key);
+    const std::string text = esText(*cloth, key, Stage::Fragment);
+    EXPECT_NE(text.find("sheen_lobe_times_n_dot_l"), std::string::npos);
+    EXPECT_NE(text.find(".ba;"), std::string::npos);  // the sheen's terms from the DFG texture
+    // The wrap, (n·l + 0.5) / 1.5², where diffuse is lit per pixel; mid and low light it per vertex.
+    const bool pixelDiffuse = std::string(key).starts_with("reference") || std::string(key).starts_with("high");
+    EXPECT_EQ(text.find("2.25") != std::string::npos, pixelDiffuse);
+    EXPECT_EQ(esText(*defaults, key, Stage::Fragment).find("2.25"), std::string::npos);
+    EXPECT_NE(esText(*defaults, key, Stage::Fragment).find("sqrt(clamp(material.baseColor"), std::string::npos);
+    // Two reads, the environment and the table, in every tier: the sheen's environment replaces
+    // the specular one, and no light reads the `lut` tier's table.
+    EXPECT_EQ(costOf(spirvOf(*cloth, key, Stage::Fragment)).textureSamples, 2u);
+  }
+  const std::string lobe = esText(*defaults, "high.dir1", Stage::Fragment);
+  const std::string env = esText(*ambient, "high.dir1", Stage::Fragment);
+  EXPECT_EQ(env.find("sheen_lobe_times_n_dot_l"), std::string::npos);
+  EXPECT_NE(env.find("cloth_sheen_layer"), std::string::npos);
+  auto full = costOf(spirvOf(*defaults, "high.dir1", Stage::Fragment)),
+       envOnly = costOf(spirvOf(*ambient, "high.dir1", Stage::Fragment)),
+       dropped = costOf(spirvOf(*none, "high.dir1", Stage::Fragment));
+  EXPECT_EQ(envOnly.textureSamples, full.textureSamples);
+  EXPECT_LT(envOnly.aluOps, full.aluOps);
+  EXPECT_EQ(dropped.textureSamples, 0u);  // SH diffuse and the sun: no environment, no table
+  EXPECT_EQ(esText(*none, "high.dir1", Stage::Fragment).find("sheen_lobe"), std::string::npos);
+  EXPECT_NE(lobe.find("sheen_lobe_times_n_dot_l"), std::string::npos);
+}

@@ -13,6 +13,7 @@
 #include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/env_brdf_fits.h"
 #include "facet/ibl/prefilter_environment.h"
+#include "facet/ibl/sheen_lut.h"
 #include "facet/ibl/sphere_quadrature.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include "reference/dfg_quadrature.h"
@@ -569,4 +570,54 @@ TEST(Dfg, EmbeddedTableIsTheGeneratedOne) {
   const DfgLut& embedded = embeddedDfgLut();
   EXPECT_EQ(embedded.size, kDfgLutSize);
   EXPECT_EQ(embedded.texels, shippedLut().texels);
+}
+
+// The sheen's directional albedo (sheen_lut.h). At r = 1 (α = 1) and n·v = 1: D = 3 sin θ_h / (2π),
+// V = 1/4 and θ_h = θ_l / 2, so E = (3/4) ∫₀^{π/2} sin(θ/2) cos θ sin θ dθ = √2/10.
+TEST(Sheen, RoughAlbedoAtNormalIncidenceIsRootTwoOverTen) {
+  EXPECT_NEAR(integrateSheenAlbedo(1.0, 1.0, kSheenLutSteps), std::sqrt(2.0) / 10.0, 3e-5);
+  EXPECT_NEAR(integrateSheenAlbedo(1.0, 1.0, 1024), std::sqrt(2.0) / 10.0, 2e-6);  // converging
+}
+
+TEST(Sheen, AlbedoMatchesAFinerGrid) {
+  for (double NoV : {1e-4, 0.005, 0.05, 0.3, 1.0}) {
+    for (double r : {0.089, 0.2, 0.5, 1.0}) {
+      const double fine = integrateSheenAlbedo(NoV, r, 1024), shipped = integrateSheenAlbedo(NoV, r, kSheenLutSteps);
+      EXPECT_NEAR(shipped, fine, fine > 1.0 ? 4e-3 * fine : 6e-4) << "n·v " << NoV << " r " << r;
+    }
+  }
+}
+
+// Charlie × Neubelt creates light at grazing views of a narrow lobe; the correction (the lobe ÷
+// max(1, E)) bounds the albedo by 1 and leaves every view with n·v ≥ 0.1 as it was. The figures
+// of docs/material-models.md ("Cloth", energy) are printed here.
+TEST(Sheen, AlbedoExceedsOneAtGrazingViewsAndTheCorrectionBoundsIt) {
+  double maxBefore = 0, maxAfter = 0, atNoV = 0, atR = 0, maxAtNormalViews = 0;
+  for (double NoV : {1e-4, 1e-3, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0}) {
+    for (int i = 0; i <= 16; ++i) {
+      const double r = 0.089 + (1.0 - 0.089) * i / 16.0;
+      const double E = integrateSheenAlbedo(NoV, r, kSheenLutSteps);
+      const SheenTerms corrected = correctedSheen(E);
+      EXPECT_NEAR(corrected.albedo, E * corrected.scale, 1e-12);
+      if (E > maxBefore) maxBefore = E, atNoV = NoV, atR = r;
+      maxAfter = std::max(maxAfter, corrected.albedo);
+      if (NoV >= 0.1) maxAtNormalViews = std::max(maxAtNormalViews, E);
+    }
+  }
+  std::printf(
+      "sheen albedo: max %.3f at n.v %g, r %.3f before the correction; max %.3f after; max %.3f "
+      "over n.v >= 0.1\n",
+      maxBefore, atNoV, atR, maxAfter, maxAtNormalViews);
+  EXPECT_GT(maxBefore, 3.5);
+  EXPECT_EQ(atR, 0.089);
+  EXPECT_LE(maxAfter, 1.0);
+  EXPECT_LT(maxAtNormalViews, 1.0);
+}
+
+TEST(Sheen, EmbeddedTableIsTheGeneratedOne) {
+  const SheenLut& embedded = embeddedSheenLut();
+  ASSERT_EQ(embedded.size, kDfgLutSize);
+  EXPECT_EQ(embedded.albedo, generateSheenLut(kDfgLutSize).albedo);
+  // The texel centres of the DFG table (column = n·v, row = r).
+  EXPECT_EQ(embedded.at(5, 40), float(integrateSheenAlbedo(dfgLutNoV(5, 64), dfgLutRoughness(40, 64), kSheenLutSteps)));
 }

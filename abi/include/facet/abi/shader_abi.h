@@ -105,7 +105,7 @@ inline constexpr const char* kSpecularLutName = "facet_specularLut";
 // numbers, so the runtime refuses a package table of any other shape (even one of the same bytes).
 inline constexpr uint32_t kSpecularLutWidth = 128;
 inline constexpr uint32_t kSpecularLutHeight = 64;
-inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RG16F 64×64, one level (docs/ibl.md layout)
+inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RGBA16F 64×64, one level (docs/ibl.md layout)
 inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F cube map, kEnvironmentLevels levels
 // Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so
 // the shaders read lod = roughness × (kEnvironmentLevels − 1) (chunks/ibl_split_sum.glsl).

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "facet/ibl/sheen_lut.h"
+
 namespace facet::reference {
 
 inline constexpr double kPi = 3.14159265358979323846;
@@ -94,6 +96,14 @@ inline double multiBounceAo(double visibility, double albedo) {
 // Lagarde & de Rousiers 2014's specular occlusion: saturate((n·v + V)^(2^(−16α − 1)) − 1 + V).
 inline double specularOcclusionLagarde(double NoV, double visibility, double alpha) {
   return std::clamp(std::pow(NoV + visibility, std::exp2(-16.0 * alpha - 1.0)) - 1.0 + visibility, 0.0, 1.0);
+}
+
+// The cloth model's sheen lobe (chunks/sheen_charlie_neubelt.glsl) times n·l, without its colour
+// and correction: Charlie's D × Neubelt's V (ibl/sheen_lut.h) at α = r², r clamped to 0.089 as the
+// chunk's caller does, n·v clamped to MIN_N_DOT_V.
+inline double sheenLobeTimesNoL(double perceptualRoughness, double NoV, double NoL, double NoH) {
+  const double r = std::clamp(perceptualRoughness, 0.089, 1.0);
+  return ibl::charlieDistribution(r * r, NoH) * ibl::neubeltVisibility(std::max(NoV, 1e-4), NoL) * NoL;
 }
 
 // Outgoing pre-exposed radiance towards v, for one directional light (l towards the light,

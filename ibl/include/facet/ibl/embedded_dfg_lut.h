@@ -8,15 +8,19 @@
 #include <cstddef>
 
 #include "facet/ibl/dfg_lut.h"
+#include "facet/ibl/sheen_lut.h"
 
 namespace facet::ibl {
 
 namespace generated {
 extern const int kEmbeddedDfgLutSize;
 extern const float kEmbeddedDfgLutTexels[];
+extern const float kEmbeddedSheenAlbedo[];
 }  // namespace generated
 
 /// The build-time table, bit for bit generateDfgLut(kDfgLutSize, kDfgLutSamples); made once.
 const DfgLut& embeddedDfgLut();
+/// The build-time sheen albedo, bit for bit generateSheenLut(kDfgLutSize); made once.
+const SheenLut& embeddedSheenLut();
 
 }  // namespace facet::ibl

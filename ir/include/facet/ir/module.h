@@ -63,6 +63,11 @@ struct AttributeInfo {
 const std::vector<AttributeInfo>& attributes();
 const AttributeInfo* findAttribute(std::string_view name);
 
+// Which lit model reads an output: both, the standard (metallic-roughness) one only, or the cloth
+// model only (`shading cloth`, docs/material-models.md). Written where its model is not the
+// material's, it is dropped with an `unused-output` warning.
+enum class OutputModel { Any, Standard, Cloth };
+
 // Surface outputs, their types and the values they take when the program does not write them.
 struct OutputInfo {
   const char* name;
@@ -74,6 +79,8 @@ struct OutputInfo {
   // without that output compiles the shaders it compiled before the output existed. Written
   // without it, it is dropped with a warning. nullptr: always a member.
   const char* presentWith;
+  // A Cloth output is a MaterialInputs member only in cloth materials' variants.
+  OutputModel model;
 };
 const std::vector<OutputInfo>& outputs();
 const OutputInfo* findOutput(std::string_view name);
@@ -144,7 +151,8 @@ const TierChoices& tierChoices();
 // A checked material: what every later stage reads.
 struct Material {
   std::string name;
-  std::string shading;       // "lit" | "unlit"
+  std::string shading;       // "lit" | "unlit" (a cloth material is lit: lights and environment as any other)
+  bool cloth = false;        // `shading cloth`: lit by the cloth model instead of the standard one
   std::string blending;      // opaque | masked | transparent | additive
   double alphaCutoff = 0.5;  // masked: fragments with alpha below it are discarded
   bool doubleSided = false;  // false: back faces are culled

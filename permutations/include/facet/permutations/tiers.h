@@ -83,6 +83,18 @@ static_assert(sizeof kSpecularOcclusionModelNames / sizeof *kSpecularOcclusionMo
                   size_t(SpecularOcclusionModel::Lagarde) + 1,
               "one name per SpecularOcclusionModel, in its order");
 
+// The sheen of cloth materials (`shading cloth`, docs/material-models.md, chunks/shading_cloth.glsl);
+// a material of another model compiles the same shaders whatever this says.
+//   CharlieNeubelt  Charlie's D × Neubelt's V for every light, corrected by 1/max(1, E), and the
+//                   sheen's environment (chunks/sheen_charlie_neubelt.glsl)
+//   Ambient         the sheen's environment only: no lobe per light
+//   None            the sheen dropped from the shader: the fabric's diffuse alone
+enum class SheenModel { CharlieNeubelt, Ambient, None };
+// The material language's names, indexed by SheenModel (`tier low { sheen = ambient }`).
+inline constexpr const char* kSheenModelNames[] = {"charlie_neubelt", "ambient", "none"};
+static_assert(sizeof kSheenModelNames / sizeof *kSheenModelNames == size_t(SheenModel::None) + 1,
+              "one name per SheenModel, in its order");
+
 // How a shadow receiver filters the sun's atlas (chunks/shadow_sun.glsl, docs/shadows.md): a 3×3
 // tent from 4 bilinear compare taps, or one compare tap (bilinear 2×2 where the device filters
 // depth).
@@ -105,6 +117,7 @@ struct TierConfig {
   bool dominantDirection = false;
   AmbientOcclusionModel ambientOcclusion = AmbientOcclusionModel::MultiBounce;
   SpecularOcclusionModel specularOcclusion = SpecularOcclusionModel::Lagarde;
+  SheenModel sheen = SheenModel::CharlieNeubelt;
   bool operator==(const TierConfig&) const = default;
 };
 
@@ -125,7 +138,7 @@ struct TierConfig {
 TierConfig preset(Tier tier);
 
 // Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat" | "anisotropy" | "ao" |
-// "specular_occlusion", option as in the material language). Returns false for names it does not know.
+// "specular_occlusion" | "sheen", option as in the material language). Returns false for names it does not know.
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
 
 // e.g. "ggx_smith, pixel diffuse, linear, mediump, split_sum + sh3"

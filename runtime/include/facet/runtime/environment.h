@@ -53,7 +53,9 @@ Texture environmentTexture(const EnvironmentLighting& lighting);
 // column = n·v, row = roughness, both at (i + 0.5)/64.
 using DfgTable = ibl::DfgLut;
 const DfgTable& dfgTable();
-// The table as RG16F (one level, bilinear, clamp to edge), made once per process.
+// The table as RGBA16F (one level, bilinear, clamp to edge), made once per process: R and G the
+// DFG terms, B and A the sheen's corrected albedo min(E, 1) and lobe scale 1/max(E, 1)
+// (facet::ibl::embeddedSheenLut, sheen_lut.h), which cloth materials read (chunks/shading_cloth.glsl).
 const Texture& dfgTexture();
 
 // An app's frame lit by `lighting`: its SH coefficients into the frame block, its mean radiance

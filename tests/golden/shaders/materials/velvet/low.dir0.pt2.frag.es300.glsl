@@ -1,0 +1,165 @@
+#version 300 es
+precision mediump float;
+precision highp int;
+in highp vec3 v_worldPosition;
+in mediump vec3 v_normal;
+in mediump vec3 v_diffuseLight;
+layout(location=0)out mediump vec4 fragColor;
+struct PunctualLightData{
+highp vec4 positionFalloff;
+highp vec4 colorIntensity;
+highp vec4 direction;
+highp vec4 spotScaleOffset;
+};
+layout(std140)uniform FrameUniforms{
+highp mat4 viewProjection;
+highp vec4 cameraPosition;
+highp vec4 lightDirection;
+highp vec4 lightColor;
+highp vec4 ambient;
+PunctualLightData punctualLights[4];
+highp vec4 sh[9];
+}
+frame;
+layout(std140)uniform MaterialParams{
+mediump vec3 fabric;
+mediump vec3 sheen;
+mediump float roughness;
+mediump vec3 subsurface;
+mediump float facet_pad44;
+mediump vec3 facet_diffuseColor;
+mediump float facet_perceptualRoughness;
+mediump float facet_alpha;
+}
+params;
+uniform mediump sampler2D facet_specularLut;
+uniform mediump samplerCube facet_environment;
+uniform mediump sampler2D facet_dfgLut;
+const float MIN_N_DOT_V=1e-4;
+struct MaterialInputs{
+vec3 baseColor;
+float alpha;
+float metallic;
+float roughness;
+float reflectance;
+vec3 normal;
+vec3 emissive;
+float ambientOcclusion;
+vec3 sheenColor;
+vec3 subsurfaceColor;
+};
+MaterialInputs material_defaults(){
+MaterialInputs m;
+m.baseColor=vec3(1.0);
+m.alpha=1.0;
+m.metallic=0.0;
+m.roughness=1.0;
+m.reflectance=0.5;
+m.normal=vec3(0.0,0.0,1.0);
+m.emissive=vec3(0.0);
+m.ambientOcclusion=1.0;
+m.sheenColor=vec3(0.0);
+m.subsurfaceColor=vec3(0.0);
+return m;
+}
+vec3 shading_normal;
+vec3 shading_view;
+void evaluate_surface(inout MaterialInputs material){
+material.baseColor=params.fabric;
+material.roughness=params.roughness;
+material.sheenColor=params.sheen;
+material.subsurfaceColor=params.subsurface;
+}
+vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
+return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+}
+vec3 material_diffuse_color(MaterialInputs material){
+return params.facet_diffuseColor;
+}
+float material_perceptual_roughness(MaterialInputs material){
+return params.facet_perceptualRoughness;
+}
+float material_alpha(MaterialInputs material){
+return params.facet_alpha;
+}
+vec3 half_vector(vec3 v,vec3 l){
+return normalize(v+l);
+}
+float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
+float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
+float k=1.0/(alpha*scaledQ);
+float invAlpha=k*scaledQ;
+float visibilityTimesNoL=NoL*(k*(2048.0*alpha));
+float sin2h=max(1.0-NoH*NoH,0.0);
+return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618)*visibilityTimesNoL;
+}
+vec3 cloth_sheen_color(MaterialInputs material){
+return clamp(material.sheenColor,0.0,1.0);
+}
+float shading_sheen_scale=1.0;
+float shading_sheen_base_scale=1.0;
+vec3 shade_cloth_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
+vec3 l=lightHighp;
+float NoLSigned=dot(n,l);
+float NoL=clamp(NoLSigned,0.0,1.0);
+float alpha=material_alpha(material);
+vec3 v=viewHighp;
+vec3 h=half_vector(viewHighp,lightHighp);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
+float NoH=clamp(dot(n,h),0.0,1.0);
+vec3 sheen=cloth_sheen_color(material)*(sheen_lobe_times_n_dot_l(alpha,NoV,NoL,NoH)*shading_sheen_scale);
+return min(sheen*lightColor,65504.0);
+}
+vec3 cloth_sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
+float perceptualRoughness=material_perceptual_roughness(material);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
+vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
+vec3 sheenColor=cloth_sheen_color(material);
+float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
+shading_sheen_scale=sheenTerms.y;
+shading_sheen_base_scale=baseScale;
+vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
+vec3 specular=radiance*(sheenColor*sheenTerms.x);
+return base*baseScale+specular;
+}
+vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
+return ambient;
+}
+vec3 add_light(vec3 color,vec3 radiance){
+return color+radiance;
+}
+vec3 linear_from_shading_space(vec3 color){
+return color;
+}
+vec4 blend_output(vec3 color,float alpha){
+return vec4(color,1.0);
+}
+highp vec3 shading_view_highp;
+vec3 punctual_light_illuminance(PunctualLightData light,highp vec3 worldPosition,out highp vec3 l){
+highp vec3 toLight=light.positionFalloff.xyz-worldPosition;
+highp float distanceSquared=dot(toLight,toLight);
+l=toLight*inversesqrt(max(distanceSquared,1e-8));
+highp float ratio=distanceSquared*light.positionFalloff.w;
+float window=clamp(1.0-ratio*ratio,0.0,1.0);
+float attenuation=window*window/max(distanceSquared,1e-4);
+float cone=clamp(dot(-l,light.direction.xyz)*light.spotScaleOffset.x+light.spotScaleOffset.y,0.0,1.0);
+return min(light.colorIntensity.rgb*(attenuation*cone*cone),65504.0);
+}
+vec3 shade_punctual(MaterialInputs material,PunctualLightData light){
+highp vec3 l;
+vec3 illuminance=punctual_light_illuminance(light,v_worldPosition,l);
+return shade_cloth_direct(material,shading_normal,shading_view_highp,l,illuminance);
+}
+void main(){
+shading_normal=normalize(v_normal);
+shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
+shading_view=shading_view_highp;
+MaterialInputs material=material_defaults();
+evaluate_surface(material);
+vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+color=linear_from_shading_space(color);
+color=cloth_sheen_layer(material,color,shading_normal,shading_view);
+color=add_light(color,shade_punctual(material,frame.punctualLights[0]));
+color=add_light(color,shade_punctual(material,frame.punctualLights[1]));
+fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
+}
