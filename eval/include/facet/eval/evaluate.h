@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,9 @@ struct ConfigurationResult {
   // Lit materials: fragment cycles of the sun + IBL variant <tier>.dir1 (no point light), the
   // variant the tiers' cost goals (and the Mali-G57 measurements) refer to, and its ratio to high's.
   double sunIblFragmentCycles = 0;
+  // The cost model's figures of that variant (for unlit materials, of <tier>, their one light
+  // variant): the op counts `matc tune`'s one-number cost weighs (docs/tune.md).
+  compiler::MobileStageCost costFragment, costVertex;
   double sunIblVsHigh = 0;
   double timeVsReference = 0;  // median over the paired renders of this time ÷ reference's (0: not timed)
   // Lit materials: the white furnace — the grid's first view with no sun and no point light in a
@@ -115,6 +119,32 @@ struct EvalReport {
 struct EvalError {
   std::string message;
   std::optional<ir::SourceLoc> loc;  // a build error that traces back to a line of the material
+};
+
+// One evaluation's renderer, views and `reference`'s images, for measuring configurations one at a
+// time (`matc tune`, docs/tune.md); evaluate() is a session over configurations(). start() renders
+// `reference` as shipped (and the ground truth when asked): report().results[0].
+class Session {
+ public:
+  static std::unique_ptr<Session> start(const ir::Material& material, const EvalOptions& options, EvalError* error);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+  // Builds the configuration's cost variant (<tier>.dir1) and fills the cost model's figures
+  // (fragment, vertex, costFragment, costVertex, sunIblFragmentCycles) without rendering. Safe to
+  // call from several threads at once (not with measure()).
+  bool cost(const Configuration& configuration, ConfigurationResult* result, EvalError* error) const;
+  // Builds, costs, renders and scores one configuration against `reference`.
+  bool measure(const Configuration& configuration, ConfigurationResult* result, EvalError* error);
+  // The report's fields known at the start, and reference's result.
+  const EvalReport& report() const { return report_; }
+  std::string timingClock() const;
+
+ private:
+  Session();
+  struct State;
+  std::unique_ptr<State> state_;
+  EvalReport report_;
 };
 
 // Runs the evaluation. Fails on a build error (with the material's line where known), a scene
