@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 #include "facet/compiler/build.h"
@@ -93,7 +94,8 @@ class Evaluation {
     return built && cost(built->package, r, error);
   }
 
-  bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error) {
+  bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error,
+               const MeasureOptions& how = {}) {
     r->configuration = c;
     std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, &r->variantKey, error);
     if (!built) return false;
@@ -106,9 +108,17 @@ class Evaluation {
     // The cost of the variant the (first) view renders, as shipped: an fp16-emulation build's
     // SPIR-V is quantized before spirv-opt and costs what no device runs, so the cost comes from
     // the same configuration built without it.
-    std::optional<compiler::BuildResult> shipped;
-    if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
-    if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
+    if (how.costed) {
+      r->fragment = how.costed->fragment;
+      r->vertex = how.costed->vertex;
+      r->costFragment = how.costed->costFragment;
+      r->costVertex = how.costed->costVertex;
+      r->sunIblFragmentCycles = how.costed->sunIblFragmentCycles;
+    } else {
+      std::optional<compiler::BuildResult> shipped;
+      if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
+      if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
+    }
 
     ErrorAccumulator all, truthError;
     for (size_t vi = 0; vi < views_.size(); ++vi) {
@@ -151,7 +161,12 @@ class Evaluation {
     }
     r->error = all.metrics();
     if (!groundTruth_.empty()) r->groundTruthError = truthError.metrics();
-    return material_.shading != "lit" || furnace(c, packageDir, r, error);
+    if (material_.shading != "lit") return true;
+    if (how.furnaceWanted && !how.furnaceWanted(*r)) {
+      r->furnaceGain = std::numeric_limits<double>::quiet_NaN();
+      return true;
+    }
+    return furnace(c, packageDir, r, error);
   }
 
   // The ground truth (EvalOptions::groundTruthSamples): `reference` as shipped with its ambient
@@ -261,7 +276,10 @@ class Evaluation {
                                              EvalError* error, bool costVariantOnly = false) const {
     compiler::BuildOptions options;
     options.tiers = {c.tier};
-    if (costVariantOnly) options.jobs = 1;
+    if (costVariantOnly) {
+      options.jobs = 1;
+      options.cacheDir = options_.costCacheDir;
+    }
     options.fp16Emulation = fp16Emulation;
     options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
     const permutations::MaterialNeeds needs{material_.shading == "lit"};
@@ -359,7 +377,8 @@ class Evaluation {
 }  // namespace
 
 struct Session::State {
-  TempDir work;  // one package per configuration, removed at the end
+  EvalOptions options;  // the Evaluation keeps a reference: the session owns them
+  TempDir work;         // one package per configuration, removed at the end
   std::optional<Evaluation> evaluation;
 };
 
@@ -408,6 +427,7 @@ std::unique_ptr<Session> Session::start(const ir::Material& material, const Eval
   }
   std::error_code ec;
   session->state_ = std::make_unique<State>();
+  session->state_->options = options;
   fs::path& work = session->state_->work.path;
   work = fs::temp_directory_path(ec) / ("facet-eval-" + std::to_string(getpid()));
   fs::remove_all(work, ec);
@@ -418,7 +438,7 @@ std::unique_ptr<Session> Session::start(const ir::Material& material, const Eval
   }
 
   Evaluation& evaluation =
-      session->state_->evaluation.emplace(material, options, std::move(views), std::move(backend), work);
+      session->state_->evaluation.emplace(material, session->state_->options, std::move(views), std::move(backend), work);
   const Configuration reference = configurations(material, {}, false).at(0);
   if (options.groundTruthSamples > 0 && material.shading == "lit") {
     report.groundTruthSamples = options.groundTruthSamples;
@@ -435,8 +455,8 @@ bool Session::cost(const Configuration& c, ConfigurationResult* r, EvalError* er
   return state_->evaluation->costOnly(c, r, error);
 }
 
-bool Session::measure(const Configuration& c, ConfigurationResult* r, EvalError* error) {
-  return state_->evaluation->measure(c, false, r, error);
+bool Session::measure(const Configuration& c, ConfigurationResult* r, EvalError* error, const MeasureOptions& how) {
+  return state_->evaluation->measure(c, false, r, error, how);
 }
 
 std::string Session::timingClock() const { return state_->evaluation->timingClock(); }

@@ -37,6 +37,9 @@ struct EvalOptions {
   // (AmbientModel::Sampled), and the same at a quarter of the points against it. 0: off.
   int groundTruthSamples = 0;
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
+  // A variant cache (compiler::BuildOptions::cacheDir) for Session::cost()'s builds: `matc tune`
+  // costs every candidate, and a second run finds them there. "": none.
+  std::string costCacheDir;
 };
 
 struct ViewResult {
@@ -121,6 +124,16 @@ struct EvalError {
   std::optional<ir::SourceLoc> loc;  // a build error that traces back to a line of the material
 };
 
+// How Session::measure() may save work.
+struct MeasureOptions {
+  // The configuration's Session::cost() result: the cost model's figures are taken from it
+  // instead of a second build (under fp16 emulation the rendered build is not the costed one).
+  const ConfigurationResult* costed = nullptr;
+  // Called after the views are scored; false: the white furnace is not rendered (furnaceGain NaN),
+  // e.g. for an error no budget would take.
+  std::function<bool(const ConfigurationResult&)> furnaceWanted;
+};
+
 // One evaluation's renderer, views and `reference`'s images, for measuring configurations one at a
 // time (`matc tune`, docs/tune.md); evaluate() is a session over configurations(). start() renders
 // `reference` as shipped (and the ground truth when asked): report().results[0].
@@ -135,7 +148,8 @@ class Session {
   // call from several threads at once (not with measure()).
   bool cost(const Configuration& configuration, ConfigurationResult* result, EvalError* error) const;
   // Builds, costs, renders and scores one configuration against `reference`.
-  bool measure(const Configuration& configuration, ConfigurationResult* result, EvalError* error);
+  bool measure(const Configuration& configuration, ConfigurationResult* result, EvalError* error,
+               const MeasureOptions& how = {});
   // The report's fields known at the start, and reference's result.
   const EvalReport& report() const { return report_; }
   std::string timingClock() const;
