@@ -437,8 +437,8 @@ std::unique_ptr<Session> Session::start(const ir::Material& material, const Eval
     return nullptr;
   }
 
-  Evaluation& evaluation =
-      session->state_->evaluation.emplace(material, session->state_->options, std::move(views), std::move(backend), work);
+  Evaluation& evaluation = session->state_->evaluation.emplace(material, session->state_->options, std::move(views),
+                                                               std::move(backend), work);
   const Configuration reference = configurations(material, {}, false).at(0);
   if (options.groundTruthSamples > 0 && material.shading == "lit") {
     report.groundTruthSamples = options.groundTruthSamples;

@@ -19,7 +19,8 @@ using facet::permutations::TierConfig;
 namespace tune = facet::tune;
 
 facet::ir::Material example(const std::string& name) {
-  facet::ir::SourceFile file{name + ".mat", facet::test::readText(facet::test::examplePath("materials/" + name + ".mat"))};
+  facet::ir::SourceFile file{name + ".mat",
+                             facet::test::readText(facet::test::examplePath("materials/" + name + ".mat"))};
   facet::ir::Diagnostics diags(file);
   auto m = facet::ir::compileSource(file, diags);
   EXPECT_TRUE(m) << diags.format();
@@ -65,7 +66,8 @@ TEST(TuneBudgets, DefaultsProjectFileAndPerMaterialEntries) {
   auto b = tune::parseBudgets("b.json", R"({
     "materials": {"brushed_gold": {"low": {"min_psnr_db": 30}}},
     "tiers": {"mid": {"min_psnr_db": 38, "max_cost": 1.5}},
-    "vertices_per_pixel": 0.25})", &error);
+    "vertices_per_pixel": 0.25})",
+                              &error);
   ASSERT_TRUE(b) << error;
   EXPECT_EQ(b->verticesPerPixel, 0.25);
   EXPECT_EQ(b->forMaterial("red_plastic", Tier::Mid).minPsnrDb, 38);
@@ -76,13 +78,15 @@ TEST(TuneBudgets, DefaultsProjectFileAndPerMaterialEntries) {
 }
 
 TEST(TuneBudgets, BadFilesFailAtTheirJsonPointer) {
-  EXPECT_EQ(budgetError(R"({"tiers": {"ultra": {}}})"), "b.json: error: /tiers/ultra: unknown tier 'ultra' (known: high, mid, low)");
+  EXPECT_EQ(budgetError(R"({"tiers": {"ultra": {}}})"),
+            "b.json: error: /tiers/ultra: unknown tier 'ultra' (known: high, mid, low)");
   EXPECT_EQ(budgetError(R"({"tiers": {"reference": {}}})"),
             "b.json: error: /tiers/reference: unknown tier 'reference' (known: high, mid, low)");
   EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"min_psnr_db": "40"}}})"),
             "b.json: error: /tiers/mid/min_psnr_db: expected a number");
-  EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"min_psnr": 40}}})"),
-            "b.json: error: /tiers/mid/min_psnr: unknown key 'min_psnr' (known: min_psnr_db, max_cost, no_energy_gain)");
+  EXPECT_EQ(
+      budgetError(R"({"tiers": {"mid": {"min_psnr": 40}}})"),
+      "b.json: error: /tiers/mid/min_psnr: unknown key 'min_psnr' (known: min_psnr_db, max_cost, no_energy_gain)");
   EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"max_cost": -1}}})"),
             "b.json: error: /tiers/mid/max_cost: expected a number from 0 to 1e+06");
   EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"no_energy_gain": 1}}})"),
@@ -207,7 +211,8 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
   ASSERT_FALSE(none->tiers[1].chosen);
   ASSERT_TRUE(none->tiers[1].best);
   EXPECT_NE(none->tiers[1].failure.find("tier low: no configuration meets its budget (PSNR ≥ 150.0 dB"),
-            std::string::npos) << none->tiers[1].failure;
+            std::string::npos)
+      << none->tiers[1].failure;
   EXPECT_NE(none->tiers[1].failure.find("the best reached is"), std::string::npos);
   EXPECT_FALSE(tune::choicesOf(*none));  // nothing partial to --write
 }
@@ -229,8 +234,9 @@ TEST(TuneGate, CommittedChoicesPassAndAWorseOneFailsWithItsFigures) {
   auto failing = tune::rescore(m, {{Tier::High, worse}}, o, &error);
   ASSERT_TRUE(failing) << error.message;
   ASSERT_FALSE(failing->tiers[0].chosen);
-  EXPECT_NE(failing->tiers[0].failure.find("tier high: the tuned configuration no longer meets its budget (PSNR ≥ 50.0 dB"),
-            std::string::npos)
+  EXPECT_NE(
+      failing->tiers[0].failure.find("tier high: the tuned configuration no longer meets its budget (PSNR ≥ 50.0 dB"),
+      std::string::npos)
       << failing->tiers[0].failure;
   EXPECT_NE(failing->tiers[0].failure.find(" dB, furnace "), std::string::npos);
 }

@@ -55,7 +55,8 @@ std::optional<Choices> choicesOf(const TuneReport& report) {
   c.verticesPerPixel = report.verticesPerPixel;
   for (const TierOutcome& o : report.tiers) {
     if (!o.chosen) return std::nullopt;
-    c.tiers.push_back({o.tier, o.chosen->result.configuration.config, o.chosen->cost.total, o.chosen->result.error.psnr});
+    c.tiers.push_back(
+        {o.tier, o.chosen->result.configuration.config, o.chosen->cost.total, o.chosen->result.error.psnr});
   }
   return c;
 }

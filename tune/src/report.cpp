@@ -74,7 +74,8 @@ std::vector<std::string> summaryLines(const TuneReport& r) {
     if (o.shipped)
       line += fixed(o.shipped->cost.total, 3) + " → " + fixed(o.chosen->cost.total, 3) + " " + r.gpu + " cycles, " +
               fixed(o.shipped->result.error.psnr, 1) + " → " + fixed(o.chosen->result.error.psnr, 1) + " dB (" +
-              budgetText(o.budget) + "): " + changes(o.shipped->result.configuration.config, o.chosen->result.configuration.config);
+              budgetText(o.budget) +
+              "): " + changes(o.shipped->result.configuration.config, o.chosen->result.configuration.config);
     else
       line += fixed(o.chosen->cost.total, 3) + " " + r.gpu + " cycles, " + fixed(o.chosen->result.error.psnr, 1) +
               " dB: meets " + budgetText(o.budget);
@@ -85,11 +86,14 @@ std::vector<std::string> summaryLines(const TuneReport& r) {
 
 std::string markdownReport(const TuneReport& r) {
   std::string md = "# matc tune: " + r.material + "\n\n";
-  md += "Cost: " + costDefinition(r) + " (docs/tune.md). Error: PSNR against `reference` on the evaluation grid, "
+  md += "Cost: " + costDefinition(r) +
+        " (docs/tune.md). Error: PSNR against `reference` on the evaluation grid, "
         "both views, mediump rounded to binary16 (`--fp16-emulation`). White furnace: reference " +
         fixed(r.referenceFurnaceGain, 3) + ".\n\n";
   md += std::to_string(r.candidates) + " candidates costed, " + std::to_string(r.rendered) + " rendered.\n\n";
-  md += "| tier | budget | before: cost | dB | after: cost | dB | furnace | change |\n|---|---|--:|--:|--:|--:|--:|---|\n";
+  md +=
+      "| tier | budget | before: cost | dB | after: cost | dB | furnace | change "
+      "|\n|---|---|--:|--:|--:|--:|--:|---|\n";
   for (const TierOutcome& o : r.tiers) {
     md += "| " + std::string(permutations::toString(o.tier)) + " | " + budgetText(o.budget) + " | ";
     md += o.shipped ? fixed(o.shipped->cost.total, 3) + " | " + fixed(o.shipped->result.error.psnr, 1) : "– | –";

@@ -37,7 +37,8 @@ Scored score(const eval::ConfigurationResult& r, const compiler::GpuCalibration&
   s.result = r;
   s.cost = oneNumberCost(r, gpu, report.verticesPerPixel);
   for (const std::string& name : report.beside)
-    s.besideFragment.push_back(compiler::calibratedEstimate(r.costFragment.counts, *compiler::findGpuCalibration(name)));
+    s.besideFragment.push_back(
+        compiler::calibratedEstimate(r.costFragment.counts, *compiler::findGpuCalibration(name)));
   return s;
 }
 
@@ -103,11 +104,13 @@ const compiler::GpuCalibration* targetGpu(const std::string& name, std::string* 
   if (gpu && std::string(gpu->measure).find("cycles") != std::string::npos) return gpu;
   std::string known;
   for (const compiler::GpuCalibration& g : compiler::gpuCalibrations())
-    if (std::string(g.measure).find("cycles") != std::string::npos) known += (known.empty() ? "" : ", ") + std::string(g.gpu);
-  *error = "--gpu: '" + name + "' cannot be a target: " +
-           (gpu ? "its calibrated figure is " + std::string(gpu->measure) + ", not cycles (it is reported beside the target)"
-                : std::string("not a calibrated GPU")) +
-           " (targets: " + known + ")";
+    if (std::string(g.measure).find("cycles") != std::string::npos)
+      known += (known.empty() ? "" : ", ") + std::string(g.gpu);
+  *error =
+      "--gpu: '" + name + "' cannot be a target: " +
+      (gpu ? "its calibrated figure is " + std::string(gpu->measure) + ", not cycles (it is reported beside the target)"
+           : std::string("not a calibrated GPU")) +
+      " (targets: " + known + ")";
   return nullptr;
 }
 
@@ -203,7 +206,8 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     }
   char costedLine[128];
   std::snprintf(costedLine, sizeof costedLine, "%zu candidates costed on %s in %.1f s", configs.size(),
-                options.gpu.c_str(), std::chrono::duration<double>(std::chrono::steady_clock::now() - costStart).count());
+                options.gpu.c_str(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - costStart).count());
   say(costedLine);
 
   std::vector<Scored> scored;
@@ -255,7 +259,8 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
       if (o.chosen) continue;
       if (meets(s, o.budget, report.referenceFurnaceGain)) {
         o.chosen = s;
-        o.chosen->result.configuration.config = withAxesOf(material, o.shipped->result.configuration.config, s.result.configuration.config);
+        o.chosen->result.configuration.config =
+            withAxesOf(material, o.shipped->result.configuration.config, s.result.configuration.config);
       } else if ((!o.budget.maxCost || s.cost.total <= *o.budget.maxCost) &&
                  (!o.best || s.result.error.psnr > o.best->result.error.psnr)) {
         o.best = s;
@@ -270,7 +275,8 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     }
     char text[512];
     if (o.best)
-      std::snprintf(text, sizeof text, "tier %s: no configuration meets its budget (%s): the best reached is %.2f dB at cost %.3f (%s)",
+      std::snprintf(text, sizeof text,
+                    "tier %s: no configuration meets its budget (%s): the best reached is %.2f dB at cost %.3f (%s)",
                     permutations::toString(o.tier), describeBudget(o.budget).c_str(), o.best->result.error.psnr,
                     o.best->cost.total, o.best->result.configuration.name.c_str());
     else
@@ -282,9 +288,8 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   return report;
 }
 
-std::optional<TuneReport> rescore(const ir::Material& material,
-                                  const std::vector<std::pair<Tier, TierConfig>>& choices, const TuneOptions& options,
-                                  eval::EvalError* error) {
+std::optional<TuneReport> rescore(const ir::Material& material, const std::vector<std::pair<Tier, TierConfig>>& choices,
+                                  const TuneOptions& options, eval::EvalError* error) {
   TuneReport report;
   const compiler::GpuCalibration* gpu = nullptr;
   std::unique_ptr<eval::Session> session = startSession(material, options, &gpu, &report, error);
@@ -307,7 +312,9 @@ std::optional<TuneReport> rescore(const ir::Material& material,
       o.chosen = s;
     } else {
       char text[512];
-      std::snprintf(text, sizeof text, "tier %s: the tuned configuration no longer meets its budget (%s): %.2f dB, furnace %.3f (reference %.3f), cost %.3f",
+      std::snprintf(text, sizeof text,
+                    "tier %s: the tuned configuration no longer meets its budget (%s): %.2f dB, furnace %.3f "
+                    "(reference %.3f), cost %.3f",
                     permutations::toString(tier), describeBudget(o.budget).c_str(), s.result.error.psnr,
                     s.result.furnaceGain, report.referenceFurnaceGain, s.cost.total);
       o.failure = text;

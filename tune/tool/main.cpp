@@ -167,13 +167,15 @@ int main(int argc, char** argv) {
   CLI::App app{"choose each tier's cheapest configuration that meets its error budget (docs/tune.md)"};
   TuneArgs args;
   app.add_option("input", args.input, "material source (.mat)")->required();
-  app.add_option("--budgets", args.budgets, "error budgets per tier and material (JSON; examples/lint/tune_budgets.json)");
+  app.add_option("--budgets", args.budgets,
+                 "error budgets per tier and material (JSON; examples/lint/tune_budgets.json)");
   app.add_option("--gpu", args.gpu, "the GPU the cost is taken on: mali-g57 (default) or mali-g52");
   app.add_option("--out", args.out, "folder for report.md and report.json (default: <input stem>.tune)");
   app.add_flag("--write", args.write, "record the chosen tiers in <input stem>.tuning.json beside the material");
   app.add_flag("--check", args.check,
                "re-score the tiers recorded in <input stem>.tuning.json against the budgets; fail with the figures");
-  app.add_option("--sphere-pixels", args.spherePixels, "grid: pixels per sphere (default 64)")->check(CLI::Range(8, 512));
+  app.add_option("--sphere-pixels", args.spherePixels, "grid: pixels per sphere (default 64)")
+      ->check(CLI::Range(8, 512));
   app.add_option("-j,--jobs", args.jobs, "threads costing candidates (default: one per core); the choice is the same")
       ->check(CLI::Range(1, 256));
   app.add_option("--max-changes", args.maxChanges,

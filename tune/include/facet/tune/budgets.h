@@ -14,8 +14,8 @@ namespace facet::tune {
 
 struct TierBudget {
   double minPsnrDb = 0;
-  bool noEnergyGain = true;        // the white furnace: no gain over reference (eval::furnaceGainsEnergy)
-  std::optional<double> maxCost;   // the one-number cost (cost.h) may not exceed this
+  bool noEnergyGain = true;       // the white furnace: no gain over reference (eval::furnaceGainsEnergy)
+  std::optional<double> maxCost;  // the one-number cost (cost.h) may not exceed this
 };
 
 // The one-number cost's vertex weight: vertices shaded per pixel shaded (cost.h, docs/tune.md).

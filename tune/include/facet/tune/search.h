@@ -48,14 +48,14 @@ struct TuneOptions {
   std::vector<permutations::Tier> tiers = {permutations::Tier::High, permutations::Tier::Mid, permutations::Tier::Low};
   Budgets budgets = defaultBudgets();
   std::string gpu = "mali-g57";
-  unsigned jobs = 0;        // threads costing candidates (0: one per core); the result is the same for any
+  unsigned jobs = 0;  // threads costing candidates (0: one per core); the result is the same for any
   // The space: the combinations that change at most this many axes from a tuned tier as shipped
   // (neighbourhood()); -1: every combination (docs/tune.md, "Time": the whole product renders
   // hundreds of configurations for a high tier).
   int maxChanges = 2;
   // The space searched instead, when not empty. Tests search a few.
   std::vector<permutations::TierConfig> space;
-  eval::EvalOptions eval;   // the grid; fp16 emulation is turned on, timing and the BRDF sweep off
+  eval::EvalOptions eval;  // the grid; fp16 emulation is turned on, timing and the BRDF sweep off
   std::function<void(const std::string&)> progress;
 };
 
@@ -70,9 +70,9 @@ struct TierOutcome {
   permutations::Tier tier = permutations::Tier::High;
   TierBudget budget;
   std::optional<Scored> shipped;  // the tier as shipped (preset + the material's overrides); unset in rescore()
-  std::optional<Scored> chosen;  // the cheapest that meets the budget; unset: none does
-  std::optional<Scored> best;    // none does: the most accurate rendered and within the cap
-  std::string failure;           // none does: the diagnostic
+  std::optional<Scored> chosen;   // the cheapest that meets the budget; unset: none does
+  std::optional<Scored> best;     // none does: the most accurate rendered and within the cap
+  std::string failure;            // none does: the diagnostic
 };
 
 struct TuneReport {
@@ -94,7 +94,8 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
 
 // The committed choices re-scored (the gate): each tier's configuration measured again under its
 // own tier, with the budget it must meet. Same failures as tune().
-std::optional<TuneReport> rescore(const ir::Material& material, const std::vector<std::pair<permutations::Tier, permutations::TierConfig>>& choices,
+std::optional<TuneReport> rescore(const ir::Material& material,
+                                  const std::vector<std::pair<permutations::Tier, permutations::TierConfig>>& choices,
                                   const TuneOptions& options, eval::EvalError* error);
 
 }  // namespace facet::tune
