@@ -6,27 +6,13 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/scene/json_document.h"
+#include "json_reading.h"
 
 namespace facet::tune {
 namespace {
 
 using json = nlohmann::json;
 using permutations::Tier;
-
-struct Invalid {
-  std::string pointer, message;
-};
-
-[[noreturn]] void fail(const std::string& pointer, const std::string& message) { throw Invalid{pointer, message}; }
-
-std::string child(const std::string& pointer, const std::string& key) {
-  return pointer + "/" + scene::pointerSegment(key);
-}
-
-const json& object(const json& j, const std::string& pointer) {
-  if (!j.is_object()) fail(pointer, "expected an object");
-  return j;
-}
 
 std::string shortest(double v) {
   char text[32];
@@ -114,7 +100,7 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
     }
     return b;
   } catch (const Invalid& e) {
-    *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
+    *error = invalidMessage(path, e);
     return std::nullopt;
   }
 }

@@ -7,27 +7,13 @@
 
 #include "facet/eval/configurations.h"
 #include "facet/scene/json_document.h"
+#include "json_reading.h"
 
 namespace facet::tune {
 namespace {
 
 using json = nlohmann::json;
 using permutations::Tier;
-
-struct Invalid {
-  std::string pointer, message;
-};
-
-[[noreturn]] void fail(const std::string& pointer, const std::string& message) { throw Invalid{pointer, message}; }
-
-std::string child(const std::string& pointer, const std::string& key) {
-  return pointer + "/" + scene::pointerSegment(key);
-}
-
-const json& object(const json& j, const std::string& pointer) {
-  if (!j.is_object()) fail(pointer, "expected an object");
-  return j;
-}
 
 double figure(const json& j, const std::string& pointer) {
   if (!j.is_number() || !std::isfinite(j.get<double>())) fail(pointer, "expected a finite number");
@@ -137,7 +123,7 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
     std::sort(c.tiers.begin(), c.tiers.end(), [](const TierChoice& a, const TierChoice& b) { return a.tier < b.tier; });
     return c;
   } catch (const Invalid& e) {
-    *error = path + ": error: " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.message;
+    *error = invalidMessage(path, e);
     return std::nullopt;
   }
 }

@@ -261,6 +261,10 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
         o.chosen = s;
         o.chosen->result.configuration.config =
             withAxesOf(material, o.shipped->result.configuration.config, s.result.configuration.config);
+        // Nothing strictly cheaper than the tier as shipped meets the budget and it does: it stays
+        // (a candidate of equal cost is another spelling of the same shader, e.g. SH bands on a metal).
+        if (s.cost.total >= o.shipped->cost.total && meets(*o.shipped, o.budget, report.referenceFurnaceGain))
+          o.chosen = o.shipped;
       } else if ((!o.budget.maxCost || s.cost.total <= *o.budget.maxCost) &&
                  (!o.best || s.result.error.psnr > o.best->result.error.psnr)) {
         o.best = s;
