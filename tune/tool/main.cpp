@@ -45,12 +45,15 @@ std::string defaultCacheDir() {
   return "";
 }
 
+// A message that names its file ("<file>: error: ..."), printed as a compiler prints it.
+void printLocated(const std::string& message) { std::fprintf(stderr, "%s\n", message.c_str()); }
+
 std::optional<std::string> readText(const std::string& what, const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   if (in) text << in.rdbuf();
   if (!in || in.bad()) {
-    cli::printError(path + ": error: cannot read " + what);
+    printLocated(path + ": error: cannot read " + what);
     return std::nullopt;
   }
   return text.str();
@@ -69,7 +72,7 @@ int finish(const tune::TuneReport& report, const std::string& input) {
     if (report.tiers[i].chosen) {
       progress(lines[i]);
     } else {
-      cli::printError(input + ": error: " + lines[i]);
+      printLocated(input + ": error: " + lines[i]);
       status = 1;
     }
   }
@@ -83,7 +86,7 @@ int check(const TuneArgs& args, const ir::Material& material, tune::TuneOptions 
   std::string message;
   std::optional<tune::Choices> choices = tune::parseChoices(path, *text, material, &message);
   if (!choices) {
-    cli::printError(message);
+    printLocated(message);
     return 1;
   }
   // The cost the choices were made on: the file's GPU and vertex weight.
@@ -94,7 +97,7 @@ int check(const TuneArgs& args, const ir::Material& material, tune::TuneOptions 
   eval::EvalError error;
   std::optional<tune::TuneReport> report = tune::rescore(material, tiers, options, &error);
   if (!report) {
-    cli::printError(args.input + ": error: " + error.message);
+    cli::printError(args.input + ": " + error.message);
     return 1;
   }
   return finish(*report, path);
@@ -118,7 +121,7 @@ int run(const TuneArgs& args) {
     if (!text) return 1;
     std::optional<tune::Budgets> budgets = tune::parseBudgets(args.budgets, *text, &message);
     if (!budgets) {
-      cli::printError(message);
+      printLocated(message);
       return 1;
     }
     options.budgets = *budgets;
