@@ -139,6 +139,11 @@ int main(int argc, char** argv) {
       "render every tier and single-option swap on lavapipe; report error against reference and cost (docs/eval.md)");
   evalCmd->prefix_command();
   evalCmd->set_help_flag();
+  // Everything after `tune` is facet-tune's (tune/tool/main.cpp), in the same way.
+  CLI::App* tuneCmd = app.add_subcommand(
+      "tune", "choose each tier's cheapest configuration that meets its error budget (docs/tune.md)");
+  tuneCmd->prefix_command();
+  tuneCmd->set_help_flag();
   // Everything after `texture` is facet-texture's (texture/tool/main.cpp), in the same way.
   CLI::App* textureCmd = app.add_subcommand(
       "texture", "encode a PNG into an ASTC KTX2 texture with its mip levels (docs/texture-format.md)");
@@ -157,6 +162,8 @@ int main(int argc, char** argv) {
   if (postCmd->parsed()) return facet::matc::postCommand(post);
   if (evalCmd->parsed())
     return facet::matc::runHelperProgram(argv[0], "eval", "facet-eval", "facet-eval", evalCmd->remaining());
+  if (tuneCmd->parsed())
+    return facet::matc::runHelperProgram(argv[0], "tune", "facet-tune", "facet-tune", tuneCmd->remaining());
   if (textureCmd->parsed())
     return facet::matc::runHelperProgram(argv[0], "texture", "facet-texture", "facet-texture", textureCmd->remaining());
   if (importCmd->parsed())

@@ -6,6 +6,7 @@
 #   build/examples/imported/<asset>/   `matc import` of each glTF asset in examples/assets/
 #   build/examples/images/*.png        rendered scenes, one per backend
 #   build/examples/eval/               matc eval of red_plastic: report.md, report.json, plot.svg, images/
+#   build/examples/tune/               matc tune of red_plastic: report.md, report.json
 #   build/examples/images/app.png      examples/app: the runtime embedded on the app's own Vulkan device
 #   build/examples/images/app_gl.png   examples/app_gl: the same on the app's own OpenGL ES context
 set -euo pipefail
@@ -15,7 +16,7 @@ bash scripts/setup-deps.sh
 
 jobs=$(nproc)
 cmake --preset release  # build/release, CMakePresets.json
-cmake --build --preset release --parallel "$jobs" --target matc facet-gltf-import facet-eval facet-texture facet-view facet-app-example facet-app-gl-example
+cmake --build --preset release --parallel "$jobs" --target matc facet-gltf-import facet-eval facet-tune facet-texture facet-view facet-app-example facet-app-gl-example
 
 packages=build/examples/packages
 images=build/examples/images
@@ -71,9 +72,16 @@ build/release/examples/app_gl/facet-app-gl-example build/release/examples/app/re
 # on lavapipe and measured against `reference` and by the mobile cost model.
 rm -rf build/examples/eval
 build/release/matc/matc eval examples/materials/red_plastic.mat --out build/examples/eval
+# Each tier's cheapest configuration within its error budget (docs/tune.md), then the gate on the
+# committed choices (examples/materials/red_plastic.tuning.json).
+rm -rf build/examples/tune
+build/release/matc/matc tune examples/materials/red_plastic.mat --budgets examples/lint/tune_budgets.json \
+  --out build/examples/tune
+build/release/matc/matc tune examples/materials/red_plastic.mat --budgets examples/lint/tune_budgets.json --check
 
 echo
 echo "Packages: $(pwd)/$packages"
 echo "Images:   $(pwd)/$images"
 ls -1 "$images"/*.png
 echo "Eval:     $(pwd)/build/examples/eval/report.md (plot.svg, report.json, images/)"
+echo "Tune:     $(pwd)/build/examples/tune/report.md (report.json)"

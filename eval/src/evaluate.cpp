@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 #include "facet/compiler/build.h"
@@ -85,7 +86,16 @@ class Evaluation {
         workDir_(std::move(workDir)) {}
 
   // Builds, costs, renders and compares one configuration; the first must be the reference.
-  bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error) {
+  // The cost model's figures only (costFragment, costVertex), built without rendering: what
+  // `matc tune` orders and prunes its candidates by. Safe to call from several threads at once.
+  bool costOnly(const Configuration& c, ConfigurationResult* r, EvalError* error) const {
+    r->configuration = c;
+    std::optional<compiler::BuildResult> built = build(c, false, &r->variantKey, error, true);
+    return built && cost(built->package, r, error);
+  }
+
+  bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error,
+               const MeasureOptions& how = {}) {
     r->configuration = c;
     std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, &r->variantKey, error);
     if (!built) return false;
@@ -98,9 +108,17 @@ class Evaluation {
     // The cost of the variant the (first) view renders, as shipped: an fp16-emulation build's
     // SPIR-V is quantized before spirv-opt and costs what no device runs, so the cost comes from
     // the same configuration built without it.
-    std::optional<compiler::BuildResult> shipped;
-    if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
-    if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
+    if (how.costed) {
+      r->fragment = how.costed->fragment;
+      r->vertex = how.costed->vertex;
+      r->costFragment = how.costed->costFragment;
+      r->costVertex = how.costed->costVertex;
+      r->sunIblFragmentCycles = how.costed->sunIblFragmentCycles;
+    } else {
+      std::optional<compiler::BuildResult> shipped;
+      if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
+      if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
+    }
 
     ErrorAccumulator all, truthError;
     for (size_t vi = 0; vi < views_.size(); ++vi) {
@@ -143,7 +161,12 @@ class Evaluation {
     }
     r->error = all.metrics();
     if (!groundTruth_.empty()) r->groundTruthError = truthError.metrics();
-    return material_.shading != "lit" || furnace(c, packageDir, r, error);
+    if (material_.shading != "lit") return true;
+    if (how.furnaceWanted && !how.furnaceWanted(*r)) {
+      r->furnaceGain = std::numeric_limits<double>::quiet_NaN();
+      return true;
+    }
+    return furnace(c, packageDir, r, error);
   }
 
   // The ground truth (EvalOptions::groundTruthSamples): `reference` as shipped with its ambient
@@ -250,9 +273,13 @@ class Evaluation {
   // The configuration's package: its tier only, the variants the views ask for, and (lit
   // materials) the sun + IBL variant <tier>.dir1 that the cost goals refer to.
   std::optional<compiler::BuildResult> build(const Configuration& c, bool fp16Emulation, std::string* firstKey,
-                                             EvalError* error) const {
+                                             EvalError* error, bool costVariantOnly = false) const {
     compiler::BuildOptions options;
     options.tiers = {c.tier};
+    if (costVariantOnly) {
+      options.jobs = 1;
+      options.cacheDir = options_.costCacheDir;
+    }
     options.fp16Emulation = fp16Emulation;
     options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
     const permutations::MaterialNeeds needs{material_.shading == "lit"};
@@ -260,11 +287,12 @@ class Evaluation {
     auto add = [&](const permutations::VariantKey& key) {
       if (std::find(scene.keys.begin(), scene.keys.end(), key) == scene.keys.end()) scene.keys.push_back(key);
     };
-    for (const View& v : views_)
-      add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
+    if (!costVariantOnly)
+      for (const View& v : views_)
+        add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
+    add(permutations::requestKey(needs, c.tier, true, 0));
     *firstKey = scene.keys[0].toString();
-    if (needs.lit) add(permutations::requestKey(needs, c.tier, true, 0));
-    if (needs.lit) add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace
+    if (needs.lit && !costVariantOnly) add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace
     options.scene = scene;
     compiler::BuildError buildError;
     auto built = compiler::buildMaterial(material_, options, &buildError);
@@ -276,7 +304,8 @@ class Evaluation {
   }
 
   bool cost(const package::Package& pkg, ConfigurationResult* r, EvalError* error) const {
-    const std::string sunIbl = permutations::requestKey({true}, r->configuration.tier, true, 0).toString();
+    const std::string sunIbl =
+        permutations::requestKey({material_.shading == "lit"}, r->configuration.tier, true, 0).toString();
     for (const package::Variant& v : pkg.variants) {
       if (v.key != r->variantKey && v.key != sunIbl) continue;
       for (const package::Shader& s : v.shaders) {
@@ -285,6 +314,7 @@ class Evaluation {
         if (!compiler::estimateMobileCost(wordsOf(s), &cost, &error->message, options_.weights))
           return fail(r->configuration, error->message, error);
         if (v.key == r->variantKey) (s.stage == package::Stage::Fragment ? r->fragment : r->vertex) = cost;
+        if (v.key == sunIbl) (s.stage == package::Stage::Fragment ? r->costFragment : r->costVertex) = cost;
         if (v.key == sunIbl && s.stage == package::Stage::Fragment) r->sunIblFragmentCycles = cost.cycles;
       }
     }
@@ -346,8 +376,18 @@ class Evaluation {
 
 }  // namespace
 
-std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptions& options, EvalError* error) {
-  EvalReport report;
+struct Session::State {
+  EvalOptions options;  // the Evaluation keeps a reference: the session owns them
+  TempDir work;         // one package per configuration, removed at the end
+  std::optional<Evaluation> evaluation;
+};
+
+Session::Session() = default;
+Session::~Session() = default;
+
+std::unique_ptr<Session> Session::start(const ir::Material& material, const EvalOptions& options, EvalError* error) {
+  std::unique_ptr<Session> session(new Session());
+  EvalReport& report = session->report_;
   report.material = material.name;
   report.timingFrames = std::max(options.timingFrames, 0);
   report.warmupFrames = std::max(options.warmupFrames, 1);
@@ -363,12 +403,12 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
   } else {
     report.scene = options.sceneFile;
     auto scene = runtime::loadScene(options.sceneFile, &error->message);
-    if (!scene) return std::nullopt;
+    if (!scene) return nullptr;
     const size_t before = scene->objects.size();
     std::erase_if(scene->objects, [&](const runtime::SceneObject& o) { return o.material != material.name; });
     if (scene->objects.empty()) {
       error->message = options.sceneFile + ": no object of the scene uses material '" + material.name + "'";
-      return std::nullopt;
+      return nullptr;
     }
     if (scene->objects.size() < before)
       report.sceneNotes.push_back(std::to_string(before - scene->objects.size()) +
@@ -383,27 +423,52 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
   std::unique_ptr<runtime::RenderBackend> backend = runtime::createVulkanBackend({options.validation}, &message);
   if (!backend) {
     error->message = "no Vulkan device to render on (matc eval renders with lavapipe): " + message;
-    return std::nullopt;
+    return nullptr;
   }
   std::error_code ec;
-  TempDir work;  // one package per configuration, removed at the end
-  work.path = fs::temp_directory_path(ec) / ("facet-eval-" + std::to_string(getpid()));
-  fs::remove_all(work.path, ec);
-  fs::create_directories(work.path, ec);
+  session->state_ = std::make_unique<State>();
+  session->state_->options = options;
+  fs::path& work = session->state_->work.path;
+  work = fs::temp_directory_path(ec) / ("facet-eval-" + std::to_string(getpid()));
+  fs::remove_all(work, ec);
+  fs::create_directories(work, ec);
   if (ec) {
-    error->message = "cannot create a temporary folder '" + work.path.string() + "': " + ec.message();
-    return std::nullopt;
+    error->message = "cannot create a temporary folder '" + work.string() + "': " + ec.message();
+    return nullptr;
   }
 
-  Evaluation evaluation(material, options, std::move(views), std::move(backend), work.path);
-  const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
+  Evaluation& evaluation = session->state_->evaluation.emplace(material, session->state_->options, std::move(views),
+                                                               std::move(backend), work);
+  const Configuration reference = configurations(material, {}, false).at(0);
   // (The sampled ground truth integrates the standard model's lobes: not the cloth model's.)
   if (options.groundTruthSamples > 0 && material.shading == "lit" && !material.cloth) {
     report.groundTruthSamples = options.groundTruthSamples;
-    if (!evaluation.renderGroundTruth(configs[0], &report.groundTruthConvergence, &report.groundTruthViews, error))
-      return std::nullopt;
+    if (!evaluation.renderGroundTruth(reference, &report.groundTruthConvergence, &report.groundTruthViews, error))
+      return nullptr;
   }
-  for (size_t i = 0; i < configs.size(); ++i) {
+  ConfigurationResult r;
+  if (!evaluation.measure(reference, true, &r, error)) return nullptr;
+  report.results.push_back(std::move(r));
+  return session;
+}
+
+bool Session::cost(const Configuration& c, ConfigurationResult* r, EvalError* error) const {
+  return state_->evaluation->costOnly(c, r, error);
+}
+
+bool Session::measure(const Configuration& c, ConfigurationResult* r, EvalError* error, const MeasureOptions& how) {
+  return state_->evaluation->measure(c, false, r, error, how);
+}
+
+std::string Session::timingClock() const { return state_->evaluation->timingClock(); }
+
+std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptions& options, EvalError* error) {
+  std::unique_ptr<Session> session = Session::start(material, options, error);
+  if (!session) return std::nullopt;
+  EvalReport report = session->report();
+  const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
+  if (options.progress) options.progress(formatProgress(0, configs.size(), report.results.back()));
+  for (size_t i = 1; i < configs.size(); ++i) {
     const Configuration& c = configs[i];
     // Identical maths (e.g. high with energy compensation = reference in mediump): the same
     // shaders and images, measured once.
@@ -415,14 +480,14 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
       r = *same;
       r.configuration = c;
       r.sameAs = same->configuration.name;
-    } else if (!evaluation.measure(c, i == 0, &r, error)) {
+    } else if (!session->measure(c, &r, error)) {
       return std::nullopt;
     }
     report.results.push_back(std::move(r));
     if (options.progress) options.progress(formatProgress(i, configs.size(), report.results.back()));
   }
 
-  report.timingClock = evaluation.timingClock();
+  report.timingClock = session->timingClock();
 
   // Ratios to the tiers as shipped (configurations() puts reference as shipped first).
   auto shipped = [&](permutations::Tier t) -> const ConfigurationResult* {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <mutex>
 
 #include "facet/abi/shader_abi.h"
@@ -54,6 +55,44 @@ void storeLevels(const std::vector<ibl::CubeImage>& levels, double scale, Enviro
   }
 }
 
+// An analytic sky's SH, mean and prefiltered levels before the luminance scale: a function of its
+// three colours alone, so the last few are kept. `matc eval` and `matc tune` prepare a frame per
+// view and configuration of the same sky, and the prefilter (a few hundred milliseconds) was most
+// of each configuration's time.
+struct PrefilteredSky {
+  glm::dvec3 zenith, horizon, ground;
+  ibl::SphericalHarmonics radianceSh;
+  Vec3 mean;
+  std::vector<ibl::CubeImage> levels;
+};
+
+std::shared_ptr<const PrefilteredSky> prefilteredSky(const Environment& e) {
+  static std::mutex mutex;
+  static std::vector<std::shared_ptr<const PrefilteredSky>> kept;  // most recent last
+  constexpr size_t kKept = 4;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& s : kept)
+      if (s->zenith == e.zenith && s->horizon == e.horizon && s->ground == e.ground) return s;
+  }
+  auto sky = [&](Vec3 d) { return skyRadiance(e, d); };
+  auto made = std::make_shared<PrefilteredSky>();
+  made->zenith = e.zenith;
+  made->horizon = e.horizon;
+  made->ground = e.ground;
+  const EquirectImage source = ibl::renderEquirect(kEnvironmentWidth, kEnvironmentHeight, sky);
+  // The analytic sky is projected by quadrature of the function itself, not of its 128 × 64 image.
+  made->radianceSh = ibl::projectRadiance(std::function<Vec3(Vec3)>(sky), 3);
+  made->mean = ibl::meanRadiance(source);
+  ibl::PrefilterOptions options;
+  options.levels = int(abi::kEnvironmentLevels);
+  made->levels = ibl::prefilterEnvironmentCube(source, kEnvironmentMapSize, options);
+  std::lock_guard<std::mutex> lock(mutex);
+  kept.push_back(made);
+  if (kept.size() > kKept) kept.erase(kept.begin());
+  return made;
+}
+
 }  // namespace
 
 uint16_t floatToHalf(float value) {
@@ -94,13 +133,13 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
     return out;
   }
   const Environment& e = *scene.environment;
+  const double scale = e.luminance * exposure;
   EquirectImage source;
   ibl::SphericalHarmonics radianceSh;
+  std::shared_ptr<const PrefilteredSky> sky;
   if (e.image.empty()) {
-    auto sky = [&](Vec3 d) { return skyRadiance(e, d); };
-    source = ibl::renderEquirect(kEnvironmentWidth, kEnvironmentHeight, sky);
-    // The analytic sky is projected by quadrature of the function itself, not of its 128 × 64 image.
-    radianceSh = ibl::projectRadiance(std::function<Vec3(Vec3)>(sky), 3);
+    sky = prefilteredSky(e);
+    radianceSh = sky->radianceSh;
   } else {
     std::vector<uint8_t> bytes;
     if (!readImageFile(e.image, &bytes, error)) return std::nullopt;
@@ -109,13 +148,16 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
     source = fitEnvironment(std::move(*image));
     radianceSh = ibl::projectRadiance(source, 3);
   }
-  const double scale = e.luminance * exposure;
   std::vector<Vec3> c = ibl::shaderIrradianceCoefficients(radianceSh);
   for (size_t k = 0; k < out.sh.size() && k < c.size(); ++k) {
     out.sh[k] = {float(c[k].x * scale), float(c[k].y * scale), float(c[k].z * scale)};
   }
-  Vec3 mean = ibl::meanRadiance(source);
+  Vec3 mean = sky ? sky->mean : ibl::meanRadiance(source);
   out.meanRadiance = {float(mean.x * scale), float(mean.y * scale), float(mean.z * scale)};
+  if (sky) {
+    storeLevels(sky->levels, scale, &out);
+    return out;
+  }
   ibl::PrefilterOptions options;
   options.levels = int(abi::kEnvironmentLevels);
   storeLevels(ibl::prefilterEnvironmentCube(source, kEnvironmentMapSize, options), scale, &out);

@@ -774,3 +774,46 @@ TEST(MatcCli, EvalRunsFacetEvalBesideMatcOrOnPath) {
   EXPECT_EQ(itself.exitCode, 1);
   EXPECT_NE(itself.err.find("facet-eval: error: cannot read '" + dir + "/nope.mat'"), std::string::npos) << itself.err;
 }
+
+// matc tune (docs/tune.md): usage errors exit 2, a bad budgets or tuning file 1 at its JSON
+// pointer; the gate (--check) passes the committed choices of the tuned examples and fails, with
+// the figures, a tuning file whose high tier takes a worse lobe.
+TEST(MatcCli, TuneGateAndItsErrors) {
+  const std::string dir = facet::test::scratchDir("cli-tune");
+  const std::string red = facet::test::examplePath("materials/red_plastic.mat");
+  auto adreno = run(kMatc + " tune " + red + " --gpu adreno-630");
+  EXPECT_EQ(adreno.exitCode, 2);
+  EXPECT_NE(adreno.err.find("matc: error: --gpu: 'adreno-630' cannot be a target"), std::string::npos) << adreno.err;
+  EXPECT_EQ(run(kMatc + " tune " + red + " --write --check").exitCode, 2);
+  const std::string budgets = write(dir, "b.json", R"({"tiers": {"mid": {"min_psnr_db": "40"}}})");
+  auto bad = run(kMatc + " tune " + red + " --budgets " + budgets);
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find(budgets + ": error: /tiers/mid/min_psnr_db: expected a number"), std::string::npos) << bad.err;
+
+  // The committed choices still meet the budgets (ASAN_OPTIONS: see EvalWritesItsReportOrFailsClearly).
+  for (const char* name : {"red_plastic", "brushed_gold"}) {
+    auto gate = run("ASAN_OPTIONS=detect_leaks=0 " + kMatc + " tune " +
+                    facet::test::examplePath(std::string("materials/") + name + ".mat") + " --check");
+    EXPECT_EQ(gate.exitCode, 0) << name << ": " << gate.err;
+    EXPECT_NE(gate.out.find("high: "), std::string::npos) << gate.out;
+  }
+
+  // A tuning file whose high tier reads the lut lobe: far below high's 50 dB.
+  fs::copy_file(red, dir + "/red_plastic.mat", fs::copy_options::overwrite_existing);
+  write(dir, "red_plastic.tuning.json",
+        R"({"material": "red_plastic", "gpu": "mali-g57", "vertices_per_pixel": 0.1,
+            "tiers": {"high": {"config": {"specular": "lut"}, "cost": 1, "psnr_db": 60}}})");
+  auto worse = run("ASAN_OPTIONS=detect_leaks=0 " + kMatc + " tune " + dir + "/red_plastic.mat --check");
+  EXPECT_EQ(worse.exitCode, 1);
+  EXPECT_NE(worse.err.find("red_plastic.tuning.json: error: tier high: the tuned configuration no longer meets its "
+                           "budget (PSNR ≥ 50.0 dB, no energy gain): "),
+            std::string::npos)
+      << worse.err;
+  write(dir, "red_plastic.tuning.json",
+        R"({"material": "red_plastic", "tiers": {"mid": {"config": {"specular": 3}}}})");
+  auto malformed = run(kMatc + " tune " + dir + "/red_plastic.mat --check");
+  EXPECT_EQ(malformed.exitCode, 1);
+  EXPECT_NE(malformed.err.find("red_plastic.tuning.json: error: /tiers/mid/config/specular: expected a string"),
+            std::string::npos)
+      << malformed.err;
+}

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,9 @@ struct EvalOptions {
   // (AmbientModel::Sampled), and the same at a quarter of the points against it. 0: off.
   int groundTruthSamples = 0;
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
+  // A variant cache (compiler::BuildOptions::cacheDir) for Session::cost()'s builds: `matc tune`
+  // costs every candidate, and a second run finds them there. "": none.
+  std::string costCacheDir;
 };
 
 struct ViewResult {
@@ -60,6 +64,9 @@ struct ConfigurationResult {
   // Lit materials: fragment cycles of the sun + IBL variant <tier>.dir1 (no point light), the
   // variant the tiers' cost goals (and the Mali-G57 measurements) refer to, and its ratio to high's.
   double sunIblFragmentCycles = 0;
+  // The cost model's figures of that variant (for unlit materials, of <tier>, their one light
+  // variant): the op counts `matc tune`'s one-number cost weighs (docs/tune.md).
+  compiler::MobileStageCost costFragment, costVertex;
   double sunIblVsHigh = 0;
   double timeVsReference = 0;  // median over the paired renders of this time ÷ reference's (0: not timed)
   // Lit materials: the white furnace — the grid's first view with no sun and no point light in a
@@ -115,6 +122,43 @@ struct EvalReport {
 struct EvalError {
   std::string message;
   std::optional<ir::SourceLoc> loc;  // a build error that traces back to a line of the material
+};
+
+// How Session::measure() may save work.
+struct MeasureOptions {
+  // The configuration's Session::cost() result: the cost model's figures are taken from it
+  // instead of a second build (under fp16 emulation the rendered build is not the costed one).
+  const ConfigurationResult* costed = nullptr;
+  // Called after the views are scored; false: the white furnace is not rendered (furnaceGain NaN),
+  // e.g. for an error no budget would take.
+  std::function<bool(const ConfigurationResult&)> furnaceWanted;
+};
+
+// One evaluation's renderer, views and `reference`'s images, for measuring configurations one at a
+// time (`matc tune`, docs/tune.md); evaluate() is a session over configurations(). start() renders
+// `reference` as shipped (and the ground truth when asked): report().results[0].
+class Session {
+ public:
+  static std::unique_ptr<Session> start(const ir::Material& material, const EvalOptions& options, EvalError* error);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+  // Builds the configuration's cost variant (<tier>.dir1) and fills the cost model's figures
+  // (fragment, vertex, costFragment, costVertex, sunIblFragmentCycles) without rendering. Safe to
+  // call from several threads at once (not with measure()).
+  bool cost(const Configuration& configuration, ConfigurationResult* result, EvalError* error) const;
+  // Builds, costs, renders and scores one configuration against `reference`.
+  bool measure(const Configuration& configuration, ConfigurationResult* result, EvalError* error,
+               const MeasureOptions& how = {});
+  // The report's fields known at the start, and reference's result.
+  const EvalReport& report() const { return report_; }
+  std::string timingClock() const;
+
+ private:
+  Session();
+  struct State;
+  std::unique_ptr<State> state_;
+  EvalReport report_;
 };
 
 // Runs the evaluation. Fails on a build error (with the material's line where known), a scene

@@ -1,0 +1,242 @@
+// matc tune's library (tune/): the budgets and the tuning file (their errors at a JSON pointer),
+// the candidates, and the search and the gate rendered on a small space of a tiny grid.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "facet/eval/configurations.h"
+#include "facet/ir/check.h"
+#include "facet/tune/choices.h"
+#include "facet/tune/report.h"
+#include "facet/tune/search.h"
+#include "test_support.h"
+
+namespace {
+
+using facet::permutations::Tier;
+using facet::permutations::TierConfig;
+namespace tune = facet::tune;
+
+facet::ir::Material example(const std::string& name) {
+  facet::ir::SourceFile file{name + ".mat",
+                             facet::test::readText(facet::test::examplePath("materials/" + name + ".mat"))};
+  facet::ir::Diagnostics diags(file);
+  auto m = facet::ir::compileSource(file, diags);
+  EXPECT_TRUE(m) << diags.format();
+  return m ? *m : facet::ir::Material{};
+}
+
+std::string budgetError(const std::string& text) {
+  std::string error;
+  EXPECT_FALSE(tune::parseBudgets("b.json", text, &error)) << text;
+  return error;
+}
+
+// A small space: each tier as shipped and its single-option swaps of the specular and diffuse
+// axes (eval's configurations), without repeats, in mediump: under fp16 emulation none renders
+// reference exactly.
+std::vector<TierConfig> smallSpace(const facet::ir::Material& m) {
+  std::vector<TierConfig> out;
+  for (const facet::eval::Configuration& c : facet::eval::configurations(m, {Tier::High, Tier::Mid, Tier::Low}))
+    if ((!c.swap() || c.axis == "specular" || c.axis == "diffuse") && c.tier != Tier::Reference &&
+        std::find(out.begin(), out.end(), c.config) == out.end())
+      out.push_back(c.config);
+  return out;
+}
+
+tune::TuneOptions tinyGrid() {
+  tune::TuneOptions o;
+  o.eval.grid.pixelsPerSphere = 8;
+  return o;
+}
+
+}  // namespace
+
+TEST(TuneBudgets, DefaultsProjectFileAndPerMaterialEntries) {
+  const tune::Budgets d = tune::defaultBudgets();
+  EXPECT_EQ(d.tiers.at(Tier::High).minPsnrDb, 50);
+  EXPECT_EQ(d.tiers.at(Tier::Mid).minPsnrDb, 40);
+  EXPECT_EQ(d.tiers.at(Tier::Low).minPsnrDb, 34);
+  EXPECT_TRUE(d.tiers.at(Tier::Low).noEnergyGain);
+  EXPECT_FALSE(d.tiers.at(Tier::Low).maxCost);
+  EXPECT_EQ(d.verticesPerPixel, tune::kDefaultVerticesPerPixel);
+
+  std::string error;
+  auto b = tune::parseBudgets("b.json", R"({
+    "materials": {"brushed_gold": {"low": {"min_psnr_db": 30}}},
+    "tiers": {"mid": {"min_psnr_db": 38, "max_cost": 1.5}},
+    "vertices_per_pixel": 0.25})",
+                              &error);
+  ASSERT_TRUE(b) << error;
+  EXPECT_EQ(b->verticesPerPixel, 0.25);
+  EXPECT_EQ(b->forMaterial("red_plastic", Tier::Mid).minPsnrDb, 38);
+  EXPECT_EQ(*b->forMaterial("red_plastic", Tier::Mid).maxCost, 1.5);
+  EXPECT_EQ(b->forMaterial("red_plastic", Tier::High).minPsnrDb, 50);  // the default stays
+  EXPECT_EQ(b->forMaterial("brushed_gold", Tier::Low).minPsnrDb, 30);
+  EXPECT_EQ(b->forMaterial("red_plastic", Tier::Low).minPsnrDb, 34);
+}
+
+TEST(TuneBudgets, BadFilesFailAtTheirJsonPointer) {
+  EXPECT_EQ(budgetError(R"({"tiers": {"ultra": {}}})"),
+            "b.json: error: /tiers/ultra: unknown tier 'ultra' (known: high, mid, low)");
+  EXPECT_EQ(budgetError(R"({"tiers": {"reference": {}}})"),
+            "b.json: error: /tiers/reference: unknown tier 'reference' (known: high, mid, low)");
+  EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"min_psnr_db": "40"}}})"),
+            "b.json: error: /tiers/mid/min_psnr_db: expected a number");
+  EXPECT_EQ(
+      budgetError(R"({"tiers": {"mid": {"min_psnr": 40}}})"),
+      "b.json: error: /tiers/mid/min_psnr: unknown key 'min_psnr' (known: min_psnr_db, max_cost, no_energy_gain)");
+  EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"max_cost": -1}}})"),
+            "b.json: error: /tiers/mid/max_cost: expected a number from 0 to 1e+06");
+  EXPECT_EQ(budgetError(R"({"tiers": {"mid": {"no_energy_gain": 1}}})"),
+            "b.json: error: /tiers/mid/no_energy_gain: expected true or false");
+  EXPECT_EQ(budgetError(R"({"materials": {"m": {"low": []}}})"), "b.json: error: /materials/m/low: expected an object");
+  EXPECT_EQ(budgetError(R"({"vertices_per_pixel": 100})"),
+            "b.json: error: /vertices_per_pixel: expected a number from 0 to 16");
+  EXPECT_EQ(budgetError(R"({"tier": {}})"),
+            "b.json: error: /tier: unknown key 'tier' (known: tiers, materials, vertices_per_pixel)");
+  EXPECT_EQ(budgetError("[]"), "b.json: error: /: expected an object");
+  EXPECT_NE(budgetError(R"({"tiers": {}, "tiers": {}})").find("duplicate key"), std::string::npos);
+  EXPECT_NE(budgetError(R"({"tiers": )").find("b.json:1:"), std::string::npos);
+}
+
+TEST(TuneChoices, WrittenDeterministicallyAndReadBack) {
+  const facet::ir::Material m = example("red_plastic");
+  tune::Choices c;
+  c.material = "red_plastic";
+  c.gpu = "mali-g57";
+  c.verticesPerPixel = 0.1;
+  TierConfig low = facet::eval::configurations(m, {Tier::Low}, false).at(1).config;
+  low.shBands = 3;
+  c.tiers.push_back({Tier::Low, low, 1.23456, 37.04});
+  const std::string text = tune::writeChoices(c);
+  EXPECT_EQ(text, tune::writeChoices(c));
+  EXPECT_NE(text.find("\"cost\": 1.235"), std::string::npos) << text;
+  std::string error;
+  auto back = tune::parseChoices("t.json", text, m, &error);
+  ASSERT_TRUE(back) << error;
+  ASSERT_EQ(back->tiers.size(), 1u);
+  EXPECT_EQ(back->tiers[0].tier, Tier::Low);
+  EXPECT_TRUE(back->tiers[0].config == low);
+  EXPECT_EQ(back->gpu, "mali-g57");
+
+  auto bad = [&](const std::string& t) {
+    std::string e;
+    EXPECT_FALSE(tune::parseChoices("t.json", t, m, &e)) << t;
+    return e;
+  };
+  EXPECT_EQ(bad(R"({"material": "red_plastic", "tiers": {"mid": {"config": {"specular": "phong"}}}})"),
+            "t.json: error: /tiers/mid/config/specular: unknown option 'phong' (known: ggx_smith, ggx_fastv, "
+            "fused_hammon, zioma, lut)");
+  EXPECT_EQ(bad(R"({"material": "red_plastic", "tiers": {"mid": {"config": {"shading": "x"}}}})"),
+            "t.json: error: /tiers/mid/config/shading: unknown axis 'shading'");
+  EXPECT_EQ(bad(R"({"material": "brushed_gold", "tiers": {}})"),
+            "t.json: error: /material: the file tunes 'brushed_gold', not 'red_plastic'");
+  EXPECT_EQ(bad(R"({"material": "red_plastic"})"), "t.json: error: /tiers: missing: the tuned tiers");
+  EXPECT_EQ(tune::choicesPath("examples/materials/red_plastic.mat"), "examples/materials/red_plastic.tuning.json");
+}
+
+TEST(TuneSearch, CandidatesAreEveryCombinationOnceWithTheTiersAsShippedAmongThem) {
+  const facet::ir::Material m = example("red_plastic");
+  const std::vector<TierConfig> all = tune::candidates(m);
+  // specular 5 × diffuse 2 × (split-sum with and without compensation, analytic, two-mip) 4 ×
+  // SH bands 2 × colour space 2 × precision 2 × dominant direction 2: no clear coat, anisotropy
+  // or ambient occlusion in red_plastic.
+  EXPECT_EQ(all.size(), 5u * 2 * 4 * 2 * 2 * 2 * 2);
+  for (size_t i = 0; i < all.size(); ++i)
+    for (size_t j = i + 1; j < all.size(); ++j) ASSERT_FALSE(all[i] == all[j]) << i << " " << j;
+  for (const facet::eval::Configuration& c : facet::eval::configurations(m, {Tier::High, Tier::Mid, Tier::Low}, false))
+    EXPECT_NE(std::find(all.begin(), all.end(), tune::withAxesOf(m, all[0], c.config)), all.end()) << c.name;
+  EXPECT_EQ(tune::candidates(example("car_paint")).size() % all.size(), 0u);  // its clear coat multiplies
+  EXPECT_GT(tune::candidates(example("car_paint")).size(), all.size());
+}
+
+TEST(TuneSearch, TargetGpuIsACycleCalibration) {
+  std::string error;
+  EXPECT_TRUE(tune::targetGpu("mali-g57", &error));
+  EXPECT_TRUE(tune::targetGpu("mali-g52", &error));
+  EXPECT_FALSE(tune::targetGpu("adreno-630", &error));
+  EXPECT_NE(error.find("not cycles"), std::string::npos) << error;
+  EXPECT_FALSE(tune::targetGpu("mali-t880", &error));
+  EXPECT_NE(error.find("not a calibrated GPU"), std::string::npos) << error;
+}
+
+// The cheapest that meets each budget, the same with one and two threads; a raised budget gives a
+// configuration at least as accurate, strictly more where the old one fails it; a budget none
+// meets names the tier, the best reached and its cost.
+TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration) {
+  const facet::ir::Material m = example("red_plastic");
+  tune::TuneOptions o = tinyGrid();
+  o.space = smallSpace(m);
+  o.tiers = {Tier::Mid, Tier::Low};
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 36;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 28;
+  o.jobs = 1;
+  facet::eval::EvalError error;
+  auto one = tune::tune(m, o, &error);
+  ASSERT_TRUE(one) << error.message;
+  o.jobs = 2;
+  auto two = tune::tune(m, o, &error);
+  ASSERT_TRUE(two) << error.message;
+  ASSERT_EQ(one->tiers.size(), 2u);
+  for (size_t t = 0; t < 2; ++t) {
+    ASSERT_TRUE(one->tiers[t].chosen) << one->tiers[t].failure;
+    ASSERT_TRUE(two->tiers[t].chosen);
+    EXPECT_TRUE(one->tiers[t].chosen->result.configuration.config == two->tiers[t].chosen->result.configuration.config);
+    EXPECT_EQ(one->tiers[t].chosen->cost.total, two->tiers[t].chosen->cost.total);
+    EXPECT_EQ(one->tiers[t].chosen->result.error.psnr, two->tiers[t].chosen->result.error.psnr);
+  }
+  EXPECT_EQ(tune::markdownReport(*one), tune::markdownReport(*two));
+  EXPECT_EQ(tune::jsonReport(*one), tune::jsonReport(*two));
+  // Nothing rendered and cheaper meets the budget: the choice is the cheapest that does.
+  for (const tune::TierOutcome& t : one->tiers)
+    for (const tune::Scored& s : one->front)
+      if (s.cost.total < t.chosen->cost.total) {
+        EXPECT_FALSE(tune::meets(s, t.budget, one->referenceFurnaceGain)) << s.result.configuration.name;
+      }
+  EXPECT_LT(one->rendered, o.space.size());  // the pruning rendered fewer than the space holds
+
+  const tune::Scored before = *one->tiers[1].chosen;  // low at 28 dB
+  o.budgets.tiers[Tier::Low].minPsnrDb = before.result.error.psnr + 0.5;
+  auto raised = tune::tune(m, o, &error);
+  ASSERT_TRUE(raised) << error.message;
+  ASSERT_TRUE(raised->tiers[1].chosen) << raised->tiers[1].failure;
+  EXPECT_GT(raised->tiers[1].chosen->result.error.psnr, before.result.error.psnr);
+  EXPECT_GE(raised->tiers[1].chosen->cost.total, before.cost.total);
+
+  o.budgets.tiers[Tier::Low].minPsnrDb = 150;
+  auto none = tune::tune(m, o, &error);
+  ASSERT_TRUE(none) << error.message;
+  ASSERT_FALSE(none->tiers[1].chosen);
+  ASSERT_TRUE(none->tiers[1].best);
+  EXPECT_NE(none->tiers[1].failure.find("tier low: no configuration meets its budget (PSNR ≥ 150.0 dB"),
+            std::string::npos)
+      << none->tiers[1].failure;
+  EXPECT_NE(none->tiers[1].failure.find("the best reached is"), std::string::npos);
+  EXPECT_FALSE(tune::choicesOf(*none));  // nothing partial to --write
+}
+
+// The gate: committed choices re-scored; a worse configuration in their place fails with figures.
+TEST(TuneGate, CommittedChoicesPassAndAWorseOneFailsWithItsFigures) {
+  const facet::ir::Material m = example("red_plastic");
+  tune::TuneOptions o = tinyGrid();
+  const TierConfig high = facet::eval::configurations(m, {Tier::High}, false).at(1).config;
+  TierConfig worse = high;
+  worse.specular = facet::permutations::SpecularModel::Lut;
+  facet::eval::EvalError error;
+  auto report = tune::rescore(m, {{Tier::High, high}, {Tier::Low, worse}}, o, &error);
+  ASSERT_TRUE(report) << error.message;
+  ASSERT_EQ(report->tiers.size(), 2u);
+  EXPECT_TRUE(report->tiers[0].chosen) << report->tiers[0].failure;
+  // The lut lobe in place of high's GGX: far below high's 50 dB, fine for low's 34 dB.
+  EXPECT_TRUE(report->tiers[1].chosen) << report->tiers[1].failure;
+  auto failing = tune::rescore(m, {{Tier::High, worse}}, o, &error);
+  ASSERT_TRUE(failing) << error.message;
+  ASSERT_FALSE(failing->tiers[0].chosen);
+  EXPECT_NE(
+      failing->tiers[0].failure.find("tier high: the tuned configuration no longer meets its budget (PSNR ≥ 50.0 dB"),
+      std::string::npos)
+      << failing->tiers[0].failure;
+  EXPECT_NE(failing->tiers[0].failure.find(" dB, furnace "), std::string::npos);
+}

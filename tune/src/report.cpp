@@ -1,0 +1,162 @@
+#include "facet/tune/report.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "facet/eval/configurations.h"
+
+namespace facet::tune {
+namespace {
+
+using json = nlohmann::json;
+
+std::string fixed(double v, int digits) {
+  if (std::isinf(v)) return "∞";
+  if (std::isnan(v)) return "–";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+// The axes where `config` differs from `from`: "specular fused_hammon → lut, sh_bands 3 → 2".
+std::string changes(const permutations::TierConfig& from, const permutations::TierConfig& to) {
+  std::string out;
+  for (const eval::Axis& axis : eval::axes()) {
+    const std::string a = axis.get(from), b = axis.get(to);
+    if (a != b) out += (out.empty() ? "" : ", ") + std::string(axis.name) + " " + a + " → " + b;
+  }
+  return out.empty() ? "as shipped" : out;
+}
+
+std::string costDefinition(const TuneReport& r) {
+  return r.gpu + " cycles per pixel: the calibrated estimate of the fragment stage of <tier>.dir1 + " +
+         fixed(r.verticesPerPixel, 3) + " vertices per pixel × the cost model's vertex cycles";
+}
+
+std::string budgetText(const TierBudget& b) {
+  std::string out = "≥ " + fixed(b.minPsnrDb, 1) + " dB";
+  if (b.noEnergyGain) out += ", no energy gain";
+  if (b.maxCost) out += ", cost ≤ " + fixed(*b.maxCost, 3);
+  return out;
+}
+
+json scoredJson(const Scored& s, const TuneReport& r) {
+  json j = json::object();
+  j["name"] = s.result.configuration.name;
+  json config = json::object();
+  for (const eval::Axis& axis : eval::axes()) config[axis.name] = axis.get(s.result.configuration.config);
+  j["config"] = config;
+  j["cost"] = s.cost.total;
+  j["fragment"] = s.cost.fragment;
+  j["vertex_model_cycles"] = s.cost.vertex;
+  json beside = json::object();
+  for (size_t i = 0; i < r.beside.size() && i < s.besideFragment.size(); ++i) beside[r.beside[i]] = s.besideFragment[i];
+  j["fragment_beside"] = beside;
+  j["psnr_db"] = std::isinf(s.result.error.psnr) ? json(nullptr) : json(s.result.error.psnr);
+  j["white_furnace_gain"] = std::isnan(s.result.furnaceGain) ? json(nullptr) : json(s.result.furnaceGain);
+  j["pareto"] = s.pareto;
+  return j;
+}
+
+}  // namespace
+
+std::vector<std::string> summaryLines(const TuneReport& r) {
+  std::vector<std::string> out;
+  for (const TierOutcome& o : r.tiers) {
+    const std::string tier = permutations::toString(o.tier);
+    if (!o.chosen) {
+      out.push_back(o.failure);
+      continue;
+    }
+    std::string line = tier + ": ";
+    if (o.shipped)
+      line += fixed(o.shipped->cost.total, 3) + " → " + fixed(o.chosen->cost.total, 3) + " " + r.gpu + " cycles, " +
+              fixed(o.shipped->result.error.psnr, 1) + " → " + fixed(o.chosen->result.error.psnr, 1) + " dB (" +
+              budgetText(o.budget) +
+              "): " + changes(o.shipped->result.configuration.config, o.chosen->result.configuration.config);
+    else
+      line += fixed(o.chosen->cost.total, 3) + " " + r.gpu + " cycles, " + fixed(o.chosen->result.error.psnr, 1) +
+              " dB: meets " + budgetText(o.budget);
+    out.push_back(line);
+  }
+  return out;
+}
+
+std::string markdownReport(const TuneReport& r) {
+  std::string md = "# matc tune: " + r.material + "\n\n";
+  md += "Cost: " + costDefinition(r) +
+        " (docs/tune.md). Error: PSNR against `reference` on the evaluation grid, "
+        "both views, mediump rounded to binary16 (`--fp16-emulation`). White furnace: reference " +
+        fixed(r.referenceFurnaceGain, 3) + ".\n\n";
+  md += std::to_string(r.candidates) + " candidates costed, " + std::to_string(r.rendered) + " rendered.\n\n";
+  md +=
+      "| tier | budget | before: cost | dB | after: cost | dB | furnace | change "
+      "|\n|---|---|--:|--:|--:|--:|--:|---|\n";
+  for (const TierOutcome& o : r.tiers) {
+    md += "| " + std::string(permutations::toString(o.tier)) + " | " + budgetText(o.budget) + " | ";
+    md += o.shipped ? fixed(o.shipped->cost.total, 3) + " | " + fixed(o.shipped->result.error.psnr, 1) : "– | –";
+    if (o.chosen)
+      md += " | " + fixed(o.chosen->cost.total, 3) + " | " + fixed(o.chosen->result.error.psnr, 1) + " | " +
+            fixed(o.chosen->result.furnaceGain, 3) + " | " +
+            (o.shipped ? changes(o.shipped->result.configuration.config, o.chosen->result.configuration.config)
+                       : o.chosen->result.configuration.name) +
+            " |\n";
+    else
+      md += " | – | – | – | **" + o.failure + "** |\n";
+  }
+  if (!r.front.empty()) {
+    md += "\n## Rendered candidates, cheapest first (★ on the front: nothing both cheaper and more accurate)\n\n";
+    md += "| cost | fragment | vertex (model) |";
+    for (const std::string& g : r.beside) md += " " + g + " fragment |";
+    md += " dB | furnace | configuration (changes from reference) |\n|--:|--:|--:|";
+    for (size_t i = 0; i < r.beside.size(); ++i) md += "--:|";
+    md += "--:|--:|---|\n";
+    for (const Scored& s : r.front) {
+      md += "| " + fixed(s.cost.total, 3) + (s.pareto ? " ★" : "") + " | " + fixed(s.cost.fragment, 3) + " | " +
+            fixed(s.cost.vertex, 3) + " |";
+      for (double b : s.besideFragment) md += " " + fixed(b, 3) + " |";
+      md += " " + fixed(s.result.error.psnr, 1) + " | " + fixed(s.result.furnaceGain, 3) + " | " +
+            s.result.configuration.name + " |\n";
+    }
+  }
+  return md;
+}
+
+std::string jsonReport(const TuneReport& r) {
+  json j = json::object();
+  j["material"] = r.material;
+  j["gpu"] = r.gpu;
+  j["cost"] = costDefinition(r);
+  j["vertices_per_pixel"] = r.verticesPerPixel;
+  j["beside"] = r.beside;
+  j["reference_white_furnace_gain"] = r.referenceFurnaceGain;
+  j["candidates"] = r.candidates;
+  j["rendered"] = r.rendered;
+  j["tiers"] = json::array();
+  for (const TierOutcome& o : r.tiers) {
+    json t = json::object();
+    t["tier"] = permutations::toString(o.tier);
+    t["min_psnr_db"] = o.budget.minPsnrDb;
+    t["no_energy_gain"] = o.budget.noEnergyGain;
+    t["max_cost"] = o.budget.maxCost ? json(*o.budget.maxCost) : json(nullptr);
+    t["before"] = o.shipped ? scoredJson(*o.shipped, r) : json(nullptr);
+    t["after"] = o.chosen ? scoredJson(*o.chosen, r) : json(nullptr);
+    t["best_reached"] = o.best ? scoredJson(*o.best, r) : json(nullptr);
+    t["failure"] = o.failure.empty() ? json(nullptr) : json(o.failure);
+    j["tiers"].push_back(t);
+  }
+  j["front"] = json::array();
+  for (const Scored& s : r.front) j["front"].push_back(scoredJson(s, r));
+  return j.dump(2) + "\n";
+}
+
+std::vector<package::OutputFile> reportFiles(const TuneReport& report, const std::string& outDir) {
+  auto bytes = [](const std::string& s) { return std::vector<uint8_t>(s.begin(), s.end()); };
+  const std::filesystem::path dir(outDir);
+  return {{(dir / "report.md").string(), bytes(markdownReport(report))},
+          {(dir / "report.json").string(), bytes(jsonReport(report))}};
+}
+
+}  // namespace facet::tune
