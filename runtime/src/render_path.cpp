@@ -38,7 +38,8 @@ PostPath effectivePostPath(PostPath requested, double renderScale) {
 }
 
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
-                                       HdrFormat hdrFormat, uint32_t samples, bool fxaa, double renderScale) {
+                                       HdrFormat hdrFormat, uint32_t samples, bool fxaa, double renderScale,
+                                       uint32_t shadowAtlasSize) {
   ForwardPostGraph g;
   const uint32_t hdrBytes = bytesPerPixel(hdrFormat);
   path = effectivePostPath(path, renderScale);
@@ -49,7 +50,13 @@ ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath
   g.depth = g.graph.addResource({"depth", fw, fh, 4, true, false, samples});
   g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true, 1});
   g.toneMapped = fxaa ? g.graph.addResource({"tonemapped", width, height, 4, false, false, 1}) : g.ldr;
+  if (shadowAtlasSize > 0) {
+    g.shadowAtlas =
+        g.graph.addResource({"shadow", shadowAtlasSize, shadowAtlasSize, kShadowAtlasBytesPerTexel, true, false, 1});
+    g.shadowPass = g.graph.addPass({"shadow", {}, {g.shadowAtlas}, {g.shadowAtlas}, {}});
+  }
   fg::PassDesc forward{"forward", {}, {g.hdrSamples, g.depth}, {g.hdrSamples, g.depth}, {}};
+  if (shadowAtlasSize > 0) forward.reads.push_back({g.shadowAtlas, fg::ReadKind::WholeTexture});
   if (samples > 1) forward.resolves.push_back(g.hdr);
   g.forwardPass = g.graph.addPass(forward);
   const fg::ReadKind read = path == PostPath::Separate ? fg::ReadKind::WholeTexture : fg::ReadKind::OwnPixel;
