@@ -322,6 +322,11 @@ GlBackend::~GlBackend() {
 }
 
 bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
+  // Receivers drawn without their shadow would be a silently wrong image (docs/shadows.md).
+  if (frame.shadow) {
+    *error = "the sun casts shadows (/sun/castShadows), which this backend does not draw yet (docs/shadows.md)";
+    return false;
+  }
   if (!context_->makeCurrent(error)) return false;
   if (frame.width == 0 || frame.height == 0 || frame.width > static_cast<uint32_t>(maxTargetSize_) ||
       frame.height > static_cast<uint32_t>(maxTargetSize_)) {

@@ -67,7 +67,7 @@ std::string bloomSettingsError(const char* what, const BloomSettings& bloom) {
 
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
                                        HdrFormat hdrFormat, uint32_t samples, bool fxaa, double renderScale,
-                                       int bloomLevels) {
+                                       int bloomLevels, uint32_t shadowAtlasSize) {
   ForwardPostGraph g;
   const uint32_t hdrBytes = bytesPerPixel(hdrFormat);
   path = effectivePostPath(path, renderScale, bloomLevels > 0);
@@ -78,7 +78,13 @@ ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath
   g.depth = g.graph.addResource({"depth", fw, fh, 4, true, false, samples});
   g.ldr = g.graph.addResource({"ldr", width, height, 4, false, true, 1});
   g.toneMapped = fxaa ? g.graph.addResource({"tonemapped", width, height, 4, false, false, 1}) : g.ldr;
+  if (shadowAtlasSize > 0) {
+    g.shadowAtlas =
+        g.graph.addResource({"shadow", shadowAtlasSize, shadowAtlasSize, kShadowAtlasBytesPerTexel, true, false, 1});
+    g.shadowPass = g.graph.addPass({"shadow", {}, {g.shadowAtlas}, {g.shadowAtlas}, {}});
+  }
   fg::PassDesc forward{"forward", {}, {g.hdrSamples, g.depth}, {g.hdrSamples, g.depth}, {}};
+  if (shadowAtlasSize > 0) forward.reads.push_back({g.shadowAtlas, fg::ReadKind::WholeTexture});
   if (samples > 1) forward.resolves.push_back(g.hdr);
   g.forwardPass = g.graph.addPass(forward);
   const fg::ReadKind read = path == PostPath::Separate ? fg::ReadKind::WholeTexture : fg::ReadKind::OwnPixel;

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -21,6 +22,7 @@
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/scene_image_budget.h"
+#include "facet/runtime/sun_shadow.h"
 #include "facet/runtime/texture_checks.h"
 #include "facet/runtime/vignette.h"
 
@@ -93,15 +95,55 @@ void storePunctual(const PunctualLight& light, double exposure, abi::PunctualLig
   store(out->spotScaleOffset, glm::dvec3(scale, offset, 0));
 }
 
+struct MeshBounds {
+  glm::dvec3 center;
+  double radius = 0;
+};
+
+// The sphere about the centre of the mesh's box that holds every vertex.
+MeshBounds meshBounds(const Mesh& mesh) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  const size_t count = mesh.vertices.size() / abi::kVertexFloats;
+  auto position = [&](size_t v) {
+    const float* p = &mesh.vertices[v * abi::kVertexFloats];
+    return glm::dvec3(p[0], p[1], p[2]);
+  };
+  for (size_t v = 0; v < count; ++v) {
+    lo = glm::min(lo, position(v));
+    hi = glm::max(hi, position(v));
+  }
+  MeshBounds b;
+  if (count == 0) return b;
+  b.center = (lo + hi) * 0.5;
+  for (size_t v = 0; v < count; ++v) b.radius = std::max(b.radius, glm::length(position(v) - b.center));
+  return b;
+}
+
+// The shadow pass of a scene whose sun casts: the cascades fitted to the casters, each with the
+// casters that can shadow it and the biases in depth (docs/shadows.md, "Shadow pass").
+ShadowPassDesc shadowPass(const Scene& scene, const std::vector<CasterBounds>& bounds, std::vector<DrawItem> casters) {
+  const SunShadowFit fit = fitSunShadow(scene, bounds);
+  ShadowPassDesc pass;
+  pass.atlasSize = scene.shadows.atlasSize;
+  pass.uniforms = fit.uniforms;
+  for (const SunCascade& c : fit.cascades) {
+    ShadowCascadeDesc d;
+    store(d.viewProjection, glm::mat4(c.viewProjection));
+    std::copy(c.viewport.begin(), c.viewport.end(), d.viewport);
+    // A texel's width along the rays, in window depth, is texelSize / depthRange.
+    d.depthBias = float(scene.shadows.depthBias * c.texelSize / c.depthRange);
+    d.slopeBias = float(scene.shadows.slopeBias);
+    for (size_t i = 0; i < bounds.size(); ++i)
+      if (casterInCascade(c, bounds[i], scene.sun->direction)) d.casters.push_back(uint32_t(i));
+    pass.cascades.push_back(std::move(d));
+  }
+  pass.casters = std::move(casters);
+  return pass;
+}
+
 }  // namespace
 
 std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::string& packageDir, std::string* error) {
-  // The compiler builds shadow receivers, but the renderer has no shadow pass yet: a scene asking
-  // for the sun's shadow is refused rather than drawn without it (docs/shadows.md, "Status").
-  if (sunShadowCascades(scene) > 0) {
-    *error = "the sun casts shadows (/sun/castShadows), which this renderer does not draw yet (docs/shadows.md)";
-    return nullptr;
-  }
   if (!checkSceneImageBudget(scene, error)) return nullptr;  // before any image is decoded
   std::unique_ptr<SceneFrame> out(new SceneFrame());
   auto tier = permutations::tierFromString(scene.tier);
@@ -159,13 +201,19 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   // The background is the environment's mean (exact for a constant sky): no backdrop is drawn.
   for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 
-  std::map<std::string, size_t> loaded;  // material name -> index in materials_
+  const int cascades = int(sunShadowCascades(scene));
+  // Material name, and whether its objects receive the sun's shadow -> index in materials_: a
+  // material whose objects differ in receiving is loaded once per variant.
+  std::map<std::pair<std::string, bool>, size_t> loaded;
+  std::vector<CasterBounds> casterBounds;
+  std::vector<DrawItem> casters;
   // The scene's glTF files share one budget (vertices, indices, bytes read), each checked before
   // its mesh is built: a scene may name 4096 files.
   GltfBudget meshBudget;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    auto [it, fresh] = loaded.emplace(o.material, out->materials_.size());
+    const bool receives = cascades > 0 && o.receiveShadows;
+    auto [it, fresh] = loaded.emplace(std::make_pair(o.material, receives), out->materials_.size());
     if (fresh) {
       std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
       auto loadedMaterial = LoadedMaterial::load(path, error);
@@ -178,8 +226,15 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       }
       // The variant, its shaders and package textures, the colour encoding: as for an app's
       // Material (runtime/material_instance.h).
-      auto material = Material::create(std::move(*loadedMaterial), {scene.tier, scene.sun.has_value(), lights}, error);
+      auto material = Material::create(std::move(*loadedMaterial),
+                                       {scene.tier, scene.sun.has_value(), lights, receives ? cascades : 0}, error);
       if (!material) return nullptr;
+      const package::MaterialInfo& info = material->loaded().info();
+      if (cascades > 0 && permutations::blendingCastsShadows(info.blending) && !out->depthPrograms_.count(o.material)) {
+        auto depth = material->loaded().program(permutations::depthKey(*tier).toString(), error);
+        if (!depth) return nullptr;
+        out->depthPrograms_[o.material] = std::make_unique<ShaderProgram>(std::move(*depth));
+      }
       out->materials_.push_back(std::move(material));
     }
     const Material& material = *out->materials_[it->second];
@@ -264,8 +319,21 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       if (auto given = o.samplers.find(t.param); given != o.samplers.end()) binding.sampler = given->second;
       draw.textures.push_back(std::move(binding));
     }
+    // A caster: drawn into the atlas with its material's depth-only program, bounded by its mesh's
+    // sphere carried into the world (the largest axis scale bounds the radius).
+    if (auto depth = out->depthPrograms_.find(o.material); depth != out->depthPrograms_.end() && o.castShadows) {
+      DrawItem caster = draw;
+      caster.program = depth->second.get();
+      casters.push_back(std::move(caster));
+      const MeshBounds bounds = meshBounds(*draw.mesh);
+      const glm::dmat4 m = modelMatrix(o);
+      const double scale =
+          std::max({glm::length(glm::dvec3(m[0])), glm::length(glm::dvec3(m[1])), glm::length(glm::dvec3(m[2]))});
+      casterBounds.push_back({glm::dvec3(m * glm::dvec4(bounds.center, 1.0)), bounds.radius * scale});
+    }
     out->frame_.draws.push_back(std::move(draw));
   }
+  if (cascades > 0) out->frame_.shadow = shadowPass(scene, casterBounds, std::move(casters));
   mergeInstances(&out->frame_.draws);
   // Opaque draws first, in scene order (of each draw's first object); blended ones after them,
   // far to near, so each blends over everything behind it (sorted by object centre: exact for

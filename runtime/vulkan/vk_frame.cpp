@@ -29,6 +29,10 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
     *error = why;
     return false;
   }
+  if (frame.shadow) {
+    *error = "the sun casts shadows (/sun/castShadows), which the Vulkan backend does not draw yet (docs/shadows.md)";
+    return false;
+  }
   std::unordered_set<const Mesh*> checkedMeshes;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];

@@ -253,6 +253,37 @@ TEST(FrameGraph, BloomDownsampleChainSamplesWholeTexturesAndDoesNotMerge) {
   EXPECT_EQ(c.traffic[hdr].sampledBytes, 2 * kPixels * 8);
 }
 
+// The sun's shadow pass: its own render pass before the forward one, which samples the atlas
+// whole; the forward and post passes still merge. The atlas's bytes are stored once and sampled
+// once per frame (docs/shadows.md, "Shadow pass").
+TEST(FrameGraph, TheShadowAtlasIsStoredAndSampledByTheForwardPass) {
+  constexpr uint32_t kAtlas = 2048;
+  constexpr uint64_t kAtlasBytes = uint64_t{kAtlas} * kAtlas * kShadowAtlasBytesPerTexel;
+  ForwardPostGraph g =
+      buildForwardPostGraph(kW, kH, PostPath::Merged, false, HdrFormat::Rgba16Float, 1, false, 1.0, 0, kAtlas);
+  const CompiledGraph c = compileOrFail(g.graph);
+  ASSERT_EQ(c.renderPasses.size(), 2u) << describe(g.graph, c);
+  EXPECT_EQ(c.renderPasses[0].subpasses, (std::vector<uint32_t>{g.shadowPass}));
+  EXPECT_EQ(c.renderPasses[1].subpasses, (std::vector<uint32_t>{g.forwardPass, g.postPass}));
+  const Attachment* atlas = c.attachment(0, g.shadowAtlas);
+  ASSERT_TRUE(atlas);
+  EXPECT_EQ(atlas->load, LoadOp::Clear);
+  EXPECT_EQ(atlas->store, StoreOp::Store);
+  EXPECT_EQ(c.attachment(1, g.shadowAtlas), nullptr);
+  EXPECT_EQ(c.traffic[g.shadowAtlas].storedBytes, kAtlasBytes);
+  EXPECT_EQ(c.traffic[g.shadowAtlas].sampledBytes, kAtlasBytes);
+  EXPECT_EQ(c.traffic[g.shadowAtlas].loadedBytes, 0u);
+  EXPECT_TRUE(c.traffic[g.hdr].transient);
+  EXPECT_EQ(c.storedBytes(), kPixels * 4 + kAtlasBytes);
+  EXPECT_NE(describe(g.graph, c).find("  shadow     loaded          0 B  stored    8388608 B  sampled    8388608 B"),
+            std::string::npos)
+      << describe(g.graph, c);
+  // Without a shadow: no such pass or image.
+  const ForwardPostGraph none = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
+  EXPECT_EQ(none.shadowPass, UINT32_MAX);
+  EXPECT_EQ(none.graph.resourceCount(), g.graph.resourceCount() - 1);
+}
+
 TEST(FrameGraph, PassesWhoseOutputsNobodyReadsAreCulled) {
   ForwardPostGraph g = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
   const ResourceId debug = g.graph.addResource({"debug", kW, kH, 4, false, false});

@@ -192,6 +192,24 @@ TEST(GlBackend, ClearColourReachesHdrAndLdrTargets) {
   EXPECT_GT(previousLdr, 0);
 }
 
+// No shadow pass yet: a frame whose sun casts is refused, naming the backend, never drawn with
+// its receivers unshadowed.
+TEST(GlBackend, AFrameWithAShadowPassIsRefusedUntilTheBackendDrawsIt) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+  FrameDesc frame = makeFrame(8, 8);
+  frame.shadow = ShadowPassDesc{};
+  frame.shadow->atlasSize = 256;
+  FrameResult result;
+  std::string error;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_EQ(
+      error,
+      "GL backend: the sun casts shadows (/sun/castShadows), which this backend does not draw yet (docs/shadows.md)");
+  frame.shadow.reset();
+  EXPECT_TRUE(backend->render(frame, &result, &error)) << error;
+}
+
 TEST(GlBackend, TriangleCoversExpectedPixelsUpright) {
   auto backend = makeBackend();
   ASSERT_NE(backend, nullptr);

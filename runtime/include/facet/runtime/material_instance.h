@@ -36,6 +36,7 @@ struct VariantRequest {
   std::string tier = "high";
   bool sun = true;
   int pointLights = 0;
+  int shadowCascades = 0;  // the sun's cascades the variant receives (0: no shadow; docs/shadows.md)
 };
 
 class MaterialInstance;

@@ -155,6 +155,35 @@ struct ColorLutTexels {
   std::vector<uint16_t> rgba;
 };
 
+// One cascade of the sun's shadow pass (runtime/sun_shadow.h: SunCascade).
+struct ShadowCascadeDesc {
+  // World → GL clip of the cascade's orthographic view. The pass keeps GL's clip y (a Vulkan
+  // pass converts z to [0, 1] only): atlas row r is window y = r in both APIs.
+  float viewProjection[16] = {};
+  uint32_t viewport[4] = {};  // x, y, width, height in atlas texels
+  // The casters' depth bias: `depthBias` in window depth (the scene's depthBias texels ×
+  // texelSize / depthRange: a depth offset of that many texels' width along the rays), and
+  // `slopeBias` the factor of the depth slope per texel (the scene's slopeBias texels: the depth a
+  // surface changes over that many texels). The backend turns depthBias into its format's units.
+  float depthBias = 0;
+  float slopeBias = 0;
+  std::vector<uint32_t> casters;  // indices into ShadowPassDesc::casters that can shadow the cascade
+};
+
+// The sun's shadow pass (docs/shadows.md, "Shadow pass"): the casters drawn, per cascade, into a
+// square D16 atlas cleared to depth 1, before the forward pass; the forward pass's receivers
+// (`.shN` variants) sample it (abi::kShadowAtlasBinding) with depth compare, and read `uniforms`
+// (abi::kShadowBinding).
+struct ShadowPassDesc {
+  uint32_t atlasSize = 0;
+  std::vector<ShadowCascadeDesc> cascades;
+  // The casters with their materials' depth-only programs (`<tier>.depth`), parameters and
+  // textures (a masked material's alpha test reads them); the frame block's viewProjection is
+  // the cascade's.
+  std::vector<DrawItem> casters;
+  abi::ShadowUniforms uniforms{};
+};
+
 struct FrameDesc {
   uint32_t width = 0;
   uint32_t height = 0;
@@ -166,6 +195,9 @@ struct FrameDesc {
   // colorGrading needs colorLut (uploaded when its bytes change), vignette reads postUniforms.
   const ColorLutTexels* colorLut = nullptr;
   abi::PostUniforms postUniforms{};
+  // The sun's shadow, when the scene's sun casts (SceneFrame): a backend that does not draw it
+  // refuses the frame rather than draw the receivers unshadowed.
+  std::optional<ShadowPassDesc> shadow;
 };
 
 // Empty, or why the frame's instances are out of bounds: the first draw with none or more than

@@ -75,7 +75,16 @@ struct ForwardPostGraph {
   // when bloom is off.
   std::vector<fg::ResourceId> bloom;
   std::vector<uint32_t> bloomDownPasses, bloomUpPasses;  // up passes from the coarsest: level n-2 first
+  // The sun's shadow atlas (D16, shadowAtlasSize²) and the pass that draws the casters into it
+  // before the forward pass, which samples it whole (a texture, never its own pixel): the atlas
+  // is stored, and sampled from memory. UINT32_MAX without a shadow.
+  fg::ResourceId shadowAtlas = UINT32_MAX;
+  uint32_t shadowPass = UINT32_MAX;
 };
+
+// Bytes per texel of the shadow atlas: D16 (docs/shadows.md: 1/65536 steps of the cascade's
+// depth range, finer than a receiver's biases).
+inline constexpr uint32_t kShadowAtlasBytesPerTexel = 2;
 
 // path must be Merged or Separate. readBackHdr: HDR is also read after the frame (tests, eval),
 // which forces it to be stored. samples: the forward pass's MSAA sample count (1, 2 or 4).
@@ -84,9 +93,12 @@ struct ForwardPostGraph {
 // resolution), so the merged path becomes the separate one. bloomLevels > 0: the bloom chain of
 // that many levels (fewer for a small frame, bloomLevelSizes), in the HDR format; its downsample
 // samples the whole HDR image, so HDR is stored and the merged path becomes the separate one.
+// shadowAtlasSize > 0: a shadow pass into a square D16 atlas of that size comes first, and the
+// forward pass samples it.
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
                                        HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1,
-                                       bool fxaa = false, double renderScale = 1.0, int bloomLevels = 0);
+                                       bool fxaa = false, double renderScale = 1.0, int bloomLevels = 0,
+                                       uint32_t shadowAtlasSize = 0);
 
 // The path a backend runs: a render scale below 1, or bloom (its chain samples the whole HDR
 // image, which must be stored anyway), turns the merged path into the separate one.

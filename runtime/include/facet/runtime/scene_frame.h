@@ -30,8 +30,10 @@ class SceneFrame {
  private:
   SceneFrame() = default;
   const Texture* texture(const LoadedMaterial::SampledTexture& t, std::string* error);
-  std::vector<std::shared_ptr<Material>> materials_;  // one per package the scene names
-  ColorEncoding colors_ = ColorEncoding::Linear;      // what the scene's tier expects
+  std::vector<std::shared_ptr<Material>> materials_;  // one per package the scene names (and receiving)
+  // Each casting material's depth-only program (`<tier>.depth`), by material name.
+  std::map<std::string, std::unique_ptr<ShaderProgram>> depthPrograms_;
+  ColorEncoding colors_ = ColorEncoding::Linear;  // what the scene's tier expects
   // Built-in meshes by name, glTF meshes by resolved path.
   std::map<std::string, std::unique_ptr<Mesh>> meshes_;
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
