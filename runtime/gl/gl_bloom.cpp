@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "gl_post_inputs.h"
 #include "gl_targets.h"
 
 namespace facet::runtime::gl {
@@ -25,17 +26,8 @@ bool buildBloomProgram(const std::string& vertex, const std::string& fragment, b
     return false;
   }
   glUniform1i(source, GLint(abi::kPostHdrBinding));
-  if (readsBlock) {
-    const std::string name(abi::kPostBlock.name);
-    const GLuint index = glGetUniformBlockIndex(program, name.c_str());
-    if (index == GL_INVALID_INDEX) {
-      *error = "bloom threshold shader has no uniform block '" + name + "'";
-      glUseProgram(0);
-      return false;
-    }
-    glUniformBlockBinding(program, index, abi::kPostUniformsBinding);
-  }
   glUseProgram(0);
+  if (readsBlock && !bindPostBlock(program, "bloom threshold shader", error)) return false;
   return checkGlError("bloom programs", error);
 }
 

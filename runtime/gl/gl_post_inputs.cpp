@@ -4,6 +4,18 @@
 #include "facet/runtime/vignette.h"
 
 namespace facet::runtime::gl {
+
+bool bindPostBlock(GLuint program, const std::string& what, std::string* error) {
+  const std::string name(abi::kPostBlock.name);
+  const GLuint index = glGetUniformBlockIndex(program, name.c_str());
+  if (index == GL_INVALID_INDEX) {
+    *error = what + " has no uniform block '" + name + "'";
+    return false;
+  }
+  glUniformBlockBinding(program, index, abi::kPostUniformsBinding);
+  return true;
+}
+
 namespace {
 constexpr GLsizei kLutSize = GLsizei(abi::kColorLutSize);
 constexpr size_t kLutValues = size_t(kLutSize) * kLutSize * kLutSize * 4;
@@ -54,17 +66,8 @@ bool PostInputs::pointProgram(GLuint program, std::string* error) {
     }
     glUniform1i(location, GLint(abi::kPostColorLutBinding));  // program state: once
   }
-  if (readsBlock()) {
-    const std::string name(abi::kPostBlock.name);
-    const GLuint index = glGetUniformBlockIndex(program, name.c_str());
-    if (index == GL_INVALID_INDEX) {
-      *error = "post-pass fragment shader has no uniform block '" + name + "'";
-      glUseProgram(0);
-      return false;
-    }
-    glUniformBlockBinding(program, index, abi::kPostUniformsBinding);
-  }
   glUseProgram(0);
+  if (readsBlock() && !bindPostBlock(program, "post-pass fragment shader", error)) return false;
   return checkGlError("post-pass effect inputs", error);
 }
 

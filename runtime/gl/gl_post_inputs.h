@@ -13,6 +13,10 @@
 
 namespace facet::runtime::gl {
 
+// Points a post-pass program's PostUniforms block at abi::kPostUniformsBinding; `what` names the
+// shader in the error when the program has no such block. Leaves the program unbound.
+bool bindPostBlock(GLuint program, const std::string& what, std::string* error);
+
 class PostInputs {
  public:
   // Points the linked post program's LUT sampler and block at their units/bindings and creates
