@@ -12,6 +12,7 @@
 #include <exception>
 #include <map>
 #include <memory>
+#include <optional>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -41,10 +42,14 @@ namespace {
 
 using namespace vulkan;
 
-// A single-level sampler clamped to the edge, filtering with `filter`.
-bool createClampedSampler(VkDevice device, VkFilter filter, VkSampler* out, std::string* error) {
+// A single-level sampler clamped to the edge, filtering with `filter`; with a compare op other
+// than NEVER, a depth compare sampler.
+bool createClampedSampler(VkDevice device, VkFilter filter, VkSampler* out, std::string* error,
+                          VkCompareOp compare = VK_COMPARE_OP_NEVER) {
   VkSamplerCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.compareEnable = compare != VK_COMPARE_OP_NEVER ? VK_TRUE : VK_FALSE;
+  info.compareOp = compare;
   info.magFilter = filter;
   info.minFilter = filter;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
@@ -58,6 +63,10 @@ bool createClampedSampler(VkDevice device, VkFilter filter, VkSampler* out, std:
   }
   return true;
 }
+
+// The uniform blocks of a draw's set 0: FrameUniforms, ObjectUniforms, MaterialParams and
+// ShadowUniforms (createForwardSetLayout).
+constexpr uint32_t kDrawBlocks = 4;
 
 // A pool of `count` sets of `layout` (one per frame slot) and the sets.
 bool createSlotSets(VkDevice device, VkDescriptorSetLayout layout, const std::vector<VkDescriptorPoolSize>& sizes,
@@ -132,8 +141,9 @@ class VulkanBackend final : public VulkanRenderer {
   bool createFixedObjects(std::string* error);
   bool checkSampleCount(std::string* error) const;
   bool ensureTargets(uint32_t width, uint32_t height, bool ownOutput, std::string* error);
-  bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout, VkPipeline* out,
-                   std::string* error);
+  bool pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout, bool depthOnly,
+                   VkPipeline* out, std::string* error);
+  bool ensureShadowAtlas(uint32_t size, std::string* error);
   bool uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error);
   bool ensureArena(VkDeviceSize size, std::string* error);
   bool prepareTextures(const FrameDesc& frame, std::string* error);
@@ -146,7 +156,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool outputFor(const AppImage* appImage, FrameOutput* output, std::string* error);
   TargetConfig targetConfig() const;
   bool upscales() const { return renderScale_ < 1.0; }
-  FrameObjects frameObjects(VkQueryPool timestamps) const;
+  FrameObjects frameObjects(VkQueryPool timestamps, const FrameDesc& frame) const;
   // Submits the frame's command buffer and waits for it; *cpuMilliseconds (when not null): from
   // `start` until the submission returned (FrameResult::cpuSubmitMilliseconds).
   bool submitAndWait(std::string* error, double* cpuMilliseconds, std::chrono::steady_clock::time_point start);
@@ -240,6 +250,16 @@ class VulkanBackend final : public VulkanRenderer {
   UniformBlockCache materialBlocks_;
 
   RenderTargets targets_;
+  // The sun's shadow pass (docs/shadows.md): its render pass and compare sampler, made once; the
+  // atlas and its framebuffer, made at the first frame with a shadow pass and remade when the
+  // atlas size changes. One atlas serves every frame in flight: the render pass's dependencies
+  // order a frame's writes after the previous frame's reads.
+  VkRenderPass shadowPass_ = VK_NULL_HANDLE;
+  VkSampler shadowSampler_ = VK_NULL_HANDLE;
+  Image shadowAtlas_;
+  VkFramebuffer shadowFramebuffer_ = VK_NULL_HANDLE;
+  ShadowBlocks shadowBlocks_;  // this frame's (layoutFrame)
+
   // Views and framebuffers of the app's images the post pass writes directly.
   AppImageCache appImages_;
   // What frames in flight may still use; see vk_retire.h.
@@ -248,9 +268,10 @@ class VulkanBackend final : public VulkanRenderer {
   // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
   // the queue before reusing a frame slot that one of them may still read.
   bool recordedSinceIdle_ = false;
-  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked) and its
-  // mesh's vertex layout (packed with 16-bit or fp32 positions, or full precision).
-  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout>, CachedPipeline> pipelines_;
+  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked), its
+  // mesh's vertex layout (packed with 16-bit or fp32 positions, or full precision) and the pass
+  // (forward, or the shadow pass's depth only).
+  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout, bool>, CachedPipeline> pipelines_;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -271,6 +292,10 @@ VulkanBackend::~VulkanBackend() {
   materialBlocks_.destroy();
   allocator_.destroy();  // after everything sub-allocated from it was released
   destroyRenderTargets(device, &targets_);
+  if (shadowFramebuffer_) vkDestroyFramebuffer(device, shadowFramebuffer_, nullptr);
+  destroyImage(device, &shadowAtlas_);
+  if (shadowSampler_) vkDestroySampler(device, shadowSampler_, nullptr);
+  if (shadowPass_) vkDestroyRenderPass(device, shadowPass_, nullptr);
   bloomChain_.destroy();
   // Destroying a pool frees its sets.
   for (FrameSlot& slot : slots_) {
@@ -469,7 +494,8 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
              : createForwardRenderPass(device, hdrVkFormat_, hdrOps_, depthOps_, samples_, &forwardPass_, error) &&
                    createPostRenderPass(device, ldrOps_, postOutput, &postPass_, error) &&
                    createPostRenderPass(device, ldrOps_, kAppImageLdrLayouts, &appImagePass_, error);
-  if (!passesMade || !createForwardSetLayout(device, &forwardSetLayout_, error) ||
+  if (!passesMade || !createShadowRenderPass(device, &shadowPass_, error) ||
+      !createForwardSetLayout(device, &forwardSetLayout_, error) ||
       !createPostSetLayout(device, hdrType, PostInputs::bindings(post_->effects, upscales()), &postSetLayout_, error) ||
       !createTextureSetLayout(device, &textureSetLayout_, error) ||
       !createPipelineLayout(device, {forwardSetLayout_, textureSetLayout_}, &forwardLayout_, error) ||
@@ -511,6 +537,21 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   // Nearest + clamp: the post pass reads exactly one HDR texel per output pixel.
   // Upscaling: bilinear between the smaller HDR image's texels.
   if (!createClampedSampler(device, upscales() ? VK_FILTER_LINEAR : VK_FILTER_NEAREST, &hdrSampler_, error))
+    return false;
+  // The receivers' depth compare (chunks/shadow_sun.glsl): lit when ref <= stored. Bilinear
+  // filtering of the comparisons only where the format allows it (lavapipe's D16 does not).
+  VkFormatProperties atlasProperties{};
+  vkGetPhysicalDeviceFormatProperties(ctx_.physicalDevice, kShadowAtlasFormat, &atlasProperties);
+  const VkFormatFeatureFlags atlasNeeds =
+      VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+  if ((atlasProperties.optimalTilingFeatures & atlasNeeds) != atlasNeeds) {
+    *error = "the device cannot render and sample D16 depth (the shadow atlas)";
+    return false;
+  }
+  const bool linearAtlas =
+      (atlasProperties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+  if (!createClampedSampler(device, linearAtlas ? VK_FILTER_LINEAR : VK_FILTER_NEAREST, &shadowSampler_, error,
+                            VK_COMPARE_OP_LESS_OR_EQUAL))
     return false;
 
   slots_.resize(framesInFlight_);
@@ -597,7 +638,7 @@ bool VulkanBackend::recordFrame(const FrameDesc& frame, const AppImage& target, 
     FrameOutput output;
     if (!prepareFrame(frame, &target, &slots, &output, error)) return false;
     // Not timed: the query pool would be shared by frames in flight.
-    const FrameObjects objects = frameObjects(VK_NULL_HANDLE);
+    const FrameObjects objects = frameObjects(VK_NULL_HANDLE, frame);
     if (!uploads_.record(cmd, error)) return false;
     recordPasses(cmd, objects, output, {targets_.forwardWidth, targets_.forwardHeight}, {frame.width, frame.height},
                  frame.clearColor, slots);
@@ -620,9 +661,14 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
   // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput). FXAA
   // writes the own target and the frame is copied into the app's image.
   const bool ownOutput = !appImage || !rendersDirectly(*appImage) || fxaa_;
-  if (!checkFrame(frame, ctx_.properties.limits, error) ||
-      !ensureTargets(frame.width, frame.height, ownOutput, error) || !uploadFrame(frame, slots, error) ||
-      !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) || !outputFor(appImage, output, error)) {
+  // With a shadow pass, the casters are drawn as draws of their own after the forward draws.
+  if (frame.shadow && !checkShadow(*frame.shadow, ctx_.properties.limits, error)) return false;
+  std::optional<FrameDesc> withCasters;
+  const FrameDesc& drawn = frame.shadow ? withCasters.emplace(withShadowDraws(frame)) : frame;
+  if (!checkFrame(drawn, ctx_.properties.limits, error) ||
+      !ensureTargets(frame.width, frame.height, ownOutput, error) ||
+      (frame.shadow && !ensureShadowAtlas(frame.shadow->atlasSize, error)) || !uploadFrame(drawn, slots, error) ||
+      !prepareTextures(drawn, error) || !allocateDrawSets(drawn, slots, error) || !outputFor(appImage, output, error)) {
     return false;
   }
   if (bloomOn_) {
@@ -662,7 +708,7 @@ bool VulkanBackend::renderFrame(const FrameDesc& frame, const AppImage* appImage
     std::vector<DrawSlot> slots;
     FrameOutput output;
     if (!prepareFrame(frame, appImage, &slots, &output, error)) return false;
-    const FrameObjects objects = frameObjects(timestamps_);
+    const FrameObjects objects = frameObjects(timestamps_, frame);
     VkCommandBuffer cmd = commandBuffer_;
     VkCommandBufferBeginInfo beginInfo{};
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -718,7 +764,7 @@ bool VulkanBackend::outputFor(const AppImage* appImage, FrameOutput* output, std
   return appImages_.framebuffersFor(*appImage, targets_, targetConfig(), frameNumber_, &output->framebuffers, error);
 }
 
-FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
+FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps, const FrameDesc& frame) const {
   return {path_ == PostPath::Merged,
           samples_.resolveAttachment(),
           clearInSubpass_,
@@ -732,7 +778,34 @@ FrameObjects VulkanBackend::frameObjects(VkQueryPool timestamps) const {
           bloomOn_ ? &bloomChain_ : nullptr,
           uint32_t(frameNumber_ % slots_.size()),
           timestamps,
-          slot_->arena.buffer};
+          slot_->arena.buffer,
+          frame.shadow ? &*frame.shadow : nullptr,
+          shadowPass_,
+          shadowFramebuffer_};
+}
+
+bool VulkanBackend::ensureShadowAtlas(uint32_t size, std::string* error) {
+  if (shadowAtlas_.width == size) return true;
+  VkDevice device = ctx_.device;
+  if (shadowAtlas_.image) {
+    // Frames in flight may still draw into or sample the old atlas.
+    retire_.retire([device, old = shadowAtlas_, framebuffer = shadowFramebuffer_]() mutable {
+      vkDestroyFramebuffer(device, framebuffer, nullptr);
+      destroyImage(device, &old);
+    });
+    shadowAtlas_ = Image{};
+    shadowFramebuffer_ = VK_NULL_HANDLE;
+  }
+  if (!createImage(ctx_, size, size, kShadowAtlasFormat,
+                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+                   &shadowAtlas_, error)) {
+    return false;
+  }
+  if (!createFramebuffer(device, shadowPass_, &shadowAtlas_.view, 1, size, size, &shadowFramebuffer_, error)) {
+    destroyImage(device, &shadowAtlas_);
+    return false;
+  }
+  return true;
 }
 
 TargetConfig VulkanBackend::targetConfig() const {
@@ -801,9 +874,9 @@ void VulkanBackend::writePostSet() {
   vkUpdateDescriptorSets(ctx_.device, 1, &write, 0, nullptr);
 }
 
-bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout,
+bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout, bool depthOnly,
                                 VkPipeline* out, std::string* error) {
-  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout);
+  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout, depthOnly);
   auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
@@ -828,6 +901,13 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   desc.layout = forwardLayout_;
   desc.renderPass = forwardPass_;
   desc.what = "material shaders";
+  if (depthOnly) {
+    desc.kind = PipelineKind::Depth;
+    desc.samples = VK_SAMPLE_COUNT_1_BIT;
+    desc.alphaToCoverage = false;
+    desc.renderPass = shadowPass_;
+    desc.what = "depth-only shaders";
+  }
   VkPipeline pipeline = VK_NULL_HANDLE;
   if (!createGraphicsPipeline(ctx_.device, desc, &pipeline, error)) return false;
   pipelines_[key] = CachedPipeline{program.vertexSpirv, program.fragmentSpirv, pipeline};
@@ -848,12 +928,14 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
 // Makes each draw's mesh resident, builds (or finds) its pipeline for the mesh's vertex layout,
 // then lays the frame's uniforms out in the arena and copies them in.
 bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error) {
-  const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots);
+  const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots, &shadowBlocks_);
   if (!meshes_.prepare(frame, error)) return false;
+  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     DrawSlot& slot = (*slots)[i];
     slot.mesh = meshes_.locate(frame.draws[i].mesh);
-    if (!pipelineFor(*frame.draws[i].program, frame.draws[i], slot.mesh.layout, &slot.pipeline, error)) {
+    if (!pipelineFor(*frame.draws[i].program, frame.draws[i], slot.mesh.layout, i >= forwardDraws, &slot.pipeline,
+                     error)) {
       *error = "draw " + std::to_string(i) + ": " + *error;
       return false;
     }
@@ -865,7 +947,7 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
         frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : slot_->arena.buffer;
   }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
-  writeFrame(frame, *slots, samples_.count != VK_SAMPLE_COUNT_1_BIT, slot_->arena.mapped);
+  writeFrame(frame, *slots, shadowBlocks_, samples_.count != VK_SAMPLE_COUNT_1_BIT, slot_->arena.mapped);
   return true;
 }
 
@@ -887,7 +969,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     slot_->drawPoolCapacity = 0;
     uint32_t capacity = 64;
     while (capacity < count) capacity *= 2;
-    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 3 * capacity},
+    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kDrawBlocks * capacity},
                                                {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kTextureSlots * capacity}};
     VkDescriptorPoolCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
@@ -920,33 +1002,42 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     return false;
   }
 
-  std::vector<VkDescriptorBufferInfo> buffers(3 * size_t{count});
+  std::vector<VkDescriptorBufferInfo> buffers(kDrawBlocks * size_t{count});
   std::vector<VkDescriptorImageInfo> images(kTextureSlots * size_t{count});
-  std::vector<VkWriteDescriptorSet> writes((3 + kTextureSlots) * size_t{count});
+  std::vector<VkWriteDescriptorSet> writes((kDrawBlocks + kTextureSlots) * size_t{count});
+  // The receivers (forward draws of a frame with a shadow pass) sample the atlas; the casters
+  // keep whatever the frame binds there (the dummy texture).
+  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
   for (uint32_t i = 0; i < count; ++i) {
     DrawSlot& slot = (*slots)[i];
     slot.set = sets[2 * i];
     slot.textureSet = sets[2 * i + 1];
-    buffers[3 * i + 0] = {slot_->arena.buffer, 0, sizeof(abi::FrameUniforms)};
-    buffers[3 * i + 1] = {slot_->arena.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
-    buffers[3 * i + 2] = {slot.materialBuffer, slot.materialOffset, slot.materialSize};
-    const uint32_t bindings[3] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
-    for (uint32_t b = 0; b < 3; ++b) {
-      VkWriteDescriptorSet& write = writes[3 * i + b];
+    VkDescriptorBufferInfo* blocks = &buffers[kDrawBlocks * i];
+    blocks[0] = {slot_->arena.buffer, slot.frameOffset, sizeof(abi::FrameUniforms)};
+    blocks[1] = {slot_->arena.buffer, slot.objectOffset, sizeof(abi::ObjectUniforms)};
+    blocks[2] = {slot.materialBuffer, slot.materialOffset, slot.materialSize};
+    blocks[3] = {slot_->arena.buffer, shadowBlocks_.uniformsOffset, sizeof(abi::ShadowUniforms)};
+    const uint32_t bindings[kDrawBlocks] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding,
+                                            abi::kShadowBinding};
+    for (uint32_t b = 0; b < kDrawBlocks; ++b) {
+      VkWriteDescriptorSet& write = writes[kDrawBlocks * i + b];
       write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
       write.dstSet = slot.set;
       write.dstBinding = bindings[b];
       write.descriptorCount = 1;
       write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-      write.pBufferInfo = &buffers[3 * i + b];
+      write.pBufferInfo = &blocks[b];
     }
     // Every binding is written, the unused ones with the dummy texture: Vulkan 1.1 has no
     // partially bound descriptor sets, and a shader may declare any of the 16.
-    const TextureSlots textureSlots = textures_.slotsFor(frame, frame.draws[i]);
+    TextureSlots textureSlots = textures_.slotsFor(frame, frame.draws[i]);
+    if (frame.shadow && i < forwardDraws) {
+      textureSlots[abi::kShadowAtlasBinding] = TextureSlot{shadowAtlas_.view, shadowSampler_};
+    }
     for (uint32_t b = 0; b < kTextureSlots; ++b) {
       VkDescriptorImageInfo& image = images[kTextureSlots * i + b];
       image = {textureSlots[b].sampler, textureSlots[b].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-      VkWriteDescriptorSet& write = writes[3 * size_t{count} + kTextureSlots * i + b];
+      VkWriteDescriptorSet& write = writes[kDrawBlocks * size_t{count} + kTextureSlots * i + b];
       write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
       write.dstSet = slot.textureSet;
       write.dstBinding = b;

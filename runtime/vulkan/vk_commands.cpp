@@ -26,6 +26,64 @@ VkImageMemoryBarrier appImageBarrier(const AppImage& image, VkImageLayout from, 
 
 constexpr VkAccessFlags kAnyAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
 
+// Binds what the slot needs that differs from the previous slot's and draws it.
+void drawSlot(VkCommandBuffer cmd, const FrameObjects& objects, const DrawSlot& slot, VkPipeline* bound) {
+  if (slot.mesh.vertexCount == 0) return;
+  if (slot.pipeline != *bound) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
+    *bound = slot.pipeline;
+  }
+  const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2, sets, 0, nullptr);
+  const VkBuffer streams[abi::kStreams] = {slot.mesh.buffer, slot.mesh.buffer, objects.arena};
+  const VkDeviceSize offsets[abi::kStreams] = {slot.mesh.streamOffsets[0], slot.mesh.streamOffsets[1],
+                                               slot.instanceOffset};
+  vkCmdBindVertexBuffers(cmd, 0, abi::kStreams, streams, offsets);
+  if (slot.mesh.indexCount > 0) {
+    vkCmdBindIndexBuffer(cmd, slot.mesh.buffer, slot.mesh.indexOffset, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, slot.mesh.indexCount, slot.instanceCount, 0, 0, 0);
+  } else {
+    vkCmdDraw(cmd, slot.mesh.vertexCount, slot.instanceCount, 0, 0);
+  }
+}
+
+// The D16 atlas's depth bias unit: Vulkan's r for a fixed-point depth format of n bits is 2^-n
+// (spec, "Depth Bias"), one D16 step, so a bias of d in window depth is d / 2^-16 units.
+constexpr float kD16BiasUnit = 1.0f / 65536.0f;
+
+void recordShadowPass(VkCommandBuffer cmd, const FrameObjects& objects, const std::vector<DrawSlot>& slots) {
+  const ShadowPassDesc& shadow = *objects.shadow;
+  VkClearValue clear{};
+  clear.depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo passInfo{};
+  passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  passInfo.renderPass = objects.shadowPass;
+  passInfo.framebuffer = objects.shadowFramebuffer;
+  passInfo.renderArea = {{0, 0}, {shadow.atlasSize, shadow.atlasSize}};
+  passInfo.clearValueCount = 1;
+  passInfo.pClearValues = &clear;
+  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+  size_t next = slots.size();
+  for (const ShadowCascadeDesc& cascade : shadow.cascades) next -= cascade.casters.size();
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (const ShadowCascadeDesc& cascade : shadow.cascades) {
+    // Row y of the atlas is GL's window y (no flip, glToVulkanDepthClip).
+    const VkViewport viewport{float(cascade.viewport[0]),
+                              float(cascade.viewport[1]),
+                              float(cascade.viewport[2]),
+                              float(cascade.viewport[3]),
+                              0.0f,
+                              1.0f};
+    const VkRect2D scissor{{int32_t(cascade.viewport[0]), int32_t(cascade.viewport[1])},
+                           {cascade.viewport[2], cascade.viewport[3]}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdSetDepthBias(cmd, cascade.depthBias / kD16BiasUnit, 0.0f, cascade.slopeBias);
+    for (size_t k = 0; k < cascade.casters.size(); ++k) drawSlot(cmd, objects, slots[next++], &bound);
+  }
+  vkCmdEndRenderPass(cmd);
+}
+
 }  // namespace
 
 void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameOutput& output, VkExtent2D forward,
@@ -46,11 +104,12 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
                          nullptr, 0, nullptr, 1, &toAttachment);
   }
 
-  // Forward pass.
+  // Shadow pass (timed with the forward pass), then forward pass.
   if (objects.timestamps) {
     vkCmdResetQueryPool(cmd, objects.timestamps, 0, kTimestampCount);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, objects.timestamps, 0);
   }
+  if (objects.shadow) recordShadowPass(cmd, objects, slots);
   // Indexed by attachment (vk_pipeline.h): colour for HDR and the multisampled HDR after LDR,
   // whichever is the one cleared; LDR's (merged path) is unused: its loadOp is DONT_CARE.
   VkClearValue clears[4]{};
@@ -79,25 +138,11 @@ void recordPasses(VkCommandBuffer cmd, const FrameObjects& objects, const FrameO
     vkCmdClearAttachments(cmd, 2, again, 1, &rect);
   }
   VkPipeline bound = VK_NULL_HANDLE;
-  for (const DrawSlot& slot : slots) {
-    if (slot.mesh.vertexCount == 0) continue;
-    if (slot.pipeline != bound) {
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, slot.pipeline);
-      bound = slot.pipeline;
-    }
-    const VkDescriptorSet sets[2] = {slot.set, slot.textureSet};  // sets 0 and abi::kTextureSet
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.forwardLayout, 0, 2, sets, 0, nullptr);
-    const VkBuffer streams[abi::kStreams] = {slot.mesh.buffer, slot.mesh.buffer, objects.arena};
-    const VkDeviceSize offsets[abi::kStreams] = {slot.mesh.streamOffsets[0], slot.mesh.streamOffsets[1],
-                                                 slot.instanceOffset};
-    vkCmdBindVertexBuffers(cmd, 0, abi::kStreams, streams, offsets);
-    if (slot.mesh.indexCount > 0) {
-      vkCmdBindIndexBuffer(cmd, slot.mesh.buffer, slot.mesh.indexOffset, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, slot.mesh.indexCount, slot.instanceCount, 0, 0, 0);
-    } else {
-      vkCmdDraw(cmd, slot.mesh.vertexCount, slot.instanceCount, 0, 0);
-    }
+  size_t forwardSlots = slots.size();
+  if (objects.shadow) {
+    for (const ShadowCascadeDesc& cascade : objects.shadow->cascades) forwardSlots -= cascade.casters.size();
   }
+  for (size_t i = 0; i < forwardSlots; ++i) drawSlot(cmd, objects, slots[i], &bound);
   // Post pass: one full-screen triangle reading the HDR image (its own pixel when merged).
   // BOTTOM_OF_PIPE: written once everything recorded before it has finished. Inside the merged
   // render pass this splits the subpasses on an immediate-mode GPU like lavapipe; on a tiler the

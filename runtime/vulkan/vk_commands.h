@@ -41,6 +41,11 @@ struct FrameObjects {
   // Null: not timed.
   VkQueryPool timestamps = VK_NULL_HANDLE;
   VkBuffer arena = VK_NULL_HANDLE;  // this frame's uniforms and instance transforms (DrawSlot offsets)
+  // The sun's shadow pass (null: none): drawn into shadowFramebuffer (the atlas) by shadowPass
+  // before the forward pass, from the slots after the forward draws' (withShadowDraws' order).
+  const ShadowPassDesc* shadow = nullptr;
+  VkRenderPass shadowPass = VK_NULL_HANDLE;
+  VkFramebuffer shadowFramebuffer = VK_NULL_HANDLE;
 };
 
 // Where the passes write: render passes and framebuffers, and, when the LDR attachment is the
@@ -56,8 +61,9 @@ struct FrameOutput {
 
 inline constexpr uint32_t kTimestampCount = 4;
 
-// The forward pass (clear to clearColor and depth 1, then each slot, each with its own mesh
-// buffer) and the post pass (a second render pass, or the next subpass when merged). With
+// With objects.shadow, the shadow pass first: the atlas cleared to depth 1, then per cascade its
+// viewport, scissor and depth bias, and its casters. Then the forward pass (clear to clearColor and depth 1, then each
+// slot, each with its own mesh buffer) and the post pass (a second render pass, or the next subpass when merged). With
 // output.directImage, the image goes from its oldLayout to COLOR_ATTACHMENT_OPTIMAL after
 // whatever the app did with it before, and to its newLayout afterwards, visible to any later
 // command. forward: the forward pass's size (the HDR and depth targets'); extent: the output's.

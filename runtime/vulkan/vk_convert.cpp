@@ -5,17 +5,25 @@
 
 namespace facet::runtime::vulkan {
 
-void glToVulkanClip(const float gl[16], float out[16]) {
-  // Column c of C*M is C applied to column c of M.
+namespace {
+
+// Column c of C*M is C applied to column c of M; C scales y by ySign and maps z to [0, w].
+void convertClip(const float gl[16], float ySign, float out[16]) {
   for (int c = 0; c < 4; ++c) {
     const float* in = gl + 4 * c;
     float* o = out + 4 * c;
     o[0] = in[0];
-    o[1] = -in[1];
+    o[1] = ySign * in[1];
     o[2] = 0.5f * in[2] + 0.5f * in[3];
     o[3] = in[3];
   }
 }
+
+}  // namespace
+
+void glToVulkanClip(const float gl[16], float out[16]) { convertClip(gl, -1.0f, out); }
+
+void glToVulkanDepthClip(const float gl[16], float out[16]) { convertClip(gl, 1.0f, out); }
 
 float halfToFloat(uint16_t half) {
   const bool negative = (half & 0x8000u) != 0;

@@ -11,6 +11,9 @@ namespace facet::runtime::vulkan {
 // With this, Vulkan's row 0 is the top of the picture, the same picture a GL render shows
 // after its rows are flipped on readback.
 void glToVulkanClip(const float gl[16], float out[16]);
+// The shadow pass's form: z to [0, w] only, y kept, so atlas row r is GL's window y = r
+// (runtime/sun_shadow.h) and the receivers' atlas coordinates hold in both APIs.
+void glToVulkanDepthClip(const float gl[16], float out[16]);
 
 // IEEE 754 binary16 → binary32, exact (normals, subnormals, infinities, NaN).
 float halfToFloat(uint16_t half);

@@ -18,6 +18,51 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 
 }  // namespace
 
+bool checkShadow(const ShadowPassDesc& shadow, const VkPhysicalDeviceLimits& limits, std::string* error) {
+  if (shadow.atlasSize == 0 || shadow.atlasSize > limits.maxImageDimension2D ||
+      shadow.atlasSize > limits.maxFramebufferWidth || shadow.atlasSize > limits.maxFramebufferHeight) {
+    *error = "shadow atlas size " + std::to_string(shadow.atlasSize) + " is outside 1.." +
+             std::to_string(std::min(limits.maxImageDimension2D, limits.maxFramebufferWidth));
+    return false;
+  }
+  for (size_t c = 0; c < shadow.cascades.size(); ++c) {
+    const ShadowCascadeDesc& cascade = shadow.cascades[c];
+    const std::string which = "shadow cascade " + std::to_string(c) + ": ";
+    const uint64_t right = uint64_t{cascade.viewport[0]} + cascade.viewport[2];
+    const uint64_t bottom = uint64_t{cascade.viewport[1]} + cascade.viewport[3];
+    if (cascade.viewport[2] == 0 || cascade.viewport[3] == 0 || right > shadow.atlasSize || bottom > shadow.atlasSize) {
+      *error = which + "viewport is outside the " + std::to_string(shadow.atlasSize) + " texel atlas";
+      return false;
+    }
+    for (uint32_t caster : cascade.casters) {
+      if (caster >= shadow.casters.size()) {
+        *error = which + "caster " + std::to_string(caster) + " is out of range (" +
+                 std::to_string(shadow.casters.size()) + " casters)";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+FrameDesc withShadowDraws(const FrameDesc& frame) {
+  FrameDesc all = frame;
+  if (!frame.shadow) return all;
+  all.draws.reserve(frame.draws.size() + shadowDrawCount(frame));
+  for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) {
+    for (uint32_t caster : cascade.casters) all.draws.push_back(frame.shadow->casters[caster]);
+  }
+  return all;
+}
+
+size_t shadowDrawCount(const FrameDesc& frame) {
+  size_t count = 0;
+  if (frame.shadow) {
+    for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) count += cascade.casters.size();
+  }
+  return count;
+}
+
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error) {
   const uint32_t maxSize = limits.maxImageDimension2D;
   if (frame.width == 0 || frame.height == 0 || frame.width > maxSize || frame.height > maxSize) {
@@ -29,10 +74,7 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
     *error = why;
     return false;
   }
-  if (frame.shadow) {
-    *error = "the sun casts shadows (/sun/castShadows), which the Vulkan backend does not draw yet (docs/shadows.md)";
-    return false;
-  }
+  if (frame.shadow && !checkShadow(*frame.shadow, limits, error)) return false;
   std::unordered_set<const Mesh*> checkedMeshes;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
@@ -64,10 +106,27 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
   return checkFrameTextures(frame, limits.maxImageDimension2D, error);
 }
 
-VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::vector<DrawSlot>* slots) {
+VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::vector<DrawSlot>* slots,
+                         ShadowBlocks* shadow) {
   const VkDeviceSize alignment = std::max<VkDeviceSize>(limits.minUniformBufferOffsetAlignment, 16);
   VkDeviceSize size = alignUp(sizeof(abi::FrameUniforms), alignment);
+  // Every draw's set 0 binds ShadowUniforms (the layout has the binding): zeros without a pass.
+  shadow->uniformsOffset = size;
+  size = alignUp(size + sizeof(abi::ShadowUniforms), alignment);
+  shadow->cascadeOffsets.clear();
+  if (frame.shadow) {
+    for (size_t c = 0; c < frame.shadow->cascades.size(); ++c) {
+      shadow->cascadeOffsets.push_back(size);
+      size = alignUp(size + sizeof(abi::FrameUniforms), alignment);
+    }
+  }
   slots->resize(frame.draws.size());
+  size_t next = frame.draws.size() - shadowDrawCount(frame);
+  for (size_t c = 0; c < shadow->cascadeOffsets.size(); ++c) {
+    for (size_t k = 0; k < frame.shadow->cascades[c].casters.size(); ++k) {
+      (*slots)[next++].frameOffset = shadow->cascadeOffsets[c];
+    }
+  }
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     DrawSlot& slot = (*slots)[i];
@@ -86,12 +145,23 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
   return size;
 }
 
-void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, bool alphaToCoverage, void* arena) {
+void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, const ShadowBlocks& shadow,
+                bool alphaToCoverage, void* arena) {
   auto* base = static_cast<uint8_t*>(arena);
   abi::FrameUniforms frameUniforms = frame.frame;
   glToVulkanClip(frame.frame.viewProjection, frameUniforms.viewProjection);
   frameUniforms.cameraPosition[3] = alphaToCoverage ? 1.0f : 0.0f;
   std::memcpy(base, &frameUniforms, sizeof(frameUniforms));
+  const abi::ShadowUniforms shadowUniforms = frame.shadow ? frame.shadow->uniforms : abi::ShadowUniforms{};
+  std::memcpy(base + shadow.uniformsOffset, &shadowUniforms, sizeof(shadowUniforms));
+  for (size_t c = 0; c < shadow.cascadeOffsets.size(); ++c) {
+    // A masked caster's alpha test discards by its coverage alone: no alpha to coverage in the
+    // single-sample atlas.
+    abi::FrameUniforms cascadeUniforms = frame.frame;
+    glToVulkanDepthClip(frame.shadow->cascades[c].viewProjection, cascadeUniforms.viewProjection);
+    cascadeUniforms.cameraPosition[3] = 0.0f;
+    std::memcpy(base + shadow.cascadeOffsets[c], &cascadeUniforms, sizeof(cascadeUniforms));
+  }
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     const DrawItem& draw = frame.draws[i];
     const DrawSlot& slot = slots[i];

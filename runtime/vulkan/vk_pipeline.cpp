@@ -390,9 +390,57 @@ bool createSetLayout(VkDevice device, const VkDescriptorSetLayoutBinding* bindin
 
 }  // namespace
 
+bool createShadowRenderPass(VkDevice device, VkRenderPass* out, std::string* error) {
+  VkAttachmentDescription atlas{};
+  atlas.format = kShadowAtlasFormat;
+  atlas.samples = VK_SAMPLE_COUNT_1_BIT;
+  atlas.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  atlas.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  atlas.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  atlas.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  atlas.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // every texel is cleared
+  atlas.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  const VkAttachmentReference depthRef{0, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.pDepthStencilAttachment = &depthRef;
+  const VkPipelineStageFlags depthStages =
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  std::array<VkSubpassDependency, 2> dependencies{};
+  // The previous frame's receivers read the atlas before this pass clears it: write after read
+  // needs the execution dependency only.
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  dependencies[0].dstStageMask = depthStages;
+  dependencies[0].srcAccessMask = 0;
+  dependencies[0].dstAccessMask =
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  // This frame's receivers read what the pass wrote.
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = depthStages;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+  VkRenderPassCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+  info.attachmentCount = 1;
+  info.pAttachments = &atlas;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = uint32_t(dependencies.size());
+  info.pDependencies = dependencies.data();
+  if (!check(vkCreateRenderPass(device, &info, nullptr, out), "vkCreateRenderPass", error)) {
+    *out = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error) {
-  std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
-  const uint32_t numbers[] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding};
+  std::array<VkDescriptorSetLayoutBinding, 4> bindings{};
+  const uint32_t numbers[] = {abi::kFrameBinding, abi::kObjectBinding, abi::kMaterialBinding, abi::kShadowBinding};
   for (size_t i = 0; i < bindings.size(); ++i) {
     bindings[i].binding = numbers[i];
     bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
@@ -466,7 +514,9 @@ bool supportsVertexLayout(VkPhysicalDevice device, VertexLayout layout, std::str
 }
 
 bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipeline* out, std::string* error) {
-  const bool forward = desc.kind == PipelineKind::Forward;
+  const bool depthOnly = desc.kind == PipelineKind::Depth;
+  // Forward and depth pipelines read the mesh streams and test depth.
+  const bool forward = desc.kind == PipelineKind::Forward || depthOnly;
   VkShaderModule vertex = VK_NULL_HANDLE;
   VkShaderModule fragment = VK_NULL_HANDLE;
   if (!createShaderModule(device, desc.vertexSpirv, "vertex", desc.what, &vertex, error)) {
@@ -529,12 +579,21 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   // faces stay counter-clockwise here (tested by Blending and SphereScene on both backends).
   raster.cullMode = forward && desc.cullBackFaces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  if (depthOnly) {
+    // The shadow pass keeps GL's clip y (glToVulkanDepthClip): a triangle facing the sun runs
+    // counter-clockwise in GL's y-up window, and the same window coordinates in Vulkan's y-down
+    // framebuffer, whose orientation formula has the opposite sign, make it clockwise.
+    raster.frontFace = VK_FRONT_FACE_CLOCKWISE;
+    // Constant and slope factors come per cascade (vkCmdSetDepthBias in vk_commands.cpp).
+    raster.depthBiasEnable = VK_TRUE;
+  }
   raster.lineWidth = 1.0f;
 
   VkPipelineMultisampleStateCreateInfo multisample{};
   multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
   multisample.rasterizationSamples = desc.samples;
-  multisample.alphaToCoverageEnable = forward && desc.alphaToCoverage && desc.samples != VK_SAMPLE_COUNT_1_BIT;
+  multisample.alphaToCoverageEnable =
+      desc.kind == PipelineKind::Forward && desc.alphaToCoverage && desc.samples != VK_SAMPLE_COUNT_1_BIT;
 
   VkPipelineDepthStencilStateCreateInfo depth{};
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
@@ -548,7 +607,7 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   VkPipelineColorBlendAttachmentState blendAttachment{};
   blendAttachment.colorWriteMask =
       VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  if (forward && desc.blending != Blending::Opaque) {
+  if (desc.kind == PipelineKind::Forward && desc.blending != Blending::Opaque) {
     // Premultiplied colour: "over" is src + (1 − src.a)·dst, additive is src + dst.
     const VkBlendFactor dst =
         desc.blending == Blending::Transparent ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
@@ -573,14 +632,15 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   const std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{blendAttachment, blendAttachment};
   VkPipelineColorBlendStateCreateInfo blend{};
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-  blend.attachmentCount = desc.colourSlots;
+  blend.attachmentCount = depthOnly ? 0 : desc.colourSlots;
   blend.pAttachments = blendAttachments.data();
 
-  const std::array<VkDynamicState, 3> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                                    VK_DYNAMIC_STATE_BLEND_CONSTANTS};
+  const std::array<VkDynamicState, 3> dynamicStates{
+      VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+      depthOnly ? VK_DYNAMIC_STATE_DEPTH_BIAS : VK_DYNAMIC_STATE_BLEND_CONSTANTS};
   VkPipelineDynamicStateCreateInfo dynamic{};
   dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-  dynamic.dynamicStateCount = desc.constantBlend ? 3 : 2;
+  dynamic.dynamicStateCount = desc.constantBlend || depthOnly ? 3 : 2;
   dynamic.pDynamicStates = dynamicStates.data();
 
   VkGraphicsPipelineCreateInfo info{};
@@ -593,7 +653,7 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   info.pRasterizationState = &raster;
   info.pMultisampleState = &multisample;
   info.pDepthStencilState = forward ? &depth : nullptr;  // the post pass has no depth attachment
-  info.pColorBlendState = &blend;
+  info.pColorBlendState = depthOnly ? nullptr : &blend;  // no colour attachment
   info.pDynamicState = &dynamic;
   info.layout = desc.layout;
   info.renderPass = desc.renderPass;

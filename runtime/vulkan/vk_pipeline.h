@@ -17,6 +17,7 @@ namespace facet::runtime::vulkan {
 inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // VulkanOptions::hdrFormat's default
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kLdrFormat = VK_FORMAT_R8G8B8A8_UNORM;
+inline constexpr VkFormat kShadowAtlasFormat = VK_FORMAT_D16_UNORM;  // ShadowPassDesc's atlas
 
 // Load and store operations of one attachment, as the frame graph derived them.
 struct AttachmentOps {
@@ -74,7 +75,13 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
                             AttachmentOps ldr, ForwardSamples samples, LdrLayouts layouts, VkRenderPass* out,
                             std::string* error);
 
-// Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams (shader_abi.h).
+// The shadow pass (docs/shadows.md): one D16 depth attachment, cleared to 1 and stored, left in
+// SHADER_READ_ONLY_OPTIMAL for the forward pass's receivers; its dependencies order it after the
+// previous frame's reads of the atlas and before this frame's.
+bool createShadowRenderPass(VkDevice device, VkRenderPass* out, std::string* error);
+
+// Set 0 of material shaders: FrameUniforms, ObjectUniforms, MaterialParams, ShadowUniforms
+// (shader_abi.h).
 bool createForwardSetLayout(VkDevice device, VkDescriptorSetLayout* out, std::string* error);
 // Set 0 of the post shaders: the HDR colour, as a combined image sampler (separate path) or an
 // input attachment (merged path), and the bindings of the variant's effects (vk_post_inputs.h).
@@ -93,12 +100,13 @@ bool createPipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayo
 enum class PipelineKind {
   Forward,  // abi vertex stream, depth test LESS + write
   Post,     // no vertex input (gl_VertexIndex full-screen triangle), no depth
+  Depth,    // the shadow pass: abi vertex stream, no colour, depth LESS + write, dynamic depth bias
 };
 
 struct PipelineDesc {
   PipelineKind kind = PipelineKind::Forward;
   Blending blending = Blending::Opaque;                     // forward pipelines only
-  bool cullBackFaces = false;                               // forward pipelines only
+  bool cullBackFaces = false;                               // forward and depth pipelines only
   VertexLayout vertexLayout = VertexLayout::FullPrecision;  // forward pipelines only: the streams' formats
   const std::vector<uint32_t>* vertexSpirv = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;

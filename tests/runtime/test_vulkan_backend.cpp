@@ -91,21 +91,33 @@ TEST(VulkanBackend, ClearColourReachesHdrAndLdrTargets) {
   }
 }
 
-// No shadow pass yet: a frame whose sun casts is refused, naming the backend, never drawn with
-// its receivers unshadowed.
-TEST(VulkanBackend, AFrameWithAShadowPassIsRefusedUntilTheBackendDrawsIt) {
-  auto backend = makeBackend();
+// A shadow pass the device cannot draw or that reads out of bounds is refused with what is wrong
+// (the pass itself is tested in tests/shadow_reference/test_vulkan_shadows.cpp).
+TEST(VulkanBackend, AMalformedShadowPassIsRefused) {
+  auto backend = makeBackend(true);
   ASSERT_NE(backend, nullptr);
   FrameDesc frame = emptyFrame(8, 5, kClear);
   frame.shadow = ShadowPassDesc{};
   frame.shadow->atlasSize = 256;
+  frame.shadow->cascades.resize(1);
+  ShadowCascadeDesc& cascade = frame.shadow->cascades[0];
+  cascade.viewport[2] = 256;
+  cascade.viewport[3] = 256;
   FrameResult result;
   std::string error;
+  EXPECT_TRUE(backend->render(frame, &result, &error)) << error;  // an empty pass: the atlas cleared
+  cascade.casters = {0};
   EXPECT_FALSE(backend->render(frame, &result, &error));
-  EXPECT_EQ(error,
-            "the sun casts shadows (/sun/castShadows), which the Vulkan backend does not draw yet (docs/shadows.md)");
-  frame.shadow.reset();
-  EXPECT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_EQ(error, "shadow cascade 0: caster 0 is out of range (0 casters)");
+  cascade.casters.clear();
+  cascade.viewport[0] = 1;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_EQ(error, "shadow cascade 0: viewport is outside the 256 texel atlas");
+  cascade.viewport[0] = 0;
+  frame.shadow->atlasSize = 0;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_EQ(error.rfind("shadow atlas size 0 is outside 1..", 0), 0u) << error;
+  EXPECT_TRUE(backend->validationErrors().empty());
 }
 
 TEST(VulkanBackend, TriangleCoversExpectedPixelsUpright) {
