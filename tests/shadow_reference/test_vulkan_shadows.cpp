@@ -138,8 +138,9 @@ constexpr double kFootprint = 0.03;
 
 TEST(VulkanShadows, ABoxOverAPlaneMatchesTheRayCastReferencePerTier) {
   // Measured on lavapipe: 0.072 %, 0.066 %, 0.066 % wrong (13, 12, 12 leaks at the box's foot, no
-  // acne); the bound leaves about 7×.
-  const std::pair<const char*, double> tiers[] = {{"high", 0.005}, {"mid", 0.005}, {"low", 0.005}};
+  // acne). The bound leaves 2×, and fails the casters drawn with the wrong winding (their back
+  // faces in the atlas: 0.23 % measured) as well as an atlas never drawn (5 %).
+  const std::pair<const char*, double> tiers[] = {{"high", 0.0015}, {"mid", 0.0015}, {"low", 0.0015}};
   for (const auto& [tier, bound] : tiers) {
     const Measured m = measure(boxOverPlane(tier), std::string("box-") + tier, kFootprint);
     ASSERT_GT(m.score.scored, 5000u) << tier;
@@ -163,7 +164,7 @@ TEST(VulkanShadows, TheShadowedRegionIsDarkAndTheLitRegionIsNot) {
               lit);
   ASSERT_GT(occluded, 500u);  // 911 measured
   ASSERT_GT(lit, 10000u);
-  EXPECT_LT(inShadow, 0.05);
+  EXPECT_LT(inShadow, 0.03);  // 0.0145 measured; 0.044 with the casters' back faces drawn
   EXPECT_GT(inLight, 0.98);
 }
 
