@@ -37,6 +37,20 @@ build/release/matc/matc texture examples/scenes/textures/tiles_normal.png -o bui
 cmp build/examples/textures/tiles.ktx2 examples/scenes/textures/tiles.ktx2
 cmp build/examples/textures/tiles_normal.ktx2 examples/scenes/textures/tiles_normal.ktx2
 for scene in examples/scenes/*.json; do
+  if grep -q '"castShadows": true' "$scene"; then
+    # A sun that casts (yard.json): its packages built with --scene (the receivers and depth-only
+    # programs it asks for), drawn on Vulkan only: GL does not draw the shadow pass yet.
+    name=$(basename "$scene" .json)
+    mkdir -p "$packages/$name"
+    for material in $(grep -o '"material": "[a-z_]*"' "$scene" | cut -d'"' -f4 | sort -u); do
+      build/release/matc/matc compile "examples/materials/$material.mat" -o "$packages/$name/$material.matpkg" \
+        --scene "$scene"
+    done
+    echo "$scene: GL skipped: the GL backend does not draw the shadow pass (docs/shadows.md)"
+    build/release/runtime/viewer/facet-view "$scene" --packages "$packages/$name" --out "$images" --backend vulkan \
+      --validation
+    continue
+  fi
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation
 done
 # The committed glTF assets with their own materials (docs/gltf.md): `matc import` writes a .mat

@@ -416,7 +416,8 @@ TEST(MatcCli, SceneManifestBuildsOnlyTheVariantsItNeeds) {
 }
 
 // A scene of built-in meshes with rotations and scales (the yard) is a manifest like any other:
-// each material it names is built with the one variant it asks for, and info --scene finds it.
+// each material it names is built with the variants it asks for (its sun casts: the receiver of
+// four cascades and the depth-only program), and info --scene finds them.
 TEST(MatcCli, SceneOfBuiltInMeshesIsAManifest) {
   std::string dir = facet::test::scratchDir("cli-yard");
   std::string scene = facet::test::examplePath("scenes/yard.json");
@@ -425,11 +426,14 @@ TEST(MatcCli, SceneOfBuiltInMeshesIsAManifest) {
     auto r = run(kMatc + " compile " + facet::test::examplePath("materials/" + std::string(name) + ".mat") + " -o " +
                  package + " --scene " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find(std::string(name) + ": 1 variant for scene " + scene), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(std::string(name) + ": 2 variants for scene " + scene), std::string::npos) << r.out;
     auto info = run(kMatc + " info " + package + " --scene " + scene);
     EXPECT_EQ(info.exitCode, 0) << info.err;
-    EXPECT_NE(info.out.find("asks for high.dir1; the package has 1 variant, including it"), std::string::npos)
-        << info.out;
+    for (const char* key : {"high.dir1.sh4", "high.depth"}) {
+      EXPECT_NE(info.out.find(std::string("asks for ") + key + "; the package has 2 variants, including it"),
+                std::string::npos)
+          << info.out;
+    }
   }
 }
 
