@@ -341,6 +341,7 @@ const std::string& examplePackages() {
     compiler::BuildOptions build;
     build.tiers = {permutations::Tier::High};
     build.pointLightCounts = {0, 1, 2, 4};
+    build.shadowCascadeCounts = {0, 4};  // yard.json's sun casts, with the default 4 cascades
     return test::writeExamplePackages("packed-vertex-packages", build);
   }();
   return dir;
@@ -361,7 +362,9 @@ TEST(VertexPacking, ExampleScenesPackedMatchFullPrecisionAbove50Db) {
     ASSERT_TRUE(scene) << error;
     auto frame = SceneFrame::prepare(*scene, examplePackages(), &error);
     ASSERT_TRUE(frame) << error;
-    for (int api = 0; api < 2; ++api) {
+    // GL does not draw the shadow pass (docs/shadows.md): a casting sun is Vulkan's alone.
+    const int apis = scene->sun && scene->sun->castShadows ? 1 : 2;
+    for (int api = 0; api < apis; ++api) {
       FrameResult packed, full;
       ASSERT_TRUE(r.backend[api][0]->render(frame->frame(), &packed, &error)) << path << ": " << error;
       ASSERT_TRUE(r.backend[api][1]->render(frame->frame(), &full, &error)) << path << ": " << error;
