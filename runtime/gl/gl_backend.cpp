@@ -518,9 +518,13 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
     if (!drawItem(frame, frame.draws[i], &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
       glBindVertexArray(0);
+      textures_.clearSamplers();
       return false;
     }
   }
+  // Sampler objects are the forward draws' state (a material's wrap and filter modes): unbound here,
+  // so that the passes after it (bloom, post) sample with their textures' own parameters.
+  textures_.clearSamplers();
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glUseProgram(0);
@@ -705,7 +709,6 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string
   glDepthMask(GL_TRUE);
   glUseProgram(post_.program.id());
   if (!postInputs_.bind(frame, error)) return false;
-  textures_.clearSamplers();
   textures_.forgetBindings();  // the LUT's unit is a forward texture's too
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
@@ -721,9 +724,7 @@ bool GlBackend::mergedPostPass(const FrameDesc& frame, bool keepHdr, std::string
 bool GlBackend::postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error) {
   // Separate path: a second pass that samples the stored HDR target. A merged backend runs this
   // pass only for frames into the app's default framebuffer. Bloom's chain runs first (the
-  // threshold reads the block the post inputs bind). A glTF sampler object the forward pass left
-  // on a unit would otherwise override the chain's own clamp-to-edge, linear filtering.
-  if (bloomOn_) textures_.clearSamplers();
+  // threshold reads the block the post inputs bind).
   if (bloomOn_ && (!bloomChain_.ensureTargets(targets_.forwardWidth, targets_.forwardHeight, error) ||
                    !postInputs_.bind(frame, error) || !bloomChain_.run(targets_.hdrColor, error)))
     return false;
@@ -748,7 +749,6 @@ bool GlBackend::sampledPass(GLuint framebuffer, const gl::LinkedProgram& program
     glActiveTexture(GL_TEXTURE0 + abi::kPostBloomBinding);
     glBindTexture(GL_TEXTURE_2D, bloomChain_.level0().id());
   }
-  textures_.clearSamplers();
   textures_.forgetBindings();  // units 0 (and the LUT's) no longer hold what the last draw bound
   glBindVertexArray(emptyVertexArray_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);  // full-screen triangle from gl_VertexID
