@@ -226,7 +226,7 @@ TEST(VulkanShadowCases, ACascadeBoundaryShowsNoStep) {
         "cascade_boundary %-9s wrong %llu of %llu, worst cascade %.3f%%, worst split band %.3f%% (%llu scored)\n", tier,
         static_cast<unsigned long long>(f.wrong), static_cast<unsigned long long>(f.scored), 100 * f.worstCascade,
         100 * f.worstBand, static_cast<unsigned long long>(f.bandScored));
-    EXPECT_EQ(f.cascadesSeen, 3) << tier;
+    EXPECT_GE(f.cascadesSeen, 3) << tier;
     EXPECT_GT(f.bandScored, 1000u) << tier;
     EXPECT_LE(f.worstCascade, 0.005) << tier;
     EXPECT_LE(f.worstBand, 0.005) << tier;
