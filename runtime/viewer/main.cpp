@@ -171,6 +171,10 @@ int main(int argc, char** argv) {
     std::vector<double> cpuTimes;
     facet::runtime::FrameDesc frame = prepared->frame();
     if (oneDrawPerObject) frame.draws = facet::runtime::oneDrawPerInstance(frame.draws);
+    // The shadow pass's draws: one per (cascade, caster that can shadow it), as the backends issue them.
+    size_t casterDraws = 0;
+    if (frame.shadow)
+      for (const facet::runtime::ShadowCascadeDesc& c : frame.shadow->cascades) casterDraws += c.casters.size();
     const size_t total = frames + (stats ? warmup : 0);
     for (size_t i = 0; i < total; ++i) {
       if (!backend->render(frame, &result, &error)) return fail(name + ": " + error);
@@ -207,6 +211,8 @@ int main(int argc, char** argv) {
         entry["height"] = result.height;
         entry["scene"] = scenePath;
         entry["draws"] = frame.draws.size();
+        entry["shadowCasterDraws"] = casterDraws;
+        entry["shadowCascades"] = frame.shadow ? frame.shadow->cascades.size() : 0;
         entry["cpuSubmitMs"] = facet::viewer::median(cpuTimes);
         report.push_back(std::move(entry));
       } else {
@@ -224,6 +230,9 @@ int main(int argc, char** argv) {
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
         std::printf("  %zu draw calls; CPU issuing the frame (FrameResult::cpuSubmitMilliseconds): median %.3f ms\n",
                     frame.draws.size(), facet::viewer::median(cpuTimes));
+        if (frame.shadow)
+          std::printf("  shadow pass: %zu caster draws over %zu cascades (%u² atlas)\n", casterDraws,
+                      frame.shadow->cascades.size(), frame.shadow->atlasSize);
       }
     }
   }
