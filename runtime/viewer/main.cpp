@@ -9,6 +9,7 @@
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/render_path.h"
 #include "facet/runtime/scene_frame.h"
+#include "cascade_overlay.h"
 #include "frame_stats.h"
 
 namespace {
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
   std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false, fxaa = false;
   size_t frames = 1, warmup = 2;
-  bool oneDrawPerObject = false;
+  bool oneDrawPerObject = false, shadowCascades = false;
   std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
   uint32_t width = 0, height = 0, msaa = 0;
   double renderScale = 1.0;
@@ -74,6 +75,9 @@ int main(int argc, char** argv) {
                "draw every object with its own call instead of instancing those that share all but the transform");
   app.add_flag("--decode-textures", decodeTextures,
                "GL: decode ASTC textures on the CPU even where the context samples ASTC (the fallback path)");
+  app.add_flag("--shadow-cascades", shadowCascades,
+               "tint the sun's shadow receivers by the cascade they read (red, green, blue, yellow: 0..3), an overlay "
+               "from a CPU ray-cast of the scene (docs/shadows.md)");
   app.add_option("--warmup", warmup, "with --stats: frames rendered first and not measured (default 2)")
       ->check(CLI::Range(0, 1000));
   try {
@@ -119,6 +123,8 @@ int main(int argc, char** argv) {
   }
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
+  if (shadowCascades && !prepared->frame().shadow)
+    return fail(scenePath + ": --shadow-cascades: the scene's sun does not cast shadows (/sun/castShadows)");
 
   std::error_code ec;
   std::filesystem::create_directories(outDir, ec);
@@ -186,6 +192,13 @@ int main(int argc, char** argv) {
     for (const std::string& message : backend->validationErrors())
       std::fprintf(stderr, "%s validation: %s\n", name.c_str(), message.c_str());
     if (!backend->validationErrors().empty()) return fail(name + ": validation reported errors");
+    if (shadowCascades) {
+      std::array<size_t, facet::abi::kMaxShadowCascades> pixels{};
+      if (!facet::viewer::tintShadowCascades(*scene, prepared->frame().shadow->uniforms, &result.ldr, &pixels, &error))
+        return fail(scenePath + ": " + error);
+      std::fprintf(json ? stderr : stdout, "%s: receiver pixels per cascade: %zu, %zu, %zu, %zu\n", name.c_str(),
+                   pixels[0], pixels[1], pixels[2], pixels[3]);
+    }
     std::string path = (std::filesystem::path(outDir) / (stem + "." + name + ".png")).string();
     if (!facet::runtime::writePng(path, result.width, result.height, result.ldr, &error)) return fail(error);
     std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(),

@@ -174,6 +174,31 @@ TEST(FacetView, StatsCountTheShadowPassCasterDraws) {
           "/out --backend vulkan --stats --frames 1 --warmup 0");
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("shadow pass: 3 caster draws over 2 cascades (512² atlas)"), std::string::npos) << r.out;
+
+  // --shadow-cascades tints the receivers by cascade: this view's ground spans both.
+  r = run(kFacetView + " " + dir + "/s.json --packages " + packages + " --out " + dir +
+          "/tinted --backend vulkan --shadow-cascades");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  size_t first = 0, second = 0, third = 0, fourth = 0;
+  const size_t at = r.out.find("vulkan: receiver pixels per cascade: ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "vulkan: receiver pixels per cascade: %zu, %zu, %zu, %zu", &first, &second,
+                        &third, &fourth),
+            4)
+      << r.out;
+  EXPECT_GT(first, 100u);
+  EXPECT_GT(second, 100u);
+  EXPECT_EQ(third + fourth, 0u);
+  EXPECT_LE(first + second, 64u * 48u);
+  EXPECT_TRUE(fs::is_regular_file(dir + "/tinted/s.vulkan.png"));
+  // A scene whose sun does not cast has no cascades to show: an error, nothing written.
+  std::ofstream(dir + "/lit.json") << R"({"width": 16, "height": 16, "sun": {},
+    "objects": [{"mesh": "box", "material": "plastic"}]})";
+  r = run(kFacetView + " " + dir + "/lit.json --packages " + packages + " --out " + dir +
+          "/lit --backend vulkan --shadow-cascades");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("the scene's sun does not cast shadows"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/lit/lit.vulkan.png"));
 }
 
 TEST(FacetView, APackageWhoseShadersDisagreeWithItExitsOne) {
