@@ -3,13 +3,13 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cascade_overlay.h"
 #include "facet/package/atomic_file.h"
 #include "facet/runtime/frame_graph.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/render_path.h"
 #include "facet/runtime/scene_frame.h"
-#include "cascade_overlay.h"
 #include "frame_stats.h"
 
 namespace {
