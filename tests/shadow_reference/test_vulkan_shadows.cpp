@@ -4,31 +4,17 @@
 // pixels' wrong fraction is bounded per tier.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
 #include <string>
-#include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "facet/runtime/png.h"
-#include "facet/runtime/render_backend.h"
-#include "facet/runtime/scene_frame.h"
-#include "facet/runtime/vulkan_backend.h"
-#include "facet/scene/scene.h"
-#include "facet/shadow_reference/reference_image.h"
-#include "facet/shadow_reference/rendered_visibility.h"
-#include "facet/shadow_reference/shadow_score.h"
-#include "facet/shadow_reference/sun_visibility.h"
-#include "test_compile.h"
-#include "test_support.h"
+#include "vulkan_shadow_frames.h"
 
 namespace facet::runtime {
 namespace {
 
-using shadow_reference::PixelKind;
-using shadow_reference::ReferenceImage;
-using shadow_reference::RenderedVisibility;
+using shadow_frames::meanVisibility;
+using shadow_frames::measure;
+using shadow_frames::Measured;
 
 // A 1 m box rotated 20° on a 40 m ground, lit by the sun alone (no sky, no other light).
 std::string boxOverPlane(const std::string& tier) {
@@ -41,95 +27,6 @@ std::string boxOverPlane(const std::string& tier) {
     {"mesh": "plane", "material": "plastic", "scale": [40, 1, 40]},
     {"mesh": "box", "material": "plastic", "position": [0, 0.5, 0], "rotation": [0, 20, 0]}
   ]})";
-}
-
-const std::string& packages() {
-  static const std::string dir = [] {
-    compiler::BuildOptions options;
-    options.shadowCascadeCounts = {0, 1, 2, 4};
-    return test::writePackagesFromTexts(
-        "vulkan-shadows", {"material plastic { shading lit\n surface { baseColor = vec3(0.7, 0.7, 0.7) } }"}, options);
-  }();
-  return dir;
-}
-
-// The scene as text with the sun's castShadows set.
-std::string withSunCasting(const std::string& json, bool casts) {
-  nlohmann::ordered_json scene = nlohmann::ordered_json::parse(json);
-  scene["sun"]["castShadows"] = casts;
-  return scene.dump();
-}
-
-// The frame's LDR as a PNG in the test's scratch folder.
-std::string renderToPng(RenderBackend& backend, const std::string& json, const std::string& name) {
-  std::string error;
-  auto scene = parseScene(name + ".json", json, &error);
-  EXPECT_TRUE(scene) << error;
-  if (!scene) return "";
-  auto frame = SceneFrame::prepare(*scene, packages(), &error);
-  EXPECT_TRUE(frame) << error;
-  if (!frame) return "";
-  FrameResult result;
-  EXPECT_TRUE(backend.render(frame->frame(), &result, &error)) << error;
-  EXPECT_TRUE(backend.validationErrors().empty()) << backend.validationErrors().front();
-  std::vector<uint8_t> png;
-  EXPECT_TRUE(encodePng(result.width, result.height, result.ldr, &png, &error)) << error;
-  static const std::string frames = test::scratchDir("vulkan-shadows-frames");
-  const std::string path = frames + "/" + name + ".png";
-  FILE* file = std::fopen(path.c_str(), "wb");
-  EXPECT_NE(file, nullptr) << path;
-  if (!file) return "";
-  std::fwrite(png.data(), 1, png.size(), file);
-  std::fclose(file);
-  return path;
-}
-
-struct Measured {
-  ReferenceImage reference;
-  RenderedVisibility rendered;
-  shadow_reference::ShadowScore score;
-};
-
-// The scene rendered on Vulkan with and without its shadow pass, and the reference over a
-// footprint of `footprint` metres.
-Measured measure(const std::string& json, const std::string& name, double footprint) {
-  Measured out;
-  std::string error;
-  auto backend = createVulkanBackend({true}, &error);
-  EXPECT_TRUE(backend) << error;
-  if (!backend) return out;
-  const std::string shadowed = renderToPng(*backend, withSunCasting(json, true), name + "-shadowed");
-  const std::string unshadowed = renderToPng(*backend, withSunCasting(json, false), name + "-unshadowed");
-  auto rendered = shadow_reference::visibilityFromFrames(shadowed, unshadowed, &error);
-  EXPECT_TRUE(rendered) << error;
-  auto scene = shadow_reference::parseShadowScene(name + ".json", json, &error);
-  EXPECT_TRUE(scene) << error;
-  if (!rendered || !scene) return out;
-  auto sun = shadow_reference::SunVisibility::build(*scene, &error);
-  EXPECT_TRUE(sun) << error;
-  if (!sun) return out;
-  shadow_reference::ReferenceOptions options;
-  options.footprintRadius = footprint;
-  options.footprintSamples = 16;
-  out.reference = renderReference(*scene, *sun, options);
-  out.rendered = *rendered;
-  auto score = shadow_reference::scoreShadows(out.reference, out.rendered, &error);
-  EXPECT_TRUE(score) << error;
-  if (score) out.score = *score;
-  return out;
-}
-
-// Mean rendered visibility over the measurable surface pixels whose footprint is all `visible`.
-double meanVisibility(const Measured& m, float visible, size_t* count) {
-  double sum = 0;
-  *count = 0;
-  for (size_t i = 0; i < m.reference.pixels.size(); ++i) {
-    const auto& pixel = m.reference.pixels[i];
-    if (pixel.kind != PixelKind::Surface || pixel.footprint != visible || std::isnan(m.rendered.values[i])) continue;
-    sum += m.rendered.values[i];
-    ++*count;
-  }
-  return *count ? sum / double(*count) : std::nan("");
 }
 
 // The footprint: a 3×3 PCF kernel reaches 1.5 texels of the finest cascade; at 1024² with two
@@ -171,14 +68,7 @@ TEST(VulkanShadows, TheShadowedRegionIsDarkAndTheLitRegionIsNot) {
 // A caster behind the camera (tests/data/scenes/shadows/behind_camera.json) still casts into the
 // view: the cascades hold casters the camera cannot see.
 TEST(VulkanShadows, ACasterBehindTheCameraCasts) {
-  nlohmann::ordered_json scene = nlohmann::ordered_json::parse(
-      test::readText(test::sourceDir() + "/tests/data/scenes/shadows/behind_camera.json"));
-  scene["sky"]["luminance"] = 0;  // lit by the sun alone
-  for (auto& object : scene["objects"]) {
-    object["material"] = "plastic";
-    object.erase("params");
-  }
-  const Measured m = measure(scene.dump(), "behind-camera", kFootprint);
+  const Measured m = measure(shadow_frames::sunOnlyScene("behind_camera.json"), "behind-camera", kFootprint);
   size_t occluded = 0;
   const double inShadow = meanVisibility(m, 0.0f, &occluded);
   std::printf("behind camera: %zu occluded pixels, mean visibility %.4f; wrong %.4f%% of %llu\n", occluded, inShadow,
