@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app_vulkan.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
@@ -290,6 +291,45 @@ TEST(Shadows, VulkanAndGlAgreeOnAShadowedFrame) {
       EXPECT_LE(double(beyondOne), 0.015 * double(reference.pixels.size())) << tier << (casts ? " casting" : "");
     }
   }
+}
+
+// The shadow pass in a frame written into an app's image on the app's own device (vulkan_backend.h,
+// renderToImage; recordFrame records the same passes): render()'s image, the shadow in it, and
+// validation clean on the app's instance.
+TEST(Shadows, TheAppsVulkanImageGetsTheShadowedFrame) {
+  example::AppVulkan app;
+  std::string error;
+  ASSERT_TRUE(app.create(/*validation=*/true, &error)) << error;
+  auto renderer = createVulkanBackend(app.appDevice(), VulkanOptions{}, &error);
+  ASSERT_NE(renderer, nullptr) << error;
+  const std::string json = boxOverPlane("high");
+  const FrameResult lit = render(*renderer, withSunCasting(json, false), "app-lit");
+  const FrameResult want = render(*renderer, json, "app-shadowed");
+  auto parsed = parseScene("app.json", json, &error);
+  ASSERT_TRUE(parsed) << error;
+  auto frame = SceneFrame::prepare(*parsed, packages(), &error);
+  ASSERT_TRUE(frame && frame->frame().shadow) << error;
+  {
+    example::AppTarget image;
+    ASSERT_TRUE(image.create(app, VK_FORMAT_R8G8B8A8_UNORM, want.width, want.height,
+                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 0, &error))
+        << error;
+    ASSERT_TRUE(renderer->renderToImage(
+        frame->frame(), image.describe(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL), &error))
+        << error;
+    std::vector<uint8_t> drawn;
+    ASSERT_TRUE(image.read(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, &drawn, &error)) << error;
+    ASSERT_EQ(drawn.size(), want.ldr.size());
+    int largest = 0;
+    size_t darkened = 0;
+    for (size_t i = 0; i < drawn.size(); ++i) largest = std::max(largest, std::abs(int(drawn[i]) - int(want.ldr[i])));
+    for (size_t i = 0; i < drawn.size(); i += 4) darkened += lit.ldr[i] > 40 && drawn[i] < lit.ldr[i] / 4;
+    EXPECT_LE(largest, 1);
+    EXPECT_GT(darkened, 500u);  // the box's shadow: 911 occluded pixels in the reference
+    renderer->forgetImage(image.image);
+  }
+  renderer.reset();
+  EXPECT_TRUE(app.validationErrors.empty()) << app.validationErrors.front();
 }
 
 }  // namespace
