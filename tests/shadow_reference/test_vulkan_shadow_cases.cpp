@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/scene/scene.h"
-#include "vulkan_shadow_frames.h"
+#include "shadow_frames.h"
 
 namespace facet::runtime {
 namespace {

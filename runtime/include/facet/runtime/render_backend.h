@@ -204,6 +204,16 @@ struct FrameDesc {
 // abi::kMaxInstancesPerDraw, or the draw that takes the frame past abi::kMaxInstancesPerFrame, as
 // "draw N: ..." (both backends refuse such a frame with it).
 std::string instanceCountError(const FrameDesc& frame);
+// Empty, or why a shadow pass cannot be drawn: an atlas size outside 1..maxAtlasSize (what the
+// API can make and render), a cascade viewport empty or outside the atlas, a caster index out of
+// range, as "shadow cascade N: ..." (both backends refuse such a frame with it).
+std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize);
+// The frame a backend draws: `frame` itself without a shadow pass; with one, its draws followed
+// by one draw per (cascade, caster) in cascade order, the caster's DrawItem as given (the shadow
+// pass's draws are the last shadowDrawCount()), so that one check, one upload and one program
+// cache serve both passes. The shadow pass must have passed shadowPassError.
+FrameDesc withShadowDraws(const FrameDesc& frame);
+size_t shadowDrawCount(const FrameDesc& frame);
 // The draws with each instanced draw split into draws of one instance, in the same order: the
 // same image in as many draw calls as instances (tests, and the before of measurements).
 std::vector<DrawItem> oneDrawPerInstance(const std::vector<DrawItem>& draws);

@@ -1,12 +1,13 @@
-// Frames of the Vulkan shadow pass scored against the ray-cast reference (docs/shadows.md,
+// Frames of the shadow pass (Vulkan or GL) scored against the ray-cast reference (docs/shadows.md,
 // "Visibility from the renderer"): a scene lit by the sun alone is rendered with and without its
 // pass, the ratio of the two frames is the rendered visibility, and the reference is ray-cast for
-// the same pixels. Shared by test_vulkan_shadows (the pass per tier) and test_vulkan_shadow_cases
-// (the hard cases and the bias sweep).
+// the same pixels. Shared by test_vulkan_shadows (the pass per tier on both backends) and
+// test_vulkan_shadow_cases (the hard cases and the bias sweep).
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,22 @@ namespace facet::runtime::shadow_frames {
 // receivers of 1, 2 and 4 cascades and the depth-only programs.
 const std::string& packages();
 
+enum class Api { Vulkan, Gl };
+
+const char* apiName(Api api);
+
+// Vulkan with validation layers (a validation error fails the test), or GL on its headless
+// context (GLES 3.2 on EGL where there is one, else OSMesa) with its debug output checked alike.
+std::unique_ptr<RenderBackend> makeBackend(Api api);
+
+// The scene's frame rendered by `backend` (empty after a failed EXPECT). `shadow`, when given,
+// receives the uniforms the receivers read (zeros without a pass).
+FrameResult render(RenderBackend& backend, const std::string& json, const std::string& name,
+                   abi::ShadowUniforms* shadow = nullptr);
+
+// The scene's ray-cast reference over a footprint of `footprint` metres (empty on failure).
+shadow_reference::ReferenceImage referenceOf(const std::string& json, const std::string& name, double footprint);
+
 // The scene as text with the sun's castShadows set.
 std::string withSunCasting(const std::string& json, bool casts);
 
@@ -31,7 +48,6 @@ std::string withSunCasting(const std::string& json, bool casts);
 std::string sunOnlyScene(const std::string& fileName);
 
 // The frame's LDR as a PNG in the test's scratch folder; its path, or "" after a failed EXPECT.
-// `shadow`, when given, receives the uniforms the receivers read (zeros without a pass).
 std::string renderToPng(RenderBackend& backend, const std::string& json, const std::string& name,
                         abi::ShadowUniforms* shadow = nullptr);
 
@@ -44,9 +60,9 @@ struct Measured {
   glm::dvec3 cameraPosition{0};
 };
 
-// The scene rendered on Vulkan with and without its shadow pass, and the reference over a
+// The scene rendered on `api` with and without its shadow pass, and the reference over a
 // footprint of `footprint` metres.
-Measured measure(const std::string& json, const std::string& name, double footprint);
+Measured measure(const std::string& json, const std::string& name, double footprint, Api api = Api::Vulkan);
 
 // Mean rendered visibility over the measurable surface pixels whose footprint is all `visible`.
 double meanVisibility(const Measured& m, float visible, size_t* count);

@@ -1,4 +1,4 @@
-#include "vulkan_shadow_frames.h"
+#include "shadow_frames.h"
 
 #include <gtest/gtest.h>
 
@@ -51,19 +51,51 @@ std::string sunOnlyScene(const std::string& fileName) {
   return scene.dump();
 }
 
-std::string renderToPng(RenderBackend& backend, const std::string& json, const std::string& name,
-                        abi::ShadowUniforms* shadow) {
+const char* apiName(Api api) { return api == Api::Vulkan ? "vulkan" : "gl"; }
+
+std::unique_ptr<RenderBackend> makeBackend(Api api) {
+  std::string error;
+  std::unique_ptr<RenderBackend> backend =
+      api == Api::Vulkan ? createVulkanBackend({true}, &error) : createGlBackend(GlOptions{}, &error);
+  EXPECT_TRUE(backend) << error;
+  return backend;
+}
+
+FrameResult render(RenderBackend& backend, const std::string& json, const std::string& name,
+                   abi::ShadowUniforms* shadow) {
+  FrameResult result;
   std::string error;
   auto scene = parseScene(name + ".json", json, &error);
   EXPECT_TRUE(scene) << error;
-  if (!scene) return "";
+  if (!scene) return result;
   auto frame = SceneFrame::prepare(*scene, packages(), &error);
   EXPECT_TRUE(frame) << error;
-  if (!frame) return "";
+  if (!frame) return result;
   if (shadow) *shadow = frame->frame().shadow ? frame->frame().shadow->uniforms : abi::ShadowUniforms{};
-  FrameResult result;
   EXPECT_TRUE(backend.render(frame->frame(), &result, &error)) << error;
   EXPECT_TRUE(backend.validationErrors().empty()) << backend.validationErrors().front();
+  return result;
+}
+
+shadow_reference::ReferenceImage referenceOf(const std::string& json, const std::string& name, double footprint) {
+  std::string error;
+  auto scene = shadow_reference::parseShadowScene(name + ".json", json, &error);
+  EXPECT_TRUE(scene) << error;
+  if (!scene) return {};
+  auto sun = shadow_reference::SunVisibility::build(*scene, &error);
+  EXPECT_TRUE(sun) << error;
+  if (!sun) return {};
+  shadow_reference::ReferenceOptions options;
+  options.footprintRadius = footprint;
+  options.footprintSamples = 16;
+  return renderReference(*scene, *sun, options);
+}
+
+std::string renderToPng(RenderBackend& backend, const std::string& json, const std::string& name,
+                        abi::ShadowUniforms* shadow) {
+  const FrameResult result = render(backend, json, name, shadow);
+  if (result.ldr.empty()) return "";
+  std::string error;
   std::vector<uint8_t> png;
   EXPECT_TRUE(encodePng(result.width, result.height, result.ldr, &png, &error)) << error;
   static const std::string frames = test::scratchDir("vulkan-shadows-frames");
@@ -76,14 +108,14 @@ std::string renderToPng(RenderBackend& backend, const std::string& json, const s
   return path;
 }
 
-Measured measure(const std::string& json, const std::string& name, double footprint) {
+Measured measure(const std::string& json, const std::string& name, double footprint, Api api) {
   Measured out;
   std::string error;
-  auto backend = createVulkanBackend({true}, &error);
-  EXPECT_TRUE(backend) << error;
+  auto backend = makeBackend(api);
   if (!backend) return out;
-  const std::string shadowed = renderToPng(*backend, withSunCasting(json, true), name + "-shadowed", &out.shadow);
-  const std::string unshadowed = renderToPng(*backend, withSunCasting(json, false), name + "-unshadowed");
+  const std::string prefix = std::string(apiName(api)) + "-" + name;
+  const std::string shadowed = renderToPng(*backend, withSunCasting(json, true), prefix + "-shadowed", &out.shadow);
+  const std::string unshadowed = renderToPng(*backend, withSunCasting(json, false), prefix + "-unshadowed");
   auto rendered = shadow_reference::visibilityFromFrames(shadowed, unshadowed, &error);
   EXPECT_TRUE(rendered) << error;
   auto scene = shadow_reference::parseShadowScene(name + ".json", json, &error);
