@@ -1,5 +1,5 @@
-// The hard cases of a shadow map (docs/shadows.md, "Hard cases"), drawn by the Vulkan shadow pass
-// per tier and scored against the ray-cast reference: acne under a grazing sun, peter-panning at
+// The hard cases of a shadow map (docs/shadows.md, "Hard cases"), drawn by the Vulkan and GL shadow
+// passes per tier and scored against the ray-cast reference: acne under a grazing sun, peter-panning at
 // a contact, a step at a cascade boundary, a thin caster's shadow broken. The scenes are
 // tests/data/scenes/shadows/, lit by the sun alone.
 #include <gtest/gtest.h>
@@ -20,6 +20,7 @@
 namespace facet::runtime {
 namespace {
 
+using shadow_frames::Api;
 using shadow_frames::Measured;
 using shadow_reference::PixelKind;
 
@@ -55,9 +56,9 @@ constexpr double kPoleFootprint = 0.02;
 
 // Acne: the lit ground under a sun 3° above the horizon. Every lit pixel the reference scores
 // must be lit.
-uint64_t grazingAcne(const std::string& tier, const Bias* bias, uint64_t* scored) {
+uint64_t grazingAcne(const std::string& tier, const Bias* bias, uint64_t* scored, Api api = Api::Vulkan) {
   const Measured m = shadow_frames::measure(inTier(shadow_frames::sunOnlyScene("grazing_sun.json"), tier, bias),
-                                            "grazing-" + tier, kGrazingFootprint);
+                                            "grazing-" + tier, kGrazingFootprint, api);
   *scored = m.score.scored;
   return m.score.acne;
 }
@@ -74,9 +75,9 @@ struct ContactFigures {
 // than that reach shows as leaks all the way out to it; leaks farther out are not peter-panning
 // (they count in `leaks`).
 constexpr double kContactReach = 16;
-ContactFigures contactGap(const std::string& tier, const Bias* bias) {
+ContactFigures contactGap(const std::string& tier, const Bias* bias, Api api = Api::Vulkan) {
   const std::string json = inTier(shadow_frames::sunOnlyScene("contact.json"), tier, bias);
-  const Measured m = shadow_frames::measure(json, "contact-" + tier, kContactFootprint);
+  const Measured m = shadow_frames::measure(json, "contact-" + tier, kContactFootprint, api);
   ContactFigures out;
   out.leaks = m.score.leaks;
   std::string error;
@@ -110,9 +111,9 @@ struct BoundaryFigures {
 // A cascade boundary: the wrong fraction of each cascade's pixels, and of the band along each split
 // (a step shows as wrong pixels gathered at the split). Pixels past 0.9 of the shadow distance are
 // left out: the shadow fades there by design, which the reference does not model.
-BoundaryFigures cascadeBoundary(const std::string& tier, const Bias* bias) {
+BoundaryFigures cascadeBoundary(const std::string& tier, const Bias* bias, Api api = Api::Vulkan) {
   const std::string json = inTier(shadow_frames::sunOnlyScene("cascade_boundary.json"), tier, bias);
-  const Measured m = shadow_frames::measure(json, "boundary-" + tier, kBoundaryFootprint);
+  const Measured m = shadow_frames::measure(json, "boundary-" + tier, kBoundaryFootprint, api);
   const double fadeStart = 0.9 * 60;  // the scene's shadow distance is the default 60 m
   BoundaryFigures out;
   const auto inShadowRange = [&](size_t i) {
@@ -147,9 +148,9 @@ struct PoleFigures {
 // A thin pole's shadow stays connected: each ground pixel the reference shadows has a pixel
 // rendered in shadow within one pixel, and the rendered shadow pixels near the reference's form one
 // 8-connected piece.
-PoleFigures thinPole(const std::string& tier, const Bias* bias) {
+PoleFigures thinPole(const std::string& tier, const Bias* bias, Api api = Api::Vulkan) {
   const Measured m = shadow_frames::measure(inTier(shadow_frames::sunOnlyScene("thin_pole.json"), tier, bias),
-                                            "pole-" + tier, kPoleFootprint);
+                                            "pole-" + tier, kPoleFootprint, api);
   const int w = int(m.reference.width), h = int(m.reference.height);
   const auto at = [&](int x, int y) { return size_t(y) * size_t(w) + size_t(x); };
   const auto shadowedInReference = [&](int x, int y) {
@@ -198,34 +199,43 @@ PoleFigures thinPole(const std::string& tier, const Bias* bias) {
   return out;
 }
 
-TEST(VulkanShadowCases, AGrazingSunLeavesNoAcneOnTheLitGround) {
+// Each case runs on both backends.
+class ShadowCases : public testing::TestWithParam<Api> {};
+
+INSTANTIATE_TEST_SUITE_P(Backends, ShadowCases, testing::Values(Api::Vulkan, Api::Gl),
+                         [](const testing::TestParamInfo<Api>& param) {
+                           return std::string(shadow_frames::apiName(param.param));
+                         });
+
+TEST_P(ShadowCases, AGrazingSunLeavesNoAcneOnTheLitGround) {
   for (const char* tier : kTiers) {
     uint64_t scored = 0;
-    const uint64_t acne = grazingAcne(tier, nullptr, &scored);
-    std::printf("grazing_sun %-9s scored %llu acne %llu\n", tier, static_cast<unsigned long long>(scored),
-                static_cast<unsigned long long>(acne));
+    const uint64_t acne = grazingAcne(tier, nullptr, &scored, GetParam());
+    std::printf("%s grazing_sun %-9s scored %llu acne %llu\n", shadow_frames::apiName(GetParam()), tier,
+                static_cast<unsigned long long>(scored), static_cast<unsigned long long>(acne));
     ASSERT_GT(scored, 20000u) << tier;
     EXPECT_EQ(acne, 0u) << tier;
   }
 }
 
-TEST(VulkanShadowCases, AContactShadowStartsWithinTwoTexelsOfItsCaster) {
+TEST_P(ShadowCases, AContactShadowStartsWithinTwoTexelsOfItsCaster) {
   for (const char* tier : kTiers) {
-    const ContactFigures f = contactGap(tier, nullptr);
-    std::printf("contact %-9s leaks %llu, widest gap %.2f texels, nearest shadowed pixel %.2f texels\n", tier,
-                static_cast<unsigned long long>(f.leaks), f.gap, f.nearest);
+    const ContactFigures f = contactGap(tier, nullptr, GetParam());
+    std::printf("%s contact %-9s leaks %llu, widest gap %.2f texels, nearest shadowed pixel %.2f texels\n",
+                shadow_frames::apiName(GetParam()), tier, static_cast<unsigned long long>(f.leaks), f.gap, f.nearest);
     EXPECT_LT(f.nearest, 1.0) << tier;  // the test sees a gap of a texel
     EXPECT_LE(f.gap, 2.0) << tier;
   }
 }
 
-TEST(VulkanShadowCases, ACascadeBoundaryShowsNoStep) {
+TEST_P(ShadowCases, ACascadeBoundaryShowsNoStep) {
   for (const char* tier : kTiers) {
-    const BoundaryFigures f = cascadeBoundary(tier, nullptr);
+    const BoundaryFigures f = cascadeBoundary(tier, nullptr, GetParam());
     std::printf(
-        "cascade_boundary %-9s wrong %llu of %llu, worst cascade %.3f%%, worst split band %.3f%% (%llu scored)\n", tier,
-        static_cast<unsigned long long>(f.wrong), static_cast<unsigned long long>(f.scored), 100 * f.worstCascade,
-        100 * f.worstBand, static_cast<unsigned long long>(f.bandScored));
+        "%s cascade_boundary %-9s wrong %llu of %llu, worst cascade %.3f%%, worst split band %.3f%% (%llu scored)\n",
+        shadow_frames::apiName(GetParam()), tier, static_cast<unsigned long long>(f.wrong),
+        static_cast<unsigned long long>(f.scored), 100 * f.worstCascade, 100 * f.worstBand,
+        static_cast<unsigned long long>(f.bandScored));
     EXPECT_GE(f.cascadesSeen, 3) << tier;
     EXPECT_GT(f.bandScored, 1000u) << tier;
     EXPECT_LE(f.worstCascade, 0.005) << tier;
@@ -233,11 +243,11 @@ TEST(VulkanShadowCases, ACascadeBoundaryShowsNoStep) {
   }
 }
 
-TEST(VulkanShadowCases, AThinPoleCastsOneUnbrokenShadow) {
+TEST_P(ShadowCases, AThinPoleCastsOneUnbrokenShadow) {
   for (const char* tier : kTiers) {
-    const PoleFigures f = thinPole(tier, nullptr);
-    std::printf("thin_pole %-9s %zu shadow pixels, %zu uncovered, %zu pieces\n", tier, f.shadowPixels, f.uncovered,
-                f.pieces);
+    const PoleFigures f = thinPole(tier, nullptr, GetParam());
+    std::printf("%s thin_pole %-9s %zu shadow pixels, %zu uncovered, %zu pieces\n", shadow_frames::apiName(GetParam()),
+                tier, f.shadowPixels, f.uncovered, f.pieces);
     ASSERT_GT(f.shadowPixels, 150u) << tier;
     EXPECT_EQ(f.uncovered, 0u) << tier;
     EXPECT_EQ(f.pieces, 1u) << tier;

@@ -92,7 +92,8 @@ TEST_P(Shadows, TheShadowedRegionIsDarkAndTheLitRegionIsNot) {
 // A caster behind the camera (tests/data/scenes/shadows/behind_camera.json) still casts into the
 // view: the cascades hold casters the camera cannot see.
 TEST_P(Shadows, ACasterBehindTheCameraCasts) {
-  const Measured m = measure(shadow_frames::sunOnlyScene("behind_camera.json"), "behind-camera", kFootprint, GetParam());
+  const Measured m =
+      measure(shadow_frames::sunOnlyScene("behind_camera.json"), "behind-camera", kFootprint, GetParam());
   size_t occluded = 0;
   const double inShadow = meanVisibility(m, 0.0f, &occluded);
   std::printf("%s behind camera: %zu occluded pixels, mean visibility %.4f; wrong %.4f%% of %llu\n",
