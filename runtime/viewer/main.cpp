@@ -189,7 +189,8 @@ int main(int argc, char** argv) {
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
           result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
-          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels));
+          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels), 0,
+          backend->toneMapsSamples());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
