@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false, fxaa = false;
   size_t frames = 1, warmup = 2;
   bool oneDrawPerObject = false;
-  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
+  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f", msaaForm = "auto";
   uint32_t width = 0, height = 0, msaa = 0;
   double renderScale = 1.0;
   facet::runtime::BloomSettings bloom;
@@ -47,6 +47,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
   app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
       ->check(CLI::IsMember({1, 2, 4}));
+  app.add_option("--msaa-form", msaaForm,
+                 "Vulkan: auto (VK_EXT_multisampled_render_to_single_sampled where offered) | attachments "
+                 "(multisampled attachments; the merged path tone maps each sample) | resolve-first (the same, "
+                 "reading the resolve)")
+      ->check(CLI::IsMember({"auto", "attachments", "resolve-first"}));
   app.add_flag("--fxaa", fxaa, "an FXAA pass after the post pass (default: the scene's \"antialiasing\")");
   CLI::Option* bloomOption =
       app.add_option("--bloom", bloom.intensity,
@@ -145,6 +150,8 @@ int main(int argc, char** argv) {
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
       options.msaaSamples = scene->msaaSamples;
+      options.renderToSingleSampled = msaaForm == "auto";
+      options.toneMapSamples = msaaForm != "resolve-first";
       options.fxaa = scene->fxaa;
       options.renderScale = scene->renderScale;
       options.bloom = scene->bloom;

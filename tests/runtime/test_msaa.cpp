@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "facet/runtime/png.h"
@@ -50,9 +51,12 @@ const std::string& packages() {
   return dir;
 }
 
-bool render(RenderBackend& backend, const std::string& material, FrameResult* out, std::string* error) {
+bool render(RenderBackend& backend, const std::string& material, FrameResult* out, std::string* error,
+            uint32_t width = 64, uint32_t height = 64) {
   auto scene = parseScene(facet::test::examplePath("scenes/inline.json"), sceneJson(material), error);
   if (!scene) return false;
+  scene->width = width;
+  scene->height = height;
   auto frame = SceneFrame::prepare(*scene, packages(), error);
   return frame && backend.render(frame->frame(), out, error);
 }
@@ -308,6 +312,42 @@ TEST(Msaa, PerSampleToneMappingAntialiasesAnHdrEdge) {
   EXPECT_GT(between(a), 80);  // of about 166 silhouette pixels (see the first test)
   for (const std::string& e : perSample->validationErrors()) ADD_FAILURE() << e;
   for (const std::string& e : resolveFirst->validationErrors()) ADD_FAILURE() << e;
+}
+
+std::unique_ptr<RenderBackend> vulkanResolveFirst(PostPath path, uint32_t samples, std::string* error) {
+  return vulkanWith(path, samples, false, error, false);
+}
+
+// Odd and tiny viewports on every form and path: the multisampled attachments, the resolve and
+// the per-sample reads have the frame's own size. At 67 × 45 the silhouette has resolved values
+// (none at 1 sample); 3 × 2 and 1 × 1 render; no validation error.
+TEST(Msaa, OddAndTinySizesRenderOnEveryFormAndPath) {
+  for (Factory make : {&vulkan, &vulkanPortable, &vulkanResolveFirst, &gles}) {
+    for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+      std::string error;
+      auto one = make(path, 1, &error);
+      ASSERT_TRUE(one) << error;
+      auto four = make(path, 4, &error);
+      ASSERT_TRUE(four) << error;
+      for (auto [w, h] : {std::pair<uint32_t, uint32_t>{67, 45}, {3, 2}, {1, 1}}) {
+        SCOPED_TRACE(std::string(four->name()) + " " + toString(path) + " " + four->msaaMethod() + " " +
+                     std::to_string(w) + "x" + std::to_string(h));
+        FrameResult a, b;
+        ASSERT_TRUE(render(*one, "white", &a, &error, w, h)) << error;
+        ASSERT_TRUE(render(*four, "white", &b, &error, w, h)) << error;
+        ASSERT_EQ(b.width, w);
+        ASSERT_EQ(b.height, h);
+        ASSERT_EQ(b.ldr.size(), size_t{w} * h * 4);
+        if (w == 67) {
+          const uint8_t sky = a.ldr[0], white = a.ldr[(22 * 67 + 33) * 4];
+          EXPECT_EQ(countBetweenLdr(a, sky, white), 0);
+          EXPECT_GT(countBetweenLdr(b, sky, white), 40);  // a silhouette about 37 pixels across
+        }
+      }
+      for (const std::string& e : four->validationErrors()) ADD_FAILURE() << e;
+      for (const std::string& e : one->validationErrors()) ADD_FAILURE() << e;
+    }
+  }
 }
 
 // Counts that are not 1, 2 or 4, and counts the device does not offer, fail creation with a
