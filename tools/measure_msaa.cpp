@@ -17,7 +17,10 @@
 //    1/16 of a pixel at the target's distance), for 1 sample, MSAA, FXAA and the reference; and the mean
 //    absolute difference between an image's frame-to-frame change and the reference's, value by
 //    value: the reference's change is the motion itself, what differs from it is temporal aliasing
-//    (an aliased edge pops by whole steps where the reference moves smoothly).
+//    (an aliased edge pops by whole steps where the reference moves smoothly);
+// 4. render scale: PSNR of the frame rendered at 0.75 and 0.5 of the width and height and upscaled
+//    by the post pass, against the same frame at full size (one sample each) and against the
+//    16-sample reference.
 //
 // Usage: measure_msaa SCENE PACKAGES [--backend vulkan|gl]   (prints Markdown; deterministic)
 #include <algorithm>
@@ -63,16 +66,18 @@ struct Portable {
 };
 
 std::unique_ptr<RenderBackend> makeBackend(const std::string& api, uint32_t samples, std::string* error,
-                                           bool fxaa = false, Portable portable = {}) {
+                                           bool fxaa = false, Portable portable = {}, double renderScale = 1.0) {
   if (api == "gl") {
     GlOptions options;
     options.msaaSamples = samples;
     options.fxaa = fxaa;
+    options.renderScale = renderScale;
     return createGlBackend(options, error);
   }
   VulkanOptions options;
   options.msaaSamples = samples;
   options.fxaa = fxaa;
+  options.renderScale = renderScale;
   options.renderToSingleSampled = !portable.on;
   options.toneMapSamples = portable.toneMapSamples;
   return createVulkanBackend(options, error);
@@ -275,6 +280,19 @@ int main(int argc, char** argv) {
            frames);
   }
   report("reference (16 samples)", truth);
+
+  // 4: render scale.
+  std::printf("\nRender scale (one sample, the post pass upscaling bilinearly), PSNR:\n\n");
+  std::printf("| render scale | against the full-size frame | against 16 samples |\n|---|---|---|\n");
+  for (double scale : {0.75, 0.5}) {
+    auto backend = makeBackend(api, 1, &error, false, {}, scale);
+    if (!backend) return fail(error);
+    FrameResult r;
+    if (!render(*backend, *scene, 1, 0, packages, &r, &error)) return fail(error);
+    std::printf("| %.2f (%ux%u) | %.2f dB | %.2f dB |\n", scale, r.hdrWidth, r.hdrHeight,
+                facet::eval::psnr8(r.ldr, single.ldr), facet::eval::psnr8(r.ldr, reference));
+    for (const std::string& e : backend->validationErrors()) return fail("validation: " + e);
+  }
   for (const std::string& e : one->validationErrors()) return fail("validation: " + e);
   for (auto& [name, backend] : msaa)
     for (const std::string& e : backend->validationErrors()) return fail(name + ": validation: " + e);
