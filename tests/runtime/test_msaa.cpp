@@ -1,7 +1,8 @@
 // MSAA on both backends and both post paths: a resolved silhouette has values between the
 // surface and the background (one sample per pixel has none), a sample count the device does not
-// offer is an error at creation, and a masked material's alpha-tested edge resolves by alpha to
-// coverage. Vulkan validation (with synchronization validation) and GL debug output stay clean.
+// offer is an error at creation, a masked material's alpha-tested edge resolves by alpha to
+// coverage, and Vulkan's portable merged path tone maps each sample before averaging. Vulkan
+// validation (with synchronization validation) and GL debug output stay clean.
 #include <gtest/gtest.h>
 
 #include <algorithm>
