@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false, fxaa = false;
   size_t frames = 1, warmup = 2;
   bool oneDrawPerObject = false, shadowCascades = false;
-  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
+  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f", msaaForm = "auto";
   uint32_t width = 0, height = 0, msaa = 0;
   double renderScale = 1.0;
   facet::runtime::BloomSettings bloom;
@@ -48,6 +48,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
   app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
       ->check(CLI::IsMember({1, 2, 4}));
+  app.add_option("--msaa-form", msaaForm,
+                 "Vulkan: auto (VK_EXT_multisampled_render_to_single_sampled where offered) | attachments "
+                 "(multisampled attachments; the merged path tone maps each sample) | resolve-first (the same, "
+                 "reading the resolve)")
+      ->check(CLI::IsMember({"auto", "attachments", "resolve-first"}));
   app.add_flag("--fxaa", fxaa, "an FXAA pass after the post pass (default: the scene's \"antialiasing\")");
   CLI::Option* bloomOption =
       app.add_option("--bloom", bloom.intensity,
@@ -151,6 +156,8 @@ int main(int argc, char** argv) {
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
       options.msaaSamples = scene->msaaSamples;
+      options.renderToSingleSampled = msaaForm == "auto";
+      options.toneMapSamples = msaaForm != "resolve-first";
       options.fxaa = scene->fxaa;
       options.renderScale = scene->renderScale;
       options.bloom = scene->bloom;
@@ -206,7 +213,8 @@ int main(int argc, char** argv) {
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
           result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
-          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels));
+          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels),
+          prepared->frame().shadow ? prepared->frame().shadow->atlasSize : 0u, backend->toneMapsSamples());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);

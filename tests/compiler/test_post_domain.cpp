@@ -45,6 +45,29 @@ TEST(PostDomain, FetchFormsReadTheirOwnPixelInEachApi) {
   EXPECT_FALSE(contains(s.sampledFragment.msl, "[[color(0)]])")) << s.sampledFragment.msl;
 }
 
+// The per-sample form (Vulkan's merged path under MSAA, portable form): a multisampled subpass
+// input whose sample count is a specialization constant, read in a loop (no gl_SampleID, so the
+// fragment stage runs once per pixel, not per sample); its GLSL ES 3.10 text loops over a
+// sampler2DMS. Bloom variants have none (bloom runs the separate path).
+TEST(PostDomain, ThePerSampleFormReadsEverySampleOfAMultisampledInput) {
+  const PostShaders s = build({});
+  std::string log;
+  ASSERT_TRUE(validateSpirv(s.samplesFragment.spirv, &log)) << log;
+  const std::string spirv = disassembleSpirv(s.samplesFragment.spirv);
+  EXPECT_TRUE(contains(spirv, "SubpassData 0 0 1 2")) << spirv;  // depth 0, arrayed 0, MS 1
+  EXPECT_TRUE(contains(spirv, "OpSpecConstant")) << spirv;
+  EXPECT_TRUE(contains(spirv, "SpecId 0")) << spirv;
+  EXPECT_FALSE(contains(spirv, "SampleId"));
+  EXPECT_FALSE(contains(spirv, "SampleRateShading"));
+  EXPECT_FALSE(contains(disassembleSpirv(s.fetchFragment.spirv), "SubpassData 0 0 1 2"));
+  EXPECT_TRUE(contains(s.samplesFragment.glslEs, "#version 310 es"));
+  EXPECT_TRUE(contains(s.samplesFragment.glslEs, "uniform mediump sampler2DMS hdrColor"));
+  EXPECT_TRUE(s.samplesFragment.msl.empty());
+  PostEffects bloom;
+  bloom.bloom = true;
+  EXPECT_TRUE(build(bloom).samplesFragment.spirv.empty());
+}
+
 TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
   const PostShaders on = build({});
   PostEffects noTonemap;

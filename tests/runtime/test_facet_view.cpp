@@ -72,6 +72,30 @@ TEST(FacetView, MsaaReachesTheBackendsAndTheFrameGraph) {
   EXPECT_EQ(bad.exitCode, 2) << bad.out << bad.err;
 }
 
+// --msaa-form attachments: Vulkan's portable form (lavapipe offers the extension), whose merged
+// post subpass reads the samples themselves (hdr_ms, an input attachment, still transient); an
+// unknown form is a usage error.
+TEST(FacetView, MsaaFormAttachmentsToneMapsEachSampleOnVulkan) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-msaa-form-out");
+  auto r =
+      run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages + " --out " +
+          out + " --backend vulkan --validation --msaa 4 --msaa-form attachments --stats --frames 1" + " --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("the post subpass tone maps each sample (subpassInputMS)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hdr_ms     load clear     store dont_care (input attachment)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total: loaded 0 B, stored 262144 B, sampled 0 B per frame"), std::string::npos) << r.out;
+  auto first =
+      run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages + " --out " +
+          out + " --backend vulkan --msaa 4 --msaa-form resolve-first --stats --frames 1" + " --warmup 0");
+  ASSERT_EQ(first.exitCode, 0) << first.out << first.err;
+  EXPECT_EQ(first.out.find("subpassInputMS"), std::string::npos) << first.out;
+  EXPECT_NE(first.out.find("pResolveAttachments"), std::string::npos) << first.out;
+  auto bad = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+                 " --out " + out + " --msaa 4 --msaa-form tiles");
+  EXPECT_EQ(bad.exitCode, 2) << bad.out << bad.err;
+}
+
 // --fxaa reaches both backends and the frame graph: the tone-mapped image is stored and sampled
 // (4 + 4 bytes a pixel more than without), on top of the LDR output.
 TEST(FacetView, FxaaReachesTheBackendsAndTheFrameGraph) {

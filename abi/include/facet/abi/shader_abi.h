@@ -356,6 +356,10 @@ inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;
 inline constexpr uint32_t kPostHdrColorLocation = 0;     // merged path: HDR is colour 0 of the pass
 inline constexpr uint32_t kPostMergedLdrLocation = 1;    // merged path: LDR is colour 1
 inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR is the only colour
+// MSAA on the merged path with multisampled attachments: the post pass reads `hdrColor` as a
+// subpassInputMS and loops over its samples; the count is this specialization constant of the
+// fragment stage (`facet_postSamples`), set by the Vulkan backend when it builds the pipeline.
+inline constexpr uint32_t kPostSampleCountConstantId = 0;
 // The FXAA pass (after the post pass, when on) samples the post pass's tone-mapped RGBA8 image
 // as `toneMapped` at set kPostHdrSet / binding kPostHdrBinding (GL: that texture unit), bilinear
 // and clamped, and writes colour kPostSeparateLdrLocation.

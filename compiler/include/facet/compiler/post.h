@@ -56,6 +56,12 @@ struct PostShaders {
   PostStage fetchFragment;
   // Render scale < 1 (separate path): samples an HDR image smaller than the output bilinearly.
   PostStage upscaledFragment;
+  // Merged path under MSAA with multisampled attachments (Vulkan's portable form): reads each
+  // sample of the multisampled HDR (subpassInputMS, abi::kPostSampleCountConstantId samples),
+  // tone maps it and averages in display light. glslEs is the same loop over a sampler2DMS in
+  // GLSL ES 3.10 (for Mesa's cycle counts; the GL backend resolves first); no Metal. Empty for
+  // bloom variants: bloom runs the separate path.
+  PostStage samplesFragment;
 };
 
 // Returns false with *error set when a backend rejects the assembled code (a compiler defect).

@@ -279,6 +279,9 @@ class RenderBackend {
   virtual bool readsBackHdr() const = 0;
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
+  // The post pass tone maps each MSAA sample before averaging (VulkanOptions::toneMapSamples: Vulkan's
+  // merged path with multisampled attachments); false: it reads the resolved HDR.
+  virtual bool toneMapsSamples() const { return false; }
   virtual bool fxaa() const { return false; }         // an FXAA pass follows the post pass
   virtual double renderScale() const { return 1.0; }  // the forward pass's size / the output's
   // The bloom chain's levels asked for (BloomSettings::levels), 0 when bloom is off.
@@ -329,6 +332,12 @@ struct VulkanOptions {
   // path (multisampled attachments resolved by pResolveAttachments), for tests. An app's device
   // (vulkan_backend.h) always takes the portable path.
   bool renderToSingleSampled = true;
+  // With MSAA on the merged path and the portable form (renderToSingleSampled off or not offered,
+  // or an app's device), the post subpass reads each sample of the multisampled HDR (subpassInputMS),
+  // tone maps it and averages in display light: right on HDR edges, where the resolve's average
+  // tone-maps a one-sample highlight to white (docs/runtime.md, "MSAA"). false reads the resolved
+  // HDR (resolve first), the order the extension's implicit resolve and the separate path keep.
+  bool toneMapSamples = true;
   // How meshes are packed at upload; creation fails on a device whose vertex fetch cannot read
   // the packed formats.
   VertexPacking vertexPacking = VertexPacking::Packed;
@@ -410,6 +419,10 @@ struct PostShaders {
   // reading the output's size from the PostUniforms block (viewport).
   const std::vector<uint32_t>& fragmentUpscaledSpirv;
   const std::string& fragmentUpscaledGlslEs;
+  // MSAA on the merged path with multisampled attachments: reads each sample of a subpassInputMS
+  // (abi::kPostSampleCountConstantId gives the count), tone maps it and averages in display
+  // light. Empty for bloom variants (bloom runs the separate path).
+  const std::vector<uint32_t>& fragmentSamplesSpirv;
 };
 // Every post variant the runtime embeds (each tone curve, with and without each effect).
 const std::vector<PostShaders>& postVariants();
