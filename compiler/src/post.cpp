@@ -370,6 +370,98 @@ bool buildBloomShaders(BloomStages* out, std::string* error) {
   return true;
 }
 
+namespace {
+
+// The background's stages: the mesh's position attribute and ObjectUniforms (its decoding) in the
+// vertex stage, the parameters in both (the same text, as GLSL ES requires of a block in two
+// stages), the environment and the forward pass's colour in the fragment stage.
+bool assembleBackground(Flavour flavour, const char* templateName, std::string* out, std::string* error) {
+  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n" : "#version 300 es\n";
+  text += "precision mediump float;\nprecision highp int;\n";
+  text += uniformBlockDeclaration(flavour, abi::kBackgroundBlock);
+  if (std::string(templateName).find(".vert.") != std::string::npos) {
+    text += "layout(location = " + std::to_string(abi::kAttribPosition) + ") in highp vec3 a_position;\n";
+    text += uniformBlockDeclaration(flavour, abi::kObjectBlock);
+  } else {
+    const abi::SamplerDesc& environment = abi::kEnvironmentSampler;
+    if (flavour == Flavour::Vulkan)
+      text += "layout(set = " + std::to_string(environment.set) + ", binding = " + std::to_string(environment.binding) +
+              ") ";
+    text += "uniform mediump samplerCube " + std::string(environment.name) + ";\n";
+    text += "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out vec4 fragColor;\n";
+  }
+  if (!appendLibraryFiles({templateName}, &text, error)) return false;
+  *out = std::move(text);
+  return true;
+}
+
+package::MslBinding mslBlock(const abi::BlockDesc& block) {
+  return {std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)};
+}
+
+}  // namespace
+
+std::vector<package::MslBinding> backgroundMslBindings() {
+  const abi::SamplerDesc& environment = abi::kEnvironmentSampler;
+  return {mslBlock(abi::kObjectBlock),
+          mslBlock(abi::kBackgroundBlock),
+          {std::string(environment.name), package::MslResource::Texture, environment.set, environment.binding,
+           abi::mslTextureIndex(environment.binding)}};
+}
+
+bool buildBackgroundShaders(BackgroundStages* out, std::string* error) {
+  StageSources vk, es;
+  if (!assembleBackground(Flavour::Vulkan, "post_background.vert.glsl", &vk.vertex, error) ||
+      !assembleBackground(Flavour::Vulkan, "post_background.frag.glsl", &vk.fragment, error) ||
+      !assembleBackground(Flavour::GlslEs300, "post_background.vert.glsl", &es.vertex, error) ||
+      !assembleBackground(Flavour::GlslEs300, "post_background.frag.glsl", &es.fragment, error)) {
+    return false;
+  }
+  std::string log;
+  if (!checkGlslEs300(es, &log)) {
+    *error = "post background: GLSL ES 3.00 rejected:\n" + log;
+    return false;
+  }
+  SpirvStages spirv;
+  if (!compileToSpirv(vk, &spirv, &log)) {
+    *error = "post background: glslang failed:\n" + log;
+    return false;
+  }
+  const std::vector<package::MslBinding> slots = backgroundMslBindings();
+  BackgroundStages stages;
+  if (!finishStage(&spirv.vertex, "background vertex stage", error) ||
+      !finishStage(&spirv.fragment, "background", error) ||
+      !toMsl(spirv.vertex, slots, "background vertex stage", &stages.vertex.msl, error) ||
+      !toMsl(spirv.fragment, slots, "background", &stages.fragment.msl, error))
+    return false;
+  stages.vertex.spirv = std::move(spirv.vertex);
+  stages.vertex.glslEs = std::move(es.vertex);
+  stages.fragment.spirv = std::move(spirv.fragment);
+  stages.fragment.glslEs = std::move(es.fragment);
+  *out = std::move(stages);
+  return true;
+}
+
+std::string backgroundShadersCpp(const BackgroundStages& stages) {
+  std::string cpp = "// The environment background (compiler/src/post.cpp: buildBackgroundShaders)\nnamespace {\n";
+  appendWords(&cpp, "kBackgroundVertexSpirv", stages.vertex.spirv);
+  appendWords(&cpp, "kBackgroundFragmentSpirv", stages.fragment.spirv);
+  appendText(&cpp, "kBackgroundVertexEs", stages.vertex.glslEs);
+  appendText(&cpp, "kBackgroundFragmentEs", stages.fragment.glslEs);
+  cpp +=
+      "}  // namespace\n\n"
+      "namespace facet::runtime {\n"
+      "const ShaderProgram& backgroundProgram() {\n"
+      "  static const ShaderProgram program{{std::begin(kBackgroundVertexSpirv), std::end(kBackgroundVertexSpirv)},\n"
+      "                                     {std::begin(kBackgroundFragmentSpirv), "
+      "std::end(kBackgroundFragmentSpirv)},\n"
+      "                                     kBackgroundVertexEs, kBackgroundFragmentEs, std::nullopt};\n"
+      "  return program;\n"
+      "}\n"
+      "}  // namespace facet::runtime\n";
+  return cpp;
+}
+
 std::vector<PostEffects> everyPostEffects() {
   std::vector<PostEffects> all;
   for (bool bloom : {false, true})
