@@ -291,11 +291,12 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
 
 namespace {
 
-// A pass of one sampled input (FXAA, the bloom chain) from its assembled sources: GLSL ES checked,
-// SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's targets too
-// when `vertex` is not null.
+// A pass of one sampled input (FXAA, the bloom chain, the background) from its assembled sources:
+// GLSL ES checked, SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's
+// targets too when `vertex` is not null, its Metal with `vertexSlots`.
 bool buildSampledPass(const StageSources& vk, const StageSources& es, const std::vector<package::MslBinding>& slots,
-                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error) {
+                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error,
+                      const std::vector<package::MslBinding>& vertexSlots = {}) {
   std::string log;
   if (!checkGlslEs300(es, &log)) {
     *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
@@ -312,7 +313,7 @@ bool buildSampledPass(const StageSources& vk, const StageSources& es, const std:
   fragment->glslEs = es.fragment;
   if (!vertex) return true;
   if (!finishStage(&spirv.vertex, what + " vertex stage", error) ||
-      !toMsl(spirv.vertex, {}, what + " vertex stage", &vertex->msl, error))
+      !toMsl(spirv.vertex, vertexSlots, what + " vertex stage", &vertex->msl, error))
     return false;
   vertex->spirv = std::move(spirv.vertex);
   vertex->glslEs = es.vertex;
@@ -417,27 +418,9 @@ bool buildBackgroundShaders(BackgroundStages* out, std::string* error) {
       !assembleBackground(Flavour::GlslEs300, "post_background.frag.glsl", &es.fragment, error)) {
     return false;
   }
-  std::string log;
-  if (!checkGlslEs300(es, &log)) {
-    *error = "post background: GLSL ES 3.00 rejected:\n" + log;
-    return false;
-  }
-  SpirvStages spirv;
-  if (!compileToSpirv(vk, &spirv, &log)) {
-    *error = "post background: glslang failed:\n" + log;
-    return false;
-  }
   const std::vector<package::MslBinding> slots = backgroundMslBindings();
   BackgroundStages stages;
-  if (!finishStage(&spirv.vertex, "background vertex stage", error) ||
-      !finishStage(&spirv.fragment, "background", error) ||
-      !toMsl(spirv.vertex, slots, "background vertex stage", &stages.vertex.msl, error) ||
-      !toMsl(spirv.fragment, slots, "background", &stages.fragment.msl, error))
-    return false;
-  stages.vertex.spirv = std::move(spirv.vertex);
-  stages.vertex.glslEs = std::move(es.vertex);
-  stages.fragment.spirv = std::move(spirv.fragment);
-  stages.fragment.glslEs = std::move(es.fragment);
+  if (!buildSampledPass(vk, es, slots, "background", &stages.fragment, &stages.vertex, error, slots)) return false;
   *out = std::move(stages);
   return true;
 }
