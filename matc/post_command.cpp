@@ -46,7 +46,9 @@ int postCommand(const PostArgs& args) {
   }
   compiler::PostStage fxaa;
   compiler::BloomStages bloom;
-  if (!compiler::buildFxaaShader(&fxaa, &error) || !compiler::buildBloomShaders(&bloom, &error)) {
+  compiler::BackgroundStages background;
+  if (!compiler::buildFxaaShader(&fxaa, &error) || !compiler::buildBloomShaders(&bloom, &error) ||
+      !compiler::buildBackgroundShaders(&background, &error)) {
     cli::printError(error);
     return 1;
   }
@@ -91,8 +93,13 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", bloomStem + ".threshold.frag.metal", bloom.downsampleThreshold.msl);
     add("--emit-source", bloomStem + ".up.frag.es300.glsl", bloom.upsample.glslEs);
     add("--emit-source", bloomStem + ".up.frag.metal", bloom.upsample.msl);
+    const std::string backgroundStem = (fs::path(args.emitSource) / "post.background").string();
+    add("--emit-source", backgroundStem + ".vert.es300.glsl", background.vertex.glslEs);
+    add("--emit-source", backgroundStem + ".vert.metal", background.vertex.msl);
+    add("--emit-source", backgroundStem + ".frag.es300.glsl", background.fragment.glslEs);
+    add("--emit-source", backgroundStem + ".frag.metal", background.fragment.msl);
   }
-  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa, bloom));
+  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa, bloom) + compiler::backgroundShadersCpp(background));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
     std::printf(
@@ -106,6 +113,8 @@ int postCommand(const PostArgs& args) {
   std::printf("post fxaa: %zu SPIR-V words; fragment %s\n", fxaa.spirv.size(), fragmentCost(fxaa.spirv).c_str());
   std::printf("post bloom: downsample %s, threshold %s, upsample %s\n", fragmentCost(bloom.downsample.spirv).c_str(),
               fragmentCost(bloom.downsampleThreshold.spirv).c_str(), fragmentCost(bloom.upsample.spirv).c_str());
+  std::printf("post background: %zu + %zu SPIR-V words; fragment %s\n", background.vertex.spirv.size(),
+              background.fragment.spirv.size(), fragmentCost(background.fragment.spirv).c_str());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }

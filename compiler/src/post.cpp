@@ -314,11 +314,12 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
 
 namespace {
 
-// A pass of one sampled input (FXAA, the bloom chain) from its assembled sources: GLSL ES checked,
-// SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's targets too
-// when `vertex` is not null.
+// A pass of one sampled input (FXAA, the bloom chain, the background) from its assembled sources:
+// GLSL ES checked, SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's
+// targets too when `vertex` is not null, its Metal with `vertexSlots`.
 bool buildSampledPass(const StageSources& vk, const StageSources& es, const std::vector<package::MslBinding>& slots,
-                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error) {
+                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error,
+                      const std::vector<package::MslBinding>& vertexSlots = {}) {
   std::string log;
   if (!checkGlslEs300(es, &log)) {
     *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
@@ -335,7 +336,7 @@ bool buildSampledPass(const StageSources& vk, const StageSources& es, const std:
   fragment->glslEs = es.fragment;
   if (!vertex) return true;
   if (!finishStage(&spirv.vertex, what + " vertex stage", error) ||
-      !toMsl(spirv.vertex, {}, what + " vertex stage", &vertex->msl, error))
+      !toMsl(spirv.vertex, vertexSlots, what + " vertex stage", &vertex->msl, error))
     return false;
   vertex->spirv = std::move(spirv.vertex);
   vertex->glslEs = es.vertex;
@@ -391,6 +392,80 @@ bool buildBloomShaders(BloomStages* out, std::string* error) {
   }
   *out = std::move(stages);
   return true;
+}
+
+namespace {
+
+// The background's stages: the mesh's position attribute and ObjectUniforms (its decoding) in the
+// vertex stage, the parameters in both (the same text, as GLSL ES requires of a block in two
+// stages), the environment and the forward pass's colour in the fragment stage.
+bool assembleBackground(Flavour flavour, const char* templateName, std::string* out, std::string* error) {
+  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n" : "#version 300 es\n";
+  text += "precision mediump float;\nprecision highp int;\n";
+  text += uniformBlockDeclaration(flavour, abi::kBackgroundBlock);
+  if (std::string(templateName).find(".vert.") != std::string::npos) {
+    text += "layout(location = " + std::to_string(abi::kAttribPosition) + ") in highp vec3 a_position;\n";
+    text += uniformBlockDeclaration(flavour, abi::kObjectBlock);
+  } else {
+    const abi::SamplerDesc& environment = abi::kEnvironmentSampler;
+    if (flavour == Flavour::Vulkan)
+      text += "layout(set = " + std::to_string(environment.set) + ", binding = " + std::to_string(environment.binding) +
+              ") ";
+    text += "uniform mediump samplerCube " + std::string(environment.name) + ";\n";
+    text += "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out vec4 fragColor;\n";
+  }
+  if (!appendLibraryFiles({templateName}, &text, error)) return false;
+  *out = std::move(text);
+  return true;
+}
+
+package::MslBinding mslBlock(const abi::BlockDesc& block) {
+  return {std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)};
+}
+
+}  // namespace
+
+std::vector<package::MslBinding> backgroundMslBindings() {
+  const abi::SamplerDesc& environment = abi::kEnvironmentSampler;
+  return {mslBlock(abi::kObjectBlock),
+          mslBlock(abi::kBackgroundBlock),
+          {std::string(environment.name), package::MslResource::Texture, environment.set, environment.binding,
+           abi::mslTextureIndex(environment.binding)}};
+}
+
+bool buildBackgroundShaders(BackgroundStages* out, std::string* error) {
+  StageSources vk, es;
+  if (!assembleBackground(Flavour::Vulkan, "post_background.vert.glsl", &vk.vertex, error) ||
+      !assembleBackground(Flavour::Vulkan, "post_background.frag.glsl", &vk.fragment, error) ||
+      !assembleBackground(Flavour::GlslEs300, "post_background.vert.glsl", &es.vertex, error) ||
+      !assembleBackground(Flavour::GlslEs300, "post_background.frag.glsl", &es.fragment, error)) {
+    return false;
+  }
+  const std::vector<package::MslBinding> slots = backgroundMslBindings();
+  BackgroundStages stages;
+  if (!buildSampledPass(vk, es, slots, "background", &stages.fragment, &stages.vertex, error, slots)) return false;
+  *out = std::move(stages);
+  return true;
+}
+
+std::string backgroundShadersCpp(const BackgroundStages& stages) {
+  std::string cpp = "// The environment background (compiler/src/post.cpp: buildBackgroundShaders)\nnamespace {\n";
+  appendWords(&cpp, "kBackgroundVertexSpirv", stages.vertex.spirv);
+  appendWords(&cpp, "kBackgroundFragmentSpirv", stages.fragment.spirv);
+  appendText(&cpp, "kBackgroundVertexEs", stages.vertex.glslEs);
+  appendText(&cpp, "kBackgroundFragmentEs", stages.fragment.glslEs);
+  cpp +=
+      "}  // namespace\n\n"
+      "namespace facet::runtime {\n"
+      "const ShaderProgram& backgroundProgram() {\n"
+      "  static const ShaderProgram program{{std::begin(kBackgroundVertexSpirv), std::end(kBackgroundVertexSpirv)},\n"
+      "                                     {std::begin(kBackgroundFragmentSpirv), "
+      "std::end(kBackgroundFragmentSpirv)},\n"
+      "                                     kBackgroundVertexEs, kBackgroundFragmentEs, std::nullopt};\n"
+      "  return program;\n"
+      "}\n"
+      "}  // namespace facet::runtime\n";
+  return cpp;
 }
 
 std::vector<PostEffects> everyPostEffects() {

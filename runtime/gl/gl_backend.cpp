@@ -747,9 +747,11 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   else
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   // Premultiplied colour for the blended modes; they test depth but do not write it.
+  // The background (at the far plane) passes where depth is still the cleared 1 and writes none.
+  glDepthFunc(item.atFarPlane ? GL_LEQUAL : GL_LESS);
   if (item.blending == Blending::Opaque) {
     glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
+    glDepthMask(item.atFarPlane ? GL_FALSE : GL_TRUE);
   } else {
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, item.blending == Blending::Transparent ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE);

@@ -12,6 +12,7 @@
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
+#include "facet/runtime/background.h"
 #include "facet/runtime/color_grading.h"
 #include "facet/runtime/compressed_texture.h"
 #include "facet/runtime/environment.h"
@@ -198,7 +199,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     out->frame_.colorLut = &out->colorLut_;
   }
   if (scene.post.vignette) out->frame_.postUniforms = postUniforms(scene.vignette, scene.width, scene.height);
-  // The background is the environment's mean (exact for a constant sky): no backdrop is drawn.
+  // The clear colour is the environment's mean: the flat background (exact for a constant sky),
+  // and what shows where a drawn background is not (never, as it covers the screen).
   for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 
   const int cascades = int(sunShadowCascades(scene));
@@ -349,6 +351,10 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     if (blendedA != blendedB) return blendedB;
     return blendedA && distance(a) > distance(b);
   });
+  static_assert(kMaxBackgroundLod == abi::kEnvironmentLevels - 1,
+                "the scene's background levels are the environment's");
+  if (scene.background.environment)
+    addBackground(&out->frame_, {float(scene.background.lod), float(scene.background.intensity)});
   return out;
 }
 

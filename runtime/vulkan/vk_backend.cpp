@@ -270,10 +270,10 @@ class VulkanBackend final : public VulkanRenderer {
   // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
   // the queue before reusing a frame slot that one of them may still read.
   bool recordedSinceIdle_ = false;
-  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked), its
+  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked, at the far plane), its
   // mesh's vertex layout (packed with 16-bit or fp32 positions, or full precision) and the pass
   // (forward, or the shadow pass's depth only).
-  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout, bool>, CachedPipeline> pipelines_;
+  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout, bool, bool>, CachedPipeline> pipelines_;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -890,7 +890,8 @@ void VulkanBackend::writePostSet() {
 
 bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout, bool depthOnly,
                                 VkPipeline* out, std::string* error) {
-  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout, depthOnly);
+  const auto key =
+      std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout, depthOnly, draw.atFarPlane);
   auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
@@ -907,6 +908,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   desc.kind = PipelineKind::Forward;
   desc.blending = draw.blending;
   desc.cullBackFaces = draw.cullBackFaces;
+  desc.atFarPlane = draw.atFarPlane;
   desc.samples = samples_.count;
   desc.alphaToCoverage = draw.masked;
   desc.vertexLayout = layout;

@@ -611,8 +611,9 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
   depth.depthTestEnable = VK_TRUE;
   // Blended surfaces test depth against the opaque ones but do not occlude each other.
-  depth.depthWriteEnable = desc.blending == Blending::Opaque ? VK_TRUE : VK_FALSE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  // The background (at the far plane) passes where depth is still the cleared 1 and writes none.
+  depth.depthWriteEnable = desc.blending == Blending::Opaque && !desc.atFarPlane ? VK_TRUE : VK_FALSE;
+  depth.depthCompareOp = desc.atFarPlane ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_LESS;
   depth.minDepthBounds = 0.0f;
   depth.maxDepthBounds = 1.0f;
 

@@ -111,6 +111,7 @@ struct PipelineDesc {
   PipelineKind kind = PipelineKind::Forward;
   Blending blending = Blending::Opaque;                     // forward pipelines only
   bool cullBackFaces = false;                               // forward and depth pipelines only
+  bool atFarPlane = false;                                  // forward pipelines only: DrawItem::atFarPlane
   VertexLayout vertexLayout = VertexLayout::FullPrecision;  // forward pipelines only: the streams' formats
   const std::vector<uint32_t>* vertexSpirv = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;

@@ -461,10 +461,26 @@ ShadowSettings shadows(const json& j) {
   return s;
 }
 
+// `show`: "environment" (at `lod`, × `intensity`) or "flat" (the mean radiance, which takes neither).
+Background background(const json& j, bool hasEnvironment) {
+  onlyKeys(j, "/background", {"show", "lod", "intensity"});
+  Background b;
+  b.environment = hasEnvironment;
+  constexpr const char* kShows[] = {"environment", "flat"};
+  if (j.contains("show")) b.environment = oneOf(j["show"], "/background/show", kShows) == 0;
+  for (const char* key : {"lod", "intensity"})
+    if (!b.environment && j.contains(key))
+      fail(std::string("/background/") + key, "applies to the environment drawn, not to \"show\": \"flat\"");
+  if (j.contains("lod")) b.lod = number(j["lod"], "/background/lod", 0, kMaxBackgroundLod);
+  // At most 16: the shader's radiance stays mediump-finite (templates/post_background.frag.glsl).
+  if (j.contains("intensity")) b.intensity = number(j["intensity"], "/background/intensity", 0, 16);
+  return b;
+}
+
 Scene scene(const json& j, const AssetPaths& assets) {
   onlyKeys(j, "",
            {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post",
-            "antialiasing", "renderScale", "shadows"});
+            "antialiasing", "renderScale", "shadows", "background"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
@@ -494,6 +510,8 @@ Scene scene(const json& j, const AssetPaths& assets) {
       fail("/environment", "give either 'sky' (a constant environment) or 'environment', not both");
     s.environment = environment(j["environment"], assets);
   }
+  s.background.environment = s.environment.has_value();
+  if (j.contains("background")) s.background = background(j["background"], s.environment.has_value());
   if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");
   if (j["objects"].size() > 4096) fail("/objects", "more than 4096 objects");
   for (size_t i = 0; i < j["objects"].size(); ++i)

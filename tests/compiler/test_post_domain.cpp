@@ -3,6 +3,7 @@
 // absent from the shaders.
 #include <gtest/gtest.h>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/post.h"
 #include "facet/compiler/spirv_tools_backend.h"
 
@@ -208,4 +209,28 @@ TEST(PostDomain, BloomIsCompiledOutWhenOffAndBoundFromTheAbiWhenOn) {
   EXPECT_TRUE(contains(chain.downsampleThreshold.glslEs, "layout(std140) uniform PostUniforms"));
   EXPECT_TRUE(contains(chain.upsample.glslEs, "bloom_tent9(bloomSource"));
   EXPECT_TRUE(contains(chain.vertex.glslEs, "out highp vec2 bloomUv;"));
+}
+
+// The environment background: built for every target, reading the environment at the ABI's slot
+// with an explicit level (no derivative: the face changes under a pixel at cube edges), its
+// parameters from the MaterialParams slot, and written into the runtime's generated source.
+TEST(PostDomain, TheBackgroundIsBuiltForEveryTargetAndBoundFromTheAbi) {
+  BackgroundStages background;
+  std::string error;
+  ASSERT_TRUE(buildBackgroundShaders(&background, &error)) << error;
+  for (const PostStage* stage : {&background.vertex, &background.fragment}) {
+    EXPECT_FALSE(stage->spirv.empty());
+    EXPECT_TRUE(contains(stage->glslEs, "#version 300 es"));
+    EXPECT_TRUE(contains(stage->glslEs, "uniform MaterialParams"));
+    EXPECT_TRUE(contains(stage->msl, "[[buffer(" + std::to_string(facet::abi::kMaterialBinding) + ")]]"));
+  }
+  EXPECT_TRUE(contains(background.fragment.glslEs, "uniform mediump samplerCube facet_environment;"));
+  EXPECT_TRUE(contains(background.fragment.glslEs, "textureLod(facet_environment"));
+  EXPECT_FALSE(contains(background.fragment.glslEs, "dFd"));
+  EXPECT_TRUE(
+      contains(background.fragment.msl, "[[texture(" + std::to_string(facet::abi::kEnvironmentBinding) + ")]]"));
+  EXPECT_TRUE(contains(background.vertex.msl, "[[buffer(" + std::to_string(facet::abi::kObjectBinding) + ")]]"));
+  const std::string cpp = backgroundShadersCpp(background);
+  EXPECT_TRUE(contains(cpp, "const ShaderProgram& backgroundProgram()"));
+  EXPECT_TRUE(contains(cpp, "kBackgroundFragmentSpirv"));
 }

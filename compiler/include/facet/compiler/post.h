@@ -84,6 +84,21 @@ struct BloomStages {
 };
 bool buildBloomShaders(BloomStages* out, std::string* error);
 
+// The environment drawn as the background (templates/post_background.*.glsl, runtime/background.h):
+// not a pass of its own but a draw of the forward pass (a full-screen triangle at the far plane,
+// its parameters in the MaterialParams slot as abi::BackgroundParams, the frame's
+// facet_environment), so it runs under the forward pass's MSAA, render scale and path.
+struct BackgroundStages {
+  PostStage vertex;
+  PostStage fragment;
+};
+bool buildBackgroundShaders(BackgroundStages* out, std::string* error);
+// Where a Metal app binds its resources: ObjectUniforms and the parameters, the environment.
+std::vector<package::MslBinding> backgroundMslBindings();
+// C++ source defining facet::runtime::backgroundProgram() (render_backend.h), appended to
+// postShadersCpp's in the runtime's generated source.
+std::string backgroundShadersCpp(const BackgroundStages& stages);
+
 // Every combination of effects: what the runtime embeds.
 std::vector<PostEffects> everyPostEffects();
 

@@ -136,6 +136,9 @@ struct DrawItem {
   // for it and the shader writes its edge's coverage as alpha instead of discarding
   // (output_blending.glsl, FrameUniforms::cameraPosition.w).
   bool masked = false;
+  // Drawn at the far plane (the environment background, runtime/background.h): depth test
+  // LEQUAL against the cleared depth 1, so only pixels no opaque draw covered, and no depth write.
+  bool atFarPlane = false;
 };
 
 inline constexpr abi::InstanceTransform kIdentityInstance{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
@@ -441,6 +444,9 @@ struct BloomShaders {
   std::string vertexGlslEs, downsampleGlslEs, thresholdGlslEs, upsampleGlslEs;
 };
 const BloomShaders& bloomShaders();
+// The environment drawn as the background (runtime/background.h makes its draw): a full-screen
+// triangle at the far plane sampling facet_environment, its MaterialParams abi::BackgroundParams.
+const ShaderProgram& backgroundProgram();
 // The variant running `settings`, or nullptr with *error listing the embedded ones.
 const PostShaders* findPostShaders(const PostSettings& settings, std::string* error);
 

@@ -117,6 +117,17 @@ struct Environment {
   glm::dvec3 ground{0.3, 0.25, 0.2};
 };
 
+// "background" (docs/scene-format.md): what shows where no object covers a pixel.
+inline constexpr double kMaxBackgroundLod = 4;  // the prefiltered environment's last level
+struct Background {
+  // The environment drawn behind everything (runtime/background.h), at level `lod`, its radiance ×
+  // `intensity`; false: the environment's mean radiance as a flat colour (exact for a constant
+  // `sky`). Default: drawn when the scene has an `environment`.
+  bool environment = false;
+  double lod = 0;
+  double intensity = 1;
+};
+
 struct Scene {
   uint32_t width = 256;
   uint32_t height = 256;
@@ -127,6 +138,7 @@ struct Scene {
   ShadowSettings shadows;   // the "shadows" block; used when sun->castShadows
   double skyLuminance = 0;  // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
+  Background background;
   std::vector<SceneObject> objects;
   PostSettings post;  // the post pass's effects (docs/scene-format.md "post")
   // Their settings, read when post.colorGrading / post.vignette are on: grading from settings, or
