@@ -323,6 +323,10 @@ GlBackend::~GlBackend() {
 
 bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
   // Receivers drawn without their shadow would be a silently wrong image (docs/shadows.md).
+  if (frame.shadow && frame.shadow->spotViews > 0) {
+    *error = "a spot light casts shadows, which this backend does not draw yet (docs/shadows.md, \"Spot shadows\")";
+    return false;
+  }
   if (frame.shadow) {
     *error = "the sun casts shadows (/sun/castShadows), which this backend does not draw yet (docs/shadows.md)";
     return false;
