@@ -157,7 +157,7 @@ PunctualLight light(const json& j, const std::string& pointer) {
   std::string type = j.contains("type") ? string(j["type"], pointer + "/type") : "";
   if (type != "point" && type != "spot") fail(pointer + "/type", "expected \"point\" or \"spot\"");
   l.spot = type == "spot";
-  // A point light would need six faces of casters (docs/shadows.md, "Scope"): a light asking for
+  // A point light would need six faces of casters (docs/shadows.md, "Status"): a light asking for
   // a shadow it would not get is an error, not an unshadowed image.
   if (j.contains("castShadows")) {
     l.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
