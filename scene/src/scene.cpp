@@ -157,11 +157,14 @@ PunctualLight light(const json& j, const std::string& pointer) {
   std::string type = j.contains("type") ? string(j["type"], pointer + "/type") : "";
   if (type != "point" && type != "spot") fail(pointer + "/type", "expected \"point\" or \"spot\"");
   l.spot = type == "spot";
-  // Only the sun casts so far (docs/shadows.md, "Scope"): a light asking for a shadow it would
-  // not get is an error, not an unshadowed image.
-  if (j.contains("castShadows") && boolean(j["castShadows"], pointer + "/castShadows"))
-    fail(pointer + "/castShadows", l.spot ? "spot-light shadows are not supported yet; only the sun casts shadows"
-                                          : "point-light shadows are not supported; only the sun casts shadows");
+  // A point light would need six faces of casters (docs/shadows.md, "Status"): a light asking for
+  // a shadow it would not get is an error, not an unshadowed image.
+  if (j.contains("castShadows")) {
+    l.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
+    if (l.castShadows && !l.spot)
+      fail(pointer + "/castShadows",
+           "point-light shadows are not supported; only the sun and spot lights cast shadows");
+  }
   if (!l.spot)
     for (const char* key : {"direction", "innerAngle", "outerAngle"})
       if (j.contains(key)) fail(pointer + "/" + key, "only a spot light has a " + std::string(key));
@@ -173,6 +176,10 @@ PunctualLight light(const json& j, const std::string& pointer) {
   if (j.contains("innerAngle")) l.innerAngleDegrees = number(j["innerAngle"], pointer + "/innerAngle", 0, 90);
   if (j.contains("outerAngle")) l.outerAngleDegrees = number(j["outerAngle"], pointer + "/outerAngle", 0.5, 90);
   if (l.innerAngleDegrees >= l.outerAngleDegrees) fail(pointer + "/innerAngle", "must be smaller than outerAngle");
+  if (l.castShadows && l.outerAngleDegrees > kMaxShadowSpotAngleDegrees)
+    fail(pointer + "/outerAngle", "a spot light casting shadows has an outerAngle of at most " +
+                                      std::to_string(int(kMaxShadowSpotAngleDegrees)) +
+                                      " degrees (one perspective view)");
   return l;
 }
 
@@ -497,8 +504,13 @@ Scene scene(const json& j, const AssetPaths& assets) {
     if (j["lights"].size() > kMaxSceneLights)
       fail("/lights", std::to_string(j["lights"].size()) + " lights; a scene has at most " +
                           std::to_string(kMaxSceneLights) + " point and spot lights");
-    for (size_t i = 0; i < j["lights"].size(); ++i)
-      s.lights.push_back(light(j["lights"][i], "/lights/" + std::to_string(i)));
+    for (size_t i = 0; i < j["lights"].size(); ++i) {
+      const std::string pointer = "/lights/" + std::to_string(i);
+      s.lights.push_back(light(j["lights"][i], pointer));
+      if (s.lights.back().castShadows && shadowSpotLights(s).size() > kMaxShadowSpotLights)
+        fail(pointer + "/castShadows", "a scene has at most " + std::to_string(kMaxShadowSpotLights) +
+                                           " spot light casting shadows (docs/shadows.md, \"Spot shadows\")");
+    }
   }
   if (j.contains("sky")) {
     onlyKeys(j["sky"], "/sky", {"luminance"});

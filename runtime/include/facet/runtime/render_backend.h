@@ -158,10 +158,12 @@ struct ColorLutTexels {
   std::vector<uint16_t> rgba;
 };
 
-// One cascade of the sun's shadow pass (runtime/sun_shadow.h: SunCascade).
+// One view of the shadow pass: a cascade of the sun's (runtime/sun_shadow.h: SunCascade) or a spot
+// light's view (runtime/spot_shadow.h: SpotShadow).
 struct ShadowCascadeDesc {
-  // World → GL clip of the cascade's orthographic view. The pass keeps GL's clip y (a Vulkan
-  // pass converts z to [0, 1] only): atlas row r is window y = r in both APIs.
+  // World → GL clip of the cascade's orthographic view, or the spot light's perspective one. The
+  // pass keeps GL's clip y (a Vulkan pass converts z to [0, 1] only): atlas row r is window y = r
+  // in both APIs.
   float viewProjection[16] = {};
   uint32_t viewport[4] = {};  // x, y, width, height in atlas texels
   // The casters' depth bias: `depthBias` in window depth (the scene's depthBias texels ×
@@ -173,13 +175,16 @@ struct ShadowCascadeDesc {
   std::vector<uint32_t> casters;  // indices into ShadowPassDesc::casters that can shadow the cascade
 };
 
-// The sun's shadow pass (docs/shadows.md, "Shadow pass"): the casters drawn, per cascade, into a
-// square D16 atlas cleared to depth 1, before the forward pass; the forward pass's receivers
-// (`.shN` variants) sample it (abi::kShadowAtlasBinding) with depth compare, and read `uniforms`
+// The shadow pass (docs/shadows.md, "Shadow pass"): the casters drawn, per view, into a square
+// D16 atlas cleared to depth 1, before the forward pass; the forward pass's receivers (`.shN`
+// variants) sample it (abi::kShadowAtlasBinding) with depth compare, and read `uniforms`
 // (abi::kShadowBinding).
 struct ShadowPassDesc {
   uint32_t atlasSize = 0;
+  // The views, each drawn alike (its rectangle, matrix, biases and casters): the sun's cascades,
+  // then the last `spotViews` of them the spot lights' perspective views (runtime/spot_shadow.h).
   std::vector<ShadowCascadeDesc> cascades;
+  uint32_t spotViews = 0;
   // The casters with their materials' depth-only programs (`<tier>.depth`), parameters and
   // textures (a masked material's alpha test reads them); the frame block's viewProjection is
   // the cascade's.
