@@ -165,6 +165,10 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     // clamped to 65504. That clamp is the RGBA16F target's limit, so it applies in every tier
     // (saturateMediump is an identity in the highp `reference`).
     vec3 irradiance = lightColor * NoL;
+#if defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE)
+    // Under a sheen layer (sheen_layer.glsl): the base × b, the sheen's own lobe added by the caller.
+    irradiance *= shading_sheen_base_scale;
+#endif
 #if defined(FACET_CLEAR_COAT_LOBE)
     // Under a clear coat (clear_coat_ggx_kelemen.glsl): the base is lit through it, × (1 − Fc(n_c·v)),
     // and the coat adds its own lobe (finite: ≤ 65504 · E · n·l, saturated with the sum below).

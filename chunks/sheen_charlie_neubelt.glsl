@@ -28,3 +28,10 @@ float sheen_lobe_times_n_dot_l(float alpha, float NoV, float NoL, float NoH) {
     float sin2h = max(1.0 - NoH * NoH, 0.0);
     return (2.0 + invAlpha) * pow(sin2h, 0.5 * invAlpha) * (0.5 * INV_PI) * visibilityTimesNoL;
 }
+
+// s(n·v, r) = 1/max(1, E), the lobe's energy correction, and b(n·v, r) = 1 − max(sheenColor) · min(E, 1),
+// the scale of the base under the sheen (sheen_layer.glsl has both), set once per pixel by sheen_layer
+// before any light is shaded. Declared with the lobe: the standard model's lights read b
+// (shading_standard.glsl, before sheen_layer.glsl).
+float shading_sheen_scale = 1.0;
+float shading_sheen_base_scale = 1.0;

@@ -985,6 +985,43 @@ TEST(Fp16Cloth, HighAbove50DbWhereTheViewGrazes) {
   expectHighFp16Above50Db("cloth", material, "cloth_case", scenes);
 }
 
+// The sheen layer's fp16 hazards (chunks/sheen_layer.glsl: the cloth model's lobe at sheenRoughness
+// 0, clamped to 0.089, over the standard model's base, whose lights are scaled by b) in `high`,
+// fp16-emulated, against its fp32 form and against `reference`: a glossy dielectric under a white
+// sheen of roughness 0 and 0.5, (a) seen from the front under the sun, (b) n·v → 0 over the whole
+// image (the camera skimming a sphere 1000 m in radius, the sun ahead: the sheen's grazing peak and
+// the base's grazing glint at once), (c) rims lit from behind.
+TEST(Fp16SheenLayer, HighAbove50DbWhereTheViewGrazes) {
+  const char* material = R"(material sheen_case {
+    shading lit
+    param sheenRoughness: float = 0.0 in [0, 1]
+    surface {
+        baseColor = vec3(0.05, 0.1, 0.4)
+        roughness = 0.3
+        sheenColor = vec3(1.0, 0.9, 0.8)
+        sheenRoughness = params.sheenRoughness
+    }
+})";
+  const std::pair<const char*, std::string> scenes[] = {
+      {"sheen_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                            "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
+         "objects": [
+           {"material": "sheen_case", "position": [-1.1, 0, 0]},
+           {"material": "sheen_case", "position": [1.1, 0, 0], "params": {"sheenRoughness": 0.5}}
+         ]})"},
+      {"sheen_grazing_view", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+         "objects": [{"material": "sheen_case", "position": [0, -1000, 0], "radius": 1000}]})"},
+      {"sheen_backlit_rims", R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                                 "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.3, -0.2, 0.93]") R"(,
+         "objects": [
+           {"material": "sheen_case", "position": [-1.1, 0, 0]},
+           {"material": "sheen_case", "position": [1.1, 0, 0], "params": {"sheenRoughness": 0.5}}
+         ]})"},
+  };
+  expectHighFp16Above50Db("sheen layer", material, "sheen_case", scenes);
+}
+
 // Anisotropy's fp16 hazard (chunks/anisotropy_ggx_smith.glsl: α_t α_b at the roughness floor and
 // anisotropy ±1, and V at grazing views) in `high`, fp16-emulated, against its fp32 form and against
 // `reference`: a metal at roughness 0 (clamped to 0.089: α = 0.0079, α_b = α_min) and anisotropy 1
