@@ -823,3 +823,20 @@ TEST(Tiers, SheenLayerFormsPerTierAndOnlyWhereWritten) {
   EXPECT_EQ(dropped.aluOps, base.aluOps);
   EXPECT_EQ(dropped.textureSamples, base.textureSamples);
 }
+
+// The sheen's environment takes the specular occlusion (sheen_layer.glsl, after
+// shading_ambient.glsl): a cloth material or a sheen layer writing ambientOcclusion compiles in
+// every tier, and the occlusion reaches the sheen's environment term.
+TEST(Tiers, SheenWithAmbientOcclusionCompilesAndOccludesTheSheen) {
+  auto cloth = facet::test::buildText(
+      "material m { shading cloth\n surface { roughness = 0.6\n ambientOcclusion = 0.5 } }");
+  auto layered = facet::test::buildText(
+      "material m { surface { roughness = 0.6\n sheenColor = vec3(0.8)\n ambientOcclusion = 0.5 } }");
+  ASSERT_TRUE(cloth && layered);
+  for (const auto* built : {&*cloth, &*layered}) {
+    const std::string text = esText(*built, "high.dir1", Stage::Fragment);
+    const size_t layer = text.find("vec3 sheen_layer(");
+    ASSERT_NE(layer, std::string::npos);
+    EXPECT_NE(text.find("apply_specular_occlusion(material,specular", layer), std::string::npos);
+  }
+}

@@ -165,6 +165,92 @@ TEST(GltfMaterials, BadMaterialsAreErrorsNamingThePlace) {
               "/materials/4/extensions/KHR_materials_specular/specularColorFactor: expected 3 numbers");
 }
 
+// KHR_materials_sheen (docs/gltf.md): the glass of features.gltf given a sheen, with factors and
+// both textures (the roughness's on TEXCOORD_1, transformed), becomes a feature set with a sheen
+// layer whose .mat compiles for every tier, samples the colour's RGB and the roughness's alpha, and
+// whose scene object carries the factors; the sheen without textures is its own feature set; bad
+// factors and textures are errors naming their JSON pointer.
+TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
+  const std::string dir = facet::test::scratchDir("gltf-materials-sheen");
+  fs::remove_all(dir + "/out");
+  fs::create_directories(dir + "/out");
+  fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png",
+                fs::copy_options::overwrite_existing);
+  const std::string glass =
+      R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
+  const std::string sheen =
+      R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_sheen": {)"
+      R"("sheenColorFactor": [0.9, 0.8, 0.7], "sheenRoughnessFactor": 0.4, "sheenColorTexture": {"index": 0}, )"
+      R"("sheenRoughnessTexture": {"index": 1, "texCoord": 1, "extensions": {"KHR_texture_transform": )"
+      R"({"scale": [2, 2]}}}}}})";
+  const std::string text = facet::test::readText(featuresFile());
+  const auto edited = [&](const std::string& extension) {
+    std::string t = text;
+    const size_t at = t.find(glass);
+    EXPECT_NE(at, std::string::npos);
+    t.replace(at, glass.size(), extension);
+    std::ofstream(dir + "/sheen.gltf") << t;
+    return dir + "/sheen.gltf";
+  };
+  std::string error;
+  auto set = facet::runtime::readGltfMaterials(edited(sheen), &error);
+  ASSERT_TRUE(set) << error;
+  const GltfMaterial& m = *find(*set, 3);
+  EXPECT_EQ(m.features.name(), "gltf_sc0_sr1t_vc_blend_sh");
+  EXPECT_EQ(m.sheenColorFactor, (std::array<double, 3>{0.9, 0.8, 0.7}));
+  EXPECT_DOUBLE_EQ(m.sheenRoughnessFactor, 0.4);
+  EXPECT_EQ(m.textures[size_t(GltfSlot::SheenRoughness)].scale, (std::array<double, 2>{2, 2}));
+  for (const std::string& note : set->notes) EXPECT_EQ(note.find("KHR_materials_sheen"), std::string::npos) << note;
+  const std::string source = facet::runtime::gltfMaterialSource(m.features);
+  EXPECT_NE(source.find("sheenColor = params.sheenColorFactor * sample(params.sheenColorTexture, vertex.uv0).rgb"),
+            std::string::npos)
+      << source;
+  EXPECT_NE(source.find("sheenRoughness = params.sheenRoughnessFactor * sample(params.sheenRoughnessTexture, "
+                        "sheenRoughnessTextureUv).a"),
+            std::string::npos)
+      << source;
+  ASSERT_TRUE(facet::test::buildText(source, m.features.name() + ".mat")) << source;
+  // The scene object carries the factors and the textures.
+  facet::runtime::GltfImport imported;
+  ASSERT_TRUE(facet::runtime::importGltf(dir + "/sheen.gltf", dir + "/out", dir, &imported, &error)) << error;
+  const std::string json = facet::test::readText(imported.scene);
+  for (const char* key : {"\"sheenColorFactor\"", "\"sheenRoughnessFactor\"", "\"sheenColorTexture\"",
+                          "\"sheenRoughnessTextureScale\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  // Factors alone: the layer without textures.
+  auto plain = facet::runtime::readGltfMaterials(
+      edited(R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_sheen": {}}})"), &error);
+  ASSERT_TRUE(plain) << error;
+  EXPECT_EQ(find(*plain, 3)->features.name(), "gltf_vc_blend_sh");
+  EXPECT_EQ(find(*plain, 3)->sheenColorFactor, (std::array<double, 3>{0, 0, 0}));
+  EXPECT_TRUE(facet::test::buildText(facet::runtime::gltfMaterialSource(find(*plain, 3)->features), "plain.mat"));
+  const auto expectError = [&](const std::string& from, const std::string& to, const std::string& why) {
+    std::string bad = sheen;
+    const size_t at = bad.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bad.replace(at, from.size(), to);
+    const std::string path = edited(bad);
+    std::string message;
+    EXPECT_FALSE(facet::runtime::readGltfMaterials(path, &message));
+    EXPECT_EQ(message, path + ": error: " + why);
+  };
+  expectError("[0.9, 0.8, 0.7]", "[0.9, 1.8, 0.7]",
+              "/materials/3/extensions/KHR_materials_sheen/sheenColorFactor/1: 1.8 is outside [0, 1]");
+  expectError("[0.9, 0.8, 0.7]", "[0.9, 0.8]",
+              "/materials/3/extensions/KHR_materials_sheen/sheenColorFactor: expected 3 numbers");
+  expectError("\"sheenRoughnessFactor\": 0.4", "\"sheenRoughnessFactor\": -0.4",
+              "/materials/3/extensions/KHR_materials_sheen/sheenRoughnessFactor: -0.4 is outside [0, 1]");
+  expectError("\"sheenRoughnessFactor\": 0.4", "\"sheenRoughnessFactor\": \"rough\"",
+              "/materials/3/extensions/KHR_materials_sheen/sheenRoughnessFactor: not a number");
+  expectError("\"sheenColorTexture\": {\"index\": 0}", "\"sheenColorTexture\": {\"index\": 9}",
+              "/materials/3/extensions/KHR_materials_sheen/sheenColorTexture/index: texture 9 does not exist");
+  expectError("\"sheenColorTexture\": {\"index\": 0}", "\"sheenColorTexture\": {\"texCoord\": 0}",
+              "/materials/3/extensions/KHR_materials_sheen/sheenColorTexture/index: expected a texture index");
+  expectError("\"texCoord\": 1", "\"texCoord\": 3",
+              "/materials/3/extensions/KHR_materials_sheen/sheenRoughnessTexture/texCoord: 3 (Facet reads TEXCOORD_0 "
+              "and TEXCOORD_1)");
+}
+
 // `gltfMaterial` picks a glTF material's primitives: only on a glTF mesh, an integer, and one the
 // file's scene draws.
 TEST(GltfMaterials, SceneObjectsPickPrimitivesByMaterial) {

@@ -17,8 +17,9 @@
 namespace facet::runtime {
 
 // The texture slots of glTF's metallic-roughness material, in the order of this enum.
-enum class GltfSlot { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive };
-inline constexpr size_t kGltfSlots = 5;
+// KHR_materials_sheen's two textures follow the core ones.
+enum class GltfSlot { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive, SheenColor, SheenRoughness };
+inline constexpr size_t kGltfSlots = 7;
 
 // One texture a material samples.
 struct GltfTextureUse {
@@ -41,6 +42,7 @@ struct GltfFeatures {
   std::string alphaMode = "OPAQUE";
   double alphaCutoff = 0.5;  // MASK only
   bool doubleSided = false;
+  bool sheen = false;  // KHR_materials_sheen present: a sheen layer (sheenColor, sheenRoughness)
 
   // The Facet material's name: "gltf" and one part per feature, e.g. gltf_bc0_mr0_n0_ao1_em0_ds.
   std::string name() const;
@@ -60,6 +62,9 @@ struct GltfMaterial {
   // KHR_materials_specular: the dielectric f0 = min(f0(ior) · specularColorFactor, 1) · specularFactor.
   double specularFactor = 1;
   std::array<double, 3> specularColorFactor{1, 1, 1};
+  // KHR_materials_sheen's factors (linear colour, perceptual roughness; the extension's defaults).
+  std::array<double, 3> sheenColorFactor{0, 0, 0};
+  double sheenRoughnessFactor = 0;
   std::array<GltfTextureUse, kGltfSlots> textures;
 
   // Facet's `reflectance` (f0 = 0.16 · reflectance², a scalar, f90 = 1; docs/gltf.md): from the
