@@ -37,13 +37,13 @@ vec3 shade_cloth_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, h
     float NoLSigned = dot(n, l);
     float NoL = clamp(NoLSigned, 0.0, 1.0);
 #if defined(FACET_SHEEN_LOBE)
-    vec3 sheen = sheen_direct(material, n, viewHighp, lightHighp, lightColor);  // (sheen_layer.glsl)
+    vec3 sheen = sheen_direct(material, n, viewHighp, lightHighp);  // (sheen_layer.glsl)
 #else
     vec3 sheen = vec3(0.0);  // (the tier's sheen form has no lobe per light: folded away)
 #endif
 #if defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl, Lambert's: the wrap is this form's loss).
-    return sheen;
+    return min(sheen * lightColor, MEDIUMP_FLT_MAX);
 #else
     vec3 diffuseColor = material_diffuse_color(material);
 #if defined(FACET_GAMMA_HACK)
@@ -60,6 +60,6 @@ vec3 shade_cloth_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, h
 #if defined(FACET_SHEEN_LOBE)
     diffuse *= shading_sheen_base_scale;
 #endif
-    return min(diffuse * lightColor + sheen, MEDIUMP_FLT_MAX);
+    return min((diffuse + sheen) * lightColor, MEDIUMP_FLT_MAX);
 #endif
 }

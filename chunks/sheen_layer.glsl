@@ -48,21 +48,32 @@ float sheen_perceptual_roughness(MaterialInputs material) {
 }
 
 #if defined(FACET_SHEEN_LOBE)
-// One light's sheen, sheenColor · D · V · n·l · s · E_light (under a clear coat's lobe also × its
-// 1 − Fc(n_c·v)); v and l arrive highp for the half vector (shading_standard.glsl, half_vector).
-vec3 sheen_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp, vec3 lightColor) {
+// α = r_s² (the cloth's preshaded α where the preshader has it, shading_standard.glsl).
+float sheen_alpha(MaterialInputs material) {
+#if defined(FACET_SHADING_CLOTH)
+    return material_alpha(material);
+#else
     float perceptualRoughness = sheen_perceptual_roughness(material);
+    return perceptualRoughness * perceptualRoughness;
+#endif
+}
+
+// One light's sheen per unit of its light, sheenColor · D · V · n·l · s (under a clear coat's lobe
+// also × its 1 − Fc(n_c·v)); v and l arrive highp for the half vector (shading_standard.glsl,
+// half_vector). ≤ 5.2 (sheen_charlie_neubelt.glsl): the caller's product with the light is
+// saturated as the base's.
+vec3 sheen_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp) {
     vec3 v = viewHighp;
     vec3 l = lightHighp;
     vec3 h = half_vector(viewHighp, lightHighp);
     float NoV = max(dot(n, v), MIN_N_DOT_V);
     float NoL = clamp(dot(n, l), 0.0, 1.0);
     float NoH = clamp(dot(n, h), 0.0, 1.0);
-    float lobe = sheen_lobe_times_n_dot_l(perceptualRoughness * perceptualRoughness, NoV, NoL, NoH) * shading_sheen_scale;
+    float lobe = sheen_lobe_times_n_dot_l(sheen_alpha(material), NoV, NoL, NoH) * shading_sheen_scale;
 #if defined(FACET_CLEAR_COAT_LOBE) && !defined(FACET_SHADING_CLOTH)
     lobe *= shading_clear_coat_attenuation;
 #endif
-    return min(sheen_color(material) * lobe * lightColor, MEDIUMP_FLT_MAX);
+    return sheen_color(material) * lobe;
 }
 #endif
 

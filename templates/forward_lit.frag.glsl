@@ -83,7 +83,7 @@ highp vec3 shading_view_highp;
 // One light on the standard model under a sheen layer: its base (× b) and the sheen's lobe.
 vec3 shade_sheened_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp, vec3 lightColor) {
     return add_light(shade_standard_direct(material, n, viewHighp, lightHighp, lightColor),
-                     sheen_direct(material, n, viewHighp, lightHighp, lightColor));
+                     min(sheen_direct(material, n, viewHighp, lightHighp) * lightColor, MEDIUMP_FLT_MAX));
 }
 #endif
 #if FACET_POINT_LIGHTS > 0
