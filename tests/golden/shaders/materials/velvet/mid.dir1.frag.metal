@@ -49,21 +49,21 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _369 = normalize(half3(in.v_normal));
-    float3 _373 = fast::normalize(in.v_toEye);
-    half _509 = max(dot(_369, half3(_373)), half(9.9999997473787516355514526367188e-05));
-    float4 _514 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_509, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _560 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _773 = half4(_514);
-    half _527 = _773.z;
-    float4 _567 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_373), _369)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _418 = half4(frame.lightDirection).xyz;
-    half _593 = clamp(dot(_369, _418), half(0.0), half(1.0));
-    half _607 = clamp(dot(_369, normalize(half3(_373) + _418)), half(0.0), half(1.0));
-    half _654 = half(8192.0) * fma(half(-float(_593)), _509, _593 + _509);
-    half _658 = half(1.0) / (half(params.facet_alpha) * _654);
-    half3 _687 = fma(half4(_567).xyz, _560 * _527, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_560.x, max(_560.y, _560.z)))), _527, half(1.0))) + min((_560 * ((((fma(_658, _654, half(2.0)) * pow(max(fma(half(-float(_607)), _607, half(1.0)), half(0.0)), half(0.5) * (_658 * _654))) * half(0.15915493667125701904296875)) * (_593 * (_658 * (half(2048.0) * half(params.facet_alpha))))) * half4(_514).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(_687, half(1.0)));
+    half3 _409 = normalize(half3(in.v_normal));
+    float3 _413 = fast::normalize(in.v_toEye);
+    half _549 = max(dot(_409, half3(_413)), half(9.9999997473787516355514526367188e-05));
+    float4 _554 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_549, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _605 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _841 = half4(_554);
+    half _567 = _841.z;
+    float4 _612 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_413), _409)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _458 = half4(frame.lightDirection).xyz;
+    half _669 = clamp(dot(_409, _458), half(0.0), half(1.0));
+    half _673 = clamp(dot(_409, normalize(half3(_413) + _458)), half(0.0), half(1.0));
+    half _715 = half(8192.0) * fma(half(-float(_669)), _549, _669 + _549);
+    half _719 = half(1.0) / (half(params.facet_alpha) * _715);
+    half3 _755 = fma(half4(_612).xyz, _605 * _567, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_605.x, max(_605.y, _605.z)))), _567, half(1.0))) + min((_605 * ((((fma(_719, _715, half(2.0)) * pow(max(fma(half(-float(_673)), _673, half(1.0)), half(0.0)), half(0.5) * (_719 * _715))) * half(0.15915493667125701904296875)) * (_669 * (_719 * (half(2048.0) * half(params.facet_alpha))))) * half4(_554).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    out.fragColor = float4(half4(_755, half(1.0)));
     return out;
 }
 
