@@ -102,7 +102,9 @@ const std::vector<Axis>& axes() {
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "sheen", o); },
        nullptr,
        // the cloth model's sheen, or a lit material's sheen layer
-       [](const ir::Material& m) { return m.shading == "lit" && (m.cloth || m.surface.outputs.count("sheenColor") > 0); }},
+       [](const ir::Material& m) {
+         return m.shading == "lit" && (m.cloth || m.surface.outputs.count("sheenColor") > 0);
+       }},
   };
   return list;
 }

@@ -17,9 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 using ordered = nlohmann::ordered_json;
 
-const char* const kSlotParameters[kGltfSlots] = {"baseColorTexture", "metallicRoughnessTexture", "normalTexture",
-                                                 "occlusionTexture",  "emissiveTexture",          "sheenColorTexture",
-                                                 "sheenRoughnessTexture"};
+const char* const kSlotParameters[kGltfSlots] = {
+    "baseColorTexture", "metallicRoughnessTexture", "normalTexture",        "occlusionTexture",
+    "emissiveTexture",  "sheenColorTexture",        "sheenRoughnessTexture"};
 
 // `target` relative to the scene's folder when it lies inside the asset root (all resolved), else "".
 std::string relativeInside(const fs::path& sceneFolder, const fs::path& root, const fs::path& target) {

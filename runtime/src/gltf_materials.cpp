@@ -38,9 +38,9 @@ constexpr SlotInfo kSlots[kGltfSlots] = {
 
 // The extensions the material path reads; any other optional one is reported and skipped (a
 // required one was refused with the file: gltf_document.cpp).
-constexpr const char* kReadExtensions[] = {"KHR_texture_transform",  "KHR_materials_emissive_strength",
-                                           "KHR_materials_ior",      "KHR_materials_specular",
-                                           "KHR_materials_sheen",    "KHR_mesh_quantization"};
+constexpr const char* kReadExtensions[] = {"KHR_texture_transform", "KHR_materials_emissive_strength",
+                                           "KHR_materials_ior",     "KHR_materials_specular",
+                                           "KHR_materials_sheen",   "KHR_mesh_quantization"};
 
 // A number for a .mat file or a feature name: the shortest text that reads back as the double.
 std::string number(double v) {
@@ -214,7 +214,8 @@ class Reader {
         *error = at + "/index: expected a texture index";
         return false;
       }
-      const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+      const int texCoord =
+          info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
       tinygltf::ExtensionMap extensions;
       if (info.Has("extensions") && info.Get("extensions").IsObject())
         for (const std::string& k : info.Get("extensions").Keys()) extensions[k] = info.Get("extensions").Get(k);

@@ -828,8 +828,8 @@ TEST(Tiers, SheenLayerFormsPerTierAndOnlyWhereWritten) {
 // shading_ambient.glsl): a cloth material or a sheen layer writing ambientOcclusion compiles in
 // every tier, and the occlusion reaches the sheen's environment term.
 TEST(Tiers, SheenWithAmbientOcclusionCompilesAndOccludesTheSheen) {
-  auto cloth = facet::test::buildText(
-      "material m { shading cloth\n surface { roughness = 0.6\n ambientOcclusion = 0.5 } }");
+  auto cloth =
+      facet::test::buildText("material m { shading cloth\n surface { roughness = 0.6\n ambientOcclusion = 0.5 } }");
   auto layered = facet::test::buildText(
       "material m { surface { roughness = 0.6\n sheenColor = vec3(0.8)\n ambientOcclusion = 0.5 } }");
   ASSERT_TRUE(cloth && layered);

@@ -162,9 +162,9 @@ TEST(IblShading, SheenLayerOverAWhiteMetalKeepsTheWhiteFurnace) {
       for (double sheenRoughness : {0.0, 0.3, 0.7, 1.0}) {
         SCOPED_TRACE(std::string(tier) + " r = " + std::to_string(roughness) +
                      " sheen r = " + std::to_string(sheenRoughness));
-        const std::string json = sceneJson(tier, R"("sky": {"luminance": 5000})",
-                                           R"("rough": )" + std::to_string(roughness) +
-                                               R"(, "sheenRough": )" + std::to_string(sheenRoughness));
+        const std::string json = sceneJson(
+            tier, R"("sky": {"luminance": 5000})",
+            R"("rough": )" + std::to_string(roughness) + R"(, "sheenRough": )" + std::to_string(sheenRoughness));
         FrameResult image;
         std::unique_ptr<facet::runtime::SceneFrame> frame;
         ASSERT_TRUE(render(json, packages, *vk, &image, &frame, &error)) << error;
@@ -172,20 +172,20 @@ TEST(IblShading, SheenLayerOverAWhiteMetalKeepsTheWhiteFurnace) {
         ASSERT_TRUE(scene) << error;
         const double L = 5000 * frame->exposure();
         int covered = 0, checked = 0;
-        facet::test::forEachSpherePixel(*scene, 1, 0.0, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n,
-                                                            glm::dvec3 v) {
-          const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
-          const bool frontal = glm::dot(n, v) >= 0.25;
-          for (int ch = 0; ch < 3; ++ch) {
-            worstGain = std::max(worstGain, got[ch] / L);
-            EXPECT_LE(got[ch], (1.0 + 1e-3) * L) << "pixel (" << x << ", " << y << "), n·v " << glm::dot(n, v);
-            if (frontal) {
-              EXPECT_NEAR(got[ch], L, 0.003 * L) << "pixel (" << x << ", " << y << ")";
-            }
-          }
-          ++covered;
-          checked += frontal;
-        });
+        facet::test::forEachSpherePixel(
+            *scene, 1, 0.0, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
+              const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
+              const bool frontal = glm::dot(n, v) >= 0.25;
+              for (int ch = 0; ch < 3; ++ch) {
+                worstGain = std::max(worstGain, got[ch] / L);
+                EXPECT_LE(got[ch], (1.0 + 1e-3) * L) << "pixel (" << x << ", " << y << "), n·v " << glm::dot(n, v);
+                if (frontal) {
+                  EXPECT_NEAR(got[ch], L, 0.003 * L) << "pixel (" << x << ", " << y << ")";
+                }
+              }
+              ++covered;
+              checked += frontal;
+            });
         EXPECT_GT(checked, 2000);
         EXPECT_GT(covered, checked);
       }

@@ -176,8 +176,7 @@ TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
   fs::create_directories(dir + "/out");
   fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png",
                 fs::copy_options::overwrite_existing);
-  const std::string glass =
-      R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
+  const std::string glass = R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
   const std::string sheen =
       R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_sheen": {)"
       R"("sheenColorFactor": [0.9, 0.8, 0.7], "sheenRoughnessFactor": 0.4, "sheenColorTexture": {"index": 0}, )"
@@ -214,8 +213,8 @@ TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
   facet::runtime::GltfImport imported;
   ASSERT_TRUE(facet::runtime::importGltf(dir + "/sheen.gltf", dir + "/out", dir, &imported, &error)) << error;
   const std::string json = facet::test::readText(imported.scene);
-  for (const char* key : {"\"sheenColorFactor\"", "\"sheenRoughnessFactor\"", "\"sheenColorTexture\"",
-                          "\"sheenRoughnessTextureScale\""})
+  for (const char* key :
+       {"\"sheenColorFactor\"", "\"sheenRoughnessFactor\"", "\"sheenColorTexture\"", "\"sheenRoughnessTextureScale\""})
     EXPECT_NE(json.find(key), std::string::npos) << key;
   // Factors alone: the layer without textures.
   auto plain = facet::runtime::readGltfMaterials(
