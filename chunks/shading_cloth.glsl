@@ -24,9 +24,9 @@
 // The environment is read from the GGX-prefiltered levels at r (Filament's approximation: the
 // sheen's own lobe is wider at grazing views). sheenColor defaults to √baseColor (Filament's
 // default: a two-tone sheen lighter than the fabric); the diffuse colour is baseColor (no metal).
-// The sheen's colour, its light and its environment are sheen_layer.glsl's, shared with the sheen
-// layer over the standard model. Needs: sheen_layer.glsl, shading_standard.glsl (material terms),
-// diffuse_lambert.glsl.
+// The sheen's colour and environment are sheen_layer.glsl's, one light's sheen
+// sheen_charlie_neubelt.glsl's (sheen_light), shared with the sheen layer over the standard model.
+// Needs: both, shading_standard.glsl (material terms, half_vector), diffuse_lambert.glsl.
 //
 // fp16: the lobe's bounds are sheen_charlie_neubelt.glsl's; the light's product is saturated at
 // 65504 as the standard model's (shading_standard.glsl). The table's two numbers lie in [0, 1].
@@ -37,7 +37,11 @@ vec3 shade_cloth_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, h
     float NoLSigned = dot(n, l);
     float NoL = clamp(NoLSigned, 0.0, 1.0);
 #if defined(FACET_SHEEN_LOBE)
-    vec3 sheen = sheen_direct(material, n, viewHighp, lightHighp);  // (sheen_layer.glsl)
+    vec3 v = viewHighp;
+    vec3 h = half_vector(viewHighp, lightHighp);
+    float NoV = max(dot(n, v), MIN_N_DOT_V);
+    float NoH = clamp(dot(n, h), 0.0, 1.0);
+    vec3 sheen = sheen_light(NoV, NoL, NoH);
 #else
     vec3 sheen = vec3(0.0);  // (the tier's sheen form has no lobe per light: folded away)
 #endif

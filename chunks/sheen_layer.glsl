@@ -14,7 +14,7 @@
 // max(c) E + (1 − max(c) E) · 1 = 1. b is taken at the view only (the extension's form without its
 // optional light term; as the clear coat's 1 − Fc(n·v), one per pixel, not per light). Under a
 // clear coat the layer is part of the coated base: each light's sheen takes the coat's 1 − Fc
-// (clear_coat_ambient.glsl), and the coat's layer is applied after this one.
+// (clear_coat_ambient.glsl, shading_standard.glsl), and the coat's layer is applied after this one.
 // fp16: the lobe's bounds are sheen_charlie_neubelt.glsl's (≤ 5.2 × sheenColor per unit light); the
 // light's product is saturated at 65504 as the standard model's. b, min(E, 1) and s lie in [0, 1].
 // Needs: shading_standard.glsl (material terms, half_vector), shading_ambient.glsl (the specular
@@ -57,29 +57,11 @@ float sheen_alpha(MaterialInputs material) {
     return perceptualRoughness * perceptualRoughness;
 #endif
 }
-
-// One light's sheen per unit of its light, sheenColor · D · V · n·l · s (under a clear coat's lobe
-// also × its 1 − Fc(n_c·v)); v and l arrive highp for the half vector (shading_standard.glsl,
-// half_vector). ≤ 5.2 (sheen_charlie_neubelt.glsl): the caller's product with the light is
-// saturated as the base's.
-vec3 sheen_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp) {
-    vec3 v = viewHighp;
-    vec3 l = lightHighp;
-    vec3 h = half_vector(viewHighp, lightHighp);
-    float NoV = max(dot(n, v), MIN_N_DOT_V);
-    float NoL = clamp(dot(n, l), 0.0, 1.0);
-    float NoH = clamp(dot(n, h), 0.0, 1.0);
-    float lobe = sheen_lobe_times_n_dot_l(sheen_alpha(material), NoV, NoL, NoH) * shading_sheen_scale;
-#if defined(FACET_CLEAR_COAT_LOBE) && !defined(FACET_SHADING_CLOTH)
-    lobe *= shading_clear_coat_attenuation;
-#endif
-    return sheen_color(material) * lobe;
-}
 #endif
 
 // The sheen over the base lit so far (the ambient terms, and in mid and low the lights' per-vertex
-// diffuse) × b, plus the sheen's environment; sets shading_sheen_scale and shading_sheen_base_scale
-// for the lights (FACET_SHEEN_LOBE). The environment is read from the GGX-prefiltered levels at r_s
+// diffuse) × b, plus the sheen's environment; sets the sheen's terms for the lights
+// (FACET_SHEEN_LOBE: sheen_charlie_neubelt.glsl, sheen_light). The environment is read from the GGX-prefiltered levels at r_s
 // (Filament's approximation: the sheen's own lobe is wider at grazing views).
 vec3 sheen_layer(MaterialInputs material, vec3 base, vec3 n, vec3 v) {
     float perceptualRoughness = sheen_perceptual_roughness(material);
@@ -89,6 +71,8 @@ vec3 sheen_layer(MaterialInputs material, vec3 base, vec3 n, vec3 v) {
     vec3 sheenColor = sheen_color(material);
     float baseScale = 1.0 - max(sheenColor.r, max(sheenColor.g, sheenColor.b)) * sheenTerms.x;
 #if defined(FACET_SHEEN_LOBE)
+    shading_sheen_color = sheenColor;
+    shading_sheen_alpha = sheen_alpha(material);
     shading_sheen_scale = sheenTerms.y;
     shading_sheen_base_scale = baseScale;
 #endif

@@ -79,13 +79,6 @@ highp vec3 shading_view_highp;
 #if defined(FACET_SHADOW_CASCADES)
 #include "shadow_sun.glsl"
 #endif
-#if defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE)
-// One light on the standard model under a sheen layer: its base (× b) and the sheen's lobe.
-vec3 shade_sheened_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp, vec3 lightColor) {
-    return add_light(shade_standard_direct(material, n, viewHighp, lightHighp, lightColor),
-                     min(sheen_direct(material, n, viewHighp, lightHighp) * lightColor, MEDIUMP_FLT_MAX));
-}
-#endif
 #if FACET_POINT_LIGHTS > 0
 #include "light_punctual.glsl"
 
@@ -94,8 +87,6 @@ vec3 shade_punctual(MaterialInputs material, PunctualLightData light) {
     vec3 illuminance = punctual_light_illuminance(light, v_worldPosition, l);
 #if defined(FACET_SHADING_CLOTH)
     return shade_cloth_direct(material, shading_normal, shading_view_highp, l, illuminance);
-#elif defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE)
-    return shade_sheened_direct(material, shading_normal, shading_view_highp, l, illuminance);
 #else
     return shade_standard_direct(material, shading_normal, shading_view_highp, l, illuminance);
 #endif
@@ -189,11 +180,6 @@ void main() {
                                                 frame.lightColor.rgb * sunVisibility));
 #elif defined(FACET_SHADING_CLOTH)
     color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
-#elif defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE) && defined(FACET_SHADOW_CASCADES)
-    color = add_light(color, shade_sheened_direct(material, shading_normal, shading_view_highp, l,
-                                                  frame.lightColor.rgb * sunVisibility));
-#elif defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE)
-    color = add_light(color, shade_sheened_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
 #elif defined(FACET_SHADOW_CASCADES)
     color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l,
                                                    frame.lightColor.rgb * sunVisibility));

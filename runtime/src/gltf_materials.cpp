@@ -34,13 +34,19 @@ constexpr SlotInfo kSlots[kGltfSlots] = {
      "vec4(1.0, 1.0, 1.0, 1.0)"},
     {"sr", "sheenRoughnessTexture", "/extensions/KHR_materials_sheen/sheenRoughnessTexture", "linear",
      "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"cc", "clearcoatTexture", "/extensions/KHR_materials_clearcoat/clearcoatTexture", "linear",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"ccr", "clearcoatRoughnessTexture", "/extensions/KHR_materials_clearcoat/clearcoatRoughnessTexture", "linear",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"ccn", "clearcoatNormalTexture", "/extensions/KHR_materials_clearcoat/clearcoatNormalTexture", "normal",
+     "vec4(0.5, 0.5, 1.0, 1.0)"},
 };
 
 // The extensions the material path reads; any other optional one is reported and skipped (a
 // required one was refused with the file: gltf_document.cpp).
-constexpr const char* kReadExtensions[] = {"KHR_texture_transform", "KHR_materials_emissive_strength",
-                                           "KHR_materials_ior",     "KHR_materials_specular",
-                                           "KHR_materials_sheen",   "KHR_mesh_quantization"};
+constexpr const char* kReadExtensions[] = {
+    "KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_ior",    "KHR_materials_specular",
+    "KHR_materials_sheen",   "KHR_materials_clearcoat",         "KHR_mesh_quantization"};
 
 // A number for a .mat file or a feature name: the shortest text that reads back as the double.
 std::string number(double v) {
@@ -101,7 +107,10 @@ class Reader {
         {g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions},
         {g.occlusionTexture.index, g.occlusionTexture.texCoord, g.occlusionTexture.extensions},
         {g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions},
-        {-1, 0, {}},  // KHR_materials_sheen's, read with the extension below
+        {-1, 0, {}},  // KHR_materials_sheen's and KHR_materials_clearcoat's, read with the extensions below
+        {-1, 0, {}},
+        {-1, 0, {}},
+        {-1, 0, {}},
         {-1, 0, {}},
     };
     for (size_t s = 0; s < kGltfSlots; ++s) {
@@ -147,6 +156,8 @@ class Reader {
         if (!specular(value, where, &m, error)) return false;
       } else if (name == "KHR_materials_sheen") {
         if (!sheen(value, where, &m, error)) return false;
+      } else if (name == "KHR_materials_clearcoat") {
+        if (!clearCoat(value, where, &m, error)) return false;
       } else {
         note(where + ": extension not read; the material is drawn without it");
       }
@@ -204,7 +215,45 @@ class Reader {
       }
       if (!unit(r.GetNumberAsDouble(), where + "/sheenRoughnessFactor", &m->sheenRoughnessFactor, error)) return false;
     }
-    for (GltfSlot slot : {GltfSlot::SheenColor, GltfSlot::SheenRoughness}) {
+    return extensionTextures(value, where, {GltfSlot::SheenColor, GltfSlot::SheenRoughness}, m, error);
+  }
+
+  // KHR_materials_clearcoat: the factors (in [0, 1]), the normal texture's scale and the three
+  // textures, sampled as the extension says: the strength's R, the roughness's G (linear), the
+  // normal as the core normal texture. Its layering is Facet's clear coat (material-models.md):
+  // the base × (1 − Fc(n_c·v)), a coat of IOR 1.5 (f0 0.04).
+  bool clearCoat(const tinygltf::Value& value, const std::string& where, GltfMaterial* m, std::string* error) {
+    m->features.clearCoat = true;
+    if (!value.IsObject()) {
+      *error = where + ": expected an object";
+      return false;
+    }
+    for (auto [key, out] : {std::pair{"clearcoatFactor", &m->clearcoatFactor},
+                            std::pair{"clearcoatRoughnessFactor", &m->clearcoatRoughnessFactor}}) {
+      if (!value.Has(key)) continue;
+      const tinygltf::Value& f = value.Get(key);
+      if (!f.IsNumber()) {
+        *error = where + "/" + key + ": not a number";
+        return false;
+      }
+      if (!unit(f.GetNumberAsDouble(), where + "/" + key, out, error)) return false;
+    }
+    if (value.Has("clearcoatNormalTexture")) {
+      m->clearcoatNormalScale = numberIn(value.Get("clearcoatNormalTexture"), "scale", 1);
+      if (!(std::abs(m->clearcoatNormalScale) <= kMaxNormalScale)) {
+        *error = where + "/clearcoatNormalTexture/scale: " + number(m->clearcoatNormalScale) + " is outside [-" +
+                 number(kMaxNormalScale) + ", " + number(kMaxNormalScale) + "]";
+        return false;
+      }
+    }
+    return extensionTextures(value, where,
+                             {GltfSlot::ClearCoat, GltfSlot::ClearCoatRoughness, GltfSlot::ClearCoatNormal}, m, error);
+  }
+
+  // An extension's textureInfo objects (index, texCoord, KHR_texture_transform), into their slots.
+  bool extensionTextures(const tinygltf::Value& value, const std::string& where, std::initializer_list<GltfSlot> slots,
+                         GltfMaterial* m, std::string* error) {
+    for (GltfSlot slot : slots) {
       const size_t s = size_t(slot);
       const char* key = kSlots[s].parameter;
       if (!value.Has(key)) continue;
@@ -440,6 +489,7 @@ std::string GltfFeatures::name() const {
   if (alphaMode == "BLEND") name += "_blend";
   if (doubleSided) name += "_ds";
   if (sheen) name += "_sh";
+  if (clearCoat) name += "_cc";
   return name;
 }
 
@@ -519,6 +569,12 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
         "    // KHR_materials_sheen: a sheen layer over the base (docs/material-models.md, \"Sheen layer\")\n"
         "    param sheenColorFactor: vec3 = vec3(0.0, 0.0, 0.0) in [0, 1]\n"
         "    param sheenRoughnessFactor: float = 0.0 in [0, 1]\n";
+  if (f.clearCoat)
+    text +=
+        "    // KHR_materials_clearcoat: Facet's clear coat (docs/material-models.md, \"Clear coat\")\n"
+        "    param clearcoatFactor: float = 0.0 in [0, 1]\n"
+        "    param clearcoatRoughnessFactor: float = 0.0 in [0, 1]\n";
+  if (has(S::ClearCoatNormal)) text += "    param clearcoatNormalScale: float = 1.0 in [-100, 100]\n";
   for (size_t s = 0; s < kGltfSlots; ++s) {
     if (!f.textured[s]) continue;
     const SlotInfo& slot = kSlots[s];
@@ -575,6 +631,15 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
             (has(S::SheenColor) ? " * " + sampled[size_t(S::SheenColor)] + ".rgb" : std::string()) + "\n";
     text += "        sheenRoughness = params.sheenRoughnessFactor" +
             (has(S::SheenRoughness) ? " * " + sampled[size_t(S::SheenRoughness)] + ".a" : std::string()) + "\n";
+  }
+  if (f.clearCoat) {
+    text += "        clearCoat = params.clearcoatFactor" +
+            (has(S::ClearCoat) ? " * " + sampled[size_t(S::ClearCoat)] + ".r" : std::string()) + "\n";
+    text += "        clearCoatRoughness = params.clearcoatRoughnessFactor" +
+            (has(S::ClearCoatRoughness) ? " * " + sampled[size_t(S::ClearCoatRoughness)] + ".g" : std::string()) + "\n";
+    if (has(S::ClearCoatNormal))
+      text += "        let coatMapped = " + sampled[size_t(S::ClearCoatNormal)] + "\n" +
+              "        clearCoatNormal = vec3(coatMapped.xy * params.clearcoatNormalScale, coatMapped.z)\n";
   }
   text += "    }\n}\n";
   return text;

@@ -250,6 +250,74 @@ TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
               "and TEXCOORD_1)");
 }
 
+// KHR_materials_clearcoat (docs/gltf.md) onto Facet's clear coat, whose layering is the
+// extension's (the base × (1 − Fc(n·v)), IOR 1.5): the glass of features.gltf with a coat, its
+// factors, the strength's and roughness's textures and a scaled coat normal map becomes a feature
+// set whose .mat compiles for every tier and samples R, G and the normal; bad factors are errors
+// naming their JSON pointer.
+TEST(GltfMaterials, ClearCoatExtensionBecomesTheClearCoat) {
+  const std::string dir = facet::test::scratchDir("gltf-materials-clearcoat");
+  const std::string glass = R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
+  const std::string coat =
+      R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_clearcoat": {)"
+      R"("clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.2, "clearcoatTexture": {"index": 1}, )"
+      R"("clearcoatRoughnessTexture": {"index": 1}, "clearcoatNormalTexture": {"index": 2, "scale": 0.5}}}})";
+  const std::string text = facet::test::readText(featuresFile());
+  const auto edited = [&](const std::string& extension) {
+    std::string t = text;
+    const size_t at = t.find(glass);
+    EXPECT_NE(at, std::string::npos);
+    t.replace(at, glass.size(), extension);
+    std::ofstream(dir + "/coat.gltf") << t;
+    fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png",
+                  fs::copy_options::overwrite_existing);
+    return dir + "/coat.gltf";
+  };
+  std::string error;
+  auto set = facet::runtime::readGltfMaterials(edited(coat), &error);
+  ASSERT_TRUE(set) << error;
+  const GltfMaterial& m = *find(*set, 3);
+  EXPECT_EQ(m.features.name(), "gltf_cc0_ccr0_ccn0_vc_blend_cc");
+  EXPECT_DOUBLE_EQ(m.clearcoatFactor, 0.8);
+  EXPECT_DOUBLE_EQ(m.clearcoatRoughnessFactor, 0.2);
+  EXPECT_DOUBLE_EQ(m.clearcoatNormalScale, 0.5);
+  for (const std::string& note : set->notes) EXPECT_EQ(note.find("clearcoat"), std::string::npos) << note;
+  const std::string source = facet::runtime::gltfMaterialSource(m.features);
+  for (const char* line : {"clearCoat = params.clearcoatFactor * sample(params.clearcoatTexture, vertex.uv0).r",
+                           "clearCoatRoughness = params.clearcoatRoughnessFactor * "
+                           "sample(params.clearcoatRoughnessTexture, vertex.uv0).g",
+                           "clearCoatNormal = vec3(coatMapped.xy * params.clearcoatNormalScale, coatMapped.z)"})
+    EXPECT_NE(source.find(line), std::string::npos) << line << "\n" << source;
+  EXPECT_TRUE(facet::test::buildText(source, m.features.name() + ".mat")) << source;
+  // Factors alone: the coat without textures.
+  auto plain = facet::runtime::readGltfMaterials(
+      edited(R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_clearcoat": )"
+             R"({"clearcoatFactor": 1}}})"),
+      &error);
+  ASSERT_TRUE(plain) << error;
+  EXPECT_EQ(find(*plain, 3)->features.name(), "gltf_vc_blend_cc");
+  EXPECT_TRUE(facet::test::buildText(facet::runtime::gltfMaterialSource(find(*plain, 3)->features), "plain.mat"));
+  const auto expectError = [&](const std::string& from, const std::string& to, const std::string& why) {
+    std::string bad = coat;
+    const size_t at = bad.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bad.replace(at, from.size(), to);
+    const std::string path = edited(bad);
+    std::string message;
+    EXPECT_FALSE(facet::runtime::readGltfMaterials(path, &message));
+    EXPECT_EQ(message, path + ": error: " + why);
+  };
+  expectError("\"clearcoatFactor\": 0.8", "\"clearcoatFactor\": 1.8",
+              "/materials/3/extensions/KHR_materials_clearcoat/clearcoatFactor: 1.8 is outside [0, 1]");
+  expectError("\"clearcoatRoughnessFactor\": 0.2", "\"clearcoatRoughnessFactor\": \"smooth\"",
+              "/materials/3/extensions/KHR_materials_clearcoat/clearcoatRoughnessFactor: not a number");
+  expectError("\"scale\": 0.5", "\"scale\": 500",
+              "/materials/3/extensions/KHR_materials_clearcoat/clearcoatNormalTexture/scale: 5e+02 is outside [-1e+02, "
+              "1e+02]");
+  expectError("\"clearcoatTexture\": {\"index\": 1}", "\"clearcoatTexture\": {\"index\": 7}",
+              "/materials/3/extensions/KHR_materials_clearcoat/clearcoatTexture/index: texture 7 does not exist");
+}
+
 // `gltfMaterial` picks a glTF material's primitives: only on a glTF mesh, an integer, and one the
 // file's scene draws.
 TEST(GltfMaterials, SceneObjectsPickPrimitivesByMaterial) {

@@ -82,6 +82,8 @@ return mix(dfg.xxx,dfg.yyy,f0);
 vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
 }
+vec3 shading_sheen_color=vec3(0.0);
+float shading_sheen_alpha=1.0;
 float shading_sheen_scale=1.0;
 float shading_sheen_base_scale=1.0;
 vec3 material_diffuse_color(MaterialInputs material){
@@ -118,12 +120,18 @@ return clamp(material.sheenColor,0.0,1.0);
 float sheen_perceptual_roughness(MaterialInputs material){
 return clamp(material.sheenRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
+float sheen_alpha(MaterialInputs material){
+float perceptualRoughness=sheen_perceptual_roughness(material);
+return perceptualRoughness*perceptualRoughness;
+}
 vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
 float perceptualRoughness=sheen_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
 vec3 sheenColor=sheen_color(material);
 float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
+shading_sheen_color=sheenColor;
+shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
 vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);

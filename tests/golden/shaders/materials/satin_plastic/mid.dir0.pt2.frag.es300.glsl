@@ -103,8 +103,13 @@ float visibilityTimesNoL=NoL*(k*(2048.0*alpha));
 float sin2h=max(1.0-NoH*NoH,0.0);
 return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618)*visibilityTimesNoL;
 }
+vec3 shading_sheen_color=vec3(0.0);
+float shading_sheen_alpha=1.0;
 float shading_sheen_scale=1.0;
 float shading_sheen_base_scale=1.0;
+vec3 sheen_light(float NoV,float NoL,float NoH){
+return shading_sheen_color*(sheen_lobe_times_n_dot_l(shading_sheen_alpha,NoV,NoL,NoH)*shading_sheen_scale);
+}
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
 }
@@ -135,8 +140,10 @@ float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
+vec3 sheen=sheen_light(NoV,NoL,NoH)*lightColor;
 irradiance*=shading_sheen_base_scale;
-return min(specular*irradiance,65504.0);
+vec3 coat=sheen;
+return min(specular*irradiance+coat,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
@@ -166,22 +173,14 @@ float sheen_alpha(MaterialInputs material){
 float perceptualRoughness=sheen_perceptual_roughness(material);
 return perceptualRoughness*perceptualRoughness;
 }
-vec3 sheen_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp){
-vec3 v=viewHighp;
-vec3 l=lightHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
-float NoV=max(dot(n,v),MIN_N_DOT_V);
-float NoL=clamp(dot(n,l),0.0,1.0);
-float NoH=clamp(dot(n,h),0.0,1.0);
-float lobe=sheen_lobe_times_n_dot_l(sheen_alpha(material),NoV,NoL,NoH)*shading_sheen_scale;
-return sheen_color(material)*lobe;
-}
 vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
 float perceptualRoughness=sheen_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
 vec3 sheenColor=sheen_color(material);
 float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
+shading_sheen_color=sheenColor;
+shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
 vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
@@ -195,9 +194,6 @@ vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
 highp vec3 shading_view_highp;
-vec3 shade_sheened_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
-return add_light(shade_standard_direct(material,n,viewHighp,lightHighp,lightColor),min(sheen_direct(material,n,viewHighp,lightHighp)*lightColor,65504.0));
-}
 vec3 punctual_light_illuminance(PunctualLightData light,highp vec3 worldPosition,out highp vec3 l){
 highp vec3 toLight=light.positionFalloff.xyz-worldPosition;
 highp float distanceSquared=dot(toLight,toLight);
@@ -211,7 +207,7 @@ return min(light.colorIntensity.rgb*(attenuation*cone*cone),65504.0);
 vec3 shade_punctual(MaterialInputs material,PunctualLightData light){
 highp vec3 l;
 vec3 illuminance=punctual_light_illuminance(light,v_worldPosition,l);
-return shade_sheened_direct(material,shading_normal,shading_view_highp,l,illuminance);
+return shade_standard_direct(material,shading_normal,shading_view_highp,l,illuminance);
 }
 void main(){
 shading_normal=normalize(v_normal);

@@ -48,20 +48,20 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _485 = fast::normalize(in.v_normal);
-    float3 _489 = fast::normalize(in.v_toEye);
-    float _598 = _485.y;
-    float _603 = _485.z;
-    float _608 = _485.x;
-    float _726 = fast::max(dot(_485, _489), 9.9999997473787516355514526367188e-05);
-    float3 _730 = reflect(-_489, _485);
-    float4 _765 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_726, params.facet_perceptualRoughness), level(0.0));
-    float _864 = fast::clamp(params.sheenRoughness, 0.08900000154972076416015625, 1.0);
-    float4 _824 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_726, _864), level(0.0));
-    float3 _871 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
-    float _837 = _824.z;
-    float3 _857 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _598)) + (frame.sh[2].xyz * _603)) + (frame.sh[3].xyz * _608)) + (((((frame.sh[4].xyz * (_608 * _598)) + (frame.sh[5].xyz * (_598 * _603))) + (frame.sh[6].xyz * fma(3.0 * _603, _603, -1.0))) + (frame.sh[7].xyz * (_608 * _603))) + (frame.sh[8].xyz * fma(_608, _608, -(_598 * _598)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _730, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_765.xxx, _765.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _765.y) - 1.0))))) * fma(-fast::max(_871.x, fast::max(_871.y, _871.z)), _837, 1.0);
-    out.fragColor = float4(fma(facet_environment.sample(facet_environmentSmplr, _730, level(_864 * 4.0)).xyz, _871 * _837, _857), 1.0);
+    float3 _503 = fast::normalize(in.v_normal);
+    float3 _507 = fast::normalize(in.v_toEye);
+    float _616 = _503.y;
+    float _621 = _503.z;
+    float _626 = _503.x;
+    float _744 = fast::max(dot(_503, _507), 9.9999997473787516355514526367188e-05);
+    float3 _748 = reflect(-_507, _503);
+    float4 _783 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_744, params.facet_perceptualRoughness), level(0.0));
+    float _886 = fast::clamp(params.sheenRoughness, 0.08900000154972076416015625, 1.0);
+    float4 _843 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_744, _886), level(0.0));
+    float3 _893 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
+    float _856 = _843.z;
+    float3 _879 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _616)) + (frame.sh[2].xyz * _621)) + (frame.sh[3].xyz * _626)) + (((((frame.sh[4].xyz * (_626 * _616)) + (frame.sh[5].xyz * (_616 * _621))) + (frame.sh[6].xyz * fma(3.0 * _621, _621, -1.0))) + (frame.sh[7].xyz * (_626 * _621))) + (frame.sh[8].xyz * fma(_626, _626, -(_616 * _616)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _748, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_783.xxx, _783.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _783.y) - 1.0))))) * fma(-fast::max(_893.x, fast::max(_893.y, _893.z)), _856, 1.0);
+    out.fragColor = float4(fma(facet_environment.sample(facet_environmentSmplr, _748, level(_886 * 4.0)).xyz, _893 * _856, _879), 1.0);
     return out;
 }
 

@@ -96,8 +96,13 @@ float visibilityTimesNoL=NoL*(k*(2048.0*alpha));
 float sin2h=max(1.0-NoH*NoH,0.0);
 return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618)*visibilityTimesNoL;
 }
+vec3 shading_sheen_color=vec3(0.0);
+float shading_sheen_alpha=1.0;
 float shading_sheen_scale=1.0;
 float shading_sheen_base_scale=1.0;
+vec3 sheen_light(float NoV,float NoL,float NoH){
+return shading_sheen_color*(sheen_lobe_times_n_dot_l(shading_sheen_alpha,NoV,NoL,NoH)*shading_sheen_scale);
+}
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
 }
@@ -128,22 +133,14 @@ return material_perceptual_roughness(material);
 float sheen_alpha(MaterialInputs material){
 return material_alpha(material);
 }
-vec3 sheen_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp){
-vec3 v=viewHighp;
-vec3 l=lightHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
-float NoV=max(dot(n,v),MIN_N_DOT_V);
-float NoL=clamp(dot(n,l),0.0,1.0);
-float NoH=clamp(dot(n,h),0.0,1.0);
-float lobe=sheen_lobe_times_n_dot_l(sheen_alpha(material),NoV,NoL,NoH)*shading_sheen_scale;
-return sheen_color(material)*lobe;
-}
 vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
 float perceptualRoughness=sheen_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
 vec3 sheenColor=sheen_color(material);
 float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
+shading_sheen_color=sheenColor;
+shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
 vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
@@ -154,7 +151,11 @@ vec3 shade_cloth_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,high
 vec3 l=lightHighp;
 float NoLSigned=dot(n,l);
 float NoL=clamp(NoLSigned,0.0,1.0);
-vec3 sheen=sheen_direct(material,n,viewHighp,lightHighp);
+vec3 v=viewHighp;
+vec3 h=half_vector(viewHighp,lightHighp);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
+float NoH=clamp(dot(n,h),0.0,1.0);
+vec3 sheen=sheen_light(NoV,NoL,NoH);
 vec3 diffuseColor=material_diffuse_color(material);
 vec3 diffuse=diffuseColor*(diffuse_lambert()*clamp((NoLSigned+0.5)*(1.0/2.25),0.0,1.0))*clamp(material.subsurfaceColor+NoL,0.0,1.0);
 diffuse*=shading_sheen_base_scale;
