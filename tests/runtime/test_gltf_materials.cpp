@@ -165,6 +165,33 @@ TEST(GltfMaterials, BadMaterialsAreErrorsNamingThePlace) {
               "/materials/4/extensions/KHR_materials_specular/specularColorFactor: expected 3 numbers");
 }
 
+// features.gltf with its glass (material 3) given material extensions: `extensions` is the JSON
+// that follows the glass's `pbrMetallicRoughness` object, written to `dir`/glass.gltf beside a copy
+// of the file's base image. Returns the path.
+std::string glassWithExtensions(const std::string& dir, const std::string& extensions) {
+  const std::string glass = R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
+  std::string text = facet::test::readText(featuresFile());
+  const size_t at = text.find(glass);
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, glass.size(), R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": )" + extensions + "}");
+  std::ofstream(dir + "/glass.gltf") << text;
+  fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png",
+                fs::copy_options::overwrite_existing);
+  return dir + "/glass.gltf";
+}
+
+// The glass with `extensions` edited (`from` replaced by `to`) is refused with `why`, naming the file.
+void expectGlassError(const std::string& dir, std::string extensions, const std::string& from, const std::string& to,
+                      const std::string& why) {
+  const size_t at = extensions.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  extensions.replace(at, from.size(), to);
+  const std::string path = glassWithExtensions(dir, extensions);
+  std::string message;
+  EXPECT_FALSE(facet::runtime::readGltfMaterials(path, &message));
+  EXPECT_EQ(message, path + ": error: " + why);
+}
+
 // KHR_materials_sheen (docs/gltf.md): the glass of features.gltf given a sheen, with factors and
 // both textures (the roughness's on TEXCOORD_1, transformed), becomes a feature set with a sheen
 // layer whose .mat compiles for every tier, samples the colour's RGB and the roughness's alpha, and
@@ -174,25 +201,13 @@ TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
   const std::string dir = facet::test::scratchDir("gltf-materials-sheen");
   fs::remove_all(dir + "/out");
   fs::create_directories(dir + "/out");
-  fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png",
-                fs::copy_options::overwrite_existing);
-  const std::string glass = R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
   const std::string sheen =
-      R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_sheen": {)"
+      R"({"KHR_materials_sheen": {)"
       R"("sheenColorFactor": [0.9, 0.8, 0.7], "sheenRoughnessFactor": 0.4, "sheenColorTexture": {"index": 0}, )"
       R"("sheenRoughnessTexture": {"index": 1, "texCoord": 1, "extensions": {"KHR_texture_transform": )"
-      R"({"scale": [2, 2]}}}}}})";
-  const std::string text = facet::test::readText(featuresFile());
-  const auto edited = [&](const std::string& extension) {
-    std::string t = text;
-    const size_t at = t.find(glass);
-    EXPECT_NE(at, std::string::npos);
-    t.replace(at, glass.size(), extension);
-    std::ofstream(dir + "/sheen.gltf") << t;
-    return dir + "/sheen.gltf";
-  };
+      R"({"scale": [2, 2]}}}}})";
   std::string error;
-  auto set = facet::runtime::readGltfMaterials(edited(sheen), &error);
+  auto set = facet::runtime::readGltfMaterials(glassWithExtensions(dir, sheen), &error);
   ASSERT_TRUE(set) << error;
   const GltfMaterial& m = *find(*set, 3);
   EXPECT_EQ(m.features.name(), "gltf_sc0_sr1t_vc_blend_sh");
@@ -211,27 +226,19 @@ TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
   ASSERT_TRUE(facet::test::buildText(source, m.features.name() + ".mat")) << source;
   // The scene object carries the factors and the textures.
   facet::runtime::GltfImport imported;
-  ASSERT_TRUE(facet::runtime::importGltf(dir + "/sheen.gltf", dir + "/out", dir, &imported, &error)) << error;
+  ASSERT_TRUE(facet::runtime::importGltf(dir + "/glass.gltf", dir + "/out", dir, &imported, &error)) << error;
   const std::string json = facet::test::readText(imported.scene);
   for (const char* key :
        {"\"sheenColorFactor\"", "\"sheenRoughnessFactor\"", "\"sheenColorTexture\"", "\"sheenRoughnessTextureScale\""})
     EXPECT_NE(json.find(key), std::string::npos) << key;
   // Factors alone: the layer without textures.
-  auto plain = facet::runtime::readGltfMaterials(
-      edited(R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_sheen": {}}})"), &error);
+  auto plain = facet::runtime::readGltfMaterials(glassWithExtensions(dir, R"({"KHR_materials_sheen": {}})"), &error);
   ASSERT_TRUE(plain) << error;
   EXPECT_EQ(find(*plain, 3)->features.name(), "gltf_vc_blend_sh");
   EXPECT_EQ(find(*plain, 3)->sheenColorFactor, (std::array<double, 3>{0, 0, 0}));
   EXPECT_TRUE(facet::test::buildText(facet::runtime::gltfMaterialSource(find(*plain, 3)->features), "plain.mat"));
   const auto expectError = [&](const std::string& from, const std::string& to, const std::string& why) {
-    std::string bad = sheen;
-    const size_t at = bad.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    bad.replace(at, from.size(), to);
-    const std::string path = edited(bad);
-    std::string message;
-    EXPECT_FALSE(facet::runtime::readGltfMaterials(path, &message));
-    EXPECT_EQ(message, path + ": error: " + why);
+    expectGlassError(dir, sheen, from, to, why);
   };
   expectError("[0.9, 0.8, 0.7]", "[0.9, 1.8, 0.7]",
               "/materials/3/extensions/KHR_materials_sheen/sheenColorFactor/1: 1.8 is outside [0, 1]");
@@ -257,24 +264,12 @@ TEST(GltfMaterials, SheenExtensionBecomesTheSheenLayer) {
 // naming their JSON pointer.
 TEST(GltfMaterials, ClearCoatExtensionBecomesTheClearCoat) {
   const std::string dir = facet::test::scratchDir("gltf-materials-clearcoat");
-  const std::string glass = R"("metallicFactor": 0, "roughnessFactor": 0.1}})";
   const std::string coat =
-      R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_clearcoat": {)"
+      R"({"KHR_materials_clearcoat": {)"
       R"("clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.2, "clearcoatTexture": {"index": 1}, )"
-      R"("clearcoatRoughnessTexture": {"index": 1}, "clearcoatNormalTexture": {"index": 2, "scale": 0.5}}}})";
-  const std::string text = facet::test::readText(featuresFile());
-  const auto edited = [&](const std::string& extension) {
-    std::string t = text;
-    const size_t at = t.find(glass);
-    EXPECT_NE(at, std::string::npos);
-    t.replace(at, glass.size(), extension);
-    std::ofstream(dir + "/coat.gltf") << t;
-    fs::copy_file(facet::test::sourceDir() + "/tests/data/gltf/features_base.png", dir + "/features_base.png",
-                  fs::copy_options::overwrite_existing);
-    return dir + "/coat.gltf";
-  };
+      R"("clearcoatRoughnessTexture": {"index": 1}, "clearcoatNormalTexture": {"index": 2, "scale": 0.5}}})";
   std::string error;
-  auto set = facet::runtime::readGltfMaterials(edited(coat), &error);
+  auto set = facet::runtime::readGltfMaterials(glassWithExtensions(dir, coat), &error);
   ASSERT_TRUE(set) << error;
   const GltfMaterial& m = *find(*set, 3);
   EXPECT_EQ(m.features.name(), "gltf_cc0_ccr0_ccn0_vc_blend_cc");
@@ -291,21 +286,12 @@ TEST(GltfMaterials, ClearCoatExtensionBecomesTheClearCoat) {
   EXPECT_TRUE(facet::test::buildText(source, m.features.name() + ".mat")) << source;
   // Factors alone: the coat without textures.
   auto plain = facet::runtime::readGltfMaterials(
-      edited(R"("metallicFactor": 0, "roughnessFactor": 0.1}, "extensions": {"KHR_materials_clearcoat": )"
-             R"({"clearcoatFactor": 1}}})"),
-      &error);
+      glassWithExtensions(dir, R"({"KHR_materials_clearcoat": {"clearcoatFactor": 1}})"), &error);
   ASSERT_TRUE(plain) << error;
   EXPECT_EQ(find(*plain, 3)->features.name(), "gltf_vc_blend_cc");
   EXPECT_TRUE(facet::test::buildText(facet::runtime::gltfMaterialSource(find(*plain, 3)->features), "plain.mat"));
   const auto expectError = [&](const std::string& from, const std::string& to, const std::string& why) {
-    std::string bad = coat;
-    const size_t at = bad.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    bad.replace(at, from.size(), to);
-    const std::string path = edited(bad);
-    std::string message;
-    EXPECT_FALSE(facet::runtime::readGltfMaterials(path, &message));
-    EXPECT_EQ(message, path + ": error: " + why);
+    expectGlassError(dir, coat, from, to, why);
   };
   expectError("\"clearcoatFactor\": 0.8", "\"clearcoatFactor\": 1.8",
               "/materials/3/extensions/KHR_materials_clearcoat/clearcoatFactor: 1.8 is outside [0, 1]");
