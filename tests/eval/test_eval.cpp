@@ -88,6 +88,32 @@ TEST(EvalMetrics, MeanPercentileAndRelativeRmse) {
   EXPECT_EQ(one.metrics().p99Abs, 1);
 }
 
+// The bound after the first views: no later pixels, exact or not, raise the PSNR above it; exact
+// pixels of the whole count reach it.
+TEST(EvalMetrics, PsnrAtMostBoundsTheFigureWhateverThePixelsStillToCome) {
+  std::vector<uint8_t> ref(4 * 50, 100), img = ref;
+  for (size_t p = 0; p < 50; p += 3) img[4 * p] = uint8_t(100 + p % 7);
+  facet::eval::ErrorAccumulator acc;
+  acc.add(img, ref, {}, {});
+  const double bound = acc.psnrAtMost(30);
+  EXPECT_GT(bound, acc.metrics().psnr);
+  std::vector<uint8_t> laterRef(4 * 30, 40), exact = laterRef, off = laterRef;
+  off[4 * 7 + 2] = 41;
+  for (size_t morePixels : {0u, 1u, 29u, 30u}) {
+    for (const std::vector<uint8_t>* later : {&exact, &off}) {
+      facet::eval::ErrorAccumulator whole = acc;
+      std::vector<bool> mask(30, false);
+      for (size_t p = 0; p < morePixels; ++p) mask[p] = true;
+      whole.add(*later, laterRef, {}, {}, mask);
+      EXPECT_LE(whole.metrics().psnr, bound) << morePixels;
+    }
+  }
+  facet::eval::ErrorAccumulator whole = acc;
+  whole.add(exact, laterRef, {}, {});
+  EXPECT_EQ(whole.metrics().psnr, bound);
+  EXPECT_TRUE(std::isinf(facet::eval::ErrorAccumulator{}.psnrAtMost(10)));  // no error yet: no bound
+}
+
 TEST(EvalMetrics, CoverageMaskIsWhereEitherImageIsNotBackground) {
   const std::array<float, 3> bg = {0.25f, 0.5f, 1.0f};
   std::vector<float> a = {0.25f, 0.5f, 1.0f, 1, 0.3f, 0.5f, 1.0f, 1, 0.25f, 0.5f, 1.0f, 1};

@@ -217,6 +217,54 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
   EXPECT_FALSE(tune::choicesOf(*none));  // nothing partial to --write
 }
 
+// Screening (a candidate's second view and furnace rendered only where its first view's error
+// leaves it able to meet an open budget) changes no choice, no best reached by a tier that finds
+// none, and no figure of a fully measured candidate; it stops some candidates after one view.
+TEST(TuneSearch, ScreeningOnTheFirstViewChangesNoChoiceAndNoBestReached) {
+  const facet::ir::Material m = example("red_plastic");
+  tune::TuneOptions o = tinyGrid();
+  o.space = smallSpace(m);
+  o.tiers = {Tier::High, Tier::Mid, Tier::Low};
+  o.budgets.tiers[Tier::High].minPsnrDb = 150;  // none meets it: its best reached is reported
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 40;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 34;
+  facet::eval::EvalError error;
+  auto screened = tune::tune(m, o, &error);
+  ASSERT_TRUE(screened) << error.message;
+  o.screen = false;
+  auto full = tune::tune(m, o, &error);
+  ASSERT_TRUE(full) << error.message;
+  EXPECT_GT(screened->screened, 0u);
+  EXPECT_EQ(full->screened, 0u);
+  EXPECT_EQ(screened->rendered, full->rendered);
+  ASSERT_EQ(screened->tiers.size(), full->tiers.size());
+  for (size_t t = 0; t < full->tiers.size(); ++t) {
+    const tune::TierOutcome &a = screened->tiers[t], &b = full->tiers[t];
+    ASSERT_EQ(bool(a.chosen), bool(b.chosen)) << t;
+    ASSERT_EQ(bool(a.best), bool(b.best)) << t;
+    EXPECT_EQ(a.failure, b.failure);
+    for (auto [x, y] : {std::pair{&a.chosen, &b.chosen}, std::pair{&a.best, &b.best}})
+      if (*x) {
+        EXPECT_TRUE((*x)->result.configuration.config == (*y)->result.configuration.config) << t;
+        EXPECT_EQ((*x)->result.error.psnr, (*y)->result.error.psnr) << t;
+        EXPECT_EQ((*x)->cost.total, (*y)->cost.total) << t;
+      }
+  }
+  EXPECT_FALSE(screened->tiers[0].chosen);
+  ASSERT_EQ(screened->front.size(), full->front.size());
+  for (size_t k = 0; k < full->front.size(); ++k) {
+    const tune::Scored &a = screened->front[k], &b = full->front[k];
+    EXPECT_EQ(a.result.configuration.name, b.result.configuration.name);
+    if (a.result.psnrAtMost) {
+      EXPECT_LE(b.result.error.psnr, *a.result.psnrAtMost) << b.result.configuration.name;  // a bound
+      EXPECT_LT(*a.result.psnrAtMost, 150.0) << a.result.configuration.name;                // below high's, never met
+      EXPECT_LT(*a.result.psnrAtMost, screened->tiers[0].best->result.error.psnr);          // and high's best
+    } else {
+      EXPECT_EQ(a.result.error.psnr, b.result.error.psnr) << a.result.configuration.name;
+    }
+  }
+}
+
 // The gate: committed choices re-scored; a worse configuration in their place fails with figures.
 TEST(TuneGate, CommittedChoicesPassAndAWorseOneFailsWithItsFigures) {
   const facet::ir::Material m = example("red_plastic");

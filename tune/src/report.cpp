@@ -54,7 +54,9 @@ json scoredJson(const Scored& s, const TuneReport& r) {
   json beside = json::object();
   for (size_t i = 0; i < r.beside.size() && i < s.besideFragment.size(); ++i) beside[r.beside[i]] = s.besideFragment[i];
   j["fragment_beside"] = beside;
-  j["psnr_db"] = std::isinf(s.result.error.psnr) ? json(nullptr) : json(s.result.error.psnr);
+  // Screened (the first view only): null, and the bound on the whole figure.
+  j["psnr_db"] = std::isinf(s.result.error.psnr) || s.result.psnrAtMost ? json(nullptr) : json(s.result.error.psnr);
+  if (s.result.psnrAtMost) j["psnr_db_at_most"] = *s.result.psnrAtMost;
   j["white_furnace_gain"] = std::isnan(s.result.furnaceGain) ? json(nullptr) : json(s.result.furnaceGain);
   j["pareto"] = s.pareto;
   return j;
@@ -90,7 +92,10 @@ std::string markdownReport(const TuneReport& r) {
         " (docs/tune.md). Error: PSNR against `reference` on the evaluation grid, "
         "both views, mediump rounded to binary16 (`--fp16-emulation`). White furnace: reference " +
         fixed(r.referenceFurnaceGain, 3) + ".\n\n";
-  md += std::to_string(r.candidates) + " candidates costed, " + std::to_string(r.rendered) + " rendered.\n\n";
+  md += std::to_string(r.candidates) + " candidates costed, " + std::to_string(r.rendered) + " rendered (" +
+        std::to_string(r.screened) +
+        " of them only in the first view: the second could not have brought them to an open tier's budget; "
+        "their dB is that bound, ≤).\n\n";
   md +=
       "| tier | budget | before: cost | dB | after: cost | dB | furnace | change "
       "|\n|---|---|--:|--:|--:|--:|--:|---|\n";
@@ -118,7 +123,8 @@ std::string markdownReport(const TuneReport& r) {
             fixed(s.cost.vertex, 3) + " |";
       // append, not `" " + std::string&&`: GCC 12 at -O3 reports a false -Wrestrict on that form.
       for (double b : s.besideFragment) md.append(" ").append(fixed(b, 3)).append(" |");
-      md.append(" ").append(fixed(s.result.error.psnr, 1)).append(" | ").append(fixed(s.result.furnaceGain, 3));
+      md.append(s.result.psnrAtMost ? " ≤ " + fixed(*s.result.psnrAtMost, 1) : " " + fixed(s.result.error.psnr, 1));
+      md.append(" | ").append(fixed(s.result.furnaceGain, 3));
       md.append(" | ").append(s.result.configuration.name).append(" |\n");
     }
   }
@@ -135,6 +141,7 @@ std::string jsonReport(const TuneReport& r) {
   j["reference_white_furnace_gain"] = r.referenceFurnaceGain;
   j["candidates"] = r.candidates;
   j["rendered"] = r.rendered;
+  j["screened"] = r.screened;
   j["tiers"] = json::array();
   for (const TierOutcome& o : r.tiers) {
     json t = json::object();

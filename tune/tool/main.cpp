@@ -109,7 +109,7 @@ int run(const TuneArgs& args) {
   options.jobs = args.jobs;
   options.maxChanges = args.maxChanges == "all" ? -1 : std::stoi(args.maxChanges);
   options.eval.grid.pixelsPerSphere = uint32_t(args.spherePixels);
-  options.eval.costCacheDir = args.noCache ? "" : args.cache.empty() ? defaultCacheDir() : args.cache;
+  options.eval.cacheDir = args.noCache ? "" : args.cache.empty() ? defaultCacheDir() : args.cache;
   options.progress = progress;
   std::string message;
   if (!tune::targetGpu(args.gpu, &message)) {

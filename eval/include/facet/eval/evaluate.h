@@ -41,9 +41,10 @@ struct EvalOptions {
   // (AmbientModel::Sampled), and the same at a quarter of the points against it. 0: off.
   int groundTruthSamples = 0;
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
-  // A variant cache (compiler::BuildOptions::cacheDir) for Session::cost()'s builds: `matc tune`
-  // costs every candidate, and a second run finds them there. "": none.
-  std::string costCacheDir;
+  // A variant cache (compiler::BuildOptions::cacheDir) for a Session's builds, Session::cost()'s
+  // and the rendered ones: `matc tune` builds every candidate, and a second run finds them there.
+  // "": none.
+  std::string cacheDir;
 };
 
 // `reference` renders views whose sun casts with this atlas size, whatever the scene's: the other
@@ -89,6 +90,9 @@ struct ConfigurationResult {
   // The GLSL ES 3.00 pair of variantKey as shipped, for per-GPU figures (addGpuFigures); empty
   // for a configuration with the same maths as an earlier one.
   std::vector<gpu_stats::ShaderPair> glslEs;
+  // Set when Session::measure() stopped after the first views (MeasureOptions::worthFinishing):
+  // `error` is theirs, and this bounds the PSNR all the views together could have reached.
+  std::optional<double> psnrAtMost;
 };
 
 // A furnace gain above this factor is flagged as energy gain: the RGBA16F target and the
@@ -141,6 +145,12 @@ struct MeasureOptions {
   // Called after the views are scored; false: the white furnace is not rendered (furnaceGain NaN),
   // e.g. for an error no budget would take.
   std::function<bool(const ConfigurationResult&)> furnaceWanted;
+  // Called after each view but the last with the highest PSNR all the views together could reach
+  // (ErrorAccumulator::psnrAtMost, every pixel of the views still to render counted as covered and
+  // exact); false: the rest and the furnace are not rendered (ConfigurationResult::psnrAtMost).
+  std::function<bool(double psnrAtMost)> worthFinishing;
+  // Encode each view's image as PNG (ViewResult::png); `matc tune` writes none.
+  bool images = true;
 };
 
 // One evaluation's renderer, views and `reference`'s images, for measuring configurations one at a
