@@ -2,8 +2,11 @@
 // the candidates, and the search and the gate rendered on a small space of a tiny grid.
 #include <gtest/gtest.h>
 
+#include <expat.h>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "facet/eval/configurations.h"
 #include "facet/ir/check.h"
@@ -42,6 +45,46 @@ std::vector<TierConfig> smallSpace(const facet::ir::Material& m) {
     if ((!c.swap() || c.axis == "specular" || c.axis == "diffuse") && c.tier != Tier::Reference &&
         std::find(out.begin(), out.end(), c.config) == out.end())
       out.push_back(c.config);
+  return out;
+}
+
+// An SVG read with expat: whether it is well-formed XML, how many of each element it has and the
+// text of its <text> elements.
+struct SvgContents {
+  bool wellFormed = false;
+  std::string root;
+  std::map<std::string, int> elements;
+  std::vector<std::string> texts;
+};
+
+SvgContents readSvg(const std::string& svg) {
+  SvgContents out;
+  struct State {
+    SvgContents* out;
+    bool inText = false;
+  } state{&out};
+  XML_Parser parser = XML_ParserCreate("UTF-8");
+  XML_SetUserData(parser, &state);
+  XML_SetElementHandler(
+      parser,
+      [](void* data, const XML_Char* name, const XML_Char**) {
+        auto* st = static_cast<State*>(data);
+        if (st->out->root.empty()) st->out->root = name;
+        ++st->out->elements[name];
+        if (std::string(name) == "text") {
+          st->inText = true;
+          st->out->texts.emplace_back();
+        }
+      },
+      [](void* data, const XML_Char* name) {
+        if (std::string(name) == "text") static_cast<State*>(data)->inText = false;
+      });
+  XML_SetCharacterDataHandler(parser, [](void* data, const XML_Char* text, int length) {
+    auto* st = static_cast<State*>(data);
+    if (st->inText) st->out->texts.back().append(text, size_t(length));
+  });
+  out.wellFormed = XML_Parse(parser, svg.data(), int(svg.size()), 1) == XML_STATUS_OK;
+  XML_ParserFree(parser);
   return out;
 }
 
@@ -189,6 +232,7 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
   }
   EXPECT_EQ(tune::markdownReport(*one), tune::markdownReport(*two));
   EXPECT_EQ(tune::jsonReport(*one), tune::jsonReport(*two));
+  EXPECT_EQ(tune::plotSvg(*one), tune::plotSvg(*two));
   // Nothing rendered and cheaper meets the budget: the choice is the cheapest that does.
   for (const tune::TierOutcome& t : one->tiers)
     for (const tune::Scored& s : one->front)
@@ -263,6 +307,21 @@ TEST(TuneSearch, ScreeningOnTheFirstViewChangesNoChoiceAndNoBestReached) {
       EXPECT_EQ(a.result.error.psnr, b.result.error.psnr) << a.result.configuration.name;
     }
   }
+
+  // The plot: well-formed SVG; each tier as shipped (a square) and as tuned, or its best reached
+  // (a diamond), labelled; each budget a dashed line; the screened candidates hollow.
+  const SvgContents svg = readSvg(tune::plotSvg(*screened));
+  ASSERT_TRUE(svg.wellFormed);
+  EXPECT_EQ(svg.root, "svg");
+  EXPECT_EQ(svg.elements.at("rect"), 1 + 3);  // the background, then one square per tier
+  EXPECT_EQ(svg.elements.at("polygon"), 3);
+  auto has = [&](const std::string& text) { return std::count(svg.texts.begin(), svg.texts.end(), text) == 1; };
+  for (const char* label : {"high as shipped", "high best reached, misses its budget", "mid as shipped", "mid tuned",
+                            "low as shipped", "low tuned", "high ≥ 150.0 dB", "mid ≥ 40.0 dB", "low ≥ 34.0 dB"})
+    EXPECT_TRUE(has(label)) << label;
+  const std::string text = tune::plotSvg(*screened);
+  EXPECT_NE(text.find("fill=\"white\" stroke="), std::string::npos);  // a screened candidate, hollow
+  EXPECT_NE(text.find("<polyline"), std::string::npos);               // the front
 }
 
 // The gate: committed choices re-scored; a worse configuration in their place fails with figures.

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/eval/configurations.h"
+#include "facet/eval/scatter_plot.h"
 
 namespace facet::tune {
 namespace {
@@ -160,11 +161,47 @@ std::string jsonReport(const TuneReport& r) {
   return j.dump(2) + "\n";
 }
 
+std::string plotSvg(const TuneReport& r) {
+  eval::ScatterPlot plot;
+  plot.title = r.material + ": PSNR against cost of the rendered candidates (red: Pareto front)";
+  plot.note =
+      "square: a tier as shipped; diamond: tuned (or the best reached); dashed: the budgets; "
+      "hollow: first view only, at its PSNR's bound";
+  plot.xLabel =
+      "cost: " + r.gpu + " cycles per pixel (fragment + " + fixed(r.verticesPerPixel, 2) + " × vertex, docs/tune.md)";
+  plot.yLabel = "PSNR against reference, dB (fp16 emulated, both views)";
+  // The candidates' names are long: tooltips, so that the tiers' labels stay readable.
+  for (const Scored& s : r.front)
+    plot.points.push_back({s.cost.total, s.result.psnrAtMost ? *s.result.psnrAtMost : s.result.error.psnr,
+                           s.result.configuration.name, s.pareto, false, bool(s.result.psnrAtMost)});
+  // One colour per tier (matplotlib's blue, green, purple: none is the front's red).
+  const char* colours[] = {"#1f77b4", "#2ca02c", "#9467bd"};
+  for (size_t t = 0; t < r.tiers.size(); ++t) {
+    const TierOutcome& o = r.tiers[t];
+    const std::string tier = permutations::toString(o.tier);
+    const std::string colour = colours[t % 3];
+    if (o.shipped)
+      plot.marks.push_back({o.shipped->cost.total, o.shipped->result.error.psnr, tier + " as shipped", colour,
+                            eval::PlotMark::Shape::Square});
+    if (o.chosen || o.best) {
+      const Scored& after = o.chosen ? *o.chosen : *o.best;
+      plot.marks.push_back({after.cost.total, after.result.error.psnr,
+                            tier + (o.chosen ? " tuned" : " best reached, misses its budget"), colour,
+                            eval::PlotMark::Shape::Diamond});
+    }
+    plot.lines.push_back({true, o.budget.minPsnrDb, tier + " ≥ " + fixed(o.budget.minPsnrDb, 1) + " dB", colour});
+    if (o.budget.maxCost)
+      plot.lines.push_back({false, *o.budget.maxCost, tier + " cost ≤ " + fixed(*o.budget.maxCost, 3), colour});
+  }
+  return eval::scatterPlotSvg(plot);
+}
+
 std::vector<package::OutputFile> reportFiles(const TuneReport& report, const std::string& outDir) {
   auto bytes = [](const std::string& s) { return std::vector<uint8_t>(s.begin(), s.end()); };
   const std::filesystem::path dir(outDir);
   return {{(dir / "report.md").string(), bytes(markdownReport(report))},
-          {(dir / "report.json").string(), bytes(jsonReport(report))}};
+          {(dir / "report.json").string(), bytes(jsonReport(report))},
+          {(dir / "plot.svg").string(), bytes(plotSvg(report))}};
 }
 
 }  // namespace facet::tune
