@@ -99,7 +99,7 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
               for (const auto& [axisName, option] : object(v, fp).items()) {
                 const std::string ap = child(fp, axisName);
                 auto axis = std::find_if(eval::axes().begin(), eval::axes().end(),
-                                         [&](const eval::Axis& a) { return axisName == a.name; });
+                                         [&name = axisName](const eval::Axis& a) { return name == a.name; });
                 if (axis == eval::axes().end()) fail(ap, "unknown axis '" + axisName + "'");
                 const std::string o = text(option, ap);
                 if (std::find(axis->options.begin(), axis->options.end(), o) == axis->options.end()) {
