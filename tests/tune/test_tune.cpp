@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 #include "facet/eval/configurations.h"
@@ -177,7 +178,53 @@ TEST(TuneChoices, WrittenDeterministicallyAndReadBack) {
   EXPECT_EQ(bad(R"({"material": "brushed_gold", "tiers": {}})"),
             "t.json: error: /material: the file tunes 'brushed_gold', not 'red_plastic'");
   EXPECT_EQ(bad(R"({"material": "red_plastic"})"), "t.json: error: /tiers: missing: the tuned tiers");
+  // Figures in the budgets' ranges: a cost of 1e306 would be written back as null.
+  EXPECT_EQ(bad(R"({"material": "red_plastic", "tiers": {"high": {"cost": 1e306}}})"),
+            "t.json: error: /tiers/high/cost: expected a number from 0 to 1e+06");
+  EXPECT_EQ(bad(R"({"material": "red_plastic", "vertices_per_pixel": -1, "tiers": {}})"),
+            "t.json: error: /vertices_per_pixel: expected a number from 0 to 16");
   EXPECT_EQ(tune::choicesPath("examples/materials/red_plastic.mat"), "examples/materials/red_plastic.tuning.json");
+}
+
+// What fuzz_tune_files checks, on its seeds (the budgets file, the committed tuning files) and every
+// input it once got wrong (tests/fuzz/tune_regressions/): each file is refused naming it, or read
+// within the documented ranges; a tuning file read writes back to the same text once written.
+TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
+  const facet::ir::Material materials[] = {example("red_plastic"), example("brushed_gold")};
+  std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json"),
+                                    facet::test::examplePath("materials/red_plastic.tuning.json"),
+                                    facet::test::examplePath("materials/brushed_gold.tuning.json")};
+  const std::string regressions = facet::test::sourceDir() + "/tests/fuzz/tune_regressions";
+  for (const auto& entry : std::filesystem::directory_iterator(regressions))
+    if (entry.path().filename() != "README.md") files.push_back(entry.path().string());
+  std::sort(files.begin() + 3, files.end());
+  size_t read = 0;
+  for (const std::string& path : files) {
+    const std::string text = facet::test::readText(path);
+    std::string error;
+    if (auto b = tune::parseBudgets(path, text, &error)) {
+      ++read;
+      EXPECT_TRUE(std::isfinite(b->verticesPerPixel) && b->verticesPerPixel >= 0) << path;
+      for (const auto& [tier, t] : b->tiers) {
+        EXPECT_TRUE(t.minPsnrDb >= 0 && t.minPsnrDb <= 200) << path;
+        EXPECT_TRUE(!t.maxCost || (std::isfinite(*t.maxCost) && *t.maxCost >= 0)) << path;
+      }
+    } else {
+      EXPECT_EQ(error.rfind(path + ":", 0), 0u) << error;
+    }
+    for (const facet::ir::Material& m : materials) {
+      if (auto c = tune::parseChoices(path, text, m, &error)) {
+        ++read;
+        const std::string written = tune::writeChoices(*c);
+        auto again = tune::parseChoices("written.json", written, m, &error);
+        ASSERT_TRUE(again) << path << ": " << error << "\n" << written;
+        EXPECT_EQ(tune::writeChoices(*again), written) << path;
+      } else {
+        EXPECT_EQ(error.rfind(path + ":", 0), 0u) << error;
+      }
+    }
+  }
+  EXPECT_GE(read, 3u);  // the budgets file and each committed tuning file against its material
 }
 
 TEST(TuneSearch, CandidatesAreEveryCombinationOnceWithTheTiersAsShippedAmongThem) {
