@@ -586,11 +586,13 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
   }
   text += "\n    surface {\n";
   // KHR_texture_transform: uv' = T · R · S · uv, R turning the UVs counter-clockwise by `rotation`
-  // in glTF's UV space, whose v points down: u' = cos · u + sin · v, v' = −sin · u + cos · v. That is
-  // the extension's prose, which Khronos's TextureTransformTest sample and the major loaders follow;
-  // its GLSL listing, mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1) column-major, is the transpose (a
-  // counter-clockwise turn with v up), and drawn with it the sample's rotated arrow points at the
-  // sample's red "rotated the wrong way" marker (GltfRealAssets).
+  // in glTF's UV space, whose v points down: u' = cos · u + sin · v, v' = −sin · u + cos · v. That
+  // is the extension's prose, which Khronos's TextureTransformTest sample follows; its GLSL
+  // listing, mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1) column-major, is the transpose (a
+  // counter-clockwise turn with v up), with which the sample's rotated arrow points at its red
+  // "rotated the wrong way" marker (TextureTransformRotationTurnsTheImageClockwise). v' is written
+  // −sin · u + cos · v: as cos · v − sin · u, Mesa's Adreno 630 compiler takes 209 fragment
+  // instructions for `gltf_bc1t` instead of 201 (Mali-G57 the same either way; docs/gltf.md).
   std::string sampled[kGltfSlots];
   for (size_t s = 0; s < kGltfSlots; ++s) {
     if (!f.textured[s]) continue;
@@ -599,8 +601,8 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
     if (f.transformed[s]) {
       text += "        let " + p + "Uv = vec2(cos(params." + p + "Rotation) * params." + p + "Scale.x * " + uv +
               ".x + sin(params." + p + "Rotation) * params." + p + "Scale.y * " + uv + ".y,\n" +
-              "            cos(params." + p + "Rotation) * params." + p + "Scale.y * " + uv + ".y - sin(params." + p +
-              "Rotation) * params." + p + "Scale.x * " + uv + ".x) + params." + p + "Offset\n";
+              "            -sin(params." + p + "Rotation) * params." + p + "Scale.x * " + uv + ".x + cos(params." + p +
+              "Rotation) * params." + p + "Scale.y * " + uv + ".y) + params." + p + "Offset\n";
       coordinate = p + "Uv";
     }
     sampled[s] = "sample(params." + p + ", " + coordinate + ")";
