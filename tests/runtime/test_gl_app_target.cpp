@@ -73,6 +73,17 @@ AppFramebuffer makeAppFramebuffer(Image image, GLenum format, uint32_t width, ui
   return target;
 }
 
+// Rows in the other order (GL's bottom-up memory against FrameResult::ldr's top first).
+std::vector<uint8_t> rowsReversed(const std::vector<uint8_t>& pixels, uint32_t width, uint32_t height) {
+  std::vector<uint8_t> reversed(pixels.size());
+  const size_t row = size_t{width} * 4;
+  for (uint32_t y = 0; y < height; ++y) {
+    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row,
+                reversed.begin() + std::ptrdiff_t(y * row));
+  }
+  return reversed;
+}
+
 // What the app reads back itself: RGBA8, rows top first like FrameResult::ldr.
 std::vector<uint8_t> readFramebuffer(GLuint framebuffer, uint32_t width, uint32_t height) {
   std::vector<uint8_t> pixels(size_t{width} * height * 4);
@@ -81,13 +92,7 @@ std::vector<uint8_t> readFramebuffer(GLuint framebuffer, uint32_t width, uint32_
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, GLsizei(width), GLsizei(height), GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  std::vector<uint8_t> topFirst(pixels.size());
-  const size_t row = size_t{width} * 4;
-  for (uint32_t y = 0; y < height; ++y) {
-    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row,
-                topFirst.begin() + std::ptrdiff_t(y * row));
-  }
-  return topFirst;
+  return rowsReversed(pixels, width, height);
 }
 
 int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
@@ -120,16 +125,6 @@ FrameDesc appRowOrderFrame(const FrameDesc& frame, std::deque<Mesh>* meshes) {
     std::memcpy(draw.materialParams.data(), &params, sizeof params);
   }
   return mirrored;
-}
-
-std::vector<uint8_t> rowsReversed(const std::vector<uint8_t>& pixels, uint32_t width, uint32_t height) {
-  std::vector<uint8_t> reversed(pixels.size());
-  const size_t row = size_t{width} * 4;
-  for (uint32_t y = 0; y < height; ++y) {
-    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row,
-                reversed.begin() + std::ptrdiff_t(y * row));
-  }
-  return reversed;
 }
 
 ::testing::AssertionResult noValidationErrors(const RenderBackend& backend) {
