@@ -86,8 +86,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     half3 _1709 = half3(float3(1.0)) - half3(float3(params.facet_f0));
     half3 _1557 = half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1443) * half(_1443)) / fast::max(_1429, 9.9999997473787516355514526367188e-05)) * half(_1462)) * half(_1462)), float3(65504.0))) * _1531;
     half _1743 = _1382 * _1382;
-    half3 _1745 = _960 * half(64.0);
-    half3 _1747 = cross(_1745, half3(_1598));
+    half3 _1747 = _1638 * half(64.0);
     half _1750 = half(64.0) * _1743;
     half _1751 = _1535 * _1750;
     half _1763 = half(12.56637096405029296875) * max(_1539 * _1539, half(6.103515625e-05));
@@ -110,7 +109,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     half _2143 = _2140 * _2140;
     half _2148 = (_2143 * _2143) * _2140;
     half3 _1999 = half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1885) * half(_1885)) / fast::max(_1871, 9.9999997473787516355514526367188e-05)) * half(_1904)) * half(_1904)), float3(65504.0))) * _1973;
-    half3 _2189 = cross(_1745, half3(_2040));
+    half3 _2189 = _2080 * half(64.0);
     half _2193 = _1977 * _1750;
     half _2205 = half(12.56637096405029296875) * max(_1981 * _1981, half(6.103515625e-05));
     half _2211 = _1765 / (fma(_2193, _2193, dot(_2189, _2189)) * _2205);

@@ -77,7 +77,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     half _1502 = (_1497 * _1497) * _1494;
     half3 _1353 = half4(frame.lightColor).xyz * _1327;
     half _1539 = _1262 * _1262;
-    half3 _1543 = cross(_858 * half(64.0), half3(_1394));
+    half3 _1543 = _1434 * half(64.0);
     half _1547 = _1331 * (half(64.0) * _1539);
     half _1559 = half(12.56637096405029296875) * max(_1335 * _1335, half(6.103515625e-05));
     half _1565 = (half(4096.0) * _1539) / (fma(_1547, _1547, dot(_1543, _1543)) * _1559);

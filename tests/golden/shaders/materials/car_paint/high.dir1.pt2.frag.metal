@@ -80,8 +80,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     half3 _1646 = half3(float3(1.0)) - half3(float3(params.facet_f0));
     half3 _1494 = half4(frame.lightColor).xyz * _1468;
     half _1680 = _1403 * _1403;
-    half3 _1682 = _960 * half(64.0);
-    half3 _1684 = cross(_1682, half3(_1535));
+    half3 _1684 = _1575 * half(64.0);
     half _1687 = half(64.0) * _1680;
     half _1688 = _1472 * _1687;
     half _1700 = half(12.56637096405029296875) * max(_1476 * _1476, half(6.103515625e-05));
@@ -104,7 +103,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     half _2080 = _2077 * _2077;
     half _2085 = (_2080 * _2080) * _2077;
     half3 _1936 = half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1822) * half(_1822)) / fast::max(_1808, 9.9999997473787516355514526367188e-05)) * half(_1841)) * half(_1841)), float3(65504.0))) * _1910;
-    half3 _2126 = cross(_1682, half3(_1977));
+    half3 _2126 = _2017 * half(64.0);
     half _2130 = _1914 * _1687;
     half _2142 = half(12.56637096405029296875) * max(_1918 * _1918, half(6.103515625e-05));
     half _2148 = _1702 / (fma(_2130, _2130, dot(_2126, _2126)) * _2142);
@@ -126,7 +125,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     half _2522 = _2519 * _2519;
     half _2527 = (_2522 * _2522) * _2519;
     half3 _2378 = half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_2264) * half(_2264)) / fast::max(_2250, 9.9999997473787516355514526367188e-05)) * half(_2283)) * half(_2283)), float3(65504.0))) * _2352;
-    half3 _2568 = cross(_1682, half3(_2419));
+    half3 _2568 = _2459 * half(64.0);
     half _2572 = _2356 * _1687;
     half _2584 = half(12.56637096405029296875) * max(_2360 * _2360, half(6.103515625e-05));
     half _2590 = _1702 / (fma(_2572, _2572, dot(_2568, _2568)) * _2584);

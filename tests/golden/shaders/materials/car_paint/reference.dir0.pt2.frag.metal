@@ -84,8 +84,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _1690 = float3(1.0) - float3(params.facet_f0);
     float3 _1543 = (float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1432 * _1432) / fast::max(_1418, 9.9999997473787516355514526367188e-05)) * _1451) * _1451)) * _1517;
     float _1724 = _1372 * _1372;
-    float3 _1726 = _950 * 64.0;
-    float3 _1728 = cross(_1726, _1583);
+    float3 _1728 = _1621 * 64.0;
     float _1731 = 64.0 * _1724;
     float _1732 = _1521 * _1731;
     float _1744 = 12.56637096405029296875 * fast::max(_1525 * _1525, 6.103515625e-05);
@@ -108,7 +107,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _2114 = _2111 * _2111;
     float _2119 = (_2114 * _2114) * _2111;
     float3 _1975 = (float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1864 * _1864) / fast::max(_1850, 9.9999997473787516355514526367188e-05)) * _1883) * _1883)) * _1949;
-    float3 _2160 = cross(_1726, _2015);
+    float3 _2160 = _2053 * 64.0;
     float _2164 = _1953 * _1731;
     float _2176 = 12.56637096405029296875 * fast::max(_1957 * _1957, 6.103515625e-05);
     float _2182 = _1746 / (fma(_2164, _2164, dot(_2160, _2160)) * _2176);

@@ -75,7 +75,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1491 = (_1486 * _1486) * _1483;
     float3 _1347 = frame.lightColor.xyz * _1321;
     float _1528 = _1256 * _1256;
-    float3 _1532 = cross(_852 * 64.0, _1387);
+    float3 _1532 = _1425 * 64.0;
     float _1536 = _1325 * (64.0 * _1528);
     float _1548 = 12.56637096405029296875 * fast::max(_1329 * _1329, 6.103515625e-05);
     float _1554 = (4096.0 * _1528) / (fma(_1536, _1536, dot(_1532, _1532)) * _1548);

@@ -78,8 +78,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _1631 = float3(1.0) - float3(params.facet_f0);
     float3 _1484 = frame.lightColor.xyz * _1458;
     float _1665 = _1393 * _1393;
-    float3 _1667 = _950 * 64.0;
-    float3 _1669 = cross(_1667, _1524);
+    float3 _1669 = _1562 * 64.0;
     float _1672 = 64.0 * _1665;
     float _1673 = _1462 * _1672;
     float _1685 = 12.56637096405029296875 * fast::max(_1466 * _1466, 6.103515625e-05);
@@ -102,7 +101,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _2055 = _2052 * _2052;
     float _2060 = (_2055 * _2055) * _2052;
     float3 _1916 = (float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1805 * _1805) / fast::max(_1791, 9.9999997473787516355514526367188e-05)) * _1824) * _1824)) * _1890;
-    float3 _2101 = cross(_1667, _1956);
+    float3 _2101 = _1994 * 64.0;
     float _2105 = _1894 * _1672;
     float _2117 = 12.56637096405029296875 * fast::max(_1898 * _1898, 6.103515625e-05);
     float _2123 = _1687 / (fma(_2105, _2105, dot(_2101, _2101)) * _2117);
@@ -123,7 +122,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _2487 = _2484 * _2484;
     float _2492 = (_2487 * _2487) * _2484;
     float3 _2348 = (float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_2237 * _2237) / fast::max(_2223, 9.9999997473787516355514526367188e-05)) * _2256) * _2256)) * _2322;
-    float3 _2533 = cross(_1667, _2388);
+    float3 _2533 = _2426 * 64.0;
     float _2537 = _2326 * _1672;
     float _2549 = 12.56637096405029296875 * fast::max(_2330 * _2330, 6.103515625e-05);
     float _2555 = _1687 / (fma(_2537, _2537, dot(_2533, _2533)) * _2549);
