@@ -549,13 +549,18 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
   markPareto(&report.results);
 
   // The lobes on their own, over the whole BRDF domain (lit materials: unlit ones have no lobe).
-  if (options.brdfSweep && material.shading == "lit" && !material.cloth) {
+  // The cloth model has no specular lobe, only its sheen's.
+  if (options.brdfSweep && material.shading == "lit") {
     GpuEvaluator gpu(options.validation);
     if (!gpu.ready()) {
       error->message = "no Vulkan device for the BRDF-domain sweep: " + gpu.initError();
       return std::nullopt;
     }
-    if (!sweepBrdfDomain(gpu, configs, report.brdfDomain, &report.brdfSweep, &error->message)) return std::nullopt;
+    if (!material.cloth && !sweepBrdfDomain(gpu, configs, report.brdfDomain, &report.brdfSweep, &error->message))
+      return std::nullopt;
+    if (!sweepModelLobes(gpu, material, configs, report.brdfDomain, report.furnaceDomain, &report.modelLobeSweep,
+                         &report.lobeFurnace, &error->message))
+      return std::nullopt;
   }
   return report;
 }

@@ -151,25 +151,48 @@ Json reportJson(const EvalReport& r) {
     configs.push_back(k);
   }
   j["configurations"] = configs;
-  if (!r.brdfSweep.empty()) {
-    Json sweep = Json::array();
-    for (const BrdfSweepRow& b : r.brdfSweep)
-      sweep.push_back(Json{{"lobe", b.lobe},
-                           {"precision", b.precision},
-                           {"configurations", b.configurations},
-                           {"roughness", b.roughness},
-                           {"relative_rmse_per_roughness", b.rowRelativeRmse},
-                           {"mean_relative_rmse", b.meanRelativeRmse},
-                           {"relative_rmse_per_roughness_nov_weighted", b.rowScreenRmse},
-                           {"mean_relative_rmse_nov_weighted", b.meanScreenRmse},
-                           {"worst_relative_rmse", b.worstRelativeRmse},
-                           {"worst_roughness", b.worstRoughness},
-                           {"non_finite", b.nonFinite},
-                           {"beyond_binary16", b.beyondHalf}});
+  if (!r.brdfSweep.empty() || !r.modelLobeSweep.empty()) {
+    auto rowsJson = [](const std::vector<BrdfSweepRow>& rows) {
+      Json out = Json::array();
+      for (const BrdfSweepRow& b : rows) {
+        Json row{{"lobe", b.lobe},
+                 {"precision", b.precision},
+                 {"configurations", b.configurations},
+                 {"roughness", b.roughness},
+                 {"relative_rmse_per_roughness", b.rowRelativeRmse},
+                 {"mean_relative_rmse", b.meanRelativeRmse},
+                 {"relative_rmse_per_roughness_nov_weighted", b.rowScreenRmse},
+                 {"mean_relative_rmse_nov_weighted", b.meanScreenRmse},
+                 {"worst_relative_rmse", b.worstRelativeRmse},
+                 {"worst_roughness", b.worstRoughness},
+                 {"non_finite", b.nonFinite},
+                 {"beyond_binary16", b.beyondHalf}};
+        if (!b.hardCase.empty()) {
+          row["hard_cases"] = b.hardCase;
+          row["hard_case_psnr_vs_highp"] = std::isfinite(b.hardCasePsnr) ? Json(b.hardCasePsnr) : Json(nullptr);
+        }
+        out.push_back(row);
+      }
+      return out;
+    };
+    Json furnace = Json::array();
+    for (const LobeFurnaceRow& f : r.lobeFurnace)
+      furnace.push_back(Json{{"lobe", f.lobe},
+                             {"precision", f.precision},
+                             {"configurations", f.configurations},
+                             {"integrand", f.integrand},
+                             {"max_albedo", std::isfinite(f.maxAlbedo) ? Json(f.maxAlbedo) : Json(nullptr)},
+                             {"at_nov", f.atNoV},
+                             {"at_roughness", f.atRoughness},
+                             {"at_anisotropy", f.atAnisotropy},
+                             {"bound", f.bound > 0 ? Json(f.bound) : Json(nullptr)},
+                             {"within_bound", f.withinBound()}});
     j["brdf_domain"] = Json{{"what",
                              "f_s * n.l of each specular lobe against double GGX/Smith/Schlick over n.v x n.l x "
                              "azimuth x roughness x f0; relative RMSE per roughness row"},
-                            {"lobes", sweep}};
+                            {"lobes", rowsJson(r.brdfSweep)},
+                            {"model_lobes", rowsJson(r.modelLobeSweep)},
+                            {"white_furnace", furnace}};
   }
   if (!r.gpuStats.empty()) {
     j["figures"] = gpu_stats::sourceNote(r.gpuStats);
@@ -240,6 +263,14 @@ std::string gpuMarkdown(const EvalReport& r) {
   return s;
 }
 
+// The first four configurations' names, then how many more.
+std::string configurationNames(const std::vector<std::string>& configurations) {
+  std::string names;
+  for (size_t i = 0; i < configurations.size() && i < 4; ++i) names += (i ? ", " : "") + configurations[i];
+  if (configurations.size() > 4) names += ", +" + std::to_string(configurations.size() - 4);
+  return names;
+}
+
 // The lobes over the BRDF domain (brdf_sweep.h), one row per (lobe, precision).
 std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfSweepDomain& domain) {
   std::string s =
@@ -257,12 +288,45 @@ std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfS
       "| lobe | precision | configurations | rel. RMSE, mean over r | worst r (rel. RMSE) | weighed by n·v | "
       "non-finite |\n|---|---|---|--:|--:|--:|--:|\n";
   for (const BrdfSweepRow& b : rows) {
-    std::string names;
-    for (size_t i = 0; i < b.configurations.size() && i < 4; ++i) names += (i ? ", " : "") + b.configurations[i];
-    if (b.configurations.size() > 4) names += ", +" + std::to_string(b.configurations.size() - 4);
-    s += "| " + b.lobe + " | " + b.precision + " | " + names + " | " + fmt("%.4f", b.meanRelativeRmse) + " | " +
-         fmt("%.3f", b.worstRoughness) + " (" + fmt("%.4f", b.worstRelativeRmse) + ") | " +
-         fmt("%.4f", b.meanScreenRmse) + " | " + std::to_string(b.nonFinite) + " |\n";
+    s += "| " + b.lobe + " | " + b.precision + " | " + configurationNames(b.configurations) + " | " +
+         fmt("%.4f", b.meanRelativeRmse) + " | " + fmt("%.3f", b.worstRoughness) + " (" +
+         fmt("%.4f", b.worstRelativeRmse) + ") | " + fmt("%.4f", b.meanScreenRmse) + " | " +
+         std::to_string(b.nonFinite) + " |\n";
+  }
+  return s;
+}
+
+// The material models' lobes over the BRDF domain and their white furnace (lobe_sweep.h).
+std::string modelLobesMarkdown(const EvalReport& r) {
+  std::string s =
+      "\n**The material models' lobes** over the same domain (the anisotropic lobe also over anisotropy "
+      "−1…1 and the view's azimuth about the tangent), each chunk against its double model "
+      "(`eval/include/facet/eval/standard_model.h`); `+ base`: the coat over a white Lambertian base "
+      "attenuated by 1 − Fc(n·v). Hard cases: the mediump chunk's PSNR against its highp form (peak: the "
+      "highp lobe's largest value there).\n\n"
+      "| lobe | precision | configurations | rel. RMSE, mean over r | worst r (rel. RMSE) | weighed by n·v | "
+      "non-finite | hard cases, PSNR dB |\n|---|---|---|--:|--:|--:|--:|--:|\n";
+  for (const BrdfSweepRow& b : r.modelLobeSweep) {
+    std::string hard = "—";
+    if (!b.hardCase.empty())
+      hard = std::isinf(b.hardCasePsnr) && b.hardCasePsnr > 0 ? "∞" : fmt("%.1f", b.hardCasePsnr);
+    s += "| " + b.lobe + " | " + b.precision + " | " + configurationNames(b.configurations) + " | " +
+         fmt("%.4f", b.meanRelativeRmse) + " | " + fmt("%.3f", b.worstRoughness) + " (" +
+         fmt("%.4f", b.worstRelativeRmse) + ") | " + fmt("%.4f", b.meanScreenRmse) + " | " +
+         std::to_string(b.nonFinite) + " | " + hard + " |\n";
+  }
+  s += "\nWhite furnace of each lobe: the directional albedo E(n·v, r) = ∫ f · n·l dω of the chunk's output by "
+       "quadrature on the GPU (GGX lobes: " +
+       std::to_string(r.furnaceDomain.ggxSamples) + " GGX-distributed half vectors; the sheen: a " +
+       std::to_string(r.furnaceDomain.sheenSteps) + " × " + std::to_string(r.furnaceDomain.sheenSteps / 2) +
+       " grid), n·v from 1e-4 to 1, the largest over the domain and where:\n\n"
+       "| lobe | precision | integrand | max albedo | at n·v, r (, anisotropy) | bound |\n|---|---|---|--:|---|---|\n";
+  for (const LobeFurnaceRow& f : r.lobeFurnace) {
+    std::string at = fmt("%.4g", f.atNoV) + ", " + fmt("%.3f", f.atRoughness);
+    if (f.lobe.rfind("anisotropy", 0) == 0) at += ", " + fmt("%.2f", f.atAnisotropy);
+    std::string bound = f.bound > 0 ? (f.withinBound() ? "≤ " : "**above** ") + fmt("%.3f", f.bound) : "reported";
+    s += "| " + f.lobe + " | " + f.precision + " | " + f.integrand + " | " + fmt("%.5f", f.maxAlbedo) + " | " + at +
+         " | " + bound + " |\n";
   }
   return s;
 }
@@ -350,6 +414,7 @@ std::string reportMarkdown(const EvalReport& r) {
   if (r.groundTruthSamples > 0) s += groundTruthMarkdown(r);
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep, r.brdfDomain);
+  if (!r.modelLobeSweep.empty()) s += modelLobesMarkdown(r);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
   for (const std::string& v : r.viewNames) s += " " + v + " |";
   s += "\n|---|";

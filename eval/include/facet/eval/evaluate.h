@@ -13,6 +13,7 @@
 #include "facet/eval/brdf_sweep.h"
 #include "facet/eval/configurations.h"
 #include "facet/eval/grid_scene.h"
+#include "facet/eval/lobe_sweep.h"
 #include "facet/eval/metrics.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/module.h"
@@ -130,6 +131,11 @@ struct EvalReport {
   // materials or with EvalOptions::brdfSweep off.
   std::vector<BrdfSweepRow> brdfSweep;
   BrdfSweepDomain brdfDomain;  // what the sweep sampled
+  // The lobes of the material models it writes (clear coat, anisotropy, sheen: lobe_sweep.h) over
+  // the same domain, and their white furnace; empty for a material that writes none.
+  std::vector<BrdfSweepRow> modelLobeSweep;
+  std::vector<LobeFurnaceRow> lobeFurnace;
+  LobeFurnaceDomain furnaceDomain;
 };
 
 struct EvalError {
