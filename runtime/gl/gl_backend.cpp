@@ -142,8 +142,8 @@ class GlBackend final : public GlRenderer {
 
   GlBackend() = default;
   bool initialise(std::unique_ptr<GlContext> host, const GlOptions& options, std::string* error);
-  // The frame the passes draw (withShadowDraws), its shadow pass checked first; null: refused, *error says why.
-  const FrameDesc* drawnFrame(const FrameDesc& frame, std::optional<FrameDesc>* storage, std::string* error) const;
+  // The frame's shadow pass checked (none: true) before anything reads its casters; false: refused, *error says why.
+  bool checkShadowPass(const FrameDesc& frame, std::string* error) const;
   // What every frame does first: the context current, the size in range, stale errors drained,
   // textures checked, targets and textures made.
   bool beginFrame(const FrameDesc& frame, std::string* error);
@@ -152,17 +152,17 @@ class GlBackend final : public GlRenderer {
   // MSAA: the multisampled colour blitted into the HDR texture, then the samples invalidated.
   void resolveSamples(uint32_t width, uint32_t height);
   // `framebuffer`: the merged one (HDR, LDR, depth) when `merged`, else the HDR one.
-  // `frame` is the drawn one (withShadowDraws): with a shadow pass, that pass first, then the
-  // forward draws.
-  // Drawn top-down when topDown_ (gl_row_order.h).
+  // With a shadow pass, that pass first, then the forward draws. Drawn top-down when topDown_
+  // (gl_row_order.h).
   bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error);
-  // The frame's instances in one upload (both passes'); each draw points the instance attributes at its own.
+  // The frame's instances in one upload (both passes', FrameDraws' order); each draw points the instance
+  // attributes at its own.
   bool uploadInstances(const FrameDesc& frame, std::string* error);
   // The sun's shadow pass (docs/shadows.md): the atlas cleared to depth 1, then each of the
-  // desc's views drawn into its rectangle, the casters from the frame's last shadowDrawCount() draws.
+  // desc's views drawn into its rectangle, each its casters read in place from the desc.
   bool shadowPass(const FrameDesc& frame, std::string* error);
-  // One view of the shadow pass: its rectangle, bias and frame block, its casters from frame.draws[*next].
-  bool drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, size_t* next, std::string* error);
+  // One view of the shadow pass: its rectangle, bias and frame block, its casters.
+  bool drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, std::string* error);
   // `caster`: a shadow pass draw (no alpha to coverage: the atlas has one sample).
   bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error, bool caster = false);
   // Separate path: samples the HDR texture, draws into `framebuffer` (the backend's LDR one, or the app's).
@@ -343,15 +343,11 @@ GlBackend::~GlBackend() {
   if (context_) context_->makeCurrent(nullptr);
 }
 
-const FrameDesc* GlBackend::drawnFrame(const FrameDesc& frame, std::optional<FrameDesc>* storage,
-                                       std::string* error) const {
-  if (!frame.shadow) return &frame;
+bool GlBackend::checkShadowPass(const FrameDesc& frame, std::string* error) const {
+  if (!frame.shadow) return true;
   // The atlas is a texture and a framebuffer's only attachment: both limits hold for it.
-  if (std::string why = shadowPassError(*frame.shadow, static_cast<uint32_t>(maxTargetSize_)); !why.empty()) {
-    *error = why;
-    return nullptr;
-  }
-  return &storage->emplace(withShadowDraws(frame));
+  *error = shadowPassError(*frame.shadow, static_cast<uint32_t>(maxTargetSize_));
+  return error->empty();
 }
 
 bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
@@ -371,8 +367,9 @@ bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
     return false;
   // Every draw's program linked (and a package's checked against its interface) before anything
   // is drawn: a refused program fails the frame, not half of it.
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    if (frame.draws[i].program && !programFor(*frame.draws[i].program, error)) {
+  const FrameDraws draws(frame);
+  for (size_t i = 0; i < draws.size(); ++i) {
+    if (draws[i].program && !programFor(*draws[i].program, error)) {
       *error = "draw " + std::to_string(i) + ": " + *error;
       return false;
     }
@@ -388,14 +385,12 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
       message = "no FrameResult to fill";
       return false;
     }
-    std::optional<FrameDesc> withCasters;
-    const FrameDesc* drawn = drawnFrame(frame, &withCasters, &message);
-    if (!drawn || !beginFrame(*drawn, &message)) return false;
+    if (!checkShadowPass(frame, &message) || !beginFrame(frame, &message)) return false;
     const bool merged = path_ == PostPath::Merged;
     topDown_ = true;
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
     const bool forwardDone =
-        forwardPass(*drawn, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
+        forwardPass(frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!forwardDone) return false;
     result->cpuSubmitMilliseconds =
@@ -458,9 +453,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       message = "the app's target has size " + std::to_string(target.width) + "x" + std::to_string(target.height);
       return false;
     }
-    std::optional<FrameDesc> withCasters;
-    const FrameDesc* drawn = drawnFrame(frame, &withCasters, &message);
-    if (!drawn || !beginFrame(*drawn, &message)) return false;
+    if (!checkShadowPass(frame, &message) || !beginFrame(frame, &message)) return false;
     topDown_ = false;
     gl::AppAttachment attachment;
     if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
@@ -469,7 +462,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     // FXAA: forward and post into the backend's targets, then FXAA into the app's framebuffer.
     if (fxaa_) {
       const bool ownMerged = path_ == PostPath::Merged;
-      bool done = forwardPass(*drawn, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
+      bool done = forwardPass(frame, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
                               ownMerged, &message) &&
                   (ownMerged ? mergedPostPass(frame, false, &message)
                              : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
@@ -482,7 +475,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
       if (!gl::attachAppImage(attachment, &message)) return false;
     }
-    bool done = forwardPass(*drawn, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged,
+    bool done = forwardPass(frame, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged,
                             &message);
     if (done) {
       done = merged ? mergedPostPass(frame, false, &message) : postPass(frame, target.framebuffer, &message);
@@ -548,8 +541,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   // The receivers sample the atlas the shadow pass drew (every forward draw has it on its unit).
   textures_.setShadowAtlas(frame.shadow ? shadowAtlas_.texture() : 0, shadowAtlas_.sampler());
   firstInstance_ = 0;
-  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
-  for (size_t i = 0; i < forwardDraws; ++i) {
+  for (size_t i = 0; i < frame.draws.size(); ++i) {
     std::string drawError;
     if (!drawItem(frame, frame.draws[i], &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
@@ -617,7 +609,7 @@ bool GlBackend::uploadInstances(const FrameDesc& frame, std::string* error) {
     return false;
   }
   std::vector<abi::InstanceTransform> instances;
-  for (const DrawItem& draw : frame.draws)
+  for (const DrawItem& draw : FrameDraws(frame))
     instances.insert(instances.end(), draw.instances.begin(), draw.instances.end());
   glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(abi::InstanceTransform)),
@@ -659,12 +651,10 @@ bool GlBackend::shadowPass(const FrameDesc& frame, std::string* error) {
   textures_.setShadowAtlas(0, 0);  // the casters draw into the atlas: the dummy on its unit
   // The casters' instances follow the forward draws' in the frame's upload.
   firstInstance_ = 0;
-  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
-  for (size_t i = 0; i < forwardDraws; ++i) firstInstance_ += frame.draws[i].instances.size();
-  size_t next = forwardDraws;
+  for (const DrawItem& draw : frame.draws) firstInstance_ += draw.instances.size();
   bool drawn = true;
   for (const ShadowCascadeDesc& view : shadow.cascades) {
-    if (!(drawn = drawShadowView(frame, view, &next, error))) break;
+    if (!(drawn = drawShadowView(frame, view, error))) break;
   }
   glBindVertexArray(0);
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -673,8 +663,7 @@ bool GlBackend::shadowPass(const FrameDesc& frame, std::string* error) {
   return drawn && checkGlError("shadow pass", error);
 }
 
-bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, size_t* next,
-                               std::string* error) {
+bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, std::string* error) {
   // The camera's frame block with the view's matrix; a masked caster's alpha test discards by its
   // coverage alone (cameraPosition.w = 0: no alpha to coverage in the single-sample atlas).
   abi::FrameUniforms viewUniforms = frame.frame;
@@ -690,10 +679,10 @@ bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& 
   glViewport(x, y, width, height);
   glScissor(x, y, width, height);
   glPolygonOffset(view.slopeBias, view.depthBias / kD16BiasUnit);
-  for (size_t k = 0; k < view.casters.size(); ++k, ++*next) {
+  for (uint32_t caster : view.casters) {
     std::string drawError;
-    if (!drawItem(frame, frame.draws[*next], &drawError, true)) {
-      if (error) *error = "shadow caster " + std::to_string(view.casters[k]) + ": " + drawError;
+    if (!drawItem(frame, frame.shadow->casters[caster], &drawError, true)) {
+      if (error) *error = "shadow caster " + std::to_string(caster) + ": " + drawError;
       return false;
     }
   }

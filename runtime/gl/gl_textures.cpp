@@ -134,7 +134,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
     return true;
   };
   if (!refresh(frame.frameTextures)) return false;
-  for (const DrawItem& draw : frame.draws) {
+  for (const DrawItem& draw : FrameDraws(frame)) {
     if (!refresh(draw.textures)) return false;
   }
   // Eviction: a texture gone from the scene must not hold memory forever.

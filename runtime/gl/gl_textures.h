@@ -42,7 +42,7 @@ class TextureCache {
   // decoded to RGBA8 on the CPU before upload.
   bool init(bool uploadAstc, std::string* error);
 
-  // Uploads every texture of the (already checked) frame that is new or changed, then deletes
+  // Uploads every texture of the (already checked) frame and its FrameDraws that is new or changed, then deletes
   // the entries that went unused for too long. Changes the current unit's 2D and cube bindings.
   bool prepare(const FrameDesc& frame, std::string* error);
 

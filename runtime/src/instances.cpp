@@ -1,3 +1,4 @@
+#include <stdexcept>
 #include <string>
 
 #include "facet/runtime/render_backend.h"
@@ -13,8 +14,9 @@ abi::InstanceTransform instanceTransform(const float model[16]) {
 
 std::string instanceCountError(const FrameDesc& frame) {
   size_t total = 0;
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const size_t count = frame.draws[i].instances.size();
+  const FrameDraws draws(frame);
+  for (size_t i = 0; i < draws.size(); ++i) {
+    const size_t count = draws[i].instances.size();
     const std::string which = "draw " + std::to_string(i) + ": ";
     if (count == 0) return which + "has no instances (a draw of one object is one instance)";
     if (count > abi::kMaxInstancesPerDraw)
@@ -47,14 +49,16 @@ std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize)
   return "";
 }
 
-FrameDesc withShadowDraws(const FrameDesc& frame) {
-  FrameDesc all = frame;
-  if (!frame.shadow) return all;
-  all.draws.reserve(frame.draws.size() + shadowDrawCount(frame));
-  for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) {
-    for (uint32_t caster : cascade.casters) all.draws.push_back(frame.shadow->casters[caster]);
+FrameDraws::FrameDraws(const FrameDesc& frame) : frame_(&frame), shadowCount_(shadowDrawCount(frame)) {}
+
+const DrawItem& FrameDraws::operator[](size_t i) const {
+  if (i < forwardCount()) return frame_->draws[i];
+  size_t k = i - forwardCount();
+  for (const ShadowCascadeDesc& view : frame_->shadow->cascades) {
+    if (k < view.casters.size()) return frame_->shadow->casters[view.casters[k]];
+    k -= view.casters.size();
   }
-  return all;
+  throw std::out_of_range("FrameDraws: draw " + std::to_string(i) + " of " + std::to_string(size()));
 }
 
 size_t shadowDrawCount(const FrameDesc& frame) {

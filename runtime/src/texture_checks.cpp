@@ -193,10 +193,11 @@ bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::stri
   if (!checkBindings(frame.frameTextures, "", maxImageSize, &frameTaken, "frame texture", error)) {
     return false;
   }
-  for (size_t d = 0; d < frame.draws.size(); ++d) {
+  const FrameDraws draws(frame);
+  for (size_t d = 0; d < draws.size(); ++d) {
     std::array<const char*, kTextureSlots> taken = frameTaken;
-    if (!checkBindings(frame.draws[d].textures, "draw " + std::to_string(d) + ": ", maxImageSize, &taken,
-                       "draw texture", error)) {
+    if (!checkBindings(draws[d].textures, "draw " + std::to_string(d) + ": ", maxImageSize, &taken, "draw texture",
+                       error)) {
       return false;
     }
   }

@@ -673,14 +673,12 @@ bool VulkanBackend::prepareFrame(const FrameDesc& frame, const AppImage* appImag
   // The backend's own LDR target only for a readback or a copy (TargetConfig::ownOutput). FXAA
   // writes the own target and the frame is copied into the app's image.
   const bool ownOutput = !appImage || !rendersDirectly(*appImage) || fxaa_;
-  // With a shadow pass, the casters are drawn as draws of their own after the forward draws.
-  if (frame.shadow && !checkShadow(*frame.shadow, ctx_.properties.limits, error)) return false;
-  std::optional<FrameDesc> withCasters;
-  const FrameDesc& drawn = frame.shadow ? withCasters.emplace(withShadowDraws(frame)) : frame;
-  if (!checkFrame(drawn, ctx_.properties.limits, error) ||
+  // With a shadow pass, the casters are drawn as draws of their own after the forward draws
+  // (FrameDraws), checked with them.
+  if (!checkFrame(frame, ctx_.properties.limits, error) ||
       !ensureTargets(frame.width, frame.height, ownOutput, error) ||
-      (frame.shadow && !ensureShadowAtlas(frame.shadow->atlasSize, error)) || !uploadFrame(drawn, slots, error) ||
-      !prepareTextures(drawn, error) || !allocateDrawSets(drawn, slots, error) || !outputFor(appImage, output, error)) {
+      (frame.shadow && !ensureShadowAtlas(frame.shadow->atlasSize, error)) || !uploadFrame(frame, slots, error) ||
+      !prepareTextures(frame, error) || !allocateDrawSets(frame, slots, error) || !outputFor(appImage, output, error)) {
     return false;
   }
   if (bloomOn_) {
@@ -946,21 +944,20 @@ bool VulkanBackend::ensureArena(VkDeviceSize size, std::string* error) {
 bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* slots, std::string* error) {
   const VkDeviceSize size = layoutFrame(frame, ctx_.properties.limits, slots, &shadowBlocks_);
   if (!meshes_.prepare(frame, error)) return false;
-  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
+  const FrameDraws draws(frame);
+  for (size_t i = 0; i < draws.size(); ++i) {
     DrawSlot& slot = (*slots)[i];
-    slot.mesh = meshes_.locate(frame.draws[i].mesh);
-    if (!pipelineFor(*frame.draws[i].program, frame.draws[i], slot.mesh.layout, i >= forwardDraws, &slot.pipeline,
-                     error)) {
+    const DrawItem& draw = draws[i];
+    slot.mesh = meshes_.locate(draw.mesh);
+    if (!pipelineFor(*draw.program, draw, slot.mesh.layout, draws.isCaster(i), &slot.pipeline, error)) {
       *error = "draw " + std::to_string(i) + ": " + *error;
       return false;
     }
   }
   if (!materialBlocks_.prepare(frame, error) || !ensureArena(size, error)) return false;
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
+  for (size_t i = 0; i < draws.size(); ++i) {
     DrawSlot& slot = (*slots)[i];
-    slot.materialBuffer =
-        frame.draws[i].materialBlock ? materialBlocks_.locate(frame.draws[i].materialBlock) : slot_->arena.buffer;
+    slot.materialBuffer = draws[i].materialBlock ? materialBlocks_.locate(draws[i].materialBlock) : slot_->arena.buffer;
   }
   // Host-coherent memory, and vkQueueSubmit makes host writes visible to the device.
   writeFrame(frame, *slots, shadowBlocks_, samples_.count != VK_SAMPLE_COUNT_1_BIT, slot_->arena.mapped);
@@ -1023,7 +1020,7 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
   std::vector<VkWriteDescriptorSet> writes((kDrawBlocks + kTextureSlots) * size_t{count});
   // The receivers (forward draws of a frame with a shadow pass) sample the atlas; the casters
   // keep whatever the frame binds there (the dummy texture).
-  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
+  const FrameDraws draws(frame);
   for (uint32_t i = 0; i < count; ++i) {
     DrawSlot& slot = (*slots)[i];
     slot.set = sets[2 * i];
@@ -1046,8 +1043,8 @@ bool VulkanBackend::allocateDrawSets(const FrameDesc& frame, std::vector<DrawSlo
     }
     // Every binding is written, the unused ones with the dummy texture: Vulkan 1.1 has no
     // partially bound descriptor sets, and a shader may declare any of the 16.
-    TextureSlots textureSlots = textures_.slotsFor(frame, frame.draws[i]);
-    if (frame.shadow && i < forwardDraws) {
+    TextureSlots textureSlots = textures_.slotsFor(frame, draws[i]);
+    if (frame.shadow && !draws.isCaster(i)) {
       textureSlots[abi::kShadowAtlasBinding] = TextureSlot{shadowAtlas_.view, shadowSampler_};
     }
     for (uint32_t b = 0; b < kTextureSlots; ++b) {

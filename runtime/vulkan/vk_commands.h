@@ -42,7 +42,7 @@ struct FrameObjects {
   VkQueryPool timestamps = VK_NULL_HANDLE;
   VkBuffer arena = VK_NULL_HANDLE;  // this frame's uniforms and instance transforms (DrawSlot offsets)
   // The sun's shadow pass (null: none): drawn into shadowFramebuffer (the atlas) by shadowPass
-  // before the forward pass, from the slots after the forward draws' (withShadowDraws' order).
+  // before the forward pass, from the slots after the forward draws' (FrameDraws' order).
   const ShadowPassDesc* shadow = nullptr;
   VkRenderPass shadowPass = VK_NULL_HANDLE;
   VkFramebuffer shadowFramebuffer = VK_NULL_HANDLE;

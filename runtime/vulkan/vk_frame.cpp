@@ -32,14 +32,16 @@ bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, st
              std::to_string(maxSize);
     return false;
   }
+  // The casters are read through the views' indices: those are checked first.
+  if (frame.shadow && !checkShadow(*frame.shadow, limits, error)) return false;
   if (std::string why = instanceCountError(frame); !why.empty()) {
     *error = why;
     return false;
   }
-  if (frame.shadow && !checkShadow(*frame.shadow, limits, error)) return false;
   std::unordered_set<const Mesh*> checkedMeshes;
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
+  const FrameDraws draws(frame);
+  for (size_t i = 0; i < draws.size(); ++i) {
+    const DrawItem& draw = draws[i];
     const std::string which = "draw " + std::to_string(i) + ": ";
     if (!draw.mesh || !draw.program) {
       *error = which + "mesh or program is null";
@@ -82,15 +84,16 @@ VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& l
       size = alignUp(size + sizeof(abi::FrameUniforms), alignment);
     }
   }
-  slots->resize(frame.draws.size());
-  size_t next = frame.draws.size() - shadowDrawCount(frame);
+  const FrameDraws draws(frame);
+  slots->resize(draws.size());
+  size_t next = draws.forwardCount();
   for (size_t c = 0; c < shadow->cascadeOffsets.size(); ++c) {
     for (size_t k = 0; k < frame.shadow->cascades[c].casters.size(); ++k) {
       (*slots)[next++].frameOffset = shadow->cascadeOffsets[c];
     }
   }
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
+  for (size_t i = 0; i < draws.size(); ++i) {
+    const DrawItem& draw = draws[i];
     DrawSlot& slot = (*slots)[i];
     slot.materialSize = materialRange(materialBytes(draw).size());
     slot.objectOffset = size;
@@ -124,8 +127,9 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, cons
     cascadeUniforms.cameraPosition[3] = 0.0f;
     std::memcpy(base + shadow.cascadeOffsets[c], &cascadeUniforms, sizeof(cascadeUniforms));
   }
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
+  const FrameDraws draws(frame);
+  for (size_t i = 0; i < draws.size(); ++i) {
+    const DrawItem& draw = draws[i];
     const DrawSlot& slot = slots[i];
     const abi::ObjectUniforms object = objectUniforms(slot.mesh.decode);
     std::memcpy(base + slot.objectOffset, &object, sizeof(object));

@@ -36,7 +36,7 @@ struct DrawSlot {
 };
 
 // The shadow pass's own checks (checkFrame makes them too): shadowPassError with the largest
-// atlas the device can make and render into. The frame the backend draws is withShadowDraws'.
+// atlas the device can make and render into. The backend draws the frame's FrameDraws.
 bool checkShadow(const ShadowPassDesc& shadow, const VkPhysicalDeviceLimits& limits, std::string* error);
 
 // Where the shadow pass's blocks sit in the arena (the layout above).
@@ -49,13 +49,13 @@ struct ShadowBlocks {
 // null meshes or programs, instance counts out of bounds (instanceCountError), partial vertices, indices past the last
 // vertex, oversized params, and malformed texture bindings (checkFrameTextures in vk_textures.h);
 // with a shadow pass, an atlas the device cannot make, cascade viewports outside it and caster
-// indices out of range (the casters themselves are checked as draws, withShadowDraws).
+// indices out of range (the casters themselves are checked as draws, FrameDraws).
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error);
 
-// Fills the uniform offsets of slots (one per draw; pipeline, sets, mesh and materialBuffer are
+// Fills the uniform offsets of slots (one per draw of FrameDraws; pipeline, sets, mesh and materialBuffer are
 // left alone; draws with a persistent materialBlock get no material space in the arena) and
 // returns the arena size the frame needs.
-// `frame` is withShadowDraws' (the casters' slots get their cascade's frameOffset).
+// The casters' slots get their cascade's frameOffset.
 VkDeviceSize layoutFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::vector<DrawSlot>* slots,
                          ShadowBlocks* shadow);
 

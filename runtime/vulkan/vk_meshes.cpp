@@ -46,8 +46,9 @@ bool MeshCache::upload(const Mesh& mesh, Entry* entry, std::string* error) {
 
 bool MeshCache::prepare(const FrameDesc& frame, std::string* error) {
   ++frameNumber_;
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
-    const DrawItem& draw = frame.draws[i];
+  const FrameDraws draws(frame);
+  for (size_t i = 0; i < draws.size(); ++i) {
+    const DrawItem& draw = draws[i];
     auto found = meshes_.find(draw.mesh);
     // Already seen this frame: its identity was checked by the first draw of it.
     if (found != meshes_.end() && found->second.lastUsedFrame == frameNumber_) continue;

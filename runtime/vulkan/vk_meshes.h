@@ -55,7 +55,7 @@ class MeshCache {
   // Releases every buffer. The device must be idle. Safe to call twice.
   void destroy();
 
-  // Makes every mesh of the (already checked) frame resident, then releases the entries unused
+  // Makes every mesh of the (already checked) frame's FrameDraws resident, then releases the entries unused
   // for too long. A changed mesh gets a new buffer; the old one is retired.
   bool prepare(const FrameDesc& frame, std::string* error);
   // The location of a mesh that went through prepare() this frame.

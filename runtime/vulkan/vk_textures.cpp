@@ -303,7 +303,8 @@ bool TextureCache::bindingSampler(const TextureSampler& sampler, std::string* er
 
 bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
   ++frameNumber_;
-  for (const DrawItem& draw : frame.draws)
+  const FrameDraws draws(frame);
+  for (const DrawItem& draw : draws)
     for (const TextureBinding& binding : draw.textures)
       if (binding.sampler && !bindingSampler(*binding.sampler, error)) return false;
   for (const TextureBinding& binding : frame.frameTextures)
@@ -316,7 +317,7 @@ bool TextureCache::prepare(const FrameDesc& frame, std::string* error) {
     }
   };
   collect(frame.frameTextures);
-  for (const DrawItem& draw : frame.draws) collect(draw.textures);
+  for (const DrawItem& draw : draws) collect(draw.textures);
 
   std::vector<std::pair<const Texture*, Entry>> pending;
   // What is uploaded for a texture the device cannot sample as it is: its CPU decoding, kept

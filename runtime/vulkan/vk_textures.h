@@ -56,7 +56,7 @@ class TextureCache {
   // uninitialised or partly initialised cache, and twice.
   void destroy();
 
-  // Makes every texture of the (already checked) frame resident and uploaded, then releases the
+  // Makes every texture of the (already checked) frame and its FrameDraws resident and uploaded, then releases the
   // entries that went unused for too long.
   bool prepare(const FrameDesc& frame, std::string* error);
 

@@ -19,7 +19,7 @@ void UniformBlockCache::release(const Entry& entry) {
 
 bool UniformBlockCache::prepare(const FrameDesc& frame, std::string* error) {
   ++frameNumber_;
-  for (const DrawItem& draw : frame.draws) {
+  for (const DrawItem& draw : FrameDraws(frame)) {
     const UniformBlock* block = draw.materialBlock;
     if (!block) continue;
     Entry& entry = blocks_[block];

@@ -36,7 +36,7 @@ class UniformBlockCache {
   // Releases every buffer. The device must be idle. Safe to call twice.
   void destroy();
 
-  // Makes every materialBlock of the frame resident and current; releases stale entries.
+  // Makes every materialBlock of the (already checked) frame's FrameDraws resident and current; releases stale entries.
   bool prepare(const FrameDesc& frame, std::string* error);
   // The buffer of a block that went through prepare() this frame; its first `size` bytes (the
   // block's bytes, zero-padded to whole vec4s, at least 16) are what the shader binds.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,43 @@ TEST(ShadowFrame, CastersCascadesBiasesAndUniformsComeFromTheFit) {
   }
   EXPECT_EQ(receivers, 3u);  // plane, box, sphere
   EXPECT_EQ(plainDraws, 1u);
+}
+
+// What both backends draw (FrameDraws): the forward draws, then each view's casters in view order,
+// the very DrawItems of the frame and of ShadowPassDesc::casters, not copies.
+TEST(ShadowFrame, TheBackendsReadTheCastersInPlace) {
+  std::string error;
+  auto scene = parseScene("s.json", kScene, &error);
+  ASSERT_TRUE(scene) << error;
+  auto frame = prepared(*scene, packages());
+  ASSERT_TRUE(frame);
+  const FrameDesc& desc = frame->frame();
+  ASSERT_TRUE(desc.shadow);
+  ASSERT_EQ(shadowPassError(*desc.shadow, 8192), "");
+  const FrameDraws draws(desc);
+  EXPECT_EQ(draws.forwardCount(), desc.draws.size());
+  ASSERT_EQ(draws.size(), desc.draws.size() + shadowDrawCount(desc));
+  size_t i = 0;
+  for (; i < desc.draws.size(); ++i) {
+    EXPECT_EQ(&draws[i], &desc.draws[i]) << i;
+    EXPECT_FALSE(draws.isCaster(i)) << i;
+  }
+  size_t fromViews = 0;
+  for (const ShadowCascadeDesc& view : desc.shadow->cascades)
+    for (uint32_t caster : view.casters) {
+      EXPECT_EQ(&draws[i], &desc.shadow->casters[caster]) << i;
+      EXPECT_TRUE(draws.isCaster(i++));
+      ++fromViews;
+    }
+  EXPECT_GT(fromViews, desc.shadow->casters.size()) << "the ground is drawn into every cascade";
+  size_t iterated = 0;
+  for (const DrawItem& draw : draws) EXPECT_EQ(&draw, &draws[iterated++]);
+  EXPECT_EQ(iterated, draws.size());
+  EXPECT_THROW(draws[draws.size()], std::out_of_range);
+
+  FrameDesc unshadowed;
+  unshadowed.draws = desc.draws;
+  EXPECT_EQ(FrameDraws(unshadowed).size(), desc.draws.size());
 }
 
 // The box behind the camera (tests/data/scenes/shadows/behind_camera.json) is out of the view

@@ -109,13 +109,17 @@ std::string renderToPng(RenderBackend& backend, const std::string& json, const s
 }
 
 Measured measure(const std::string& json, const std::string& name, double footprint, Api api) {
+  auto backend = makeBackend(api);
+  if (!backend) return {};
+  return measure(*backend, api, json, name, footprint);
+}
+
+Measured measure(RenderBackend& backend, Api api, const std::string& json, const std::string& name, double footprint) {
   Measured out;
   std::string error;
-  auto backend = makeBackend(api);
-  if (!backend) return out;
   const std::string prefix = std::string(apiName(api)) + "-" + name;
-  const std::string shadowed = renderToPng(*backend, withSunCasting(json, true), prefix + "-shadowed", &out.shadow);
-  const std::string unshadowed = renderToPng(*backend, withSunCasting(json, false), prefix + "-unshadowed");
+  const std::string shadowed = renderToPng(backend, withSunCasting(json, true), prefix + "-shadowed", &out.shadow);
+  const std::string unshadowed = renderToPng(backend, withSunCasting(json, false), prefix + "-unshadowed");
   auto rendered = shadow_reference::visibilityFromFrames(shadowed, unshadowed, &error);
   EXPECT_TRUE(rendered) << error;
   auto scene = shadow_reference::parseShadowScene(name + ".json", json, &error);
@@ -134,6 +138,7 @@ Measured measure(const std::string& json, const std::string& name, double footpr
   if (score) out.score = *score;
   const shadow_reference::CameraRays camera(scene->scene);
   out.cameraPosition = glm::dvec3(scene->scene.camera.position);
+  out.viewProjection = viewProjection(scene->scene);
   out.points.assign(out.reference.pixels.size(), glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
   for (uint32_t y = 0; y < out.reference.height; ++y)
     for (uint32_t x = 0; x < out.reference.width; ++x) {

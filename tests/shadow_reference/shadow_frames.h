@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "facet/abi/shader_abi.h"
@@ -58,11 +59,14 @@ struct Measured {
   std::vector<glm::dvec3> points;  // each pixel's surface point (NaN where the camera ray meets nothing)
   abi::ShadowUniforms shadow{};    // what the shadowed frame's receivers read
   glm::dvec3 cameraPosition{0};
+  glm::dmat4 viewProjection{1.0};  // the camera's, world → GL clip
 };
 
 // The scene rendered on `api` with and without its shadow pass, and the reference over a
 // footprint of `footprint` metres.
 Measured measure(const std::string& json, const std::string& name, double footprint, Api api = Api::Vulkan);
+// The same on a backend of `api` the caller keeps over several frames.
+Measured measure(RenderBackend& backend, Api api, const std::string& json, const std::string& name, double footprint);
 
 // Mean rendered visibility over the measurable surface pixels whose footprint is all `visible`.
 double meanVisibility(const Measured& m, float visible, size_t* count);

@@ -208,19 +208,50 @@ struct FrameDesc {
   std::optional<ShadowPassDesc> shadow;
 };
 
-// Empty, or why the frame's instances are out of bounds: the first draw with none or more than
-// abi::kMaxInstancesPerDraw, or the draw that takes the frame past abi::kMaxInstancesPerFrame, as
-// "draw N: ..." (both backends refuse such a frame with it).
+// Empty, or why the frame's instances are out of bounds: the first draw (of FrameDraws: the
+// casters' too) with none or more than abi::kMaxInstancesPerDraw, or the draw that takes the frame
+// past abi::kMaxInstancesPerFrame, as "draw N: ..." (both backends refuse such a frame with it).
+// The shadow pass must have passed shadowPassError.
 std::string instanceCountError(const FrameDesc& frame);
 // Empty, or why a shadow pass cannot be drawn: an atlas size outside 1..maxAtlasSize (what the
 // API can make and render), a cascade viewport empty or outside the atlas, a caster index out of
 // range, as "shadow cascade N: ..." (both backends refuse such a frame with it).
 std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize);
-// The frame a backend draws: `frame` itself without a shadow pass; with one, its draws followed
-// by one draw per (cascade, caster) in cascade order, the caster's DrawItem as given (the shadow
+// The draws a backend issues for a frame, read in place: `frame.draws`, then with a shadow pass
+// one per (view, caster) in view order, the caster's DrawItem in `shadow->casters` (the shadow
 // pass's draws are the last shadowDrawCount()), so that one check, one upload and one program
-// cache serve both passes. The shadow pass must have passed shadowPassError.
-FrameDesc withShadowDraws(const FrameDesc& frame);
+// cache serve both passes without copying a DrawItem each frame. The frame must outlive the
+// view, and its shadow pass must have passed shadowPassError before a caster is read.
+class FrameDraws {
+ public:
+  explicit FrameDraws(const FrameDesc& frame);
+  size_t size() const { return forwardCount() + shadowCount_; }
+  size_t forwardCount() const { return frame_->draws.size(); }
+  bool isCaster(size_t i) const { return i >= forwardCount(); }
+  // Draw i: a forward draw, or caster k of a view (a search over the views: at most a handful).
+  const DrawItem& operator[](size_t i) const;
+
+  class Iterator {
+   public:
+    Iterator(const FrameDraws* draws, size_t index) : draws_(draws), index_(index) {}
+    const DrawItem& operator*() const { return (*draws_)[index_]; }
+    Iterator& operator++() {
+      ++index_;
+      return *this;
+    }
+    bool operator!=(const Iterator& other) const { return index_ != other.index_; }
+
+   private:
+    const FrameDraws* draws_;
+    size_t index_;
+  };
+  Iterator begin() const { return {this, 0}; }
+  Iterator end() const { return {this, size()}; }
+
+ private:
+  const FrameDesc* frame_;
+  size_t shadowCount_;
+};
 size_t shadowDrawCount(const FrameDesc& frame);
 // The draws with each instanced draw split into draws of one instance, in the same order: the
 // same image in as many draw calls as instances (tests, and the before of measurements).

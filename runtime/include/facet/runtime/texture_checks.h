@@ -54,7 +54,8 @@ struct TextureIdentity {
   bool operator==(const TextureIdentity&) const = default;
 };
 
-// Every frame and draw texture binding: binding in range and given once per draw, texture
+// Every frame and draw texture binding (FrameDraws: the shadow casters' too, the shadow pass
+// checked by shadowPassError first): binding in range and given once per draw, texture
 // present, size within 1..maxImageSize, mip levels and their byte sizes consistent.
 bool checkFrameTextures(const FrameDesc& frame, uint32_t maxImageSize, std::string* error);
 
