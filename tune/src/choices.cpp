@@ -140,8 +140,8 @@ std::optional<ShippedTuning> shippedTuning(const std::string& materialPath, cons
     *error = path + ": error: cannot open the tuning file: no such file";
     return std::nullopt;
   }
-  // A FIFO would block; the file the tool writes is about 2 KB (12 axes of 3 tiers), so 1 MiB is
-  // no tuning file.
+  // A FIFO would block; `matc tune --write` writes about 2 KB (every axis of three tiers), so a
+  // file of 1 MiB is no tuning file.
   if (!std::filesystem::is_regular_file(status)) {
     *error = path + ": error: cannot open the tuning file: not a regular file";
     return std::nullopt;
