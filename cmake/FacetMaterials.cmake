@@ -8,7 +8,8 @@
 #                       [OUTPUT_DIR <dir>])             # default: ${CMAKE_CURRENT_BINARY_DIR}/materials
 #
 # Adds the custom target <name> (built by `all`) producing <OUTPUT_DIR>/<material>.matpkg per
-# material. Each package is rebuilt when its material, the scene, matc, or any template/chunk its
+# material. Each package is rebuilt when its material, its tuning file (<stem>.tuning.json, when
+# it has one), the scene, matc, or any template/chunk its
 # variants used changes: matc writes a depfile (matc compile --depfile) that Ninja and Make read.
 # Works in Facet's own tree and through find_package(Facet) (docs/build-integration.md).
 function(facet_add_materials)

@@ -25,6 +25,8 @@ struct CompileArgs {
   bool noCache = false;             // --no-cache
   uint32_t cacheMaxMiB = uint32_t(compiler::kDefaultCacheMaxBytes >> 20);  // --cache-max-size
   bool fp16Emulation = false;  // testing build: mediump SPIR-V rounded to binary16 (docs/fp16-emulation.md)
+  std::string tuning;          // --tuning: the tiers' tuning file; "": <input stem>.tuning.json if it exists
+  bool noTuning = false;       // --no-tuning: the presets with the material's `tier` blocks
 };
 int compileCommand(const CompileArgs& args);
 
@@ -52,6 +54,7 @@ struct LintArgs {
   bool werror = false;          // warnings fail the run
   std::string gpu;              // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
   std::string mesaPrefix;       // the Mesa build, default: mesa_compile.py's (the cache folder)
+  bool noTuning = false;        // --no-tuning: the presets, not each material's <stem>.tuning.json
 };
 int lintCommand(const LintArgs& args);
 struct PostArgs {

@@ -17,6 +17,7 @@
 #include "facet/package/package.h"
 #include "facet/permutations/variant_key.h"
 #include "facet/scene/scene.h"
+#include "facet/tune/choices.h"
 #include "scene_keys.h"
 
 namespace facet::matc {
@@ -36,12 +37,14 @@ std::string makeWord(const std::string& path) {
   return out;
 }
 
-// `output: inputs...` for Ninja/Make: the material, the scene, the matc executable (it embeds the
+// `output: inputs...` for Ninja/Make: the material, the scene, the tuning file, the matc executable (it embeds the
 // templates and chunks) and, while the source tree it was built from exists, every template and
 // chunk a built variant used, so editing one rebuilds the package.
-std::string depfileText(const std::string& output, const CompileArgs& args, const std::set<std::string>& libraryFiles) {
+std::string depfileText(const std::string& output, const CompileArgs& args, const std::string& tuningFile,
+                        const std::set<std::string>& libraryFiles) {
   std::vector<std::string> inputs{args.input};
   if (!args.scene.empty()) inputs.push_back(args.scene);
+  if (!tuningFile.empty()) inputs.push_back(tuningFile);
   std::error_code ec;
   fs::path self = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) inputs.push_back(self.string());
@@ -100,8 +103,18 @@ int compileCommand(const CompileArgs& args) {
   ir::SourceFile source;
   std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
   if (!material) return 1;
+  std::string message;
+  std::optional<tune::ShippedTuning> tuning =
+      tune::shippedTuning(args.input, args.tuning, args.noTuning, *material, &message);
+  if (!tuning) {
+    std::fprintf(stderr, "%s\n", message.c_str());
+    return 1;
+  }
+  for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+  if (!tuning->path.empty()) inputs.push_back({"the tuning file", tuning->path});
 
   compiler::BuildOptions options;
+  if (tuning->choices) options.tunedTiers = tune::tunedTiers(*tuning->choices);
   options.fp16Emulation = args.fp16Emulation;
   options.emitSources = !args.emitSource.empty();
   options.jobs = args.jobs;
@@ -146,7 +159,8 @@ int compileCommand(const CompileArgs& args) {
   // package and the depfile, then all land together.
   std::vector<package::OutputFile> files{{output, package::write(built->package)}};
   const size_t packageBytes = files[0].bytes.size();
-  if (!args.depfile.empty()) files.push_back({args.depfile, bytesOf(depfileText(output, args, built->libraryFiles))});
+  if (!args.depfile.empty())
+    files.push_back({args.depfile, bytesOf(depfileText(output, args, tuning->path, built->libraryFiles))});
   for (const compiler::GeneratedFile& f : built->sources) {
     outputs.push_back({"--emit-source", (fs::path(args.emitSource) / f.name).string()});
     files.push_back({outputs.back().path, bytesOf(f.text)});
@@ -163,8 +177,10 @@ int compileCommand(const CompileArgs& args) {
   }
   std::string cached;
   if (built->cacheHits > 0) cached = " (" + std::to_string(built->cacheHits) + " from the cache)";
-  std::printf("%s: %zu variant%s%s, %zu bytes -> %s%s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
-              forScene.c_str(), packageBytes, output.c_str(), cached.c_str());
+  std::string tuned;
+  if (!tuning->path.empty()) tuned = ", tiers tuned by " + tuning->path;
+  std::printf("%s: %zu variant%s%s, %zu bytes -> %s%s%s\n", material->name.c_str(), variants, variants == 1 ? "" : "s",
+              forScene.c_str(), packageBytes, output.c_str(), cached.c_str(), tuned.c_str());
   return 0;
 }
 

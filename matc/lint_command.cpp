@@ -9,8 +9,10 @@
 #include "facet/cli/outputs.h"
 #include "facet/compiler/build.h"
 #include "facet/gpu_stats/mesa_compile.h"
+#include "facet/ir/check.h"
 #include "facet/lint/report.h"
 #include "facet/package/package.h"
+#include "facet/tune/choices.h"
 
 namespace facet::matc {
 namespace {
@@ -116,7 +118,21 @@ int lintCommand(const LintArgs& args) {
   for (const std::string& path : files) {
     lint::LintedFile f;
     if (!cli::readSource(path, &f.file)) return 1;
-    f.result = lint::lintMaterial(f.file, options);
+    // The tiers `matc compile` ships: the material's tuning file's when it has one (lintMaterial
+    // reports a material that does not compile).
+    lint::LintOptions shipped = options;
+    ir::Diagnostics quiet(f.file);
+    if (std::optional<ir::Material> material = ir::compileSource(f.file, quiet)) {
+      std::string error;
+      std::optional<tune::ShippedTuning> tuning = tune::shippedTuning(path, "", args.noTuning, *material, &error);
+      if (!tuning) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        return 1;
+      }
+      for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+      if (tuning->choices) shipped.tunedTiers = tune::tunedTiers(*tuning->choices);
+    }
+    f.result = lint::lintMaterial(f.file, shipped);
     linted.push_back(std::move(f));
   }
 

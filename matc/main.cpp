@@ -73,6 +73,11 @@ int main(int argc, char** argv) {
                    "a --scene decides its own)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
+  CLI::Option* tuningOption = compileCmd->add_option(
+      "--tuning", compile.tuning,
+      "the tiers' tuning file (matc tune --write; default: <input stem>.tuning.json beside the input, if any)");
+  compileCmd->add_flag("--no-tuning", compile.noTuning, "build the tier presets with the material's tier blocks")
+      ->excludes(tuningOption);
   compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
                        "testing only: round every mediump result to binary16 in the SPIR-V of mediump tiers "
                        "(docs/fp16-emulation.md); never ship such a package");
@@ -112,6 +117,8 @@ int main(int argc, char** argv) {
   lintCmd->add_option("--format", lint.format, "text | json | sarif")->check(CLI::IsMember({"text", "json", "sarif"}));
   lintCmd->add_option("-o,--output", lint.output, "write the report to this file instead of standard output");
   lintCmd->add_flag("--werror", lint.werror, "warnings fail the run too");
+  lintCmd->add_flag("--no-tuning", lint.noTuning,
+                    "check the tier presets, not the tiers of each material's <stem>.tuning.json (matc compile's)");
   lintCmd->add_option(
       "--gpu", lint.gpu,
       "also report Mesa's figures for these GPUs: mali-g52, mali-g57, adreno-630 (docs/mesa-statistics.md)");

@@ -465,10 +465,15 @@ const std::string& compilerVersion() {
 
 permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tierName,
                                     const BuildOptions& options) {
-  // The tier's preset, with the material's overrides for that tier (checked by ir::check).
+  // The tuned tier was searched from the preset with the overrides: it already holds them.
   permutations::TierConfig tier = permutations::preset(tierName);
-  for (const ir::TierOverride& o : material.tierOverrides)
-    if (o.tier == permutations::toString(tierName)) permutations::applyOverride(&tier, o.axis, o.option);
+  if (auto tuned = options.tunedTiers.find(tierName); tuned != options.tunedTiers.end()) {
+    tier = tuned->second;
+  } else {
+    // The material's overrides for that tier (checked by ir::check).
+    for (const ir::TierOverride& o : material.tierOverrides)
+      if (o.tier == permutations::toString(tierName)) permutations::applyOverride(&tier, o.axis, o.option);
+  }
   if (options.adjustTier) options.adjustTier(tierName, &tier);
   return tier;
 }

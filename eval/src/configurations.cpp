@@ -110,7 +110,9 @@ const std::vector<Axis>& axes() {
 }
 
 std::vector<Configuration> configurations(const ir::Material& material, const std::vector<permutations::Tier>& tiers,
-                                          bool swaps) {
+                                          bool swaps, const std::map<permutations::Tier, TierConfig>& tuned) {
+  compiler::BuildOptions asShipped;
+  asShipped.tunedTiers = tuned;
   std::vector<permutations::Tier> order = {permutations::Tier::Reference};
   for (permutations::Tier t : tiers)
     if (std::find(order.begin(), order.end(), t) == order.end()) order.push_back(t);
@@ -119,7 +121,7 @@ std::vector<Configuration> configurations(const ir::Material& material, const st
     Configuration shipped;
     shipped.tier = tier;
     shipped.name = permutations::toString(tier);
-    shipped.config = compiler::tierConfig(material, tier, {});
+    shipped.config = compiler::tierConfig(material, tier, asShipped);
     shipped.change = "as shipped";
     out.push_back(shipped);
     // The reference is the ground truth, measured only as shipped unless it was asked for.

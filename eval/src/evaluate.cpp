@@ -429,6 +429,7 @@ std::unique_ptr<Session> Session::start(const ir::Material& material, const Eval
   report.timingFrames = std::max(options.timingFrames, 0);
   report.warmupFrames = std::max(options.warmupFrames, 1);
   report.fp16Emulation = options.fp16Emulation;
+  report.tuningFile = options.tuningFile;
   report.weights = options.weights;
 
   // The views: the built-in grid, or the scene file's objects of this material.
@@ -507,7 +508,7 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
   std::unique_ptr<Session> session = Session::start(material, options, error);
   if (!session) return std::nullopt;
   EvalReport report = session->report();
-  const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps);
+  const std::vector<Configuration> configs = configurations(material, options.tiers, options.swaps, options.tunedTiers);
   if (options.progress) options.progress(formatProgress(0, configs.size(), report.results.back()));
   for (size_t i = 1; i < configs.size(); ++i) {
     const Configuration& c = configs[i];

@@ -111,6 +111,7 @@ Json reportJson(const EvalReport& r) {
   j["width"] = r.width;
   j["height"] = r.height;
   j["fp16_emulation"] = r.fp16Emulation;
+  j["tuning_file"] = r.tuningFile;
   j["error_measure"] =
       "against reference as shipped, over the pixels the material covers in either image, all views together";
   j["timing"] = Json{{"what", timingDescription(r)},
@@ -359,6 +360,7 @@ std::string reportMarkdown(const EvalReport& r) {
   for (size_t i = 0; i < r.viewNames.size(); ++i) s += (i ? ", " : "") + r.viewNames[i];
   s += ".";
   if (r.fp16Emulation) s += " Built with `--fp16-emulation` (mediump SPIR-V rounded to binary16).";
+  if (!r.tuningFile.empty()) s += " The tiers as shipped are the tuned ones of `" + r.tuningFile + "`.";
   s += "\n\n";
   for (const std::string& note : r.sceneNotes) s += "- " + note + "\n";
   if (!r.sceneNotes.empty()) s += "\n";

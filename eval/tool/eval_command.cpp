@@ -10,6 +10,7 @@
 #include "facet/eval/report.h"
 #include "facet/gpu_stats/report.h"
 #include "facet/scene/scene.h"
+#include "facet/tune/choices.h"
 
 namespace facet::eval {
 
@@ -60,6 +61,17 @@ int evalCommand(const EvalArgs& args) {
   ir::SourceFile source;
   std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
   if (!material) return 1;
+  // The tiers as shipped are those `matc compile` builds: its tuning file's when it has one.
+  std::string message;
+  std::optional<tune::ShippedTuning> tuning =
+      tune::shippedTuning(args.input, args.tuning, args.noTuning, *material, &message);
+  if (!tuning) {
+    std::fprintf(stderr, "%s\n", message.c_str());
+    return 1;
+  }
+  for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+  if (tuning->choices) options.tunedTiers = tune::tunedTiers(*tuning->choices);
+  options.tuningFile = tuning->path;
   // The folders first, so an --out that cannot be written fails before the run, not after it.
   const std::string imageDir = (fs::path(outDir) / "images").string();
   if (!cli::writeOutputs({imageDir}, {})) return 1;

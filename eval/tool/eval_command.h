@@ -21,6 +21,8 @@ struct EvalArgs {
   int groundTruth = 0;   // samples of the ground truth (0: not measured)
   std::string gpu;       // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
   std::string mesaPrefix;
+  std::string tuning;     // --tuning: the tuning file the tiers as shipped come from
+  bool noTuning = false;  // --no-tuning: the presets with the material's `tier` blocks
 };
 // 0 with the report written, 1 for input errors, 2 for usage errors.
 int evalCommand(const EvalArgs& args);

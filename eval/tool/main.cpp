@@ -43,6 +43,11 @@ int main(int argc, char** argv) {
                  "also measure every configuration against reference with its environment integrated by "
                  "importance sampling, N points per integral and pixel (docs/eval.md)")
       ->check(CLI::Range(4, 65536));
+  CLI::Option* tuning =
+      app.add_option("--tuning", eval.tuning,
+                     "the tuning file the tiers as shipped come from (default: <input stem>.tuning.json if any)");
+  app.add_flag("--no-tuning", eval.noTuning, "the tiers as shipped are the presets with the material's tier blocks")
+      ->excludes(tuning);
   if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   return facet::eval::evalCommand(eval);
 }

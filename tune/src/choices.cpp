@@ -1,7 +1,10 @@
 #include "facet/tune/choices.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -27,19 +30,6 @@ double rounded(double v) { return std::round(v * 1000) / 1000; }
 std::string choicesPath(const std::string& materialPath) {
   std::filesystem::path p(materialPath);
   return (p.parent_path() / (p.stem().string() + ".tuning.json")).string();
-}
-
-std::optional<Choices> choicesOf(const TuneReport& report) {
-  Choices c;
-  c.material = report.material;
-  c.gpu = report.gpu;
-  c.verticesPerPixel = report.verticesPerPixel;
-  for (const TierOutcome& o : report.tiers) {
-    if (!o.chosen) return std::nullopt;
-    c.tiers.push_back(
-        {o.tier, o.chosen->result.configuration.config, o.chosen->cost.total, o.chosen->result.error.psnr});
-  }
-  return c;
 }
 
 std::string writeChoices(const Choices& choices) {
@@ -84,6 +74,7 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
           TierChoice choice;
           choice.tier = *t;
           choice.config = eval::configurations(material, {*t}, false).at(1).config;  // what no axis names
+          const permutations::TierConfig shipped = choice.config;
           for (const auto& [field, v] : object(tier, tp).items()) {
             const std::string fp = child(tp, field);
             if (field == "cost") {
@@ -102,6 +93,9 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
                   for (const std::string& k : axis->options) known += (known.empty() ? "" : ", ") + k;
                   fail(ap, "unknown option '" + scene::shownValue(o) + "' (known: " + known + ")");
                 }
+                if (axis->appliesToMaterial && !axis->appliesToMaterial(material) && o != axis->get(shipped))
+                  fail(ap, "'" + material.name + "' has nothing the axis '" + axisName + "' changes: the file can " +
+                               "only record the tier's own '" + axis->get(shipped) + "', not '" + o + "'");
                 axis->set(&choice.config, o);
               }
             } else {
@@ -121,6 +115,57 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
     *error = invalidMessage(path, e);
     return std::nullopt;
   }
+}
+
+std::map<permutations::Tier, permutations::TierConfig> tunedTiers(const Choices& choices) {
+  std::map<permutations::Tier, permutations::TierConfig> tiers;
+  for (const TierChoice& t : choices.tiers) tiers[t.tier] = t.config;
+  return tiers;
+}
+
+std::optional<ShippedTuning> shippedTuning(const std::string& materialPath, const std::string& tuningPath,
+                                           bool noTuning, const ir::Material& material, std::string* error) {
+  ShippedTuning out;
+  if (noTuning) return out;
+  const std::string path = tuningPath.empty() ? choicesPath(materialPath) : tuningPath;
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) {
+    if (tuningPath.empty()) return out;  // an untuned material
+    *error = path + ": error: cannot open the tuning file: no such file";
+    return std::nullopt;
+  }
+  // A FIFO would block; `matc tune --write` writes about 2 KB (every axis of three tiers), so a
+  // file of 1 MiB is no tuning file.
+  if (!std::filesystem::is_regular_file(status)) {
+    *error = path + ": error: cannot open the tuning file: not a regular file";
+    return std::nullopt;
+  }
+  if (std::filesystem::file_size(path, ec) > (1u << 20)) {
+    *error = path + ": error: tuning files are limited to 1 MiB";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || in.bad()) {
+    *error = path + ": error: cannot read the tuning file";
+    return std::nullopt;
+  }
+  out.choices = parseChoices(path, text.str(), material, error);
+  if (!out.choices) return std::nullopt;
+  out.path = path;
+  for (const TierChoice& t : out.choices->tiers)
+    for (const ir::TierOverride& o : material.tierOverrides) {
+      if (o.tier != permutations::toString(t.tier)) continue;
+      auto axis =
+          std::find_if(eval::axes().begin(), eval::axes().end(), [&](const eval::Axis& a) { return o.axis == a.name; });
+      if (axis == eval::axes().end() || axis->get(t.config) == o.option) continue;
+      out.warnings.push_back(path + ": warning: /tiers/" + o.tier + "/config/" + o.axis + ": '" + axis->get(t.config) +
+                             "' replaces the material's `tier " + o.tier + " { " + o.axis + " = " + o.option +
+                             " }`: the tuning file wins (tune it again, or remove the block)");
+    }
+  return out;
 }
 
 }  // namespace facet::tune

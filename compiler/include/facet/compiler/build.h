@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -98,14 +99,18 @@ struct BuildOptions {
   bool preshader = true;
   // Benchmarks: when set, the span of every job of the pool is appended here.
   std::vector<JobSpan>* jobSpans = nullptr;
+  // The tiers a tuning file chose (`<stem>.tuning.json`, docs/tune.md, "The tuning file"): each
+  // replaces its tier's preset and the material's overrides for that tier, which the tuning was
+  // searched from. A tier it leaves out ships its preset with the overrides.
+  std::map<permutations::Tier, permutations::TierConfig> tunedTiers;
   // Evaluation only (`matc eval`, docs/eval.md): called with each tier's configuration after the
-  // preset and the material's overrides are applied, to change any choice of it (a single-option
-  // swap). Unset: the preset with the material's overrides, as shipped.
+  // preset and the material's overrides (or the tuned tier) are applied, to change any choice of
+  // it (a single-option swap). Unset: the tier as shipped.
   std::function<void(permutations::Tier, permutations::TierConfig*)> adjustTier;
 };
 
-// The maths a tier's variants use: the tier's preset, the material's overrides for that tier,
-// then options.adjustTier.
+// The maths a tier's variants use: options.tunedTiers' configuration of the tier, else the tier's
+// preset with the material's overrides for that tier; then options.adjustTier.
 permutations::TierConfig tierConfig(const ir::Material& material, permutations::Tier tier, const BuildOptions& options);
 
 struct BuildError {

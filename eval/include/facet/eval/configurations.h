@@ -2,6 +2,7 @@
 // overrides) and every single-option swap of it, one choice of one axis replaced.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,9 +39,11 @@ const std::vector<Axis>& axes();
 
 // For each tier (in the order given): the tier as shipped, then each single-option swap in axes()
 // order. `reference` as shipped is always included first, whatever `tiers` says: every error is
-// measured against it. swaps = false gives the tiers as shipped only.
+// measured against it. swaps = false gives the tiers as shipped only. `tuned`: the tiers of the
+// material's tuning file (compiler::BuildOptions::tunedTiers), which ship in place of the presets.
 std::vector<Configuration> configurations(const ir::Material& material, const std::vector<permutations::Tier>& tiers,
-                                          bool swaps = true);
+                                          bool swaps = true,
+                                          const std::map<permutations::Tier, permutations::TierConfig>& tuned = {});
 
 // A name safe for file names: "high:specular=zioma" -> "high.specular-zioma".
 std::string fileStem(const std::string& configurationName);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,10 @@ struct EvalOptions {
   // and the rendered ones: `matc tune` builds every candidate, and a second run finds them there.
   // "": none.
   std::string cacheDir;
+  // The tiers as shipped when a tuning file chose them (compiler::BuildOptions::tunedTiers, as
+  // `matc compile` builds them), and that file's path for the report ("": the presets).
+  std::map<permutations::Tier, permutations::TierConfig> tunedTiers;
+  std::string tuningFile;
 };
 
 // `reference` renders views whose sun casts with this atlas size, whatever the scene's: the other
@@ -117,6 +122,7 @@ struct EvalReport {
   // empty when nothing was timed (timingFrames 0).
   std::string timingClock;
   bool fp16Emulation = false;
+  std::string tuningFile;  // the tuning file the tiers as shipped come from ("": the presets)
   compiler::MobileCostWeights weights;
   // The ground truth's samples (EvalOptions::groundTruthSamples; 0: not measured) and a bound on
   // its own error: the image at a quarter of the samples against it, all views together.

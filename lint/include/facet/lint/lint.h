@@ -16,6 +16,7 @@
 #include "facet/ir/diagnostics.h"
 #include "facet/lint/budgets.h"
 #include "facet/lint/shadow_precision.h"
+#include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
 
 namespace facet::lint {
@@ -42,6 +43,9 @@ struct LintOptions {
   // the cost model's figures only. Informational: no rule reads them.
   std::vector<std::string> gpus;
   gpu_stats::MesaTool mesaTool;
+  // The tiers the material ships from its tuning file (compiler::BuildOptions::tunedTiers), so that
+  // the figures are those of the package `matc compile` builds. Empty: the presets.
+  std::map<permutations::Tier, permutations::TierConfig> tunedTiers;
 };
 
 struct MaterialLint {

@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -29,7 +28,6 @@ mediump vec3 facet_f0;
 mediump float facet_alpha;
 }
 params;
-uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
 const float MIN_N_DOT_V=1e-4;
@@ -62,19 +60,29 @@ material.baseColor=params.tint;
 material.metallic=1.0;
 material.roughness=params.roughness;
 }
-const vec2 SPECULAR_LUT_SIZE=vec2(128.0,64.0);
-const float SPECULAR_LUT_SCALE=5.0929582;
-float specular_lut(mediump sampler2D lut,float RoL,float perceptualRoughness){
-float c=clamp(RoL,0.0,1.0);
-float c2=c*c;
-vec2 t=vec2(c2*c2,perceptualRoughness);
-vec2 uv=t*((SPECULAR_LUT_SIZE-1.0)/SPECULAR_LUT_SIZE)+0.5/SPECULAR_LUT_SIZE;
-float encoded=textureLod(lut,uv,0.0).r;
-return encoded*encoded*SPECULAR_LUT_SCALE;
+float diffuse_lambert(){
+return 0.31830988618;
 }
-vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 albedo){
-vec3 r=reflect(-v,n);
-return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
+const float FUSED_HAMMON_M_MIN=2.44140625e-4;
+const float FUSED_HAMMON_SCALE=1024.0;
+float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
+vec3 NxH=cross(n,h);
+float a=NoH*alpha;
+float d=dot(NxH,NxH)+a*a;
+float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
+float k=(FUSED_HAMMON_SCALE*alpha)/(d*((FUSED_HAMMON_SCALE*2.0*3.14159265359)*m));
+return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
+}
+vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
+return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+}
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
 }
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
 return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
@@ -100,7 +108,6 @@ return params.facet_perceptualRoughness;
 float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
-vec3 shading_specular_albedo=vec3(0.0);
 vec3 shading_energy_compensation=vec3(1.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
@@ -116,12 +123,17 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
-vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
+vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
+specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -133,7 +145,6 @@ vec3 albedo=split_sum_albedo(dfg,f0);
 shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
 albedo*=shading_energy_compensation;
-shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){
@@ -167,7 +178,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));

@@ -46,20 +46,21 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _454 = normalize(half3(in.v_normal));
-    float3 _458 = fast::normalize(in.v_toEye);
-    half _605 = max(dot(_454, half3(_458)), half(9.9999997473787516355514526367188e-05));
-    float4 _644 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_605, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _663 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_644).y) - half(1.0)));
-    float4 _670 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_458), _454)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _505 = half4(frame.lightDirection).xyz;
-    half3 _777 = normalize(half3(_458) + _505);
-    half _728 = clamp(dot(_454, _505), half(0.0), half(1.0));
-    half3 _804 = cross(_454, _777);
-    half _807 = clamp(dot(_454, _777), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _824 = max(mix((half(2.0) * _728) * _605, _728 + _605, half(params.facet_alpha)), half(0.000244140625));
-    half _831 = (half(1024.0) * half(params.facet_alpha)) / (fma(_807, _807, dot(_804, _804)) * (half(6433.98193359375) * _824));
-    out.fragColor = float4(half4(fma(half4(_670).xyz, mix(half4(_644).xxx, half4(_644).yyy, half3(float3(params.facet_f0))) * _663, min(((half3(float3(params.facet_f0)) * min(_831 * (_831 * (half(6.283185482025146484375) * _824)), half(65504.0))) * _663) * (half4(frame.lightColor).xyz * _728), half3(float3(65504.0)))), half(1.0)));
+    half3 _573 = normalize(half3(in.v_normal));
+    float3 _577 = fast::normalize(in.v_toEye);
+    half _759 = max(dot(_573, half3(_577)), half(9.9999997473787516355514526367188e-05));
+    float4 _798 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_759, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _817 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_798).y) - half(1.0)));
+    float4 _824 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_577), _573)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    float3 _940 = fast::normalize(_577 + frame.lightDirection.xyz);
+    half _884 = clamp(dot(_573, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    half3 _980 = cross(_573, half3(_940));
+    half _983 = clamp(dot(_573, half3(_940)), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _992 = half(params.facet_alpha) / fma(_983, _983, dot(_980, _980));
+    half _1020 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_940)), half(0.0), half(1.0));
+    half _1023 = _1020 * _1020;
+    float4 _1171 = float4(half4(fma(half4(_824).xyz, mix(half4(_798).xxx, half4(_798).yyy, half3(float3(params.facet_f0))) * _817, min((((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1023 * _1023) * _1020))) * min(min((_992 * _992) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / mix((half(2.0) * _884) * _759, _884 + _759, half(params.facet_alpha)), half(65504.0)), half(65504.0))) * _817) * (half4(frame.lightColor).xyz * _884), half3(float3(65504.0)))), half(1.0)));
+    out.fragColor = _1171;
     return out;
 }
 

@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -61,18 +60,38 @@ material.baseColor=params.tint;
 material.metallic=1.0;
 material.roughness=params.roughness;
 }
-const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-const float FUSED_HAMMON_SCALE=1024.0;
-float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
+float diffuse_lambert(){
+return 0.31830988618;
+}
+float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
 vec3 NxH=cross(n,h);
 float a=NoH*alpha;
-float d=dot(NxH,NxH)+a*a;
-float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(FUSED_HAMMON_SCALE*alpha)/(d*((FUSED_HAMMON_SCALE*2.0*3.14159265359)*m));
-return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
+float k=alpha/(dot(NxH,NxH)+a*a);
+float d=k*k*0.31830988618;
+return min(d,65504.0);
+}
+vec3 fresnel_schlick(vec3 f0,float LoH){
+float f=1.0-LoH;
+float f2=f*f;
+float f5=f2*f2*f;
+return f0+(vec3(1.0)-f0)*f5;
+}
+float visibility_hammon(float alpha,float NoV,float NoL){
+float v=0.5/mix(2.0*NoL*NoV,NoL+NoV,alpha);
+return min(v,65504.0);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+float D=distribution_ggx(alpha,NoH,n,h);
+float V=visibility_hammon(alpha,NoV,NoL);
+return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
+}
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
 }
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
 return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
@@ -99,7 +118,7 @@ float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
 vec3 shading_energy_compensation=vec3(1.0);
-vec3 half_vector(vec3 v,vec3 l){
+vec3 half_vector(highp vec3 v,highp vec3 l){
 return normalize(v+l);
 }
 vec3 shade_standard_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
@@ -108,7 +127,7 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(v,l);
+vec3 h=half_vector(viewHighp,lightHighp);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
@@ -116,10 +135,14 @@ float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -164,7 +187,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;

@@ -67,18 +67,21 @@ material.metallic=0.0;
 material.roughness=params.roughness;
 material.reflectance=params.reflectance;
 }
-const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-const float FUSED_HAMMON_SCALE=1024.0;
-float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
+const float ZIOMA_LOH2_MIN=0.15;
+const float ZIOMA_ROUGH_SCALE= -0.3125;
+const float ZIOMA_ROUGH_BIAS=1.0082;
+float specular_zioma_form_d(float alpha,float d,float LoH,float loH2Min,float roughScale,float roughBias){
+float x=(4.0*3.14159265359)*max(LoH*LoH,loH2Min)*(roughScale*alpha+roughBias);
+float k=alpha/(d*x);
+return min(k*k*x,65504.0);
+}
+float specular_zioma_nxh(float alpha,float NoH,vec3 n,vec3 h,float LoH){
 vec3 NxH=cross(n,h);
 float a=NoH*alpha;
-float d=dot(NxH,NxH)+a*a;
-float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(FUSED_HAMMON_SCALE*alpha)/(d*((FUSED_HAMMON_SCALE*2.0*3.14159265359)*m));
-return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
+return specular_zioma_form_d(alpha,dot(NxH,NxH)+a*a,LoH,ZIOMA_LOH2_MIN,ZIOMA_ROUGH_SCALE,ZIOMA_ROUGH_BIAS);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+return specular_zioma_nxh(alpha,NoH,n,h,LoH)*f0;
 }
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
 return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
@@ -88,9 +91,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
@@ -104,7 +104,6 @@ return params.facet_perceptualRoughness;
 float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
@@ -120,7 +119,6 @@ float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
-specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
 return min(specular*irradiance,65504.0);
 }
@@ -134,9 +132,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){
