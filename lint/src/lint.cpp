@@ -240,6 +240,7 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
   build.tiers = options.tiers;
   build.pointLightCounts = options.pointLightCounts;
   build.shadowCascadeCounts = options.shadowCascadeCounts;
+  build.spotShadows = options.spotShadows;
   compiler::BuildError error;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*checked, build, &error);
   if (!built) {
