@@ -14,6 +14,7 @@
 #include "facet/runtime/material.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/runtime/spot_shadow.h"
 #include "facet/runtime/sun_shadow.h"
 #include "test_compile.h"
 #include "test_support.h"
@@ -158,25 +159,98 @@ TEST(ShadowFrame, PackagesWithoutReceiversAreRefused) {
   EXPECT_NE(error.find("high.dir1.sh4"), std::string::npos) << error;
 }
 
-// A casting spot light is fitted and drawn (shadowPassDesc) but no variant receives it yet: the
-// scene is refused at the light's pointer rather than rendered with its objects lit through their
-// casters.
-TEST(ShadowFrame, ACastingSpotLightIsRefusedUntilReceiversExist) {
+// A casting spot light (docs/shadows.md, "Spot shadows"): it takes light slot 0, whatever its place
+// in the scene, since `.sp1` receivers shadow slot 0; receiving objects draw the `.sp1` variant, the
+// others the plain one; its view follows the cascades and the uniforms carry its matrix and normal
+// offset. Packages without the spot's receivers are refused with the key.
+TEST(ShadowFrame, ACastingSpotLightTakesSlotZeroAndItsReceiversDrawSp1) {
   std::string error;
   auto scene = parseScene("s.json", kScene, &error);
   ASSERT_TRUE(scene) << error;
+  PunctualLight point, spot;
+  point.position = {3, 2, 1};
+  spot.spot = true;
+  spot.castShadows = true;
+  spot.position = {-1, 4, 0.5};
+  spot.direction = glm::normalize(glm::dvec3(0.2, -1, 0));
+  spot.outerAngleDegrees = 40;
+  scene->lights = {point, spot};
+  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
+  EXPECT_NE(error.find("high.dir1.sh4.pt2.sp1"), std::string::npos) << error;
+
+  compiler::BuildOptions options;
+  options.shadowCascadeCounts = {0, 4};
+  options.pointLightCounts = {2};
+  options.spotShadows = true;
+  const std::string dir =
+      test::writePackagesFromTexts("shadow-frame-spot",
+                                   {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
+                                    "material glass { shading lit\n blending transparent\n surface { baseColor = "
+                                    "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
+                                   options);
+  auto frame = prepared(*scene, dir);
+  ASSERT_TRUE(frame);
+  const abi::FrameUniforms& f = frame->frame().frame;
+  EXPECT_FLOAT_EQ(f.punctualLights[0].positionFalloff[1], 4.0f);  // the spot
+  EXPECT_NE(f.punctualLights[0].spotScaleOffset[0], 0.0f);
+  EXPECT_FLOAT_EQ(f.punctualLights[1].positionFalloff[0], 3.0f);  // the point light
+  EXPECT_EQ(f.punctualLights[1].spotScaleOffset[0], 0.0f);
+
+  ASSERT_TRUE(frame->frame().shadow);
+  const ShadowPassDesc& shadow = *frame->frame().shadow;
+  ASSERT_EQ(shadow.cascades.size(), 4u);  // 3 cascades, then the spot
+  EXPECT_EQ(shadow.spotViews, 1u);
+  const ShadowCascadeDesc& view = shadow.cascades[3];
+  const SpotShadow fitted =
+      fitSpotShadow(*scene, 1, {view.viewport[0], view.viewport[1], view.viewport[2], view.viewport[3]});
+  for (int i = 0; i < 16; ++i)
+    EXPECT_EQ(shadow.uniforms.spotAtlasFromWorld[i], float(glm::value_ptr(fitted.atlasFromWorld)[i])) << i;
+  EXPECT_FLOAT_EQ(shadow.uniforms.spotNormalOffset[0], float(scene->shadows.normalBias * fitted.texelPerMetre));
+  EXPECT_EQ(shadow.uniforms.fadeAtlas[2], 1024.0f);
+
+  const ShaderProgram receiver = programOf(dir, "plastic", "high.dir1.sh4.pt2.sp1");
+  const ShaderProgram plain = programOf(dir, "plastic", "high.dir1.pt2");
+  size_t receivers = 0, plainDraws = 0;
+  for (const DrawItem& d : frame->frame().draws) {
+    receivers += d.program->fragmentSpirv == receiver.fragmentSpirv ? d.instances.size() : 0;
+    plainDraws += d.program->fragmentSpirv == plain.fragmentSpirv ? d.instances.size() : 0;
+  }
+  EXPECT_EQ(receivers, 3u);  // plane, box, sphere
+  EXPECT_EQ(plainDraws, 1u);
+}
+
+// A spot light alone casts: the pass is its view over the whole atlas, and the sun's fields stay 0.
+TEST(ShadowFrame, ASpotLightCastsWithoutTheSun) {
+  std::string error;
+  auto scene = parseScene("s.json", kScene, &error);
+  ASSERT_TRUE(scene) << error;
+  scene->sun.reset();
   PunctualLight spot;
   spot.spot = true;
   spot.castShadows = true;
-  scene->lights = {PunctualLight{}, spot};
-  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
-  EXPECT_EQ(error,
-            "/lights/1/castShadows: spot-light shadows are not rendered yet: no material variant receives them "
-            "(docs/shadows.md, \"Spot shadows\")");
-  // Without it the scene goes on to ask for its variant (these packages have no point lights).
-  scene->lights[1].castShadows = false;
-  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
-  EXPECT_NE(error.find("high.dir1.sh4.pt2"), std::string::npos) << error;
+  spot.position = {-1, 4, 0.5};
+  spot.direction = {0, -1, 0};
+  scene->lights = {spot};
+  compiler::BuildOptions options;
+  options.pointLightCounts = {1};
+  options.spotShadows = true;
+  const std::string dir =
+      test::writePackagesFromTexts("shadow-frame-spot-alone",
+                                   {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
+                                    "material glass { shading lit\n blending transparent\n surface { baseColor = "
+                                    "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
+                                   options);
+  auto frame = prepared(*scene, dir);
+  ASSERT_TRUE(frame);
+  ASSERT_TRUE(frame->frame().shadow);
+  const ShadowPassDesc& shadow = *frame->frame().shadow;
+  ASSERT_EQ(shadow.cascades.size(), 1u);
+  EXPECT_EQ(std::vector<uint32_t>(shadow.cascades[0].viewport, shadow.cascades[0].viewport + 4),
+            (std::vector<uint32_t>{0, 0, 1024, 1024}));
+  EXPECT_EQ(shadow.uniforms.fadeAtlas[2], 1024.0f);
+  EXPECT_EQ(shadow.uniforms.fadeAtlas[3], 1.0f / 1024);
+  EXPECT_EQ(shadow.uniforms.cascadeScale[0][0], 0.0f);
+  EXPECT_EQ(shadow.casters.size(), 3u);  // the plane and both boxes; neither sphere casts
 }
 
 }  // namespace
