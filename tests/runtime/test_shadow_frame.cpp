@@ -62,6 +62,14 @@ ShaderProgram programOf(const std::string& dir, const std::string& material, con
   return *program;
 }
 
+// The instances the frame draws with `program`'s fragment stage.
+size_t instancesDrawnWith(const SceneFrame& frame, const ShaderProgram& program) {
+  size_t count = 0;
+  for (const DrawItem& d : frame.frame().draws)
+    count += d.program->fragmentSpirv == program.fragmentSpirv ? d.instances.size() : 0;
+  return count;
+}
+
 TEST(ShadowFrame, CastersCascadesBiasesAndUniformsComeFromTheFit) {
   std::string error;
   auto scene = parseScene("s.json", kScene, &error);
@@ -106,15 +114,8 @@ TEST(ShadowFrame, CastersCascadesBiasesAndUniformsComeFromTheFit) {
 
   // Receivers draw the 4-cascade variant (3 cascades use .sh4); the box that does not receive the
   // plain one.
-  const ShaderProgram receiver = programOf(dir, "plastic", "high.dir1.sh4");
-  const ShaderProgram plain = programOf(dir, "plastic", "high.dir1");
-  size_t receivers = 0, plainDraws = 0;
-  for (const DrawItem& d : frame->frame().draws) {
-    receivers += d.program->fragmentSpirv == receiver.fragmentSpirv ? d.instances.size() : 0;
-    plainDraws += d.program->fragmentSpirv == plain.fragmentSpirv ? d.instances.size() : 0;
-  }
-  EXPECT_EQ(receivers, 3u);  // plane, box, sphere
-  EXPECT_EQ(plainDraws, 1u);
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1.sh4")), 3u);  // plane, box, sphere
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1")), 1u);
 }
 
 // The box behind the camera (tests/data/scenes/shadows/behind_camera.json) is out of the view
@@ -208,15 +209,8 @@ TEST(ShadowFrame, ACastingSpotLightTakesSlotZeroAndItsReceiversDrawSp1) {
   EXPECT_FLOAT_EQ(shadow.uniforms.spotNormalOffset[0], float(scene->shadows.normalBias * fitted.texelPerMetre));
   EXPECT_EQ(shadow.uniforms.fadeAtlas[2], 1024.0f);
 
-  const ShaderProgram receiver = programOf(dir, "plastic", "high.dir1.sh4.pt2.sp1");
-  const ShaderProgram plain = programOf(dir, "plastic", "high.dir1.pt2");
-  size_t receivers = 0, plainDraws = 0;
-  for (const DrawItem& d : frame->frame().draws) {
-    receivers += d.program->fragmentSpirv == receiver.fragmentSpirv ? d.instances.size() : 0;
-    plainDraws += d.program->fragmentSpirv == plain.fragmentSpirv ? d.instances.size() : 0;
-  }
-  EXPECT_EQ(receivers, 3u);  // plane, box, sphere
-  EXPECT_EQ(plainDraws, 1u);
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1.sh4.pt2.sp1")), 3u);  // plane, box, sphere
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1.pt2")), 1u);
 }
 
 // A spot light alone casts: the pass is its view over the whole atlas, and the sun's fields stay 0.
