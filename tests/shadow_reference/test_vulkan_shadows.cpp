@@ -1,5 +1,6 @@
-// The sun's shadow pass on Vulkan and GL (docs/shadows.md, "Shadow pass"), scored against the
-// ray-cast reference (shadow_reference/): frames lit by the sun alone, with and without the pass,
+// The sun's shadow pass on Vulkan and GL (docs/shadows.md, "Shadow pass"), and a spot light's
+// ("Spot shadows"), scored against the ray-cast reference (shadow_reference/): frames lit by the sun
+// (or the spot) alone, with and without the pass,
 // give the rendered visibility as their luminance ratio ("Visibility from the renderer"), and the
 // scored pixels' wrong fraction is bounded per tier; and the two backends' shadowed frames agree.
 #include <gtest/gtest.h>
