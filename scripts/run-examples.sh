@@ -38,8 +38,8 @@ cmp build/examples/textures/tiles.ktx2 examples/scenes/textures/tiles.ktx2
 cmp build/examples/textures/tiles_normal.ktx2 examples/scenes/textures/tiles_normal.ktx2
 for scene in examples/scenes/*.json; do
   if grep -q '"castShadows": true' "$scene"; then
-    # A sun or spot that casts (yard.json, spotlight.json): its packages built with --scene (the
-    # receivers and depth-only programs it asks for).
+    # A sun that casts (yard.json): its packages built with --scene (the receivers and depth-only
+    # programs it asks for).
     name=$(basename "$scene" .json)
     mkdir -p "$packages/$name"
     for material in $(grep -o '"material": "[a-z_]*"' "$scene" | cut -d'"' -f4 | sort -u); do
