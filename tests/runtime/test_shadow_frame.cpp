@@ -36,10 +36,15 @@ const char* kScene = R"({"width": 96, "height": 64, "tier": "high",
     {"mesh": "sphere", "material": "glass", "position": [1, 0.5, 1], "radius": 0.5}
   ]})";
 
-std::string packages() {
+// The scene's two materials with the given receivers (the sun's cascades, the point-light counts and
+// the spot's `.sp1` twins), in the scratch folder `name`.
+std::string packages(const std::string& name = "shadow-frame", const std::vector<int>& cascades = {0, 1, 2, 4},
+                     const std::vector<int>& pointLights = {0}, bool spotShadows = false) {
   compiler::BuildOptions options;
-  options.shadowCascadeCounts = {0, 1, 2, 4};
-  return test::writePackagesFromTexts("shadow-frame",
+  options.shadowCascadeCounts = cascades;
+  options.pointLightCounts = pointLights;
+  options.spotShadows = spotShadows;
+  return test::writePackagesFromTexts(name,
                                       {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
                                        "material glass { shading lit\n blending transparent\n surface { baseColor = "
                                        "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
@@ -179,16 +184,7 @@ TEST(ShadowFrame, ACastingSpotLightTakesSlotZeroAndItsReceiversDrawSp1) {
   EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
   EXPECT_NE(error.find("high.dir1.sh4.pt2.sp1"), std::string::npos) << error;
 
-  compiler::BuildOptions options;
-  options.shadowCascadeCounts = {0, 4};
-  options.pointLightCounts = {2};
-  options.spotShadows = true;
-  const std::string dir =
-      test::writePackagesFromTexts("shadow-frame-spot",
-                                   {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
-                                    "material glass { shading lit\n blending transparent\n surface { baseColor = "
-                                    "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
-                                   options);
+  const std::string dir = packages("shadow-frame-spot", {0, 4}, {2}, true);
   auto frame = prepared(*scene, dir);
   ASSERT_TRUE(frame);
   const abi::FrameUniforms& f = frame->frame().frame;
@@ -225,15 +221,7 @@ TEST(ShadowFrame, ASpotLightCastsWithoutTheSun) {
   spot.position = {-1, 4, 0.5};
   spot.direction = {0, -1, 0};
   scene->lights = {spot};
-  compiler::BuildOptions options;
-  options.pointLightCounts = {1};
-  options.spotShadows = true;
-  const std::string dir =
-      test::writePackagesFromTexts("shadow-frame-spot-alone",
-                                   {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
-                                    "material glass { shading lit\n blending transparent\n surface { baseColor = "
-                                    "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
-                                   options);
+  const std::string dir = packages("shadow-frame-spot-alone", {0}, {1}, true);
   auto frame = prepared(*scene, dir);
   ASSERT_TRUE(frame);
   ASSERT_TRUE(frame->frame().shadow);
