@@ -20,6 +20,7 @@ struct CompileArgs {
   std::string scene;                // scene manifest: build only the variants it asks this material for
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
   std::vector<int> shadows{0};      // sun shadow-cascade permutations to build without a scene
+  bool spotShadows = false;         // also each point-light variant as a spot-shadow receiver (.sp1)
   unsigned jobs = 0;                // variants compiled at once; 0: one per hardware thread
   std::string cacheDir;             // --cache; "" for the default (defaultCacheDir())
   bool noCache = false;             // --no-cache
@@ -45,6 +46,7 @@ struct LintArgs {
   std::vector<std::string> tiers;
   std::vector<int> pointLights{0};
   std::vector<int> shadows{0};  // sun-shadow receivers to build and check
+  bool spotShadows = false;     // spot-shadow receivers (.sp1) to build and check
   std::string config;           // budgets JSON (docs/lint.md), or ""
   std::string baseline;         // baseline JSON, or ""
   bool updateBaseline = false;  // rewrite the baseline from this run's figures

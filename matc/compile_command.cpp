@@ -70,6 +70,7 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   if (int status = cli::parseTiers(args.tiers, &options->tiers); status != 0) return status;
   options->pointLightCounts = args.pointLights;
   options->shadowCascadeCounts = args.shadows;
+  options->spotShadows = args.spotShadows;
   if (args.scene.empty()) return 0;
   std::string error;
   auto scene = loadSceneManifest(args.scene, &error);
@@ -170,10 +171,11 @@ int compileCommand(const CompileArgs& args) {
   std::string forScene;
   if (options.scene) {
     const permutations::MaterialNeeds needs = compiler::materialNeeds(*material);
-    forScene =
-        " for scene " + args.scene + " (" +
-        std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights, args.shadows).size()) +
-        " without it)";
+    forScene = " for scene " + args.scene + " (" +
+               std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights, args.shadows,
+                                                      args.spotShadows)
+                                  .size()) +
+               " without it)";
   }
   std::string cached;
   if (built->cacheHits > 0) cached = " (" + std::to_string(built->cacheHits) + " from the cache)";

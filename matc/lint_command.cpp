@@ -60,6 +60,7 @@ int lintCommand(const LintArgs& args) {
   if (int status = cli::parseTiers(args.tiers, &options.tiers); status != 0) return status;
   options.pointLightCounts = args.pointLights;
   options.shadowCascadeCounts = args.shadows;
+  options.spotShadows = args.spotShadows;
   options.baselineTolerance = args.tolerancePercent / 100.0;
   if (!args.gpu.empty()) {
     std::string error;

@@ -78,6 +78,9 @@ int main(int argc, char** argv) {
       "the tiers' tuning file (matc tune --write; default: <input stem>.tuning.json beside the input, if any)");
   compileCmd->add_flag("--no-tuning", compile.noTuning, "build the tier presets with the material's tier blocks")
       ->excludes(tuningOption);
+  compileCmd->add_flag("--spot-shadows", compile.spotShadows,
+                       "also build each variant with point lights as a receiver of light slot 0's spot shadow "
+                       "(.sp1) and the depth-only programs (default: none; a --scene decides its own)");
   compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
                        "testing only: round every mediump result to binary16 in the SPIR-V of mediump tiers "
                        "(docs/fp16-emulation.md); never ship such a package");
@@ -106,6 +109,8 @@ int main(int argc, char** argv) {
                    "sun shadow cascades to build and check receivers for, from 0, 1, 2, 4 (default: 0, none)")
       ->delimiter(',')
       ->check(CLI::IsMember({0, 1, 2, 4}));
+  lintCmd->add_flag("--spot-shadows", lint.spotShadows,
+                    "also build and check the spot-shadow receivers (.sp1) of the variants with point lights");
   lintCmd->add_option("--config", lint.config, "budgets per tier and stage (JSON; examples/lint/budgets.json)");
   lintCmd->add_option("--baseline", lint.baseline,
                       "committed figures: fail when a variant's figure grows past the tolerance");

@@ -24,14 +24,16 @@ std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime:
     *error = scenePath + ": no object of the scene uses material '" + material + "'";
     return std::nullopt;
   }
-  // Every object of a material shares the scene's lights; only receiving the sun's shadow differs.
+  // Every object of a material shares the scene's lights; only receiving the shadows differs.
   std::vector<permutations::VariantKey> keys;
+  const bool spotCasts = !runtime::shadowSpotLights(scene).empty();
+  const bool anythingCasts = runtime::sunShadowCascades(scene) > 0 || spotCasts;
   for (const runtime::SceneObject& o : scene.objects) {
     if (o.material != material) continue;
     const int cascades = o.receiveShadows ? int(runtime::sunShadowCascades(scene)) : 0;
-    keys.push_back(permutations::requestKey(needs, *tier, scene.sun.has_value(), int(scene.lights.size()), cascades));
-    if (o.castShadows && needs.castsShadows && runtime::sunShadowCascades(scene) > 0)
-      keys.push_back(permutations::depthKey(*tier));
+    keys.push_back(permutations::requestKey(needs, *tier, scene.sun.has_value(), int(scene.lights.size()), cascades,
+                                            o.receiveShadows && spotCasts));
+    if (o.castShadows && needs.castsShadows && anythingCasts) keys.push_back(permutations::depthKey(*tier));
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

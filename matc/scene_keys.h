@@ -16,9 +16,9 @@ namespace facet::matc {
 // images a scene names, so it does not confine them to the scene's folder as a renderer must.
 std::optional<runtime::Scene> loadSceneManifest(const std::string& path, std::string* error);
 
-// The keys the scene's objects of this material ask for, sorted: one, or two when the sun casts
-// and some of them receive its shadow while others do not (`receiveShadows`); and the tier's
-// depth-only program when the sun casts and one of them casts (`castShadows`, a material that
+// The keys the scene's objects of this material ask for, sorted: one, or two when the sun or a
+// spot light casts and some of them receive its shadow while others do not (`receiveShadows`);
+// and the tier's depth-only program when the sun or a spot casts and one of them casts (`castShadows`, a material that
 // casts: MaterialNeeds::castsShadows). Nullopt, with *error set, when the scene's tier is unknown
 // or no object of the scene uses the material.
 std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime::Scene& scene,

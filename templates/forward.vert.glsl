@@ -76,7 +76,14 @@ void main() {
 #elif defined(FACET_DIRECTIONAL_LIGHT)
     irradiance += frame.lightColor.rgb * (clamp(dot(n, frame.lightDirection.xyz), 0.0, 1.0) * INV_PI);  // a unit vector by the ABI
 #endif
-#if FACET_POINT_LIGHTS > 0
+#if FACET_POINT_LIGHTS > 0 && defined(FACET_SPOT_SHADOW)
+    // A spot-shadow receiver darkens light slot 0 alone, the casting spot: its irradiance / π per
+    // unit colour goes to the fragment stage on its own (one channel: the light's colour is
+    // uniform), which scales it by the colour and the visibility there.
+    PunctualLightData spot = frame.punctualLights[0];
+    spot.colorIntensity = vec4(1.0);
+    v_spotDiffuse = punctual_diffuse(spot, worldPosition.xyz, n).x;
+#elif FACET_POINT_LIGHTS > 0
     irradiance += punctual_diffuse(frame.punctualLights[0], worldPosition.xyz, n);
 #endif
 #if FACET_POINT_LIGHTS > 1
@@ -108,6 +115,17 @@ void main() {
                                              shadow.cascadeScale[2], shadow.cascadeScale[3]).w;
     highp vec4 offsetPosition = vec4(worldPosition.xyz + v_normal * normalOffset, 1.0);
     v_shadowPosition = vec4((shadow.lightView * offsetPosition).xyz, viewDepth);
+#endif
+#if defined(FACET_SPOT_SHADOW)
+    // The casting spot's view of the position moved along the normal by normalBias texels of that
+    // view at the position's distance w along the light's axis (chunks/shadow_spot.glsl): the view's
+    // cell spans 2·tan(half angle)·w metres at distance w, so a texel there is w times its width at
+    // 1 m, and spotNormalOffset.x = normalBias × that width. w is the unmoved position's: the move
+    // changes it by (n · axis) × the offset, a fraction normalBias · 2·tan(half) / cell of w (at most
+    // about 1 % for a 682-texel cell, a 60° cone and normalBias 2), which the offset does not need.
+    highp vec4 spotPosition = shadow.spotAtlasFromWorld * worldPosition;
+    v_spotShadowPosition =
+        spotPosition + shadow.spotAtlasFromWorld * vec4(v_normal * (shadow.spotNormalOffset.x * spotPosition.w), 0.0);
 #endif
     gl_Position = frame.viewProjection * worldPosition;
 }

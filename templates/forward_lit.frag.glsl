@@ -76,8 +76,15 @@
 // The view vector at highp, for the half vector of each light (shading_standard.glsl,
 // half_vector: at a grazing glint v ≈ −l and v + l cancels in fp16).
 highp vec3 shading_view_highp;
+// The filter both receivers share, placed (first included) where either is built.
+#if defined(FACET_SHADOW_CASCADES) || defined(FACET_SPOT_SHADOW)
+#include "shadow_filter.glsl"
+#endif
 #if defined(FACET_SHADOW_CASCADES)
 #include "shadow_sun.glsl"
+#endif
+#if defined(FACET_SPOT_SHADOW)
+#include "shadow_spot.glsl"
 #endif
 #if FACET_POINT_LIGHTS > 0
 #include "light_punctual.glsl"
@@ -97,6 +104,9 @@ void main() {
     shading_normal = normalize(v_normal);
 #if defined(FACET_SHADOW_CASCADES)
     float sunVisibility = shadow_sun_visibility();
+#endif
+#if defined(FACET_SPOT_SHADOW)
+    float spotVisibility = shadow_spot_visibility();
 #endif
     // The view vector comes from highp positions; the surface program and the ambient terms read
     // it at the tier's precision, the lights' half vectors at highp.
@@ -123,14 +133,26 @@ void main() {
                      max(dot(shading_normal, shading_view), MIN_N_DOT_V), shading_view);
 #endif
 
-#if defined(FACET_VERTEX_DIFFUSE) && defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
-    // The occluded ambient, then the lights' per-vertex diffuse (forward.vert.glsl), the sun's
-    // shadowed here; with FACET_GAMMA_HACK summed in the gamma-2 encoding.
-    vec3 directLight = v_directDiffuse;
-#if defined(FACET_SHADOW_CASCADES) && defined(FACET_GAMMA_HACK)
-    directLight = sqrt(directLight * directLight + frame.lightColor.rgb * (v_sunDiffuse * sunVisibility));
+#if defined(FACET_VERTEX_DIFFUSE) && (defined(FACET_SHADOW_CASCADES) || defined(FACET_SPOT_SHADOW))
+    // The shadowed lights' per-vertex diffuse (the sun's, the casting spot's in slot 0), each
+    // scaled by its visibility; linear.
+#if defined(FACET_SHADOW_CASCADES) && defined(FACET_SPOT_SHADOW)
+    vec3 shadowedDiffuse = frame.lightColor.rgb * (v_sunDiffuse * sunVisibility) +
+                      frame.punctualLights[0].colorIntensity.rgb * (v_spotDiffuse * spotVisibility);
 #elif defined(FACET_SHADOW_CASCADES)
-    directLight += frame.lightColor.rgb * (v_sunDiffuse * sunVisibility);
+    vec3 shadowedDiffuse = frame.lightColor.rgb * (v_sunDiffuse * sunVisibility);
+#else
+    vec3 shadowedDiffuse = frame.punctualLights[0].colorIntensity.rgb * (v_spotDiffuse * spotVisibility);
+#endif
+#endif
+#if defined(FACET_VERTEX_DIFFUSE) && defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
+    // The occluded ambient, then the lights' per-vertex diffuse (forward.vert.glsl), the shadowed
+    // ones' shadowed here; with FACET_GAMMA_HACK summed in the gamma-2 encoding.
+    vec3 directLight = v_directDiffuse;
+#if (defined(FACET_SHADOW_CASCADES) || defined(FACET_SPOT_SHADOW)) && defined(FACET_GAMMA_HACK)
+    directLight = sqrt(directLight * directLight + shadowedDiffuse);
+#elif defined(FACET_SHADOW_CASCADES) || defined(FACET_SPOT_SHADOW)
+    directLight += shadowedDiffuse;
 #endif
     vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * v_diffuseLight);
     vec3 directDiffuse = material_diffuse_color(material) * directLight;
@@ -139,13 +161,12 @@ void main() {
 #else
     color += directDiffuse;
 #endif
-#elif defined(FACET_VERTEX_DIFFUSE) && defined(FACET_SHADOW_CASCADES)
-    // The sun's per-vertex n·l / π, shadowed here, joins the rest of the per-vertex light.
-    vec3 sunDiffuse = frame.lightColor.rgb * (v_sunDiffuse * sunVisibility);
+#elif defined(FACET_VERTEX_DIFFUSE) && (defined(FACET_SHADOW_CASCADES) || defined(FACET_SPOT_SHADOW))
+    // The shadowed lights' per-vertex diffuse joins the rest of the per-vertex light.
 #if defined(FACET_GAMMA_HACK)
-    vec3 diffuseLight = sqrt(v_diffuseLight * v_diffuseLight + sunDiffuse);  // both in the gamma-2 encoding
+    vec3 diffuseLight = sqrt(v_diffuseLight * v_diffuseLight + shadowedDiffuse);  // both in the gamma-2 encoding
 #else
-    vec3 diffuseLight = v_diffuseLight + sunDiffuse;
+    vec3 diffuseLight = v_diffuseLight + shadowedDiffuse;
 #endif
     vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * diffuseLight);
 #elif defined(FACET_VERTEX_DIFFUSE)
@@ -187,7 +208,9 @@ void main() {
     color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
 #endif
 #endif
-#if FACET_POINT_LIGHTS > 0
+#if FACET_POINT_LIGHTS > 0 && defined(FACET_SPOT_SHADOW)
+    color = add_light(color, shade_punctual(material, frame.punctualLights[0]) * spotVisibility);
+#elif FACET_POINT_LIGHTS > 0
     color = add_light(color, shade_punctual(material, frame.punctualLights[0]));
 #endif
 #if FACET_POINT_LIGHTS > 1

@@ -38,6 +38,15 @@ bool receivesShadow(const AssemblyInput& in) {
   return in.key.shadowCascades > 0 && in.key.directionalLight && in.material.shading == "lit";
 }
 
+// A spot-shadow receiver (VariantKey spotShadows): light slot 0 is the casting spot
+// (docs/shadows.md, "Spot shadows"); requestKey gives it lit variants with point lights only.
+bool receivesSpotShadow(const AssemblyInput& in) {
+  return in.key.spotShadows > 0 && in.key.pointLights > 0 && in.material.shading == "lit";
+}
+
+// Either receiver binds the shadow block and samples the atlas.
+bool readsShadowAtlas(const AssemblyInput& in) { return receivesShadow(in) || receivesSpotShadow(in); }
+
 bool vertexDiffuse(const AssemblyInput& in) {
   return in.tier.diffuse == permutations::DiffuseModel::Vertex && in.material.shading == "lit";
 }
@@ -268,10 +277,10 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   }
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
-  if (receivesShadow(in)) {
-    s += "#define FACET_SHADOW_CASCADES " + std::to_string(in.key.shadowCascades) + "\n";
-    if (in.tier.shadowFilter == permutations::ShadowFilter::Tent3x3) s += "#define FACET_SHADOW_FILTER_TENT 1\n";
-  }
+  if (receivesShadow(in)) s += "#define FACET_SHADOW_CASCADES " + std::to_string(in.key.shadowCascades) + "\n";
+  if (receivesSpotShadow(in)) s += "#define FACET_SPOT_SHADOW 1\n";
+  if (readsShadowAtlas(in) && in.tier.shadowFilter == permutations::ShadowFilter::Tent3x3)
+    s += "#define FACET_SHADOW_FILTER_TENT 1\n";
   if (in.material.blending != "opaque") s += "#define FACET_BLENDING_" + upper(in.material.blending) + " 1\n";
   if (in.material.blending == "masked")
     s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";
@@ -337,11 +346,15 @@ std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direc
   if (vertexDiffuse(in)) declare("vec3", "v_diffuseLight");  // diffuse irradiance / π, lit per vertex
   // The sun's n·l / π alone, for a receiver to shadow (templates/forward.vert.glsl).
   if (vertexDiffuse(in) && receivesShadow(in)) declare("float", "v_sunDiffuse");
+  // Light slot 0's irradiance / π per unit colour, for a spot-shadow receiver to shadow.
+  if (vertexDiffuse(in) && receivesSpotShadow(in)) declare("float", "v_spotDiffuse");
   // The lights' per-vertex diffuse apart from the ambient's, which ambient occlusion scales.
   if (vertexDiffuse(in) && in.material.surface.outputs.count("ambientOcclusion") > 0)
     declare("vec3", "v_directDiffuse");
   // The sun's frame and view depth of the normal-offset position (chunks/shadow_sun.glsl).
   if (receivesShadow(in)) declare("highp vec4", "v_shadowPosition");
+  // The spot's view of the normal-offset position, before the divide (chunks/shadow_spot.glsl).
+  if (receivesSpotShadow(in)) declare("highp vec4", "v_spotShadowPosition");
   return declare.text;
 }
 
@@ -414,11 +427,11 @@ std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* pr
 // The block is in both stages (the vertex stage moves the position into the sun's frame), the same
 // text in each as GLSL ES requires.
 std::string shadowBlock(const AssemblyInput& in, Flavour flavour) {
-  return receivesShadow(in) ? fixedBlock(flavour, abi::kShadowBlock) : "";
+  return readsShadowAtlas(in) ? fixedBlock(flavour, abi::kShadowBlock) : "";
 }
 
 std::string shadowAtlasSampler(const AssemblyInput& in, Flavour flavour) {
-  if (!receivesShadow(in)) return "";
+  if (!readsShadowAtlas(in)) return "";
   const abi::SamplerDesc& atlas = abi::kShadowAtlasSampler;
   return samplerLayout(flavour, atlas.set, atlas.binding) + "uniform highp sampler2DShadow " + std::string(atlas.name) +
          ";\n";
@@ -585,7 +598,7 @@ bool assembleDepth(const AssemblyInput& in, Flavour flavour, StageSources* out, 
 
 bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading == "lit" && !in.key.depthOnly; }
 
-bool samplesShadowAtlas(const AssemblyInput& in) { return receivesShadow(in); }
+bool samplesShadowAtlas(const AssemblyInput& in) { return readsShadowAtlas(in); }
 
 bool samplesDfgLut(const AssemblyInput& in) {
   if (in.key.depthOnly) return false;

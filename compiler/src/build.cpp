@@ -502,14 +502,14 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
 
   const permutations::MaterialNeeds needs = materialNeeds(material);
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
-  const std::vector<permutations::VariantKey> keys =
-      permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts, options.shadowCascadeCounts);
+  const std::vector<permutations::VariantKey> keys = permutations::enumerate(
+      needs, options.tiers, scene, options.pointLightCounts, options.shadowCascadeCounts, options.spotShadows);
 
   if (!options.cacheDir.empty() && !prepareVariantCache(options.cacheDir, &failure->message)) return std::nullopt;
   // Jobs finish in any order; each writes only its own variant's fields, read here in key order.
   VariantCache cache(options.cacheDir);
   const bool shadowReceivers =
-      std::any_of(keys.begin(), keys.end(), [](const permutations::VariantKey& k) { return k.shadowCascades > 0; });
+      std::any_of(keys.begin(), keys.end(), [](const permutations::VariantKey& k) { return k.receivesShadow(); });
   result.package.mslBindings = package::mslBindingsFor(result.package.material, shadowReceivers);
   MaterialContext ctx{material, surface, alphaSurface, layout, preshade, options, cache, result.package.mslBindings};
   VariantJobs jobs(ctx, keys);

@@ -317,13 +317,14 @@ class Evaluation {
     };
     if (variants == Variants::All || variants == Variants::Views)
       for (const View& v : views_) {
-        // The receivers and the casters' depth-only programs of a view whose sun casts, as
+        // The receivers and the casters' depth-only programs of a view whose sun or spot casts, as
         // `matc compile --scene` builds them (every object of the view is this material's).
         const int cascades = int(runtime::sunShadowCascades(v.scene));
+        const bool spotCasts = !runtime::shadowSpotLights(v.scene).empty();
         for (const runtime::SceneObject& o : v.scene.objects) {
           add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size()),
-                                       o.receiveShadows ? cascades : 0));
-          if (cascades > 0 && o.castShadows && needs.castsShadows) add(permutations::depthKey(c.tier));
+                                       o.receiveShadows ? cascades : 0, o.receiveShadows && spotCasts));
+          if ((cascades > 0 || spotCasts) && o.castShadows && needs.castsShadows) add(permutations::depthKey(c.tier));
         }
       }
     if (variants == Variants::All || variants == Variants::Cost) add(permutations::requestKey(needs, c.tier, true, 0));

@@ -241,6 +241,7 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
   build.pointLightCounts = options.pointLightCounts;
   build.shadowCascadeCounts = options.shadowCascadeCounts;
   build.tunedTiers = options.tunedTiers;
+  build.spotShadows = options.spotShadows;
   compiler::BuildError error;
   std::optional<compiler::BuildResult> built = compiler::buildMaterial(*checked, build, &error);
   if (!built) {

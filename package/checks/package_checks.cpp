@@ -119,8 +119,8 @@ std::optional<ProgramInterface> variantInterface(const PackageReader& reader, si
   out.depthOnly = parsed && parsed->depthOnly;
   const bool lit = m.shading == "lit" && !out.depthOnly;
   if (lit) frame(abi::kEnvironmentSampler);
-  // Receivers bind the sun's shadow block and atlas (chunks/shadow_sun.glsl).
-  out.shadowReceiver = parsed && parsed->shadowCascades > 0 && m.shading == "lit";
+  // Receivers bind the shadow block and atlas (chunks/shadow_sun.glsl, chunks/shadow_spot.glsl).
+  out.shadowReceiver = parsed && parsed->receivesShadow() && m.shading == "lit";
   if (out.shadowReceiver) frame(abi::kShadowAtlasSampler);
   if (lit && splitSum) frame(abi::kDfgLutSampler);
   for (const TextureInfo& t : reader.textures()) {

@@ -59,7 +59,7 @@ class StageCheck {
     }
     const std::string name(desc->name);
     if (desc->name == abi::kShadowBlock.name && !declared_.shadowReceiver)
-      return "reads " + name + ", which only a shadow receiver's (.sh) draws bind";
+      return "reads " + name + ", which only a shadow receiver's (.sh, .sp1) draws bind";
     if (b.arraySize != 0) return "declares " + name + " as an array of blocks; the runtime binds one";
     const bool material = desc->std140Size == 0;
     const uint32_t bound = material ? declared_.materialBlockBytes : desc->std140Size;

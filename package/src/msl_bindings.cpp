@@ -20,7 +20,7 @@ std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadow
   if (material.paramBlockSize != 0) block(abi::kMaterialBlock);
   if (material.shading == "lit")
     for (const abi::SamplerDesc& s : abi::kFrameSamplers) sampler(std::string(s.name), s.set, s.binding);
-  // Only packages holding receivers (.sh variants) declare the shadow's block and atlas: the others'
+  // Only packages holding receivers (.sh, .sp1 variants) declare the shadow's block and atlas: the others'
   // bytes stay as they were.
   if (material.shading == "lit" && shadowReceivers) {
     block(abi::kShadowBlock);

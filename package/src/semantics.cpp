@@ -141,7 +141,7 @@ std::string semanticError(const MaterialInfo& m, const std::vector<VariantInfo>&
     auto key = permutations::VariantKey::parse(v.key);
     if (!key || key->toString() != v.key)
       return "variant key '" + shown(v.key) + "' is not a valid key (e.g. high.dir1)";
-    shadowReceivers = shadowReceivers || key->shadowCascades > 0;
+    shadowReceivers = shadowReceivers || key->receivesShadow();
     // The shadow pass draws only what casts: a transparent or additive material never does.
     if (key->depthOnly && !permutations::blendingCastsShadows(m.blending))
       return "variant '" + v.key + "' is a depth-only program, but a " + m.blending +

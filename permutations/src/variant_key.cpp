@@ -38,7 +38,8 @@ std::strong_ordering VariantKey::operator<=>(const VariantKey& o) const {
   if (auto c = depthOnly <=> o.depthOnly; c != 0) return c;
   if (auto c = directionalLight <=> o.directionalLight; c != 0) return c;
   if (auto c = pointLights <=> o.pointLights; c != 0) return c;
-  return shadowCascades <=> o.shadowCascades;
+  if (auto c = shadowCascades <=> o.shadowCascades; c != 0) return c;
+  return spotShadows <=> o.spotShadows;
 }
 
 std::string VariantKey::toString() const {
@@ -46,6 +47,7 @@ std::string VariantKey::toString() const {
   std::string s = std::string(permutations::toString(tier)) + (directionalLight ? ".dir1" : ".dir0");
   if (shadowCascades > 0) s += ".sh" + std::to_string(shadowCascades);
   if (pointLights > 0) s += ".pt" + std::to_string(pointLights);
+  if (spotShadows > 0) s += ".sp" + std::to_string(spotShadows);
   return s;
 }
 
@@ -57,12 +59,13 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
     if (dot == std::string_view::npos) break;
     start = dot + 1;
   }
-  if (fields.size() < 2 || fields.size() > 4) return std::nullopt;
+  if (fields.size() < 2 || fields.size() > 5) return std::nullopt;
   auto tier = tierFromString(fields[0]);
   if (tier && fields.size() == 2 && fields[1] == "depth") return depthKey(*tier);
   if (!tier || (fields[1] != "dir0" && fields[1] != "dir1")) return std::nullopt;
   VariantKey key{*tier, fields[1] == "dir1", 0, 0};
-  // The optional fields in their one order: "sh" (after dir1 only), then "pt".
+  // The optional fields in their one order: "sh" (after dir1 only), then "pt", then "sp" (after
+  // "pt" only).
   size_t next = 2;
   const auto field = [&](const char* prefix, std::span<const int> counts, int* value) {
     if (next >= fields.size()) return;
@@ -75,6 +78,8 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
   };
   if (key.directionalLight) field("sh", kShadowCascadeCounts, &key.shadowCascades);
   field("pt", kPointLightCounts, &key.pointLights);
+  static constexpr int kSpotShadowCounts[] = {0, kMaxSpotShadows};
+  if (key.pointLights > 0) field("sp", kSpotShadowCounts, &key.spotShadows);
   if (next != fields.size()) return std::nullopt;
   return key;
 }
@@ -94,33 +99,38 @@ VariantKey depthKey(Tier tier) {
 }
 
 VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights,
-                      int shadowCascades) {
+                      int shadowCascades, bool spotShadow) {
   const bool sun = material.lit && directionalLight;
-  return {tier, sun, material.lit ? pointLightPermutation(pointLights).value_or(0) : 0,
-          sun ? shadowCascadePermutation(shadowCascades).value_or(0) : 0};
+  VariantKey key{tier, sun, material.lit ? pointLightPermutation(pointLights).value_or(0) : 0,
+                 sun ? shadowCascadePermutation(shadowCascades).value_or(0) : 0};
+  key.spotShadows = spotShadow && key.pointLights > 0 ? 1 : 0;
+  return key;
 }
 
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
                                   const SceneNeeds* scene, const std::vector<int>& pointLightCounts,
-                                  const std::vector<int>& shadowCascadeCounts) {
+                                  const std::vector<int>& shadowCascadeCounts, bool spotShadows) {
   std::vector<VariantKey> keys;
   // A scene names its own counts; without one, the caller's lists apply.
   std::vector<int> counts =
       scene ? std::vector<int>(std::begin(kPointLightCounts), std::end(kPointLightCounts)) : pointLightCounts;
   std::vector<int> cascades =
       scene ? std::vector<int>(std::begin(kShadowCascadeCounts), std::end(kShadowCascadeCounts)) : shadowCascadeCounts;
+  std::vector<bool> spots = scene || spotShadows ? std::vector<bool>{false, true} : std::vector<bool>{false};
   for (Tier t : tiers) {
     for (bool light : {false, true}) {
       for (int points : counts) {
         for (int shadow : cascades) {
-          VariantKey key = requestKey(material, t, light, points, shadow);
-          bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
-          if (wanted) keys.push_back(key);
+          for (bool spot : spots) {
+            VariantKey key = requestKey(material, t, light, points, shadow, spot);
+            bool wanted = !scene || std::find(scene->keys.begin(), scene->keys.end(), key) != scene->keys.end();
+            if (wanted) keys.push_back(key);
+          }
         }
       }
     }
     // The shadow pass draws casters with it: built with the receivers, or when the scene asks.
-    const bool shadows = std::any_of(cascades.begin(), cascades.end(), [](int c) { return c > 0; });
+    const bool shadows = spotShadows || std::any_of(cascades.begin(), cascades.end(), [](int c) { return c > 0; });
     const VariantKey depth = depthKey(t);
     const bool asked = scene ? std::find(scene->keys.begin(), scene->keys.end(), depth) != scene->keys.end() : shadows;
     if (asked && material.castsShadows) keys.push_back(depth);

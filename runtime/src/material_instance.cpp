@@ -26,8 +26,9 @@ std::shared_ptr<Material> Material::create(LoadedMaterial loaded, const VariantR
   const package::MaterialInfo& info = m->loaded_.info();
   // Axes the material ignores (lights, for unlit) are normalised as the compiler normalised them.
   permutations::MaterialNeeds needs{info.shading == "lit"};
-  m->variantKey_ =
-      permutations::requestKey(needs, *tier, request.sun, request.pointLights, request.shadowCascades).toString();
+  m->variantKey_ = permutations::requestKey(needs, *tier, request.sun, request.pointLights, request.shadowCascades,
+                                            request.spotShadow)
+                       .toString();
   auto program = m->loaded_.program(m->variantKey_, error);
   if (!program) return nullptr;
   m->program_ = std::move(*program);

@@ -153,7 +153,14 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     store(f.lightDirection, -glm::normalize(scene.sun->direction));
     store(f.lightColor, scene.sun->color * scene.sun->illuminance * out->exposure_);
   }
-  for (size_t i = 0; i < scene.lights.size(); ++i) storePunctual(scene.lights[i], out->exposure_, &f.punctualLights[i]);
+  // Slot order: the casting spot first, whose shadow `.sp1` receivers read for slot 0
+  // (docs/shadows.md, "Spot shadows"), then the other lights in scene order.
+  const std::vector<size_t> spots = shadowSpotLights(scene);
+  std::vector<size_t> slots = spots;
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    if (std::find(spots.begin(), spots.end(), i) == spots.end()) slots.push_back(i);
+  for (size_t slot = 0; slot < slots.size(); ++slot)
+    storePunctual(scene.lights[slots[slot]], out->exposure_, &f.punctualLights[slot]);
   // Image-based lighting, pre-exposed like the lights: SH in the frame block, the prefiltered
   // environment for every lit variant, the DFG table for the tiers whose ambient model reads it.
   auto lighting = buildEnvironmentLighting(scene, out->exposure_, error);
@@ -182,16 +189,10 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   // and what shows where a drawn background is not (never, as it covers the screen).
   for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 
-  // A spot light's shadow is fitted and drawn into the atlas (shadowPassDesc), but no variant
-  // receives it yet: its objects would be lit through their casters (docs/shadows.md, "Spot shadows").
-  if (const std::vector<size_t> spots = shadowSpotLights(scene); !spots.empty()) {
-    *error = "/lights/" + std::to_string(spots[0]) +
-             "/castShadows: spot-light shadows are not rendered yet: no material variant receives them "
-             "(docs/shadows.md, \"Spot shadows\")";
-    return nullptr;
-  }
   const int cascades = int(sunShadowCascades(scene));
-  // Material name, and whether its objects receive the sun's shadow -> index in materials_: a
+  const bool spotCasts = !spots.empty();
+  const bool shadowPass = cascades > 0 || spotCasts;
+  // Material name, and whether its objects receive the shadows -> index in materials_: a
   // material whose objects differ in receiving is loaded once per variant.
   std::map<std::pair<std::string, bool>, size_t> loaded;
   std::vector<CasterBounds> casterBounds;
@@ -201,7 +202,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   GltfBudget meshBudget;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    const bool receives = cascades > 0 && o.receiveShadows;
+    const bool receives = shadowPass && o.receiveShadows;
     auto [it, fresh] = loaded.emplace(std::make_pair(o.material, receives), out->materials_.size());
     if (fresh) {
       std::string path = (std::filesystem::path(packageDir) / (o.material + ".matpkg")).string();
@@ -215,11 +216,12 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       }
       // The variant, its shaders and package textures, the colour encoding: as for an app's
       // Material (runtime/material_instance.h).
-      auto material = Material::create(std::move(*loadedMaterial),
-                                       {scene.tier, scene.sun.has_value(), lights, receives ? cascades : 0}, error);
+      auto material = Material::create(
+          std::move(*loadedMaterial),
+          {scene.tier, scene.sun.has_value(), lights, receives ? cascades : 0, receives && spotCasts}, error);
       if (!material) return nullptr;
       const package::MaterialInfo& info = material->loaded().info();
-      if (cascades > 0 && permutations::blendingCastsShadows(info.blending) && !out->depthPrograms_.count(o.material)) {
+      if (shadowPass && permutations::blendingCastsShadows(info.blending) && !out->depthPrograms_.count(o.material)) {
         auto depth = material->loaded().program(permutations::depthKey(*tier).toString(), error);
         if (!depth) return nullptr;
         out->depthPrograms_[o.material] = std::make_unique<ShaderProgram>(std::move(*depth));
@@ -322,7 +324,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     out->frame_.draws.push_back(std::move(draw));
   }
-  if (cascades > 0) out->frame_.shadow = shadowPassDesc(scene, casterBounds, std::move(casters));
+  if (shadowPass) out->frame_.shadow = shadowPassDesc(scene, casterBounds, std::move(casters));
   mergeInstances(&out->frame_.draws);
   // Opaque draws first, in scene order (of each draw's first object); blended ones after them,
   // far to near, so each blends over everything behind it (sorted by object centre: exact for

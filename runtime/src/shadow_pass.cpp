@@ -22,6 +22,9 @@ ShadowPassDesc shadowPassDesc(const Scene& scene, const std::vector<CasterBounds
                               std::vector<DrawItem> casters) {
   ShadowPassDesc pass;
   pass.atlasSize = scene.shadows.atlasSize;
+  // The filters' atlas size (chunks/shadow_filter.glsl), whichever light casts.
+  pass.uniforms.fadeAtlas[2] = float(pass.atlasSize);
+  pass.uniforms.fadeAtlas[3] = float(1.0 / pass.atlasSize);
   if (scene.sun && scene.sun->castShadows) {
     const SunShadowFit fit = fitSunShadow(scene, bounds);
     pass.uniforms = fit.uniforms;
@@ -51,6 +54,11 @@ ShadowPassDesc shadowPassDesc(const Scene& scene, const std::vector<CasterBounds
       if (casterInSpotCone(spot, bounds[i])) d.casters.push_back(uint32_t(i));
     pass.cascades.push_back(std::move(d));
     ++pass.spotViews;
+    // What `.sp1` receivers read for light slot 0 (SceneFrame puts the casting spot there;
+    // templates/forward.vert.glsl): the view and the normal offset per metre of distance along
+    // its axis, normalBias texels of the view at that distance.
+    store(pass.uniforms.spotAtlasFromWorld, spot.atlasFromWorld);
+    pass.uniforms.spotNormalOffset[0] = float(scene.shadows.normalBias * spot.texelPerMetre);
   }
   pass.casters = std::move(casters);
   return pass;

@@ -347,6 +347,23 @@ std::string fragmentStage(const std::string& shadowPosition = "highp", const std
          "}\n";
 }
 
+// A spot receiver's fragment stage (chunks/shadow_spot.glsl): the perspective divide, at `divide`
+// precision, then the compare.
+std::string spotFragmentStage(const std::string& divide) {
+  return std::string("#version 310 es\nprecision mediump float;\n") + block("highp") +
+         "layout(set = 1, binding = 3) uniform highp sampler2DShadow facet_shadowAtlas;\n"
+         "layout(location = 0) in mediump vec3 v_normal;\n"
+         "layout(location = 1) in highp vec4 v_shadowPosition;\n"
+         "layout(location = 0) out vec4 fragColor;\n"
+         "void main() {\n"
+         "  " +
+         divide + " vec4 light = v_shadowPosition;\n  " + divide +
+         " vec3 projected = light.xyz / max(light.w, 1e-6);\n"
+         "  float lit = texture(facet_shadowAtlas, projected);\n"
+         "  fragColor = vec4(v_normal * lit, 1.0);\n"
+         "}\n";
+}
+
 // Compiled and optimised as matc builds a variant's SPIR-V, then analysed and linted.
 facet::lint::VariantFigures lintReceiver(const std::string& vertex, const std::string& fragment,
                                          std::vector<facet::ir::Diagnostic>* found) {
@@ -425,6 +442,17 @@ TEST(Lint, MediumpShadowCoordinatesAndCompareDepthsAreErrors) {
     ASSERT_EQ(found.size(), 1u);
     EXPECT_EQ(found[0].code, "shadow-precision");
   }
+  {
+    SCOPED_TRACE("a spot's perspective divide in highp passes, in mediump it is an error");
+    std::vector<facet::ir::Diagnostic> found;
+    auto figures = lintReceiver(vertexStage(), spotFragmentStage("highp"), &found);
+    EXPECT_TRUE(figures.shadow.fragmentRelaxed.empty()) << figures.shadow.fragmentRelaxed.front();
+    EXPECT_TRUE(found.empty()) << found.front().message;
+    figures = lintReceiver(vertexStage(), spotFragmentStage("mediump"), &found);
+    EXPECT_FALSE(figures.shadow.fragmentRelaxed.empty());
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].code, "shadow-precision");
+  }
 }
 
 // Light-space coordinates stay highp in every tier (docs/shadows.md): what the compiler writes for
@@ -449,4 +477,31 @@ TEST(Lint, ShadowCoordinatesStayHighpInEveryTier) {
     EXPECT_TRUE(v.shadow.fragmentRelaxed.empty());
   }
   EXPECT_EQ(receivers, 8u);  // dir1 of four tiers, .sh1 and .sh4
+}
+
+// The spot's receiver (chunks/shadow_spot.glsl): its perspective coordinate and divide stay highp
+// too, alone and beside the sun's; a variant receiving both compares twice as often.
+TEST(Lint, SpotShadowCoordinatesStayHighpInEveryTier) {
+  facet::ir::SourceFile file{"red_plastic.mat",
+                             facet::test::readText(facet::test::examplePath("materials/red_plastic.mat"))};
+  LintOptions options;
+  options.shadowCascadeCounts = {0, 2};
+  options.pointLightCounts = {1};
+  options.spotShadows = true;
+  MaterialLint r = facet::lint::lintMaterial(file, options);
+  EXPECT_FALSE(r.hasErrors());
+  size_t receivers = 0;
+  for (const auto& v : r.variants) {
+    SCOPED_TRACE(v.key);
+    const unsigned lights =
+        (v.key.find(".sp1") != std::string::npos ? 1u : 0u) + (v.key.find(".sh") != std::string::npos ? 1u : 0u);
+    const bool oneTap = v.key.rfind("low", 0) == 0 || v.key.rfind("mid", 0) == 0;
+    EXPECT_EQ(v.shadow.compares, lights * (oneTap ? 1u : 4u));
+    if (v.key.find(".sp1") == std::string::npos) continue;
+    ++receivers;
+    EXPECT_GT(v.shadow.feeding, 5u);
+    EXPECT_TRUE(v.shadow.vertexRelaxed.empty());
+    EXPECT_TRUE(v.shadow.fragmentRelaxed.empty());
+  }
+  EXPECT_EQ(receivers, 12u);  // four tiers: dir0.pt1, dir1.pt1, dir1.sh2.pt1
 }

@@ -516,6 +516,45 @@ TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
 }
 
+// The spot's receivers (docs/shadows.md, "Spot shadows"): `.sp1` twins of the point-light variants
+// with --spot-shadows, exactly the scene's with --scene (an object that does not receive asks for
+// the plain variant), and info --scene names them.
+TEST(MatcCli, SpotShadowReceiversAreBuiltOnlyWhenAskedFor) {
+  std::string dir = facet::test::scratchDir("cli-spot-shadows");
+  std::string scene = write(dir, "spot.json", R"({"tier": "low", "lights": [
+      {"type": "point", "position": [2, 2, 0]},
+      {"type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0], "outerAngle": 40, "castShadows": true}],
+      "objects": [
+      {"mesh": "plane", "material": "red_plastic", "scale": 10},
+      {"mesh": "box", "material": "red_plastic", "position": [0, 1, 0], "receiveShadows": false}]})");
+  std::string material = facet::test::examplePath("materials/red_plastic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/points.matpkg --point-lights 0,2").exitCode, 0);
+  auto missing = run(kMatc + " info " + dir + "/points.matpkg --scene " + scene);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("not built with low.dir0.pt2.sp1, low.depth"), std::string::npos) << missing.err;
+
+  // 16 + dir0.pt2.sp1, dir1.pt2.sp1 and a depth-only program per tier.
+  auto built = run(kMatc + " compile " + material + " -o " + dir + "/spot.matpkg --point-lights 0,2 --spot-shadows");
+  ASSERT_EQ(built.exitCode, 0) << built.err;
+  EXPECT_NE(built.out.find("28 variants"), std::string::npos) << built.out;
+  auto found = run(kMatc + " info " + dir + "/spot.matpkg --scene " + scene);
+  EXPECT_EQ(found.exitCode, 0) << found.err;
+  EXPECT_NE(found.out.find("asks for low.dir0.pt2.sp1; the package has 28 variants, including it\n"), std::string::npos)
+      << found.out;
+  EXPECT_NE(found.out.find("asks for low.dir0.pt2; the package has 28 variants, including it\n"), std::string::npos)
+      << found.out;
+  auto fragment =
+      run(kMatc + " info " + dir + "/spot.matpkg --variant low.dir0.pt2.sp1 --stage fragment --target glsl_es_300");
+  ASSERT_EQ(fragment.exitCode, 0) << fragment.err;
+  EXPECT_NE(fragment.out.find("uniform highp sampler2DShadow facet_shadowAtlas;"), std::string::npos) << fragment.out;
+  EXPECT_NE(fragment.out.find("v_spotShadowPosition"), std::string::npos) << fragment.out;
+
+  auto forScene = run(kMatc + " compile " + material + " -o " + dir + "/scene.matpkg --scene " + scene);
+  ASSERT_EQ(forScene.exitCode, 0) << forScene.err;
+  EXPECT_NE(forScene.out.find("3 variants for scene " + scene + " (8 without it)"), std::string::npos) << forScene.out;
+  EXPECT_EQ(run(kMatc + " info " + dir + "/scene.matpkg --scene " + scene).exitCode, 0);
+}
+
 // matc lint builds receivers when asked (--shadows, as compile) and checks that their shadow
 // coordinates stay highp (the shadow-precision rule, tests/lint/test_lint.cpp).
 TEST(MatcCli, LintChecksShadowReceiversWhenAskedFor) {

@@ -15,6 +15,7 @@
 #include "facet/runtime/material.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/runtime/spot_shadow.h"
 #include "facet/runtime/sun_shadow.h"
 #include "test_compile.h"
 #include "test_support.h"
@@ -36,10 +37,15 @@ const char* kScene = R"({"width": 96, "height": 64, "tier": "high",
     {"mesh": "sphere", "material": "glass", "position": [1, 0.5, 1], "radius": 0.5}
   ]})";
 
-std::string packages() {
+// The scene's two materials with the given receivers (the sun's cascades, the point-light counts and
+// the spot's `.sp1` twins), in the scratch folder `name`.
+std::string packages(const std::string& name = "shadow-frame", const std::vector<int>& cascades = {0, 1, 2, 4},
+                     const std::vector<int>& pointLights = {0}, bool spotShadows = false) {
   compiler::BuildOptions options;
-  options.shadowCascadeCounts = {0, 1, 2, 4};
-  return test::writePackagesFromTexts("shadow-frame",
+  options.shadowCascadeCounts = cascades;
+  options.pointLightCounts = pointLights;
+  options.spotShadows = spotShadows;
+  return test::writePackagesFromTexts(name,
                                       {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
                                        "material glass { shading lit\n blending transparent\n surface { baseColor = "
                                        "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
@@ -60,6 +66,14 @@ ShaderProgram programOf(const std::string& dir, const std::string& material, con
   auto program = loaded->program(key, &error);
   EXPECT_TRUE(program) << error;
   return *program;
+}
+
+// The instances the frame draws with `program`'s fragment stage.
+size_t instancesDrawnWith(const SceneFrame& frame, const ShaderProgram& program) {
+  size_t count = 0;
+  for (const DrawItem& d : frame.frame().draws)
+    count += d.program->fragmentSpirv == program.fragmentSpirv ? d.instances.size() : 0;
+  return count;
 }
 
 TEST(ShadowFrame, CastersCascadesBiasesAndUniformsComeFromTheFit) {
@@ -106,15 +120,8 @@ TEST(ShadowFrame, CastersCascadesBiasesAndUniformsComeFromTheFit) {
 
   // Receivers draw the 4-cascade variant (3 cascades use .sh4); the box that does not receive the
   // plain one.
-  const ShaderProgram receiver = programOf(dir, "plastic", "high.dir1.sh4");
-  const ShaderProgram plain = programOf(dir, "plastic", "high.dir1");
-  size_t receivers = 0, plainDraws = 0;
-  for (const DrawItem& d : frame->frame().draws) {
-    receivers += d.program->fragmentSpirv == receiver.fragmentSpirv ? d.instances.size() : 0;
-    plainDraws += d.program->fragmentSpirv == plain.fragmentSpirv ? d.instances.size() : 0;
-  }
-  EXPECT_EQ(receivers, 3u);  // plane, box, sphere
-  EXPECT_EQ(plainDraws, 1u);
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1.sh4")), 3u);  // plane, box, sphere
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1")), 1u);
 }
 
 // What both backends draw (FrameDraws): the forward draws, then each view's casters in view order,
@@ -196,25 +203,74 @@ TEST(ShadowFrame, PackagesWithoutReceiversAreRefused) {
   EXPECT_NE(error.find("high.dir1.sh4"), std::string::npos) << error;
 }
 
-// A casting spot light is fitted and drawn (shadowPassDesc) but no variant receives it yet: the
-// scene is refused at the light's pointer rather than rendered with its objects lit through their
-// casters.
-TEST(ShadowFrame, ACastingSpotLightIsRefusedUntilReceiversExist) {
+// A casting spot light (docs/shadows.md, "Spot shadows"): it takes light slot 0, whatever its place
+// in the scene, since `.sp1` receivers shadow slot 0; receiving objects draw the `.sp1` variant, the
+// others the plain one; its view follows the cascades and the uniforms carry its matrix and normal
+// offset. Packages without the spot's receivers are refused with the key.
+TEST(ShadowFrame, ACastingSpotLightTakesSlotZeroAndItsReceiversDrawSp1) {
   std::string error;
   auto scene = parseScene("s.json", kScene, &error);
   ASSERT_TRUE(scene) << error;
+  PunctualLight point, spot;
+  point.position = {3, 2, 1};
+  spot.spot = true;
+  spot.castShadows = true;
+  spot.position = {-1, 4, 0.5};
+  spot.direction = glm::normalize(glm::dvec3(0.2, -1, 0));
+  spot.outerAngleDegrees = 40;
+  scene->lights = {point, spot};
+  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
+  EXPECT_NE(error.find("high.dir1.sh4.pt2.sp1"), std::string::npos) << error;
+
+  const std::string dir = packages("shadow-frame-spot", {0, 4}, {2}, true);
+  auto frame = prepared(*scene, dir);
+  ASSERT_TRUE(frame);
+  const abi::FrameUniforms& f = frame->frame().frame;
+  EXPECT_FLOAT_EQ(f.punctualLights[0].positionFalloff[1], 4.0f);  // the spot
+  EXPECT_NE(f.punctualLights[0].spotScaleOffset[0], 0.0f);
+  EXPECT_FLOAT_EQ(f.punctualLights[1].positionFalloff[0], 3.0f);  // the point light
+  EXPECT_EQ(f.punctualLights[1].spotScaleOffset[0], 0.0f);
+
+  ASSERT_TRUE(frame->frame().shadow);
+  const ShadowPassDesc& shadow = *frame->frame().shadow;
+  ASSERT_EQ(shadow.cascades.size(), 4u);  // 3 cascades, then the spot
+  EXPECT_EQ(shadow.spotViews, 1u);
+  const ShadowCascadeDesc& view = shadow.cascades[3];
+  const SpotShadow fitted =
+      fitSpotShadow(*scene, 1, {view.viewport[0], view.viewport[1], view.viewport[2], view.viewport[3]});
+  for (int i = 0; i < 16; ++i)
+    EXPECT_EQ(shadow.uniforms.spotAtlasFromWorld[i], float(glm::value_ptr(fitted.atlasFromWorld)[i])) << i;
+  EXPECT_FLOAT_EQ(shadow.uniforms.spotNormalOffset[0], float(scene->shadows.normalBias * fitted.texelPerMetre));
+  EXPECT_EQ(shadow.uniforms.fadeAtlas[2], 1024.0f);
+
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1.sh4.pt2.sp1")), 3u);  // plane, box, sphere
+  EXPECT_EQ(instancesDrawnWith(*frame, programOf(dir, "plastic", "high.dir1.pt2")), 1u);
+}
+
+// A spot light alone casts: the pass is its view over the whole atlas, and the sun's fields stay 0.
+TEST(ShadowFrame, ASpotLightCastsWithoutTheSun) {
+  std::string error;
+  auto scene = parseScene("s.json", kScene, &error);
+  ASSERT_TRUE(scene) << error;
+  scene->sun.reset();
   PunctualLight spot;
   spot.spot = true;
   spot.castShadows = true;
-  scene->lights = {PunctualLight{}, spot};
-  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
-  EXPECT_EQ(error,
-            "/lights/1/castShadows: spot-light shadows are not rendered yet: no material variant receives them "
-            "(docs/shadows.md, \"Spot shadows\")");
-  // Without it the scene goes on to ask for its variant (these packages have no point lights).
-  scene->lights[1].castShadows = false;
-  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
-  EXPECT_NE(error.find("high.dir1.sh4.pt2"), std::string::npos) << error;
+  spot.position = {-1, 4, 0.5};
+  spot.direction = {0, -1, 0};
+  scene->lights = {spot};
+  const std::string dir = packages("shadow-frame-spot-alone", {0}, {1}, true);
+  auto frame = prepared(*scene, dir);
+  ASSERT_TRUE(frame);
+  ASSERT_TRUE(frame->frame().shadow);
+  const ShadowPassDesc& shadow = *frame->frame().shadow;
+  ASSERT_EQ(shadow.cascades.size(), 1u);
+  EXPECT_EQ(std::vector<uint32_t>(shadow.cascades[0].viewport, shadow.cascades[0].viewport + 4),
+            (std::vector<uint32_t>{0, 0, 1024, 1024}));
+  EXPECT_EQ(shadow.uniforms.fadeAtlas[2], 1024.0f);
+  EXPECT_EQ(shadow.uniforms.fadeAtlas[3], 1.0f / 1024);
+  EXPECT_EQ(shadow.uniforms.cascadeScale[0][0], 0.0f);
+  EXPECT_EQ(shadow.casters.size(), 3u);  // the plane and both boxes; neither sphere casts
 }
 
 }  // namespace

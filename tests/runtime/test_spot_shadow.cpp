@@ -222,3 +222,52 @@ TEST(SpotShadow, TheShadowPassHasTheSpotsViewAfterTheCascades) {
   EXPECT_EQ(sun.spotViews, 0u);
   EXPECT_EQ(sun.cascades[3].viewport[0], 512u);
 }
+
+// The receiver's lookup (templates/forward.vert.glsl, chunks/shadow_spot.glsl) replayed in float on
+// the uniforms the pass gives: spotAtlasFromWorld · (p + n · spotNormalOffset.x · w), divided by w,
+// lands where the pass draws the normal-offset point p + n · normalBias texels of the view at p's
+// distance; and a normal across the ray moves the lookup by normalBias texels on the axis, at every
+// distance (1 / cos θ of them θ off the axis).
+TEST(SpotShadow, TheReceiversLookupIsThePassesTexelNormalBiasTexelsAlongTheNormal) {
+  for (double outer : {5.0, 30.0, 60.0}) {
+    Scene s = spotScene({0.3, -1, 0.2}, outer);
+    s.shadows.atlasSize = 2048;
+    s.shadows.normalBias = 2;
+    s.sun = Sun{};
+    s.sun->castShadows = true;
+    s.shadows.cascades = 4;  // the spot in the fifth cell of a 3×3 grid
+    const ShadowPassDesc pass = shadowPassDesc(s, {}, {});
+    ASSERT_EQ(pass.spotViews, 1u);
+    const ShadowCascadeDesc& view = pass.cascades.back();
+    const SpotShadow spot =
+        fitSpotShadow(s, 1, {view.viewport[0], view.viewport[1], view.viewport[2], view.viewport[3]});
+    const glm::mat4 m = glm::make_mat4(pass.uniforms.spotAtlasFromWorld);
+    const float k = pass.uniforms.spotNormalOffset[0];
+    EXPECT_FLOAT_EQ(k, float(2 * spot.texelPerMetre)) << outer;
+    const double atlas = s.shadows.atlasSize;
+    for (double along : {1.0, 4.0, 12.0}) {
+      for (double turn : {0.0, 1.0, 2.5, 4.0}) {
+        const glm::dvec3 p = conePoint(spot, along, glm::radians(outer) * 0.8, turn);
+        // A normal across the ray towards the light: the lookup moves in the view's plane.
+        const glm::dvec3 ray = glm::normalize(p - spot.position);
+        const glm::dvec3 n = glm::normalize(glm::cross(ray, glm::cross(spot.axis, ray)));
+        const glm::vec4 base = m * glm::vec4(glm::vec3(p), 1);
+        const glm::vec4 shader = base + m * glm::vec4(glm::vec3(n) * (k * base.w), 0);
+        const glm::dvec3 lookup(double(shader.x / shader.w) * atlas, double(shader.y / shader.w) * atlas,
+                                double(shader.z / shader.w));
+        const double w = glm::dot(p - spot.position, spot.axis);
+        EXPECT_NEAR(double(base.w), w, 1e-5 * w);
+        const glm::dvec3 expected = passAtlas(spot, p + n * (2 * spot.texelPerMetre * w));
+        EXPECT_NEAR(lookup.x, expected.x, 0.02) << outer << " " << along << " " << turn;
+        EXPECT_NEAR(lookup.y, expected.y, 0.02) << outer << " " << along << " " << turn;
+        EXPECT_NEAR(lookup.z, expected.z, 2e-5) << outer << " " << along << " " << turn;
+        // normalBias texels on the axis: a move δ across the ray at distance r = w / cos θ (θ off
+        // the axis) turns it by δ / r, which the view's plane stretches by 1 / cos² θ radially:
+        // δ = 2 · texelPerMetre · w moves the lookup 2 / cos θ texels in the plane of the axis.
+        const double off = glm::radians(outer) * 0.8;
+        const double moved = glm::length(glm::dvec2(expected) - glm::dvec2(passAtlas(spot, p)));
+        EXPECT_NEAR(moved, 2 / std::cos(off), 0.02 * 2 / std::cos(off)) << outer << " " << along;
+      }
+    }
+  }
+}

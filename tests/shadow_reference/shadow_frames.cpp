@@ -34,6 +34,25 @@ const std::string& packages() {
   return dir;
 }
 
+const std::string& spotPackages() {
+  static const std::string dir = [] {
+    compiler::BuildOptions options;
+    options.pointLightCounts = {1};
+    options.spotShadows = true;
+    return test::writePackagesFromTexts(
+        "vulkan-spot-shadows", {"material plastic { shading lit\n surface { baseColor = vec3(0.7, 0.7, 0.7) } }"},
+        options);
+  }();
+  return dir;
+}
+
+std::string withCasting(const std::string& json, int light, bool casts) {
+  if (light == kSun) return withSunCasting(json, casts);
+  nlohmann::ordered_json scene = nlohmann::ordered_json::parse(json);
+  scene["lights"][size_t(light)]["castShadows"] = casts;
+  return scene.dump();
+}
+
 std::string withSunCasting(const std::string& json, bool casts) {
   nlohmann::ordered_json scene = nlohmann::ordered_json::parse(json);
   scene["sun"]["castShadows"] = casts;
@@ -68,7 +87,7 @@ FrameResult render(RenderBackend& backend, const std::string& json, const std::s
   auto scene = parseScene(name + ".json", json, &error);
   EXPECT_TRUE(scene) << error;
   if (!scene) return result;
-  auto frame = SceneFrame::prepare(*scene, packages(), &error);
+  auto frame = SceneFrame::prepare(*scene, scene->lights.empty() ? packages() : spotPackages(), &error);
   EXPECT_TRUE(frame) << error;
   if (!frame) return result;
   if (shadow) *shadow = frame->frame().shadow ? frame->frame().shadow->uniforms : abi::ShadowUniforms{};
@@ -77,12 +96,23 @@ FrameResult render(RenderBackend& backend, const std::string& json, const std::s
   return result;
 }
 
-shadow_reference::ReferenceImage referenceOf(const std::string& json, const std::string& name, double footprint) {
+namespace {
+
+std::optional<shadow_reference::SunVisibility> visibilityOf(const shadow_reference::ShadowScene& scene, int light,
+                                                            std::string* error) {
+  return light == kSun ? shadow_reference::SunVisibility::build(scene, error)
+                       : shadow_reference::SunVisibility::buildSpot(scene, size_t(light), error);
+}
+
+}  // namespace
+
+shadow_reference::ReferenceImage referenceOf(const std::string& json, const std::string& name, double footprint,
+                                             int light) {
   std::string error;
   auto scene = shadow_reference::parseShadowScene(name + ".json", json, &error);
   EXPECT_TRUE(scene) << error;
   if (!scene) return {};
-  auto sun = shadow_reference::SunVisibility::build(*scene, &error);
+  auto sun = visibilityOf(*scene, light, &error);
   EXPECT_TRUE(sun) << error;
   if (!sun) return {};
   shadow_reference::ReferenceOptions options;
@@ -108,24 +138,25 @@ std::string renderToPng(RenderBackend& backend, const std::string& json, const s
   return path;
 }
 
-Measured measure(const std::string& json, const std::string& name, double footprint, Api api) {
+Measured measure(const std::string& json, const std::string& name, double footprint, Api api, int light) {
   auto backend = makeBackend(api);
   if (!backend) return {};
-  return measure(*backend, api, json, name, footprint);
+  return measure(*backend, api, json, name, footprint, light);
 }
 
-Measured measure(RenderBackend& backend, Api api, const std::string& json, const std::string& name, double footprint) {
+Measured measure(RenderBackend& backend, Api api, const std::string& json, const std::string& name, double footprint,
+                 int light) {
   Measured out;
   std::string error;
   const std::string prefix = std::string(apiName(api)) + "-" + name;
-  const std::string shadowed = renderToPng(backend, withSunCasting(json, true), prefix + "-shadowed", &out.shadow);
-  const std::string unshadowed = renderToPng(backend, withSunCasting(json, false), prefix + "-unshadowed");
+  const std::string shadowed = renderToPng(backend, withCasting(json, light, true), prefix + "-shadowed", &out.shadow);
+  const std::string unshadowed = renderToPng(backend, withCasting(json, light, false), prefix + "-unshadowed");
   auto rendered = shadow_reference::visibilityFromFrames(shadowed, unshadowed, &error);
   EXPECT_TRUE(rendered) << error;
   auto scene = shadow_reference::parseShadowScene(name + ".json", json, &error);
   EXPECT_TRUE(scene) << error;
   if (!rendered || !scene) return out;
-  auto sun = shadow_reference::SunVisibility::build(*scene, &error);
+  auto sun = visibilityOf(*scene, light, &error);
   EXPECT_TRUE(sun) << error;
   if (!sun) return out;
   shadow_reference::ReferenceOptions options;

@@ -1,7 +1,7 @@
 // Frames of the shadow pass (Vulkan or GL) scored against the ray-cast reference (docs/shadows.md,
-// "Visibility from the renderer"): a scene lit by the sun alone is rendered with and without its
-// pass, the ratio of the two frames is the rendered visibility, and the reference is ray-cast for
-// the same pixels. Shared by test_vulkan_shadows (the pass per tier on both backends) and
+// "Visibility from the renderer"): a scene lit by the sun alone (or by one spot light alone) is
+// rendered with and without its pass, the ratio of the two frames is the rendered visibility, and the reference is
+// ray-cast for the same pixels. Shared by test_vulkan_shadows (the pass per tier on both backends) and
 // test_vulkan_shadow_cases (the hard cases and the bias sweep).
 #pragma once
 
@@ -24,6 +24,12 @@ namespace facet::runtime::shadow_frames {
 // The packages every material of these scenes uses: `plastic`, a grey lit material, with the
 // receivers of 1, 2 and 4 cascades and the depth-only programs.
 const std::string& packages();
+// The same material with one point/spot light, as a receiver of its spot shadow (`.sp1`) and not,
+// without a sun's receivers, and the depth-only programs: what spot-lit scenes ask for.
+const std::string& spotPackages();
+
+// Which light's shadow a scene is measured for: the sun's (kSun), or the spot light /lights/N's.
+inline constexpr int kSun = -1;
 
 enum class Api { Vulkan, Gl };
 
@@ -33,19 +39,24 @@ const char* apiName(Api api);
 // context (GLES 3.2 on EGL where there is one, else OSMesa) with its debug output checked alike.
 std::unique_ptr<RenderBackend> makeBackend(Api api);
 
-// The scene's frame rendered by `backend` (empty after a failed EXPECT). `shadow`, when given,
-// receives the uniforms the receivers read (zeros without a pass).
+// The scene's frame rendered by `backend` (empty after a failed EXPECT) from packages() (a scene
+// lit by a spot light: spotPackages()). `shadow`, when given, receives the uniforms the receivers
+// read (zeros without a pass).
 FrameResult render(RenderBackend& backend, const std::string& json, const std::string& name,
                    abi::ShadowUniforms* shadow = nullptr);
 
-// The scene's ray-cast reference over a footprint of `footprint` metres (empty on failure).
-shadow_reference::ReferenceImage referenceOf(const std::string& json, const std::string& name, double footprint);
+// The scene's ray-cast reference over a footprint of `footprint` metres for the sun, or the spot
+// light /lights/`light` (empty on failure).
+shadow_reference::ReferenceImage referenceOf(const std::string& json, const std::string& name, double footprint,
+                                             int light = kSun);
 
 // The scene as text with the sun's castShadows set.
 std::string withSunCasting(const std::string& json, bool casts);
+// The scene as text with the castShadows of `light` (the sun, or /lights/N) set.
+std::string withCasting(const std::string& json, int light, bool casts);
 
-// A scene of tests/data/scenes/shadows/ made measurable: lit by the sun alone (sky luminance 0)
-// and every object `plastic`.
+// A scene of tests/data/scenes/shadows/ made measurable: no sky light (luminance 0), so lit by its
+// sun or spot alone, and every object `plastic`.
 std::string sunOnlyScene(const std::string& fileName);
 
 // The frame's LDR as a PNG in the test's scratch folder; its path, or "" after a failed EXPECT.
@@ -62,11 +73,13 @@ struct Measured {
   glm::dmat4 viewProjection{1.0};  // the camera's, world → GL clip
 };
 
-// The scene rendered on `api` with and without its shadow pass, and the reference over a
-// footprint of `footprint` metres.
-Measured measure(const std::string& json, const std::string& name, double footprint, Api api = Api::Vulkan);
+// The scene rendered on `api` with and without the shadow of `light` (the sun, or /lights/N: a spot
+// light, the scene's only light), and the reference over a footprint of `footprint` metres.
+Measured measure(const std::string& json, const std::string& name, double footprint, Api api = Api::Vulkan,
+                 int light = kSun);
 // The same on a backend of `api` the caller keeps over several frames.
-Measured measure(RenderBackend& backend, Api api, const std::string& json, const std::string& name, double footprint);
+Measured measure(RenderBackend& backend, Api api, const std::string& json, const std::string& name, double footprint,
+                 int light = kSun);
 
 // Mean rendered visibility over the measurable surface pixels whose footprint is all `visible`.
 double meanVisibility(const Measured& m, float visible, size_t* count);

@@ -181,7 +181,8 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
 
-// The sun's shadow, read by receiver variants (VariantKey shadowCascades > 0; docs/shadows.md).
+// The sun's shadow, read by receiver variants (VariantKey shadowCascades > 0; docs/shadows.md), and
+// a casting spot light's (spotShadows > 0).
 // Every cascade is an orthographic view of the sun in its own rectangle of one square depth atlas,
 // so all of them share one rotation: the vertex stage takes the position into the sun's frame once
 // (lightView: x, y across the rays, z along them, metres), and cascade i is a scale and an offset
@@ -203,8 +204,15 @@ struct ShadowUniforms {
   // x, y: visibility fades to 1 as clamp(viewDepth · x + y, 0, 1) goes from 0 to 1 (the shadow
   // distance's fade); z: the atlas's texels per side; w: 1 / z.
   float fadeAtlas[4];
+  // The casting spot light's view (light slot 0; `.sp1` receivers, docs/shadows.md "Spot
+  // shadows"): world → atlas (u·w, v·w, depth·w, w), its cell and window depth folded in, w the
+  // distance along the light's axis; a receiver divides by w in highp.
+  float spotAtlasFromWorld[16];
+  // x: the normal offset per metre of distance along the axis (normalBias × the view's texel width
+  // at 1 m; a texel at distance w is w times as wide); yzw: unused.
+  float spotNormalOffset[4];
 };
-static_assert(sizeof(ShadowUniforms) == 240, "std140 layout of ShadowUniforms");
+static_assert(sizeof(ShadowUniforms) == 320, "std140 layout of ShadowUniforms");
 
 // One instance's object-to-world transform: the top three rows of the column-major 4×4 model
 // matrix (the fourth is 0 0 0 1 for an affine transform), row r = (m[0][r], m[1][r], m[2][r],
@@ -328,6 +336,8 @@ inline constexpr MemberDesc kShadowMembers[] = {
     {"highp vec4", "splits"},
     {"highp vec4", "cameraForward"},
     {"highp vec4", "fadeAtlas"},
+    {"highp mat4", "spotAtlasFromWorld"},
+    {"highp vec4", "spotNormalOffset"},
 };
 inline constexpr BlockDesc kShadowBlock{"ShadowUniforms", "shadow",       kBlockSet,
                                         kShadowBinding,   kShadowMembers, uint32_t(sizeof(ShadowUniforms))};

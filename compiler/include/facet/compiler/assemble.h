@@ -53,7 +53,8 @@ inline constexpr uint32_t kEnvironmentLevels = abi::kEnvironmentLevels;
 // the DFG table (lit variants of split-sum tiers).
 bool samplesEnvironment(const AssemblyInput& input);
 bool samplesDfgLut(const AssemblyInput& input);
-// Shadow receivers (VariantKey shadowCascades > 0) read ShadowUniforms and the shadow atlas.
+// Shadow receivers (VariantKey::receivesShadow: the sun's, a spot's) read ShadowUniforms and the
+// shadow atlas.
 bool samplesShadowAtlas(const AssemblyInput& input);
 
 // Whether the variant's fragment stage samples the specular table (a lit variant with a light

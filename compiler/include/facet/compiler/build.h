@@ -66,6 +66,7 @@ struct BuildOptions {
   std::optional<permutations::SceneNeeds> scene;  // set: build only what the scene asks for
   std::vector<int> pointLightCounts{0};           // without a scene: the point-light permutations to build
   std::vector<int> shadowCascadeCounts{0};        // without a scene: the sun-shadow receiver permutations
+  bool spotShadows = false;  // without a scene: each variant with point lights also as a spot-shadow receiver (.sp1)
   // Testing only, never for shipping: the SPIR-V (Vulkan) target of mediump tiers rounds every
   // RelaxedPrecision float result to binary16 (OpQuantizeToF16), so lavapipe, which computes
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers

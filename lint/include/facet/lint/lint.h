@@ -39,6 +39,7 @@ struct LintOptions {
   double baselineTolerance = 0.05;     // a figure may grow by this fraction over the baseline
   // Sun-shadow receivers to build and check, as `matc compile --shadows` (0: none).
   std::vector<int> shadowCascadeCounts{0};
+  bool spotShadows = false;  // spot-shadow receivers (.sp1), as `matc compile --spot-shadows`
   // Per-GPU figures from Mesa's compilers (docs/mesa-statistics.md), e.g. {"mali-g57"}; none:
   // the cost model's figures only. Informational: no rule reads them.
   std::vector<std::string> gpus;

@@ -1,9 +1,10 @@
 // A variant key names one permutation of a material: one value per axis. Its string form is
 // stable across compiler versions (apps store it), e.g. "high.dir1", "mid.dir0.pt2" or
 // "low.dir1.sh4.pt1":
-//   <tier> "." "dir" <0|1> [ "." "sh" <1|2|4> ] [ "." "pt" <1|2|4> ]
+//   <tier> "." "dir" <0|1> [ "." "sh" <1|2|4> ] [ "." "pt" <1|2|4> [ "." "sp1" ] ]
 // or, for the shadow pass's depth-only program of a tier, <tier> "." "depth" (e.g. "mid.depth").
-// The shadow field follows dir1 only (the sun is what casts). The shadow and point-light fields
+// The shadow field follows dir1 only (the sun is what casts); the spot-shadow field follows a
+// point-light field only (light slot 0 is the casting spot). The shadow and point-light fields
 // are absent when their count is 0, so keys written before an axis existed still name the same
 // variants. A reader that meets a field it does not know rejects the key
 // rather than guessing.
@@ -39,6 +40,10 @@ inline constexpr int kMaxShadowCascades = 4;
 // kMaxShadowCascades.
 std::optional<int> shadowCascadePermutation(int cascades);
 
+// A casting spot light's shadow (docs/shadows.md, "Spot shadows"): a receiver reads it for light
+// slot 0, where the runtime puts the scene's one casting spot; 0 or 1.
+inline constexpr int kMaxSpotShadows = 1;
+
 struct VariantKey {
   Tier tier = Tier::High;
   bool directionalLight = true;
@@ -47,7 +52,10 @@ struct VariantKey {
   // The shadow pass's depth-only program (position only; a masked material's alpha test): no
   // lights, no shadow, no point lights. Its tier picks the alpha test's precision.
   bool depthOnly = false;
+  int spotShadows = 0;  // 0 or 1: light slot 0's shadow is received; non-zero only with pointLights
 
+  // Whether the variant samples the shadow atlas (a sun or a spot shadow receiver).
+  bool receivesShadow() const { return shadowCascades > 0 || spotShadows > 0; }
   std::string toString() const;
   static std::optional<VariantKey> parse(std::string_view text);
   // A tier's forward variants, then its depth-only program.
@@ -76,21 +84,22 @@ struct SceneNeeds {
 };
 
 // The key a renderer asks for: the scene's tier, whether a directional light is present, the
-// point-light permutation (pointLightPermutation of the frame's count) and the sun's shadow
+// point-light permutation (pointLightPermutation of the frame's count), the sun's shadow
 // cascades as the object receives them (shadowCascadePermutation; 0 for an object that does not
-// receive, or when nothing casts). Axes the material ignores are normalised (an unlit material
-// has only dir0, no point lights and no shadows; no sun, no shadow), so compiler and runtime agree
-// on the key without either knowing the other.
+// receive, or when nothing casts) and whether it receives a casting spot's shadow (light slot 0). Axes the material
+// ignores are normalised (an unlit material has only dir0, no point lights and no shadows; no sun, no shadow), so
+// compiler and runtime agree on the key without either knowing the other.
 VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directionalLight, int pointLights = 0,
-                      int shadowCascades = 0);
+                      int shadowCascades = 0, bool spotShadow = false);
 
 // Every variant the given tiers, point-light counts and shadow-cascade counts allow for the
 // material, in a stable (sorted) order; with a scene, exactly those of the scene's keys the tiers
-// allow (the scene's own counts, whatever the lists say). A non-zero shadow count adds each tier's
-// depth-only program for a material that casts.
+// allow (the scene's own counts, whatever the lists say). A non-zero shadow count, or spot
+// shadows, adds each tier's depth-only program for a material that casts. With spotShadows, every
+// variant with point lights comes with and without `.sp1`.
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
                                   const SceneNeeds* scene = nullptr, const std::vector<int>& pointLightCounts = {0},
-                                  const std::vector<int>& shadowCascadeCounts = {0});
+                                  const std::vector<int>& shadowCascadeCounts = {0}, bool spotShadows = false);
 
 // Tiers this compiler version builds shaders for.
 const std::vector<Tier>& supportedTiers();

@@ -36,7 +36,8 @@ struct VariantRequest {
   std::string tier = "high";
   bool sun = true;
   int pointLights = 0;
-  int shadowCascades = 0;  // the sun's cascades the variant receives (0: no shadow; docs/shadows.md)
+  int shadowCascades = 0;   // the sun's cascades the variant receives (0: no shadow; docs/shadows.md)
+  bool spotShadow = false;  // it receives light slot 0's spot shadow (`.sp1`; docs/shadows.md, "Spot shadows")
 };
 
 class MaterialInstance;

@@ -50,7 +50,7 @@ struct ProgramInterface {
     bool shadow = false;  // a depth texture with compare (the shadow atlas)
   };
   std::vector<Sampler> samplers;  // every sampler a draw of the variant binds
-  bool shadowReceiver = false;    // draws bind ShadowUniforms (a .sh variant)
+  bool shadowReceiver = false;    // draws bind ShadowUniforms (a .sh or .sp1 variant)
   bool depthOnly = false;         // the shadow pass's depth-only program: no colour target, no frame textures
   // Textures the package ships for this variant (section TEXS), by sampler name: some stage
   // samples each, as the package says.
