@@ -47,22 +47,22 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _515 = normalize(half3(in.v_normal));
-    float3 _532 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _644 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _753 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _644)), half(0.0), half(1.0));
-    half3 _761 = half3((half(0.1599999964237213134765625) * _753) * _753);
-    half _770 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _644)), half(0.08900000154972076416015625), half(1.0));
-    half3 _716 = reflect(-half3(_532), _515);
-    float4 _777 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_515, half3(_532)), half(9.9999997473787516355514526367188e-05)), _770)), level(0.0));
-    float4 _803 = facet_environment.sample(facet_environmentSmplr, float3(_716), level(_770 * half(4.0)));
-    half3 _731 = mix(half4(_777).xxx, half4(_777).yyy, _761) * (half3(float3(1.0)) + (_761 * ((half(1.0) / half4(_777).y) - half(1.0))));
-    half3 _569 = half4(frame.lightDirection).xyz;
-    half _967 = clamp(dot(_716, _569), half(0.0), half(1.0));
-    half _970 = _967 * _967;
-    half4 _1116 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_970 * _970, _770), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _982 = _1116.x;
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_644))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_803).xyz * _731) + min((_731 * ((_982 * _982) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_515, _569), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
+    half3 _521 = normalize(half3(in.v_normal));
+    float3 _538 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float _650 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _759 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _650)), half(0.0), half(1.0));
+    half3 _767 = half3((half(0.1599999964237213134765625) * _759) * _759);
+    half _776 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _650)), half(0.08900000154972076416015625), half(1.0));
+    half3 _722 = reflect(-half3(_538), _521);
+    float4 _783 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_521, half3(_538)), half(9.9999997473787516355514526367188e-05)), _776)), level(0.0));
+    float4 _814 = facet_environment.sample(facet_environmentSmplr, float3(_722), level(_776 * (half(4.0) * (half(2.0) - _776))));
+    half3 _737 = mix(half4(_783).xxx, half4(_783).yyy, _767) * (half3(float3(1.0)) + (_767 * ((half(1.0) / half4(_783).y) - half(1.0))));
+    half3 _575 = half4(frame.lightDirection).xyz;
+    half _978 = clamp(dot(_722, _575), half(0.0), half(1.0));
+    half _981 = _978 * _978;
+    half4 _1128 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_981 * _981, _776), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _993 = _1128.x;
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_650))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_814).xyz * _737) + min((_737 * ((_993 * _993) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_521, _575), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

@@ -51,66 +51,66 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _937 = normalize(half3(in.v_normal));
-    float3 _943 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half3 _1078 = half4(in.v_tangent).xyz;
-    half3 _1085 = _1078 - (_937 * dot(_937, _1078));
-    half _1087 = _937.z;
-    half3 _2203;
-    if (float(abs(_1087)) < 0.5)
+    half3 _943 = normalize(half3(in.v_normal));
+    float3 _949 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half3 _1084 = half4(in.v_tangent).xyz;
+    half3 _1091 = _1084 - (_943 * dot(_943, _1084));
+    half _1093 = _943.z;
+    half3 _2214;
+    if (float(abs(_1093)) < 0.5)
     {
-        _2203 = half3(-_937.y, _937.x, half(0.0));
+        _2214 = half3(-_943.y, _943.x, half(0.0));
     }
     else
     {
-        _2203 = half3(half(0.0), -_1087, _937.y);
+        _2214 = half3(half(0.0), -_1093, _943.y);
     }
-    half3 _1114 = normalize(half3(select(float3(_2203), float3(_1085), bool3(float(dot(_1085, _1085)) > 0.001000000047497451305389404296875))));
-    half _963 = max(dot(_937, half3(_943)), half(9.9999997473787516355514526367188e-05));
-    half3 _1127 = cross(_937, _1114);
-    half _1178 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
-    half2 _1173 = clamp(half2(half(1.0) + _1178, half(1.0) - _1178) * half(params.facet_alpha), half2(float2(0.007921000011265277862548828125)), half2(float2(1.0)));
-    half2 _1133 = half2(float2(1.0)) / _1173;
-    half2 _1135 = _1173 * half(128.0);
-    half _1141 = half(0.3183098733425140380859375) * (_1133.x * _1133.y);
-    half _1157 = length(half3(_1135 * half2(dot(_1114, half3(_943)), dot(_1127, half3(_943))), half(128.0) * _963));
-    half3 _2219 = select(_1127, _1114, bool3(float(_1178) >= 0.0));
-    half _1407 = dot(_2219, half3(_943));
-    half _1414 = min(abs(_1178) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
-    half _1419 = fma(half(-float(_1414)), half(1.0) - _963, half(1.0));
-    half _1422 = _1414 * _1407;
-    float4 _1462 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_963, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1488 = facet_environment.sample(facet_environmentSmplr, float3(((((_937 * _1419) + (_2219 * _1422)) * (half(512.0) * fma(_1419, _963, _1422 * _1407))) - (half3(_943) * (half(256.0) * fma(_1419, _1419, _1422 * _1422))))), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    float3 _1533 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1536 = dot(_1533, _1533);
-    float3 _1541 = _1533 * rsqrt(fast::max(_1536, 9.9999999392252902907785028219223e-09));
-    float _1545 = _1536 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1550 = fast::clamp(fma(-_1545, _1545, 1.0), 0.0, 1.0);
-    float _1569 = fast::clamp(fma(dot(-_1541, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1679 = fast::normalize(_943 + _1541);
-    half _1628 = clamp(dot(_937, half3(_1541)), half(0.0), half(1.0));
-    half _1632 = clamp(dot(_937, half3(_1679)), half(0.0), half(1.0));
-    half2 _1697 = half2(dot(_1114, half3(_1679)), dot(_1127, half3(_1679))) * _1133;
-    half _1705 = half(1.0) / fma(_1632, _1632, dot(_1697, _1697));
-    half _1746 = half(1.0) - clamp(dot(half3(_1541), half3(_1679)), half(0.0), half(1.0));
-    half _1749 = _1746 * _1746;
-    half3 _1757 = half3(float3(1.0)) - half3(float3(params.facet_f0));
-    half3 _1660 = min(((half3(float3(params.facet_f0)) + (_1757 * ((_1749 * _1749) * _1746))) * min(((_1141 * _1705) * _1705) * min(half(64.0) / fma(_1628, _1157, _963 * length(half3(_1135 * half2(dot(_1114, half3(_1541)), dot(_1127, half3(_1541))), half(128.0) * _1628))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1550) * half(_1550)) / fast::max(_1536, 9.9999997473787516355514526367188e-05)) * half(_1569)) * half(_1569)), float3(65504.0))) * _1628), half3(float3(65504.0)));
-    float3 _1815 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1818 = dot(_1815, _1815);
-    float3 _1823 = _1815 * rsqrt(fast::max(_1818, 9.9999999392252902907785028219223e-09));
-    float _1827 = _1818 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1832 = fast::clamp(fma(-_1827, _1827, 1.0), 0.0, 1.0);
-    float _1851 = fast::clamp(fma(dot(-_1823, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1961 = fast::normalize(_943 + _1823);
-    half _1910 = clamp(dot(_937, half3(_1823)), half(0.0), half(1.0));
-    half _1914 = clamp(dot(_937, half3(_1961)), half(0.0), half(1.0));
-    half2 _1979 = half2(dot(_1114, half3(_1961)), dot(_1127, half3(_1961))) * _1133;
-    half _1987 = half(1.0) / fma(_1914, _1914, dot(_1979, _1979));
-    half _2028 = half(1.0) - clamp(dot(half3(_1823), half3(_1961)), half(0.0), half(1.0));
-    half _2031 = _2028 * _2028;
-    half3 _1942 = min(((half3(float3(params.facet_f0)) + (_1757 * ((_2031 * _2031) * _2028))) * min(((_1141 * _1987) * _1987) * min(half(64.0) / fma(_1910, _1157, _963 * length(half3(_1135 * half2(dot(_1114, half3(_1823)), dot(_1127, half3(_1823))), half(128.0) * _1910))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1832) * half(_1832)) / fast::max(_1818, 9.9999997473787516355514526367188e-05)) * half(_1851)) * half(_1851)), float3(65504.0))) * _1910), half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_1488).xyz, mix(half4(_1462).xxx, half4(_1462).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1462).y) - half(1.0)))), _1660) + _1942, half(1.0)));
+    half3 _1120 = normalize(half3(select(float3(_2214), float3(_1091), bool3(float(dot(_1091, _1091)) > 0.001000000047497451305389404296875))));
+    half _969 = max(dot(_943, half3(_949)), half(9.9999997473787516355514526367188e-05));
+    half3 _1133 = cross(_943, _1120);
+    half _1184 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
+    half2 _1179 = clamp(half2(half(1.0) + _1184, half(1.0) - _1184) * half(params.facet_alpha), half2(float2(0.007921000011265277862548828125)), half2(float2(1.0)));
+    half2 _1139 = half2(float2(1.0)) / _1179;
+    half2 _1141 = _1179 * half(128.0);
+    half _1147 = half(0.3183098733425140380859375) * (_1139.x * _1139.y);
+    half _1163 = length(half3(_1141 * half2(dot(_1120, half3(_949)), dot(_1133, half3(_949))), half(128.0) * _969));
+    half3 _2230 = select(_1133, _1120, bool3(float(_1184) >= 0.0));
+    half _1413 = dot(_2230, half3(_949));
+    half _1420 = min(abs(_1184) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
+    half _1425 = fma(half(-float(_1420)), half(1.0) - _969, half(1.0));
+    half _1428 = _1420 * _1413;
+    float4 _1468 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_969, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1499 = facet_environment.sample(facet_environmentSmplr, float3(((((_943 * _1425) + (_2230 * _1428)) * (half(512.0) * fma(_1425, _969, _1428 * _1413))) - (half3(_949) * (half(256.0) * fma(_1425, _1425, _1428 * _1428))))), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    float3 _1544 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1547 = dot(_1544, _1544);
+    float3 _1552 = _1544 * rsqrt(fast::max(_1547, 9.9999999392252902907785028219223e-09));
+    float _1556 = _1547 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1561 = fast::clamp(fma(-_1556, _1556, 1.0), 0.0, 1.0);
+    float _1580 = fast::clamp(fma(dot(-_1552, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1690 = fast::normalize(_949 + _1552);
+    half _1639 = clamp(dot(_943, half3(_1552)), half(0.0), half(1.0));
+    half _1643 = clamp(dot(_943, half3(_1690)), half(0.0), half(1.0));
+    half2 _1708 = half2(dot(_1120, half3(_1690)), dot(_1133, half3(_1690))) * _1139;
+    half _1716 = half(1.0) / fma(_1643, _1643, dot(_1708, _1708));
+    half _1757 = half(1.0) - clamp(dot(half3(_1552), half3(_1690)), half(0.0), half(1.0));
+    half _1760 = _1757 * _1757;
+    half3 _1768 = half3(float3(1.0)) - half3(float3(params.facet_f0));
+    half3 _1671 = min(((half3(float3(params.facet_f0)) + (_1768 * ((_1760 * _1760) * _1757))) * min(((_1147 * _1716) * _1716) * min(half(64.0) / fma(_1639, _1163, _969 * length(half3(_1141 * half2(dot(_1120, half3(_1552)), dot(_1133, half3(_1552))), half(128.0) * _1639))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1561) * half(_1561)) / fast::max(_1547, 9.9999997473787516355514526367188e-05)) * half(_1580)) * half(_1580)), float3(65504.0))) * _1639), half3(float3(65504.0)));
+    float3 _1826 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1829 = dot(_1826, _1826);
+    float3 _1834 = _1826 * rsqrt(fast::max(_1829, 9.9999999392252902907785028219223e-09));
+    float _1838 = _1829 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1843 = fast::clamp(fma(-_1838, _1838, 1.0), 0.0, 1.0);
+    float _1862 = fast::clamp(fma(dot(-_1834, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1972 = fast::normalize(_949 + _1834);
+    half _1921 = clamp(dot(_943, half3(_1834)), half(0.0), half(1.0));
+    half _1925 = clamp(dot(_943, half3(_1972)), half(0.0), half(1.0));
+    half2 _1990 = half2(dot(_1120, half3(_1972)), dot(_1133, half3(_1972))) * _1139;
+    half _1998 = half(1.0) / fma(_1925, _1925, dot(_1990, _1990));
+    half _2039 = half(1.0) - clamp(dot(half3(_1834), half3(_1972)), half(0.0), half(1.0));
+    half _2042 = _2039 * _2039;
+    half3 _1953 = min(((half3(float3(params.facet_f0)) + (_1768 * ((_2042 * _2042) * _2039))) * min(((_1147 * _1998) * _1998) * min(half(64.0) / fma(_1921, _1163, _969 * length(half3(_1141 * half2(dot(_1120, half3(_1834)), dot(_1133, half3(_1834))), half(128.0) * _1921))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1843) * half(_1843)) / fast::max(_1829, 9.9999997473787516355514526367188e-05)) * half(_1862)) * half(_1862)), float3(65504.0))) * _1921), half3(float3(65504.0)));
+    out.fragColor = float4(half4(fma(half4(_1499).xyz, mix(half4(_1468).xxx, half4(_1468).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1468).y) - half(1.0)))), _1671) + _1953, half(1.0)));
     return out;
 }
 

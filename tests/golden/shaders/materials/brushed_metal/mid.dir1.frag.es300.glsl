@@ -84,7 +84,8 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
 }
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+float lod=perceptualRoughness*(float(5-1)*(2.0-perceptualRoughness));
+return textureLod(facet_environment,direction,lod).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;

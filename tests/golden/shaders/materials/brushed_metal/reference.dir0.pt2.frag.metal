@@ -51,63 +51,63 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _929 = fast::normalize(in.v_normal);
-    float3 _935 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float3 _1077 = in.v_tangent.xyz - (_929 * dot(_929, in.v_tangent.xyz));
-    float _1079 = _929.z;
-    float3 _2179;
-    if (abs(_1079) < 0.5)
+    float3 _935 = fast::normalize(in.v_normal);
+    float3 _941 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float3 _1083 = in.v_tangent.xyz - (_935 * dot(_935, in.v_tangent.xyz));
+    float _1085 = _935.z;
+    float3 _2190;
+    if (abs(_1085) < 0.5)
     {
-        _2179 = float3(-_929.y, _929.x, 0.0);
+        _2190 = float3(-_935.y, _935.x, 0.0);
     }
     else
     {
-        _2179 = float3(0.0, -_1079, _929.y);
+        _2190 = float3(0.0, -_1085, _935.y);
     }
-    float3 _1106 = fast::normalize(select(_2179, _1077, bool3(dot(_1077, _1077) > 0.001000000047497451305389404296875)));
-    float _955 = fast::max(dot(_929, _935), 9.9999997473787516355514526367188e-05);
-    float3 _1119 = cross(_929, _1106);
-    float _1170 = fast::clamp(params.anisotropy, -1.0, 1.0);
-    float2 _1165 = fast::clamp(float2(1.0 + _1170, 1.0 - _1170) * params.facet_alpha, float2(0.007921000011265277862548828125), float2(1.0));
-    float2 _1125 = float2(1.0) / _1165;
-    float2 _1127 = _1165 * 128.0;
-    float _1133 = 0.3183098733425140380859375 * (_1125.x * _1125.y);
-    float _1149 = length(float3(_1127 * float2(dot(_1106, _935), dot(_1119, _935)), 128.0 * _955));
-    float3 _2195 = select(_1119, _1106, bool3(_1170 >= 0.0));
-    float _1399 = dot(_2195, _935);
-    float _1406 = fast::min(abs(_1170) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
-    float _1411 = fma(-_1406, 1.0 - _955, 1.0);
-    float _1414 = _1406 * _1399;
-    float4 _1454 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_955, params.facet_perceptualRoughness), level(0.0));
-    float3 _1524 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1527 = dot(_1524, _1524);
-    float3 _1532 = _1524 * rsqrt(fast::max(_1527, 9.9999999392252902907785028219223e-09));
-    float _1536 = _1527 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1541 = fast::clamp(fma(-_1536, _1536, 1.0), 0.0, 1.0);
-    float _1560 = fast::clamp(fma(dot(-_1532, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1666 = fast::normalize(_935 + _1532);
-    float _1616 = fast::clamp(dot(_929, _1532), 0.0, 1.0);
-    float _1620 = fast::clamp(dot(_929, _1666), 0.0, 1.0);
-    float2 _1683 = float2(dot(_1106, _1666), dot(_1119, _1666)) * _1125;
-    float _1691 = 1.0 / fma(_1620, _1620, dot(_1683, _1683));
-    float _1730 = 1.0 - fast::clamp(dot(_1532, _1666), 0.0, 1.0);
-    float _1733 = _1730 * _1730;
-    float3 _1741 = float3(1.0) - float3(params.facet_f0);
-    float3 _1798 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1801 = dot(_1798, _1798);
-    float3 _1806 = _1798 * rsqrt(fast::max(_1801, 9.9999999392252902907785028219223e-09));
-    float _1810 = _1801 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1815 = fast::clamp(fma(-_1810, _1810, 1.0), 0.0, 1.0);
-    float _1834 = fast::clamp(fma(dot(-_1806, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1940 = fast::normalize(_935 + _1806);
-    float _1890 = fast::clamp(dot(_929, _1806), 0.0, 1.0);
-    float _1894 = fast::clamp(dot(_929, _1940), 0.0, 1.0);
-    float2 _1957 = float2(dot(_1106, _1940), dot(_1119, _1940)) * _1125;
-    float _1965 = 1.0 / fma(_1894, _1894, dot(_1957, _1957));
-    float _2004 = 1.0 - fast::clamp(dot(_1806, _1940), 0.0, 1.0);
-    float _2007 = _2004 * _2004;
-    float3 _2037 = fma(facet_environment.sample(facet_environmentSmplr, ((((_929 * _1411) + (_2195 * _1414)) * (512.0 * fma(_1411, _955, _1414 * _1399))) - (_935 * (256.0 * fma(_1411, _1411, _1414 * _1414)))), level(params.facet_perceptualRoughness * 4.0)).xyz, mix(_1454.xxx, _1454.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1454.y) - 1.0))), fast::min(((float3(params.facet_f0) + (_1741 * ((_1733 * _1733) * _1730))) * (((_1133 * _1691) * _1691) * (64.0 / fma(_1616, _1149, _955 * length(float3(_1127 * float2(dot(_1106, _1532), dot(_1119, _1532)), 128.0 * _1616)))))) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1541 * _1541) / fast::max(_1527, 9.9999997473787516355514526367188e-05)) * _1560) * _1560)) * _1616), float3(65504.0))) + fast::min(((float3(params.facet_f0) + (_1741 * ((_2007 * _2007) * _2004))) * (((_1133 * _1965) * _1965) * (64.0 / fma(_1890, _1149, _955 * length(float3(_1127 * float2(dot(_1106, _1806), dot(_1119, _1806)), 128.0 * _1890)))))) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1815 * _1815) / fast::max(_1801, 9.9999997473787516355514526367188e-05)) * _1834) * _1834)) * _1890), float3(65504.0));
-    out.fragColor = float4(_2037, 1.0);
+    float3 _1112 = fast::normalize(select(_2190, _1083, bool3(dot(_1083, _1083) > 0.001000000047497451305389404296875)));
+    float _961 = fast::max(dot(_935, _941), 9.9999997473787516355514526367188e-05);
+    float3 _1125 = cross(_935, _1112);
+    float _1176 = fast::clamp(params.anisotropy, -1.0, 1.0);
+    float2 _1171 = fast::clamp(float2(1.0 + _1176, 1.0 - _1176) * params.facet_alpha, float2(0.007921000011265277862548828125), float2(1.0));
+    float2 _1131 = float2(1.0) / _1171;
+    float2 _1133 = _1171 * 128.0;
+    float _1139 = 0.3183098733425140380859375 * (_1131.x * _1131.y);
+    float _1155 = length(float3(_1133 * float2(dot(_1112, _941), dot(_1125, _941)), 128.0 * _961));
+    float3 _2206 = select(_1125, _1112, bool3(_1176 >= 0.0));
+    float _1405 = dot(_2206, _941);
+    float _1412 = fast::min(abs(_1176) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
+    float _1417 = fma(-_1412, 1.0 - _961, 1.0);
+    float _1420 = _1412 * _1405;
+    float4 _1460 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_961, params.facet_perceptualRoughness), level(0.0));
+    float3 _1535 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1538 = dot(_1535, _1535);
+    float3 _1543 = _1535 * rsqrt(fast::max(_1538, 9.9999999392252902907785028219223e-09));
+    float _1547 = _1538 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1552 = fast::clamp(fma(-_1547, _1547, 1.0), 0.0, 1.0);
+    float _1571 = fast::clamp(fma(dot(-_1543, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1677 = fast::normalize(_941 + _1543);
+    float _1627 = fast::clamp(dot(_935, _1543), 0.0, 1.0);
+    float _1631 = fast::clamp(dot(_935, _1677), 0.0, 1.0);
+    float2 _1694 = float2(dot(_1112, _1677), dot(_1125, _1677)) * _1131;
+    float _1702 = 1.0 / fma(_1631, _1631, dot(_1694, _1694));
+    float _1741 = 1.0 - fast::clamp(dot(_1543, _1677), 0.0, 1.0);
+    float _1744 = _1741 * _1741;
+    float3 _1752 = float3(1.0) - float3(params.facet_f0);
+    float3 _1809 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1812 = dot(_1809, _1809);
+    float3 _1817 = _1809 * rsqrt(fast::max(_1812, 9.9999999392252902907785028219223e-09));
+    float _1821 = _1812 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1826 = fast::clamp(fma(-_1821, _1821, 1.0), 0.0, 1.0);
+    float _1845 = fast::clamp(fma(dot(-_1817, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1951 = fast::normalize(_941 + _1817);
+    float _1901 = fast::clamp(dot(_935, _1817), 0.0, 1.0);
+    float _1905 = fast::clamp(dot(_935, _1951), 0.0, 1.0);
+    float2 _1968 = float2(dot(_1112, _1951), dot(_1125, _1951)) * _1131;
+    float _1976 = 1.0 / fma(_1905, _1905, dot(_1968, _1968));
+    float _2015 = 1.0 - fast::clamp(dot(_1817, _1951), 0.0, 1.0);
+    float _2018 = _2015 * _2015;
+    float3 _2048 = fma(facet_environment.sample(facet_environmentSmplr, ((((_935 * _1417) + (_2206 * _1420)) * (512.0 * fma(_1417, _961, _1420 * _1405))) - (_941 * (256.0 * fma(_1417, _1417, _1420 * _1420)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz, mix(_1460.xxx, _1460.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1460.y) - 1.0))), fast::min(((float3(params.facet_f0) + (_1752 * ((_1744 * _1744) * _1741))) * (((_1139 * _1702) * _1702) * (64.0 / fma(_1627, _1155, _961 * length(float3(_1133 * float2(dot(_1112, _1543), dot(_1125, _1543)), 128.0 * _1627)))))) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1552 * _1552) / fast::max(_1538, 9.9999997473787516355514526367188e-05)) * _1571) * _1571)) * _1627), float3(65504.0))) + fast::min(((float3(params.facet_f0) + (_1752 * ((_2018 * _2018) * _2015))) * (((_1139 * _1976) * _1976) * (64.0 / fma(_1901, _1155, _961 * length(float3(_1133 * float2(dot(_1112, _1817), dot(_1125, _1817)), 128.0 * _1901)))))) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1826 * _1826) / fast::max(_1812, 9.9999997473787516355514526367188e-05)) * _1845) * _1845)) * _1901), float3(65504.0));
+    out.fragColor = float4(_2048, 1.0);
     return out;
 }
 

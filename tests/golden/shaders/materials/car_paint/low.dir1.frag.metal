@@ -50,23 +50,24 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _529 = normalize(half3(in.v_normal));
-    float3 _533 = fast::normalize(in.v_toEye);
-    half _699 = max(dot(_529, half3(_533)), half(9.9999997473787516355514526367188e-05));
-    half3 _703 = reflect(-half3(_533), _529);
-    float4 _739 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_699, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _765 = facet_environment.sample(facet_environmentSmplr, float3(_703), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _718 = mix(half4(_739).xxx, half4(_739).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_739).y) - half(1.0))));
-    half3 _581 = half4(frame.lightDirection).xyz;
-    half _894 = clamp(dot(_703, _581), half(0.0), half(1.0));
-    half _897 = _894 * _894;
-    half4 _1110 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_897 * _897, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _909 = _1110.x;
-    half _957 = half(1.0) - _699;
-    half _960 = _957 * _957;
-    float4 _984 = facet_environment.sample(facet_environmentSmplr, float3(_703), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _951 = mix(fma(half4(_765).xyz, _718, min((_718 * ((_909 * _909) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_529, _581), half(0.0), half(1.0))), half3(float3(65504.0)))), half4(_984).xyz, half3(fma(half(0.959999978542327880859375), (_960 * _960) * _957, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_951, half(1.0)));
+    half3 _535 = normalize(half3(in.v_normal));
+    float3 _539 = fast::normalize(in.v_toEye);
+    half _705 = max(dot(_535, half3(_539)), half(9.9999997473787516355514526367188e-05));
+    half3 _709 = reflect(-half3(_539), _535);
+    float4 _745 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_705, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _776 = facet_environment.sample(facet_environmentSmplr, float3(_709), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _724 = mix(half4(_745).xxx, half4(_745).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_745).y) - half(1.0))));
+    half3 _587 = half4(frame.lightDirection).xyz;
+    half _905 = clamp(dot(_709, _587), half(0.0), half(1.0));
+    half _908 = _905 * _905;
+    half4 _1128 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_908 * _908, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _920 = _1128.x;
+    half _968 = half(1.0) - _705;
+    half _971 = _968 * _968;
+    half _988 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
+    float4 _1000 = facet_environment.sample(facet_environmentSmplr, float3(_709), level(_988 * (half(4.0) * (half(2.0) - _988))));
+    half3 _962 = mix(fma(half4(_776).xyz, _724, min((_724 * ((_920 * _920) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_535, _587), half(0.0), half(1.0))), half3(float3(65504.0)))), half4(_1000).xyz, half3(fma(half(0.959999978542327880859375), (_971 * _971) * _968, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_962, half(1.0)));
     return out;
 }
 

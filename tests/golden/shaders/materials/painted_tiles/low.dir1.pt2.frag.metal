@@ -50,59 +50,59 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    float3 _772 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float2 _946 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _949 = facet_material_albedo.sample(facet_material_albedoSmplr, _946);
-    float4 _959 = facet_material_relief.sample(facet_material_reliefSmplr, _946);
-    half3 _963 = (half4(_959).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _969 = fract(_946 * 4.0);
-    float _971 = _969.x;
-    float _978 = _969.y;
-    half3 _2065;
+    float3 _777 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float2 _951 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _954 = facet_material_albedo.sample(facet_material_albedoSmplr, _951);
+    float4 _964 = facet_material_relief.sample(facet_material_reliefSmplr, _951);
+    half3 _968 = (half4(_964).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _974 = fract(_951 * 4.0);
+    float _976 = _974.x;
+    float _983 = _974.y;
+    half3 _2075;
     do
     {
-        half3 _1003 = half4(in.v_tangent).xyz;
-        if (float(dot(_1003, _1003)) == 0.0)
+        half3 _1008 = half4(in.v_tangent).xyz;
+        if (float(dot(_1008, _1008)) == 0.0)
         {
-            _2065 = normalize(half3(in.v_normal));
+            _2075 = normalize(half3(in.v_normal));
             break;
         }
-        _2065 = normalize(((_1003 * _963.x) + ((cross(half3(in.v_normal), _1003) * half(in.v_tangent.w)) * _963.y)) + (half3(in.v_normal) * _963.z));
+        _2075 = normalize(((_1008 * _968.x) + ((cross(half3(in.v_normal), _1008) * half(in.v_tangent.w)) * _968.y)) + (half3(in.v_normal) * _968.z));
         break;
     } while(false);
-    half3 _1046 = clamp(half4(_949).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _1055 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_971, 1.0 - _971), fast::min(_978, 1.0 - _978))))), half(0.0), half(1.0));
-    half3 _1152 = reflect(-half3(_772), _2065);
-    float4 _1214 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_2065, half3(_772)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1240 = facet_environment.sample(facet_environmentSmplr, float3(_1152), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _1167 = mix(half4(_1214).xxx, half4(_1214).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1214).y) - half(1.0))));
-    half3 _825 = half4(frame.lightDirection).xyz;
-    half _1399 = clamp(dot(_1152, _825), half(0.0), half(1.0));
-    half _1402 = _1399 * _1399;
-    half4 _2143 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1402 * _1402, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1414 = _2143.x;
-    float3 _1459 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1462 = dot(_1459, _1459);
-    float3 _1467 = _1459 * rsqrt(fast::max(_1462, 9.9999999392252902907785028219223e-09));
-    float _1471 = _1462 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1476 = fast::clamp(fma(-_1471, _1471, 1.0), 0.0, 1.0);
-    float _1495 = fast::clamp(fma(dot(-_1467, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half _1651 = clamp(dot(_1152, half3(_1467)), half(0.0), half(1.0));
-    half _1654 = _1651 * _1651;
-    half4 _2168 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1654 * _1654, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1666 = _2168.x;
-    float3 _1711 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1714 = dot(_1711, _1711);
-    float3 _1719 = _1711 * rsqrt(fast::max(_1714, 9.9999999392252902907785028219223e-09));
-    float _1723 = _1714 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1728 = fast::clamp(fma(-_1723, _1723, 1.0), 0.0, 1.0);
-    float _1747 = fast::clamp(fma(dot(-_1719, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half _1903 = clamp(dot(_1152, half3(_1719)), half(0.0), half(1.0));
-    half _1906 = _1903 * _1903;
-    half4 _2194 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1906 * _1906, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1918 = _2194.x;
-    half3 _1927 = (((fma(_1046 * half3(in.v_diffuseLight), max(half3(_1055), ((((((_1046 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _1055) + ((_1046 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _1055) + ((_1046 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _1055), _1046 * half3(in.v_directDiffuse)) + ((half4(_1240).xyz * _1167) * _1055)) + min((_1167 * ((_1414 * _1414) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_2065, _825), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_1167 * ((_1666 * _1666) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1476) * half(_1476)) / fast::max(_1462, 9.9999997473787516355514526367188e-05)) * half(_1495)) * half(_1495)), float3(65504.0))) * clamp(dot(_2065, half3(_1467)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_1167 * ((_1918 * _1918) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1728) * half(_1728)) / fast::max(_1714, 9.9999997473787516355514526367188e-05)) * half(_1747)) * half(_1747)), float3(65504.0))) * clamp(dot(_2065, half3(_1719)), half(0.0), half(1.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1927, half(1.0)));
+    half3 _1051 = clamp(half4(_954).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _1060 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_976, 1.0 - _976), fast::min(_983, 1.0 - _983))))), half(0.0), half(1.0));
+    half3 _1157 = reflect(-half3(_777), _2075);
+    float4 _1219 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_2075, half3(_777)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1250 = facet_environment.sample(facet_environmentSmplr, float3(_1157), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _1172 = mix(half4(_1219).xxx, half4(_1219).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1219).y) - half(1.0))));
+    half3 _830 = half4(frame.lightDirection).xyz;
+    half _1409 = clamp(dot(_1157, _830), half(0.0), half(1.0));
+    half _1412 = _1409 * _1409;
+    half4 _2155 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1412 * _1412, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1424 = _2155.x;
+    float3 _1469 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1472 = dot(_1469, _1469);
+    float3 _1477 = _1469 * rsqrt(fast::max(_1472, 9.9999999392252902907785028219223e-09));
+    float _1481 = _1472 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1486 = fast::clamp(fma(-_1481, _1481, 1.0), 0.0, 1.0);
+    float _1505 = fast::clamp(fma(dot(-_1477, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1661 = clamp(dot(_1157, half3(_1477)), half(0.0), half(1.0));
+    half _1664 = _1661 * _1661;
+    half4 _2180 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1664 * _1664, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1676 = _2180.x;
+    float3 _1721 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1724 = dot(_1721, _1721);
+    float3 _1729 = _1721 * rsqrt(fast::max(_1724, 9.9999999392252902907785028219223e-09));
+    float _1733 = _1724 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1738 = fast::clamp(fma(-_1733, _1733, 1.0), 0.0, 1.0);
+    float _1757 = fast::clamp(fma(dot(-_1729, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1913 = clamp(dot(_1157, half3(_1729)), half(0.0), half(1.0));
+    half _1916 = _1913 * _1913;
+    half4 _2206 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1916 * _1916, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1928 = _2206.x;
+    half3 _1937 = (((fma(_1051 * half3(in.v_diffuseLight), max(half3(_1060), ((((((_1051 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _1060) + ((_1051 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _1060) + ((_1051 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _1060), _1051 * half3(in.v_directDiffuse)) + ((half4(_1250).xyz * _1172) * _1060)) + min((_1172 * ((_1424 * _1424) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_2075, _830), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_1172 * ((_1676 * _1676) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1486) * half(_1486)) / fast::max(_1472, 9.9999997473787516355514526367188e-05)) * half(_1505)) * half(_1505)), float3(65504.0))) * clamp(dot(_2075, half3(_1477)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_1172 * ((_1928 * _1928) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1738) * half(_1738)) / fast::max(_1724, 9.9999997473787516355514526367188e-05)) * half(_1757)) * half(_1757)), float3(65504.0))) * clamp(dot(_2075, half3(_1729)), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1937, half(1.0)));
     return out;
 }
 

@@ -51,18 +51,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _434 = normalize(half3(in.v_normal));
-    float3 _438 = fast::normalize(in.v_toEye);
-    half3 _587 = reflect(-half3(_438), _434);
-    float4 _623 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_434, half3(_438)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _649 = facet_environment.sample(facet_environmentSmplr, float3(_587), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _602 = mix(half4(_623).xxx, half4(_623).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_623).y) - half(1.0))));
-    half3 _485 = half4(frame.lightDirection).xyz;
-    half _778 = clamp(dot(_587, _485), half(0.0), half(1.0));
-    half _781 = _778 * _778;
-    half4 _896 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_781 * _781, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _793 = _896.x;
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_649).xyz * _602) + min((_602 * ((_793 * _793) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_434, _485), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
+    half3 _440 = normalize(half3(in.v_normal));
+    float3 _444 = fast::normalize(in.v_toEye);
+    half3 _593 = reflect(-half3(_444), _440);
+    float4 _629 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_440, half3(_444)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _660 = facet_environment.sample(facet_environmentSmplr, float3(_593), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _608 = mix(half4(_629).xxx, half4(_629).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_629).y) - half(1.0))));
+    half3 _491 = half4(frame.lightDirection).xyz;
+    half _789 = clamp(dot(_593, _491), half(0.0), half(1.0));
+    half _792 = _789 * _789;
+    half4 _909 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_792 * _792, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _804 = _909.x;
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_660).xyz * _608) + min((_608 * ((_804 * _804) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_440, _491), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

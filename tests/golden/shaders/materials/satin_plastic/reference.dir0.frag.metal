@@ -48,20 +48,20 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _503 = fast::normalize(in.v_normal);
-    float3 _507 = fast::normalize(in.v_toEye);
-    float _616 = _503.y;
-    float _621 = _503.z;
-    float _626 = _503.x;
-    float _744 = fast::max(dot(_503, _507), 9.9999997473787516355514526367188e-05);
-    float3 _748 = reflect(-_507, _503);
-    float4 _783 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_744, params.facet_perceptualRoughness), level(0.0));
-    float _886 = fast::clamp(params.sheenRoughness, 0.08900000154972076416015625, 1.0);
-    float4 _843 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_744, _886), level(0.0));
-    float3 _893 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
-    float _856 = _843.z;
-    float3 _879 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _616)) + (frame.sh[2].xyz * _621)) + (frame.sh[3].xyz * _626)) + (((((frame.sh[4].xyz * (_626 * _616)) + (frame.sh[5].xyz * (_616 * _621))) + (frame.sh[6].xyz * fma(3.0 * _621, _621, -1.0))) + (frame.sh[7].xyz * (_626 * _621))) + (frame.sh[8].xyz * fma(_626, _626, -(_616 * _616)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _748, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_783.xxx, _783.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _783.y) - 1.0))))) * fma(-fast::max(_893.x, fast::max(_893.y, _893.z)), _856, 1.0);
-    out.fragColor = float4(fma(facet_environment.sample(facet_environmentSmplr, _748, level(_886 * 4.0)).xyz, _893 * _856, _879), 1.0);
+    float3 _509 = fast::normalize(in.v_normal);
+    float3 _513 = fast::normalize(in.v_toEye);
+    float _622 = _509.y;
+    float _627 = _509.z;
+    float _632 = _509.x;
+    float _750 = fast::max(dot(_509, _513), 9.9999997473787516355514526367188e-05);
+    float3 _754 = reflect(-_513, _509);
+    float4 _789 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_750, params.facet_perceptualRoughness), level(0.0));
+    float _897 = fast::clamp(params.sheenRoughness, 0.08900000154972076416015625, 1.0);
+    float4 _854 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_750, _897), level(0.0));
+    float3 _904 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
+    float _867 = _854.z;
+    float3 _890 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _622)) + (frame.sh[2].xyz * _627)) + (frame.sh[3].xyz * _632)) + (((((frame.sh[4].xyz * (_632 * _622)) + (frame.sh[5].xyz * (_622 * _627))) + (frame.sh[6].xyz * fma(3.0 * _627, _627, -1.0))) + (frame.sh[7].xyz * (_632 * _627))) + (frame.sh[8].xyz * fma(_632, _632, -(_622 * _622)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _754, level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_789.xxx, _789.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _789.y) - 1.0))))) * fma(-fast::max(_904.x, fast::max(_904.y, _904.z)), _867, 1.0);
+    out.fragColor = float4(fma(facet_environment.sample(facet_environmentSmplr, _754, level(_897 * (4.0 * (2.0 - _897)))).xyz, _904 * _867, _890), 1.0);
     return out;
 }
 

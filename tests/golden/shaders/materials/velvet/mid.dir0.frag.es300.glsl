@@ -70,7 +70,8 @@ material.sheenColor=params.sheen;
 material.subsurfaceColor=params.subsurface;
 }
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+float lod=perceptualRoughness*(float(5-1)*(2.0-perceptualRoughness));
+return textureLod(facet_environment,direction,lod).rgb;
 }
 vec3 shading_sheen_color=vec3(0.0);
 float shading_sheen_alpha=1.0;

@@ -86,7 +86,8 @@ e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n
 return max(e,vec3(0.0));
 }
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+float lod=perceptualRoughness*(float(5-1)*(2.0-perceptualRoughness));
+return textureLod(facet_environment,direction,lod).rgb;
 }
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
 float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
