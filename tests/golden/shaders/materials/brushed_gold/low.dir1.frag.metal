@@ -46,18 +46,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _443 = normalize(half3(in.v_normal));
-    float3 _447 = fast::normalize(in.v_toEye);
-    half3 _601 = reflect(-half3(_447), _443);
-    float4 _637 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_443, half3(_447)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _668 = facet_environment.sample(facet_environmentSmplr, float3(_601), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _616 = mix(half4(_637).xxx, half4(_637).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_637).y) - half(1.0))));
-    half3 _494 = half4(frame.lightDirection).xyz;
-    half _797 = clamp(dot(_601, _494), half(0.0), half(1.0));
-    half _800 = _797 * _797;
-    half4 _929 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_800 * _800, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _812 = _929.x;
-    out.fragColor = float4(half4(fma(half4(_668).xyz, _616, min((_616 * ((_812 * _812) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_443, _494), half(0.0), half(1.0))), half3(float3(65504.0)))), half(1.0)));
+    half3 _441 = normalize(half3(in.v_normal));
+    float3 _445 = fast::normalize(in.v_toEye);
+    half3 _599 = reflect(-half3(_445), _441);
+    float4 _635 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_441, half3(_445)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _664 = facet_environment.sample(facet_environmentSmplr, float3(_599), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _614 = mix(half4(_635).xxx, half4(_635).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_635).y) - half(1.0))));
+    half3 _492 = half4(frame.lightDirection).xyz;
+    half _793 = clamp(dot(_599, _492), half(0.0), half(1.0));
+    half _796 = _793 * _793;
+    half4 _925 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_796 * _796, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _808 = _925.x;
+    out.fragColor = float4(half4(fma(half4(_664).xyz, _614, min((_614 * ((_808 * _808) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_441, _492), half(0.0), half(1.0))), half3(float3(65504.0)))), half(1.0)));
     return out;
 }
 

@@ -27,11 +27,11 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _265 = normalize(half3(in.v_normal));
-    float3 _269 = fast::normalize(in.v_toEye);
-    float4 _435 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_265, half3(_269)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _466 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_269), _265)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(half4(_466).xyz * (mix(half4(_435).xxx, half4(_435).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_435).y) - half(1.0))))), half(1.0)));
+    half3 _263 = normalize(half3(in.v_normal));
+    float3 _267 = fast::normalize(in.v_toEye);
+    float4 _433 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_263, half3(_267)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _462 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_267), _263)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(half4(_462).xyz * (mix(half4(_433).xxx, half4(_433).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_433).y) - half(1.0))))), half(1.0)));
     return out;
 }
 

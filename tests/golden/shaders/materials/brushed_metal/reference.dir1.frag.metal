@@ -51,41 +51,41 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _837 = fast::normalize(in.v_normal);
-    float3 _841 = fast::normalize(in.v_toEye);
-    float3 _967 = in.v_tangent.xyz - (_837 * dot(_837, in.v_tangent.xyz));
-    float _969 = _837.z;
-    float3 _1671;
-    if (abs(_969) < 0.5)
+    float3 _835 = fast::normalize(in.v_normal);
+    float3 _839 = fast::normalize(in.v_toEye);
+    float3 _965 = in.v_tangent.xyz - (_835 * dot(_835, in.v_tangent.xyz));
+    float _967 = _835.z;
+    float3 _1667;
+    if (abs(_967) < 0.5)
     {
-        _1671 = float3(-_837.y, _837.x, 0.0);
+        _1667 = float3(-_835.y, _835.x, 0.0);
     }
     else
     {
-        _1671 = float3(0.0, -_969, _837.y);
+        _1667 = float3(0.0, -_967, _835.y);
     }
-    float3 _996 = fast::normalize(select(_1671, _967, bool3(dot(_967, _967) > 0.001000000047497451305389404296875)));
-    float _861 = fast::max(dot(_837, _841), 9.9999997473787516355514526367188e-05);
-    float3 _1009 = cross(_837, _996);
-    float _1060 = fast::clamp(params.anisotropy, -1.0, 1.0);
-    float2 _1055 = fast::clamp(float2(1.0 + _1060, 1.0 - _1060) * params.facet_alpha, float2(0.007921000011265277862548828125), float2(1.0));
-    float2 _1015 = float2(1.0) / _1055;
-    float2 _1017 = _1055 * 128.0;
-    float3 _1685 = select(_1009, _996, bool3(_1060 >= 0.0));
-    float _1289 = dot(_1685, _841);
-    float _1296 = fast::min(abs(_1060) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
-    float _1301 = fma(-_1296, 1.0 - _861, 1.0);
-    float _1304 = _1296 * _1289;
-    float4 _1344 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_861, params.facet_perceptualRoughness), level(0.0));
-    float3 _1481 = fast::normalize(_841 + frame.lightDirection.xyz);
-    float _1431 = fast::clamp(dot(_837, frame.lightDirection.xyz), 0.0, 1.0);
-    float _1435 = fast::clamp(dot(_837, _1481), 0.0, 1.0);
-    float2 _1498 = float2(dot(_996, _1481), dot(_1009, _1481)) * _1015;
-    float _1506 = 1.0 / fma(_1435, _1435, dot(_1498, _1498));
-    float _1545 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1481), 0.0, 1.0);
-    float _1548 = _1545 * _1545;
-    float3 _1578 = fma(facet_environment.sample(facet_environmentSmplr, ((((_837 * _1301) + (_1685 * _1304)) * (512.0 * fma(_1301, _861, _1304 * _1289))) - (_841 * (256.0 * fma(_1301, _1301, _1304 * _1304)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz, mix(_1344.xxx, _1344.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1344.y) - 1.0))), fast::min(((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1548 * _1548) * _1545))) * ((((0.3183098733425140380859375 * (_1015.x * _1015.y)) * _1506) * _1506) * (64.0 / fma(_1431, length(float3(_1017 * float2(dot(_996, _841), dot(_1009, _841)), 128.0 * _861)), _861 * length(float3(_1017 * float2(dot(_996, frame.lightDirection.xyz), dot(_1009, frame.lightDirection.xyz)), 128.0 * _1431)))))) * (frame.lightColor.xyz * _1431), float3(65504.0)));
-    out.fragColor = float4(_1578, 1.0);
+    float3 _994 = fast::normalize(select(_1667, _965, bool3(dot(_965, _965) > 0.001000000047497451305389404296875)));
+    float _859 = fast::max(dot(_835, _839), 9.9999997473787516355514526367188e-05);
+    float3 _1007 = cross(_835, _994);
+    float _1058 = fast::clamp(params.anisotropy, -1.0, 1.0);
+    float2 _1053 = fast::clamp(float2(1.0 + _1058, 1.0 - _1058) * params.facet_alpha, float2(0.007921000011265277862548828125), float2(1.0));
+    float2 _1013 = float2(1.0) / _1053;
+    float2 _1015 = _1053 * 128.0;
+    float3 _1681 = select(_1007, _994, bool3(_1058 >= 0.0));
+    float _1287 = dot(_1681, _839);
+    float _1294 = fast::min(abs(_1058) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
+    float _1299 = fma(-_1294, 1.0 - _859, 1.0);
+    float _1302 = _1294 * _1287;
+    float4 _1342 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_859, params.facet_perceptualRoughness), level(0.0));
+    float3 _1477 = fast::normalize(_839 + frame.lightDirection.xyz);
+    float _1427 = fast::clamp(dot(_835, frame.lightDirection.xyz), 0.0, 1.0);
+    float _1431 = fast::clamp(dot(_835, _1477), 0.0, 1.0);
+    float2 _1494 = float2(dot(_994, _1477), dot(_1007, _1477)) * _1013;
+    float _1502 = 1.0 / fma(_1431, _1431, dot(_1494, _1494));
+    float _1541 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1477), 0.0, 1.0);
+    float _1544 = _1541 * _1541;
+    float3 _1574 = fma(facet_environment.sample(facet_environmentSmplr, ((((_835 * _1299) + (_1681 * _1302)) * (512.0 * fma(_1299, _859, _1302 * _1287))) - (_839 * (256.0 * fma(_1299, _1299, _1302 * _1302)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz, mix(_1342.xxx, _1342.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1342.y) - 1.0))), fast::min(((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1544 * _1544) * _1541))) * ((((0.3183098733425140380859375 * (_1013.x * _1013.y)) * _1502) * _1502) * (64.0 / fma(_1427, length(float3(_1015 * float2(dot(_994, _839), dot(_1007, _839)), 128.0 * _859)), _859 * length(float3(_1015 * float2(dot(_994, frame.lightDirection.xyz), dot(_1007, frame.lightDirection.xyz)), 128.0 * _1427)))))) * (frame.lightColor.xyz * _1427), float3(65504.0)));
+    out.fragColor = float4(_1574, 1.0);
     return out;
 }
 

@@ -48,34 +48,34 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    float3 _657 = fast::normalize(in.v_toEye);
-    float2 _755 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _758 = facet_material_albedo.sample(facet_material_albedoSmplr, _755);
-    float4 _768 = facet_material_relief.sample(facet_material_reliefSmplr, _755);
-    half3 _772 = (half4(_768).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _778 = fract(_755 * 4.0);
-    float _780 = _778.x;
-    float _787 = _778.y;
-    half3 _1299;
+    float3 _655 = fast::normalize(in.v_toEye);
+    float2 _753 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _756 = facet_material_albedo.sample(facet_material_albedoSmplr, _753);
+    float4 _766 = facet_material_relief.sample(facet_material_reliefSmplr, _753);
+    half3 _770 = (half4(_766).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _776 = fract(_753 * 4.0);
+    float _778 = _776.x;
+    float _785 = _776.y;
+    half3 _1295;
     do
     {
-        half3 _812 = half4(in.v_tangent).xyz;
-        if (float(dot(_812, _812)) == 0.0)
+        half3 _810 = half4(in.v_tangent).xyz;
+        if (float(dot(_810, _810)) == 0.0)
         {
-            _1299 = normalize(half3(in.v_normal));
+            _1295 = normalize(half3(in.v_normal));
             break;
         }
-        _1299 = normalize(((_812 * _772.x) + ((cross(half3(in.v_normal), _812) * half(in.v_tangent.w)) * _772.y)) + (half3(in.v_normal) * _772.z));
+        _1295 = normalize(((_810 * _770.x) + ((cross(half3(in.v_normal), _810) * half(in.v_tangent.w)) * _770.y)) + (half3(in.v_normal) * _770.z));
         break;
     } while(false);
-    half3 _949 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1299.y)) + (half4(frame.sh[2]).xyz * _1299.z)) + (half4(frame.sh[3]).xyz * _1299.x)) + (((((half4(frame.sh[4]).xyz * (_1299.x * _1299.y)) + (half4(frame.sh[5]).xyz * (_1299.y * _1299.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1299.z, _1299.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1299.x * _1299.z))) + (half4(frame.sh[8]).xyz * fma(_1299.x, _1299.x, half(-float(_1299.y * _1299.y))))), half3(float3(0.0)));
-    half3 _972 = clamp(half4(_758).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _981 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_780, 1.0 - _780), fast::min(_787, 1.0 - _787))))), half(0.0), half(1.0));
-    half _1062 = max(dot(_1299, half3(_657)), half(9.9999997473787516355514526367188e-05));
-    float4 _1127 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1062, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1158 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_657), _1299)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _1199 = fma(_972 * _949, max(half3(_981), ((((((_972 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _981) + ((_972 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _981) + ((_972 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _981), (half4(_1158).xyz * (mix(half4(_1127).xxx, half4(_1127).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1127).y) - half(1.0)))))) * clamp((exp2(exp2(fma(half(-16.0), half(params.facet_perceptualRoughness) * half(params.facet_perceptualRoughness), half(-1.0))) * log2(_1062 + _981)) - half(1.0)) + _981, half(0.0), half(1.0)));
-    out.fragColor = float4(half4(_1199, half(1.0)));
+    half3 _947 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1295.y)) + (half4(frame.sh[2]).xyz * _1295.z)) + (half4(frame.sh[3]).xyz * _1295.x)) + (((((half4(frame.sh[4]).xyz * (_1295.x * _1295.y)) + (half4(frame.sh[5]).xyz * (_1295.y * _1295.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1295.z, _1295.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1295.x * _1295.z))) + (half4(frame.sh[8]).xyz * fma(_1295.x, _1295.x, half(-float(_1295.y * _1295.y))))), half3(float3(0.0)));
+    half3 _970 = clamp(half4(_756).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _979 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_778, 1.0 - _778), fast::min(_785, 1.0 - _785))))), half(0.0), half(1.0));
+    half _1060 = max(dot(_1295, half3(_655)), half(9.9999997473787516355514526367188e-05));
+    float4 _1125 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1060, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1154 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_655), _1295)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _1195 = fma(_970 * _947, max(half3(_979), ((((((_970 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _979) + ((_970 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _979) + ((_970 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _979), (half4(_1154).xyz * (mix(half4(_1125).xxx, half4(_1125).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1125).y) - half(1.0)))))) * clamp((exp2(exp2(fma(half(-16.0), half(params.facet_perceptualRoughness) * half(params.facet_perceptualRoughness), half(-1.0))) * log2(_1060 + _979)) - half(1.0)) + _979, half(0.0), half(1.0)));
+    out.fragColor = float4(half4(_1195, half(1.0)));
     return out;
 }
 

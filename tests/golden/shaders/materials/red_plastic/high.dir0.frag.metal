@@ -50,15 +50,15 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _398 = normalize(half3(in.v_normal));
-    float3 _402 = fast::normalize(in.v_toEye);
-    half _499 = _398.y;
-    half _504 = _398.z;
-    half _509 = _398.x;
-    half3 _577 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _499)) + (half4(frame.sh[2]).xyz * _504)) + (half4(frame.sh[3]).xyz * _509)) + (((((half4(frame.sh[4]).xyz * (_509 * _499)) + (half4(frame.sh[5]).xyz * (_499 * _504))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _504, _504, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_509 * _504))) + (half4(frame.sh[8]).xyz * fma(_509, _509, half(-float(_499 * _499))))), half3(float3(0.0)));
-    float4 _666 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_398, half3(_402)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _697 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_402), _398)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), _577, half4(_697).xyz * (mix(half4(_666).xxx, half4(_666).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_666).y) - half(1.0)))))), half(1.0)));
+    half3 _396 = normalize(half3(in.v_normal));
+    float3 _400 = fast::normalize(in.v_toEye);
+    half _497 = _396.y;
+    half _502 = _396.z;
+    half _507 = _396.x;
+    half3 _575 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _497)) + (half4(frame.sh[2]).xyz * _502)) + (half4(frame.sh[3]).xyz * _507)) + (((((half4(frame.sh[4]).xyz * (_507 * _497)) + (half4(frame.sh[5]).xyz * (_497 * _502))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _502, _502, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_507 * _502))) + (half4(frame.sh[8]).xyz * fma(_507, _507, half(-float(_497 * _497))))), half3(float3(0.0)));
+    float4 _664 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_396, half3(_400)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _693 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_400), _396)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), _575, half4(_693).xyz * (mix(half4(_664).xxx, half4(_664).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_664).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

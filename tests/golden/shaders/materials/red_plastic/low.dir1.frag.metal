@@ -51,18 +51,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _440 = normalize(half3(in.v_normal));
-    float3 _444 = fast::normalize(in.v_toEye);
-    half3 _593 = reflect(-half3(_444), _440);
-    float4 _629 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_440, half3(_444)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _660 = facet_environment.sample(facet_environmentSmplr, float3(_593), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _608 = mix(half4(_629).xxx, half4(_629).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_629).y) - half(1.0))));
-    half3 _491 = half4(frame.lightDirection).xyz;
-    half _789 = clamp(dot(_593, _491), half(0.0), half(1.0));
-    half _792 = _789 * _789;
-    half4 _909 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_792 * _792, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _804 = _909.x;
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_660).xyz * _608) + min((_608 * ((_804 * _804) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_440, _491), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
+    half3 _438 = normalize(half3(in.v_normal));
+    float3 _442 = fast::normalize(in.v_toEye);
+    half3 _591 = reflect(-half3(_442), _438);
+    float4 _627 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_438, half3(_442)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _656 = facet_environment.sample(facet_environmentSmplr, float3(_591), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _606 = mix(half4(_627).xxx, half4(_627).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_627).y) - half(1.0))));
+    half3 _489 = half4(frame.lightDirection).xyz;
+    half _785 = clamp(dot(_591, _489), half(0.0), half(1.0));
+    half _788 = _785 * _785;
+    half4 _905 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_788 * _788, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _800 = _905.x;
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_656).xyz * _606) + min((_606 * ((_800 * _800) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_438, _489), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

@@ -51,20 +51,20 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _456 = normalize(half3(in.v_normal));
-    float3 _460 = fast::normalize(in.v_toEye);
-    half _602 = max(dot(_456, half3(_460)), half(9.9999997473787516355514526367188e-05));
-    float4 _641 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_602, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _660 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_641).y) - half(1.0)));
-    float4 _672 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_460), _456)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _507 = half4(frame.lightDirection).xyz;
-    half3 _779 = normalize(half3(_460) + _507);
-    half _730 = clamp(dot(_456, _507), half(0.0), half(1.0));
-    half3 _806 = cross(_456, _779);
-    half _809 = clamp(dot(_456, _779), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _826 = max(mix((half(2.0) * _730) * _602, _730 + _602, half(params.facet_alpha)), half(0.000244140625));
-    half _833 = (half(1024.0) * half(params.facet_alpha)) / (fma(_809, _809, dot(_806, _806)) * (half(6433.98193359375) * _826));
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_672).xyz * (mix(half4(_641).xxx, half4(_641).yyy, half3(float3(params.facet_f0))) * _660)) + min(((half3(float3(params.facet_f0)) * min(_833 * (_833 * (half(6.283185482025146484375) * _826)), half(65504.0))) * _660) * (half4(frame.lightColor).xyz * _730), half3(float3(65504.0))), half(1.0)));
+    half3 _454 = normalize(half3(in.v_normal));
+    float3 _458 = fast::normalize(in.v_toEye);
+    half _600 = max(dot(_454, half3(_458)), half(9.9999997473787516355514526367188e-05));
+    float4 _639 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_600, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _658 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_639).y) - half(1.0)));
+    float4 _668 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_458), _454)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _505 = half4(frame.lightDirection).xyz;
+    half3 _775 = normalize(half3(_458) + _505);
+    half _726 = clamp(dot(_454, _505), half(0.0), half(1.0));
+    half3 _802 = cross(_454, _775);
+    half _805 = clamp(dot(_454, _775), half(0.0), half(1.0)) * half(params.facet_alpha);
+    half _822 = max(mix((half(2.0) * _726) * _600, _726 + _600, half(params.facet_alpha)), half(0.000244140625));
+    half _829 = (half(1024.0) * half(params.facet_alpha)) / (fma(_805, _805, dot(_802, _802)) * (half(6433.98193359375) * _822));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_668).xyz * (mix(half4(_639).xxx, half4(_639).yyy, half3(float3(params.facet_f0))) * _658)) + min(((half3(float3(params.facet_f0)) * min(_829 * (_829 * (half(6.283185482025146484375) * _822)), half(65504.0))) * _658) * (half4(frame.lightColor).xyz * _726), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 
