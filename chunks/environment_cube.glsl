@@ -4,7 +4,7 @@
 // faces (seamless in both APIs), so the lookup costs the shader no arithmetic, where an octahedral
 // map's fold (one reciprocal, abs, selects) costs 0.11 Mali-G57 cycles per lookup and an equirect
 // atan + acos 0.34 (docs/platform-facts.md, "The environment lookup").
-// Level m holds perceptual roughness m / (levels − 1) (facet::ibl::prefilterLevelRoughness),
+// Level m holds perceptual roughness 1 − √(1 − m / (levels − 1)) (facet::ibl::prefilterLevelRoughness),
 // FACET_ENVIRONMENT_LEVELS set by the assembler; every read passes an explicit lod, so no
 // derivative is taken (none is needed, and the face changes under a pixel's footprint at edges).
 // Precision: the direction is the tier's (mediump on mobile tiers) and need not be unit length

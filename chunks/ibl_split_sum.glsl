@@ -1,7 +1,7 @@
 // Split-sum image-based specular (Karis 2013, "Real Shading in Unreal Engine 4"), in Filament's
 // form (Guy's Filament mobile talk, multiple-scattering slides; docs/ibl.md):
 //   L_spec ≈ prefiltered(R, r) · (f0 · A + B),   f0·A + B = mix(dfg.x, dfg.y, f0)   (f90 = 1)
-//   prefiltered: facet_environment at lod = r · (levels − 1), R = reflect(−v, n)
+//   prefiltered: facet_environment at lod = (levels − 1) · r (2 − r), R = reflect(−v, n)
 //   dfg = (B, A + B) from facet_dfgLut at (n·v, r)
 // Energy compensation (multiple scattering, same slides; every preset): single-scattering GGX
 // loses the energy of light bouncing between microfacets, up to 68 % for rough metals; scaling

@@ -143,7 +143,11 @@ std::vector<EquirectImage> sourceMipChain(const EquirectImage& source) {
 
 }  // namespace
 
-double prefilterLevelRoughness(int level, int levels) { return levels > 1 ? double(level) / double(levels - 1) : 0.0; }
+double prefilterLevelRoughness(int level, int levels) {
+  if (levels <= 1) return 0.0;
+  // The inverse of the shader's lod = (levels − 1) · r (2 − r) (chunks/ibl_prefiltered.glsl).
+  return 1.0 - std::sqrt(1.0 - double(level) / double(levels - 1));
+}
 
 std::vector<EquirectImage> prefilterEnvironment(const EquirectImage& source, const PrefilterOptions& options) {
   const int levels = options.levels;

@@ -314,13 +314,15 @@ const std::vector<EquirectImage>& prefilteredSunSky() {
 
 }  // namespace
 
-TEST(Prefilter, LevelsHalveResolutionAndMapRoughnessLinearly) {
+TEST(Prefilter, LevelsHalveResolutionAndInvertTheShadersLodMapping) {
   const std::vector<EquirectImage>& levels = prefilteredSunSky();
   ASSERT_EQ(levels.size(), 5u);
   for (int m = 0; m < 5; ++m) {
     EXPECT_EQ(levels[size_t(m)].width, 128 >> m);
     EXPECT_EQ(levels[size_t(m)].height, 64 >> m);
-    EXPECT_DOUBLE_EQ(prefilterLevelRoughness(m, 5), m / 4.0);
+    // The shader reads lod = 4 r (2 − r) (chunks/ibl_prefiltered.glsl): level m must hold its inverse.
+    const double r = prefilterLevelRoughness(m, 5);
+    EXPECT_NEAR(4.0 * r * (2.0 - r), double(m), 1e-12);
   }
 }
 

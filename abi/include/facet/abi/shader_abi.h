@@ -107,8 +107,9 @@ inline constexpr uint32_t kSpecularLutWidth = 128;
 inline constexpr uint32_t kSpecularLutHeight = 64;
 inline constexpr const char* kDfgLutName = "facet_dfgLut";            // RGBA16F 64×64, one level (docs/ibl.md layout)
 inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F cube map, kEnvironmentLevels levels
-// Levels of the prefiltered environment: level m holds perceptual roughness m / (levels − 1), so
-// the shaders read lod = roughness × (kEnvironmentLevels − 1) (chunks/ibl_split_sum.glsl).
+// Levels of the prefiltered environment: level m holds perceptual roughness r_m with
+// r_m (2 − r_m) = m / (levels − 1), so the shaders read lod = r (2 − r) × (kEnvironmentLevels − 1)
+// (chunks/ibl_prefiltered.glsl).
 inline constexpr uint32_t kEnvironmentLevels = 5;
 inline constexpr uint32_t kShCoefficients = 9;  // SH3; SH2 variants read the first 4
 inline constexpr uint32_t kMaterialTextureBase = 8;

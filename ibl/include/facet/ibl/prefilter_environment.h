@@ -3,12 +3,13 @@
 // for a range of roughness values, one mip level per roughness, for the shader to fetch at the
 // reflected direction with textureLod(environment, uv(R), lod).
 //
-// Mapping: level m of `levels` holds perceptual roughness r_m = m / (levels − 1), so the shader
-// uses lod = r · (levels − 1). Level m is the source's resolution halved m times (an equirect
-// 2h × h stays 2h/2^m × h/2^m), level 0 is the source itself (r = 0 is a mirror).
-// Filament maps with lod = (levels − 1) · r (2 − r) instead (Guy's Filament mobile talk,
-// "Roughness mapping"), spending more levels on glossy surfaces; prefilterLevelRoughness is the
-// one place to change if Facet follows.
+// Mapping: level m of `levels` holds the perceptual roughness r_m with r_m (2 − r_m) = m /
+// (levels − 1), so the shader uses lod = (levels − 1) · r (2 − r) (Guy's Filament mobile talk,
+// "Roughness mapping"): more levels for glossy surfaces, where the lobe changes fastest with r
+// and a blend of two levels is furthest from the lobe between them (docs/eval.md, "The ground
+// truth", has what it gained over the linear lod = (levels − 1) · r). Level m is the source's
+// resolution halved m times (an equirect 2h × h stays 2h/2^m × h/2^m), level 0 is the source
+// itself (r = 0 is a mirror).
 //
 // Per output texel with direction n the lobe assumes n = v = r (Karis 2013: the isotropic lobe
 // loses its stretch at grazing angles, the price of a 2D table), importance-samples h ~ D n·h, and
@@ -42,7 +43,7 @@ struct PrefilterOptions {
   int threads = 0;
 };
 
-/// Perceptual roughness of `level`: level / (levels − 1), 0 when levels == 1.
+/// Perceptual roughness of `level`: 1 − √(1 − level / (levels − 1)), 0 when levels == 1.
 double prefilterLevelRoughness(int level, int levels);
 
 /// The mip chain, levels[0] at the source's resolution. The source must be 2h × h with h

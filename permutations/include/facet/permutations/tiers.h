@@ -18,7 +18,7 @@ enum class ColorSpace { Linear, GammaHack };
 enum class PrecisionPolicy { Highp, Mediump };
 // Image-based ambient light (docs/ibl.md, "In the shaders"). Diffuse always comes from SH
 // irradiance (per pixel or per vertex, as the diffuse axis says); the models differ in specular:
-//   SplitSum  prefiltered environment at lod = r·(levels − 1), times the DFG table (Karis 2013,
+//   SplitSum  prefiltered environment at lod = r(2 − r)·(levels − 1), times the DFG table (Karis 2013,
 //             Filament): one environment and one table sample
 //   Analytic  the same environment sample, times Karis's 2014 analytic environment BRDF: no table
 //   TwoMip    two samples of the environment at fixed mips (0 and the last) lerped by roughness,

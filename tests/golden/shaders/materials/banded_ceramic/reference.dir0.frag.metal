@@ -46,18 +46,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _470 = fast::normalize(in.v_normal);
-    float3 _477 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _562 = smoothstep(-params.bandSharpness, params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    float _611 = _470.y;
-    float _616 = _470.z;
-    float _621 = _470.x;
-    float _787 = fast::clamp(mix(0.3499999940395355224609375, 0.60000002384185791015625, _562), 0.0, 1.0);
-    float3 _795 = float3((0.1599999964237213134765625 * _787) * _787);
-    float _804 = fast::clamp(mix(params.clayRoughness, params.glazeRoughness, _562), 0.08900000154972076416015625, 1.0);
-    float4 _811 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_470, _477), 9.9999997473787516355514526367188e-05), _804), level(0.0));
-    float3 _846 = fma(fast::clamp(mix(float3(params.clayColor), params.glazeColor, float3(_562)), float3(0.0), float3(1.0)) * 1.0, fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _611)) + (frame.sh[2].xyz * _616)) + (frame.sh[3].xyz * _621)) + (((((frame.sh[4].xyz * (_621 * _611)) + (frame.sh[5].xyz * (_611 * _616))) + (frame.sh[6].xyz * fma(3.0 * _616, _616, -1.0))) + (frame.sh[7].xyz * (_621 * _616))) + (frame.sh[8].xyz * fma(_621, _621, -(_611 * _611)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_477, _470), level(_804 * 4.0)).xyz * (mix(_811.xxx, _811.yyy, _795) * (float3(1.0) + (_795 * ((1.0 / _811.y) - 1.0)))));
-    out.fragColor = float4(_846, 1.0);
+    float3 _474 = fast::normalize(in.v_normal);
+    float3 _481 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float _566 = smoothstep(-params.bandSharpness, params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    float _615 = _474.y;
+    float _620 = _474.z;
+    float _625 = _474.x;
+    float _791 = fast::clamp(mix(0.3499999940395355224609375, 0.60000002384185791015625, _566), 0.0, 1.0);
+    float3 _799 = float3((0.1599999964237213134765625 * _791) * _791);
+    float _808 = fast::clamp(mix(params.clayRoughness, params.glazeRoughness, _566), 0.08900000154972076416015625, 1.0);
+    float4 _815 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_474, _481), 9.9999997473787516355514526367188e-05), _808), level(0.0));
+    float3 _853 = fma(fast::clamp(mix(float3(params.clayColor), params.glazeColor, float3(_566)), float3(0.0), float3(1.0)) * 1.0, fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _615)) + (frame.sh[2].xyz * _620)) + (frame.sh[3].xyz * _625)) + (((((frame.sh[4].xyz * (_625 * _615)) + (frame.sh[5].xyz * (_615 * _620))) + (frame.sh[6].xyz * fma(3.0 * _620, _620, -1.0))) + (frame.sh[7].xyz * (_625 * _620))) + (frame.sh[8].xyz * fma(_625, _625, -(_615 * _615)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_481, _474), level(_808 * (4.0 * (2.0 - _808)))).xyz * (mix(_815.xxx, _815.yyy, _799) * (float3(1.0) + (_799 * ((1.0 / _815.y) - 1.0)))));
+    out.fragColor = float4(_853, 1.0);
     return out;
 }
 

@@ -83,8 +83,8 @@ return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
 return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
 }
-vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;

@@ -31,31 +31,31 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    float3 _483 = fast::normalize(in.v_toEye);
-    float2 _607 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _610 = facet_material_albedo.sample(facet_material_albedoSmplr, _607);
-    float4 _620 = facet_material_relief.sample(facet_material_reliefSmplr, _607);
-    half3 _624 = (half4(_620).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _630 = fract(_607 * 4.0);
-    float _632 = _630.x;
-    float _639 = _630.y;
-    half3 _1007;
+    float3 _486 = fast::normalize(in.v_toEye);
+    float2 _610 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _613 = facet_material_albedo.sample(facet_material_albedoSmplr, _610);
+    float4 _623 = facet_material_relief.sample(facet_material_reliefSmplr, _610);
+    half3 _627 = (half4(_623).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _633 = fract(_610 * 4.0);
+    float _635 = _633.x;
+    float _642 = _633.y;
+    half3 _1013;
     do
     {
-        half3 _664 = half4(in.v_tangent).xyz;
-        if (float(dot(_664, _664)) == 0.0)
+        half3 _667 = half4(in.v_tangent).xyz;
+        if (float(dot(_667, _667)) == 0.0)
         {
-            _1007 = normalize(half3(in.v_normal));
+            _1013 = normalize(half3(in.v_normal));
             break;
         }
-        _1007 = normalize(((_664 * _624.x) + ((cross(half3(in.v_normal), _664) * half(in.v_tangent.w)) * _624.y)) + (half3(in.v_normal) * _624.z));
+        _1013 = normalize(((_667 * _627.x) + ((cross(half3(in.v_normal), _667) * half(in.v_tangent.w)) * _627.y)) + (half3(in.v_normal) * _627.z));
         break;
     } while(false);
-    half3 _707 = clamp(half4(_610).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _716 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_632, 1.0 - _632), fast::min(_639, 1.0 - _639))))), half(0.0), half(1.0));
-    float4 _874 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1007, half3(_483)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _900 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_483), _1007)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(_707 * half3(in.v_diffuseLight), max(half3(_716), ((((((_707 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _716) + ((_707 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _716) + ((_707 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _716), _707 * half3(in.v_directDiffuse)) + ((half4(_900).xyz * (mix(half4(_874).xxx, half4(_874).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_874).y) - half(1.0)))))) * _716), half(1.0)));
+    half3 _710 = clamp(half4(_613).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _719 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_635, 1.0 - _635), fast::min(_642, 1.0 - _642))))), half(0.0), half(1.0));
+    float4 _877 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1013, half3(_486)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _906 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_486), _1013)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(_710 * half3(in.v_diffuseLight), max(half3(_719), ((((((_710 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _719) + ((_710 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _719) + ((_710 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _719), _710 * half3(in.v_directDiffuse)) + ((half4(_906).xyz * (mix(half4(_877).xxx, half4(_877).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_877).y) - half(1.0)))))) * _719), half(1.0)));
     return out;
 }
 

@@ -48,17 +48,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _399 = normalize(half3(in.v_normal));
-    float3 _403 = fast::normalize(in.v_toEye);
-    half _502 = _399.y;
-    half _507 = _399.z;
-    half _512 = _399.x;
-    half3 _580 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _502)) + (half4(frame.sh[2]).xyz * _507)) + (half4(frame.sh[3]).xyz * _512)) + (((((half4(frame.sh[4]).xyz * (_512 * _502)) + (half4(frame.sh[5]).xyz * (_502 * _507))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _507, _507, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_512 * _507))) + (half4(frame.sh[8]).xyz * fma(_512, _512, half(-float(_502 * _502))))), half3(float3(0.0)));
-    half3 _680 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _817 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_399, half3(_403)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _639 = _817.z;
-    float4 _696 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_403), _399)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_696).xyz, _680 * _639, (half3(float3(params.facet_diffuseColor)) * _580) * fma(half(-float(max(_680.x, max(_680.y, _680.z)))), _639, half(1.0))), half(1.0)));
+    half3 _403 = normalize(half3(in.v_normal));
+    float3 _407 = fast::normalize(in.v_toEye);
+    half _506 = _403.y;
+    half _511 = _403.z;
+    half _516 = _403.x;
+    half3 _584 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _506)) + (half4(frame.sh[2]).xyz * _511)) + (half4(frame.sh[3]).xyz * _516)) + (((((half4(frame.sh[4]).xyz * (_516 * _506)) + (half4(frame.sh[5]).xyz * (_506 * _511))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _511, _511, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_516 * _511))) + (half4(frame.sh[8]).xyz * fma(_516, _516, half(-float(_506 * _506))))), half3(float3(0.0)));
+    half3 _684 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _824 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_403, half3(_407)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _643 = _824.z;
+    float4 _703 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_407), _403)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(half4(_703).xyz, _684 * _643, (half3(float3(params.facet_diffuseColor)) * _584) * fma(half(-float(max(_684.x, max(_684.y, _684.z)))), _643, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -48,26 +48,26 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _571 = normalize(half3(in.v_normal));
-    float3 _575 = fast::normalize(in.v_toEye);
-    half _695 = _571.y;
-    half _700 = _571.z;
-    half _705 = _571.x;
-    half3 _773 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _695)) + (half4(frame.sh[2]).xyz * _700)) + (half4(frame.sh[3]).xyz * _705)) + (((((half4(frame.sh[4]).xyz * (_705 * _695)) + (half4(frame.sh[5]).xyz * (_695 * _700))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _700, _700, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_705 * _700))) + (half4(frame.sh[8]).xyz * fma(_705, _705, half(-float(_695 * _695))))), half3(float3(0.0)));
-    half _814 = max(dot(_571, half3(_575)), half(9.9999997473787516355514526367188e-05));
-    float4 _819 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_814, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _873 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _1177 = half4(_819);
-    half _832 = _1177.z;
-    half _834 = fma(half(-float(max(_873.x, max(_873.y, _873.z)))), _832, half(1.0));
-    float4 _889 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_575), _571)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _912 = dot(_571, half3(frame.lightDirection.xyz));
-    half _914 = clamp(_912, half(0.0), half(1.0));
-    half _926 = clamp(dot(_571, half3(fast::normalize(_575 + frame.lightDirection.xyz))), half(0.0), half(1.0));
-    half _997 = half(8192.0) * fma(half(-float(_914)), _814, _914 + _814);
-    half _1001 = half(1.0) / (half(params.facet_alpha) * _997);
-    half3 _959 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_912 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_914), half3(float3(0.0)), half3(float3(1.0)))) * _834) + (_873 * ((((fma(_1001, _997, half(2.0)) * pow(max(fma(half(-float(_926)), _926, half(1.0)), half(0.0)), half(0.5) * (_1001 * _997))) * half(0.15915493667125701904296875)) * (_914 * (_1001 * (half(2048.0) * half(params.facet_alpha))))) * half4(_819).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_889).xyz, _873 * _832, (half3(float3(params.facet_diffuseColor)) * _773) * _834) + _959, half(1.0)));
+    half3 _574 = normalize(half3(in.v_normal));
+    float3 _578 = fast::normalize(in.v_toEye);
+    half _698 = _574.y;
+    half _703 = _574.z;
+    half _708 = _574.x;
+    half3 _776 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _698)) + (half4(frame.sh[2]).xyz * _703)) + (half4(frame.sh[3]).xyz * _708)) + (((((half4(frame.sh[4]).xyz * (_708 * _698)) + (half4(frame.sh[5]).xyz * (_698 * _703))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _703, _703, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_708 * _703))) + (half4(frame.sh[8]).xyz * fma(_708, _708, half(-float(_698 * _698))))), half3(float3(0.0)));
+    half _817 = max(dot(_574, half3(_578)), half(9.9999997473787516355514526367188e-05));
+    float4 _822 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_817, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _876 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _1183 = half4(_822);
+    half _835 = _1183.z;
+    half _837 = fma(half(-float(max(_876.x, max(_876.y, _876.z)))), _835, half(1.0));
+    float4 _895 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_578), _574)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _918 = dot(_574, half3(frame.lightDirection.xyz));
+    half _920 = clamp(_918, half(0.0), half(1.0));
+    half _932 = clamp(dot(_574, half3(fast::normalize(_578 + frame.lightDirection.xyz))), half(0.0), half(1.0));
+    half _1003 = half(8192.0) * fma(half(-float(_920)), _817, _920 + _817);
+    half _1007 = half(1.0) / (half(params.facet_alpha) * _1003);
+    half3 _965 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_918 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_920), half3(float3(0.0)), half3(float3(1.0)))) * _837) + (_876 * ((((fma(_1007, _1003, half(2.0)) * pow(max(fma(half(-float(_932)), _932, half(1.0)), half(0.0)), half(0.5) * (_1007 * _1003))) * half(0.15915493667125701904296875)) * (_920 * (_1007 * (half(2048.0) * half(params.facet_alpha))))) * half4(_822).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    out.fragColor = float4(half4(fma(half4(_895).xyz, _876 * _835, (half3(float3(params.facet_diffuseColor)) * _776) * _837) + _965, half(1.0)));
     return out;
 }
 

@@ -69,8 +69,8 @@ material.roughness=params.roughness;
 material.sheenColor=params.sheen;
 material.subsurfaceColor=params.subsurface;
 }
-vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
 float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
