@@ -102,6 +102,15 @@ const std::vector<Axis>& axes() {
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "sheen", o); },
        nullptr,
        [](const ir::Material& m) { return m.shading == "lit" && m.cloth; }},
+      {"specular_aa",
+       {std::begin(permutations::kSpecularAntiAliasingModelNames),
+        std::end(permutations::kSpecularAntiAliasingModelNames)},
+       [](const TierConfig& c) {
+         return std::string(permutations::kSpecularAntiAliasingModelNames[int(c.specularAntiAliasing)]);
+       },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "specular_aa", o); },
+       nullptr,
+       [](const ir::Material& m) { return m.shading == "lit" && m.specularAntiAliasing.has_value(); }},
   };
   return list;
 }

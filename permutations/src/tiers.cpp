@@ -62,6 +62,9 @@ TierConfig preset(Tier tier) {
   // it, for 1.1 and 0.5 dB on painted_tiles: dropped. Multi-bounce AO is kept at its full cost:
   // without it they lose 14.3 and 10.2 dB there (docs/material-models.md).
   if (tier == Tier::Mid || tier == Tier::Low) config.specularOcclusion = SpecularOcclusionModel::Ao;
+  // mid and low: specular anti-aliasing costs them its derivatives and, on the hammered floor
+  // against 16 samples per pixel, measured no gain to buy (docs/material-models.md): dropped.
+  if (tier == Tier::Mid || tier == Tier::Low) config.specularAntiAliasing = SpecularAntiAliasingModel::None;
   return config;
 }
 
@@ -106,6 +109,14 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
     for (size_t i = 0; i < std::size(kSpecularOcclusionModelNames); ++i) {
       if (option == kSpecularOcclusionModelNames[i]) {
         config->specularOcclusion = SpecularOcclusionModel(i);
+        return true;
+      }
+    }
+  }
+  if (axis == "specular_aa") {
+    for (size_t i = 0; i < std::size(kSpecularAntiAliasingModelNames); ++i) {
+      if (option == kSpecularAntiAliasingModelNames[i]) {
+        config->specularAntiAliasing = SpecularAntiAliasingModel(i);
         return true;
       }
     }
