@@ -34,7 +34,6 @@ namespace {
 
 using namespace facet::runtime;
 using facet::supersample::downsampleLdr;
-using facet::supersample::meanAbsDifference;
 using facet::supersample::render;
 using facet::supersample::resolveThenToneMap;
 
@@ -145,20 +144,8 @@ int main(int argc, char** argv) {
   if (!sweep(*one, 4, &truth)) return fail(error);
   const auto report = [&](const char* what, const std::vector<std::vector<uint8_t>>& frames) {
     double change = 0, excess = 0;
-    for (int k = 0; k + 1 < kSteps; ++k) {
-      change += meanAbsDifference(frames[k + 1], frames[k]);
-      double sum = 0;
-      size_t n = 0;
-      for (size_t i = 0; i < frames[k].size(); ++i) {
-        if (i % 4 == 3) continue;
-        const int d = int(frames[k + 1][i]) - int(frames[k][i]);
-        const int t = int(truth[k + 1][i]) - int(truth[k][i]);
-        sum += std::abs(d - t);
-        ++n;
-      }
-      excess += sum / double(n);
-    }
-    std::printf("| %s | %.4f | %.4f |\n", what, change / (kSteps - 1), excess / (kSteps - 1));
+    facet::supersample::flicker(frames, truth, &change, &excess);
+    std::printf("| %s | %.4f | %.4f |\n", what, change, excess);
   };
   std::printf(
       "Flicker over %d camera positions 1/%d pixel apart: mean |frame-to-frame difference| and mean |that "

@@ -42,28 +42,6 @@ inline double hdrSum(const runtime::FrameResult& r) {
   return sum;
 }
 
-// Mean over consecutive frames of the mean |frame k+1 − frame k|, and of the mean |that change −
-// the reference's|.
-inline void flicker(const std::vector<std::vector<uint8_t>>& frames, const std::vector<std::vector<uint8_t>>& truth,
-                    double* change, double* excess) {
-  *change = *excess = 0;
-  for (size_t k = 0; k + 1 < frames.size(); ++k) {
-    *change += meanAbsDifference(frames[k + 1], frames[k]);
-    double sum = 0;
-    size_t n = 0;
-    for (size_t i = 0; i < frames[k].size(); ++i) {
-      if (i % 4 == 3) continue;
-      const int d = int(frames[k + 1][i]) - int(frames[k][i]);
-      const int t = int(truth[k + 1][i]) - int(truth[k][i]);
-      sum += std::abs(d - t);
-      ++n;
-    }
-    *excess += sum / double(n);
-  }
-  *change /= double(frames.size() - 1);
-  *excess /= double(frames.size() - 1);
-}
-
 inline bool measureReference(runtime::RenderBackend& backend, const runtime::Scene& scene, const std::string& packages,
                              Reference* out, std::string* error) {
   for (int step = 0; step < kSweepSteps; ++step) {
