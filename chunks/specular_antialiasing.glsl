@@ -17,13 +17,16 @@
 // sum of squares is at most 8: no overflow. α² ≥ 0.089⁴ = 6.27e-5 ≥ 2^-14 (precision.glsl's floor,
 // r ≥ 2^(−14/4)) and the kernel only adds, so α'² stays a normal fp16 number in [6.27e-5, 1] and
 // r' in [0.089, 1]: the floor every lobe relies on holds after filtering. Squares below 2^-14
-// (a normal turning by less than 2^-7 rad per pixel) may flush to 0: the kernel then loses at most
-// 2 · variance · 6 · 2^-14 ≤ 7.4e-4 of α², a lobe whose pixels barely differ.
+// (a normal turning by less than 2^-7 rad per pixel) would flush to 0 in fp16 and lose up to
+// 2 · variance · 6 · 2^-14 ≤ 7.4e-4 of α², more than α² itself at the floor: hence highp below.
+// The kernel is formed in highp: a smooth lobe's α² is as small as 6.27e-5, so squares that fp16
+// would flush (below 2^-14) are a large part of what it adds, and a GPU that runs mediump in fp16
+// would filter differently from one that runs it in fp32.
 float specular_aa_roughness(float perceptualRoughness, vec3 normal) {
-    vec3 du = dFdx(normal);
-    vec3 dv = dFdy(normal);
-    float variance = FACET_SPECULAR_AA_VARIANCE * (dot(du, du) + dot(dv, dv));
-    float alpha = perceptualRoughness * perceptualRoughness;
-    float kernel = min(2.0 * variance, FACET_SPECULAR_AA_THRESHOLD);
+    highp vec3 du = dFdx(normal);
+    highp vec3 dv = dFdy(normal);
+    highp float variance = FACET_SPECULAR_AA_VARIANCE * (dot(du, du) + dot(dv, dv));
+    highp float alpha = perceptualRoughness * perceptualRoughness;
+    highp float kernel = min(2.0 * variance, FACET_SPECULAR_AA_THRESHOLD);
     return sqrt(sqrt(min(alpha * alpha + kernel, 1.0)));
 }

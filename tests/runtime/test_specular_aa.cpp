@@ -51,7 +51,7 @@ TEST(SpecularAntiAliasing, LeavesAFlatFloorExactlyAsItWasOnVulkan) {
   std::string error;
   Fixture f = load(&error);
   ASSERT_TRUE(f.scene) << error;
-  f.scene->objects[0].textures.erase("relief");  // the default texture: a flat normal
+  f.scene->objects[0].textures.erase("ripples");  // the default texture: a flat normal
   auto backend = createVulkanBackend(VulkanOptions{}, &error);
   ASSERT_TRUE(backend) << error;
   FrameResult plain, filtered;

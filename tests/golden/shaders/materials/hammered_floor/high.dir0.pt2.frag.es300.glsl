@@ -35,7 +35,7 @@ mediump vec3 facet_f0;
 mediump float facet_alpha;
 }
 params;
-uniform mediump sampler2D facet_material_relief;
+uniform mediump sampler2D facet_material_ripples;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
 const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
@@ -68,7 +68,7 @@ void evaluate_surface(inout MaterialInputs material){
 material.baseColor=params.tint;
 material.roughness=params.roughness;
 highp vec2 t0=v_uv0*params.tiling;
-vec3 t1=texture(facet_material_relief,t0).xyz*(255.0/127.0)-(128.0/127.0);
+vec3 t1=texture(facet_material_ripples,t0).xyz*(255.0/127.0)-(128.0/127.0);
 material.normal=t1;
 }
 vec3 tangent_to_world(vec3 tangentNormal){
@@ -166,11 +166,11 @@ vec3 diffuseColor=material_diffuse_color(material);
 return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 float specular_aa_roughness(float perceptualRoughness,vec3 normal){
-vec3 du=dFdx(normal);
-vec3 dv=dFdy(normal);
-float variance=0.15*(dot(du,du)+dot(dv,dv));
-float alpha=perceptualRoughness*perceptualRoughness;
-float kernel=min(2.0*variance,0.2);
+highp vec3 du=dFdx(normal);
+highp vec3 dv=dFdy(normal);
+highp float variance=0.15*(dot(du,du)+dot(dv,dv));
+highp float alpha=perceptualRoughness*perceptualRoughness;
+highp float kernel=min(2.0*variance,0.2);
 return sqrt(sqrt(min(alpha*alpha+kernel,1.0)));
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){

@@ -36,7 +36,7 @@ mediump vec3 facet_f0;
 mediump float facet_alpha;
 }
 params;
-uniform mediump sampler2D facet_material_relief;
+uniform mediump sampler2D facet_material_ripples;
 uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
@@ -69,7 +69,7 @@ void evaluate_surface(inout MaterialInputs material){
 material.baseColor=params.tint;
 material.roughness=params.roughness;
 highp vec2 t0=v_uv0*params.tiling;
-vec3 t1=texture(facet_material_relief,t0).xyz*(255.0/127.0)-(128.0/127.0);
+vec3 t1=texture(facet_material_ripples,t0).xyz*(255.0/127.0)-(128.0/127.0);
 material.normal=t1;
 }
 vec3 tangent_to_world(vec3 tangentNormal){

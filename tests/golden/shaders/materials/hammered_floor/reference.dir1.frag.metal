@@ -49,11 +49,11 @@ struct main0_in
     float4 v_tangent [[user(locn3)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_relief [[texture(8)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_reliefSmplr [[sampler(8)]])
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_ripples [[texture(8)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_ripplesSmplr [[sampler(8)]])
 {
     main0_out out = {};
     float3 _767 = fast::normalize(in.v_toEye);
-    float4 _881 = facet_material_relief.sample(facet_material_reliefSmplr, (in.v_uv0 * params.tiling));
+    float4 _881 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
     float3 _885 = (_881.xyz * 2.007874011993408203125) - float3(1.007874011993408203125);
     float3 _1556;
     do
