@@ -46,8 +46,14 @@ void main() {
 #include "uv_color_varyings.glsl"
 #if defined(FACET_VARYING_TANGENT)
     // A tangent lies in the surface, so it transforms with the model matrix itself (the normal
-    // matrix is for normals); the handedness sign passes through.
-    v_tangent = vec4(a_tangent.xyz * mat3(row0, row1, row2), a_tangent.w);
+    // matrix is for normals); the handedness sign passes through. Normalized as the normal is:
+    // MikkTSpace's frame is unit n and t per vertex (normal_mapping.glsl keeps them unnormalized
+    // only after interpolation). Left s long by an object scaled s, t and b = w·cross(n, t) would
+    // weigh a map's tilt s times against n: a normal map 40× as steep on a floor scaled 40. A mesh
+    // without tangents keeps its zero tangent (0 · 1e15: normal_mapping.glsl's fallback, not a
+    // NaN); 1e-30 is a normal fp32 number far below any real tangent's |t|².
+    highp vec3 tangent = a_tangent.xyz * mat3(row0, row1, row2);
+    v_tangent = vec4(tangent * inversesqrt(max(dot(tangent, tangent), 1e-30)), a_tangent.w);
 #endif
 #if defined(FACET_VERTEX_DIFFUSE)
     // Per-vertex diffuse (Zioma 2015: diffuse varies slowly, so mid and low tiers light it per

@@ -2,6 +2,7 @@
 // are one draw with an instance each, and the image is the one drawn object by object.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -225,6 +226,55 @@ TEST(Instancing, InstanceCountsPastTheBoundsAreErrorsOnGl) {
   auto backend = createGlBackend(&error);
   ASSERT_NE(backend, nullptr) << error;
   checkBoundsOn(*backend);
+}
+
+// A normal map tilts the shading normal by the same angle whatever the object's scale: the
+// tangent, scaled with the object like the position, is normalized as the normal is (a floor
+// scaled 4 once tilted its map 4× as steeply). The same lit, mapped plane at scale 1 and at scale
+// 4 seen from 4× as far (a directional sun, an environment at infinity) is the same image.
+void checkMapTiltIndependentOfScaleOn(RenderBackend& backend) {
+  const std::string packages = test::writePackagesFromTexts(
+      "instancing_normal_map", {"material tilted { shading lit\n surface { baseColor = vec3(0.5, 0.5, 0.5)\n"
+                                " roughness = 0.3\n normal = vec3(0.35, -0.25, 1.0) } }"});
+  const auto render = [&](double scale, FrameResult* out) {
+    const std::string s = std::to_string(scale);
+    const std::string text = R"({"width": 64, "height": 48, "tier": "high", "camera": {"position": [0, )" +
+                             std::to_string(1.5 * scale) + ", " + std::to_string(1.2 * scale) +
+                             R"(], "target": [0, 0, 0], "fovY": 45},
+      "sun": {"direction": [0.3, -0.6, -0.74], "illuminance": 110000}, "sky": {"luminance": 6000},
+      "objects": [{"mesh": "plane", "material": "tilted", "scale": [)" +
+                             s + ", " + s + ", " + s + "]}]}";
+    std::string error;
+    auto scene = parseScene("scaled_plane.json", text, &error);
+    ASSERT_TRUE(scene) << error;
+    auto prepared = SceneFrame::prepare(*scene, packages, &error);
+    ASSERT_NE(prepared, nullptr) << error;
+    ASSERT_TRUE(backend.render(prepared->frame(), out, &error)) << error;
+  };
+  FrameResult unit, scaled;
+  render(1.0, &unit);
+  render(4.0, &scaled);
+  ASSERT_EQ(unit.ldr.size(), scaled.ldr.size());
+  int worst = 0;
+  for (size_t i = 0; i < unit.ldr.size(); ++i) worst = std::max(worst, std::abs(int(unit.ldr[i]) - int(scaled.ldr[i])));
+  // Only rounding differs (positions 4× as large, the same angles): one 8-bit step of slack.
+  EXPECT_LE(worst, 1);
+  EXPECT_TRUE(backend.validationErrors().empty())
+      << (backend.validationErrors().empty() ? "" : backend.validationErrors().front());
+}
+
+TEST(Instancing, NormalMapTiltDoesNotDependOnTheObjectsScaleOnVulkan) {
+  std::string error;
+  auto backend = createVulkanBackend({true}, &error);
+  ASSERT_NE(backend, nullptr) << error;
+  checkMapTiltIndependentOfScaleOn(*backend);
+}
+
+TEST(Instancing, NormalMapTiltDoesNotDependOnTheObjectsScaleOnGl) {
+  std::string error;
+  auto backend = createGlBackend(&error);
+  ASSERT_NE(backend, nullptr) << error;
+  checkMapTiltIndependentOfScaleOn(*backend);
 }
 
 }  // namespace

@@ -55,17 +55,18 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
     float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _163;
+    float3 _172;
     if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
     {
-        _163 = -in.a_normal;
+        _172 = -in.a_normal;
     }
     else
     {
-        _163 = in.a_normal;
+        _172 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_163 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    out.v_normal = fast::normalize(_172 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    float3 _144 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_144 * rsqrt(fast::max(dot(_144, _144), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
     out.gl_Position = frame.viewProjection * _51;
     return out;
 }

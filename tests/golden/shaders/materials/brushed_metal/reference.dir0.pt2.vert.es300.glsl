@@ -42,6 +42,7 @@ highp vec3 row0=a_instanceRow0.xyz,row1=a_instanceRow1.xyz,row2=a_instanceRow2.x
 highp vec3 cofactor0=cross(row1,row2);
 highp vec3 objectNormal=dot(row0,cofactor0)<0.0?-a_normal:a_normal;
 v_normal=normalize(objectNormal*mat3(cofactor0,cross(row2,row0),cross(row0,row1)));
-v_tangent=vec4(a_tangent.xyz*mat3(row0,row1,row2),a_tangent.w);
+highp vec3 tangent=a_tangent.xyz*mat3(row0,row1,row2);
+v_tangent=vec4(tangent*inversesqrt(max(dot(tangent,tangent),1e-30)),a_tangent.w);
 gl_Position=frame.viewProjection*worldPosition;
 }

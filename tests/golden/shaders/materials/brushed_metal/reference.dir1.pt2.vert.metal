@@ -55,17 +55,18 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
     out.v_worldPosition = _51.xyz;
     float3 _68 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _159;
+    float3 _168;
     if (dot(in.a_instanceRow0.xyz, _68) < 0.0)
     {
-        _159 = -in.a_normal;
+        _168 = -in.a_normal;
     }
     else
     {
-        _159 = in.a_normal;
+        _168 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_159 * float3x3(_68, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    out.v_normal = fast::normalize(_168 * float3x3(_68, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    float3 _130 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_130 * rsqrt(fast::max(dot(_130, _130), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
     out.gl_Position = frame.viewProjection * _51;
     return out;
 }

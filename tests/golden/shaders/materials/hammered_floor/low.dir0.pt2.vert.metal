@@ -59,31 +59,32 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _211 = _207.xyz;
     out.v_worldPosition = _211;
     float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _608;
+    float3 _617;
     if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
     {
-        _608 = -in.a_normal;
+        _617 = -in.a_normal;
     }
     else
     {
-        _608 = in.a_normal;
+        _617 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_608 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_617 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    float3 _433 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
-    float _436 = dot(_433, _433);
-    float3 _441 = _433 * rsqrt(fast::max(_436, 9.9999999392252902907785028219223e-09));
-    float _445 = _436 * float(frame.punctualLights[0].positionFalloff.w);
-    float _450 = fast::clamp(fma(-_445, _445, 1.0), 0.0, 1.0);
-    float _469 = fast::clamp(fma(dot(-_441, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _511 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
-    float _514 = dot(_511, _511);
-    float3 _519 = _511 * rsqrt(fast::max(_514, 9.9999999392252902907785028219223e-09));
-    float _523 = _514 * float(frame.punctualLights[1].positionFalloff.w);
-    float _528 = fast::clamp(fma(-_523, _523, 1.0), 0.0, 1.0);
-    float _547 = fast::clamp(fma(dot(-_519, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = (fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_450 * _450) / fast::max(_436, 9.9999997473787516355514526367188e-05)) * _469) * _469), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _441), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_528 * _528) / fast::max(_514, 9.9999997473787516355514526367188e-05)) * _547) * _547), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _519), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _299 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_299 * rsqrt(fast::max(dot(_299, _299), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    float3 _442 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
+    float _445 = dot(_442, _442);
+    float3 _450 = _442 * rsqrt(fast::max(_445, 9.9999999392252902907785028219223e-09));
+    float _454 = _445 * float(frame.punctualLights[0].positionFalloff.w);
+    float _459 = fast::clamp(fma(-_454, _454, 1.0), 0.0, 1.0);
+    float _478 = fast::clamp(fma(dot(-_450, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _520 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
+    float _523 = dot(_520, _520);
+    float3 _528 = _520 * rsqrt(fast::max(_523, 9.9999999392252902907785028219223e-09));
+    float _532 = _523 * float(frame.punctualLights[1].positionFalloff.w);
+    float _537 = fast::clamp(fma(-_532, _532, 1.0), 0.0, 1.0);
+    float _556 = fast::clamp(fma(dot(-_528, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = (fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_459 * _459) / fast::max(_445, 9.9999997473787516355514526367188e-05)) * _478) * _478), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _450), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_537 * _537) / fast::max(_523, 9.9999997473787516355514526367188e-05)) * _556) * _556), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _528), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _207;
     return out;
 }

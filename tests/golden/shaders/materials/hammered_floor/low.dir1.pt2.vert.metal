@@ -59,31 +59,32 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _211 = _207.xyz;
     out.v_worldPosition = _211;
     float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _621;
+    float3 _630;
     if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
     {
-        _621 = -in.a_normal;
+        _630 = -in.a_normal;
     }
     else
     {
-        _621 = in.a_normal;
+        _630 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_621 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_630 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    float3 _446 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
-    float _449 = dot(_446, _446);
-    float3 _454 = _446 * rsqrt(fast::max(_449, 9.9999999392252902907785028219223e-09));
-    float _458 = _449 * float(frame.punctualLights[0].positionFalloff.w);
-    float _463 = fast::clamp(fma(-_458, _458, 1.0), 0.0, 1.0);
-    float _482 = fast::clamp(fma(dot(-_454, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _524 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
-    float _527 = dot(_524, _524);
-    float3 _532 = _524 * rsqrt(fast::max(_527, 9.9999999392252902907785028219223e-09));
-    float _536 = _527 * float(frame.punctualLights[1].positionFalloff.w);
-    float _541 = fast::clamp(fma(-_536, _536, 1.0), 0.0, 1.0);
-    float _560 = fast::clamp(fma(dot(-_532, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_463 * _463) / fast::max(_449, 9.9999997473787516355514526367188e-05)) * _482) * _482), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _454), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_541 * _541) / fast::max(_527, 9.9999997473787516355514526367188e-05)) * _560) * _560), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _532), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _299 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_299 * rsqrt(fast::max(dot(_299, _299), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    float3 _455 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
+    float _458 = dot(_455, _455);
+    float3 _463 = _455 * rsqrt(fast::max(_458, 9.9999999392252902907785028219223e-09));
+    float _467 = _458 * float(frame.punctualLights[0].positionFalloff.w);
+    float _472 = fast::clamp(fma(-_467, _467, 1.0), 0.0, 1.0);
+    float _491 = fast::clamp(fma(dot(-_463, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _533 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
+    float _536 = dot(_533, _533);
+    float3 _541 = _533 * rsqrt(fast::max(_536, 9.9999999392252902907785028219223e-09));
+    float _545 = _536 * float(frame.punctualLights[1].positionFalloff.w);
+    float _550 = fast::clamp(fma(-_545, _545, 1.0), 0.0, 1.0);
+    float _569 = fast::clamp(fma(dot(-_541, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_472 * _472) / fast::max(_458, 9.9999997473787516355514526367188e-05)) * _491) * _491), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _463), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_550 * _550) / fast::max(_536, 9.9999997473787516355514526367188e-05)) * _569) * _569), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _541), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _207;
     return out;
 }

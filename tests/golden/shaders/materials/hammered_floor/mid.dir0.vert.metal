@@ -58,26 +58,27 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
     float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _429;
+    float3 _438;
     if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
     {
-        _429 = -in.a_normal;
+        _438 = -in.a_normal;
     }
     else
     {
-        _429 = in.a_normal;
+        _438 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_429 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_438 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _435 = half3(out.v_normal);
-    half _335 = _435.y;
-    half3 _437 = half3(out.v_normal);
-    half _340 = _437.z;
-    half3 _439 = half3(out.v_normal);
-    half _345 = _439.x;
-    float3 _413 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_335))) + (frame.sh[2].xyz * float(_340))) + (frame.sh[3].xyz * float(_345))) + (((((frame.sh[4].xyz * (float(_345) * float(_335))) + (frame.sh[5].xyz * (float(_335) * float(_340)))) + (frame.sh[6].xyz * fma(3.0 * float(_340), float(_340), -1.0))) + (frame.sh[7].xyz * (float(_345) * float(_340)))) + (frame.sh[8].xyz * fma(float(_345), float(_345), -(float(_335) * float(_335))))), float3(0.0));
-    out.v_diffuseLight = _413;
+    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _444 = half3(out.v_normal);
+    half _344 = _444.y;
+    half3 _446 = half3(out.v_normal);
+    half _349 = _446.z;
+    half3 _448 = half3(out.v_normal);
+    half _354 = _448.x;
+    float3 _422 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_344))) + (frame.sh[2].xyz * float(_349))) + (frame.sh[3].xyz * float(_354))) + (((((frame.sh[4].xyz * (float(_354) * float(_344))) + (frame.sh[5].xyz * (float(_344) * float(_349)))) + (frame.sh[6].xyz * fma(3.0 * float(_349), float(_349), -1.0))) + (frame.sh[7].xyz * (float(_354) * float(_349)))) + (frame.sh[8].xyz * fma(float(_354), float(_354), -(float(_344) * float(_344))))), float3(0.0));
+    out.v_diffuseLight = _422;
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

@@ -59,38 +59,39 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _285 = _281.xyz;
     out.v_worldPosition = _285;
     float3 _298 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _775;
+    float3 _784;
     if (dot(in.a_instanceRow0.xyz, _298) < 0.0)
     {
-        _775 = -in.a_normal;
+        _784 = -in.a_normal;
     }
     else
     {
-        _775 = in.a_normal;
+        _784 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_775 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_784 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _784 = half3(out.v_normal);
-    half _479 = _784.y;
-    half3 _786 = half3(out.v_normal);
-    half _484 = _786.z;
-    half3 _788 = half3(out.v_normal);
-    half _489 = _788.x;
-    float3 _557 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_479))) + (frame.sh[2].xyz * float(_484))) + (frame.sh[3].xyz * float(_489))) + (((((frame.sh[4].xyz * (float(_489) * float(_479))) + (frame.sh[5].xyz * (float(_479) * float(_484)))) + (frame.sh[6].xyz * fma(3.0 * float(_484), float(_484), -1.0))) + (frame.sh[7].xyz * (float(_489) * float(_484)))) + (frame.sh[8].xyz * fma(float(_489), float(_489), -(float(_479) * float(_479))))), float3(0.0));
-    float3 _588 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
-    float _591 = dot(_588, _588);
-    float3 _596 = _588 * rsqrt(fast::max(_591, 9.9999999392252902907785028219223e-09));
-    float _600 = _591 * float(frame.punctualLights[0].positionFalloff.w);
-    float _605 = fast::clamp(fma(-_600, _600, 1.0), 0.0, 1.0);
-    float _624 = fast::clamp(fma(dot(-_596, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _666 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
-    float _669 = dot(_666, _666);
-    float3 _674 = _666 * rsqrt(fast::max(_669, 9.9999999392252902907785028219223e-09));
-    float _678 = _669 * float(frame.punctualLights[1].positionFalloff.w);
-    float _683 = fast::clamp(fma(-_678, _678, 1.0), 0.0, 1.0);
-    float _702 = fast::clamp(fma(dot(-_674, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = ((_557 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_605 * _605) / fast::max(_591, 9.9999997473787516355514526367188e-05)) * _624) * _624), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _596), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_683 * _683) / fast::max(_669, 9.9999997473787516355514526367188e-05)) * _702) * _702), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _674), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _373 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_373 * rsqrt(fast::max(dot(_373, _373), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _793 = half3(out.v_normal);
+    half _488 = _793.y;
+    half3 _795 = half3(out.v_normal);
+    half _493 = _795.z;
+    half3 _797 = half3(out.v_normal);
+    half _498 = _797.x;
+    float3 _566 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_488))) + (frame.sh[2].xyz * float(_493))) + (frame.sh[3].xyz * float(_498))) + (((((frame.sh[4].xyz * (float(_498) * float(_488))) + (frame.sh[5].xyz * (float(_488) * float(_493)))) + (frame.sh[6].xyz * fma(3.0 * float(_493), float(_493), -1.0))) + (frame.sh[7].xyz * (float(_498) * float(_493)))) + (frame.sh[8].xyz * fma(float(_498), float(_498), -(float(_488) * float(_488))))), float3(0.0));
+    float3 _597 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
+    float _600 = dot(_597, _597);
+    float3 _605 = _597 * rsqrt(fast::max(_600, 9.9999999392252902907785028219223e-09));
+    float _609 = _600 * float(frame.punctualLights[0].positionFalloff.w);
+    float _614 = fast::clamp(fma(-_609, _609, 1.0), 0.0, 1.0);
+    float _633 = fast::clamp(fma(dot(-_605, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _675 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
+    float _678 = dot(_675, _675);
+    float3 _683 = _675 * rsqrt(fast::max(_678, 9.9999999392252902907785028219223e-09));
+    float _687 = _678 * float(frame.punctualLights[1].positionFalloff.w);
+    float _692 = fast::clamp(fma(-_687, _687, 1.0), 0.0, 1.0);
+    float _711 = fast::clamp(fma(dot(-_683, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((_566 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_614 * _614) / fast::max(_600, 9.9999997473787516355514526367188e-05)) * _633) * _633), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _605), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_692 * _692) / fast::max(_678, 9.9999997473787516355514526367188e-05)) * _711) * _711), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _683), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _281;
     return out;
 }

@@ -58,26 +58,27 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
     float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _443;
+    float3 _452;
     if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
     {
-        _443 = -in.a_normal;
+        _452 = -in.a_normal;
     }
     else
     {
-        _443 = in.a_normal;
+        _452 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_443 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_452 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _449 = half3(out.v_normal);
-    half _349 = _449.y;
-    half3 _451 = half3(out.v_normal);
-    half _354 = _451.z;
-    half3 _453 = half3(out.v_normal);
-    half _359 = _453.x;
-    float3 _427 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_349))) + (frame.sh[2].xyz * float(_354))) + (frame.sh[3].xyz * float(_359))) + (((((frame.sh[4].xyz * (float(_359) * float(_349))) + (frame.sh[5].xyz * (float(_349) * float(_354)))) + (frame.sh[6].xyz * fma(3.0 * float(_354), float(_354), -1.0))) + (frame.sh[7].xyz * (float(_359) * float(_354)))) + (frame.sh[8].xyz * fma(float(_359), float(_359), -(float(_349) * float(_349))))), float3(0.0));
-    out.v_diffuseLight = _427 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _458 = half3(out.v_normal);
+    half _358 = _458.y;
+    half3 _460 = half3(out.v_normal);
+    half _363 = _460.z;
+    half3 _462 = half3(out.v_normal);
+    half _368 = _462.x;
+    float3 _436 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_358))) + (frame.sh[2].xyz * float(_363))) + (frame.sh[3].xyz * float(_368))) + (((((frame.sh[4].xyz * (float(_368) * float(_358))) + (frame.sh[5].xyz * (float(_358) * float(_363)))) + (frame.sh[6].xyz * fma(3.0 * float(_363), float(_363), -1.0))) + (frame.sh[7].xyz * (float(_368) * float(_363)))) + (frame.sh[8].xyz * fma(float(_368), float(_368), -(float(_358) * float(_358))))), float3(0.0));
+    out.v_diffuseLight = _436 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

@@ -60,31 +60,32 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _211 = _207.xyz;
     out.v_worldPosition = _211;
     float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _612;
+    float3 _621;
     if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
     {
-        _612 = -in.a_normal;
+        _621 = -in.a_normal;
     }
     else
     {
-        _612 = in.a_normal;
+        _621 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_612 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_621 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    float3 _437 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
-    float _440 = dot(_437, _437);
-    float3 _445 = _437 * rsqrt(fast::max(_440, 9.9999999392252902907785028219223e-09));
-    float _449 = _440 * float(frame.punctualLights[0].positionFalloff.w);
-    float _454 = fast::clamp(fma(-_449, _449, 1.0), 0.0, 1.0);
-    float _473 = fast::clamp(fma(dot(-_445, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _515 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
-    float _518 = dot(_515, _515);
-    float3 _523 = _515 * rsqrt(fast::max(_518, 9.9999999392252902907785028219223e-09));
-    float _527 = _518 * float(frame.punctualLights[1].positionFalloff.w);
-    float _532 = fast::clamp(fma(-_527, _527, 1.0), 0.0, 1.0);
-    float _551 = fast::clamp(fma(dot(-_523, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_directDiffuse = (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_454 * _454) / fast::max(_440, 9.9999997473787516355514526367188e-05)) * _473) * _473), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _445), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_532 * _532) / fast::max(_518, 9.9999997473787516355514526367188e-05)) * _551) * _551), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _523), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _299 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_299 * rsqrt(fast::max(dot(_299, _299), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    float3 _446 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
+    float _449 = dot(_446, _446);
+    float3 _454 = _446 * rsqrt(fast::max(_449, 9.9999999392252902907785028219223e-09));
+    float _458 = _449 * float(frame.punctualLights[0].positionFalloff.w);
+    float _463 = fast::clamp(fma(-_458, _458, 1.0), 0.0, 1.0);
+    float _482 = fast::clamp(fma(dot(-_454, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _524 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
+    float _527 = dot(_524, _524);
+    float3 _532 = _524 * rsqrt(fast::max(_527, 9.9999999392252902907785028219223e-09));
+    float _536 = _527 * float(frame.punctualLights[1].positionFalloff.w);
+    float _541 = fast::clamp(fma(-_536, _536, 1.0), 0.0, 1.0);
+    float _560 = fast::clamp(fma(dot(-_532, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_directDiffuse = (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_463 * _463) / fast::max(_449, 9.9999997473787516355514526367188e-05)) * _482) * _482), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _454), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_541 * _541) / fast::max(_527, 9.9999997473787516355514526367188e-05)) * _560) * _560), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _532), 0.0, 1.0) * 0.3183098733425140380859375));
     out.v_diffuseLight = fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0));
     out.gl_Position = frame.viewProjection * _207;
     return out;

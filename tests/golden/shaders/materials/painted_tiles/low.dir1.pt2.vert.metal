@@ -60,31 +60,32 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _211 = _207.xyz;
     out.v_worldPosition = _211;
     float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _625;
+    float3 _634;
     if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
     {
-        _625 = -in.a_normal;
+        _634 = -in.a_normal;
     }
     else
     {
-        _625 = in.a_normal;
+        _634 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_625 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_634 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    float3 _450 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
-    float _453 = dot(_450, _450);
-    float3 _458 = _450 * rsqrt(fast::max(_453, 9.9999999392252902907785028219223e-09));
-    float _462 = _453 * float(frame.punctualLights[0].positionFalloff.w);
-    float _467 = fast::clamp(fma(-_462, _462, 1.0), 0.0, 1.0);
-    float _486 = fast::clamp(fma(dot(-_458, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _528 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
-    float _531 = dot(_528, _528);
-    float3 _536 = _528 * rsqrt(fast::max(_531, 9.9999999392252902907785028219223e-09));
-    float _540 = _531 * float(frame.punctualLights[1].positionFalloff.w);
-    float _545 = fast::clamp(fma(-_540, _540, 1.0), 0.0, 1.0);
-    float _564 = fast::clamp(fma(dot(-_536, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_directDiffuse = ((frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_467 * _467) / fast::max(_453, 9.9999997473787516355514526367188e-05)) * _486) * _486), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _458), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_545 * _545) / fast::max(_531, 9.9999997473787516355514526367188e-05)) * _564) * _564), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _536), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _299 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_299 * rsqrt(fast::max(dot(_299, _299), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    float3 _459 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
+    float _462 = dot(_459, _459);
+    float3 _467 = _459 * rsqrt(fast::max(_462, 9.9999999392252902907785028219223e-09));
+    float _471 = _462 * float(frame.punctualLights[0].positionFalloff.w);
+    float _476 = fast::clamp(fma(-_471, _471, 1.0), 0.0, 1.0);
+    float _495 = fast::clamp(fma(dot(-_467, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _537 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
+    float _540 = dot(_537, _537);
+    float3 _545 = _537 * rsqrt(fast::max(_540, 9.9999999392252902907785028219223e-09));
+    float _549 = _540 * float(frame.punctualLights[1].positionFalloff.w);
+    float _554 = fast::clamp(fma(-_549, _549, 1.0), 0.0, 1.0);
+    float _573 = fast::clamp(fma(dot(-_545, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_directDiffuse = ((frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_476 * _476) / fast::max(_462, 9.9999997473787516355514526367188e-05)) * _495) * _495), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _467), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_554 * _554) / fast::max(_540, 9.9999997473787516355514526367188e-05)) * _573) * _573), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _545), 0.0, 1.0) * 0.3183098733425140380859375));
     out.v_diffuseLight = fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0));
     out.gl_Position = frame.viewProjection * _207;
     return out;

@@ -60,39 +60,40 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _285 = _281.xyz;
     out.v_worldPosition = _285;
     float3 _298 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _766;
+    float3 _775;
     if (dot(in.a_instanceRow0.xyz, _298) < 0.0)
     {
-        _766 = -in.a_normal;
+        _775 = -in.a_normal;
     }
     else
     {
-        _766 = in.a_normal;
+        _775 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_766 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_775 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _775 = half3(out.v_normal);
-    half _470 = _775.y;
-    half3 _777 = half3(out.v_normal);
-    half _475 = _777.z;
-    half3 _779 = half3(out.v_normal);
-    half _480 = _779.x;
-    float3 _548 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_470))) + (frame.sh[2].xyz * float(_475))) + (frame.sh[3].xyz * float(_480))) + (((((frame.sh[4].xyz * (float(_480) * float(_470))) + (frame.sh[5].xyz * (float(_470) * float(_475)))) + (frame.sh[6].xyz * fma(3.0 * float(_475), float(_475), -1.0))) + (frame.sh[7].xyz * (float(_480) * float(_475)))) + (frame.sh[8].xyz * fma(float(_480), float(_480), -(float(_470) * float(_470))))), float3(0.0));
-    float3 _579 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
-    float _582 = dot(_579, _579);
-    float3 _587 = _579 * rsqrt(fast::max(_582, 9.9999999392252902907785028219223e-09));
-    float _591 = _582 * float(frame.punctualLights[0].positionFalloff.w);
-    float _596 = fast::clamp(fma(-_591, _591, 1.0), 0.0, 1.0);
-    float _615 = fast::clamp(fma(dot(-_587, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _657 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
-    float _660 = dot(_657, _657);
-    float3 _665 = _657 * rsqrt(fast::max(_660, 9.9999999392252902907785028219223e-09));
-    float _669 = _660 * float(frame.punctualLights[1].positionFalloff.w);
-    float _674 = fast::clamp(fma(-_669, _669, 1.0), 0.0, 1.0);
-    float _693 = fast::clamp(fma(dot(-_665, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_directDiffuse = (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_596 * _596) / fast::max(_582, 9.9999997473787516355514526367188e-05)) * _615) * _615), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _587), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_674 * _674) / fast::max(_660, 9.9999997473787516355514526367188e-05)) * _693) * _693), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _665), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.v_diffuseLight = _548;
+    float3 _373 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_373 * rsqrt(fast::max(dot(_373, _373), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _784 = half3(out.v_normal);
+    half _479 = _784.y;
+    half3 _786 = half3(out.v_normal);
+    half _484 = _786.z;
+    half3 _788 = half3(out.v_normal);
+    half _489 = _788.x;
+    float3 _557 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_479))) + (frame.sh[2].xyz * float(_484))) + (frame.sh[3].xyz * float(_489))) + (((((frame.sh[4].xyz * (float(_489) * float(_479))) + (frame.sh[5].xyz * (float(_479) * float(_484)))) + (frame.sh[6].xyz * fma(3.0 * float(_484), float(_484), -1.0))) + (frame.sh[7].xyz * (float(_489) * float(_484)))) + (frame.sh[8].xyz * fma(float(_489), float(_489), -(float(_479) * float(_479))))), float3(0.0));
+    float3 _588 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
+    float _591 = dot(_588, _588);
+    float3 _596 = _588 * rsqrt(fast::max(_591, 9.9999999392252902907785028219223e-09));
+    float _600 = _591 * float(frame.punctualLights[0].positionFalloff.w);
+    float _605 = fast::clamp(fma(-_600, _600, 1.0), 0.0, 1.0);
+    float _624 = fast::clamp(fma(dot(-_596, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _666 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
+    float _669 = dot(_666, _666);
+    float3 _674 = _666 * rsqrt(fast::max(_669, 9.9999999392252902907785028219223e-09));
+    float _678 = _669 * float(frame.punctualLights[1].positionFalloff.w);
+    float _683 = fast::clamp(fma(-_678, _678, 1.0), 0.0, 1.0);
+    float _702 = fast::clamp(fma(dot(-_674, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_directDiffuse = (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_605 * _605) / fast::max(_591, 9.9999997473787516355514526367188e-05)) * _624) * _624), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _596), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_683 * _683) / fast::max(_669, 9.9999997473787516355514526367188e-05)) * _702) * _702), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _674), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.v_diffuseLight = _557;
     out.gl_Position = frame.viewProjection * _281;
     return out;
 }

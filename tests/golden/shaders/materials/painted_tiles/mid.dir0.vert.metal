@@ -59,27 +59,28 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
     float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _433;
+    float3 _442;
     if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
     {
-        _433 = -in.a_normal;
+        _442 = -in.a_normal;
     }
     else
     {
-        _433 = in.a_normal;
+        _442 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_433 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_442 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _439 = half3(out.v_normal);
-    half _339 = _439.y;
-    half3 _441 = half3(out.v_normal);
-    half _344 = _441.z;
-    half3 _443 = half3(out.v_normal);
-    half _349 = _443.x;
-    float3 _417 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_339))) + (frame.sh[2].xyz * float(_344))) + (frame.sh[3].xyz * float(_349))) + (((((frame.sh[4].xyz * (float(_349) * float(_339))) + (frame.sh[5].xyz * (float(_339) * float(_344)))) + (frame.sh[6].xyz * fma(3.0 * float(_344), float(_344), -1.0))) + (frame.sh[7].xyz * (float(_349) * float(_344)))) + (frame.sh[8].xyz * fma(float(_349), float(_349), -(float(_339) * float(_339))))), float3(0.0));
+    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _448 = half3(out.v_normal);
+    half _348 = _448.y;
+    half3 _450 = half3(out.v_normal);
+    half _353 = _450.z;
+    half3 _452 = half3(out.v_normal);
+    half _358 = _452.x;
+    float3 _426 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_348))) + (frame.sh[2].xyz * float(_353))) + (frame.sh[3].xyz * float(_358))) + (((((frame.sh[4].xyz * (float(_358) * float(_348))) + (frame.sh[5].xyz * (float(_348) * float(_353)))) + (frame.sh[6].xyz * fma(3.0 * float(_353), float(_353), -1.0))) + (frame.sh[7].xyz * (float(_358) * float(_353)))) + (frame.sh[8].xyz * fma(float(_358), float(_358), -(float(_348) * float(_348))))), float3(0.0));
     out.v_directDiffuse = float3(0.0);
-    out.v_diffuseLight = _417;
+    out.v_diffuseLight = _426;
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

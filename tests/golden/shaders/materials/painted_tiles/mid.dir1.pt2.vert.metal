@@ -60,39 +60,40 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float3 _285 = _281.xyz;
     out.v_worldPosition = _285;
     float3 _298 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _779;
+    float3 _788;
     if (dot(in.a_instanceRow0.xyz, _298) < 0.0)
     {
-        _779 = -in.a_normal;
+        _788 = -in.a_normal;
     }
     else
     {
-        _779 = in.a_normal;
+        _788 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_779 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_788 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _788 = half3(out.v_normal);
-    half _483 = _788.y;
-    half3 _790 = half3(out.v_normal);
-    half _488 = _790.z;
-    half3 _792 = half3(out.v_normal);
-    half _493 = _792.x;
-    float3 _561 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_483))) + (frame.sh[2].xyz * float(_488))) + (frame.sh[3].xyz * float(_493))) + (((((frame.sh[4].xyz * (float(_493) * float(_483))) + (frame.sh[5].xyz * (float(_483) * float(_488)))) + (frame.sh[6].xyz * fma(3.0 * float(_488), float(_488), -1.0))) + (frame.sh[7].xyz * (float(_493) * float(_488)))) + (frame.sh[8].xyz * fma(float(_493), float(_493), -(float(_483) * float(_483))))), float3(0.0));
-    float3 _592 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
-    float _595 = dot(_592, _592);
-    float3 _600 = _592 * rsqrt(fast::max(_595, 9.9999999392252902907785028219223e-09));
-    float _604 = _595 * float(frame.punctualLights[0].positionFalloff.w);
-    float _609 = fast::clamp(fma(-_604, _604, 1.0), 0.0, 1.0);
-    float _628 = fast::clamp(fma(dot(-_600, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _670 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
-    float _673 = dot(_670, _670);
-    float3 _678 = _670 * rsqrt(fast::max(_673, 9.9999999392252902907785028219223e-09));
-    float _682 = _673 * float(frame.punctualLights[1].positionFalloff.w);
-    float _687 = fast::clamp(fma(-_682, _682, 1.0), 0.0, 1.0);
-    float _706 = fast::clamp(fma(dot(-_678, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_directDiffuse = ((frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_609 * _609) / fast::max(_595, 9.9999997473787516355514526367188e-05)) * _628) * _628), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _600), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_687 * _687) / fast::max(_673, 9.9999997473787516355514526367188e-05)) * _706) * _706), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _678), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.v_diffuseLight = _561;
+    float3 _373 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_373 * rsqrt(fast::max(dot(_373, _373), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _797 = half3(out.v_normal);
+    half _492 = _797.y;
+    half3 _799 = half3(out.v_normal);
+    half _497 = _799.z;
+    half3 _801 = half3(out.v_normal);
+    half _502 = _801.x;
+    float3 _570 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_492))) + (frame.sh[2].xyz * float(_497))) + (frame.sh[3].xyz * float(_502))) + (((((frame.sh[4].xyz * (float(_502) * float(_492))) + (frame.sh[5].xyz * (float(_492) * float(_497)))) + (frame.sh[6].xyz * fma(3.0 * float(_497), float(_497), -1.0))) + (frame.sh[7].xyz * (float(_502) * float(_497)))) + (frame.sh[8].xyz * fma(float(_502), float(_502), -(float(_492) * float(_492))))), float3(0.0));
+    float3 _601 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
+    float _604 = dot(_601, _601);
+    float3 _609 = _601 * rsqrt(fast::max(_604, 9.9999999392252902907785028219223e-09));
+    float _613 = _604 * float(frame.punctualLights[0].positionFalloff.w);
+    float _618 = fast::clamp(fma(-_613, _613, 1.0), 0.0, 1.0);
+    float _637 = fast::clamp(fma(dot(-_609, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _679 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
+    float _682 = dot(_679, _679);
+    float3 _687 = _679 * rsqrt(fast::max(_682, 9.9999999392252902907785028219223e-09));
+    float _691 = _682 * float(frame.punctualLights[1].positionFalloff.w);
+    float _696 = fast::clamp(fma(-_691, _691, 1.0), 0.0, 1.0);
+    float _715 = fast::clamp(fma(dot(-_687, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_directDiffuse = ((frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_618 * _618) / fast::max(_604, 9.9999997473787516355514526367188e-05)) * _637) * _637), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _609), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_696 * _696) / fast::max(_682, 9.9999997473787516355514526367188e-05)) * _715) * _715), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _687), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.v_diffuseLight = _570;
     out.gl_Position = frame.viewProjection * _281;
     return out;
 }

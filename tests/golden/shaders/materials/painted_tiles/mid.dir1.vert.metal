@@ -59,27 +59,28 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
     float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _447;
+    float3 _456;
     if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
     {
-        _447 = -in.a_normal;
+        _456 = -in.a_normal;
     }
     else
     {
-        _447 = in.a_normal;
+        _456 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_447 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_456 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
-    half3 _453 = half3(out.v_normal);
-    half _353 = _453.y;
-    half3 _455 = half3(out.v_normal);
-    half _358 = _455.z;
-    half3 _457 = half3(out.v_normal);
-    half _363 = _457.x;
-    float3 _431 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_353))) + (frame.sh[2].xyz * float(_358))) + (frame.sh[3].xyz * float(_363))) + (((((frame.sh[4].xyz * (float(_363) * float(_353))) + (frame.sh[5].xyz * (float(_353) * float(_358)))) + (frame.sh[6].xyz * fma(3.0 * float(_358), float(_358), -1.0))) + (frame.sh[7].xyz * (float(_363) * float(_358)))) + (frame.sh[8].xyz * fma(float(_363), float(_363), -(float(_353) * float(_353))))), float3(0.0));
+    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _462 = half3(out.v_normal);
+    half _362 = _462.y;
+    half3 _464 = half3(out.v_normal);
+    half _367 = _464.z;
+    half3 _466 = half3(out.v_normal);
+    half _372 = _466.x;
+    float3 _440 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_362))) + (frame.sh[2].xyz * float(_367))) + (frame.sh[3].xyz * float(_372))) + (((((frame.sh[4].xyz * (float(_372) * float(_362))) + (frame.sh[5].xyz * (float(_362) * float(_367)))) + (frame.sh[6].xyz * fma(3.0 * float(_367), float(_367), -1.0))) + (frame.sh[7].xyz * (float(_372) * float(_367)))) + (frame.sh[8].xyz * fma(float(_372), float(_372), -(float(_362) * float(_362))))), float3(0.0));
     out.v_directDiffuse = frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375);
-    out.v_diffuseLight = _431;
+    out.v_diffuseLight = _440;
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

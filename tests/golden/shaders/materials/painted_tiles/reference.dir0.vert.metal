@@ -57,18 +57,19 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
     out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
     float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _178;
+    float3 _187;
     if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
     {
-        _178 = -in.a_normal;
+        _187 = -in.a_normal;
     }
     else
     {
-        _178 = in.a_normal;
+        _187 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_178 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_187 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    out.v_tangent = float4(in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz)), in.a_tangent.w);
+    float3 _159 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_159 * rsqrt(fast::max(dot(_159, _159), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
     out.gl_Position = frame.viewProjection * _51;
     return out;
 }
