@@ -69,8 +69,9 @@ int main(int argc, char** argv) {
       "anti-aliasing; flicker over %d camera positions 1/%d pixel apart (8-bit steps):\n\n",
       api.c_str(), scene->width, scene->height, kSweepSteps, kSweepSteps);
   std::printf(
-      "| tier | packages | summed specular / reference | PSNR dB | frame-to-frame | beyond the reference's |\n");
-  std::printf("|---|---|--:|--:|--:|--:|\n");
+      "| tier | packages | summed specular / reference | PSNR dB | PSNR of HDR dB | frame-to-frame | beyond the "
+      "reference's |\n");
+  std::printf("|---|---|--:|--:|--:|--:|--:|\n");
   for (const char* tier : {"high", "mid", "low"}) {
     Scene s = *scene;
     s.tier = tier;
@@ -85,12 +86,13 @@ int main(int argc, char** argv) {
       SpecularAaFigures f;
       if (!measureOneSample(*backend, s, packages, reference, &f, &error)) return fail(error);
       if (!save(label, f.firstFrame)) return fail(error);
-      std::printf("| %s | %s | %.4f | %.2f | %.4f | %.4f |\n", tier, label.c_str(), f.specularRatio, f.psnr, f.flicker,
-                  f.flickerBeyondReference);
+      std::printf("| %s | %s | %.4f | %.2f | %.2f | %.4f | %.4f |\n", tier, label.c_str(), f.specularRatio, f.psnr,
+                  f.psnrHdr, f.flicker, f.flickerBeyondReference);
     }
     double change = 0, excess = 0;
     flicker(reference.sweep, reference.sweep, &change, &excess);
-    std::printf("| %s | reference (16 samples) | 1 | ∞ | %.4f | 0 |\n", tier, change);
+    std::printf("| %s | reference (16 samples) | 1 | ∞ | %.2f | %.4f | 0 |\n", tier,
+                facet::eval::psnr8(reference.image, reference.resolved), change);
   }
   for (const std::string& e : backend->validationErrors()) return fail("validation: " + e);
   return 0;
