@@ -16,7 +16,7 @@
 // head-on, and V → 1/(4 n·l) as n·v → 0). Dividing the lobe by max(1, E) makes its albedo
 // min(E, 1): ≤ 1 everywhere, unchanged where it was ≤ 1. Both numbers come from the DFG
 // texture's B and A channels (ibl/sheen_lut.h; one fetch at (n·v, r), the split sum's
-// coordinates), read once per pixel by cloth_sheen_layer before any light.
+// coordinates), read once per pixel by sheen_layer (sheen_layer.glsl) before any light.
 // b is KHR_materials_sheen's albedo scaling (the Khronos glTF extension's specification, "Albedo
 // scaling"), at the view only (as the clear coat's 1 − Fc(n·v), one per pixel, not per light):
 // sheen and fabric together reflect at most what a white fabric alone would, so the white furnace
@@ -24,33 +24,12 @@
 // The environment is read from the GGX-prefiltered levels at r (Filament's approximation: the
 // sheen's own lobe is wider at grazing views). sheenColor defaults to √baseColor (Filament's
 // default: a two-tone sheen lighter than the fabric); the diffuse colour is baseColor (no metal).
-// Needs: sheen_charlie_neubelt.glsl (the lobe), shading_standard.glsl (material terms,
-// half_vector), diffuse_lambert.glsl, the prefiltered (or two-mip) environment, facet_dfgLut.
+// The sheen's colour and environment are sheen_layer.glsl's, one light's sheen
+// sheen_charlie_neubelt.glsl's (sheen_light), shared with the sheen layer over the standard model.
+// Needs: both, shading_standard.glsl (material terms, half_vector), diffuse_lambert.glsl.
 //
 // fp16: the lobe's bounds are sheen_charlie_neubelt.glsl's; the light's product is saturated at
 // 65504 as the standard model's (shading_standard.glsl). The table's two numbers lie in [0, 1].
-
-// The sheen's colour in linear; under FACET_GAMMA_HACK colours arrive encoded with γ = 2, like
-// baseColor (shading_standard.glsl).
-vec3 cloth_sheen_color(MaterialInputs material) {
-#if defined(FACET_MATERIAL_SHEEN_COLOR) && defined(FACET_GAMMA_HACK)
-    vec3 sheen = clamp(material.sheenColor, 0.0, 1.0);
-    return sheen * sheen;
-#elif defined(FACET_MATERIAL_SHEEN_COLOR)
-    return clamp(material.sheenColor, 0.0, 1.0);
-#elif defined(FACET_GAMMA_HACK)
-    return clamp(material.baseColor, 0.0, 1.0);  // √(linear baseColor) is the encoded baseColor
-#else
-    return sqrt(clamp(material.baseColor, 0.0, 1.0));
-#endif
-}
-
-#if defined(FACET_SHEEN_LOBE)
-// s(n·v, r) of the correction and the fabric's b(n·v, r), set by cloth_sheen_layer before any
-// light is shaded.
-float shading_sheen_scale = 1.0;
-float shading_sheen_base_scale = 1.0;
-#endif
 
 vec3 shade_cloth_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, highp vec3 lightHighp,
                         vec3 lightColor) {
@@ -58,12 +37,11 @@ vec3 shade_cloth_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, h
     float NoLSigned = dot(n, l);
     float NoL = clamp(NoLSigned, 0.0, 1.0);
 #if defined(FACET_SHEEN_LOBE)
-    float alpha = material_alpha(material);
     vec3 v = viewHighp;
     vec3 h = half_vector(viewHighp, lightHighp);
     float NoV = max(dot(n, v), MIN_N_DOT_V);
     float NoH = clamp(dot(n, h), 0.0, 1.0);
-    vec3 sheen = cloth_sheen_color(material) * (sheen_lobe_times_n_dot_l(alpha, NoV, NoL, NoH) * shading_sheen_scale);
+    vec3 sheen = sheen_light(NoV, NoL, NoH);
 #else
     vec3 sheen = vec3(0.0);  // (the tier's sheen form has no lobe per light: folded away)
 #endif
@@ -89,31 +67,3 @@ vec3 shade_cloth_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp, h
     return min((diffuse + sheen) * lightColor, MEDIUMP_FLT_MAX);
 #endif
 }
-
-#if defined(FACET_SHEEN_AMBIENT)
-// The sheen over the lit fabric: the fabric's light so far (the ambient diffuse, and in mid and
-// low the lights' per-vertex diffuse) × b, plus the sheen's environment; sets shading_sheen_scale
-// and shading_sheen_base_scale for the lights (FACET_SHEEN_LOBE).
-vec3 cloth_sheen_layer(MaterialInputs material, vec3 base, vec3 n, vec3 v) {
-    float perceptualRoughness = material_perceptual_roughness(material);
-    float NoV = max(dot(n, v), MIN_N_DOT_V);
-    // (min(E, 1), 1/max(E, 1)): texel centres at (i + 0.5)/64 as the DFG terms' (ibl_split_sum.glsl).
-    vec2 sheenTerms = textureLod(facet_dfgLut, vec2(NoV, perceptualRoughness), 0.0).ba;
-    vec3 sheenColor = cloth_sheen_color(material);
-    float baseScale = 1.0 - max(sheenColor.r, max(sheenColor.g, sheenColor.b)) * sheenTerms.x;
-#if defined(FACET_SHEEN_LOBE)
-    shading_sheen_scale = sheenTerms.y;
-    shading_sheen_base_scale = baseScale;
-#endif
-#if defined(FACET_IBL_TWO_MIP)
-    vec3 radiance = two_mip_radiance(reflect(-v, n), perceptualRoughness);
-#else
-    vec3 radiance = prefiltered_radiance(reflect(-v, n), perceptualRoughness);
-#endif
-    vec3 specular = radiance * (sheenColor * sheenTerms.x);
-#if defined(FACET_MATERIAL_AMBIENT_OCCLUSION)
-    specular = apply_specular_occlusion(material, specular, NoV, perceptualRoughness);
-#endif
-    return base * baseScale + specular;
-}
-#endif

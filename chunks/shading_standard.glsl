@@ -167,17 +167,28 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     // clamped to 65504. That clamp is the RGBA16F target's limit, so it applies in every tier
     // (saturateMediump is an identity in the highp `reference`).
     vec3 irradiance = lightColor * NoL;
+#if defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE)
+    // Under a sheen layer (sheen_layer.glsl): the base × b, the sheen's lobe over it.
+    vec3 sheen = sheen_light(NoV, NoL, NoH) * lightColor;
+    irradiance *= shading_sheen_base_scale;
+#endif
 #if defined(FACET_CLEAR_COAT_LOBE)
     // Under a clear coat (clear_coat_ggx_kelemen.glsl): the base is lit through it, × (1 − Fc(n_c·v)),
     // and the coat adds its own lobe (finite: ≤ 65504 · E · n·l, saturated with the sum below).
     vec3 coat = clear_coat_direct(material, l, h, LoH, lightColor);
     irradiance *= shading_clear_coat_attenuation;
 #endif
+    // `coat`: what lies over the base's lobes, the coat's and, under it, the sheen's.
+#if defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE) && defined(FACET_CLEAR_COAT_LOBE)
+    coat += sheen * shading_clear_coat_attenuation;
+#elif defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE)
+    vec3 coat = sheen;
+#endif
     // Linear in every colour space: with FACET_GAMMA_HACK the caller adds it to the linear sum
     // with add_light (shading_ambient.glsl), as the ambient specular.
 #if defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
-#if defined(FACET_CLEAR_COAT_LOBE)
+#if defined(FACET_CLEAR_COAT_LOBE) || (defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE))
     return min(specular * irradiance + coat, MEDIUMP_FLT_MAX);
 #else
     return min(specular * irradiance, MEDIUMP_FLT_MAX);
@@ -187,7 +198,7 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
 #if defined(FACET_GAMMA_HACK)
     diffuseColor *= diffuseColor;  // encoded with γ = 2: back to linear
 #endif
-#if defined(FACET_CLEAR_COAT_LOBE)
+#if defined(FACET_CLEAR_COAT_LOBE) || (defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE))
     return min((diffuseColor * diffuse_lambert() + specular) * irradiance + coat, MEDIUMP_FLT_MAX);
 #else
     return min((diffuseColor * diffuse_lambert() + specular) * irradiance, MEDIUMP_FLT_MAX);

@@ -28,3 +28,18 @@ float sheen_lobe_times_n_dot_l(float alpha, float NoV, float NoL, float NoH) {
     float sin2h = max(1.0 - NoH * NoH, 0.0);
     return (2.0 + invAlpha) * pow(sin2h, 0.5 * invAlpha) * (0.5 * INV_PI) * visibilityTimesNoL;
 }
+
+// The sheen's colour, α, s(n·v, r) = 1/max(1, E) (the lobe's energy correction) and
+// b(n·v, r) = 1 − max(sheenColor) · min(E, 1) (the scale of the base under the sheen; sheen_layer.glsl
+// has both), set once per pixel by sheen_layer before any light is shaded. Declared with the lobe:
+// the lights read them (shading_cloth.glsl, and shading_standard.glsl before sheen_layer.glsl).
+vec3 shading_sheen_color = vec3(0.0);
+float shading_sheen_alpha = 1.0;
+float shading_sheen_scale = 1.0;
+float shading_sheen_base_scale = 1.0;
+
+// One light's sheen per unit of its light, sheenColor · D · V · n·l · s: ≤ 5.2 (above), the
+// caller's product with the light saturated as the base's.
+vec3 sheen_light(float NoV, float NoL, float NoH) {
+    return shading_sheen_color * (sheen_lobe_times_n_dot_l(shading_sheen_alpha, NoV, NoL, NoH) * shading_sheen_scale);
+}

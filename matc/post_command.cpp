@@ -46,7 +46,9 @@ int postCommand(const PostArgs& args) {
   }
   compiler::PostStage fxaa;
   compiler::BloomStages bloom;
-  if (!compiler::buildFxaaShader(&fxaa, &error) || !compiler::buildBloomShaders(&bloom, &error)) {
+  compiler::BackgroundStages background;
+  if (!compiler::buildFxaaShader(&fxaa, &error) || !compiler::buildBloomShaders(&bloom, &error) ||
+      !compiler::buildBackgroundShaders(&background, &error)) {
     cli::printError(error);
     return 1;
   }
@@ -70,6 +72,13 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", stem + ".fetch.frag.metal", shaders.fetchFragment.msl);
     add("--emit-source", stem + ".upscaled.frag.es300.glsl", shaders.upscaledFragment.glslEs);
     add("--emit-source", stem + ".upscaled.frag.metal", shaders.upscaledFragment.msl);
+    if (!shaders.samplesFragment.glslEs.empty()) {
+      // GLSL ES 3.10 (sampler2DMS): its vertex stage is the variant's, at the same version.
+      std::string vertex = shaders.vertex.glslEs;
+      vertex.replace(0, vertex.find('\n'), "#version 310 es");
+      add("--emit-source", stem + ".samples.vert.es310.glsl", vertex);
+      add("--emit-source", stem + ".samples.frag.es310.glsl", shaders.samplesFragment.glslEs);
+    }
   }
   if (!args.emitSource.empty()) {
     const std::string stem = (fs::path(args.emitSource) / "post.fxaa").string();
@@ -84,19 +93,28 @@ int postCommand(const PostArgs& args) {
     add("--emit-source", bloomStem + ".threshold.frag.metal", bloom.downsampleThreshold.msl);
     add("--emit-source", bloomStem + ".up.frag.es300.glsl", bloom.upsample.glslEs);
     add("--emit-source", bloomStem + ".up.frag.metal", bloom.upsample.msl);
+    const std::string backgroundStem = (fs::path(args.emitSource) / "post.background").string();
+    add("--emit-source", backgroundStem + ".vert.es300.glsl", background.vertex.glslEs);
+    add("--emit-source", backgroundStem + ".vert.metal", background.vertex.msl);
+    add("--emit-source", backgroundStem + ".frag.es300.glsl", background.fragment.glslEs);
+    add("--emit-source", backgroundStem + ".frag.metal", background.fragment.msl);
   }
-  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa, bloom));
+  add("--cpp", args.cpp, compiler::postShadersCpp(variants, fxaa, bloom) + compiler::backgroundShadersCpp(background));
   if (!cli::outputsSpareInputs({}, outputs) || !cli::writeOutputs({args.emitSource}, files)) return 1;
   for (const compiler::PostShaders& shaders : variants)
-    std::printf("post %s: %zu + %zu + %zu + %zu SPIR-V words; fragment: sampled %s, fetch %s, upscaled %s\n",
-                compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
-                shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size(),
-                shaders.upscaledFragment.spirv.size(), fragmentCost(shaders.sampledFragment.spirv).c_str(),
-                fragmentCost(shaders.fetchFragment.spirv).c_str(),
-                fragmentCost(shaders.upscaledFragment.spirv).c_str());
+    std::printf(
+        "post %s: %zu + %zu + %zu + %zu + %zu SPIR-V words; fragment: sampled %s, fetch %s, upscaled %s, per-sample "
+        "%s\n",
+        compiler::postVariantKey(shaders.effects).c_str(), shaders.vertex.spirv.size(),
+        shaders.sampledFragment.spirv.size(), shaders.fetchFragment.spirv.size(), shaders.upscaledFragment.spirv.size(),
+        shaders.samplesFragment.spirv.size(), fragmentCost(shaders.sampledFragment.spirv).c_str(),
+        fragmentCost(shaders.fetchFragment.spirv).c_str(), fragmentCost(shaders.upscaledFragment.spirv).c_str(),
+        shaders.samplesFragment.spirv.empty() ? "none" : fragmentCost(shaders.samplesFragment.spirv).c_str());
   std::printf("post fxaa: %zu SPIR-V words; fragment %s\n", fxaa.spirv.size(), fragmentCost(fxaa.spirv).c_str());
   std::printf("post bloom: downsample %s, threshold %s, upsample %s\n", fragmentCost(bloom.downsample.spirv).c_str(),
               fragmentCost(bloom.downsampleThreshold.spirv).c_str(), fragmentCost(bloom.upsample.spirv).c_str());
+  std::printf("post background: %zu + %zu SPIR-V words; fragment %s\n", background.vertex.spirv.size(),
+              background.fragment.spirv.size(), fragmentCost(background.fragment.spirv).c_str());
   std::printf("-> %s\n", args.cpp.c_str());
   return 0;
 }

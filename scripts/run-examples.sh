@@ -39,16 +39,14 @@ cmp build/examples/textures/tiles_normal.ktx2 examples/scenes/textures/tiles_nor
 for scene in examples/scenes/*.json; do
   if grep -q '"castShadows": true' "$scene"; then
     # A sun that casts (yard.json): its packages built with --scene (the receivers and depth-only
-    # programs it asks for), drawn on Vulkan only: GL does not draw the shadow pass yet.
+    # programs it asks for).
     name=$(basename "$scene" .json)
     mkdir -p "$packages/$name"
     for material in $(grep -o '"material": "[a-z_]*"' "$scene" | cut -d'"' -f4 | sort -u); do
       build/release/matc/matc compile "examples/materials/$material.mat" -o "$packages/$name/$material.matpkg" \
         --scene "$scene"
     done
-    echo "$scene: GL skipped: the GL backend does not draw the shadow pass (docs/shadows.md)"
-    build/release/runtime/viewer/facet-view "$scene" --packages "$packages/$name" --out "$images" --backend vulkan \
-      --validation
+    build/release/runtime/viewer/facet-view "$scene" --packages "$packages/$name" --out "$images" --validation
     continue
   fi
   build/release/runtime/viewer/facet-view "$scene" --packages "$packages" --out "$images" --validation

@@ -50,17 +50,14 @@
 #include "brdf_ggx.glsl"
 #include "anisotropy_ggx_smith.glsl"
 #endif
-#include "shading_standard.glsl"
-#if defined(FACET_SPECULAR_AA)
-#include "specular_antialiasing.glsl"
-#endif
-// The cloth model (docs/material-models.md) in place of the standard one's lights and ambient
-// specular; it reads the standard chunk's material terms.
+// The sheen's lobe (the cloth model's, or a layer's over the standard model) before the standard
+// model's lights, which read the layer's scale of the base.
 #if defined(FACET_SHEEN_LOBE)
 #include "sheen_charlie_neubelt.glsl"
 #endif
-#if defined(FACET_SHADING_CLOTH)
-#include "shading_cloth.glsl"
+#include "shading_standard.glsl"
+#if defined(FACET_SPECULAR_AA)
+#include "specular_antialiasing.glsl"
 #endif
 #if defined(FACET_IBL_SAMPLED)
 #include "ibl_sampled.glsl"
@@ -69,6 +66,15 @@
 #include "ambient_occlusion.glsl"
 #endif
 #include "shading_ambient.glsl"
+// The sheen over a base (docs/material-models.md, "Cloth" and "Sheen layer"), after the specular
+// occlusion it applies; the cloth model, in place of the standard one's lights and ambient
+// specular, reads the standard chunk's material terms and the sheen's.
+#if defined(FACET_SHEEN_AMBIENT)
+#include "sheen_layer.glsl"
+#endif
+#if defined(FACET_SHADING_CLOTH)
+#include "shading_cloth.glsl"
+#endif
 #include "output_blending.glsl"
 // The view vector at highp, for the half vector of each light (shading_standard.glsl,
 // half_vector: at a grazing glint v ≈ −l and v + l cancels in fp16).
@@ -161,12 +167,13 @@ void main() {
     // summed in linear (shading_ambient.glsl).
     color = linear_from_shading_space(color);
     // Before the lights: with FACET_ENERGY_COMPENSATION it sets the factor they use.
-#if defined(FACET_SHEEN_AMBIENT)
-    // The sheen over the fabric lit so far, before the lights: it sets the sheen's energy
-    // correction and the fabric's scale they use.
-    color = cloth_sheen_layer(material, color, shading_normal, shading_view);
-#elif !defined(FACET_SHADING_CLOTH)
+#if !defined(FACET_SHADING_CLOTH)
     color = add_light(color, shade_standard_ambient_specular(material, shading_normal, shading_view));
+#endif
+#if defined(FACET_SHEEN_AMBIENT)
+    // The sheen over the fabric, or over the standard model's base, lit so far, before the lights:
+    // it sets the sheen's energy correction and the base's scale they use.
+    color = sheen_layer(material, color, shading_normal, shading_view);
 #endif
 #if defined(FACET_CLEAR_COAT_LOBE)
     // The ambient base under the coat, and the coat's environment; each light layers its own.

@@ -2,7 +2,8 @@
 //
 // Renders a scene (tests/data/scenes/thin_edges.json: high-contrast silhouettes and a row of
 // sub-pixel highlights) and compares, against a 16-sample reference:
-// 1. edge quality: PSNR of 1 sample, of MSAA 2x/4x per pixel and of FXAA (alone and after MSAA 4x).
+// 1. edge quality: PSNR of 1 sample, of MSAA 2x/4x per pixel (on Vulkan also the portable form's
+//    4x, resolved first and tone-mapped per sample) and of FXAA (alone and after MSAA 4x).
 //    The reference is the scene rendered
 //    at 4x the width and height with one sample, box-filtered over each 4x4 block in linear light
 //    (each 8-bit output decoded from sRGB, averaged, encoded and rounded): 16 tone-mapped samples
@@ -16,7 +17,10 @@
 //    1/16 of a pixel at the target's distance), for 1 sample, MSAA, FXAA and the reference; and the mean
 //    absolute difference between an image's frame-to-frame change and the reference's, value by
 //    value: the reference's change is the motion itself, what differs from it is temporal aliasing
-//    (an aliased edge pops by whole steps where the reference moves smoothly).
+//    (an aliased edge pops by whole steps where the reference moves smoothly);
+// 4. render scale: PSNR of the frame rendered at 0.75 and 0.5 of the width and height and upscaled
+//    by the post pass, against the same frame at full size (one sample each) and against the
+//    16-sample reference.
 //
 // Usage: measure_msaa SCENE PACKAGES [--backend vulkan|gl]   (prints Markdown; deterministic)
 #include <cstdio>
@@ -37,17 +41,28 @@ using facet::supersample::downsampleLdr;
 using facet::supersample::render;
 using facet::supersample::resolveThenToneMap;
 
+// portable (Vulkan): multisampled attachments instead of VK_EXT_multisampled_render_to_single_sampled,
+// with the post subpass tone mapping each sample (toneMapSamples) or reading the resolve.
+struct Portable {
+  bool on = false;
+  bool toneMapSamples = false;
+};
+
 std::unique_ptr<RenderBackend> makeBackend(const std::string& api, uint32_t samples, std::string* error,
-                                           bool fxaa = false) {
+                                           bool fxaa = false, Portable portable = {}, double renderScale = 1.0) {
   if (api == "gl") {
     GlOptions options;
     options.msaaSamples = samples;
     options.fxaa = fxaa;
+    options.renderScale = renderScale;
     return createGlBackend(options, error);
   }
   VulkanOptions options;
   options.msaaSamples = samples;
   options.fxaa = fxaa;
+  options.renderScale = renderScale;
+  options.renderToSingleSampled = !portable.on;
+  options.toneMapSamples = portable.toneMapSamples;
   return createVulkanBackend(options, error);
 }
 
@@ -74,14 +89,22 @@ int main(int argc, char** argv) {
 
   auto one = makeBackend(api, 1, &error);
   if (!one) return fail(error);
-  std::vector<std::pair<uint32_t, std::unique_ptr<RenderBackend>>> msaa;
+  std::vector<std::pair<std::string, std::unique_ptr<RenderBackend>>> msaa;
   for (uint32_t samples : {2u, 4u}) {
     std::string why;
     auto backend = makeBackend(api, samples, &why);
     if (backend) {
-      msaa.emplace_back(samples, std::move(backend));
+      msaa.emplace_back("MSAA " + std::to_string(samples) + "x", std::move(backend));
     } else {
       std::printf("MSAA %ux: not offered (%s)\n\n", samples, why.c_str());
+    }
+  }
+  if (api == "vulkan") {
+    for (bool perSample : {false, true}) {
+      auto backend = makeBackend(api, 4, &error, false, {true, perSample});
+      if (!backend) return fail(error);
+      msaa.emplace_back(perSample ? "MSAA 4x portable, tone-mapped per sample" : "MSAA 4x portable, resolve first",
+                        std::move(backend));
     }
   }
   // FXAA after the post pass, alone and on top of MSAA 4x.
@@ -108,10 +131,10 @@ int main(int argc, char** argv) {
               api.c_str(), single.width, single.height);
   std::printf("| image | PSNR |\n|---|---|\n");
   std::printf("| 1 sample | %.2f dB |\n", facet::eval::psnr8(single.ldr, reference));
-  for (auto& [samples, backend] : msaa) {
+  for (auto& [name, backend] : msaa) {
     FrameResult r;
     if (!render(*backend, *scene, 1, 0, packages, &r, &error)) return fail(error);
-    std::printf("| MSAA %ux (%s) | %.2f dB |\n", samples, backend->msaaMethod().c_str(),
+    std::printf("| %s (%s) | %.2f dB |\n", name.c_str(), backend->msaaMethod().c_str(),
                 facet::eval::psnr8(r.ldr, reference));
   }
   for (auto& [name, backend] : fxaa) {
@@ -155,10 +178,10 @@ int main(int argc, char** argv) {
   std::vector<std::vector<uint8_t>> frames;
   if (!sweep(*one, 1, &frames)) return fail(error);
   report("1 sample", frames);
-  for (auto& [samples, backend] : msaa) {
+  for (auto& [name, backend] : msaa) {
     frames.clear();
     if (!sweep(*backend, 1, &frames)) return fail(error);
-    report(("MSAA " + std::to_string(samples) + "x").c_str(), frames);
+    report(name.c_str(), frames);
   }
   for (auto& [name, backend] : fxaa) {
     frames.clear();
@@ -173,6 +196,21 @@ int main(int argc, char** argv) {
            frames);
   }
   report("reference (16 samples)", truth);
+
+  // 4: render scale.
+  std::printf("\nRender scale (one sample, the post pass upscaling bilinearly), PSNR:\n\n");
+  std::printf("| render scale | against the full-size frame | against 16 samples |\n|---|---|---|\n");
+  for (double scale : {0.75, 0.5}) {
+    auto backend = makeBackend(api, 1, &error, false, {}, scale);
+    if (!backend) return fail(error);
+    FrameResult r;
+    if (!render(*backend, *scene, 1, 0, packages, &r, &error)) return fail(error);
+    std::printf("| %.2f (%ux%u) | %.2f dB | %.2f dB |\n", scale, r.hdrWidth, r.hdrHeight,
+                facet::eval::psnr8(r.ldr, single.ldr), facet::eval::psnr8(r.ldr, reference));
+    for (const std::string& e : backend->validationErrors()) return fail("validation: " + e);
+  }
   for (const std::string& e : one->validationErrors()) return fail("validation: " + e);
+  for (auto& [name, backend] : msaa)
+    for (const std::string& e : backend->validationErrors()) return fail(name + ": validation: " + e);
   return 0;
 }

@@ -50,7 +50,7 @@ nlohmann::ordered_json scoreJson(const ShadowScore& s) {
 int main(int argc, char** argv) {
   facet::removeTemporaryFilesOnSignals();
   facet::cli::setProgramName("facet-measure-shadows");
-  CLI::App app{"ray-cast a scene's sun shadows and score a rendering against them (docs/shadows.md)"};
+  CLI::App app{"ray-cast a scene's sun (or spot light) shadows and score a rendering against them (docs/shadows.md)"};
   std::string scenePath, referencePath, jsonPath, visibilityPath, shadowedPath, unshadowedPath, assetRoot;
   ReferenceOptions options;
   app.add_option("scene", scenePath, "scene JSON")->required();
@@ -68,6 +68,9 @@ int main(int argc, char** argv) {
   shadowed->needs(unshadowed);
   unshadowed->needs(shadowed);
   visibility->excludes(shadowed)->excludes(unshadowed);
+  std::optional<size_t> spotLight;
+  app.add_option("--spot", spotLight, "ray-cast the spot light /lights/N instead of the sun")
+      ->check(CLI::Range(size_t{0}, facet::runtime::kMaxSceneLights - 1));
   app.add_option("--asset-root", assetRoot, "folder the scene's files may be read from (default: the scene's)");
   if (std::optional<int> exit = facet::cli::parseCommandLine(app, argc, argv)) return *exit;
   // CLI11's range check lets NaN through (no comparison with it is true).
@@ -87,7 +90,8 @@ int main(int argc, char** argv) {
   std::string error;
   std::optional<ShadowScene> scene = loadShadowScene(scenePath, &error, {assetRoot});
   if (!scene) return inputError(error);
-  std::optional<SunVisibility> sun = SunVisibility::build(*scene, &error);
+  std::optional<SunVisibility> sun =
+      spotLight ? SunVisibility::buildSpot(*scene, *spotLight, &error) : SunVisibility::build(*scene, &error);
   if (!sun) return inputError(scenePath + ": error: " + error);
   // The renderer's images are read before the reference is cast: a bad one fails at once.
   std::optional<RenderedVisibility> rendered;

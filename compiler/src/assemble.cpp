@@ -81,6 +81,16 @@ bool shadesSpecularAntiAliasing(const AssemblyInput& in) {
 // `shading cloth`: a lit material shaded by the cloth model (chunks/shading_cloth.glsl).
 bool shadesCloth(const AssemblyInput& in) { return in.material.shading == "lit" && in.material.cloth; }
 
+// A lit (standard-model) material writing sheenColor has a sheen layer over its base
+// (chunks/sheen_layer.glsl); the tier's `sheen` axis says in which form, or drops it.
+bool writesSheenLayer(const AssemblyInput& in) {
+  return in.material.shading == "lit" && !in.material.cloth && in.material.surface.outputs.count("sheenColor") > 0;
+}
+
+bool shadesSheenLayer(const AssemblyInput& in) {
+  return writesSheenLayer(in) && in.tier.sheen != permutations::SheenModel::None;
+}
+
 // Tangent-space outputs, and anisotropy's direction (the mesh's tangent by default), need the
 // per-pixel tangent frame (normal_mapping.glsl).
 bool needsTangentFrame(const AssemblyInput& in) {
@@ -268,6 +278,15 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
            ir::glslConstant(ir::Type::Float, {aa.threshold}) + "\n";
     }
   }
+  if (writesSheenLayer(in)) {
+    const char* forms[] = {"Charlie's D with Neubelt's V per light and its environment",
+                           "its environment over the lit base, no lobe per light", "dropped in this tier"};
+    s += "// Sheen layer: " + std::string(permutations::kSheenModelNames[int(in.tier.sheen)]) + ", " +
+         forms[int(in.tier.sheen)] + " (docs/material-models.md).\n";
+    if (in.tier.sheen == permutations::SheenModel::CharlieNeubelt) s += "#define FACET_SHEEN_LOBE 1\n";
+    if (shadesSheenLayer(in))
+      s += "#define FACET_SHEEN_AMBIENT 1\n#define FACET_SHEEN_LAYER 1\n#define FACET_MATERIAL_SHEEN_COLOR 1\n";
+  }
   if (in.key.directionalLight) s += "#define FACET_DIRECTIONAL_LIGHT 1\n";
   s += "#define FACET_POINT_LIGHTS " + std::to_string(in.key.pointLights) + "\n";
   if (receivesShadow(in)) {
@@ -369,10 +388,13 @@ std::string materialSection(const AssemblyInput& in) {
       "// Surface outputs; an output the material does not write keeps its default.\nstruct MaterialInputs {\n";
   // An output that exists only with another is a member only where the material writes that one
   // (ir::OutputInfo::presentWith): other materials' shaders stay as they were.
-  // The cloth model's outputs likewise exist only in cloth materials' variants.
+  // The cloth model's outputs likewise exist only in cloth materials' variants, the sheen's in
+  // those and where a lit material writes it.
   auto member = [&](const ir::OutputInfo& o) {
-    return (!o.presentWith || in.material.surface.outputs.count(o.presentWith) > 0) &&
-           (o.model != ir::OutputModel::Cloth || shadesCloth(in));
+    return (!o.presentWith || (in.material.surface.outputs.count(o.presentWith) > 0 &&
+                               !(o.model == ir::OutputModel::Standard && shadesCloth(in)))) &&
+           (o.model != ir::OutputModel::Cloth || shadesCloth(in)) &&
+           (o.model != ir::OutputModel::Sheen || shadesCloth(in) || writesSheenLayer(in));
   };
   for (const ir::OutputInfo& o : ir::outputs())
     if (member(o)) s += "    " + std::string(ir::glslName(o.type)) + " " + o.name + ";\n";
@@ -588,8 +610,9 @@ bool samplesShadowAtlas(const AssemblyInput& in) { return receivesShadow(in); }
 
 bool samplesDfgLut(const AssemblyInput& in) {
   if (in.key.depthOnly) return false;
-  // A cloth material's sheen reads its terms from the table whatever the ambient model.
-  if (shadesCloth(in) && in.tier.sheen != permutations::SheenModel::None) return true;
+  // A sheen (the cloth model's, or a layer over the standard one) reads its terms from the table
+  // whatever the ambient model.
+  if ((shadesCloth(in) || writesSheenLayer(in)) && in.tier.sheen != permutations::SheenModel::None) return true;
   return in.material.shading == "lit" && (in.tier.ambient == permutations::AmbientModel::SplitSum ||
                                           in.tier.ambient == permutations::AmbientModel::Sampled);
 }

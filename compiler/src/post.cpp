@@ -14,8 +14,12 @@ namespace facet::compiler {
 namespace {
 
 // Upscaled: the separate path's read of an HDR image rendered at a smaller size (render scale),
-// filtered bilinearly at the output pixel's centre.
-enum class PostRead { Sampled, SubpassInput, FramebufferFetch, Upscaled };
+// filtered bilinearly at the output pixel's centre. SubpassSamples: the merged path under MSAA
+// reading every sample of the multisampled HDR (subpassInputMS); SampledSamples, its GLSL ES 3.10
+// text, the same loop over a sampler2DMS (GLSL ES 3.00 has no per-sample reads).
+enum class PostRead { Sampled, SubpassInput, FramebufferFetch, Upscaled, SubpassSamples, SampledSamples };
+
+bool readsSamples(PostRead read) { return read == PostRead::SubpassSamples || read == PostRead::SampledSamples; }
 
 // The post fragment stage's interface, printed from shader_abi.h's attachment constants: where
 // the HDR colour of the forward pass is read from, and where the LDR result goes.
@@ -30,6 +34,14 @@ std::string postInterface(Flavour flavour, PostRead read) {
     case PostRead::SubpassInput:
       return "layout(input_attachment_index = " + std::to_string(abi::kPostHdrInputAttachmentIndex) + ", " +
              setBinding + ") uniform mediump subpassInput " + hdr + ";\n" + ldr(abi::kPostMergedLdrLocation);
+    case PostRead::SubpassSamples:
+      return "layout(constant_id = " + std::to_string(abi::kPostSampleCountConstantId) +
+             ") const int facet_postSamples = 4;\nlayout(input_attachment_index = " +
+             std::to_string(abi::kPostHdrInputAttachmentIndex) + ", " + setBinding +
+             ") uniform mediump subpassInputMS " + hdr + ";\n" + ldr(abi::kPostMergedLdrLocation);
+    case PostRead::SampledSamples:
+      return "const int facet_postSamples = 4;\nuniform mediump sampler2DMS " + hdr + ";\n" +
+             ldr(abi::kPostMergedLdrLocation);
     case PostRead::FramebufferFetch:
       return "layout(location = " + std::to_string(abi::kPostHdrColorLocation) + ") inout mediump vec4 " + hdr + ";\n" +
              ldr(abi::kPostMergedLdrLocation);
@@ -82,8 +94,12 @@ bool appendLibraryFiles(const std::vector<std::string>& files, std::string* text
 // Vulkan flavour is ES 3.10 with FACET_VULKAN, the GLES flavour ES 3.00.
 bool assemblePost(const PostEffects& effects, Flavour flavour, PostRead read, const char* templateName,
                   std::string* out, std::string* error) {
-  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n" : "#version 300 es\n";
+  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n"
+                     : readsSamples(read)       ? "#version 310 es\n"
+                                                : "#version 300 es\n";
   if (read == PostRead::FramebufferFetch) text += "#extension GL_EXT_shader_framebuffer_fetch : require\n";
+  if (read == PostRead::SubpassSamples) text += "#define FACET_POST_SUBPASS_SAMPLES 1\n";
+  if (read == PostRead::SampledSamples) text += "#define FACET_POST_SAMPLED_SAMPLES 1\n";
   if (read == PostRead::SubpassInput) text += "#define FACET_POST_SUBPASS_INPUT 1\n";
   if (read == PostRead::FramebufferFetch) text += "#define FACET_POST_FRAMEBUFFER_FETCH 1\n";
   if (read == PostRead::Upscaled) text += "#define FACET_POST_UPSCALE 1\n";
@@ -179,16 +195,19 @@ bool toMsl(const std::vector<uint32_t>& words, std::span<const package::MslBindi
 // glslang can, and fills the fragment's targets (and the vertex's, when asked).
 bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, PostStage* vertex, std::string* error) {
   StageSources vk, es;
-  const PostRead esRead = read == PostRead::SubpassInput ? PostRead::FramebufferFetch : read;
+  const PostRead esRead = read == PostRead::SubpassInput     ? PostRead::FramebufferFetch
+                          : read == PostRead::SubpassSamples ? PostRead::SampledSamples
+                                                             : read;
   if (!assemblePost(effects, Flavour::Vulkan, read, "post_fullscreen.vert.glsl", &vk.vertex, error) ||
       !assemblePost(effects, Flavour::Vulkan, read, "post_tonemap.frag.glsl", &vk.fragment, error) ||
       !assemblePost(effects, Flavour::GlslEs300, esRead, "post_fullscreen.vert.glsl", &es.vertex, error) ||
       !assemblePost(effects, Flavour::GlslEs300, esRead, "post_tonemap.frag.glsl", &es.fragment, error)) {
     return false;
   }
-  const std::string what = read == PostRead::Sampled    ? "sampled form"
-                           : read == PostRead::Upscaled ? "upscaled form"
-                                                        : "fetch form";
+  const std::string what = read == PostRead::Sampled          ? "sampled form"
+                           : read == PostRead::Upscaled       ? "upscaled form"
+                           : read == PostRead::SubpassSamples ? "per-sample form"
+                                                              : "fetch form";
   std::string log;
   if (esRead != PostRead::FramebufferFetch && !checkGlslEs300(es, &log)) {
     *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
@@ -199,8 +218,11 @@ bool buildForm(const PostEffects& effects, PostRead read, PostStage* fragment, P
     *error = "post " + what + ": glslang failed:\n" + log;
     return false;
   }
+  // No Metal for the per-sample form: Metal's [[color(n)]] reads give a fragment only its own
+  // sample, so a loop over the others has no MSL equivalent.
   if (!finishStage(&spirv.fragment, what, error) ||
-      !toMsl(spirv.fragment, postMslBindings(effects, read == PostRead::Upscaled), what, &fragment->msl, error))
+      (!readsSamples(read) &&
+       !toMsl(spirv.fragment, postMslBindings(effects, read == PostRead::Upscaled), what, &fragment->msl, error)))
     return false;
   fragment->spirv = std::move(spirv.fragment);
   fragment->glslEs = std::move(es.fragment);
@@ -282,7 +304,8 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
   shaders.effects = effects;
   if (!buildForm(effects, PostRead::Sampled, &shaders.sampledFragment, &shaders.vertex, error) ||
       !buildForm(effects, PostRead::SubpassInput, &shaders.fetchFragment, nullptr, error) ||
-      !buildForm(effects, PostRead::Upscaled, &shaders.upscaledFragment, nullptr, error)) {
+      !buildForm(effects, PostRead::Upscaled, &shaders.upscaledFragment, nullptr, error) ||
+      (!effects.bloom && !buildForm(effects, PostRead::SubpassSamples, &shaders.samplesFragment, nullptr, error))) {
     return false;
   }
   *out = std::move(shaders);
@@ -291,11 +314,12 @@ bool buildPostShaders(const PostEffects& effects, PostShaders* out, std::string*
 
 namespace {
 
-// A pass of one sampled input (FXAA, the bloom chain) from its assembled sources: GLSL ES checked,
-// SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's targets too
-// when `vertex` is not null.
+// A pass of one sampled input (FXAA, the bloom chain, the background) from its assembled sources:
+// GLSL ES checked, SPIR-V compiled, validated and optimised, Metal with `slots`; the vertex stage's
+// targets too when `vertex` is not null, its Metal with `vertexSlots`.
 bool buildSampledPass(const StageSources& vk, const StageSources& es, const std::vector<package::MslBinding>& slots,
-                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error) {
+                      const std::string& what, PostStage* fragment, PostStage* vertex, std::string* error,
+                      const std::vector<package::MslBinding>& vertexSlots = {}) {
   std::string log;
   if (!checkGlslEs300(es, &log)) {
     *error = "post " + what + ": GLSL ES 3.00 rejected:\n" + log;
@@ -312,7 +336,7 @@ bool buildSampledPass(const StageSources& vk, const StageSources& es, const std:
   fragment->glslEs = es.fragment;
   if (!vertex) return true;
   if (!finishStage(&spirv.vertex, what + " vertex stage", error) ||
-      !toMsl(spirv.vertex, {}, what + " vertex stage", &vertex->msl, error))
+      !toMsl(spirv.vertex, vertexSlots, what + " vertex stage", &vertex->msl, error))
     return false;
   vertex->spirv = std::move(spirv.vertex);
   vertex->glslEs = es.vertex;
@@ -370,6 +394,80 @@ bool buildBloomShaders(BloomStages* out, std::string* error) {
   return true;
 }
 
+namespace {
+
+// The background's stages: the mesh's position attribute and ObjectUniforms (its decoding) in the
+// vertex stage, the parameters in both (the same text, as GLSL ES requires of a block in two
+// stages), the environment and the forward pass's colour in the fragment stage.
+bool assembleBackground(Flavour flavour, const char* templateName, std::string* out, std::string* error) {
+  std::string text = flavour == Flavour::Vulkan ? "#version 310 es\n#define FACET_VULKAN 1\n" : "#version 300 es\n";
+  text += "precision mediump float;\nprecision highp int;\n";
+  text += uniformBlockDeclaration(flavour, abi::kBackgroundBlock);
+  if (std::string(templateName).find(".vert.") != std::string::npos) {
+    text += "layout(location = " + std::to_string(abi::kAttribPosition) + ") in highp vec3 a_position;\n";
+    text += uniformBlockDeclaration(flavour, abi::kObjectBlock);
+  } else {
+    const abi::SamplerDesc& environment = abi::kEnvironmentSampler;
+    if (flavour == Flavour::Vulkan)
+      text += "layout(set = " + std::to_string(environment.set) + ", binding = " + std::to_string(environment.binding) +
+              ") ";
+    text += "uniform mediump samplerCube " + std::string(environment.name) + ";\n";
+    text += "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out vec4 fragColor;\n";
+  }
+  if (!appendLibraryFiles({templateName}, &text, error)) return false;
+  *out = std::move(text);
+  return true;
+}
+
+package::MslBinding mslBlock(const abi::BlockDesc& block) {
+  return {std::string(block.name), package::MslResource::Buffer, block.set, block.binding, abi::mslBufferIndex(block)};
+}
+
+}  // namespace
+
+std::vector<package::MslBinding> backgroundMslBindings() {
+  const abi::SamplerDesc& environment = abi::kEnvironmentSampler;
+  return {mslBlock(abi::kObjectBlock),
+          mslBlock(abi::kBackgroundBlock),
+          {std::string(environment.name), package::MslResource::Texture, environment.set, environment.binding,
+           abi::mslTextureIndex(environment.binding)}};
+}
+
+bool buildBackgroundShaders(BackgroundStages* out, std::string* error) {
+  StageSources vk, es;
+  if (!assembleBackground(Flavour::Vulkan, "post_background.vert.glsl", &vk.vertex, error) ||
+      !assembleBackground(Flavour::Vulkan, "post_background.frag.glsl", &vk.fragment, error) ||
+      !assembleBackground(Flavour::GlslEs300, "post_background.vert.glsl", &es.vertex, error) ||
+      !assembleBackground(Flavour::GlslEs300, "post_background.frag.glsl", &es.fragment, error)) {
+    return false;
+  }
+  const std::vector<package::MslBinding> slots = backgroundMslBindings();
+  BackgroundStages stages;
+  if (!buildSampledPass(vk, es, slots, "background", &stages.fragment, &stages.vertex, error, slots)) return false;
+  *out = std::move(stages);
+  return true;
+}
+
+std::string backgroundShadersCpp(const BackgroundStages& stages) {
+  std::string cpp = "// The environment background (compiler/src/post.cpp: buildBackgroundShaders)\nnamespace {\n";
+  appendWords(&cpp, "kBackgroundVertexSpirv", stages.vertex.spirv);
+  appendWords(&cpp, "kBackgroundFragmentSpirv", stages.fragment.spirv);
+  appendText(&cpp, "kBackgroundVertexEs", stages.vertex.glslEs);
+  appendText(&cpp, "kBackgroundFragmentEs", stages.fragment.glslEs);
+  cpp +=
+      "}  // namespace\n\n"
+      "namespace facet::runtime {\n"
+      "const ShaderProgram& backgroundProgram() {\n"
+      "  static const ShaderProgram program{{std::begin(kBackgroundVertexSpirv), std::end(kBackgroundVertexSpirv)},\n"
+      "                                     {std::begin(kBackgroundFragmentSpirv), "
+      "std::end(kBackgroundFragmentSpirv)},\n"
+      "                                     kBackgroundVertexEs, kBackgroundFragmentEs, std::nullopt};\n"
+      "  return program;\n"
+      "}\n"
+      "}  // namespace facet::runtime\n";
+  return cpp;
+}
+
 std::vector<PostEffects> everyPostEffects() {
   std::vector<PostEffects> all;
   for (bool bloom : {false, true})
@@ -393,6 +491,10 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
     appendWords(&cpp, ("kSampledSpirv" + n).c_str(), shaders.sampledFragment.spirv);
     appendWords(&cpp, ("kFetchSpirv" + n).c_str(), shaders.fetchFragment.spirv);
     appendWords(&cpp, ("kUpscaledSpirv" + n).c_str(), shaders.upscaledFragment.spirv);
+    // Bloom variants have no per-sample form (bloom runs the separate path), and C++ has no
+    // empty array.
+    if (!shaders.samplesFragment.spirv.empty())
+      appendWords(&cpp, ("kSamplesSpirv" + n).c_str(), shaders.samplesFragment.spirv);
     appendText(&cpp, ("kVertexEs" + n).c_str(), shaders.vertex.glslEs);
     appendText(&cpp, ("kSampledEs" + n).c_str(), shaders.sampledFragment.glslEs);
     appendText(&cpp, ("kFetchEs" + n).c_str(), shaders.fetchFragment.glslEs);
@@ -420,7 +522,9 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
     const std::string n = std::to_string(i);
     cpp += "  static const std::vector<uint32_t> vs" + n + " = words(kVertexSpirv" + n + "), fs" + n +
            " = words(kSampledSpirv" + n + "), fsFetch" + n + " = words(kFetchSpirv" + n + "), fsUpscaled" + n +
-           " = words(kUpscaledSpirv" + n + ");\n";
+           " = words(kUpscaledSpirv" + n + "), fsSamples" + n + " = " +
+           (variants[i].samplesFragment.spirv.empty() ? "std::vector<uint32_t>()" : "words(kSamplesSpirv" + n + ")") +
+           ";\n";
     cpp += "  static const std::string vsText" + n + "(kVertexEs" + n + "), fsText" + n + "(kSampledEs" + n +
            "), fsFetchText" + n + "(kFetchEs" + n + "), fsUpscaledText" + n + "(kUpscaledEs" + n + ");\n";
   }
@@ -431,7 +535,7 @@ std::string postShadersCpp(const std::vector<PostShaders>& variants, const PostS
     auto flag = [](bool on) { return on ? ", true" : ", false"; };
     cpp += std::string("      {{\"") + toString(e.toneCurve) + "\"" + flag(e.dither) + flag(e.colorGrading) +
            flag(e.vignette) + flag(e.bloom) + "}, vs" + n + ", fs" + n + ", fsFetch" + n + ", vsText" + n + ", fsText" +
-           n + ", fsFetchText" + n + ", fsUpscaled" + n + ", fsUpscaledText" + n + "},\n";
+           n + ", fsFetchText" + n + ", fsUpscaled" + n + ", fsUpscaledText" + n + ", fsSamples" + n + "},\n";
   }
   cpp +=
       "  };\n"

@@ -101,7 +101,10 @@ const std::vector<Axis>& axes() {
        [](const TierConfig& c) { return std::string(permutations::kSheenModelNames[int(c.sheen)]); },
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "sheen", o); },
        nullptr,
-       [](const ir::Material& m) { return m.shading == "lit" && m.cloth; }},
+       // the cloth model's sheen, or a lit material's sheen layer
+       [](const ir::Material& m) {
+         return m.shading == "lit" && (m.cloth || m.surface.outputs.count("sheenColor") > 0);
+       }},
       {"specular_aa",
        {std::begin(permutations::kSpecularAntiAliasingModelNames),
         std::end(permutations::kSpecularAntiAliasingModelNames)},

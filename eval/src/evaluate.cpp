@@ -16,6 +16,7 @@
 #include "facet/package/package.h"
 #include "facet/runtime/png.h"
 #include "facet/runtime/render_backend.h"
+#include "facet/scene/scene.h"
 
 namespace facet::eval {
 namespace {
@@ -124,6 +125,7 @@ class Evaluation {
     for (size_t vi = 0; vi < views_.size(); ++vi) {
       runtime::Scene scene = views_[vi].scene;
       scene.tier = permutations::toString(c.tier);
+      if (isReference) scene.shadows.atlasSize = kReferenceShadowAtlas;
       std::string message;
       std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
       if (!prepared) return fail(c, message, error);
@@ -251,6 +253,7 @@ class Evaluation {
     for (const View& v : views_) {
       runtime::Scene scene = v.scene;
       scene.tier = permutations::toString(c.tier);
+      scene.shadows.atlasSize = kReferenceShadowAtlas;  // the ground truth is reference's
       std::string message;
       std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
       if (!prepared) return fail(c, message, error);
@@ -282,14 +285,23 @@ class Evaluation {
     }
     options.fp16Emulation = fp16Emulation;
     options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
-    const permutations::MaterialNeeds needs{material_.shading == "lit"};
+    const permutations::MaterialNeeds needs{material_.shading == "lit",
+                                            permutations::blendingCastsShadows(material_.blending)};
     permutations::SceneNeeds scene;
     auto add = [&](const permutations::VariantKey& key) {
       if (std::find(scene.keys.begin(), scene.keys.end(), key) == scene.keys.end()) scene.keys.push_back(key);
     };
     if (!costVariantOnly)
-      for (const View& v : views_)
-        add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size())));
+      for (const View& v : views_) {
+        // The receivers and the casters' depth-only programs of a view whose sun casts, as
+        // `matc compile --scene` builds them (every object of the view is this material's).
+        const int cascades = int(runtime::sunShadowCascades(v.scene));
+        for (const runtime::SceneObject& o : v.scene.objects) {
+          add(permutations::requestKey(needs, c.tier, v.scene.sun.has_value(), int(v.scene.lights.size()),
+                                       o.receiveShadows ? cascades : 0));
+          if (cascades > 0 && o.castShadows && needs.castsShadows) add(permutations::depthKey(c.tier));
+        }
+      }
     add(permutations::requestKey(needs, c.tier, true, 0));
     *firstKey = scene.keys[0].toString();
     if (needs.lit && !costVariantOnly) add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace
@@ -399,6 +411,10 @@ std::unique_ptr<Session> Session::start(const ir::Material& material, const Eval
   if (options.sceneFile.empty()) {
     report.scene = "built-in evaluation grid";
     for (GridView& v : evaluationGrid(material, options.grid)) views.push_back({v.name, std::move(v.scene)});
+    if (options.shadows) {
+      GridView shadowed = shadowedGridView(material, options.grid);
+      views.push_back({shadowed.name, std::move(shadowed.scene)});
+    }
     report.sceneNotes = describeSweep(material, options.grid);
   } else {
     report.scene = options.sceneFile;

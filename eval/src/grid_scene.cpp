@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "facet/ir/check.h"
 
@@ -132,6 +133,24 @@ std::vector<GridView> evaluationGrid(const ir::Material& m, const GridOptions& o
   views[1].name = "grazing";  // the sun from the right, slightly above and behind the spheres
   views[1].scene.sun = runtime::Sun{-glm::normalize(glm::dvec3(1.0, 0.25, -0.25)), 110000, {1.0, 0.96, 0.9}};
   return views;
+}
+
+GridView shadowedGridView(const ir::Material& m, const GridOptions& options) {
+  GridView view = evaluationGrid(m, options)[0];
+  view.name = "shadowed";
+  view.scene.sun->castShadows = true;
+  // Every sphere's shadow, 0.57 m from its centre on the wall, and the wall's rim lie in the
+  // image: the wall is the grid's size and a sphere's spacing more each way.
+  const uint32_t pps = std::max<uint32_t>(options.pixelsPerSphere, 8);
+  const double cols = double(view.scene.width / pps), rows = double(view.scene.height / pps);
+  runtime::SceneObject wall;
+  wall.mesh = "plane";
+  wall.material = m.name;
+  wall.position = {0, 0, kShadowWallZ};
+  wall.rotation = glm::angleAxis(glm::radians(90.0), glm::dvec3(1, 0, 0));  // the plane's +y normal to +z
+  wall.scale = {cols + 2, 1, rows + 2};
+  view.scene.objects.push_back(wall);
+  return view;
 }
 
 std::vector<std::string> describeSweep(const ir::Material& m, const GridOptions& options) {

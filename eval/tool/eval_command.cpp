@@ -70,6 +70,7 @@ int evalCommand(const EvalArgs& args) {
   options.grid.pixelsPerSphere = uint32_t(args.spherePixels);
   options.validation = args.validation;
   options.fp16Emulation = args.fp16Emulation;
+  options.shadows = args.shadows;
   options.groundTruthSamples = args.groundTruth;
   options.progress = [](const std::string& line) {
     std::printf("%s\n", line.c_str());

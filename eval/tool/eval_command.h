@@ -17,8 +17,9 @@ struct EvalArgs {
   bool noSwaps = false;            // the tiers as shipped only
   bool validation = false;
   bool fp16Emulation = false;
-  int groundTruth = 0;  // samples of the ground truth (0: not measured)
-  std::string gpu;      // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
+  bool shadows = false;  // grid: also the "shadowed" view
+  int groundTruth = 0;   // samples of the ground truth (0: not measured)
+  std::string gpu;       // "mali-g57,adreno-630": per-GPU figures from Mesa (docs/mesa-statistics.md)
   std::string mesaPrefix;
 };
 // 0 with the report written, 1 for input errors, 2 for usage errors.

@@ -37,6 +37,8 @@ int main(int argc, char** argv) {
   app.add_flag("--validation", eval.validation, "enable Vulkan validation layers; any validation error fails the run");
   app.add_flag("--fp16-emulation", eval.fp16Emulation,
                "build mediump SPIR-V with every result rounded to binary16 (docs/fp16-emulation.md)");
+  app.add_flag("--shadows", eval.shadows,
+               "grid: also the \"shadowed\" view, the sun casting onto a wall behind the spheres (docs/eval.md)");
   app.add_option("--ground-truth", eval.groundTruth,
                  "also measure every configuration against reference with its environment integrated by "
                  "importance sampling, N points per integral and pixel (docs/eval.md)")

@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <iterator>
 
+#include "facet/runtime/background.h"
 #include "facet/runtime/environment.h"
 #include "facet/runtime/exposure.h"
 #include "facet/runtime/mesh.h"
@@ -60,7 +61,7 @@ bool ExampleContent::create(const char* packagePath, std::string* error) {
     return false;
   }
 
-  // Camera, sun and a constant sky, pre-exposed (docs/lighting-units.md).
+  // Camera, sun and the analytic sky, pre-exposed (docs/lighting-units.md).
   const double exposure = exposureFromEv100(ev100(16, 1.0 / 125, 100));
   frame.width = kWidth;
   frame.height = kHeight;
@@ -71,8 +72,9 @@ bool ExampleContent::create(const char* packagePath, std::string* error) {
   store(frame.frame.cameraPosition, eye, 1);
   store(frame.frame.lightDirection, glm::normalize(glm::vec3(0.4f, 0.55f, 0.73f)));
   store(frame.frame.lightColor, glm::vec3(1, 0.96f, 0.9f) * float(110000 * exposure));
-  Scene sky;  // only its sky is read: a constant environment of 6000 cd/m²
-  sky.skyLuminance = 6000;
+  Scene sky;  // only its environment is read: the analytic sky at 8000 cd/m², drawn behind the spheres
+  sky.environment = Environment{};
+  sky.environment->luminance = 8000;
   auto lighting = buildEnvironmentLighting(sky, exposure, error);
   if (!lighting) return false;
   environment = environmentTexture(*lighting);
@@ -84,6 +86,7 @@ bool ExampleContent::create(const char* packagePath, std::string* error) {
 bool ExampleContent::animate(int i, std::string* error) {
   if (!rough->setParameter(*roughness, 0.55f + 0.05f * float(i), error)) return false;
   frame.draws = {glossy->draw(sphere, modelAt(-1.15f)), rough->draw(sphere, modelAt(1.15f))};
+  addBackground(&frame, {});
   return true;
 }
 
@@ -91,7 +94,8 @@ std::string ExampleContent::checkResources(const ResourceCounts& counts) const {
   std::printf("%d frames %ux%u: %zu mesh buffer(s), %llu mesh upload(s), %zu material block(s), %llu block upload(s)\n",
               kFrames, kWidth, kHeight, counts.meshBuffers, static_cast<unsigned long long>(counts.meshUploads),
               counts.materialBuffers, static_cast<unsigned long long>(counts.materialUploads));
-  if (counts.meshBuffers == 1 && counts.meshUploads == 1 && counts.materialBuffers == 2 &&
+  // The sphere and the background's triangle, each uploaded once.
+  if (counts.meshBuffers == 2 && counts.meshUploads == 2 && counts.materialBuffers == 2 &&
       counts.materialUploads == uint64_t(2 + kFrames - 1)) {
     return "";
   }

@@ -1,6 +1,6 @@
 // What both example apps draw, whatever the graphics API (examples/app on Vulkan, examples/app_gl
 // on OpenGL ES): one material made once from package bytes the app holds, two instances of it with
-// different parameters, a sphere mesh, a camera, the sun and a constant sky, pre-exposed.
+// different parameters, a sphere mesh, a camera, the sun and the analytic sky (drawn as the background), pre-exposed.
 #pragma once
 
 #include <cstdint>

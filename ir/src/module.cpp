@@ -47,8 +47,12 @@ const std::vector<OutputInfo>& outputs() {
       {"anisotropyDirection", Type::Vec3, {1, 0, 0, 0}, true, "anisotropy", OutputModel::Standard},
       // The cloth model (`shading cloth`, Filament's): the sheen's colour (without it, √baseColor,
       // Filament's default: chunks/shading_cloth.glsl) and the colour light takes through the
-      // fabric (wrap diffuse; without it, Lambert's diffuse).
-      {"sheenColor", Type::Vec3, {0, 0, 0, 0}, true, nullptr, OutputModel::Cloth},
+      // fabric (wrap diffuse; without it, Lambert's diffuse). On a lit material sheenColor is a
+      // sheen layer over the base (KHR_materials_sheen's, chunks/sheen_layer.glsl) and
+      // sheenRoughness its perceptual roughness (the glTF extension's default 0: the floor); the
+      // cloth model's sheen takes `roughness`.
+      {"sheenColor", Type::Vec3, {0, 0, 0, 0}, true, nullptr, OutputModel::Sheen},
+      {"sheenRoughness", Type::Float, {0, 0, 0, 0}, true, "sheenColor", OutputModel::Standard},
       {"subsurfaceColor", Type::Vec3, {0, 0, 0, 0}, true, nullptr, OutputModel::Cloth},
   };
   return list;

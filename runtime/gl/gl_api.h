@@ -98,11 +98,13 @@ namespace facet::runtime::gl {
   X(PFNGLISFRAMEBUFFERPROC, glIsFramebuffer)                                             \
   X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                                 \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                                 \
+  X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                                             \
   X(PFNGLREADBUFFERPROC, glReadBuffer)                                                   \
   X(PFNGLREADPIXELSPROC, glReadPixels)                                                   \
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                                 \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample)           \
   X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)                                     \
+  X(PFNGLSCISSORPROC, glScissor)                                                         \
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                                               \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                                   \
   X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                                                   \
@@ -230,11 +232,13 @@ bool checkGlError(const char* phase, std::string* error);
 #define glIsFramebuffer (::facet::runtime::gl::detail::current->glIsFramebuffer)
 #define glLinkProgram (::facet::runtime::gl::detail::current->glLinkProgram)
 #define glPixelStorei (::facet::runtime::gl::detail::current->glPixelStorei)
+#define glPolygonOffset (::facet::runtime::gl::detail::current->glPolygonOffset)
 #define glReadBuffer (::facet::runtime::gl::detail::current->glReadBuffer)
 #define glReadPixels (::facet::runtime::gl::detail::current->glReadPixels)
 #define glRenderbufferStorage (::facet::runtime::gl::detail::current->glRenderbufferStorage)
 #define glRenderbufferStorageMultisample (::facet::runtime::gl::detail::current->glRenderbufferStorageMultisample)
 #define glSamplerParameteri (::facet::runtime::gl::detail::current->glSamplerParameteri)
+#define glScissor (::facet::runtime::gl::detail::current->glScissor)
 #define glShaderSource (::facet::runtime::gl::detail::current->glShaderSource)
 #define glTexImage2D (::facet::runtime::gl::detail::current->glTexImage2D)
 #define glTexImage3D (::facet::runtime::gl::detail::current->glTexImage3D)

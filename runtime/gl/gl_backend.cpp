@@ -23,6 +23,7 @@
 #include "gl_post_inputs.h"
 #include "gl_program.h"
 #include "gl_reflection.h"
+#include "gl_shadow_atlas.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
 #include "gl_uniform_blocks.h"
@@ -139,6 +140,8 @@ class GlBackend final : public GlRenderer {
 
   GlBackend() = default;
   bool initialise(std::unique_ptr<GlContext> host, const GlOptions& options, std::string* error);
+  // The frame the passes draw (withShadowDraws), its shadow pass checked first; null: refused, *error says why.
+  const FrameDesc* drawnFrame(const FrameDesc& frame, std::optional<FrameDesc>* storage, std::string* error) const;
   // What every frame does first: the context current, the size in range, stale errors drained,
   // textures checked, targets and textures made.
   bool beginFrame(const FrameDesc& frame, std::string* error);
@@ -147,8 +150,18 @@ class GlBackend final : public GlRenderer {
   // MSAA: the multisampled colour blitted into the HDR texture, then the samples invalidated.
   void resolveSamples(uint32_t width, uint32_t height);
   // `framebuffer`: the merged one (HDR, LDR, depth) when `merged`, else the HDR one.
+  // `frame` is the drawn one (withShadowDraws): with a shadow pass, that pass first, then the
+  // forward draws.
   bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error);
-  bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error);
+  // The frame's instances in one upload (both passes'); each draw points the instance attributes at its own.
+  bool uploadInstances(const FrameDesc& frame, std::string* error);
+  // The sun's shadow pass (docs/shadows.md): the atlas cleared to depth 1, then each of the
+  // desc's views drawn into its rectangle, the casters from the frame's last shadowDrawCount() draws.
+  bool shadowPass(const FrameDesc& frame, std::string* error);
+  // One view of the shadow pass: its rectangle, bias and frame block, its casters from frame.draws[*next].
+  bool drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, size_t* next, std::string* error);
+  // `caster`: a shadow pass draw (no alpha to coverage: the atlas has one sample).
+  bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error, bool caster = false);
   // Separate path: samples the HDR texture, draws into `framebuffer` (the backend's LDR one, or the app's).
   bool postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error);
   // Merged path, into the framebuffer the forward pass drew into; HDR invalidated unless `keepHdr`.
@@ -190,6 +203,8 @@ class GlBackend final : public GlRenderer {
   gl::Buffer instances_;      // every draw's InstanceTransforms of the frame, one after the other
   size_t firstInstance_ = 0;  // the next draw's first instance in instances_
   gl::Buffer materialUniforms_;
+  gl::Buffer shadowUniforms_;  // ShadowUniforms, zeros without a shadow pass
+  gl::ShadowAtlas shadowAtlas_;
   gl::RenderTargets targets_;
   gl::TextureCache textures_;             // kept across frames; see gl_textures.h for the reuse rule
   gl::MeshCache meshes_;                  // kept across frames, shared by every draw of a mesh (gl_mesh.h)
@@ -284,6 +299,7 @@ bool GlBackend::initialise(std::unique_ptr<GlContext> host, const GlOptions& opt
   objectUniforms_ = gl::Buffer::generate();
   instances_ = gl::Buffer::generate();
   materialUniforms_ = gl::Buffer::generate();
+  shadowUniforms_ = gl::Buffer::generate();
   // GL_KHR_texture_compression_astc_ldr (core in GLES 3.2) lets ASTC blocks be uploaded as they
   // are; without it (or when told to) the texture cache decodes them to RGBA8 on the CPU.
   const bool astc = context_->hasExtension("GL_KHR_texture_compression_astc_ldr");
@@ -321,12 +337,18 @@ GlBackend::~GlBackend() {
   if (context_) context_->makeCurrent(nullptr);
 }
 
-bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
-  // Receivers drawn without their shadow would be a silently wrong image (docs/shadows.md).
-  if (frame.shadow) {
-    *error = "the sun casts shadows (/sun/castShadows), which this backend does not draw yet (docs/shadows.md)";
-    return false;
+const FrameDesc* GlBackend::drawnFrame(const FrameDesc& frame, std::optional<FrameDesc>* storage,
+                                       std::string* error) const {
+  if (!frame.shadow) return &frame;
+  // The atlas is a texture and a framebuffer's only attachment: both limits hold for it.
+  if (std::string why = shadowPassError(*frame.shadow, static_cast<uint32_t>(maxTargetSize_)); !why.empty()) {
+    *error = why;
+    return nullptr;
   }
+  return &storage->emplace(withShadowDraws(frame));
+}
+
+bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
   if (!context_->makeCurrent(error)) return false;
   if (frame.width == 0 || frame.height == 0 || frame.width > static_cast<uint32_t>(maxTargetSize_) ||
       frame.height > static_cast<uint32_t>(maxTargetSize_)) {
@@ -360,11 +382,13 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
       message = "no FrameResult to fill";
       return false;
     }
-    if (!beginFrame(frame, &message)) return false;
+    std::optional<FrameDesc> withCasters;
+    const FrameDesc* drawn = drawnFrame(frame, &withCasters, &message);
+    if (!drawn || !beginFrame(*drawn, &message)) return false;
     const bool merged = path_ == PostPath::Merged;
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
     const bool forwardDone =
-        forwardPass(frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
+        forwardPass(*drawn, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!forwardDone) return false;
     result->cpuSubmitMilliseconds =
@@ -427,7 +451,9 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       message = "the app's target has size " + std::to_string(target.width) + "x" + std::to_string(target.height);
       return false;
     }
-    if (!beginFrame(frame, &message)) return false;
+    std::optional<FrameDesc> withCasters;
+    const FrameDesc* drawn = drawnFrame(frame, &withCasters, &message);
+    if (!drawn || !beginFrame(*drawn, &message)) return false;
     gl::AppAttachment attachment;
     if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
       return false;
@@ -435,7 +461,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     // FXAA: forward and post into the backend's targets, then FXAA into the app's framebuffer.
     if (fxaa_) {
       const bool ownMerged = path_ == PostPath::Merged;
-      bool done = forwardPass(frame, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
+      bool done = forwardPass(*drawn, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
                               ownMerged, &message) &&
                   (ownMerged ? mergedPostPass(frame, false, &message)
                              : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
@@ -448,17 +474,17 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
       if (!gl::attachAppImage(attachment, &message)) return false;
     }
-    bool drawn = forwardPass(frame, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged,
-                             &message);
-    if (drawn) {
-      drawn = merged ? mergedPostPass(frame, false, &message) : postPass(frame, target.framebuffer, &message);
+    bool done = forwardPass(*drawn, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged,
+                            &message);
+    if (done) {
+      done = merged ? mergedPostPass(frame, false, &message) : postPass(frame, target.framebuffer, &message);
     }
     if (merged) {
       glBindFramebuffer(GL_FRAMEBUFFER, targets_.appMergedFramebuffer.id());
       gl::detachAppImage(attachment);
     }
     leaveState(target.framebuffer, frame.width, frame.height);
-    return drawn && checkGlError("drawing into the app's framebuffer", &message);
+    return done && checkGlError("drawing into the app's framebuffer", &message);
   };
   return guarded(renderFrame, message, error);
 }
@@ -471,6 +497,10 @@ bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* err
 }
 
 bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error) {
+  if (!uploadInstances(frame, error)) return false;
+  meshes_.beginFrame();
+  materialBlocks_.beginFrame();
+  if (frame.shadow && !shadowPass(frame, error)) return false;
   // MSAA: the forward pass draws into the multisampled framebuffer, resolved into `framebuffer`'s
   // HDR below; its only colour is the HDR samples.
   const bool msaa = samples_ > 1;
@@ -497,23 +527,18 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &frameUniforms, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
+  // Every draw may read ShadowUniforms (the receivers do): zeros without a shadow pass.
+  const abi::ShadowUniforms shadowUniforms = frame.shadow ? frame.shadow->uniforms : abi::ShadowUniforms{};
+  glBindBuffer(GL_UNIFORM_BUFFER, shadowUniforms_.id());
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ShadowUniforms), &shadowUniforms, GL_DYNAMIC_DRAW);
+  glBindBufferBase(GL_UNIFORM_BUFFER, abi::kShadowBinding, shadowUniforms_.id());
   if (!checkGlError("forward pass setup", error)) return false;
 
-  if (std::string why = instanceCountError(frame); !why.empty()) {
-    if (error) *error = why;
-    return false;
-  }
-  // The frame's transforms in one upload; each draw points the instance attributes at its own.
-  std::vector<abi::InstanceTransform> instances;
-  for (const DrawItem& draw : frame.draws)
-    instances.insert(instances.end(), draw.instances.begin(), draw.instances.end());
-  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(abi::InstanceTransform)),
-               instances.data(), GL_STREAM_DRAW);
+  // The receivers sample the atlas the shadow pass drew (every forward draw has it on its unit).
+  textures_.setShadowAtlas(frame.shadow ? shadowAtlas_.texture() : 0, shadowAtlas_.sampler());
   firstInstance_ = 0;
-  meshes_.beginFrame();
-  materialBlocks_.beginFrame();
-  for (size_t i = 0; i < frame.draws.size(); ++i) {
+  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
+  for (size_t i = 0; i < forwardDraws; ++i) {
     std::string drawError;
     if (!drawItem(frame, frame.draws[i], &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
@@ -575,7 +600,96 @@ void GlBackend::resolveSamples(uint32_t width, uint32_t height) {
   }
 }
 
-bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error) {
+bool GlBackend::uploadInstances(const FrameDesc& frame, std::string* error) {
+  if (std::string why = instanceCountError(frame); !why.empty()) {
+    if (error) *error = why;
+    return false;
+  }
+  std::vector<abi::InstanceTransform> instances;
+  for (const DrawItem& draw : frame.draws)
+    instances.insert(instances.end(), draw.instances.begin(), draw.instances.end());
+  glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(abi::InstanceTransform)),
+               instances.data(), GL_STREAM_DRAW);
+  return checkGlError("instance upload", error);
+}
+
+// GL's depth offset is factor × m + units × r (GLES 3.0 spec, "Depth Offset"), m the polygon's
+// largest window-depth slope per pixel, r the smallest window-depth difference that stays
+// distinct in the depth buffer: implementation-dependent, but constant over a fixed-point
+// buffer's range, and for an n-bit one no smaller than one step, 2^-n (Mesa's llvmpipe takes
+// 1 / (2^16 - 1) for D16). So a bias of d in window depth is d / 2^-16 units, as on Vulkan, whose
+// spec fixes r at 2^-n.
+constexpr float kD16BiasUnit = 1.0f / 65536.0f;
+
+bool GlBackend::shadowPass(const FrameDesc& frame, std::string* error) {
+  const ShadowPassDesc& shadow = *frame.shadow;
+  bool remade = false;
+  if (!shadowAtlas_.ensure(shadow.atlasSize, &remade, error)) return false;
+  if (remade) textures_.forgetBindings();  // the old atlas's name may come back for another texture
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowAtlas_.framebuffer());
+  const auto side = static_cast<GLsizei>(shadow.atlasSize);
+  glViewport(0, 0, side, side);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);  // also required for the depth clear to take effect
+  const GLfloat farDepth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farDepth);
+  // The views keep GL's clip y, so atlas row r is window y = r (runtime/sun_shadow.h) and a
+  // triangle facing the sun is counter-clockwise in this window, as one facing the camera is in
+  // the forward pass's: the same front face, no flip to undo.
+  glFrontFace(GL_CCW);
+  glCullFace(GL_BACK);
+  glEnable(GL_SCISSOR_TEST);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  textures_.setShadowAtlas(0, 0);  // the casters draw into the atlas: the dummy on its unit
+  // The casters' instances follow the forward draws' in the frame's upload.
+  firstInstance_ = 0;
+  const size_t forwardDraws = frame.draws.size() - shadowDrawCount(frame);
+  for (size_t i = 0; i < forwardDraws; ++i) firstInstance_ += frame.draws[i].instances.size();
+  size_t next = forwardDraws;
+  bool drawn = true;
+  for (const ShadowCascadeDesc& view : shadow.cascades) {
+    if (!(drawn = drawShadowView(frame, view, &next, error))) break;
+  }
+  glBindVertexArray(0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  return drawn && checkGlError("shadow pass", error);
+}
+
+bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, size_t* next,
+                               std::string* error) {
+  // The camera's frame block with the view's matrix; a masked caster's alpha test discards by its
+  // coverage alone (cameraPosition.w = 0: no alpha to coverage in the single-sample atlas).
+  abi::FrameUniforms viewUniforms = frame.frame;
+  std::copy(std::begin(view.viewProjection), std::end(view.viewProjection), std::begin(viewUniforms.viewProjection));
+  viewUniforms.cameraPosition[3] = 0.0f;
+  glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
+  glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &viewUniforms, GL_DYNAMIC_DRAW);
+  glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());
+  const auto x = static_cast<GLint>(view.viewport[0]);
+  const auto y = static_cast<GLint>(view.viewport[1]);
+  const auto width = static_cast<GLsizei>(view.viewport[2]);
+  const auto height = static_cast<GLsizei>(view.viewport[3]);
+  glViewport(x, y, width, height);
+  glScissor(x, y, width, height);
+  glPolygonOffset(view.slopeBias, view.depthBias / kD16BiasUnit);
+  for (size_t k = 0; k < view.casters.size(); ++k, ++*next) {
+    std::string drawError;
+    if (!drawItem(frame, frame.draws[*next], &drawError, true)) {
+      if (error) *error = "shadow caster " + std::to_string(view.casters[k]) + ": " + drawError;
+      return false;
+    }
+  }
+  return true;
+}
+
+bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error, bool caster) {
   if (!item.mesh || !item.program) {
     if (error) *error = item.mesh ? "no shader program" : "no mesh";
     return false;
@@ -586,11 +700,14 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
 
   // A block larger than the data bound to it reads past the buffer: refuse rather than draw.
   if (program->frame.dataSize > static_cast<GLint>(sizeof(abi::FrameUniforms)) ||
-      program->object.dataSize > static_cast<GLint>(sizeof(abi::ObjectUniforms))) {
+      program->object.dataSize > static_cast<GLint>(sizeof(abi::ObjectUniforms)) ||
+      program->shadow.dataSize > static_cast<GLint>(sizeof(abi::ShadowUniforms))) {
     if (error) {
-      *error = "shader's FrameUniforms/ObjectUniforms blocks (" + std::to_string(program->frame.dataSize) + "/" +
-               std::to_string(program->object.dataSize) + " bytes) are larger than the ABI's (" +
-               std::to_string(sizeof(abi::FrameUniforms)) + "/" + std::to_string(sizeof(abi::ObjectUniforms)) + ")";
+      *error = "shader's FrameUniforms/ObjectUniforms/ShadowUniforms blocks (" +
+               std::to_string(program->frame.dataSize) + "/" + std::to_string(program->object.dataSize) + "/" +
+               std::to_string(program->shadow.dataSize) + " bytes) are larger than the ABI's (" +
+               std::to_string(sizeof(abi::FrameUniforms)) + "/" + std::to_string(sizeof(abi::ObjectUniforms)) + "/" +
+               std::to_string(sizeof(abi::ShadowUniforms)) + ")";
     }
     return false;
   }
@@ -625,14 +742,16 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   else
     glDisable(GL_CULL_FACE);
   // Masked materials under MSAA write their coverage as alpha (output_blending.glsl).
-  if (item.masked && samples_ > 1)
+  if (item.masked && samples_ > 1 && !caster)
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   else
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   // Premultiplied colour for the blended modes; they test depth but do not write it.
+  // The background (at the far plane) passes where depth is still the cleared 1 and writes none.
+  glDepthFunc(item.atFarPlane ? GL_LEQUAL : GL_LESS);
   if (item.blending == Blending::Opaque) {
     glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
+    glDepthMask(item.atFarPlane ? GL_FALSE : GL_TRUE);
   } else {
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, item.blending == Blending::Transparent ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE);
@@ -690,6 +809,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   static const std::vector<TextureBinding> abiFrameSamplers = [] {
     std::vector<TextureBinding> bindings;
     for (const abi::SamplerDesc& s : abi::kFrameSamplers) bindings.push_back({s.binding, std::string(s.name), nullptr});
+    bindings.push_back({abi::kShadowAtlasBinding, abi::kShadowAtlasName, nullptr});
     return bindings;
   }();
   glUseProgram(cached.linked.program.id());  // drawItem uses it next anyway

@@ -84,6 +84,7 @@ std::optional<LinkedProgram> buildProgram(const std::string& vertexSource, const
   linked.frame = bindBlock(program, abi::kFrameBlock);
   linked.object = bindBlock(program, abi::kObjectBlock);
   linked.material = bindBlock(program, abi::kMaterialBlock);
+  linked.shadow = bindBlock(program, abi::kShadowBlock);
   if (!checkGlError("program link", error)) return std::nullopt;
   return linked;
 }

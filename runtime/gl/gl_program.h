@@ -20,6 +20,7 @@ struct LinkedProgram {
   UniformBlock frame;     // "FrameUniforms", bound to abi::kFrameBinding
   UniformBlock object;    // "ObjectUniforms", bound to abi::kObjectBinding
   UniformBlock material;  // "MaterialParams", bound to abi::kMaterialBinding
+  UniformBlock shadow;    // "ShadowUniforms", bound to abi::kShadowBinding (shadow receivers)
 };
 
 // Compiles both stages, links them and binds the ABI blocks present in the program

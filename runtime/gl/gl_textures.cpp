@@ -161,6 +161,10 @@ void TextureCache::bind(const FrameDesc& frame, const DrawItem& draw) {
   };
   assign(frame.frameTextures);
   assign(draw.textures);
+  if (shadowAtlas_ != 0) {
+    wanted2D[abi::kShadowAtlasBinding] = shadowAtlas_;
+    wantedSamplers[abi::kShadowAtlasBinding] = shadowSampler_;
+  }
   for (uint32_t unit = 0; unit < kTextureUnits; ++unit) {
     if (boundSamplers_[unit] != wantedSamplers[unit]) glBindSampler(unit, wantedSamplers[unit]);
     boundSamplers_[unit] = wantedSamplers[unit];

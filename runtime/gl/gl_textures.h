@@ -49,6 +49,13 @@ class TextureCache {
   // Binds units 0..15 for one draw: the frame's textures, the draw's, the dummy elsewhere, so a
   // texture of an earlier draw never leaks into this one. Skips units already bound right.
   void bind(const FrameDesc& frame, const DrawItem& draw);
+  // The shadow atlas and its compare sampler, bound on unit abi::kShadowAtlasBinding by the
+  // bind() calls that follow (the forward pass's receivers); texture 0: the dummy there again
+  // (the shadow pass's casters, which draw into it).
+  void setShadowAtlas(GLuint texture, GLuint sampler) {
+    shadowAtlas_ = texture;
+    shadowSampler_ = sampler;
+  }
   // Binds sampler object 0 on every unit that may hold another (bind()'s, or an app's), so that
   // a pass binding textures itself samples with their own parameters.
   void clearSamplers();
@@ -81,6 +88,8 @@ class TextureCache {
   std::unordered_map<uint32_t, Sampler> samplers_;
   std::array<GLuint, kTextureUnits> boundSamplers_{};
   GLuint samplerFor(const TextureSampler& sampler);
+  GLuint shadowAtlas_ = 0;
+  GLuint shadowSampler_ = 0;
   uint64_t frameNumber_ = 0;
   bool uploadAstc_ = false;
   uint64_t compressedUploads_ = 0;

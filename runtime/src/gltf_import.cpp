@@ -17,8 +17,10 @@ namespace {
 namespace fs = std::filesystem;
 using ordered = nlohmann::ordered_json;
 
-const char* const kSlotParameters[kGltfSlots] = {"baseColorTexture", "metallicRoughnessTexture", "normalTexture",
-                                                 "occlusionTexture", "emissiveTexture"};
+const char* const kSlotParameters[kGltfSlots] = {
+    "baseColorTexture",          "metallicRoughnessTexture", "normalTexture",         "occlusionTexture",
+    "emissiveTexture",           "sheenColorTexture",        "sheenRoughnessTexture", "clearcoatTexture",
+    "clearcoatRoughnessTexture", "clearcoatNormalTexture"};
 
 // `target` relative to the scene's folder when it lies inside the asset root (all resolved), else "".
 std::string relativeInside(const fs::path& sceneFolder, const fs::path& root, const fs::path& target) {
@@ -136,6 +138,16 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
     params["reflectance"] = m.reflectance();
     if (m.features.textured[size_t(GltfSlot::Normal)]) params["normalScale"] = m.normalScale;
     if (m.features.textured[size_t(GltfSlot::Occlusion)]) params["occlusionStrength"] = m.occlusionStrength;
+    if (m.features.sheen) {
+      params["sheenColorFactor"] = m.sheenColorFactor;
+      params["sheenRoughnessFactor"] = m.sheenRoughnessFactor;
+    }
+    if (m.features.clearCoat) {
+      params["clearcoatFactor"] = m.clearcoatFactor;
+      params["clearcoatRoughnessFactor"] = m.clearcoatRoughnessFactor;
+      if (m.features.textured[size_t(GltfSlot::ClearCoatNormal)])
+        params["clearcoatNormalScale"] = m.clearcoatNormalScale;
+    }
     for (size_t s = 0; s < kGltfSlots; ++s) {
       if (!m.features.textured[s]) continue;
       const GltfTextureUse& t = m.textures[s];

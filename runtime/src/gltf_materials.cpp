@@ -30,12 +30,23 @@ constexpr SlotInfo kSlots[kGltfSlots] = {
     {"n", "normalTexture", "/normalTexture", "normal", "vec4(0.5, 0.5, 1.0, 1.0)"},
     {"ao", "occlusionTexture", "/occlusionTexture", "linear", "vec4(1.0, 1.0, 1.0, 1.0)"},
     {"em", "emissiveTexture", "/emissiveTexture", "srgb", "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"sc", "sheenColorTexture", "/extensions/KHR_materials_sheen/sheenColorTexture", "srgb",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"sr", "sheenRoughnessTexture", "/extensions/KHR_materials_sheen/sheenRoughnessTexture", "linear",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"cc", "clearcoatTexture", "/extensions/KHR_materials_clearcoat/clearcoatTexture", "linear",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"ccr", "clearcoatRoughnessTexture", "/extensions/KHR_materials_clearcoat/clearcoatRoughnessTexture", "linear",
+     "vec4(1.0, 1.0, 1.0, 1.0)"},
+    {"ccn", "clearcoatNormalTexture", "/extensions/KHR_materials_clearcoat/clearcoatNormalTexture", "normal",
+     "vec4(0.5, 0.5, 1.0, 1.0)"},
 };
 
 // The extensions the material path reads; any other optional one is reported and skipped (a
 // required one was refused with the file: gltf_document.cpp).
-constexpr const char* kReadExtensions[] = {"KHR_texture_transform", "KHR_materials_emissive_strength",
-                                           "KHR_materials_ior", "KHR_materials_specular", "KHR_mesh_quantization"};
+constexpr const char* kReadExtensions[] = {
+    "KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_ior",    "KHR_materials_specular",
+    "KHR_materials_sheen",   "KHR_materials_clearcoat",         "KHR_mesh_quantization"};
 
 // A number for a .mat file or a feature name: the shortest text that reads back as the double.
 std::string number(double v) {
@@ -96,6 +107,11 @@ class Reader {
         {g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions},
         {g.occlusionTexture.index, g.occlusionTexture.texCoord, g.occlusionTexture.extensions},
         {g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions},
+        {-1, 0, {}},  // KHR_materials_sheen's and KHR_materials_clearcoat's, read with the extensions below
+        {-1, 0, {}},
+        {-1, 0, {}},
+        {-1, 0, {}},
+        {-1, 0, {}},
     };
     for (size_t s = 0; s < kGltfSlots; ++s) {
       if (infos[s].index < 0) continue;
@@ -138,6 +154,10 @@ class Reader {
         }
       } else if (name == "KHR_materials_specular") {
         if (!specular(value, where, &m, error)) return false;
+      } else if (name == "KHR_materials_sheen") {
+        if (!sheen(value, where, &m, error)) return false;
+      } else if (name == "KHR_materials_clearcoat") {
+        if (!clearCoat(value, where, &m, error)) return false;
       } else {
         note(where + ": extension not read; the material is drawn without it");
       }
@@ -168,29 +188,113 @@ class Reader {
       *error = where + "/specularFactor: " + number(m->specularFactor) + " is outside [0, 1]";
       return false;
     }
-    if (value.IsObject() && value.Has("specularColorFactor")) {
-      const tinygltf::Value& c = value.Get("specularColorFactor");
-      if (!c.IsArray() || c.ArrayLen() != 3) {
-        *error = where + "/specularColorFactor: expected 3 numbers";
-        return false;
-      }
-      for (int i = 0; i < 3; ++i) {
-        const double v = c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : -1;
-        if (!(v >= 0 && v <= kMaxSpecularColor)) {
-          *error = where + "/specularColorFactor/" + std::to_string(i) + ": " +
-                   (c.Get(i).IsNumber() ? number(v) : std::string("not a number")) + " is outside [0, " +
-                   std::to_string(int(kMaxSpecularColor)) + "]";
-          return false;
-        }
-        m->specularColorFactor[size_t(i)] = v;
-      }
-    }
+    if (!colour(value, "specularColorFactor", where, kMaxSpecularColor, &m->specularColorFactor, error)) return false;
     const auto& c = m->specularColorFactor;
     if (c[0] != c[1] || c[1] != c[2])
       note(where + "/specularColorFactor: drawn by its luminance (Facet's f0 is one number)");
     if (m->specularFactor != 1) note(where + "/specularFactor: scales f0 only (Facet's f90 is 1)");
     for (const char* texture : {"specularTexture", "specularColorTexture"})
       if (value.IsObject() && value.Has(texture)) note(where + "/" + texture + ": not sampled; drawn with the factors");
+    return true;
+  }
+
+  // KHR_materials_sheen: the factors (colour in [0, 1]³, roughness in [0, 1]) and the two textures,
+  // sampled as the extension says: the colour's RGB (sRGB), the roughness's alpha (linear).
+  bool sheen(const tinygltf::Value& value, const std::string& where, GltfMaterial* m, std::string* error) {
+    m->features.sheen = true;
+    if (!value.IsObject()) {
+      *error = where + ": expected an object";
+      return false;
+    }
+    if (!colour(value, "sheenColorFactor", where, 1, &m->sheenColorFactor, error)) return false;
+    if (value.Has("sheenRoughnessFactor")) {
+      const tinygltf::Value& r = value.Get("sheenRoughnessFactor");
+      if (!r.IsNumber()) {
+        *error = where + "/sheenRoughnessFactor: not a number";
+        return false;
+      }
+      if (!unit(r.GetNumberAsDouble(), where + "/sheenRoughnessFactor", &m->sheenRoughnessFactor, error)) return false;
+    }
+    return extensionTextures(value, where, {GltfSlot::SheenColor, GltfSlot::SheenRoughness}, m, error);
+  }
+
+  // KHR_materials_clearcoat: the factors (in [0, 1]), the normal texture's scale and the three
+  // textures, sampled as the extension says: the strength's R, the roughness's G (linear), the
+  // normal as the core normal texture. Its layering is Facet's clear coat (material-models.md):
+  // the base × (1 − Fc(n_c·v)), a coat of IOR 1.5 (f0 0.04).
+  bool clearCoat(const tinygltf::Value& value, const std::string& where, GltfMaterial* m, std::string* error) {
+    m->features.clearCoat = true;
+    if (!value.IsObject()) {
+      *error = where + ": expected an object";
+      return false;
+    }
+    for (auto [key, out] : {std::pair{"clearcoatFactor", &m->clearcoatFactor},
+                            std::pair{"clearcoatRoughnessFactor", &m->clearcoatRoughnessFactor}}) {
+      if (!value.Has(key)) continue;
+      const tinygltf::Value& f = value.Get(key);
+      if (!f.IsNumber()) {
+        *error = where + "/" + key + ": not a number";
+        return false;
+      }
+      if (!unit(f.GetNumberAsDouble(), where + "/" + key, out, error)) return false;
+    }
+    if (value.Has("clearcoatNormalTexture")) {
+      m->clearcoatNormalScale = numberIn(value.Get("clearcoatNormalTexture"), "scale", 1);
+      if (!(std::abs(m->clearcoatNormalScale) <= kMaxNormalScale)) {
+        *error = where + "/clearcoatNormalTexture/scale: " + number(m->clearcoatNormalScale) + " is outside [-" +
+                 number(kMaxNormalScale) + ", " + number(kMaxNormalScale) + "]";
+        return false;
+      }
+    }
+    return extensionTextures(value, where,
+                             {GltfSlot::ClearCoat, GltfSlot::ClearCoatRoughness, GltfSlot::ClearCoatNormal}, m, error);
+  }
+
+  // An extension's textureInfo objects (index, texCoord, KHR_texture_transform), into their slots.
+  bool extensionTextures(const tinygltf::Value& value, const std::string& where, std::initializer_list<GltfSlot> slots,
+                         GltfMaterial* m, std::string* error) {
+    for (GltfSlot slot : slots) {
+      const size_t s = size_t(slot);
+      const char* key = kSlots[s].parameter;
+      if (!value.Has(key)) continue;
+      const tinygltf::Value& info = value.Get(key);
+      const std::string at = where + "/" + key;
+      if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) {
+        *error = at + "/index: expected a texture index";
+        return false;
+      }
+      const int texCoord =
+          info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+      tinygltf::ExtensionMap extensions;
+      if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const std::string& k : info.Get("extensions").Keys()) extensions[k] = info.Get("extensions").Get(k);
+      if (!texture(info.Get("index").GetNumberAsInt(), texCoord, extensions, at, &m->textures[s], error)) return false;
+      m->features.textured[s] = true;
+      m->features.texCoord[s] = m->textures[s].texCoord;
+      m->features.transformed[s] = m->textures[s].transformed;
+    }
+    return true;
+  }
+
+  // An extension's colour factor, when present: 3 numbers in [0, hi].
+  bool colour(const tinygltf::Value& object, const char* key, const std::string& where, double hi,
+              std::array<double, 3>* out, std::string* error) {
+    if (!object.IsObject() || !object.Has(key)) return true;
+    const tinygltf::Value& c = object.Get(key);
+    if (!c.IsArray() || c.ArrayLen() != 3) {
+      *error = where + "/" + key + ": expected 3 numbers";
+      return false;
+    }
+    for (int i = 0; i < 3; ++i) {
+      const double v = c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : -1;
+      if (!(v >= 0 && v <= hi)) {
+        *error = where + "/" + key + "/" + std::to_string(i) + ": " +
+                 (c.Get(i).IsNumber() ? number(v) : std::string("not a number")) + " is outside [0, " +
+                 std::to_string(int(hi)) + "]";
+        return false;
+      }
+      (*out)[size_t(i)] = v;
+    }
     return true;
   }
 
@@ -384,6 +488,8 @@ std::string GltfFeatures::name() const {
   if (alphaMode == "MASK") name += "_mask" + featureNumber(alphaCutoff);
   if (alphaMode == "BLEND") name += "_blend";
   if (doubleSided) name += "_ds";
+  if (sheen) name += "_sh";
+  if (clearCoat) name += "_cc";
   return name;
 }
 
@@ -458,6 +564,17 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
       "    param reflectance: float = 0.5 in [0, 2.5]\n";
   if (has(S::Normal)) text += "    param normalScale: float = 1.0 in [-100, 100]\n";
   if (has(S::Occlusion)) text += "    param occlusionStrength: float = 1.0 in [0, 1]\n";
+  if (f.sheen)
+    text +=
+        "    // KHR_materials_sheen: a sheen layer over the base (docs/material-models.md, \"Sheen layer\")\n"
+        "    param sheenColorFactor: vec3 = vec3(0.0, 0.0, 0.0) in [0, 1]\n"
+        "    param sheenRoughnessFactor: float = 0.0 in [0, 1]\n";
+  if (f.clearCoat)
+    text +=
+        "    // KHR_materials_clearcoat: Facet's clear coat (docs/material-models.md, \"Clear coat\")\n"
+        "    param clearcoatFactor: float = 0.0 in [0, 1]\n"
+        "    param clearcoatRoughnessFactor: float = 0.0 in [0, 1]\n";
+  if (has(S::ClearCoatNormal)) text += "    param clearcoatNormalScale: float = 1.0 in [-100, 100]\n";
   for (size_t s = 0; s < kGltfSlots; ++s) {
     if (!f.textured[s]) continue;
     const SlotInfo& slot = kSlots[s];
@@ -509,6 +626,21 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
         "        ambientOcclusion = 1.0 + params.occlusionStrength * (" + sampled[size_t(S::Occlusion)] + ".r - 1.0)\n";
   text += has(S::Emissive) ? "        emissive = params.emissiveFactor * " + sampled[size_t(S::Emissive)] + ".rgb\n"
                            : "        emissive = params.emissiveFactor\n";
+  if (f.sheen) {
+    text += "        sheenColor = params.sheenColorFactor" +
+            (has(S::SheenColor) ? " * " + sampled[size_t(S::SheenColor)] + ".rgb" : std::string()) + "\n";
+    text += "        sheenRoughness = params.sheenRoughnessFactor" +
+            (has(S::SheenRoughness) ? " * " + sampled[size_t(S::SheenRoughness)] + ".a" : std::string()) + "\n";
+  }
+  if (f.clearCoat) {
+    text += "        clearCoat = params.clearcoatFactor" +
+            (has(S::ClearCoat) ? " * " + sampled[size_t(S::ClearCoat)] + ".r" : std::string()) + "\n";
+    text += "        clearCoatRoughness = params.clearcoatRoughnessFactor" +
+            (has(S::ClearCoatRoughness) ? " * " + sampled[size_t(S::ClearCoatRoughness)] + ".g" : std::string()) + "\n";
+    if (has(S::ClearCoatNormal))
+      text += "        let coatMapped = " + sampled[size_t(S::ClearCoatNormal)] + "\n" +
+              "        clearCoatNormal = vec3(coatMapped.xy * params.clearcoatNormalScale, coatMapped.z)\n";
+  }
   text += "    }\n}\n";
   return text;
 }

@@ -28,6 +28,43 @@ std::string instanceCountError(const FrameDesc& frame) {
   return "";
 }
 
+std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize) {
+  if (shadow.atlasSize == 0 || shadow.atlasSize > maxAtlasSize)
+    return "shadow atlas size " + std::to_string(shadow.atlasSize) + " is outside 1.." + std::to_string(maxAtlasSize);
+  for (size_t c = 0; c < shadow.cascades.size(); ++c) {
+    const ShadowCascadeDesc& cascade = shadow.cascades[c];
+    const std::string which = "shadow cascade " + std::to_string(c) + ": ";
+    const uint64_t right = uint64_t{cascade.viewport[0]} + cascade.viewport[2];
+    const uint64_t bottom = uint64_t{cascade.viewport[1]} + cascade.viewport[3];
+    if (cascade.viewport[2] == 0 || cascade.viewport[3] == 0 || right > shadow.atlasSize || bottom > shadow.atlasSize)
+      return which + "viewport is outside the " + std::to_string(shadow.atlasSize) + " texel atlas";
+    for (uint32_t caster : cascade.casters) {
+      if (caster >= shadow.casters.size())
+        return which + "caster " + std::to_string(caster) + " is out of range (" +
+               std::to_string(shadow.casters.size()) + " casters)";
+    }
+  }
+  return "";
+}
+
+FrameDesc withShadowDraws(const FrameDesc& frame) {
+  FrameDesc all = frame;
+  if (!frame.shadow) return all;
+  all.draws.reserve(frame.draws.size() + shadowDrawCount(frame));
+  for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) {
+    for (uint32_t caster : cascade.casters) all.draws.push_back(frame.shadow->casters[caster]);
+  }
+  return all;
+}
+
+size_t shadowDrawCount(const FrameDesc& frame) {
+  size_t count = 0;
+  if (frame.shadow) {
+    for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) count += cascade.casters.size();
+  }
+  return count;
+}
+
 std::vector<DrawItem> oneDrawPerInstance(const std::vector<DrawItem>& draws) {
   std::vector<DrawItem> split;
   for (const DrawItem& draw : draws)

@@ -67,7 +67,7 @@ std::string bloomSettingsError(const char* what, const BloomSettings& bloom) {
 
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
                                        HdrFormat hdrFormat, uint32_t samples, bool fxaa, double renderScale,
-                                       int bloomLevels, uint32_t shadowAtlasSize) {
+                                       int bloomLevels, uint32_t shadowAtlasSize, bool toneMapSamples) {
   ForwardPostGraph g;
   const uint32_t hdrBytes = bytesPerPixel(hdrFormat);
   path = effectivePostPath(path, renderScale, bloomLevels > 0);
@@ -88,7 +88,8 @@ ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath
   if (samples > 1) forward.resolves.push_back(g.hdr);
   g.forwardPass = g.graph.addPass(forward);
   const fg::ReadKind read = path == PostPath::Separate ? fg::ReadKind::WholeTexture : fg::ReadKind::OwnPixel;
-  fg::PassDesc post{"post", {{g.hdr, read}}, {g.toneMapped}, {}, {}};
+  const bool readsSamples = toneMapSamples && samples > 1 && path == PostPath::Merged;
+  fg::PassDesc post{"post", {{readsSamples ? g.hdrSamples : g.hdr, read}}, {g.toneMapped}, {}, {}};
   if (bloomLevels > 0) {
     const std::vector<ImageSize> sizes = bloomLevelSizes(fw, fh, bloomLevels);
     for (size_t i = 0; i < sizes.size(); ++i) {

@@ -12,6 +12,7 @@
 
 #include "facet/permutations/tiers.h"
 #include "facet/permutations/variant_key.h"
+#include "facet/runtime/background.h"
 #include "facet/runtime/color_grading.h"
 #include "facet/runtime/compressed_texture.h"
 #include "facet/runtime/environment.h"
@@ -22,6 +23,7 @@
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/scene_image_budget.h"
+#include "facet/runtime/shadow_pass.h"
 #include "facet/runtime/sun_shadow.h"
 #include "facet/runtime/texture_checks.h"
 #include "facet/runtime/vignette.h"
@@ -119,28 +121,6 @@ MeshBounds meshBounds(const Mesh& mesh) {
   return b;
 }
 
-// The shadow pass of a scene whose sun casts: the cascades fitted to the casters, each with the
-// casters that can shadow it and the biases in depth (docs/shadows.md, "Shadow pass").
-ShadowPassDesc shadowPass(const Scene& scene, const std::vector<CasterBounds>& bounds, std::vector<DrawItem> casters) {
-  const SunShadowFit fit = fitSunShadow(scene, bounds);
-  ShadowPassDesc pass;
-  pass.atlasSize = scene.shadows.atlasSize;
-  pass.uniforms = fit.uniforms;
-  for (const SunCascade& c : fit.cascades) {
-    ShadowCascadeDesc d;
-    store(d.viewProjection, glm::mat4(c.viewProjection));
-    std::copy(c.viewport.begin(), c.viewport.end(), d.viewport);
-    // A texel's width along the rays, in window depth, is texelSize / depthRange.
-    d.depthBias = float(scene.shadows.depthBias * c.texelSize / c.depthRange);
-    d.slopeBias = float(scene.shadows.slopeBias);
-    for (size_t i = 0; i < bounds.size(); ++i)
-      if (casterInCascade(c, bounds[i], scene.sun->direction)) d.casters.push_back(uint32_t(i));
-    pass.cascades.push_back(std::move(d));
-  }
-  pass.casters = std::move(casters);
-  return pass;
-}
-
 }  // namespace
 
 std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::string& packageDir, std::string* error) {
@@ -198,9 +178,18 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     out->frame_.colorLut = &out->colorLut_;
   }
   if (scene.post.vignette) out->frame_.postUniforms = postUniforms(scene.vignette, scene.width, scene.height);
-  // The background is the environment's mean (exact for a constant sky): no backdrop is drawn.
+  // The clear colour is the environment's mean: the flat background (exact for a constant sky),
+  // and what shows where a drawn background is not (never, as it covers the screen).
   for (int i = 0; i < 3; ++i) out->frame_.clearColor[i] = mean[size_t(i)];
 
+  // A spot light's shadow is fitted and drawn into the atlas (shadowPassDesc), but no variant
+  // receives it yet: its objects would be lit through their casters (docs/shadows.md, "Spot shadows").
+  if (const std::vector<size_t> spots = shadowSpotLights(scene); !spots.empty()) {
+    *error = "/lights/" + std::to_string(spots[0]) +
+             "/castShadows: spot-light shadows are not rendered yet: no material variant receives them "
+             "(docs/shadows.md, \"Spot shadows\")";
+    return nullptr;
+  }
   const int cascades = int(sunShadowCascades(scene));
   // Material name, and whether its objects receive the sun's shadow -> index in materials_: a
   // material whose objects differ in receiving is loaded once per variant.
@@ -333,7 +322,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     }
     out->frame_.draws.push_back(std::move(draw));
   }
-  if (cascades > 0) out->frame_.shadow = shadowPass(scene, casterBounds, std::move(casters));
+  if (cascades > 0) out->frame_.shadow = shadowPassDesc(scene, casterBounds, std::move(casters));
   mergeInstances(&out->frame_.draws);
   // Opaque draws first, in scene order (of each draw's first object); blended ones after them,
   // far to near, so each blends over everything behind it (sorted by object centre: exact for
@@ -349,6 +338,10 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
     if (blendedA != blendedB) return blendedB;
     return blendedA && distance(a) > distance(b);
   });
+  static_assert(kMaxBackgroundLod == abi::kEnvironmentLevels - 1,
+                "the scene's background levels are the environment's");
+  if (scene.background.environment)
+    addBackground(&out->frame_, {float(scene.background.lod), float(scene.background.intensity)});
   return out;
 }
 

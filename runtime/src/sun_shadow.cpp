@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "facet/runtime/spot_shadow.h"
+
 namespace facet::runtime {
 
 namespace {
@@ -42,13 +44,6 @@ SliceSphere sliceSphere(double a, double b, double t) {
   return {c, std::sqrt((c - a) * (c - a) + a * a * t * t)};
 }
 
-// Texels a cascade keeps around its sphere: the receiver's lookup moves up to normalBias texels
-// along its normal (chunks/shadow_sun.glsl) and the 3×3 tent reads texels up to 2 from the
-// position, which must stay inside the cascade's square and not read its neighbour's. At most a
-// quarter of the square (normalBias reaches 64): past that the guard would cost more resolution
-// than the few receivers at the sphere's rim that need it.
-double guardTexels(double normalBias, uint32_t size) { return std::min(std::ceil(normalBias) + 2, double(size) / 4); }
-
 void store(float* dst, const glm::dvec3& v, double w) {
   dst[0] = float(v.x);
   dst[1] = float(v.y);
@@ -57,6 +52,15 @@ void store(float* dst, const glm::dvec3& v, double w) {
 }
 
 }  // namespace
+
+// Texels a cascade keeps around its sphere: the receiver's lookup moves up to normalBias texels
+// along its normal (chunks/shadow_sun.glsl) and the 3×3 tent reads texels up to 2 from the
+// position, which must stay inside the cascade's square and not read its neighbour's. At most a
+// quarter of the square (normalBias reaches 64): past that the guard would cost more resolution
+// than the few receivers at the sphere's rim that need it.
+double shadowGuardTexels(double normalBias, uint32_t size) {
+  return std::min(std::ceil(normalBias) + 2, double(size) / 4);
+}
 
 bool casterInCascade(const SunCascade& cascade, const CasterBounds& caster, const glm::dvec3& sunDirection) {
   // The distance from the cascade's centre to the ray the caster's centre sweeps down-sun, against
@@ -76,7 +80,9 @@ SunShadowFit fitSunShadow(const Scene& scene, std::span<const CasterBounds> cast
   const Camera& camera = scene.camera;
   const uint32_t count = std::clamp<uint32_t>(settings.cascades, 1, abi::kMaxShadowCascades);
   const uint32_t atlas = settings.atlasSize;
-  const uint32_t size = count == 1 ? atlas : atlas / 2;
+  // The spot lights that cast take the cells after the cascades (spot_shadow.h).
+  const auto views = uint32_t(count + shadowSpotLights(scene).size());
+  const uint32_t size = shadowAtlasCell(atlas, views, 0)[2];
 
   const glm::dvec3 sunDirection = glm::normalize(scene.sun->direction);
   const glm::dmat3 toSun = sunFrame(sunDirection);
@@ -98,8 +104,8 @@ SunShadowFit fitSunShadow(const Scene& scene, std::span<const CasterBounds> cast
     const SliceSphere sphere = sliceSphere(c.splitNear, c.splitFar, cornerSlope);
     c.center = camera.position + forward * sphere.depth;
     c.radius = sphere.radius;
-    c.viewport = {count == 1 ? 0 : (i % 2) * size, count == 1 ? 0 : (i / 2) * size, size, size};
-    const double guard = guardTexels(settings.normalBias, size);
+    c.viewport = shadowAtlasCell(atlas, views, i);
+    const double guard = shadowGuardTexels(settings.normalBias, size);
     c.texelSize = 2 * c.radius / (size - 2 * guard);
     const double halfWidth = 0.5 * size * c.texelSize;
     // Valient's snap: the square's centre at whole texels of the sun's frame.

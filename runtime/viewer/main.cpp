@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cascade_overlay.h"
 #include "facet/package/atomic_file.h"
 #include "facet/runtime/frame_graph.h"
 #include "facet/runtime/png.h"
@@ -26,8 +27,8 @@ int main(int argc, char** argv) {
   std::string scenePath, assetRoot, packageDir = ".", outDir = ".", backendName = "both", tier;
   bool validation = false, stats = false, keepHdr = false, json = false, decodeTextures = false, fxaa = false;
   size_t frames = 1, warmup = 2;
-  bool oneDrawPerObject = false;
-  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f";
+  bool oneDrawPerObject = false, shadowCascades = false;
+  std::string postPathName = "auto", glContext = "auto", hdrFormatName = "rgba16f", msaaForm = "auto";
   uint32_t width = 0, height = 0, msaa = 0;
   double renderScale = 1.0;
   facet::runtime::BloomSettings bloom;
@@ -47,6 +48,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rgba16f", "r11g11b10f"}));
   app.add_option("--msaa", msaa, "MSAA samples per pixel: 1 | 2 | 4 (default: the scene's \"antialiasing\", else 1)")
       ->check(CLI::IsMember({1, 2, 4}));
+  app.add_option("--msaa-form", msaaForm,
+                 "Vulkan: auto (VK_EXT_multisampled_render_to_single_sampled where offered) | attachments "
+                 "(multisampled attachments; the merged path tone maps each sample) | resolve-first (the same, "
+                 "reading the resolve)")
+      ->check(CLI::IsMember({"auto", "attachments", "resolve-first"}));
   app.add_flag("--fxaa", fxaa, "an FXAA pass after the post pass (default: the scene's \"antialiasing\")");
   CLI::Option* bloomOption =
       app.add_option("--bloom", bloom.intensity,
@@ -74,6 +80,9 @@ int main(int argc, char** argv) {
                "draw every object with its own call instead of instancing those that share all but the transform");
   app.add_flag("--decode-textures", decodeTextures,
                "GL: decode ASTC textures on the CPU even where the context samples ASTC (the fallback path)");
+  app.add_flag("--shadow-cascades", shadowCascades,
+               "tint the sun's shadow receivers by the cascade they read (red, green, blue, yellow: 0..3), an overlay "
+               "from a CPU ray-cast of the scene (docs/shadows.md)");
   app.add_option("--warmup", warmup, "with --stats: frames rendered first and not measured (default 2)")
       ->check(CLI::Range(0, 1000));
   try {
@@ -119,6 +128,8 @@ int main(int argc, char** argv) {
   }
   auto prepared = facet::runtime::SceneFrame::prepare(*scene, packageDir, &error);
   if (!prepared) return fail(scenePath + ": " + error);
+  if (shadowCascades && !prepared->frame().shadow)
+    return fail(scenePath + ": --shadow-cascades: the scene's sun does not cast shadows (/sun/castShadows)");
 
   std::error_code ec;
   std::filesystem::create_directories(outDir, ec);
@@ -145,6 +156,8 @@ int main(int argc, char** argv) {
       options.post = scene->post;
       options.hdrFormat = hdrFormat;
       options.msaaSamples = scene->msaaSamples;
+      options.renderToSingleSampled = msaaForm == "auto";
+      options.toneMapSamples = msaaForm != "resolve-first";
       options.fxaa = scene->fxaa;
       options.renderScale = scene->renderScale;
       options.bloom = scene->bloom;
@@ -171,6 +184,10 @@ int main(int argc, char** argv) {
     std::vector<double> cpuTimes;
     facet::runtime::FrameDesc frame = prepared->frame();
     if (oneDrawPerObject) frame.draws = facet::runtime::oneDrawPerInstance(frame.draws);
+    // The shadow pass's draws: one per (cascade, caster that can shadow it), as the backends issue them.
+    size_t casterDraws = 0;
+    if (frame.shadow)
+      for (const facet::runtime::ShadowCascadeDesc& c : frame.shadow->cascades) casterDraws += c.casters.size();
     const size_t total = frames + (stats ? warmup : 0);
     for (size_t i = 0; i < total; ++i) {
       if (!backend->render(frame, &result, &error)) return fail(name + ": " + error);
@@ -182,6 +199,13 @@ int main(int argc, char** argv) {
     for (const std::string& message : backend->validationErrors())
       std::fprintf(stderr, "%s validation: %s\n", name.c_str(), message.c_str());
     if (!backend->validationErrors().empty()) return fail(name + ": validation reported errors");
+    if (shadowCascades) {
+      std::array<size_t, facet::abi::kMaxShadowCascades> pixels{};
+      if (!facet::viewer::tintShadowCascades(*scene, prepared->frame().shadow->uniforms, &result.ldr, &pixels, &error))
+        return fail(scenePath + ": " + error);
+      std::fprintf(json ? stderr : stdout, "%s: receiver pixels per cascade: %zu, %zu, %zu, %zu\n", name.c_str(),
+                   pixels[0], pixels[1], pixels[2], pixels[3]);
+    }
     std::string path = (std::filesystem::path(outDir) / (stem + "." + name + ".png")).string();
     if (!facet::runtime::writePng(path, result.width, result.height, result.ldr, &error)) return fail(error);
     std::fprintf(json ? stderr : stdout, "%s: %s (%ux%u, variant %s, exposure %.3g)\n", name.c_str(), path.c_str(),
@@ -189,7 +213,8 @@ int main(int argc, char** argv) {
     if (stats) {
       const facet::runtime::ForwardPostGraph graph = facet::runtime::buildForwardPostGraph(
           result.width, result.height, backend->postPath(), backend->readsBackHdr(), backend->hdrFormat(),
-          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels));
+          backend->msaaSamples(), backend->fxaa(), backend->renderScale(), int(result.bloomLevels),
+          prepared->frame().shadow ? prepared->frame().shadow->atlasSize : 0u, backend->toneMapsSamples());
       facet::runtime::fg::CompiledGraph compiled;
       if (!graph.graph.compile(&compiled, &error)) return fail(name + ": frame graph: " + error);
       const std::vector<facet::viewer::MedianTime> medians = facet::viewer::medianTimes(times);
@@ -207,6 +232,8 @@ int main(int argc, char** argv) {
         entry["height"] = result.height;
         entry["scene"] = scenePath;
         entry["draws"] = frame.draws.size();
+        entry["shadowCasterDraws"] = casterDraws;
+        entry["shadowCascades"] = frame.shadow ? frame.shadow->cascades.size() : 0;
         entry["cpuSubmitMs"] = facet::viewer::median(cpuTimes);
         report.push_back(std::move(entry));
       } else {
@@ -224,6 +251,9 @@ int main(int argc, char** argv) {
                     facet::viewer::statsText(graph.graph, compiled, medians, times.size()).c_str());
         std::printf("  %zu draw calls; CPU issuing the frame (FrameResult::cpuSubmitMilliseconds): median %.3f ms\n",
                     frame.draws.size(), facet::viewer::median(cpuTimes));
+        if (frame.shadow)
+          std::printf("  shadow pass: %zu caster draws over %zu cascades (%u² atlas)\n", casterDraws,
+                      frame.shadow->cascades.size(), frame.shadow->atlasSize);
       }
     }
   }

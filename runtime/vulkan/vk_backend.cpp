@@ -119,6 +119,7 @@ class VulkanBackend final : public VulkanRenderer {
   bool readsBackHdr() const override { return readBackHdr_; }
   HdrFormat hdrFormat() const override { return hdrFormat_; }
   uint32_t msaaSamples() const override { return uint32_t(samples_.count); }
+  bool toneMapsSamples() const override { return samples_.postReadsSamples; }
   bool fxaa() const override { return fxaa_; }
   double renderScale() const override { return renderScale_; }
   int bloomLevels() const override { return bloomOn_ ? bloom_.levels : 0; }
@@ -171,6 +172,7 @@ class VulkanBackend final : public VulkanRenderer {
   PostPath path_ = PostPath::Merged;
   const PostShaders* post_ = nullptr;  // the post variant VulkanOptions::post chose
   bool readBackHdr_ = true;
+  bool toneMapSamples_ = true;  // VulkanOptions::toneMapSamples, where the path allows it (samples_)
   uint32_t framesInFlight_ = 2;
   HdrFormat hdrFormat_ = HdrFormat::Rgba16Float;
   VertexPacking vertexPacking_ = VertexPacking::Packed;
@@ -268,10 +270,10 @@ class VulkanBackend final : public VulkanRenderer {
   // Frames were recorded (recordFrame) since the queue was last known idle: render() waits for
   // the queue before reusing a frame slot that one of them may still read.
   bool recordedSinceIdle_ = false;
-  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked), its
+  // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked, at the far plane), its
   // mesh's vertex layout (packed with 16-bit or fp32 positions, or full precision) and the pass
   // (forward, or the shadow pass's depth only).
-  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout, bool>, CachedPipeline> pipelines_;
+  std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout, bool, bool>, CachedPipeline> pipelines_;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -371,12 +373,14 @@ bool VulkanBackend::planRenderPath(const VulkanOptions& options, std::string* er
     return false;
   }
   samples_.count = static_cast<VkSampleCountFlagBits>(options.msaaSamples);
+  toneMapSamples_ = options.toneMapSamples;
   fxaa_ = options.fxaa;
   // Large enough for every bloom level (bloomLevelSizes): the ops do not depend on the size.
   const uint32_t planSize = bloomOn_ ? 2u << bloom_.levels : 1;
   const int bloomLevels = bloomOn_ ? bloom_.levels : 0;
-  const ForwardPostGraph g = buildForwardPostGraph(planSize, planSize, path_, readBackHdr_, hdrFormat_,
-                                                   options.msaaSamples, options.fxaa, renderScale_, bloomLevels);
+  const ForwardPostGraph g =
+      buildForwardPostGraph(planSize, planSize, path_, readBackHdr_, hdrFormat_, options.msaaSamples, options.fxaa,
+                            renderScale_, bloomLevels, 0, toneMapSamples_);
   fg::CompiledGraph compiled;
   if (!g.graph.compile(&compiled, error)) return false;
   const size_t expected =
@@ -419,6 +423,9 @@ std::string VulkanBackend::msaaMethod() const {
   std::string method = samples_.count == VK_SAMPLE_COUNT_1_BIT ? "off"
                        : samples_.renderToSingleSampled
                            ? "VK_EXT_multisampled_render_to_single_sampled (samples kept by the driver)"
+                       : samples_.postReadsSamples
+                           ? "multisampled attachments resolved by pResolveAttachments; the post subpass tone maps "
+                             "each sample (subpassInputMS)"
                            : "multisampled attachments resolved by pResolveAttachments";
   // createImage falls back to device-local memory where the device has no lazily allocated type.
   const Image& transient = samples_.resolveAttachment() ? targets_.hdrSamples : targets_.depth;
@@ -463,6 +470,9 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   }
 
   const bool merged = path_ == PostPath::Merged;
+  // Known only now: whether the context took VK_EXT_multisampled_render_to_single_sampled, whose
+  // implicit resolve leaves no samples to read.
+  samples_.postReadsSamples = toneMapSamples_ && merged && samples_.resolveAttachment();
   if (!checkSampleCount(error)) return false;
   // RGBA16F is checked with the context's required formats; R11G11B10F's colour-attachment use is
   // optional in Vulkan (supported on lavapipe and current mobile GPUs), so it is checked here.
@@ -524,9 +534,11 @@ bool VulkanBackend::createFixedObjects(std::string* error) {
   PipelineDesc postDesc;
   postDesc.kind = PipelineKind::Post;
   postDesc.vertexSpirv = &post.vertexSpirv;
-  postDesc.fragmentSpirv = merged       ? &post.fragmentFetchSpirv
-                           : upscales() ? &post.fragmentUpscaledSpirv
-                                        : &post.fragmentSpirv;
+  postDesc.fragmentSpirv = samples_.postReadsSamples ? &post.fragmentSamplesSpirv
+                           : merged                  ? &post.fragmentFetchSpirv
+                           : upscales()              ? &post.fragmentUpscaledSpirv
+                                                     : &post.fragmentSpirv;
+  postDesc.postSampleCount = samples_.postReadsSamples ? uint32_t(samples_.count) : 0;
   postDesc.layout = postLayout_;
   postDesc.renderPass = merged ? forwardPass_ : postPass_;
   postDesc.subpass = merged ? 1 : 0;
@@ -816,6 +828,7 @@ TargetConfig VulkanBackend::targetConfig() const {
   config.depthTransient = depthTransient_;
   config.samples = samples_.count;
   config.renderToSingleSampled = samples_.renderToSingleSampled != nullptr;
+  config.postReadsSamples = samples_.postReadsSamples;
   config.hdrFormat = hdrVkFormat_;
   config.forwardPass = forwardPass_;
   config.postPass = postPass_;
@@ -846,7 +859,8 @@ bool VulkanBackend::ensureTargets(uint32_t width, uint32_t height, bool ownOutpu
 void VulkanBackend::writePostSet() {
   const bool merged = path_ == PostPath::Merged;
   // An input attachment descriptor ignores the sampler.
-  VkDescriptorImageInfo imageInfo{merged ? VK_NULL_HANDLE : hdrSampler_, targets_.hdr.view,
+  VkDescriptorImageInfo imageInfo{merged ? VK_NULL_HANDLE : hdrSampler_,
+                                  samples_.postReadsSamples ? targets_.hdrSamples.view : targets_.hdr.view,
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet write{};
   write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -876,7 +890,8 @@ void VulkanBackend::writePostSet() {
 
 bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& draw, VertexLayout layout, bool depthOnly,
                                 VkPipeline* out, std::string* error) {
-  const auto key = std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout, depthOnly);
+  const auto key =
+      std::make_tuple(&program, draw.blending, draw.cullBackFaces, draw.masked, layout, depthOnly, draw.atFarPlane);
   auto found = pipelines_.find(key);
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
@@ -893,6 +908,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   desc.kind = PipelineKind::Forward;
   desc.blending = draw.blending;
   desc.cullBackFaces = draw.cullBackFaces;
+  desc.atFarPlane = draw.atFarPlane;
   desc.samples = samples_.count;
   desc.alphaToCoverage = draw.masked;
   desc.vertexLayout = layout;

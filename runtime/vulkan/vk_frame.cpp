@@ -19,48 +19,10 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
 }  // namespace
 
 bool checkShadow(const ShadowPassDesc& shadow, const VkPhysicalDeviceLimits& limits, std::string* error) {
-  if (shadow.atlasSize == 0 || shadow.atlasSize > limits.maxImageDimension2D ||
-      shadow.atlasSize > limits.maxFramebufferWidth || shadow.atlasSize > limits.maxFramebufferHeight) {
-    *error = "shadow atlas size " + std::to_string(shadow.atlasSize) + " is outside 1.." +
-             std::to_string(std::min(limits.maxImageDimension2D, limits.maxFramebufferWidth));
-    return false;
-  }
-  for (size_t c = 0; c < shadow.cascades.size(); ++c) {
-    const ShadowCascadeDesc& cascade = shadow.cascades[c];
-    const std::string which = "shadow cascade " + std::to_string(c) + ": ";
-    const uint64_t right = uint64_t{cascade.viewport[0]} + cascade.viewport[2];
-    const uint64_t bottom = uint64_t{cascade.viewport[1]} + cascade.viewport[3];
-    if (cascade.viewport[2] == 0 || cascade.viewport[3] == 0 || right > shadow.atlasSize || bottom > shadow.atlasSize) {
-      *error = which + "viewport is outside the " + std::to_string(shadow.atlasSize) + " texel atlas";
-      return false;
-    }
-    for (uint32_t caster : cascade.casters) {
-      if (caster >= shadow.casters.size()) {
-        *error = which + "caster " + std::to_string(caster) + " is out of range (" +
-                 std::to_string(shadow.casters.size()) + " casters)";
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-FrameDesc withShadowDraws(const FrameDesc& frame) {
-  FrameDesc all = frame;
-  if (!frame.shadow) return all;
-  all.draws.reserve(frame.draws.size() + shadowDrawCount(frame));
-  for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) {
-    for (uint32_t caster : cascade.casters) all.draws.push_back(frame.shadow->casters[caster]);
-  }
-  return all;
-}
-
-size_t shadowDrawCount(const FrameDesc& frame) {
-  size_t count = 0;
-  if (frame.shadow) {
-    for (const ShadowCascadeDesc& cascade : frame.shadow->cascades) count += cascade.casters.size();
-  }
-  return count;
+  const uint32_t maxAtlasSize =
+      std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxFramebufferHeight});
+  *error = shadowPassError(shadow, maxAtlasSize);
+  return error->empty();
 }
 
 bool checkFrame(const FrameDesc& frame, const VkPhysicalDeviceLimits& limits, std::string* error) {

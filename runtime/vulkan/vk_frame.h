@@ -35,15 +35,9 @@ struct DrawSlot {
   MeshLocation mesh;  // the draw's mesh buffer (MeshCache), filled by the backend
 };
 
-// The shadow pass's own checks (checkFrame makes them too): an atlas the device cannot make,
-// cascade viewports outside it, caster indices out of range.
+// The shadow pass's own checks (checkFrame makes them too): shadowPassError with the largest
+// atlas the device can make and render into. The frame the backend draws is withShadowDraws'.
 bool checkShadow(const ShadowPassDesc& shadow, const VkPhysicalDeviceLimits& limits, std::string* error);
-
-// The frame the backend draws: `frame` itself without a shadow pass; with one, its draws followed
-// by one draw per (cascade, caster) in cascade order, the caster's DrawItem as given (the shadow
-// pass's slots are the last shadowDrawCount()). The shadow pass must have passed checkShadow.
-FrameDesc withShadowDraws(const FrameDesc& frame);
-size_t shadowDrawCount(const FrameDesc& frame);
 
 // Where the shadow pass's blocks sit in the arena (the layout above).
 struct ShadowBlocks {

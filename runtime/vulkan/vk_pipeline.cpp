@@ -212,7 +212,8 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   const VkAttachmentReference hdrColour{msaa ? 3u : 0u, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference hdrResolve{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  const VkAttachmentReference hdrInput{0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  const VkAttachmentReference hdrInput{msaa && samples.postReadsSamples ? 3u : 0u,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   // Colour slot 1, not 0: the post shader writes LDR at location 1 in every API, because Metal
   // and GLES framebuffer fetch read HDR as colour 0 of the same pass (post_tonemap.frag.glsl).
   const std::array<VkAttachmentReference, 2> postColour{
@@ -230,7 +231,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   subpasses[1].colorAttachmentCount = static_cast<uint32_t>(postColour.size());
   subpasses[1].pColorAttachments = postColour.data();
 
-  std::array<VkSubpassDependency, 4> dependencies{};
+  std::array<VkSubpassDependency, 5> dependencies{};
   dependencies[0] = previousFrameToForwardPass();
   // Before subpass 1: the previous frame's readback copy of LDR (write after read).
   dependencies[1].srcSubpass = VK_SUBPASS_EXTERNAL;
@@ -255,6 +256,14 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   dependencies[3].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   dependencies[3].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | ldrReaders(layouts).stages;
   dependencies[3].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | ldrReaders(layouts).access;
+  // When the post subpass reads the samples, subpass 0 is the resolved HDR's last use: its
+  // resolve (and final layout transition) before the readback's copy.
+  const bool postReadsSamples = msaa && samples.postReadsSamples;
+  dependencies[4] = dependencies[3];
+  dependencies[4].srcSubpass = 0;
+  dependencies[4].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[4].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[4].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
@@ -262,7 +271,7 @@ bool createMergedRenderPass(VkDevice device, VkFormat hdrFormat, AttachmentOps h
   info.pAttachments = attachments.data();
   info.subpassCount = static_cast<uint32_t>(subpasses.size());
   info.pSubpasses = subpasses.data();
-  info.dependencyCount = static_cast<uint32_t>(dependencies.size());
+  info.dependencyCount = postReadsSamples ? 5 : 4;
   info.pDependencies = dependencies.data();
   return createRenderPass(device, info, samples, out, error);
 }
@@ -536,6 +545,9 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = fragment;
   stages[1].pName = "main";
+  const VkSpecializationMapEntry sampleCountEntry{abi::kPostSampleCountConstantId, 0, sizeof(uint32_t)};
+  VkSpecializationInfo sampleCount{1, &sampleCountEntry, sizeof(uint32_t), &desc.postSampleCount};
+  if (desc.postSampleCount > 0) stages[1].pSpecializationInfo = &sampleCount;
 
   // The two streams of shader_abi.h in the mesh's packed formats (vertex_packing.h): the
   // shaders read the same vecN from any of them. Attributes the shaders do not read are allowed
@@ -599,8 +611,9 @@ bool createGraphicsPipeline(VkDevice device, const PipelineDesc& desc, VkPipelin
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
   depth.depthTestEnable = VK_TRUE;
   // Blended surfaces test depth against the opaque ones but do not occlude each other.
-  depth.depthWriteEnable = desc.blending == Blending::Opaque ? VK_TRUE : VK_FALSE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  // The background (at the far plane) passes where depth is still the cleared 1 and writes none.
+  depth.depthWriteEnable = desc.blending == Blending::Opaque && !desc.atFarPlane ? VK_TRUE : VK_FALSE;
+  depth.depthCompareOp = desc.atFarPlane ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_LESS;
   depth.minDepthBounds = 0.0f;
   depth.maxDepthBounds = 1.0f;
 

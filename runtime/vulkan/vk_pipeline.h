@@ -39,6 +39,10 @@ struct ForwardSamples {
   VkSampleCountFlagBits count = VK_SAMPLE_COUNT_1_BIT;
   AttachmentOps colour;  // of the multisampled colour (the resolve target's are `hdr`'s)
   PFN_vkCreateRenderPass2KHR renderToSingleSampled = nullptr;
+  // Merged path with resolveAttachment(): the post subpass reads the multisampled colour as its
+  // input attachment (subpassInputMS, every sample tone-mapped) instead of the resolved HDR, which
+  // is still resolved for a readback.
+  bool postReadsSamples = false;
   // An explicit multisampled colour attachment, resolved through pResolveAttachments.
   bool resolveAttachment() const { return count != VK_SAMPLE_COUNT_1_BIT && !renderToSingleSampled; }
 };
@@ -107,6 +111,7 @@ struct PipelineDesc {
   PipelineKind kind = PipelineKind::Forward;
   Blending blending = Blending::Opaque;                     // forward pipelines only
   bool cullBackFaces = false;                               // forward and depth pipelines only
+  bool atFarPlane = false;                                  // forward pipelines only: DrawItem::atFarPlane
   VertexLayout vertexLayout = VertexLayout::FullPrecision;  // forward pipelines only: the streams' formats
   const std::vector<uint32_t>* vertexSpirv = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;
@@ -121,6 +126,9 @@ struct PipelineDesc {
   // Post pipelines only: src · (1 − constant alpha) + dst · constant alpha, the constant a dynamic
   // state (the bloom upsample, chunks/bloom.glsl).
   bool constantBlend = false;
+  // Post pipelines only: the per-sample form's sample count (abi::kPostSampleCountConstantId);
+  // 0 for shaders without the constant.
+  uint32_t postSampleCount = 0;
   const char* what = "";  // names the shaders in error messages
 };
 

@@ -56,8 +56,10 @@ bool createRenderTargets(const Context& ctx, uint32_t width, uint32_t height, co
       config.samples != VK_SAMPLE_COUNT_1_BIT && config.renderToSingleSampled
           ? VK_IMAGE_CREATE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_BIT_EXT
           : 0;
-  // The samples are only cleared, drawn and resolved (the frame graph: transient).
-  const VkImageUsageFlags samplesUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+  // The samples are only cleared, drawn, resolved and read by the post subpass in the same render
+  // pass (the frame graph: transient).
+  const VkImageUsageFlags samplesUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT |
+                                         (config.postReadsSamples ? VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT : 0);
   bool ok =
       createImage(ctx, fw, fh, config.hdrFormat, hdrUsage, VK_IMAGE_ASPECT_COLOR_BIT, &t.hdr, error, 1, false,
                   VK_SAMPLE_COUNT_1_BIT, renderedMultisampled) &&

@@ -26,6 +26,8 @@ struct TargetConfig {
   // VK_EXT_multisampled_render_to_single_sampled: no hdrSamples image, HDR and depth single-sample
   // images the render pass renders `samples` samples into.
   bool renderToSingleSampled = false;
+  // The post subpass reads hdrSamples as its input attachment (ForwardSamples::postReadsSamples).
+  bool postReadsSamples = false;
   // The backend's own LDR target, its readback buffers and the framebuffers holding it: needed
   // by render() and by copies into app images it cannot render to, not when every frame goes
   // straight into the app's image (then they would be an unused RGBA8 image and buffer).

@@ -157,11 +157,14 @@ PunctualLight light(const json& j, const std::string& pointer) {
   std::string type = j.contains("type") ? string(j["type"], pointer + "/type") : "";
   if (type != "point" && type != "spot") fail(pointer + "/type", "expected \"point\" or \"spot\"");
   l.spot = type == "spot";
-  // Only the sun casts so far (docs/shadows.md, "Scope"): a light asking for a shadow it would
-  // not get is an error, not an unshadowed image.
-  if (j.contains("castShadows") && boolean(j["castShadows"], pointer + "/castShadows"))
-    fail(pointer + "/castShadows", l.spot ? "spot-light shadows are not supported yet; only the sun casts shadows"
-                                          : "point-light shadows are not supported; only the sun casts shadows");
+  // A point light would need six faces of casters (docs/shadows.md, "Status"): a light asking for
+  // a shadow it would not get is an error, not an unshadowed image.
+  if (j.contains("castShadows")) {
+    l.castShadows = boolean(j["castShadows"], pointer + "/castShadows");
+    if (l.castShadows && !l.spot)
+      fail(pointer + "/castShadows",
+           "point-light shadows are not supported; only the sun and spot lights cast shadows");
+  }
   if (!l.spot)
     for (const char* key : {"direction", "innerAngle", "outerAngle"})
       if (j.contains(key)) fail(pointer + "/" + key, "only a spot light has a " + std::string(key));
@@ -173,6 +176,10 @@ PunctualLight light(const json& j, const std::string& pointer) {
   if (j.contains("innerAngle")) l.innerAngleDegrees = number(j["innerAngle"], pointer + "/innerAngle", 0, 90);
   if (j.contains("outerAngle")) l.outerAngleDegrees = number(j["outerAngle"], pointer + "/outerAngle", 0.5, 90);
   if (l.innerAngleDegrees >= l.outerAngleDegrees) fail(pointer + "/innerAngle", "must be smaller than outerAngle");
+  if (l.castShadows && l.outerAngleDegrees > kMaxShadowSpotAngleDegrees)
+    fail(pointer + "/outerAngle", "a spot light casting shadows has an outerAngle of at most " +
+                                      std::to_string(int(kMaxShadowSpotAngleDegrees)) +
+                                      " degrees (one perspective view)");
   return l;
 }
 
@@ -461,10 +468,26 @@ ShadowSettings shadows(const json& j) {
   return s;
 }
 
+// `show`: "environment" (at `lod`, × `intensity`) or "flat" (the mean radiance, which takes neither).
+Background background(const json& j, bool hasEnvironment) {
+  onlyKeys(j, "/background", {"show", "lod", "intensity"});
+  Background b;
+  b.environment = hasEnvironment;
+  constexpr const char* kShows[] = {"environment", "flat"};
+  if (j.contains("show")) b.environment = oneOf(j["show"], "/background/show", kShows) == 0;
+  for (const char* key : {"lod", "intensity"})
+    if (!b.environment && j.contains(key))
+      fail(std::string("/background/") + key, "applies to the environment drawn, not to \"show\": \"flat\"");
+  if (j.contains("lod")) b.lod = number(j["lod"], "/background/lod", 0, kMaxBackgroundLod);
+  // At most 16: the shader's radiance stays mediump-finite (templates/post_background.frag.glsl).
+  if (j.contains("intensity")) b.intensity = number(j["intensity"], "/background/intensity", 0, 16);
+  return b;
+}
+
 Scene scene(const json& j, const AssetPaths& assets) {
   onlyKeys(j, "",
            {"width", "height", "tier", "camera", "sun", "lights", "sky", "environment", "objects", "post",
-            "antialiasing", "renderScale", "shadows"});
+            "antialiasing", "renderScale", "shadows", "background"});
   Scene s;
   if (j.contains("width")) s.width = wholeNumber(j["width"], "/width", 1, 4096);
   if (j.contains("height")) s.height = wholeNumber(j["height"], "/height", 1, 4096);
@@ -481,8 +504,13 @@ Scene scene(const json& j, const AssetPaths& assets) {
     if (j["lights"].size() > kMaxSceneLights)
       fail("/lights", std::to_string(j["lights"].size()) + " lights; a scene has at most " +
                           std::to_string(kMaxSceneLights) + " point and spot lights");
-    for (size_t i = 0; i < j["lights"].size(); ++i)
-      s.lights.push_back(light(j["lights"][i], "/lights/" + std::to_string(i)));
+    for (size_t i = 0; i < j["lights"].size(); ++i) {
+      const std::string pointer = "/lights/" + std::to_string(i);
+      s.lights.push_back(light(j["lights"][i], pointer));
+      if (s.lights.back().castShadows && shadowSpotLights(s).size() > kMaxShadowSpotLights)
+        fail(pointer + "/castShadows", "a scene has at most " + std::to_string(kMaxShadowSpotLights) +
+                                           " spot light casting shadows (docs/shadows.md, \"Spot shadows\")");
+    }
   }
   if (j.contains("sky")) {
     onlyKeys(j["sky"], "/sky", {"luminance"});
@@ -494,6 +522,8 @@ Scene scene(const json& j, const AssetPaths& assets) {
       fail("/environment", "give either 'sky' (a constant environment) or 'environment', not both");
     s.environment = environment(j["environment"], assets);
   }
+  s.background.environment = s.environment.has_value();
+  if (j.contains("background")) s.background = background(j["background"], s.environment.has_value());
   if (!j.contains("objects") || !j["objects"].is_array()) fail("/objects", "expected an array of objects");
   if (j["objects"].size() > 4096) fail("/objects", "more than 4096 objects");
   for (size_t i = 0; i < j["objects"].size(); ++i)

@@ -24,7 +24,8 @@ ReferenceImage renderReference(const ShadowScene& scene, const SunVisibility& su
       pixel.object = t.object;
       glm::dvec3 normal = glm::cross(t.b - t.a, t.c - t.a);
       if (glm::dot(normal, ray.direction) > 0) normal = -normal;  // the side the camera sees
-      if (!(glm::dot(normal, sun.towardsSun()) > 0)) {
+      const glm::dvec3 point = ray.origin + hit->t * ray.direction;
+      if (!(glm::dot(normal, sun.towardsLight(point)) > 0) || !sun.reaches(point)) {
         pixel.kind = PixelKind::FacesAway;
         continue;
       }
@@ -33,7 +34,6 @@ ReferenceImage renderReference(const ShadowScene& scene, const SunVisibility& su
         pixel.visibility = pixel.footprint = 1;
         continue;
       }
-      const glm::dvec3 point = ray.origin + hit->t * ray.direction;
       pixel.visibility = sun.visible(point, hit->triangle) ? 1 : 0;
       pixel.footprint = options.footprintRadius > 0
                             ? float(sun.footprintVisibility(point, normal, options.footprintRadius,

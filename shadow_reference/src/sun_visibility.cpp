@@ -16,6 +16,28 @@ SunVisibility::SunVisibility(std::vector<WorldTriangle> triangles, std::vector<b
   rayEpsilon_ = kRayEpsilon * size;
 }
 
+SunVisibility::SunVisibility(std::vector<WorldTriangle> triangles, std::vector<bool> casts,
+                             const runtime::PunctualLight& spot)
+    : SunVisibility(std::move(triangles), std::move(casts), glm::dvec3(0, 1, 0)) {
+  spot_ = spot;
+  spot_->direction = glm::normalize(spot.direction);
+  // The light's position is a point of the scene too: the epsilon covers its coordinates.
+  rayEpsilon_ = std::max(rayEpsilon_, kRayEpsilon * std::max({std::abs(spot.position.x), std::abs(spot.position.y),
+                                                              std::abs(spot.position.z)}));
+}
+
+std::optional<SunVisibility> SunVisibility::buildSpot(const ShadowScene& scene, size_t light, std::string* error) {
+  if (light >= scene.scene.lights.size() || !scene.scene.lights[light].spot) {
+    *error = "the scene has no spot light " + std::to_string(light) + " to cast shadows";
+    return std::nullopt;
+  }
+  auto triangles = buildWorldTriangles(scene.scene, error);
+  if (!triangles) return std::nullopt;
+  std::vector<bool> casts;
+  for (const runtime::SceneObject& o : scene.scene.objects) casts.push_back(o.castShadows);
+  return SunVisibility(std::move(*triangles), std::move(casts), scene.scene.lights[light]);
+}
+
 std::optional<SunVisibility> SunVisibility::build(const ShadowScene& scene, std::string* error) {
   if (!scene.scene.sun) {
     *error = "the scene has no sun to cast shadows";
@@ -29,7 +51,27 @@ std::optional<SunVisibility> SunVisibility::build(const ShadowScene& scene, std:
 }
 
 bool SunVisibility::visible(const glm::dvec3& point, uint32_t receiver) const {
-  return !bvh_.occluded({point, towardsSun_, rayEpsilon_, 1e300}, casts_, receiver);
+  if (!spot_) return !bvh_.occluded({point, towardsSun_, rayEpsilon_, 1e300}, casts_, receiver);
+  // The segment to the light, in metres along the unit direction, short of the light by the same
+  // epsilon it starts with (a triangle through the light's position does not hide it).
+  const glm::dvec3 toLight = spot_->position - point;
+  const double distance = glm::length(toLight);
+  if (!(distance > 2 * rayEpsilon_)) return true;
+  return !bvh_.occluded({point, toLight / distance, rayEpsilon_, distance - rayEpsilon_}, casts_, receiver);
+}
+
+glm::dvec3 SunVisibility::towardsLight(const glm::dvec3& point) const {
+  return spot_ ? glm::normalize(spot_->position - point) : towardsSun_;
+}
+
+bool SunVisibility::reaches(const glm::dvec3& point) const {
+  if (!spot_) return true;
+  // chunks/light_punctual.glsl: the cone's falloff is 0 from the outer angle out, the range's at
+  // the range.
+  const glm::dvec3 fromLight = point - spot_->position;
+  const double distance = glm::length(fromLight);
+  return distance > 0 && distance < spot_->range &&
+         glm::dot(fromLight, spot_->direction) > distance * std::cos(glm::radians(spot_->outerAngleDegrees));
 }
 
 double SunVisibility::footprintVisibility(const glm::dvec3& centre, const glm::dvec3& normal, double radius,

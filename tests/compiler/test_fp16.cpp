@@ -9,6 +9,7 @@
 #include <spirv-tools/optimizer.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -948,6 +949,31 @@ TEST(Fp16ClearCoat, HighStaysFiniteAndAbove50DbOnGrazingCoats) {
   expectHighFp16Above50Db("clear coat", material, "coat_case", scenes);
 }
 
+// A sheen's three hard scenes (the cloth model's and the sheen layer's tests below): two spheres
+// of `material`, its sheen roughness `param` at its default and 0.5, (a) seen from the front under
+// the sun, (b) n·v → 0 over the whole image (the camera skimming a sphere 1000 m in radius, the sun
+// ahead), (c) rims lit from behind.
+std::array<std::pair<const char*, std::string>, 3> sheenScenes(std::array<const char*, 3> names,
+                                                               const std::string& material, const std::string& param) {
+  const std::string twoSpheres = R"(
+         "objects": [
+           {"material": ")" + material +
+                                 R"(", "position": [-1.1, 0, 0]},
+           {"material": ")" + material +
+                                 R"(", "position": [1.1, 0, 0], "params": {")" + param + R"(": 0.5}}
+         ]})";
+  return {{{names[0], R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                          "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") "," +
+                          twoSpheres},
+           {names[1], R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                          "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
+         "objects": [{"material": ")" +
+                          material + R"(", "position": [0, -1000, 0], "radius": 1000}]})"},
+           {names[2], R"({"width": 256, "height": 256, )" FACET_CAMERA(
+                          "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.3, -0.2, 0.93]") "," +
+                          twoSpheres}}};
+}
+
 // The cloth model's fp16 hazards (chunks/sheen_charlie_neubelt.glsl: Charlie's pow(sin² θ_h, 0.5/α)
 // at the roughness floor, Neubelt's V as n·v → 0) in `high`, fp16-emulated, against its fp32 form
 // and against `reference`: a sheen of roughness 0 (clamped to 0.089) and 0.5 over a dark fabric,
@@ -965,24 +991,31 @@ TEST(Fp16Cloth, HighAbove50DbWhereTheViewGrazes) {
         roughness = params.roughness
     }
 })";
-  const std::pair<const char*, std::string> scenes[] = {
-      {"cloth_frontal", R"({"width": 256, "height": 256, )" FACET_CAMERA(
-                            "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[-0.4, -0.55, -0.73]") R"(,
-         "objects": [
-           {"material": "cloth_case", "position": [-1.1, 0, 0]},
-           {"material": "cloth_case", "position": [1.1, 0, 0], "params": {"roughness": 0.5}}
-         ]})"},
-      {"cloth_grazing_view", R"({"width": 256, "height": 256, )" FACET_CAMERA(
-                                 "[0, 0.3, 0]", "[0, 0, -40]") ", " FACET_SUN("[0.0, -0.006, 1.0]") R"(,
-         "objects": [{"material": "cloth_case", "position": [0, -1000, 0], "radius": 1000}]})"},
-      {"cloth_backlit_rims", R"({"width": 256, "height": 256, )" FACET_CAMERA(
-                                 "[0, 0, 6]", "[0, 0, 0]") ", " FACET_SUN("[0.3, -0.2, 0.93]") R"(,
-         "objects": [
-           {"material": "cloth_case", "position": [-1.1, 0, 0]},
-           {"material": "cloth_case", "position": [1.1, 0, 0], "params": {"roughness": 0.5}}
-         ]})"},
-  };
-  expectHighFp16Above50Db("cloth", material, "cloth_case", scenes);
+  expectHighFp16Above50Db(
+      "cloth", material, "cloth_case",
+      sheenScenes({"cloth_frontal", "cloth_grazing_view", "cloth_backlit_rims"}, "cloth_case", "roughness"));
+}
+
+// The sheen layer's fp16 hazards (chunks/sheen_layer.glsl: the cloth model's lobe at sheenRoughness
+// 0, clamped to 0.089, over the standard model's base, whose lights are scaled by b) in `high`,
+// fp16-emulated, against its fp32 form and against `reference`: a glossy dielectric under a white
+// sheen of roughness 0 and 0.5, (a) seen from the front under the sun, (b) n·v → 0 over the whole
+// image (the camera skimming a sphere 1000 m in radius, the sun ahead: the sheen's grazing peak and
+// the base's grazing glint at once), (c) rims lit from behind.
+TEST(Fp16SheenLayer, HighAbove50DbWhereTheViewGrazes) {
+  const char* material = R"(material sheen_case {
+    shading lit
+    param sheenRoughness: float = 0.0 in [0, 1]
+    surface {
+        baseColor = vec3(0.05, 0.1, 0.4)
+        roughness = 0.3
+        sheenColor = vec3(1.0, 0.9, 0.8)
+        sheenRoughness = params.sheenRoughness
+    }
+})";
+  expectHighFp16Above50Db(
+      "sheen layer", material, "sheen_case",
+      sheenScenes({"sheen_frontal", "sheen_grazing_view", "sheen_backlit_rims"}, "sheen_case", "sheenRoughness"));
 }
 
 // Anisotropy's fp16 hazard (chunks/anisotropy_ggx_smith.glsl: α_t α_b at the roughness floor and

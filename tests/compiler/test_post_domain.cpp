@@ -3,6 +3,7 @@
 // absent from the shaders.
 #include <gtest/gtest.h>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/post.h"
 #include "facet/compiler/spirv_tools_backend.h"
 
@@ -43,6 +44,29 @@ TEST(PostDomain, FetchFormsReadTheirOwnPixelInEachApi) {
   EXPECT_TRUE(contains(s.fetchFragment.msl, "hdrColor [[color(0)]]")) << s.fetchFragment.msl;
   EXPECT_TRUE(contains(s.fetchFragment.msl, "fragColor [[color(1)]]")) << s.fetchFragment.msl;
   EXPECT_FALSE(contains(s.sampledFragment.msl, "[[color(0)]])")) << s.sampledFragment.msl;
+}
+
+// The per-sample form (Vulkan's merged path under MSAA, portable form): a multisampled subpass
+// input whose sample count is a specialization constant, read in a loop (no gl_SampleID, so the
+// fragment stage runs once per pixel, not per sample); its GLSL ES 3.10 text loops over a
+// sampler2DMS. Bloom variants have none (bloom runs the separate path).
+TEST(PostDomain, ThePerSampleFormReadsEverySampleOfAMultisampledInput) {
+  const PostShaders s = build({});
+  std::string log;
+  ASSERT_TRUE(validateSpirv(s.samplesFragment.spirv, &log)) << log;
+  const std::string spirv = disassembleSpirv(s.samplesFragment.spirv);
+  EXPECT_TRUE(contains(spirv, "SubpassData 0 0 1 2")) << spirv;  // depth 0, arrayed 0, MS 1
+  EXPECT_TRUE(contains(spirv, "OpSpecConstant")) << spirv;
+  EXPECT_TRUE(contains(spirv, "SpecId 0")) << spirv;
+  EXPECT_FALSE(contains(spirv, "SampleId"));
+  EXPECT_FALSE(contains(spirv, "SampleRateShading"));
+  EXPECT_FALSE(contains(disassembleSpirv(s.fetchFragment.spirv), "SubpassData 0 0 1 2"));
+  EXPECT_TRUE(contains(s.samplesFragment.glslEs, "#version 310 es"));
+  EXPECT_TRUE(contains(s.samplesFragment.glslEs, "uniform mediump sampler2DMS hdrColor"));
+  EXPECT_TRUE(s.samplesFragment.msl.empty());
+  PostEffects bloom;
+  bloom.bloom = true;
+  EXPECT_TRUE(build(bloom).samplesFragment.spirv.empty());
 }
 
 TEST(PostDomain, AnEffectTurnedOffIsAbsentFromThePostShader) {
@@ -185,4 +209,28 @@ TEST(PostDomain, BloomIsCompiledOutWhenOffAndBoundFromTheAbiWhenOn) {
   EXPECT_TRUE(contains(chain.downsampleThreshold.glslEs, "layout(std140) uniform PostUniforms"));
   EXPECT_TRUE(contains(chain.upsample.glslEs, "bloom_tent9(bloomSource"));
   EXPECT_TRUE(contains(chain.vertex.glslEs, "out highp vec2 bloomUv;"));
+}
+
+// The environment background: built for every target, reading the environment at the ABI's slot
+// with an explicit level (no derivative: the face changes under a pixel at cube edges), its
+// parameters from the MaterialParams slot, and written into the runtime's generated source.
+TEST(PostDomain, TheBackgroundIsBuiltForEveryTargetAndBoundFromTheAbi) {
+  BackgroundStages background;
+  std::string error;
+  ASSERT_TRUE(buildBackgroundShaders(&background, &error)) << error;
+  for (const PostStage* stage : {&background.vertex, &background.fragment}) {
+    EXPECT_FALSE(stage->spirv.empty());
+    EXPECT_TRUE(contains(stage->glslEs, "#version 300 es"));
+    EXPECT_TRUE(contains(stage->glslEs, "uniform MaterialParams"));
+    EXPECT_TRUE(contains(stage->msl, "[[buffer(" + std::to_string(facet::abi::kMaterialBinding) + ")]]"));
+  }
+  EXPECT_TRUE(contains(background.fragment.glslEs, "uniform mediump samplerCube facet_environment;"));
+  EXPECT_TRUE(contains(background.fragment.glslEs, "textureLod(facet_environment"));
+  EXPECT_FALSE(contains(background.fragment.glslEs, "dFd"));
+  EXPECT_TRUE(
+      contains(background.fragment.msl, "[[texture(" + std::to_string(facet::abi::kEnvironmentBinding) + ")]]"));
+  EXPECT_TRUE(contains(background.vertex.msl, "[[buffer(" + std::to_string(facet::abi::kObjectBinding) + ")]]"));
+  const std::string cpp = backgroundShadersCpp(background);
+  EXPECT_TRUE(contains(cpp, "const ShaderProgram& backgroundProgram()"));
+  EXPECT_TRUE(contains(cpp, "kBackgroundFragmentSpirv"));
 }

@@ -768,7 +768,7 @@ TEST(Tiers, ClothFormsPerTierAndNoClothCodeElsewhere) {
   const std::string lobe = esText(*defaults, "high.dir1", Stage::Fragment);
   const std::string env = esText(*ambient, "high.dir1", Stage::Fragment);
   EXPECT_EQ(env.find("sheen_lobe_times_n_dot_l"), std::string::npos);
-  EXPECT_NE(env.find("cloth_sheen_layer"), std::string::npos);
+  EXPECT_NE(env.find("sheen_layer("), std::string::npos);
   auto full = costOf(spirvOf(*defaults, "high.dir1", Stage::Fragment)),
        envOnly = costOf(spirvOf(*ambient, "high.dir1", Stage::Fragment)),
        dropped = costOf(spirvOf(*none, "high.dir1", Stage::Fragment));
@@ -807,4 +807,66 @@ TEST(Tiers, SpecularAntiAliasingOnlyWhereAskedAndDroppedTiersAreTheMaterialWitho
   EXPECT_EQ(spirvOf(*highDropped, "high.dir1", Stage::Fragment), spirvOf(*without, "high.dir1", Stage::Fragment));
   EXPECT_EQ(spirvOf(*highDropped, "reference.dir1", Stage::Fragment),
             spirvOf(*with, "reference.dir1", Stage::Fragment));
+}
+
+// The sheen layer over the standard model (docs/material-models.md, "Sheen layer"): only in variants
+// of lit materials that write sheenColor; the full form scales each light's base by b
+// (shading_sheen_base_scale) and adds the lobe, `ambient` keeps the layer's environment and b over
+// the ambient terms only, `none` is the plain material's shader; the sheen costs two more reads in
+// every tier: the DFG table's B and A at (n·v, sheenRoughness) and the environment at the sheen's
+// roughness.
+TEST(Tiers, SheenLayerFormsPerTierAndOnlyWhereWritten) {
+  const std::string params = "param rough: float = 0.4 in [0, 1]\n param sheenRough: float = 0.5 in [0, 1]\n";
+  const std::string surface = " surface { baseColor = vec3(0.1, 0.2, 0.6) roughness = params.rough\n";
+  auto plain = facet::test::buildText("material m { " + params + surface + " } }");
+  auto layered = facet::test::buildText("material m { " + params + surface +
+                                        " sheenColor = vec3(0.9)\n sheenRoughness = params.sheenRough } }");
+  auto ambient = facet::test::buildText("material m { tier high { sheen = ambient }\n " + params + surface +
+                                        " sheenColor = vec3(0.9)\n sheenRoughness = params.sheenRough } }");
+  auto none = facet::test::buildText("material m { tier high { sheen = none }\n " + params + surface +
+                                     " sheenColor = vec3(0.9)\n sheenRoughness = params.sheenRough } }");
+  ASSERT_TRUE(plain && layered && ambient && none);
+  for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir1", "high.dir0"}) {
+    SCOPED_TRACE(key);
+    const std::string text = esText(*layered, key, Stage::Fragment);
+    EXPECT_NE(text.find("sheen_layer(material"), std::string::npos);
+    EXPECT_NE(text.find(".ba;"), std::string::npos);
+    EXPECT_NE(text.find("clamp(material.sheenRoughness"), std::string::npos);
+    EXPECT_EQ(text.find("cloth"), std::string::npos);
+    const bool lit = std::string(key).ends_with("dir1");
+    EXPECT_EQ(text.find("sheen_lobe_times_n_dot_l(") != std::string::npos, lit);
+    EXPECT_EQ(text.find("irradiance*=shading_sheen_base_scale") != std::string::npos, lit);
+    EXPECT_EQ(costOf(spirvOf(*layered, key, Stage::Fragment)).textureSamples,
+              costOf(spirvOf(*plain, key, Stage::Fragment)).textureSamples + 2);
+  }
+  const std::string env = esText(*ambient, "high.dir1", Stage::Fragment);
+  EXPECT_NE(env.find("sheen_layer(material"), std::string::npos);
+  EXPECT_EQ(env.find("sheen_lobe"), std::string::npos);
+  EXPECT_EQ(env.find("shading_sheen_base_scale"), std::string::npos);
+  // Dropped: the shader the material compiles without the layer (its two outputs unread).
+  EXPECT_EQ(esText(*none, "high.dir1", Stage::Fragment).find("sheen_layer"), std::string::npos);
+  auto full = costOf(spirvOf(*layered, "high.dir1", Stage::Fragment)),
+       envOnly = costOf(spirvOf(*ambient, "high.dir1", Stage::Fragment)),
+       dropped = costOf(spirvOf(*none, "high.dir1", Stage::Fragment)),
+       base = costOf(spirvOf(*plain, "high.dir1", Stage::Fragment));
+  EXPECT_LT(envOnly.aluOps, full.aluOps);
+  EXPECT_EQ(dropped.aluOps, base.aluOps);
+  EXPECT_EQ(dropped.textureSamples, base.textureSamples);
+}
+
+// The sheen's environment takes the specular occlusion (sheen_layer.glsl, after
+// shading_ambient.glsl): a cloth material or a sheen layer writing ambientOcclusion compiles in
+// every tier, and the occlusion reaches the sheen's environment term.
+TEST(Tiers, SheenWithAmbientOcclusionCompilesAndOccludesTheSheen) {
+  auto cloth =
+      facet::test::buildText("material m { shading cloth\n surface { roughness = 0.6\n ambientOcclusion = 0.5 } }");
+  auto layered = facet::test::buildText(
+      "material m { surface { roughness = 0.6\n sheenColor = vec3(0.8)\n ambientOcclusion = 0.5 } }");
+  ASSERT_TRUE(cloth && layered);
+  for (const auto* built : {&*cloth, &*layered}) {
+    const std::string text = esText(*built, "high.dir1", Stage::Fragment);
+    const size_t layer = text.find("vec3 sheen_layer(");
+    ASSERT_NE(layer, std::string::npos);
+    EXPECT_NE(text.find("apply_specular_occlusion(material,specular", layer), std::string::npos);
+  }
 }

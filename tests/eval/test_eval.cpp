@@ -18,6 +18,7 @@
 #include "facet/eval/prepared_frame.h"
 #include "facet/eval/report.h"
 #include "facet/ir/check.h"
+#include "facet/runtime/image_texture.h"
 #include "test_images.h"
 #include "test_support.h"
 
@@ -511,6 +512,57 @@ TEST(Eval, ASceneFileReplacesTheGridAndOtherMaterialsAreLeftOut) {
   EXPECT_FALSE(facet::eval::evaluate(gold, noMaterial, &error));
   EXPECT_NE(error.message.find("no object of the scene uses material 'not_in_the_scene'"), std::string::npos)
       << error.message;
+}
+
+// `--shadows` (docs/eval.md, "The shadowed view"): a third view in which the sun casts onto a wall
+// behind the spheres; each tier's receiver is scored against reference's, which renders it with a
+// 4096² atlas.
+TEST(Eval, TheShadowedViewScoresEachTiersReceiverAgainstReference) {
+  auto options = tinyOptions();
+  options.tiers = {Tier::High, Tier::Low};
+  options.swaps = false;
+  options.timingFrames = 0;
+  options.shadows = true;
+  const auto material = example("red_plastic");
+  facet::eval::EvalError error;
+  auto report = facet::eval::evaluate(material, options, &error);
+  ASSERT_TRUE(report) << error.message;
+  ASSERT_EQ(report->viewNames, (std::vector<std::string>{"frontal", "grazing", "shadowed"}));
+  ASSERT_EQ(report->results.size(), 3u);  // reference, high, low
+  EXPECT_TRUE(report->results[0].views[2].error.identical);
+  for (size_t i = 1; i < 3; ++i) {
+    const auto& shadowed = report->results[i].views[2].error;
+    std::printf("%s shadowed view: %.1f dB\n", report->results[i].configuration.name.c_str(), shadowed.psnr);
+    EXPECT_FALSE(shadowed.identical) << i;  // a 2048² atlas, not reference's 4096²
+    EXPECT_GT(shadowed.psnr, 30.0) << i;
+  }
+
+  // The shadows are drawn: where the top-left sphere's shadow falls on the wall, the wall is far
+  // darker than beyond the top-right sphere, where no shadow falls (each sphere's shadow lies
+  // down and to the left of it).
+  const facet::eval::GridView view = facet::eval::shadowedGridView(material, options.grid);
+  const auto& camera = view.scene.camera;
+  const glm::dvec3 towardsSun = -view.scene.sun->direction;
+  const double halfCols = 0.5 * double(view.scene.width / options.grid.pixelsPerSphere - 1);
+  const double halfRows = 0.5 * double(view.scene.height / options.grid.pixelsPerSphere - 1);
+  const double wall = facet::eval::kShadowWallZ;
+  const glm::dvec3 shadowed = glm::dvec3(-halfCols, halfRows, 0) + towardsSun * (wall / towardsSun.z);
+  const glm::dvec3 lit(halfCols + 0.45, halfRows + 0.45, wall);
+  std::string message;
+  auto image = facet::runtime::decodeImageTexture(report->results[0].views[2].png, false, "shadowed.png", &message);
+  ASSERT_TRUE(image) << message;
+  const double tanHalf = std::tan(glm::radians(camera.fovYDegrees) / 2);
+  const double aspect = double(image->width) / image->height;
+  auto luminance = [&](const glm::dvec3& p) {  // the camera looks down −z at the grid's centre
+    const double depth = camera.position.z - p.z;
+    const double x = (p.x / (depth * tanHalf * aspect) + 1) / 2 * image->width;
+    const double y = (1 - p.y / (depth * tanHalf)) / 2 * image->height;
+    const uint8_t* rgba = &image->levels[0][(size_t(y) * image->width + size_t(x)) * 4];
+    return 0.2126 * facet::ir::srgbToLinear(rgba[0] / 255.0) + 0.7152 * facet::ir::srgbToLinear(rgba[1] / 255.0) +
+           0.0722 * facet::ir::srgbToLinear(rgba[2] / 255.0);
+  };
+  std::printf("wall: %.4f in the shadow, %.4f in the sun\n", luminance(shadowed), luminance(lit));
+  EXPECT_LT(luminance(shadowed), 0.5 * luminance(lit));
 }
 
 // The ground truth (docs/eval.md, "The ground truth"). In a constant environment the split sum is

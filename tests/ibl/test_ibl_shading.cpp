@@ -141,6 +141,58 @@ TEST(IblShading, WhiteMetalInAConstantEnvironmentMatchesTheDfgAlbedo) {
   EXPECT_TRUE(vk->validationErrors().empty());
 }
 
+// The sheen layer's white furnace (chunks/sheen_layer.glsl): the white metal above, which reads L
+// in every tier, under a white sheen in the same constant sky. The layered sum is
+// L (1 − max(sheenColor) min(E, 1)) + L sheenColor min(E, 1) = L: the layer must neither gain energy
+// (asserted ≤ (1 + 1e-3) L at every pixel the sphere covers, n·v → 0 included) nor lose the base's
+// (within the test above's 0.3 % where n·v ≥ 0.25). Without the base's scale b the sum reads up to
+// 2 L; sheenRoughness from the floor (0, clamped to 0.089: the albedo's grazing peak) to 1.
+TEST(IblShading, SheenLayerOverAWhiteMetalKeepsTheWhiteFurnace) {
+  const char* sheenBall =
+      "material ball { param rough: float = 0.5\n param sheenRough: float = 0.5\n"
+      " surface { baseColor = vec3(1.0) metallic = 1.0 roughness = params.rough"
+      " sheenColor = vec3(1.0) sheenRoughness = params.sheenRough } }";
+  const std::string packages = facet::test::writePackagesFromTexts("ibl-sheen-furnace", {sheenBall});
+  std::string error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  ASSERT_TRUE(vk) << error;
+  double worstGain = 0;
+  for (const char* tier : {"reference", "high", "mid", "low"})
+    for (double roughness : {0.25, 0.6, 1.0})
+      for (double sheenRoughness : {0.0, 0.3, 0.7, 1.0}) {
+        SCOPED_TRACE(std::string(tier) + " r = " + std::to_string(roughness) +
+                     " sheen r = " + std::to_string(sheenRoughness));
+        const std::string json = sceneJson(
+            tier, R"("sky": {"luminance": 5000})",
+            R"("rough": )" + std::to_string(roughness) + R"(, "sheenRough": )" + std::to_string(sheenRoughness));
+        FrameResult image;
+        std::unique_ptr<facet::runtime::SceneFrame> frame;
+        ASSERT_TRUE(render(json, packages, *vk, &image, &frame, &error)) << error;
+        auto scene = facet::runtime::parseScene("inline.json", json, &error);
+        ASSERT_TRUE(scene) << error;
+        const double L = 5000 * frame->exposure();
+        int covered = 0, checked = 0;
+        facet::test::forEachSpherePixel(
+            *scene, 1, 0.0, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
+              const float* got = &image.hdr[(size_t(y) * scene->width + x) * 4];
+              const bool frontal = glm::dot(n, v) >= 0.25;
+              for (int ch = 0; ch < 3; ++ch) {
+                worstGain = std::max(worstGain, got[ch] / L);
+                EXPECT_LE(got[ch], (1.0 + 1e-3) * L) << "pixel (" << x << ", " << y << "), n·v " << glm::dot(n, v);
+                if (frontal) {
+                  EXPECT_NEAR(got[ch], L, 0.003 * L) << "pixel (" << x << ", " << y << ")";
+                }
+              }
+              ++covered;
+              checked += frontal;
+            });
+        EXPECT_GT(checked, 2000);
+        EXPECT_GT(covered, checked);
+      }
+  std::printf("sheen layer over a white metal, white furnace: brightest pixel %.5f L\n", worstGain);
+  EXPECT_TRUE(vk->validationErrors().empty());
+}
+
 // Diffuse ambient: a white rough dielectric (f0 = 0: the specular left is the f90 term B, rough
 // and small) under the analytic sky, reference tier. Expected per pixel: SH3 irradiance / π of
 // the sky, computed here from the sky function (facet::ibl::projectRadiance + evaluateSh), plus

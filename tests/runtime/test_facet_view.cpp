@@ -10,6 +10,9 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "facet/compiler/build.h"
 #include "facet/package/package.h"
 #include "gltf_test_files.h"
 #include "test_compile.h"
@@ -66,6 +69,30 @@ TEST(FacetView, MsaaReachesTheBackendsAndTheFrameGraph) {
   EXPECT_NE(r.out.find("total: loaded 0 B, stored 262144 B, sampled 0 B per frame"), std::string::npos) << r.out;
   auto bad = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
                  " --out " + out + " --msaa 3");
+  EXPECT_EQ(bad.exitCode, 2) << bad.out << bad.err;
+}
+
+// --msaa-form attachments: Vulkan's portable form (lavapipe offers the extension), whose merged
+// post subpass reads the samples themselves (hdr_ms, an input attachment, still transient); an
+// unknown form is a usage error.
+TEST(FacetView, MsaaFormAttachmentsToneMapsEachSampleOnVulkan) {
+  std::string packages = facet::test::writeExamplePackages("view-packages");
+  std::string out = facet::test::scratchDir("view-msaa-form-out");
+  auto r =
+      run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages + " --out " +
+          out + " --backend vulkan --validation --msaa 4 --msaa-form attachments --stats --frames 1" + " --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("the post subpass tone maps each sample (subpassInputMS)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hdr_ms     load clear     store dont_care (input attachment)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total: loaded 0 B, stored 262144 B, sampled 0 B per frame"), std::string::npos) << r.out;
+  auto first =
+      run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages + " --out " +
+          out + " --backend vulkan --msaa 4 --msaa-form resolve-first --stats --frames 1" + " --warmup 0");
+  ASSERT_EQ(first.exitCode, 0) << first.out << first.err;
+  EXPECT_EQ(first.out.find("subpassInputMS"), std::string::npos) << first.out;
+  EXPECT_NE(first.out.find("pResolveAttachments"), std::string::npos) << first.out;
+  auto bad = run(kFacetView + " " + facet::test::examplePath("scenes/sphere.json") + " --packages " + packages +
+                 " --out " + out + " --msaa 4 --msaa-form tiles");
   EXPECT_EQ(bad.exitCode, 2) << bad.out << bad.err;
 }
 
@@ -145,6 +172,59 @@ TEST(FacetView, RenderScaleReachesTheBackendsAndTheFrameGraph) {
 // dropped, so they read a 64-byte block where a draw binds 32) makes facet-view exit 1 naming the
 // material, variant and stage, and write no image: on Vulkan at load (the SPIR-V), on GL before the
 // first draw (the linked program of a package without SPIR-V). Vulkan used to draw it, exit 0.
+// --stats counts the shadow pass's draws: one per cascade and caster that can shadow it. The 40 m
+// ground reaches both cascades of this view, the box near the camera only the first: 3 draws.
+TEST(FacetView, StatsCountTheShadowPassCasterDraws) {
+  facet::compiler::BuildOptions options;
+  options.shadowCascadeCounts = {0, 2};
+  const std::string packages = facet::test::writePackagesFromTexts(
+      "view-shadow-packages", {"material plastic { shading lit\n surface { baseColor = vec3(0.7, 0.7, 0.7) } }"},
+      options);
+  const std::string dir = facet::test::scratchDir("view-shadow-stats");
+  std::ofstream(dir + "/s.json") << R"({"width": 64, "height": 48,
+    "camera": {"position": [2.6, 2.2, 3.6], "target": [0.2, 0.2, 0.2]},
+    "sun": {"direction": [0.7, -0.4, -0.5], "castShadows": true},
+    "shadows": {"atlasSize": 512, "cascades": 2},
+    "objects": [{"mesh": "plane", "material": "plastic", "scale": [40, 1, 40]},
+                {"mesh": "box", "material": "plastic", "position": [0, 0.5, 0]}]})";
+  auto r = run(kFacetView + " " + dir + "/s.json --packages " + packages + " --out " + dir +
+               "/out --backend vulkan --validation --stats --json --frames 1 --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  ASSERT_EQ(report.size(), 1u);
+  EXPECT_EQ(report[0]["shadowCascades"], 2);
+  EXPECT_EQ(report[0]["shadowCasterDraws"], 3);
+  r = run(kFacetView + " " + dir + "/s.json --packages " + packages + " --out " + dir +
+          "/out --backend vulkan --stats --frames 1 --warmup 0");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("shadow pass: 3 caster draws over 2 cascades (512² atlas)"), std::string::npos) << r.out;
+
+  // --shadow-cascades tints the receivers by cascade: this view's ground spans both.
+  r = run(kFacetView + " " + dir + "/s.json --packages " + packages + " --out " + dir +
+          "/tinted --backend vulkan --shadow-cascades");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  size_t first = 0, second = 0, third = 0, fourth = 0;
+  const size_t at = r.out.find("vulkan: receiver pixels per cascade: ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "vulkan: receiver pixels per cascade: %zu, %zu, %zu, %zu", &first, &second,
+                        &third, &fourth),
+            4)
+      << r.out;
+  EXPECT_GT(first, 100u);
+  EXPECT_GT(second, 100u);
+  EXPECT_EQ(third + fourth, 0u);
+  EXPECT_LE(first + second, 64u * 48u);
+  EXPECT_TRUE(fs::is_regular_file(dir + "/tinted/s.vulkan.png"));
+  // A scene whose sun does not cast has no cascades to show: an error, nothing written.
+  std::ofstream(dir + "/lit.json") << R"({"width": 16, "height": 16, "sun": {},
+    "objects": [{"mesh": "box", "material": "plastic"}]})";
+  r = run(kFacetView + " " + dir + "/lit.json --packages " + packages + " --out " + dir +
+          "/lit --backend vulkan --shadow-cascades");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("the scene's sun does not cast shadows"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/lit/lit.vulkan.png"));
+}
+
 TEST(FacetView, APackageWhoseShadersDisagreeWithItExitsOne) {
   namespace pkg = facet::package;
   std::string packages = facet::test::writeExamplePackages("view-hostile");

@@ -111,6 +111,39 @@ TEST(FrameGraph, MsaaSamplesAreTransientAndAddNoStoredBytes) {
   EXPECT_EQ(compileOrFail(graph).storedBytes(), kPixels * 8 * 4);
 }
 
+// Per-sample tone mapping (Vulkan's portable merged path): the post subpass reads the
+// multisampled HDR, its own pixel's samples, as an input attachment of the same render pass, so it
+// stays transient and 4x still stores and samples exactly the bytes of 1x. With HDR read back the
+// resolve is stored, as without per-sample reads; the separate path never reads the samples.
+TEST(FrameGraph, ToneMappingEachSampleKeepsTheSamplesTransient) {
+  const ForwardPostGraph one = buildForwardPostGraph(kW, kH, PostPath::Merged, false);
+  const CompiledGraph c1 = compileOrFail(one.graph);
+  const ForwardPostGraph four =
+      buildForwardPostGraph(kW, kH, PostPath::Merged, false, HdrFormat::Rgba16Float, 4, false, 1.0, 0, 0, true);
+  const CompiledGraph c4 = compileOrFail(four.graph);
+  ASSERT_EQ(c4.renderPasses.size(), 1u) << describe(four.graph, c4);
+  const Attachment* samples = c4.attachment(0, four.hdrSamples);
+  ASSERT_TRUE(samples);
+  EXPECT_TRUE(samples->inputAttachment) << describe(four.graph, c4);
+  EXPECT_FALSE(c4.attachment(0, four.hdr)->inputAttachment);
+  EXPECT_TRUE(c4.traffic[four.hdrSamples].transient);
+  EXPECT_TRUE(c4.traffic[four.depth].transient);
+  EXPECT_EQ(samples->store, StoreOp::DontCare);
+  EXPECT_EQ(c4.loadedBytes(), c1.loadedBytes());
+  EXPECT_EQ(c4.storedBytes(), c1.storedBytes());
+  EXPECT_EQ(c4.sampledBytes(), c1.sampledBytes());
+  const ForwardPostGraph readBack =
+      buildForwardPostGraph(kW, kH, PostPath::Merged, true, HdrFormat::Rgba16Float, 4, false, 1.0, 0, 0, true);
+  const CompiledGraph cr = compileOrFail(readBack.graph);
+  EXPECT_TRUE(cr.traffic[readBack.hdrSamples].transient);
+  EXPECT_EQ(cr.storedBytes(), c1.storedBytes() + kPixels * 8);
+  const ForwardPostGraph separate =
+      buildForwardPostGraph(kW, kH, PostPath::Separate, false, HdrFormat::Rgba16Float, 4, false, 1.0, 0, 0, true);
+  const CompiledGraph cs = compileOrFail(separate.graph);
+  EXPECT_TRUE(cs.traffic[separate.hdrSamples].transient);
+  EXPECT_FALSE(cs.traffic[separate.hdr].transient);
+}
+
 // FXAA reads neighbouring pixels, so the tone-mapped image cannot stay in tile memory: it is
 // stored once and sampled once (4 + 4 bytes a pixel more than without FXAA on either path), and
 // the FXAA pass is a render pass of its own. Off, the graph has no such pass and no such image.

@@ -11,14 +11,18 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "example_content.h"
 #include "facet/runtime/gl_backend.h"
 #include "facet/runtime/render_backend.h"
+#include "facet/runtime/scene_frame.h"
+#include "facet/scene/scene.h"
 #include "gl_context.h"
 #include "gl_objects.h"
+#include "test_compile.h"
 #include "test_support.h"
 
 namespace facet::runtime {
@@ -338,6 +342,64 @@ TEST_F(GlAppTargetTest, LeavesTheTargetBoundWithAFullViewport) {
     const std::vector<uint8_t> drawn = readFramebuffer(target.id(), kWidth, kHeight);
     FrameResult result;
     ASSERT_TRUE(renderer->render(content_.frame, &result, &error)) << error;
+    EXPECT_LE(maxDifference(drawn, result.ldr), 1);
+    ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
+  }
+}
+
+// The sun's shadow pass runs in the app's frame too (before the forward pass, into the backend's
+// own atlas): a sphere's shadow on the ground, the same as render()'s on both paths, and the
+// app's framebuffer left bound with no scissor or depth offset of the pass's on.
+TEST_F(GlAppTargetTest, TheSunsShadowIsDrawnIntoTheAppFramebuffer) {
+  compiler::BuildOptions build;
+  build.shadowCascadeCounts = {0, 2};
+  const std::string packages = test::writePackagesFromTexts(
+      "gl-app-shadows", {"material grey { shading lit\n surface { baseColor = vec3(0.7, 0.7, 0.7) } }"}, build);
+  const auto frameOf = [&](bool casts, std::unique_ptr<SceneFrame>* out) {
+    const std::string json = R"({"width": )" + std::to_string(kWidth) + R"(, "height": )" + std::to_string(kHeight) +
+                             R"(,
+      "camera": {"position": [0, 4, 6], "target": [0, 0, 0], "fovY": 45},
+      "sun": {"direction": [0.3, -1, -0.2], "illuminance": 100000, "castShadows": )" +
+                             (casts ? "true" : "false") + R"(},
+      "sky": {"luminance": 0},
+      "shadows": {"atlasSize": 512, "cascades": 2},
+      "objects": [{"mesh": "plane", "material": "grey", "scale": [20, 1, 20]},
+                  {"mesh": "sphere", "material": "grey", "position": [0, 1.2, 0]}]})";
+    std::string error;
+    auto scene = parseScene("app-shadow.json", json, &error);
+    ASSERT_TRUE(scene) << error;
+    *out = SceneFrame::prepare(*scene, packages, &error);
+    ASSERT_TRUE(*out) << error;
+  };
+  std::unique_ptr<SceneFrame> shadowed, unshadowed;
+  frameOf(true, &shadowed);
+  frameOf(false, &unshadowed);
+  ASSERT_TRUE(shadowed && unshadowed);
+  ASSERT_TRUE(shadowed->frame().shadow);
+  for (PostPath path : {PostPath::Merged, PostPath::Separate}) {
+    SCOPED_TRACE(pathName(path));
+    auto renderer = embedded(path);
+    ASSERT_NE(renderer, nullptr);
+    std::string error;
+    AppFramebuffer target = makeAppFramebuffer(Image::Texture, GL_RGBA8, kWidth, kHeight);
+    const auto drawInto = [&](const FrameDesc& frame) {
+      EXPECT_TRUE(renderer->renderToFramebuffer(frame, GlAppTarget{target.id(), kWidth, kHeight}, &error)) << error;
+      EXPECT_TRUE(appGl_->makeCurrent(&error)) << error;
+      return readFramebuffer(target.id(), kWidth, kHeight);
+    };
+    const std::vector<uint8_t> lit = drawInto(unshadowed->frame());
+    const std::vector<uint8_t> drawn = drawInto(shadowed->frame());
+    GLint framebuffer = -1;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    EXPECT_EQ(framebuffer, GLint(target.id()));
+    EXPECT_EQ(glIsEnabled(GL_SCISSOR_TEST), GL_FALSE);
+    EXPECT_EQ(glIsEnabled(GL_POLYGON_OFFSET_FILL), GL_FALSE);
+    // The shadow: ground pixels the sun lights without the pass and the pass darkens.
+    size_t darkened = 0;
+    for (size_t i = 0; i < drawn.size(); i += 4) darkened += lit[i] > 40 && drawn[i] < lit[i] / 4;
+    EXPECT_GT(darkened, size_t{kWidth} * kHeight / 100) << "of " << kWidth * kHeight << " pixels";
+    FrameResult result;
+    ASSERT_TRUE(renderer->render(shadowed->frame(), &result, &error)) << error;
     EXPECT_LE(maxDifference(drawn, result.ldr), 1);
     ASSERT_TRUE(appGl_->makeCurrent(&error)) << error;
   }

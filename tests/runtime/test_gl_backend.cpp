@@ -192,22 +192,35 @@ TEST(GlBackend, ClearColourReachesHdrAndLdrTargets) {
   EXPECT_GT(previousLdr, 0);
 }
 
-// No shadow pass yet: a frame whose sun casts is refused, naming the backend, never drawn with
-// its receivers unshadowed.
-TEST(GlBackend, AFrameWithAShadowPassIsRefusedUntilTheBackendDrawsIt) {
+// A shadow pass the backend cannot draw (shadowPassError) is refused before anything is drawn;
+// an empty one (no casters) clears the atlas and draws the frame.
+TEST(GlBackend, AMalformedShadowPassIsRefused) {
   auto backend = makeBackend();
   ASSERT_NE(backend, nullptr);
   FrameDesc frame = makeFrame(8, 8);
   frame.shadow = ShadowPassDesc{};
   frame.shadow->atlasSize = 256;
+  frame.shadow->cascades.resize(1);
+  ShadowCascadeDesc& cascade = frame.shadow->cascades[0];
+  cascade.viewport[2] = 256;
+  cascade.viewport[3] = 256;
   FrameResult result;
   std::string error;
+  EXPECT_TRUE(backend->render(frame, &result, &error)) << error;
+  cascade.casters = {0};
   EXPECT_FALSE(backend->render(frame, &result, &error));
-  EXPECT_EQ(
-      error,
-      "GL backend: the sun casts shadows (/sun/castShadows), which this backend does not draw yet (docs/shadows.md)");
+  EXPECT_EQ(error, "GL backend: shadow cascade 0: caster 0 is out of range (0 casters)");
+  cascade.casters.clear();
+  cascade.viewport[1] = 1;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_EQ(error, "GL backend: shadow cascade 0: viewport is outside the 256 texel atlas");
+  cascade.viewport[1] = 0;
+  frame.shadow->atlasSize = 0;
+  EXPECT_FALSE(backend->render(frame, &result, &error));
+  EXPECT_EQ(error.rfind("GL backend: shadow atlas size 0 is outside 1..", 0), 0u) << error;
   frame.shadow.reset();
   EXPECT_TRUE(backend->render(frame, &result, &error)) << error;
+  EXPECT_TRUE(noValidationErrors(*backend));
 }
 
 TEST(GlBackend, TriangleCoversExpectedPixelsUpright) {

@@ -158,5 +158,26 @@ TEST(ShadowFrame, PackagesWithoutReceiversAreRefused) {
   EXPECT_NE(error.find("high.dir1.sh4"), std::string::npos) << error;
 }
 
+// A casting spot light is fitted and drawn (shadowPassDesc) but no variant receives it yet: the
+// scene is refused at the light's pointer rather than rendered with its objects lit through their
+// casters.
+TEST(ShadowFrame, ACastingSpotLightIsRefusedUntilReceiversExist) {
+  std::string error;
+  auto scene = parseScene("s.json", kScene, &error);
+  ASSERT_TRUE(scene) << error;
+  PunctualLight spot;
+  spot.spot = true;
+  spot.castShadows = true;
+  scene->lights = {PunctualLight{}, spot};
+  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
+  EXPECT_EQ(error,
+            "/lights/1/castShadows: spot-light shadows are not rendered yet: no material variant receives them "
+            "(docs/shadows.md, \"Spot shadows\")");
+  // Without it the scene goes on to ask for its variant (these packages have no point lights).
+  scene->lights[1].castShadows = false;
+  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
+  EXPECT_NE(error.find("high.dir1.sh4.pt2"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace facet::runtime

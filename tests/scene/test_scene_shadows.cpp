@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "facet/scene/scene.h"
 
@@ -97,11 +98,31 @@ TEST(SceneShadows, NonFiniteNumbersAreRefused) {
   EXPECT_NE(error.find("s.json"), std::string::npos) << error;
 }
 
-TEST(SceneShadows, PunctualLightsDoNotCastYet) {
+TEST(SceneShadows, PointLightsDoNotCast) {
   EXPECT_EQ(errorOf(R"("lights": [{"type": "point", "castShadows": true}])"),
-            "s.json: error: /lights/0/castShadows: point-light shadows are not supported; only the sun casts shadows");
-  EXPECT_EQ(errorOf(R"("lights": [{"type": "spot", "castShadows": true}])"),
-            "s.json: error: /lights/0/castShadows: spot-light shadows are not supported yet; only the sun casts "
-            "shadows");
+            "s.json: error: /lights/0/castShadows: point-light shadows are not supported; only the sun and spot "
+            "lights cast shadows");
   EXPECT_EQ(sceneOf(R"("lights": [{"type": "point", "castShadows": false}])").lights.size(), 1u);
+  EXPECT_EQ(errorOf(R"("lights": [{"type": "spot", "castShadows": "yes"}])"),
+            "s.json: error: /lights/0/castShadows: expected true or false");
+}
+
+// One spot light casts at most (kMaxShadowSpotLights): the second is an error at its own pointer,
+// whatever lights lie between them.
+TEST(SceneShadows, OneSpotLightCasts) {
+  const Scene s = sceneOf(R"("lights": [{"type": "point"}, {"type": "spot", "castShadows": false},
+                                        {"type": "spot", "castShadows": true}])");
+  EXPECT_EQ(facet::runtime::shadowSpotLights(s), std::vector<size_t>{2});
+  EXPECT_TRUE(s.lights[2].castShadows);
+  EXPECT_FALSE(s.lights[1].castShadows);
+  EXPECT_TRUE(facet::runtime::shadowSpotLights(sceneOf(R"("lights": [{"type": "spot"}])")).empty());
+  EXPECT_EQ(sceneOf(R"("lights": [{"type": "spot", "castShadows": true, "outerAngle": 60}])").lights.size(), 1u);
+  EXPECT_EQ(errorOf(R"("lights": [{"type": "spot", "castShadows": true, "outerAngle": 61}])"),
+            "s.json: error: /lights/0/outerAngle: a spot light casting shadows has an outerAngle of at most 60 degrees "
+            "(one perspective view)");
+  EXPECT_EQ(sceneOf(R"("lights": [{"type": "spot", "outerAngle": 80}])").lights.size(), 1u);
+  EXPECT_EQ(errorOf(R"("lights": [{"type": "spot", "castShadows": true}, {"type": "point"},
+                                   {"type": "spot", "castShadows": true}])"),
+            "s.json: error: /lights/2/castShadows: a scene has at most 1 spot light casting shadows (docs/shadows.md, "
+            "\"Spot shadows\")");
 }

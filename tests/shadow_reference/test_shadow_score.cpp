@@ -127,6 +127,18 @@ TEST(MeasureShadows, ScoresARenderingAgainstTheReference) {
   EXPECT_EQ(test::readText(dir + "/ref2.png"), test::readText(dir + "/ref.png"));
 }
 
+// A spot light's reference (--spot N): the box's shadow on the ground, and the ground outside the
+// cone unreached (counted with the faces turned away).
+TEST(MeasureShadows, ASpotLightsReference) {
+  const std::string dir = test::scratchDir("measure-spot-shadows");
+  const test::CommandResult r = test::run(tool() + " " + scene("spot_box") + " --spot 0 --json " + dir + "/spot.json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json counts = nlohmann::json::parse(test::readText(dir + "/spot.json"))["reference"];
+  EXPECT_GT(counts["occluded"].get<uint64_t>(), 2000u);
+  EXPECT_GT(counts["lit"].get<uint64_t>(), 10000u);
+  EXPECT_GT(counts["facesAway"].get<uint64_t>(), 10000u);
+}
+
 TEST(MeasureShadows, BadInputsExitWithAMessageAndWriteNothing) {
   const std::string dir = test::scratchDir("measure-shadows-errors");
   writeGrey(dir + "/small.png", {255, 255}, 2);
@@ -148,6 +160,12 @@ TEST(MeasureShadows, BadInputsExitWithAMessageAndWriteNothing) {
       {scene("thin_pole") + " --shadowed " + dir + "/small.png", "", 2},
       {scene("thin_pole") + " --footprint -1", "", 2},
       {scene("thin_pole") + " --footprint nan", "", 2},
+      {scene("spot_box"), scene("spot_box") + ": error: the scene has no sun to cast shadows", 1},
+      {scene("spot_box") + " --spot 1", scene("spot_box") + ": error: the scene has no spot light 1 to cast shadows",
+       1},
+      {scene("thin_pole") + " --spot 0", scene("thin_pole") + ": error: the scene has no spot light 0 to cast shadows",
+       1},
+      {scene("spot_box") + " --spot -1", "", 2},
       {scene("thin_pole") + " --reference " + scene("thin_pole"), "", 1},  // an output over an input
   };
   for (const Case& c : cases) {

@@ -247,6 +247,16 @@ struct PostUniforms {
 };
 static_assert(sizeof(PostUniforms) == 48, "std140 layout of PostUniforms");
 
+// The environment drawn as the background (runtime/background.h): a draw of the forward pass whose
+// "MaterialParams" block is this (templates/post_background.frag.glsl).
+struct BackgroundParams {
+  // Column-major: the world-space direction seen through a pixel is clipToDirection · (x, y, 1, 1)
+  // for its GL normalized device coordinates x, y (unnormalized; only its top three rows are read).
+  float clipToDirection[16];
+  float lodIntensity[4];  // x: the environment's level (0: its base level), y: the radiance's factor
+};
+static_assert(sizeof(BackgroundParams) == 80, "std140 layout of BackgroundParams");
+
 // ---------------------------------------------------------------------------------------------
 // The interface as data. The compiler prints the shaders' declarations from these tables
 // (compiler/src/assemble.cpp), the runtime binds by the same numbers, and the MSL backend pins
@@ -356,6 +366,10 @@ inline constexpr uint32_t kPostHdrInputAttachmentIndex = 0;
 inline constexpr uint32_t kPostHdrColorLocation = 0;     // merged path: HDR is colour 0 of the pass
 inline constexpr uint32_t kPostMergedLdrLocation = 1;    // merged path: LDR is colour 1
 inline constexpr uint32_t kPostSeparateLdrLocation = 0;  // separate path: LDR is the only colour
+// MSAA on the merged path with multisampled attachments: the post pass reads `hdrColor` as a
+// subpassInputMS and loops over its samples; the count is this specialization constant of the
+// fragment stage (`facet_postSamples`), set by the Vulkan backend when it builds the pipeline.
+inline constexpr uint32_t kPostSampleCountConstantId = 0;
 // The FXAA pass (after the post pass, when on) samples the post pass's tone-mapped RGBA8 image
 // as `toneMapped` at set kPostHdrSet / binding kPostHdrBinding (GL: that texture unit), bilinear
 // and clamped, and writes colour kPostSeparateLdrLocation.
@@ -373,6 +387,13 @@ inline constexpr MemberDesc kPostMembers[] = {
 inline constexpr BlockDesc kPostBlock{"PostUniforms",       "post",       kPostHdrSet,
                                       kPostUniformsBinding, kPostMembers, uint32_t(sizeof(PostUniforms))};
 inline constexpr SamplerDesc kPostColorLutSampler{kPostColorLutName, kPostHdrSet, kPostColorLutBinding};
+// The background's parameters, bound where a material's are (the draw is a forward-pass draw).
+inline constexpr MemberDesc kBackgroundMembers[] = {
+    {"highp mat4", "clipToDirection"},
+    {"highp vec4", "lodIntensity"},
+};
+inline constexpr BlockDesc kBackgroundBlock{"MaterialParams", "params",           kBlockSet,
+                                            kMaterialBinding, kBackgroundMembers, uint32_t(sizeof(BackgroundParams))};
 
 // Metal (MSL) argument slots, pinned by the MSL backend from the tables above so that every
 // variant of every material uses the same ones (SPIRV-Cross otherwise numbers resources in order

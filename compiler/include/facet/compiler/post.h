@@ -56,6 +56,12 @@ struct PostShaders {
   PostStage fetchFragment;
   // Render scale < 1 (separate path): samples an HDR image smaller than the output bilinearly.
   PostStage upscaledFragment;
+  // Merged path under MSAA with multisampled attachments (Vulkan's portable form): reads each
+  // sample of the multisampled HDR (subpassInputMS, abi::kPostSampleCountConstantId samples),
+  // tone maps it and averages in display light. glslEs is the same loop over a sampler2DMS in
+  // GLSL ES 3.10 (for Mesa's cycle counts; the GL backend resolves first); no Metal. Empty for
+  // bloom variants: bloom runs the separate path.
+  PostStage samplesFragment;
 };
 
 // Returns false with *error set when a backend rejects the assembled code (a compiler defect).
@@ -77,6 +83,21 @@ struct BloomStages {
   PostStage upsample;
 };
 bool buildBloomShaders(BloomStages* out, std::string* error);
+
+// The environment drawn as the background (templates/post_background.*.glsl, runtime/background.h):
+// not a pass of its own but a draw of the forward pass (a full-screen triangle at the far plane,
+// its parameters in the MaterialParams slot as abi::BackgroundParams, the frame's
+// facet_environment), so it runs under the forward pass's MSAA, render scale and path.
+struct BackgroundStages {
+  PostStage vertex;
+  PostStage fragment;
+};
+bool buildBackgroundShaders(BackgroundStages* out, std::string* error);
+// Where a Metal app binds its resources: ObjectUniforms and the parameters, the environment.
+std::vector<package::MslBinding> backgroundMslBindings();
+// C++ source defining facet::runtime::backgroundProgram() (render_backend.h), appended to
+// postShadersCpp's in the runtime's generated source.
+std::string backgroundShadersCpp(const BackgroundStages& stages);
 
 // Every combination of effects: what the runtime embeds.
 std::vector<PostEffects> everyPostEffects();

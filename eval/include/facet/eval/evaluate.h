@@ -25,6 +25,10 @@ struct EvalOptions {
   bool swaps = true;      // also every single-option swap of each tier
   std::string sceneFile;  // a scene file instead of the built-in grid ("" = the grid)
   GridOptions grid;
+  // The grid: also the "shadowed" view (shadowedGridView), the sun casting onto a wall, so that each
+  // tier's shadow receiver is measured with the rest. A scene file whose sun casts is measured so
+  // without it.
+  bool shadows = false;
   int timingFrames = 5;        // timed renders of the first view (median), each paired with one of reference's
   int warmupFrames = 1;        // untimed renders first (the first also makes the image)
   bool validation = false;     // Vulkan validation layers (FACET_VK_VALIDATION=1 also turns them on)
@@ -41,6 +45,11 @@ struct EvalOptions {
   // costs every candidate, and a second run finds them there. "": none.
   std::string costCacheDir;
 };
+
+// `reference` renders views whose sun casts with this atlas size, whatever the scene's: the other
+// configurations' shadows, with the scene's atlas (2048² by default) and their tier's filter, are
+// measured against reference's widest filter (the 3×3 tent) on the largest atlas a phone is given.
+inline constexpr uint32_t kReferenceShadowAtlas = 4096;
 
 struct ViewResult {
   std::string name;          // "frontal", "grazing", or the scene file's stem

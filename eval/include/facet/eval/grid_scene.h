@@ -37,6 +37,17 @@ struct GridView {
 // when swept), bright then dark base colour (when swept).
 std::vector<GridView> evaluationGrid(const ir::Material& material, const GridOptions& options = {});
 
+// The "shadowed" view (`matc eval --shadows`, docs/eval.md): the frontal view's spheres before a
+// wall of the material, the sun casting (the default `shadows` block: a 2048² atlas, 4 cascades),
+// each sphere's shadow on the wall beside it, down and to the left. Its receivers are the
+// `<tier>.dir1.pt1.sh4` variants.
+GridView shadowedGridView(const ir::Material& material, const GridOptions& options = {});
+
+// The wall of the shadowed view: a plane facing the camera at z = kShadowWallZ, the spheres' centres
+// at z = 0 (radius 0.4), so a sphere's shadow centre lies kShadowWallZ × (the sun's x, y ÷ its z)
+// from its centre.
+inline constexpr double kShadowWallZ = -1.0;
+
 // One line per swept axis, for reports: "roughness: params.roughness over 0, 0.2, ..., 1", or why
 // it is not swept.
 std::vector<std::string> describeSweep(const ir::Material& material, const GridOptions& options = {});

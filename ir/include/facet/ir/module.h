@@ -65,8 +65,9 @@ const AttributeInfo* findAttribute(std::string_view name);
 
 // Which lit model reads an output: both, the standard (metallic-roughness) one only, or the cloth
 // model only (`shading cloth`, docs/material-models.md). Written where its model is not the
-// material's, it is dropped with an `unused-output` warning.
-enum class OutputModel { Any, Standard, Cloth };
+// material's, it is dropped with an `unused-output` warning. Sheen: both, the cloth model always and
+// the standard one as a sheen layer over its base where the material writes it.
+enum class OutputModel { Any, Standard, Cloth, Sheen };
 
 // Surface outputs, their types and the values they take when the program does not write them.
 struct OutputInfo {
@@ -79,7 +80,8 @@ struct OutputInfo {
   // without that output compiles the shaders it compiled before the output existed. Written
   // without it, it is dropped with a warning. nullptr: always a member.
   const char* presentWith;
-  // A Cloth output is a MaterialInputs member only in cloth materials' variants.
+  // A Cloth output is a MaterialInputs member only in cloth materials' variants; a Sheen output in
+  // cloth materials' and in those of lit materials that write it.
   OutputModel model;
 };
 const std::vector<OutputInfo>& outputs();

@@ -17,8 +17,20 @@
 namespace facet::runtime {
 
 // The texture slots of glTF's metallic-roughness material, in the order of this enum.
-enum class GltfSlot { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive };
-inline constexpr size_t kGltfSlots = 5;
+// KHR_materials_sheen's two textures and KHR_materials_clearcoat's three follow the core ones.
+enum class GltfSlot {
+  BaseColor,
+  MetallicRoughness,
+  Normal,
+  Occlusion,
+  Emissive,
+  SheenColor,
+  SheenRoughness,
+  ClearCoat,
+  ClearCoatRoughness,
+  ClearCoatNormal
+};
+inline constexpr size_t kGltfSlots = 10;
 
 // One texture a material samples.
 struct GltfTextureUse {
@@ -41,6 +53,8 @@ struct GltfFeatures {
   std::string alphaMode = "OPAQUE";
   double alphaCutoff = 0.5;  // MASK only
   bool doubleSided = false;
+  bool sheen = false;      // KHR_materials_sheen present: a sheen layer (sheenColor, sheenRoughness)
+  bool clearCoat = false;  // KHR_materials_clearcoat present: a clear coat (clearCoat, its roughness and normal)
 
   // The Facet material's name: "gltf" and one part per feature, e.g. gltf_bc0_mr0_n0_ao1_em0_ds.
   std::string name() const;
@@ -60,6 +74,13 @@ struct GltfMaterial {
   // KHR_materials_specular: the dielectric f0 = min(f0(ior) · specularColorFactor, 1) · specularFactor.
   double specularFactor = 1;
   std::array<double, 3> specularColorFactor{1, 1, 1};
+  // KHR_materials_sheen's factors (linear colour, perceptual roughness; the extension's defaults).
+  std::array<double, 3> sheenColorFactor{0, 0, 0};
+  double sheenRoughnessFactor = 0;
+  // KHR_materials_clearcoat's factors and its normal texture's scale (the extension's defaults).
+  double clearcoatFactor = 0;
+  double clearcoatRoughnessFactor = 0;
+  double clearcoatNormalScale = 1;
   std::array<GltfTextureUse, kGltfSlots> textures;
 
   // Facet's `reflectance` (f0 = 0.16 · reflectance², a scalar, f90 = 1; docs/gltf.md): from the

@@ -136,6 +136,9 @@ struct DrawItem {
   // for it and the shader writes its edge's coverage as alpha instead of discarding
   // (output_blending.glsl, FrameUniforms::cameraPosition.w).
   bool masked = false;
+  // Drawn at the far plane (the environment background, runtime/background.h): depth test
+  // LEQUAL against the cleared depth 1, so only pixels no opaque draw covered, and no depth write.
+  bool atFarPlane = false;
 };
 
 inline constexpr abi::InstanceTransform kIdentityInstance{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
@@ -155,10 +158,12 @@ struct ColorLutTexels {
   std::vector<uint16_t> rgba;
 };
 
-// One cascade of the sun's shadow pass (runtime/sun_shadow.h: SunCascade).
+// One view of the shadow pass: a cascade of the sun's (runtime/sun_shadow.h: SunCascade) or a spot
+// light's view (runtime/spot_shadow.h: SpotShadow).
 struct ShadowCascadeDesc {
-  // World → GL clip of the cascade's orthographic view. The pass keeps GL's clip y (a Vulkan
-  // pass converts z to [0, 1] only): atlas row r is window y = r in both APIs.
+  // World → GL clip of the cascade's orthographic view, or the spot light's perspective one. The
+  // pass keeps GL's clip y (a Vulkan pass converts z to [0, 1] only): atlas row r is window y = r
+  // in both APIs.
   float viewProjection[16] = {};
   uint32_t viewport[4] = {};  // x, y, width, height in atlas texels
   // The casters' depth bias: `depthBias` in window depth (the scene's depthBias texels ×
@@ -170,13 +175,16 @@ struct ShadowCascadeDesc {
   std::vector<uint32_t> casters;  // indices into ShadowPassDesc::casters that can shadow the cascade
 };
 
-// The sun's shadow pass (docs/shadows.md, "Shadow pass"): the casters drawn, per cascade, into a
-// square D16 atlas cleared to depth 1, before the forward pass; the forward pass's receivers
-// (`.shN` variants) sample it (abi::kShadowAtlasBinding) with depth compare, and read `uniforms`
+// The shadow pass (docs/shadows.md, "Shadow pass"): the casters drawn, per view, into a square
+// D16 atlas cleared to depth 1, before the forward pass; the forward pass's receivers (`.shN`
+// variants) sample it (abi::kShadowAtlasBinding) with depth compare, and read `uniforms`
 // (abi::kShadowBinding).
 struct ShadowPassDesc {
   uint32_t atlasSize = 0;
+  // The views, each drawn alike (its rectangle, matrix, biases and casters): the sun's cascades,
+  // then the last `spotViews` of them the spot lights' perspective views (runtime/spot_shadow.h).
   std::vector<ShadowCascadeDesc> cascades;
+  uint32_t spotViews = 0;
   // The casters with their materials' depth-only programs (`<tier>.depth`), parameters and
   // textures (a masked material's alpha test reads them); the frame block's viewProjection is
   // the cascade's.
@@ -204,6 +212,16 @@ struct FrameDesc {
 // abi::kMaxInstancesPerDraw, or the draw that takes the frame past abi::kMaxInstancesPerFrame, as
 // "draw N: ..." (both backends refuse such a frame with it).
 std::string instanceCountError(const FrameDesc& frame);
+// Empty, or why a shadow pass cannot be drawn: an atlas size outside 1..maxAtlasSize (what the
+// API can make and render), a cascade viewport empty or outside the atlas, a caster index out of
+// range, as "shadow cascade N: ..." (both backends refuse such a frame with it).
+std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize);
+// The frame a backend draws: `frame` itself without a shadow pass; with one, its draws followed
+// by one draw per (cascade, caster) in cascade order, the caster's DrawItem as given (the shadow
+// pass's draws are the last shadowDrawCount()), so that one check, one upload and one program
+// cache serve both passes. The shadow pass must have passed shadowPassError.
+FrameDesc withShadowDraws(const FrameDesc& frame);
+size_t shadowDrawCount(const FrameDesc& frame);
 // The draws with each instanced draw split into draws of one instance, in the same order: the
 // same image in as many draw calls as instances (tests, and the before of measurements).
 std::vector<DrawItem> oneDrawPerInstance(const std::vector<DrawItem>& draws);
@@ -269,6 +287,9 @@ class RenderBackend {
   virtual bool readsBackHdr() const = 0;
   virtual HdrFormat hdrFormat() const { return HdrFormat::Rgba16Float; }
   virtual uint32_t msaaSamples() const { return 1; }  // the forward pass's samples per pixel
+  // The post pass tone maps each MSAA sample before averaging (VulkanOptions::toneMapSamples: Vulkan's
+  // merged path with multisampled attachments); false: it reads the resolved HDR.
+  virtual bool toneMapsSamples() const { return false; }
   virtual bool fxaa() const { return false; }         // an FXAA pass follows the post pass
   virtual double renderScale() const { return 1.0; }  // the forward pass's size / the output's
   // The bloom chain's levels asked for (BloomSettings::levels), 0 when bloom is off.
@@ -319,6 +340,12 @@ struct VulkanOptions {
   // path (multisampled attachments resolved by pResolveAttachments), for tests. An app's device
   // (vulkan_backend.h) always takes the portable path.
   bool renderToSingleSampled = true;
+  // With MSAA on the merged path and the portable form (renderToSingleSampled off or not offered,
+  // or an app's device), the post subpass reads each sample of the multisampled HDR (subpassInputMS),
+  // tone maps it and averages in display light: right on HDR edges, where the resolve's average
+  // tone-maps a one-sample highlight to white (docs/runtime.md, "MSAA"). false reads the resolved
+  // HDR (resolve first), the order the extension's implicit resolve and the separate path keep.
+  bool toneMapSamples = true;
   // How meshes are packed at upload; creation fails on a device whose vertex fetch cannot read
   // the packed formats.
   VertexPacking vertexPacking = VertexPacking::Packed;
@@ -400,6 +427,10 @@ struct PostShaders {
   // reading the output's size from the PostUniforms block (viewport).
   const std::vector<uint32_t>& fragmentUpscaledSpirv;
   const std::string& fragmentUpscaledGlslEs;
+  // MSAA on the merged path with multisampled attachments: reads each sample of a subpassInputMS
+  // (abi::kPostSampleCountConstantId gives the count), tone maps it and averages in display
+  // light. Empty for bloom variants (bloom runs the separate path).
+  const std::vector<uint32_t>& fragmentSamplesSpirv;
 };
 // Every post variant the runtime embeds (each tone curve, with and without each effect).
 const std::vector<PostShaders>& postVariants();
@@ -418,6 +449,9 @@ struct BloomShaders {
   std::string vertexGlslEs, downsampleGlslEs, thresholdGlslEs, upsampleGlslEs;
 };
 const BloomShaders& bloomShaders();
+// The environment drawn as the background (runtime/background.h makes its draw): a full-screen
+// triangle at the far plane sampling facet_environment, its MaterialParams abi::BackgroundParams.
+const ShaderProgram& backgroundProgram();
 // The variant running `settings`, or nullptr with *error listing the embedded ones.
 const PostShaders* findPostShaders(const PostSettings& settings, std::string* error);
 

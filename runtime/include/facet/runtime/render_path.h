@@ -94,11 +94,12 @@ inline constexpr uint32_t kShadowAtlasBytesPerTexel = 2;
 // that many levels (fewer for a small frame, bloomLevelSizes), in the HDR format; its downsample
 // samples the whole HDR image, so HDR is stored and the merged path becomes the separate one.
 // shadowAtlasSize > 0: a shadow pass into a square D16 atlas of that size comes first, and the
-// forward pass samples it.
+// forward pass samples it. toneMapSamples (merged path with MSAA): the post pass reads each sample
+// of hdrSamples, its own pixel's, instead of the resolved hdr (which is still resolved).
 ForwardPostGraph buildForwardPostGraph(uint32_t width, uint32_t height, PostPath path, bool readBackHdr,
                                        HdrFormat hdrFormat = HdrFormat::Rgba16Float, uint32_t samples = 1,
                                        bool fxaa = false, double renderScale = 1.0, int bloomLevels = 0,
-                                       uint32_t shadowAtlasSize = 0);
+                                       uint32_t shadowAtlasSize = 0, bool toneMapSamples = false);
 
 // The path a backend runs: a render scale below 1, or bloom (its chain samples the whole HDR
 // image, which must be stored anyway), turns the merged path into the separate one.

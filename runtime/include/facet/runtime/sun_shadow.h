@@ -13,7 +13,8 @@
 // the cascade's texel grid by whole texels, so the shadow does not shimmer.
 //
 // Atlas layout: one cascade takes the whole atlas; two to four take the squares of a 2×2 grid of
-// half-size squares, cascade i at column i % 2, row i / 2 (squares past the last cascade unused).
+// half-size squares, cascade i at column i % 2, row i / 2 (squares past the last cascade unused);
+// spot lights that cast take the cells after them (spot_shadow.h, shadowAtlasCell).
 // Texel (column, row) of the atlas is its texture coordinate ((column + ½) / size, (row + ½) / size)
 // and row `row` of its memory: in GL window y = row; the Vulkan shadow pass must keep GL's clip y
 // (convert z to [0, 1] only, no y flip) so that its rows land where GL's do.
@@ -65,6 +66,10 @@ SunShadowFit fitSunShadow(const Scene& scene, std::span<const CasterBounds> cast
 // square (texelSize × viewport width / 2: the slice's sphere, the snap and the guard band that
 // normal offsets and filters read) of the cascade's centre. A caster it rejects cannot change any
 // texel a receiver of the cascade reads.
+// Texels of guard band a view keeps beyond what its receivers can see, in a square of `size`
+// texels: min(ceil(normalBias) + 2, size / 4).
+double shadowGuardTexels(double normalBias, uint32_t size);
+
 bool casterInCascade(const SunCascade& cascade, const CasterBounds& caster, const glm::dvec3& sunDirection);
 
 }  // namespace facet::runtime

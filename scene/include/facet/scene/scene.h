@@ -69,7 +69,16 @@ struct PunctualLight {
   glm::dvec3 direction{0, -1, 0};  // spot: the cone's axis, the direction the light travels
   double innerAngleDegrees = 20;   // spot: full intensity inside this half-angle
   double outerAngleDegrees = 30;   // spot: no light outside this half-angle
+  bool castShadows = false;        // spot only, at most kMaxShadowSpotLights of them (docs/shadows.md, "Spot shadows")
 };
+
+// Spot lights that may cast in one scene: each costs a rectangle of the atlas, a pass over its
+// casters and a filtered lookup per receiving pixel (docs/shadows.md, "Spot shadows").
+inline constexpr size_t kMaxShadowSpotLights = 1;
+// The widest cone a spot light may cast from (its outerAngle, degrees): its shadow is one
+// perspective view, whose texels at the cone's edge cover 1 / cos³ of those on its axis on a sphere
+// around the light (8× at 60°), and which cannot reach 90°.
+inline constexpr double kMaxShadowSpotAngleDegrees = 60;
 
 // Punctual lights per scene: the shaders have fixed-count permutations up to this many
 // (permutations::kMaxPointLights).
@@ -117,6 +126,17 @@ struct Environment {
   glm::dvec3 ground{0.3, 0.25, 0.2};
 };
 
+// "background" (docs/scene-format.md): what shows where no object covers a pixel.
+inline constexpr double kMaxBackgroundLod = 4;  // the prefiltered environment's last level
+struct Background {
+  // The environment drawn behind everything (runtime/background.h), at level `lod`, its radiance ×
+  // `intensity`; false: the environment's mean radiance as a flat colour (exact for a constant
+  // `sky`). Default: drawn when the scene has an `environment`.
+  bool environment = false;
+  double lod = 0;
+  double intensity = 1;
+};
+
 struct Scene {
   uint32_t width = 256;
   uint32_t height = 256;
@@ -127,6 +147,7 @@ struct Scene {
   ShadowSettings shadows;   // the "shadows" block; used when sun->castShadows
   double skyLuminance = 0;  // cd/m², a constant environment (used when `environment` is absent)
   std::optional<Environment> environment;
+  Background background;
   std::vector<SceneObject> objects;
   PostSettings post;  // the post pass's effects (docs/scene-format.md "post")
   // Their settings, read when post.colorGrading / post.vignette are on: grading from settings, or
@@ -156,6 +177,14 @@ struct SceneReadOptions {
 // The number of sun cascades a scene renders: 0 when nothing casts (no sun, or the sun's
 // castShadows off), else shadows.cascades.
 uint32_t sunShadowCascades(const Scene& s);
+// The indices into s.lights of the spot lights that cast, in slot order (at most kMaxShadowSpotLights).
+// Inline: the runtime's core, which links no scene reader, fits their shadows.
+inline std::vector<size_t> shadowSpotLights(const Scene& s) {
+  std::vector<size_t> casting;
+  for (size_t i = 0; i < s.lights.size(); ++i)
+    if (s.lights[i].spot && s.lights[i].castShadows) casting.push_back(i);
+  return casting;
+}
 
 // The camera's projection × view in double precision: what the renderer uploads (as float) and
 // what a CPU reference of the same image must use to cast the same rays.

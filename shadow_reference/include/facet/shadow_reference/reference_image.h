@@ -13,7 +13,8 @@ namespace facet::shadow_reference {
 
 enum class PixelKind : uint8_t {
   Sky,        // the camera ray meets nothing
-  FacesAway,  // the surface's side the camera sees faces away from the sun: unlit, shadow or not
+  FacesAway,  // the surface's side the camera sees faces away from the light, or a spot light does not
+              // reach it (outside its cone or range): unlit, shadow or not
   Surface,    // a surface the sun may light
 };
 

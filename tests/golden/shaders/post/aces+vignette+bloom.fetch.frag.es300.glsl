@@ -132,12 +132,21 @@ float vignette_factor(highp vec2 pixel, highp vec4 viewport, vec4 params) {
 //                                  pixel's centre, uv = gl_FragCoord.xy / output size (from
 //                                  post.viewport), in highp: a mediump uv is 2^-11 relative, a
 //                                  whole texel at 2048 texels;
+//   FACET_POST_SUBPASS_SAMPLES     merged path under MSAA with multisampled attachments (Vulkan,
+//                                  portable form): each of the facet_postSamples samples of a
+//                                  subpassInputMS, tone-mapped, then averaged (below);
+//   FACET_POST_SAMPLED_SAMPLES     the same order from a sampler2DMS (GLSL ES 3.10 text: what
+//                                  Mesa's mobile compilers count for the per-sample form);
 //   none of these                  separate path: texelFetch of the stored HDR texture at
 //                                  gl_FragCoord (each API's window origin matches its own
 //                                  texture row 0, so no flip is needed).
 // All forms but the upscaled one read exactly the pixel being shaded, so the paths give the same
-// image.
-#if defined(FACET_POST_SUBPASS_INPUT)
+// image (the per-sample forms: the same samples, in the other order).
+#if defined(FACET_POST_SUBPASS_SAMPLES)
+#define FACET_POST_SAMPLE(i) subpassLoad(hdrColor, i).rgb
+#elif defined(FACET_POST_SAMPLED_SAMPLES)
+#define FACET_POST_SAMPLE(i) texelFetch(hdrColor, ivec2(gl_FragCoord.xy), i).rgb
+#elif defined(FACET_POST_SUBPASS_INPUT)
 #define FACET_POST_HDR() subpassLoad(hdrColor).rgb
 #elif defined(FACET_POST_FRAMEBUFFER_FETCH)
 #define FACET_POST_HDR() hdrColor.rgb
@@ -147,19 +156,37 @@ float vignette_factor(highp vec2 pixel, highp vec4 viewport, vec4 params) {
 #define FACET_POST_HDR() texelFetch(hdrColor, ivec2(gl_FragCoord.xy), 0).rgb
 #endif
 
-void main() {
-    vec3 hdr = FACET_POST_HDR();
+// Bloom and the tone curve: pre-exposed HDR to display-referred linear values.
+vec3 post_display(vec3 hdr) {
 #if defined(FACET_POST_BLOOM)
     // The bloom chain's finest level (half the HDR image's size), bilinear at this pixel's centre.
     vec3 bloom = texture(facet_bloom, gl_FragCoord.xy * post.viewport.xy).rgb;
     hdr = bloom_composite(hdr, bloom, post.bloom);  // redistributes energy: see chunks/bloom.glsl
 #endif
 #if defined(FACET_POST_ACES)
-    vec3 display = tonemap_aces_fitted(hdr);
+    return tonemap_aces_fitted(hdr);
 #elif defined(FACET_POST_NEUTRAL)
-    vec3 display = tonemap_khronos_neutral(hdr);
+    return tonemap_khronos_neutral(hdr);
 #else
-    vec3 display = hdr;  // no tone curve: srgb_from_linear clamps to [0, 1]
+    // No tone curve: the display clips each sample, so a sample averaged with others is clipped
+    // first (with one sample srgb_from_linear's own clamp gives the same).
+    return clamp(hdr, 0.0, 1.0);
+#endif
+}
+
+void main() {
+#if defined(FACET_POST_SUBPASS_SAMPLES) || defined(FACET_POST_SAMPLED_SAMPLES)
+    // The display shows each sample's tone-mapped light, so the samples are averaged after the
+    // tone curve, in display-referred linear light (before sRGB encoding), as a box filter of the
+    // displayed image would: a highlight of HDR 50 on one sample of four adds a quarter of white,
+    // where averaged first (12.5) it would tone map to white. Each term is weighted as it is added,
+    // so the mediump sum stays in [0, 1] (fp16 spacing at most 2^-11 there, under 0.1 of an 8-bit
+    // step after encoding).
+    vec3 display = vec3(0.0);
+    float weight = 1.0 / float(facet_postSamples);
+    for (int i = 0; i < facet_postSamples; ++i) display += post_display(FACET_POST_SAMPLE(i)) * weight;
+#else
+    vec3 display = post_display(FACET_POST_HDR());
 #endif
     vec3 encoded = srgb_from_linear(display);
 #if defined(FACET_POST_COLOR_GRADING)

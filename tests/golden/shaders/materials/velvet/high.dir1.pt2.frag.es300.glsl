@@ -88,6 +88,21 @@ return max(e,vec3(0.0));
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
 return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
 }
+float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
+float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
+float k=1.0/(alpha*scaledQ);
+float invAlpha=k*scaledQ;
+float visibilityTimesNoL=NoL*(k*(2048.0*alpha));
+float sin2h=max(1.0-NoH*NoH,0.0);
+return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618)*visibilityTimesNoL;
+}
+vec3 shading_sheen_color=vec3(0.0);
+float shading_sheen_alpha=1.0;
+float shading_sheen_scale=1.0;
+float shading_sheen_base_scale=1.0;
+vec3 sheen_light(float NoV,float NoL,float NoH){
+return shading_sheen_color*(sheen_lobe_times_n_dot_l(shading_sheen_alpha,NoV,NoL,NoH)*shading_sheen_scale);
+}
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
 }
@@ -100,46 +115,6 @@ return params.facet_alpha;
 vec3 half_vector(highp vec3 v,highp vec3 l){
 return normalize(v+l);
 }
-float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
-float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
-float k=1.0/(alpha*scaledQ);
-float invAlpha=k*scaledQ;
-float visibilityTimesNoL=NoL*(k*(2048.0*alpha));
-float sin2h=max(1.0-NoH*NoH,0.0);
-return(2.0+invAlpha)*pow(sin2h,0.5*invAlpha)*(0.5*0.31830988618)*visibilityTimesNoL;
-}
-vec3 cloth_sheen_color(MaterialInputs material){
-return clamp(material.sheenColor,0.0,1.0);
-}
-float shading_sheen_scale=1.0;
-float shading_sheen_base_scale=1.0;
-vec3 shade_cloth_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
-vec3 l=lightHighp;
-float NoLSigned=dot(n,l);
-float NoL=clamp(NoLSigned,0.0,1.0);
-float alpha=material_alpha(material);
-vec3 v=viewHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
-float NoV=max(dot(n,v),MIN_N_DOT_V);
-float NoH=clamp(dot(n,h),0.0,1.0);
-vec3 sheen=cloth_sheen_color(material)*(sheen_lobe_times_n_dot_l(alpha,NoV,NoL,NoH)*shading_sheen_scale);
-vec3 diffuseColor=material_diffuse_color(material);
-vec3 diffuse=diffuseColor*(diffuse_lambert()*clamp((NoLSigned+0.5)*(1.0/2.25),0.0,1.0))*clamp(material.subsurfaceColor+NoL,0.0,1.0);
-diffuse*=shading_sheen_base_scale;
-return min((diffuse+sheen)*lightColor,65504.0);
-}
-vec3 cloth_sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
-float perceptualRoughness=material_perceptual_roughness(material);
-float NoV=max(dot(n,v),MIN_N_DOT_V);
-vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
-vec3 sheenColor=cloth_sheen_color(material);
-float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
-shading_sheen_scale=sheenTerms.y;
-shading_sheen_base_scale=baseScale;
-vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
-vec3 specular=radiance*(sheenColor*sheenTerms.x);
-return base*baseScale+specular;
-}
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
@@ -148,6 +123,43 @@ return apply_ambient_occlusion(material,material_diffuse_color(material)*irradia
 }
 vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
+}
+vec3 sheen_color(MaterialInputs material){
+return clamp(material.sheenColor,0.0,1.0);
+}
+float sheen_perceptual_roughness(MaterialInputs material){
+return material_perceptual_roughness(material);
+}
+float sheen_alpha(MaterialInputs material){
+return material_alpha(material);
+}
+vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
+float perceptualRoughness=sheen_perceptual_roughness(material);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
+vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
+vec3 sheenColor=sheen_color(material);
+float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
+shading_sheen_color=sheenColor;
+shading_sheen_alpha=sheen_alpha(material);
+shading_sheen_scale=sheenTerms.y;
+shading_sheen_base_scale=baseScale;
+vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
+vec3 specular=radiance*(sheenColor*sheenTerms.x);
+return base*baseScale+specular;
+}
+vec3 shade_cloth_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
+vec3 l=lightHighp;
+float NoLSigned=dot(n,l);
+float NoL=clamp(NoLSigned,0.0,1.0);
+vec3 v=viewHighp;
+vec3 h=half_vector(viewHighp,lightHighp);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
+float NoH=clamp(dot(n,h),0.0,1.0);
+vec3 sheen=sheen_light(NoV,NoL,NoH);
+vec3 diffuseColor=material_diffuse_color(material);
+vec3 diffuse=diffuseColor*(diffuse_lambert()*clamp((NoLSigned+0.5)*(1.0/2.25),0.0,1.0))*clamp(material.subsurfaceColor+NoL,0.0,1.0);
+diffuse*=shading_sheen_base_scale;
+return min((diffuse+sheen)*lightColor,65504.0);
 }
 vec3 linear_from_shading_space(vec3 color){
 return color;
@@ -179,7 +191,7 @@ MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
-color=cloth_sheen_layer(material,color,shading_normal,shading_view);
+color=sheen_layer(material,color,shading_normal,shading_view);
 highp vec3 l=frame.lightDirection.xyz;
 color=add_light(color,shade_cloth_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));

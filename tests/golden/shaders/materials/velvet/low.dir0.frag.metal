@@ -30,13 +30,13 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _236 = normalize(half3(in.v_normal));
-    float3 _240 = fast::normalize(in.v_toEye);
-    half3 _408 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _496 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_236, half3(_240)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _375 = _496.z;
-    float4 _415 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_240), _236)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_415).xyz, _408 * _375, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_408.x, max(_408.y, _408.z)))), _375, half(1.0))), half(1.0)));
+    half3 _265 = normalize(half3(in.v_normal));
+    float3 _269 = fast::normalize(in.v_toEye);
+    half3 _446 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _543 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_265, half3(_269)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _405 = _543.z;
+    float4 _462 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_269), _265)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_462).xyz, _446 * _405, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_446.x, max(_446.y, _446.z)))), _405, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -49,21 +49,21 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _370 = normalize(half3(in.v_normal));
-    float3 _374 = fast::normalize(in.v_toEye);
-    half _513 = max(dot(_370, half3(_374)), half(9.9999997473787516355514526367188e-05));
-    float4 _518 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_513, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _564 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _777 = half4(_518);
-    half _531 = _777.z;
-    float4 _571 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_374), _370)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _419 = half4(frame.lightDirection).xyz;
-    half _597 = clamp(dot(_370, _419), half(0.0), half(1.0));
-    half _611 = clamp(dot(_370, normalize(half3(_374) + _419)), half(0.0), half(1.0));
-    half _658 = half(8192.0) * fma(half(-float(_597)), _513, _597 + _513);
-    half _662 = half(1.0) / (half(params.facet_alpha) * _658);
-    half3 _691 = fma(half4(_571).xyz, _564 * _531, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_564.x, max(_564.y, _564.z)))), _531, half(1.0))) + min((_564 * ((((fma(_662, _658, half(2.0)) * pow(max(fma(half(-float(_611)), _611, half(1.0)), half(0.0)), half(0.5) * (_662 * _658))) * half(0.15915493667125701904296875)) * (_597 * (_662 * (half(2048.0) * half(params.facet_alpha))))) * half4(_518).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(_691, half(1.0)));
+    half3 _401 = normalize(half3(in.v_normal));
+    float3 _405 = fast::normalize(in.v_toEye);
+    half _545 = max(dot(_401, half3(_405)), half(9.9999997473787516355514526367188e-05));
+    float4 _550 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_545, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _604 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _816 = half4(_550);
+    half _563 = _816.z;
+    float4 _620 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_405), _401)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _450 = half4(frame.lightDirection).xyz;
+    half _642 = clamp(dot(_401, _450), half(0.0), half(1.0));
+    half _654 = clamp(dot(_401, normalize(half3(_405) + _450)), half(0.0), half(1.0));
+    half _699 = half(8192.0) * fma(half(-float(_642)), _545, _642 + _545);
+    half _703 = half(1.0) / (half(params.facet_alpha) * _699);
+    half3 _732 = fma(half4(_620).xyz, _604 * _563, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_604.x, max(_604.y, _604.z)))), _563, half(1.0))) + min((_604 * ((((fma(_703, _699, half(2.0)) * pow(max(fma(half(-float(_654)), _654, half(1.0)), half(0.0)), half(0.5) * (_703 * _699))) * half(0.15915493667125701904296875)) * (_642 * (_703 * (half(2048.0) * half(params.facet_alpha))))) * half4(_550).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    out.fragColor = float4(half4(_732, half(1.0)));
     return out;
 }
 

@@ -72,34 +72,47 @@ material.subsurfaceColor=params.subsurface;
 vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
 return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
 }
+vec3 shading_sheen_color=vec3(0.0);
+float shading_sheen_alpha=1.0;
+float shading_sheen_scale=1.0;
+float shading_sheen_base_scale=1.0;
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
 }
 float material_perceptual_roughness(MaterialInputs material){
 return params.facet_perceptualRoughness;
 }
-vec3 cloth_sheen_color(MaterialInputs material){
-return clamp(material.sheenColor,0.0,1.0);
-}
-float shading_sheen_scale=1.0;
-float shading_sheen_base_scale=1.0;
-vec3 cloth_sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
-float perceptualRoughness=material_perceptual_roughness(material);
-float NoV=max(dot(n,v),MIN_N_DOT_V);
-vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
-vec3 sheenColor=cloth_sheen_color(material);
-float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
-shading_sheen_scale=sheenTerms.y;
-shading_sheen_base_scale=baseScale;
-vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
-vec3 specular=radiance*(sheenColor*sheenTerms.x);
-return base*baseScale+specular;
+float material_alpha(MaterialInputs material){
+return params.facet_alpha;
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
 vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
+}
+vec3 sheen_color(MaterialInputs material){
+return clamp(material.sheenColor,0.0,1.0);
+}
+float sheen_perceptual_roughness(MaterialInputs material){
+return material_perceptual_roughness(material);
+}
+float sheen_alpha(MaterialInputs material){
+return material_alpha(material);
+}
+vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
+float perceptualRoughness=sheen_perceptual_roughness(material);
+float NoV=max(dot(n,v),MIN_N_DOT_V);
+vec2 sheenTerms=textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).ba;
+vec3 sheenColor=sheen_color(material);
+float baseScale=1.0-max(sheenColor.r,max(sheenColor.g,sheenColor.b))*sheenTerms.x;
+shading_sheen_color=sheenColor;
+shading_sheen_alpha=sheen_alpha(material);
+shading_sheen_scale=sheenTerms.y;
+shading_sheen_base_scale=baseScale;
+vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
+vec3 specular=radiance*(sheenColor*sheenTerms.x);
+return base*baseScale+specular;
 }
 vec3 linear_from_shading_space(vec3 color){
 return color;
@@ -116,6 +129,6 @@ MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
 color=linear_from_shading_space(color);
-color=cloth_sheen_layer(material,color,shading_normal,shading_view);
+color=sheen_layer(material,color,shading_normal,shading_view);
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }

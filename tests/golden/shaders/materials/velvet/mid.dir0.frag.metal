@@ -30,13 +30,13 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _235 = normalize(half3(in.v_normal));
-    float3 _239 = fast::normalize(in.v_toEye);
-    half3 _404 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _492 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_235, half3(_239)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _371 = _492.z;
-    float4 _411 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_239), _235)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_411).xyz, _404 * _371, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_404.x, max(_404.y, _404.z)))), _371, half(1.0))), half(1.0)));
+    half3 _264 = normalize(half3(in.v_normal));
+    float3 _268 = fast::normalize(in.v_toEye);
+    half3 _442 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _539 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_264, half3(_268)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _401 = _539.z;
+    float4 _458 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_268), _264)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_458).xyz, _442 * _401, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_442.x, max(_442.y, _442.z)))), _401, half(1.0))), half(1.0)));
     return out;
 }
 

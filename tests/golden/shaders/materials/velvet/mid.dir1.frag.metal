@@ -49,21 +49,21 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _369 = normalize(half3(in.v_normal));
-    float3 _373 = fast::normalize(in.v_toEye);
-    half _509 = max(dot(_369, half3(_373)), half(9.9999997473787516355514526367188e-05));
-    float4 _514 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_509, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _560 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _773 = half4(_514);
-    half _527 = _773.z;
-    float4 _567 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_373), _369)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _418 = half4(frame.lightDirection).xyz;
-    half _593 = clamp(dot(_369, _418), half(0.0), half(1.0));
-    half _607 = clamp(dot(_369, normalize(half3(_373) + _418)), half(0.0), half(1.0));
-    half _654 = half(8192.0) * fma(half(-float(_593)), _509, _593 + _509);
-    half _658 = half(1.0) / (half(params.facet_alpha) * _654);
-    half3 _687 = fma(half4(_567).xyz, _560 * _527, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_560.x, max(_560.y, _560.z)))), _527, half(1.0))) + min((_560 * ((((fma(_658, _654, half(2.0)) * pow(max(fma(half(-float(_607)), _607, half(1.0)), half(0.0)), half(0.5) * (_658 * _654))) * half(0.15915493667125701904296875)) * (_593 * (_658 * (half(2048.0) * half(params.facet_alpha))))) * half4(_514).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(_687, half(1.0)));
+    half3 _400 = normalize(half3(in.v_normal));
+    float3 _404 = fast::normalize(in.v_toEye);
+    half _541 = max(dot(_400, half3(_404)), half(9.9999997473787516355514526367188e-05));
+    float4 _546 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_541, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _600 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _812 = half4(_546);
+    half _559 = _812.z;
+    float4 _616 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_404), _400)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _449 = half4(frame.lightDirection).xyz;
+    half _638 = clamp(dot(_400, _449), half(0.0), half(1.0));
+    half _650 = clamp(dot(_400, normalize(half3(_404) + _449)), half(0.0), half(1.0));
+    half _695 = half(8192.0) * fma(half(-float(_638)), _541, _638 + _541);
+    half _699 = half(1.0) / (half(params.facet_alpha) * _695);
+    half3 _728 = fma(half4(_616).xyz, _600 * _559, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_600.x, max(_600.y, _600.z)))), _559, half(1.0))) + min((_600 * ((((fma(_699, _695, half(2.0)) * pow(max(fma(half(-float(_650)), _650, half(1.0)), half(0.0)), half(0.5) * (_699 * _695))) * half(0.15915493667125701904296875)) * (_638 * (_699 * (half(2048.0) * half(params.facet_alpha))))) * half4(_546).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    out.fragColor = float4(half4(_728, half(1.0)));
     return out;
 }
 

@@ -48,16 +48,16 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _370 = fast::normalize(in.v_normal);
-    float3 _374 = fast::normalize(in.v_toEye);
-    float _473 = _370.y;
-    float _478 = _370.z;
-    float _483 = _370.x;
-    float4 _596 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_370, _374), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
-    float3 _642 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
-    float _609 = _596.z;
-    float3 _631 = fma(facet_environment.sample(facet_environmentSmplr, reflect(-_374, _370), level(params.facet_perceptualRoughness * 4.0)).xyz, _642 * _609, (float3(params.facet_diffuseColor) * fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _473)) + (frame.sh[2].xyz * _478)) + (frame.sh[3].xyz * _483)) + (((((frame.sh[4].xyz * (_483 * _473)) + (frame.sh[5].xyz * (_473 * _478))) + (frame.sh[6].xyz * fma(3.0 * _478, _478, -1.0))) + (frame.sh[7].xyz * (_483 * _478))) + (frame.sh[8].xyz * fma(_483, _483, -(_473 * _473)))), float3(0.0))) * fma(-fast::max(_642.x, fast::max(_642.y, _642.z)), _609, 1.0));
-    out.fragColor = float4(_631, 1.0);
+    float3 _399 = fast::normalize(in.v_normal);
+    float3 _403 = fast::normalize(in.v_toEye);
+    float _502 = _399.y;
+    float _507 = _399.z;
+    float _512 = _399.x;
+    float4 _626 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_399, _403), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    float3 _680 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
+    float _639 = _626.z;
+    float3 _664 = fma(facet_environment.sample(facet_environmentSmplr, reflect(-_403, _399), level(params.facet_perceptualRoughness * 4.0)).xyz, _680 * _639, (float3(params.facet_diffuseColor) * fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _502)) + (frame.sh[2].xyz * _507)) + (frame.sh[3].xyz * _512)) + (((((frame.sh[4].xyz * (_512 * _502)) + (frame.sh[5].xyz * (_502 * _507))) + (frame.sh[6].xyz * fma(3.0 * _507, _507, -1.0))) + (frame.sh[7].xyz * (_512 * _507))) + (frame.sh[8].xyz * fma(_512, _512, -(_502 * _502)))), float3(0.0))) * fma(-fast::max(_680.x, fast::max(_680.y, _680.z)), _639, 1.0));
+    out.fragColor = float4(_664, 1.0);
     return out;
 }
 

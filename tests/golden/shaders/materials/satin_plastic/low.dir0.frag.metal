@@ -1,0 +1,47 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct MaterialParams
+{
+    packed_float3 base;
+    float roughness;
+    packed_float3 sheen;
+    float sheenRoughness;
+    packed_float3 facet_diffuseColor;
+    float facet_perceptualRoughness;
+    packed_float3 facet_f0;
+    float facet_alpha;
+};
+
+struct main0_out
+{
+    float4 fragColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float3 v_diffuseLight [[user(locn2)]];
+};
+
+fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+{
+    main0_out out = {};
+    half3 _370 = normalize(half3(in.v_normal));
+    float3 _374 = fast::normalize(in.v_toEye);
+    half _511 = max(dot(_370, half3(_374)), half(9.9999997473787516355514526367188e-05));
+    half3 _515 = reflect(-half3(_374), _370);
+    float4 _551 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_511, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _577 = facet_environment.sample(facet_environmentSmplr, float3(_515), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _654 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
+    half3 _661 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _785 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_511, _654)), level(0.0)));
+    half _624 = _785.z;
+    float4 _682 = facet_environment.sample(facet_environmentSmplr, float3(_515), level(_654 * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_682).xyz, _661 * _624, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_577).xyz * (mix(half4(_551).xxx, half4(_551).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_551).y) - half(1.0)))))) * fma(half(-float(max(_661.x, max(_661.y, _661.z)))), _624, half(1.0))), half(1.0)));
+    return out;
+}
+
