@@ -16,19 +16,29 @@
 // Why: it keeps high's fragment stage at four divisions (base D and V, the energy
 // compensation, this one) where D and V_K apart need two.
 // Energy: the layered directional albedo is integrated in double in tests/reference/clear_coat.h
-// (docs/material-models.md, "Energy").
-// fp16 (mediump), the two hazards the talk names, for α_c ≥ 0.089² and d ∈ [α_c², 1]:
+// (docs/material-models.md, "Energy"), and this chunk's, fp16-emulated too, by `matc eval`'s
+// white furnace (eval/include/facet/eval/lobe_sweep.h): ≤ 1 + 1e-3 over a white base.
+// fp16 (mediump), for α_c ≥ 0.089² and d ∈ [α_c², 1] (sin² θ_h + α_c² cos² θ_h, α_c ≤ 1):
 //   - D at a smooth coat: α_c² = r_c⁴ in the textbook denominator underflows binary16 below
 //     r_c = 0.0884; the clamp to MIN_PERCEPTUAL_ROUGHNESS (0.089, r⁴ = 6.27e-5 ≥ 2^-14) and the
-//     Lagrange form (no 1 − (n·h)² cancellation) keep d ≥ α_c² a normal number.
+//     Lagrange form (no 1 − (n·h)² cancellation) keep d ≥ α_c².
+//   - d's terms: the squares of t = n_c × h fall below 2^-14 and are flushed to 0 (most mobile GPUs
+//     flush fp16 subnormals; the fp16 emulation does) wherever |t_i| < 2^-7, which at α_c = 0.0079
+//     is the whole core of a smooth coat's highlight: d read (α_c n·h)² there, D its peak, and the
+//     coat reflected 1.48× its light at normal incidence (over a white base, 1.21: measured by the
+//     furnace above). So t and α_c n·h are scaled by 2^6 before they are squared: d' = 2^12 d ∈
+//     [0.257, 4096], a flushed square (< 2^-14) is ≤ 2.4e-4 of d', and k = 2^12 α_c / (d' X) is
+//     the same value; a component of t itself below 2^-14, flushed, loses < (2^6 · 2^-14)² = 2^-16,
+//     ≤ 6e-5 of d'; 2^6 t ≤ 64. The scale
+//     costs +0.09 Mali-G57 cycles in high.dir1 (scaling cross(n, h) after the cross product keeps
+//     it shared with the base's D; scaling n before it cost +0.17).
 //   - V_K at grazing: (l·h)² underflows binary16's smallest normal 2^-14 for l·h < 2^-7 and is
 //     flushed: X = 0, k = +inf and k · (k · X) = inf · 0 = NaN. It is floored at 2^-14, so X ≥ 4π · 2^-14 =
 //     7.7e-4. Where the floor acts it changes nothing visible: 2 (n·h)(l·h) = n·v + n·l for the
 //     unit half vector, so l·h < 2^-7 means n_c·l < 2^-6 (with the base normal equal to the
 //     coat's; a mapped coat normal tilts this by its angle), and the term is multiplied by n·l.
-//   - d X can fall to 6.27e-5 · 7.7e-4 = 4.8e-8, subnormal: the division runs on 2^11 X with the
-//     numerator 2^11 α_c, so d · 2^11 X ≥ 9.9e-5 (normal; 2^10 would give 4.9e-5, below 2^-14),
-//     ≤ 2^11 · 4π = 25736, and 2^11 α_c ≤ 2048.
+//   - d X alone can fall to 6.27e-5 · 7.7e-4 = 4.8e-8, subnormal; d' X ∈ [0.257 · 7.7e-4,
+//     4096 · 4π] = [2.0e-4, 51472] is normal and finite, and the numerator 2^12 α_c ≤ 4096.
 //   - k · X = α_c / d ≤ 1/α_c ≤ 127, so k · (k · X) overflows only where the true value exceeds
 //     65504 (the grazing mirror of a smooth coat), and saturateMediump returns 65504 (k may be
 //     +inf there; X > 0, so never NaN); the light's sum is saturated by the caller.
@@ -36,13 +46,12 @@
 // fails without the floor (where v and l graze nearly opposite: NaN, which lavapipe's min turns
 // into a false glint of 65504 · E · n·l, 18 instead of 2e-5), without the scale (the mirror
 // at n·v = 0.2: d X flushed, 65504 where the lobe is finite) and without the saturation (+inf at
-// the mirror from n·v = 0.1). 2^10 passes too, because where d · 2^10 X is subnormal the true lobe
-// is beyond 65504 anyway; only 2^11 keeps the bound above without relying on that. highp
-// (`reference`): the same formula, saturateMediump an identity.
+// the mirror from n·v = 0.1); EvalLobeSweep.ModelLobesKeepTheirFurnaceAndHardCases fails without
+// the 2^6 scale of t. highp (`reference`): the same formula, saturateMediump an identity.
 // Needs: math.glsl, precision.glsl, clear_coat_ambient.glsl.
 
 const float CLEAR_COAT_LOH2_MIN = 6.103515625e-5;  // 2^-14, the floor of (l·h)² (above)
-const float CLEAR_COAT_SCALE = 2048.0;             // 2^11: keeps d·X a normal fp16 number (above)
+const float CLEAR_COAT_SCALE = 64.0;               // 2^6: keeps d's terms and d·X normal in fp16 (above)
 
 // The coat's light for one light; lightColor is the pre-exposed illuminance at normal incidence.
 vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 lightColor) {
@@ -51,11 +60,11 @@ vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float r = clear_coat_perceptual_roughness(material);
     float alpha = r * r;
-    vec3 NxH = cross(n, h);
-    float a = NoH * alpha;
-    float d = dot(NxH, NxH) + a * a;
+    vec3 NxH = CLEAR_COAT_SCALE * cross(n, h);  // cross(n, h) is the base lobe's too (brdf_ggx.glsl)
+    float a = NoH * (CLEAR_COAT_SCALE * alpha);
+    float d = dot(NxH, NxH) + a * a;  // 2^12 (|n × h|² + (α n·h)²)
     float x = (4.0 * PI) * max(LoH * LoH, CLEAR_COAT_LOH2_MIN);
-    float k = (CLEAR_COAT_SCALE * alpha) / (d * (CLEAR_COAT_SCALE * x));
+    float k = ((CLEAR_COAT_SCALE * CLEAR_COAT_SCALE) * alpha) / (d * x);
     float DV = saturateMediump(k * (k * x));
     float Fc = clear_coat_fresnel(LoH) * clear_coat_strength(material);
     return DV * Fc * (lightColor * NoL);

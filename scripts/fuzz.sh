@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the material front end (lexer, parser, checker, GLSL emission), the package reader, the
-# scene loader, the image decoders, the colour-grading .cube reader and the glTF loader, each for a bounded time:
-#   scripts/fuzz.sh [seconds]        default 60, per target
+# scene loader, the image decoders, the colour-grading .cube reader, the glTF loader and matc tune's
+# budgets and tuning files, each for a bounded time:
+#   scripts/fuzz.sh [seconds] [target...]   default 60 s per target; all targets, or those named
 # Builds the clang configuration build/fuzz (-DFACET_FUZZ=ON: libFuzzer + ASan + UBSan) and runs
 # tests/fuzz/fuzz_material from the seed corpus tests/fuzz/corpus/ and every past finding in
 # tests/fuzz/regressions/, with the dictionary tests/fuzz/material.dict; then
@@ -11,7 +12,9 @@
 # tests/fuzz/image_corpus/ (Radiance files), tests/fuzz/fuzz_ktx2 (KTX2 reader, ASTC decoding) from
 # tests/fuzz/ktx2_corpus/ and its past findings (tests/fuzz/ktx2_regressions/), tests/fuzz/fuzz_cube from examples/scenes/looks/ and
 # tests/fuzz/cube_corpus/, then tests/fuzz/fuzz_gltf from tests/fuzz/gltf_corpus/ and its
-# past findings (tests/fuzz/gltf_regressions/), with tests/fuzz/gltf.dict. New inputs
+# past findings (tests/fuzz/gltf_regressions/), with tests/fuzz/gltf.dict, then
+# tests/fuzz/fuzz_tune_files from examples/lint/ and examples/materials/ (the budgets file and
+# the committed tuning files) and its past findings (tests/fuzz/tune_regressions/). New inputs
 # go to a temporary working corpus, so the committed corpus never churns.
 #
 # Fails (non-zero) on any crash, sanitizer report, leak, hang (> 5 s per input) or out-of-memory
@@ -19,28 +22,38 @@
 #   build/fuzz/tests/fuzz/fuzz_material -minimize_crash=1 -runs=100000 \
 #     -exact_artifact_path=tests/fuzz/regressions/<name>.mat build/fuzz/crashes/<file>
 # (fuzz_package: tests/fuzz/package_regressions/<name>.matpkg; fuzz_gltf: tests/fuzz/gltf_regressions/;
-# fuzz_ktx2: tests/fuzz/ktx2_regressions/) then fix the bug; tests/ir/test_fuzz_regressions.cpp,
-# tests/package/test_package.cpp, tests/runtime/test_gltf_hostile.cpp and tests/texture/test_ktx2.cpp replay those folders in every test run.
+# fuzz_ktx2: tests/fuzz/ktx2_regressions/; fuzz_tune_files: tests/fuzz/tune_regressions/) then fix the bug;
+# tests/ir/test_fuzz_regressions.cpp, tests/package/test_package.cpp, tests/runtime/test_gltf_hostile.cpp,
+# tests/texture/test_ktx2.cpp and tests/tune/test_tune.cpp replay those folders in every test run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=${1:-60}
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
-  echo "usage: scripts/fuzz.sh [seconds]" >&2
+  echo "usage: scripts/fuzz.sh [seconds] [target...]" >&2
   exit 2
+fi
+targets=(fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_ktx2 fuzz_cube fuzz_gltf fuzz_tune_files)
+if [ $# -gt 1 ]; then
+  shift
+  for t in "$@"; do
+    [[ " ${targets[*]} " == *" $t "* ]] || { echo "scripts/fuzz.sh: unknown target '$t' (targets: ${targets[*]})" >&2; exit 2; }
+  done
+  targets=("$@")
 fi
 
 bash scripts/setup-deps.sh
 
 dir=build/fuzz
 cmake --preset fuzz >/dev/null  # build/fuzz, CMakePresets.json
-cmake --build --preset fuzz --target fuzz_material fuzz_package fuzz_scene fuzz_image fuzz_ktx2 fuzz_cube fuzz_gltf --parallel "$(nproc)"
+cmake --build --preset fuzz --target "${targets[@]}" --parallel "$(nproc)"
 mkdir -p "$dir/crashes"
 
 # fuzz <target> <dict or ""> <committed corpus folders...>
 fuzz() {
   local target=$1 dict=$2
   shift 2
+  [[ " ${targets[*]} " == *" $target "* ]] || return 0
   local fuzzer=$(pwd)/$dir/tests/fuzz/$target
   local work
   work=$(mktemp -d "$(pwd)/$dir/work.XXXXXX")
@@ -75,3 +88,4 @@ fuzz fuzz_image "" examples/scenes/textures tests/fuzz/image_corpus tests/fuzz/i
 fuzz fuzz_ktx2 "" tests/fuzz/ktx2_corpus tests/fuzz/ktx2_regressions
 fuzz fuzz_cube "" examples/scenes/looks tests/fuzz/cube_corpus
 fuzz fuzz_gltf tests/fuzz/gltf.dict tests/fuzz/gltf_corpus tests/fuzz/gltf_regressions
+fuzz fuzz_tune_files "" examples/lint examples/materials tests/fuzz/tune_regressions

@@ -6,7 +6,7 @@
 #   build/examples/imported/<asset>/   `matc import` of each glTF asset in examples/assets/
 #   build/examples/images/*.png        rendered scenes, one per backend
 #   build/examples/eval/               matc eval of red_plastic: report.md, report.json, plot.svg, images/
-#   build/examples/tune/               matc tune of red_plastic: report.md, report.json
+#   build/examples/tune/               matc tune of red_plastic: report.md, report.json, plot.svg
 #   build/examples/images/app.png      examples/app: the runtime embedded on the app's own Vulkan device
 #   build/examples/images/app_gl.png   examples/app_gl: the same on the app's own OpenGL ES context
 set -euo pipefail
@@ -96,4 +96,4 @@ echo "Packages: $(pwd)/$packages"
 echo "Images:   $(pwd)/$images"
 ls -1 "$images"/*.png
 echo "Eval:     $(pwd)/build/examples/eval/report.md (plot.svg, report.json, images/)"
-echo "Tune:     $(pwd)/build/examples/tune/report.md (report.json)"
+echo "Tune:     $(pwd)/build/examples/tune/report.md (report.json, plot.svg)"

@@ -21,8 +21,9 @@ packages=(
   libmeshoptimizer-dev libastcenc-dev
   # JPEG images (glTF content is mostly JPEG): libjpeg-turbo, runtime/src/jpeg.cpp
   libjpeg62-turbo-dev
-  # tests (python3-jsonschema: the SARIF schema check of matc lint's report)
-  googletest libgtest-dev libgmock-dev python3-jsonschema
+  # tests (python3-jsonschema: the SARIF schema check of matc lint's report; libexpat1-dev: the
+  # XML check of matc tune's plot)
+  googletest libgtest-dev libgmock-dev python3-jsonschema libexpat1-dev
   # tests of tools/mesa_stats (Python, standard library only)
   python3
   # fuzzing (scripts/fuzz.sh): clang, its libFuzzer/ASan/UBSan runtimes (libclang_rt.fuzzer),

@@ -656,16 +656,32 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
 
 std::string uniformBlockDeclaration(Flavour flavour, const abi::BlockDesc& block) { return fixedBlock(flavour, block); }
 
-bool specularLobeSource(permutations::SpecularModel model, std::string* out, std::string* error) {
-  // The lobe chunks read nothing of the material: an empty one stands in for it.
+namespace {
+
+// Chunks on their own, includes resolved: the lobe chunks read nothing of the material, so an
+// empty one stands in for it.
+bool standaloneSource(const std::string& includes, permutations::SpecularModel model, std::string* out,
+                      std::string* error) {
   static const ir::Material noMaterial;
   static const ir::SurfaceGlsl noSurface;
   static const ParamLayout noParams;
   AssemblyInput in{noMaterial, noSurface, noParams, {}, {}, ""};
   in.tier.specular = model;
   std::set<std::string> used;
-  return expandIncludes("#include \"precision.glsl\"\n#include \"math.glsl\"\n#include \"facet:specular\"\n", in, out,
-                        &used, error);
+  return expandIncludes(includes, in, out, &used, error);
+}
+
+}  // namespace
+
+bool specularLobeSource(permutations::SpecularModel model, std::string* out, std::string* error) {
+  return standaloneSource("#include \"precision.glsl\"\n#include \"math.glsl\"\n#include \"facet:specular\"\n", model,
+                          out, error);
+}
+
+bool chunkSource(const std::vector<std::string>& names, std::string* out, std::string* error) {
+  std::string includes;
+  for (const std::string& name : names) includes += "#include \"" + name + "\"\n";
+  return standaloneSource(includes, permutations::SpecularModel::GgxSmith, out, error);
 }
 
 }  // namespace facet::compiler

@@ -1,26 +1,20 @@
 #include "facet/eval/brdf_sweep.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "facet/compiler/assemble.h"
-#include "facet/compiler/lower_relaxed_to_quantized.h"
 #include "facet/compiler/specular_lut.h"
 #include "facet/eval/standard_model.h"
 #include "facet/ibl/dfg_lut.h"
 #include "facet/runtime/environment.h"
+#include "sweep_support.h"
 
 namespace facet::eval {
 namespace {
 
 using permutations::PrecisionPolicy;
 using permutations::SpecularModel;
-
-// The shading floor of chunks/precision.glsl (MIN_PERCEPTUAL_ROUGHNESS): the lobe never sees less.
-constexpr double kMinPerceptualRoughness = 0.089;
-// binary16's largest finite value (MEDIUMP_FLT_MAX of chunks/precision.glsl).
-constexpr double kMediumpMax = 65504.0;
 
 std::string axisValue(const char* axisName, const permutations::TierConfig& config) {
   for (const Axis& axis : axes())
@@ -65,8 +59,7 @@ std::vector<Sample> samples(const BrdfSweepDomain& d, std::vector<double>* rough
   std::vector<Sample> out;
   roughness->clear();
   for (int k = 0; k < d.roughnesses; ++k) {
-    double r =
-        d.roughnesses == 1 ? 1.0 : kMinPerceptualRoughness + (1.0 - kMinPerceptualRoughness) * k / (d.roughnesses - 1);
+    double r = sweepRoughness(d, k);
     roughness->push_back(r);
     for (double f0 : d.f0)
       for (double phi : d.azimuths)
@@ -83,25 +76,16 @@ bool sweepOne(GpuEvaluator& gpu, SpecularModel model, PrecisionPolicy precision,
   std::string lobe;
   if (!compiler::specularLobeSource(model, &lobe, error)) return false;
   GpuEvalRequest request;
-  request.precision = precision == PrecisionPolicy::Highp ? FloatPrecision::Highp : FloatPrecision::Mediump;
-  std::string defines = std::string("#define ") + compiler::kSpecularLutSamplerName + " lut\n";
-  if (precision == PrecisionPolicy::Highp) defines += "#define FACET_PRECISION_HIGHP 1\n";
+  std::string defines = setPrecision(&request, precision);
+  defines += std::string("#define ") + compiler::kSpecularLutSamplerName + " lut\n";
   request.chunks = {defines, lobe};
   request.body = kSweepBody;
-  request.highpInputs = true;  // the sampled geometry is exact; only the lobe runs at mediump
   GpuR8Texture lut;
   if (model == SpecularModel::Lut) {
     compiler::SpecularLut table = compiler::generateSpecularLut();
     lut = {table.width, table.height, std::move(table.texels)};
     request.lut = &lut;
   }
-  // mediump on lavapipe computes in fp32: the fp16 emulation pass rounds every relaxed result to
-  // binary16 as a mobile GPU would (docs/fp16-emulation.md).
-  if (precision == PrecisionPolicy::Mediump)
-    request.transformSpirv = [](std::vector<uint32_t>* words, std::string* e) {
-      compiler::QuantizeCounts counts;
-      return compiler::lowerRelaxedToQuantized(words, &counts, e);
-    };
   std::vector<Sample> grid = samples(domain, &row->roughness);
   for (const Sample& s : grid) {
     request.in0.push_back(glm::vec4(s.NoV, s.NoL, s.phi, s.roughness));
@@ -118,45 +102,16 @@ bool sweepOne(GpuEvaluator& gpu, SpecularModel model, PrecisionPolicy precision,
     *error = "BRDF sweep of the " + row->lobe + " lobe: " + result.error;
     return false;
   }
-  // Per row: [0] every sample alike, [1] weighed by n·v (screen-weighted: a sphere's pixels per
-  // solid angle of view directions go as n·v, so grazing views cover few pixels).
-  const size_t rowCount = row->roughness.size();
-  std::vector<std::array<double, 2>> squaredError(rowCount, {0.0, 0.0}), squaredReference(rowCount, {0.0, 0.0});
+  RowErrors errors(row->roughness.size());
   for (size_t i = 0; i < grid.size(); ++i) {
-    double value = result.values[i].x;
-    if (!std::isfinite(value)) {
-      ++row->nonFinite;
-      continue;
-    }
     const double exactLobe = referenceLobe(grid[i]);
     // Beyond binary16's range (the roughness floor near the grazing mirror: D·V ≈ 1.4e6 at
     // n·v = n·l = 0.03): every mediump lobe saturates at 65504 there by design
-    // (specular_ggx_smith.glsl), a value far above any tone mapper's white. Left out of every row
-    // alike, and counted.
-    if (exactLobe > kMediumpMax) {
-      ++row->beyondHalf;
-      continue;
-    }
-    const double expected = exactLobe * double(grid[i].NoL);
-    const double weights[2] = {1.0, double(grid[i].NoV)};
-    for (size_t w = 0; w < 2; ++w) {
-      squaredError[size_t(grid[i].row)][w] += weights[w] * (value - expected) * (value - expected);
-      squaredReference[size_t(grid[i].row)][w] += weights[w] * expected * expected;
-    }
+    // (specular_ggx_smith.glsl). Left out of every row alike, and counted.
+    errors.add(size_t(grid[i].row), result.values[i].x, exactLobe * double(grid[i].NoL), double(grid[i].NoV),
+               exactLobe > kMediumpMax, row);
   }
-  for (size_t k = 0; k < rowCount; ++k) {
-    auto rmse = [&](size_t w) {
-      return squaredReference[k][w] > 0 ? std::sqrt(squaredError[k][w] / squaredReference[k][w]) : 0.0;
-    };
-    row->rowRelativeRmse.push_back(rmse(0));
-    row->rowScreenRmse.push_back(rmse(1));
-    row->meanRelativeRmse += rmse(0) / double(rowCount);
-    row->meanScreenRmse += rmse(1) / double(rowCount);
-    if (rmse(0) >= row->worstRelativeRmse) {
-      row->worstRelativeRmse = rmse(0);
-      row->worstRoughness = row->roughness[k];
-    }
-  }
+  errors.finish(row);
   return true;
 }
 
@@ -179,7 +134,7 @@ bool sweepBrdfDomain(GpuEvaluator& gpu, const std::vector<Configuration>& config
     }
     BrdfSweepRow row;
     row.lobe = axisValue("specular", c.config);
-    row.precision = c.config.precision == PrecisionPolicy::Highp ? "highp (fp32)" : "mediump (fp16 emulated)";
+    row.precision = precisionName(c.config.precision);
     row.configurations.push_back(c.name);
     if (!sweepOne(gpu, c.config.specular, c.config.precision, domain, &row, error)) return false;
     keys.push_back({c.config.specular, c.config.precision});

@@ -91,20 +91,18 @@ class Evaluation {
   // `matc tune` orders and prunes its candidates by. Safe to call from several threads at once.
   bool costOnly(const Configuration& c, ConfigurationResult* r, EvalError* error) const {
     r->configuration = c;
-    std::optional<compiler::BuildResult> built = build(c, false, &r->variantKey, error, true);
+    std::optional<compiler::BuildResult> built = build(c, false, Variants::Cost, &r->variantKey, error);
     return built && cost(built->package, r, error);
   }
 
   bool measure(const Configuration& c, bool isReference, ConfigurationResult* r, EvalError* error,
                const MeasureOptions& how = {}) {
     r->configuration = c;
-    std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, &r->variantKey, error);
-    if (!built) return false;
+    // With the cost given, only the views' variants: the furnace's is built when it is rendered.
+    const Variants variants = how.costed ? Variants::Views : Variants::All;
+    std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, variants, &r->variantKey, error);
     const fs::path packageDir = workDir_ / fileStem(c.name);
-    std::error_code ec;
-    fs::create_directories(packageDir, ec);
-    const std::string packagePath = (packageDir / (material_.name + ".matpkg")).string();
-    if (!package::writeFile(packagePath, package::write(built->package), &error->message)) return false;
+    if (!built || !writePackage(built->package, packageDir, error)) return false;
 
     // The cost of the variant the (first) view renders, as shipped: an fp16-emulation build's
     // SPIR-V is quantized before spirv-opt and costs what no device runs, so the cost comes from
@@ -117,7 +115,7 @@ class Evaluation {
       r->sunIblFragmentCycles = how.costed->sunIblFragmentCycles;
     } else {
       std::optional<compiler::BuildResult> shipped;
-      if (options_.fp16Emulation && !(shipped = build(c, false, &r->variantKey, error))) return false;
+      if (options_.fp16Emulation && !(shipped = build(c, false, Variants::All, &r->variantKey, error))) return false;
       if (!cost(shipped ? shipped->package : built->package, r, error)) return false;
     }
 
@@ -140,7 +138,7 @@ class Evaluation {
       ViewResult view;
       view.name = views_[vi].name;
       view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
-      if (!runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
+      if (how.images && !runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
         return fail(c, message, error);
       if (isReference) {
         if (backgrounds_.size() == vi)
@@ -160,6 +158,18 @@ class Evaluation {
         const runtime::FrameResult& truth = groundTruth_[vi];
         truthError.add(mine.ldr, truth.ldr, mine.hdr, truth.hdr, coverageMask(mine.hdr, truth.hdr, backgrounds_[vi]));
       }
+      if (how.worthFinishing && !isReference && vi + 1 < views_.size()) {
+        // A view compares at most as many pixels as reference's image of it has.
+        size_t rest = 0;
+        for (size_t later = vi + 1; later < views_.size(); ++later) rest += referenceImages_[later].ldr.size() / 4;
+        const double bound = all.psnrAtMost(rest);
+        if (!how.worthFinishing(bound)) {
+          r->error = all.metrics();
+          r->psnrAtMost = bound;
+          r->furnaceGain = std::numeric_limits<double>::quiet_NaN();
+          return true;
+        }
+      }
     }
     r->error = all.metrics();
     if (!groundTruth_.empty()) r->groundTruthError = truthError.metrics();
@@ -168,7 +178,12 @@ class Evaluation {
       r->furnaceGain = std::numeric_limits<double>::quiet_NaN();
       return true;
     }
-    return furnace(c, packageDir, r, error);
+    if (variants == Variants::All) return furnace(c, packageDir, r, error);
+    std::string furnaceKey;
+    std::optional<compiler::BuildResult> lights =
+        build(c, options_.fp16Emulation, Variants::Furnace, &furnaceKey, error);
+    return lights && writePackage(lights->package, packageDir / "furnace", error) &&
+           furnace(c, packageDir / "furnace", r, error);
   }
 
   // The ground truth (EvalOptions::groundTruthSamples): `reference` as shipped with its ambient
@@ -240,7 +255,7 @@ class Evaluation {
     c.config.ambientSamples = samples;
     c.name = "ground_truth." + std::to_string(samples);
     std::string key;
-    std::optional<compiler::BuildResult> built = build(c, false, &key, error);
+    std::optional<compiler::BuildResult> built = build(c, false, Variants::All, &key, error);
     if (!built) return false;
     const fs::path packageDir = workDir_ / c.name;
     std::error_code ec;
@@ -273,16 +288,25 @@ class Evaluation {
     return false;
   }
 
-  // The configuration's package: its tier only, the variants the views ask for, and (lit
-  // materials) the sun + IBL variant <tier>.dir1 that the cost goals refer to.
-  std::optional<compiler::BuildResult> build(const Configuration& c, bool fp16Emulation, std::string* firstKey,
-                                             EvalError* error, bool costVariantOnly = false) const {
+  bool writePackage(const package::Package& pkg, const fs::path& dir, EvalError* error) const {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    return package::writeFile((dir / (material_.name + ".matpkg")).string(), package::write(pkg), &error->message);
+  }
+
+  // Which of a configuration's variants a build makes. All: the views', the sun + IBL variant
+  // <tier>.dir1 the cost goals refer to, and (lit materials) the white furnace's. Cost: <tier>.dir1
+  // alone. Views and Furnace: the views' alone, the furnace's alone.
+  enum class Variants { All, Cost, Views, Furnace };
+
+  // The configuration's package: its tier only, the variants asked for. *firstKey: the first
+  // view's variant (Cost: <tier>.dir1; Furnace: the furnace's).
+  std::optional<compiler::BuildResult> build(const Configuration& c, bool fp16Emulation, Variants variants,
+                                             std::string* firstKey, EvalError* error) const {
     compiler::BuildOptions options;
     options.tiers = {c.tier};
-    if (costVariantOnly) {
-      options.jobs = 1;
-      options.cacheDir = options_.costCacheDir;
-    }
+    options.cacheDir = options_.cacheDir;
+    if (variants == Variants::Cost) options.jobs = 1;
     options.fp16Emulation = fp16Emulation;
     options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
     const permutations::MaterialNeeds needs{material_.shading == "lit",
@@ -291,7 +315,7 @@ class Evaluation {
     auto add = [&](const permutations::VariantKey& key) {
       if (std::find(scene.keys.begin(), scene.keys.end(), key) == scene.keys.end()) scene.keys.push_back(key);
     };
-    if (!costVariantOnly)
+    if (variants == Variants::All || variants == Variants::Views)
       for (const View& v : views_) {
         // The receivers and the casters' depth-only programs of a view whose sun casts, as
         // `matc compile --scene` builds them (every object of the view is this material's).
@@ -302,9 +326,10 @@ class Evaluation {
           if (cascades > 0 && o.castShadows && needs.castsShadows) add(permutations::depthKey(c.tier));
         }
       }
-    add(permutations::requestKey(needs, c.tier, true, 0));
+    if (variants == Variants::All || variants == Variants::Cost) add(permutations::requestKey(needs, c.tier, true, 0));
+    if (needs.lit && (variants == Variants::All || variants == Variants::Furnace))
+      add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace
     *firstKey = scene.keys[0].toString();
-    if (needs.lit && !costVariantOnly) add(permutations::requestKey(needs, c.tier, false, 0));  // the white furnace
     options.scene = scene;
     compiler::BuildError buildError;
     auto built = compiler::buildMaterial(material_, options, &buildError);
@@ -524,13 +549,18 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
   markPareto(&report.results);
 
   // The lobes on their own, over the whole BRDF domain (lit materials: unlit ones have no lobe).
-  if (options.brdfSweep && material.shading == "lit" && !material.cloth) {
+  // The cloth model has no specular lobe, only its sheen's.
+  if (options.brdfSweep && material.shading == "lit") {
     GpuEvaluator gpu(options.validation);
     if (!gpu.ready()) {
       error->message = "no Vulkan device for the BRDF-domain sweep: " + gpu.initError();
       return std::nullopt;
     }
-    if (!sweepBrdfDomain(gpu, configs, report.brdfDomain, &report.brdfSweep, &error->message)) return std::nullopt;
+    if (!material.cloth && !sweepBrdfDomain(gpu, configs, report.brdfDomain, &report.brdfSweep, &error->message))
+      return std::nullopt;
+    if (!sweepModelLobes(gpu, material, configs, report.brdfDomain, report.furnaceDomain, &report.modelLobeSweep,
+                         &report.lobeFurnace, &error->message))
+      return std::nullopt;
   }
   return report;
 }

@@ -68,6 +68,12 @@ ImageMetrics ErrorAccumulator::metrics() const {
   return m;
 }
 
+double ErrorAccumulator::psnrAtMost(size_t morePixels) const {
+  if (sumSq8_ == 0) return std::numeric_limits<double>::infinity();
+  const double mse = sumSq8_ / (3.0 * double(pixels_ + morePixels));
+  return 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
 std::vector<bool> coverageMask(const std::vector<float>& hdr, const std::vector<float>& referenceHdr,
                                const std::array<float, 3>& background) {
   const size_t pixels = std::min(hdr.size(), referenceHdr.size()) / 4;

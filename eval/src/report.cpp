@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/compiler/cost_figures.h"
+#include "facet/eval/scatter_plot.h"
 #include "facet/gpu_stats/report.h"
 #include "facet/package/package.h"
 
@@ -99,23 +100,6 @@ std::string timingDescription(const EvalReport& r) {
          "on the CPU: its time is not a mobile GPU's (mediump runs in fp32, a texture read is a CPU routine)";
 }
 
-std::string xmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
-}
-
 }  // namespace
 
 Json reportJson(const EvalReport& r) {
@@ -167,25 +151,48 @@ Json reportJson(const EvalReport& r) {
     configs.push_back(k);
   }
   j["configurations"] = configs;
-  if (!r.brdfSweep.empty()) {
-    Json sweep = Json::array();
-    for (const BrdfSweepRow& b : r.brdfSweep)
-      sweep.push_back(Json{{"lobe", b.lobe},
-                           {"precision", b.precision},
-                           {"configurations", b.configurations},
-                           {"roughness", b.roughness},
-                           {"relative_rmse_per_roughness", b.rowRelativeRmse},
-                           {"mean_relative_rmse", b.meanRelativeRmse},
-                           {"relative_rmse_per_roughness_nov_weighted", b.rowScreenRmse},
-                           {"mean_relative_rmse_nov_weighted", b.meanScreenRmse},
-                           {"worst_relative_rmse", b.worstRelativeRmse},
-                           {"worst_roughness", b.worstRoughness},
-                           {"non_finite", b.nonFinite},
-                           {"beyond_binary16", b.beyondHalf}});
+  if (!r.brdfSweep.empty() || !r.modelLobeSweep.empty()) {
+    auto rowsJson = [](const std::vector<BrdfSweepRow>& rows) {
+      Json out = Json::array();
+      for (const BrdfSweepRow& b : rows) {
+        Json row{{"lobe", b.lobe},
+                 {"precision", b.precision},
+                 {"configurations", b.configurations},
+                 {"roughness", b.roughness},
+                 {"relative_rmse_per_roughness", b.rowRelativeRmse},
+                 {"mean_relative_rmse", b.meanRelativeRmse},
+                 {"relative_rmse_per_roughness_nov_weighted", b.rowScreenRmse},
+                 {"mean_relative_rmse_nov_weighted", b.meanScreenRmse},
+                 {"worst_relative_rmse", b.worstRelativeRmse},
+                 {"worst_roughness", b.worstRoughness},
+                 {"non_finite", b.nonFinite},
+                 {"beyond_binary16", b.beyondHalf}};
+        if (!b.hardCase.empty()) {
+          row["hard_cases"] = b.hardCase;
+          row["hard_case_psnr_vs_highp"] = std::isfinite(b.hardCasePsnr) ? Json(b.hardCasePsnr) : Json(nullptr);
+        }
+        out.push_back(row);
+      }
+      return out;
+    };
+    Json furnace = Json::array();
+    for (const LobeFurnaceRow& f : r.lobeFurnace)
+      furnace.push_back(Json{{"lobe", f.lobe},
+                             {"precision", f.precision},
+                             {"configurations", f.configurations},
+                             {"integrand", f.integrand},
+                             {"max_albedo", std::isfinite(f.maxAlbedo) ? Json(f.maxAlbedo) : Json(nullptr)},
+                             {"at_nov", f.atNoV},
+                             {"at_roughness", f.atRoughness},
+                             {"at_anisotropy", f.atAnisotropy},
+                             {"bound", f.bound > 0 ? Json(f.bound) : Json(nullptr)},
+                             {"within_bound", f.withinBound()}});
     j["brdf_domain"] = Json{{"what",
                              "f_s * n.l of each specular lobe against double GGX/Smith/Schlick over n.v x n.l x "
                              "azimuth x roughness x f0; relative RMSE per roughness row"},
-                            {"lobes", sweep}};
+                            {"lobes", rowsJson(r.brdfSweep)},
+                            {"model_lobes", rowsJson(r.modelLobeSweep)},
+                            {"white_furnace", furnace}};
   }
   if (!r.gpuStats.empty()) {
     j["figures"] = gpu_stats::sourceNote(r.gpuStats);
@@ -256,6 +263,14 @@ std::string gpuMarkdown(const EvalReport& r) {
   return s;
 }
 
+// The first four configurations' names, then how many more.
+std::string configurationNames(const std::vector<std::string>& configurations) {
+  std::string names;
+  for (size_t i = 0; i < configurations.size() && i < 4; ++i) names += (i ? ", " : "") + configurations[i];
+  if (configurations.size() > 4) names += ", +" + std::to_string(configurations.size() - 4);
+  return names;
+}
+
 // The lobes over the BRDF domain (brdf_sweep.h), one row per (lobe, precision).
 std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfSweepDomain& domain) {
   std::string s =
@@ -273,12 +288,45 @@ std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfS
       "| lobe | precision | configurations | rel. RMSE, mean over r | worst r (rel. RMSE) | weighed by n·v | "
       "non-finite |\n|---|---|---|--:|--:|--:|--:|\n";
   for (const BrdfSweepRow& b : rows) {
-    std::string names;
-    for (size_t i = 0; i < b.configurations.size() && i < 4; ++i) names += (i ? ", " : "") + b.configurations[i];
-    if (b.configurations.size() > 4) names += ", +" + std::to_string(b.configurations.size() - 4);
-    s += "| " + b.lobe + " | " + b.precision + " | " + names + " | " + fmt("%.4f", b.meanRelativeRmse) + " | " +
-         fmt("%.3f", b.worstRoughness) + " (" + fmt("%.4f", b.worstRelativeRmse) + ") | " +
-         fmt("%.4f", b.meanScreenRmse) + " | " + std::to_string(b.nonFinite) + " |\n";
+    s += "| " + b.lobe + " | " + b.precision + " | " + configurationNames(b.configurations) + " | " +
+         fmt("%.4f", b.meanRelativeRmse) + " | " + fmt("%.3f", b.worstRoughness) + " (" +
+         fmt("%.4f", b.worstRelativeRmse) + ") | " + fmt("%.4f", b.meanScreenRmse) + " | " +
+         std::to_string(b.nonFinite) + " |\n";
+  }
+  return s;
+}
+
+// The material models' lobes over the BRDF domain and their white furnace (lobe_sweep.h).
+std::string modelLobesMarkdown(const EvalReport& r) {
+  std::string s =
+      "\n**The material models' lobes** over the same domain (the anisotropic lobe also over anisotropy "
+      "−1…1 and the view's azimuth about the tangent), each chunk against its double model "
+      "(`eval/include/facet/eval/standard_model.h`); `+ base`: the coat over a white Lambertian base "
+      "attenuated by 1 − Fc(n·v). Hard cases: the mediump chunk's PSNR against its highp form (peak: the "
+      "highp lobe's largest value there).\n\n"
+      "| lobe | precision | configurations | rel. RMSE, mean over r | worst r (rel. RMSE) | weighed by n·v | "
+      "non-finite | hard cases, PSNR dB |\n|---|---|---|--:|--:|--:|--:|--:|\n";
+  for (const BrdfSweepRow& b : r.modelLobeSweep) {
+    std::string hard = "—";
+    if (!b.hardCase.empty())
+      hard = std::isinf(b.hardCasePsnr) && b.hardCasePsnr > 0 ? "∞" : fmt("%.1f", b.hardCasePsnr);
+    s += "| " + b.lobe + " | " + b.precision + " | " + configurationNames(b.configurations) + " | " +
+         fmt("%.4f", b.meanRelativeRmse) + " | " + fmt("%.3f", b.worstRoughness) + " (" +
+         fmt("%.4f", b.worstRelativeRmse) + ") | " + fmt("%.4f", b.meanScreenRmse) + " | " +
+         std::to_string(b.nonFinite) + " | " + hard + " |\n";
+  }
+  s += "\nWhite furnace of each lobe: the directional albedo E(n·v, r) = ∫ f · n·l dω of the chunk's output by "
+       "quadrature on the GPU (GGX lobes: " +
+       std::to_string(r.furnaceDomain.ggxSamples) + " GGX-distributed half vectors; the sheen: a " +
+       std::to_string(r.furnaceDomain.sheenSteps) + " × " + std::to_string(r.furnaceDomain.sheenSteps / 2) +
+       " grid), n·v from 1e-4 to 1, the largest over the domain and where:\n\n"
+       "| lobe | precision | integrand | max albedo | at n·v, r (, anisotropy) | bound |\n|---|---|---|--:|---|---|\n";
+  for (const LobeFurnaceRow& f : r.lobeFurnace) {
+    std::string at = fmt("%.4g", f.atNoV) + ", " + fmt("%.3f", f.atRoughness);
+    if (f.lobe.rfind("anisotropy", 0) == 0) at += ", " + fmt("%.2f", f.atAnisotropy);
+    std::string bound = f.bound > 0 ? (f.withinBound() ? "≤ " : "**above** ") + fmt("%.3f", f.bound) : "reported";
+    s += "| " + f.lobe + " | " + f.precision + " | " + f.integrand + " | " + fmt("%.5f", f.maxAlbedo) + " | " + at +
+         " | " + bound + " |\n";
   }
   return s;
 }
@@ -366,6 +414,7 @@ std::string reportMarkdown(const EvalReport& r) {
   if (r.groundTruthSamples > 0) s += groundTruthMarkdown(r);
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep, r.brdfDomain);
+  if (!r.modelLobeSweep.empty()) s += modelLobesMarkdown(r);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
   for (const std::string& v : r.viewNames) s += " " + v + " |";
   s += "\n|---|";
@@ -382,123 +431,13 @@ std::string reportMarkdown(const EvalReport& r) {
 }
 
 std::string reportSvg(const EvalReport& r) {
-  const double W = 820, H = 520, left = 64, right = 24, top = 40, bottom = 56;
-  double minCycles = 1e9, maxCycles = 0, minPsnr = 1e9, maxPsnr = -1e9;
-  for (const ConfigurationResult& c : r.results) {
-    minCycles = std::min(minCycles, c.fragment.cycles);
-    maxCycles = std::max(maxCycles, c.fragment.cycles);
-    if (!std::isinf(c.error.psnr)) {
-      minPsnr = std::min(minPsnr, c.error.psnr);
-      maxPsnr = std::max(maxPsnr, c.error.psnr);
-    }
-  }
-  if (minPsnr > maxPsnr) minPsnr = maxPsnr = 40;
-  // The cycle axis spans the configurations (with room for labels on the right), in steps of a
-  // round size.
-  const double span = std::max(maxCycles - std::min(minCycles, maxCycles), 0.1);
-  const double step = span > 4 ? 1.0 : span > 2 ? 0.5 : span > 0.8 ? 0.25 : 0.1;
-  const double x0 = std::max(0.0, std::floor((std::min(minCycles, maxCycles) - 0.5 * step) / step) * step);
-  const double x1 = std::ceil((maxCycles + 0.2 * span + 0.5 * step) / step) * step;
-  const double y0 = std::floor((minPsnr - 2) / 5) * 5, y1 = std::ceil((maxPsnr + 2) / 5) * 5;
-  const double plotTop = top + 24;  // identical images ("∞") sit on a band above the finite range
-  auto px = [&](double cycles) { return left + (cycles - x0) / (x1 - x0) * (W - left - right); };
-  auto py = [&](double psnr) {
-    if (std::isinf(psnr)) return top + 8;
-    return plotTop + (y1 - psnr) / (y1 - y0) * (H - plotTop - bottom);
-  };
-  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fmt("%.0f", W) + "\" height=\"" +
-                  fmt("%.0f", H) + "\" viewBox=\"0 0 " + fmt("%.0f", W) + " " + fmt("%.0f", H) +
-                  "\" font-family=\"sans-serif\">\n";
-  s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  s += "<text x=\"" + fmt("%.0f", left) + "\" y=\"20\" font-size=\"14\">" + xmlEscape(r.material) +
-       ": error against estimated cost (red: Pareto front)</text>\n";
-  // Axes, grid and ticks.
-  s += "<g stroke=\"#ccc\" stroke-width=\"1\">\n";
-  for (double y = y0; y <= y1 + 1e-9; y += 5)
-    s += "<line x1=\"" + fmt("%.1f", left) + "\" y1=\"" + fmt("%.1f", py(y)) + "\" x2=\"" + fmt("%.1f", W - right) +
-         "\" y2=\"" + fmt("%.1f", py(y)) + "\"/>\n";
-  for (double x = x0; x <= x1 + 1e-9; x += step)
-    s += "<line x1=\"" + fmt("%.1f", px(x)) + "\" y1=\"" + fmt("%.1f", plotTop) + "\" x2=\"" + fmt("%.1f", px(x)) +
-         "\" y2=\"" + fmt("%.1f", H - bottom) + "\"/>\n";
-  s += "</g>\n<g font-size=\"11\" fill=\"#333\">\n";
-  for (double y = y0; y <= y1 + 1e-9; y += 5)
-    s += "<text x=\"" + fmt("%.1f", left - 6) + "\" y=\"" + fmt("%.1f", py(y) + 4) + "\" text-anchor=\"end\">" +
-         fmt("%.0f", y) + "</text>\n";
-  s += "<text x=\"" + fmt("%.1f", left - 6) + "\" y=\"" + fmt("%.1f", top + 12) + "\" text-anchor=\"end\">∞</text>\n";
-  for (double x = x0; x <= x1 + 1e-9; x += step)
-    s += "<text x=\"" + fmt("%.1f", px(x)) + "\" y=\"" + fmt("%.1f", H - bottom + 16) + "\" text-anchor=\"middle\">" +
-         fmt(step < 0.25 ? "%.1f" : "%.2f", x) + "</text>\n";
-  s += "<text x=\"" + fmt("%.1f", (left + W - right) / 2) + "\" y=\"" + fmt("%.1f", H - 14) +
-       "\" text-anchor=\"middle\">estimated fragment cycles (mobile cost model, docs/eval.md)</text>\n";
-  s += "<text transform=\"translate(16 " + fmt("%.1f", (plotTop + H - bottom) / 2) +
-       ") rotate(-90)\" text-anchor=\"middle\">PSNR against reference, dB (higher is better)</text>\n</g>\n";
-  // The Pareto front, cheapest first.
-  std::vector<const ConfigurationResult*> front;
+  ScatterPlot plot;
+  plot.title = r.material + ": error against estimated cost (red: Pareto front)";
+  plot.xLabel = "estimated fragment cycles (mobile cost model, docs/eval.md)";
+  plot.yLabel = "PSNR against reference, dB (higher is better)";
   for (const ConfigurationResult& c : r.results)
-    if (c.pareto) front.push_back(&c);
-  std::sort(front.begin(), front.end(), [](auto* a, auto* b) {
-    return a->fragment.cycles < b->fragment.cycles ||
-           (a->fragment.cycles == b->fragment.cycles && a->error.psnr < b->error.psnr);
-  });
-  if (front.size() > 1) {
-    s += "<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"1.5\" points=\"";
-    for (size_t i = 0; i < front.size(); ++i)
-      s += (i ? " " : "") + fmt("%.1f", px(front[i]->fragment.cycles)) + "," + fmt("%.1f", py(front[i]->error.psnr));
-    s += "\"/>\n";
-  }
-  // Points, one per distinct (cost, error); configurations with the same maths share a label.
-  std::map<std::pair<double, double>, std::vector<const ConfigurationResult*>> points;
-  std::vector<std::pair<double, double>> order;
-  for (const ConfigurationResult& c : r.results) {
-    auto key = std::make_pair(c.fragment.cycles, c.error.psnr);
-    if (!points.count(key)) order.push_back(key);
-    points[key].push_back(&c);
-  }
-  // Labels go to the first of a few places around their point that overlaps no label or point
-  // placed before (text width estimated at 5.2 px per character of the 9 px font), else to the
-  // right. Pareto points are labelled first, so theirs are the ones that stay readable.
-  struct Box {
-    double x0, y0, x1, y1;
-    bool overlaps(const Box& b) const { return x0 < b.x1 && b.x0 < x1 && y0 < b.y1 && b.y0 < y1; }
-  };
-  std::vector<Box> taken;
-  for (const auto& key : order)
-    taken.push_back({px(key.first) - 4, py(key.second) - 4, px(key.first) + 4, py(key.second) + 4});
-  std::stable_sort(order.begin(), order.end(), [&](const auto& a, const auto& b) {
-    return points[a].front()->pareto && !points[b].front()->pareto;
-  });
-  s += "<g font-size=\"9\">\n";
-  for (const auto& key : order) {
-    const auto& members = points[key];
-    const bool onFront = members.front()->pareto;
-    std::string label;
-    for (size_t i = 0; i < members.size(); ++i) label += (i ? " = " : "") + members[i]->configuration.name;
-    const double x = px(key.first), y = py(key.second);
-    s += "<circle cx=\"" + fmt("%.1f", x) + "\" cy=\"" + fmt("%.1f", y) + "\" r=\"" + (onFront ? "4.5" : "3.5") +
-         "\" fill=\"" + (onFront ? "#d62728" : "#7f7f7f") + "\"><title>" + xmlEscape(label) + "</title></circle>\n";
-    const double width = 5.2 * double(label.size());
-    // (dx, dy) of the text's baseline start; anchor end when the label sits left of its point.
-    const std::pair<double, double> places[] = {{6, -4},  {6, 10}, {-6, -4},  {-6, 10},
-                                                {6, -14}, {6, 20}, {-6, -14}, {-6, 20}};
-    double dx = 6, dy = -4;
-    for (const auto& [cx, cy] : places) {
-      const double start = cx > 0 ? x + cx : x + cx - width;
-      Box box{start, y + cy - 8, start + width, y + cy + 2};
-      if (box.x0 < 0 || box.x1 > W ||
-          std::any_of(taken.begin(), taken.end(), [&](const Box& b) { return box.overlaps(b); }))
-        continue;
-      dx = cx;
-      dy = cy;
-      break;
-    }
-    const double start = dx > 0 ? x + dx : x + dx - width;
-    taken.push_back({start, y + dy - 8, start + width, y + dy + 2});
-    s += "<text x=\"" + fmt("%.1f", x + dx) + "\" y=\"" + fmt("%.1f", y + dy) + "\"" +
-         (dx < 0 ? " text-anchor=\"end\"" : "") + " fill=\"" + (onFront ? "#a01010" : "#555") + "\">" +
-         xmlEscape(label) + "</text>\n";
-  }
-  s += "</g>\n</svg>\n";
-  return s;
+    plot.points.push_back({c.fragment.cycles, c.error.psnr, c.configuration.name, c.pareto});
+  return scatterPlotSvg(plot);
 }
 
 std::vector<package::OutputFile> reportFiles(const EvalReport& report, const std::string& outDir) {

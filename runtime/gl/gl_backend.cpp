@@ -9,6 +9,7 @@
 // depth are invalidated) or separate (post samples the HDR texture).
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <exception>
 #include <optional>
 #include <string_view>
@@ -23,6 +24,7 @@
 #include "gl_post_inputs.h"
 #include "gl_program.h"
 #include "gl_reflection.h"
+#include "gl_row_order.h"
 #include "gl_shadow_atlas.h"
 #include "gl_targets.h"
 #include "gl_textures.h"
@@ -152,6 +154,7 @@ class GlBackend final : public GlRenderer {
   // `framebuffer`: the merged one (HDR, LDR, depth) when `merged`, else the HDR one.
   // `frame` is the drawn one (withShadowDraws): with a shadow pass, that pass first, then the
   // forward draws.
+  // Drawn top-down when topDown_ (gl_row_order.h).
   bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error);
   // The frame's instances in one upload (both passes'); each draw points the instance attributes at its own.
   bool uploadInstances(const FrameDesc& frame, std::string* error);
@@ -192,6 +195,9 @@ class GlBackend final : public GlRenderer {
   // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
   bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
+  // The frame being drawn runs top-down in memory, as Vulkan's do (render()), or bottom-up, GL's
+  // convention (renderToFramebuffer()): gl_row_order.h.
+  bool topDown_ = false;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;            // the path's post program: framebuffer fetch when merged
   gl::LinkedProgram sampledPost_;     // merged backends: the separate path's, for frames into the
@@ -386,6 +392,7 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     const FrameDesc* drawn = drawnFrame(frame, &withCasters, &message);
     if (!drawn || !beginFrame(*drawn, &message)) return false;
     const bool merged = path_ == PostPath::Merged;
+    topDown_ = true;
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
     const bool forwardDone =
         forwardPass(*drawn, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
@@ -454,6 +461,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     std::optional<FrameDesc> withCasters;
     const FrameDesc* drawn = drawnFrame(frame, &withCasters, &message);
     if (!drawn || !beginFrame(*drawn, &message)) return false;
+    topDown_ = false;
     gl::AppAttachment attachment;
     if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
       return false;
@@ -510,7 +518,9 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glDrawBuffers(merged && !msaa ? 2 : 1, forwardBuffers);
   glViewport(0, 0, static_cast<GLsizei>(targets_.forwardWidth), static_cast<GLsizei>(targets_.forwardHeight));
   glDisable(GL_BLEND);
-  glFrontFace(GL_CCW);  // DrawItem::cullBackFaces: counter-clockwise triangles are front faces
+  // DrawItem::cullBackFaces: triangles counter-clockwise in GL's clip space are front faces; the
+  // top-down clip (gl_row_order.h) mirrors the window, which makes them clockwise there.
+  glFrontFace(topDown_ ? GL_CW : GL_CCW);
   glCullFace(GL_BACK);
   glEnable(GL_DEPTH_TEST);
   // The environment is a cube map: GLES 3.0 filters across its faces always, desktop GL only
@@ -523,6 +533,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
   abi::FrameUniforms frameUniforms = frame.frame;
+  if (topDown_) gl::topDownClip(frame.frame.viewProjection, frameUniforms.viewProjection);
   frameUniforms.cameraPosition[3] = msaa ? 1.0f : 0.0f;  // masked materials: alpha to coverage (shader_abi.h)
   glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &frameUniforms, GL_DYNAMIC_DRAW);
@@ -728,7 +739,16 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   const abi::ObjectUniforms object = objectUniforms(mesh->decode);
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &object, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
-  if (item.materialBlock && !item.materialBlock->bytes.empty()) {
+  if (topDown_ && item.program == &backgroundProgram() && materialBytes(item).size() >= sizeof(abi::BackgroundParams)) {
+    // The background's triangle is at GL's normalized device coordinates, not through the frame's
+    // view-projection: its direction matrix takes the top-down y instead.
+    abi::BackgroundParams params;
+    std::memcpy(&params, materialBytes(item).data(), sizeof params);
+    gl::topDownBackground(&params);
+    glBindBuffer(GL_UNIFORM_BUFFER, materialUniforms_.id());
+    glBufferData(GL_UNIFORM_BUFFER, sizeof params, &params, GL_DYNAMIC_DRAW);
+    glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialUniforms_.id());
+  } else if (item.materialBlock && !item.materialBlock->bytes.empty()) {
     glBindBufferBase(GL_UNIFORM_BUFFER, abi::kMaterialBinding, materialBlocks_.resident(*item.materialBlock));
   } else if (!item.materialParams.empty()) {
     glBindBuffer(GL_UNIFORM_BUFFER, materialUniforms_.id());

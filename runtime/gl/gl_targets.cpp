@@ -1,6 +1,6 @@
 #include "gl_targets.h"
 
-#include <algorithm>
+#include <utility>
 
 #include "facet/runtime/render_path.h"
 
@@ -23,17 +23,6 @@ Texture createColorTexture(GLenum internalFormat, GLenum format, GLenum type, GL
   return texture;
 }
 
-// GL's first row is the bottom of the image; the contract's first row is the top.
-template <typename T>
-void flipRows(std::vector<T>* pixels, size_t rowElements, uint32_t height) {
-  if (height < 2) return;
-  for (uint32_t top = 0, bottom = height - 1; top < bottom; ++top, --bottom) {
-    std::swap_ranges(pixels->begin() + static_cast<std::ptrdiff_t>(top * rowElements),
-                     pixels->begin() + static_cast<std::ptrdiff_t>((top + 1) * rowElements),
-                     pixels->begin() + static_cast<std::ptrdiff_t>(bottom * rowElements));
-  }
-}
-
 template <typename T>
 void readRgba(GLuint framebuffer, GLenum attachment, GLenum type, uint32_t width, uint32_t height,
               std::vector<T>* pixels) {
@@ -44,7 +33,6 @@ void readRgba(GLuint framebuffer, GLenum attachment, GLenum type, uint32_t width
   glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows tightly packed, whatever the width
   glReadPixels(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height), GL_RGBA, type, pixels->data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  flipRows(pixels, rowElements, height);
 }
 
 }  // namespace

@@ -73,8 +73,8 @@ inline constexpr GLenum kDepthInternalFormat = GL_DEPTH_COMPONENT32F;
 // whose list is in descending order), 0 when none.
 GLint maxRenderbufferSamples(GLenum internalFormat);
 
-// Reads colour attachment `attachment` (GL_COLOR_ATTACHMENTi) of `framebuffer` with rows top to
-// bottom (GL returns bottom-up).
+// Reads colour attachment `attachment` (GL_COLOR_ATTACHMENTi) of `framebuffer` with its rows in
+// memory order: top to bottom for what render() drew, as it draws top-down (gl_row_order.h).
 void readRgbaFloat(GLuint framebuffer, GLenum attachment, uint32_t width, uint32_t height, std::vector<float>* pixels);
 void readRgba8(GLuint framebuffer, GLenum attachment, uint32_t width, uint32_t height, std::vector<uint8_t>* pixels);
 

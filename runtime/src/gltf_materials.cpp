@@ -585,8 +585,14 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
               "Scale: vec2 = vec2(1.0, 1.0) in [-1e6, 1e6]\n";
   }
   text += "\n    surface {\n";
-  // KHR_texture_transform: uv' = T · R · S · uv, R turning counter-clockwise by `rotation`
-  // (the extension's GLSL: rotation = mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1), column-major).
+  // KHR_texture_transform: uv' = T · R · S · uv, R turning the UVs counter-clockwise by `rotation`
+  // in glTF's UV space, whose v points down: u' = cos · u + sin · v, v' = −sin · u + cos · v. That
+  // is the extension's prose, which Khronos's TextureTransformTest sample follows; its GLSL
+  // listing, mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1) column-major, is the transpose (a
+  // counter-clockwise turn with v up), with which the sample's rotated arrow points at its red
+  // "rotated the wrong way" marker (TextureTransformRotationTurnsTheImageClockwise). v' is written
+  // −sin · u + cos · v: as cos · v − sin · u, Mesa's Adreno 630 compiler takes 209 fragment
+  // instructions for `gltf_bc1t` instead of 201 (Mali-G57 the same either way; docs/gltf.md).
   std::string sampled[kGltfSlots];
   for (size_t s = 0; s < kGltfSlots; ++s) {
     if (!f.textured[s]) continue;
@@ -594,8 +600,8 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
     std::string coordinate = uv;
     if (f.transformed[s]) {
       text += "        let " + p + "Uv = vec2(cos(params." + p + "Rotation) * params." + p + "Scale.x * " + uv +
-              ".x - sin(params." + p + "Rotation) * params." + p + "Scale.y * " + uv + ".y,\n" +
-              "            sin(params." + p + "Rotation) * params." + p + "Scale.x * " + uv + ".x + cos(params." + p +
+              ".x + sin(params." + p + "Rotation) * params." + p + "Scale.y * " + uv + ".y,\n" +
+              "            -sin(params." + p + "Rotation) * params." + p + "Scale.x * " + uv + ".x + cos(params." + p +
               "Rotation) * params." + p + "Scale.y * " + uv + ".y) + params." + p + "Offset\n";
       coordinate = p + "Uv";
     }

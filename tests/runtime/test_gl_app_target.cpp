@@ -3,7 +3,8 @@
 // headless backend (whose debug callback sees every GL error of the context, the embedded
 // backend's included); the embedded backend adopts it through eglGetProcAddress. The frame is
 // examples/app's (red_plastic, two instances, an environment texture): the app's image must equal
-// render()'s readback within one 8-bit step on both render paths.
+// render()'s readback within one 8-bit step on both render paths (where MSAA or FXAA run, render()'s
+// of the frame drawn in the app's row order: appRowOrderFrame below).
 #include <gtest/gtest.h>
 
 #include <EGL/egl.h>
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,6 +73,17 @@ AppFramebuffer makeAppFramebuffer(Image image, GLenum format, uint32_t width, ui
   return target;
 }
 
+// Rows in the other order (GL's bottom-up memory against FrameResult::ldr's top first).
+std::vector<uint8_t> rowsReversed(const std::vector<uint8_t>& pixels, uint32_t width, uint32_t height) {
+  std::vector<uint8_t> reversed(pixels.size());
+  const size_t row = size_t{width} * 4;
+  for (uint32_t y = 0; y < height; ++y) {
+    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row,
+                reversed.begin() + std::ptrdiff_t(y * row));
+  }
+  return reversed;
+}
+
 // What the app reads back itself: RGBA8, rows top first like FrameResult::ldr.
 std::vector<uint8_t> readFramebuffer(GLuint framebuffer, uint32_t width, uint32_t height) {
   std::vector<uint8_t> pixels(size_t{width} * height * 4);
@@ -78,13 +92,7 @@ std::vector<uint8_t> readFramebuffer(GLuint framebuffer, uint32_t width, uint32_
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, GLsizei(width), GLsizei(height), GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  std::vector<uint8_t> topFirst(pixels.size());
-  const size_t row = size_t{width} * 4;
-  for (uint32_t y = 0; y < height; ++y) {
-    std::copy_n(pixels.begin() + std::ptrdiff_t((height - 1 - y) * row), row,
-                topFirst.begin() + std::ptrdiff_t(y * row));
-  }
-  return topFirst;
+  return rowsReversed(pixels, width, height);
 }
 
 int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
@@ -92,6 +100,31 @@ int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) 
   int worst = 0;
   for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(int(a[i]) - int(b[i])));
   return worst;
+}
+
+// The frame whose render() is the app's picture drawn in the app framebuffer's row order. render()
+// draws its rows top-down like Vulkan (runtime/gl/gl_row_order.h), the app's framebuffer bottom-up
+// (GL's convention), and neither a 4× sample pattern nor FXAA's edge search is symmetric in y: their
+// edges differ by up to 48 steps. The frame mirrored in y, drawn top-down, is the frame drawn
+// bottom-up: render()'s rows reversed are the app's picture. The mirror reverses the winding, so
+// each mesh is drawn from a copy in `meshes` with its triangles' winding reversed (culling kept: with
+// MSAA, back faces drawn change silhouette samples); the background's direction matrix takes the
+// mirrored y (D · F).
+FrameDesc appRowOrderFrame(const FrameDesc& frame, std::deque<Mesh>* meshes) {
+  FrameDesc mirrored = frame;
+  for (int column = 0; column < 4; ++column) mirrored.frame.viewProjection[column * 4 + 1] *= -1;
+  for (DrawItem& draw : mirrored.draws) {
+    Mesh& reversed = meshes->emplace_back(*draw.mesh);
+    for (size_t t = 0; t + 2 < reversed.indices.size(); t += 3)
+      std::swap(reversed.indices[t + 1], reversed.indices[t + 2]);
+    draw.mesh = &reversed;
+    if (draw.program != &backgroundProgram()) continue;
+    abi::BackgroundParams params;
+    std::memcpy(&params, draw.materialParams.data(), sizeof params);
+    for (int row = 0; row < 4; ++row) params.clipToDirection[4 + row] *= -1;
+    std::memcpy(draw.materialParams.data(), &params, sizeof params);
+  }
+  return mirrored;
 }
 
 ::testing::AssertionResult noValidationErrors(const RenderBackend& backend) {
@@ -143,7 +176,8 @@ class GlAppTargetTest : public ::testing::Test {
     return renderer;
   }
 
-  // Frame i into `target` and through render(): the app's pixels, or empty on failure.
+  // Frame i into `target` and through render() in the app's row order (appRowOrderFrame): the app's
+  // pixels, or empty on failure.
   std::vector<uint8_t> renderBoth(GlRenderer& renderer, int i, GLuint target, std::vector<uint8_t>* readBack) {
     std::string error;
     EXPECT_TRUE(content_.animate(i, &error)) << error;
@@ -151,8 +185,9 @@ class GlAppTargetTest : public ::testing::Test {
     if (!appGl_->makeCurrent(&error)) return {};
     std::vector<uint8_t> pixels = readFramebuffer(target, kWidth, kHeight);
     FrameResult result;
-    EXPECT_TRUE(renderer.render(content_.frame, &result, &error)) << error;
-    *readBack = result.ldr;
+    std::deque<Mesh> reversed;
+    EXPECT_TRUE(renderer.render(appRowOrderFrame(content_.frame, &reversed), &result, &error)) << error;
+    *readBack = rowsReversed(result.ldr, result.width, result.height);
     return pixels;
   }
 

@@ -2,8 +2,12 @@
 // the candidates, and the search and the gate rendered on a small space of a tiny grid.
 #include <gtest/gtest.h>
 
+#include <expat.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <map>
 
 #include "facet/eval/configurations.h"
 #include "facet/ir/check.h"
@@ -42,6 +46,46 @@ std::vector<TierConfig> smallSpace(const facet::ir::Material& m) {
     if ((!c.swap() || c.axis == "specular" || c.axis == "diffuse") && c.tier != Tier::Reference &&
         std::find(out.begin(), out.end(), c.config) == out.end())
       out.push_back(c.config);
+  return out;
+}
+
+// An SVG read with expat: whether it is well-formed XML, how many of each element it has and the
+// text of its <text> elements.
+struct SvgContents {
+  bool wellFormed = false;
+  std::string root;
+  std::map<std::string, int> elements;
+  std::vector<std::string> texts;
+};
+
+SvgContents readSvg(const std::string& svg) {
+  SvgContents out;
+  struct State {
+    SvgContents* out;
+    bool inText = false;
+  } state{&out};
+  XML_Parser parser = XML_ParserCreate("UTF-8");
+  XML_SetUserData(parser, &state);
+  XML_SetElementHandler(
+      parser,
+      [](void* data, const XML_Char* name, const XML_Char**) {
+        auto* st = static_cast<State*>(data);
+        if (st->out->root.empty()) st->out->root = name;
+        ++st->out->elements[name];
+        if (std::string(name) == "text") {
+          st->inText = true;
+          st->out->texts.emplace_back();
+        }
+      },
+      [](void* data, const XML_Char* name) {
+        if (std::string(name) == "text") static_cast<State*>(data)->inText = false;
+      });
+  XML_SetCharacterDataHandler(parser, [](void* data, const XML_Char* text, int length) {
+    auto* st = static_cast<State*>(data);
+    if (st->inText) st->out->texts.back().append(text, size_t(length));
+  });
+  out.wellFormed = XML_Parse(parser, svg.data(), int(svg.size()), 1) == XML_STATUS_OK;
+  XML_ParserFree(parser);
   return out;
 }
 
@@ -134,7 +178,53 @@ TEST(TuneChoices, WrittenDeterministicallyAndReadBack) {
   EXPECT_EQ(bad(R"({"material": "brushed_gold", "tiers": {}})"),
             "t.json: error: /material: the file tunes 'brushed_gold', not 'red_plastic'");
   EXPECT_EQ(bad(R"({"material": "red_plastic"})"), "t.json: error: /tiers: missing: the tuned tiers");
+  // Figures in the budgets' ranges: a cost of 1e306 would be written back as null.
+  EXPECT_EQ(bad(R"({"material": "red_plastic", "tiers": {"high": {"cost": 1e306}}})"),
+            "t.json: error: /tiers/high/cost: expected a number from 0 to 1e+06");
+  EXPECT_EQ(bad(R"({"material": "red_plastic", "vertices_per_pixel": -1, "tiers": {}})"),
+            "t.json: error: /vertices_per_pixel: expected a number from 0 to 16");
   EXPECT_EQ(tune::choicesPath("examples/materials/red_plastic.mat"), "examples/materials/red_plastic.tuning.json");
+}
+
+// What fuzz_tune_files checks, on its seeds (the budgets file, the committed tuning files) and every
+// input it once got wrong (tests/fuzz/tune_regressions/): each file is refused naming it, or read
+// within the documented ranges; a tuning file read writes back to the same text once written.
+TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
+  const facet::ir::Material materials[] = {example("red_plastic"), example("brushed_gold")};
+  std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json"),
+                                    facet::test::examplePath("materials/red_plastic.tuning.json"),
+                                    facet::test::examplePath("materials/brushed_gold.tuning.json")};
+  const std::string regressions = facet::test::sourceDir() + "/tests/fuzz/tune_regressions";
+  for (const auto& entry : std::filesystem::directory_iterator(regressions))
+    if (entry.path().filename() != "README.md") files.push_back(entry.path().string());
+  std::sort(files.begin() + 3, files.end());
+  size_t read = 0;
+  for (const std::string& path : files) {
+    const std::string text = facet::test::readText(path);
+    std::string error;
+    if (auto b = tune::parseBudgets(path, text, &error)) {
+      ++read;
+      EXPECT_TRUE(std::isfinite(b->verticesPerPixel) && b->verticesPerPixel >= 0) << path;
+      for (const auto& [tier, t] : b->tiers) {
+        EXPECT_TRUE(t.minPsnrDb >= 0 && t.minPsnrDb <= 200) << path;
+        EXPECT_TRUE(!t.maxCost || (std::isfinite(*t.maxCost) && *t.maxCost >= 0)) << path;
+      }
+    } else {
+      EXPECT_EQ(error.rfind(path + ":", 0), 0u) << error;
+    }
+    for (const facet::ir::Material& m : materials) {
+      if (auto c = tune::parseChoices(path, text, m, &error)) {
+        ++read;
+        const std::string written = tune::writeChoices(*c);
+        auto again = tune::parseChoices("written.json", written, m, &error);
+        ASSERT_TRUE(again) << path << ": " << error << "\n" << written;
+        EXPECT_EQ(tune::writeChoices(*again), written) << path;
+      } else {
+        EXPECT_EQ(error.rfind(path + ":", 0), 0u) << error;
+      }
+    }
+  }
+  EXPECT_GE(read, 3u);  // the budgets file and each committed tuning file against its material
 }
 
 TEST(TuneSearch, CandidatesAreEveryCombinationOnceWithTheTiersAsShippedAmongThem) {
@@ -189,6 +279,7 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
   }
   EXPECT_EQ(tune::markdownReport(*one), tune::markdownReport(*two));
   EXPECT_EQ(tune::jsonReport(*one), tune::jsonReport(*two));
+  EXPECT_EQ(tune::plotSvg(*one), tune::plotSvg(*two));
   // Nothing rendered and cheaper meets the budget: the choice is the cheapest that does.
   for (const tune::TierOutcome& t : one->tiers)
     for (const tune::Scored& s : one->front)
@@ -215,6 +306,69 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
       << none->tiers[1].failure;
   EXPECT_NE(none->tiers[1].failure.find("the best reached is"), std::string::npos);
   EXPECT_FALSE(tune::choicesOf(*none));  // nothing partial to --write
+}
+
+// Screening (a candidate's second view and furnace rendered only where its first view's error
+// leaves it able to meet an open budget) changes no choice, no best reached by a tier that finds
+// none, and no figure of a fully measured candidate; it stops some candidates after one view.
+TEST(TuneSearch, ScreeningOnTheFirstViewChangesNoChoiceAndNoBestReached) {
+  const facet::ir::Material m = example("red_plastic");
+  tune::TuneOptions o = tinyGrid();
+  o.space = smallSpace(m);
+  o.tiers = {Tier::High, Tier::Mid, Tier::Low};
+  o.budgets.tiers[Tier::High].minPsnrDb = 150;  // none meets it: its best reached is reported
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 40;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 34;
+  facet::eval::EvalError error;
+  auto screened = tune::tune(m, o, &error);
+  ASSERT_TRUE(screened) << error.message;
+  o.screen = false;
+  auto full = tune::tune(m, o, &error);
+  ASSERT_TRUE(full) << error.message;
+  EXPECT_GT(screened->screened, 0u);
+  EXPECT_EQ(full->screened, 0u);
+  EXPECT_EQ(screened->rendered, full->rendered);
+  ASSERT_EQ(screened->tiers.size(), full->tiers.size());
+  for (size_t t = 0; t < full->tiers.size(); ++t) {
+    const tune::TierOutcome &a = screened->tiers[t], &b = full->tiers[t];
+    ASSERT_EQ(bool(a.chosen), bool(b.chosen)) << t;
+    ASSERT_EQ(bool(a.best), bool(b.best)) << t;
+    EXPECT_EQ(a.failure, b.failure);
+    for (auto [x, y] : {std::pair{&a.chosen, &b.chosen}, std::pair{&a.best, &b.best}})
+      if (*x) {
+        EXPECT_TRUE((*x)->result.configuration.config == (*y)->result.configuration.config) << t;
+        EXPECT_EQ((*x)->result.error.psnr, (*y)->result.error.psnr) << t;
+        EXPECT_EQ((*x)->cost.total, (*y)->cost.total) << t;
+      }
+  }
+  EXPECT_FALSE(screened->tiers[0].chosen);
+  ASSERT_EQ(screened->front.size(), full->front.size());
+  for (size_t k = 0; k < full->front.size(); ++k) {
+    const tune::Scored &a = screened->front[k], &b = full->front[k];
+    EXPECT_EQ(a.result.configuration.name, b.result.configuration.name);
+    if (a.result.psnrAtMost) {
+      EXPECT_LE(b.result.error.psnr, *a.result.psnrAtMost) << b.result.configuration.name;  // a bound
+      EXPECT_LT(*a.result.psnrAtMost, 150.0) << a.result.configuration.name;                // below high's, never met
+      EXPECT_LT(*a.result.psnrAtMost, screened->tiers[0].best->result.error.psnr);          // and high's best
+    } else {
+      EXPECT_EQ(a.result.error.psnr, b.result.error.psnr) << a.result.configuration.name;
+    }
+  }
+
+  // The plot: well-formed SVG; each tier as shipped (a square) and as tuned, or its best reached
+  // (a diamond), labelled; each budget a dashed line; the screened candidates hollow.
+  const SvgContents svg = readSvg(tune::plotSvg(*screened));
+  ASSERT_TRUE(svg.wellFormed);
+  EXPECT_EQ(svg.root, "svg");
+  EXPECT_EQ(svg.elements.at("rect"), 1 + 3);  // the background, then one square per tier
+  EXPECT_EQ(svg.elements.at("polygon"), 3);
+  auto has = [&](const std::string& text) { return std::count(svg.texts.begin(), svg.texts.end(), text) == 1; };
+  for (const char* label : {"high as shipped", "high best reached, misses its budget", "mid as shipped", "mid tuned",
+                            "low as shipped", "low tuned", "high ≥ 150.0 dB", "mid ≥ 40.0 dB", "low ≥ 34.0 dB"})
+    EXPECT_TRUE(has(label)) << label;
+  const std::string text = tune::plotSvg(*screened);
+  EXPECT_NE(text.find("fill=\"white\" stroke="), std::string::npos);  // a screened candidate, hollow
+  EXPECT_NE(text.find("<polyline"), std::string::npos);               // the front
 }
 
 // The gate: committed choices re-scored; a worse configuration in their place fails with figures.

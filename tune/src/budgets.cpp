@@ -14,20 +14,6 @@ namespace {
 using json = nlohmann::json;
 using permutations::Tier;
 
-std::string shortest(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
-double number(const json& j, const std::string& pointer, double least, double most) {
-  if (!j.is_number()) fail(pointer, "expected a number");
-  const double v = j.get<double>();
-  if (!std::isfinite(v) || v < least || v > most)
-    fail(pointer, "expected a number from " + shortest(least) + " to " + shortest(most));
-  return v;
-}
-
 // The tiers a budget may name: reference is the ground truth every error is measured against.
 Tier tunedTier(const std::string& name, const std::string& pointer) {
   std::optional<Tier> t = permutations::tierFromString(name);
@@ -40,9 +26,9 @@ void readTier(const json& j, const std::string& pointer, TierBudget* budget) {
   for (const auto& [key, value] : object(j, pointer).items()) {
     const std::string p = child(pointer, key);
     if (key == "min_psnr_db") {
-      budget->minPsnrDb = number(value, p, 0, 200);
+      budget->minPsnrDb = number(value, p, 0, kMaxPsnrDb);
     } else if (key == "max_cost") {
-      budget->maxCost = number(value, p, 0, 1e6);
+      budget->maxCost = number(value, p, 0, kMaxCost);
     } else if (key == "no_energy_gain") {
       if (!value.is_boolean()) fail(p, "expected true or false");
       budget->noEnergyGain = value.get<bool>();
@@ -78,7 +64,7 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
     for (const auto& [key, value] : j->items()) {
       const std::string p = child("", key);
       if (key == "vertices_per_pixel") {
-        b.verticesPerPixel = number(value, p, 0, 16);
+        b.verticesPerPixel = number(value, p, 0, kMaxVerticesPerPixel);
       } else if (key == "tiers") {
         for (const auto& [tier, budget] : object(value, p).items())
           readTier(budget, child(p, tier), &b.tiers[tunedTier(tier, child(p, tier))]);

@@ -15,11 +15,6 @@ namespace {
 using json = nlohmann::json;
 using permutations::Tier;
 
-double figure(const json& j, const std::string& pointer) {
-  if (!j.is_number() || !std::isfinite(j.get<double>())) fail(pointer, "expected a finite number");
-  return j.get<double>();
-}
-
 std::string text(const json& j, const std::string& pointer) {
   if (!j.is_string()) fail(pointer, "expected a string");
   return j.get<std::string>();
@@ -80,7 +75,7 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
       } else if (key == "gpu") {
         c.gpu = text(value, p);
       } else if (key == "vertices_per_pixel") {
-        c.verticesPerPixel = figure(value, p);
+        c.verticesPerPixel = number(value, p, 0, kMaxVerticesPerPixel);
       } else if (key == "tiers") {
         for (const auto& [name, tier] : object(value, p).items()) {
           const std::string tp = child(p, name);
@@ -92,14 +87,14 @@ std::optional<Choices> parseChoices(const std::string& path, const std::string& 
           for (const auto& [field, v] : object(tier, tp).items()) {
             const std::string fp = child(tp, field);
             if (field == "cost") {
-              choice.cost = figure(v, fp);
+              choice.cost = number(v, fp, 0, kMaxCost);
             } else if (field == "psnr_db") {
-              choice.psnrDb = v.is_null() ? INFINITY : figure(v, fp);
+              choice.psnrDb = v.is_null() ? INFINITY : number(v, fp, 0, kMaxPsnrDb);  // null: identical
             } else if (field == "config") {
               for (const auto& [axisName, option] : object(v, fp).items()) {
                 const std::string ap = child(fp, axisName);
                 auto axis = std::find_if(eval::axes().begin(), eval::axes().end(),
-                                         [&](const eval::Axis& a) { return axisName == a.name; });
+                                         [&name = axisName](const eval::Axis& a) { return name == a.name; });
                 if (axis == eval::axes().end()) fail(ap, "unknown axis '" + axisName + "'");
                 const std::string o = text(option, ap);
                 if (std::find(axis->options.begin(), axis->options.end(), o) == axis->options.end()) {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/eval/configurations.h"
+#include "facet/eval/scatter_plot.h"
 
 namespace facet::tune {
 namespace {
@@ -54,7 +55,9 @@ json scoredJson(const Scored& s, const TuneReport& r) {
   json beside = json::object();
   for (size_t i = 0; i < r.beside.size() && i < s.besideFragment.size(); ++i) beside[r.beside[i]] = s.besideFragment[i];
   j["fragment_beside"] = beside;
-  j["psnr_db"] = std::isinf(s.result.error.psnr) ? json(nullptr) : json(s.result.error.psnr);
+  // Screened (the first view only): null, and the bound on the whole figure.
+  j["psnr_db"] = std::isinf(s.result.error.psnr) || s.result.psnrAtMost ? json(nullptr) : json(s.result.error.psnr);
+  if (s.result.psnrAtMost) j["psnr_db_at_most"] = *s.result.psnrAtMost;
   j["white_furnace_gain"] = std::isnan(s.result.furnaceGain) ? json(nullptr) : json(s.result.furnaceGain);
   j["pareto"] = s.pareto;
   return j;
@@ -90,7 +93,10 @@ std::string markdownReport(const TuneReport& r) {
         " (docs/tune.md). Error: PSNR against `reference` on the evaluation grid, "
         "both views, mediump rounded to binary16 (`--fp16-emulation`). White furnace: reference " +
         fixed(r.referenceFurnaceGain, 3) + ".\n\n";
-  md += std::to_string(r.candidates) + " candidates costed, " + std::to_string(r.rendered) + " rendered.\n\n";
+  md += std::to_string(r.candidates) + " candidates costed, " + std::to_string(r.rendered) + " rendered (" +
+        std::to_string(r.screened) +
+        " of them only in the first view: the second could not have brought them to an open tier's budget; "
+        "their dB is that bound, ≤).\n\n";
   md +=
       "| tier | budget | before: cost | dB | after: cost | dB | furnace | change "
       "|\n|---|---|--:|--:|--:|--:|--:|---|\n";
@@ -118,7 +124,8 @@ std::string markdownReport(const TuneReport& r) {
             fixed(s.cost.vertex, 3) + " |";
       // append, not `" " + std::string&&`: GCC 12 at -O3 reports a false -Wrestrict on that form.
       for (double b : s.besideFragment) md.append(" ").append(fixed(b, 3)).append(" |");
-      md.append(" ").append(fixed(s.result.error.psnr, 1)).append(" | ").append(fixed(s.result.furnaceGain, 3));
+      md.append(s.result.psnrAtMost ? " ≤ " + fixed(*s.result.psnrAtMost, 1) : " " + fixed(s.result.error.psnr, 1));
+      md.append(" | ").append(fixed(s.result.furnaceGain, 3));
       md.append(" | ").append(s.result.configuration.name).append(" |\n");
     }
   }
@@ -135,6 +142,7 @@ std::string jsonReport(const TuneReport& r) {
   j["reference_white_furnace_gain"] = r.referenceFurnaceGain;
   j["candidates"] = r.candidates;
   j["rendered"] = r.rendered;
+  j["screened"] = r.screened;
   j["tiers"] = json::array();
   for (const TierOutcome& o : r.tiers) {
     json t = json::object();
@@ -153,11 +161,47 @@ std::string jsonReport(const TuneReport& r) {
   return j.dump(2) + "\n";
 }
 
+std::string plotSvg(const TuneReport& r) {
+  eval::ScatterPlot plot;
+  plot.title = r.material + ": PSNR against cost of the rendered candidates (red: Pareto front)";
+  plot.note =
+      "square: a tier as shipped; diamond: tuned (or the best reached); dashed: the budgets; "
+      "hollow: first view only, at its PSNR's bound";
+  plot.xLabel =
+      "cost: " + r.gpu + " cycles per pixel (fragment + " + fixed(r.verticesPerPixel, 2) + " × vertex, docs/tune.md)";
+  plot.yLabel = "PSNR against reference, dB (fp16 emulated, both views)";
+  // The candidates' names are long: tooltips, so that the tiers' labels stay readable.
+  for (const Scored& s : r.front)
+    plot.points.push_back({s.cost.total, s.result.psnrAtMost ? *s.result.psnrAtMost : s.result.error.psnr,
+                           s.result.configuration.name, s.pareto, false, bool(s.result.psnrAtMost)});
+  // One colour per tier (matplotlib's blue, green, purple: none is the front's red).
+  const char* colours[] = {"#1f77b4", "#2ca02c", "#9467bd"};
+  for (size_t t = 0; t < r.tiers.size(); ++t) {
+    const TierOutcome& o = r.tiers[t];
+    const std::string tier = permutations::toString(o.tier);
+    const std::string colour = colours[t % 3];
+    if (o.shipped)
+      plot.marks.push_back({o.shipped->cost.total, o.shipped->result.error.psnr, tier + " as shipped", colour,
+                            eval::PlotMark::Shape::Square});
+    if (o.chosen || o.best) {
+      const Scored& after = o.chosen ? *o.chosen : *o.best;
+      plot.marks.push_back({after.cost.total, after.result.error.psnr,
+                            tier + (o.chosen ? " tuned" : " best reached, misses its budget"), colour,
+                            eval::PlotMark::Shape::Diamond});
+    }
+    plot.lines.push_back({true, o.budget.minPsnrDb, tier + " ≥ " + fixed(o.budget.minPsnrDb, 1) + " dB", colour});
+    if (o.budget.maxCost)
+      plot.lines.push_back({false, *o.budget.maxCost, tier + " cost ≤ " + fixed(*o.budget.maxCost, 3), colour});
+  }
+  return eval::scatterPlotSvg(plot);
+}
+
 std::vector<package::OutputFile> reportFiles(const TuneReport& report, const std::string& outDir) {
   auto bytes = [](const std::string& s) { return std::vector<uint8_t>(s.begin(), s.end()); };
   const std::filesystem::path dir(outDir);
   return {{(dir / "report.md").string(), bytes(markdownReport(report))},
-          {(dir / "report.json").string(), bytes(jsonReport(report))}};
+          {(dir / "report.json").string(), bytes(jsonReport(report))},
+          {(dir / "plot.svg").string(), bytes(plotSvg(report))}};
 }
 
 }  // namespace facet::tune

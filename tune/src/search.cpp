@@ -42,10 +42,13 @@ Scored score(const eval::ConfigurationResult& r, const compiler::GpuCalibration&
   return s;
 }
 
+// Among the fully measured: a screened candidate's PSNR is only bounded.
 void markPareto(std::vector<Scored>* front) {
   for (Scored& a : *front) {
-    a.pareto = true;
+    a.pareto = !a.result.psnrAtMost;
     for (const Scored& b : *front) {
+      if (!a.pareto) break;
+      if (b.result.psnrAtMost) continue;
       const bool noWorse = b.cost.total <= a.cost.total && b.result.error.psnr >= a.result.error.psnr;
       const bool better = b.cost.total < a.cost.total || b.result.error.psnr > a.result.error.psnr;
       if (noWorse && better) {
@@ -228,8 +231,43 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     report.tiers.push_back(std::move(o));
   }
 
+  // A candidate rendered and scored. screen: stop after the first view where the rest could not
+  // lift the PSNR to an open tier's budget (within its cap), so that it would decide no choice.
+  auto render = [&](size_t i, bool screen, Scored* s) {
+    eval::ConfigurationResult r;
+    eval::MeasureOptions how;
+    how.costed = &costed[i];
+    how.images = false;
+    if (screen)
+      how.worthFinishing = [&](double psnrAtMost) {
+        for (const TierOutcome& o : report.tiers)
+          if (!o.chosen && (!o.budget.maxCost || scored[i].cost.total <= *o.budget.maxCost) &&
+              psnrAtMost >= o.budget.minPsnrDb)
+            return true;
+        return false;
+      };
+    // The furnace only where the error would meet an open tier's budget: elsewhere it decides nothing.
+    how.furnaceWanted = [&](const eval::ConfigurationResult& scoredViews) {
+      for (const TierOutcome& o : report.tiers)
+        if (!o.chosen && scoredViews.error.psnr >= o.budget.minPsnrDb) return true;
+      return false;
+    };
+    if (!session->measure(configs[i], &r, error, how)) return false;
+    *s = score(r, *gpu, report);
+    char line[256];
+    if (r.psnrAtMost)
+      std::snprintf(line, sizeof line, "[%zu] %.3f ≤%5.1f dB  %s (first view)", report.rendered + 1, s->cost.total,
+                    *r.psnrAtMost, s->result.configuration.name.c_str());
+    else
+      std::snprintf(line, sizeof line, "[%zu] %.3f  %5.1f dB  %s", report.rendered + 1, s->cost.total,
+                    s->result.error.psnr, s->result.configuration.name.c_str());
+    say(line);
+    return true;
+  };
+
   // Cheapest first; a candidate is rendered only while some tier without a choice could take it
   // (its cost within that tier's cap): the first that meets a tier's budget is its cheapest.
+  std::vector<size_t> frontCandidate;  // report.front[k] is candidate frontCandidate[k]
   for (size_t i : order) {
     bool wanted = false, anyOpen = false;
     for (const TierOutcome& o : report.tiers) {
@@ -239,39 +277,45 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     }
     if (!anyOpen) break;
     if (!wanted) continue;
-    eval::ConfigurationResult r;
-    eval::MeasureOptions how;
-    how.costed = &costed[i];
-    // The furnace only where the error would meet an open tier's budget: elsewhere it decides nothing.
-    how.furnaceWanted = [&](const eval::ConfigurationResult& scoredViews) {
-      for (const TierOutcome& o : report.tiers)
-        if (!o.chosen && scoredViews.error.psnr >= o.budget.minPsnrDb) return true;
-      return false;
-    };
-    if (!session->measure(configs[i], &r, error, how)) return std::nullopt;
-    Scored s = score(r, *gpu, report);
+    Scored s;
+    if (!render(i, options.screen, &s)) return std::nullopt;
     ++report.rendered;
-    char line[256];
-    std::snprintf(line, sizeof line, "[%zu] %.3f  %5.1f dB  %s", report.rendered, s.cost.total, s.result.error.psnr,
-                  s.result.configuration.name.c_str());
-    say(line);
+    frontCandidate.push_back(i);
     for (TierOutcome& o : report.tiers) {
-      if (o.chosen) continue;
-      if (meets(s, o.budget, report.referenceFurnaceGain)) {
-        o.chosen = s;
-        o.chosen->result.configuration.config =
-            withAxesOf(material, o.shipped->result.configuration.config, s.result.configuration.config);
-        // Nothing strictly cheaper than the tier as shipped meets the budget and it does: it stays
-        // (a candidate of equal cost is another spelling of the same shader, e.g. SH bands on a metal).
-        if (s.cost.total >= o.shipped->cost.total && meets(*o.shipped, o.budget, report.referenceFurnaceGain))
-          o.chosen = o.shipped;
-      } else if ((!o.budget.maxCost || s.cost.total <= *o.budget.maxCost) &&
-                 (!o.best || s.result.error.psnr > o.best->result.error.psnr)) {
-        o.best = s;
-      }
+      if (o.chosen || s.result.psnrAtMost || !meets(s, o.budget, report.referenceFurnaceGain)) continue;
+      o.chosen = s;
+      o.chosen->result.configuration.config =
+          withAxesOf(material, o.shipped->result.configuration.config, s.result.configuration.config);
+      // Nothing strictly cheaper than the tier as shipped meets the budget and it does: it stays
+      // (a candidate of equal cost is another spelling of the same shader, e.g. SH bands on a metal).
+      if (s.cost.total >= o.shipped->cost.total && meets(*o.shipped, o.budget, report.referenceFurnaceGain))
+        o.chosen = o.shipped;
     }
     report.front.push_back(std::move(s));
   }
+
+  // A tier without a choice reports the most accurate rendered within its cap (the first of equals,
+  // cheapest first): a screened candidate whose bound reaches the best measured is measured in full.
+  for (TierOutcome& o : report.tiers) {
+    if (o.chosen) continue;
+    auto within = [&](const Scored& s) { return !o.budget.maxCost || s.cost.total <= *o.budget.maxCost; };
+    auto measuredBest = [&]() -> const Scored* {
+      const Scored* best = nullptr;
+      for (const Scored& s : report.front)
+        if (!s.result.psnrAtMost && within(s) && (!best || s.result.error.psnr > best->result.error.psnr)) best = &s;
+      return best;
+    };
+    for (size_t k = 0; k < report.front.size(); ++k) {
+      const Scored* best = measuredBest();
+      const Scored& s = report.front[k];
+      if (!s.result.psnrAtMost || !within(s) || (best && *s.result.psnrAtMost < best->result.error.psnr)) continue;
+      Scored full;
+      if (!render(frontCandidate[k], false, &full)) return std::nullopt;
+      report.front[k] = std::move(full);
+    }
+    if (const Scored* best = measuredBest()) o.best = *best;
+  }
+  for (const Scored& s : report.front) report.screened += s.result.psnrAtMost ? 1 : 0;
   for (TierOutcome& o : report.tiers) {
     if (o.chosen) {
       o.best.reset();

@@ -109,7 +109,7 @@ int run(const TuneArgs& args) {
   options.jobs = args.jobs;
   options.maxChanges = args.maxChanges == "all" ? -1 : std::stoi(args.maxChanges);
   options.eval.grid.pixelsPerSphere = uint32_t(args.spherePixels);
-  options.eval.costCacheDir = args.noCache ? "" : args.cache.empty() ? defaultCacheDir() : args.cache;
+  options.eval.cacheDir = args.noCache ? "" : args.cache.empty() ? defaultCacheDir() : args.cache;
   options.progress = progress;
   std::string message;
   if (!tune::targetGpu(args.gpu, &message)) {
@@ -135,7 +135,8 @@ int run(const TuneArgs& args) {
   std::vector<cli::NamedFile> inputs{{"the input material", args.input}};
   if (!args.budgets.empty()) inputs.push_back({"the --budgets file", args.budgets});
   std::vector<cli::NamedFile> outputs{{"--out", (fs::path(outDir) / "report.md").string()},
-                                      {"--out", (fs::path(outDir) / "report.json").string()}};
+                                      {"--out", (fs::path(outDir) / "report.json").string()},
+                                      {"--out", (fs::path(outDir) / "plot.svg").string()}};
   if (args.write) outputs.push_back({"--write", tune::choicesPath(args.input)});
   if (!cli::outputsSpareInputs(inputs, outputs)) return 1;
 
@@ -147,8 +148,8 @@ int run(const TuneArgs& args) {
   }
   if (!cli::writeOutputs({outDir}, tune::reportFiles(*report, outDir))) return 1;
   const int status = finish(*report, args.input);
-  std::printf("%s: %zu candidates, %zu rendered -> %s/report.md, report.json\n", material->name.c_str(),
-              report->candidates, report->rendered, outDir.c_str());
+  std::printf("%s: %zu candidates, %zu rendered (%zu only in the first view) -> %s/report.md, report.json, plot.svg\n",
+              material->name.c_str(), report->candidates, report->rendered, report->screened, outDir.c_str());
   if (status != 0) {
     if (args.write) cli::printError(tune::choicesPath(args.input) + ": not written: a tier has no choice");
     return status;
@@ -173,7 +174,7 @@ int main(int argc, char** argv) {
   app.add_option("--budgets", args.budgets,
                  "error budgets per tier and material (JSON; examples/lint/tune_budgets.json)");
   app.add_option("--gpu", args.gpu, "the GPU the cost is taken on: mali-g57 (default) or mali-g52");
-  app.add_option("--out", args.out, "folder for report.md and report.json (default: <input stem>.tune)");
+  app.add_option("--out", args.out, "folder for report.md, report.json and plot.svg (default: <input stem>.tune)");
   app.add_flag("--write", args.write, "record the chosen tiers in <input stem>.tuning.json beside the material");
   app.add_flag("--check", args.check,
                "re-score the tiers recorded in <input stem>.tuning.json against the budgets; fail with the figures");

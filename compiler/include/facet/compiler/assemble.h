@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "facet/abi/shader_abi.h"
 #include "facet/compiler/param_layout.h"
@@ -71,5 +72,10 @@ std::string uniformBlockDeclaration(Flavour flavour, const abi::BlockDesc& block
 // resolved (matc eval's BRDF-domain sweep runs it in a compute shader). The LUT lobe reads the
 // sampler `facet_specularLut` (kSpecularLutSamplerName), which the caller declares.
 bool specularLobeSource(permutations::SpecularModel model, std::string* out, std::string* error);
+
+// The named chunks (e.g. "clear_coat_ggx_kelemen.glsl") in order, includes resolved, without a
+// material: for the lobes of the material models, whose chunks read a MaterialInputs the caller
+// declares first (matc eval's sweep of the clear coat, anisotropy and sheen lobes).
+bool chunkSource(const std::vector<std::string>& names, std::string* out, std::string* error);
 
 }  // namespace facet::compiler

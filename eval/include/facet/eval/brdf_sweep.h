@@ -5,6 +5,7 @@
 // grazing angles and the roughness floor included, and at fp16 where the tier runs mediump.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,8 @@ struct BrdfSweepDomain {
 // see beyondHalf). Rows are weighed equally (the smooth rows' peaks would
 // otherwise outweigh every rough one).
 struct BrdfSweepRow {
-  std::string lobe;                         // "ggx_smith", "ggx_fastv", "zioma", "lut"
-  std::string precision;                    // "highp (fp32)" or "mediump (fp16 emulated)"
+  std::string lobe;       // "ggx_smith", "ggx_fastv", "zioma", "lut"; the material models' (lobe_sweep.h)
+  std::string precision;  // "highp (fp32)" or "mediump (fp16 emulated)"
   std::vector<std::string> configurations;  // the measured configurations this row stands for
   std::vector<double> roughness;            // the rows' perceptual roughness
   std::vector<double> rowRelativeRmse;      // per row
@@ -46,6 +47,11 @@ struct BrdfSweepRow {
   // Samples left out of the errors: the exact lobe exceeds binary16's 65504 there (the roughness
   // floor near the grazing mirror), where every mediump lobe saturates by design.
   int beyondHalf = 0;
+  // The material models' mediump lobes (lobe_sweep.h): PSNR of the fp16-emulated chunk against
+  // its highp form over the model's hard cases, and what they are; NaN where not measured,
+  // +infinity where identical.
+  double hardCasePsnr = std::numeric_limits<double>::quiet_NaN();
+  std::string hardCase;
 };
 
 // Sweeps every (lobe, precision) pair among `configurations` once, in configuration order.

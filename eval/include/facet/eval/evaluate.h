@@ -13,6 +13,7 @@
 #include "facet/eval/brdf_sweep.h"
 #include "facet/eval/configurations.h"
 #include "facet/eval/grid_scene.h"
+#include "facet/eval/lobe_sweep.h"
 #include "facet/eval/metrics.h"
 #include "facet/gpu_stats/mesa_compile.h"
 #include "facet/ir/module.h"
@@ -41,9 +42,10 @@ struct EvalOptions {
   // (AmbientModel::Sampled), and the same at a quarter of the points against it. 0: off.
   int groundTruthSamples = 0;
   std::function<void(const std::string&)> progress;  // one line per configuration, if set
-  // A variant cache (compiler::BuildOptions::cacheDir) for Session::cost()'s builds: `matc tune`
-  // costs every candidate, and a second run finds them there. "": none.
-  std::string costCacheDir;
+  // A variant cache (compiler::BuildOptions::cacheDir) for a Session's builds, Session::cost()'s
+  // and the rendered ones: `matc tune` builds every candidate, and a second run finds them there.
+  // "": none.
+  std::string cacheDir;
 };
 
 // `reference` renders views whose sun casts with this atlas size, whatever the scene's: the other
@@ -89,6 +91,9 @@ struct ConfigurationResult {
   // The GLSL ES 3.00 pair of variantKey as shipped, for per-GPU figures (addGpuFigures); empty
   // for a configuration with the same maths as an earlier one.
   std::vector<gpu_stats::ShaderPair> glslEs;
+  // Set when Session::measure() stopped after the first views (MeasureOptions::worthFinishing):
+  // `error` is theirs, and this bounds the PSNR all the views together could have reached.
+  std::optional<double> psnrAtMost;
 };
 
 // A furnace gain above this factor is flagged as energy gain: the RGBA16F target and the
@@ -126,6 +131,11 @@ struct EvalReport {
   // materials or with EvalOptions::brdfSweep off.
   std::vector<BrdfSweepRow> brdfSweep;
   BrdfSweepDomain brdfDomain;  // what the sweep sampled
+  // The lobes of the material models it writes (clear coat, anisotropy, sheen: lobe_sweep.h) over
+  // the same domain, and their white furnace; empty for a material that writes none.
+  std::vector<BrdfSweepRow> modelLobeSweep;
+  std::vector<LobeFurnaceRow> lobeFurnace;
+  LobeFurnaceDomain furnaceDomain;
 };
 
 struct EvalError {
@@ -141,6 +151,12 @@ struct MeasureOptions {
   // Called after the views are scored; false: the white furnace is not rendered (furnaceGain NaN),
   // e.g. for an error no budget would take.
   std::function<bool(const ConfigurationResult&)> furnaceWanted;
+  // Called after each view but the last with the highest PSNR all the views together could reach
+  // (ErrorAccumulator::psnrAtMost, every pixel of the views still to render counted as covered and
+  // exact); false: the rest and the furnace are not rendered (ConfigurationResult::psnrAtMost).
+  std::function<bool(double psnrAtMost)> worthFinishing;
+  // Encode each view's image as PNG (ViewResult::png); `matc tune` writes none.
+  bool images = true;
 };
 
 // One evaluation's renderer, views and `reference`'s images, for measuring configurations one at a

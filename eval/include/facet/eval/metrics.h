@@ -34,6 +34,11 @@ class ErrorAccumulator {
   void add(const std::vector<uint8_t>& ldr, const std::vector<uint8_t>& referenceLdr, const std::vector<float>& hdr,
            const std::vector<float>& referenceHdr, const std::vector<bool>& mask = {});
   ImageMetrics metrics() const;
+  // The highest PSNR metrics() can report once at most `morePixels` more pixels are added: their
+  // squared error is at least 0, so the mean squared error is at least the sum so far over all the
+  // values. Both are the same rounded operations on a sum that only grows and a count that only
+  // shrinks, so metrics().psnr never exceeds it, however the pixels turn out.
+  double psnrAtMost(size_t morePixels) const;
 
  private:
   std::array<uint64_t, 256> histogram_{};  // |difference| of 8-bit values

@@ -1,5 +1,5 @@
 // `matc tune`'s report: report.md (per tier before and after, and the front of the rendered
-// candidates) and report.json with the same figures (docs/tune.md).
+// candidates), report.json with the same figures and plot.svg (docs/tune.md).
 #pragma once
 
 #include <string>
@@ -15,6 +15,9 @@ std::vector<std::string> summaryLines(const TuneReport& report);
 
 std::string markdownReport(const TuneReport& report);
 std::string jsonReport(const TuneReport& report);
+// Every rendered candidate's PSNR against its cost, the front, each tier before and after (marked
+// and labelled) and the budgets as lines: eval's plot (eval/scatter_plot.h).
+std::string plotSvg(const TuneReport& report);
 std::vector<package::OutputFile> reportFiles(const TuneReport& report, const std::string& outDir);
 
 }  // namespace facet::tune

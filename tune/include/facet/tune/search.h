@@ -55,6 +55,10 @@ struct TuneOptions {
   int maxChanges = 2;
   // The space searched instead, when not empty. Tests search a few.
   std::vector<permutations::TierConfig> space;
+  // Render a candidate's second view and furnace only where the first view's error leaves it able
+  // to meet an open tier's budget (eval::MeasureOptions::worthFinishing). The choice and every
+  // reported figure of a fully measured candidate are the same either way; false renders all of it.
+  bool screen = true;
   eval::EvalOptions eval;  // the grid; fp16 emulation is turned on, timing and the BRDF sweep off
   std::function<void(const std::string&)> progress;
 };
@@ -63,7 +67,7 @@ struct Scored {
   eval::ConfigurationResult result;
   Cost cost;
   std::vector<double> besideFragment;  // the other calibrated GPUs' fragment estimates, in TuneReport::beside order
-  bool pareto = false;                 // among the rendered: nothing both cheaper and more accurate
+  bool pareto = false;                 // among the fully measured: nothing both cheaper and more accurate
 };
 
 struct TierOutcome {
@@ -82,8 +86,9 @@ struct TuneReport {
   double verticesPerPixel = 0;
   double referenceFurnaceGain = 0;
   size_t candidates = 0, rendered = 0;
+  size_t screened = 0;  // of the rendered, stopped after the first view (ConfigurationResult::psnrAtMost)
   std::vector<TierOutcome> tiers;
-  std::vector<Scored> front;  // every rendered candidate, in cost order
+  std::vector<Scored> front;  // every rendered candidate, in cost order, the screened ones too
 };
 
 // A configuration meets a budget: its PSNR, its furnace figure (against reference's) and its cost.
