@@ -87,9 +87,10 @@ class Checker {
             "unknown-name");
   }
 
-  // `specularAntiAliasing { variance v threshold t }`: both optional (Filament's defaults, 0.15 and
-  // 0.2), each a constant in [0, 1]: σ² = variance · |∇n|² and the α² it adds is at most threshold,
-  // and α² itself is at most 1 (chunks/specular_antialiasing.glsl).
+  // `specularAntiAliasing { variance v threshold t }`: both optional (defaults 0.02, the variance
+  // measured in docs/material-models.md, and Filament's 0.2), each a constant in [0, 1]:
+  // σ² = variance · |∇n|² and the α² it adds is at most threshold, and α² itself is at most 1
+  // (chunks/specular_antialiasing.glsl).
   void checkSpecularAntiAliasing(const ast::Material& src) {
     if (material_.shading == "unlit") {
       error(src.specularAntiAliasingLoc,
@@ -123,7 +124,7 @@ class Checker {
       if (c->type != Type::Float || c->constant[0] < 0.0 || c->constant[0] > 1.0) {
         error(setting.value->loc,
               "'" + setting.name + "' is a number in [0, 1]" +
-                  (setting.name == "variance" ? " (Filament's default 0.15)" : " (Filament's default 0.2)"),
+                  (setting.name == "variance" ? " (default 0.02)" : " (Filament's default 0.2)"),
               "range");
         ok = false;
         continue;

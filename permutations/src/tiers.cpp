@@ -62,8 +62,10 @@ TierConfig preset(Tier tier) {
   // it, for 1.1 and 0.5 dB on painted_tiles: dropped. Multi-bounce AO is kept at its full cost:
   // without it they lose 14.3 and 10.2 dB there (docs/material-models.md).
   if (tier == Tier::Mid || tier == Tier::Low) config.specularOcclusion = SpecularOcclusionModel::Ao;
-  // mid and low: specular anti-aliasing costs them its derivatives and, on the hammered floor
-  // against 16 samples per pixel, measured no gain to buy (docs/material-models.md): dropped.
+  // mid and low: specular anti-aliasing costs them its derivatives (+0.3 Mali-G57 cycles). Against
+  // 16 samples per pixel (docs/material-models.md) mid gains on the outdoor hammered floor (+2 dB
+  // at variance 0.02) and loses on the glint floor (a delta light's sub-pixel glints, -4.5 dB);
+  // low loses on both (its table's ceiling): dropped, mid for its cost.
   if (tier == Tier::Mid || tier == Tier::Low) config.specularAntiAliasing = SpecularAntiAliasingModel::None;
   return config;
 }

@@ -4,8 +4,9 @@
 // surface whose normal does not vary exactly as it was (the kernel is 0 there: no bias on flat
 // floors), and on the floor it is for (tests/data/scenes/hammered_floor_sky.json: an outdoor sky's
 // environment and a sun whose glints stay below the tone curve's white) the floor aliases without
-// it and the example's variance (0.04, a pixel's footprint) brings it closer to the reference, keeps its light and
-// flickers less. docs/material-models.md reports the figures, and those of the floor where it loses.
+// it and the example's variance (0.02, the language's default) brings it closer to the reference,
+// keeps its light and flickers less. docs/material-models.md reports the figures, and those of the floor where it
+// loses.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -84,11 +85,12 @@ TEST(SpecularAntiAliasing, IsMeasuredAgainstSixteenSamplesOnVulkan) {
   EXPECT_LT(without.psnr, 35.0);
   EXPECT_GT(without.flickerBeyondReference, 0.3);
   EXPECT_NEAR(without.specularRatio, 1.0, 0.02);
-  // The example's variance 0.04: measured 0.9783 of the light, +1.30 dB, 0.4192 steps of
-  // flicker beyond the reference's. The kernel doubled (variance 0.08) keeps 0.9538 and zeroed gains
-  // nothing: the bounds below hold neither.
-  EXPECT_NEAR(with.specularRatio, 1.0, 0.03);
-  EXPECT_GT(with.psnr, without.psnr + 0.6);
+  // The example's variance 0.02, held to the goals it ships for: measured 0.9932 of the light,
+  // +0.98 dB and 0.4234 steps of flicker beyond the reference's (0.0079 fewer). The kernel doubled
+  // (variance 0.04, a pixel's box footprint) keeps 0.9783 of the light and zeroed gains nothing:
+  // the bounds below hold neither.
+  EXPECT_NEAR(with.specularRatio, 1.0, 0.02);
+  EXPECT_GT(with.psnr, without.psnr + 0.8);
   EXPECT_LT(with.flickerBeyondReference, without.flickerBeyondReference - 0.005);
   for (const std::string& e : backend->validationErrors()) ADD_FAILURE() << "validation: " << e;
 }

@@ -54,7 +54,7 @@ struct TierOverride {
   SourceLoc optionLoc;
 };
 
-// One setting of a header block, `name value` (`variance 0.15` in `specularAntiAliasing { }`).
+// One setting of a header block, `name value` (`variance 0.02` in `specularAntiAliasing { }`).
 struct Setting {
   std::string name;
   SourceLoc loc;

@@ -117,7 +117,7 @@ vec3 shading_energy_compensation=vec3(1.0);
 float specular_aa_roughness(float perceptualRoughness,vec3 normal){
 highp vec3 du=dFdx(normal);
 highp vec3 dv=dFdy(normal);
-highp float variance=0.04*(dot(du,du)+dot(dv,dv));
+highp float variance=0.02*(dot(du,du)+dot(dv,dv));
 highp float alpha=perceptualRoughness*perceptualRoughness;
 highp float kernel=min(2.0*variance,0.2);
 return sqrt(sqrt(min(alpha*alpha+kernel,1.0)));

@@ -72,7 +72,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _661 = dfdy(float3(_1033));
     half _672 = _649 * _649;
     half3 _790 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1033.y)) + (half4(frame.sh[2]).xyz * _1033.z)) + (half4(frame.sh[3]).xyz * _1033.x)) + (((((half4(frame.sh[4]).xyz * (_1033.x * _1033.y)) + (half4(frame.sh[5]).xyz * (_1033.y * _1033.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1033.z, _1033.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1033.x * _1033.z))) + (half4(frame.sh[8]).xyz * fma(_1033.x, _1033.x, half(-float(_1033.y * _1033.y))))), half3(float3(0.0)));
-    half _873 = clamp(half(sqrt(sqrt(fast::min(fma(float(_672), float(_672), fast::min((dot(_659, _659) + dot(_661, _661)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
+    half _873 = clamp(half(sqrt(sqrt(fast::min(fma(float(_672), float(_672), fast::min((dot(_659, _659) + dot(_661, _661)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
     float4 _880 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1033, half3(_503)), half(9.9999997473787516355514526367188e-05)), _873)), level(0.0));
     float4 _906 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_503), _1033)), level(_873 * half(4.0)));
     out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), _790, half4(_906).xyz * (mix(half4(_880).xxx, half4(_880).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_880).y) - half(1.0)))))), half(1.0)));

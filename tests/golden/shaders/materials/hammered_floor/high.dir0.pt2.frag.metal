@@ -72,7 +72,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _1072 = dfdy(float3(_2147));
     half _1083 = _1060 * _1060;
     half3 _1201 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _2147.y)) + (half4(frame.sh[2]).xyz * _2147.z)) + (half4(frame.sh[3]).xyz * _2147.x)) + (((((half4(frame.sh[4]).xyz * (_2147.x * _2147.y)) + (half4(frame.sh[5]).xyz * (_2147.y * _2147.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _2147.z, _2147.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_2147.x * _2147.z))) + (half4(frame.sh[8]).xyz * fma(_2147.x, _2147.x, half(-float(_2147.y * _2147.y))))), half3(float3(0.0)));
-    half _1284 = clamp(half(sqrt(sqrt(fast::min(fma(float(_1083), float(_1083), fast::min((dot(_1070, _1070) + dot(_1072, _1072)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
+    half _1284 = clamp(half(sqrt(sqrt(fast::min(fma(float(_1083), float(_1083), fast::min((dot(_1070, _1070) + dot(_1072, _1072)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
     half _1251 = max(dot(_2147, half3(_877)), half(9.9999997473787516355514526367188e-05));
     float4 _1291 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1251, _1284)), level(0.0));
     half3 _1310 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1291).y) - half(1.0)));

@@ -72,7 +72,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _953 = dfdy(float3(_1570));
     half _964 = _941 * _941;
     half3 _1082 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1570.y)) + (half4(frame.sh[2]).xyz * _1570.z)) + (half4(frame.sh[3]).xyz * _1570.x)) + (((((half4(frame.sh[4]).xyz * (_1570.x * _1570.y)) + (half4(frame.sh[5]).xyz * (_1570.y * _1570.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1570.z, _1570.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1570.x * _1570.z))) + (half4(frame.sh[8]).xyz * fma(_1570.x, _1570.x, half(-float(_1570.y * _1570.y))))), half3(float3(0.0)));
-    half _1165 = clamp(half(sqrt(sqrt(fast::min(fma(float(_964), float(_964), fast::min((dot(_951, _951) + dot(_953, _953)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
+    half _1165 = clamp(half(sqrt(sqrt(fast::min(fma(float(_964), float(_964), fast::min((dot(_951, _951) + dot(_953, _953)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
     half _1132 = max(dot(_1570, half3(_774)), half(9.9999997473787516355514526367188e-05));
     float4 _1172 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1132, _1165)), level(0.0));
     half3 _1191 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1172).y) - half(1.0)));

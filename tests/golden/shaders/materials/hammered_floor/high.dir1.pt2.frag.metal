@@ -72,7 +72,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _1093 = dfdy(float3(_2413));
     half _1104 = _1081 * _1081;
     half3 _1222 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _2413.y)) + (half4(frame.sh[2]).xyz * _2413.z)) + (half4(frame.sh[3]).xyz * _2413.x)) + (((((half4(frame.sh[4]).xyz * (_2413.x * _2413.y)) + (half4(frame.sh[5]).xyz * (_2413.y * _2413.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _2413.z, _2413.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_2413.x * _2413.z))) + (half4(frame.sh[8]).xyz * fma(_2413.x, _2413.x, half(-float(_2413.y * _2413.y))))), half3(float3(0.0)));
-    half _1305 = clamp(half(sqrt(sqrt(fast::min(fma(float(_1104), float(_1104), fast::min((dot(_1091, _1091) + dot(_1093, _1093)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
+    half _1305 = clamp(half(sqrt(sqrt(fast::min(fma(float(_1104), float(_1104), fast::min((dot(_1091, _1091) + dot(_1093, _1093)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
     half _1272 = max(dot(_2413, half3(_877)), half(9.9999997473787516355514526367188e-05));
     float4 _1312 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1272, _1305)), level(0.0));
     half3 _1331 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1312).y) - half(1.0)));

@@ -70,7 +70,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _656 = dfdx(_1029);
     float3 _658 = dfdy(_1029);
     float _669 = _647 * _647;
-    float _869 = fast::clamp(sqrt(sqrt(fast::min(fma(_669, _669, fast::min((dot(_656, _656) + dot(_658, _658)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
+    float _869 = fast::clamp(sqrt(sqrt(fast::min(fma(_669, _669, fast::min((dot(_656, _656) + dot(_658, _658)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
     float4 _876 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_1029, _501), 9.9999997473787516355514526367188e-05), _869), level(0.0));
     float3 _911 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1029.y)) + (frame.sh[2].xyz * _1029.z)) + (frame.sh[3].xyz * _1029.x)) + (((((frame.sh[4].xyz * (_1029.x * _1029.y)) + (frame.sh[5].xyz * (_1029.y * _1029.z))) + (frame.sh[6].xyz * fma(3.0 * _1029.z, _1029.z, -1.0))) + (frame.sh[7].xyz * (_1029.x * _1029.z))) + (frame.sh[8].xyz * fma(_1029.x, _1029.x, -(_1029.y * _1029.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_501, _1029), level(_869 * 4.0)).xyz * (mix(_876.xxx, _876.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _876.y) - 1.0)))));
     out.fragColor = float4(_911, 1.0);

@@ -168,7 +168,7 @@ return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 float specular_aa_roughness(float perceptualRoughness,vec3 normal){
 highp vec3 du=dFdx(normal);
 highp vec3 dv=dFdy(normal);
-highp float variance=0.04*(dot(du,du)+dot(dv,dv));
+highp float variance=0.02*(dot(du,du)+dot(dv,dv));
 highp float alpha=perceptualRoughness*perceptualRoughness;
 highp float kernel=min(2.0*variance,0.2);
 return sqrt(sqrt(min(alpha*alpha+kernel,1.0)));

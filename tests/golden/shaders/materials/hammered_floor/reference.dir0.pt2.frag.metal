@@ -70,7 +70,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _1058 = dfdx(_2116);
     float3 _1060 = dfdy(_2116);
     float _1071 = _1049 * _1049;
-    float _1271 = fast::clamp(sqrt(sqrt(fast::min(fma(_1071, _1071, fast::min((dot(_1058, _1058) + dot(_1060, _1060)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
+    float _1271 = fast::clamp(sqrt(sqrt(fast::min(fma(_1071, _1071, fast::min((dot(_1058, _1058) + dot(_1060, _1060)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
     float _1238 = fast::max(dot(_2116, _866), 9.9999997473787516355514526367188e-05);
     float4 _1278 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1238, _1271), level(0.0));
     float3 _1297 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1278.y) - 1.0));

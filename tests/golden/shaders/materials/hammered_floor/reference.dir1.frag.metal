@@ -70,7 +70,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _943 = dfdx(_1556);
     float3 _945 = dfdy(_1556);
     float _956 = _934 * _934;
-    float _1156 = fast::clamp(sqrt(sqrt(fast::min(fma(_956, _956, fast::min((dot(_943, _943) + dot(_945, _945)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
+    float _1156 = fast::clamp(sqrt(sqrt(fast::min(fma(_956, _956, fast::min((dot(_943, _943) + dot(_945, _945)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
     float _1123 = fast::max(dot(_1556, _767), 9.9999997473787516355514526367188e-05);
     float4 _1163 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1123, _1156), level(0.0));
     float3 _1182 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1163.y) - 1.0));

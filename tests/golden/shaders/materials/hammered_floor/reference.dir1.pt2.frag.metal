@@ -70,7 +70,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float3 _1079 = dfdx(_2377);
     float3 _1081 = dfdy(_2377);
     float _1092 = _1070 * _1070;
-    float _1292 = fast::clamp(sqrt(sqrt(fast::min(fma(_1092, _1092, fast::min((dot(_1079, _1079) + dot(_1081, _1081)) * 0.07999999821186065673828125, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
+    float _1292 = fast::clamp(sqrt(sqrt(fast::min(fma(_1092, _1092, fast::min((dot(_1079, _1079) + dot(_1081, _1081)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0))), 0.08900000154972076416015625, 1.0);
     float _1259 = fast::max(dot(_2377, _866), 9.9999997473787516355514526367188e-05);
     float4 _1299 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1259, _1292), level(0.0));
     float3 _1318 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1299.y) - 1.0));
