@@ -807,6 +807,12 @@ TEST(Tiers, SpecularAntiAliasingOnlyWhereAskedAndDroppedTiersAreTheMaterialWitho
   EXPECT_EQ(spirvOf(*highDropped, "high.dir1", Stage::Fragment), spirvOf(*without, "high.dir1", Stage::Fragment));
   EXPECT_EQ(spirvOf(*highDropped, "reference.dir1", Stage::Fragment),
             spirvOf(*with, "reference.dir1", Stage::Fragment));
+  // The item without settings: variance 0.02 (the measured default) and Filament's threshold 0.2.
+  auto defaults = facet::test::buildText("material m { specularAntiAliasing" + body);
+  auto shipped = facet::test::buildText("material m { specularAntiAliasing { variance 0.02 threshold 0.2 }" + body);
+  ASSERT_TRUE(defaults && shipped);
+  EXPECT_EQ(spirvOf(*defaults, "high.dir1", Stage::Fragment), spirvOf(*shipped, "high.dir1", Stage::Fragment));
+  EXPECT_NE(spirvOf(*defaults, "high.dir1", Stage::Fragment), spirvOf(*with, "high.dir1", Stage::Fragment));
 }
 
 // The sheen layer over the standard model (docs/material-models.md, "Sheen layer"): only in variants
