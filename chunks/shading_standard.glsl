@@ -63,8 +63,10 @@ vec3 material_f0(MaterialInputs material) {
 #endif
 }
 
+// With FACET_SPECULAR_AA the roughness is widened per pixel (specular_antialiasing.glsl, written
+// back into material.roughness by main()): the preshaded value is not the one to shade with.
 float material_perceptual_roughness(MaterialInputs material) {
-#if defined(FACET_PRESHADED_ROUGHNESS)
+#if defined(FACET_PRESHADED_ROUGHNESS) && !defined(FACET_SPECULAR_AA)
     return params.facet_perceptualRoughness;
 #else
     return clamp(material.roughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
@@ -73,7 +75,7 @@ float material_perceptual_roughness(MaterialInputs material) {
 
 // α = r² (Filament PBR document §4.8: perceptual roughness remapped to the lobes' α).
 float material_alpha(MaterialInputs material) {
-#if defined(FACET_PRESHADED_ROUGHNESS)
+#if defined(FACET_PRESHADED_ROUGHNESS) && !defined(FACET_SPECULAR_AA)
     return params.facet_alpha;
 #else
     float perceptualRoughness = material_perceptual_roughness(material);

@@ -56,6 +56,9 @@
 #include "sheen_charlie_neubelt.glsl"
 #endif
 #include "shading_standard.glsl"
+#if defined(FACET_SPECULAR_AA)
+#include "specular_antialiasing.glsl"
+#endif
 #if defined(FACET_IBL_SAMPLED)
 #include "ibl_sampled.glsl"
 #endif
@@ -123,6 +126,11 @@ void main() {
     // vertex.normal reads in the surface program saw the interpolated normal; shading uses the
     // mapped one. Per-vertex diffuse (mid, low) was lit before any map: it keeps the vertex normal.
     shading_normal = tangent_to_world(material.normal);
+#endif
+#if defined(FACET_SPECULAR_AA)
+    // The shading normal is final: its screen-space derivatives are taken here, in main()'s uniform
+    // control flow, never in the surface program (the language has no derivative to misuse).
+    material.roughness = specular_aa_roughness(material_perceptual_roughness(material), shading_normal);
 #endif
 #if defined(FACET_ANISOTROPY)
     // The brushing's frame about the final shading normal, before the ambient and the lights.

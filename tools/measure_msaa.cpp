@@ -23,11 +23,8 @@
 //    16-sample reference.
 //
 // Usage: measure_msaa SCENE PACKAGES [--backend vulkan|gl]   (prints Markdown; deterministic)
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,28 +32,14 @@
 #include "facet/eval/metrics.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/scene_frame.h"
+#include "supersample.h"
 
 namespace {
 
 using namespace facet::runtime;
-
-double decode(double encoded) {
-  const double c = encoded / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-// chunks/srgb.glsl, then the UNORM target's rounding.
-uint8_t encode(double linear) {
-  const double c = std::clamp(linear, 0.0, 1.0);
-  const double e = c < 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return uint8_t(std::lround(e * 255.0));
-}
-
-// chunks/tonemap_aces.glsl (Narkowicz's fit).
-double aces(double x) {
-  x = std::clamp(x, 0.0, 160.0);
-  return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
+using facet::supersample::downsampleLdr;
+using facet::supersample::render;
+using facet::supersample::resolveThenToneMap;
 
 // portable (Vulkan): multisampled attachments instead of VK_EXT_multisampled_render_to_single_sampled,
 // with the post subpass tone mapping each sample (toneMapSamples) or reading the resolve.
@@ -81,61 +64,6 @@ std::unique_ptr<RenderBackend> makeBackend(const std::string& api, uint32_t samp
   options.renderToSingleSampled = !portable.on;
   options.toneMapSamples = portable.toneMapSamples;
   return createVulkanBackend(options, error);
-}
-
-bool render(RenderBackend& backend, Scene scene, uint32_t scale, double shiftPixels, const std::string& packages,
-            FrameResult* out, std::string* error) {
-  const Camera& c = scene.camera;
-  const glm::dvec3 forward = c.target - c.position;
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, c.up));
-  const double pixel = 2.0 * glm::length(forward) * std::tan(glm::radians(c.fovYDegrees) / 2) / scene.height;
-  scene.camera.position += right * shiftPixels * pixel;
-  scene.camera.target += right * shiftPixels * pixel;
-  scene.width *= scale;
-  scene.height *= scale;
-  auto frame = SceneFrame::prepare(scene, packages, error);
-  return frame && backend.render(frame->frame(), out, error);
-}
-
-// Each `scale`×`scale` block's values of one channel, read by value(index into the big image's
-// RGBA values), averaged, and written by finish(mean).
-template <typename Value, typename Finish>
-std::vector<uint8_t> downsample(const FrameResult& big, uint32_t scale, Value value, Finish finish) {
-  const uint32_t w = big.width / scale, h = big.height / scale;
-  std::vector<uint8_t> out(size_t{w} * h * 4, 255);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x)
-      for (int ch = 0; ch < 3; ++ch) {
-        double sum = 0;
-        for (uint32_t j = 0; j < scale; ++j)
-          for (uint32_t i = 0; i < scale; ++i)
-            sum += value(((size_t{y} * scale + j) * big.width + x * scale + i) * 4 + ch);
-        out[(size_t{y} * w + x) * 4 + ch] = finish(sum / (scale * scale));
-      }
-  return out;
-}
-
-// The 8-bit output averaged in linear light.
-std::vector<uint8_t> downsampleLdr(const FrameResult& big, uint32_t scale) {
-  return downsample(
-      big, scale, [&](size_t i) { return decode(big.ldr[i]); }, encode);
-}
-
-// The HDR samples averaged, then tone-mapped and encoded (resolve first).
-std::vector<uint8_t> resolveThenToneMap(const FrameResult& big, uint32_t scale) {
-  return downsample(
-      big, scale, [&](size_t i) { return double(big.hdr[i]); }, [](double mean) { return encode(aces(mean)); });
-}
-
-double meanAbsDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (i % 4 == 3) continue;
-    sum += std::abs(int(a[i]) - int(b[i]));
-    ++n;
-  }
-  return sum / double(n);
 }
 
 int fail(const std::string& message) {
@@ -239,20 +167,8 @@ int main(int argc, char** argv) {
   if (!sweep(*one, 4, &truth)) return fail(error);
   const auto report = [&](const char* what, const std::vector<std::vector<uint8_t>>& frames) {
     double change = 0, excess = 0;
-    for (int k = 0; k + 1 < kSteps; ++k) {
-      change += meanAbsDifference(frames[k + 1], frames[k]);
-      double sum = 0;
-      size_t n = 0;
-      for (size_t i = 0; i < frames[k].size(); ++i) {
-        if (i % 4 == 3) continue;
-        const int d = int(frames[k + 1][i]) - int(frames[k][i]);
-        const int t = int(truth[k + 1][i]) - int(truth[k][i]);
-        sum += std::abs(d - t);
-        ++n;
-      }
-      excess += sum / double(n);
-    }
-    std::printf("| %s | %.4f | %.4f |\n", what, change / (kSteps - 1), excess / (kSteps - 1));
+    facet::supersample::flicker(frames, truth, &change, &excess);
+    std::printf("| %s | %.4f | %.4f |\n", what, change, excess);
   };
   std::printf(
       "Flicker over %d camera positions 1/%d pixel apart: mean |frame-to-frame difference| and mean |that "

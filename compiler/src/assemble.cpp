@@ -80,6 +80,13 @@ bool shadesAnisotropy(const AssemblyInput& in) {
   return writesAnisotropy(in) && in.tier.anisotropy != permutations::AnisotropyModel::None;
 }
 
+// A material asking for specular anti-aliasing (lit or cloth: the checker rejects it in unlit ones);
+// the tier says in which form, or drops it (permutations::SpecularAntiAliasingModel).
+bool shadesSpecularAntiAliasing(const AssemblyInput& in) {
+  return in.material.shading == "lit" && in.material.specularAntiAliasing &&
+         in.tier.specularAntiAliasing != permutations::SpecularAntiAliasingModel::None;
+}
+
 // `shading cloth`: a lit material shaded by the cloth model (chunks/shading_cloth.glsl).
 bool shadesCloth(const AssemblyInput& in) { return in.material.shading == "lit" && in.material.cloth; }
 
@@ -265,6 +272,20 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     if (in.tier.sheen != permutations::SheenModel::None) s += "#define FACET_SHEEN_AMBIENT 1\n";
     if (in.material.surface.outputs.count("sheenColor") > 0) s += "#define FACET_MATERIAL_SHEEN_COLOR 1\n";
     if (in.material.surface.outputs.count("subsurfaceColor") > 0) s += "#define FACET_MATERIAL_SUBSURFACE_COLOR 1\n";
+  }
+  // Fragment stage only: the vertex stage reads no roughness.
+  if (in.material.shading == "lit" && in.material.specularAntiAliasing && std::string_view(stage) == "fragment") {
+    const ir::Material::SpecularAntiAliasing& aa = *in.material.specularAntiAliasing;
+    const bool shaded = shadesSpecularAntiAliasing(in);
+    s += "// Specular anti-aliasing: " +
+         std::string(permutations::kSpecularAntiAliasingModelNames[int(in.tier.specularAntiAliasing)]) +
+         (shaded ? ", the lobe widened by the shading normal's screen-space variance" : ", dropped in this tier") +
+         " (docs/material-models.md).\n";
+    if (shaded) {
+      s += "#define FACET_SPECULAR_AA 1\n#define FACET_SPECULAR_AA_VARIANCE " +
+           ir::glslConstant(ir::Type::Float, {aa.variance}) + "\n#define FACET_SPECULAR_AA_THRESHOLD " +
+           ir::glslConstant(ir::Type::Float, {aa.threshold}) + "\n";
+    }
   }
   if (writesSheenLayer(in)) {
     const char* forms[] = {"Charlie's D with Neubelt's V per light and its environment",

@@ -105,6 +105,15 @@ const std::vector<Axis>& axes() {
        [](const ir::Material& m) {
          return m.shading == "lit" && (m.cloth || m.surface.outputs.count("sheenColor") > 0);
        }},
+      {"specular_aa",
+       {std::begin(permutations::kSpecularAntiAliasingModelNames),
+        std::end(permutations::kSpecularAntiAliasingModelNames)},
+       [](const TierConfig& c) {
+         return std::string(permutations::kSpecularAntiAliasingModelNames[int(c.specularAntiAliasing)]);
+       },
+       [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "specular_aa", o); },
+       nullptr,
+       [](const ir::Material& m) { return m.shading == "lit" && m.specularAntiAliasing.has_value(); }},
   };
   return list;
 }

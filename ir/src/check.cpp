@@ -25,6 +25,7 @@ class Checker {
   std::optional<Material> run(const ast::Material& src) {
     material_.name = src.name;
     checkHeader(src);
+    if (src.hasSpecularAntiAliasing) checkSpecularAntiAliasing(src);
     for (size_t i = 0; i < src.params.size(); ++i) {
       if (i == kMaxParams)
         error(src.params[i].loc, "a material has at most " + std::to_string(kMaxParams) + " parameters", "limit");
@@ -84,6 +85,53 @@ class Checker {
       error(src.blendingLoc,
             "unknown blending mode '" + src.blending + "'" + suggestion(closestMatch(src.blending, blendings)),
             "unknown-name");
+  }
+
+  // `specularAntiAliasing { variance v threshold t }`: both optional (defaults 0.02, the variance
+  // measured in docs/material-models.md, and Filament's 0.2), each a constant in [0, 1]:
+  // σ² = variance · |∇n|² and the α² it adds is at most threshold, and α² itself is at most 1
+  // (chunks/specular_antialiasing.glsl).
+  void checkSpecularAntiAliasing(const ast::Material& src) {
+    if (material_.shading == "unlit") {
+      error(src.specularAntiAliasingLoc,
+            "specular anti-aliasing widens the specular lobe, and an unlit material has none; remove it", "shading");
+      return;
+    }
+    static const std::vector<std::string> names = {"variance", "threshold"};
+    Material::SpecularAntiAliasing settings;
+    settings.loc = src.specularAntiAliasingLoc;
+    std::set<std::string> seen;
+    bool ok = true;
+    for (const ast::Setting& setting : src.specularAntiAliasing) {
+      if (std::find(names.begin(), names.end(), setting.name) == names.end()) {
+        error(setting.loc,
+              "unknown setting '" + setting.name + "' of specularAntiAliasing (variance, threshold)" +
+                  suggestion(closestMatch(setting.name, names)),
+              "unknown-name");
+        ok = false;
+        continue;
+      }
+      if (!seen.insert(setting.name).second) {
+        error(setting.loc, "specularAntiAliasing already sets '" + setting.name + "'", "duplicate");
+        ok = false;
+        continue;
+      }
+      auto c = constantOf(*setting.value, "a specularAntiAliasing setting");
+      if (!c) {
+        ok = false;
+        continue;
+      }
+      if (c->type != Type::Float || c->constant[0] < 0.0 || c->constant[0] > 1.0) {
+        error(setting.value->loc,
+              "'" + setting.name + "' is a number in [0, 1]" +
+                  (setting.name == "variance" ? " (default 0.02)" : " (Filament's default 0.2)"),
+              "range");
+        ok = false;
+        continue;
+      }
+      (setting.name == "variance" ? settings.variance : settings.threshold) = c->constant[0];
+    }
+    if (ok) material_.specularAntiAliasing = settings;
   }
 
   void checkTierOverride(const ast::TierOverride& o) {

@@ -73,7 +73,8 @@ const TierChoices& tierChoices() {
        {"anisotropy", {"ggx_smith", "bent_ibl", "none"}},
        {"ao", {"single", "multi_bounce"}},
        {"specular_occlusion", {"ao", "lagarde"}},
-       {"sheen", {"charlie_neubelt", "ambient", "none"}}},
+       {"sheen", {"charlie_neubelt", "ambient", "none"}},
+       {"specular_aa", {"projected", "none"}}},
   };
   return choices;
 }

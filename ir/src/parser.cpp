@@ -90,7 +90,7 @@ class Parser {
     int depth = 0;
     while (!at(Tok::End)) {
       if (depth == 0 && (atKeyword("param") || atKeyword("surface") || atKeyword("shading") || atKeyword("blending") ||
-                         atKeyword("tier") || atKeyword("doubleSided")))
+                         atKeyword("tier") || atKeyword("doubleSided") || atKeyword("specularAntiAliasing")))
         return;
       if (at(Tok::LBrace)) ++depth;
       if (at(Tok::RBrace)) {
@@ -133,6 +133,9 @@ class Parser {
     } else if (atKeyword("doubleSided")) {
       advance();
       m.doubleSided = true;
+    } else if (atKeyword("specularAntiAliasing")) {
+      specularAntiAliasing(m);
+      return;
     } else if (atKeyword("param")) {
       m.params.push_back(param());
     } else if (atKeyword("surface")) {
@@ -142,7 +145,10 @@ class Parser {
       tier(m);
       return;
     } else {
-      fail(peek().loc, "expected 'param', 'surface', 'tier', 'shading' or 'blending', found " + spell(peek()));
+      fail(peek().loc,
+           "expected 'param', 'surface', 'tier', 'shading', 'blending', 'doubleSided' or 'specularAntiAliasing', "
+           "found " +
+               spell(peek()));
     }
     accept(Tok::Semicolon);
   }
@@ -195,6 +201,28 @@ class Parser {
       m.tierOverrides.push_back(std::move(o));
     }
     expect(Tok::RBrace, "'}' to close the tier block");
+  }
+
+  // `specularAntiAliasing [{ name value ... }]`: the checker validates names and values.
+  void specularAntiAliasing(ast::Material& m) {
+    const Token& keyword = advance();
+    if (m.hasSpecularAntiAliasing) error(keyword.loc, "the material already enables specular anti-aliasing");
+    m.hasSpecularAntiAliasing = true;
+    m.specularAntiAliasingLoc = keyword.loc;
+    if (!accept(Tok::LBrace)) {
+      accept(Tok::Semicolon);
+      return;
+    }
+    while (!at(Tok::RBrace) && !at(Tok::End)) {
+      ast::Setting s;
+      const Token& name = expect(Tok::Identifier, "a setting of specularAntiAliasing (variance, threshold)");
+      s.name = name.text;
+      s.loc = name.loc;
+      s.value = expression();
+      accept(Tok::Semicolon);
+      m.specularAntiAliasing.push_back(std::move(s));
+    }
+    expect(Tok::RBrace, "'}' to close the specularAntiAliasing block");
   }
 
   void surface(ast::Material& m) {

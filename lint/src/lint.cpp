@@ -232,6 +232,14 @@ MaterialLint lintMaterial(const ir::SourceFile& file, const LintOptions& options
       return permutations::preset(t).precision == permutations::PrecisionPolicy::Mediump;
     });
     lint_precision(optimized, mediump, diags);
+    // The kernel is min(2 · variance · |∇n|², threshold) (chunks/specular_antialiasing.glsl): with
+    // either 0 it adds nothing, and the derivatives still cost every pixel.
+    if (const auto& aa = checked->specularAntiAliasing; aa && (aa->variance == 0.0 || aa->threshold == 0.0))
+      diags.warning(aa->loc,
+                    std::string("specular anti-aliasing with ") + (aa->variance == 0.0 ? "variance" : "threshold") +
+                        " 0 filters nothing but still takes the normal's derivatives in every pixel; remove it, "
+                        "or drop it per tier with `tier <t> { specular_aa = none }`",
+                    "specular-aa-inert");
   }
   out.diagnostics = diags.all();
   if (!checked) return out;

@@ -62,6 +62,11 @@ TierConfig preset(Tier tier) {
   // it, for 1.1 and 0.5 dB on painted_tiles: dropped. Multi-bounce AO is kept at its full cost:
   // without it they lose 14.3 and 10.2 dB there (docs/material-models.md).
   if (tier == Tier::Mid || tier == Tier::Low) config.specularOcclusion = SpecularOcclusionModel::Ao;
+  // mid and low: specular anti-aliasing costs them its derivatives (+0.3 Mali-G57 cycles). Against
+  // 16 samples per pixel (docs/material-models.md) mid gains on the outdoor hammered floor (+2 dB
+  // at variance 0.02) and loses on the glint floor (a delta light's sub-pixel glints, -4.5 dB);
+  // low loses on both (its table's ceiling): dropped, mid for its cost.
+  if (tier == Tier::Mid || tier == Tier::Low) config.specularAntiAliasing = SpecularAntiAliasingModel::None;
   return config;
 }
 
@@ -106,6 +111,14 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
     for (size_t i = 0; i < std::size(kSpecularOcclusionModelNames); ++i) {
       if (option == kSpecularOcclusionModelNames[i]) {
         config->specularOcclusion = SpecularOcclusionModel(i);
+        return true;
+      }
+    }
+  }
+  if (axis == "specular_aa") {
+    for (size_t i = 0; i < std::size(kSpecularAntiAliasingModelNames); ++i) {
+      if (option == kSpecularAntiAliasingModelNames[i]) {
+        config->specularAntiAliasing = SpecularAntiAliasingModel(i);
         return true;
       }
     }

@@ -779,6 +779,42 @@ TEST(Tiers, ClothFormsPerTierAndNoClothCodeElsewhere) {
   EXPECT_NE(lobe.find("sheen_lobe_times_n_dot_l"), std::string::npos);
 }
 
+// Specular anti-aliasing (docs/material-models.md): only variants of a material that asks for it
+// take the normal's derivatives, in the tiers whose form is `projected`; a tier that drops it
+// compiles the very shader of the same material without the item.
+TEST(Tiers, SpecularAntiAliasingOnlyWhereAskedAndDroppedTiersAreTheMaterialWithoutIt) {
+  const std::string body =
+      " param r: float = 0.2 in [0, 1]\n param relief: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)\n"
+      " surface { roughness = params.r\n normal = sample(params.relief, vertex.uv0 * 8.0) } }";
+  auto without = facet::test::buildText("material m {" + body);
+  auto with = facet::test::buildText("material m { specularAntiAliasing { variance 0.15 threshold 0.2 }" + body);
+  auto highDropped = facet::test::buildText(
+      "material m { specularAntiAliasing { variance 0.15 threshold 0.2 }\n tier high { specular_aa = none }" + body);
+  ASSERT_TRUE(without && with && highDropped);
+  const auto derivatives = [](const facet::compiler::BuildResult& b, const std::string& key) {
+    const std::string text = fragmentText(b, key);
+    return text.find("OpDPdx") != std::string::npos || text.find("OpDPdxFine") != std::string::npos;
+  };
+  for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir1"}) {
+    SCOPED_TRACE(key);
+    EXPECT_FALSE(derivatives(*without, key));
+    const bool projected = std::string(key).rfind("reference", 0) == 0 || std::string(key).rfind("high", 0) == 0;
+    EXPECT_EQ(derivatives(*with, key), projected);
+    if (!projected) {
+      EXPECT_EQ(spirvOf(*with, key, Stage::Fragment), spirvOf(*without, key, Stage::Fragment));
+    }
+  }
+  EXPECT_EQ(spirvOf(*highDropped, "high.dir1", Stage::Fragment), spirvOf(*without, "high.dir1", Stage::Fragment));
+  EXPECT_EQ(spirvOf(*highDropped, "reference.dir1", Stage::Fragment),
+            spirvOf(*with, "reference.dir1", Stage::Fragment));
+  // The item without settings: variance 0.02 (the measured default) and Filament's threshold 0.2.
+  auto defaults = facet::test::buildText("material m { specularAntiAliasing" + body);
+  auto shipped = facet::test::buildText("material m { specularAntiAliasing { variance 0.02 threshold 0.2 }" + body);
+  ASSERT_TRUE(defaults && shipped);
+  EXPECT_EQ(spirvOf(*defaults, "high.dir1", Stage::Fragment), spirvOf(*shipped, "high.dir1", Stage::Fragment));
+  EXPECT_NE(spirvOf(*defaults, "high.dir1", Stage::Fragment), spirvOf(*with, "high.dir1", Stage::Fragment));
+}
+
 // The sheen layer over the standard model (docs/material-models.md, "Sheen layer"): only in variants
 // of lit materials that write sheenColor; the full form scales each light's base by b
 // (shading_sheen_base_scale) and adds the lobe, `ambient` keeps the layer's environment and b over

@@ -195,6 +195,12 @@ TEST(EvalConfigurations, ReferenceFirstThenEachTierAndItsSingleSwaps) {
     if (c.axis == std::string("ao") || c.axis == std::string("specular_occlusion")) occlusionSwaps.insert(c.name);
   EXPECT_EQ(occlusionSwaps, (std::set<std::string>{"high:ao=single", "high:specular_occlusion=ao", "low:ao=single",
                                                    "low:specular_occlusion=lagarde"}));
+  // Specular anti-aliasing likewise, only in materials with the header item.
+  for (const auto& c : configs) EXPECT_NE(c.axis, std::string("specular_aa")) << c.name;
+  std::set<std::string> antiAliasingSwaps;
+  for (const auto& c : facet::eval::configurations(example("hammered_floor"), {Tier::High, Tier::Low}))
+    if (c.axis == std::string("specular_aa")) antiAliasingSwaps.insert(c.name);
+  EXPECT_EQ(antiAliasingSwaps, (std::set<std::string>{"high:specular_aa=none", "low:specular_aa=projected"}));
   // A material's override is part of its tier as shipped.
   auto overridden = checked(
       "material m { param r: float = 0.4\n surface { roughness = params.r }\n tier high { specular = ggx_fastv } }");

@@ -95,6 +95,18 @@ TEST(Lint, UnrangedFloatParametersAreFlaggedAtTheirDeclaration) {
   EXPECT_EQ(where(r).size(), 1u) << "a colour is [0, 1] by definition: " << dump(r);
 }
 
+TEST(Lint, SpecularAntiAliasingThatFiltersNothingIsFlaggedAtItsItem) {
+  const std::string surface = "        roughness = params.roughness\n";
+  for (const char* item :
+       {"    specularAntiAliasing { variance 0 }\n", "    specularAntiAliasing { threshold 0.0 }\n"}) {
+    MaterialLint r = lintText(material(item + kRoughness, surface));
+    EXPECT_TRUE(has(r, "2:5 specular-aa-inert")) << item << dump(r);
+  }
+  MaterialLint r =
+      lintText(material("    specularAntiAliasing { variance 0.15 threshold 0.2 }\n" + kRoughness, surface));
+  EXPECT_FALSE(has(r, "2:5 specular-aa-inert")) << dump(r);
+}
+
 TEST(Lint, DivisionNeedsAProvenLowerBound) {
   MaterialLint r = lintText(
       material(kRoughness + "    param size: float = 1.0 in [0, 10]\n    param safe: float = 1.0 in [0.5, 10]\n",

@@ -144,7 +144,15 @@ TEST(RenderPath, GlesMergedAndSeparatePathsGiveTheSameImageOnEveryExampleSceneAn
     const bool mirrorGrid = path.find("roughness_grid.json") != std::string::npos;
     const bool astc = path.find("tiles_astc.json") != std::string::npos;
     const bool occludedTiles = path.find("/tiles.json") != std::string::npos;
-    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : occludedTiles ? 3 : 2);
+    // hammered_floor.json: a smooth lobe (r = 0.12) of a 110 000 lux sun on a relief whose normal
+    // turns by up to 0.2 a texel, under specular anti-aliasing, which reads the derivatives of the
+    // sampled normal. Mesa's gallivm (llvmpipe and lavapipe) takes those per row and column of the
+    // 2x2 quad, but the normal map's level once per quad, from one row's derivatives: while GL
+    // drew bottom-up the two APIs sampled the relief at other levels and the filter magnified that
+    // (11 steps at variance 0.04, 6 at 0.15). Drawn in the same row order, measured 3 at 0.02, 0.04
+    // and 0.15 and without the filter alike (the floor's own difference, not isolated further): 4.
+    const bool hammeredFloor = path.find("hammered_floor.json") != std::string::npos;
+    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : occludedTiles ? 3 : hammeredFloor ? 4 : 2);
   }
   for (const auto* backend : {mergedBackend.get(), separateBackend.get(), osmesaBackend.get(), vulkan.get()}) {
     for (const std::string& message : backend->validationErrors()) ADD_FAILURE() << backend->name() << ": " << message;

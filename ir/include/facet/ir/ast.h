@@ -54,6 +54,13 @@ struct TierOverride {
   SourceLoc optionLoc;
 };
 
+// One setting of a header block, `name value` (`variance 0.02` in `specularAntiAliasing { }`).
+struct Setting {
+  std::string name;
+  SourceLoc loc;
+  ExprPtr value;
+};
+
 struct Material {
   std::string name;
   SourceLoc loc;
@@ -63,6 +70,10 @@ struct Material {
   SourceLoc blendingLoc;
   ExprPtr alphaCutoff;  // blending masked(cutoff)
   bool doubleSided = false;
+  // `specularAntiAliasing { variance v threshold t }`.
+  bool hasSpecularAntiAliasing = false;
+  SourceLoc specularAntiAliasingLoc;
+  std::vector<Setting> specularAntiAliasing;
   std::vector<ParamDecl> params;
   std::vector<Statement> surface;
   std::vector<TierOverride> tierOverrides;

@@ -158,6 +158,14 @@ struct Material {
   std::string blending;      // opaque | masked | transparent | additive
   double alphaCutoff = 0.5;  // masked: fragments with alpha below it are discarded
   bool doubleSided = false;  // false: back faces are culled
+  // `specularAntiAliasing { }` (docs/material-models.md, "Specular anti-aliasing"): the lobe's α²
+  // widened by the screen-space variance of the shading normal (chunks/specular_antialiasing.glsl).
+  struct SpecularAntiAliasing {
+    double variance = 0.02;  // σ² per unit of |∂n/∂x|² + |∂n/∂y|², in [0, 1]
+    double threshold = 0.2;  // the largest α² the kernel adds, in [0, 1]
+    SourceLoc loc;           // of the header item
+  };
+  std::optional<SpecularAntiAliasing> specularAntiAliasing;
   std::vector<Param> params;
   std::vector<TierOverride> tierOverrides;
   Module surface;

@@ -95,6 +95,20 @@ inline constexpr const char* kSheenModelNames[] = {"charlie_neubelt", "ambient",
 static_assert(sizeof kSheenModelNames / sizeof *kSheenModelNames == size_t(SheenModel::None) + 1,
               "one name per SheenModel, in its order");
 
+// Specular anti-aliasing of materials that ask for it (`specularAntiAliasing { }`,
+// docs/material-models.md); a material without it compiles the same shaders whatever this says.
+// reference and high: Projected; mid and low: None (docs/material-models.md has the measurements).
+//   Projected  Tokuyoshi and Kaplanyan's 2019 projected-space NDF filtering: the kernel's α² from the
+//              screen-space derivatives of the shading normal, added to the lobe's
+//              (chunks/specular_antialiasing.glsl)
+//   None       dropped from the shader
+enum class SpecularAntiAliasingModel { Projected, None };
+// The material language's names, indexed by SpecularAntiAliasingModel (`tier low { specular_aa = none }`).
+inline constexpr const char* kSpecularAntiAliasingModelNames[] = {"projected", "none"};
+static_assert(sizeof kSpecularAntiAliasingModelNames / sizeof *kSpecularAntiAliasingModelNames ==
+                  size_t(SpecularAntiAliasingModel::None) + 1,
+              "one name per SpecularAntiAliasingModel, in its order");
+
 // How a shadow receiver filters the sun's atlas (chunks/shadow_sun.glsl, docs/shadows.md): a 3×3
 // tent from 4 bilinear compare taps, or one compare tap (bilinear 2×2 where the device filters
 // depth).
@@ -118,6 +132,7 @@ struct TierConfig {
   AmbientOcclusionModel ambientOcclusion = AmbientOcclusionModel::MultiBounce;
   SpecularOcclusionModel specularOcclusion = SpecularOcclusionModel::Lagarde;
   SheenModel sheen = SheenModel::CharlieNeubelt;
+  SpecularAntiAliasingModel specularAntiAliasing = SpecularAntiAliasingModel::Projected;
   bool operator==(const TierConfig&) const = default;
 };
 
@@ -138,7 +153,8 @@ struct TierConfig {
 TierConfig preset(Tier tier);
 
 // Replaces one choice of a preset by name (axis "specular" | "diffuse" | "clear_coat" | "anisotropy" | "ao" |
-// "specular_occlusion" | "sheen", option as in the material language). Returns false for names it does not know.
+// "specular_occlusion" | "sheen" | "specular_aa", option as in the material language). Returns false for names it does
+// not know.
 bool applyOverride(TierConfig* config, const std::string& axis, const std::string& option);
 
 // e.g. "ggx_smith, pixel diffuse, linear, mediump, split_sum + sh3"

@@ -1,0 +1,51 @@
+#version 300 es
+precision highp float;
+precision highp int;
+layout(location=0)in highp vec3 a_position;
+layout(location=1)in highp vec3 a_normal;
+layout(location=2)in highp vec2 a_uv0;
+layout(location=5)in highp vec4 a_tangent;
+layout(location=6)in highp vec4 a_instanceRow0;
+layout(location=7)in highp vec4 a_instanceRow1;
+layout(location=8)in highp vec4 a_instanceRow2;
+out highp vec3 v_worldPosition;
+out mediump vec3 v_normal;
+out highp vec2 v_uv0;
+out mediump vec4 v_tangent;
+struct PunctualLightData{
+highp vec4 positionFalloff;
+highp vec4 colorIntensity;
+highp vec4 direction;
+highp vec4 spotScaleOffset;
+};
+layout(std140)uniform FrameUniforms{
+highp mat4 viewProjection;
+highp vec4 cameraPosition;
+highp vec4 lightDirection;
+highp vec4 lightColor;
+highp vec4 ambient;
+PunctualLightData punctualLights[4];
+highp vec4 sh[9];
+}
+frame;
+layout(std140)uniform ObjectUniforms{
+highp vec4 positionScale;
+highp vec4 positionOffset;
+highp vec4 uv0ScaleOffset;
+highp vec4 uv1ScaleOffset;
+}
+object;
+void main(){
+highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
+highp vec4 objectPosition=vec4(position,1.0);
+highp vec4 worldPosition=vec4(dot(a_instanceRow0,objectPosition),dot(a_instanceRow1,objectPosition),dot(a_instanceRow2,objectPosition),1.0);
+v_worldPosition=worldPosition.xyz;
+highp vec3 row0=a_instanceRow0.xyz,row1=a_instanceRow1.xyz,row2=a_instanceRow2.xyz;
+highp vec3 cofactor0=cross(row1,row2);
+highp vec3 objectNormal=dot(row0,cofactor0)<0.0?-a_normal:a_normal;
+v_normal=normalize(objectNormal*mat3(cofactor0,cross(row2,row0),cross(row0,row1)));
+v_uv0=a_uv0*object.uv0ScaleOffset.xy+object.uv0ScaleOffset.zw;
+highp vec3 tangent=a_tangent.xyz*mat3(row0,row1,row2);
+v_tangent=vec4(tangent*inversesqrt(max(dot(tangent,tangent),1e-30)),a_tangent.w);
+gl_Position=frame.viewProjection*worldPosition;
+}

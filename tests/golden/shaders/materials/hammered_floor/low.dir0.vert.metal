@@ -1,0 +1,78 @@
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
+struct main0_out
+{
+    float3 v_toEye [[user(locn0)]];
+    float3 v_normal [[user(locn1)]];
+    float2 v_uv0 [[user(locn2)]];
+    float4 v_tangent [[user(locn3)]];
+    float3 v_diffuseLight [[user(locn4)]];
+    float4 gl_Position [[position]];
+};
+
+struct main0_in
+{
+    float3 a_position [[attribute(0)]];
+    float3 a_normal [[attribute(1)]];
+    float2 a_uv0 [[attribute(2)]];
+    float4 a_tangent [[attribute(5)]];
+    float4 a_instanceRow0 [[attribute(6)]];
+    float4 a_instanceRow1 [[attribute(7)]];
+    float4 a_instanceRow2 [[attribute(8)]];
+};
+
+vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
+{
+    main0_out out = {};
+    float4 _96 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _111 = float4(dot(in.a_instanceRow0, _96), dot(in.a_instanceRow1, _96), dot(in.a_instanceRow2, _96), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _111.xyz;
+    float3 _132 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _283;
+    if (dot(in.a_instanceRow0.xyz, _132) < 0.0)
+    {
+        _283 = -in.a_normal;
+    }
+    else
+    {
+        _283 = in.a_normal;
+    }
+    out.v_normal = fast::normalize(_283 * float3x3(_132, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
+    float3 _207 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_207 * rsqrt(fast::max(dot(_207, _207), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    out.v_diffuseLight = fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0));
+    out.gl_Position = frame.viewProjection * _111;
+    return out;
+}
+
