@@ -63,10 +63,15 @@ material.roughness=params.roughness;
 float diffuse_lambert(){
 return 0.31830988618;
 }
+const float GGX_D_SCALE=64.0;
+const float GGX_D_SCALE2=4096.0;
+float ggx_denominator_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec3 t=GGX_D_SCALE*cross(n,h);
+float a=NoH*(GGX_D_SCALE*alpha);
+return dot(t,t)+a*a;
+}
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float k=alpha/(dot(NxH,NxH)+a*a);
+float k=(GGX_D_SCALE2*alpha)/ggx_denominator_scaled(alpha,NoH,n,h);
 float d=k*k*0.31830988618;
 return(d);
 }

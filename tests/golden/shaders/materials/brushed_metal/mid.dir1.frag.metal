@@ -50,20 +50,20 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _462 = normalize(half3(in.v_normal));
-    float3 _466 = fast::normalize(in.v_toEye);
-    half _618 = max(dot(_462, half3(_466)), half(9.9999997473787516355514526367188e-05));
-    float4 _657 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_618, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _676 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_657).y) - half(1.0)));
-    float4 _683 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_466), _462)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _513 = half4(frame.lightDirection).xyz;
-    half3 _790 = normalize(half3(_466) + _513);
-    half _741 = clamp(dot(_462, _513), half(0.0), half(1.0));
-    half3 _817 = cross(_462, _790);
-    half _820 = clamp(dot(_462, _790), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _837 = max(mix((half(2.0) * _741) * _618, _741 + _618, half(params.facet_alpha)), half(0.000244140625));
-    half _844 = (half(1024.0) * half(params.facet_alpha)) / (fma(_820, _820, dot(_817, _817)) * (half(6433.98193359375) * _837));
-    out.fragColor = float4(half4(fma(half4(_683).xyz, mix(half4(_657).xxx, half4(_657).yyy, half3(float3(params.facet_f0))) * _676, min(((half3(float3(params.facet_f0)) * min(_844 * (_844 * (half(6.283185482025146484375) * _837)), half(65504.0))) * _676) * (half4(frame.lightColor).xyz * _741), half3(float3(65504.0)))), half(1.0)));
+    half3 _482 = normalize(half3(in.v_normal));
+    float3 _486 = fast::normalize(in.v_toEye);
+    half _638 = max(dot(_482, half3(_486)), half(9.9999997473787516355514526367188e-05));
+    float4 _677 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_638, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _696 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_677).y) - half(1.0)));
+    float4 _703 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_486), _482)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _533 = half4(frame.lightDirection).xyz;
+    half3 _810 = normalize(half3(_486) + _533);
+    half _761 = clamp(dot(_482, _533), half(0.0), half(1.0));
+    half3 _873 = cross(_482, _810) * half(64.0);
+    half _877 = clamp(dot(_482, _810), half(0.0), half(1.0)) * (half(64.0) * half(params.facet_alpha));
+    half _856 = half(6.283185482025146484375) * max(mix((half(2.0) * _761) * _638, _761 + _638, half(params.facet_alpha)), half(0.000244140625));
+    half _858 = (half(4096.0) * half(params.facet_alpha)) / (fma(_877, _877, dot(_873, _873)) * _856);
+    out.fragColor = float4(half4(fma(half4(_703).xyz, mix(half4(_677).xxx, half4(_677).yyy, half3(float3(params.facet_f0))) * _696, min(((half3(float3(params.facet_f0)) * min(_858 * (_858 * _856), half(65504.0))) * _696) * (half4(frame.lightColor).xyz * _761), half3(float3(65504.0)))), half(1.0)));
     return out;
 }
 

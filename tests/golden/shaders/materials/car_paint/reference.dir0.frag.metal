@@ -33,12 +33,12 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     float3 _488 = fast::normalize(in.v_normal);
     float3 _492 = fast::normalize(in.v_toEye);
-    float _740 = fast::max(dot(_488, _492), 9.9999997473787516355514526367188e-05);
-    float3 _744 = reflect(-_492, _488);
-    float4 _779 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_740, params.facet_perceptualRoughness), level(0.0));
-    float _853 = 1.0 - _740;
-    float _856 = _853 * _853;
-    out.fragColor = float4(mix(facet_environment.sample(facet_environmentSmplr, _744, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_779.xxx, _779.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _779.y) - 1.0)))), facet_environment.sample(facet_environmentSmplr, _744, level(fast::clamp(params.coatRoughness, 0.08900000154972076416015625, 1.0) * 4.0)).xyz, float3(fma(0.959999978542327880859375, (_856 * _856) * _853, 0.039999999105930328369140625) * fast::clamp(params.coat, 0.0, 1.0))), 1.0);
+    float _741 = fast::max(dot(_488, _492), 9.9999997473787516355514526367188e-05);
+    float3 _745 = reflect(-_492, _488);
+    float4 _780 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_741, params.facet_perceptualRoughness), level(0.0));
+    float _854 = 1.0 - _741;
+    float _857 = _854 * _854;
+    out.fragColor = float4(mix(facet_environment.sample(facet_environmentSmplr, _745, level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_780.xxx, _780.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _780.y) - 1.0)))), facet_environment.sample(facet_environmentSmplr, _745, level(fast::clamp(params.coatRoughness, 0.08900000154972076416015625, 1.0) * 4.0)).xyz, float3(fma(0.959999978542327880859375, (_857 * _857) * _854, 0.039999999105930328369140625) * fast::clamp(params.coat, 0.0, 1.0))), 1.0);
     return out;
 }
 

@@ -50,25 +50,25 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _654 = fast::normalize(in.v_normal);
-    float3 _658 = fast::normalize(in.v_toEye);
-    float _776 = _654.y;
-    float _781 = _654.z;
-    float _786 = _654.x;
-    float _904 = fast::max(dot(_654, _658), 9.9999997473787516355514526367188e-05);
-    float4 _943 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_904, params.facet_perceptualRoughness), level(0.0));
-    float3 _962 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _943.y) - 1.0));
-    float3 _1084 = fast::normalize(_658 + frame.lightDirection.xyz);
-    float _1029 = fast::clamp(dot(_654, frame.lightDirection.xyz), 0.0, 1.0);
-    float3 _1122 = cross(_654, _1084);
-    float _1125 = fast::clamp(dot(_654, _1084), 0.0, 1.0) * params.facet_alpha;
-    float _1134 = params.facet_alpha / fma(_1125, _1125, dot(_1122, _1122));
-    float _1147 = params.facet_alpha * params.facet_alpha;
-    float _1153 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
-    float _1180 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1084), 0.0, 1.0);
-    float _1183 = _1180 * _1180;
-    float3 _1205 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _776)) + (frame.sh[2].xyz * _781)) + (frame.sh[3].xyz * _786)) + (((((frame.sh[4].xyz * (_786 * _776)) + (frame.sh[5].xyz * (_776 * _781))) + (frame.sh[6].xyz * fma(3.0 * _781, _781, -1.0))) + (frame.sh[7].xyz * (_786 * _781))) + (frame.sh[8].xyz * fma(_786, _786, -(_776 * _776)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_658, _654), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_943.xxx, _943.yyy, float3(params.facet_f0)) * _962)) + fast::min(fma((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1183 * _1183) * _1180))) * (((_1134 * _1134) * 0.3183098733425140380859375) * (0.5 / fma(_1029, sqrt(fma(_904 * _904, _1153, _1147)), _904 * sqrt(fma(_1029 * _1029, _1153, _1147))))), _962, float3(params.facet_diffuseColor) * 0.3183098733425140380859375) * (frame.lightColor.xyz * _1029), float3(65504.0));
-    out.fragColor = float4(_1205, 1.0);
+    float3 _676 = fast::normalize(in.v_normal);
+    float3 _680 = fast::normalize(in.v_toEye);
+    float _798 = _676.y;
+    float _803 = _676.z;
+    float _808 = _676.x;
+    float _926 = fast::max(dot(_676, _680), 9.9999997473787516355514526367188e-05);
+    float4 _965 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_926, params.facet_perceptualRoughness), level(0.0));
+    float3 _984 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _965.y) - 1.0));
+    float3 _1106 = fast::normalize(_680 + frame.lightDirection.xyz);
+    float _1051 = fast::clamp(dot(_676, frame.lightDirection.xyz), 0.0, 1.0);
+    float3 _1164 = cross(_676, _1106) * 64.0;
+    float _1168 = fast::clamp(dot(_676, _1106), 0.0, 1.0) * (64.0 * params.facet_alpha);
+    float _1151 = (4096.0 * params.facet_alpha) / fma(_1168, _1168, dot(_1164, _1164));
+    float _1183 = params.facet_alpha * params.facet_alpha;
+    float _1189 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
+    float _1216 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1106), 0.0, 1.0);
+    float _1219 = _1216 * _1216;
+    float3 _1241 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _798)) + (frame.sh[2].xyz * _803)) + (frame.sh[3].xyz * _808)) + (((((frame.sh[4].xyz * (_808 * _798)) + (frame.sh[5].xyz * (_798 * _803))) + (frame.sh[6].xyz * fma(3.0 * _803, _803, -1.0))) + (frame.sh[7].xyz * (_808 * _803))) + (frame.sh[8].xyz * fma(_808, _808, -(_798 * _798)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_680, _676), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_965.xxx, _965.yyy, float3(params.facet_f0)) * _984)) + fast::min(fma((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1219 * _1219) * _1216))) * (((_1151 * _1151) * 0.3183098733425140380859375) * (0.5 / fma(_1051, sqrt(fma(_926 * _926, _1189, _1183)), _926 * sqrt(fma(_1051 * _1051, _1189, _1183))))), _984, float3(params.facet_diffuseColor) * 0.3183098733425140380859375) * (frame.lightColor.xyz * _1051), float3(65504.0));
+    out.fragColor = float4(_1241, 1.0);
     return out;
 }
 

@@ -32,16 +32,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _368 = normalize(half3(in.v_normal));
     float3 _372 = fast::normalize(in.v_toEye);
-    half _506 = max(dot(_368, half3(_372)), half(9.9999997473787516355514526367188e-05));
-    half3 _510 = reflect(-half3(_372), _368);
-    float4 _545 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_506, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _571 = facet_environment.sample(facet_environmentSmplr, float3(_510), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _648 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _655 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _779 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_506, _648)), level(0.0)));
-    half _618 = _779.z;
-    float4 _676 = facet_environment.sample(facet_environmentSmplr, float3(_510), level(_648 * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_676).xyz, _655 * _618, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_571).xyz * (mix(half4(_545).xxx, half4(_545).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_545).y) - half(1.0)))))) * fma(half(-float(max(_655.x, max(_655.y, _655.z)))), _618, half(1.0))), half(1.0)));
+    half _507 = max(dot(_368, half3(_372)), half(9.9999997473787516355514526367188e-05));
+    half3 _511 = reflect(-half3(_372), _368);
+    float4 _546 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_507, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _572 = facet_environment.sample(facet_environmentSmplr, float3(_511), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _649 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
+    half3 _656 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _780 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_507, _649)), level(0.0)));
+    half _619 = _780.z;
+    float4 _677 = facet_environment.sample(facet_environmentSmplr, float3(_511), level(_649 * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_677).xyz, _656 * _619, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_572).xyz * (mix(half4(_546).xxx, half4(_546).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_546).y) - half(1.0)))))) * fma(half(-float(max(_656.x, max(_656.y, _656.z)))), _619, half(1.0))), half(1.0)));
     return out;
 }
 
