@@ -122,9 +122,8 @@ std::string sweepBody(Model model) {
 // so E_c + (1 − Fc(n·v)).
 std::string ggxFurnaceBody(const std::string& setupCode, bool anisotropic, const std::string& lobeCode, bool layered,
                            int samples) {
-  const char* alphas = anisotropic
-                           ? "highp vec2 a = clamp(r * r * vec2(1.0 + in1.y, 1.0 - in1.y), 0.007921, 1.0);\n"
-                           : "highp vec2 a = vec2(r * r);\n";
+  const char* alphas = anisotropic ? "highp vec2 a = clamp(r * r * vec2(1.0 + in1.y, 1.0 - in1.y), 0.007921, 1.0);\n"
+                                   : "highp vec2 a = vec2(r * r);\n";
   return std::string(kView) + setupCode + "    " + alphas + "    const int N = " + std::to_string(samples) + ";\n" +
          R"(
     highp float sum = 0.0;

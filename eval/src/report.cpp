@@ -322,11 +322,11 @@ std::string modelLobesMarkdown(const EvalReport& r) {
 std::string lobeFurnaceMarkdown(const EvalReport& r) {
   std::string s =
       "\nWhite furnace of each lobe: the directional albedo E(n·v, r) = ∫ f · n·l dω of the chunk's output by "
-       "quadrature on the GPU (GGX lobes: " +
-       std::to_string(r.furnaceDomain.ggxSamples) + " GGX-distributed half vectors; the sheen: a " +
-       std::to_string(r.furnaceDomain.sheenSteps) + " × " + std::to_string(r.furnaceDomain.sheenSteps / 2) +
-       " grid), n·v from 1e-4 to 1, the largest over the domain and where:\n\n"
-       "| lobe | precision | integrand | max albedo | at n·v, r (, anisotropy) | bound |\n|---|---|---|--:|---|---|\n";
+      "quadrature on the GPU (GGX lobes: " +
+      std::to_string(r.furnaceDomain.ggxSamples) + " GGX-distributed half vectors; the sheen: a " +
+      std::to_string(r.furnaceDomain.sheenSteps) + " × " + std::to_string(r.furnaceDomain.sheenSteps / 2) +
+      " grid), n·v from 1e-4 to 1, the largest over the domain and where:\n\n"
+      "| lobe | precision | integrand | max albedo | at n·v, r (, anisotropy) | bound |\n|---|---|---|--:|---|---|\n";
   for (const LobeFurnaceRow& f : r.lobeFurnace) {
     std::string at = fmt("%.4g", f.atNoV) + ", " + fmt("%.3f", f.atRoughness);
     if (f.lobe.rfind("anisotropy", 0) == 0) at += ", " + fmt("%.2f", f.atAnisotropy);

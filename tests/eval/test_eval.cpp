@@ -616,7 +616,6 @@ TEST(EvalLobeSweep, StandardLobesKeepTheWhiteFurnaceAtEveryPrecision) {
     if (row.lobe == "ggx_smith") {
       EXPECT_GT(row.maxAlbedo, 0.99) << row.precision;
     }
-
 }
 
 // The sheen's lobe: its raw albedo, integrated on the GPU from the chunk, is the table's
