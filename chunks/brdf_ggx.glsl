@@ -15,9 +15,8 @@
 // k = 2^12 α / d' = α / d ≤ 1/α ≤ 127; the peak 1/(π α²) ≤ 5075 is finite; saturateMediump guards
 // the rest.
 float distribution_ggx(float alpha, float NoH, vec3 n, vec3 h) {
-    float k = (GGX_D_SCALE2 * alpha) / ggx_denominator_scaled(alpha, NoH, n, h);
-    float d = k * k * INV_PI;
-    return saturateMediump(d);
+    float k = GGX_D_SCALE2 * alpha / ggx_d_scaled(alpha, NoH, n, h);
+    return saturateMediump(k * k * INV_PI);
 }
 
 // Height-correlated Smith visibility V = G₂ / (4 n·l n·v):

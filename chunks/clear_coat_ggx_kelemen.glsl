@@ -56,7 +56,7 @@ vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float r = clear_coat_perceptual_roughness(material);
     float alpha = r * r;
-    float d = ggx_denominator_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
+    float d = ggx_d_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
     float x = (4.0 * PI) * max(LoH * LoH, CLEAR_COAT_LOH2_MIN);
     float k = (GGX_D_SCALE2 * alpha) / (d * x);
     float DV = saturateMediump(k * (k * x));

@@ -30,7 +30,7 @@
 const float FUSED_HAMMON_M_MIN = 2.44140625e-4;   // 2^-12, the floor of M (above)
 
 float specular_fused_hammon(float alpha, float NoV, float NoL, float NoH, vec3 n, vec3 h) {
-    float d = ggx_denominator_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
+    float d = ggx_d_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
     float m = max(mix(2.0 * NoL * NoV, NoL + NoV, alpha), FUSED_HAMMON_M_MIN);
     float k = (GGX_D_SCALE2 * alpha) / (d * ((2.0 * PI) * m));
     return saturateMediump(k * (k * ((2.0 * PI) * m)));

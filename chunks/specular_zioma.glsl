@@ -68,6 +68,6 @@ float specular_zioma(float alpha, float NoH, float LoH) {
 // 0 in a smooth lobe's highlight core, and F = 1 reflected 1.47× its light at r = 0.089), then
 // scaled back exactly (a power of two) to d ∈ [α², 1], ≥ 6.27e-5: normal.
 float specular_zioma_nxh(float alpha, float NoH, vec3 n, vec3 h, float LoH) {
-    float d = ggx_denominator_scaled(alpha, NoH, n, h) * (1.0 / GGX_D_SCALE2);
+    float d = ggx_d_scaled(alpha, NoH, n, h) * (1.0 / GGX_D_SCALE2);
     return specular_zioma_form_d(alpha, d, LoH, ZIOMA_LOH2_MIN, ZIOMA_ROUGH_SCALE, ZIOMA_ROUGH_BIAS);
 }

@@ -48,17 +48,17 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _470 = normalize(half3(in.v_normal));
     float3 _477 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _564 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _613 = _470.y;
-    half _618 = _470.z;
-    half _623 = _470.x;
-    half3 _691 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _613)) + (half4(frame.sh[2]).xyz * _618)) + (half4(frame.sh[3]).xyz * _623)) + (((((half4(frame.sh[4]).xyz * (_623 * _613)) + (half4(frame.sh[5]).xyz * (_613 * _618))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _618, _618, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_623 * _618))) + (half4(frame.sh[8]).xyz * fma(_623, _623, half(-float(_613 * _613))))), half3(float3(0.0)));
-    half _789 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _564)), half(0.0), half(1.0));
-    half3 _797 = half3((half(0.1599999964237213134765625) * _789) * _789);
-    half _806 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _564)), half(0.08900000154972076416015625), half(1.0));
-    float4 _813 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_470, half3(_477)), half(9.9999997473787516355514526367188e-05)), _806)), level(0.0));
-    float4 _839 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_477), _470)), level(_806 * half(4.0)));
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_564))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), _691, half4(_839).xyz * (mix(half4(_813).xxx, half4(_813).yyy, _797) * (half3(float3(1.0)) + (_797 * ((half(1.0) / half4(_813).y) - half(1.0)))))), half(1.0)));
+    float _562 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _611 = _470.y;
+    half _616 = _470.z;
+    half _621 = _470.x;
+    half3 _689 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _611)) + (half4(frame.sh[2]).xyz * _616)) + (half4(frame.sh[3]).xyz * _621)) + (((((half4(frame.sh[4]).xyz * (_621 * _611)) + (half4(frame.sh[5]).xyz * (_611 * _616))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _616, _616, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_621 * _616))) + (half4(frame.sh[8]).xyz * fma(_621, _621, half(-float(_611 * _611))))), half3(float3(0.0)));
+    half _787 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _562)), half(0.0), half(1.0));
+    half3 _795 = half3((half(0.1599999964237213134765625) * _787) * _787);
+    half _804 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _562)), half(0.08900000154972076416015625), half(1.0));
+    float4 _811 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_470, half3(_477)), half(9.9999997473787516355514526367188e-05)), _804)), level(0.0));
+    float4 _837 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_477), _470)), level(_804 * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_562))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), _689, half4(_837).xyz * (mix(half4(_811).xxx, half4(_811).yyy, _795) * (half3(float3(1.0)) + (_795 * ((half(1.0) / half4(_811).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

@@ -49,13 +49,13 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _332 = normalize(half3(in.v_normal));
     float3 _349 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _440 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _548 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _440)), half(0.0), half(1.0));
-    half3 _556 = half3((half(0.1599999964237213134765625) * _548) * _548);
-    half _565 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _440)), half(0.08900000154972076416015625), half(1.0));
-    float4 _572 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_332, half3(_349)), half(9.9999997473787516355514526367188e-05)), _565)), level(0.0));
-    float4 _598 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_349), _332)), level(_565 * half(4.0)));
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_440))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_598).xyz * (mix(half4(_572).xxx, half4(_572).yyy, _556) * (half3(float3(1.0)) + (_556 * ((half(1.0) / half4(_572).y) - half(1.0)))))), half(1.0)));
+    float _438 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _546 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _438)), half(0.0), half(1.0));
+    half3 _554 = half3((half(0.1599999964237213134765625) * _546) * _546);
+    half _563 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _438)), half(0.08900000154972076416015625), half(1.0));
+    float4 _570 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_332, half3(_349)), half(9.9999997473787516355514526367188e-05)), _563)), level(0.0));
+    float4 _596 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_349), _332)), level(_563 * half(4.0)));
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_438))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_596).xyz * (mix(half4(_570).xxx, half4(_570).yyy, _554) * (half3(float3(1.0)) + (_554 * ((half(1.0) / half4(_570).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

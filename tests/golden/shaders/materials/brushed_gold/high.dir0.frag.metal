@@ -29,9 +29,9 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _397 = normalize(half3(in.v_normal));
     float3 _401 = fast::normalize(in.v_toEye);
-    float4 _672 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_397, half3(_401)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _698 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_401), _397)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(half4(_698).xyz * (mix(half4(_672).xxx, half4(_672).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_672).y) - half(1.0))))), half(1.0)));
+    float4 _670 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_397, half3(_401)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _696 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_401), _397)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(half4(_696).xyz * (mix(half4(_670).xxx, half4(_670).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_670).y) - half(1.0))))), half(1.0)));
     return out;
 }
 

@@ -29,9 +29,9 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _259 = normalize(half3(in.v_normal));
     float3 _263 = fast::normalize(in.v_toEye);
-    float4 _430 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_259, half3(_263)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _456 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_263), _259)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(half4(_456).xyz * (mix(half4(_430).xxx, half4(_430).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_430).y) - half(1.0))))), half(1.0)));
+    float4 _428 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_259, half3(_263)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _454 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_263), _259)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(half4(_454).xyz * (mix(half4(_428).xxx, half4(_428).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_428).y) - half(1.0))))), half(1.0)));
     return out;
 }
 

@@ -29,8 +29,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     float3 _397 = fast::normalize(in.v_normal);
     float3 _401 = fast::normalize(in.v_toEye);
-    float4 _672 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_397, _401), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
-    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, reflect(-_401, _397), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_672.xxx, _672.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _672.y) - 1.0)))), 1.0);
+    float4 _670 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_397, _401), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, reflect(-_401, _397), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_670.xxx, _670.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _670.y) - 1.0)))), 1.0);
     return out;
 }
 

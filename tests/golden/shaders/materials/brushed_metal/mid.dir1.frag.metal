@@ -50,20 +50,19 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _482 = normalize(half3(in.v_normal));
-    float3 _486 = fast::normalize(in.v_toEye);
-    half _638 = max(dot(_482, half3(_486)), half(9.9999997473787516355514526367188e-05));
-    float4 _677 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_638, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _696 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_677).y) - half(1.0)));
-    float4 _703 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_486), _482)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _533 = half4(frame.lightDirection).xyz;
-    half3 _810 = normalize(half3(_486) + _533);
-    half _761 = clamp(dot(_482, _533), half(0.0), half(1.0));
-    half3 _873 = cross(_482, _810) * half(64.0);
-    half _877 = clamp(dot(_482, _810), half(0.0), half(1.0)) * (half(64.0) * half(params.facet_alpha));
-    half _856 = half(6.283185482025146484375) * max(mix((half(2.0) * _761) * _638, _761 + _638, half(params.facet_alpha)), half(0.000244140625));
-    half _858 = (half(4096.0) * half(params.facet_alpha)) / (fma(_877, _877, dot(_873, _873)) * _856);
-    out.fragColor = float4(half4(fma(half4(_703).xyz, mix(half4(_677).xxx, half4(_677).yyy, half3(float3(params.facet_f0))) * _696, min(((half3(float3(params.facet_f0)) * min(_858 * (_858 * _856), half(65504.0))) * _696) * (half4(frame.lightColor).xyz * _761), half3(float3(65504.0)))), half(1.0)));
+    half3 _481 = normalize(half3(in.v_normal));
+    float3 _485 = fast::normalize(in.v_toEye);
+    half _637 = max(dot(_481, half3(_485)), half(9.9999997473787516355514526367188e-05));
+    float4 _676 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_637, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _695 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_676).y) - half(1.0)));
+    float4 _702 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_485), _481)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _532 = half4(frame.lightDirection).xyz;
+    half3 _809 = normalize(half3(_485) + _532);
+    half _760 = clamp(dot(_481, _532), half(0.0), half(1.0));
+    half4 _878 = half4(cross(_481, _809), half(params.facet_alpha) * clamp(dot(_481, _809), half(0.0), half(1.0))) * half(64.0);
+    half _855 = half(6.283185482025146484375) * max(mix((half(2.0) * _760) * _637, _760 + _637, half(params.facet_alpha)), half(0.000244140625));
+    half _857 = (half(4096.0) * half(params.facet_alpha)) / (dot(_878, _878) * _855);
+    out.fragColor = float4(half4(fma(half4(_702).xyz, mix(half4(_676).xxx, half4(_676).yyy, half3(float3(params.facet_f0))) * _695, min(((half3(float3(params.facet_f0)) * min(_857 * (_857 * _855), half(65504.0))) * _695) * (half4(frame.lightColor).xyz * _760), half3(float3(65504.0)))), half(1.0)));
     return out;
 }
 

@@ -33,15 +33,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _488 = normalize(half3(in.v_normal));
     float3 _492 = fast::normalize(in.v_toEye);
-    half _741 = max(dot(_488, half3(_492)), half(9.9999997473787516355514526367188e-05));
-    half3 _745 = reflect(-half3(_492), _488);
-    float4 _780 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_741, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _806 = facet_environment.sample(facet_environmentSmplr, float3(_745), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _854 = half(1.0) - _741;
-    half _857 = _854 * _854;
-    float4 _881 = facet_environment.sample(facet_environmentSmplr, float3(_745), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _848 = mix(half4(_806).xyz * (mix(half4(_780).xxx, half4(_780).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_780).y) - half(1.0))))), half4(_881).xyz, half3(fma(half(0.959999978542327880859375), (_857 * _857) * _854, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_848, half(1.0)));
+    half _739 = max(dot(_488, half3(_492)), half(9.9999997473787516355514526367188e-05));
+    half3 _743 = reflect(-half3(_492), _488);
+    float4 _778 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_739, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _804 = facet_environment.sample(facet_environmentSmplr, float3(_743), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _852 = half(1.0) - _739;
+    half _855 = _852 * _852;
+    float4 _879 = facet_environment.sample(facet_environmentSmplr, float3(_743), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _846 = mix(half4(_804).xyz * (mix(half4(_778).xxx, half4(_778).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_778).y) - half(1.0))))), half4(_879).xyz, half3(fma(half(0.959999978542327880859375), (_855 * _855) * _852, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_846, half(1.0)));
     return out;
 }
 

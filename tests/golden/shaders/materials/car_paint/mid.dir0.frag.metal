@@ -33,15 +33,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _351 = normalize(half3(in.v_normal));
     float3 _355 = fast::normalize(in.v_toEye);
-    half _499 = max(dot(_351, half3(_355)), half(9.9999997473787516355514526367188e-05));
-    half3 _503 = reflect(-half3(_355), _351);
-    float4 _538 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_499, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _564 = facet_environment.sample(facet_environmentSmplr, float3(_503), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _612 = half(1.0) - _499;
-    half _615 = _612 * _612;
-    float4 _639 = facet_environment.sample(facet_environmentSmplr, float3(_503), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _606 = mix(half4(_564).xyz * (mix(half4(_538).xxx, half4(_538).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_538).y) - half(1.0))))), half4(_639).xyz, half3(fma(half(0.959999978542327880859375), (_615 * _615) * _612, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_606, half(1.0)));
+    half _497 = max(dot(_351, half3(_355)), half(9.9999997473787516355514526367188e-05));
+    half3 _501 = reflect(-half3(_355), _351);
+    float4 _536 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_497, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _562 = facet_environment.sample(facet_environmentSmplr, float3(_501), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _610 = half(1.0) - _497;
+    half _613 = _610 * _610;
+    float4 _637 = facet_environment.sample(facet_environmentSmplr, float3(_501), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _604 = mix(half4(_562).xyz * (mix(half4(_536).xxx, half4(_536).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_536).y) - half(1.0))))), half4(_637).xyz, half3(fma(half(0.959999978542327880859375), (_613 * _613) * _610, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_604, half(1.0)));
     return out;
 }
 

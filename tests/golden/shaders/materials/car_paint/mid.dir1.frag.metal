@@ -50,25 +50,24 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _566 = normalize(half3(in.v_normal));
-    float3 _570 = fast::normalize(in.v_toEye);
-    half _733 = max(dot(_566, half3(_570)), half(9.9999997473787516355514526367188e-05));
-    half3 _737 = reflect(-half3(_570), _566);
-    float4 _772 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_733, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _791 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_772).y) - half(1.0)));
-    float4 _798 = facet_environment.sample(facet_environmentSmplr, float3(_737), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _618 = half4(frame.lightDirection).xyz;
-    half3 _905 = normalize(half3(_570) + _618);
-    half _856 = clamp(dot(_566, _618), half(0.0), half(1.0));
-    half3 _968 = cross(_566, _905) * half(64.0);
-    half _972 = clamp(dot(_566, _905), half(0.0), half(1.0)) * (half(64.0) * half(params.facet_alpha));
-    half _951 = half(6.283185482025146484375) * max(mix((half(2.0) * _856) * _733, _856 + _733, half(params.facet_alpha)), half(0.000244140625));
-    half _953 = (half(4096.0) * half(params.facet_alpha)) / (fma(_972, _972, dot(_968, _968)) * _951);
-    half _1023 = half(1.0) - _733;
-    half _1026 = _1023 * _1023;
-    float4 _1050 = facet_environment.sample(facet_environmentSmplr, float3(_737), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
-    half3 _1017 = mix(fma(half4(_798).xyz, mix(half4(_772).xxx, half4(_772).yyy, half3(float3(params.facet_f0))) * _791, min(((half3(float3(params.facet_f0)) * min(_953 * (_953 * _951), half(65504.0))) * _791) * (half4(frame.lightColor).xyz * _856), half3(float3(65504.0)))), half4(_1050).xyz, half3(fma(half(0.959999978542327880859375), (_1026 * _1026) * _1023, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_1017, half(1.0)));
+    half3 _565 = normalize(half3(in.v_normal));
+    float3 _569 = fast::normalize(in.v_toEye);
+    half _732 = max(dot(_565, half3(_569)), half(9.9999997473787516355514526367188e-05));
+    half3 _736 = reflect(-half3(_569), _565);
+    float4 _771 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_732, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _790 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_771).y) - half(1.0)));
+    float4 _797 = facet_environment.sample(facet_environmentSmplr, float3(_736), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _617 = half4(frame.lightDirection).xyz;
+    half3 _904 = normalize(half3(_569) + _617);
+    half _855 = clamp(dot(_565, _617), half(0.0), half(1.0));
+    half4 _973 = half4(cross(_565, _904), half(params.facet_alpha) * clamp(dot(_565, _904), half(0.0), half(1.0))) * half(64.0);
+    half _950 = half(6.283185482025146484375) * max(mix((half(2.0) * _855) * _732, _855 + _732, half(params.facet_alpha)), half(0.000244140625));
+    half _952 = (half(4096.0) * half(params.facet_alpha)) / (dot(_973, _973) * _950);
+    half _1020 = half(1.0) - _732;
+    half _1023 = _1020 * _1020;
+    float4 _1047 = facet_environment.sample(facet_environmentSmplr, float3(_736), level(clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0)) * half(4.0)));
+    half3 _1014 = mix(fma(half4(_797).xyz, mix(half4(_771).xxx, half4(_771).yyy, half3(float3(params.facet_f0))) * _790, min(((half3(float3(params.facet_f0)) * min(_952 * (_952 * _950), half(65504.0))) * _790) * (half4(frame.lightColor).xyz * _855), half3(float3(65504.0)))), half4(_1047).xyz, half3(fma(half(0.959999978542327880859375), (_1023 * _1023) * _1020, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_1014, half(1.0)));
     return out;
 }
 

@@ -76,17 +76,13 @@ material.clearCoatRoughness=params.coatRoughness;
 float diffuse_lambert(){
 return 0.31830988618;
 }
-const float GGX_D_SCALE=64.0;
-const float GGX_D_SCALE2=4096.0;
-float ggx_denominator_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec3 t=GGX_D_SCALE*cross(n,h);
-float a=NoH*(GGX_D_SCALE*alpha);
-return dot(t,t)+a*a;
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
 }
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-float k=(GGX_D_SCALE2*alpha)/ggx_denominator_scaled(alpha,NoH,n,h);
-float d=k*k*0.31830988618;
-return(d);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return(k*k*0.31830988618);
 }
 float visibility_smith_ggx_correlated(float alpha,float NoV,float NoL){
 float a2=alpha*alpha;
@@ -158,9 +154,9 @@ float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float r=clear_coat_perceptual_roughness(material);
 float alpha=r*r;
-float d=ggx_denominator_scaled(alpha,NoH,n,h);
+float d=ggx_d_scaled(alpha,NoH,n,h);
 float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
-float k=(GGX_D_SCALE2*alpha)/(d*x);
+float k=(4096.0*alpha)/(d*x);
 float DV=(k*(k*x));
 float Fc=clear_coat_fresnel(LoH)*clear_coat_strength(material);
 return DV*Fc*(lightColor*NoL);

@@ -49,33 +49,33 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
 {
     main0_out out = {};
     float3 _652 = fast::normalize(in.v_toEye);
-    float2 _752 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _755 = facet_material_albedo.sample(facet_material_albedoSmplr, _752);
-    float4 _765 = facet_material_relief.sample(facet_material_reliefSmplr, _752);
-    half3 _769 = (half4(_765).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _775 = fract(_752 * 4.0);
-    float _777 = _775.x;
-    float _784 = _775.y;
-    half3 _1291;
+    float2 _750 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _753 = facet_material_albedo.sample(facet_material_albedoSmplr, _750);
+    float4 _763 = facet_material_relief.sample(facet_material_reliefSmplr, _750);
+    half3 _767 = (half4(_763).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _773 = fract(_750 * 4.0);
+    float _775 = _773.x;
+    float _782 = _773.y;
+    half3 _1289;
     do
     {
-        half3 _809 = half4(in.v_tangent).xyz;
-        if (float(dot(_809, _809)) == 0.0)
+        half3 _807 = half4(in.v_tangent).xyz;
+        if (float(dot(_807, _807)) == 0.0)
         {
-            _1291 = normalize(half3(in.v_normal));
+            _1289 = normalize(half3(in.v_normal));
             break;
         }
-        _1291 = normalize(((_809 * _769.x) + ((cross(half3(in.v_normal), _809) * half(in.v_tangent.w)) * _769.y)) + (half3(in.v_normal) * _769.z));
+        _1289 = normalize(((_807 * _767.x) + ((cross(half3(in.v_normal), _807) * half(in.v_tangent.w)) * _767.y)) + (half3(in.v_normal) * _767.z));
         break;
     } while(false);
-    half3 _946 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1291.y)) + (half4(frame.sh[2]).xyz * _1291.z)) + (half4(frame.sh[3]).xyz * _1291.x)) + (((((half4(frame.sh[4]).xyz * (_1291.x * _1291.y)) + (half4(frame.sh[5]).xyz * (_1291.y * _1291.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1291.z, _1291.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1291.x * _1291.z))) + (half4(frame.sh[8]).xyz * fma(_1291.x, _1291.x, half(-float(_1291.y * _1291.y))))), half3(float3(0.0)));
-    half3 _969 = clamp(half4(_755).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _978 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_777, 1.0 - _777), fast::min(_784, 1.0 - _784))))), half(0.0), half(1.0));
-    half _1059 = max(dot(_1291, half3(_652)), half(9.9999997473787516355514526367188e-05));
-    float4 _1124 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1059, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1150 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_652), _1291)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _1191 = fma(_969 * _946, max(half3(_978), ((((((_969 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _978) + ((_969 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _978) + ((_969 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _978), (half4(_1150).xyz * (mix(half4(_1124).xxx, half4(_1124).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1124).y) - half(1.0)))))) * clamp((exp2(exp2(fma(half(-16.0), half(params.facet_perceptualRoughness) * half(params.facet_perceptualRoughness), half(-1.0))) * log2(_1059 + _978)) - half(1.0)) + _978, half(0.0), half(1.0)));
-    out.fragColor = float4(half4(_1191, half(1.0)));
+    half3 _944 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1289.y)) + (half4(frame.sh[2]).xyz * _1289.z)) + (half4(frame.sh[3]).xyz * _1289.x)) + (((((half4(frame.sh[4]).xyz * (_1289.x * _1289.y)) + (half4(frame.sh[5]).xyz * (_1289.y * _1289.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1289.z, _1289.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1289.x * _1289.z))) + (half4(frame.sh[8]).xyz * fma(_1289.x, _1289.x, half(-float(_1289.y * _1289.y))))), half3(float3(0.0)));
+    half3 _967 = clamp(half4(_753).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _976 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_775, 1.0 - _775), fast::min(_782, 1.0 - _782))))), half(0.0), half(1.0));
+    half _1057 = max(dot(_1289, half3(_652)), half(9.9999997473787516355514526367188e-05));
+    float4 _1122 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1057, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1148 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_652), _1289)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _1189 = fma(_967 * _944, max(half3(_976), ((((((_967 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _976) + ((_967 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _976) + ((_967 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _976), (half4(_1148).xyz * (mix(half4(_1122).xxx, half4(_1122).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1122).y) - half(1.0)))))) * clamp((exp2(exp2(fma(half(-16.0), half(params.facet_perceptualRoughness) * half(params.facet_perceptualRoughness), half(-1.0))) * log2(_1057 + _976)) - half(1.0)) + _976, half(0.0), half(1.0)));
+    out.fragColor = float4(half4(_1189, half(1.0)));
     return out;
 }
 

@@ -48,44 +48,43 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    float3 _939 = fast::normalize(in.v_toEye);
-    float2 _1058 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _1061 = facet_material_albedo.sample(facet_material_albedoSmplr, _1058);
-    float4 _1071 = facet_material_relief.sample(facet_material_reliefSmplr, _1058);
-    half3 _1075 = (half4(_1071).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _1081 = fract(_1058 * 4.0);
-    float _1083 = _1081.x;
-    float _1090 = _1081.y;
-    half3 _1885;
+    float3 _935 = fast::normalize(in.v_toEye);
+    float2 _1054 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _1057 = facet_material_albedo.sample(facet_material_albedoSmplr, _1054);
+    float4 _1067 = facet_material_relief.sample(facet_material_reliefSmplr, _1054);
+    half3 _1071 = (half4(_1067).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _1077 = fract(_1054 * 4.0);
+    float _1079 = _1077.x;
+    float _1086 = _1077.y;
+    half3 _1877;
     do
     {
-        half3 _1115 = half4(in.v_tangent).xyz;
-        if (float(dot(_1115, _1115)) == 0.0)
+        half3 _1111 = half4(in.v_tangent).xyz;
+        if (float(dot(_1111, _1111)) == 0.0)
         {
-            _1885 = normalize(half3(in.v_normal));
+            _1877 = normalize(half3(in.v_normal));
             break;
         }
-        _1885 = normalize(((_1115 * _1075.x) + ((cross(half3(in.v_normal), _1115) * half(in.v_tangent.w)) * _1075.y)) + (half3(in.v_normal) * _1075.z));
+        _1877 = normalize(((_1111 * _1071.x) + ((cross(half3(in.v_normal), _1111) * half(in.v_tangent.w)) * _1071.y)) + (half3(in.v_normal) * _1071.z));
         break;
     } while(false);
-    half3 _1252 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1885.y)) + (half4(frame.sh[2]).xyz * _1885.z)) + (half4(frame.sh[3]).xyz * _1885.x)) + (((((half4(frame.sh[4]).xyz * (_1885.x * _1885.y)) + (half4(frame.sh[5]).xyz * (_1885.y * _1885.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1885.z, _1885.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1885.x * _1885.z))) + (half4(frame.sh[8]).xyz * fma(_1885.x, _1885.x, half(-float(_1885.y * _1885.y))))), half3(float3(0.0)));
-    half3 _1275 = clamp(half4(_1061).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _1284 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_1083, 1.0 - _1083), fast::min(_1090, 1.0 - _1090))))), half(0.0), half(1.0));
-    half _1365 = max(dot(_1885, half3(_939)), half(9.9999997473787516355514526367188e-05));
-    float4 _1430 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1365, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _1449 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1430).y) - half(1.0)));
-    float4 _1456 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_939), _1885)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    float3 _1628 = fast::normalize(_939 + frame.lightDirection.xyz);
-    half _1548 = clamp(dot(_1885, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
-    half3 _1689 = cross(_1885, half3(_1628)) * half(64.0);
-    half _1693 = clamp(dot(_1885, half3(_1628)), half(0.0), half(1.0)) * (half(64.0) * half(params.facet_alpha));
-    half _1675 = (half(4096.0) * half(params.facet_alpha)) / fma(_1693, _1693, dot(_1689, _1689));
-    half _1708 = half(params.facet_alpha) * half(params.facet_alpha);
-    half _1714 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
-    half _1742 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1628)), half(0.0), half(1.0));
-    half _1745 = _1742 * _1742;
-    half3 _1775 = fma(_1275 * _1252, max(half3(_1284), ((((((_1275 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _1284) + ((_1275 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _1284) + ((_1275 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _1284), (half4(_1456).xyz * (mix(half4(_1430).xxx, half4(_1430).yyy, half3(float3(0.039999999105930328369140625))) * _1449)) * clamp((exp2(exp2(fma(half(-16.0), half(params.facet_perceptualRoughness) * half(params.facet_perceptualRoughness), half(-1.0))) * log2(_1365 + _1284)) - half(1.0)) + _1284, half(0.0), half(1.0))) + min(fma((half3(float3(0.039999999105930328369140625)) + (half3(float3(0.959999978542327880859375)) * ((_1745 * _1745) * _1742))) * min(min((_1675 * _1675) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1548, sqrt(fma(_1365 * _1365, _1714, _1708)), _1365 * sqrt(fma(_1548 * _1548, _1714, _1708))), half(65504.0)), half(65504.0)), _1449, _1275 * half(0.3183098733425140380859375)) * (half4(frame.lightColor).xyz * _1548), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1775, half(1.0)));
+    half3 _1248 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1877.y)) + (half4(frame.sh[2]).xyz * _1877.z)) + (half4(frame.sh[3]).xyz * _1877.x)) + (((((half4(frame.sh[4]).xyz * (_1877.x * _1877.y)) + (half4(frame.sh[5]).xyz * (_1877.y * _1877.z))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1877.z, _1877.z, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1877.x * _1877.z))) + (half4(frame.sh[8]).xyz * fma(_1877.x, _1877.x, half(-float(_1877.y * _1877.y))))), half3(float3(0.0)));
+    half3 _1271 = clamp(half4(_1057).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _1280 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_1079, 1.0 - _1079), fast::min(_1086, 1.0 - _1086))))), half(0.0), half(1.0));
+    half _1361 = max(dot(_1877, half3(_935)), half(9.9999997473787516355514526367188e-05));
+    float4 _1426 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1361, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _1445 = half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1426).y) - half(1.0)));
+    float4 _1452 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_935), _1877)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    float3 _1624 = fast::normalize(_935 + frame.lightDirection.xyz);
+    half _1544 = clamp(dot(_1877, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    half4 _1689 = half4(cross(_1877, half3(_1624)), half(params.facet_alpha) * clamp(dot(_1877, half3(_1624)), half(0.0), half(1.0))) * half(64.0);
+    half _1670 = (half(4096.0) * half(params.facet_alpha)) / dot(_1689, _1689);
+    half _1700 = half(params.facet_alpha) * half(params.facet_alpha);
+    half _1706 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
+    half _1734 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1624)), half(0.0), half(1.0));
+    half _1737 = _1734 * _1734;
+    half3 _1767 = fma(_1271 * _1248, max(half3(_1280), ((((((_1271 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _1280) + ((_1271 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _1280) + ((_1271 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _1280), (half4(_1452).xyz * (mix(half4(_1426).xxx, half4(_1426).yyy, half3(float3(0.039999999105930328369140625))) * _1445)) * clamp((exp2(exp2(fma(half(-16.0), half(params.facet_perceptualRoughness) * half(params.facet_perceptualRoughness), half(-1.0))) * log2(_1361 + _1280)) - half(1.0)) + _1280, half(0.0), half(1.0))) + min(fma((half3(float3(0.039999999105930328369140625)) + (half3(float3(0.959999978542327880859375)) * ((_1737 * _1737) * _1734))) * min(min((_1670 * _1670) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1544, sqrt(fma(_1361 * _1361, _1706, _1700)), _1361 * sqrt(fma(_1544 * _1544, _1706, _1700))), half(65504.0)), half(65504.0)), _1445, _1271 * half(0.3183098733425140380859375)) * (half4(frame.lightColor).xyz * _1544), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1767, half(1.0)));
     return out;
 }
 

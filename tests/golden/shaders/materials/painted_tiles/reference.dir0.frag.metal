@@ -49,30 +49,30 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
 {
     main0_out out = {};
     float3 _652 = fast::normalize(in.v_toEye);
-    float2 _752 = in.v_uv0 * float2(2.0 * params.tiling, params.tiling);
-    float4 _755 = facet_material_albedo.sample(facet_material_albedoSmplr, _752);
-    float4 _765 = facet_material_relief.sample(facet_material_reliefSmplr, _752);
-    float3 _769 = (_765.xyz * 2.007874011993408203125) - float3(1.007874011993408203125);
-    float2 _775 = fract(_752 * 4.0);
-    float _777 = _775.x;
-    float _784 = _775.y;
-    float3 _1291;
+    float2 _750 = in.v_uv0 * float2(2.0 * params.tiling, params.tiling);
+    float4 _753 = facet_material_albedo.sample(facet_material_albedoSmplr, _750);
+    float4 _763 = facet_material_relief.sample(facet_material_reliefSmplr, _750);
+    float3 _767 = (_763.xyz * 2.007874011993408203125) - float3(1.007874011993408203125);
+    float2 _773 = fract(_750 * 4.0);
+    float _775 = _773.x;
+    float _782 = _773.y;
+    float3 _1289;
     do
     {
         if (dot(in.v_tangent.xyz, in.v_tangent.xyz) == 0.0)
         {
-            _1291 = fast::normalize(in.v_normal);
+            _1289 = fast::normalize(in.v_normal);
             break;
         }
-        _1291 = fast::normalize(((in.v_tangent.xyz * _769.x) + ((cross(in.v_normal, in.v_tangent.xyz) * in.v_tangent.w) * _769.y)) + (in.v_normal * _769.z));
+        _1289 = fast::normalize(((in.v_tangent.xyz * _767.x) + ((cross(in.v_normal, in.v_tangent.xyz) * in.v_tangent.w) * _767.y)) + (in.v_normal * _767.z));
         break;
     } while(false);
-    float3 _969 = fast::clamp(_755.xyz, float3(0.0), float3(1.0)) * 1.0;
-    float _978 = fast::clamp(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_777, 1.0 - _777), fast::min(_784, 1.0 - _784)))), 0.0, 1.0);
-    float _1059 = fast::max(dot(_1291, _652), 9.9999997473787516355514526367188e-05);
-    float4 _1124 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1059, params.facet_perceptualRoughness), level(0.0));
-    float3 _1191 = fma(_969 * fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1291.y)) + (frame.sh[2].xyz * _1291.z)) + (frame.sh[3].xyz * _1291.x)) + (((((frame.sh[4].xyz * (_1291.x * _1291.y)) + (frame.sh[5].xyz * (_1291.y * _1291.z))) + (frame.sh[6].xyz * fma(3.0 * _1291.z, _1291.z, -1.0))) + (frame.sh[7].xyz * (_1291.x * _1291.z))) + (frame.sh[8].xyz * fma(_1291.x, _1291.x, -(_1291.y * _1291.y)))), float3(0.0)), fast::max(float3(_978), ((((((_969 * 2.040400028228759765625) - float3(0.3323999941349029541015625)) * _978) + ((_969 * (-4.79510021209716796875)) + float3(0.6417000293731689453125))) * _978) + ((_969 * 2.755199909210205078125) + float3(0.69029998779296875))) * _978), (facet_environment.sample(facet_environmentSmplr, reflect(-_652, _1291), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_1124.xxx, _1124.yyy, float3(0.039999999105930328369140625)) * (float3(1.0) + (float3(0.039999999105930328369140625) * ((1.0 / _1124.y) - 1.0))))) * fast::clamp((exp2(exp2(fma(-16.0, params.facet_perceptualRoughness * params.facet_perceptualRoughness, -1.0)) * log2(_1059 + _978)) - 1.0) + _978, 0.0, 1.0));
-    out.fragColor = float4(_1191, 1.0);
+    float3 _967 = fast::clamp(_753.xyz, float3(0.0), float3(1.0)) * 1.0;
+    float _976 = fast::clamp(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_775, 1.0 - _775), fast::min(_782, 1.0 - _782)))), 0.0, 1.0);
+    float _1057 = fast::max(dot(_1289, _652), 9.9999997473787516355514526367188e-05);
+    float4 _1122 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1057, params.facet_perceptualRoughness), level(0.0));
+    float3 _1189 = fma(_967 * fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1289.y)) + (frame.sh[2].xyz * _1289.z)) + (frame.sh[3].xyz * _1289.x)) + (((((frame.sh[4].xyz * (_1289.x * _1289.y)) + (frame.sh[5].xyz * (_1289.y * _1289.z))) + (frame.sh[6].xyz * fma(3.0 * _1289.z, _1289.z, -1.0))) + (frame.sh[7].xyz * (_1289.x * _1289.z))) + (frame.sh[8].xyz * fma(_1289.x, _1289.x, -(_1289.y * _1289.y)))), float3(0.0)), fast::max(float3(_976), ((((((_967 * 2.040400028228759765625) - float3(0.3323999941349029541015625)) * _976) + ((_967 * (-4.79510021209716796875)) + float3(0.6417000293731689453125))) * _976) + ((_967 * 2.755199909210205078125) + float3(0.69029998779296875))) * _976), (facet_environment.sample(facet_environmentSmplr, reflect(-_652, _1289), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_1122.xxx, _1122.yyy, float3(0.039999999105930328369140625)) * (float3(1.0) + (float3(0.039999999105930328369140625) * ((1.0 / _1122.y) - 1.0))))) * fast::clamp((exp2(exp2(fma(-16.0, params.facet_perceptualRoughness * params.facet_perceptualRoughness, -1.0)) * log2(_1057 + _976)) - 1.0) + _976, 0.0, 1.0));
+    out.fragColor = float4(_1189, 1.0);
     return out;
 }
 

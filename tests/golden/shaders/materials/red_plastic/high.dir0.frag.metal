@@ -52,13 +52,13 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _392 = normalize(half3(in.v_normal));
     float3 _396 = fast::normalize(in.v_toEye);
-    half _495 = _392.y;
-    half _500 = _392.z;
-    half _505 = _392.x;
-    half3 _573 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _495)) + (half4(frame.sh[2]).xyz * _500)) + (half4(frame.sh[3]).xyz * _505)) + (((((half4(frame.sh[4]).xyz * (_505 * _495)) + (half4(frame.sh[5]).xyz * (_495 * _500))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _500, _500, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_505 * _500))) + (half4(frame.sh[8]).xyz * fma(_505, _505, half(-float(_495 * _495))))), half3(float3(0.0)));
-    float4 _662 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_392, half3(_396)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _688 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_396), _392)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), _573, half4(_688).xyz * (mix(half4(_662).xxx, half4(_662).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_662).y) - half(1.0)))))), half(1.0)));
+    half _493 = _392.y;
+    half _498 = _392.z;
+    half _503 = _392.x;
+    half3 _571 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _493)) + (half4(frame.sh[2]).xyz * _498)) + (half4(frame.sh[3]).xyz * _503)) + (((((half4(frame.sh[4]).xyz * (_503 * _493)) + (half4(frame.sh[5]).xyz * (_493 * _498))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _498, _498, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_503 * _498))) + (half4(frame.sh[8]).xyz * fma(_503, _503, half(-float(_493 * _493))))), half3(float3(0.0)));
+    float4 _660 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_392, half3(_396)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _686 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_396), _392)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), _571, half4(_686).xyz * (mix(half4(_660).xxx, half4(_660).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_660).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

@@ -69,17 +69,13 @@ material.reflectance=params.reflectance;
 float diffuse_lambert(){
 return 0.31830988618;
 }
-const float GGX_D_SCALE=64.0;
-const float GGX_D_SCALE2=4096.0;
-float ggx_denominator_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec3 t=GGX_D_SCALE*cross(n,h);
-float a=NoH*(GGX_D_SCALE*alpha);
-return dot(t,t)+a*a;
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
 }
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-float k=(GGX_D_SCALE2*alpha)/ggx_denominator_scaled(alpha,NoH,n,h);
-float d=k*k*0.31830988618;
-return min(d,65504.0);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return min(k*k*0.31830988618,65504.0);
 }
 float visibility_smith_ggx_correlated(float alpha,float NoV,float NoL){
 float a2=alpha*alpha;

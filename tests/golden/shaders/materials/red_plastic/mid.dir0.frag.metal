@@ -34,9 +34,9 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _255 = normalize(half3(in.v_normal));
     float3 _259 = fast::normalize(in.v_toEye);
-    float4 _421 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_255, half3(_259)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _447 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_259), _255)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_447).xyz * (mix(half4(_421).xxx, half4(_421).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_421).y) - half(1.0)))))), half(1.0)));
+    float4 _419 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_255, half3(_259)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _445 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_259), _255)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_445).xyz * (mix(half4(_419).xxx, half4(_419).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_419).y) - half(1.0)))))), half(1.0)));
     return out;
 }
 

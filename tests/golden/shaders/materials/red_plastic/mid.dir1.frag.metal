@@ -51,20 +51,19 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _471 = normalize(half3(in.v_normal));
-    float3 _475 = fast::normalize(in.v_toEye);
-    half _617 = max(dot(_471, half3(_475)), half(9.9999997473787516355514526367188e-05));
-    float4 _656 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_617, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _675 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_656).y) - half(1.0)));
-    float4 _682 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_475), _471)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _522 = half4(frame.lightDirection).xyz;
-    half3 _789 = normalize(half3(_475) + _522);
-    half _740 = clamp(dot(_471, _522), half(0.0), half(1.0));
-    half3 _852 = cross(_471, _789) * half(64.0);
-    half _856 = clamp(dot(_471, _789), half(0.0), half(1.0)) * (half(64.0) * half(params.facet_alpha));
-    half _835 = half(6.283185482025146484375) * max(mix((half(2.0) * _740) * _617, _740 + _617, half(params.facet_alpha)), half(0.000244140625));
-    half _837 = (half(4096.0) * half(params.facet_alpha)) / (fma(_856, _856, dot(_852, _852)) * _835);
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_682).xyz * (mix(half4(_656).xxx, half4(_656).yyy, half3(float3(params.facet_f0))) * _675)) + min(((half3(float3(params.facet_f0)) * min(_837 * (_837 * _835), half(65504.0))) * _675) * (half4(frame.lightColor).xyz * _740), half3(float3(65504.0))), half(1.0)));
+    half3 _470 = normalize(half3(in.v_normal));
+    float3 _474 = fast::normalize(in.v_toEye);
+    half _616 = max(dot(_470, half3(_474)), half(9.9999997473787516355514526367188e-05));
+    float4 _655 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_616, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _674 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_655).y) - half(1.0)));
+    float4 _681 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_474), _470)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half3 _521 = half4(frame.lightDirection).xyz;
+    half3 _788 = normalize(half3(_474) + _521);
+    half _739 = clamp(dot(_470, _521), half(0.0), half(1.0));
+    half4 _857 = half4(cross(_470, _788), half(params.facet_alpha) * clamp(dot(_470, _788), half(0.0), half(1.0))) * half(64.0);
+    half _834 = half(6.283185482025146484375) * max(mix((half(2.0) * _739) * _616, _739 + _616, half(params.facet_alpha)), half(0.000244140625));
+    half _836 = (half(4096.0) * half(params.facet_alpha)) / (dot(_857, _857) * _834);
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_681).xyz * (mix(half4(_655).xxx, half4(_655).yyy, half3(float3(params.facet_f0))) * _674)) + min(((half3(float3(params.facet_f0)) * min(_836 * (_836 * _834), half(65504.0))) * _674) * (half4(frame.lightColor).xyz * _739), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

@@ -52,12 +52,12 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     float3 _392 = fast::normalize(in.v_normal);
     float3 _396 = fast::normalize(in.v_toEye);
-    float _495 = _392.y;
-    float _500 = _392.z;
-    float _505 = _392.x;
-    float4 _662 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_392, _396), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
-    float3 _697 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _495)) + (frame.sh[2].xyz * _500)) + (frame.sh[3].xyz * _505)) + (((((frame.sh[4].xyz * (_505 * _495)) + (frame.sh[5].xyz * (_495 * _500))) + (frame.sh[6].xyz * fma(3.0 * _500, _500, -1.0))) + (frame.sh[7].xyz * (_505 * _500))) + (frame.sh[8].xyz * fma(_505, _505, -(_495 * _495)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_396, _392), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_662.xxx, _662.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _662.y) - 1.0)))));
-    out.fragColor = float4(_697, 1.0);
+    float _493 = _392.y;
+    float _498 = _392.z;
+    float _503 = _392.x;
+    float4 _660 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_392, _396), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    float3 _695 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _493)) + (frame.sh[2].xyz * _498)) + (frame.sh[3].xyz * _503)) + (((((frame.sh[4].xyz * (_503 * _493)) + (frame.sh[5].xyz * (_493 * _498))) + (frame.sh[6].xyz * fma(3.0 * _498, _498, -1.0))) + (frame.sh[7].xyz * (_503 * _498))) + (frame.sh[8].xyz * fma(_503, _503, -(_493 * _493)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_396, _392), level(params.facet_perceptualRoughness * 4.0)).xyz * (mix(_660.xxx, _660.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _660.y) - 1.0)))));
+    out.fragColor = float4(_695, 1.0);
     return out;
 }
 

@@ -50,20 +50,20 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _503 = normalize(half3(in.v_normal));
     float3 _507 = fast::normalize(in.v_toEye);
-    half _618 = _503.y;
-    half _623 = _503.z;
-    half _628 = _503.x;
-    half3 _696 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _618)) + (half4(frame.sh[2]).xyz * _623)) + (half4(frame.sh[3]).xyz * _628)) + (((((half4(frame.sh[4]).xyz * (_628 * _618)) + (half4(frame.sh[5]).xyz * (_618 * _623))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _623, _623, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_628 * _623))) + (half4(frame.sh[8]).xyz * fma(_628, _628, half(-float(_618 * _618))))), half3(float3(0.0)));
-    half _746 = max(dot(_503, half3(_507)), half(9.9999997473787516355514526367188e-05));
-    half3 _750 = reflect(-half3(_507), _503);
-    float4 _785 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_746, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _811 = facet_environment.sample(facet_environmentSmplr, float3(_750), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _888 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _895 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _1059 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_746, _888)), level(0.0)));
-    half _858 = _1059.z;
-    float4 _916 = facet_environment.sample(facet_environmentSmplr, float3(_750), level(_888 * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_916).xyz, _895 * _858, fma(half3(float3(params.facet_diffuseColor)), _696, half4(_811).xyz * (mix(half4(_785).xxx, half4(_785).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_785).y) - half(1.0)))))) * fma(half(-float(max(_895.x, max(_895.y, _895.z)))), _858, half(1.0))), half(1.0)));
+    half _616 = _503.y;
+    half _621 = _503.z;
+    half _626 = _503.x;
+    half3 _694 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _616)) + (half4(frame.sh[2]).xyz * _621)) + (half4(frame.sh[3]).xyz * _626)) + (((((half4(frame.sh[4]).xyz * (_626 * _616)) + (half4(frame.sh[5]).xyz * (_616 * _621))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _621, _621, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_626 * _621))) + (half4(frame.sh[8]).xyz * fma(_626, _626, half(-float(_616 * _616))))), half3(float3(0.0)));
+    half _744 = max(dot(_503, half3(_507)), half(9.9999997473787516355514526367188e-05));
+    half3 _748 = reflect(-half3(_507), _503);
+    float4 _783 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_744, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _809 = facet_environment.sample(facet_environmentSmplr, float3(_748), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _886 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
+    half3 _893 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _1057 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_744, _886)), level(0.0)));
+    half _856 = _1057.z;
+    float4 _914 = facet_environment.sample(facet_environmentSmplr, float3(_748), level(_886 * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_914).xyz, _893 * _856, fma(half3(float3(params.facet_diffuseColor)), _694, half4(_809).xyz * (mix(half4(_783).xxx, half4(_783).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_783).y) - half(1.0)))))) * fma(half(-float(max(_893.x, max(_893.y, _893.z)))), _856, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -32,16 +32,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _368 = normalize(half3(in.v_normal));
     float3 _372 = fast::normalize(in.v_toEye);
-    half _507 = max(dot(_368, half3(_372)), half(9.9999997473787516355514526367188e-05));
-    half3 _511 = reflect(-half3(_372), _368);
-    float4 _546 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_507, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _572 = facet_environment.sample(facet_environmentSmplr, float3(_511), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half _649 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _656 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _780 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_507, _649)), level(0.0)));
-    half _619 = _780.z;
-    float4 _677 = facet_environment.sample(facet_environmentSmplr, float3(_511), level(_649 * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_677).xyz, _656 * _619, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_572).xyz * (mix(half4(_546).xxx, half4(_546).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_546).y) - half(1.0)))))) * fma(half(-float(max(_656.x, max(_656.y, _656.z)))), _619, half(1.0))), half(1.0)));
+    half _505 = max(dot(_368, half3(_372)), half(9.9999997473787516355514526367188e-05));
+    half3 _509 = reflect(-half3(_372), _368);
+    float4 _544 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_505, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _570 = facet_environment.sample(facet_environmentSmplr, float3(_509), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    half _647 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
+    half3 _654 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _778 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_505, _647)), level(0.0)));
+    half _617 = _778.z;
+    float4 _675 = facet_environment.sample(facet_environmentSmplr, float3(_509), level(_647 * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_675).xyz, _654 * _617, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_570).xyz * (mix(half4(_544).xxx, half4(_544).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_544).y) - half(1.0)))))) * fma(half(-float(max(_654.x, max(_654.y, _654.z)))), _617, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -70,18 +70,15 @@ material.roughness=params.roughness;
 material.sheenColor=params.sheen;
 material.sheenRoughness=params.sheenRoughness;
 }
-const float GGX_D_SCALE=64.0;
-const float GGX_D_SCALE2=4096.0;
-float ggx_denominator_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec3 t=GGX_D_SCALE*cross(n,h);
-float a=NoH*(GGX_D_SCALE*alpha);
-return dot(t,t)+a*a;
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
 }
 const float FUSED_HAMMON_M_MIN=2.44140625e-4;
 float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
-float d=ggx_denominator_scaled(alpha,NoH,n,h);
+float d=ggx_d_scaled(alpha,NoH,n,h);
 float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(GGX_D_SCALE2*alpha)/(d*((2.0*3.14159265359)*m));
+float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
 return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){

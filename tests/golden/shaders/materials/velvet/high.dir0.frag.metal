@@ -50,15 +50,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _399 = normalize(half3(in.v_normal));
     float3 _403 = fast::normalize(in.v_toEye);
-    half _504 = _399.y;
-    half _509 = _399.z;
-    half _514 = _399.x;
-    half3 _582 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _504)) + (half4(frame.sh[2]).xyz * _509)) + (half4(frame.sh[3]).xyz * _514)) + (((((half4(frame.sh[4]).xyz * (_514 * _504)) + (half4(frame.sh[5]).xyz * (_504 * _509))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _509, _509, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_514 * _509))) + (half4(frame.sh[8]).xyz * fma(_514, _514, half(-float(_504 * _504))))), half3(float3(0.0)));
-    half3 _682 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _819 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_399, half3(_403)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _641 = _819.z;
-    float4 _698 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_403), _399)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_698).xyz, _682 * _641, (half3(float3(params.facet_diffuseColor)) * _582) * fma(half(-float(max(_682.x, max(_682.y, _682.z)))), _641, half(1.0))), half(1.0)));
+    half _502 = _399.y;
+    half _507 = _399.z;
+    half _512 = _399.x;
+    half3 _580 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _502)) + (half4(frame.sh[2]).xyz * _507)) + (half4(frame.sh[3]).xyz * _512)) + (((((half4(frame.sh[4]).xyz * (_512 * _502)) + (half4(frame.sh[5]).xyz * (_502 * _507))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _507, _507, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_512 * _507))) + (half4(frame.sh[8]).xyz * fma(_512, _512, half(-float(_502 * _502))))), half3(float3(0.0)));
+    half3 _680 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _817 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_399, half3(_403)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _639 = _817.z;
+    float4 _696 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_403), _399)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_696).xyz, _680 * _639, (half3(float3(params.facet_diffuseColor)) * _580) * fma(half(-float(max(_680.x, max(_680.y, _680.z)))), _639, half(1.0))), half(1.0)));
     return out;
 }
 

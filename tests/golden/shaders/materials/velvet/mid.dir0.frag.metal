@@ -32,11 +32,11 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _264 = normalize(half3(in.v_normal));
     float3 _268 = fast::normalize(in.v_toEye);
-    half3 _443 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _540 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_264, half3(_268)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _402 = _540.z;
-    float4 _459 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_268), _264)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    out.fragColor = float4(half4(fma(half4(_459).xyz, _443 * _402, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_443.x, max(_443.y, _443.z)))), _402, half(1.0))), half(1.0)));
+    half3 _441 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _538 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_264, half3(_268)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _400 = _538.z;
+    float4 _457 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_268), _264)), level(half(params.facet_perceptualRoughness) * half(4.0)));
+    out.fragColor = float4(half4(fma(half4(_457).xyz, _441 * _400, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_441.x, max(_441.y, _441.z)))), _400, half(1.0))), half(1.0)));
     return out;
 }
 

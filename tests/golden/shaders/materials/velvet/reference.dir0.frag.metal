@@ -50,14 +50,14 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     float3 _399 = fast::normalize(in.v_normal);
     float3 _403 = fast::normalize(in.v_toEye);
-    float _504 = _399.y;
-    float _509 = _399.z;
-    float _514 = _399.x;
-    float4 _628 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_399, _403), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
-    float3 _682 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
-    float _641 = _628.z;
-    float3 _666 = fma(facet_environment.sample(facet_environmentSmplr, reflect(-_403, _399), level(params.facet_perceptualRoughness * 4.0)).xyz, _682 * _641, (float3(params.facet_diffuseColor) * fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _504)) + (frame.sh[2].xyz * _509)) + (frame.sh[3].xyz * _514)) + (((((frame.sh[4].xyz * (_514 * _504)) + (frame.sh[5].xyz * (_504 * _509))) + (frame.sh[6].xyz * fma(3.0 * _509, _509, -1.0))) + (frame.sh[7].xyz * (_514 * _509))) + (frame.sh[8].xyz * fma(_514, _514, -(_504 * _504)))), float3(0.0))) * fma(-fast::max(_682.x, fast::max(_682.y, _682.z)), _641, 1.0));
-    out.fragColor = float4(_666, 1.0);
+    float _502 = _399.y;
+    float _507 = _399.z;
+    float _512 = _399.x;
+    float4 _626 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_399, _403), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    float3 _680 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
+    float _639 = _626.z;
+    float3 _664 = fma(facet_environment.sample(facet_environmentSmplr, reflect(-_403, _399), level(params.facet_perceptualRoughness * 4.0)).xyz, _680 * _639, (float3(params.facet_diffuseColor) * fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _502)) + (frame.sh[2].xyz * _507)) + (frame.sh[3].xyz * _512)) + (((((frame.sh[4].xyz * (_512 * _502)) + (frame.sh[5].xyz * (_502 * _507))) + (frame.sh[6].xyz * fma(3.0 * _507, _507, -1.0))) + (frame.sh[7].xyz * (_512 * _507))) + (frame.sh[8].xyz * fma(_512, _512, -(_502 * _502)))), float3(0.0))) * fma(-fast::max(_680.x, fast::max(_680.y, _680.z)), _639, 1.0));
+    out.fragColor = float4(_664, 1.0);
     return out;
 }
 
