@@ -426,7 +426,8 @@ TEST(Reference, WhiteFurnaceGgxSmithIsAtMostOne) {
 // at 2^20).
 TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "brdf_ggx.glsl", "specular_ggx_smith.glsl"});
+  req.chunks =
+      chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "brdf_ggx.glsl", "specular_ggx_smith.glsl"});
   req.chunks.insert(req.chunks.begin(), "#define FACET_PRECISION_HIGHP 1\n");  // as assembly does for `reference`
   req.body = R"(
     float alpha = in0.x, NoV = in0.y;
@@ -475,7 +476,8 @@ std::vector<std::string> clearCoatChunks() {
   out.push_back(
       "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
       "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n");
-  for (std::string& text : chunks({"clear_coat_ambient.glsl", "ggx_denominator.glsl", "clear_coat_ggx_kelemen.glsl"})) out.push_back(text);
+  for (std::string& text : chunks({"clear_coat_ambient.glsl", "ggx_denominator.glsl", "clear_coat_ggx_kelemen.glsl"}))
+    out.push_back(text);
   return out;
 }
 
@@ -604,7 +606,8 @@ std::vector<std::string> anisotropyChunks() {
       "#define FACET_ANISOTROPY_LOBE 1\n"
       "struct MaterialInputs { float anisotropy; vec3 anisotropyDirection; };\n"
       "vec3 v_normal; vec4 v_tangent;\n");
-  for (std::string& text : chunks({"ggx_denominator.glsl", "brdf_ggx.glsl", "anisotropy_frame.glsl", "anisotropy_ggx_smith.glsl"}))
+  for (std::string& text :
+       chunks({"ggx_denominator.glsl", "brdf_ggx.glsl", "anisotropy_frame.glsl", "anisotropy_ggx_smith.glsl"}))
     out.push_back(text);
   return out;
 }
