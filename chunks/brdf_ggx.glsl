@@ -4,17 +4,19 @@
 // (Fresnel); the fp16 forms follow Filament's PBR document §4.4 and its mobile talk.
 // Needs: math.glsl, precision.glsl.
 
+#include "ggx_denominator.glsl"
+
 // GGX normal distribution D(h) = α² / (π ((n·h)²(α² − 1) + 1)²), written with the Lagrange
-// identity 1 − (n·h)² = |n × h|² as D = (α / (|n × h|² + (α n·h)²))² / π.
+// identity 1 − (n·h)² = |n × h|² as D = (α / d)² / π, d = |n × h|² + (α n·h)², formed scaled as
+// d' = 2^12 d (ggx_denominator.glsl has why and the bounds): D = (2^12 α / d')² / π.
 // fp16: the textbook form computes 1 − (n·h)², which cancels to 0 for n·h within 2^-11 of 1
-// (the whole highlight core of a smooth surface); the cross product keeps those bits. With
-// α ≥ 0.089² the peak 1/(π α²) ≤ 5075 is finite; saturateMediump guards the rest.
+// (the whole highlight core of a smooth surface); the cross product keeps those bits, and the
+// scale keeps its squares normal where a GPU flushes subnormals. With α ≥ 0.089², d' ≥ 0.257 and
+// k = 2^12 α / d' = α / d ≤ 1/α ≤ 127; the peak 1/(π α²) ≤ 5075 is finite; saturateMediump guards
+// the rest.
 float distribution_ggx(float alpha, float NoH, vec3 n, vec3 h) {
-    vec3 NxH = cross(n, h);
-    float a = NoH * alpha;
-    float k = alpha / (dot(NxH, NxH) + a * a);
-    float d = k * k * INV_PI;
-    return saturateMediump(d);
+    float k = GGX_D_SCALE2 * alpha / ggx_d_scaled(alpha, NoH, n, h);
+    return saturateMediump(k * k * INV_PI);
 }
 
 // Height-correlated Smith visibility V = G₂ / (4 n·l n·v):

@@ -22,16 +22,11 @@
 //   - D at a smooth coat: α_c² = r_c⁴ in the textbook denominator underflows binary16 below
 //     r_c = 0.0884; the clamp to MIN_PERCEPTUAL_ROUGHNESS (0.089, r⁴ = 6.27e-5 ≥ 2^-14) and the
 //     Lagrange form (no 1 − (n·h)² cancellation) keep d ≥ α_c².
-//   - d's terms: the squares of t = n_c × h fall below 2^-14 and are flushed to 0 (most mobile GPUs
-//     flush fp16 subnormals; the fp16 emulation does) wherever |t_i| < 2^-7, which at α_c = 0.0079
-//     is the whole core of a smooth coat's highlight: d read (α_c n·h)² there, D its peak, and the
-//     coat reflected 1.48× its light at normal incidence (over a white base, 1.21: measured by the
-//     furnace above). So t and α_c n·h are scaled by 2^6 before they are squared: d' = 2^12 d ∈
-//     [0.257, 4096], a flushed square (< 2^-14) is ≤ 2.4e-4 of d', and k = 2^12 α_c / (d' X) is
-//     the same value; a component of t itself below 2^-14, flushed, loses < (2^6 · 2^-14)² = 2^-16,
-//     ≤ 6e-5 of d'; 2^6 t ≤ 64. The scale
-//     costs +0.09 Mali-G57 cycles in high.dir1 (scaling cross(n, h) after the cross product keeps
-//     it shared with the base's D; scaling n before it cost +0.17).
+//   - d's terms: the squares of n_c × h fall below 2^-14 and are flushed to 0 wherever a component
+//     is below 2^-7, the whole core of a smooth coat's highlight (the coat reflected 1.48× its
+//     light at normal incidence, 1.21 over a white base: measured by the furnace above). So d is
+//     formed scaled, d' = 2^12 d ∈ [0.257, 4096] (ggx_denominator.glsl, shared with the base's D),
+//     and k = 2^12 α_c / (d' X) is the same value.
 //   - V_K at grazing: (l·h)² underflows binary16's smallest normal 2^-14 for l·h < 2^-7 and is
 //     flushed: X = 0, k = +inf and k · (k · X) = inf · 0 = NaN. It is floored at 2^-14, so X ≥ 4π · 2^-14 =
 //     7.7e-4. Where the floor acts it changes nothing visible: 2 (n·h)(l·h) = n·v + n·l for the
@@ -50,8 +45,9 @@
 // the 2^6 scale of t. highp (`reference`): the same formula, saturateMediump an identity.
 // Needs: math.glsl, precision.glsl, clear_coat_ambient.glsl.
 
+#include "ggx_denominator.glsl"
+
 const float CLEAR_COAT_LOH2_MIN = 6.103515625e-5;  // 2^-14, the floor of (l·h)² (above)
-const float CLEAR_COAT_SCALE = 64.0;               // 2^6: keeps d's terms and d·X normal in fp16 (above)
 
 // The coat's light for one light; lightColor is the pre-exposed illuminance at normal incidence.
 vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 lightColor) {
@@ -60,11 +56,9 @@ vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float r = clear_coat_perceptual_roughness(material);
     float alpha = r * r;
-    vec3 NxH = CLEAR_COAT_SCALE * cross(n, h);  // cross(n, h) is the base lobe's too (brdf_ggx.glsl)
-    float a = NoH * (CLEAR_COAT_SCALE * alpha);
-    float d = dot(NxH, NxH) + a * a;  // 2^12 (|n × h|² + (α n·h)²)
+    float d = ggx_d_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
     float x = (4.0 * PI) * max(LoH * LoH, CLEAR_COAT_LOH2_MIN);
-    float k = ((CLEAR_COAT_SCALE * CLEAR_COAT_SCALE) * alpha) / (d * x);
+    float k = (GGX_D_SCALE2 * alpha) / (d * x);
     float DV = saturateMediump(k * (k * x));
     float Fc = clear_coat_fresnel(LoH) * clear_coat_strength(material);
     return DV * Fc * (lightColor * NoL);

@@ -13,9 +13,10 @@
 // fp16 (mediump), for α ≥ 0.089² (MIN_PERCEPTUAL_ROUGHNESS) and d ∈ [α², 1]:
 //   - M is floored at 2^-12 (it only gets there for α n·v < 2^-12, far past the grazing peak),
 //     so X ≥ 2π·2^-12 = 1.5e-3 is a normal number;
-//   - d X can fall below 2^-14 (the smallest normal fp16: d = α² = 6.27e-5 at the peak of the
-//     smoothest lobe, X < 1), so the division runs on Y = 2^10 X with the numerator 2^10 α:
-//     d Y ≥ 6.27e-5 · 2π·2^-2 = 9.8e-5 (normal), d Y ≤ 2π·2^11 = 12868 and 2^10 α ≤ 1024;
+//   - d is formed scaled, d' = 2^12 d ∈ [0.257, 4096] (ggx_denominator.glsl: unscaled, the squares
+//     of n × h flush to 0 in the highlight's core of a smooth lobe, and F = 1 reflected 1.48× its
+//     light at r = 0.089); d X alone can fall below 2^-14 (d = α² = 6.27e-5, X < 1), d' X ∈
+//     [0.257 · 1.5e-3, 4096 · 4π] = [3.9e-4, 51472] is normal and finite, the numerator 2^12 α ≤ 4096;
 //   - k · X = α / d ≤ 1/α ≤ 127, so k · (k · X) overflows only where the true value exceeds
 //     65504 (the grazing mirror peak, 1/(α² X)); saturateMediump then returns 65504 (k itself may
 //     be inf there; X > 0, so never NaN). (k · k) · X would overflow for k > 256 first.
@@ -24,15 +25,14 @@
 // tests/compiler/test_fp16.cpp (FusedHammonGlintFollowsItsFormulaAtGrazingMirror) fails without either.
 // Needs: math.glsl, precision.glsl.
 
+#include "ggx_denominator.glsl"
+
 const float FUSED_HAMMON_M_MIN = 2.44140625e-4;   // 2^-12, the floor of M (above)
-const float FUSED_HAMMON_SCALE = 1024.0;          // 2^10: keeps d·X a normal fp16 number (above)
 
 float specular_fused_hammon(float alpha, float NoV, float NoL, float NoH, vec3 n, vec3 h) {
-    vec3 NxH = cross(n, h);
-    float a = NoH * alpha;
-    float d = dot(NxH, NxH) + a * a;
+    float d = ggx_d_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
     float m = max(mix(2.0 * NoL * NoV, NoL + NoV, alpha), FUSED_HAMMON_M_MIN);
-    float k = (FUSED_HAMMON_SCALE * alpha) / (d * ((FUSED_HAMMON_SCALE * 2.0 * PI) * m));
+    float k = (GGX_D_SCALE2 * alpha) / (d * ((2.0 * PI) * m));
     return saturateMediump(k * (k * ((2.0 * PI) * m)));
 }
 

@@ -33,6 +33,8 @@
 // distribution_ggx's n × h form instead.
 // Needs: math.glsl, precision.glsl.
 
+#include "ggx_denominator.glsl"
+
 // Facet's fitted coefficients (see above); m floors LoH², p α + q scales the fused V·F.
 const float ZIOMA_LOH2_MIN = 0.15;
 const float ZIOMA_ROUGH_SCALE = -0.3125;
@@ -62,8 +64,10 @@ float specular_zioma(float alpha, float NoH, float LoH) {
 // GLSL ES path stores the mediump normal varying as fp16 (tests/runtime/test_gl_backend.cpp), and with the
 // textbook d that quantised normal speckles the highlight core of the r = 0.35 example sphere by
 // up to 29/255 against Vulkan; with this form the two agree within 1/255. Same single division.
+// fp16: d is formed scaled by 2^12 (ggx_denominator.glsl: unscaled, the squares of n × h flush to
+// 0 in a smooth lobe's highlight core, and F = 1 reflected 1.47× its light at r = 0.089), then
+// scaled back exactly (a power of two) to d ∈ [α², 1], ≥ 6.27e-5: normal.
 float specular_zioma_nxh(float alpha, float NoH, vec3 n, vec3 h, float LoH) {
-    vec3 NxH = cross(n, h);
-    float a = NoH * alpha;
-    return specular_zioma_form_d(alpha, dot(NxH, NxH) + a * a, LoH, ZIOMA_LOH2_MIN, ZIOMA_ROUGH_SCALE, ZIOMA_ROUGH_BIAS);
+    float d = ggx_d_scaled(alpha, NoH, n, h) * (1.0 / GGX_D_SCALE2);
+    return specular_zioma_form_d(alpha, d, LoH, ZIOMA_LOH2_MIN, ZIOMA_ROUGH_SCALE, ZIOMA_ROUGH_BIAS);
 }

@@ -3,11 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "facet/compiler/assemble.h"
-#include "facet/compiler/specular_lut.h"
 #include "facet/eval/standard_model.h"
-#include "facet/ibl/dfg_lut.h"
-#include "facet/runtime/environment.h"
 #include "sweep_support.h"
 
 namespace facet::eval {
@@ -15,12 +11,6 @@ namespace {
 
 using permutations::PrecisionPolicy;
 using permutations::SpecularModel;
-
-std::string axisValue(const char* axisName, const permutations::TierConfig& config) {
-  for (const Axis& axis : axes())
-    if (std::string(axis.name) == axisName) return axis.get(config);
-  return "";
-}
 
 // The geometry is built at highp from the sampled cosines, as the forward shader forms v, l and
 // h at highp (shading_standard.glsl, half_vector); the lobe runs at the default precision.
@@ -73,28 +63,14 @@ std::vector<Sample> samples(const BrdfSweepDomain& d, std::vector<double>* rough
 
 bool sweepOne(GpuEvaluator& gpu, SpecularModel model, PrecisionPolicy precision, const BrdfSweepDomain& domain,
               BrdfSweepRow* row, std::string* error) {
-  std::string lobe;
-  if (!compiler::specularLobeSource(model, &lobe, error)) return false;
   GpuEvalRequest request;
-  std::string defines = setPrecision(&request, precision);
-  defines += std::string("#define ") + compiler::kSpecularLutSamplerName + " lut\n";
-  request.chunks = {defines, lobe};
-  request.body = kSweepBody;
   GpuR8Texture lut;
-  if (model == SpecularModel::Lut) {
-    compiler::SpecularLut table = compiler::generateSpecularLut();
-    lut = {table.width, table.height, std::move(table.texels)};
-    request.lut = &lut;
-  }
+  if (!setSpecularLobe(&request, model, precision, &lut, error)) return false;
+  request.body = kSweepBody;
   std::vector<Sample> grid = samples(domain, &row->roughness);
   for (const Sample& s : grid) {
     request.in0.push_back(glm::vec4(s.NoV, s.NoL, s.phi, s.roughness));
-    // A lobe scaled by the environment BRDF's albedo (the lut lobe, SPECULAR_LOBE_SCALED_BY_ALBEDO
-    // in shading_standard.glsl) gets what the forward shader gives it: E(n·v, r, f0) from the
-    // runtime's DFG table, sampled as the GPU samples it.
-    double color = s.f0;
-    if (model == SpecularModel::Lut)
-      color = ibl::specularEnvironmentBrdf(runtime::dfgTable().sampleBilinear(s.NoV, s.roughness), s.f0);
+    const double color = specularLobeColor(model, s.NoV, s.roughness, s.f0);
     request.in1.push_back(glm::vec4(float(color), 0.0f, 0.0f, 0.0f));
   }
   GpuEvalResult result = gpu.run(request);

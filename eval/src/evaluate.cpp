@@ -560,6 +560,9 @@ std::optional<EvalReport> evaluate(const ir::Material& material, const EvalOptio
     }
     if (!material.cloth && !sweepBrdfDomain(gpu, configs, report.brdfDomain, &report.brdfSweep, &error->message))
       return std::nullopt;
+    if (!material.cloth && !furnaceStandardLobes(gpu, configs, report.brdfDomain, report.furnaceDomain,
+                                                 &report.lobeFurnace, &error->message))
+      return std::nullopt;
     if (!sweepModelLobes(gpu, material, configs, report.brdfDomain, report.furnaceDomain, &report.modelLobeSweep,
                          &report.lobeFurnace, &error->message))
       return std::nullopt;

@@ -117,13 +117,14 @@ std::string sweepBody(Model model) {
 // the slopes of the isotropic GGX of α = 1 by (α_t, α_b) (Heitz 2014: the anisotropic GGX's slope
 // distribution is the stretched isotropic one), N Hammersley points, l = reflect(−v, h),
 // pdf(l) = D n·h / (4 v·h) at highp. D cancels in exact arithmetic, so the estimator stays small
-// at the roughness floor. result.y: the clear coat over a white Lambertian base, whose albedo
-// ∫ (1/π) n·l dω is 1, so E_c + (1 − Fc(n·v)).
-std::string ggxFurnaceBody(Model model, int samples) {
-  const char* alphas = model == Model::ClearCoat
-                           ? "highp vec2 a = vec2(r * r);\n"
-                           : "highp vec2 a = clamp(r * r * vec2(1.0 + in1.y, 1.0 - in1.y), 0.007921, 1.0);\n";
-  return std::string(kView) + setup(model) + "    " + alphas + "    const int N = " + std::to_string(samples) + ";\n" +
+// at the roughness floor. `setupCode` and `lobeCode` as setup() and lobe() give them; result.y of
+// a layered lobe: the clear coat over a white Lambertian base, whose albedo ∫ (1/π) n·l dω is 1,
+// so E_c + (1 − Fc(n·v)).
+std::string ggxFurnaceBody(const std::string& setupCode, bool anisotropic, const std::string& lobeCode, bool layered,
+                           int samples) {
+  const char* alphas = anisotropic ? "highp vec2 a = clamp(r * r * vec2(1.0 + in1.y, 1.0 - in1.y), 0.007921, 1.0);\n"
+                                   : "highp vec2 a = vec2(r * r);\n";
+  return std::string(kView) + setupCode + "    " + alphas + "    const int N = " + std::to_string(samples) + ";\n" +
          R"(
     highp float sum = 0.0;
     for (int i = 0; i < N; ++i) {
@@ -139,12 +140,22 @@ std::string ggxFurnaceBody(Model model, int samples) {
         highp float s = dot(x, x) + NoH * NoH;
         highp float pdf = NoH / (PI * a.x * a.y * s * s * 4.0 * VoH);
         )" +
-         lobe(model) +
+         lobeCode +
          R"(        sum += lobe / pdf;
     }
     result.x = sum / float(N);
-)" + (model == Model::ClearCoat ? "    result.y = result.x + shading_clear_coat_attenuation;\n" : "");
+)" + (layered ? "    result.y = result.x + shading_clear_coat_attenuation;\n" : "");
 }
+
+std::string ggxFurnaceBody(Model model, int samples) {
+  return ggxFurnaceBody(setup(model), model == Model::Anisotropy, lobe(model), model == Model::ClearCoat, samples);
+}
+
+// A standard specular lobe (brdf_sweep.h's) times n·l for a unit light, with F = 1: f0 = in1.x is 1,
+// or for the lut lobe the environment BRDF's albedo at f0 = 1, as the forward shader scales it
+// (specularLobeColor). n·v is floored as shading_standard.glsl floors it.
+constexpr const char* kStandardLobe =
+    "float lobe = specular_lobe(r, r * r, max(NoV, MIN_N_DOT_V), NoL, NoH, LoH, n, v, l, h, vec3(in1.x)).x * NoL;\n";
 
 // The sheen's white furnace: a midpoint grid over cos θ_l × azimuth ∈ [0, π] (mirror-symmetric
 // about v's plane), dω = d cos θ_l dφ, as ibl/sheen_lut.h integrates the table.
@@ -400,6 +411,42 @@ bool sweepRows(GpuEvaluator& gpu, const Key& key, const BrdfSweepDomain& domain,
   return true;
 }
 
+// The furnace's points: the 8 roughness rows × (anisotropies × view azimuths, for the anisotropic
+// lobe) × the furnace's n·v, with f0 = 1.
+std::vector<Sample> furnacePoints(const LobeFurnaceDomain& d, const BrdfSweepDomain& sweep, bool anisotropic) {
+  const std::vector<double> one = {0.0};
+  const std::vector<double>& ks = anisotropic ? d.anisotropies : one;
+  const std::vector<double>& phiVs = anisotropic ? d.viewAzimuths : one;
+  std::vector<Sample> points;
+  for (int row = 0; row < sweep.roughnesses; ++row)
+    for (double k : ks)
+      for (double phiV : phiVs)
+        for (double NoV : d.cosines)
+          points.push_back(
+              {float(NoV), 0.0f, 0.0f, float(sweepRoughness(sweep, row)), 1.0f, float(k), float(phiV), row});
+  return points;
+}
+
+LobeFurnaceRow furnaceRow(const std::string& lobe, PrecisionPolicy precision,
+                          const std::vector<std::string>& configurations, const std::string& integrand, double bound) {
+  LobeFurnaceRow r;
+  r.lobe = lobe;
+  r.precision = precisionName(precision);
+  r.configurations = configurations;
+  r.integrand = integrand;
+  r.bound = bound;
+  r.maxAlbedo = -std::numeric_limits<double>::infinity();
+  return r;
+}
+
+void note(LobeFurnaceRow* r, double albedo, const Sample& p) {
+  // A NaN albedo is the worst of all.
+  if (std::isnan(albedo)) albedo = std::numeric_limits<double>::infinity();
+  if (albedo <= r->maxAlbedo) return;
+  r->maxAlbedo = albedo;
+  r->atNoV = p.NoV, r->atRoughness = p.roughness, r->atAnisotropy = p.anisotropy;
+}
+
 // The furnace rows of one (model, precision).
 bool furnaceRows(GpuEvaluator& gpu, const Key& key, const LobeFurnaceDomain& d, const BrdfSweepDomain& sweep,
                  std::vector<LobeFurnaceRow>* rows, std::string* error) {
@@ -407,38 +454,14 @@ bool furnaceRows(GpuEvaluator& gpu, const Key& key, const LobeFurnaceDomain& d, 
   const std::string defines = setPrecision(&request, key.precision);
   if (!modelChunks(key.model, defines, &request.chunks, error)) return false;
   request.body = key.model == Model::Sheen ? sheenFurnaceBody(d.sheenSteps) : ggxFurnaceBody(key.model, d.ggxSamples);
-  const std::vector<double> one = {0.0};
-  const std::vector<double>& ks = key.model == Model::Anisotropy ? d.anisotropies : one;
-  const std::vector<double>& phiVs = key.model == Model::Anisotropy ? d.viewAzimuths : one;
-  std::vector<Sample> points;
-  for (int row = 0; row < sweep.roughnesses; ++row)
-    for (double k : ks)
-      for (double phiV : phiVs)
-        for (double NoV : d.cosines) {
-          points.push_back(
-              {float(NoV), 0.0f, 0.0f, float(sweepRoughness(sweep, row)), 1.0f, float(k), float(phiV), row});
-          push(&request, points.back());
-        }
+  const std::vector<Sample> points = furnacePoints(d, sweep, key.model == Model::Anisotropy);
+  for (const Sample& p : points) push(&request, p);
   GpuEvalResult result;
   if (!runOrFail(gpu, request, std::string("white furnace of the ") + modelName(key.model) + " lobe", &result, error))
     return false;
 
   auto row = [&](const std::string& lobe, const std::string& integrand, double bound) {
-    LobeFurnaceRow r;
-    r.lobe = lobe;
-    r.precision = precisionName(key.precision);
-    r.configurations = key.configurations;
-    r.integrand = integrand;
-    r.bound = bound;
-    r.maxAlbedo = -std::numeric_limits<double>::infinity();
-    return r;
-  };
-  auto note = [](LobeFurnaceRow* r, double albedo, const Sample& p) {
-    // A NaN albedo is the worst of all.
-    if (std::isnan(albedo)) albedo = std::numeric_limits<double>::infinity();
-    if (albedo <= r->maxAlbedo) return;
-    r->maxAlbedo = albedo;
-    r->atNoV = p.NoV, r->atRoughness = p.roughness, r->atAnisotropy = p.anisotropy;
+    return furnaceRow(lobe, key.precision, key.configurations, integrand, bound);
   };
   const std::string name = modelName(key.model);
   std::vector<LobeFurnaceRow> out;
@@ -470,6 +493,39 @@ bool furnaceRows(GpuEvaluator& gpu, const Key& key, const LobeFurnaceDomain& d, 
 }
 
 }  // namespace
+
+bool furnaceStandardLobes(GpuEvaluator& gpu, const std::vector<Configuration>& configurations,
+                          const BrdfSweepDomain& domain, const LobeFurnaceDomain& furnaceDomain,
+                          std::vector<LobeFurnaceRow>* furnace, std::string* error) {
+  std::vector<LobeFurnaceRow> out;
+  std::vector<std::pair<permutations::SpecularModel, PrecisionPolicy>> keys;
+  for (const Configuration& c : configurations) {
+    const auto key = std::make_pair(c.config.specular, c.config.precision);
+    auto it = std::find(keys.begin(), keys.end(), key);
+    if (it != keys.end()) {
+      out[size_t(it - keys.begin())].configurations.push_back(c.name);
+      continue;
+    }
+    const std::string lobeName = axisValue("specular", c.config);
+    GpuEvalRequest request;
+    GpuR8Texture lut;
+    if (!setSpecularLobe(&request, key.first, key.second, &lut, error)) return false;
+    request.body = ggxFurnaceBody("", false, kStandardLobe, false, furnaceDomain.ggxSamples);
+    const std::vector<Sample> points = furnacePoints(furnaceDomain, domain, false);
+    for (Sample p : points) {
+      p.f0 = float(specularLobeColor(key.first, p.NoV, p.roughness, 1.0));
+      push(&request, p);
+    }
+    GpuEvalResult result;
+    if (!runOrFail(gpu, request, "white furnace of the " + lobeName + " lobe", &result, error)) return false;
+    LobeFurnaceRow row = furnaceRow(lobeName, key.second, {c.name}, "f_s n.l, F = 1", kFurnaceBound);
+    for (size_t i = 0; i < points.size(); ++i) note(&row, result.values[i].x, points[i]);
+    keys.push_back(key);
+    out.push_back(std::move(row));
+  }
+  for (LobeFurnaceRow& r : out) furnace->push_back(std::move(r));
+  return true;
+}
 
 bool sweepModelLobes(GpuEvaluator& gpu, const ir::Material& material, const std::vector<Configuration>& configurations,
                      const BrdfSweepDomain& domain, const LobeFurnaceDomain& furnaceDomain,

@@ -297,7 +297,7 @@ std::string brdfSweepMarkdown(const std::vector<BrdfSweepRow>& rows, const BrdfS
   return s;
 }
 
-// The material models' lobes over the BRDF domain and their white furnace (lobe_sweep.h).
+// The material models' lobes over the BRDF domain (lobe_sweep.h).
 std::string modelLobesMarkdown(const EvalReport& r) {
   std::string s =
       "\n**The material models' lobes** over the same domain (the anisotropic lobe also over anisotropy "
@@ -316,12 +316,18 @@ std::string modelLobesMarkdown(const EvalReport& r) {
          fmt("%.4f", b.worstRelativeRmse) + ") | " + fmt("%.4f", b.meanScreenRmse) + " | " +
          std::to_string(b.nonFinite) + " | " + hard + " |\n";
   }
-  s += "\nWhite furnace of each lobe: the directional albedo E(n·v, r) = ∫ f · n·l dω of the chunk's output by "
-       "quadrature on the GPU (GGX lobes: " +
-       std::to_string(r.furnaceDomain.ggxSamples) + " GGX-distributed half vectors; the sheen: a " +
-       std::to_string(r.furnaceDomain.sheenSteps) + " × " + std::to_string(r.furnaceDomain.sheenSteps / 2) +
-       " grid), n·v from 1e-4 to 1, the largest over the domain and where:\n\n"
-       "| lobe | precision | integrand | max albedo | at n·v, r (, anisotropy) | bound |\n|---|---|---|--:|---|---|\n";
+  return s;
+}
+
+// The white furnace of each lobe (lobe_sweep.h): the standard specular lobes' and the models'.
+std::string lobeFurnaceMarkdown(const EvalReport& r) {
+  std::string s =
+      "\nWhite furnace of each lobe: the directional albedo E(n·v, r) = ∫ f · n·l dω of the chunk's output by "
+      "quadrature on the GPU (GGX lobes: " +
+      std::to_string(r.furnaceDomain.ggxSamples) + " GGX-distributed half vectors; the sheen: a " +
+      std::to_string(r.furnaceDomain.sheenSteps) + " × " + std::to_string(r.furnaceDomain.sheenSteps / 2) +
+      " grid), n·v from 1e-4 to 1, the largest over the domain and where:\n\n"
+      "| lobe | precision | integrand | max albedo | at n·v, r (, anisotropy) | bound |\n|---|---|---|--:|---|---|\n";
   for (const LobeFurnaceRow& f : r.lobeFurnace) {
     std::string at = fmt("%.4g", f.atNoV) + ", " + fmt("%.3f", f.atRoughness);
     if (f.lobe.rfind("anisotropy", 0) == 0) at += ", " + fmt("%.2f", f.atAnisotropy);
@@ -417,6 +423,7 @@ std::string reportMarkdown(const EvalReport& r) {
   if (!r.gpuStats.empty()) s += gpuMarkdown(r);
   if (!r.brdfSweep.empty()) s += brdfSweepMarkdown(r.brdfSweep, r.brdfDomain);
   if (!r.modelLobeSweep.empty()) s += modelLobesMarkdown(r);
+  if (!r.lobeFurnace.empty()) s += lobeFurnaceMarkdown(r);
   s += "\nPer view (PSNR dB):\n\n| configuration |";
   for (const std::string& v : r.viewNames) s += " " + v + " |";
   s += "\n|---|";

@@ -2,7 +2,11 @@
 
 #include <cmath>
 
+#include "facet/compiler/assemble.h"
 #include "facet/compiler/lower_relaxed_to_quantized.h"
+#include "facet/compiler/specular_lut.h"
+#include "facet/ibl/dfg_lut.h"
+#include "facet/runtime/environment.h"
 
 namespace facet::eval {
 
@@ -10,6 +14,12 @@ double sweepRoughness(const BrdfSweepDomain& domain, int row) {
   return domain.roughnesses == 1
              ? 1.0
              : kMinPerceptualRoughness + (1.0 - kMinPerceptualRoughness) * row / (domain.roughnesses - 1);
+}
+
+std::string axisValue(const char* axisName, const permutations::TierConfig& config) {
+  for (const Axis& axis : axes())
+    if (std::string(axis.name) == axisName) return axis.get(config);
+  return "";
 }
 
 std::string precisionName(permutations::PrecisionPolicy precision) {
@@ -29,6 +39,26 @@ std::string setPrecision(GpuEvalRequest* request, permutations::PrecisionPolicy 
     return compiler::lowerRelaxedToQuantized(words, &counts, e);
   };
   return "";
+}
+
+bool setSpecularLobe(GpuEvalRequest* request, permutations::SpecularModel model,
+                     permutations::PrecisionPolicy precision, GpuR8Texture* lut, std::string* error) {
+  std::string lobe;
+  if (!compiler::specularLobeSource(model, &lobe, error)) return false;
+  std::string defines = setPrecision(request, precision);
+  defines += std::string("#define ") + compiler::kSpecularLutSamplerName + " lut\n";
+  request->chunks = {defines, lobe};
+  if (model == permutations::SpecularModel::Lut) {
+    compiler::SpecularLut table = compiler::generateSpecularLut();
+    *lut = {table.width, table.height, std::move(table.texels)};
+    request->lut = lut;
+  }
+  return true;
+}
+
+double specularLobeColor(permutations::SpecularModel model, double NoV, double perceptualRoughness, double f0) {
+  if (model != permutations::SpecularModel::Lut) return f0;
+  return ibl::specularEnvironmentBrdf(runtime::dfgTable().sampleBilinear(NoV, perceptualRoughness), f0);
 }
 
 void RowErrors::add(size_t row, double value, double expected, double NoV, bool beyondHalf, BrdfSweepRow* out) {

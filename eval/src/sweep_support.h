@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "facet/eval/brdf_sweep.h"
+#include "facet/eval/configurations.h"
 #include "facet/permutations/tiers.h"
 
 namespace facet::eval {
@@ -19,6 +20,9 @@ inline constexpr double kMediumpMax = 65504.0;
 // The sweep's roughness rows: evenly from the floor to 1.
 double sweepRoughness(const BrdfSweepDomain& domain, int row);
 
+// The value of a configuration's axis (configurations.h), e.g. "ggx_smith" for "specular".
+std::string axisValue(const char* axisName, const permutations::TierConfig& config);
+
 // "highp (fp32)" or "mediump (fp16 emulated)".
 std::string precisionName(permutations::PrecisionPolicy precision);
 
@@ -28,6 +32,16 @@ std::string precisionName(permutations::PrecisionPolicy precision);
 // mediump in fp32. The geometry inputs stay highp (the forward shader forms v, l and h at highp).
 // Returns the defines to paste before the chunks.
 std::string setPrecision(GpuEvalRequest* request, permutations::PrecisionPolicy precision);
+
+// The request runs the tier's standard specular lobe (`specular_lobe`, compiler::specularLobeSource)
+// at `precision`; the lut lobe's table is generated into *lut and bound (*lut outlives the run).
+bool setSpecularLobe(GpuEvalRequest* request, permutations::SpecularModel model,
+                     permutations::PrecisionPolicy precision, GpuR8Texture* lut, std::string* error);
+
+// What the forward shader passes the lobe for f0: a lobe scaled by the environment BRDF's albedo
+// (the lut lobe, SPECULAR_LOBE_SCALED_BY_ALBEDO in shading_standard.glsl) gets E(n·v, r, f0) from
+// the runtime's DFG table, sampled as the GPU samples it; the others f0.
+double specularLobeColor(permutations::SpecularModel model, double NoV, double perceptualRoughness, double f0);
 
 // Squared errors per roughness row: [0] every sample alike, [1] weighed by n·v (a sphere's pixels
 // per solid angle of view directions go as n·v, so grazing views cover few pixels).

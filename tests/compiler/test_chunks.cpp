@@ -145,7 +145,7 @@ TEST(GpuEval, RunsOnTheAppsDeviceAndLeavesItAlive) {
 // square: < 2e-6. No saturation happens: the peak 1/(π α²) is ≤ 5075 for r ≥ 0.089.
 TEST(Chunks, DistributionGgxMatchesReference) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl"});
+  req.chunks = chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "brdf_ggx.glsl"});
   req.body = "result.x = distribution_ggx(in0.x, in1.z, vec3(0.0, 0.0, 1.0), in1.xyz);";
   for (double r : kRoughness)
     for (double c : kNoH) {
@@ -164,7 +164,7 @@ TEST(Chunks, DistributionGgxMatchesReference) {
 // saturated at 65504 as the chunks saturate it; 1e-5 relative (each test says why that holds).
 void checkVisibility(const char* chunk, const char* function, double (*exact)(double, double, double)) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", chunk});
+  req.chunks = chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", chunk});
   req.body = std::string("result.x = ") + function + "(in0.x, in0.y, in0.z);";
   for (double r : kRoughness)
     for (double v : kCosines)
@@ -190,7 +190,7 @@ TEST(Chunks, VisibilitySmithGgxCorrelatedMatchesReference) {
 // (Sterbenz) or rounded once, the fifth power by 3 products, then one mad; all values ≤ 1.
 TEST(Chunks, FresnelSchlickMatchesReference) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl"});
+  req.chunks = chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "brdf_ggx.glsl"});
   req.body = "result.xyz = fresnel_schlick(in0.xyz, in1.x);";
   for (double f0 : {0.0, 0.02, 0.04, 0.5, 1.0})
     for (double lh : kLoH)
@@ -218,7 +218,7 @@ TEST(Chunks, VisibilityHammonMatchesReference) {
 //    holds at the peak too.
 void checkZioma(const char* call, const reference::ZiomaCoefficients& k, bool cancels) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "specular_zioma.glsl"});
+  req.chunks = chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "specular_zioma.glsl"});
   req.body = std::string("result.x = ") + call + ";";
   for (double r : kRoughness)
     for (double nh : kNoH)
@@ -255,7 +255,7 @@ TEST(Chunks, SpecularZiomaNxhMatchesReference) {
 // mirror peak) the chunk saturates, so the reference is min(spec, 65504).
 TEST(Chunks, SpecularFusedHammonMatchesReference) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "specular_fused_hammon.glsl"});
+  req.chunks = chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "specular_fused_hammon.glsl"});
   req.body =
       "result.x = specular_fused_hammon(in0.x, in0.z, in0.w, in0.y, vec3(0.0, 0.0, 1.0), vec3(in1.x, 0.0, in0.y));";
   for (double r : kRoughness)
@@ -426,7 +426,8 @@ TEST(Reference, WhiteFurnaceGgxSmithIsAtMostOne) {
 // at 2^20).
 TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
   GpuEvalRequest req;
-  req.chunks = chunks({"precision.glsl", "math.glsl", "brdf_ggx.glsl", "specular_ggx_smith.glsl"});
+  req.chunks =
+      chunks({"precision.glsl", "math.glsl", "ggx_denominator.glsl", "brdf_ggx.glsl", "specular_ggx_smith.glsl"});
   req.chunks.insert(req.chunks.begin(), "#define FACET_PRECISION_HIGHP 1\n");  // as assembly does for `reference`
   req.body = R"(
     float alpha = in0.x, NoV = in0.y;
@@ -475,7 +476,8 @@ std::vector<std::string> clearCoatChunks() {
   out.push_back(
       "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
       "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n");
-  for (std::string& text : chunks({"clear_coat_ambient.glsl", "clear_coat_ggx_kelemen.glsl"})) out.push_back(text);
+  for (std::string& text : chunks({"clear_coat_ambient.glsl", "ggx_denominator.glsl", "clear_coat_ggx_kelemen.glsl"}))
+    out.push_back(text);
   return out;
 }
 
@@ -604,7 +606,8 @@ std::vector<std::string> anisotropyChunks() {
       "#define FACET_ANISOTROPY_LOBE 1\n"
       "struct MaterialInputs { float anisotropy; vec3 anisotropyDirection; };\n"
       "vec3 v_normal; vec4 v_tangent;\n");
-  for (std::string& text : chunks({"brdf_ggx.glsl", "anisotropy_frame.glsl", "anisotropy_ggx_smith.glsl"}))
+  for (std::string& text :
+       chunks({"ggx_denominator.glsl", "brdf_ggx.glsl", "anisotropy_frame.glsl", "anisotropy_ggx_smith.glsl"}))
     out.push_back(text);
   return out;
 }

@@ -281,10 +281,10 @@ std::vector<std::string> shadingChunks(const char* lobe, bool vertexDiffuse) {
   out.push_back(
       "struct MaterialInputs { vec3 baseColor; float metallic; float roughness; float reflectance; float "
       "ambientOcclusion; };");
-  std::vector<const char*> files{"math.glsl", "precision.glsl", "diffuse_lambert.glsl"};
+  // ggx_denominator.glsl: GGX's D of every lobe but the lut's.
+  std::vector<const char*> files{"math.glsl", "precision.glsl", "diffuse_lambert.glsl", "ggx_denominator.glsl"};
   if (std::string(lobe) == "specular_ggx_smith.glsl") files.push_back("brdf_ggx.glsl");
   if (std::string(lobe) == "specular_zioma_lobe.glsl") files.push_back("specular_zioma.glsl");
-  // specular_fused_hammon.glsl needs nothing beyond math.glsl and precision.glsl.
   files.push_back(lobe);
   files.push_back("shading_standard.glsl");
   for (const char* f : files) {

@@ -594,6 +594,36 @@ TEST(EvalLobeSweep, ClearCoatAndAnisotropyKeepTheWhiteFurnaceAtEveryPrecision) {
   }
 }
 
+// The white furnace of the standard specular lobes every tier uses (F = 1), highp and fp16-emulated:
+// none reflects more than 1 + 1e-3 of the light, and the full lobe sees it (> 0.99 for a smooth
+// lobe seen from the front). The domain's roughness floor (0.089) is where the squares of n × h
+// fall below binary16's normals in the highlight's core (brdf_ggx.glsl).
+TEST(EvalLobeSweep, StandardLobesKeepTheWhiteFurnaceAtEveryPrecision) {
+  facet::eval::GpuEvaluator gpu(/*validation=*/true);
+  ASSERT_TRUE(gpu.ready()) << gpu.initError();
+  auto material = example("red_plastic");
+  auto configs = facet::eval::configurations(material, {Tier::High, Tier::Mid, Tier::Low});
+  std::vector<facet::eval::LobeFurnaceRow> rows;
+  std::string error;
+  ASSERT_TRUE(facet::eval::furnaceStandardLobes(gpu, configs, facet::eval::BrdfSweepDomain{},
+                                                facet::eval::LobeFurnaceDomain{}, &rows, &error))
+      << error;
+  std::set<std::string> lobes;
+  for (const auto& row : rows) {
+    lobes.insert(row.lobe + " " + row.precision);
+    EXPECT_DOUBLE_EQ(row.bound, 1.0 + 1e-3);
+    EXPECT_TRUE(row.withinBound()) << row.lobe << " " << row.precision << ": " << row.maxAlbedo << " at n.v "
+                                   << row.atNoV << ", r " << row.atRoughness;
+    std::printf("white furnace, %s %s: max %.5f at n.v %.4g, r %.3f\n", row.lobe.c_str(), row.precision.c_str(),
+                row.maxAlbedo, row.atNoV, row.atRoughness);
+  }
+  EXPECT_TRUE(lobes.count("ggx_smith highp (fp32)") && lobes.count("ggx_smith mediump (fp16 emulated)"));
+  for (const auto& row : rows)
+    if (row.lobe == "ggx_smith") {
+      EXPECT_GT(row.maxAlbedo, 0.99) << row.precision;
+    }
+}
+
 // The sheen's lobe: its raw albedo, integrated on the GPU from the chunk, is the table's
 // (ibl/sheen_lut.h: 4.49 at n·v = 1e-4, r = 0.089), and the report says where the correction by the
 // 64² table's 1/max(1, E) leaves the layered sheen above 1 + 1e-3: at grazing views of a smooth sheen,

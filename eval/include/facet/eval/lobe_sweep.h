@@ -46,6 +46,14 @@ struct LobeFurnaceDomain {
   int sheenSteps = 128;  // cos θ_l intervals; steps/2 azimuths over [0, π] (mirror-symmetric)
 };
 
+// The white furnace of the standard specular lobes (brdf_sweep.h's `specular_lobe`, F = 1; the lut
+// lobe at the environment BRDF's albedo it is scaled by), one row per (lobe, precision) among
+// `configurations`, appended to *furnace: GGX's D in fp16 must not gain light where the squares of
+// n × h fall below binary16's normals, as the clear coat's did (docs/eval.md, "The BRDF domain").
+bool furnaceStandardLobes(GpuEvaluator& gpu, const std::vector<Configuration>& configurations,
+                          const BrdfSweepDomain& domain, const LobeFurnaceDomain& furnaceDomain,
+                          std::vector<LobeFurnaceRow>* furnace, std::string* error);
+
 // For each model the material writes (clearCoat, anisotropy, sheenColor or the cloth model) and
 // each precision its lobe form runs at among `configurations` (clear coat `ggx_kelemen`,
 // anisotropy `ggx_smith`, sheen `charlie_neubelt`; the other forms have no per-light lobe):

@@ -76,12 +76,13 @@ material.clearCoatRoughness=params.coatRoughness;
 float diffuse_lambert(){
 return 0.31830988618;
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float k=alpha/(dot(NxH,NxH)+a*a);
-float d=k*k*0.31830988618;
-return min(d,65504.0);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return min(k*k*0.31830988618,65504.0);
 }
 float visibility_smith_ggx_correlated(float alpha,float NoV,float NoL){
 float a2=alpha*alpha;
@@ -147,18 +148,15 @@ vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(mat
 return mix(base,coat,Fc);
 }
 const float CLEAR_COAT_LOH2_MIN=6.103515625e-5;
-const float CLEAR_COAT_SCALE=64.0;
 vec3 clear_coat_direct(MaterialInputs material,vec3 l,vec3 h,float LoH,vec3 lightColor){
 vec3 n=shading_clear_coat_normal;
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float r=clear_coat_perceptual_roughness(material);
 float alpha=r*r;
-vec3 NxH=CLEAR_COAT_SCALE*cross(n,h);
-float a=NoH*(CLEAR_COAT_SCALE*alpha);
-float d=dot(NxH,NxH)+a*a;
+float d=ggx_d_scaled(alpha,NoH,n,h);
 float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
-float k=((CLEAR_COAT_SCALE*CLEAR_COAT_SCALE)*alpha)/(d*x);
+float k=(4096.0*alpha)/(d*x);
 float DV=min(k*(k*x),65504.0);
 float Fc=clear_coat_fresnel(LoH)*clear_coat_strength(material);
 return DV*Fc*(lightColor*NoL);

@@ -69,12 +69,13 @@ material.reflectance=params.reflectance;
 float diffuse_lambert(){
 return 0.31830988618;
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float k=alpha/(dot(NxH,NxH)+a*a);
-float d=k*k*0.31830988618;
-return(d);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return(k*k*0.31830988618);
 }
 float visibility_smith_ggx_correlated(float alpha,float NoV,float NoL){
 float a2=alpha*alpha;
