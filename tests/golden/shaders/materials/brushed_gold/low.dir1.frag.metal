@@ -46,20 +46,19 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _535 = normalize(half3(in.v_normal));
-    float3 _539 = fast::normalize(in.v_toEye);
-    half _721 = max(dot(_535, half3(_539)), half(9.9999997473787516355514526367188e-05));
-    float4 _760 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_721, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _779 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_760).y) - half(1.0)));
-    float4 _786 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_539), _535)), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _573 = half4(frame.lightDirection).xyz;
-    half3 _901 = normalize(half3(_539) + _573);
-    half _846 = clamp(dot(_535, _573), half(0.0), half(1.0));
-    half3 _928 = cross(_535, _901);
-    half _931 = clamp(dot(_535, _901), half(0.0), half(1.0)) * half(params.facet_alpha);
-    half _948 = max(mix((half(2.0) * _846) * _721, _846 + _721, half(params.facet_alpha)), half(0.000244140625));
-    half _955 = (half(1024.0) * half(params.facet_alpha)) / (fma(_931, _931, dot(_928, _928)) * (half(6433.98193359375) * _948));
-    out.fragColor = float4(half4(fma(half4(_786).xyz, mix(half4(_760).xxx, half4(_760).yyy, half3(float3(params.facet_f0))) * _779, min(((half3(float3(params.facet_f0)) * min(_955 * (_955 * (half(6.283185482025146484375) * _948)), half(65504.0))) * _779) * (half4(frame.lightColor).xyz * _846), half3(float3(65504.0)))), half(1.0)));
+    half3 _557 = normalize(half3(in.v_normal));
+    float3 _561 = fast::normalize(in.v_toEye);
+    half _743 = max(dot(_557, half3(_561)), half(9.9999997473787516355514526367188e-05));
+    float4 _782 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_743, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _801 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_782).y) - half(1.0)));
+    float4 _811 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_561), _557)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _595 = half4(frame.lightDirection).xyz;
+    half3 _926 = normalize(half3(_561) + _595);
+    half _871 = clamp(dot(_557, _595), half(0.0), half(1.0));
+    half4 _995 = half4(cross(_557, _926), half(params.facet_alpha) * clamp(dot(_557, _926), half(0.0), half(1.0))) * half(64.0);
+    half _972 = half(6.283185482025146484375) * max(mix((half(2.0) * _871) * _743, _871 + _743, half(params.facet_alpha)), half(0.000244140625));
+    half _974 = (half(4096.0) * half(params.facet_alpha)) / (dot(_995, _995) * _972);
+    out.fragColor = float4(half4(fma(half4(_811).xyz, mix(half4(_782).xxx, half4(_782).yyy, half3(float3(params.facet_f0))) * _801, min(((half3(float3(params.facet_f0)) * min(_974 * (_974 * _972), half(65504.0))) * _801) * (half4(frame.lightColor).xyz * _871), half3(float3(65504.0)))), half(1.0)));
     return out;
 }
 

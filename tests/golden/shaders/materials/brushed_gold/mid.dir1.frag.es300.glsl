@@ -63,12 +63,13 @@ material.roughness=params.roughness;
 float diffuse_lambert(){
 return 0.31830988618;
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float k=alpha/(dot(NxH,NxH)+a*a);
-float d=k*k*0.31830988618;
-return min(d,65504.0);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return min(k*k*0.31830988618,65504.0);
 }
 vec3 fresnel_schlick(vec3 f0,float LoH){
 float f=1.0-LoH;

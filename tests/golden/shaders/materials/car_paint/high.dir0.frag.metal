@@ -33,16 +33,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _492 = normalize(half3(in.v_normal));
     float3 _496 = fast::normalize(in.v_toEye);
-    half _744 = max(dot(_492, half3(_496)), half(9.9999997473787516355514526367188e-05));
-    half3 _748 = reflect(-half3(_496), _492);
-    float4 _783 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_744, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _812 = facet_environment.sample(facet_environmentSmplr, float3(_748), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _860 = half(1.0) - _744;
-    half _863 = _860 * _860;
-    half _880 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _890 = facet_environment.sample(facet_environmentSmplr, float3(_748), level(_880 * (half(4.0) * (half(2.0) - _880))));
-    half3 _854 = mix(half4(_812).xyz * (mix(half4(_783).xxx, half4(_783).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_783).y) - half(1.0))))), half4(_890).xyz, half3(fma(half(0.959999978542327880859375), (_863 * _863) * _860, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_854, half(1.0)));
+    half _743 = max(dot(_492, half3(_496)), half(9.9999997473787516355514526367188e-05));
+    half3 _747 = reflect(-half3(_496), _492);
+    float4 _782 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_743, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _811 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _859 = half(1.0) - _743;
+    half _862 = _859 * _859;
+    half _879 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
+    float4 _889 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(_879 * (half(4.0) * (half(2.0) - _879))));
+    half3 _853 = mix(half4(_811).xyz * (mix(half4(_782).xxx, half4(_782).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_782).y) - half(1.0))))), half4(_889).xyz, half3(fma(half(0.959999978542327880859375), (_862 * _862) * _859, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_853, half(1.0)));
     return out;
 }
 

@@ -33,16 +33,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _355 = normalize(half3(in.v_normal));
     float3 _359 = fast::normalize(in.v_toEye);
-    half _502 = max(dot(_355, half3(_359)), half(9.9999997473787516355514526367188e-05));
-    half3 _506 = reflect(-half3(_359), _355);
-    float4 _541 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_502, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _570 = facet_environment.sample(facet_environmentSmplr, float3(_506), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _618 = half(1.0) - _502;
-    half _621 = _618 * _618;
-    half _638 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _648 = facet_environment.sample(facet_environmentSmplr, float3(_506), level(_638 * (half(4.0) * (half(2.0) - _638))));
-    half3 _612 = mix(half4(_570).xyz * (mix(half4(_541).xxx, half4(_541).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_541).y) - half(1.0))))), half4(_648).xyz, half3(fma(half(0.959999978542327880859375), (_621 * _621) * _618, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_612, half(1.0)));
+    half _501 = max(dot(_355, half3(_359)), half(9.9999997473787516355514526367188e-05));
+    half3 _505 = reflect(-half3(_359), _355);
+    float4 _540 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_501, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _569 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _617 = half(1.0) - _501;
+    half _620 = _617 * _617;
+    half _637 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
+    float4 _647 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(_637 * (half(4.0) * (half(2.0) - _637))));
+    half3 _611 = mix(half4(_569).xyz * (mix(half4(_540).xxx, half4(_540).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_540).y) - half(1.0))))), half4(_647).xyz, half3(fma(half(0.959999978542327880859375), (_620 * _620) * _617, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_611, half(1.0)));
     return out;
 }
 

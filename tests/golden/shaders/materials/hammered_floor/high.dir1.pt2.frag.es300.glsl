@@ -81,12 +81,13 @@ return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 float diffuse_lambert(){
 return 0.31830988618;
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float k=alpha/(dot(NxH,NxH)+a*a);
-float d=k*k*0.31830988618;
-return min(d,65504.0);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return min(k*k*0.31830988618,65504.0);
 }
 float visibility_smith_ggx_correlated(float alpha,float NoV,float NoL){
 float a2=alpha*alpha;
@@ -119,8 +120,8 @@ vec3 c8=frame.sh[8].rgb;
 e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
 return max(e,vec3(0.0));
 }
-vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;

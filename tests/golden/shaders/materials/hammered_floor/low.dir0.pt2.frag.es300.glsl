@@ -93,8 +93,8 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 vec3 r=reflect(-v,n);
 return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
 }
-vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;

@@ -53,31 +53,31 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_ripples [[texture(8)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_ripplesSmplr [[sampler(8)]])
 {
     main0_out out = {};
-    float3 _501 = fast::normalize(in.v_toEye);
-    float4 _624 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
-    half3 _628 = (half4(_624).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _987;
+    float3 _505 = fast::normalize(in.v_toEye);
+    float4 _628 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
+    half3 _632 = (half4(_628).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _994;
     do
     {
-        half3 _641 = half4(in.v_tangent).xyz;
-        if (float(dot(_641, _641)) == 0.0)
+        half3 _645 = half4(in.v_tangent).xyz;
+        if (float(dot(_645, _645)) == 0.0)
         {
-            _987 = normalize(half3(in.v_normal));
+            _994 = normalize(half3(in.v_normal));
             break;
         }
-        _987 = normalize(((_641 * _628.x) + ((cross(half3(in.v_normal), _641) * half(in.v_tangent.w)) * _628.y)) + (half3(in.v_normal) * _628.z));
+        _994 = normalize(((_645 * _632.x) + ((cross(half3(in.v_normal), _645) * half(in.v_tangent.w)) * _632.y)) + (half3(in.v_normal) * _632.z));
         break;
     } while(false);
-    half3 _715 = reflect(-half3(_501), _987);
-    float4 _751 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_987, half3(_501)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _777 = facet_environment.sample(facet_environmentSmplr, float3(_715), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _730 = mix(half4(_751).xxx, half4(_751).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_751).y) - half(1.0))));
-    half3 _552 = half4(frame.lightDirection).xyz;
-    half _906 = clamp(dot(_715, _552), half(0.0), half(1.0));
-    half _909 = _906 * _906;
-    half4 _1038 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_909 * _909, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _921 = _1038.x;
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_777).xyz * _730) + min((_730 * ((_921 * _921) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_987, _552), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
+    half3 _719 = reflect(-half3(_505), _994);
+    float4 _755 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_994, half3(_505)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _784 = facet_environment.sample(facet_environmentSmplr, float3(_719), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _734 = mix(half4(_755).xxx, half4(_755).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_755).y) - half(1.0))));
+    half3 _556 = half4(frame.lightDirection).xyz;
+    half _913 = clamp(dot(_719, _556), half(0.0), half(1.0));
+    half _916 = _913 * _913;
+    half4 _1047 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_916 * _916, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _928 = _1047.x;
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_784).xyz * _734) + min((_734 * ((_928 * _928) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_994, _556), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

@@ -78,21 +78,22 @@ if(dot(t,t)==0.0)return normalize(n);
 vec3 b=v_tangent.w*cross(n,t);
 return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-const float FUSED_HAMMON_SCALE=1024.0;
 float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float d=dot(NxH,NxH)+a*a;
+float d=ggx_d_scaled(alpha,NoH,n,h);
 float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(FUSED_HAMMON_SCALE*alpha)/(d*((FUSED_HAMMON_SCALE*2.0*3.14159265359)*m));
+float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
 return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
 return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
 }
-vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;

@@ -32,30 +32,30 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
 {
     main0_out out = {};
     float3 _486 = fast::normalize(in.v_toEye);
-    float2 _610 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _613 = facet_material_albedo.sample(facet_material_albedoSmplr, _610);
-    float4 _623 = facet_material_relief.sample(facet_material_reliefSmplr, _610);
-    half3 _627 = (half4(_623).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _633 = fract(_610 * 4.0);
-    float _635 = _633.x;
-    float _642 = _633.y;
-    half3 _1013;
+    float2 _609 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _612 = facet_material_albedo.sample(facet_material_albedoSmplr, _609);
+    float4 _622 = facet_material_relief.sample(facet_material_reliefSmplr, _609);
+    half3 _626 = (half4(_622).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _632 = fract(_609 * 4.0);
+    float _634 = _632.x;
+    float _641 = _632.y;
+    half3 _1012;
     do
     {
-        half3 _667 = half4(in.v_tangent).xyz;
-        if (float(dot(_667, _667)) == 0.0)
+        half3 _666 = half4(in.v_tangent).xyz;
+        if (float(dot(_666, _666)) == 0.0)
         {
-            _1013 = normalize(half3(in.v_normal));
+            _1012 = normalize(half3(in.v_normal));
             break;
         }
-        _1013 = normalize(((_667 * _627.x) + ((cross(half3(in.v_normal), _667) * half(in.v_tangent.w)) * _627.y)) + (half3(in.v_normal) * _627.z));
+        _1012 = normalize(((_666 * _626.x) + ((cross(half3(in.v_normal), _666) * half(in.v_tangent.w)) * _626.y)) + (half3(in.v_normal) * _626.z));
         break;
     } while(false);
-    half3 _710 = clamp(half4(_613).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _719 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_635, 1.0 - _635), fast::min(_642, 1.0 - _642))))), half(0.0), half(1.0));
-    float4 _877 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1013, half3(_486)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _906 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_486), _1013)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(_710 * half3(in.v_diffuseLight), max(half3(_719), ((((((_710 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _719) + ((_710 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _719) + ((_710 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _719), _710 * half3(in.v_directDiffuse)) + ((half4(_906).xyz * (mix(half4(_877).xxx, half4(_877).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_877).y) - half(1.0)))))) * _719), half(1.0)));
+    half3 _709 = clamp(half4(_612).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _718 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_634, 1.0 - _634), fast::min(_641, 1.0 - _641))))), half(0.0), half(1.0));
+    float4 _876 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1012, half3(_486)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _905 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_486), _1012)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(_709 * half3(in.v_diffuseLight), max(half3(_718), ((((((_709 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _718) + ((_709 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _718) + ((_709 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _718), _709 * half3(in.v_directDiffuse)) + ((half4(_905).xyz * (mix(half4(_876).xxx, half4(_876).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_876).y) - half(1.0)))))) * _718), half(1.0)));
     return out;
 }
 

@@ -67,12 +67,13 @@ material.metallic=0.0;
 material.roughness=params.roughness;
 material.reflectance=params.reflectance;
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-float k=alpha/(dot(NxH,NxH)+a*a);
-float d=k*k*0.31830988618;
-return min(d,65504.0);
+float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
+return min(k*k*0.31830988618,65504.0);
 }
 vec3 fresnel_schlick(vec3 f0,float LoH){
 float f=1.0-LoH;
@@ -89,8 +90,8 @@ float D=distribution_ggx(alpha,NoH,n,h);
 float V=visibility_hammon(alpha,NoV,NoL);
 return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
 }
-vec3 prefiltered_radiance(vec3 direction,float perceptualRoughness){
-return textureLod(facet_environment,direction,perceptualRoughness*float(5-1)).rgb;
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;

@@ -51,19 +51,19 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _410 = normalize(half3(in.v_normal));
-    float3 _414 = fast::normalize(in.v_toEye);
-    half3 _561 = reflect(-half3(_414), _410);
-    float4 _591 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_410, half3(_414)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _600 = mix(half4(_591).xxx, half4(_591).yyy, half3(float3(params.facet_f0)));
-    float4 _607 = facet_environment.sample(facet_environmentSmplr, float3(_561), level(half(params.facet_perceptualRoughness) * half(4.0)));
-    half3 _461 = half4(frame.lightDirection).xyz;
-    half _736 = clamp(dot(_561, _461), half(0.0), half(1.0));
-    half _739 = _736 * _736;
-    half4 _848 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_739 * _739, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _751 = _848.x;
-    half3 _760 = fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_607).xyz * _600) + min((_600 * ((_751 * _751) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_410, _461), half(0.0), half(1.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_760, half(1.0)));
+    half3 _414 = normalize(half3(in.v_normal));
+    float3 _418 = fast::normalize(in.v_toEye);
+    half3 _565 = reflect(-half3(_418), _414);
+    float4 _595 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_414, half3(_418)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _604 = mix(half4(_595).xxx, half4(_595).yyy, half3(float3(params.facet_f0)));
+    float4 _614 = facet_environment.sample(facet_environmentSmplr, float3(_565), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _465 = half4(frame.lightDirection).xyz;
+    half _743 = clamp(dot(_565, _465), half(0.0), half(1.0));
+    half _746 = _743 * _743;
+    half4 _857 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_746 * _746, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _758 = _857.x;
+    half3 _767 = fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_614).xyz * _604) + min((_604 * ((_758 * _758) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_414, _465), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_767, half(1.0)));
     return out;
 }
 

@@ -67,6 +67,10 @@ material.metallic=0.0;
 material.roughness=params.roughness;
 material.reflectance=params.reflectance;
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+return dot(t,t);
+}
 const float ZIOMA_LOH2_MIN=0.15;
 const float ZIOMA_ROUGH_SCALE= -0.3125;
 const float ZIOMA_ROUGH_BIAS=1.0082;
@@ -76,9 +80,8 @@ float k=alpha/(d*x);
 return min(k*k*x,65504.0);
 }
 float specular_zioma_nxh(float alpha,float NoH,vec3 n,vec3 h,float LoH){
-vec3 NxH=cross(n,h);
-float a=NoH*alpha;
-return specular_zioma_form_d(alpha,dot(NxH,NxH)+a*a,LoH,ZIOMA_LOH2_MIN,ZIOMA_ROUGH_SCALE,ZIOMA_ROUGH_BIAS);
+float d=ggx_d_scaled(alpha,NoH,n,h)*(1.0/4096.0);
+return specular_zioma_form_d(alpha,d,LoH,ZIOMA_LOH2_MIN,ZIOMA_ROUGH_SCALE,ZIOMA_ROUGH_BIAS);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
 return specular_zioma_nxh(alpha,NoH,n,h,LoH)*f0;

@@ -32,16 +32,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _372 = normalize(half3(in.v_normal));
     float3 _376 = fast::normalize(in.v_toEye);
-    half _510 = max(dot(_372, half3(_376)), half(9.9999997473787516355514526367188e-05));
-    half3 _514 = reflect(-half3(_376), _372);
-    float4 _549 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_510, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _578 = facet_environment.sample(facet_environmentSmplr, float3(_514), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _655 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _662 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _791 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_510, _655)), level(0.0)));
-    half _625 = _791.z;
-    float4 _686 = facet_environment.sample(facet_environmentSmplr, float3(_514), level(_655 * (half(4.0) * (half(2.0) - _655))));
-    out.fragColor = float4(half4(fma(half4(_686).xyz, _662 * _625, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_578).xyz * (mix(half4(_549).xxx, half4(_549).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_549).y) - half(1.0)))))) * fma(half(-float(max(_662.x, max(_662.y, _662.z)))), _625, half(1.0))), half(1.0)));
+    half _509 = max(dot(_372, half3(_376)), half(9.9999997473787516355514526367188e-05));
+    half3 _513 = reflect(-half3(_376), _372);
+    float4 _548 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_509, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _577 = facet_environment.sample(facet_environmentSmplr, float3(_513), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _654 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
+    half3 _661 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _790 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_509, _654)), level(0.0)));
+    half _624 = _790.z;
+    float4 _685 = facet_environment.sample(facet_environmentSmplr, float3(_513), level(_654 * (half(4.0) * (half(2.0) - _654))));
+    out.fragColor = float4(half4(fma(half4(_685).xyz, _661 * _624, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_577).xyz * (mix(half4(_548).xxx, half4(_548).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_548).y) - half(1.0)))))) * fma(half(-float(max(_661.x, max(_661.y, _661.z)))), _624, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -32,11 +32,11 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& para
     main0_out out = {};
     half3 _268 = normalize(half3(in.v_normal));
     float3 _272 = fast::normalize(in.v_toEye);
-    half3 _446 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _546 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_268, half3(_272)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _405 = _546.z;
-    float4 _465 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_272), _268)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half4(_465).xyz, _446 * _405, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_446.x, max(_446.y, _446.z)))), _405, half(1.0))), half(1.0)));
+    half3 _445 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _545 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_268, half3(_272)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _404 = _545.z;
+    float4 _464 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_272), _268)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(half4(_464).xyz, _445 * _404, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_445.x, max(_445.y, _445.z)))), _404, half(1.0))), half(1.0)));
     return out;
 }
 
