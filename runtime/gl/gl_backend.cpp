@@ -152,9 +152,8 @@ class GlBackend final : public GlRenderer {
   // MSAA: the multisampled colour blitted into the HDR texture, then the samples invalidated.
   void resolveSamples(uint32_t width, uint32_t height);
   // `framebuffer`: the merged one (HDR, LDR, depth) when `merged`, else the HDR one.
-  // With a shadow pass, that pass first, then the forward draws. Drawn top-down when topDown_
-  // (gl_row_order.h).
-  bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error);
+  // With a shadow pass, that pass first, then the forward draws, in `rows` (gl_row_order.h).
+  bool forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, gl::RowOrder rows, std::string* error);
   // The frame's instances in one upload (both passes', FrameDraws' order); each draw points the instance
   // attributes at its own.
   bool uploadInstances(const FrameDesc& frame, std::string* error);
@@ -163,8 +162,10 @@ class GlBackend final : public GlRenderer {
   bool shadowPass(const FrameDesc& frame, std::string* error);
   // One view of the shadow pass: its rectangle, bias and frame block, its casters.
   bool drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& view, std::string* error);
-  // `caster`: a shadow pass draw (no alpha to coverage: the atlas has one sample).
-  bool drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error, bool caster = false);
+  // A forward draw in `rows`; or, with `caster`, a shadow pass draw (no alpha to coverage: the
+  // atlas has one sample; the atlas keeps GL's clip y, so `rows` is BottomUp).
+  bool drawItem(const FrameDesc& frame, const DrawItem& item, gl::RowOrder rows, std::string* error,
+                bool caster = false);
   // Separate path: samples the HDR texture, draws into `framebuffer` (the backend's LDR one, or the app's).
   bool postPass(const FrameDesc& frame, GLuint framebuffer, std::string* error);
   // Merged path, into the framebuffer the forward pass drew into; HDR invalidated unless `keepHdr`.
@@ -195,9 +196,6 @@ class GlBackend final : public GlRenderer {
   // GL_EXT_multisampled_render_to_texture is used (GlOptions::renderToTexture and the context has it).
   bool renderToTexture_ = false;
   GLint maxTargetSize_ = 0;
-  // The frame being drawn runs top-down in memory, as Vulkan's do (render()), or bottom-up, GL's
-  // convention (renderToFramebuffer()): gl_row_order.h.
-  bool topDown_ = false;
   GLint maxTextureSize_ = 0;
   gl::LinkedProgram post_;            // the path's post program: framebuffer fetch when merged
   gl::LinkedProgram sampledPost_;     // merged backends: the separate path's, for frames into the
@@ -387,10 +385,10 @@ bool GlBackend::render(const FrameDesc& frame, FrameResult* result, std::string*
     }
     if (!checkShadowPass(frame, &message) || !beginFrame(frame, &message)) return false;
     const bool merged = path_ == PostPath::Merged;
-    topDown_ = true;
     if (timed_) glBeginQuery(GL_TIME_ELAPSED, forwardTimer_.id());
-    const bool forwardDone =
-        forwardPass(frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged, &message);
+    // Vulkan's row order (gl_row_order.h): the two APIs' images then agree to the derivative.
+    const bool forwardDone = forwardPass(frame, merged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
+                                         merged, gl::RowOrder::TopDown, &message);
     if (timed_) glEndQuery(GL_TIME_ELAPSED);
     if (!forwardDone) return false;
     result->cpuSubmitMilliseconds =
@@ -454,7 +452,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       return false;
     }
     if (!checkShadowPass(frame, &message) || !beginFrame(frame, &message)) return false;
-    topDown_ = false;
+    // The app's framebuffer keeps GL's convention, bottom-up (gl_row_order.h).
     gl::AppAttachment attachment;
     if (!gl::inspectAppTarget(target, frame.width, frame.height, context_->isEs(), &attachment, &message)) {
       return false;
@@ -463,7 +461,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
     if (fxaa_) {
       const bool ownMerged = path_ == PostPath::Merged;
       bool done = forwardPass(frame, ownMerged ? targets_.mergedFramebuffer.id() : targets_.hdrFramebuffer.id(),
-                              ownMerged, &message) &&
+                              ownMerged, gl::RowOrder::BottomUp, &message) &&
                   (ownMerged ? mergedPostPass(frame, false, &message)
                              : postPass(frame, targets_.ldrFramebuffer.id(), &message)) &&
                   fxaaPass(target.framebuffer, &message);
@@ -476,7 +474,7 @@ bool GlBackend::renderToFramebuffer(const FrameDesc& frame, const GlAppTarget& t
       if (!gl::attachAppImage(attachment, &message)) return false;
     }
     bool done = forwardPass(frame, merged ? targets_.appMergedFramebuffer.id() : targets_.hdrFramebuffer.id(), merged,
-                            &message);
+                            gl::RowOrder::BottomUp, &message);
     if (done) {
       done = merged ? mergedPostPass(frame, false, &message) : postPass(frame, target.framebuffer, &message);
     }
@@ -497,7 +495,8 @@ bool GlBackend::prepareTargets(uint32_t width, uint32_t height, std::string* err
                                  &targets_, error, renderScale_);
 }
 
-bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, std::string* error) {
+bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool merged, gl::RowOrder rows,
+                            std::string* error) {
   if (!uploadInstances(frame, error)) return false;
   meshes_.beginFrame();
   materialBlocks_.beginFrame();
@@ -513,7 +512,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glDisable(GL_BLEND);
   // DrawItem::cullBackFaces: triangles counter-clockwise in GL's clip space are front faces; the
   // top-down clip (gl_row_order.h) mirrors the window, which makes them clockwise there.
-  glFrontFace(topDown_ ? GL_CW : GL_CCW);
+  glFrontFace(rows == gl::RowOrder::TopDown ? GL_CW : GL_CCW);
   glCullFace(GL_BACK);
   glEnable(GL_DEPTH_TEST);
   // The environment is a cube map: GLES 3.0 filters across its faces always, desktop GL only
@@ -526,7 +525,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
   abi::FrameUniforms frameUniforms = frame.frame;
-  if (topDown_) gl::topDownClip(frame.frame.viewProjection, frameUniforms.viewProjection);
+  if (rows == gl::RowOrder::TopDown) gl::topDownClip(frame.frame.viewProjection, frameUniforms.viewProjection);
   frameUniforms.cameraPosition[3] = msaa ? 1.0f : 0.0f;  // masked materials: alpha to coverage (shader_abi.h)
   glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &frameUniforms, GL_DYNAMIC_DRAW);
@@ -543,7 +542,7 @@ bool GlBackend::forwardPass(const FrameDesc& frame, GLuint framebuffer, bool mer
   firstInstance_ = 0;
   for (size_t i = 0; i < frame.draws.size(); ++i) {
     std::string drawError;
-    if (!drawItem(frame, frame.draws[i], &drawError)) {
+    if (!drawItem(frame, frame.draws[i], rows, &drawError)) {
       if (error) *error = "draw " + std::to_string(i) + ": " + drawError;
       glBindVertexArray(0);
       textures_.clearSamplers();
@@ -681,7 +680,7 @@ bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& 
   glPolygonOffset(view.slopeBias, view.depthBias / kD16BiasUnit);
   for (uint32_t caster : view.casters) {
     std::string drawError;
-    if (!drawItem(frame, frame.shadow->casters[caster], &drawError, true)) {
+    if (!drawItem(frame, frame.shadow->casters[caster], gl::RowOrder::BottomUp, &drawError, true)) {
       if (error) *error = "shadow caster " + std::to_string(caster) + ": " + drawError;
       return false;
     }
@@ -689,7 +688,8 @@ bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& 
   return true;
 }
 
-bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::string* error, bool caster) {
+bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, gl::RowOrder rows, std::string* error,
+                         bool caster) {
   if (!item.mesh || !item.program) {
     if (error) *error = item.mesh ? "no shader program" : "no mesh";
     return false;
@@ -728,7 +728,8 @@ bool GlBackend::drawItem(const FrameDesc& frame, const DrawItem& item, std::stri
   const abi::ObjectUniforms object = objectUniforms(mesh->decode);
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::ObjectUniforms), &object, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kObjectBinding, objectUniforms_.id());
-  if (topDown_ && item.program == &backgroundProgram() && materialBytes(item).size() >= sizeof(abi::BackgroundParams)) {
+  if (rows == gl::RowOrder::TopDown && item.program == &backgroundProgram() &&
+      materialBytes(item).size() >= sizeof(abi::BackgroundParams)) {
     // The background's triangle is at GL's normalized device coordinates, not through the frame's
     // view-projection: its direction matrix takes the top-down y instead.
     abi::BackgroundParams params;

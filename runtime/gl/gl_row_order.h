@@ -18,6 +18,10 @@
 
 namespace facet::runtime::gl {
 
+// Which of the two a pass draws in (the entry point decides: render() TopDown,
+// renderToFramebuffer() BottomUp).
+enum class RowOrder { TopDown, BottomUp };
+
 // clip' = F · m, F negating y: the camera's view-projection (column-major 4×4, shader_abi.h) for a
 // frame drawn top-down. A pixel's depth, and its orientation once the front face is swapped, are
 // unchanged.
