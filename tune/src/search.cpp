@@ -161,10 +161,15 @@ std::vector<TierConfig> neighbourhood(const ir::Material& material, const std::v
   return all;
 }
 
+namespace {
+// A tier may take a candidate of this cost (its optional cap).
+bool withinCap(const TierBudget& budget, double cost) { return !budget.maxCost || cost <= *budget.maxCost; }
+}  // namespace
+
 bool meets(const Scored& s, const TierBudget& budget, double referenceFurnaceGain) {
   if (!(s.result.error.psnr >= budget.minPsnrDb)) return false;
   if (budget.noEnergyGain && eval::furnaceGainsEnergy(s.result.furnaceGain, referenceFurnaceGain)) return false;
-  return !budget.maxCost || s.cost.total <= *budget.maxCost;
+  return withinCap(budget, s.cost.total);
 }
 
 std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& options, eval::EvalError* error) {
@@ -241,9 +246,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     if (screen)
       how.worthFinishing = [&](double psnrAtMost) {
         for (const TierOutcome& o : report.tiers)
-          if (!o.chosen && (!o.budget.maxCost || scored[i].cost.total <= *o.budget.maxCost) &&
-              psnrAtMost >= o.budget.minPsnrDb)
-            return true;
+          if (!o.chosen && withinCap(o.budget, scored[i].cost.total) && psnrAtMost >= o.budget.minPsnrDb) return true;
         return false;
       };
     // The furnace only where the error would meet an open tier's budget: elsewhere it decides nothing.
@@ -273,7 +276,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     for (const TierOutcome& o : report.tiers) {
       if (o.chosen) continue;
       anyOpen = true;
-      wanted = wanted || !o.budget.maxCost || scored[i].cost.total <= *o.budget.maxCost;
+      wanted = wanted || withinCap(o.budget, scored[i].cost.total);
     }
     if (!anyOpen) break;
     if (!wanted) continue;
@@ -298,7 +301,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   // cheapest first): a screened candidate whose bound reaches the best measured is measured in full.
   for (TierOutcome& o : report.tiers) {
     if (o.chosen) continue;
-    auto within = [&](const Scored& s) { return !o.budget.maxCost || s.cost.total <= *o.budget.maxCost; };
+    auto within = [&](const Scored& s) { return withinCap(o.budget, s.cost.total); };
     auto measuredBest = [&]() -> const Scored* {
       const Scored* best = nullptr;
       for (const Scored& s : report.front)
