@@ -104,18 +104,12 @@ int compileCommand(const CompileArgs& args) {
   ir::SourceFile source;
   std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
   if (!material) return 1;
-  std::string message;
+  compiler::BuildOptions options;
   std::optional<tune::ShippedTuning> tuning =
-      tune::shippedTuning(args.input, args.tuning, args.noTuning, *material, &message);
-  if (!tuning) {
-    std::fprintf(stderr, "%s\n", message.c_str());
-    return 1;
-  }
-  for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+      tune::shippedTuningForCommand(args.input, args.tuning, args.noTuning, *material, &options.tunedTiers);
+  if (!tuning) return 1;
   if (!tuning->path.empty()) inputs.push_back({"the tuning file", tuning->path});
 
-  compiler::BuildOptions options;
-  if (tuning->choices) options.tunedTiers = tune::tunedTiers(*tuning->choices);
   options.fp16Emulation = args.fp16Emulation;
   options.emitSources = !args.emitSource.empty();
   options.jobs = args.jobs;

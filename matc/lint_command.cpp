@@ -124,14 +124,7 @@ int lintCommand(const LintArgs& args) {
     lint::LintOptions shipped = options;
     ir::Diagnostics quiet(f.file);
     if (std::optional<ir::Material> material = ir::compileSource(f.file, quiet)) {
-      std::string error;
-      std::optional<tune::ShippedTuning> tuning = tune::shippedTuning(path, "", args.noTuning, *material, &error);
-      if (!tuning) {
-        std::fprintf(stderr, "%s\n", error.c_str());
-        return 1;
-      }
-      for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-      if (tuning->choices) shipped.tunedTiers = tune::tunedTiers(*tuning->choices);
+      if (!tune::shippedTuningForCommand(path, "", args.noTuning, *material, &shipped.tunedTiers)) return 1;
     }
     f.result = lint::lintMaterial(f.file, shipped);
     linted.push_back(std::move(f));

@@ -62,15 +62,9 @@ int evalCommand(const EvalArgs& args) {
   std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
   if (!material) return 1;
   // The tiers as shipped are those `matc compile` builds: its tuning file's when it has one.
-  std::string message;
   std::optional<tune::ShippedTuning> tuning =
-      tune::shippedTuning(args.input, args.tuning, args.noTuning, *material, &message);
-  if (!tuning) {
-    std::fprintf(stderr, "%s\n", message.c_str());
-    return 1;
-  }
-  for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-  if (tuning->choices) options.tunedTiers = tune::tunedTiers(*tuning->choices);
+      tune::shippedTuningForCommand(args.input, args.tuning, args.noTuning, *material, &options.tunedTiers);
+  if (!tuning) return 1;
   options.tuningFile = tuning->path;
   // The folders first, so an --out that cannot be written fails before the run, not after it.
   const std::string imageDir = (fs::path(outDir) / "images").string();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -166,6 +167,20 @@ std::optional<ShippedTuning> shippedTuning(const std::string& materialPath, cons
                              " }`: the tuning file wins (tune it again, or remove the block)");
     }
   return out;
+}
+
+std::optional<ShippedTuning> shippedTuningForCommand(const std::string& materialPath, const std::string& tuningPath,
+                                                     bool noTuning, const ir::Material& material,
+                                                     std::map<permutations::Tier, permutations::TierConfig>* tiers) {
+  std::string error;
+  std::optional<ShippedTuning> tuning = shippedTuning(materialPath, tuningPath, noTuning, material, &error);
+  if (!tuning) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return std::nullopt;
+  }
+  for (const std::string& warning : tuning->warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+  if (tuning->choices) *tiers = tunedTiers(*tuning->choices);
+  return tuning;
 }
 
 }  // namespace facet::tune

@@ -57,5 +57,11 @@ struct ShippedTuning {
 };
 std::optional<ShippedTuning> shippedTuning(const std::string& materialPath, const std::string& tuningPath,
                                            bool noTuning, const ir::Material& material, std::string* error);
+// shippedTuning as the commands that build the material use it (`matc compile`, `lint`, `eval`):
+// its warnings and any error printed to stderr, the tiers it chose in *tiers (left as they are
+// without a file). Null on error.
+std::optional<ShippedTuning> shippedTuningForCommand(const std::string& materialPath, const std::string& tuningPath,
+                                                     bool noTuning, const ir::Material& material,
+                                                     std::map<permutations::Tier, permutations::TierConfig>* tiers);
 
 }  // namespace facet::tune
