@@ -60,6 +60,6 @@ vec3 clear_coat_direct(MaterialInputs material, vec3 l, vec3 h, float LoH, vec3 
     float x = (4.0 * PI) * max(LoH * LoH, CLEAR_COAT_LOH2_MIN);
     float k = (GGX_D_SCALE2 * alpha) / (d * x);
     float DV = saturateMediump(k * (k * x));
-    float Fc = clear_coat_fresnel(LoH) * clear_coat_strength(material);
+    float Fc = clear_coat_fresnel(LoH, clear_coat_strength(material));
     return DV * Fc * (lightColor * NoL);
 }

@@ -32,7 +32,9 @@ bool modelChunks(Model model, const std::string& defines, std::vector<std::strin
   std::vector<std::string> names;
   switch (model) {
     case Model::ClearCoat:
+      // FACET_CLEAR_COAT_LOBE: the shipped variants' form of the shared GGX denominator.
       inputs =
+          "#define FACET_CLEAR_COAT_LOBE 1\n"
           "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
           "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n";
       names = {"clear_coat_ambient.glsl", "clear_coat_ggx_kelemen.glsl"};

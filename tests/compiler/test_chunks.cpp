@@ -474,6 +474,7 @@ TEST(Reference, WhiteFurnaceOfTheShippedLobeOnTheGpu) {
 std::vector<std::string> clearCoatChunks() {
   std::vector<std::string> out = chunks({"precision.glsl", "math.glsl"});
   out.push_back(
+      "#define FACET_CLEAR_COAT_LOBE 1\n"  // the shipped variants' form of ggx_denominator.glsl
       "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
       "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n");
   for (std::string& text : chunks({"clear_coat_ambient.glsl", "ggx_denominator.glsl", "clear_coat_ggx_kelemen.glsl"}))

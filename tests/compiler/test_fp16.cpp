@@ -415,6 +415,7 @@ TEST(Fp16Shading, ClearCoatLobeStaysFiniteAtItsHazards) {
   r.chunks = shadingChunks("specular_ggx_smith.glsl", false);
   r.chunks.resize(r.chunks.size() - 1);  // no shading_standard.glsl: the coat's own chunks instead
   r.chunks[0] =
+      "#define FACET_CLEAR_COAT_LOBE 1\n"  // the shipped variants' form of ggx_denominator.glsl
       "struct MaterialInputs { float clearCoat; float clearCoatRoughness; };\n"
       "vec3 prefiltered_radiance(vec3 direction, float perceptualRoughness) { return vec3(1.0); }\n";
   for (const char* f : {"clear_coat_ambient.glsl", "clear_coat_ggx_kelemen.glsl"}) {

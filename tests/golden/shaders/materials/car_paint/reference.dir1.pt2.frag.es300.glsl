@@ -77,8 +77,9 @@ float diffuse_lambert(){
 return 0.31830988618;
 }
 float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
-return dot(t,t);
+vec3 t=64.0*cross(n,h);
+float q=64.0*alpha*NoH;
+return dot(t,t)+q*q;
 }
 float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
 float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
@@ -135,14 +136,14 @@ return clamp(material.clearCoat,0.0,1.0);
 float clear_coat_perceptual_roughness(MaterialInputs material){
 return clamp(material.clearCoatRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
-float clear_coat_fresnel(float cosTheta){
+float clear_coat_fresnel(float cosTheta,float strength){
 float f=1.0-cosTheta;
 float f2=f*f;
-return 0.04+0.96*(f2*f2*f);
+return 0.04*strength+(0.96*strength)*(f2*f2*f);
 }
 vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
-float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
+float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V),clear_coat_strength(material));
 shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
 return mix(base,coat,Fc);
@@ -158,7 +159,7 @@ float d=ggx_d_scaled(alpha,NoH,n,h);
 float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
 float k=(4096.0*alpha)/(d*x);
 float DV=(k*(k*x));
-float Fc=clear_coat_fresnel(LoH)*clear_coat_strength(material);
+float Fc=clear_coat_fresnel(LoH,clear_coat_strength(material));
 return DV*Fc*(lightColor*NoL);
 }
 vec3 material_diffuse_color(MaterialInputs material){
