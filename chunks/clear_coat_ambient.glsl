@@ -45,20 +45,17 @@ float clear_coat_perceptual_roughness(MaterialInputs material) {
     return clamp(material.clearCoatRoughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
 }
 
-// Fc with the strength s: Schlick at f0 = 0.04, f90 = 1, (0.04 + 0.96 (1 − c)⁵) s. s enters the
-// two constants, not the product: at l·h (clear_coat_ggx_kelemen.glsl) (1 − l·h)⁵ is then the
-// base's Schlick factor (brdf_ggx.glsl's fresnel_schlick, the same products), which the shader
-// compiler shares (−0.02 Mali-G57 cycles on car_paint's high.dir1).
-float clear_coat_fresnel(float cosTheta, float strength) {
+// Fc without the strength: Schlick at f0 = 0.04, f90 = 1.
+float clear_coat_fresnel(float cosTheta) {
     float f = 1.0 - cosTheta;
     float f2 = f * f;
-    return 0.04 * strength + (0.96 * strength) * (f2 * f2 * f);
+    return 0.04 + 0.96 * (f2 * f2 * f);
 }
 
 // L_base · (1 − Fc(n_c·v)) + prefiltered(R_c, r_c) · Fc(n_c·v).
 vec3 clear_coat_layer(MaterialInputs material, vec3 base, vec3 v) {
     vec3 n = shading_clear_coat_normal;
-    float Fc = clear_coat_fresnel(max(dot(n, v), MIN_N_DOT_V), clear_coat_strength(material));
+    float Fc = clear_coat_fresnel(max(dot(n, v), MIN_N_DOT_V)) * clear_coat_strength(material);
     shading_clear_coat_attenuation = 1.0 - Fc;
     vec3 coat = prefiltered_radiance(reflect(-v, n), clear_coat_perceptual_roughness(material));
     return mix(base, coat, Fc);

@@ -172,7 +172,11 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     vec3 sheen = sheen_light(NoV, NoL, NoH) * lightColor;
     irradiance *= shading_sheen_base_scale;
 #endif
-#if defined(FACET_CLEAR_COAT_LOBE)
+#if defined(FACET_CLEAR_COAT_LOBE) && defined(CLEAR_COAT_SHARES_THE_BASE_LIGHT)
+    // Under a clear coat whose n·l is the base's (clear_coat_ggx_kelemen.glsl): its lobe joins the
+    // base's, × (1 − Fc(n_c·v)), before the light multiplies them (below).
+    float coatLobe = clear_coat_lobe(material, h, LoH);
+#elif defined(FACET_CLEAR_COAT_LOBE)
     // Under a clear coat (clear_coat_ggx_kelemen.glsl): the base is lit through it, × (1 − Fc(n_c·v)),
     // and the coat adds its own lobe (finite: ≤ 65504 · E · n·l, saturated with the sum below).
     vec3 coat = clear_coat_direct(material, l, h, LoH, lightColor);
@@ -186,7 +190,20 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
 #endif
     // Linear in every colour space: with FACET_GAMMA_HACK the caller adds it to the linear sum
     // with add_light (shading_ambient.glsl), as the ambient specular.
+#if defined(FACET_CLEAR_COAT_LOBE) && defined(CLEAR_COAT_SHARES_THE_BASE_LIGHT)
+    // The lobes' sum is saturated before E · n·l: the base's and the coat's may both be 65504 at a
+    // grazing mirror, where n·l = 0 (65504 · 0 = 0, where inf · 0 is NaN).
 #if defined(FACET_VERTEX_DIFFUSE)
+    vec3 lobes = specular;
+#else
+    vec3 diffuseColor = material_diffuse_color(material);
+#if defined(FACET_GAMMA_HACK)
+    diffuseColor *= diffuseColor;  // encoded with γ = 2: back to linear
+#endif
+    vec3 lobes = diffuseColor * diffuse_lambert() + specular;
+#endif
+    return min(min(lobes * shading_clear_coat_attenuation + coatLobe, MEDIUMP_FLT_MAX) * irradiance, MEDIUMP_FLT_MAX);
+#elif defined(FACET_VERTEX_DIFFUSE)
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
 #if defined(FACET_CLEAR_COAT_LOBE) || (defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE))
     return min(specular * irradiance + coat, MEDIUMP_FLT_MAX);

@@ -649,7 +649,7 @@ TEST(Tiers, ClearCoatFormsPerTierAndNoCoatCodeWithoutIt) {
     const std::string text = esText(*coated, key, Stage::Fragment);
     const bool lobe = std::string(key).rfind("reference", 0) == 0 || std::string(key).rfind("high", 0) == 0;
     EXPECT_NE(text.find("clear_coat_layer"), std::string::npos);
-    EXPECT_EQ(text.find("clear_coat_direct") != std::string::npos, lobe);
+    EXPECT_EQ(text.find("clear_coat_lobe") != std::string::npos, lobe);
     auto with = costOf(spirvOf(*coated, key, Stage::Fragment)), without = costOf(spirvOf(*bare, key, Stage::Fragment));
     EXPECT_EQ(with.textureSamples, without.textureSamples + 1);  // the coat's environment
     EXPECT_EQ(with.divisions, without.divisions + (lobe ? 1u : 0u));

@@ -31,19 +31,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _497 = normalize(half3(in.v_normal));
-    float3 _501 = fast::normalize(in.v_toEye);
-    half _748 = max(dot(_497, half3(_501)), half(9.9999997473787516355514526367188e-05));
-    half3 _752 = reflect(-half3(_501), _497);
-    float4 _787 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_748, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _816 = facet_environment.sample(facet_environmentSmplr, float3(_752), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _863 = clamp(half(params.coat), half(0.0), half(1.0));
-    half _869 = half(1.0) - _748;
-    half _872 = _869 * _869;
-    half _888 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _898 = facet_environment.sample(facet_environmentSmplr, float3(_752), level(_888 * (half(4.0) * (half(2.0) - _888))));
-    half3 _858 = mix(half4(_816).xyz * (mix(half4(_787).xxx, half4(_787).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_787).y) - half(1.0))))), half4(_898).xyz, half3(fma(half(0.039999999105930328369140625), _863, (half(0.959999978542327880859375) * _863) * ((_872 * _872) * _869))));
-    out.fragColor = float4(half4(_858, half(1.0)));
+    half3 _492 = normalize(half3(in.v_normal));
+    float3 _496 = fast::normalize(in.v_toEye);
+    half _743 = max(dot(_492, half3(_496)), half(9.9999997473787516355514526367188e-05));
+    half3 _747 = reflect(-half3(_496), _492);
+    float4 _782 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_743, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _811 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _859 = half(1.0) - _743;
+    half _862 = _859 * _859;
+    half _879 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
+    float4 _889 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(_879 * (half(4.0) * (half(2.0) - _879))));
+    half3 _853 = mix(half4(_811).xyz * (mix(half4(_782).xxx, half4(_782).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_782).y) - half(1.0))))), half4(_889).xyz, half3(fma(half(0.959999978542327880859375), (_862 * _862) * _859, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_853, half(1.0)));
     return out;
 }
 

@@ -31,19 +31,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _360 = normalize(half3(in.v_normal));
-    float3 _364 = fast::normalize(in.v_toEye);
-    half _506 = max(dot(_360, half3(_364)), half(9.9999997473787516355514526367188e-05));
-    half3 _510 = reflect(-half3(_364), _360);
-    float4 _545 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_506, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _574 = facet_environment.sample(facet_environmentSmplr, float3(_510), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _621 = clamp(half(params.coat), half(0.0), half(1.0));
-    half _627 = half(1.0) - _506;
-    half _630 = _627 * _627;
-    half _646 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _656 = facet_environment.sample(facet_environmentSmplr, float3(_510), level(_646 * (half(4.0) * (half(2.0) - _646))));
-    half3 _616 = mix(half4(_574).xyz * (mix(half4(_545).xxx, half4(_545).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_545).y) - half(1.0))))), half4(_656).xyz, half3(fma(half(0.039999999105930328369140625), _621, (half(0.959999978542327880859375) * _621) * ((_630 * _630) * _627))));
-    out.fragColor = float4(half4(_616, half(1.0)));
+    half3 _355 = normalize(half3(in.v_normal));
+    float3 _359 = fast::normalize(in.v_toEye);
+    half _501 = max(dot(_355, half3(_359)), half(9.9999997473787516355514526367188e-05));
+    half3 _505 = reflect(-half3(_359), _355);
+    float4 _540 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_501, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _569 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _617 = half(1.0) - _501;
+    half _620 = _617 * _617;
+    half _637 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
+    float4 _647 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(_637 * (half(4.0) * (half(2.0) - _637))));
+    half3 _611 = mix(half4(_569).xyz * (mix(half4(_540).xxx, half4(_540).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_540).y) - half(1.0))))), half4(_647).xyz, half3(fma(half(0.959999978542327880859375), (_620 * _620) * _617, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
+    out.fragColor = float4(half4(_611, half(1.0)));
     return out;
 }
 

@@ -108,14 +108,14 @@ return clamp(material.clearCoat,0.0,1.0);
 float clear_coat_perceptual_roughness(MaterialInputs material){
 return clamp(material.clearCoatRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
-float clear_coat_fresnel(float cosTheta,float strength){
+float clear_coat_fresnel(float cosTheta){
 float f=1.0-cosTheta;
 float f2=f*f;
-return 0.04*strength+(0.96*strength)*(f2*f2*f);
+return 0.04+0.96*(f2*f2*f);
 }
 vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
-float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V),clear_coat_strength(material));
+float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
 shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
 return mix(base,coat,Fc);

@@ -136,22 +136,21 @@ return clamp(material.clearCoat,0.0,1.0);
 float clear_coat_perceptual_roughness(MaterialInputs material){
 return clamp(material.clearCoatRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
-float clear_coat_fresnel(float cosTheta,float strength){
+float clear_coat_fresnel(float cosTheta){
 float f=1.0-cosTheta;
 float f2=f*f;
-return 0.04*strength+(0.96*strength)*(f2*f2*f);
+return 0.04+0.96*(f2*f2*f);
 }
 vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
-float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V),clear_coat_strength(material));
+float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
 shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
 return mix(base,coat,Fc);
 }
 const float CLEAR_COAT_LOH2_MIN=6.103515625e-5;
-vec3 clear_coat_direct(MaterialInputs material,vec3 l,vec3 h,float LoH,vec3 lightColor){
+float clear_coat_lobe(MaterialInputs material,vec3 h,float LoH){
 vec3 n=shading_clear_coat_normal;
-float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float r=clear_coat_perceptual_roughness(material);
 float alpha=r*r;
@@ -159,8 +158,10 @@ float d=ggx_d_scaled(alpha,NoH,n,h);
 float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
 float k=(4096.0*alpha)/(d*x);
 float DV=(k*(k*x));
-float Fc=clear_coat_fresnel(LoH,clear_coat_strength(material));
-return DV*Fc*(lightColor*NoL);
+float s=clear_coat_strength(material);
+float f=1.0-LoH;
+float f2=f*f;
+return DV*(0.04*s+(0.96*s)*(f2*f2*f));
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -192,10 +193,10 @@ float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
-vec3 coat=clear_coat_direct(material,l,h,LoH,lightColor);
-irradiance*=shading_clear_coat_attenuation;
+float coatLobe=clear_coat_lobe(material,h,LoH);
 vec3 diffuseColor=material_diffuse_color(material);
-return min((diffuseColor*diffuse_lambert()+specular)*irradiance+coat,65504.0);
+vec3 lobes=diffuseColor*diffuse_lambert()+specular;
+return min(min(lobes*shading_clear_coat_attenuation+coatLobe,65504.0)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
