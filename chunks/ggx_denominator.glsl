@@ -32,10 +32,11 @@
 
 #if defined(FACET_CLEAR_COAT_LOBE)
 // d' = |2^6 (n × h)|² + (2^6 α n·h)²: under a clear coat the base's D and the coat's share their
-// first term (the coat's normal is the base's unless the material writes clearCoatNormal, and h is
-// the light's), so it is one sum, not part of a 4-vector, and the shader compiler forms it once:
-// car_paint's high.dir1 −0.08 Mali-G57 cycles (docs/material-models.md). 2^6 α is taken before
-// n·h, where the compiler folds it (−0.03 against 2^6 (α n·h)). Same terms, same fp16 bounds.
+// first term (the coat's normal is the base's unless the material writes `normal` or
+// `clearCoatNormal`, and h is the light's), so it is one sum, not part of a 4-vector, and the
+// shader compiler forms it once: car_paint's high.dir1 −0.08 Mali-G57 cycles
+// (docs/material-models.md). 2^6 α is taken before n·h, where the compiler folds it (−0.03 against
+// 2^6 (α n·h)). Same terms, same fp16 bounds.
 float ggx_d_scaled(float alpha, float NoH, vec3 n, vec3 h) {
     vec3 t = GGX_D_SCALE * cross(n, h);
     float q = GGX_D_SCALE * alpha * NoH;
