@@ -177,8 +177,8 @@ class Rules {
       if (v.op == Op::Construct && v.args.size() > 1) {
         Interval total{0.0, 0.0};
         for (ValueId a : v.args)
-          total = sum(total, ir::componentCount(module_.value(a).type) == 1 ? squared(hullOf(a))
-                                                                              : lengthSquared(a, depth + 1));
+          total = sum(
+              total, ir::componentCount(module_.value(a).type) == 1 ? squared(hullOf(a)) : lengthSquared(a, depth + 1));
         return total;
       }
       if (v.op == Op::Select) {
