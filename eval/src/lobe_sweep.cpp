@@ -479,7 +479,8 @@ bool furnaceRows(GpuEvaluator& gpu, const Key& key, const LobeFurnaceDomain& d, 
     for (size_t i = 0; i < points.size(); ++i) note(&out[0], result.values[i].x, points[i]);
   } else {
     out = {row(name, "D V n.l, before the correction", 0.0),
-           row(name + " x s", "the lobe x s = 1/max(1, E) from the DFG texture's A channel", kFurnaceBound),
+           row(name + " x s", "the lobe x s = 1/max(1, E over the texel's footprint), the DFG texture's A channel",
+               kFurnaceBound),
            row(name + " layer + white base", "the corrected lobe + a white base x b = 1 - min(E, 1) (B channel)",
                kFurnaceBound)};
     for (size_t i = 0; i < points.size(); ++i) {

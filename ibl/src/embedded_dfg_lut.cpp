@@ -17,7 +17,8 @@ const SheenLut& embeddedSheenLut() {
   static const SheenLut lut = [] {
     SheenLut l;
     l.size = generated::kEmbeddedDfgLutSize;
-    l.albedo.assign(generated::kEmbeddedSheenAlbedo, generated::kEmbeddedSheenAlbedo + size_t(l.size) * size_t(l.size));
+    const size_t nodes = size_t(l.size + 2) * size_t(l.size + 2);
+    l.albedo.assign(generated::kEmbeddedSheenAlbedo, generated::kEmbeddedSheenAlbedo + nodes);
     return l;
   }();
   return lut;

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < lut.texels.size(); ++i)
     std::fprintf(out, "%a,%s", double(lut.texels[i]), (i + 1) % 8 == 0 ? "\n" : " ");
   std::fprintf(out, "};\n\n");
-  // The sheen's albedo at the same texel centres (sheen_lut.h), for the table's B and A channels.
+  // The sheen's albedo at the same texel centres and at the edges clamp-to-edge reaches (sheen_lut.h),
+  // for the table's B and A channels.
   const facet::ibl::SheenLut sheen = facet::ibl::generateSheenLut(lut.size);
   std::fprintf(out, "const float kEmbeddedSheenAlbedo[%zu] = {\n", sheen.albedo.size());
   for (size_t i = 0; i < sheen.albedo.size(); ++i)

@@ -1,5 +1,6 @@
 #include "facet/lint/precision_rules.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -45,8 +46,12 @@ class Rules {
         for (ValueId a : v.args) constantOperand(a, id);
       if (v.op == Op::Div) divisor(v.args[1], id);
       if (v.op == Op::Builtin) builtinDomain(v, id);
+      if (mediump_ && v.op == Op::Builtin && v.name == "normalize" && !precision_.highp(id) &&
+          ir::componentCount(v.type) > 1)
+        directionLength(v.args[0], id, "normalize's argument", true);
     }
     if (mediump_) outputs();
+    if (mediump_) directionOutputs();
   }
 
  private:
@@ -142,6 +147,91 @@ class Rules {
           locOf(id, id),
           "output '" + name + "' can reach " + describe(r) + ", beyond fp16's ±65504: mediump tiers store it as +inf",
           "fp16-overflow");
+    }
+  }
+
+  // |x|² of a vector, bounded tighter than its components' intervals allow where the IR shows
+  // the structure: a unit vector (normalize, a normal map's sample), a scale of one, a vector
+  // built from parts. A normal map's texels are taken as unit vectors, as the map's author made
+  // them: the rule checks what the material's arithmetic does to them, not the image.
+  Interval lengthSquared(ValueId id, int depth = 0) const {
+    const ir::Value& v = module_.value(id);
+    auto squared = [](Interval r) {
+      const double a = r.lo * r.lo, b = r.hi * r.hi;
+      return r.contains(0.0) ? Interval{0.0, std::max(a, b)} : Interval{std::min(a, b), std::max(a, b)};
+    };
+    auto sum = [](Interval a, Interval b) { return Interval{a.lo + b.lo, a.hi + b.hi}; };
+    if (depth < 32) {
+      if (v.op == Op::Builtin && (v.name == "normalize" || v.name == "sample_normal")) return {1.0, 1.0};
+      if (v.op == Op::Neg) return lengthSquared(v.args[0], depth + 1);
+      if (v.op == Op::Mul && v.args.size() == 2) {
+        for (int scalar = 0; scalar < 2; ++scalar) {
+          const ValueId s = v.args[size_t(scalar)], x = v.args[size_t(1 - scalar)];
+          if (ir::componentCount(module_.value(s).type) != 1 || ir::componentCount(module_.value(x).type) == 1)
+            continue;
+          const Interval k = squared(hullOf(s)), n = lengthSquared(x, depth + 1);
+          auto product = [](double a, double b) { return a == 0.0 || b == 0.0 ? 0.0 : a * b; };  // 0 · inf: 0
+          return {product(k.lo, n.lo), product(k.hi, n.hi)};
+        }
+      }
+      if (v.op == Op::Construct && v.args.size() > 1) {
+        Interval total{0.0, 0.0};
+        for (ValueId a : v.args)
+          total = sum(
+              total, ir::componentCount(module_.value(a).type) == 1 ? squared(hullOf(a)) : lengthSquared(a, depth + 1));
+        return total;
+      }
+      if (v.op == Op::Select) {
+        const Interval a = lengthSquared(v.args[1], depth + 1), b = lengthSquared(v.args[2], depth + 1);
+        return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+      }
+    }
+    const ir::ValueRange& r = ranges_.of(id);
+    Interval total{0.0, 0.0};
+    for (int i = 0; i < r.components; ++i) total = sum(total, squared(r.c[size_t(i)]));
+    return total;
+  }
+
+  // A vector the shader normalizes in mediump: normalize(x) is x · inversesqrt(x·x), and x·x
+  // flushes to 0 below 2^-14 (|x| < 2^-7: normalize gives 0 · inf = NaN) and is +inf above 65504
+  // (|x| > 255.9: normalize gives 0, or NaN). `shortIsHazard`: false where the shader replaces a
+  // short vector itself (anisotropy_frame.glsl's fallback below |t|² = 1e-3).
+  void directionLength(ValueId x, ValueId at, const std::string& what, bool shortIsHazard) {
+    const Interval n = lengthSquared(x);
+    const std::string range = "its squared length is in " + describe(n);
+    if (shortIsHazard && n.hi == 0.0) {
+      diags_.error(locOf(at, x), what + " is always the zero vector: normalize gives NaN (0 · inf) in every precision",
+                   "direction-length");
+    } else if (shortIsHazard && n.hi < kFp16MinNormal) {
+      diags_.error(locOf(at, x),
+                   what + " is always shorter than 2^-7 (" + range +
+                       "): in fp16 its squared length flushes to 0 and normalize gives NaN (0 · inf)",
+                   "direction-length");
+    } else if (n.lo > kFp16Max) {
+      diags_.error(locOf(at, x),
+                   what + " is always longer than 255.9 (" + range +
+                       "): in fp16 its squared length is +inf and normalize gives 0 or NaN",
+                   "direction-length");
+    } else if (shortIsHazard && n.lo < kFp16MinNormal) {
+      diags_.warning(locOf(at, x),
+                     what + " can be shorter than 2^-7 (" + range +
+                         "): in fp16 its squared length flushes to 0 and normalize gives NaN (0 · inf)",
+                     "direction-length");
+    } else if (n.hi > kFp16Max) {
+      diags_.warning(locOf(at, x),
+                     what + " can be longer than 255.9 (" + range +
+                         "): in fp16 its squared length overflows to +inf and normalize gives 0 or NaN",
+                     "direction-length");
+    }
+  }
+
+  // The tangent-space directions the shaders normalize (normal_mapping.glsl's tangent_to_world for
+  // `normal` and `clearCoatNormal`: normalize(x t + y b + z n), |·|² ≈ x² + y² + z² on the unit
+  // frame; anisotropy_frame.glsl for `anisotropyDirection`, whose own fallback takes a short one).
+  void directionOutputs() {
+    for (const auto& [name, id] : module_.outputs) {
+      if (name != "normal" && name != "clearCoatNormal" && name != "anisotropyDirection") continue;
+      directionLength(id, id, "output '" + name + "'", name != "anisotropyDirection");
     }
   }
 

@@ -23,6 +23,8 @@ const std::map<std::string, std::string>& lintRules() {
       {"unranged-param", "A float parameter without a declared range, read by a mediump tier."},
       {"division-bound", "A divisor whose range reaches 0, or below 2^-14 in mediump."},
       {"domain", "sqrt, log2, pow or smoothstep outside the domain GLSL defines."},
+      {"direction-length",
+       "A direction the shaders normalize in mediump whose squared length can flush to 0 or overflow in fp16."},
       {"reserved-name", "A name GLSL reserves."},
       {"highp-required", "A position or texture coordinate read in mediump."},
       {"gles-limit", "A variant needs more than OpenGL ES 3.0 guarantees."},

@@ -210,7 +210,7 @@ const Texture& dfgTexture() {
     const size_t count = size_t(table.size) * size_t(table.size);
     std::vector<uint8_t> bytes(count * 8);
     for (size_t i = 0; i < count; ++i) {
-      const ibl::SheenTerms s = ibl::correctedSheen(sheen.albedo[i]);
+      const ibl::SheenTerms s = ibl::sheenTexelTerms(sheen, int(i % size_t(table.size)), int(i / size_t(table.size)));
       const float rgba[4] = {table.texels[2 * i], table.texels[2 * i + 1], float(s.albedo), float(s.scale)};
       for (size_t c = 0; c < 4; ++c) {
         uint16_t h = floatToHalf(rgba[c]);

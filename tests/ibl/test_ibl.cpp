@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <functional>
 #include <stdexcept>
+#include <tuple>
+#include <vector>
 
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/embedded_dfg_lut.h"
@@ -614,6 +616,63 @@ TEST(Sheen, AlbedoExceedsOneAtGrazingViewsAndTheCorrectionBoundsIt) {
   EXPECT_EQ(atR, 0.089);
   EXPECT_LE(maxAfter, 1.0);
   EXPECT_LT(maxAtNormalViews, 1.0);
+}
+
+// The texels' terms (sheenTexelTerms) blended as the shaders' bilinear filter with clamp to edge
+// blends them, at points between the texel centres and in the clamped strips: the corrected lobe
+// E(p) · s(p) never exceeds 1 (the table's quadrature at p, in double: what is left is the
+// texture's fp16 rounding, which EvalLobeSweep.SheenFurnaceKeepsTheWhiteFurnaceAtEveryPrecision
+// measures on the GPU), and the layer over a white base, E(p) · s(p) + 1 − B(p), exceeds it by at
+// most the bilinear interpolation error of E (1.4e-4). Every point whose texels' footprints lie at
+// n·v ≥ 0.1, where E ≤ 0.953, reads s = 1: nothing is corrected where nothing needed it.
+TEST(Sheen, TexelTermsBoundEveryBilinearBlendAndLeaveOpenViewsUncorrected) {
+  const SheenLut& lut = embeddedSheenLut();
+  const int size = lut.size;
+  auto blend = [&](double NoV, double r) {
+    auto axis = [&](double u, int* i0, int* i1, double* t) {
+      const double x = std::clamp(u * size - 0.5, 0.0, double(size - 1));
+      *i0 = int(x), *i1 = std::min(*i0 + 1, size - 1), *t = x - *i0;
+    };
+    int c0, c1, r0, r1;
+    double tx, ty;
+    axis(NoV, &c0, &c1, &tx);
+    axis(r, &r0, &r1, &ty);
+    SheenTerms out{0, 0};
+    for (auto [c, r2, w] : {std::tuple{c0, r0, (1 - tx) * (1 - ty)}, std::tuple{c1, r0, tx * (1 - ty)},
+                            std::tuple{c0, r1, (1 - tx) * ty}, std::tuple{c1, r1, tx * ty}}) {
+      const SheenTerms t = sheenTexelTerms(lut, c, r2);
+      out.albedo += w * t.albedo, out.scale += w * t.scale;
+    }
+    return out;
+  };
+  // n·v from MIN_N_DOT_V through the clamped strip, then every cell at a third and two thirds of
+  // its width and the last strip; r from the floor to 1 (the last row's strip).
+  std::vector<double> cosines = {1e-4, 1e-3, 2e-3, 4e-3, 6e-3, 1.0};
+  for (int i = 0; i < size; ++i)
+    for (double f : {1.0 / 3.0, 2.0 / 3.0}) cosines.push_back(dfgLutNoV(i, size) + f / size);
+  const double open = 0.1 + 2.0 / size;  // a point's texels lie within 1/size, their footprints 2/size
+  double worstLobe = 0, worstLayer = 0, lobeNoV = 0, lobeR = 0, layerNoV = 0, layerR = 0, scaleAtOpen = 1;
+  double uncorrectedFrom = 0;  // every n·v beyond it reads s = 1 at every r
+  for (double NoV : cosines) {
+    if (NoV > 1.0) continue;
+    for (double r : {0.089, 0.1, 0.13, 0.17, 0.22, 0.3, 0.4, 0.5, 0.65, 0.8, 0.9, 0.97, 1.0}) {
+      const double E = integrateSheenAlbedo(NoV, r, kSheenLutSteps);
+      const SheenTerms t = blend(NoV, r);
+      const double lobe = E * t.scale, layer = lobe + 1.0 - t.albedo;
+      if (lobe > worstLobe) worstLobe = lobe, lobeNoV = NoV, lobeR = r;
+      if (layer > worstLayer) worstLayer = layer, layerNoV = NoV, layerR = r;
+      if (NoV >= open) scaleAtOpen = std::min(scaleAtOpen, t.scale);
+      if (t.scale < 1.0 - 1e-12) uncorrectedFrom = std::max(uncorrectedFrom, NoV);  // the weights' rounding
+    }
+  }
+  std::printf(
+      "sheen texel terms: lobe x s at most %.6f (n.v %g, r %.3f), layer at most %.6f (n.v %g, r %.3f); s = 1 "
+      "beyond n.v %.4f\n",
+      worstLobe, lobeNoV, lobeR, worstLayer, layerNoV, layerR, uncorrectedFrom);
+  EXPECT_LE(worstLobe, 1.0 + 1e-9);
+  EXPECT_GT(worstLobe, 0.99);  // the bound is reached, not undershot by a blanket scale
+  EXPECT_LE(worstLayer, 1.0 + 2e-4);
+  EXPECT_GT(scaleAtOpen, 1.0 - 1e-12);
 }
 
 TEST(Sheen, EmbeddedTableIsTheGeneratedOne) {

@@ -135,6 +135,53 @@ TEST(Lint, SqrtAndLogOutsideTheirDomainAreFlagged) {
     EXPECT_EQ(d.severity, d.loc.line == 4 ? Severity::Error : Severity::Warning) << d.message;
 }
 
+// The directions the shaders normalize in mediump (normal_mapping.glsl's tangent_to_world for
+// `normal` and `clearCoatNormal`, anisotropy_frame.glsl for `anisotropyDirection`, and the
+// material's own normalize): x · x flushes to 0 below 2^-14 (NaN) and is +inf above 65504. A normal
+// map's sample counts as a unit vector; anisotropyDirection may be short (the frame's fallback).
+TEST(Lint, DirectionsTheShadersNormalizeKeepALengthFp16Holds) {
+  const std::string params =
+      "    param bump: float = 0.5 in [0, 1]\n"
+      "    param relief: texture(normal) = vec4(0.5, 0.5, 1.0, 1.0)\n"
+      "    param big: float = 1.0 in [0, 1000]\n";
+  MaterialLint r = lintText(material(params,
+                                     "        clearCoat = 1.0\n"
+                                     "        clearCoatNormal = vec3(0.0, 0.0, params.bump)\n"
+                                     "        normal = sample(params.relief, vertex.uv0) * 0.005\n"
+                                     "        anisotropy = 0.5\n"
+                                     "        anisotropyDirection = vec3(params.big, 0.0, 0.0)\n"
+                                     "        baseColor = normalize(vec3(params.bump, 0.0, 0.0))\n"));
+  EXPECT_TRUE(has(r, "7:27 direction-length")) << dump(r);   // clearCoatNormal: z reaches 0
+  EXPECT_TRUE(has(r, "8:52 direction-length")) << dump(r);   // normal: always 0.005 long
+  EXPECT_TRUE(has(r, "10:31 direction-length")) << dump(r);  // anisotropyDirection: up to 1000 long
+  EXPECT_TRUE(has(r, "11:21 direction-length")) << dump(r);  // normalize of a vector that can be 0
+  EXPECT_EQ(where(r).size(), 4u) << dump(r);
+  for (const auto& d : r.diagnostics)
+    EXPECT_EQ(d.severity, d.loc.line == 8 ? Severity::Error : Severity::Warning) << d.message;
+
+  // The same outputs within fp16's reach: a unit map scaled by [0.5, 1.5], a z of at least 0.5, a
+  // short anisotropyDirection (the frame replaces it), a normalized map: no finding.
+  const std::string safeParams = params.substr(0, params.rfind("    param big"));
+  MaterialLint safe = lintText(material(safeParams,
+                                        "        clearCoat = 1.0\n"
+                                        "        clearCoatNormal = vec3(0.0, params.bump, 0.5 + params.bump)\n"
+                                        "        normal = sample(params.relief, vertex.uv0) * (0.5 + params.bump)\n"
+                                        "        anisotropy = 0.5\n"
+                                        "        anisotropyDirection = vec3(params.bump, 0.0, 0.0)\n"
+                                        "        baseColor = normalize(-sample(params.relief, vertex.uv0))\n"));
+  EXPECT_TRUE(safe.diagnostics.empty()) << dump(safe);
+
+  // The zero vector is NaN in every precision; the reference tier alone (highp) has no fp16 rule.
+  MaterialLint zero = lintText(material("", "        normal = vec3(0.0)\n"));
+  ASSERT_EQ(where(zero), std::vector<std::string>{"3:18 direction-length"}) << dump(zero);
+  EXPECT_NE(zero.diagnostics[0].message.find("always the zero vector"), std::string::npos);
+  LintOptions highp;
+  highp.tiers = {facet::permutations::Tier::Reference};
+  const std::string bump = "    param bump: float = 0.5 in [0, 1]\n";
+  EXPECT_TRUE(has(lintText(material(bump, "        normal = vec3(0.0, 0.0, params.bump)\n")), "4:18 direction-length"));
+  EXPECT_TRUE(lintText(material(bump, "        normal = vec3(0.0, 0.0, params.bump)\n"), highp).diagnostics.empty());
+}
+
 TEST(Lint, ReservedNamesAreLanguageErrors) {
   MaterialLint r =
       lintText(material("    param discard: float = 0.5 in [0, 1]\n", "        roughness = params.discard\n"));

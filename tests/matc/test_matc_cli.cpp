@@ -599,6 +599,12 @@ TEST(MatcCli, LintExitCodesAndBaselineRoundTrip) {
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("[fp16-constant]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hazards.mat:14:18: warning: output 'normal' can be shorter than 2^-7 (its squared length is in "
+                       "[0, 1]): in fp16 its squared length flushes to 0 and normalize gives NaN (0 · inf) "
+                       "[direction-length]\n            normal = vec3(0.0, 0.0, params.roughness)\n"
+                       "                     ^~~~\n"),
+            std::string::npos)
+      << r.out;
 
   std::string warnOnly =
       write(dir, "warn.mat",

@@ -14,6 +14,10 @@
 //   domain              sqrt of a value that can be negative, log2 of one that can be ≤ 0,
 //                       pow(x, y) where x can be negative (undefined in GLSL): an error when
 //                       every value of the range is outside the domain, a warning when some are
+//   direction-length    a direction the shaders normalize in mediump (`normal`, `clearCoatNormal`,
+//                       `anisotropyDirection`, the material's own normalize) whose squared length
+//                       can fall below 2^-14 (flushed: NaN) or above 65504 (+inf: 0 or NaN); an
+//                       error when every value of the range does
 #pragma once
 
 #include "facet/ir/diagnostics.h"
