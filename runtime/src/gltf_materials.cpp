@@ -213,14 +213,9 @@ class Reader {
       return false;
     }
     if (!colour(value, "sheenColorFactor", where, 1, &m->sheenColorFactor, error)) return false;
-    if (value.Has("sheenRoughnessFactor")) {
-      const tinygltf::Value& r = value.Get("sheenRoughnessFactor");
-      if (!r.IsNumber()) {
-        *error = where + "/sheenRoughnessFactor: not a number";
-        return false;
-      }
-      if (!unit(r.GetNumberAsDouble(), where + "/sheenRoughnessFactor", &m->sheenRoughnessFactor, error)) return false;
-    }
+    if (!optionalNumber(value, "sheenRoughnessFactor", where, &m->sheenRoughnessFactor, error) ||
+        !unit(m->sheenRoughnessFactor, where + "/sheenRoughnessFactor", &m->sheenRoughnessFactor, error))
+      return false;
     return extensionTextures(value, where, {GltfSlot::SheenColor, GltfSlot::SheenRoughness}, m, error);
   }
 
@@ -235,15 +230,8 @@ class Reader {
       return false;
     }
     for (auto [key, out] : {std::pair{"clearcoatFactor", &m->clearcoatFactor},
-                            std::pair{"clearcoatRoughnessFactor", &m->clearcoatRoughnessFactor}}) {
-      if (!value.Has(key)) continue;
-      const tinygltf::Value& f = value.Get(key);
-      if (!f.IsNumber()) {
-        *error = where + "/" + key + ": not a number";
-        return false;
-      }
-      if (!unit(f.GetNumberAsDouble(), where + "/" + key, out, error)) return false;
-    }
+                            std::pair{"clearcoatRoughnessFactor", &m->clearcoatRoughnessFactor}})
+      if (!optionalNumber(value, key, where, out, error) || !unit(*out, where + "/" + key, out, error)) return false;
     if (value.Has("clearcoatNormalTexture")) {
       m->clearcoatNormalScale = numberIn(value.Get("clearcoatNormalTexture"), "scale", 1);
       if (!(std::abs(m->clearcoatNormalScale) <= kMaxNormalScale)) {
@@ -264,17 +252,10 @@ class Reader {
       *error = where + ": expected an object";
       return false;
     }
-    for (auto [key, out] : {std::pair{"anisotropyStrength", &m->anisotropyStrength},
-                            std::pair{"anisotropyRotation", &m->anisotropyRotation}}) {
-      if (!value.Has(key)) continue;
-      const tinygltf::Value& f = value.Get(key);
-      if (!f.IsNumber()) {
-        *error = where + "/" + key + ": not a number";
-        return false;
-      }
-      *out = f.GetNumberAsDouble();
-    }
-    if (!unit(m->anisotropyStrength, where + "/anisotropyStrength", &m->anisotropyStrength, error)) return false;
+    if (!optionalNumber(value, "anisotropyStrength", where, &m->anisotropyStrength, error) ||
+        !optionalNumber(value, "anisotropyRotation", where, &m->anisotropyRotation, error) ||
+        !unit(m->anisotropyStrength, where + "/anisotropyStrength", &m->anisotropyStrength, error))
+      return false;
     if (!std::isfinite(m->anisotropyRotation)) {
       *error = where + "/anisotropyRotation: " + number(m->anisotropyRotation) + " is not a finite angle";
       return false;
@@ -327,6 +308,19 @@ class Reader {
       }
       (*out)[size_t(i)] = v;
     }
+    return true;
+  }
+
+  // An extension's number, when present (`out` keeps its default when absent).
+  static bool optionalNumber(const tinygltf::Value& object, const char* key, const std::string& where, double* out,
+                             std::string* error) {
+    if (!object.Has(key)) return true;
+    const tinygltf::Value& v = object.Get(key);
+    if (!v.IsNumber()) {
+      *error = where + "/" + key + ": not a number";
+      return false;
+    }
+    *out = v.GetNumberAsDouble();
     return true;
   }
 

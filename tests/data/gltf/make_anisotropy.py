@@ -7,19 +7,9 @@ GltfMaterials.AnisotropyExtensionDrawsTheExtensionsLobe):
             times anisotropyStrength 0.9, turned by anisotropyRotation -0.3 rad; roughness 0.25
 The texture is one colour, so that a hand-written Facet material with the mapped constants draws
 the same image. Run from this folder: python3 make_anisotropy.py"""
-import base64, json, math, struct, zlib
+import json, math
 
-
-def png(width, height, pixel):
-    rows = b"".join(b"\0" + b"".join(bytes(pixel(x, y)) for x in range(width)) for y in range(height))
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
-
-
-def data_uri(mime, data):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
+from gltf_writer import Buffer, data_uri, png
 
 
 # 2 · rg − 1 ≈ (cos 30°, sin 30°): R = round(255 (1 + cos 30°) / 2), G = round(255 (1 + sin 30°) / 2).
@@ -41,32 +31,15 @@ for i in range(rings):
         a, b = i * (segments + 1) + j, (i + 1) * (segments + 1) + j
         indices += [a, b, a + 1, a + 1, b, b + 1]
 
-buffer = b""
-views, accessors = [], []
-
-
-def add(values, fmt, kind, count, component, target, minmax=False):
-    global buffer
-    data = struct.pack("<%d%s" % (len(values), fmt), *values)
-    while len(buffer) % 4:
-        buffer += b"\0"
-    views.append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data), "target": target})
-    buffer += data
-    accessor = {"bufferView": len(views) - 1, "componentType": component, "count": count, "type": kind}
-    if minmax:
-        n = len(values) // count
-        accessor["min"] = [min(values[i::n]) for i in range(n)]
-        accessor["max"] = [max(values[i::n]) for i in range(n)]
-    accessors.append(accessor)
-    return len(accessors) - 1
+buffer = Buffer()
 
 
 n = (rings + 1) * (segments + 1)
-attributes = {"POSITION": add(positions, "f", "VEC3", n, 5126, 34962, True),
-              "NORMAL": add(normals, "f", "VEC3", n, 5126, 34962),
-              "TANGENT": add(tangents, "f", "VEC4", n, 5126, 34962),
-              "TEXCOORD_0": add(uvs, "f", "VEC2", n, 5126, 34962)}
-a_idx = add(indices, "H", "SCALAR", len(indices), 5123, 34963)
+attributes = {"POSITION": buffer.add(positions, "f", "VEC3", n, 5126, 34962, True),
+              "NORMAL": buffer.add(normals, "f", "VEC3", n, 5126, 34962),
+              "TANGENT": buffer.add(tangents, "f", "VEC4", n, 5126, 34962),
+              "TEXCOORD_0": buffer.add(uvs, "f", "VEC2", n, 5126, 34962)}
+a_idx = buffer.add(indices, "H", "SCALAR", len(indices), 5123, 34963)
 
 gltf = {
     "asset": {"version": "2.0", "generator": "Facet tests/data/gltf/make_anisotropy.py"},
@@ -88,9 +61,7 @@ gltf = {
     ],
     "textures": [{"source": 0}],
     "images": [{"uri": data_uri("image/png", direction)}],
-    "buffers": [{"byteLength": len(buffer), "uri": data_uri("application/octet-stream", buffer)}],
-    "bufferViews": views,
-    "accessors": accessors,
+    **buffer.gltf(),
 }
 with open("anisotropy.gltf", "w") as f:
     json.dump(gltf, f, separators=(", ", ": "))
