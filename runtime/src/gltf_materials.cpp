@@ -559,6 +559,22 @@ std::optional<GltfMaterialSet> readGltfMaterials(const std::string& path, std::s
       return std::nullopt;
     }
   }
+  // KHR_materials_anisotropy's direction lives in the tangent frame: a primitive without TANGENT
+  // gets tangents only from its normal texture (MikkTSpace; the extension requires one of the two),
+  // otherwise its tangent is +x (runtime::Vertex's default), which the note says.
+  for (size_t mi = 0; mi < model->meshes.size(); ++mi) {
+    const std::vector<tinygltf::Primitive>& primitives = model->meshes[mi].primitives;
+    for (size_t pi = 0; pi < primitives.size(); ++pi) {
+      const tinygltf::Primitive& p = primitives[pi];
+      const auto m = std::find_if(set.materials.begin(), set.materials.end(),
+                                  [&](const GltfMaterial& g) { return g.index == p.material && g.index >= 0; });
+      if (m == set.materials.end() || !m->features.anisotropy || p.attributes.count("TANGENT") ||
+          m->features.textured[size_t(GltfSlot::Normal)])
+        continue;
+      reader.note("/meshes/" + std::to_string(mi) + "/primitives/" + std::to_string(pi) +
+                  ": KHR_materials_anisotropy without TANGENT or a normal texture; its direction turns from +x");
+    }
+  }
   set.images.resize(model->images.size());
   for (size_t i = 0; i < model->images.size(); ++i) {
     if (!readImage(model->images[i], i, &set.images[i], &why)) {

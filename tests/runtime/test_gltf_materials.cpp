@@ -384,6 +384,23 @@ TEST(GltfMaterials, AnisotropyExtensionBecomesFacetsAnisotropy) {
   const std::string json = facet::test::readText(imported.scene);
   for (const char* key : {"\"anisotropyStrength\": 0.6", "\"anisotropyRotation\"", "\"anisotropyTexture\""})
     EXPECT_NE(json.find(key), std::string::npos) << key;
+  // Without TANGENT or a normal texture (the extension requires one), the direction turns from +x: noted.
+  EXPECT_FALSE(hasNote(set->notes,
+                       "/meshes/0/primitives/3: KHR_materials_anisotropy without TANGENT or a normal "
+                       "texture; its direction turns from +x"));
+  {
+    std::string text = facet::test::readText(dir + "/glass.gltf");
+    const std::string tangent = R"("TANGENT": 2, "TEXCOORD_0": 3, "TEXCOORD_1": 4, "COLOR_0": 5)";
+    const size_t at = text.find(tangent);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, tangent.size(), R"("TEXCOORD_0": 3, "TEXCOORD_1": 4, "COLOR_0": 5)");
+    std::ofstream(dir + "/untangented.gltf") << text;
+    auto untangented = facet::runtime::readGltfMaterials(dir + "/untangented.gltf", &error);
+    ASSERT_TRUE(untangented) << error;
+    EXPECT_TRUE(hasNote(untangented->notes,
+                        "/meshes/0/primitives/3: KHR_materials_anisotropy without TANGENT or a "
+                        "normal texture; its direction turns from +x"));
+  }
   // Factors alone: the direction is the rotation's, no texture.
   auto plain = facet::runtime::readGltfMaterials(
       glassWithExtensions(dir, R"({"KHR_materials_anisotropy": {"anisotropyStrength": 1}})"), &error);
