@@ -20,7 +20,7 @@ using ordered = nlohmann::ordered_json;
 const char* const kSlotParameters[kGltfSlots] = {
     "baseColorTexture",          "metallicRoughnessTexture", "normalTexture",         "occlusionTexture",
     "emissiveTexture",           "sheenColorTexture",        "sheenRoughnessTexture", "clearcoatTexture",
-    "clearcoatRoughnessTexture", "clearcoatNormalTexture"};
+    "clearcoatRoughnessTexture", "clearcoatNormalTexture",   "anisotropyTexture"};
 
 // `target` relative to the scene's folder when it lies inside the asset root (all resolved), else "".
 std::string relativeInside(const fs::path& sceneFolder, const fs::path& root, const fs::path& target) {
@@ -147,6 +147,11 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
       params["clearcoatRoughnessFactor"] = m.clearcoatRoughnessFactor;
       if (m.features.textured[size_t(GltfSlot::ClearCoatNormal)])
         params["clearcoatNormalScale"] = m.clearcoatNormalScale;
+    }
+    if (m.features.anisotropy) {
+      params["anisotropyStrength"] = m.anisotropyStrength;
+      params["anisotropyRotation"] =
+          std::array<double, 2>{std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation)};
     }
     for (size_t s = 0; s < kGltfSlots; ++s) {
       if (!m.features.textured[s]) continue;

@@ -40,13 +40,16 @@ constexpr SlotInfo kSlots[kGltfSlots] = {
      "vec4(1.0, 1.0, 1.0, 1.0)"},
     {"ccn", "clearcoatNormalTexture", "/extensions/KHR_materials_clearcoat/clearcoatNormalTexture", "normal",
      "vec4(0.5, 0.5, 1.0, 1.0)"},
+    // The extension's texel where there is none: direction (1, 0), strength 1.
+    {"an", "anisotropyTexture", "/extensions/KHR_materials_anisotropy/anisotropyTexture", "linear",
+     "vec4(1.0, 0.5, 1.0, 1.0)"},
 };
 
 // The extensions the material path reads; any other optional one is reported and skipped (a
 // required one was refused with the file: gltf_document.cpp).
 constexpr const char* kReadExtensions[] = {
-    "KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_ior",    "KHR_materials_specular",
-    "KHR_materials_sheen",   "KHR_materials_clearcoat",         "KHR_mesh_quantization"};
+    "KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_ior",        "KHR_materials_specular",
+    "KHR_materials_sheen",   "KHR_materials_clearcoat",         "KHR_materials_anisotropy", "KHR_mesh_quantization"};
 
 // A number for a .mat file or a feature name: the shortest text that reads back as the double.
 std::string number(double v) {
@@ -107,7 +110,8 @@ class Reader {
         {g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions},
         {g.occlusionTexture.index, g.occlusionTexture.texCoord, g.occlusionTexture.extensions},
         {g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions},
-        {-1, 0, {}},  // KHR_materials_sheen's and KHR_materials_clearcoat's, read with the extensions below
+        {-1, 0, {}},  // the material extensions', read with the extensions below
+        {-1, 0, {}},
         {-1, 0, {}},
         {-1, 0, {}},
         {-1, 0, {}},
@@ -158,6 +162,8 @@ class Reader {
         if (!sheen(value, where, &m, error)) return false;
       } else if (name == "KHR_materials_clearcoat") {
         if (!clearCoat(value, where, &m, error)) return false;
+      } else if (name == "KHR_materials_anisotropy") {
+        if (!anisotropy(value, where, &m, error)) return false;
       } else {
         note(where + ": extension not read; the material is drawn without it");
       }
@@ -207,14 +213,9 @@ class Reader {
       return false;
     }
     if (!colour(value, "sheenColorFactor", where, 1, &m->sheenColorFactor, error)) return false;
-    if (value.Has("sheenRoughnessFactor")) {
-      const tinygltf::Value& r = value.Get("sheenRoughnessFactor");
-      if (!r.IsNumber()) {
-        *error = where + "/sheenRoughnessFactor: not a number";
-        return false;
-      }
-      if (!unit(r.GetNumberAsDouble(), where + "/sheenRoughnessFactor", &m->sheenRoughnessFactor, error)) return false;
-    }
+    if (!optionalNumber(value, "sheenRoughnessFactor", where, &m->sheenRoughnessFactor, error) ||
+        !unit(m->sheenRoughnessFactor, where + "/sheenRoughnessFactor", &m->sheenRoughnessFactor, error))
+      return false;
     return extensionTextures(value, where, {GltfSlot::SheenColor, GltfSlot::SheenRoughness}, m, error);
   }
 
@@ -229,15 +230,8 @@ class Reader {
       return false;
     }
     for (auto [key, out] : {std::pair{"clearcoatFactor", &m->clearcoatFactor},
-                            std::pair{"clearcoatRoughnessFactor", &m->clearcoatRoughnessFactor}}) {
-      if (!value.Has(key)) continue;
-      const tinygltf::Value& f = value.Get(key);
-      if (!f.IsNumber()) {
-        *error = where + "/" + key + ": not a number";
-        return false;
-      }
-      if (!unit(f.GetNumberAsDouble(), where + "/" + key, out, error)) return false;
-    }
+                            std::pair{"clearcoatRoughnessFactor", &m->clearcoatRoughnessFactor}})
+      if (!optionalNumber(value, key, where, out, error) || !unit(*out, where + "/" + key, out, error)) return false;
     if (value.Has("clearcoatNormalTexture")) {
       m->clearcoatNormalScale = numberIn(value.Get("clearcoatNormalTexture"), "scale", 1);
       if (!(std::abs(m->clearcoatNormalScale) <= kMaxNormalScale)) {
@@ -248,6 +242,25 @@ class Reader {
     }
     return extensionTextures(value, where,
                              {GltfSlot::ClearCoat, GltfSlot::ClearCoatRoughness, GltfSlot::ClearCoatNormal}, m, error);
+  }
+
+  // KHR_materials_anisotropy: the strength (in [0, 1]), the rotation (any finite angle: the scene
+  // takes its cosine and sine) and the texture (RG the direction, B the strength, linear).
+  bool anisotropy(const tinygltf::Value& value, const std::string& where, GltfMaterial* m, std::string* error) {
+    m->features.anisotropy = true;
+    if (!value.IsObject()) {
+      *error = where + ": expected an object";
+      return false;
+    }
+    if (!optionalNumber(value, "anisotropyStrength", where, &m->anisotropyStrength, error) ||
+        !optionalNumber(value, "anisotropyRotation", where, &m->anisotropyRotation, error) ||
+        !unit(m->anisotropyStrength, where + "/anisotropyStrength", &m->anisotropyStrength, error))
+      return false;
+    if (!std::isfinite(m->anisotropyRotation)) {
+      *error = where + "/anisotropyRotation: " + number(m->anisotropyRotation) + " is not a finite angle";
+      return false;
+    }
+    return extensionTextures(value, where, {GltfSlot::Anisotropy}, m, error);
   }
 
   // An extension's textureInfo objects (index, texCoord, KHR_texture_transform), into their slots.
@@ -295,6 +308,19 @@ class Reader {
       }
       (*out)[size_t(i)] = v;
     }
+    return true;
+  }
+
+  // An extension's number, when present (`out` keeps its default when absent).
+  static bool optionalNumber(const tinygltf::Value& object, const char* key, const std::string& where, double* out,
+                             std::string* error) {
+    if (!object.Has(key)) return true;
+    const tinygltf::Value& v = object.Get(key);
+    if (!v.IsNumber()) {
+      *error = where + "/" + key + ": not a number";
+      return false;
+    }
+    *out = v.GetNumberAsDouble();
     return true;
   }
 
@@ -490,6 +516,7 @@ std::string GltfFeatures::name() const {
   if (doubleSided) name += "_ds";
   if (sheen) name += "_sh";
   if (clearCoat) name += "_cc";
+  if (anisotropy) name += "_an";
   return name;
 }
 
@@ -532,6 +559,22 @@ std::optional<GltfMaterialSet> readGltfMaterials(const std::string& path, std::s
       return std::nullopt;
     }
   }
+  // KHR_materials_anisotropy's direction lives in the tangent frame: a primitive without TANGENT
+  // gets tangents only from its normal texture (MikkTSpace; the extension requires one of the two),
+  // otherwise its tangent is +x (runtime::Vertex's default), which the note says.
+  for (size_t mi = 0; mi < model->meshes.size(); ++mi) {
+    const std::vector<tinygltf::Primitive>& primitives = model->meshes[mi].primitives;
+    for (size_t pi = 0; pi < primitives.size(); ++pi) {
+      const tinygltf::Primitive& p = primitives[pi];
+      const auto m = std::find_if(set.materials.begin(), set.materials.end(),
+                                  [&](const GltfMaterial& g) { return g.index == p.material && g.index >= 0; });
+      if (m == set.materials.end() || !m->features.anisotropy || p.attributes.count("TANGENT") ||
+          m->features.textured[size_t(GltfSlot::Normal)])
+        continue;
+      reader.note("/meshes/" + std::to_string(mi) + "/primitives/" + std::to_string(pi) +
+                  ": KHR_materials_anisotropy without TANGENT or a normal texture; its direction turns from +x");
+    }
+  }
   set.images.resize(model->images.size());
   for (size_t i = 0; i < model->images.size(); ++i) {
     if (!readImage(model->images[i], i, &set.images[i], &why)) {
@@ -541,6 +584,49 @@ std::optional<GltfMaterialSet> readGltfMaterials(const std::string& path, std::s
   }
   return set;
 }
+
+namespace {
+
+// KHR_materials_anisotropy onto Facet's anisotropic lobe (docs/gltf.md, "Anisotropy"). The
+// extension's lobe is the anisotropic GGX with α_t = mix(α, 1, s²) along its direction and α_b = α
+// across, α = r²; Facet's is the same D and V with α_t = α′(1 + k), α_b = α′(1 − k), α′ = r′²
+// (chunks/anisotropy_frame.glsl). So α′ = (α_t + α_b) / 2 and k = (α_t − α_b) / (α_t + α_b) give
+// the extension's pair exactly. Both are first floored at Facet's α_min = 0.089², the floor every
+// Facet lobe takes (α′ ≥ α_min then, so the division is by at least 2 α_min and Facet's own clamps
+// leave the pair as it is). The direction is the extension's, (cos ρ, sin ρ) turning the texture's
+// 2 · rg − 1 counter-clockwise; it is not normalized: the frame normalizes it after projecting it
+// onto the shading normal's plane (a zero texel direction takes the frame's fallback, not a NaN).
+// `texel`: the anisotropy texture's sample, "" without one.
+std::string anisotropySource(const std::string& texel) {
+  std::string text =
+      "        // KHR_materials_anisotropy: the extension's (alpha along, alpha across) as Facet's\n"
+      "        // roughness and anisotropy (docs/gltf.md, \"Anisotropy\")\n";
+  std::string strength = "params.anisotropyStrength";
+  if (!texel.empty()) {
+    text += "        let anisotropyTexel = " + texel + "\n";
+    strength += " * anisotropyTexel.b";
+  }
+  text += "        let anisotropyStrength = " + strength +
+          "\n"
+          "        let gltfAlpha = gltfRoughness * gltfRoughness\n"
+          "        let alphaAcross = max(gltfAlpha, 0.007921)\n"
+          "        let alphaAlong = max(mix(gltfAlpha, 1.0, anisotropyStrength * anisotropyStrength), 0.007921)\n"
+          "        roughness = sqrt(0.5 * (alphaAlong + alphaAcross))\n"
+          "        anisotropy = (alphaAlong - alphaAcross) / (alphaAlong + alphaAcross)\n";
+  if (texel.empty()) {
+    text += "        anisotropyDirection = vec3(params.anisotropyRotation, 0.0)\n";
+  } else {
+    text +=
+        "        let texelDirection = anisotropyTexel.rg * 2.0 - 1.0\n"
+        "        anisotropyDirection = vec3(params.anisotropyRotation.x * texelDirection.x - "
+        "params.anisotropyRotation.y * texelDirection.y,\n"
+        "            params.anisotropyRotation.y * texelDirection.x + params.anisotropyRotation.x * texelDirection.y, "
+        "0.0)\n";
+  }
+  return text;
+}
+
+}  // namespace
 
 std::string gltfMaterialSource(const GltfFeatures& f) {
   using S = GltfSlot;
@@ -574,6 +660,11 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
         "    // KHR_materials_clearcoat: Facet's clear coat (docs/material-models.md, \"Clear coat\")\n"
         "    param clearcoatFactor: float = 0.0 in [0, 1]\n"
         "    param clearcoatRoughnessFactor: float = 0.0 in [0, 1]\n";
+  if (f.anisotropy)
+    text +=
+        "    // KHR_materials_anisotropy: its strength, and (cos, sin) of its rotation\n"
+        "    param anisotropyStrength: float = 0.0 in [0, 1]\n"
+        "    param anisotropyRotation: vec2 = vec2(1.0, 0.0) in [-1, 1]\n";
   if (has(S::ClearCoatNormal)) text += "    param clearcoatNormalScale: float = 1.0 in [-100, 100]\n";
   for (size_t s = 0; s < kGltfSlots; ++s) {
     if (!f.textured[s]) continue;
@@ -615,13 +706,17 @@ std::string gltfMaterialSource(const GltfFeatures& f) {
   }
   text += "        baseColor = base.rgb\n";
   if (f.alphaMode != "OPAQUE") text += "        alpha = base.a\n";
+  // With KHR_materials_anisotropy the glTF roughness is the extension's α = r² across the direction,
+  // remapped below.
+  const std::string roughness = f.anisotropy ? "let gltfRoughness" : "roughness";
   if (has(S::MetallicRoughness)) {
     text += "        let metalRough = " + sampled[size_t(S::MetallicRoughness)] + "\n" +
-            "        metallic = params.metallicFactor * metalRough.b\n" +
-            "        roughness = params.roughnessFactor * metalRough.g\n";
+            "        metallic = params.metallicFactor * metalRough.b\n" + "        " + roughness +
+            " = params.roughnessFactor * metalRough.g\n";
   } else {
-    text += "        metallic = params.metallicFactor\n        roughness = params.roughnessFactor\n";
+    text += "        metallic = params.metallicFactor\n        " + roughness + " = params.roughnessFactor\n";
   }
+  if (f.anisotropy) text += anisotropySource(has(S::Anisotropy) ? sampled[size_t(S::Anisotropy)] : "");
   text += "        reflectance = params.reflectance\n";
   if (has(S::Normal)) {
     text += "        let mapped = " + sampled[size_t(S::Normal)] + "\n" +

@@ -10,19 +10,9 @@ covering what the material path reads (tests/runtime/test_gltf_materials.cpp):
     KHR_materials_specular colour
   a primitive without a material (glTF's default material)
 Run from this folder: python3 make_features.py"""
-import base64, json, struct, zlib
+import json
 
-
-def png(width, height, pixel):
-    rows = b"".join(b"\0" + b"".join(bytes(pixel(x, y)) for x in range(width)) for y in range(height))
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
-
-
-def data_uri(mime, data):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
+from gltf_writer import Buffer, data_uri, png
 
 
 checker = png(8, 8, lambda x, y: (230, 60, 40, 255) if (x // 2 + y // 2) % 2 else (40, 90, 220, 255))
@@ -47,36 +37,19 @@ for q in range(quads):
     b = 4 * q
     indices += [b, b + 3, b + 1, b + 1, b + 3, b + 2]
 
-buffer = b""
-views, accessors = [], []
-
-
-def add(values, fmt, kind, count, component, target, minmax=False):
-    global buffer
-    data = struct.pack("<%d%s" % (len(values), fmt), *values)
-    while len(buffer) % 4:
-        buffer += b"\0"
-    views.append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data), "target": target})
-    buffer += data
-    accessor = {"bufferView": len(views) - 1, "componentType": component, "count": count, "type": kind}
-    if minmax:
-        n = len(values) // count
-        accessor["min"] = [min(values[i::n]) for i in range(n)]
-        accessor["max"] = [max(values[i::n]) for i in range(n)]
-    accessors.append(accessor)
-    return len(accessors) - 1
+buffer = Buffer()
 
 
 n = 4 * quads
-a_pos = add(positions, "f", "VEC3", n, 5126, 34962, True)
-a_nor = add(normals, "f", "VEC3", n, 5126, 34962)
-a_tan = add(tangents, "f", "VEC4", n, 5126, 34962)
-a_uv0 = add(uv0, "f", "VEC2", n, 5126, 34962)
-a_uv1 = add(uv1, "f", "VEC2", n, 5126, 34962)
-a_col = add(colours, "f", "VEC4", n, 5126, 34962)
+a_pos = buffer.add(positions, "f", "VEC3", n, 5126, 34962, True)
+a_nor = buffer.add(normals, "f", "VEC3", n, 5126, 34962)
+a_tan = buffer.add(tangents, "f", "VEC4", n, 5126, 34962)
+a_uv0 = buffer.add(uv0, "f", "VEC2", n, 5126, 34962)
+a_uv1 = buffer.add(uv1, "f", "VEC2", n, 5126, 34962)
+a_col = buffer.add(colours, "f", "VEC4", n, 5126, 34962)
 prims = []
 for q, material in enumerate([0, 1, 2, 3, 4, None]):
-    a_idx = add(indices[6 * q:6 * q + 6], "H", "SCALAR", 6, 5123, 34963)
+    a_idx = buffer.add(indices[6 * q:6 * q + 6], "H", "SCALAR", 6, 5123, 34963)
     attributes = {"POSITION": a_pos, "NORMAL": a_nor, "TANGENT": a_tan, "TEXCOORD_0": a_uv0, "TEXCOORD_1": a_uv1}
     if material == 3:
         attributes["COLOR_0"] = a_col
@@ -130,9 +103,7 @@ gltf = {
     "images": [{"uri": data_uri("image/png", checker)}, {"uri": data_uri("image/png", metal_rough)},
                {"uri": data_uri("image/png", flat_normal)}, {"uri": data_uri("image/png", cutout)},
                {"uri": "features_base.png"}],
-    "buffers": [{"byteLength": len(buffer), "uri": data_uri("application/octet-stream", buffer)}],
-    "bufferViews": views,
-    "accessors": accessors,
+    **buffer.gltf(),
 }
 with open("features.gltf", "w") as f:
     json.dump(gltf, f, separators=(", ", ": "))

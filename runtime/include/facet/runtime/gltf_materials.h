@@ -17,7 +17,8 @@
 namespace facet::runtime {
 
 // The texture slots of glTF's metallic-roughness material, in the order of this enum.
-// KHR_materials_sheen's two textures and KHR_materials_clearcoat's three follow the core ones.
+// KHR_materials_sheen's two textures, KHR_materials_clearcoat's three and
+// KHR_materials_anisotropy's one follow the core ones.
 enum class GltfSlot {
   BaseColor,
   MetallicRoughness,
@@ -28,9 +29,10 @@ enum class GltfSlot {
   SheenRoughness,
   ClearCoat,
   ClearCoatRoughness,
-  ClearCoatNormal
+  ClearCoatNormal,
+  Anisotropy
 };
-inline constexpr size_t kGltfSlots = 10;
+inline constexpr size_t kGltfSlots = 11;
 
 // One texture a material samples.
 struct GltfTextureUse {
@@ -53,8 +55,9 @@ struct GltfFeatures {
   std::string alphaMode = "OPAQUE";
   double alphaCutoff = 0.5;  // MASK only
   bool doubleSided = false;
-  bool sheen = false;      // KHR_materials_sheen present: a sheen layer (sheenColor, sheenRoughness)
-  bool clearCoat = false;  // KHR_materials_clearcoat present: a clear coat (clearCoat, its roughness and normal)
+  bool sheen = false;       // KHR_materials_sheen present: a sheen layer (sheenColor, sheenRoughness)
+  bool clearCoat = false;   // KHR_materials_clearcoat present: a clear coat (clearCoat, its roughness and normal)
+  bool anisotropy = false;  // KHR_materials_anisotropy present: Facet's anisotropy, the roughness remapped
 
   // The Facet material's name: "gltf" and one part per feature, e.g. gltf_bc0_mr0_n0_ao1_em0_ds.
   std::string name() const;
@@ -81,6 +84,10 @@ struct GltfMaterial {
   double clearcoatFactor = 0;
   double clearcoatRoughnessFactor = 0;
   double clearcoatNormalScale = 1;
+  // KHR_materials_anisotropy's strength (in [0, 1]) and rotation (radians, counter-clockwise from
+  // the tangent; the extension's defaults).
+  double anisotropyStrength = 0;
+  double anisotropyRotation = 0;
   std::array<GltfTextureUse, kGltfSlots> textures;
 
   // Facet's `reflectance` (f0 = 0.16 · reflectance², a scalar, f90 = 1; docs/gltf.md): from the
