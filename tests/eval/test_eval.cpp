@@ -688,6 +688,32 @@ TEST(Eval, ASceneFileReplacesTheGridAndOtherMaterialsAreLeftOut) {
       << error.message;
 }
 
+// A scene with an environment draws it as the background, a draw that is no object of the scene:
+// the gamma hack's swap (PreparedFrame's adaptation) must leave it as it is rather than stop the
+// run ("a draw of the prepared frame matches no object of the scene", which every swap set on
+// tests/data/scenes/image_lit_grid.json met).
+TEST(Eval, SwapsRunOnASceneThatShowsItsEnvironment) {
+  std::string dir = facet::test::scratchDir("eval-scene-background");
+  std::string scenePath = dir + "/environment.json";
+  std::ofstream(scenePath) << R"({"width": 48, "height": 32, "tier": "high",
+    "environment": {"sky": {"zenith": [0.3, 0.5, 1.0], "horizon": [1.0, 0.9, 0.8], "ground": [0.2, 0.2, 0.2]},
+                    "luminance": 3000},
+    "objects": [{"material": "red_plastic", "position": [0, 0, 0]}]})";
+  auto options = tinyOptions();
+  options.sceneFile = scenePath;
+  options.timingFrames = 0;
+  options.brdfSweep = false;
+  facet::eval::EvalError error;
+  auto report = facet::eval::evaluate(example("red_plastic"), options, &error);
+  ASSERT_TRUE(report) << error.message;
+  const facet::eval::ConfigurationResult* gamma = nullptr;
+  for (const auto& r : report->results)
+    if (r.configuration.name == "high:color_space=gamma_hack") gamma = &r;
+  ASSERT_TRUE(gamma);
+  EXPECT_GT(gamma->error.pixels, 0u);
+  EXPECT_FALSE(gamma->error.identical);  // the hack's encoded lighting differs from linear
+}
+
 // `--shadows` (docs/eval.md, "The shadowed view"): a third view in which the sun casts onto a wall
 // behind the spheres; each tier's receiver is scored against reference's, which renders it with a
 // 4096² atlas.
