@@ -156,7 +156,7 @@ std::string frameSampler(Flavour flavour, const abi::SamplerDesc& sampler, const
 // stage's alone: no fragment chunk reads the transforms or the dequantisation, and its text
 // would only lengthen every fragment shader a driver parses.
 // A tier with SH band 4 (shBands 5) declares the sh array's band-4 entries too; every other
-// tier stops after SH3's, so its text and uniform count are what they were before band 4.
+// tier stops after SH3's, so its text and uniform count do not depend on the option.
 std::string frameBlock(Flavour flavour, const permutations::TierConfig& tier) {
   std::vector<abi::MemberDesc> list(std::begin(abi::kFrameMembers), std::end(abi::kFrameMembers));
   if (tier.shBands > 3) list.back().arraySize = abi::kShFrameCoefficients;

@@ -149,9 +149,10 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
     radianceSh = ibl::projectRadiance(source, ibl::kMaxShBands);
   }
   // SH3's nine, then band 4's (k = 16..24) for the variants that read it; band 3's are zero.
+  constexpr size_t kBand4First = 16;  // l² for l = 4
   std::vector<Vec3> c = ibl::shaderIrradianceCoefficients(radianceSh);
   for (size_t k = 0; k < out.sh.size(); ++k) {
-    const Vec3& ck = c[k < abi::kShCoefficients ? k : k + 7];
+    const Vec3& ck = c[k < abi::kShCoefficients ? k : k - abi::kShCoefficients + kBand4First];
     out.sh[k] = {float(ck.x * scale), float(ck.y * scale), float(ck.z * scale)};
   }
   Vec3 mean = sky ? sky->mean : ibl::meanRadiance(source);

@@ -356,6 +356,18 @@ facet::eval::EvalOptions tinyOptions() {
   return o;
 }
 
+// The ground-truth runs of docs/eval.md, "The ground truth": the 25× softbox scene, the tiers as
+// shipped, the truth at 4096 points.
+facet::eval::EvalOptions softboxGroundTruthOptions() {
+  auto o = tinyOptions();
+  o.sceneFile = facet::test::sourceDir() + "/tests/data/scenes/image_lit_grid.json";
+  o.swaps = false;
+  o.timingFrames = 0;
+  o.brdfSweep = false;
+  o.groundTruthSamples = 4096;
+  return o;
+}
+
 }  // namespace
 
 TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
@@ -719,12 +731,7 @@ TEST(Eval, SwapsRunOnASceneThatShowsItsEnvironment) {
 // ground truth. `high` is built here with band 4 (its preset otherwise: mediump, which lavapipe
 // runs at fp32) and measured against the truth beside `reference` with SH3.
 TEST(EvalGroundTruth, ShBand4ClosesMostOfTheDielectricsGap) {
-  auto options = tinyOptions();
-  options.sceneFile = facet::test::sourceDir() + "/tests/data/scenes/image_lit_grid.json";
-  options.swaps = false;
-  options.timingFrames = 0;
-  options.brdfSweep = false;
-  options.groundTruthSamples = 4096;
+  auto options = softboxGroundTruthOptions();
   TierConfig band4 = facet::permutations::preset(Tier::High);
   band4.shBands = 5;
   options.tunedTiers[Tier::High] = band4;
@@ -822,12 +829,7 @@ TEST(EvalGroundTruth, AgreesWithTheSplitSumInAConstantEnvironment) {
 // see its error, well above its own (the same at a quarter of the samples), and the report must
 // show it beside the error against reference.
 TEST(EvalGroundTruth, SeesTheSplitSumErrorUnderAnImageEnvironment) {
-  auto options = tinyOptions();
-  options.sceneFile = facet::test::sourceDir() + "/tests/data/scenes/image_lit_grid.json";
-  options.swaps = false;
-  options.timingFrames = 0;
-  options.brdfSweep = false;
-  options.groundTruthSamples = 4096;
+  auto options = softboxGroundTruthOptions();
   facet::eval::EvalError error;
   auto report = facet::eval::evaluate(example("brushed_gold"), options, &error);
   ASSERT_TRUE(report) << error.message;
