@@ -155,9 +155,16 @@ std::string frameSampler(Flavour flavour, const abi::SamplerDesc& sampler, const
 // stages to match member for member, precision included). The per-object block is the vertex
 // stage's alone: no fragment chunk reads the transforms or the dequantisation, and its text
 // would only lengthen every fragment shader a driver parses.
-std::string frameBlock(Flavour flavour) {
+// A tier with SH band 4 (shBands 5) declares the sh array's band-4 entries too; every other
+// tier stops after SH3's, so its text and uniform count do not depend on the option.
+std::string frameBlock(Flavour flavour, const permutations::TierConfig& tier) {
+  std::vector<abi::MemberDesc> list(std::begin(abi::kFrameMembers), std::end(abi::kFrameMembers));
+  if (tier.shBands > 3) list.back().arraySize = abi::kShFrameCoefficients;
+  const abi::BlockDesc block{
+      abi::kFrameBlock.name,      abi::kFrameBlock.instance, abi::kFrameBlock.set, abi::kFrameBlock.binding, list,
+      abi::kFrameBlock.std140Size};
   return "struct " + std::string(abi::kPunctualLightStruct.name) + " {\n" + members(abi::kPunctualLightStruct.members) +
-         "};\n" + fixedBlock(flavour, abi::kFrameBlock);
+         "};\n" + fixedBlock(flavour, block);
 }
 
 // Parameters are read at the tier's precision: a block member needs an explicit qualifier (the
@@ -332,7 +339,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
       s += "#define FACET_ENERGY_COMPENSATION 1\n";
     if (in.tier.dominantDirection && in.tier.ambient != permutations::AmbientModel::Sampled)
       s += "#define FACET_IBL_DOMINANT_DIRECTION 1\n";
-    s += "#define FACET_SH_BANDS " + std::to_string(in.tier.shBands == 2 ? 2 : 3) + "\n";
+    s += "#define FACET_SH_BANDS " + std::to_string(in.tier.shBands == 2 ? 2 : in.tier.shBands > 3 ? 5 : 3) + "\n";
     s += "#define FACET_ENVIRONMENT_LEVELS " + std::to_string(kEnvironmentLevels) + "\n";
   }
   return s + "\n";
@@ -596,8 +603,8 @@ bool assembleDepth(const AssemblyInput& in, Flavour flavour, StageSources* out, 
   for (const OptionalInput& v : kOptionalInputs)
     if (depthInput(in, v)) vs += vertexInput(v.location);
   for (const abi::VertexAttribute& a : abi::kInstanceAttributes) vs += vertexInput(a.location);
-  vs += "\n" + depthVaryings(in, flavour, "out") + "\n" + frameBlock(flavour) + fixedBlock(flavour, abi::kObjectBlock) +
-        "\n";
+  vs += "\n" + depthVaryings(in, flavour, "out") + "\n" + frameBlock(flavour, in.tier) +
+        fixedBlock(flavour, abi::kObjectBlock) + "\n";
   out->libraryFiles = {"depth.vert.glsl", "depth.frag.glsl"};
   if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
 
@@ -648,7 +655,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
     return false;
 
   std::string vs = prologue(in, flavour, "vertex", "highp");
-  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour) +
+  vs += vertexInputs(in) + "\n" + varyings(in, flavour, "out") + "\n" + frameBlock(flavour, in.tier) +
         fixedBlock(flavour, abi::kObjectBlock) + shadowBlock(in, flavour) + "\n";
   out->libraryFiles = {"forward.vert.glsl", fragmentName};
   if (!expandIncludes(*vertexTemplate, in, &vs, &out->libraryFiles, error)) return false;
@@ -659,7 +666,7 @@ bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::
   std::string fs = prologue(in, flavour, "fragment", fragmentPrecision);
   fs += varyings(in, flavour, "in") + "layout(location = " + std::to_string(abi::kForwardColorLocation) + ") out " +
         fragmentPrecision + " vec4 fragColor;\n\n";
-  fs += frameBlock(flavour) + materialBlock(flavour, in.material, in.params, in.preshade, fragmentPrecision) +
+  fs += frameBlock(flavour, in.tier) + materialBlock(flavour, in.material, in.params, in.preshade, fragmentPrecision) +
         materialSamplers(flavour, in.params, fragmentPrecision) + specularLutSampler(in, flavour, fragmentPrecision) +
         iblSamplers(in, flavour, fragmentPrecision) + shadowBlock(in, flavour) + shadowAtlasSampler(in, flavour) + "\n";
   if (!expandIncludes(*fragmentTemplate, in, &fs, &out->libraryFiles, error)) return false;

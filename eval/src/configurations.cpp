@@ -40,10 +40,13 @@ const std::vector<Axis>& axes() {
                       : o == "analytic" ? AmbientModel::Analytic
                                         : AmbientModel::TwoMip;
        }},
+      // 5: bands l = 0..4, SH3 and band 4 (docs/ibl.md; band 3 vanishes under the clamped cosine)
       {"sh_bands",
-       {"2", "3"},
+       {"2", "3", "5"},
        [](const TierConfig& c) { return std::to_string(c.shBands); },
-       [](TierConfig* c, const std::string& o) { c->shBands = o == "2" ? 2 : 3; }},
+       [](TierConfig* c, const std::string& o) { c->shBands = o == "2"   ? 2
+                                                              : o == "5" ? 5
+                                                                         : 3; }},
       {"color_space",
        {"linear", "gamma_hack"},
        [](const TierConfig& c) { return std::string(c.colorSpace == ColorSpace::Linear ? "linear" : "gamma_hack"); },

@@ -53,6 +53,10 @@ bool PreparedFrame::adapt(const runtime::Scene& scene, const std::string& packag
   const bool wantSrgb = encoding(config) == runtime::ColorEncoding::Srgb;
   std::map<std::string, std::unique_ptr<runtime::LoadedMaterial>> materials;
   for (runtime::DrawItem& draw : frame_.draws) {
+    // The environment drawn as the background (runtime/background.h) is no object of the scene:
+    // its block is the background's own and its program no material's, the same in every
+    // encoding (a scene with an environment shows it unless it says "show": "flat").
+    if (draw.atFarPlane) continue;
     // The object this draw came from: same place and size, and the parameter block SceneFrame made
     // from its values; its block is made again in the configuration's encoding.
     bool matched = false;

@@ -82,7 +82,7 @@ std::shared_ptr<const PrefilteredSky> prefilteredSky(const Environment& e) {
   made->ground = e.ground;
   const EquirectImage source = ibl::renderEquirect(kEnvironmentWidth, kEnvironmentHeight, sky);
   // The analytic sky is projected by quadrature of the function itself, not of its 128 × 64 image.
-  made->radianceSh = ibl::projectRadiance(std::function<Vec3(Vec3)>(sky), 3);
+  made->radianceSh = ibl::projectRadiance(std::function<Vec3(Vec3)>(sky), ibl::kMaxShBands);
   made->mean = ibl::meanRadiance(source);
   ibl::PrefilterOptions options;
   options.levels = int(abi::kEnvironmentLevels);
@@ -146,11 +146,14 @@ std::optional<EnvironmentLighting> buildEnvironmentLighting(const Scene& scene, 
     auto image = decodeEquirectImage(bytes, e.image, error);
     if (!image) return std::nullopt;
     source = fitEnvironment(std::move(*image));
-    radianceSh = ibl::projectRadiance(source, 3);
+    radianceSh = ibl::projectRadiance(source, ibl::kMaxShBands);
   }
+  // SH3's nine, then band 4's (k = 16..24) for the variants that read it; band 3's are zero.
+  constexpr size_t kBand4First = 16;  // l² for l = 4
   std::vector<Vec3> c = ibl::shaderIrradianceCoefficients(radianceSh);
-  for (size_t k = 0; k < out.sh.size() && k < c.size(); ++k) {
-    out.sh[k] = {float(c[k].x * scale), float(c[k].y * scale), float(c[k].z * scale)};
+  for (size_t k = 0; k < out.sh.size(); ++k) {
+    const Vec3& ck = c[k < abi::kShCoefficients ? k : k - abi::kShCoefficients + kBand4First];
+    out.sh[k] = {float(ck.x * scale), float(ck.y * scale), float(ck.z * scale)};
   }
   Vec3 mean = sky ? sky->mean : ibl::meanRadiance(source);
   out.meanRadiance = {float(mean.x * scale), float(mean.y * scale), float(mean.z * scale)};
@@ -187,7 +190,7 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
 }
 
 void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment) {
-  for (size_t k = 0; k < abi::kShCoefficients; ++k)
+  for (size_t k = 0; k < abi::kShFrameCoefficients; ++k)
     for (size_t c = 0; c < 3; ++c) frame.frame.sh[k][c] = lighting.sh[k][c];
   for (size_t c = 0; c < 3; ++c) frame.clearColor[c] = lighting.meanRadiance[c];
   frame.frameTextures.push_back({abi::kEnvironmentBinding, abi::kEnvironmentName, &environment});

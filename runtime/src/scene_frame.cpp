@@ -166,7 +166,7 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   auto lighting = buildEnvironmentLighting(scene, out->exposure_, error);
   if (!lighting) return nullptr;
   out->environment_ = std::move(*lighting);
-  for (size_t k = 0; k < abi::kShCoefficients; ++k)
+  for (size_t k = 0; k < abi::kShFrameCoefficients; ++k)
     for (size_t c = 0; c < 3; ++c) f.sh[k][c] = out->environment_.sh[k][c];
   const auto& mean = out->environment_.meanRadiance;
   store(f.ambient, glm::dvec3(mean[0], mean[1], mean[2]));

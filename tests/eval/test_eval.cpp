@@ -356,6 +356,18 @@ facet::eval::EvalOptions tinyOptions() {
   return o;
 }
 
+// The ground-truth runs of docs/eval.md, "The ground truth": the 25× softbox scene, the tiers as
+// shipped, the truth at 4096 points.
+facet::eval::EvalOptions softboxGroundTruthOptions() {
+  auto o = tinyOptions();
+  o.sceneFile = facet::test::sourceDir() + "/tests/data/scenes/image_lit_grid.json";
+  o.swaps = false;
+  o.timingFrames = 0;
+  o.brdfSweep = false;
+  o.groundTruthSamples = 4096;
+  return o;
+}
+
 }  // namespace
 
 TEST(Eval, TinyGridReportsEveryConfigurationAndAWorseOptionScoresWorse) {
@@ -699,6 +711,53 @@ TEST(Eval, ASceneFileReplacesTheGridAndOtherMaterialsAreLeftOut) {
       << error.message;
 }
 
+// A scene with an environment draws it as the background, a draw that is no object of the scene:
+// the gamma hack's swap (PreparedFrame's adaptation) must leave it as it is rather than stop the
+// run ("a draw of the prepared frame matches no object of the scene", which every swap set on
+// tests/data/scenes/image_lit_grid.json met).
+TEST(Eval, SwapsRunOnASceneThatShowsItsEnvironment) {
+  std::string dir = facet::test::scratchDir("eval-scene-background");
+  std::string scenePath = dir + "/environment.json";
+  std::ofstream(scenePath) << R"({"width": 48, "height": 32, "tier": "high",
+    "environment": {"sky": {"zenith": [0.3, 0.5, 1.0], "horizon": [1.0, 0.9, 0.8], "ground": [0.2, 0.2, 0.2]},
+                    "luminance": 3000},
+    "objects": [{"material": "red_plastic", "position": [0, 0, 0]}]})";
+  auto options = tinyOptions();
+  options.sceneFile = scenePath;
+  options.timingFrames = 0;
+  options.brdfSweep = false;
+  facet::eval::EvalError error;
+  auto report = facet::eval::evaluate(example("red_plastic"), options, &error);
+  ASSERT_TRUE(report) << error.message;
+  const facet::eval::ConfigurationResult* gamma = nullptr;
+  for (const auto& r : report->results)
+    if (r.configuration.name == "high:color_space=gamma_hack") gamma = &r;
+  ASSERT_TRUE(gamma);
+  EXPECT_GT(gamma->error.pixels, 0u);
+  EXPECT_FALSE(gamma->error.identical);  // the hack's encoded lighting differs from linear
+}
+
+// SH band 4 (sh_bands=5, docs/eval.md "The gap, lever by lever"): under the 25× softbox of
+// tests/data/scenes/image_lit_grid.json SH3's truncation is most of red_plastic's gap to the
+// ground truth. `high` is built here with band 4 (its preset otherwise: mediump, which lavapipe
+// runs at fp32) and measured against the truth beside `reference` with SH3.
+TEST(EvalGroundTruth, ShBand4ClosesMostOfTheDielectricsGap) {
+  auto options = softboxGroundTruthOptions();
+  TierConfig band4 = facet::permutations::preset(Tier::High);
+  band4.shBands = 5;
+  options.tunedTiers[Tier::High] = band4;
+  facet::eval::EvalError error;
+  auto report = facet::eval::evaluate(example("red_plastic"), options, &error);
+  ASSERT_TRUE(report) << error.message;
+  ASSERT_EQ(report->results.size(), 2u);
+  ASSERT_TRUE(report->results[0].groundTruthError && report->results[1].groundTruthError);
+  const double sh3 = report->results[0].groundTruthError->relativeRmse;
+  const double sh5 = report->results[1].groundTruthError->relativeRmse;
+  std::printf("red_plastic under the softbox, rel. RMSE vs ground truth: SH3 %.4f, band 4 %.4f\n", sh3, sh5);
+  EXPECT_GT(sh3, 0.015);  // measured 0.0170
+  EXPECT_LT(sh5, 0.013);  // measured 0.0108 (the truth's own error is ~0.002)
+}
+
 // `--shadows` (docs/eval.md, "The shadowed view"): a third view in which the sun casts onto a wall
 // behind the spheres; each tier's receiver is scored against reference's, which renders it with a
 // 4096² atlas.
@@ -781,12 +840,7 @@ TEST(EvalGroundTruth, AgreesWithTheSplitSumInAConstantEnvironment) {
 // see its error, well above its own (the same at a quarter of the samples), and the report must
 // show it beside the error against reference.
 TEST(EvalGroundTruth, SeesTheSplitSumErrorUnderAnImageEnvironment) {
-  auto options = tinyOptions();
-  options.sceneFile = facet::test::sourceDir() + "/tests/data/scenes/image_lit_grid.json";
-  options.swaps = false;
-  options.timingFrames = 0;
-  options.brdfSweep = false;
-  options.groundTruthSamples = 4096;
+  auto options = softboxGroundTruthOptions();
   facet::eval::EvalError error;
   auto report = facet::eval::evaluate(example("brushed_gold"), options, &error);
   ASSERT_TRUE(report) << error.message;

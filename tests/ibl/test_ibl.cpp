@@ -148,12 +148,13 @@ TEST(Dfg, MultiScatterCompensationRestoresTheWhiteFurnace) {
 // --- spherical harmonics ---
 
 TEST(Sh, BasisIsOrthonormal) {
+  // Order 8 is exact for polynomials of degree ≤ 13: products of two band-4 terms are degree 8.
   std::vector<SphereSample> quadrature = sphereQuadrature(8);
-  for (int i = 0; i < 9; ++i) {
-    for (int j = 0; j < 9; ++j) {
+  for (int i = 0; i < kMaxShCoefficients; ++i) {
+    for (int j = 0; j < kMaxShCoefficients; ++j) {
       double sum = 0;
       for (const SphereSample& s : quadrature) {
-        std::vector<double> y = shBasis(3, s.direction);
+        std::vector<double> y = shBasis(kMaxShBands, s.direction);
         sum += y[size_t(i)] * y[size_t(j)] * s.weight;
       }
       EXPECT_NEAR(sum, i == j ? 1.0 : 0.0, 1e-12) << i << ", " << j;
@@ -163,7 +164,7 @@ TEST(Sh, BasisIsOrthonormal) {
 
 TEST(Sh, ConstantEnvironmentGivesPiTimesRadianceForEveryNormal) {
   Vec3 L{0.25, 1.0, 3.0};
-  for (int bands : {2, 3}) {
+  for (int bands : {2, 3, 5}) {
     SphericalHarmonics radiance = projectRadiance([&](Vec3) { return L; }, bands);
     SphericalHarmonics irradiance = radianceToIrradiance(radiance);
     std::vector<Vec3> shader = shaderIrradianceCoefficients(radiance);
@@ -179,7 +180,7 @@ TEST(Sh, LinearEnvironmentIsReproducedExactlyBySh2) {
   // L(d) = a + b (d·z): E(n) = π a + (2π/3) b (n·z), since ∫ (d·z) max(0, n·d) dω = (2π/3) n·z.
   Vec3 a{1.0, 2.0, 3.0}, b{0.5, -1.0, 2.0};
   auto radiance = [&](Vec3 d) { return a + b * d.z; };
-  for (int bands : {2, 3}) {
+  for (int bands : {2, 3, 5}) {
     SphericalHarmonics irradiance = radianceToIrradiance(projectRadiance(radiance, bands));
     std::vector<Vec3> shader = shaderIrradianceCoefficients(projectRadiance(radiance, bands));
     for (int i = 0; i < 50; ++i) {
@@ -216,17 +217,46 @@ TEST(Sh, BrightCapSh3IrradianceIsWithinSixPercentOfPeakAndBeatsSh2) {
   EXPECT_LT(sum3, sum2);
 }
 
+// Band 4 (l = 0..4; band 3 vanishes under the clamped cosine) against the same brute force: the
+// next term of the series must shrink SH3's truncation error on the same cap. Its Â_4 = −π/24
+// (Ramamoorthi & Hanrahan 2001): with +π/24 or band 3 left in, the error grows instead.
+TEST(Sh, BrightCapBand4IrradianceBeatsSh3) {
+  auto radiance = [](Vec3 d) { return toVec3(ref::capSkyRadiance(toGlm(d))); };
+  SphericalHarmonics sh3 = radianceToIrradiance(projectRadiance(radiance, 3, 128));
+  SphericalHarmonics sh5 = radianceToIrradiance(projectRadiance(radiance, 5, 128));
+  for (size_t k = 9; k < 16; ++k) EXPECT_EQ(sh5.coefficients[k].x, 0.0) << k;
+  double peak = 0, worst3 = 0, worst5 = 0, sum3 = 0, sum5 = 0;
+  const int count = 200;
+  for (int i = 0; i < count; ++i) {
+    glm::dvec3 n = ref::fibonacciSphere(i, count);
+    double truth = ref::irradianceByGrid(ref::capSkyRadiance, n, 256).x;
+    double e3 = std::abs(evaluateSh(sh3, toVec3(n)).x - truth);
+    double e5 = std::abs(evaluateSh(sh5, toVec3(n)).x - truth);
+    peak = std::max(peak, truth);
+    worst3 = std::max(worst3, e3);
+    worst5 = std::max(worst5, e5);
+    sum3 += e3;
+    sum5 += e5;
+  }
+  std::printf("cap sky irradiance error / peak: SH3 max %.4f mean %.4f, band 4 max %.4f mean %.4f\n", worst3 / peak,
+              sum3 / count / peak, worst5 / peak, sum5 / count / peak);
+  EXPECT_LT(worst5, 0.6 * worst3);
+  EXPECT_LT(sum5, 0.6 * sum3);
+}
+
 TEST(Sh, ShaderCoefficientsEvaluateIrradianceOverPi) {
   auto radiance = [](Vec3 d) { return toVec3(ref::capSkyRadiance(toGlm(d))); };
-  SphericalHarmonics sh = projectRadiance(radiance, 3, 32);
-  SphericalHarmonics irradiance = radianceToIrradiance(sh);
-  std::vector<Vec3> shader = shaderIrradianceCoefficients(sh);
-  ASSERT_EQ(shader.size(), 9u);
-  for (int i = 0; i < 50; ++i) {
-    Vec3 n = toVec3(ref::fibonacciSphere(i, 50));
-    Vec3 e = evaluateSh(irradiance, n);
-    Vec3 clamped{std::max(e.x, 0.0), std::max(e.y, 0.0), std::max(e.z, 0.0)};
-    expectNearVec3(evaluateShaderIrradiance(shader, n) * kPi, clamped, 1e-12 * maxComponent(e));
+  for (int bands : {3, 5}) {
+    SphericalHarmonics sh = projectRadiance(radiance, bands, 32);
+    SphericalHarmonics irradiance = radianceToIrradiance(sh);
+    std::vector<Vec3> shader = shaderIrradianceCoefficients(sh);
+    ASSERT_EQ(shader.size(), size_t(bands * bands));
+    for (int i = 0; i < 50; ++i) {
+      Vec3 n = toVec3(ref::fibonacciSphere(i, 50));
+      Vec3 e = evaluateSh(irradiance, n);
+      Vec3 clamped{std::max(e.x, 0.0), std::max(e.y, 0.0), std::max(e.z, 0.0)};
+      expectNearVec3(evaluateShaderIrradiance(shader, n) * kPi, clamped, 1e-12 * maxComponent(e));
+    }
   }
 }
 
@@ -238,8 +268,8 @@ TEST(Sh, EquirectProjectionMatchesTheCallbackProjection) {
   for (size_t k = 0; k < 9; ++k) expectNearVec3(fromImage.coefficients[k], exact.coefficients[k], 1e-3);
 }
 
-TEST(Sh, RejectsBandCountsOutsideOneToThree) {
-  EXPECT_THROW(shBasis(4, {0, 0, 1}), std::invalid_argument);
+TEST(Sh, RejectsBandCountsOutsideOneToFive) {
+  EXPECT_THROW(shBasis(6, {0, 0, 1}), std::invalid_argument);
   EXPECT_THROW(projectRadiance([](Vec3) { return Vec3{}; }, 0), std::invalid_argument);
 }
 

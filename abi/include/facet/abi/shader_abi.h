@@ -112,6 +112,12 @@ inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F
 // (chunks/ibl_prefiltered.glsl).
 inline constexpr uint32_t kEnvironmentLevels = 5;
 inline constexpr uint32_t kShCoefficients = 9;  // SH3; SH2 variants read the first 4
+// With band 4 (TierConfig::shBands 5, an option no preset selects) the frame block's sh array
+// holds 9 more: band 4's, after SH3's (band 3's are zero under the clamped cosine, not stored).
+// Every other variant declares the block with the first kShCoefficients only, a prefix of the
+// same buffer, so its shaders and their uniform count are those of SH3.
+inline constexpr uint32_t kShBand4Coefficients = 9;
+inline constexpr uint32_t kShFrameCoefficients = kShCoefficients + kShBand4Coefficients;
 inline constexpr uint32_t kMaterialTextureBase = 8;
 inline constexpr uint32_t kMaxMaterialTextures = 8;
 // A material texture's sampler uniform is this prefix + the parameter's name. The `facet_`
@@ -178,9 +184,12 @@ struct FrameUniforms {
   // SH irradiance of the environment, pre-folded for the shader (facet::ibl::shaderIrradianceCoefficients:
   // irradiance / π = Σ sh[k] · p_k(n), docs/ibl.md) and pre-exposed; rgb used, w 0. Index
   // k = l(l + 1) + m; SH2 variants read 0..3 (the first four of an SH3 projection are the SH2 one).
-  float sh[kShCoefficients][4];
+  // Entries 9..17 are band 4's k = 16..24, read (and declared) by band-4 variants only.
+  float sh[kShFrameCoefficients][4];
 };
-static_assert(sizeof(FrameUniforms) == 528, "std140 layout of FrameUniforms");
+static_assert(sizeof(FrameUniforms) == 672, "std140 layout of FrameUniforms");
+// What a variant without band 4 declares: the block up to SH3's last coefficient.
+inline constexpr uint32_t kFrameBlockSh3Size = uint32_t(sizeof(FrameUniforms)) - 16 * kShBand4Coefficients;
 
 // The sun's shadow, read by receiver variants (VariantKey shadowCascades > 0; docs/shadows.md), and
 // a casting spot light's (spotShadows > 0).
@@ -325,6 +334,9 @@ inline constexpr MemberDesc kObjectMembers[] = {
     {"highp vec4", "uv1ScaleOffset"},
 };
 
+// std140Size is what the runtime binds, the whole of FrameUniforms; a variant without band 4
+// declares sh with kShCoefficients entries (kFrameBlockSh3Size bytes), a band-4 one with
+// kShFrameCoefficients.
 inline constexpr BlockDesc kFrameBlock{"FrameUniforms", "frame",       kBlockSet,
                                        kFrameBinding,   kFrameMembers, uint32_t(sizeof(FrameUniforms))};
 inline constexpr BlockDesc kObjectBlock{"ObjectUniforms", "object",       kBlockSet,

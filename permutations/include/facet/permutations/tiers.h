@@ -120,7 +120,7 @@ struct TierConfig {
   ColorSpace colorSpace = ColorSpace::Linear;
   PrecisionPolicy precision = PrecisionPolicy::Mediump;
   AmbientModel ambient = AmbientModel::SplitSum;
-  int shBands = 3;                  // SH irradiance bands: 3 (9 coefficients) or 2 (4)
+  int shBands = 3;  // SH irradiance bands: 3 (9 coefficients), 2 (4) or 5 (l = 0..4: 18, band 3 being 0)
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
   AnisotropyModel anisotropy = AnisotropyModel::GgxSmith;

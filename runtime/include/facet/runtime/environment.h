@@ -26,8 +26,9 @@ inline constexpr int kEnvironmentMapSize = 64;
 
 // Everything pre-exposed (× the camera exposure), like the lights (docs/lighting-units.md).
 struct EnvironmentLighting {
-  // shaderIrradianceCoefficients of the SH3 projection: irradiance / π = Σ sh[k] p_k(n).
-  std::array<std::array<float, 3>, 9> sh{};
+  // shaderIrradianceCoefficients of the SH projection to band 4: irradiance / π = Σ sh[k] p_k(n),
+  // SH3's nine then band 4's (abi::FrameUniforms::sh's order).
+  std::array<std::array<float, 3>, abi::kShFrameCoefficients> sh{};
   std::array<float, 3> meanRadiance{};
   uint32_t width = 0;  // level 0's faces, square: level m's are width >> m × height >> m
   uint32_t height = 0;
