@@ -35,6 +35,11 @@
 #if defined(FACET_IBL_TWO_MIP)
 #include "ibl_two_mip.glsl"
 #endif
+// GGX's fp16-safe denominator, for the coat's lobe and anisotropy's: where the tier's own lobe has
+// none (lut), its first #include must not sit inside the coat's #if, or anisotropy alone lacks it.
+#if defined(FACET_CLEAR_COAT_GGX_KELEMEN) || defined(FACET_ANISOTROPY_LOBE)
+#include "ggx_denominator.glsl"
+#endif
 // The clear coat's forms (docs/material-models.md); a tier that drops it includes neither.
 #if defined(FACET_CLEAR_COAT_LOBE) || defined(FACET_CLEAR_COAT_AMBIENT)
 #include "clear_coat_ambient.glsl"

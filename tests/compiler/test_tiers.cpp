@@ -876,3 +876,26 @@ TEST(Tiers, SheenWithAmbientOcclusionCompilesAndOccludesTheSheen) {
     EXPECT_NE(text.find("apply_specular_occlusion(material,specular", layer), std::string::npos);
   }
 }
+
+// Every form of the clear coat and of anisotropy builds in every tier, alone and together: each
+// form's chunks bring what they need whichever lobe the tier's specular is (low's `lut` has no GGX
+// denominator of its own, which the coat's and anisotropy's lobes share).
+TEST(Tiers, EveryCoatAndAnisotropyFormBuildsInEveryTier) {
+  const std::string surface =
+      " param rough: float = 0.4 in [0, 1]\n param k: float = 0.8 in [-1, 1]\n param coat: float = 1 in [0, 1]\n";
+  for (const char* coat : {"ggx_kelemen", "ambient", "none"}) {
+    for (const char* anisotropy : {"ggx_smith", "bent_ibl", "none"}) {
+      SCOPED_TRACE(std::string(coat) + ", " + anisotropy);
+      std::string tiers;
+      for (const char* tier : {"high", "mid", "low"})
+        tiers += std::string(" tier ") + tier + " { clear_coat = " + coat + "\n anisotropy = " + anisotropy + " }\n";
+      auto built = facet::test::buildText("material m {" + tiers + surface +
+                                          " surface { roughness = params.rough\n anisotropy = params.k\n "
+                                          "clearCoat = params.coat } }");
+      ASSERT_TRUE(built);
+      const bool lobe = std::string(anisotropy) == "ggx_smith";
+      for (const char* key : {"high.dir1", "mid.dir1", "low.dir1"})
+        EXPECT_EQ(esText(*built, key, Stage::Fragment).find("anisotropic_ggx_smith") != std::string::npos, lobe) << key;
+    }
+  }
+}
