@@ -75,8 +75,9 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   const bool depthPrograms =
       args.spotShadows || std::any_of(args.shadows.begin(), args.shadows.end(), [](int c) { return c > 0; });
   if (args.vertexSlopeBias && args.scene.empty() && !depthPrograms) {
-    cli::printError("--vertex-slope-bias: no depth-only program is built without --shadows (a non-zero count), "
-                    "--spot-shadows or a --scene");
+    cli::printError(
+        "--vertex-slope-bias: no depth-only program is built without --shadows (a non-zero count), "
+        "--spot-shadows or a --scene");
     return 2;
   }
   if (args.scene.empty()) return 0;

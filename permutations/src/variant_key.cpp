@@ -115,8 +115,7 @@ VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directional
 
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
                                   const SceneNeeds* scene, const std::vector<int>& pointLightCounts,
-                                  const std::vector<int>& shadowCascadeCounts, bool spotShadows,
-                                  bool vertexSlopeBias) {
+                                  const std::vector<int>& shadowCascadeCounts, bool spotShadows, bool vertexSlopeBias) {
   std::vector<VariantKey> keys;
   // A scene names its own counts; without one, the caller's lists apply.
   std::vector<int> counts =

@@ -64,8 +64,7 @@ ShadowPassDesc shadowPassDesc(const Scene& scene, const std::vector<CasterBounds
     store(d.viewProjection, spot.viewProjection);
     std::copy(spot.viewport.begin(), spot.viewport.end(), d.viewport);
     d.depthBias = float(spotDepthBias(spot, scene.shadows.depthBias));
-    setSlopeBias(scene.shadows, spotVertexSlopeBias(spot, scene.shadows.slopeBias), glm::dvec4(spot.position, 1.0),
-                 &d);
+    setSlopeBias(scene.shadows, spotVertexSlopeBias(spot, scene.shadows.slopeBias), glm::dvec4(spot.position, 1.0), &d);
     for (size_t i = 0; i < bounds.size(); ++i)
       if (casterInSpotCone(spot, bounds[i])) d.casters.push_back(uint32_t(i));
     pass.cascades.push_back(std::move(d));

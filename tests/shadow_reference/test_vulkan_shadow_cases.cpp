@@ -267,9 +267,10 @@ TEST_P(ShadowCases, TheVertexStageSlopeBiasMeetsTheSameBoundsAtTheDefaults) {
     const uint64_t acne = grazingAcne(tier, &defaults, &scored, GetParam());
     const ContactFigures contact = contactGap(tier, &defaults, GetParam());
     const PoleFigures pole = thinPole(tier, &defaults, GetParam());
-    std::printf("%s vertex slope bias %-9s acne %llu of %llu, contact gap %.2f texels, pole %zu uncovered, %zu pieces\n",
-                shadow_frames::apiName(GetParam()), tier, static_cast<unsigned long long>(acne),
-                static_cast<unsigned long long>(scored), contact.gap, pole.uncovered, pole.pieces);
+    std::printf(
+        "%s vertex slope bias %-9s acne %llu of %llu, contact gap %.2f texels, pole %zu uncovered, %zu pieces\n",
+        shadow_frames::apiName(GetParam()), tier, static_cast<unsigned long long>(acne),
+        static_cast<unsigned long long>(scored), contact.gap, pole.uncovered, pole.pieces);
     ASSERT_GT(scored, 20000u) << tier;
     EXPECT_EQ(acne, 0u) << tier;
     EXPECT_LT(contact.nearest, 1.0) << tier;
@@ -307,7 +308,7 @@ TEST(VulkanShadowCases, DISABLED_BiasSweep) {
   const Api api = apiName && std::string(apiName) == "gl" ? Api::Gl : Api::Vulkan;
   const Bias settings[] = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 1}, {0.5, 1, 0.5}, {1, 1, 0.5}, {1, 2, 0},
                            {0, 2, 1}, {1, 0, 1}, {1, 1, 1}, {1, 2, 1}, {2, 2, 1},     {1, 4, 1},   {1, 2, 2},
-                           {2, 4, 2}, {4, 4, 2}, {4, 8, 4}, {8, 8, 4}, {16, 16, 8},  {0, 8, 0},   {0, 4, 0}};
+                           {2, 4, 2}, {4, 4, 2}, {4, 8, 4}, {8, 8, 4}, {16, 16, 8},   {0, 8, 0},   {0, 4, 0}};
   std::printf(
       "| depth, slope, normal | tier | stage | grazing_sun acne | contact leaks, widest gap (texels) | "
       "cascade_boundary wrong, worst band | thin_pole uncovered, pieces |\n|---|---|---|---:|---:|---:|---:|\n");
