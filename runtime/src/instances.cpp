@@ -52,9 +52,9 @@ std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize)
 
 void setVertexSlopeBias(const ShadowCascadeDesc& view, float clipDepthSpan, abi::FrameUniforms* frame) {
   if (view.vertexSlopeBias == 0.0f) return;
-  std::copy(view.light, view.light + 3, frame->lightDirection);
+  std::copy(view.lightAxis, view.lightAxis + 3, frame->lightDirection);
   frame->lightDirection[3] = view.vertexSlopeBias * clipDepthSpan;
-  frame->lightColor[3] = view.light[3];
+  std::copy(view.lightPosition, view.lightPosition + 4, frame->lightColor);
 }
 
 FrameDraws::FrameDraws(const FrameDesc& frame) : frame_(&frame), shadowCount_(shadowDrawCount(frame)) {}

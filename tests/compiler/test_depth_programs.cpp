@@ -272,7 +272,7 @@ TEST(DepthPrograms, TheVertexSlopeBiasProgramIsBuiltOnlyWhenAskedAndReadsTheNorm
     const pkg::Package& p = built->package;
     const std::string vertex = glsl(p, "mid.depth.slope", pkg::Stage::Vertex);
     for (const char* line : {"in highp vec3 a_normal;", "gl_Position=frame.viewProjection*worldPosition;",
-                             "gl_Position.z+=frame.lightDirection.w*tanTheta;"})
+                             "gl_Position.z+=frame.lightDirection.w*slope;"})
       EXPECT_NE(vertex.find(line), std::string::npos) << line << " in\n" << vertex;
     EXPECT_EQ(glsl(p, "mid.depth", pkg::Stage::Vertex).find("a_normal"), std::string::npos);
     // The fragment stage is the plain program's: the same alpha test (or none).

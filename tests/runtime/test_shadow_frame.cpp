@@ -312,8 +312,8 @@ TEST(ShadowFrame, TheVertexSlopeStageDrawsTheCastersWithItsProgramAndConstants) 
     const SunCascade& c = fit.cascades[k];
     EXPECT_EQ(d.slopeBias, 0.0f) << k;
     EXPECT_NEAR(d.vertexSlopeBias, 2.5 * c.texelSize / c.depthRange, 1e-6 * d.vertexSlopeBias) << k;
-    for (int i = 0; i < 3; ++i) EXPECT_FLOAT_EQ(d.light[i], float(toSun[i])) << k;
-    EXPECT_EQ(d.light[3], 0.0f);
+    for (int i = 0; i < 3; ++i) EXPECT_FLOAT_EQ(d.lightAxis[i], float(toSun[i])) << k;
+    EXPECT_EQ(std::vector<float>(d.lightPosition, d.lightPosition + 4), std::vector<float>(4, 0.0f)) << k;
   }
   const ShadowCascadeDesc& view = shadow.cascades[3];
   const SpotShadow fitted =
@@ -321,8 +321,9 @@ TEST(ShadowFrame, TheVertexSlopeStageDrawsTheCastersWithItsProgramAndConstants) 
   const double n = fitted.nearPlane, f = fitted.farPlane;
   EXPECT_EQ(view.slopeBias, 0.0f);
   EXPECT_FLOAT_EQ(view.vertexSlopeBias, float(2.5 * fitted.texelPerMetre * f * n / (f - n)));
-  EXPECT_EQ(std::vector<float>(view.light, view.light + 4), (std::vector<float>{-1, 4, 0.5, 1}));
-  // The constant is the window depth of slopeBias texels along the ray at distance z, times z.
+  EXPECT_EQ(std::vector<float>(view.lightPosition, view.lightPosition + 4), (std::vector<float>{-1, 4, 0.5, 1}));
+  EXPECT_EQ(std::vector<float>(view.lightAxis, view.lightAxis + 3), (std::vector<float>{0, 1, 0}));  // up to it
+  // The constant is the window depth of slopeBias texels along the axis at distance z, times z.
   const double z = 3.0;
   EXPECT_NEAR(view.vertexSlopeBias / z, spotDepthBias(fitted, 2.5) * (n + f) / 2 / z, 1e-6 * view.vertexSlopeBias);
 
@@ -330,8 +331,8 @@ TEST(ShadowFrame, TheVertexSlopeStageDrawsTheCastersWithItsProgramAndConstants) 
   abi::FrameUniforms block = frame->frame().frame;
   setVertexSlopeBias(view, 2.0f, &block);
   EXPECT_FLOAT_EQ(block.lightDirection[3], 2 * view.vertexSlopeBias);
-  EXPECT_EQ(block.lightDirection[1], 4.0f);
-  EXPECT_EQ(block.lightColor[3], 1.0f);
+  EXPECT_EQ(block.lightDirection[1], 1.0f);
+  EXPECT_EQ(std::vector<float>(block.lightColor, block.lightColor + 4), (std::vector<float>{-1, 4, 0.5, 1}));
   abi::FrameUniforms raster = frame->frame().frame;
   setVertexSlopeBias(ShadowCascadeDesc{}, 2.0f, &raster);
   EXPECT_EQ(std::memcmp(&raster, &frame->frame().frame, sizeof raster), 0);
