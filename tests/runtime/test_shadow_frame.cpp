@@ -54,6 +54,16 @@ std::string packages(const std::string& name = "shadow-frame", const std::vector
                                       options);
 }
 
+// A casting spot light 4 m above the scene, pointing straight down.
+PunctualLight castingSpotAbove() {
+  PunctualLight spot;
+  spot.spot = true;
+  spot.castShadows = true;
+  spot.position = {-1, 4, 0.5};
+  spot.direction = {0, -1, 0};
+  return spot;
+}
+
 std::unique_ptr<SceneFrame> prepared(const Scene& scene, const std::string& dir) {
   std::string error;
   auto frame = SceneFrame::prepare(scene, dir, &error);
@@ -255,12 +265,7 @@ TEST(ShadowFrame, ASpotLightCastsWithoutTheSun) {
   auto scene = parseScene("s.json", kScene, &error);
   ASSERT_TRUE(scene) << error;
   scene->sun.reset();
-  PunctualLight spot;
-  spot.spot = true;
-  spot.castShadows = true;
-  spot.position = {-1, 4, 0.5};
-  spot.direction = {0, -1, 0};
-  scene->lights = {spot};
+  scene->lights = {castingSpotAbove()};
   const std::string dir = packages("shadow-frame-spot-alone", {0}, {1}, true);
   auto frame = prepared(*scene, dir);
   ASSERT_TRUE(frame);
@@ -289,12 +294,7 @@ TEST(ShadowFrame, TheVertexSlopeStageDrawsTheCastersWithItsProgramAndConstants) 
   EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
   EXPECT_NE(error.find("high.depth.slope"), std::string::npos) << error;
 
-  PunctualLight spot;
-  spot.spot = true;
-  spot.castShadows = true;
-  spot.position = {-1, 4, 0.5};
-  spot.direction = {0, -1, 0};
-  scene->lights = {spot};
+  scene->lights = {castingSpotAbove()};
   const std::string dir = packages("shadow-frame-vertex-slope", {0, 4}, {1}, true, true);
   auto frame = prepared(*scene, dir);
   ASSERT_TRUE(frame);
