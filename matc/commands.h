@@ -21,6 +21,7 @@ struct CompileArgs {
   std::vector<int> pointLights{0};  // point-light permutations to build without a scene
   std::vector<int> shadows{0};      // sun shadow-cascade permutations to build without a scene
   bool spotShadows = false;         // also each point-light variant as a spot-shadow receiver (.sp1)
+  bool vertexSlopeBias = false;     // also each depth-only program with the vertex-stage slope bias
   unsigned jobs = 0;                // variants compiled at once; 0: one per hardware thread
   std::string cacheDir;             // --cache; "" for the default (defaultCacheDir())
   bool noCache = false;             // --no-cache

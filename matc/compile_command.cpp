@@ -71,6 +71,15 @@ int buildOptions(const CompileArgs& args, const ir::Material& material, compiler
   options->pointLightCounts = args.pointLights;
   options->shadowCascadeCounts = args.shadows;
   options->spotShadows = args.spotShadows;
+  options->vertexSlopeBias = args.vertexSlopeBias;
+  const bool depthPrograms =
+      args.spotShadows || std::any_of(args.shadows.begin(), args.shadows.end(), [](int c) { return c > 0; });
+  if (args.vertexSlopeBias && args.scene.empty() && !depthPrograms) {
+    cli::printError(
+        "--vertex-slope-bias: no depth-only program is built without --shadows (a non-zero count), "
+        "--spot-shadows or a --scene");
+    return 2;
+  }
   if (args.scene.empty()) return 0;
   std::string error;
   auto scene = loadSceneManifest(args.scene, &error);
@@ -167,7 +176,7 @@ int compileCommand(const CompileArgs& args) {
     const permutations::MaterialNeeds needs = compiler::materialNeeds(*material);
     forScene = " for scene " + args.scene + " (" +
                std::to_string(permutations::enumerate(needs, options.tiers, nullptr, args.pointLights, args.shadows,
-                                                      args.spotShadows)
+                                                      args.spotShadows, args.vertexSlopeBias)
                                   .size()) +
                " without it)";
   }

@@ -155,9 +155,11 @@ void printSummary(const package::ReadResult& r) {
   if (std::vector<std::string> depth = depthPrograms(pkg); !depth.empty()) {
     std::string keys;
     for (const std::string& k : depth) keys += (keys.empty() ? "" : ", ") + k;
+    std::string reads = pkg.material.blending == "masked" ? "position and the alpha test" : "position only";
+    if (keys.find(".depth.slope") != std::string::npos)
+      reads += "; .depth.slope also the normal, for the vertex-stage slope bias";
     std::printf("depth      %zu depth-only program%s for the shadow pass (%s): %s\n", depth.size(),
-                depth.size() == 1 ? "" : "s",
-                pkg.material.blending == "masked" ? "position and the alpha test" : "position only", keys.c_str());
+                depth.size() == 1 ? "" : "s", reads.c_str(), keys.c_str());
   }
   if (!pkg.textures.empty()) std::printf("textures   %zu\n", pkg.textures.size());
   for (size_t i = 0; i < pkg.textures.size(); ++i) {

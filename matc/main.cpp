@@ -81,6 +81,9 @@ int main(int argc, char** argv) {
   compileCmd->add_flag("--spot-shadows", compile.spotShadows,
                        "also build each variant with point lights as a receiver of light slot 0's spot shadow "
                        "(.sp1) and the depth-only programs (default: none; a --scene decides its own)");
+  compileCmd->add_flag("--vertex-slope-bias", compile.vertexSlopeBias,
+                       "also build each depth-only program with the slope bias in its vertex stage (.depth.slope, "
+                       "for a scene's \"slopeStage\": \"vertex\"; default: none; a --scene decides its own)");
   compileCmd->add_flag("--fp16-emulation", compile.fp16Emulation,
                        "testing only: round every mediump result to binary16 in the SPIR-V of mediump tiers "
                        "(docs/fp16-emulation.md); never ship such a package");

@@ -33,7 +33,8 @@ std::optional<std::vector<permutations::VariantKey>> sceneKeysFor(const runtime:
     const int cascades = o.receiveShadows ? int(runtime::sunShadowCascades(scene)) : 0;
     keys.push_back(permutations::requestKey(needs, *tier, scene.sun.has_value(), int(scene.lights.size()), cascades,
                                             o.receiveShadows && spotCasts));
-    if (o.castShadows && needs.castsShadows && anythingCasts) keys.push_back(permutations::depthKey(*tier));
+    if (o.castShadows && needs.castsShadows && anythingCasts)
+      keys.push_back(permutations::depthKey(*tier, scene.shadows.slopeStage == runtime::SlopeBiasStage::Vertex));
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

@@ -502,8 +502,9 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
 
   const permutations::MaterialNeeds needs = materialNeeds(material);
   const permutations::SceneNeeds* scene = options.scene ? &*options.scene : nullptr;
-  const std::vector<permutations::VariantKey> keys = permutations::enumerate(
-      needs, options.tiers, scene, options.pointLightCounts, options.shadowCascadeCounts, options.spotShadows);
+  const std::vector<permutations::VariantKey> keys =
+      permutations::enumerate(needs, options.tiers, scene, options.pointLightCounts, options.shadowCascadeCounts,
+                              options.spotShadows, options.vertexSlopeBias);
 
   if (!options.cacheDir.empty() && !prepareVariantCache(options.cacheDir, &failure->message)) return std::nullopt;
   // Jobs finish in any order; each writes only its own variant's fields, read here in key order.

@@ -36,6 +36,7 @@ std::optional<int> shadowCascadePermutation(int cascades) {
 std::strong_ordering VariantKey::operator<=>(const VariantKey& o) const {
   if (auto c = tier <=> o.tier; c != 0) return c;
   if (auto c = depthOnly <=> o.depthOnly; c != 0) return c;
+  if (auto c = vertexSlopeBias <=> o.vertexSlopeBias; c != 0) return c;
   if (auto c = directionalLight <=> o.directionalLight; c != 0) return c;
   if (auto c = pointLights <=> o.pointLights; c != 0) return c;
   if (auto c = shadowCascades <=> o.shadowCascades; c != 0) return c;
@@ -43,7 +44,7 @@ std::strong_ordering VariantKey::operator<=>(const VariantKey& o) const {
 }
 
 std::string VariantKey::toString() const {
-  if (depthOnly) return std::string(permutations::toString(tier)) + ".depth";
+  if (depthOnly) return std::string(permutations::toString(tier)) + (vertexSlopeBias ? ".depth.slope" : ".depth");
   std::string s = std::string(permutations::toString(tier)) + (directionalLight ? ".dir1" : ".dir0");
   if (shadowCascades > 0) s += ".sh" + std::to_string(shadowCascades);
   if (pointLights > 0) s += ".pt" + std::to_string(pointLights);
@@ -61,7 +62,11 @@ std::optional<VariantKey> VariantKey::parse(std::string_view text) {
   }
   if (fields.size() < 2 || fields.size() > 5) return std::nullopt;
   auto tier = tierFromString(fields[0]);
-  if (tier && fields.size() == 2 && fields[1] == "depth") return depthKey(*tier);
+  if (tier && fields[1] == "depth") {
+    if (fields.size() == 2) return depthKey(*tier);
+    if (fields.size() == 3 && fields[2] == "slope") return depthKey(*tier, true);
+    return std::nullopt;
+  }
   if (!tier || (fields[1] != "dir0" && fields[1] != "dir1")) return std::nullopt;
   VariantKey key{*tier, fields[1] == "dir1", 0, 0};
   // The optional fields in their one order: "sh" (after dir1 only), then "pt", then "sp" (after
@@ -92,9 +97,10 @@ const std::vector<Tier>& supportedTiers() {
 
 bool blendingCastsShadows(std::string_view blending) { return blending == "opaque" || blending == "masked"; }
 
-VariantKey depthKey(Tier tier) {
+VariantKey depthKey(Tier tier, bool vertexSlopeBias) {
   VariantKey key{tier, false, 0, 0};
   key.depthOnly = true;
+  key.vertexSlopeBias = vertexSlopeBias;
   return key;
 }
 
@@ -109,7 +115,7 @@ VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directional
 
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
                                   const SceneNeeds* scene, const std::vector<int>& pointLightCounts,
-                                  const std::vector<int>& shadowCascadeCounts, bool spotShadows) {
+                                  const std::vector<int>& shadowCascadeCounts, bool spotShadows, bool vertexSlopeBias) {
   std::vector<VariantKey> keys;
   // A scene names its own counts; without one, the caller's lists apply.
   std::vector<int> counts =
@@ -131,9 +137,12 @@ std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vect
     }
     // The shadow pass draws casters with it: built with the receivers, or when the scene asks.
     const bool shadows = spotShadows || std::any_of(cascades.begin(), cascades.end(), [](int c) { return c > 0; });
-    const VariantKey depth = depthKey(t);
-    const bool asked = scene ? std::find(scene->keys.begin(), scene->keys.end(), depth) != scene->keys.end() : shadows;
-    if (asked && material.castsShadows) keys.push_back(depth);
+    for (bool slope : {false, true}) {
+      const VariantKey depth = depthKey(t, slope);
+      const bool asked = scene ? std::find(scene->keys.begin(), scene->keys.end(), depth) != scene->keys.end()
+                               : shadows && (!slope || vertexSlopeBias);
+      if (asked && material.castsShadows) keys.push_back(depth);
+    }
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

@@ -668,6 +668,7 @@ bool GlBackend::drawShadowView(const FrameDesc& frame, const ShadowCascadeDesc& 
   abi::FrameUniforms viewUniforms = frame.frame;
   std::copy(std::begin(view.viewProjection), std::end(view.viewProjection), std::begin(viewUniforms.viewProjection));
   viewUniforms.cameraPosition[3] = 0.0f;
+  setVertexSlopeBias(view, 2.0f, &viewUniforms);  // GL's clip depth spans [-1, 1]
   glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.id());
   glBufferData(GL_UNIFORM_BUFFER, sizeof(abi::FrameUniforms), &viewUniforms, GL_DYNAMIC_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, abi::kFrameBinding, frameUniforms_.id());

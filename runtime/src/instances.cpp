@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +48,13 @@ std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize)
     }
   }
   return "";
+}
+
+void setVertexSlopeBias(const ShadowCascadeDesc& view, float clipDepthSpan, abi::FrameUniforms* frame) {
+  if (view.vertexSlopeBias == 0.0f) return;
+  std::copy(view.lightAxis, view.lightAxis + 3, frame->lightDirection);
+  frame->lightDirection[3] = view.vertexSlopeBias * clipDepthSpan;
+  std::copy(view.lightPosition, view.lightPosition + 4, frame->lightColor);
 }
 
 FrameDraws::FrameDraws(const FrameDesc& frame) : frame_(&frame), shadowCount_(shadowDrawCount(frame)) {}

@@ -222,7 +222,9 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
       if (!material) return nullptr;
       const package::MaterialInfo& info = material->loaded().info();
       if (shadowPass && permutations::blendingCastsShadows(info.blending) && !out->depthPrograms_.count(o.material)) {
-        auto depth = material->loaded().program(permutations::depthKey(*tier).toString(), error);
+        // The scene's slope stage picks the program: `.depth.slope` adds the bias in its vertex stage.
+        const bool vertexSlope = scene.shadows.slopeStage == SlopeBiasStage::Vertex;
+        auto depth = material->loaded().program(permutations::depthKey(*tier, vertexSlope).toString(), error);
         if (!depth) return nullptr;
         out->depthPrograms_[o.material] = std::make_unique<ShaderProgram>(std::move(*depth));
       }

@@ -16,6 +16,19 @@ void store(float* dst, const glm::dmat4& m) {
   std::memcpy(dst, glm::value_ptr(f), sizeof(float) * 16);
 }
 
+// The slope bias where the scene puts it: the rasteriser's factor, or the vertex stage's constant,
+// axis and light (ShadowCascadeDesc::vertexSlopeBias) with the rasteriser's factor 0.
+void setSlopeBias(const ShadowSettings& settings, double vertexConstant, const glm::dvec3& axis,
+                  const glm::dvec4& light, ShadowCascadeDesc* d) {
+  if (settings.slopeStage == SlopeBiasStage::Raster) {
+    d->slopeBias = float(settings.slopeBias);
+    return;
+  }
+  d->vertexSlopeBias = float(vertexConstant);
+  for (int i = 0; i < 3; ++i) d->lightAxis[i] = float(axis[i]);
+  for (int i = 0; i < 4; ++i) d->lightPosition[i] = float(light[i]);
+}
+
 }  // namespace
 
 ShadowPassDesc shadowPassDesc(const Scene& scene, const std::vector<CasterBounds>& bounds,
@@ -34,7 +47,10 @@ ShadowPassDesc shadowPassDesc(const Scene& scene, const std::vector<CasterBounds
       std::copy(c.viewport.begin(), c.viewport.end(), d.viewport);
       // A texel's width along the rays, in window depth, is texelSize / depthRange.
       d.depthBias = float(scene.shadows.depthBias * c.texelSize / c.depthRange);
-      d.slopeBias = float(scene.shadows.slopeBias);
+      // A surface at angle θ to the rays changes window depth by tan θ × texelSize / depthRange per
+      // texel: what the rasteriser's slope factor multiplies, and the vertex stage's constant (w 1).
+      setSlopeBias(scene.shadows, scene.shadows.slopeBias * c.texelSize / c.depthRange,
+                   -glm::normalize(scene.sun->direction), glm::dvec4(0.0), &d);
       for (size_t i = 0; i < bounds.size(); ++i)
         if (casterInCascade(c, bounds[i], scene.sun->direction)) d.casters.push_back(uint32_t(i));
       pass.cascades.push_back(std::move(d));
@@ -49,7 +65,8 @@ ShadowPassDesc shadowPassDesc(const Scene& scene, const std::vector<CasterBounds
     store(d.viewProjection, spot.viewProjection);
     std::copy(spot.viewport.begin(), spot.viewport.end(), d.viewport);
     d.depthBias = float(spotDepthBias(spot, scene.shadows.depthBias));
-    d.slopeBias = float(scene.shadows.slopeBias);
+    setSlopeBias(scene.shadows, spotVertexSlopeBias(spot, scene.shadows.slopeBias), -spot.axis,
+                 glm::dvec4(spot.position, 1.0), &d);
     for (size_t i = 0; i < bounds.size(); ++i)
       if (casterInSpotCone(spot, bounds[i])) d.casters.push_back(uint32_t(i));
     pass.cascades.push_back(std::move(d));

@@ -68,4 +68,11 @@ double spotDepthBias(const SpotShadow& spot, double texels) {
   return texels * spot.texelPerMetre * f * n / ((f - n) * mid);
 }
 
+double spotVertexSlopeBias(const SpotShadow& spot, double texels) {
+  // `texels` texels' width along the axis at distance z in window depth, as above, is
+  // texels·texelPerMetre·f·n / ((f − n)·z): times w = z, a constant of the view.
+  const double n = spot.nearPlane, f = spot.farPlane;
+  return texels * spot.texelPerMetre * f * n / (f - n);
+}
+
 }  // namespace facet::runtime

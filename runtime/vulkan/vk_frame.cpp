@@ -125,6 +125,7 @@ void writeFrame(const FrameDesc& frame, const std::vector<DrawSlot>& slots, cons
     abi::FrameUniforms cascadeUniforms = frame.frame;
     glToVulkanDepthClip(frame.shadow->cascades[c].viewProjection, cascadeUniforms.viewProjection);
     cascadeUniforms.cameraPosition[3] = 0.0f;
+    setVertexSlopeBias(frame.shadow->cascades[c], 1.0f, &cascadeUniforms);
     std::memcpy(base + shadow.cascadeOffsets[c], &cascadeUniforms, sizeof(cascadeUniforms));
   }
   const FrameDraws draws(frame);

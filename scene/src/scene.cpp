@@ -452,7 +452,8 @@ void antialiasing(const json& j, Scene* s) {
 // 2D image every Vulkan 1.0 and GLES 3.0 device class Facet targets may allow (the device's own
 // limit is checked again when the atlas is made).
 ShadowSettings shadows(const json& j) {
-  onlyKeys(j, "/shadows", {"atlasSize", "cascades", "distance", "splitLambda", "depthBias", "slopeBias", "normalBias"});
+  onlyKeys(j, "/shadows",
+           {"atlasSize", "cascades", "distance", "splitLambda", "depthBias", "slopeBias", "normalBias", "slopeStage"});
   ShadowSettings s;
   if (j.contains("atlasSize")) {
     s.atlasSize = wholeNumber(j["atlasSize"], "/shadows/atlasSize", 256, kMaxShadowAtlasSize);
@@ -465,6 +466,9 @@ ShadowSettings shadows(const json& j) {
   if (j.contains("depthBias")) s.depthBias = number(j["depthBias"], "/shadows/depthBias", 0, 64);
   if (j.contains("slopeBias")) s.slopeBias = number(j["slopeBias"], "/shadows/slopeBias", 0, 64);
   if (j.contains("normalBias")) s.normalBias = number(j["normalBias"], "/shadows/normalBias", 0, 64);
+  constexpr const char* kSlopeStages[] = {"raster", "vertex"};
+  if (j.contains("slopeStage"))
+    s.slopeStage = SlopeBiasStage(oneOf(j["slopeStage"], "/shadows/slopeStage", kSlopeStages));
   return s;
 }
 

@@ -239,3 +239,54 @@ TEST(DepthPrograms, TheLoaderChecksThemAgainstAnInterfaceWithoutAColourTarget) {
             "material 'red_plastic' variant mid.depth: the fragment shader (SPIR-V) writes output 'fragColor'; the "
             "shadow pass, which draws the depth-only program, has no colour target");
 }
+
+// The vertex-stage slope bias (docs/shadows.md, "Bias"): `<tier>.depth.slope`, built beside
+// `<tier>.depth` only when asked; its vertex stage reads the normal and adds the per-view constant
+// times tan θ to the clip depth, a masked material's keeps its alpha test; the loader takes it.
+TEST(DepthPrograms, TheVertexSlopeBiasProgramIsBuiltOnlyWhenAskedAndReadsTheNormal) {
+  auto key = VariantKey::parse("mid.depth.slope");
+  ASSERT_TRUE(key);
+  EXPECT_TRUE(key->depthOnly);
+  EXPECT_TRUE(key->vertexSlopeBias);
+  EXPECT_EQ(key->toString(), "mid.depth.slope");
+  EXPECT_TRUE(*key == facet::permutations::depthKey(Tier::Mid, true));
+  for (const char* bad : {"mid.depth.slope.sh1", "mid.depth.slopes", "mid.dir1.slope", "mid.depth.depth"})
+    EXPECT_FALSE(VariantKey::parse(bad)) << bad;
+  EXPECT_EQ(names(enumerate({true}, {Tier::High}, nullptr, {0}, {0, 1})),
+            (std::vector<std::string>{"high.dir0", "high.dir1", "high.dir1.sh1", "high.depth"}));
+  EXPECT_EQ(names(enumerate({true}, {Tier::High}, nullptr, {0}, {0, 1}, false, true)),
+            (std::vector<std::string>{"high.dir0", "high.dir1", "high.dir1.sh1", "high.depth", "high.depth.slope"}));
+  // Without shadows there is no depth-only program to give a slope bias.
+  EXPECT_EQ(names(enumerate({true}, {Tier::High}, nullptr, {0}, {0}, false, true)),
+            (std::vector<std::string>{"high.dir0", "high.dir1"}));
+  // A scene asks for exactly the one its slope stage draws with.
+  facet::permutations::SceneNeeds scene{{facet::permutations::depthKey(Tier::Low, true)}};
+  EXPECT_EQ(names(enumerate({true}, {Tier::Low}, &scene)), (std::vector<std::string>{"low.depth.slope"}));
+
+  facet::compiler::BuildOptions options = withShadows({Tier::Mid});
+  options.vertexSlopeBias = true;
+  for (const std::string& text :
+       {facet::test::readText(facet::test::examplePath("materials/red_plastic.mat")), std::string(kLeaf)}) {
+    auto built = facet::test::buildText(text, "m.mat", options);
+    ASSERT_TRUE(built);
+    const pkg::Package& p = built->package;
+    const std::string vertex = glsl(p, "mid.depth.slope", pkg::Stage::Vertex);
+    for (const char* line : {"in highp vec3 a_normal;", "gl_Position=frame.viewProjection*worldPosition;",
+                             "gl_Position.z+=frame.lightDirection.w*slope;"})
+      EXPECT_NE(vertex.find(line), std::string::npos) << line << " in\n" << vertex;
+    EXPECT_EQ(glsl(p, "mid.depth", pkg::Stage::Vertex).find("a_normal"), std::string::npos);
+    // The fragment stage is the plain program's: the same alpha test (or none).
+    EXPECT_EQ(glsl(p, "mid.depth.slope", pkg::Stage::Fragment), glsl(p, "mid.depth", pkg::Stage::Fragment));
+    const std::vector<uint8_t> bytes = pkg::write(p);
+    std::string error;
+    auto material = facet::runtime::LoadedMaterial::loadFromMemory(bytes, p.material.name, &error);
+    ASSERT_TRUE(material) << error;
+    auto program = material->program("mid.depth.slope", &error);
+    ASSERT_TRUE(program) << error;
+    ASSERT_TRUE(program->interface);
+    EXPECT_TRUE(program->interface->depthOnly);
+  }
+  auto leaf = facet::test::buildText(kLeaf, "leaf.mat", options);
+  ASSERT_TRUE(leaf);
+  EXPECT_NE(glsl(leaf->package, "mid.depth.slope", pkg::Stage::Fragment).find("<0.4)discard;"), std::string::npos);
+}

@@ -516,6 +516,53 @@ TEST(MatcCli, ShadowReceiversAreBuiltOnlyWhenAskedFor) {
   EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
 }
 
+// The vertex-stage slope bias (docs/shadows.md, "Bias"): `<tier>.depth.slope` beside `<tier>.depth`
+// with --vertex-slope-bias, in place of it for a scene whose slopeStage is "vertex"; info --scene
+// names it, and a package without it fails the scene. The flag without a depth-only program to
+// give it is a usage error.
+TEST(MatcCli, VertexSlopeBiasProgramsAreBuiltOnlyWhenAskedFor) {
+  std::string dir = facet::test::scratchDir("cli-vertex-slope");
+  std::string scene = write(dir, "yard.json", R"({"tier": "low", "sun": {"castShadows": true},
+      "shadows": {"cascades": 1, "slopeStage": "vertex"}, "objects": [
+      {"mesh": "plane", "material": "red_plastic", "scale": 10},
+      {"mesh": "box", "material": "red_plastic", "position": [0, 1, 0]}]})");
+  std::string material = facet::test::examplePath("materials/red_plastic.mat");
+  ASSERT_EQ(run(kMatc + " compile " + material + " -o " + dir + "/shadows.matpkg --shadows 0,1").exitCode, 0);
+  auto missing = run(kMatc + " info " + dir + "/shadows.matpkg --scene " + scene);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("not built with low.depth.slope"), std::string::npos) << missing.err;
+
+  auto built = run(kMatc + " compile " + material + " -o " + dir + "/slope.matpkg --shadows 0,1 --vertex-slope-bias");
+  ASSERT_EQ(built.exitCode, 0) << built.err;
+  // 8, a .sh1 receiver and the two depth-only programs per tier.
+  EXPECT_NE(built.out.find("20 variants"), std::string::npos) << built.out;
+  auto listed = run(kMatc + " info " + dir + "/slope.matpkg");
+  EXPECT_NE(listed.out.find("\ndepth      8 depth-only programs for the shadow pass (position only; .depth.slope also "
+                            "the normal, for the vertex-stage slope bias): reference.depth, reference.depth.slope, "),
+            std::string::npos)
+      << listed.out;
+  auto found = run(kMatc + " info " + dir + "/slope.matpkg --scene " + scene);
+  EXPECT_EQ(found.exitCode, 0) << found.err;
+  EXPECT_NE(found.out.find("asks for low.depth.slope; the package has 20 variants, including it\n"), std::string::npos)
+      << found.out;
+
+  auto forScene = run(kMatc + " compile " + material + " -o " + dir + "/scene.matpkg --scene " + scene);
+  ASSERT_EQ(forScene.exitCode, 0) << forScene.err;
+  EXPECT_NE(forScene.out.find("2 variants for scene"), std::string::npos)
+      << forScene.out;  // low.dir1.sh1, low.depth.slope
+  auto sceneListed = run(kMatc + " info " + dir + "/scene.matpkg");
+  EXPECT_NE(sceneListed.out.find("program for the shadow pass (position only; .depth.slope also the normal, for the "
+                                 "vertex-stage slope bias): low.depth.slope\n"),
+            std::string::npos)
+      << sceneListed.out;
+
+  auto usage = run(kMatc + " compile " + material + " -o " + dir + "/bad.matpkg --vertex-slope-bias");
+  EXPECT_EQ(usage.exitCode, 2);
+  EXPECT_NE(usage.err.find("--vertex-slope-bias: no depth-only program is built without --shadows"), std::string::npos)
+      << usage.err;
+  EXPECT_FALSE(fs::exists(dir + "/bad.matpkg"));
+}
+
 // The spot's receivers (docs/shadows.md, "Spot shadows"): `.sp1` twins of the point-light variants
 // with --spot-shadows, exactly the scene's with --scene (an object that does not receive asks for
 // the plain variant), and info --scene names them.

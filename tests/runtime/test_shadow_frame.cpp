@@ -40,16 +40,28 @@ const char* kScene = R"({"width": 96, "height": 64, "tier": "high",
 // The scene's two materials with the given receivers (the sun's cascades, the point-light counts and
 // the spot's `.sp1` twins), in the scratch folder `name`.
 std::string packages(const std::string& name = "shadow-frame", const std::vector<int>& cascades = {0, 1, 2, 4},
-                     const std::vector<int>& pointLights = {0}, bool spotShadows = false) {
+                     const std::vector<int>& pointLights = {0}, bool spotShadows = false,
+                     bool vertexSlopeBias = false) {
   compiler::BuildOptions options;
   options.shadowCascadeCounts = cascades;
   options.pointLightCounts = pointLights;
   options.spotShadows = spotShadows;
+  options.vertexSlopeBias = vertexSlopeBias;
   return test::writePackagesFromTexts(name,
                                       {"material plastic { shading lit\n surface { baseColor = vec3(0.8, 0.3, 0.1) } }",
                                        "material glass { shading lit\n blending transparent\n surface { baseColor = "
                                        "vec3(0.2, 0.5, 0.9)\n alpha = 0.5 } }"},
                                       options);
+}
+
+// A casting spot light 4 m above the scene, pointing straight down.
+PunctualLight castingSpotAbove() {
+  PunctualLight spot;
+  spot.spot = true;
+  spot.castShadows = true;
+  spot.position = {-1, 4, 0.5};
+  spot.direction = {0, -1, 0};
+  return spot;
 }
 
 std::unique_ptr<SceneFrame> prepared(const Scene& scene, const std::string& dir) {
@@ -253,12 +265,7 @@ TEST(ShadowFrame, ASpotLightCastsWithoutTheSun) {
   auto scene = parseScene("s.json", kScene, &error);
   ASSERT_TRUE(scene) << error;
   scene->sun.reset();
-  PunctualLight spot;
-  spot.spot = true;
-  spot.castShadows = true;
-  spot.position = {-1, 4, 0.5};
-  spot.direction = {0, -1, 0};
-  scene->lights = {spot};
+  scene->lights = {castingSpotAbove()};
   const std::string dir = packages("shadow-frame-spot-alone", {0}, {1}, true);
   auto frame = prepared(*scene, dir);
   ASSERT_TRUE(frame);
@@ -271,6 +278,64 @@ TEST(ShadowFrame, ASpotLightCastsWithoutTheSun) {
   EXPECT_EQ(shadow.uniforms.fadeAtlas[3], 1.0f / 1024);
   EXPECT_EQ(shadow.uniforms.cascadeScale[0][0], 0.0f);
   EXPECT_EQ(shadow.casters.size(), 3u);  // the plane and both boxes; neither sphere casts
+}
+
+// "slopeStage": "vertex" (docs/shadows.md, "Bias"): the casters draw with `<tier>.depth.slope`, the
+// rasteriser's slope factor is 0, and each view carries the vertex stage's constant and its light:
+// slopeBias texels' width along the rays in window depth and the direction to the sun for a
+// cascade; slopeBias × texelPerMetre × f·n / (f − n) and the position for the spot. A backend
+// writes them into the view's frame block (lightDirection.w doubled on GL). A package without the
+// program is refused with its key.
+TEST(ShadowFrame, TheVertexSlopeStageDrawsTheCastersWithItsProgramAndConstants) {
+  std::string error;
+  auto scene = parseScene("s.json", kScene, &error);
+  ASSERT_TRUE(scene) << error;
+  scene->shadows.slopeStage = SlopeBiasStage::Vertex;
+  EXPECT_FALSE(SceneFrame::prepare(*scene, packages(), &error));
+  EXPECT_NE(error.find("high.depth.slope"), std::string::npos) << error;
+
+  scene->lights = {castingSpotAbove()};
+  const std::string dir = packages("shadow-frame-vertex-slope", {0, 4}, {1}, true, true);
+  auto frame = prepared(*scene, dir);
+  ASSERT_TRUE(frame);
+  ASSERT_TRUE(frame->frame().shadow);
+  const ShadowPassDesc& shadow = *frame->frame().shadow;
+  const ShaderProgram slope = programOf(dir, "plastic", "high.depth.slope");
+  for (const DrawItem& c : shadow.casters) EXPECT_EQ(c.program->vertexSpirv, slope.vertexSpirv);
+  ASSERT_EQ(shadow.cascades.size(), 4u);
+  const std::vector<CasterBounds> bounds = {
+      {{0, 0, 0}, std::sqrt(2.0) * 0.5 * 40}, {{0, 0.5, 0}, std::sqrt(3.0) * 0.5}, {{30, 0.5, -30}, std::sqrt(6.0)}};
+  const SunShadowFit fit = fitSunShadow(*scene, bounds);
+  const glm::dvec3 toSun = -glm::normalize(scene->sun->direction);
+  for (size_t k = 0; k < 3; ++k) {
+    const ShadowCascadeDesc& d = shadow.cascades[k];
+    const SunCascade& c = fit.cascades[k];
+    EXPECT_EQ(d.slopeBias, 0.0f) << k;
+    EXPECT_NEAR(d.vertexSlopeBias, 2.5 * c.texelSize / c.depthRange, 1e-6 * d.vertexSlopeBias) << k;
+    for (int i = 0; i < 3; ++i) EXPECT_FLOAT_EQ(d.lightAxis[i], float(toSun[i])) << k;
+    EXPECT_EQ(std::vector<float>(d.lightPosition, d.lightPosition + 4), std::vector<float>(4, 0.0f)) << k;
+  }
+  const ShadowCascadeDesc& view = shadow.cascades[3];
+  const SpotShadow fitted =
+      fitSpotShadow(*scene, 0, {view.viewport[0], view.viewport[1], view.viewport[2], view.viewport[3]});
+  const double n = fitted.nearPlane, f = fitted.farPlane;
+  EXPECT_EQ(view.slopeBias, 0.0f);
+  EXPECT_FLOAT_EQ(view.vertexSlopeBias, float(2.5 * fitted.texelPerMetre * f * n / (f - n)));
+  EXPECT_EQ(std::vector<float>(view.lightPosition, view.lightPosition + 4), (std::vector<float>{-1, 4, 0.5, 1}));
+  EXPECT_EQ(std::vector<float>(view.lightAxis, view.lightAxis + 3), (std::vector<float>{0, 1, 0}));  // up to it
+  // The constant is the window depth of slopeBias texels along the axis at distance z, times z.
+  const double z = 3.0;
+  EXPECT_NEAR(view.vertexSlopeBias / z, spotDepthBias(fitted, 2.5) * (n + f) / 2 / z, 1e-6 * view.vertexSlopeBias);
+
+  // What a backend writes into a view's frame block.
+  abi::FrameUniforms block = frame->frame().frame;
+  setVertexSlopeBias(view, 2.0f, &block);
+  EXPECT_FLOAT_EQ(block.lightDirection[3], 2 * view.vertexSlopeBias);
+  EXPECT_EQ(block.lightDirection[1], 1.0f);
+  EXPECT_EQ(std::vector<float>(block.lightColor, block.lightColor + 4), (std::vector<float>{-1, 4, 0.5, 1}));
+  abi::FrameUniforms raster = frame->frame().frame;
+  setVertexSlopeBias(ShadowCascadeDesc{}, 2.0f, &raster);
+  EXPECT_EQ(std::memcmp(&raster, &frame->frame().frame, sizeof raster), 0);
 }
 
 }  // namespace

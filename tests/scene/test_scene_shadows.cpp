@@ -41,6 +41,7 @@ TEST(SceneShadows, NothingCastsUnlessTheSunSaysSo) {
   EXPECT_EQ(s.shadows.splitLambda, 0.75);
   EXPECT_TRUE(s.objects.at(0).castShadows);
   EXPECT_TRUE(s.objects.at(0).receiveShadows);
+  EXPECT_EQ(s.shadows.slopeStage, facet::runtime::SlopeBiasStage::Raster);
 }
 
 TEST(SceneShadows, EverySettingIsRead) {
@@ -53,6 +54,11 @@ TEST(SceneShadows, EverySettingIsRead) {
   EXPECT_EQ(s.shadows.depthBias, 0.5);
   EXPECT_EQ(s.shadows.slopeBias, 3);
   EXPECT_EQ(s.shadows.normalBias, 1.5);
+  EXPECT_EQ(s.shadows.slopeStage, facet::runtime::SlopeBiasStage::Raster);
+  EXPECT_EQ(sceneOf(R"("shadows": {"slopeStage": "vertex"})").shadows.slopeStage,
+            facet::runtime::SlopeBiasStage::Vertex);
+  EXPECT_EQ(sceneOf(R"("shadows": {"slopeStage": "raster"})").shadows.slopeStage,
+            facet::runtime::SlopeBiasStage::Raster);
 }
 
 TEST(SceneShadows, ObjectsChooseToCastAndReceive) {
@@ -84,6 +90,9 @@ TEST(SceneShadows, WrongSettingsAreErrorsAtTheirPointer) {
   EXPECT_EQ(errorOf(R"("shadows": {"normalBias": -0.5})"),
             "s.json: error: /shadows/normalBias: value -0.5 is outside [0.0, 64.0]");
   EXPECT_EQ(errorOf(R"("shadows": {"slopeBias": "2"})"), "s.json: error: /shadows/slopeBias: expected a number");
+  EXPECT_EQ(errorOf(R"("shadows": {"slopeStage": "fragment"})"),
+            "s.json: error: /shadows/slopeStage: 'fragment' is not one of raster, vertex");
+  EXPECT_EQ(errorOf(R"("shadows": {"slopeStage": true})"), "s.json: error: /shadows/slopeStage: expected a string");
   EXPECT_EQ(errorOf(R"("shadows": {"split": 0.5})"), "s.json: error: /shadows/split: unknown key 'split'");
   EXPECT_EQ(errorOf(R"("sun": {"castShadows": "yes"})"), "s.json: error: /sun/castShadows: expected true or false");
 }

@@ -28,6 +28,7 @@ const std::string& packages() {
   static const std::string dir = [] {
     compiler::BuildOptions options;
     options.shadowCascadeCounts = {0, 1, 2, 4};
+    options.vertexSlopeBias = true;  // both slope stages (docs/shadows.md, "Bias")
     return test::writePackagesFromTexts(
         "vulkan-shadows", {"material plastic { shading lit\n surface { baseColor = vec3(0.7, 0.7, 0.7) } }"}, options);
   }();
@@ -39,6 +40,7 @@ const std::string& spotPackages() {
     compiler::BuildOptions options;
     options.pointLightCounts = {1};
     options.spotShadows = true;
+    options.vertexSlopeBias = true;
     return test::writePackagesFromTexts(
         "vulkan-spot-shadows", {"material plastic { shading lit\n surface { baseColor = vec3(0.7, 0.7, 0.7) } }"},
         options);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,10 @@ const char* const kTiers[] = {"reference", "high", "mid", "low"};
 
 struct Bias {
   double depth, slope, normal;
+  bool vertex = false;  // the slope bias in the depth-only programs' vertex stage ("slopeStage": "vertex")
 };
 
-// The scene in `tier`, with the shadows block's biases set when `bias` is given.
+// The scene in `tier`, with the shadows block's biases and slope stage set when `bias` is given.
 std::string inTier(const std::string& json, const std::string& tier, const Bias* bias = nullptr) {
   nlohmann::ordered_json scene = nlohmann::ordered_json::parse(json);
   scene["tier"] = tier;
@@ -38,6 +40,7 @@ std::string inTier(const std::string& json, const std::string& tier, const Bias*
     scene["shadows"]["depthBias"] = bias->depth;
     scene["shadows"]["slopeBias"] = bias->slope;
     scene["shadows"]["normalBias"] = bias->normal;
+    scene["shadows"]["slopeStage"] = bias->vertex ? "vertex" : "raster";
   }
   return scene.dump();
 }
@@ -254,29 +257,77 @@ TEST_P(ShadowCases, AThinPoleCastsOneUnbrokenShadow) {
   }
 }
 
+// The slope bias in the depth-only programs' vertex stage ("slopeStage": "vertex", the
+// `.depth.slope` programs; docs/shadows.md "Bias") at the default biases: the bounds the raster
+// stage meets above, in every case and tier.
+TEST_P(ShadowCases, TheVertexStageSlopeBiasMeetsTheSameBoundsAtTheDefaults) {
+  const Bias defaults{1, 2, 1, true};
+  for (const char* tier : kTiers) {
+    uint64_t scored = 0;
+    const uint64_t acne = grazingAcne(tier, &defaults, &scored, GetParam());
+    const ContactFigures contact = contactGap(tier, &defaults, GetParam());
+    const PoleFigures pole = thinPole(tier, &defaults, GetParam());
+    std::printf(
+        "%s vertex slope bias %-9s acne %llu of %llu, contact gap %.2f texels, pole %zu uncovered, %zu pieces\n",
+        shadow_frames::apiName(GetParam()), tier, static_cast<unsigned long long>(acne),
+        static_cast<unsigned long long>(scored), contact.gap, pole.uncovered, pole.pieces);
+    ASSERT_GT(scored, 20000u) << tier;
+    EXPECT_EQ(acne, 0u) << tier;
+    EXPECT_LT(contact.nearest, 1.0) << tier;
+    EXPECT_LE(contact.gap, 2.0) << tier;
+    EXPECT_EQ(pole.uncovered, 0u) << tier;
+    EXPECT_EQ(pole.pieces, 1u) << tier;
+  }
+}
+
+// The defaults pass with a slope bias of 0 too (the normal offset alone removes the acne, "Bias"),
+// so the vertex stage's own work shows with the depth bias and normal offset at 0: its slope bias
+// alone must remove the acne as the rasteriser's does (low: none of the thousands left unbiased;
+// high keeps the 5 pixels the rasteriser's leaves too).
+TEST_P(ShadowCases, TheVertexStageSlopeBiasAloneRemovesTheAcneAsTheRasterisersDoes) {
+  const Bias raster{0, 2, 0, false};
+  const Bias vertex{0, 2, 0, true};
+  for (const char* tier : {"high", "low"}) {
+    uint64_t scored = 0;
+    const uint64_t rasterAcne = grazingAcne(tier, &raster, &scored, GetParam());
+    const uint64_t vertexAcne = grazingAcne(tier, &vertex, &scored, GetParam());
+    std::printf("%s grazing_sun %-9s at 0, 2, 0: acne %llu raster, %llu vertex\n", shadow_frames::apiName(GetParam()),
+                tier, static_cast<unsigned long long>(rasterAcne), static_cast<unsigned long long>(vertexAcne));
+    ASSERT_GT(scored, 20000u) << tier;
+    EXPECT_LE(vertexAcne, rasterAcne + 5) << tier;
+    EXPECT_LE(vertexAcne, 10u) << tier;
+  }
+}
+
 // The bias sweep of docs/shadows.md, "Bias": every hard case per setting, in high (the 3×3 tent)
-// and low (one compare tap), printed as the doc's table. Disabled (a table, not a check): run with
-// --gtest_also_run_disabled_tests --gtest_filter='*BiasSweep*'.
+// and low (one compare tap), printed as the doc's table, with the slope bias at the rasteriser and,
+// from the same build, in the vertex stage. Disabled (a table, not a check): run with
+// --gtest_also_run_disabled_tests --gtest_filter='*BiasSweep*' (FACET_SWEEP_API=gl for GL).
 TEST(VulkanShadowCases, DISABLED_BiasSweep) {
+  const char* apiName = std::getenv("FACET_SWEEP_API");
+  const Api api = apiName && std::string(apiName) == "gl" ? Api::Gl : Api::Vulkan;
   const Bias settings[] = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 1}, {0.5, 1, 0.5}, {1, 1, 0.5}, {1, 2, 0},
                            {0, 2, 1}, {1, 0, 1}, {1, 1, 1}, {1, 2, 1}, {2, 2, 1},     {1, 4, 1},   {1, 2, 2},
-                           {2, 4, 2}, {4, 4, 2}, {4, 8, 4}, {8, 8, 4}, {16, 16, 8}};
+                           {2, 4, 2}, {4, 4, 2}, {4, 8, 4}, {8, 8, 4}, {16, 16, 8},   {0, 8, 0},   {0, 4, 0}};
   std::printf(
-      "| depth, slope, normal | tier | grazing_sun acne | contact leaks, widest gap (texels) | "
-      "cascade_boundary wrong, worst band | thin_pole uncovered, pieces |\n|---|---|---:|---:|---:|---:|\n");
-  for (const Bias& bias : settings)
-    for (const char* tier : {"high", "low"}) {
-      uint64_t scored = 0;
-      const uint64_t acne = grazingAcne(tier, &bias, &scored);
-      const ContactFigures contact = contactGap(tier, &bias);
-      const BoundaryFigures boundary = cascadeBoundary(tier, &bias);
-      const PoleFigures pole = thinPole(tier, &bias);
-      std::printf(
-          "| %g, %g, %g | %s | %llu | %llu, %.1f | %llu, %.2f %% | %zu, %zu |\n", bias.depth, bias.slope, bias.normal,
-          tier, static_cast<unsigned long long>(acne), static_cast<unsigned long long>(contact.leaks), contact.gap,
-          static_cast<unsigned long long>(boundary.wrong), 100 * boundary.worstBand, pole.uncovered, pole.pieces);
-      std::fflush(stdout);
-    }
+      "| depth, slope, normal | tier | stage | grazing_sun acne | contact leaks, widest gap (texels) | "
+      "cascade_boundary wrong, worst band | thin_pole uncovered, pieces |\n|---|---|---|---:|---:|---:|---:|\n");
+  for (Bias bias : settings)
+    for (const char* tier : {"high", "low"})
+      for (bool vertex : {false, true}) {
+        bias.vertex = vertex;
+        uint64_t scored = 0;
+        const uint64_t acne = grazingAcne(tier, &bias, &scored, api);
+        const ContactFigures contact = contactGap(tier, &bias, api);
+        const BoundaryFigures boundary = cascadeBoundary(tier, &bias, api);
+        const PoleFigures pole = thinPole(tier, &bias, api);
+        std::printf("| %g, %g, %g | %s | %s | %llu | %llu, %.1f | %llu, %.2f %% | %zu, %zu |\n", bias.depth, bias.slope,
+                    bias.normal, tier, vertex ? "vertex" : "raster", static_cast<unsigned long long>(acne),
+                    static_cast<unsigned long long>(contact.leaks), contact.gap,
+                    static_cast<unsigned long long>(boundary.wrong), 100 * boundary.worstBand, pole.uncovered,
+                    pole.pieces);
+        std::fflush(stdout);
+      }
 }
 
 }  // namespace

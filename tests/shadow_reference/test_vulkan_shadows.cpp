@@ -182,9 +182,11 @@ TEST(Shadows, VulkanAndGlAgreeOnAShadowedFrame) {
 // tests/data/scenes/shadows/spot_box.json (a box on the ground under a 35° spot light, the scene's
 // only light, no sky) in `tier`, every object `plastic`, exposed for a lamp (EV100 4.9: the
 // ground's 50 lux then reach about a third of white; the scene's default exposure is the sun's).
-std::string spotBox(const std::string& tier) {
+// `shadows` (when not null) replaces the scene's shadows block.
+std::string spotBox(const std::string& tier, const nlohmann::ordered_json& shadows = nullptr) {
   nlohmann::ordered_json scene = nlohmann::ordered_json::parse(shadow_frames::sunOnlyScene("spot_box.json"));
   scene["tier"] = tier;
+  if (!shadows.is_null()) scene["shadows"] = shadows;
   scene["camera"]["aperture"] = 2.8;
   scene["camera"]["shutter"] = 0.033;
   scene["camera"]["iso"] = 800;
@@ -213,6 +215,34 @@ TEST_P(Shadows, ASpotLightsShadowMatchesTheRayCastReferencePerTier) {
     EXPECT_LE(m.score.wrongFraction(), kSpotBound) << tier;
     EXPECT_LT(inShadow, 0.05) << tier;
     EXPECT_GT(inLight, 0.98) << tier;
+  }
+}
+
+// The spot's view with the slope bias in the casters' vertex stage ("slopeStage": "vertex";
+// docs/shadows.md, "Bias"): at the defaults, the bound above in every tier; with the depth bias
+// and normal offset at 0, its slope bias alone leaves no more acne than the rasteriser's.
+TEST_P(Shadows, ASpotLightsShadowWithTheVertexStageSlopeBias) {
+  for (const char* tier : {"reference", "high", "mid", "low"}) {
+    const Measured m = measure(spotBox(tier, {{"slopeStage", "vertex"}}), std::string("spot-vertex-") + tier,
+                               kFootprint, GetParam(), 0);
+    std::printf("%s spot, vertex slope bias, tier %-9s scored %llu wrong %.4f%% (leaks %llu, acne %llu)\n",
+                apiName(GetParam()), tier, static_cast<unsigned long long>(m.score.scored),
+                100 * m.score.wrongFraction(), static_cast<unsigned long long>(m.score.leaks),
+                static_cast<unsigned long long>(m.score.acne));
+    ASSERT_GT(m.score.scored, 20000u) << tier;
+    EXPECT_LE(m.score.wrongFraction(), kSpotBound) << tier;
+  }
+  for (const char* tier : {"high", "low"}) {
+    uint64_t acne[2] = {};
+    for (int vertex = 0; vertex < 2; ++vertex) {
+      const nlohmann::ordered_json shadows = {
+          {"depthBias", 0}, {"slopeBias", 2}, {"normalBias", 0}, {"slopeStage", vertex ? "vertex" : "raster"}};
+      acne[vertex] =
+          measure(spotBox(tier, shadows), std::string("spot-slope-") + tier, kFootprint, GetParam(), 0).score.acne;
+    }
+    std::printf("%s spot, tier %-4s at 0, 2, 0: acne %llu raster, %llu vertex\n", apiName(GetParam()), tier,
+                static_cast<unsigned long long>(acne[0]), static_cast<unsigned long long>(acne[1]));
+    EXPECT_LE(acne[1], acne[0] + 5) << tier;
   }
 }
 

@@ -176,7 +176,9 @@ struct FrameUniforms {
                             // Unit length is a guarantee the shaders rely on (they no longer
                             // normalize it per pixel): SceneFrame normalizes the scene's sun; an
                             // app filling the block itself must normalize too
-  float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused
+  float lightColor[4];      // rgb: colour × illuminance (lux) × exposure; w: unused. In a shadow view's
+                            // block (the `.depth.slope` programs, docs/shadows.md "Bias"): the spot's
+                            // position, w 1, or 0; lightDirection the view's axis and slope constant
   float ambient[4];         // rgb: the environment's mean radiance × exposure; w: unused. Not read by
                             // the forward shaders since image-based lighting (sh and the environment
                             // texture replace it); kept as the frame's clear colour and for apps' own shaders

@@ -67,6 +67,8 @@ struct BuildOptions {
   std::vector<int> pointLightCounts{0};           // without a scene: the point-light permutations to build
   std::vector<int> shadowCascadeCounts{0};        // without a scene: the sun-shadow receiver permutations
   bool spotShadows = false;  // without a scene: each variant with point lights also as a spot-shadow receiver (.sp1)
+  // Without a scene: the depth-only programs also with the vertex-stage slope bias (.depth.slope).
+  bool vertexSlopeBias = false;
   // Testing only, never for shipping: the SPIR-V (Vulkan) target of mediump tiers rounds every
   // RelaxedPrecision float result to binary16 (OpQuantizeToF16), so lavapipe, which computes
   // mediump in fp32, shows what a mobile GPU's fp16 ALUs would. GLSL ES, MSL and highp tiers

@@ -2,7 +2,8 @@
 // stable across compiler versions (apps store it), e.g. "high.dir1", "mid.dir0.pt2" or
 // "low.dir1.sh4.pt1":
 //   <tier> "." "dir" <0|1> [ "." "sh" <1|2|4> ] [ "." "pt" <1|2|4> [ "." "sp1" ] ]
-// or, for the shadow pass's depth-only program of a tier, <tier> "." "depth" (e.g. "mid.depth").
+// or, for the shadow pass's depth-only program of a tier, <tier> "." "depth" [ "." "slope" ] (e.g.
+// "mid.depth"; "mid.depth.slope" adds the slope bias in its vertex stage, docs/shadows.md "Bias").
 // The shadow field follows dir1 only (the sun is what casts); the spot-shadow field follows a
 // point-light field only (light slot 0 is the casting spot). The shadow and point-light fields
 // are absent when their count is 0, so keys written before an axis existed still name the same
@@ -52,6 +53,9 @@ struct VariantKey {
   // The shadow pass's depth-only program (position only; a masked material's alpha test): no
   // lights, no shadow, no point lights. Its tier picks the alpha test's precision.
   bool depthOnly = false;
+  // With depthOnly: the vertex stage reads the normal and adds the slope bias to the clip depth
+  // itself (Guo and Li's vertex-stage slope bias; the scene's shadows.slopeStage "vertex").
+  bool vertexSlopeBias = false;
   int spotShadows = 0;  // 0 or 1: light slot 0's shadow is received; non-zero only with pointLights
 
   // Whether the variant samples the shadow atlas (a sun or a spot shadow receiver).
@@ -75,8 +79,9 @@ struct MaterialNeeds {
 // Whether a material of this blending mode casts shadows (MaterialNeeds::castsShadows).
 bool blendingCastsShadows(std::string_view blending);
 
-// The key of a tier's depth-only program (VariantKey::depthOnly).
-VariantKey depthKey(Tier tier);
+// The key of a tier's depth-only program (VariantKey::depthOnly), with the vertex-stage slope bias
+// or without.
+VariantKey depthKey(Tier tier, bool vertexSlopeBias = false);
 
 // The variants a scene asks a material for (filled by matc from a scene manifest).
 struct SceneNeeds {
@@ -96,10 +101,12 @@ VariantKey requestKey(const MaterialNeeds& material, Tier tier, bool directional
 // material, in a stable (sorted) order; with a scene, exactly those of the scene's keys the tiers
 // allow (the scene's own counts, whatever the lists say). A non-zero shadow count, or spot
 // shadows, adds each tier's depth-only program for a material that casts. With spotShadows, every
-// variant with point lights comes with and without `.sp1`.
+// variant with point lights comes with and without `.sp1`. With vertexSlopeBias, the depth-only
+// programs come with and without the vertex-stage slope bias (`.depth.slope`).
 std::vector<VariantKey> enumerate(const MaterialNeeds& material, const std::vector<Tier>& tiers,
                                   const SceneNeeds* scene = nullptr, const std::vector<int>& pointLightCounts = {0},
-                                  const std::vector<int>& shadowCascadeCounts = {0}, bool spotShadows = false);
+                                  const std::vector<int>& shadowCascadeCounts = {0}, bool spotShadows = false,
+                                  bool vertexSlopeBias = false);
 
 // Tiers this compiler version builds shaders for.
 const std::vector<Tier>& supportedTiers();

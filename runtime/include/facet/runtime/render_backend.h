@@ -172,6 +172,15 @@ struct ShadowCascadeDesc {
   // surface changes over that many texels). The backend turns depthBias into its format's units.
   float depthBias = 0;
   float slopeBias = 0;
+  // The vertex-stage slope bias (the scene's slopeStage "vertex"; templates/depth.vert.glsl), with
+  // slopeBias 0: the clip depth the `.depth.slope` programs multiply by the surface's slope
+  // against the view's axis, in Vulkan's [0, 1] clip depth (window depth × w; a GL backend doubles
+  // it for its [-1, 1]); the view's axis, unit, towards the light; and the light's position with
+  // w 1 for a spot's view (zeros for a cascade: its rays are the axis). A backend writes them into
+  // the view's frame block (setVertexSlopeBias).
+  float vertexSlopeBias = 0;
+  float lightAxis[3] = {};
+  float lightPosition[4] = {};
   std::vector<uint32_t> casters;  // indices into ShadowPassDesc::casters that can shadow the cascade
 };
 
@@ -217,6 +226,12 @@ std::string instanceCountError(const FrameDesc& frame);
 // API can make and render), a cascade viewport empty or outside the atlas, a caster index out of
 // range, as "shadow cascade N: ..." (both backends refuse such a frame with it).
 std::string shadowPassError(const ShadowPassDesc& shadow, uint32_t maxAtlasSize);
+// A view's frame block for its casters: the frame's block with the view's vertex-stage slope bias
+// in lightDirection.w (× clipDepthSpan: 1 for Vulkan's [0, 1] clip depth, 2 for GL's [-1, 1]), its
+// axis in lightDirection.xyz and its light's position in lightColor (templates/depth.vert.glsl,
+// which the depth-only programs alone read there); the rest, matrix included, the backend's. Unchanged for a view
+// without one (the raster stage, or a slopeBias of 0, where the program adds 0 × tan θ).
+void setVertexSlopeBias(const ShadowCascadeDesc& view, float clipDepthSpan, abi::FrameUniforms* frame);
 // The draws a backend issues for a frame, read in place: `frame.draws`, then with a shadow pass
 // one per (view, caster) in view order, the caster's DrawItem in `shadow->casters` (the shadow
 // pass's draws are the last shadowDrawCount()), so that one check, one upload and one program

@@ -59,5 +59,8 @@ bool casterInSpotCone(const SpotShadow& spot, const CasterBounds& caster);
 // at the middle of the light's range (perspective depth is not linear: the same constant is
 // (z / zMid)² as many metres at distance z).
 double spotDepthBias(const SpotShadow& spot, double texels);
+// The vertex-stage slope bias's constant (ShadowCascadeDesc::vertexSlopeBias): the window depth of
+// `texels` texels' width along the axis at distance z, times w = z, the same at every distance.
+double spotVertexSlopeBias(const SpotShadow& spot, double texels);
 
 }  // namespace facet::runtime

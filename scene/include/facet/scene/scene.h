@@ -45,6 +45,12 @@ struct Sun {
 // The largest shadow atlas a scene may ask for, texels per side.
 inline constexpr uint32_t kMaxShadowAtlasSize = 8192;
 
+// Where the casters' slope-scaled bias is added (docs/shadows.md, "Bias"): by the rasteriser
+// (its slope factor), or by the depth-only program's vertex stage from the normal's angle to the
+// light (Guo and Li, "Practical High-Performance Rendering on Mobile Platforms", 2023), which
+// needs the `<tier>.depth.slope` programs.
+enum class SlopeBiasStage { Raster, Vertex };
+
 // The sun's shadow map (docs/shadows.md): every cascade a viewport rectangle of one square depth
 // atlas. Biases are in shadow texels of the cascade they apply to, so one setting holds for every
 // cascade and atlas size.
@@ -56,6 +62,7 @@ struct ShadowSettings {
   double depthBias = 1.0;     // constant depth bias, in texels
   double slopeBias = 2.0;     // depth bias per unit of depth slope, in texels
   double normalBias = 1.0;    // lookup offset along the surface normal, in texels
+  SlopeBiasStage slopeStage = SlopeBiasStage::Raster;
 };
 
 // A punctual light: a point light radiating equally in all directions, or a spot light
