@@ -8,6 +8,7 @@
 
 #include "facet/compiler/assemble.h"
 #include "facet/eval/standard_model.h"
+#include "facet/ibl/bilinear_axis.h"
 #include "facet/runtime/environment.h"
 #include "sweep_support.h"
 
@@ -319,17 +320,9 @@ glm::dvec2 sheenTerms(double NoV, double perceptualRoughness) {
     };
     return glm::dvec2(half(2), half(3));
   };
-  auto axis = [&](double u, int* i0, int* i1, double* t) {
-    const double x = std::clamp(u * size - 0.5, 0.0, double(size - 1));
-    *i0 = int(x);
-    *i1 = std::min(*i0 + 1, size - 1);
-    *t = x - *i0;
-  };
-  int c0, c1, r0, r1;
-  double tx, ty;
-  axis(NoV, &c0, &c1, &tx);
-  axis(perceptualRoughness, &r0, &r1, &ty);
-  return glm::mix(glm::mix(texel(c0, r0), texel(c1, r0), tx), glm::mix(texel(c0, r1), texel(c1, r1), tx), ty);
+  const ibl::BilinearAxis x = ibl::bilinearAxis(NoV, size), y = ibl::bilinearAxis(perceptualRoughness, size);
+  return glm::mix(glm::mix(texel(x.i0, y.i0), texel(x.i1, y.i0), x.t),
+                  glm::mix(texel(x.i0, y.i1), texel(x.i1, y.i1), x.t), y.t);
 }
 
 struct Key {

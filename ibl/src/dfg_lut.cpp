@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "facet/ibl/bilinear_axis.h"
 #include "facet/ibl/ggx_microfacet.h"
 #include "facet/ibl/hammersley.h"
 
@@ -50,21 +51,12 @@ DfgTerms DfgLut::at(int column, int row) const {
 }
 
 DfgTerms DfgLut::sampleBilinear(double NoV, double perceptualRoughness) const {
-  auto axis = [&](double u, int* i0, int* i1, double* f) {
-    double x = std::clamp(u * size - 0.5, 0.0, double(size - 1));
-    *i0 = int(x);
-    *i1 = std::min(*i0 + 1, size - 1);
-    *f = x - *i0;
-  };
-  int c0, c1, r0, r1;
-  double fx, fy;
-  axis(NoV, &c0, &c1, &fx);
-  axis(perceptualRoughness, &r0, &r1, &fy);
+  const BilinearAxis x = bilinearAxis(NoV, size), y = bilinearAxis(perceptualRoughness, size);
   auto lerp = [](DfgTerms a, DfgTerms b, double f) {
     return DfgTerms{a.fresnelWeighted + (b.fresnelWeighted - a.fresnelWeighted) * f,
                     a.albedo + (b.albedo - a.albedo) * f};
   };
-  return lerp(lerp(at(c0, r0), at(c1, r0), fx), lerp(at(c0, r1), at(c1, r1), fx), fy);
+  return lerp(lerp(at(x.i0, y.i0), at(x.i1, y.i0), x.t), lerp(at(x.i0, y.i1), at(x.i1, y.i1), x.t), y.t);
 }
 
 DfgLut generateDfgLut(int size, int samplesPerTexel) {

@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "facet/ibl/bilinear_axis.h"
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/env_brdf_fits.h"
@@ -669,17 +670,10 @@ TEST(Sheen, TexelTermsBoundEveryBilinearBlendAndLeaveOpenViewsUncorrected) {
   const SheenLut& lut = embeddedSheenLut();
   const int size = lut.size;
   auto blend = [&](double NoV, double r) {
-    auto axis = [&](double u, int* i0, int* i1, double* t) {
-      const double x = std::clamp(u * size - 0.5, 0.0, double(size - 1));
-      *i0 = int(x), *i1 = std::min(*i0 + 1, size - 1), *t = x - *i0;
-    };
-    int c0, c1, r0, r1;
-    double tx, ty;
-    axis(NoV, &c0, &c1, &tx);
-    axis(r, &r0, &r1, &ty);
+    const BilinearAxis x = bilinearAxis(NoV, size), y = bilinearAxis(r, size);
     SheenTerms out{0, 0};
-    for (auto [c, r2, w] : {std::tuple{c0, r0, (1 - tx) * (1 - ty)}, std::tuple{c1, r0, tx * (1 - ty)},
-                            std::tuple{c0, r1, (1 - tx) * ty}, std::tuple{c1, r1, tx * ty}}) {
+    for (auto [c, r2, w] : {std::tuple{x.i0, y.i0, (1 - x.t) * (1 - y.t)}, std::tuple{x.i1, y.i0, x.t * (1 - y.t)},
+                            std::tuple{x.i0, y.i1, (1 - x.t) * y.t}, std::tuple{x.i1, y.i1, x.t * y.t}}) {
       const SheenTerms t = sheenTexelTerms(lut, c, r2);
       out.albedo += w * t.albedo, out.scale += w * t.scale;
     }
