@@ -199,29 +199,26 @@ class Rules {
   void directionLength(ValueId x, ValueId at, const std::string& what, bool shortIsHazard) {
     const Interval n = lengthSquared(x);
     const std::string range = "its squared length is in " + describe(n);
+    // A length always beyond fp16's bound is an error, one that can reach it a warning.
+    const auto report = [&](bool always, const char* bound, const char* consequence) {
+      const std::string message =
+          what + (always ? " is always " : " can be ") + bound + " (" + range + "): " + consequence;
+      if (always)
+        diags_.error(locOf(at, x), message, "direction-length");
+      else
+        diags_.warning(locOf(at, x), message, "direction-length");
+    };
     if (shortIsHazard && n.hi == 0.0) {
       diags_.error(locOf(at, x), what + " is always the zero vector: normalize gives NaN (0 · inf) in every precision",
                    "direction-length");
-    } else if (shortIsHazard && n.hi < kFp16MinNormal) {
-      diags_.error(locOf(at, x),
-                   what + " is always shorter than 2^-7 (" + range +
-                       "): in fp16 its squared length flushes to 0 and normalize gives NaN (0 · inf)",
-                   "direction-length");
-    } else if (n.lo > kFp16Max) {
-      diags_.error(locOf(at, x),
-                   what + " is always longer than 255.9 (" + range +
-                       "): in fp16 its squared length is +inf and normalize gives 0 or NaN",
-                   "direction-length");
     } else if (shortIsHazard && n.lo < kFp16MinNormal) {
-      diags_.warning(locOf(at, x),
-                     what + " can be shorter than 2^-7 (" + range +
-                         "): in fp16 its squared length flushes to 0 and normalize gives NaN (0 · inf)",
-                     "direction-length");
+      report(n.hi < kFp16MinNormal, "shorter than 2^-7",
+             "in fp16 its squared length flushes to 0 and normalize gives NaN (0 · inf)");
     } else if (n.hi > kFp16Max) {
-      diags_.warning(locOf(at, x),
-                     what + " can be longer than 255.9 (" + range +
-                         "): in fp16 its squared length overflows to +inf and normalize gives 0 or NaN",
-                     "direction-length");
+      const bool always = n.lo > kFp16Max;
+      report(always, "longer than 255.9",
+             always ? "in fp16 its squared length is +inf and normalize gives 0 or NaN"
+                    : "in fp16 its squared length overflows to +inf and normalize gives 0 or NaN");
     }
   }
 
