@@ -85,6 +85,40 @@ bool checkExtensions(const json& document, std::string* error) {
   return true;
 }
 
+// glTF 2.0 (section 3.12, and every schema's `extensions` property): `extensions` is an object
+// whose members are objects, one per extension. tinygltf drops a member of any other type without
+// a word, so `"KHR_materials_sheen": 1` used to import as a material without sheen. `extras` is
+// application data the spec leaves free, so nothing under it is checked. The recursion is bounded
+// by the depth check the text passed before it was parsed (gltf_source.cpp).
+bool checkExtensionObjects(const json& value, const std::string& at, std::string* error) {
+  if (value.is_array()) {
+    for (size_t i = 0; i < value.size(); ++i)
+      if (!checkExtensionObjects(value[i], at + "/" + std::to_string(i), error)) return false;
+    return true;
+  }
+  if (!value.is_object()) return true;
+  for (const auto& [key, member] : value.items()) {
+    if (key == "extras") continue;
+    const std::string where = at + "/" + scene::pointerSegment(key);
+    if (key == "extensions") {
+      if (!member.is_object()) {
+        *error =
+            where + ": expected an object (glTF 2.0's extensions, one member per extension), got " + member.type_name();
+        return false;
+      }
+      for (const auto& [name, extension] : member.items()) {
+        if (!extension.is_object()) {
+          *error = where + "/" + scene::pointerSegment(name) +
+                   ": expected an object (an extension's value in glTF 2.0), got " + extension.type_name();
+          return false;
+        }
+      }
+    }
+    if (!checkExtensionObjects(member, where, error)) return false;
+  }
+  return true;
+}
+
 bool checkStrides(const json& document, std::string* error) {
   const json* views = member(document, "bufferViews");
   if (!views || !views->is_array()) return true;  // tinygltf reports a wrong type
@@ -200,7 +234,8 @@ std::optional<std::vector<ExternalBuffer>> checkDocument(const json& document, b
     *error = "/: expected a JSON object";
     return std::nullopt;
   }
-  if (!checkAsset(document, error) || !checkExtensions(document, error) || !checkStrides(document, error))
+  if (!checkAsset(document, error) || !checkExtensions(document, error) ||
+      !checkExtensionObjects(document, "", error) || !checkStrides(document, error))
     return std::nullopt;
   return checkBuffers(document, binary, error);
 }

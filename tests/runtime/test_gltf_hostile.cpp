@@ -513,6 +513,27 @@ TEST(GltfHostile, SpecRulesTinygltfIgnoresAreEnforced) {
   EXPECT_NE(error2.find("...("), std::string::npos);
   EXPECT_LT(error2.size(), 600u);
   EXPECT_EQ(error2.find('\n'), std::string::npos);
+  // `extensions` is an object of objects wherever it appears (tinygltf dropped any other value,
+  // so a material's sheen given as a number was imported without it); `extras` is left free.
+  EXPECT_EQ(
+      withJson("extnum.gltf", replaced(R"("meshes": [)", R"("materials": [{"extensions": {"KHR_materials_sheen": 1}}],
+  "meshes": [)")),
+      dir +
+          "/extnum.gltf: error: /materials/0/extensions/KHR_materials_sheen: expected an object (an "
+          "extension's value in glTF 2.0), got number");
+  EXPECT_EQ(withJson("extarr.gltf",
+                     replaced(R"("asset": {"version": "2.0"},)", R"("asset": {"version": "2.0", "extensions": []},)")),
+            dir +
+                "/extarr.gltf: error: /asset/extensions: expected an object (glTF 2.0's extensions, one member per "
+                "extension), got array");
+  EXPECT_EQ(withJson("extdeep.gltf", replaced(R"("indices": 6)", R"("indices": 6, "extensions": {"a/b~": "x"})")),
+            dir +
+                "/extdeep.gltf: error: /meshes/0/primitives/0/extensions/a~1b~0: expected an object (an "
+                "extension's value in glTF 2.0), got string");
+  writeText(dir + "/extras.gltf", replaced(R"("asset": {"version": "2.0"},)",
+                                           R"("asset": {"version": "2.0", "extras": {"extensions": 3},
+  "extensions": {"EXT_unknown": {"extensions": {}}}},)"));
+  EXPECT_TRUE(loadGltfMesh(dir + "/extras.gltf", &error)) << error;
   // Through a scene.
   EXPECT_NE(sceneError(dir, "draco.gltf").find("object 0: " + dir + "/draco.gltf: error: /extensionsRequired/0:"),
             std::string::npos);
