@@ -543,3 +543,38 @@ TEST(PreshaderCompiler, ATexturedModelInputStaysPerPixel) {
   EXPECT_EQ(e.offsets.count("facet_clearCoatLod"), 0u);
   EXPECT_EQ(e.offsets.count("facet_anisotropicAlpha"), 0u) << "α_t, α_b need the textured roughness";
 }
+
+// Specular anti-aliasing widens the roughness per pixel (chunks/specular_antialiasing.glsl): the
+// terms derived from it, anisotropy's (α_t, α_b) and bend and a cloth's environment lod, stay per
+// pixel; k and the sheen's colour, which do not depend on it, are still preshaded.
+TEST(PreshaderCompiler, SpecularAntiAliasingKeepsTheWidenedRoughnessTermsPerPixel) {
+  facet::compiler::BuildOptions options;
+  options.tiers = {facet::permutations::Tier::High};
+  auto fragment = [](const facet::compiler::BuildResult& built) {
+    for (const pkg::Variant& v : built.package.variants)
+      if (v.key == "high.dir1")
+        for (const pkg::Shader& s : v.shaders)
+          if (s.stage == pkg::Stage::Fragment && s.target == pkg::Target::GlslEs300)
+            return std::string(s.code.begin(), s.code.end());
+    ADD_FAILURE() << "no high.dir1";
+    return std::string();
+  };
+  auto brushed = facet::test::buildText(
+      "material brushed { shading lit\n specularAntiAliasing { variance 0.02 threshold 0.2 }\n"
+      " param rough: float = 0.3 in [0, 1]\n param k: float = 0.8 in [-1, 1]\n"
+      " surface { metallic = 1.0\n roughness = params.rough\n anisotropy = params.k } }",
+      "brushed.mat", options);
+  auto cloth = facet::test::buildText(
+      "material felt { shading cloth\n specularAntiAliasing { variance 0.02 threshold 0.2 }\n"
+      " param rough: float = 0.6 in [0, 1]\n param sheen: color = vec3(0.5, 0.5, 0.5)\n"
+      " surface { roughness = params.rough\n sheenColor = params.sheen } }",
+      "felt.mat", options);
+  ASSERT_TRUE(brushed && cloth);
+  const std::string b = fragment(*brushed), c = fragment(*cloth);
+  EXPECT_NE(b.find("params.facet_anisotropy;"), std::string::npos) << b;
+  EXPECT_EQ(b.find("params.facet_anisotropicAlpha"), std::string::npos);
+  EXPECT_EQ(b.find("params.facet_anisotropicBend"), std::string::npos);
+  EXPECT_NE(b.find("clamp(alpha*vec2(1.0+k,1.0-k)"), std::string::npos);
+  EXPECT_NE(c.find("params.facet_sheenColor"), std::string::npos) << c;
+  EXPECT_EQ(c.find("params.facet_sheenLod"), std::string::npos);
+}
