@@ -54,14 +54,27 @@ const float ANISOTROPY_BEND_MAX = 0.9921875;  // 1 − 2^-7: keeps |m|² ≥ 2^-
 // anisotropy_ggx_smith.glsl).
 vec3 shading_anisotropic_t;
 
+// With FACET_PRESHADED_ANISOTROPY, k, (α_t, α_b) and the reflection's bend depend only on
+// parameters: the preshader (compiler/preshader.h) forms these same values on the CPU, from its
+// r and α = r² (material_perceptual_roughness, material_alpha: shading_standard.glsl). With
+// FACET_SPECULAR_AA the roughness is widened per pixel (specular_antialiasing.glsl): then
+// (α_t, α_b) and the bend are formed here from it.
 float anisotropy_strength(MaterialInputs material) {
+#if defined(FACET_PRESHADED_ANISOTROPY)
+    return params.facet_anisotropy;
+#else
     return clamp(material.anisotropy, -1.0, 1.0);
+#endif
 }
 
 // (α_t, α_b) for the material's α (material_alpha) and anisotropy.
 vec2 anisotropic_alpha(MaterialInputs material, float alpha) {
+#if defined(FACET_PRESHADED_ANISOTROPY) && !defined(FACET_SPECULAR_AA)
+    return params.facet_anisotropicAlpha;
+#else
     float k = anisotropy_strength(material);
     return clamp(alpha * vec2(1.0 + k, 1.0 - k), ANISOTROPY_ALPHA_MIN, 1.0);
+#endif
 }
 
 void anisotropy_frame(MaterialInputs material, vec3 n) {
@@ -88,7 +101,11 @@ vec3 anisotropic_reflection(MaterialInputs material, vec3 n, vec3 v, float NoV, 
     float k = anisotropy_strength(material);
     vec3 e = k >= 0.0 ? shading_anisotropic_t : cross(n, shading_anisotropic_t);
     float EoV = dot(e, v);
+#if defined(FACET_PRESHADED_ANISOTROPY) && !defined(FACET_SPECULAR_AA)
+    float bend = params.facet_anisotropicBend;
+#else
     float bend = min(abs(k) * clamp(5.0 * perceptualRoughness, 0.0, 1.0), ANISOTROPY_BEND_MAX);
+#endif
     float c1 = 1.0 - bend * (1.0 - NoV);
     float c2 = bend * EoV;
     float MoV = c1 * NoV + c2 * EoV;

@@ -37,12 +37,32 @@ vec3 shading_clear_coat_normal;
 // light's base is multiplied by it, shading_standard.glsl).
 float shading_clear_coat_attenuation = 1.0;
 
+// With FACET_PRESHADED_CLEAR_COAT and FACET_PRESHADED_CLEAR_COAT_ROUGHNESS the coat's inputs depend
+// only on parameters: the preshader (compiler/preshader.h) forms these same values on the CPU, the
+// strength, α_c = r_c² and the environment's lod r_c (2 − r_c) · (levels − 1) (prefiltered_radiance's,
+// ibl_prefiltered.glsl), and the forms below are what it implements.
 float clear_coat_strength(MaterialInputs material) {
+#if defined(FACET_PRESHADED_CLEAR_COAT)
+    return params.facet_clearCoat;
+#else
     return clamp(material.clearCoat, 0.0, 1.0);
+#endif
 }
 
+#if !defined(FACET_PRESHADED_CLEAR_COAT_ROUGHNESS)
 float clear_coat_perceptual_roughness(MaterialInputs material) {
     return clamp(material.clearCoatRoughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+}
+#endif
+
+// α_c = r_c² (the lobe's, clear_coat_ggx_kelemen.glsl).
+float clear_coat_alpha(MaterialInputs material) {
+#if defined(FACET_PRESHADED_CLEAR_COAT_ROUGHNESS)
+    return params.facet_clearCoatAlpha;
+#else
+    float r = clear_coat_perceptual_roughness(material);
+    return r * r;
+#endif
 }
 
 // Fc without the strength: Schlick at f0 = 0.04, f90 = 1.
@@ -57,6 +77,10 @@ vec3 clear_coat_layer(MaterialInputs material, vec3 base, vec3 v) {
     vec3 n = shading_clear_coat_normal;
     float Fc = clear_coat_fresnel(max(dot(n, v), MIN_N_DOT_V)) * clear_coat_strength(material);
     shading_clear_coat_attenuation = 1.0 - Fc;
+#if defined(FACET_PRESHADED_CLEAR_COAT_ROUGHNESS)
+    vec3 coat = prefiltered_radiance_at_lod(reflect(-v, n), params.facet_clearCoatLod);
+#else
     vec3 coat = prefiltered_radiance(reflect(-v, n), clear_coat_perceptual_roughness(material));
+#endif
     return mix(base, coat, Fc);
 }

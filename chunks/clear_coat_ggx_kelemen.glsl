@@ -61,8 +61,7 @@ const float CLEAR_COAT_LOH2_MIN = 6.103515625e-5;  // 2^-14, the floor of (l·h)
 float clear_coat_lobe(MaterialInputs material, vec3 h, float LoH) {
     vec3 n = shading_clear_coat_normal;
     float NoH = clamp(dot(n, h), 0.0, 1.0);
-    float r = clear_coat_perceptual_roughness(material);
-    float alpha = r * r;
+    float alpha = clear_coat_alpha(material);
     float d = ggx_d_scaled(alpha, NoH, n, h);  // 2^12 (|n × h|² + (α n·h)²)
     float x = (4.0 * PI) * max(LoH * LoH, CLEAR_COAT_LOH2_MIN);
     float k = (GGX_D_SCALE2 * alpha) / (d * x);

@@ -19,3 +19,8 @@
 vec3 prefiltered_radiance(vec3 direction, float r) {
     return textureLod(facet_environment, direction, r * (ENVIRONMENT_MAX_LOD * (2.0 - r))).rgb;
 }
+
+// The same read at a lod the preshader formed from a parameter-only r by the formula above
+// (compiler/preshader.h; the clear coat's and the sheen's environments). A macro: the shipped
+// source holds the read alone, no function (satin_plastic's high.dir1 is near the 8 KB goal above).
+#define prefiltered_radiance_at_lod(direction, lod) textureLod(facet_environment, direction, lod).rgb

@@ -24,8 +24,15 @@
 // The sheen's colour in linear; under FACET_GAMMA_HACK colours arrive encoded with γ = 2, like
 // baseColor (shading_standard.glsl). The cloth model's defaults to √baseColor (Filament's default: a
 // two-tone sheen lighter than the fabric); a lit material's layer exists only where it is written.
+// With FACET_PRESHADED_SHEEN_COLOR and FACET_PRESHADED_SHEEN_ROUGHNESS the sheen's inputs depend
+// only on parameters: the preshader (compiler/preshader.h) forms these same values on the CPU (the
+// colour, r_s, α_s and the environment's lod r_s (2 − r_s) · (levels − 1), prefiltered_radiance's in
+// ibl_prefiltered.glsl; a cloth's r_s and α are the standard model's), and the forms below are what
+// it implements. A cloth's r_s is widened per pixel with FACET_SPECULAR_AA: then its lod is formed here.
 vec3 sheen_color(MaterialInputs material) {
-#if defined(FACET_MATERIAL_SHEEN_COLOR) && defined(FACET_GAMMA_HACK)
+#if defined(FACET_PRESHADED_SHEEN_COLOR)
+    return params.facet_sheenColor;
+#elif defined(FACET_MATERIAL_SHEEN_COLOR) && defined(FACET_GAMMA_HACK)
     vec3 sheen = clamp(material.sheenColor, 0.0, 1.0);
     return sheen * sheen;
 #elif defined(FACET_MATERIAL_SHEEN_COLOR)
@@ -42,6 +49,8 @@ vec3 sheen_color(MaterialInputs material) {
 float sheen_perceptual_roughness(MaterialInputs material) {
 #if defined(FACET_SHADING_CLOTH)
     return material_perceptual_roughness(material);
+#elif defined(FACET_PRESHADED_SHEEN_ROUGHNESS)
+    return params.facet_sheenRoughness;
 #else
     return clamp(material.sheenRoughness, MIN_PERCEPTUAL_ROUGHNESS, 1.0);
 #endif
@@ -52,6 +61,8 @@ float sheen_perceptual_roughness(MaterialInputs material) {
 float sheen_alpha(MaterialInputs material) {
 #if defined(FACET_SHADING_CLOTH)
     return material_alpha(material);
+#elif defined(FACET_PRESHADED_SHEEN_ROUGHNESS)
+    return params.facet_sheenAlpha;
 #else
     float perceptualRoughness = sheen_perceptual_roughness(material);
     return perceptualRoughness * perceptualRoughness;
@@ -78,6 +89,8 @@ vec3 sheen_layer(MaterialInputs material, vec3 base, vec3 n, vec3 v) {
 #endif
 #if defined(FACET_IBL_TWO_MIP)
     vec3 radiance = two_mip_radiance(reflect(-v, n), perceptualRoughness);
+#elif defined(FACET_PRESHADED_SHEEN_ROUGHNESS) && !(defined(FACET_SHADING_CLOTH) && defined(FACET_SPECULAR_AA))
+    vec3 radiance = prefiltered_radiance_at_lod(reflect(-v, n), params.facet_sheenLod);
 #else
     vec3 radiance = prefiltered_radiance(reflect(-v, n), perceptualRoughness);
 #endif

@@ -319,6 +319,11 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
     if (in.preshade->diffuseColor) s += "#define FACET_PRESHADED_DIFFUSE_COLOR 1\n";
     if (in.preshade->f0) s += "#define FACET_PRESHADED_F0 1\n";
     if (in.preshade->roughness) s += "#define FACET_PRESHADED_ROUGHNESS 1\n";
+    if (in.preshade->clearCoat) s += "#define FACET_PRESHADED_CLEAR_COAT 1\n";
+    if (in.preshade->clearCoatRoughness) s += "#define FACET_PRESHADED_CLEAR_COAT_ROUGHNESS 1\n";
+    if (in.preshade->anisotropy) s += "#define FACET_PRESHADED_ANISOTROPY 1\n";
+    if (in.preshade->sheenColor) s += "#define FACET_PRESHADED_SHEEN_COLOR 1\n";
+    if (in.preshade->sheenRoughness) s += "#define FACET_PRESHADED_SHEEN_ROUGHNESS 1\n";
   }
   if (in.material.shading == "lit") {
     // Image-based ambient (docs/ibl.md, "In the shaders"): the tier's specular model, SH bands for

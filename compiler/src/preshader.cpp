@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "facet/abi/shader_abi.h"
 #include "facet/compiler/glsl_library.h"
 #include "facet/ir/uniform_values.h"
 
@@ -96,10 +97,13 @@ class ProgramBuilder {
     regs_ = m.regs;
   }
   std::vector<PreshaderOp> take() { return std::move(ops_); }
-  // The surface expressions may use all registers but kDerivationRegisters, which the model's
-  // derivations (at most 12) then take: those never run out.
+  // The surface expressions may use all registers but kDerivationRegisters, which the models'
+  // derivations then take, one group at a time (at most 12 each): those never run out.
   static constexpr unsigned kDerivationRegisters = 16;
   void startDerivations() { limit_ = package::kPreshaderRegisters; }
+  // A group's registers are free again once it has stored its members: no later group reads them.
+  unsigned groupStart() const { return next_; }
+  void endGroup(unsigned start) { next_ = start; }
 
  private:
   static bool isFloat(ir::Type t) {
@@ -176,10 +180,12 @@ std::optional<uint8_t> output(ProgramBuilder& b, const ir::Material& material, c
   return b.constant(k);
 }
 
-// The registers of the standard model's inputs, clamped as chunks/shading_standard.glsl clamps
-// them; unset where an input cannot be preshaded.
+// The registers of the models' inputs, clamped as their chunks clamp them
+// (chunks/shading_standard.glsl, clear_coat_ambient.glsl, anisotropy_frame.glsl, sheen_layer.glsl);
+// unset where an input cannot be preshaded or its model is not the material's.
 struct Inputs {
   std::optional<uint8_t> baseColor, metallic, reflectance, roughness;
+  std::optional<uint8_t> clearCoat, clearCoatRoughness, anisotropy, sheenColor, sheenRoughness;
 };
 
 // Whether the output reads a parameter (a default or a constant expression does not).
@@ -187,6 +193,8 @@ bool readsParameter(const ir::Material& material, const char* name) {
   auto id = ir::outputValue(material, name);
   return id && ir::readsParameter(material, *id);
 }
+
+bool writes(const ir::Material& material, const char* name) { return ir::outputValue(material, name).has_value(); }
 
 Inputs clampedInputs(ProgramBuilder& b, const ir::Material& material) {
   Inputs in;
@@ -201,12 +209,24 @@ Inputs clampedInputs(ProgramBuilder& b, const ir::Material& material) {
   in.metallic = clamped("metallic", 0.0f);
   in.reflectance = clamped("reflectance", 0.0f);
   in.roughness = clamped("roughness", minPerceptualRoughness());
+  // The other models' inputs exist in the shaders only where the material writes the output that
+  // brings the model (compiler/src/assemble.cpp: writesClearCoat, writesAnisotropy, writesSheenLayer),
+  // and the cloth model reads none of the standard model's layers.
+  if (!material.cloth && writes(material, "clearCoat")) {
+    in.clearCoat = clamped("clearCoat", 0.0f);
+    in.clearCoatRoughness = clamped("clearCoatRoughness", minPerceptualRoughness());
+  }
+  if (!material.cloth && writes(material, "anisotropy")) in.anisotropy = clamped("anisotropy", -1.0f);
+  if (writes(material, "sheenColor")) {
+    in.sheenColor = clamped("sheenColor", 0.0f);
+    if (!material.cloth) in.sheenRoughness = clamped("sheenRoughness", minPerceptualRoughness());
+  }
   return in;
 }
 
-// std140: a vec3 aligns to 16, a float to 4 and packs into a vec3's fourth slot.
+// std140: a vec3 aligns to 16, a vec2 to 8, a float to 4 and packs into a vec3's fourth slot.
 void addMember(PreshadeLayout& layout, uint32_t* offset, const char* type, const char* name, uint32_t components) {
-  const uint32_t align = components == 1 ? 4 : 16;
+  const uint32_t align = components == 1 ? 4 : components == 2 ? 8 : 16;
   *offset = (*offset + align - 1) / align * align;
   layout.members.push_back({type, name, *offset, components});
   *offset += 4 * components;
@@ -218,16 +238,40 @@ const PreshadedMember* member(const PreshadeLayout& layout, std::string_view nam
   return nullptr;
 }
 
+// A `const float NAME = value;` of a chunk: the preshader's bounds are the chunks' own.
+float chunkConstant(const char* chunk, const char* name) {
+  const std::string& text = glslLibrary().at(chunk);
+  const std::string decl = std::string("const float ") + name + " = ";
+  const size_t at = text.find(decl);
+  if (at == std::string::npos) throw std::logic_error(std::string("chunks/") + chunk + " defines no " + name);
+  return std::strtof(text.c_str() + at + decl.size(), nullptr);
+}
+
+// lod = r · ((levels − 1) · (2 − r)): chunks/ibl_prefiltered.glsl's prefiltered_radiance, in its
+// order of operations.
+std::optional<uint8_t> environmentLod(ProgramBuilder& b, uint8_t r) {
+  const float maxLod = float(abi::kEnvironmentLevels - 1);
+  auto two = b.constant({2, 2, 2, 2});
+  auto twoMinusR = b.binary(PreshaderOpcode::Sub, *two, r);
+  auto levels = b.constant({maxLod, maxLod, maxLod, maxLod});
+  auto scaled = b.binary(PreshaderOpcode::Mul, *levels, *twoMinusR);
+  return b.binary(PreshaderOpcode::Mul, r, *scaled);
+}
+
 }  // namespace
 
 float minPerceptualRoughness() {
-  static const float value = [] {
-    const std::string& text = glslLibrary().at("precision.glsl");
-    const std::string decl = "const float MIN_PERCEPTUAL_ROUGHNESS = ";
-    const size_t at = text.find(decl);
-    if (at == std::string::npos) throw std::logic_error("chunks/precision.glsl defines no MIN_PERCEPTUAL_ROUGHNESS");
-    return std::strtof(text.c_str() + at + decl.size(), nullptr);
-  }();
+  static const float value = chunkConstant("precision.glsl", "MIN_PERCEPTUAL_ROUGHNESS");
+  return value;
+}
+
+float anisotropyBendMax() {
+  static const float value = chunkConstant("anisotropy_frame.glsl", "ANISOTROPY_BEND_MAX");
+  return value;
+}
+
+float anisotropyAlphaMin() {
+  static const float value = chunkConstant("anisotropy_frame.glsl", "ANISOTROPY_ALPHA_MIN");
   return value;
 }
 
@@ -253,12 +297,36 @@ PreshadeLayout planPreshade(const ir::Material& material, const ParamLayout& par
   layout.f0 = !material.cloth && in.baseColor && in.metallic && in.reflectance &&
               reads({"baseColor", "metallic", "reflectance"});
   layout.roughness = in.roughness && reads({"roughness"});
-  if (!layout.diffuseColor && !layout.f0 && !layout.roughness) return layout;
+  layout.clearCoat = in.clearCoat && reads({"clearCoat"});
+  layout.clearCoatRoughness = in.clearCoatRoughness && reads({"clearCoatRoughness"});
+  layout.anisotropy = in.anisotropy && in.roughness && reads({"anisotropy", "roughness"});
+  layout.sheenColor = in.sheenColor && reads({"sheenColor"});
+  // The cloth's r_s is its roughness (chunks/sheen_layer.glsl): the lod of the preshaded one.
+  layout.sheenRoughness = material.cloth ? layout.roughness : in.sheenRoughness && reads({"sheenRoughness"});
+  if (!layout.diffuseColor && !layout.f0 && !layout.roughness && !layout.clearCoat && !layout.clearCoatRoughness &&
+      !layout.anisotropy && !layout.sheenColor && !layout.sheenRoughness)
+    return layout;
   uint32_t offset = params.blockSize;
   if (layout.diffuseColor) addMember(layout, &offset, "vec3", "facet_diffuseColor", 3);
   if (layout.roughness) addMember(layout, &offset, "float", "facet_perceptualRoughness", 1);
   if (layout.f0) addMember(layout, &offset, "vec3", "facet_f0", 3);
   if (layout.roughness) addMember(layout, &offset, "float", "facet_alpha", 1);
+  if (layout.sheenColor) addMember(layout, &offset, "vec3", "facet_sheenColor", 3);
+  if (layout.sheenRoughness) addMember(layout, &offset, "float", "facet_sheenLod", 1);
+  if (layout.sheenRoughness && !material.cloth) {
+    addMember(layout, &offset, "float", "facet_sheenRoughness", 1);
+    addMember(layout, &offset, "float", "facet_sheenAlpha", 1);
+  }
+  if (layout.clearCoat) addMember(layout, &offset, "float", "facet_clearCoat", 1);
+  if (layout.clearCoatRoughness) {
+    addMember(layout, &offset, "float", "facet_clearCoatAlpha", 1);
+    addMember(layout, &offset, "float", "facet_clearCoatLod", 1);
+  }
+  if (layout.anisotropy) {
+    addMember(layout, &offset, "float", "facet_anisotropy", 1);
+    addMember(layout, &offset, "float", "facet_anisotropicBend", 1);
+    addMember(layout, &offset, "vec2", "facet_anisotropicAlpha", 2);
+  }
   layout.blockSize = (offset + 15) / 16 * 16;
   return layout;
 }
@@ -271,6 +339,7 @@ std::vector<PreshaderOp> preshaderProgram(const ir::Material& material, const Pa
   b.startDerivations();
   // The formulas of chunks/shading_standard.glsl (material_diffuse_color, material_f0,
   // material_perceptual_roughness), which keeps them as the per-pixel form.
+  const unsigned standardGroup = b.groupStart();
   std::optional<uint8_t> oneMinusMetallic;
   if (layout.diffuseColor || layout.f0) {
     auto one = b.constant({1, 1, 1, 1});
@@ -298,10 +367,72 @@ std::vector<PreshaderOp> preshaderProgram(const ir::Material& material, const Pa
     }
     b.store(*f0, member(layout, "facet_f0")->offset, 3);
   }
+  b.endGroup(standardGroup);
   if (layout.roughness) {
     auto alpha = b.binary(PreshaderOpcode::Mul, *in.roughness, *in.roughness);
     b.store(*in.roughness, member(layout, "facet_perceptualRoughness")->offset, 1);
     b.store(*alpha, member(layout, "facet_alpha")->offset, 1);
+  }
+  auto store = [&](std::optional<uint8_t> r, const char* name) {
+    const PreshadedMember* m = member(layout, name);
+    b.store(*r, m->offset, m->components);
+  };
+  // chunks/sheen_layer.glsl (sheen_color, sheen_perceptual_roughness, sheen_alpha) and the
+  // environment's lod at r_s that sheen_layer reads.
+  if (layout.sheenColor) {
+    const bool gamma = tier.colorSpace == permutations::ColorSpace::GammaHack;  // encoded with γ = 2
+    const unsigned group = b.groupStart();
+    store(gamma ? b.binary(PreshaderOpcode::Mul, *in.sheenColor, *in.sheenColor) : in.sheenColor, "facet_sheenColor");
+    b.endGroup(group);
+  }
+  if (layout.sheenRoughness) {
+    const unsigned group = b.groupStart();
+    const uint8_t r = material.cloth ? *in.roughness : *in.sheenRoughness;
+    store(environmentLod(b, r), "facet_sheenLod");
+    if (!material.cloth) {
+      store(r, "facet_sheenRoughness");
+      store(b.binary(PreshaderOpcode::Mul, r, r), "facet_sheenAlpha");
+    }
+    b.endGroup(group);
+  }
+  // chunks/clear_coat_ambient.glsl (clear_coat_strength, the environment's lod at r_c in
+  // clear_coat_layer) and clear_coat_ggx_kelemen.glsl (α_c = r_c²).
+  if (layout.clearCoat) store(in.clearCoat, "facet_clearCoat");
+  if (layout.clearCoatRoughness) {
+    const unsigned group = b.groupStart();
+    const uint8_t r = *in.clearCoatRoughness;
+    store(b.binary(PreshaderOpcode::Mul, r, r), "facet_clearCoatAlpha");
+    store(environmentLod(b, r), "facet_clearCoatLod");
+    b.endGroup(group);
+  }
+  // chunks/anisotropy_frame.glsl: k = clamp(anisotropy, −1, 1),
+  // (α_t, α_b) = clamp(α · (1 + k, 1 − k), ANISOTROPY_ALPHA_MIN, 1) with α = r² (material_alpha) and
+  // the reflection's bend min(|k| · clamp(5 r, 0, 1), ANISOTROPY_BEND_MAX), where
+  // |k| = clamp(k, 0, 1) − clamp(k, −1, 0) (one side is 0: exact) and the min is a clamp from 0
+  // (the product is ≥ 0).
+  if (layout.anisotropy) {
+    const unsigned group = b.groupStart();
+    const uint8_t k = *in.anisotropy;
+    store(k, "facet_anisotropy");
+    // (One op per statement: the order of the ops is the package's bytes, not left to the order in
+    // which a compiler evaluates arguments.)
+    auto positive = b.clamp(k, 0.0f, 1.0f);
+    auto negative = b.clamp(k, -1.0f, 0.0f);
+    auto absK = b.binary(PreshaderOpcode::Sub, *positive, *negative);
+    auto five = b.constant({5, 5, 5, 5});
+    auto fiveR = b.binary(PreshaderOpcode::Mul, *five, *in.roughness);
+    auto fade = b.clamp(*fiveR, 0.0f, 1.0f);
+    auto bend = b.binary(PreshaderOpcode::Mul, *absK, *fade);
+    store(b.clamp(*bend, 0.0f, anisotropyBendMax()), "facet_anisotropicBend");
+    b.endGroup(group);
+    auto alpha = b.binary(PreshaderOpcode::Mul, *in.roughness, *in.roughness);
+    auto signs = b.constant({1, -1, 0, 0});
+    auto plusMinusK = b.binary(PreshaderOpcode::Mul, k, *signs);
+    auto one = b.constant({1, 1, 1, 1});
+    auto factors = b.binary(PreshaderOpcode::Add, *one, *plusMinusK);  // (1 + k, 1 − k)
+    auto scaled = b.binary(PreshaderOpcode::Mul, *alpha, *factors);
+    store(b.clamp(*scaled, anisotropyAlphaMin(), 1.0f), "facet_anisotropicAlpha");
+    b.endGroup(group);
   }
   return b.take();
 }

@@ -301,3 +301,280 @@ TEST(PreshaderCompiler, NoParameterClampLeftInRedPlasticsFragmentStage) {
     EXPECT_GT(clampsOfParameters(fragmentSpirv(perPixel->package, key)), 0) << key << ": the check sees clamps";
   }
 }
+
+namespace {
+
+// What the fragment stage still computes from the material block alone. An id is parameter-only
+// when its operands are block loads, constants or other parameter-only ids; `raw` taints only the
+// parameters' own members (std140 offset below the parameter block's size), not the derived ones.
+struct ParameterOnlyWork {
+  int ops = 0;              // parameter-only results of anything but a load or a move
+  int environmentLods = 0;  // explicit-lod reads whose lod is such a result (arithmetic, not a load)
+};
+
+ParameterOnlyWork parameterOnlyWork(const std::vector<uint8_t>& spirv, uint32_t paramBlockSize, bool raw) {
+  std::vector<uint32_t> words(spirv.size() / 4);
+  std::memcpy(words.data(), spirv.data(), words.size() * 4);
+  std::istringstream text(facet::compiler::disassembleSpirv(words));
+  std::map<std::string, std::map<std::string, std::string>> decorations;  // id -> decoration -> value
+  std::map<std::string, std::map<std::string, uint32_t>> memberOffsets;   // struct -> member -> offset
+  std::vector<std::vector<std::string>> lines;
+  for (std::string line; std::getline(text, line);) {
+    std::istringstream fields(line);
+    std::vector<std::string> f;
+    for (std::string w; fields >> w;) f.push_back(w);
+    if (f.size() >= 4 && f[0] == "OpDecorate") decorations[f[1]][f[2]] = f[3];
+    if (f.size() >= 5 && f[0] == "OpMemberDecorate" && f[3] == "Offset")
+      memberOffsets[f[1]][f[2]] = uint32_t(std::stoul(f[4]));
+    lines.push_back(std::move(f));
+  }
+  std::string block;
+  for (const auto& [id, d] : decorations)
+    if (d.count("Binding") && d.at("Binding") == std::to_string(facet::abi::kMaterialBinding) &&
+        d.count("DescriptorSet") && d.at("DescriptorSet") == std::to_string(facet::abi::kMaterialBlock.set))
+      block = id;
+  EXPECT_FALSE(block.empty()) << "the material block";
+  std::map<std::string, std::string> pointee, constants;  // pointer type -> type; constant -> value
+  std::string blockStruct;
+  std::set<std::string> neutral;  // types, constants, the extended instruction set
+  for (const auto& f : lines) {
+    if (f.size() < 3 || f[1] != "=") continue;
+    if (f[2].rfind("OpType", 0) == 0 || f[2].rfind("OpConstant", 0) == 0 || f[2] == "OpExtInstImport" ||
+        f[2] == "OpUndef")
+      neutral.insert(f[0]);
+    if (f[2] == "OpTypePointer" && f.size() >= 5) pointee[f[0]] = f[4];
+    if (f[2] == "OpConstant" && f.size() >= 5) constants[f[0]] = f[4];
+    if (f[2] == "OpVariable" && f[0] == block) blockStruct = pointee[f[3]];
+  }
+  const std::set<std::string> moves = {"OpLoad",       "OpCompositeExtract", "OpVectorShuffle", "OpCompositeConstruct",
+                                       "OpCopyObject", "OpFConvert"};
+  std::set<std::string> loaded, computed;  // parameter-only ids: moved from the block only, or computed
+  ParameterOnlyWork work;
+  for (const auto& f : lines) {  // SSA: definitions precede uses within a function
+    if (f.size() < 4 || f[1] != "=") continue;
+    if ((f[2] == "OpAccessChain" || f[2] == "OpInBoundsAccessChain") && f.size() >= 6 && f[4] == block) {
+      const std::string& member = constants[f[5]];
+      if (!raw || memberOffsets[blockStruct][member] < paramBlockSize) loaded.insert(f[0]);
+      continue;
+    }
+    if (f[2] == "OpImageSampleExplicitLod") {
+      for (size_t i = 4; i + 1 < f.size(); ++i)
+        if (f[i] == "Lod" && computed.count(f[i + 1])) ++work.environmentLods;
+      continue;
+    }
+    bool any = false, all = true, anyComputed = false;
+    for (size_t i = 3; i < f.size(); ++i) {
+      if (f[i].empty() || f[i][0] != '%') continue;  // literals, extended instruction names
+      if (loaded.count(f[i]) || computed.count(f[i])) {
+        any = true;
+        anyComputed = anyComputed || computed.count(f[i]) > 0;
+      } else if (!neutral.count(f[i])) {
+        all = false;
+      }
+    }
+    if (!any || !all) continue;
+    if (moves.count(f[2]) && !anyComputed) {
+      loaded.insert(f[0]);
+    } else {
+      computed.insert(f[0]);
+      if (!moves.count(f[2])) ++work.ops;
+    }
+  }
+  return work;
+}
+
+// The derived members a variant's GLSL declares ("facet_x;  // @offset, preshaded"), and the
+// defines it was assembled with.
+struct EmittedPreshade {
+  std::map<std::string, uint32_t> offsets;
+  std::set<std::string> defines;
+};
+
+EmittedPreshade emittedPreshade(const facet::compiler::BuildResult& built, const std::string& fileName) {
+  EmittedPreshade e;
+  for (const auto& f : built.sources) {
+    if (f.name != fileName) continue;
+    std::istringstream lines(f.text);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("#define FACET_PRESHADED_", 0) == 0) e.defines.insert(line.substr(8, line.find(' ', 8) - 8));
+      const size_t at = line.find(";  // @");
+      if (at == std::string::npos || line.find(", preshaded") == std::string::npos) continue;
+      const size_t name = line.rfind(' ', at) + 1;
+      e.offsets[line.substr(name, at - name)] = uint32_t(std::stoul(line.substr(at + 7)));
+    }
+  }
+  EXPECT_FALSE(e.offsets.empty()) << fileName;
+  return e;
+}
+
+}  // namespace
+
+// The clear coat's, anisotropy's and the sheen's inputs of the example materials that write them
+// from parameters leave the fragment stage in every tier: nothing is computed there from the
+// parameters alone (their clamps, α_c, the lods, (α_t, α_b)); built without the preshader the same
+// variants compute them per pixel. The environment's lods formed from parameters per pixel are the
+// base specular's alone (red_plastic's count: the standard model's lod is not preshaded); the
+// cloth model has none.
+TEST(PreshaderCompiler, NoParameterOnlyWorkLeftInTheModelsFragmentStages) {
+  auto reference = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
+  ASSERT_TRUE(reference);
+  for (const std::string name : {"car_paint", "brushed_metal", "satin_plastic", "velvet"}) {
+    const std::string path = facet::test::examplePath("materials/" + name + ".mat");
+    auto preshaded = facet::test::buildFile(path);
+    facet::compiler::BuildOptions perPixelOptions;
+    perPixelOptions.preshader = false;
+    auto perPixel = facet::test::buildFile(path, perPixelOptions);
+    ASSERT_TRUE(preshaded && perPixel);
+    const uint32_t params = preshaded->package.material.paramBlockSize;
+    for (const char* key : {"reference.dir1", "high.dir0", "high.dir1", "mid.dir1", "low.dir1"}) {
+      SCOPED_TRACE(name + " " + key);
+      const ParameterOnlyWork on = parameterOnlyWork(fragmentSpirv(preshaded->package, key), params, true);
+      EXPECT_EQ(on.ops, 0);
+      EXPECT_GT(parameterOnlyWork(fragmentSpirv(perPixel->package, key), params, true).ops, 0) << "the check sees them";
+      const ParameterOnlyWork all = parameterOnlyWork(fragmentSpirv(preshaded->package, key), params, false);
+      const ParameterOnlyWork base =
+          parameterOnlyWork(fragmentSpirv(reference->package, key), reference->package.material.paramBlockSize, false);
+      EXPECT_EQ(all.environmentLods, name == "velvet" ? 0 : base.environmentLods);
+    }
+  }
+}
+
+// Each derived member holds its chunk's per-pixel formula of the default parameters (the
+// preshader's program run as the runtime runs it), and the defines say which are read.
+TEST(PreshaderCompiler, TheModelsMembersHoldTheirChunksFormulas) {
+  const float rMin = facet::compiler::minPerceptualRoughness();
+  EXPECT_FLOAT_EQ(facet::compiler::anisotropyAlphaMin(), rMin * rMin);
+  const float maxLod = float(facet::abi::kEnvironmentLevels - 1);
+  auto lod = [&](float r) { return r * (maxLod * (2.0f - r)); };  // ibl_prefiltered.glsl
+  struct Expected {
+    const char* material;
+    std::set<std::string> defines;
+    std::map<std::string, std::vector<float>> members;
+    std::map<std::string, float> params;  // instead of the defaults
+  };
+  const float alphaMetal = 0.35f * 0.35f;
+  const std::vector<Expected> cases = {
+      {"car_paint",
+       {"FACET_PRESHADED_F0", "FACET_PRESHADED_ROUGHNESS", "FACET_PRESHADED_CLEAR_COAT",
+        "FACET_PRESHADED_CLEAR_COAT_ROUGHNESS"},
+       {{"facet_clearCoat", {1.0f}}, {"facet_clearCoatAlpha", {rMin * rMin}}, {"facet_clearCoatLod", {lod(rMin)}}}},
+      {"brushed_metal",
+       {"FACET_PRESHADED_F0", "FACET_PRESHADED_ROUGHNESS", "FACET_PRESHADED_ANISOTROPY"},
+       {{"facet_anisotropy", {0.8f}},
+        {"facet_anisotropicBend", {0.8f}},  // min(0.8 · clamp(5 · 0.35, 0, 1), 1 − 2^-7)
+        {"facet_anisotropicAlpha", {alphaMetal * 1.8f, alphaMetal * 0.2f}}}},
+      // k < 0, the bend faded (5 r < 1) and α_t at ANISOTROPY_ALPHA_MIN.
+      {"brushed_metal",
+       {"FACET_PRESHADED_F0", "FACET_PRESHADED_ROUGHNESS", "FACET_PRESHADED_ANISOTROPY"},
+       {{"facet_anisotropy", {-0.6f}},
+        {"facet_anisotropicBend", {0.6f * (5.0f * 0.1f)}},
+        {"facet_anisotropicAlpha", {facet::compiler::anisotropyAlphaMin(), (0.1f * 0.1f) * 1.6f}}},
+       {{"roughness", 0.1f}, {"anisotropy", -0.6f}}},
+      {"car_paint",
+       {"FACET_PRESHADED_F0", "FACET_PRESHADED_ROUGHNESS", "FACET_PRESHADED_CLEAR_COAT",
+        "FACET_PRESHADED_CLEAR_COAT_ROUGHNESS"},
+       {{"facet_clearCoat", {0.3f}}, {"facet_clearCoatAlpha", {0.5f * 0.5f}}, {"facet_clearCoatLod", {lod(0.5f)}}},
+       {{"coat", 0.3f}, {"coatRoughness", 0.5f}}},
+      {"satin_plastic",
+       {"FACET_PRESHADED_DIFFUSE_COLOR", "FACET_PRESHADED_F0", "FACET_PRESHADED_ROUGHNESS",
+        "FACET_PRESHADED_SHEEN_COLOR", "FACET_PRESHADED_SHEEN_ROUGHNESS"},
+       {{"facet_sheenRoughness", {0.45f}}, {"facet_sheenAlpha", {0.45f * 0.45f}}, {"facet_sheenLod", {lod(0.45f)}}}},
+      {"velvet",
+       {"FACET_PRESHADED_DIFFUSE_COLOR", "FACET_PRESHADED_ROUGHNESS", "FACET_PRESHADED_SHEEN_COLOR",
+        "FACET_PRESHADED_SHEEN_ROUGHNESS"},
+       {{"facet_sheenLod", {lod(0.55f)}}}},
+  };
+  for (const Expected& c : cases) {
+    SCOPED_TRACE(c.material);
+    facet::compiler::BuildOptions options;
+    options.tiers = {facet::permutations::Tier::High};
+    options.emitSources = true;
+    auto built =
+        facet::test::buildFile(facet::test::examplePath(std::string("materials/") + c.material + ".mat"), options);
+    ASSERT_TRUE(built);
+    const pkg::Package& p = built->package;
+    const EmittedPreshade e = emittedPreshade(*built, std::string(c.material) + ".high.dir1.frag.vulkan.glsl");
+    EXPECT_EQ(e.defines, c.defines);
+    ASSERT_EQ(p.preshader.programs.size(), 1u);
+    // The parameters' defaults (linear colours, as the runtime writes them), then the program.
+    std::vector<uint8_t> block(p.preshader.blockSize, 0);
+    for (const pkg::Param& param : p.material.params)
+      for (size_t i = 0; i < param.defaultValue.size() && param.size != 0; ++i) {
+        const float v = c.params.count(param.name) ? c.params.at(param.name) : float(param.defaultValue[i]);
+        std::memcpy(block.data() + param.offset + 4 * i, &v, 4);
+      }
+    std::string error;
+    ASSERT_TRUE(facet::runtime::runPreshader(p.preshader.programs[0].ops, p.material.paramBlockSize, block, &error))
+        << error;
+    for (const auto& [member, values] : c.members) {
+      ASSERT_TRUE(e.offsets.count(member)) << member;
+      for (size_t i = 0; i < values.size(); ++i) {
+        float v;
+        std::memcpy(&v, block.data() + e.offsets.at(member) + 4 * i, 4);
+        EXPECT_FLOAT_EQ(v, values[i]) << member << "[" << i << "]";
+      }
+    }
+    if (e.offsets.count("facet_sheenColor")) {
+      float sheen[3], param[3];
+      std::memcpy(sheen, block.data() + e.offsets.at("facet_sheenColor"), 12);
+      for (const pkg::Param& q : p.material.params)
+        if (q.name == "sheen") std::memcpy(param, block.data() + q.offset, 12);
+      for (int i = 0; i < 3; ++i) EXPECT_FLOAT_EQ(sheen[i], param[i]) << "the sheen's linear colour, clamped";
+    }
+  }
+}
+
+// An input that is not parameter-only keeps the per-pixel path; the model's other inputs are
+// still preshaded.
+TEST(PreshaderCompiler, ATexturedModelInputStaysPerPixel) {
+  facet::compiler::BuildOptions options;
+  options.tiers = {facet::permutations::Tier::High};
+  options.emitSources = true;
+  auto built = facet::test::buildText(
+      "material textured_coat { shading lit\n"
+      " param coat: float = 1.0 in [0, 1]\n param grain: texture(linear) = vec4(0.3, 0.3, 0.3, 1.0)\n"
+      " param aniso: float = 0.5 in [-1, 1]\n"
+      " surface { clearCoat = params.coat\n clearCoatRoughness = sample(params.grain, vertex.uv0).r\n"
+      " anisotropy = params.aniso\n roughness = sample(params.grain, vertex.uv0).g } }",
+      "textured_coat.mat", options);
+  ASSERT_TRUE(built);
+  const EmittedPreshade e = emittedPreshade(*built, "textured_coat.high.dir1.frag.vulkan.glsl");
+  EXPECT_EQ(e.defines, (std::set<std::string>{"FACET_PRESHADED_CLEAR_COAT"}));
+  EXPECT_EQ(e.offsets.count("facet_clearCoatLod"), 0u);
+  EXPECT_EQ(e.offsets.count("facet_anisotropicAlpha"), 0u) << "α_t, α_b need the textured roughness";
+}
+
+// Specular anti-aliasing widens the roughness per pixel (chunks/specular_antialiasing.glsl): the
+// terms derived from it, anisotropy's (α_t, α_b) and bend and a cloth's environment lod, stay per
+// pixel; k and the sheen's colour, which do not depend on it, are still preshaded.
+TEST(PreshaderCompiler, SpecularAntiAliasingKeepsTheWidenedRoughnessTermsPerPixel) {
+  facet::compiler::BuildOptions options;
+  options.tiers = {facet::permutations::Tier::High};
+  auto fragment = [](const facet::compiler::BuildResult& built) {
+    for (const pkg::Variant& v : built.package.variants)
+      if (v.key == "high.dir1")
+        for (const pkg::Shader& s : v.shaders)
+          if (s.stage == pkg::Stage::Fragment && s.target == pkg::Target::GlslEs300)
+            return std::string(s.code.begin(), s.code.end());
+    ADD_FAILURE() << "no high.dir1";
+    return std::string();
+  };
+  auto brushed = facet::test::buildText(
+      "material brushed { shading lit\n specularAntiAliasing { variance 0.02 threshold 0.2 }\n"
+      " param rough: float = 0.3 in [0, 1]\n param k: float = 0.8 in [-1, 1]\n"
+      " surface { metallic = 1.0\n roughness = params.rough\n anisotropy = params.k } }",
+      "brushed.mat", options);
+  auto cloth = facet::test::buildText(
+      "material felt { shading cloth\n specularAntiAliasing { variance 0.02 threshold 0.2 }\n"
+      " param rough: float = 0.6 in [0, 1]\n param sheen: color = vec3(0.5, 0.5, 0.5)\n"
+      " surface { roughness = params.rough\n sheenColor = params.sheen } }",
+      "felt.mat", options);
+  ASSERT_TRUE(brushed && cloth);
+  const std::string b = fragment(*brushed), c = fragment(*cloth);
+  EXPECT_NE(b.find("params.facet_anisotropy;"), std::string::npos) << b;
+  EXPECT_EQ(b.find("params.facet_anisotropicAlpha"), std::string::npos);
+  EXPECT_EQ(b.find("params.facet_anisotropicBend"), std::string::npos);
+  EXPECT_NE(b.find("clamp(alpha*vec2(1.0+k,1.0-k)"), std::string::npos);
+  EXPECT_NE(c.find("params.facet_sheenColor"), std::string::npos) << c;
+  EXPECT_EQ(c.find("params.facet_sheenLod"), std::string::npos);
+}

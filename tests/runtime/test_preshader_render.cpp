@@ -49,10 +49,13 @@ std::vector<uint8_t> render(facet::runtime::RenderBackend& backend, const facet:
 }
 
 // Three materials (two fully preshaded, one not at all) and a textured one (roughness only),
-// in each tier, rendered from both packages: within one 8-bit step. The inputs are the same
-// formulas evaluated in fp32 on the CPU instead of at the tier's precision per pixel.
+// and the models' examples (the clear coat's, anisotropy's and the sheen's parameter-only inputs
+// preshaded, with instances' own parameters), in each tier, rendered from both packages: within
+// one 8-bit step. The inputs are the same formulas evaluated in fp32 on the CPU instead of at the
+// tier's precision per pixel.
 void expectSameImages(facet::runtime::RenderBackend& backend) {
-  for (const char* file : {"scenes/spheres.json", "scenes/tiles.json"}) {
+  for (const char* file : {"scenes/spheres.json", "scenes/tiles.json", "scenes/car_paint.json",
+                           "scenes/brushed_metal.json", "scenes/satin.json", "scenes/velvet.json"}) {
     std::string error;
     auto scene = facet::runtime::loadScene(facet::test::examplePath(file), &error);
     ASSERT_TRUE(scene) << error;

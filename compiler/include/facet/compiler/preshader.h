@@ -1,6 +1,8 @@
-// The preshader (Unreal's term): the standard model's inputs that depend only on parameters
-// (diffuse colour, f0, clamped perceptual roughness and α = r², chunks/shading_standard.glsl)
-// leave the fragment stage. The compiler appends them to "MaterialParams" as members after the
+// The preshader (Unreal's term): the shading inputs that depend only on parameters leave the
+// fragment stage: the standard model's (diffuse colour, f0, clamped perceptual roughness and
+// α = r², chunks/shading_standard.glsl) and the other models' terms of their own inputs (the clear
+// coat's strength, α_c and environment lod; anisotropy's k, (α_t, α_b) and bend; the sheen's colour, r_s,
+// α_s and environment lod: docs/material-models.md). The compiler appends them to "MaterialParams" as members after the
 // parameters and writes, per variant, a program (package::PreshaderProgram) that the runtime runs
 // on the CPU whenever an instance's parameters change. The program holds the surface program's
 // expressions for the inputs and the model's derivations as plain ops, so the runtime needs no
@@ -20,7 +22,7 @@ namespace facet::compiler {
 
 // A derived member of the parameter block: GLSL type and name, std140 offset.
 struct PreshadedMember {
-  const char* type;  // "vec3" or "float"
+  const char* type;  // "vec3", "vec2" or "float"
   const char* name;  // e.g. "facet_f0"
   uint32_t offset;
   uint32_t components;
@@ -34,6 +36,15 @@ struct PreshadeLayout {
   bool diffuseColor = false;  // FACET_PRESHADED_DIFFUSE_COLOR: from baseColor, metallic
   bool f0 = false;            // FACET_PRESHADED_F0: from baseColor, metallic, reflectance
   bool roughness = false;     // FACET_PRESHADED_ROUGHNESS: perceptual roughness and α, from roughness
+  bool clearCoat = false;     // FACET_PRESHADED_CLEAR_COAT: the coat's strength, from clearCoat
+  // FACET_PRESHADED_CLEAR_COAT_ROUGHNESS: α_c = r_c² and the coat's environment lod, from clearCoatRoughness
+  bool clearCoatRoughness = false;
+  // FACET_PRESHADED_ANISOTROPY: k, (α_t, α_b) and the reflection's bend, from anisotropy and roughness
+  bool anisotropy = false;
+  bool sheenColor = false;  // FACET_PRESHADED_SHEEN_COLOR: the sheen's linear colour, from sheenColor
+  // FACET_PRESHADED_SHEEN_ROUGHNESS: r_s, α_s = r_s² and the sheen's environment lod, from
+  // sheenRoughness (a sheen layer); a cloth material's r_s is its roughness: the lod alone
+  bool sheenRoughness = false;
   std::vector<PreshadedMember> members;
   uint32_t blockSize = 0;  // parameters and derived members, std140; 0: nothing preshaded
   bool any() const { return blockSize != 0; }
@@ -49,5 +60,10 @@ std::vector<package::PreshaderOp> preshaderProgram(const ir::Material& material,
 
 // MIN_PERCEPTUAL_ROUGHNESS as chunks/precision.glsl defines it (the one place it is written).
 float minPerceptualRoughness();
+
+// ANISOTROPY_ALPHA_MIN and ANISOTROPY_BEND_MAX as chunks/anisotropy_frame.glsl defines them (the
+// one place each is written).
+float anisotropyAlphaMin();
+float anisotropyBendMax();
 
 }  // namespace facet::compiler

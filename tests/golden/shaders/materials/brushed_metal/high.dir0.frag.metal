@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_anisotropy;
+    float facet_anisotropicBend;
+    float2 facet_anisotropicAlpha;
 };
 
 struct main0_out
@@ -32,40 +35,38 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _641 = normalize(half3(in.v_normal));
-    float3 _645 = fast::normalize(in.v_toEye);
-    half3 _743 = half4(in.v_tangent).xyz;
-    half3 _750 = _743 - (_641 * dot(_641, _743));
-    half _752 = _641.z;
-    half3 _1250;
-    if (float(abs(_752)) < 0.5)
+    half3 _622 = normalize(half3(in.v_normal));
+    float3 _626 = fast::normalize(in.v_toEye);
+    half3 _726 = half4(in.v_tangent).xyz;
+    half3 _733 = _726 - (_622 * dot(_622, _726));
+    half _735 = _622.z;
+    half3 _1208;
+    if (float(abs(_735)) < 0.5)
     {
-        _1250 = half3(-_641.y, _641.x, half(0.0));
+        _1208 = half3(-_622.y, _622.x, half(0.0));
     }
     else
     {
-        _1250 = half3(half(0.0), -_752, _641.y);
+        _1208 = half3(half(0.0), -_735, _622.y);
     }
-    half3 _779 = normalize(half3(select(float3(_1250), float3(_750), bool3(float(dot(_750, _750)) > 0.001000000047497451305389404296875))));
-    half _1012 = max(dot(_641, half3(_645)), half(9.9999997473787516355514526367188e-05));
-    half _1120 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
-    half3 _1252;
-    if (float(_1120) >= 0.0)
+    half3 _762 = normalize(half3(select(float3(_1208), float3(_733), bool3(float(dot(_733, _733)) > 0.001000000047497451305389404296875))));
+    half _978 = max(dot(_622, half3(_626)), half(9.9999997473787516355514526367188e-05));
+    half3 _1210;
+    if (params.facet_anisotropy >= 0.0)
     {
-        _1252 = _779;
+        _1210 = _762;
     }
     else
     {
-        _1252 = cross(_641, _779);
+        _1210 = cross(_622, _762);
     }
-    half _1072 = dot(_1252, half3(_645));
-    half _1079 = min(abs(_1120) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
-    half _1084 = fma(half(-float(_1079)), half(1.0) - _1012, half(1.0));
-    half _1087 = _1079 * _1072;
-    float4 _1127 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1012, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1156 = facet_environment.sample(facet_environmentSmplr, float3(((((_641 * _1084) + (_1252 * _1087)) * (half(512.0) * fma(_1084, _1012, _1087 * _1072))) - (half3(_645) * (half(256.0) * fma(_1084, _1084, _1087 * _1087))))), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _1036 = half4(_1156).xyz * (mix(half4(_1127).xxx, half4(_1127).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1127).y) - half(1.0)))));
-    out.fragColor = float4(half4(_1036, half(1.0)));
+    half _1038 = dot(_1210, half3(_626));
+    half _1045 = fma(half(-params.facet_anisotropicBend), half(1.0) - _978, half(1.0));
+    half _1048 = half(params.facet_anisotropicBend) * _1038;
+    float4 _1087 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_978, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1116 = facet_environment.sample(facet_environmentSmplr, float3(((((_622 * _1045) + (_1210 * _1048)) * (half(512.0) * fma(_1045, _978, _1048 * _1038))) - (half3(_626) * (half(256.0) * fma(_1045, _1045, _1048 * _1048))))), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _1002 = half4(_1116).xyz * (mix(half4(_1087).xxx, half4(_1087).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1087).y) - half(1.0)))));
+    out.fragColor = float4(half4(_1002, half(1.0)));
     return out;
 }
 

@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_anisotropy;
+    float facet_anisotropicBend;
+    float2 facet_anisotropicAlpha;
 };
 
 struct PunctualLightData
@@ -51,66 +54,63 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _941 = normalize(half3(in.v_normal));
-    float3 _947 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half3 _1082 = half4(in.v_tangent).xyz;
-    half3 _1089 = _1082 - (_941 * dot(_941, _1082));
-    half _1091 = _941.z;
-    half3 _2210;
-    if (float(abs(_1091)) < 0.5)
+    half3 _922 = normalize(half3(in.v_normal));
+    float3 _928 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half3 _1065 = half4(in.v_tangent).xyz;
+    half3 _1072 = _1065 - (_922 * dot(_922, _1065));
+    half _1074 = _922.z;
+    half3 _2166;
+    if (float(abs(_1074)) < 0.5)
     {
-        _2210 = half3(-_941.y, _941.x, half(0.0));
+        _2166 = half3(-_922.y, _922.x, half(0.0));
     }
     else
     {
-        _2210 = half3(half(0.0), -_1091, _941.y);
+        _2166 = half3(half(0.0), -_1074, _922.y);
     }
-    half3 _1118 = normalize(half3(select(float3(_2210), float3(_1089), bool3(float(dot(_1089, _1089)) > 0.001000000047497451305389404296875))));
-    half _967 = max(dot(_941, half3(_947)), half(9.9999997473787516355514526367188e-05));
-    half3 _1131 = cross(_941, _1118);
-    half _1182 = clamp(half(params.anisotropy), half(-1.0), half(1.0));
-    half2 _1177 = clamp(half2(half(1.0) + _1182, half(1.0) - _1182) * half(params.facet_alpha), half2(float2(0.007921000011265277862548828125)), half2(float2(1.0)));
-    half2 _1137 = half2(float2(1.0)) / _1177;
-    half2 _1139 = _1177 * half(128.0);
-    half _1145 = half(0.3183098733425140380859375) * (_1137.x * _1137.y);
-    half _1161 = length(half3(_1139 * half2(dot(_1118, half3(_947)), dot(_1131, half3(_947))), half(128.0) * _967));
-    half3 _2226 = select(_1131, _1118, bool3(float(_1182) >= 0.0));
-    half _1411 = dot(_2226, half3(_947));
-    half _1418 = min(abs(_1182) * clamp(half(5.0) * half(params.facet_perceptualRoughness), half(0.0), half(1.0)), half(0.9921875));
-    half _1423 = fma(half(-float(_1418)), half(1.0) - _967, half(1.0));
-    half _1426 = _1418 * _1411;
-    float4 _1466 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_967, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1495 = facet_environment.sample(facet_environmentSmplr, float3(((((_941 * _1423) + (_2226 * _1426)) * (half(512.0) * fma(_1423, _967, _1426 * _1411))) - (half3(_947) * (half(256.0) * fma(_1423, _1423, _1426 * _1426))))), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    float3 _1540 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1543 = dot(_1540, _1540);
-    float3 _1548 = _1540 * rsqrt(fast::max(_1543, 9.9999999392252902907785028219223e-09));
-    float _1552 = _1543 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1557 = fast::clamp(fma(-_1552, _1552, 1.0), 0.0, 1.0);
-    float _1576 = fast::clamp(fma(dot(-_1548, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1686 = fast::normalize(_947 + _1548);
-    half _1635 = clamp(dot(_941, half3(_1548)), half(0.0), half(1.0));
-    half _1639 = clamp(dot(_941, half3(_1686)), half(0.0), half(1.0));
-    half2 _1704 = half2(dot(_1118, half3(_1686)), dot(_1131, half3(_1686))) * _1137;
-    half _1712 = half(1.0) / fma(_1639, _1639, dot(_1704, _1704));
-    half _1753 = half(1.0) - clamp(dot(half3(_1548), half3(_1686)), half(0.0), half(1.0));
-    half _1756 = _1753 * _1753;
-    half3 _1764 = half3(float3(1.0)) - half3(float3(params.facet_f0));
-    half3 _1667 = min(((half3(float3(params.facet_f0)) + (_1764 * ((_1756 * _1756) * _1753))) * min(((_1145 * _1712) * _1712) * min(half(64.0) / fma(_1635, _1161, _967 * length(half3(_1139 * half2(dot(_1118, half3(_1548)), dot(_1131, half3(_1548))), half(128.0) * _1635))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1557) * half(_1557)) / fast::max(_1543, 9.9999997473787516355514526367188e-05)) * half(_1576)) * half(_1576)), float3(65504.0))) * _1635), half3(float3(65504.0)));
-    float3 _1822 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1825 = dot(_1822, _1822);
-    float3 _1830 = _1822 * rsqrt(fast::max(_1825, 9.9999999392252902907785028219223e-09));
-    float _1834 = _1825 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1839 = fast::clamp(fma(-_1834, _1834, 1.0), 0.0, 1.0);
-    float _1858 = fast::clamp(fma(dot(-_1830, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1968 = fast::normalize(_947 + _1830);
-    half _1917 = clamp(dot(_941, half3(_1830)), half(0.0), half(1.0));
-    half _1921 = clamp(dot(_941, half3(_1968)), half(0.0), half(1.0));
-    half2 _1986 = half2(dot(_1118, half3(_1968)), dot(_1131, half3(_1968))) * _1137;
-    half _1994 = half(1.0) / fma(_1921, _1921, dot(_1986, _1986));
-    half _2035 = half(1.0) - clamp(dot(half3(_1830), half3(_1968)), half(0.0), half(1.0));
-    half _2038 = _2035 * _2035;
-    half3 _1949 = min(((half3(float3(params.facet_f0)) + (_1764 * ((_2038 * _2038) * _2035))) * min(((_1145 * _1994) * _1994) * min(half(64.0) / fma(_1917, _1161, _967 * length(half3(_1139 * half2(dot(_1118, half3(_1830)), dot(_1131, half3(_1830))), half(128.0) * _1917))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1839) * half(_1839)) / fast::max(_1825, 9.9999997473787516355514526367188e-05)) * half(_1858)) * half(_1858)), float3(65504.0))) * _1917), half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_1495).xyz, mix(half4(_1466).xxx, half4(_1466).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1466).y) - half(1.0)))), _1667) + _1949, half(1.0)));
+    half3 _1101 = normalize(half3(select(float3(_2166), float3(_1072), bool3(float(dot(_1072, _1072)) > 0.001000000047497451305389404296875))));
+    half _948 = max(dot(_922, half3(_928)), half(9.9999997473787516355514526367188e-05));
+    half3 _1114 = cross(_922, _1101);
+    half2 _1120 = half2(float2(1.0)) / half2(params.facet_anisotropicAlpha);
+    half2 _1122 = half2(params.facet_anisotropicAlpha) * half(128.0);
+    half _1128 = half(0.3183098733425140380859375) * (_1120.x * _1120.y);
+    half _1144 = length(half3(_1122 * half2(dot(_1101, half3(_928)), dot(_1114, half3(_928))), half(128.0) * _948));
+    half3 _2182 = select(_1114, _1101, bool3(params.facet_anisotropy >= 0.0));
+    half _1377 = dot(_2182, half3(_928));
+    half _1384 = fma(half(-params.facet_anisotropicBend), half(1.0) - _948, half(1.0));
+    half _1387 = half(params.facet_anisotropicBend) * _1377;
+    float4 _1426 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_948, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1455 = facet_environment.sample(facet_environmentSmplr, float3(((((_922 * _1384) + (_2182 * _1387)) * (half(512.0) * fma(_1384, _948, _1387 * _1377))) - (half3(_928) * (half(256.0) * fma(_1384, _1384, _1387 * _1387))))), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    float3 _1500 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1503 = dot(_1500, _1500);
+    float3 _1508 = _1500 * rsqrt(fast::max(_1503, 9.9999999392252902907785028219223e-09));
+    float _1512 = _1503 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1517 = fast::clamp(fma(-_1512, _1512, 1.0), 0.0, 1.0);
+    float _1536 = fast::clamp(fma(dot(-_1508, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1646 = fast::normalize(_928 + _1508);
+    half _1595 = clamp(dot(_922, half3(_1508)), half(0.0), half(1.0));
+    half _1599 = clamp(dot(_922, half3(_1646)), half(0.0), half(1.0));
+    half2 _1664 = half2(dot(_1101, half3(_1646)), dot(_1114, half3(_1646))) * _1120;
+    half _1672 = half(1.0) / fma(_1599, _1599, dot(_1664, _1664));
+    half _1713 = half(1.0) - clamp(dot(half3(_1508), half3(_1646)), half(0.0), half(1.0));
+    half _1716 = _1713 * _1713;
+    half3 _1724 = half3(float3(1.0)) - half3(float3(params.facet_f0));
+    half3 _1627 = min(((half3(float3(params.facet_f0)) + (_1724 * ((_1716 * _1716) * _1713))) * min(((_1128 * _1672) * _1672) * min(half(64.0) / fma(_1595, _1144, _948 * length(half3(_1122 * half2(dot(_1101, half3(_1508)), dot(_1114, half3(_1508))), half(128.0) * _1595))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1517) * half(_1517)) / fast::max(_1503, 9.9999997473787516355514526367188e-05)) * half(_1536)) * half(_1536)), float3(65504.0))) * _1595), half3(float3(65504.0)));
+    float3 _1782 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1785 = dot(_1782, _1782);
+    float3 _1790 = _1782 * rsqrt(fast::max(_1785, 9.9999999392252902907785028219223e-09));
+    float _1794 = _1785 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1799 = fast::clamp(fma(-_1794, _1794, 1.0), 0.0, 1.0);
+    float _1818 = fast::clamp(fma(dot(-_1790, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _1928 = fast::normalize(_928 + _1790);
+    half _1877 = clamp(dot(_922, half3(_1790)), half(0.0), half(1.0));
+    half _1881 = clamp(dot(_922, half3(_1928)), half(0.0), half(1.0));
+    half2 _1946 = half2(dot(_1101, half3(_1928)), dot(_1114, half3(_1928))) * _1120;
+    half _1954 = half(1.0) / fma(_1881, _1881, dot(_1946, _1946));
+    half _1995 = half(1.0) - clamp(dot(half3(_1790), half3(_1928)), half(0.0), half(1.0));
+    half _1998 = _1995 * _1995;
+    half3 _1909 = min(((half3(float3(params.facet_f0)) + (_1724 * ((_1998 * _1998) * _1995))) * min(((_1128 * _1954) * _1954) * min(half(64.0) / fma(_1877, _1144, _948 * length(half3(_1122 * half2(dot(_1101, half3(_1790)), dot(_1114, half3(_1790))), half(128.0) * _1877))), half(65504.0)), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1799) * half(_1799)) / fast::max(_1785, 9.9999997473787516355514526367188e-05)) * half(_1818)) * half(_1818)), float3(65504.0))) * _1877), half3(float3(65504.0)));
+    out.fragColor = float4(half4(fma(half4(_1455).xyz, mix(half4(_1426).xxx, half4(_1426).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1426).y) - half(1.0)))), _1627) + _1909, half(1.0)));
     return out;
 }
 

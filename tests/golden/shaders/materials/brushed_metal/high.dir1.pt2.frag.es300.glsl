@@ -31,6 +31,9 @@ mediump float facet_pad28;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_anisotropy;
+mediump float facet_anisotropicBend;
+mediump vec2 facet_anisotropicAlpha;
 }
 params;
 uniform mediump samplerCube facet_environment;
@@ -105,15 +108,12 @@ return mix(dfg.xxx,dfg.yyy,f0);
 vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
 }
-const float ANISOTROPY_ALPHA_MIN=0.007921;
-const float ANISOTROPY_BEND_MAX=0.9921875;
 vec3 shading_anisotropic_t;
 float anisotropy_strength(MaterialInputs material){
-return clamp(material.anisotropy,-1.0,1.0);
+return params.facet_anisotropy;
 }
 vec2 anisotropic_alpha(MaterialInputs material,float alpha){
-float k=anisotropy_strength(material);
-return clamp(alpha*vec2(1.0+k,1.0-k),ANISOTROPY_ALPHA_MIN,1.0);
+return params.facet_anisotropicAlpha;
 }
 void anisotropy_frame(MaterialInputs material,vec3 n){
 vec3 t=v_tangent.xyz;
@@ -126,7 +126,7 @@ vec3 anisotropic_reflection(MaterialInputs material,vec3 n,vec3 v,float NoV,floa
 float k=anisotropy_strength(material);
 vec3 e=k>=0.0?shading_anisotropic_t:cross(n,shading_anisotropic_t);
 float EoV=dot(e,v);
-float bend=min(abs(k)*clamp(5.0*perceptualRoughness,0.0,1.0),ANISOTROPY_BEND_MAX);
+float bend=params.facet_anisotropicBend;
 float c1=1.0-bend*(1.0-NoV);
 float c2=bend*EoV;
 float MoV=c1*NoV+c2*EoV;

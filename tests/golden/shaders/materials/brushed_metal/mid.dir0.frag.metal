@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_anisotropy;
+    float facet_anisotropicBend;
+    float2 facet_anisotropicAlpha;
 };
 
 struct main0_out

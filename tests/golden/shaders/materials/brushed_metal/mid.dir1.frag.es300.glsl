@@ -31,6 +31,9 @@ mediump float facet_pad28;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_anisotropy;
+mediump float facet_anisotropicBend;
+mediump vec2 facet_anisotropicAlpha;
 }
 params;
 uniform mediump samplerCube facet_environment;

@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_anisotropy;
+    float facet_anisotropicBend;
+    float2 facet_anisotropicAlpha;
 };
 
 struct main0_out
@@ -32,37 +35,35 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _641 = fast::normalize(in.v_normal);
-    float3 _645 = fast::normalize(in.v_toEye);
-    float3 _750 = in.v_tangent.xyz - (_641 * dot(_641, in.v_tangent.xyz));
-    float _752 = _641.z;
-    float3 _1250;
-    if (abs(_752) < 0.5)
+    float3 _622 = fast::normalize(in.v_normal);
+    float3 _626 = fast::normalize(in.v_toEye);
+    float3 _733 = in.v_tangent.xyz - (_622 * dot(_622, in.v_tangent.xyz));
+    float _735 = _622.z;
+    float3 _1208;
+    if (abs(_735) < 0.5)
     {
-        _1250 = float3(-_641.y, _641.x, 0.0);
+        _1208 = float3(-_622.y, _622.x, 0.0);
     }
     else
     {
-        _1250 = float3(0.0, -_752, _641.y);
+        _1208 = float3(0.0, -_735, _622.y);
     }
-    float3 _779 = fast::normalize(select(_1250, _750, bool3(dot(_750, _750) > 0.001000000047497451305389404296875)));
-    float _1012 = fast::max(dot(_641, _645), 9.9999997473787516355514526367188e-05);
-    float _1120 = fast::clamp(params.anisotropy, -1.0, 1.0);
-    float3 _1252;
-    if (_1120 >= 0.0)
+    float3 _762 = fast::normalize(select(_1208, _733, bool3(dot(_733, _733) > 0.001000000047497451305389404296875)));
+    float _978 = fast::max(dot(_622, _626), 9.9999997473787516355514526367188e-05);
+    float3 _1210;
+    if (params.facet_anisotropy >= 0.0)
     {
-        _1252 = _779;
+        _1210 = _762;
     }
     else
     {
-        _1252 = cross(_641, _779);
+        _1210 = cross(_622, _762);
     }
-    float _1072 = dot(_1252, _645);
-    float _1079 = fast::min(abs(_1120) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
-    float _1084 = fma(-_1079, 1.0 - _1012, 1.0);
-    float _1087 = _1079 * _1072;
-    float4 _1127 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1012, params.facet_perceptualRoughness), level(0.0));
-    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, ((((_641 * _1084) + (_1252 * _1087)) * (512.0 * fma(_1084, _1012, _1087 * _1072))) - (_645 * (256.0 * fma(_1084, _1084, _1087 * _1087)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_1127.xxx, _1127.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1127.y) - 1.0)))), 1.0);
+    float _1038 = dot(_1210, _626);
+    float _1045 = fma(-params.facet_anisotropicBend, 1.0 - _978, 1.0);
+    float _1048 = params.facet_anisotropicBend * _1038;
+    float4 _1087 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_978, params.facet_perceptualRoughness), level(0.0));
+    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, ((((_622 * _1045) + (_1210 * _1048)) * (512.0 * fma(_1045, _978, _1048 * _1038))) - (_626 * (256.0 * fma(_1045, _1045, _1048 * _1048)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_1087.xxx, _1087.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1087.y) - 1.0)))), 1.0);
     return out;
 }
 

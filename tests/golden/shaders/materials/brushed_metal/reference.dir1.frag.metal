@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_anisotropy;
+    float facet_anisotropicBend;
+    float2 facet_anisotropicAlpha;
 };
 
 struct PunctualLightData
@@ -51,41 +54,38 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _835 = fast::normalize(in.v_normal);
-    float3 _839 = fast::normalize(in.v_toEye);
-    float3 _965 = in.v_tangent.xyz - (_835 * dot(_835, in.v_tangent.xyz));
-    float _967 = _835.z;
-    float3 _1667;
-    if (abs(_967) < 0.5)
+    float3 _816 = fast::normalize(in.v_normal);
+    float3 _820 = fast::normalize(in.v_toEye);
+    float3 _948 = in.v_tangent.xyz - (_816 * dot(_816, in.v_tangent.xyz));
+    float _950 = _816.z;
+    float3 _1623;
+    if (abs(_950) < 0.5)
     {
-        _1667 = float3(-_835.y, _835.x, 0.0);
+        _1623 = float3(-_816.y, _816.x, 0.0);
     }
     else
     {
-        _1667 = float3(0.0, -_967, _835.y);
+        _1623 = float3(0.0, -_950, _816.y);
     }
-    float3 _994 = fast::normalize(select(_1667, _965, bool3(dot(_965, _965) > 0.001000000047497451305389404296875)));
-    float _859 = fast::max(dot(_835, _839), 9.9999997473787516355514526367188e-05);
-    float3 _1007 = cross(_835, _994);
-    float _1058 = fast::clamp(params.anisotropy, -1.0, 1.0);
-    float2 _1053 = fast::clamp(float2(1.0 + _1058, 1.0 - _1058) * params.facet_alpha, float2(0.007921000011265277862548828125), float2(1.0));
-    float2 _1013 = float2(1.0) / _1053;
-    float2 _1015 = _1053 * 128.0;
-    float3 _1681 = select(_1007, _994, bool3(_1058 >= 0.0));
-    float _1287 = dot(_1681, _839);
-    float _1294 = fast::min(abs(_1058) * fast::clamp(5.0 * params.facet_perceptualRoughness, 0.0, 1.0), 0.9921875);
-    float _1299 = fma(-_1294, 1.0 - _859, 1.0);
-    float _1302 = _1294 * _1287;
-    float4 _1342 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_859, params.facet_perceptualRoughness), level(0.0));
-    float3 _1477 = fast::normalize(_839 + frame.lightDirection.xyz);
-    float _1427 = fast::clamp(dot(_835, frame.lightDirection.xyz), 0.0, 1.0);
-    float _1431 = fast::clamp(dot(_835, _1477), 0.0, 1.0);
-    float2 _1494 = float2(dot(_994, _1477), dot(_1007, _1477)) * _1013;
-    float _1502 = 1.0 / fma(_1431, _1431, dot(_1494, _1494));
-    float _1541 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1477), 0.0, 1.0);
-    float _1544 = _1541 * _1541;
-    float3 _1574 = fma(facet_environment.sample(facet_environmentSmplr, ((((_835 * _1299) + (_1681 * _1302)) * (512.0 * fma(_1299, _859, _1302 * _1287))) - (_839 * (256.0 * fma(_1299, _1299, _1302 * _1302)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz, mix(_1342.xxx, _1342.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1342.y) - 1.0))), fast::min(((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1544 * _1544) * _1541))) * ((((0.3183098733425140380859375 * (_1013.x * _1013.y)) * _1502) * _1502) * (64.0 / fma(_1427, length(float3(_1015 * float2(dot(_994, _839), dot(_1007, _839)), 128.0 * _859)), _859 * length(float3(_1015 * float2(dot(_994, frame.lightDirection.xyz), dot(_1007, frame.lightDirection.xyz)), 128.0 * _1427)))))) * (frame.lightColor.xyz * _1427), float3(65504.0)));
-    out.fragColor = float4(_1574, 1.0);
+    float3 _977 = fast::normalize(select(_1623, _948, bool3(dot(_948, _948) > 0.001000000047497451305389404296875)));
+    float _840 = fast::max(dot(_816, _820), 9.9999997473787516355514526367188e-05);
+    float3 _990 = cross(_816, _977);
+    float2 _996 = float2(1.0) / params.facet_anisotropicAlpha;
+    float2 _998 = params.facet_anisotropicAlpha * 128.0;
+    float3 _1637 = select(_990, _977, bool3(params.facet_anisotropy >= 0.0));
+    float _1253 = dot(_1637, _820);
+    float _1260 = fma(-params.facet_anisotropicBend, 1.0 - _840, 1.0);
+    float _1263 = params.facet_anisotropicBend * _1253;
+    float4 _1302 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_840, params.facet_perceptualRoughness), level(0.0));
+    float3 _1437 = fast::normalize(_820 + frame.lightDirection.xyz);
+    float _1387 = fast::clamp(dot(_816, frame.lightDirection.xyz), 0.0, 1.0);
+    float _1391 = fast::clamp(dot(_816, _1437), 0.0, 1.0);
+    float2 _1454 = float2(dot(_977, _1437), dot(_990, _1437)) * _996;
+    float _1462 = 1.0 / fma(_1391, _1391, dot(_1454, _1454));
+    float _1501 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1437), 0.0, 1.0);
+    float _1504 = _1501 * _1501;
+    float3 _1534 = fma(facet_environment.sample(facet_environmentSmplr, ((((_816 * _1260) + (_1637 * _1263)) * (512.0 * fma(_1260, _840, _1263 * _1253))) - (_820 * (256.0 * fma(_1260, _1260, _1263 * _1263)))), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz, mix(_1302.xxx, _1302.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1302.y) - 1.0))), fast::min(((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1504 * _1504) * _1501))) * ((((0.3183098733425140380859375 * (_996.x * _996.y)) * _1462) * _1462) * (64.0 / fma(_1387, length(float3(_998 * float2(dot(_977, _820), dot(_990, _820)), 128.0 * _840)), _840 * length(float3(_998 * float2(dot(_977, frame.lightDirection.xyz), dot(_990, frame.lightDirection.xyz)), 128.0 * _1387)))))) * (frame.lightColor.xyz * _1387), float3(65504.0)));
+    out.fragColor = float4(_1534, 1.0);
     return out;
 }
 

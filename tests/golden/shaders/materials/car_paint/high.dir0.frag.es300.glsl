@@ -30,11 +30,13 @@ mediump float facet_pad28;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_clearCoat;
+mediump float facet_clearCoatAlpha;
+mediump float facet_clearCoatLod;
 }
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
-const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -102,10 +104,7 @@ return 1.0+f0*(1.0/dfg.y-1.0);
 vec3 shading_clear_coat_normal;
 float shading_clear_coat_attenuation=1.0;
 float clear_coat_strength(MaterialInputs material){
-return clamp(material.clearCoat,0.0,1.0);
-}
-float clear_coat_perceptual_roughness(MaterialInputs material){
-return clamp(material.clearCoatRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
+return params.facet_clearCoat;
 }
 float clear_coat_fresnel(float cosTheta){
 float f=1.0-cosTheta;
@@ -116,7 +115,7 @@ vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
 float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
 shading_clear_coat_attenuation=1.0-Fc;
-vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
+vec3 coat=textureLod(facet_environment,reflect(-v,n),params.facet_clearCoatLod).rgb;
 return mix(base,coat,Fc);
 }
 vec3 material_diffuse_color(MaterialInputs material){

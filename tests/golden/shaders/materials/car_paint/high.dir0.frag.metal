@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_clearCoat;
+    float facet_clearCoatAlpha;
+    float facet_clearCoatLod;
 };
 
 struct main0_out
@@ -31,18 +34,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _492 = normalize(half3(in.v_normal));
-    float3 _496 = fast::normalize(in.v_toEye);
-    half _743 = max(dot(_492, half3(_496)), half(9.9999997473787516355514526367188e-05));
-    half3 _747 = reflect(-half3(_496), _492);
-    float4 _782 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_743, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _811 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _859 = half(1.0) - _743;
-    half _862 = _859 * _859;
-    half _879 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _889 = facet_environment.sample(facet_environmentSmplr, float3(_747), level(_879 * (half(4.0) * (half(2.0) - _879))));
-    half3 _853 = mix(half4(_811).xyz * (mix(half4(_782).xxx, half4(_782).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_782).y) - half(1.0))))), half4(_889).xyz, half3(fma(half(0.959999978542327880859375), (_862 * _862) * _859, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_853, half(1.0)));
+    half3 _482 = normalize(half3(in.v_normal));
+    float3 _486 = fast::normalize(in.v_toEye);
+    half _734 = max(dot(_482, half3(_486)), half(9.9999997473787516355514526367188e-05));
+    half3 _738 = reflect(-half3(_486), _482);
+    float4 _773 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_734, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _802 = facet_environment.sample(facet_environmentSmplr, float3(_738), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _849 = half(1.0) - _734;
+    half _852 = _849 * _849;
+    float4 _837 = facet_environment.sample(facet_environmentSmplr, float3(_738), level(params.facet_clearCoatLod));
+    half3 _843 = mix(half4(_802).xyz * (mix(half4(_773).xxx, half4(_773).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_773).y) - half(1.0))))), half4(_837).xyz, half3(fma(half(0.959999978542327880859375), (_852 * _852) * _849, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_843, half(1.0)));
     return out;
 }
 

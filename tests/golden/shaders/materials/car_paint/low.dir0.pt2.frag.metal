@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_clearCoat;
+    float facet_clearCoatAlpha;
+    float facet_clearCoatLod;
 };
 
 struct PunctualLightData
@@ -50,39 +53,38 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _635 = normalize(half3(in.v_normal));
-    float3 _651 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half _823 = max(dot(_635, half3(_651)), half(9.9999997473787516355514526367188e-05));
-    half3 _827 = reflect(-half3(_651), _635);
-    float4 _863 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_823, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _892 = facet_environment.sample(facet_environmentSmplr, float3(_827), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _842 = mix(half4(_863).xxx, half4(_863).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_863).y) - half(1.0))));
-    float3 _937 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _940 = dot(_937, _937);
-    float3 _945 = _937 * rsqrt(fast::max(_940, 9.9999999392252902907785028219223e-09));
-    float _949 = _940 * float(frame.punctualLights[0].positionFalloff.w);
-    float _954 = fast::clamp(fma(-_949, _949, 1.0), 0.0, 1.0);
-    float _973 = fast::clamp(fma(dot(-_945, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half _1105 = clamp(dot(_827, half3(_945)), half(0.0), half(1.0));
-    half _1108 = _1105 * _1105;
-    half4 _1612 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1108 * _1108, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1120 = _1612.x;
-    float3 _1165 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1168 = dot(_1165, _1165);
-    float3 _1173 = _1165 * rsqrt(fast::max(_1168, 9.9999999392252902907785028219223e-09));
-    float _1177 = _1168 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1182 = fast::clamp(fma(-_1177, _1177, 1.0), 0.0, 1.0);
-    float _1201 = fast::clamp(fma(dot(-_1173, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half _1333 = clamp(dot(_827, half3(_1173)), half(0.0), half(1.0));
-    half _1336 = _1333 * _1333;
-    half4 _1638 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1336 * _1336, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1348 = _1638.x;
-    half _1396 = half(1.0) - _823;
-    half _1399 = _1396 * _1396;
-    half _1416 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _1426 = facet_environment.sample(facet_environmentSmplr, float3(_827), level(_1416 * (half(4.0) * (half(2.0) - _1416))));
-    half3 _1390 = mix(fma(half4(_892).xyz, _842, min((_842 * ((_1120 * _1120) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_954) * half(_954)) / fast::max(_940, 9.9999997473787516355514526367188e-05)) * half(_973)) * half(_973)), float3(65504.0))) * clamp(dot(_635, half3(_945)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_842 * ((_1348 * _1348) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1182) * half(_1182)) / fast::max(_1168, 9.9999997473787516355514526367188e-05)) * half(_1201)) * half(_1201)), float3(65504.0))) * clamp(dot(_635, half3(_1173)), half(0.0), half(1.0))), half3(float3(65504.0))), half4(_1426).xyz, half3(fma(half(0.959999978542327880859375), (_1399 * _1399) * _1396, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_1390, half(1.0)));
+    half3 _625 = normalize(half3(in.v_normal));
+    float3 _641 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half _814 = max(dot(_625, half3(_641)), half(9.9999997473787516355514526367188e-05));
+    half3 _818 = reflect(-half3(_641), _625);
+    float4 _854 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_814, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _883 = facet_environment.sample(facet_environmentSmplr, float3(_818), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _833 = mix(half4(_854).xxx, half4(_854).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_854).y) - half(1.0))));
+    float3 _928 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _931 = dot(_928, _928);
+    float3 _936 = _928 * rsqrt(fast::max(_931, 9.9999999392252902907785028219223e-09));
+    float _940 = _931 * float(frame.punctualLights[0].positionFalloff.w);
+    float _945 = fast::clamp(fma(-_940, _940, 1.0), 0.0, 1.0);
+    float _964 = fast::clamp(fma(dot(-_936, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1096 = clamp(dot(_818, half3(_936)), half(0.0), half(1.0));
+    half _1099 = _1096 * _1096;
+    half4 _1581 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1099 * _1099, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1111 = _1581.x;
+    float3 _1156 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1159 = dot(_1156, _1156);
+    float3 _1164 = _1156 * rsqrt(fast::max(_1159, 9.9999999392252902907785028219223e-09));
+    float _1168 = _1159 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1173 = fast::clamp(fma(-_1168, _1168, 1.0), 0.0, 1.0);
+    float _1192 = fast::clamp(fma(dot(-_1164, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1324 = clamp(dot(_818, half3(_1164)), half(0.0), half(1.0));
+    half _1327 = _1324 * _1324;
+    half4 _1607 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1327 * _1327, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1339 = _1607.x;
+    half _1386 = half(1.0) - _814;
+    half _1389 = _1386 * _1386;
+    float4 _1374 = facet_environment.sample(facet_environmentSmplr, float3(_818), level(params.facet_clearCoatLod));
+    half3 _1380 = mix(fma(half4(_883).xyz, _833, min((_833 * ((_1111 * _1111) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_945) * half(_945)) / fast::max(_931, 9.9999997473787516355514526367188e-05)) * half(_964)) * half(_964)), float3(65504.0))) * clamp(dot(_625, half3(_936)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_833 * ((_1339 * _1339) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1173) * half(_1173)) / fast::max(_1159, 9.9999997473787516355514526367188e-05)) * half(_1192)) * half(_1192)), float3(65504.0))) * clamp(dot(_625, half3(_1164)), half(0.0), half(1.0))), half3(float3(65504.0))), half4(_1374).xyz, half3(fma(half(0.959999978542327880859375), (_1389 * _1389) * _1386, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_1380, half(1.0)));
     return out;
 }
 

@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_clearCoat;
+    float facet_clearCoatAlpha;
+    float facet_clearCoatLod;
 };
 
 struct main0_out
@@ -31,18 +34,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _355 = normalize(half3(in.v_normal));
-    float3 _359 = fast::normalize(in.v_toEye);
-    half _501 = max(dot(_355, half3(_359)), half(9.9999997473787516355514526367188e-05));
-    half3 _505 = reflect(-half3(_359), _355);
-    float4 _540 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_501, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _569 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _617 = half(1.0) - _501;
-    half _620 = _617 * _617;
-    half _637 = clamp(half(params.coatRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _647 = facet_environment.sample(facet_environmentSmplr, float3(_505), level(_637 * (half(4.0) * (half(2.0) - _637))));
-    half3 _611 = mix(half4(_569).xyz * (mix(half4(_540).xxx, half4(_540).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_540).y) - half(1.0))))), half4(_647).xyz, half3(fma(half(0.959999978542327880859375), (_620 * _620) * _617, half(0.039999999105930328369140625)) * clamp(half(params.coat), half(0.0), half(1.0))));
-    out.fragColor = float4(half4(_611, half(1.0)));
+    half3 _345 = normalize(half3(in.v_normal));
+    float3 _349 = fast::normalize(in.v_toEye);
+    half _492 = max(dot(_345, half3(_349)), half(9.9999997473787516355514526367188e-05));
+    half3 _496 = reflect(-half3(_349), _345);
+    float4 _531 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_492, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _560 = facet_environment.sample(facet_environmentSmplr, float3(_496), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _607 = half(1.0) - _492;
+    half _610 = _607 * _607;
+    float4 _595 = facet_environment.sample(facet_environmentSmplr, float3(_496), level(params.facet_clearCoatLod));
+    half3 _601 = mix(half4(_560).xyz * (mix(half4(_531).xxx, half4(_531).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_531).y) - half(1.0))))), half4(_595).xyz, half3(fma(half(0.959999978542327880859375), (_610 * _610) * _607, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_601, half(1.0)));
     return out;
 }
 

@@ -30,11 +30,13 @@ highp float facet_pad28;
 highp float facet_perceptualRoughness;
 highp vec3 facet_f0;
 highp float facet_alpha;
+highp float facet_clearCoat;
+highp float facet_clearCoatAlpha;
+highp float facet_clearCoatLod;
 }
 params;
 uniform highp samplerCube facet_environment;
 uniform highp sampler2D facet_dfgLut;
-const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -131,10 +133,10 @@ return 1.0+f0*(1.0/dfg.y-1.0);
 vec3 shading_clear_coat_normal;
 float shading_clear_coat_attenuation=1.0;
 float clear_coat_strength(MaterialInputs material){
-return clamp(material.clearCoat,0.0,1.0);
+return params.facet_clearCoat;
 }
-float clear_coat_perceptual_roughness(MaterialInputs material){
-return clamp(material.clearCoatRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
+float clear_coat_alpha(MaterialInputs material){
+return params.facet_clearCoatAlpha;
 }
 float clear_coat_fresnel(float cosTheta){
 float f=1.0-cosTheta;
@@ -145,15 +147,14 @@ vec3 clear_coat_layer(MaterialInputs material,vec3 base,vec3 v){
 vec3 n=shading_clear_coat_normal;
 float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(material);
 shading_clear_coat_attenuation=1.0-Fc;
-vec3 coat=prefiltered_radiance(reflect(-v,n),clear_coat_perceptual_roughness(material));
+vec3 coat=textureLod(facet_environment,reflect(-v,n),params.facet_clearCoatLod).rgb;
 return mix(base,coat,Fc);
 }
 const float CLEAR_COAT_LOH2_MIN=6.103515625e-5;
 float clear_coat_lobe(MaterialInputs material,vec3 h,float LoH){
 vec3 n=shading_clear_coat_normal;
 float NoH=clamp(dot(n,h),0.0,1.0);
-float r=clear_coat_perceptual_roughness(material);
-float alpha=r*r;
+float alpha=clear_coat_alpha(material);
 float d=ggx_d_scaled(alpha,NoH,n,h);
 float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
 float k=(4096.0*alpha)/(d*x);

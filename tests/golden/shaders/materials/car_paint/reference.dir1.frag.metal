@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_clearCoat;
+    float facet_clearCoatAlpha;
+    float facet_clearCoatLod;
 };
 
 struct PunctualLightData
@@ -50,36 +53,33 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _868 = fast::normalize(in.v_normal);
-    float3 _872 = fast::normalize(in.v_toEye);
-    float _1139 = fast::max(dot(_868, _872), 9.9999997473787516355514526367188e-05);
-    float3 _1143 = reflect(-_872, _868);
-    float4 _1178 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1139, params.facet_perceptualRoughness), level(0.0));
-    float3 _1197 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1178.y) - 1.0));
-    float _1255 = 1.0 - _1139;
-    float _1258 = _1255 * _1255;
-    float _1265 = fma(0.959999978542327880859375, (_1258 * _1258) * _1255, 0.039999999105930328369140625);
-    float _1270 = fast::clamp(params.coat, 0.0, 1.0);
-    float _1275 = fast::clamp(params.coatRoughness, 0.08900000154972076416015625, 1.0);
-    float3 _1409 = fast::normalize(_872 + frame.lightDirection.xyz);
-    float _1342 = fast::clamp(dot(_868, frame.lightDirection.xyz), 0.0, 1.0);
-    float _1346 = fast::clamp(dot(_868, _1409), 0.0, 1.0);
-    float _1350 = fast::clamp(dot(frame.lightDirection.xyz, _1409), 0.0, 1.0);
-    float3 _1465 = cross(_868, _1409) * 64.0;
-    float _1469 = (64.0 * params.facet_alpha) * _1346;
-    float _1472 = dot(_1465, _1465);
-    float _1453 = (4096.0 * params.facet_alpha) / fma(_1469, _1469, _1472);
-    float _1484 = params.facet_alpha * params.facet_alpha;
-    float _1490 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
-    float _1517 = 1.0 - _1350;
-    float _1520 = _1517 * _1517;
-    float _1525 = (_1520 * _1520) * _1517;
-    float _1560 = _1275 * _1275;
-    float _1618 = (64.0 * _1560) * _1346;
-    float _1570 = 12.56637096405029296875 * fast::max(_1350 * _1350, 6.103515625e-05);
-    float _1576 = (4096.0 * _1560) / (fma(_1618, _1618, _1472) * _1570);
-    float3 _1649 = mix(facet_environment.sample(facet_environmentSmplr, _1143, level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_1178.xxx, _1178.yyy, float3(params.facet_f0)) * _1197), facet_environment.sample(facet_environmentSmplr, _1143, level(_1275 * (4.0 * (2.0 - _1275)))).xyz, float3(_1265 * _1270)) + fast::min(fast::min(((((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * _1525)) * (((_1453 * _1453) * 0.3183098733425140380859375) * (0.5 / fma(_1342, sqrt(fma(_1139 * _1139, _1490, _1484)), _1139 * sqrt(fma(_1342 * _1342, _1490, _1484)))))) * _1197) * fma(-_1265, _1270, 1.0)) + float3((_1576 * (_1576 * _1570)) * fma(0.039999999105930328369140625, _1270, (0.959999978542327880859375 * _1270) * _1525)), float3(65504.0)) * (frame.lightColor.xyz * _1342), float3(65504.0));
-    out.fragColor = float4(_1649, 1.0);
+    float3 _861 = fast::normalize(in.v_normal);
+    float3 _865 = fast::normalize(in.v_toEye);
+    float _1133 = fast::max(dot(_861, _865), 9.9999997473787516355514526367188e-05);
+    float3 _1137 = reflect(-_865, _861);
+    float4 _1172 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1133, params.facet_perceptualRoughness), level(0.0));
+    float3 _1191 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1172.y) - 1.0));
+    float _1248 = 1.0 - _1133;
+    float _1251 = _1248 * _1248;
+    float _1258 = fma(0.959999978542327880859375, (_1251 * _1251) * _1248, 0.039999999105930328369140625);
+    float3 _1385 = fast::normalize(_865 + frame.lightDirection.xyz);
+    float _1318 = fast::clamp(dot(_861, frame.lightDirection.xyz), 0.0, 1.0);
+    float _1322 = fast::clamp(dot(_861, _1385), 0.0, 1.0);
+    float _1326 = fast::clamp(dot(frame.lightDirection.xyz, _1385), 0.0, 1.0);
+    float3 _1441 = cross(_861, _1385) * 64.0;
+    float _1445 = (64.0 * params.facet_alpha) * _1322;
+    float _1448 = dot(_1441, _1441);
+    float _1429 = (4096.0 * params.facet_alpha) / fma(_1445, _1445, _1448);
+    float _1460 = params.facet_alpha * params.facet_alpha;
+    float _1466 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
+    float _1493 = 1.0 - _1326;
+    float _1496 = _1493 * _1493;
+    float _1501 = (_1496 * _1496) * _1493;
+    float _1589 = (64.0 * params.facet_clearCoatAlpha) * _1322;
+    float _1542 = 12.56637096405029296875 * fast::max(_1326 * _1326, 6.103515625e-05);
+    float _1548 = (4096.0 * params.facet_clearCoatAlpha) / (fma(_1589, _1589, _1448) * _1542);
+    float3 _1619 = mix(facet_environment.sample(facet_environmentSmplr, _1137, level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_1172.xxx, _1172.yyy, float3(params.facet_f0)) * _1191), facet_environment.sample(facet_environmentSmplr, _1137, level(params.facet_clearCoatLod)).xyz, float3(_1258 * params.facet_clearCoat)) + fast::min(fast::min(((((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * _1501)) * (((_1429 * _1429) * 0.3183098733425140380859375) * (0.5 / fma(_1318, sqrt(fma(_1133 * _1133, _1466, _1460)), _1133 * sqrt(fma(_1318 * _1318, _1466, _1460)))))) * _1191) * fma(-_1258, params.facet_clearCoat, 1.0)) + float3((_1548 * (_1548 * _1542)) * fma(0.039999999105930328369140625, params.facet_clearCoat, (0.959999978542327880859375 * params.facet_clearCoat) * _1501)), float3(65504.0)) * (frame.lightColor.xyz * _1318), float3(65504.0));
+    out.fragColor = float4(_1619, 1.0);
     return out;
 }
 

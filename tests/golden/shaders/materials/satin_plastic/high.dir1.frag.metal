@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
+    float facet_sheenRoughness;
+    float facet_sheenAlpha;
 };
 
 struct PunctualLightData
@@ -48,39 +52,36 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _883 = normalize(half3(in.v_normal));
-    float3 _887 = fast::normalize(in.v_toEye);
-    half _1017 = _883.y;
-    half _1022 = _883.z;
-    half _1027 = _883.x;
-    half3 _1095 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1017)) + (half4(frame.sh[2]).xyz * _1022)) + (half4(frame.sh[3]).xyz * _1027)) + (((((half4(frame.sh[4]).xyz * (_1027 * _1017)) + (half4(frame.sh[5]).xyz * (_1017 * _1022))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1022, _1022, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1027 * _1022))) + (half4(frame.sh[8]).xyz * fma(_1027, _1027, half(-float(_1017 * _1017))))), half3(float3(0.0)));
-    half _1145 = max(dot(_883, half3(_887)), half(9.9999997473787516355514526367188e-05));
-    half3 _1149 = reflect(-half3(_887), _883);
-    float4 _1184 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1145, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _1203 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1184).y) - half(1.0)));
-    float4 _1213 = facet_environment.sample(facet_environmentSmplr, float3(_1149), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _1290 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _1247 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1145, _1290)), level(0.0));
-    half3 _1297 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _1789 = half4(_1247);
-    half _1260 = _1789.z;
-    half _1262 = fma(half(-float(max(_1297.x, max(_1297.y, _1297.z)))), _1260, half(1.0));
-    half _1306 = _1290 * _1290;
-    float4 _1321 = facet_environment.sample(facet_environmentSmplr, float3(_1149), level(_1290 * (half(4.0) * (half(2.0) - _1290))));
-    half3 _942 = half4(frame.lightColor).xyz;
-    float3 _1446 = fast::normalize(_887 + frame.lightDirection.xyz);
-    half _1378 = clamp(dot(_883, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
-    half _1382 = clamp(dot(_883, half3(_1446)), half(0.0), half(1.0));
-    half4 _1511 = half4(cross(_883, half3(_1446)), half(params.facet_alpha) * _1382) * half(64.0);
-    half _1492 = (half(4096.0) * half(params.facet_alpha)) / dot(_1511, _1511);
-    half _1522 = half(params.facet_alpha) * half(params.facet_alpha);
-    half _1528 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
-    half _1556 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1446)), half(0.0), half(1.0));
-    half _1559 = _1556 * _1556;
-    half _1600 = half(8192.0) * fma(half(-float(_1378)), _1145, _1378 + _1145);
-    half _1604 = half(1.0) / (_1306 * _1600);
-    half3 _1427 = min(fma(fma((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1559 * _1559) * _1556))) * min(min((_1492 * _1492) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1378, sqrt(fma(_1145 * _1145, _1528, _1522)), _1145 * sqrt(fma(_1378 * _1378, _1528, _1522))), half(65504.0)), half(65504.0)), _1203, half3(float3(params.facet_diffuseColor)) * half(0.3183098733425140380859375)), (_942 * _1378) * _1262, (_1297 * ((((fma(_1604, _1600, half(2.0)) * pow(max(fma(half(-float(_1382)), _1382, half(1.0)), half(0.0)), half(0.5) * (_1604 * _1600))) * half(0.15915493667125701904296875)) * (_1378 * (_1604 * (half(2048.0) * _1306)))) * half4(_1247).w)) * _942), half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_1321).xyz, _1297 * _1260, fma(half3(float3(params.facet_diffuseColor)), _1095, half4(_1213).xyz * (mix(half4(_1184).xxx, half4(_1184).yyy, half3(float3(params.facet_f0))) * _1203)) * _1262) + _1427, half(1.0)));
+    half3 _876 = normalize(half3(in.v_normal));
+    float3 _880 = fast::normalize(in.v_toEye);
+    half _1011 = _876.y;
+    half _1016 = _876.z;
+    half _1021 = _876.x;
+    half3 _1089 = max((((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _1011)) + (half4(frame.sh[2]).xyz * _1016)) + (half4(frame.sh[3]).xyz * _1021)) + (((((half4(frame.sh[4]).xyz * (_1021 * _1011)) + (half4(frame.sh[5]).xyz * (_1011 * _1016))) + (half4(frame.sh[6]).xyz * fma(half(3.0) * _1016, _1016, half(-1.0)))) + (half4(frame.sh[7]).xyz * (_1021 * _1016))) + (half4(frame.sh[8]).xyz * fma(_1021, _1021, half(-float(_1011 * _1011))))), half3(float3(0.0)));
+    half _1139 = max(dot(_876, half3(_880)), half(9.9999997473787516355514526367188e-05));
+    half3 _1143 = reflect(-half3(_880), _876);
+    float4 _1178 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1139, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _1197 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_1178).y) - half(1.0)));
+    float4 _1207 = facet_environment.sample(facet_environmentSmplr, float3(_1143), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    float4 _1239 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_1139, half(params.facet_sheenRoughness))), level(0.0));
+    half4 _1751 = half4(_1239);
+    half _1252 = _1751.z;
+    half _1254 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _1252, half(1.0));
+    float4 _1268 = facet_environment.sample(facet_environmentSmplr, float3(_1143), level(params.facet_sheenLod));
+    half3 _935 = half4(frame.lightColor).xyz;
+    float3 _1416 = fast::normalize(_880 + frame.lightDirection.xyz);
+    half _1348 = clamp(dot(_876, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    half _1352 = clamp(dot(_876, half3(_1416)), half(0.0), half(1.0));
+    half4 _1481 = half4(cross(_876, half3(_1416)), half(params.facet_alpha) * _1352) * half(64.0);
+    half _1462 = (half(4096.0) * half(params.facet_alpha)) / dot(_1481, _1481);
+    half _1492 = half(params.facet_alpha) * half(params.facet_alpha);
+    half _1498 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
+    half _1526 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1416)), half(0.0), half(1.0));
+    half _1529 = _1526 * _1526;
+    half _1570 = half(8192.0) * fma(half(-float(_1348)), _1139, _1348 + _1139);
+    half _1574 = half(1.0) / (half(params.facet_sheenAlpha) * _1570);
+    half3 _1397 = min(fma(fma((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1529 * _1529) * _1526))) * min(min((_1462 * _1462) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1348, sqrt(fma(_1139 * _1139, _1498, _1492)), _1139 * sqrt(fma(_1348 * _1348, _1498, _1492))), half(65504.0)), half(65504.0)), _1197, half3(float3(params.facet_diffuseColor)) * half(0.3183098733425140380859375)), (_935 * _1348) * _1254, (half3(float3(params.facet_sheenColor)) * ((((fma(_1574, _1570, half(2.0)) * pow(max(fma(half(-float(_1352)), _1352, half(1.0)), half(0.0)), half(0.5) * (_1574 * _1570))) * half(0.15915493667125701904296875)) * (_1348 * (_1574 * (half(2048.0) * half(params.facet_sheenAlpha))))) * half4(_1239).w)) * _935), half3(float3(65504.0)));
+    out.fragColor = float4(half4(fma(half4(_1268).xyz, half3(float3(params.facet_sheenColor)) * _1252, fma(half3(float3(params.facet_diffuseColor)), _1089, half4(_1207).xyz * (mix(half4(_1178).xxx, half4(_1178).yyy, half3(float3(params.facet_f0))) * _1197)) * _1254) + _1397, half(1.0)));
     return out;
 }
 

@@ -30,11 +30,14 @@ mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump vec3 facet_sheenColor;
+mediump float facet_sheenLod;
+mediump float facet_sheenRoughness;
+mediump float facet_sheenAlpha;
 }
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
-const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -115,14 +118,13 @@ vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
 }
 vec3 sheen_color(MaterialInputs material){
-return clamp(material.sheenColor,0.0,1.0);
+return params.facet_sheenColor;
 }
 float sheen_perceptual_roughness(MaterialInputs material){
-return clamp(material.sheenRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
+return params.facet_sheenRoughness;
 }
 float sheen_alpha(MaterialInputs material){
-float perceptualRoughness=sheen_perceptual_roughness(material);
-return perceptualRoughness*perceptualRoughness;
+return params.facet_sheenAlpha;
 }
 vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
 float perceptualRoughness=sheen_perceptual_roughness(material);
@@ -134,7 +136,7 @@ shading_sheen_color=sheenColor;
 shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
-vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
+vec3 radiance=textureLod(facet_environment,reflect(-v,n),params.facet_sheenLod).rgb;
 vec3 specular=radiance*(sheenColor*sheenTerms.x);
 return base*baseScale+specular;
 }

@@ -29,11 +29,14 @@ highp vec3 facet_diffuseColor;
 highp float facet_perceptualRoughness;
 highp vec3 facet_f0;
 highp float facet_alpha;
+highp vec3 facet_sheenColor;
+highp float facet_sheenLod;
+highp float facet_sheenRoughness;
+highp float facet_sheenAlpha;
 }
 params;
 uniform highp samplerCube facet_environment;
 uniform highp sampler2D facet_dfgLut;
-const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -131,14 +134,13 @@ vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
 }
 vec3 sheen_color(MaterialInputs material){
-return clamp(material.sheenColor,0.0,1.0);
+return params.facet_sheenColor;
 }
 float sheen_perceptual_roughness(MaterialInputs material){
-return clamp(material.sheenRoughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
+return params.facet_sheenRoughness;
 }
 float sheen_alpha(MaterialInputs material){
-float perceptualRoughness=sheen_perceptual_roughness(material);
-return perceptualRoughness*perceptualRoughness;
+return params.facet_sheenAlpha;
 }
 vec3 sheen_layer(MaterialInputs material,vec3 base,vec3 n,vec3 v){
 float perceptualRoughness=sheen_perceptual_roughness(material);
@@ -150,7 +152,7 @@ shading_sheen_color=sheenColor;
 shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
-vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
+vec3 radiance=textureLod(facet_environment,reflect(-v,n),params.facet_sheenLod).rgb;
 vec3 specular=radiance*(sheenColor*sheenTerms.x);
 return base*baseScale+specular;
 }

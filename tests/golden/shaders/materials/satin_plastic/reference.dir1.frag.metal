@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
+    float facet_sheenRoughness;
+    float facet_sheenAlpha;
 };
 
 struct PunctualLightData
@@ -48,35 +52,32 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _878 = fast::normalize(in.v_normal);
-    float3 _882 = fast::normalize(in.v_toEye);
-    float _1012 = _878.y;
-    float _1017 = _878.z;
-    float _1022 = _878.x;
-    float _1140 = fast::max(dot(_878, _882), 9.9999997473787516355514526367188e-05);
-    float3 _1144 = reflect(-_882, _878);
-    float4 _1179 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1140, params.facet_perceptualRoughness), level(0.0));
-    float3 _1198 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1179.y) - 1.0));
-    float _1285 = fast::clamp(params.sheenRoughness, 0.08900000154972076416015625, 1.0);
-    float4 _1242 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1140, _1285), level(0.0));
-    float3 _1292 = fast::clamp(float3(params.sheen), float3(0.0), float3(1.0));
-    float _1255 = _1242.z;
-    float _1257 = fma(-fast::max(_1292.x, fast::max(_1292.y, _1292.z)), _1255, 1.0);
-    float _1301 = _1285 * _1285;
-    float3 _1278 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1012)) + (frame.sh[2].xyz * _1017)) + (frame.sh[3].xyz * _1022)) + (((((frame.sh[4].xyz * (_1022 * _1012)) + (frame.sh[5].xyz * (_1012 * _1017))) + (frame.sh[6].xyz * fma(3.0 * _1017, _1017, -1.0))) + (frame.sh[7].xyz * (_1022 * _1017))) + (frame.sh[8].xyz * fma(_1022, _1022, -(_1012 * _1012)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _1144, level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_1179.xxx, _1179.yyy, float3(params.facet_f0)) * _1198)) * _1257;
-    float3 _1440 = fast::normalize(_882 + frame.lightDirection.xyz);
-    float _1373 = fast::clamp(dot(_878, frame.lightDirection.xyz), 0.0, 1.0);
-    float _1377 = fast::clamp(dot(_878, _1440), 0.0, 1.0);
-    float4 _1502 = float4(cross(_878, _1440), params.facet_alpha * _1377) * 64.0;
-    float _1484 = (4096.0 * params.facet_alpha) / dot(_1502, _1502);
-    float _1513 = params.facet_alpha * params.facet_alpha;
-    float _1519 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
-    float _1546 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1440), 0.0, 1.0);
-    float _1549 = _1546 * _1546;
-    float _1590 = 8192.0 * fma(-_1373, _1140, _1373 + _1140);
-    float _1594 = 1.0 / (_1301 * _1590);
-    float3 _1629 = fma(facet_environment.sample(facet_environmentSmplr, _1144, level(_1285 * (4.0 * (2.0 - _1285)))).xyz, _1292 * _1255, _1278) + fast::min(fma(fma((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1549 * _1549) * _1546))) * (((_1484 * _1484) * 0.3183098733425140380859375) * (0.5 / fma(_1373, sqrt(fma(_1140 * _1140, _1519, _1513)), _1140 * sqrt(fma(_1373 * _1373, _1519, _1513))))), _1198, float3(params.facet_diffuseColor) * 0.3183098733425140380859375), (frame.lightColor.xyz * _1373) * _1257, (_1292 * ((((fma(_1594, _1590, 2.0) * pow(fast::max(fma(-_1377, _1377, 1.0), 0.0), 0.5 * (_1594 * _1590))) * 0.15915493667125701904296875) * (_1373 * (_1594 * (2048.0 * _1301)))) * _1242.w)) * frame.lightColor.xyz), float3(65504.0));
-    out.fragColor = float4(_1629, 1.0);
+    float3 _871 = fast::normalize(in.v_normal);
+    float3 _875 = fast::normalize(in.v_toEye);
+    float _1006 = _871.y;
+    float _1011 = _871.z;
+    float _1016 = _871.x;
+    float _1134 = fast::max(dot(_871, _875), 9.9999997473787516355514526367188e-05);
+    float3 _1138 = reflect(-_875, _871);
+    float4 _1173 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1134, params.facet_perceptualRoughness), level(0.0));
+    float3 _1192 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1173.y) - 1.0));
+    float4 _1234 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1134, params.facet_sheenRoughness), level(0.0));
+    float _1247 = _1234.z;
+    float _1249 = fma(-fast::max(params.facet_sheenColor[0], fast::max(params.facet_sheenColor[1], params.facet_sheenColor[2])), _1247, 1.0);
+    float3 _1273 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1006)) + (frame.sh[2].xyz * _1011)) + (frame.sh[3].xyz * _1016)) + (((((frame.sh[4].xyz * (_1016 * _1006)) + (frame.sh[5].xyz * (_1006 * _1011))) + (frame.sh[6].xyz * fma(3.0 * _1011, _1011, -1.0))) + (frame.sh[7].xyz * (_1016 * _1011))) + (frame.sh[8].xyz * fma(_1016, _1016, -(_1006 * _1006)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _1138, level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_1173.xxx, _1173.yyy, float3(params.facet_f0)) * _1192)) * _1249;
+    float3 _1410 = fast::normalize(_875 + frame.lightDirection.xyz);
+    float _1343 = fast::clamp(dot(_871, frame.lightDirection.xyz), 0.0, 1.0);
+    float _1347 = fast::clamp(dot(_871, _1410), 0.0, 1.0);
+    float4 _1472 = float4(cross(_871, _1410), params.facet_alpha * _1347) * 64.0;
+    float _1454 = (4096.0 * params.facet_alpha) / dot(_1472, _1472);
+    float _1483 = params.facet_alpha * params.facet_alpha;
+    float _1489 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
+    float _1516 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1410), 0.0, 1.0);
+    float _1519 = _1516 * _1516;
+    float _1560 = 8192.0 * fma(-_1343, _1134, _1343 + _1134);
+    float _1564 = 1.0 / (params.facet_sheenAlpha * _1560);
+    float3 _1599 = fma(facet_environment.sample(facet_environmentSmplr, _1138, level(params.facet_sheenLod)).xyz, float3(params.facet_sheenColor) * _1247, _1273) + fast::min(fma(fma((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1519 * _1519) * _1516))) * (((_1454 * _1454) * 0.3183098733425140380859375) * (0.5 / fma(_1343, sqrt(fma(_1134 * _1134, _1489, _1483)), _1134 * sqrt(fma(_1343 * _1343, _1489, _1483))))), _1192, float3(params.facet_diffuseColor) * 0.3183098733425140380859375), (frame.lightColor.xyz * _1343) * _1249, (float3(params.facet_sheenColor) * ((((fma(_1564, _1560, 2.0) * pow(fast::max(fma(-_1347, _1347, 1.0), 0.0), 0.5 * (_1564 * _1560))) * 0.15915493667125701904296875) * (_1343 * (_1564 * (2048.0 * params.facet_sheenAlpha)))) * _1234.w)) * frame.lightColor.xyz), float3(65504.0));
+    out.fragColor = float4(_1599, 1.0);
     return out;
 }
 

@@ -13,6 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
+    char _m8_pad[12];
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
 };
 
 struct main0_out
@@ -30,13 +33,12 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _269 = normalize(half3(in.v_normal));
-    float3 _273 = fast::normalize(in.v_toEye);
-    half3 _450 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _550 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_269, half3(_273)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _409 = _550.z;
-    float4 _469 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_273), _269)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half4(_469).xyz, _450 * _409, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_450.x, max(_450.y, _450.z)))), _409, half(1.0))), half(1.0)));
+    half3 _249 = normalize(half3(in.v_normal));
+    float3 _253 = fast::normalize(in.v_toEye);
+    half4 _515 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_249, half3(_253)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _387 = _515.z;
+    float4 _403 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_253), _249)), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_403).xyz, half3(float3(params.facet_sheenColor)) * _387, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _387, half(1.0))), half(1.0)));
     return out;
 }
 

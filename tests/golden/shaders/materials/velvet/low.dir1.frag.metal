@@ -13,6 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
+    char _m8_pad[12];
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
 };
 
 struct PunctualLightData
@@ -49,21 +52,20 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _404 = normalize(half3(in.v_normal));
-    float3 _408 = fast::normalize(in.v_toEye);
-    half _548 = max(dot(_404, half3(_408)), half(9.9999997473787516355514526367188e-05));
-    float4 _553 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_548, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _607 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _822 = half4(_553);
-    half _566 = _822.z;
-    float4 _626 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_408), _404)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _453 = half4(frame.lightDirection).xyz;
-    half _648 = clamp(dot(_404, _453), half(0.0), half(1.0));
-    half _660 = clamp(dot(_404, normalize(half3(_408) + _453)), half(0.0), half(1.0));
-    half _705 = half(8192.0) * fma(half(-float(_648)), _548, _648 + _548);
-    half _709 = half(1.0) / (half(params.facet_alpha) * _705);
-    half3 _738 = fma(half4(_626).xyz, _607 * _566, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_607.x, max(_607.y, _607.z)))), _566, half(1.0))) + min((_607 * ((((fma(_709, _705, half(2.0)) * pow(max(fma(half(-float(_660)), _660, half(1.0)), half(0.0)), half(0.5) * (_709 * _705))) * half(0.15915493667125701904296875)) * (_648 * (_709 * (half(2048.0) * half(params.facet_alpha))))) * half4(_553).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(_738, half(1.0)));
+    half3 _385 = normalize(half3(in.v_normal));
+    float3 _389 = fast::normalize(in.v_toEye);
+    half _527 = max(dot(_385, half3(_389)), half(9.9999997473787516355514526367188e-05));
+    float4 _532 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_527, half(params.facet_perceptualRoughness))), level(0.0));
+    half4 _788 = half4(_532);
+    half _545 = _788.z;
+    float4 _561 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_389), _385)), level(params.facet_sheenLod));
+    half3 _434 = half4(frame.lightDirection).xyz;
+    half _616 = clamp(dot(_385, _434), half(0.0), half(1.0));
+    half _628 = clamp(dot(_385, normalize(half3(_389) + _434)), half(0.0), half(1.0));
+    half _673 = half(8192.0) * fma(half(-float(_616)), _527, _616 + _527);
+    half _677 = half(1.0) / (half(params.facet_alpha) * _673);
+    half3 _706 = fma(half4(_561).xyz, half3(float3(params.facet_sheenColor)) * _545, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _545, half(1.0))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_677, _673, half(2.0)) * pow(max(fma(half(-float(_628)), _628, half(1.0)), half(0.0)), half(0.5) * (_677 * _673))) * half(0.15915493667125701904296875)) * (_616 * (_677 * (half(2048.0) * half(params.facet_alpha))))) * half4(_532).w)) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    out.fragColor = float4(half4(_706, half(1.0)));
     return out;
 }
 

@@ -13,6 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
+    char _m8_pad[12];
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
 };
 
 struct main0_out
@@ -30,13 +33,12 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _268 = normalize(half3(in.v_normal));
-    float3 _272 = fast::normalize(in.v_toEye);
-    half3 _445 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _545 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_268, half3(_272)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _404 = _545.z;
-    float4 _464 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_272), _268)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half4(_464).xyz, _445 * _404, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_445.x, max(_445.y, _445.z)))), _404, half(1.0))), half(1.0)));
+    half3 _248 = normalize(half3(in.v_normal));
+    float3 _252 = fast::normalize(in.v_toEye);
+    half4 _510 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_248, half3(_252)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _382 = _510.z;
+    float4 _398 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_252), _248)), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_398).xyz, half3(float3(params.facet_sheenColor)) * _382, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _382, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -13,6 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
+    char _m8_pad[12];
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
 };
 
 struct PunctualLightData
@@ -49,39 +52,38 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _505 = normalize(half3(in.v_normal));
-    float3 _521 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half _663 = max(dot(_505, half3(_521)), half(9.9999997473787516355514526367188e-05));
-    float4 _668 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_663, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _722 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _1265 = half4(_668);
-    half _681 = _1265.z;
-    half4 _1269 = half4(_668);
-    half _688 = _1269.w;
-    float4 _741 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_521), _505)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    float3 _778 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _781 = dot(_778, _778);
-    float3 _786 = _778 * rsqrt(fast::max(_781, 9.9999999392252902907785028219223e-09));
-    float _790 = _781 * float(frame.punctualLights[0].positionFalloff.w);
-    float _795 = fast::clamp(fma(-_790, _790, 1.0), 0.0, 1.0);
-    float _814 = fast::clamp(fma(dot(-_786, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half _847 = clamp(dot(_505, half3(_786)), half(0.0), half(1.0));
-    half _859 = clamp(dot(_505, normalize(half3(_521) + half3(_786))), half(0.0), half(1.0));
-    half _904 = half(8192.0) * fma(half(-float(_847)), _663, _847 + _663);
-    half _908 = half(1.0) / (half(params.facet_alpha) * _904);
-    half _915 = half(2048.0) * half(params.facet_alpha);
-    float3 _973 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _976 = dot(_973, _973);
-    float3 _981 = _973 * rsqrt(fast::max(_976, 9.9999999392252902907785028219223e-09));
-    float _985 = _976 * float(frame.punctualLights[1].positionFalloff.w);
-    float _990 = fast::clamp(fma(-_985, _985, 1.0), 0.0, 1.0);
-    float _1009 = fast::clamp(fma(dot(-_981, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half _1042 = clamp(dot(_505, half3(_981)), half(0.0), half(1.0));
-    half _1054 = clamp(dot(_505, normalize(half3(_521) + half3(_981))), half(0.0), half(1.0));
-    half _1099 = half(8192.0) * fma(half(-float(_1042)), _663, _1042 + _663);
-    half _1103 = half(1.0) / (half(params.facet_alpha) * _1099);
-    half3 _1132 = (fma(half4(_741).xyz, _722 * _681, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_722.x, max(_722.y, _722.z)))), _681, half(1.0))) + min((_722 * ((((fma(_908, _904, half(2.0)) * pow(max(fma(half(-float(_859)), _859, half(1.0)), half(0.0)), half(0.5) * (_908 * _904))) * half(0.15915493667125701904296875)) * (_847 * (_908 * _915))) * _688)) * half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_795) * half(_795)) / fast::max(_781, 9.9999997473787516355514526367188e-05)) * half(_814)) * half(_814)), float3(65504.0))), half3(float3(65504.0)))) + min((_722 * ((((fma(_1103, _1099, half(2.0)) * pow(max(fma(half(-float(_1054)), _1054, half(1.0)), half(0.0)), half(0.5) * (_1103 * _1099))) * half(0.15915493667125701904296875)) * (_1042 * (_1103 * _915))) * _688)) * half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_990) * half(_990)) / fast::max(_976, 9.9999997473787516355514526367188e-05)) * half(_1009)) * half(_1009)), float3(65504.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1132, half(1.0)));
+    half3 _486 = normalize(half3(in.v_normal));
+    float3 _502 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half _642 = max(dot(_486, half3(_502)), half(9.9999997473787516355514526367188e-05));
+    float4 _647 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_642, half(params.facet_perceptualRoughness))), level(0.0));
+    half4 _1231 = half4(_647);
+    half _660 = _1231.z;
+    half4 _1235 = half4(_647);
+    half _667 = _1235.w;
+    float4 _676 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_502), _486)), level(params.facet_sheenLod));
+    float3 _746 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _749 = dot(_746, _746);
+    float3 _754 = _746 * rsqrt(fast::max(_749, 9.9999999392252902907785028219223e-09));
+    float _758 = _749 * float(frame.punctualLights[0].positionFalloff.w);
+    float _763 = fast::clamp(fma(-_758, _758, 1.0), 0.0, 1.0);
+    float _782 = fast::clamp(fma(dot(-_754, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _815 = clamp(dot(_486, half3(_754)), half(0.0), half(1.0));
+    half _827 = clamp(dot(_486, normalize(half3(_502) + half3(_754))), half(0.0), half(1.0));
+    half _872 = half(8192.0) * fma(half(-float(_815)), _642, _815 + _642);
+    half _876 = half(1.0) / (half(params.facet_alpha) * _872);
+    half _883 = half(2048.0) * half(params.facet_alpha);
+    float3 _941 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _944 = dot(_941, _941);
+    float3 _949 = _941 * rsqrt(fast::max(_944, 9.9999999392252902907785028219223e-09));
+    float _953 = _944 * float(frame.punctualLights[1].positionFalloff.w);
+    float _958 = fast::clamp(fma(-_953, _953, 1.0), 0.0, 1.0);
+    float _977 = fast::clamp(fma(dot(-_949, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1010 = clamp(dot(_486, half3(_949)), half(0.0), half(1.0));
+    half _1022 = clamp(dot(_486, normalize(half3(_502) + half3(_949))), half(0.0), half(1.0));
+    half _1067 = half(8192.0) * fma(half(-float(_1010)), _642, _1010 + _642);
+    half _1071 = half(1.0) / (half(params.facet_alpha) * _1067);
+    half3 _1100 = (fma(half4(_676).xyz, half3(float3(params.facet_sheenColor)) * _660, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _660, half(1.0))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_876, _872, half(2.0)) * pow(max(fma(half(-float(_827)), _827, half(1.0)), half(0.0)), half(0.5) * (_876 * _872))) * half(0.15915493667125701904296875)) * (_815 * (_876 * _883))) * _667)) * half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_763) * half(_763)) / fast::max(_749, 9.9999997473787516355514526367188e-05)) * half(_782)) * half(_782)), float3(65504.0))), half3(float3(65504.0)))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_1071, _1067, half(2.0)) * pow(max(fma(half(-float(_1022)), _1022, half(1.0)), half(0.0)), half(0.5) * (_1071 * _1067))) * half(0.15915493667125701904296875)) * (_1010 * (_1071 * _883))) * _667)) * half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_958) * half(_958)) / fast::max(_944, 9.9999997473787516355514526367188e-05)) * half(_977)) * half(_977)), float3(65504.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1100, half(1.0)));
     return out;
 }
 
