@@ -1,6 +1,7 @@
 #include "facet/compiler/preshader.h"
 
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -59,7 +60,13 @@ class ProgramBuilder {
         if (a && b) out = binary(code, *a, *b);
         break;
       }
-      case ir::Op::Builtin: out = clampToConstants(v); break;
+      case ir::Op::Div: {
+        auto a = value(v.args[0]);
+        auto b = a ? value(v.args[1]) : std::nullopt;
+        if (a && b) out = binary(PreshaderOpcode::Div, *a, *b);
+        break;
+      }
+      case ir::Op::Builtin: out = builtin(v); break;
       default: break;
     }
     if (out) regs_[id] = *out;
@@ -145,17 +152,43 @@ class ProgramBuilder {
     return r;
   }
 
-  // clamp(x, lo, hi) with constant scalar bounds: one Clamp op.
-  std::optional<uint8_t> clampToConstants(const ir::Value& v) {
-    if (v.name != "clamp" || v.args.size() != 3) return std::nullopt;
-    const ir::Value& lo = material_.surface.value(v.args[1]);
-    const ir::Value& hi = material_.surface.value(v.args[2]);
-    if (lo.op != ir::Op::Constant || hi.op != ir::Op::Constant || lo.type != ir::Type::Float ||
-        hi.type != ir::Type::Float)
-      return std::nullopt;
-    auto a = value(v.args[0]);
-    if (!a) return std::nullopt;
-    return clamp(*a, float(lo.constant[0]), float(hi.constant[0]));
+  // The built-ins a parameter-only expression uses that the ops express: clamp, and max / min
+  // against a constant scalar (one Clamp op, the other bound the largest finite float); mix as
+  // a + (b − a) · t, the IR's own evaluation of it (ir/src/evaluate.cpp); sqrt.
+  std::optional<uint8_t> builtin(const ir::Value& v) {
+    const auto scalarConstant = [&](ir::ValueId id) -> std::optional<float> {
+      const ir::Value& k = material_.surface.value(id);
+      if (k.op != ir::Op::Constant || k.type != ir::Type::Float) return std::nullopt;
+      return float(k.constant[0]);
+    };
+    constexpr float kLargest = std::numeric_limits<float>::max();
+    if (v.name == "clamp" && v.args.size() == 3) {
+      const auto lo = scalarConstant(v.args[1]), hi = scalarConstant(v.args[2]);
+      auto a = lo && hi ? value(v.args[0]) : std::nullopt;
+      return a ? clamp(*a, *lo, *hi) : std::nullopt;
+    }
+    if ((v.name == "max" || v.name == "min") && v.args.size() == 2) {
+      const auto bound = scalarConstant(v.args[1]);
+      auto a = bound ? value(v.args[0]) : std::nullopt;
+      if (!a) return std::nullopt;
+      return v.name == "max" ? clamp(*a, *bound, kLargest) : clamp(*a, -kLargest, *bound);
+    }
+    if (v.name == "mix" && v.args.size() == 3) {
+      auto a = value(v.args[0]);
+      auto b = a ? value(v.args[1]) : std::nullopt;
+      auto t = b ? value(v.args[2]) : std::nullopt;
+      auto span = t ? binary(PreshaderOpcode::Sub, *b, *a) : std::nullopt;
+      auto scaled = span ? binary(PreshaderOpcode::Mul, *span, *t) : std::nullopt;
+      return scaled ? binary(PreshaderOpcode::Add, *a, *scaled) : std::nullopt;
+    }
+    if (v.name == "sqrt" && v.args.size() == 1) {
+      auto a = value(v.args[0]);
+      if (!a) return std::nullopt;
+      auto r = fresh();
+      if (r) push({PreshaderOpcode::Sqrt, *r, *a, 0, 0, 0, {}});
+      return r;
+    }
+    return std::nullopt;
   }
 
   const ir::Material& material_;

@@ -303,6 +303,14 @@ bool PackageReader::State::parse(std::string& error) {
     }
     if (!decodeSection(file, *prsh, error, [&](ByteReader& in) { decodePreshader(in, variants.size(), preshader); }))
       return false;
+    if (minor < kFirstMinorWithPreshaderDivision)
+      for (const PreshaderProgram& program : preshader.programs)
+        if (usesPreshaderDivision(program.ops)) {
+          error = "package format 1." + std::to_string(minor) +
+                  " has a preshader program with a div or sqrt op, which only format 1." +
+                  std::to_string(kFirstMinorWithPreshaderDivision) + " and later have";
+          return false;
+        }
   }
 
   for (const VariantInfo& v : variants) {

@@ -1,5 +1,6 @@
 // PRSH section (format 1.3): the preshader programs, and the checks that make a program from an
 // untrusted package safe to run (package.h, preshaderError).
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <set>
@@ -18,8 +19,16 @@ const char* toString(PreshaderOpcode code) {
     case PreshaderOpcode::Clamp: return "clamp";
     case PreshaderOpcode::Swizzle: return "swizzle";
     case PreshaderOpcode::Store: return "store";
+    case PreshaderOpcode::Div: return "div";
+    case PreshaderOpcode::Sqrt: return "sqrt";
   }
   return "?";
+}
+
+bool usesPreshaderDivision(std::span<const PreshaderOp> ops) {
+  return std::any_of(ops.begin(), ops.end(), [](const PreshaderOp& op) {
+    return op.code == PreshaderOpcode::Div || op.code == PreshaderOpcode::Sqrt;
+  });
 }
 
 std::string preshaderError(std::span<const PreshaderOp> ops, uint32_t paramBlockSize, uint32_t blockSize) {

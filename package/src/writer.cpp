@@ -153,7 +153,12 @@ std::vector<uint8_t> write(const Package& pkg) {
   // `<tier>.depth` variant for a key it cannot parse.
   const bool depthPrograms =
       std::any_of(pkg.variants.begin(), pkg.variants.end(), [](const Variant& v) { return isDepthProgramKey(v.key); });
-  out.u16(depthPrograms                   ? kFirstMinorWithDepthPrograms
+  // The preshader's div and sqrt: 1.8, so that a runtime without them refuses the file by its
+  // version rather than by an op it does not know.
+  const bool preshaderDivision = std::any_of(pkg.preshader.programs.begin(), pkg.preshader.programs.end(),
+                                             [](const PreshaderProgram& p) { return usesPreshaderDivision(p.ops); });
+  out.u16(preshaderDivision               ? kFirstMinorWithPreshaderDivision
+          : depthPrograms                 ? kFirstMinorWithDepthPrograms
           : pkg.instanceTransforms        ? kFirstMinorWithInstanceTransforms
           : pkg.packedVertices            ? kFirstMinorWithPackedVertices
           : pkg.material.shading == "lit" ? kFirstMinorWithCubeEnvironment

@@ -46,6 +46,14 @@ bool runPreshader(std::span<const package::PreshaderOp> ops, uint32_t paramBlock
         for (size_t i = 0; i < 4; ++i) d[i] = a[(op.offset >> (2 * i)) & 3];
         break;
       case package::PreshaderOpcode::Store: std::memcpy(block.data() + op.offset, a.data(), 4 * op.count); break;
+      // IEEE fp32 as the shader's highp: x / 0 is ±inf, sqrt of a negative NaN (GLSL leaves both
+      // undefined; the compiler only emits them where the material's own expression has them).
+      case package::PreshaderOpcode::Div:
+        for (size_t i = 0; i < 4; ++i) d[i] = a[i] / b[i];
+        break;
+      case package::PreshaderOpcode::Sqrt:
+        for (size_t i = 0; i < 4; ++i) d[i] = std::sqrt(a[i]);
+        break;
     }
   }
   return true;

@@ -87,6 +87,19 @@ TEST(PreshaderInterpreter, ClampBoundsEveryComponentAndTurnsNanIntoTheLowerBound
             (std::vector<float>{0.089f, 0.089f, 1, 0.5f}));
 }
 
+// Division and square root are IEEE fp32, as the shaders' highp: no input makes them undefined.
+TEST(PreshaderInterpreter, DivAndSqrtAreIeeePerComponent) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const std::vector<PreshaderOp> load = {op(Op::LoadParam, 0, 0, 0, 0, 4),
+                                         op(Op::Constant, 1, 0, 0, 0, 0, {2, 4, 0, -1})};
+  std::vector<PreshaderOp> div = load;
+  div.insert(div.end(), {op(Op::Div, 2, 0, 1), store(2)});
+  EXPECT_EQ(run(div, {1, 2, 3, 4}), (std::vector<float>{0.5f, 0.5f, inf, -4}));
+  std::vector<float> roots = run({op(Op::LoadParam, 0, 0, 0, 0, 4), op(Op::Sqrt, 1, 0), store(1)}, {4, 0.25f, 2, -1});
+  EXPECT_EQ((std::vector<float>{roots[0], roots[1], roots[2]}), (std::vector<float>{2, 0.5f, std::sqrt(2.0f)}));
+  EXPECT_TRUE(std::isnan(roots[3]));
+}
+
 TEST(PreshaderInterpreter, StoreWritesOnlyItsComponents) {
   std::vector<uint8_t> block = blockOf({1, 2, 3, 4, 7, 7, 7, 7});
   std::string error;
@@ -437,6 +450,61 @@ TEST(PreshaderCompiler, NoParameterOnlyWorkLeftInTheModelsFragmentStages) {
       EXPECT_EQ(all.environmentLods, name == "velvet" ? 0 : base.environmentLods);
     }
   }
+}
+
+// What `matc import` writes for KHR_materials_anisotropy's factors (docs/gltf.md, "Anisotropy"):
+// roughness and anisotropy from the extension's two alphas through mix, max, a square root and a
+// division, all of parameters. The preshader forms them and the models' members from them, so
+// the fragment stage computes nothing from the parameters; the image test beside the import
+// (GltfMaterials.AnisotropyExtensionDrawsTheExtensionsLobe) draws the same lobe.
+TEST(PreshaderCompiler, TheGltfAnisotropyMappingOfParametersIsPreshaded) {
+  const std::string text = R"(material mapped {
+    shading lit
+    param roughnessFactor: float = 0.4 in [0, 1]
+    param anisotropyStrength: float = 0.6 in [0, 1]
+    param anisotropyRotation: vec2 = vec2(1.0, 0.0) in [-1, 1]
+    surface {
+        baseColor = vec3(0.9, 0.6, 0.3)
+        metallic = 1.0
+        let gltfAlpha = params.roughnessFactor * params.roughnessFactor
+        let alphaAcross = max(gltfAlpha, 0.007921)
+        let alphaAlong = max(mix(gltfAlpha, 1.0, params.anisotropyStrength * params.anisotropyStrength), 0.007921)
+        roughness = sqrt(0.5 * (alphaAlong + alphaAcross))
+        anisotropy = (alphaAlong - alphaAcross) / (alphaAlong + alphaAcross)
+        anisotropyDirection = vec3(params.anisotropyRotation, 0.0)
+    }
+}
+)";
+  auto preshaded = facet::test::buildText(text);
+  facet::compiler::BuildOptions perPixelOptions;
+  perPixelOptions.preshader = false;
+  auto perPixel = facet::test::buildText(text, "test.mat", perPixelOptions);
+  ASSERT_TRUE(preshaded && perPixel);
+  const uint32_t params = preshaded->package.material.paramBlockSize;
+  for (const char* key : {"reference.dir1", "high.dir1", "mid.dir1", "low.dir1"}) {
+    SCOPED_TRACE(key);
+    EXPECT_EQ(parameterOnlyWork(fragmentSpirv(preshaded->package, key), params, true).ops, 0);
+    EXPECT_GT(parameterOnlyWork(fragmentSpirv(perPixel->package, key), params, true).ops, 0) << "the check sees them";
+  }
+  // The program run on the defaults gives back the extension's two alphas as (α_t, α_b) = r'² (1 ± k):
+  // α_along = mix(0.16, 1, 0.36) and α_across = 0.16.
+  const pkg::Package& p = preshaded->package;
+  std::vector<uint8_t> block(p.preshader.blockSize, 0);
+  for (const pkg::Param& param : p.material.params)
+    for (size_t i = 0; i < param.defaultValue.size() && param.size != 0; ++i) {
+      const float v = float(param.defaultValue[i]);
+      std::memcpy(block.data() + param.offset + 4 * i, &v, 4);
+    }
+  std::string error;
+  ASSERT_FALSE(p.preshader.programs.empty());
+  ASSERT_TRUE(facet::runtime::runPreshader(p.preshader.programs[0].ops, params, block, &error)) << error;
+  const std::vector<float> all = floatsOf(block);
+  const std::vector<float> derived(all.begin() + params / 4, all.end());
+  const auto holds = [&](float expected) {
+    return std::any_of(derived.begin(), derived.end(), [&](float m) { return std::abs(m - expected) < 1e-6f; });
+  };
+  EXPECT_TRUE(holds(0.16f + 0.84f * 0.36f)) << "α_along among the derived members";
+  EXPECT_TRUE(holds(0.16f)) << "α_across among the derived members";
 }
 
 // Each derived member holds its chunk's per-pixel formula of the default parameters (the

@@ -311,6 +311,35 @@ TEST(Package, DepthProgramsAreStampedOneSevenAndRefusedInOlderMinors) {
             "later have");
 }
 
+// A preshader program with a div or sqrt op stamps 1.8, so an older runtime refuses the file by
+// its version; a reader finding one in an older minor refuses the file (no writer of that version
+// made it).
+TEST(Package, PreshaderDivisionIsStampedOneEightAndRefusedInOlderMinors) {
+  pkg::Package p = samplePackage();
+  p.preshader.blockSize = 96;
+  pkg::PreshaderProgram program;
+  program.variants = {0};
+  program.ops = {{pkg::PreshaderOpcode::Constant, 1, 0, 0, 0, 0, {1.0f, 2.0f, 3.0f, 4.0f}},
+                 {pkg::PreshaderOpcode::Mul, 2, 1, 1, 0, 0, {}},
+                 {pkg::PreshaderOpcode::Store, 0, 2, 0, 64, 4, {}}};
+  p.preshader.programs = {program};
+  EXPECT_LT(loadLE(pkg::write(p), 10, 2), pkg::kFirstMinorWithPreshaderDivision);
+  for (pkg::PreshaderOpcode code : {pkg::PreshaderOpcode::Div, pkg::PreshaderOpcode::Sqrt}) {
+    p.preshader.programs[0].ops[1].code = code;
+    std::vector<uint8_t> bytes = pkg::write(p);
+    EXPECT_EQ(loadLE(bytes, 10, 2), pkg::kFirstMinorWithPreshaderDivision);
+    pkg::ReadResult r = pkg::read(bytes);
+    ASSERT_TRUE(r.package) << r.error;
+    EXPECT_EQ(r.package->preshader, p.preshader);
+    storeLE(bytes, 10, pkg::kFirstMinorWithPreshaderDivision - 1, 2);
+    resealChecksum(bytes);
+    r = pkg::read(bytes);
+    EXPECT_FALSE(r.package);
+    EXPECT_EQ(r.error,
+              "package format 1.7 has a preshader program with a div or sqrt op, which only format 1.8 and later have");
+  }
+}
+
 // The shadow pass draws only materials that cast: a transparent or additive one with a depth-only
 // program is a package no compiler wrote.
 TEST(Package, ADepthProgramOfAMaterialThatCastsNoShadowIsRefused) {

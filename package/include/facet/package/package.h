@@ -20,17 +20,19 @@ namespace facet::package {
 // both and the command that rebuilds the package. The writer stamps the lowest minor that
 // describes the file, so packages that use no newer feature stay readable by older readers.
 inline constexpr uint16_t kFormatMajor = 1;
-inline constexpr uint16_t kFormatMinor = 7;  // 1.1: shader blobs compressed against a package dictionary;
+inline constexpr uint16_t kFormatMinor = 8;  // 1.1: shader blobs compressed against a package dictionary;
                                              // 1.2: the Metal argument slots (section MSLB);
                                              // 1.3: the preshader (section PRSH);
                                              // 1.4: lit shaders sample the environment as a cube map;
                                              // 1.5: shaders read two packed vertex streams;
                                              // 1.6: and per-instance 4×3 transforms (stream 2);
-                                             // 1.7: depth-only programs for the shadow pass
+                                             // 1.7: depth-only programs for the shadow pass;
+                                             // 1.8: the preshader's div and sqrt ops
 inline constexpr uint16_t kFirstMinorWithCubeEnvironment = 4;
 inline constexpr uint16_t kFirstMinorWithPackedVertices = 5;
 inline constexpr uint16_t kFirstMinorWithInstanceTransforms = 6;
 inline constexpr uint16_t kFirstMinorWithDepthPrograms = 7;
+inline constexpr uint16_t kFirstMinorWithPreshaderDivision = 8;
 
 enum class Stage : uint8_t { Vertex = 0, Fragment = 1 };
 
@@ -154,8 +156,10 @@ enum class PreshaderOpcode : uint8_t {
   Clamp = 5,      // r[dst] = min(max(r[a], k[0]), k[1]); NaN becomes k[0]
   Swizzle = 6,    // r[dst][i] = r[a][(offset >> 2i) & 3]
   Store = 7,      // `count` floats of r[a] to block byte `offset` (after the parameters)
+  Div = 8,        // r[dst] = r[a] / r[b] (format 1.8)
+  Sqrt = 9,       // r[dst] = sqrt(r[a]) (format 1.8)
 };
-inline constexpr uint8_t kLastPreshaderOpcode = uint8_t(PreshaderOpcode::Store);
+inline constexpr uint8_t kLastPreshaderOpcode = uint8_t(PreshaderOpcode::Sqrt);
 const char* toString(PreshaderOpcode);
 struct PreshaderOp {
   PreshaderOpcode code = PreshaderOpcode::Constant;
@@ -179,6 +183,9 @@ struct Preshader {
 };
 inline constexpr uint32_t kPreshaderRegisters = 64;
 inline constexpr size_t kMaxPreshaderOps = 256;
+// Whether a program uses an op of format 1.8 (the writer stamps 1.8; an older minor with one is
+// refused).
+bool usesPreshaderDivision(std::span<const PreshaderOp> ops);
 // What is wrong with a program run over a block of `blockSize` bytes whose first
 // `paramBlockSize` are the parameters, or "": known opcodes, registers in range, 1..4 components,
 // 4-byte aligned offsets, loads inside the parameters, stores after them and inside the block,
