@@ -416,7 +416,7 @@ TEST(IblShading, ConstantSkyIsAnExactEnvironment) {
 }
 
 // What an app's frame gets from setEnvironment: the SH in the frame block, the background at the
-// mean radiance, the environment and DFG textures at their ABI bindings.
+// mean radiance, the environment, irradiance cube and DFG textures at their ABI bindings.
 TEST(IblShading, SetEnvironmentLightsAnAppsFrame) {
   facet::runtime::Scene sky;
   sky.skyLuminance = 2000;
@@ -424,18 +424,21 @@ TEST(IblShading, SetEnvironmentLightsAnAppsFrame) {
   auto lighting = facet::runtime::buildEnvironmentLighting(sky, 0.001, &error);
   ASSERT_TRUE(lighting) << error;
   const facet::runtime::Texture environment = facet::runtime::environmentTexture(*lighting);
+  const facet::runtime::Texture irradiance = facet::runtime::irradianceTexture(*lighting);
   facet::runtime::FrameDesc frame;
-  facet::runtime::setEnvironment(frame, *lighting, environment);
+  facet::runtime::setEnvironment(frame, *lighting, environment, irradiance);
   for (size_t c = 0; c < 3; ++c) {
     EXPECT_NEAR(frame.frame.sh[0][c], 2.0f, 1e-4f);  // 2000 cd/m² × exposure 0.001, band 0 only
     EXPECT_EQ(frame.frame.sh[1][c], 0.0f);
     EXPECT_NEAR(frame.clearColor[c], 2.0f, 1e-4f);
   }
-  ASSERT_EQ(frame.frameTextures.size(), 2u);
+  ASSERT_EQ(frame.frameTextures.size(), 3u);
   EXPECT_EQ(frame.frameTextures[0].binding, facet::abi::kEnvironmentBinding);
   EXPECT_EQ(frame.frameTextures[0].texture, &environment);
-  EXPECT_EQ(frame.frameTextures[1].binding, facet::abi::kDfgLutBinding);
-  EXPECT_EQ(frame.frameTextures[1].texture, &facet::runtime::dfgTexture());
+  EXPECT_EQ(frame.frameTextures[1].binding, facet::abi::kIrradianceBinding);
+  EXPECT_EQ(frame.frameTextures[1].texture, &irradiance);
+  EXPECT_EQ(frame.frameTextures[2].binding, facet::abi::kDfgLutBinding);
+  EXPECT_EQ(frame.frameTextures[2].texture, &facet::runtime::dfgTexture());
 }
 
 // The cube map reaches the shaders the right way round on both backends: a mirror (a white metal
