@@ -5,8 +5,8 @@
 // ambient_sh.glsl, max(Σ_{k<9} c_k p_k(n), 0), which the runtime evaluates at
 // each texel's centre direction (runtime::irradianceTexture; abi::kIrradianceMapSize² a face) and
 // the sampler interpolates bilinearly, across faces: one texture read on the texture pipe in place
-// of the sum's 9 RGB multiply-adds and 5 quadratic terms on the FMA pipe (docs/specular-tiers.md,
-// "Diffuse").
+// of the sum's 9 RGB multiply-adds and 5 quadratic terms on the FMA pipe (docs/ibl.md, "In the
+// shaders", has its error; docs/eval.md, "The irradiance cube", its Mali-G57 cycles).
 // fp16: the texels are RGBA16F of pre-exposed irradiance / π (O(1), the lights' contract), the
 // direction is the tier's precision and need not be unit length (a cube lookup takes ratios,
 // environment_cube.glsl). Level 0 only: no derivative is taken.

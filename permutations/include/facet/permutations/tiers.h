@@ -26,7 +26,8 @@ static_assert(sizeof kDiffuseModelNames / sizeof *kDiffuseModelNames == size_t(D
 enum class ColorSpace { Linear, GammaHack };
 enum class PrecisionPolicy { Highp, Mediump };
 // Image-based ambient light (docs/ibl.md, "In the shaders"). Diffuse always comes from SH
-// irradiance (per pixel or per vertex, as the diffuse axis says); the models differ in specular:
+// irradiance (per pixel, per vertex, or SH3 tabulated in the irradiance cube, as the diffuse axis
+// says); the models differ in specular:
 //   SplitSum  prefiltered environment at lod = r(2 − r)·(levels − 1), times the DFG table (Karis 2013,
 //             Filament): one environment and one table sample
 //   Analytic  the same environment sample, times Karis's 2014 analytic environment BRDF: no table
