@@ -1,5 +1,5 @@
 // Forward pass, lit, fragment stage: evaluate the material's surface program, then shade with
-// image-based ambient light (SH diffuse, unless lit per vertex, and the tier's environment
+// image-based ambient light (SH diffuse, or the irradiance cube's, unless lit per vertex, and the tier's environment
 // specular), in dir1 variants one directional light, and FACET_POINT_LIGHTS punctual
 // lights, each read from its fixed place in the frame block (unrolled below: no dynamic
 // indexing). Writes pre-exposed linear HDR.
@@ -11,7 +11,9 @@
 #endif
 #include "diffuse_lambert.glsl"
 #include "facet:specular"
-#if !defined(FACET_VERTEX_DIFFUSE)
+#if defined(FACET_IRRADIANCE_CUBE)
+#include "ambient_irradiance_cube.glsl"
+#elif !defined(FACET_VERTEX_DIFFUSE)
 #include "ambient_sh.glsl"
 #endif
 // The assembler places each chunk once, at its first #include, whatever the #if around it: a
@@ -186,6 +188,8 @@ void main() {
     vec3 color = apply_ambient_occlusion(material, material_diffuse_color(material) * v_diffuseLight);
 #elif defined(FACET_IBL_SAMPLED)
     vec3 color = shade_standard_ambient(material, sampled_irradiance_over_pi(shading_normal));
+#elif defined(FACET_IRRADIANCE_CUBE)
+    vec3 color = shade_standard_ambient(material, cube_irradiance_over_pi(shading_normal));
 #else
     vec3 color = shade_standard_ambient(material, sh_irradiance_over_pi(shading_normal));
 #endif

@@ -51,6 +51,13 @@ bool vertexDiffuse(const AssemblyInput& in) {
   return in.tier.diffuse == permutations::DiffuseModel::Vertex && in.material.shading == "lit";
 }
 
+// The `cube` diffuse reads the frame's irradiance cube per pixel; the sampled ground truth
+// integrates its own diffuse instead.
+bool cubeDiffuse(const AssemblyInput& in) {
+  return in.tier.diffuse == permutations::DiffuseModel::Cube && in.material.shading == "lit" &&
+         in.tier.ambient != permutations::AmbientModel::Sampled;
+}
+
 // The tangent frame is needed only to apply a tangent-space normal, and only lit shading reads it.
 bool usesNormalOutput(const AssemblyInput& in) {
   return in.material.shading == "lit" && in.material.surface.outputs.count("normal") > 0;
@@ -313,6 +320,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   if (in.material.blending == "masked")
     s += "#define FACET_ALPHA_CUTOFF " + ir::glslConstant(ir::Type::Float, {in.material.alphaCutoff}) + "\n";
   if (vertexDiffuse(in)) s += "#define FACET_VERTEX_DIFFUSE 1\n";
+  if (cubeDiffuse(in)) s += "#define FACET_IRRADIANCE_CUBE 1\n";
   if (in.tier.precision == permutations::PrecisionPolicy::Highp) s += "#define FACET_PRECISION_HIGHP 1\n";
   if (in.tier.colorSpace == permutations::ColorSpace::GammaHack) s += "#define FACET_GAMMA_HACK 1\n";
   if (in.preshade) {
@@ -446,12 +454,13 @@ std::string specularLutSampler(const AssemblyInput& in, Flavour flavour, const c
 
 // The frame textures of image-based lighting (shader_abi.h): the prefiltered environment in every
 // lit variant, the DFG table in split-sum ones (and the sampled ground truth's, for the energy
-// compensation).
+// compensation), the irradiance cube in `cube` diffuse ones.
 // Fragment stage only: the vertex stage evaluates SH from the frame block, never a texture.
 std::string iblSamplers(const AssemblyInput& in, Flavour flavour, const char* precision) {
   if (in.material.shading != "lit") return "";
   std::string s = frameSampler(flavour, abi::kEnvironmentSampler, precision);
   if (samplesDfgLut(in)) s += frameSampler(flavour, abi::kDfgLutSampler, precision);
+  if (cubeDiffuse(in)) s += frameSampler(flavour, abi::kIrradianceSampler, precision);
   return s;
 }
 

@@ -29,8 +29,8 @@ const std::vector<Axis>& axes() {
        nullptr,
        [](const ir::Material& m) { return !m.cloth; }},  // the cloth model has no specular lobe
       {"diffuse",
-       {"pixel", "vertex"},
-       [](const TierConfig& c) { return std::string(c.diffuse == DiffuseModel::Pixel ? "pixel" : "vertex"); },
+       {std::begin(permutations::kDiffuseModelNames), std::end(permutations::kDiffuseModelNames)},
+       [](const TierConfig& c) { return std::string(permutations::kDiffuseModelNames[int(c.diffuse)]); },
        [](TierConfig* c, const std::string& o) { permutations::applyOverride(c, "diffuse", o); }},
       {"ambient",
        {"split_sum", "analytic", "two_mip"},
@@ -46,7 +46,9 @@ const std::vector<Axis>& axes() {
        [](const TierConfig& c) { return std::to_string(c.shBands); },
        [](TierConfig* c, const std::string& o) { c->shBands = o == "2"   ? 2
                                                               : o == "5" ? 5
-                                                                         : 3; }},
+                                                                         : 3; },
+       // the irradiance cube tabulates SH3 whatever the tier's bands
+       [](const TierConfig& c) { return c.diffuse != DiffuseModel::Cube; }},
       {"color_space",
        {"linear", "gamma_hack"},
        [](const TierConfig& c) { return std::string(c.colorSpace == ColorSpace::Linear ? "linear" : "gamma_hack"); },

@@ -78,7 +78,8 @@ bool ExampleContent::create(const char* packagePath, std::string* error) {
   auto lighting = buildEnvironmentLighting(sky, exposure, error);
   if (!lighting) return false;
   environment = environmentTexture(*lighting);
-  setEnvironment(frame, *lighting, environment);
+  irradiance = irradianceTexture(*lighting);
+  setEnvironment(frame, *lighting, environment, irradiance);
   sphere = makeSphere();
   return true;
 }

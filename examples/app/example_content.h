@@ -25,6 +25,7 @@ struct ExampleContent {
   std::unique_ptr<runtime::MaterialInstance> glossy, rough;
   std::optional<runtime::ParameterHandle> roughness;
   runtime::Texture environment;  // frame.frameTextures points here: an ExampleContent stays put
+  runtime::Texture irradiance;
   runtime::Mesh sphere;
   runtime::FrameDesc frame;
 

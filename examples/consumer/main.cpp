@@ -94,7 +94,8 @@ int render(LoadedMaterial loaded, const std::string& out) {
   auto lighting = buildEnvironmentLighting(sky, exposure, &error);
   if (!lighting) return fail(error);
   const Texture environment = environmentTexture(*lighting);
-  setEnvironment(frame, *lighting, environment);
+  const Texture irradiance = irradianceTexture(*lighting);
+  setEnvironment(frame, *lighting, environment, irradiance);
   const Mesh sphere = makeSphere();
   std::array<float, 16> model{};
   const glm::mat4 identity(1);

@@ -68,7 +68,7 @@ const TierChoices& tierChoices() {
   static const TierChoices choices = {
       {"reference", "high", "mid", "low"},
       {{"specular", {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"}},
-       {"diffuse", {"pixel", "vertex"}},
+       {"diffuse", {"pixel", "vertex", "cube"}},
        {"clear_coat", {"ggx_kelemen", "ambient", "none"}},
        {"anisotropy", {"ggx_smith", "bent_ibl", "none"}},
        {"ao", {"single", "multi_bounce"}},

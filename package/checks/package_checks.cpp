@@ -106,8 +106,8 @@ std::optional<ProgramInterface> variantInterface(const PackageReader& reader, si
       out.parameters.push_back({p.name, p.offset, valueTypeOf(p)});
     }
   }
-  // The frame's textures a lit variant's draws bind (runtime/scene_frame.h): the environment, and
-  // the DFG table in the tiers whose ambient model reads it (elsewhere its binding holds a dummy).
+  // The frame's textures a lit variant's draws bind (runtime/scene_frame.h): the environment, the
+  // irradiance cube, and the DFG table in the tiers whose ambient model reads it (elsewhere its binding holds a dummy).
   // The key parses: semanticError checked it.
   const std::optional<permutations::VariantKey> parsed = permutations::VariantKey::parse(key);
   const bool splitSum = parsed && permutations::preset(parsed->tier).ambient == permutations::AmbientModel::SplitSum;
@@ -118,7 +118,11 @@ std::optional<ProgramInterface> variantInterface(const PackageReader& reader, si
   // material's alpha its own textures.
   out.depthOnly = parsed && parsed->depthOnly;
   const bool lit = m.shading == "lit" && !out.depthOnly;
-  if (lit) frame(abi::kEnvironmentSampler);
+  // A `cube` diffuse tier reads the irradiance cube; the package does not record which tiers do.
+  if (lit) {
+    frame(abi::kEnvironmentSampler);
+    frame(abi::kIrradianceSampler);
+  }
   // Receivers bind the shadow block and atlas (chunks/shadow_sun.glsl, chunks/shadow_spot.glsl).
   out.shadowReceiver = parsed && parsed->receivesShadow() && m.shading == "lit";
   if (out.shadowReceiver) frame(abi::kShadowAtlasSampler);

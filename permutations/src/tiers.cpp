@@ -79,9 +79,13 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
       }
     }
   }
-  if (axis == "diffuse" && (option == "pixel" || option == "vertex")) {
-    config->diffuse = option == "pixel" ? DiffuseModel::Pixel : DiffuseModel::Vertex;
-    return true;
+  if (axis == "diffuse") {
+    for (size_t i = 0; i < std::size(kDiffuseModelNames); ++i) {
+      if (option == kDiffuseModelNames[i]) {
+        config->diffuse = DiffuseModel(i);
+        return true;
+      }
+    }
   }
   if (axis == "clear_coat") {
     for (size_t i = 0; i < std::size(kClearCoatModelNames); ++i) {
@@ -136,13 +140,15 @@ bool applyOverride(TierConfig* config, const std::string& axis, const std::strin
 
 std::string describe(const TierConfig& c) {
   std::string s = kSpecularModelNames[int(c.specular)];
-  s += c.diffuse == DiffuseModel::Pixel ? ", pixel diffuse" : ", vertex diffuse";
+  s += std::string(", ") + kDiffuseModelNames[int(c.diffuse)] + " diffuse";
   s += c.colorSpace == ColorSpace::Linear ? ", linear" : ", gamma_hack";
   s += c.precision == PrecisionPolicy::Highp ? ", highp" : ", mediump";
   const char* ambient[] = {"split_sum", "analytic_env_brdf", "two_mip", "sampled"};
   s += std::string(", ") + ambient[int(c.ambient)];
   if (c.ambient == AmbientModel::Sampled)
     s += " (" + std::to_string(c.ambientSamples) + " samples)";
+  else if (c.diffuse == DiffuseModel::Cube)
+    s += " + irradiance cube";
   else
     s += " + sh" + std::to_string(c.shBands);
   if (c.energyCompensation) s += ", energy compensation";

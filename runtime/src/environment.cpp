@@ -11,6 +11,7 @@
 #include "facet/ibl/dfg_lut.h"
 #include "facet/ibl/embedded_dfg_lut.h"
 #include "facet/ibl/equirect_image.h"
+#include "facet/ibl/irradiance_cube.h"
 #include "facet/ibl/prefilter_environment.h"
 #include "facet/ibl/spherical_harmonics.h"
 #include "facet/runtime/image_texture.h"
@@ -91,6 +92,20 @@ std::shared_ptr<const PrefilteredSky> prefilteredSky(const Environment& e) {
   kept.push_back(made);
   if (kept.size() > kKept) kept.erase(kept.begin());
   return made;
+}
+
+// RGB floats as RGBA16F texels (alpha 1), little-endian (render_backend.h).
+std::vector<uint8_t> rgba16Texels(const std::vector<float>& rgb) {
+  std::vector<uint8_t> bytes(rgb.size() / 3 * 8);
+  for (size_t i = 0; i < rgb.size() / 3; ++i) {
+    const uint16_t texel[4] = {floatToHalf(rgb[3 * i]), floatToHalf(rgb[3 * i + 1]), floatToHalf(rgb[3 * i + 2]),
+                               floatToHalf(1.0f)};
+    for (size_t ch = 0; ch < 4; ++ch) {
+      bytes[8 * i + 2 * ch] = uint8_t(texel[ch] & 0xff);
+      bytes[8 * i + 2 * ch + 1] = uint8_t(texel[ch] >> 8);
+    }
+  }
+  return bytes;
 }
 
 }  // namespace
@@ -174,26 +189,32 @@ Texture environmentTexture(const EnvironmentLighting& lighting) {
   t.format = TextureFormat::Rgba16Float;
   t.linearFilter = true;
   t.cube = true;  // filtered across faces by both backends (chunks/environment_cube.glsl)
-  for (const std::vector<float>& rgb : lighting.levels) {
-    std::vector<uint8_t> bytes(rgb.size() / 3 * 8);
-    for (size_t i = 0; i < rgb.size() / 3; ++i) {
-      const uint16_t texel[4] = {floatToHalf(rgb[3 * i]), floatToHalf(rgb[3 * i + 1]), floatToHalf(rgb[3 * i + 2]),
-                                 floatToHalf(1.0f)};
-      for (size_t ch = 0; ch < 4; ++ch) {
-        bytes[8 * i + 2 * ch] = uint8_t(texel[ch] & 0xff);  // little-endian (render_backend.h)
-        bytes[8 * i + 2 * ch + 1] = uint8_t(texel[ch] >> 8);
-      }
-    }
-    t.levels.push_back(std::move(bytes));
-  }
+  for (const std::vector<float>& rgb : lighting.levels) t.levels.push_back(rgba16Texels(rgb));
   return t;
 }
 
-void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment) {
+Texture irradianceTexture(const EnvironmentLighting& lighting) {
+  std::vector<Vec3> sh3(abi::kShCoefficients);
+  for (size_t k = 0; k < sh3.size(); ++k) sh3[k] = {lighting.sh[k][0], lighting.sh[k][1], lighting.sh[k][2]};
+  const ibl::CubeImage cube = ibl::tabulateIrradiance(sh3, int(abi::kIrradianceMapSize));
+  Texture t;
+  t.width = t.height = abi::kIrradianceMapSize;
+  t.format = TextureFormat::Rgba16Float;
+  t.linearFilter = true;
+  t.cube = true;
+  std::vector<float> rgb(cube.rgb.size());
+  for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = float(cube.rgb[i]);
+  t.levels.push_back(rgba16Texels(rgb));
+  return t;
+}
+
+void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment,
+                    const Texture& irradiance) {
   for (size_t k = 0; k < abi::kShFrameCoefficients; ++k)
     for (size_t c = 0; c < 3; ++c) frame.frame.sh[k][c] = lighting.sh[k][c];
   for (size_t c = 0; c < 3; ++c) frame.clearColor[c] = lighting.meanRadiance[c];
   frame.frameTextures.push_back({abi::kEnvironmentBinding, abi::kEnvironmentName, &environment});
+  frame.frameTextures.push_back({abi::kIrradianceBinding, abi::kIrradianceName, &irradiance});
   frame.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &dfgTexture()});
 }
 

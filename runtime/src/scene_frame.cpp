@@ -162,7 +162,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   for (size_t slot = 0; slot < slots.size(); ++slot)
     storePunctual(scene.lights[slots[slot]], out->exposure_, &f.punctualLights[slot]);
   // Image-based lighting, pre-exposed like the lights: SH in the frame block, the prefiltered
-  // environment for every lit variant, the DFG table for the tiers whose ambient model reads it.
+  // environment and the irradiance cube for every lit variant, the DFG table for the tiers whose
+  // ambient model reads it.
   auto lighting = buildEnvironmentLighting(scene, out->exposure_, error);
   if (!lighting) return nullptr;
   out->environment_ = std::move(*lighting);
@@ -173,6 +174,8 @@ std::unique_ptr<SceneFrame> SceneFrame::prepare(const Scene& scene, const std::s
   out->environmentTexture_ = std::make_unique<Texture>(environmentTexture(out->environment_));
   out->frame_.frameTextures.push_back(
       {abi::kEnvironmentBinding, abi::kEnvironmentName, out->environmentTexture_.get()});
+  out->irradianceTexture_ = std::make_unique<Texture>(irradianceTexture(out->environment_));
+  out->frame_.frameTextures.push_back({abi::kIrradianceBinding, abi::kIrradianceName, out->irradianceTexture_.get()});
   if (permutations::preset(*tier).ambient == permutations::AmbientModel::SplitSum)
     out->frame_.frameTextures.push_back({abi::kDfgLutBinding, abi::kDfgLutName, &dfgTexture()});
   out->frame_.width = scene.width;

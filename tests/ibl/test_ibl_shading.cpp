@@ -342,6 +342,92 @@ TEST(IblShading, Band4IrradianceReachesBothBackends) {
   EXPECT_GT(squaredBand4, 25 * squaredError[1]);
 }
 
+// The `cube` diffuse (permutations::DiffuseModel::Cube, chunks/ambient_irradiance_cube.glsl):
+// `high` built with it renders the rough white dielectric under the softboxes on both backends, and
+// each backend's pixels must be the SH3 sum of the frame block's nine coefficients (what the `pixel`
+// diffuse computes per pixel: evaluateShaderIrradiance) plus the roughest level's specular, within
+// the SH tests' 1 % + 0.002. What reaches the pixels is the frame's irradiance cube: with that
+// texture replaced by a black one the diffuse must vanish from both (the specular stays).
+TEST(IblShading, IrradianceCubeRendersTheSh3DiffuseOnBothBackends) {
+  facet::compiler::BuildOptions options;
+  options.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
+    if (tier == facet::permutations::Tier::High) config->diffuse = facet::permutations::DiffuseModel::Cube;
+  };
+  const std::string packages = facet::test::writePackagesFromTexts("ibl-irradiance-cube", {kBall}, options);
+  std::string error;
+  auto vk = facet::runtime::createVulkanBackend({true}, &error);
+  auto gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(vk && gl) << error;
+  const std::string json =
+      sceneJson("high", R"("environment": {"image": "environments/softboxes.hdr", "luminance": 8000})",
+                R"("metal": 0, "rough": 1, "refl": 0)", 128);
+  auto scene = facet::runtime::parseScene(facet::test::sourceDir() + "/tests/data/scenes/inline.json", json, &error);
+  ASSERT_TRUE(scene) << error;
+  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
+  ASSERT_TRUE(frame) << error;
+  // The same frame with a black irradiance cube in place of the environment's.
+  facet::runtime::EnvironmentLighting dark = frame->environment();
+  for (auto& c : dark.sh) c = {0, 0, 0};
+  const facet::runtime::Texture black = facet::runtime::irradianceTexture(dark);
+  facet::runtime::FrameDesc darkFrame = frame->frame();
+  int replaced = 0;
+  for (facet::runtime::TextureBinding& b : darkFrame.frameTextures) {
+    if (b.binding != facet::abi::kIrradianceBinding) continue;
+    b.texture = &black;
+    ++replaced;
+  }
+  ASSERT_EQ(replaced, 1);
+  FrameResult images[2], darkImages[2];
+  facet::runtime::RenderBackend* backends[2] = {vk.get(), gl.get()};
+  for (int b = 0; b < 2; ++b) {
+    ASSERT_TRUE(backends[b]->render(frame->frame(), &images[b], &error)) << error;
+    ASSERT_TRUE(backends[b]->render(darkFrame, &darkImages[b], &error)) << error;
+  }
+  EXPECT_TRUE(vk->validationErrors().empty());
+  EXPECT_TRUE(gl->validationErrors().empty());
+
+  std::vector<Vec3> sh3(facet::abi::kShCoefficients);
+  for (size_t k = 0; k < sh3.size(); ++k) {
+    const float* c = frame->frame().frame.sh[k];
+    sh3[k] = {c[0], c[1], c[2]};
+  }
+  const auto& env = frame->environment();
+  facet::ibl::CubeImage roughest(int(env.width >> 4));
+  roughest.rgb = env.levels.back();
+  int checked = 0;
+  double worst[2] = {0, 0}, squaredError[2] = {0, 0}, darkDiffuse[2] = {0, 0}, diffuseSum = 0;
+  facet::test::forEachSpherePixel(*scene, 4, 0.25, [&](uint32_t x, uint32_t y, glm::dvec3, glm::dvec3 n, glm::dvec3 v) {
+    const Vec3 diffuse = facet::ibl::evaluateShaderIrradiance(sh3, {n.x, n.y, n.z});
+    const glm::dvec3 r = glm::reflect(-v, n);
+    const Vec3 specular =
+        facet::ibl::sampleBilinear(roughest, {r.x, r.y, r.z}) * dfgBilinear(glm::dot(n, v), 1.0).first;
+    const double expectedDiffuse[3] = {diffuse.x, diffuse.y, diffuse.z};
+    const double expectedSpecular[3] = {specular.x, specular.y, specular.z};
+    for (int ch = 0; ch < 3; ++ch) {
+      const double expected = expectedDiffuse[ch] + expectedSpecular[ch];
+      const double tolerance = 0.01 * expected + 0.002;
+      diffuseSum += expectedDiffuse[ch];
+      for (int b = 0; b < 2; ++b) {
+        const size_t at = (size_t(y) * scene->width + x) * 4 + size_t(ch);
+        const float got = images[b].hdr[at];
+        worst[b] = std::max(worst[b], std::abs(got - expected) / tolerance);
+        squaredError[b] += (got - expected) * (got - expected);
+        darkDiffuse[b] += darkImages[b].hdr[at] - expectedSpecular[ch];
+        EXPECT_NEAR(got, expected, tolerance)
+            << (b == 0 ? "Vulkan" : "GL") << " pixel (" << x << ", " << y << ") channel " << ch;
+      }
+    }
+    ++checked;
+  });
+  std::printf(
+      "irradiance cube under the softboxes: %d pixels, worst error / tolerance Vulkan %.3f, GL %.3f; RMS error "
+      "Vulkan %.5f, GL %.5f; mean diffuse %.4f, with a black cube Vulkan %.4f, GL %.4f\n",
+      checked, worst[0], worst[1], std::sqrt(squaredError[0] / checked / 3), std::sqrt(squaredError[1] / checked / 3),
+      diffuseSum / checked / 3, darkDiffuse[0] / checked / 3, darkDiffuse[1] / checked / 3);
+  EXPECT_GT(checked, 400);
+  for (int b = 0; b < 2; ++b) EXPECT_LT(std::abs(darkDiffuse[b]), 0.02 * diffuseSum) << (b == 0 ? "Vulkan" : "GL");
+}
+
 // Every tier renders the example outdoor scene (analytic sky, sun, three materials) on both
 // backends without validation errors; the backends agree and each tier is measured against the
 // reference (8-bit PSNR). The floors catch a broken ambient model, not quality; the figures are
@@ -416,7 +502,7 @@ TEST(IblShading, ConstantSkyIsAnExactEnvironment) {
 }
 
 // What an app's frame gets from setEnvironment: the SH in the frame block, the background at the
-// mean radiance, the environment and DFG textures at their ABI bindings.
+// mean radiance, the environment, irradiance cube and DFG textures at their ABI bindings.
 TEST(IblShading, SetEnvironmentLightsAnAppsFrame) {
   facet::runtime::Scene sky;
   sky.skyLuminance = 2000;
@@ -424,18 +510,21 @@ TEST(IblShading, SetEnvironmentLightsAnAppsFrame) {
   auto lighting = facet::runtime::buildEnvironmentLighting(sky, 0.001, &error);
   ASSERT_TRUE(lighting) << error;
   const facet::runtime::Texture environment = facet::runtime::environmentTexture(*lighting);
+  const facet::runtime::Texture irradiance = facet::runtime::irradianceTexture(*lighting);
   facet::runtime::FrameDesc frame;
-  facet::runtime::setEnvironment(frame, *lighting, environment);
+  facet::runtime::setEnvironment(frame, *lighting, environment, irradiance);
   for (size_t c = 0; c < 3; ++c) {
     EXPECT_NEAR(frame.frame.sh[0][c], 2.0f, 1e-4f);  // 2000 cd/m² × exposure 0.001, band 0 only
     EXPECT_EQ(frame.frame.sh[1][c], 0.0f);
     EXPECT_NEAR(frame.clearColor[c], 2.0f, 1e-4f);
   }
-  ASSERT_EQ(frame.frameTextures.size(), 2u);
+  ASSERT_EQ(frame.frameTextures.size(), 3u);
   EXPECT_EQ(frame.frameTextures[0].binding, facet::abi::kEnvironmentBinding);
   EXPECT_EQ(frame.frameTextures[0].texture, &environment);
-  EXPECT_EQ(frame.frameTextures[1].binding, facet::abi::kDfgLutBinding);
-  EXPECT_EQ(frame.frameTextures[1].texture, &facet::runtime::dfgTexture());
+  EXPECT_EQ(frame.frameTextures[1].binding, facet::abi::kIrradianceBinding);
+  EXPECT_EQ(frame.frameTextures[1].texture, &irradiance);
+  EXPECT_EQ(frame.frameTextures[2].binding, facet::abi::kDfgLutBinding);
+  EXPECT_EQ(frame.frameTextures[2].texture, &facet::runtime::dfgTexture());
 }
 
 // The cube map reaches the shaders the right way round on both backends: a mirror (a white metal

@@ -230,10 +230,11 @@ TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
 TEST(TuneSearch, CandidatesAreEveryCombinationOnceWithTheTiersAsShippedAmongThem) {
   const facet::ir::Material m = example("red_plastic");
   const std::vector<TierConfig> all = tune::candidates(m);
-  // specular 5 × diffuse 2 × (split-sum with and without compensation, analytic, two-mip) 4 ×
-  // SH bands 3 (2, 3, 5) × colour space 2 × precision 2 × dominant direction 2: no clear coat,
-  // anisotropy or ambient occlusion in red_plastic.
-  EXPECT_EQ(all.size(), 5u * 2 * 4 * 3 * 2 * 2 * 2);
+  // specular 5 × (diffuse pixel or vertex × SH bands 3 (2, 3, 5), and the irradiance cube, which
+  // has no bands) 7 × (split-sum with and without compensation, analytic, two-mip) 4 × colour space
+  // 2 × precision 2 × dominant direction 2: no clear coat, anisotropy or ambient occlusion in
+  // red_plastic.
+  EXPECT_EQ(all.size(), 5u * (2 * 3 + 1) * 4 * 2 * 2 * 2);
   for (size_t i = 0; i < all.size(); ++i)
     for (size_t j = i + 1; j < all.size(); ++j) ASSERT_FALSE(all[i] == all[j]) << i << " " << j;
   for (const facet::eval::Configuration& c : facet::eval::configurations(m, {Tier::High, Tier::Mid, Tier::Low}, false))

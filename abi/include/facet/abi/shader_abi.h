@@ -100,6 +100,7 @@ inline constexpr uint32_t kDfgLutBinding = 0;       // "facet_dfgLut": split-sum
 inline constexpr uint32_t kSpecularLutBinding = 1;  // "facet_specularLut": low-tier specular LUT (from the package)
 inline constexpr uint32_t kEnvironmentBinding = 2;  // "facet_environment": prefiltered radiance, mip = roughness
 inline constexpr uint32_t kShadowAtlasBinding = 3;  // "facet_shadowAtlas": the sun's depth atlas, compare sampler
+inline constexpr uint32_t kIrradianceBinding = 4;   // "facet_irradiance": diffuse irradiance / π, the `cube` diffuse
 inline constexpr const char* kSpecularLutName = "facet_specularLut";
 // The specular table's size, R8: chunks/specular_lut.glsl addresses its texel centres with these
 // numbers, so the runtime refuses a package table of any other shape (even one of the same bytes).
@@ -111,6 +112,12 @@ inline constexpr const char* kEnvironmentName = "facet_environment";  // RGBA16F
 // r_m (2 − r_m) = m / (levels − 1), so the shaders read lod = r (2 − r) × (kEnvironmentLevels − 1)
 // (chunks/ibl_prefiltered.glsl).
 inline constexpr uint32_t kEnvironmentLevels = 5;
+// The irradiance cube of the `cube` diffuse (chunks/ambient_irradiance_cube.glsl): SH3's
+// irradiance / π, the frame block's sh[0..8] evaluated at each texel's centre direction (negative
+// lobes clamped to 0, as the SH sum is), RGBA16F, one level of kIrradianceMapSize² a face,
+// bilinear across faces (runtime::irradianceTexture).
+inline constexpr const char* kIrradianceName = "facet_irradiance";
+inline constexpr uint32_t kIrradianceMapSize = 32;
 inline constexpr uint32_t kShCoefficients = 9;  // SH3; SH2 variants read the first 4
 // With band 4 (TierConfig::shBands 5, an option no preset selects) the frame block's sh array
 // holds 9 more: band 4's, after SH3's (band 3's are zero under the clamped cosine, not stored).
@@ -369,7 +376,9 @@ struct SamplerDesc {
 inline constexpr SamplerDesc kDfgLutSampler{kDfgLutName, kTextureSet, kDfgLutBinding};
 inline constexpr SamplerDesc kSpecularLutSampler{kSpecularLutName, kTextureSet, kSpecularLutBinding};
 inline constexpr SamplerDesc kEnvironmentSampler{kEnvironmentName, kTextureSet, kEnvironmentBinding, true};
-inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSampler, kEnvironmentSampler};
+inline constexpr SamplerDesc kIrradianceSampler{kIrradianceName, kTextureSet, kIrradianceBinding, true};
+inline constexpr SamplerDesc kFrameSamplers[] = {kDfgLutSampler, kSpecularLutSampler, kEnvironmentSampler,
+                                                 kIrradianceSampler};
 // The sun's shadow atlas (ShadowUniforms), receiver variants only: depth compare on, bilinear where
 // the device filters depth (docs/shadows.md), clamped to the edge.
 inline constexpr const char* kShadowAtlasName = "facet_shadowAtlas";

@@ -13,11 +13,21 @@ enum class SpecularModel { GgxSmith, GgxFastV, FusedHammon, Zioma, Lut };
 inline constexpr const char* kSpecularModelNames[] = {"ggx_smith", "ggx_fastv", "fused_hammon", "zioma", "lut"};
 static_assert(sizeof kSpecularModelNames / sizeof *kSpecularModelNames == size_t(SpecularModel::Lut) + 1,
               "one name per SpecularModel, in its order");
-enum class DiffuseModel { Pixel, Vertex };
+// Where the diffuse ambient (and the lights' diffuse) is evaluated:
+//   Pixel   per pixel, irradiance from SH in the frame block (chunks/ambient_sh.glsl)
+//   Vertex  per vertex with the lights' diffuse, interpolated (Zioma 2015; forward.vert.glsl)
+//   Cube    per pixel, irradiance read from the frame's irradiance cube map, SH3 tabulated by the
+//           runtime (chunks/ambient_irradiance_cube.glsl): one texture read in place of the SH sum
+enum class DiffuseModel { Pixel, Vertex, Cube };
+// The material language's names, indexed by DiffuseModel (`tier high { diffuse = cube }`).
+inline constexpr const char* kDiffuseModelNames[] = {"pixel", "vertex", "cube"};
+static_assert(sizeof kDiffuseModelNames / sizeof *kDiffuseModelNames == size_t(DiffuseModel::Cube) + 1,
+              "one name per DiffuseModel, in its order");
 enum class ColorSpace { Linear, GammaHack };
 enum class PrecisionPolicy { Highp, Mediump };
 // Image-based ambient light (docs/ibl.md, "In the shaders"). Diffuse always comes from SH
-// irradiance (per pixel or per vertex, as the diffuse axis says); the models differ in specular:
+// irradiance (per pixel, per vertex, or SH3 tabulated in the irradiance cube, as the diffuse axis
+// says); the models differ in specular:
 //   SplitSum  prefiltered environment at lod = r(2 − r)·(levels − 1), times the DFG table (Karis 2013,
 //             Filament): one environment and one table sample
 //   Analytic  the same environment sample, times Karis's 2014 analytic environment BRDF: no table
@@ -120,7 +130,9 @@ struct TierConfig {
   ColorSpace colorSpace = ColorSpace::Linear;
   PrecisionPolicy precision = PrecisionPolicy::Mediump;
   AmbientModel ambient = AmbientModel::SplitSum;
-  int shBands = 3;  // SH irradiance bands: 3 (9 coefficients), 2 (4) or 5 (l = 0..4: 18, band 3 being 0)
+  // SH irradiance bands: 3 (9 coefficients), 2 (4) or 5 (l = 0..4: 18, band 3 being 0); DiffuseModel::Cube
+  // reads SH3 tabulated whatever this says
+  int shBands = 3;
   bool energyCompensation = false;  // Filament's multiple-scattering factor on all specular (SplitSum only)
   ClearCoatModel clearCoat = ClearCoatModel::GgxKelemen;
   AnisotropyModel anisotropy = AnisotropyModel::GgxSmith;

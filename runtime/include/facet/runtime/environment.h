@@ -59,11 +59,19 @@ const DfgTable& dfgTable();
 // (facet::ibl::embeddedSheenLut, sheen_lut.h), which cloth materials read (chunks/shading_cloth.glsl).
 const Texture& dfgTexture();
 
+// The irradiance cube the `cube` diffuse reads (chunks/ambient_irradiance_cube.glsl): SH3's
+// irradiance / π from lighting.sh[0..8] (what the SH diffuse sums per pixel) at every texel's
+// centre, an RGBA16F cube of one level, abi::kIrradianceMapSize² a face, bilinear across faces
+// (facet::ibl::tabulateIrradiance; 6144 texels, well under a millisecond).
+Texture irradianceTexture(const EnvironmentLighting& lighting);
+
 // An app's frame lit by `lighting`: its SH coefficients into the frame block, its mean radiance
 // as the clear colour (what a constant sky's background is), and `environment`
-// (environmentTexture(lighting), kept alive by the caller while the frame is rendered) and the DFG
-// table bound at their shader_abi.h slots. SceneFrame does the same for scenes.
-void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment);
+// (environmentTexture(lighting)), `irradiance` (irradianceTexture(lighting)), both kept alive by
+// the caller while the frame is rendered, and the DFG table bound at their shader_abi.h slots.
+// SceneFrame does the same for scenes.
+void setEnvironment(FrameDesc& frame, const EnvironmentLighting& lighting, const Texture& environment,
+                    const Texture& irradiance);
 
 // IEEE binary16 bits of a float, rounded to nearest even; beyond the largest finite half
 // (65504) it saturates there rather than becoming infinity, like the shaders' saturateMediump.

@@ -39,6 +39,7 @@ class SceneFrame {
   std::map<std::string, std::unique_ptr<Texture>> textures_;  // by image path (or default colour)
   EnvironmentLighting environment_;
   std::unique_ptr<Texture> environmentTexture_;
+  std::unique_ptr<Texture> irradianceTexture_;
   ColorLutTexels colorLut_;  // the scene's grading, when it has some
   FrameDesc frame_;
   double exposure_ = 1;
