@@ -371,6 +371,57 @@ TEST(TuneSearch, ScreeningOnTheFirstViewChangesNoChoiceAndNoBestReached) {
   EXPECT_NE(text.find("<polyline"), std::string::npos);               // the front
 }
 
+// A candidate whose views' build is byte for byte an earlier one's takes that render's figures:
+// on velvet (cloth) without its sheen, the ambient forms, which then have no specular ambient to
+// shape, build the same shaders. Every figure of the reports, and so every choice and best
+// reached, is the one rendering each candidate gives.
+TEST(TuneSearch, ReusingTheRenderOfAnIdenticalBuildChangesNoChoiceAndNoFigure) {
+  const facet::ir::Material m = example("velvet");
+  tune::TuneOptions o = tinyGrid();
+  o.eval.cacheDir = facet::test::scratchDir("tune-reuse") + "/cache";
+  auto axis = [](const std::string& name) {
+    for (const facet::eval::Axis& a : facet::eval::axes())
+      if (a.name == name) return &a;
+    return static_cast<const facet::eval::Axis*>(nullptr);
+  };
+  const facet::eval::Axis* ambient = axis("ambient");
+  const facet::eval::Axis* sheen = axis("sheen");
+  ASSERT_TRUE(ambient && sheen);
+  for (const facet::eval::Configuration& c : facet::eval::configurations(m, {Tier::Mid, Tier::Low}, false))
+    if (c.tier != Tier::Reference)
+      for (const std::string& s : sheen->options)
+        for (const std::string& a : ambient->options) {
+          TierConfig t = c.config;
+          sheen->set(&t, s);
+          ambient->set(&t, a);
+          if (std::find(o.space.begin(), o.space.end(), t) == o.space.end()) o.space.push_back(t);
+        }
+  o.budgets.tiers[Tier::High].minPsnrDb = 150;  // none meets it: every candidate is rendered
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 40;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 30;
+  facet::eval::EvalError error;
+  auto reused = tune::tune(m, o, &error);
+  ASSERT_TRUE(reused) << error.message;
+  o.reuseIdenticalViews = false;
+  auto rendered = tune::tune(m, o, &error);
+  ASSERT_TRUE(rendered) << error.message;
+  EXPECT_GT(reused->reused, 0u);
+  EXPECT_EQ(rendered->reused, 0u);
+  EXPECT_EQ(tune::markdownReport(*reused), tune::markdownReport(*rendered));
+  EXPECT_EQ(tune::jsonReport(*reused), tune::jsonReport(*rendered));
+  EXPECT_EQ(tune::plotSvg(*reused), tune::plotSvg(*rendered));
+  ASSERT_EQ(reused->tiers.size(), rendered->tiers.size());
+  for (size_t t = 0; t < reused->tiers.size(); ++t) {
+    ASSERT_EQ(bool(reused->tiers[t].chosen), bool(rendered->tiers[t].chosen)) << t;
+    if (reused->tiers[t].chosen) {
+      EXPECT_TRUE(reused->tiers[t].chosen->result.configuration.config ==
+                  rendered->tiers[t].chosen->result.configuration.config)
+          << t;
+    }
+  }
+  EXPECT_FALSE(reused->tiers[0].chosen);
+}
+
 // The gate: committed choices re-scored; a worse configuration in their place fails with figures.
 TEST(TuneGate, CommittedChoicesPassAndAWorseOneFailsWithItsFigures) {
   const facet::ir::Material m = example("red_plastic");
