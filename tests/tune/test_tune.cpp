@@ -190,14 +190,24 @@ TEST(TuneChoices, WrittenDeterministicallyAndReadBack) {
 // input it once got wrong (tests/fuzz/tune_regressions/): each file is refused naming it, or read
 // within the documented ranges; a tuning file read writes back to the same text once written.
 TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
-  const facet::ir::Material materials[] = {example("red_plastic"), example("brushed_gold")};
-  std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json"),
-                                    facet::test::examplePath("materials/red_plastic.tuning.json"),
-                                    facet::test::examplePath("materials/brushed_gold.tuning.json")};
+  // The committed tuning files, each read against its own material too.
+  std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json")};
+  std::vector<facet::ir::Material> materials = {example("red_plastic"), example("brushed_gold")};
+  const std::string suffix = ".tuning.json";
+  for (const auto& entry : std::filesystem::directory_iterator(facet::test::examplePath("materials"))) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    files.push_back(entry.path().string());
+    const std::string stem = name.substr(0, name.size() - suffix.size());
+    if (stem != "red_plastic" && stem != "brushed_gold") materials.push_back(example(stem));
+  }
+  std::sort(files.begin() + 1, files.end());
+  const size_t seeds = files.size();
+  ASSERT_GE(seeds, 4u);  // the budgets file, red_plastic's, brushed_gold's and velvet's tuning files
   const std::string regressions = facet::test::sourceDir() + "/tests/fuzz/tune_regressions";
   for (const auto& entry : std::filesystem::directory_iterator(regressions))
     if (entry.path().filename() != "README.md") files.push_back(entry.path().string());
-  std::sort(files.begin() + 3, files.end());
+  std::sort(files.begin() + std::ptrdiff_t(seeds), files.end());
   size_t read = 0;
   for (const std::string& path : files) {
     const std::string text = facet::test::readText(path);
@@ -224,7 +234,7 @@ TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
       }
     }
   }
-  EXPECT_GE(read, 3u);  // the budgets file and each committed tuning file against its material
+  EXPECT_GE(read, seeds);  // the budgets file and each committed tuning file against its material
 }
 
 TEST(TuneSearch, CandidatesAreEveryCombinationOnceWithTheTiersAsShippedAmongThem) {
