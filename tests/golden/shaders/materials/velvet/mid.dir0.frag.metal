@@ -15,6 +15,25 @@ struct MaterialParams
     float facet_alpha;
 };
 
+struct PunctualLightData
+{
+    float4 positionFalloff;
+    float4 colorIntensity;
+    float4 direction;
+    float4 spotScaleOffset;
+};
+
+struct FrameUniforms
+{
+    float4x4 viewProjection;
+    float4 cameraPosition;
+    float4 lightDirection;
+    float4 lightColor;
+    float4 ambient;
+    PunctualLightData punctualLights[4];
+    float4 sh[9];
+};
+
 struct main0_out
 {
     float4 fragColor [[color(0)]];
@@ -24,19 +43,18 @@ struct main0_in
 {
     float3 v_toEye [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float3 v_diffuseLight [[user(locn2)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _268 = normalize(half3(in.v_normal));
-    float3 _272 = fast::normalize(in.v_toEye);
-    half3 _445 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _545 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_268, half3(_272)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _404 = _545.z;
-    float4 _464 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_272), _268)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half4(_464).xyz, _445 * _404, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(_445.x, max(_445.y, _445.z)))), _404, half(1.0))), half(1.0)));
+    half3 _333 = normalize(half3(in.v_normal));
+    float3 _337 = fast::normalize(in.v_toEye);
+    half3 _546 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _657 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_333, half3(_337)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _505 = _657.z;
+    float4 _565 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_337), _333)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(half4(_565).xyz, _546 * _505, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _333.y)) + (half4(frame.sh[2]).xyz * _333.z)) + (half4(frame.sh[3]).xyz * _333.x), half3(float3(0.0)))) * fma(half(-float(max(_546.x, max(_546.y, _546.z)))), _505, half(1.0))), half(1.0)));
     return out;
 }
 
