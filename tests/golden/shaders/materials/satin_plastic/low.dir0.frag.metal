@@ -30,18 +30,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _374 = normalize(half3(in.v_normal));
-    float3 _378 = fast::normalize(in.v_toEye);
-    half _515 = max(dot(_374, half3(_378)), half(9.9999997473787516355514526367188e-05));
-    half3 _519 = reflect(-half3(_378), _374);
-    float4 _555 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_515, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _584 = facet_environment.sample(facet_environmentSmplr, float3(_519), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _661 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _668 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _797 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_515, _661)), level(0.0)));
-    half _631 = _797.z;
-    float4 _692 = facet_environment.sample(facet_environmentSmplr, float3(_519), level(_661 * (half(4.0) * (half(2.0) - _661))));
-    out.fragColor = float4(half4(fma(half4(_692).xyz, _668 * _631, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_584).xyz * (mix(half4(_555).xxx, half4(_555).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_555).y) - half(1.0)))))) * fma(half(-float(max(_668.x, max(_668.y, _668.z)))), _631, half(1.0))), half(1.0)));
+    half3 _351 = normalize(half3(in.v_normal));
+    float3 _355 = fast::normalize(in.v_toEye);
+    half _490 = max(dot(_351, half3(_355)), half(9.9999997473787516355514526367188e-05));
+    half3 _494 = reflect(-half3(_355), _351);
+    float4 _524 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_490, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _543 = facet_environment.sample(facet_environmentSmplr, float3(_494), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _620 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
+    half3 _627 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _750 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_490, _620)), level(0.0)));
+    half _590 = _750.z;
+    float4 _651 = facet_environment.sample(facet_environmentSmplr, float3(_494), level(_620 * (half(4.0) * (half(2.0) - _620))));
+    out.fragColor = float4(half4(fma(half4(_651).xyz, _627 * _590, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_543).xyz * mix(half4(_524).xxx, half4(_524).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(_627.x, max(_627.y, _627.z)))), _590, half(1.0))), half(1.0)));
     return out;
 }
 
