@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "facet/compiler/build.h"
@@ -120,43 +121,20 @@ class Evaluation {
     }
 
     ErrorAccumulator all, truthError;
+    // The renders of the same bytes so far, view by view (MeasureOptions::reuseIdenticalViews).
+    std::vector<RenderedView>* same = nullptr;
+    if (how.reuseIdenticalViews && !isReference && !how.images && options_.timingFrames <= 0 && groundTruth_.empty())
+      same = &renderedViews_[renderedBytes(built->package, c.config)];
     for (size_t vi = 0; vi < views_.size(); ++vi) {
-      runtime::Scene scene = views_[vi].scene;
-      scene.tier = permutations::toString(c.tier);
-      if (isReference) scene.shadows.atlasSize = kReferenceShadowAtlas;
-      std::string message;
-      std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
-      if (!prepared) return fail(c, message, error);
-      const runtime::FrameDesc& frame = prepared->frame();
-      runtime::FrameResult image;
-      for (int w = 0; w < std::max(options_.warmupFrames, 1); ++w)
-        if (!backend_->render(frame, &image, &message)) return fail(c, "render failed: " + message, error);
-      if (vi == 0 && !time(c, frame, r, error)) return false;
-      if (!backend_->validationErrors().empty())
-        return fail(c, "Vulkan validation reported: " + backend_->validationErrors().front(), error);
-
-      ViewResult view;
-      view.name = views_[vi].name;
-      view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
-      if (how.images && !runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
-        return fail(c, message, error);
-      if (isReference) {
-        if (backgrounds_.size() == vi)
-          backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
-        referenceImages_.push_back(std::move(image));
-        if (vi == 0) referenceFrame_ = std::move(prepared);  // for the paired timing of the others
-      }
-      const runtime::FrameResult& ref = referenceImages_[vi];
-      const runtime::FrameResult& mine = isReference ? ref : image;
-      std::vector<bool> mask = coverageMask(mine.hdr, ref.hdr, backgrounds_[vi]);
-      ErrorAccumulator one;
-      one.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
-      all.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
-      view.error = one.metrics();
-      r->views.push_back(std::move(view));
-      if (!groundTruth_.empty()) {
-        const runtime::FrameResult& truth = groundTruth_[vi];
-        truthError.add(mine.ldr, truth.ldr, mine.hdr, truth.hdr, coverageMask(mine.hdr, truth.hdr, backgrounds_[vi]));
+      if (same && vi < same->size()) {
+        r->views.push_back((*same)[vi].view);
+        r->views.back().image = (fs::path("images") / (fileStem(c.name) + "." + views_[vi].name + ".png")).string();
+        all = (*same)[vi].allSoFar;
+        ++r->viewsReused;
+      } else if (!renderView(c, vi, isReference, how, packageDir, r, &all, &truthError, error)) {
+        return false;
+      } else if (same) {
+        same->push_back({r->views.back(), all});
       }
       if (how.worthFinishing && !isReference && vi + 1 < views_.size()) {
         // A view compares at most as many pixels as reference's image of it has.
@@ -184,6 +162,51 @@ class Evaluation {
         build(c, options_.fp16Emulation, Variants::Furnace, &furnaceKey, error);
     return lights && writePackage(lights->package, packageDir / "furnace", error) &&
            furnace(c, packageDir / "furnace", r, error);
+  }
+
+  // One view rendered and scored against reference's (the reference's own image kept), added to
+  // *all (and *truthError where the ground truth was rendered).
+  bool renderView(const Configuration& c, size_t vi, bool isReference, const MeasureOptions& how,
+                  const fs::path& packageDir, ConfigurationResult* r, ErrorAccumulator* all,
+                  ErrorAccumulator* truthError, EvalError* error) {
+    runtime::Scene scene = views_[vi].scene;
+    scene.tier = permutations::toString(c.tier);
+    if (isReference) scene.shadows.atlasSize = kReferenceShadowAtlas;
+    std::string message;
+    std::unique_ptr<PreparedFrame> prepared = PreparedFrame::prepare(scene, packageDir.string(), c.config, &message);
+    if (!prepared) return fail(c, message, error);
+    const runtime::FrameDesc& frame = prepared->frame();
+    runtime::FrameResult image;
+    for (int w = 0; w < std::max(options_.warmupFrames, 1); ++w)
+      if (!backend_->render(frame, &image, &message)) return fail(c, "render failed: " + message, error);
+    if (vi == 0 && !time(c, frame, r, error)) return false;
+    if (!backend_->validationErrors().empty())
+      return fail(c, "Vulkan validation reported: " + backend_->validationErrors().front(), error);
+
+    ViewResult view;
+    view.name = views_[vi].name;
+    view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
+    if (how.images && !runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
+      return fail(c, message, error);
+    if (isReference) {
+      if (backgrounds_.size() == vi)
+        backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
+      referenceImages_.push_back(std::move(image));
+      if (vi == 0) referenceFrame_ = std::move(prepared);  // for the paired timing of the others
+    }
+    const runtime::FrameResult& ref = referenceImages_[vi];
+    const runtime::FrameResult& mine = isReference ? ref : image;
+    std::vector<bool> mask = coverageMask(mine.hdr, ref.hdr, backgrounds_[vi]);
+    ErrorAccumulator one;
+    one.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
+    all->add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);
+    view.error = one.metrics();
+    r->views.push_back(std::move(view));
+    if (!groundTruth_.empty()) {
+      const runtime::FrameResult& truth = groundTruth_[vi];
+      truthError->add(mine.ldr, truth.ldr, mine.hdr, truth.hdr, coverageMask(mine.hdr, truth.hdr, backgrounds_[vi]));
+    }
+    return true;
   }
 
   // The ground truth (EvalOptions::groundTruthSamples): `reference` as shipped with its ambient
@@ -400,16 +423,32 @@ class Evaluation {
     return true;
   }
 
+  // A view as rendered and scored, and the error of the views up to it together.
+  struct RenderedView {
+    ViewResult view;
+    ErrorAccumulator allSoFar;
+  };
+  // What a render reads besides the scene: the package as written with its other targets' code
+  // left out (the Vulkan renderer reads the SPIR-V) and the colour encoding PreparedFrame gives the
+  // parameters. Bytes, not a hash: equal keys are equal inputs.
+  static std::string renderedBytes(package::Package pkg, const TierConfig& config) {
+    for (package::Variant& v : pkg.variants)
+      std::erase_if(v.shaders, [](const package::Shader& s) { return s.target != package::Target::Spirv; });
+    const std::vector<uint8_t> bytes = package::write(pkg);
+    return std::to_string(int(config.colorSpace)) + ":" + std::string(bytes.begin(), bytes.end());
+  }
+
   const ir::Material& material_;
   const EvalOptions& options_;
   std::vector<View> views_;
   std::unique_ptr<runtime::RenderBackend> backend_;
   fs::path workDir_;
-  std::vector<runtime::FrameResult> referenceImages_;  // per view
-  std::vector<runtime::FrameResult> groundTruth_;      // per view; empty unless measured
-  std::vector<std::array<float, 3>> backgrounds_;      // per view: the clear colour
-  std::unique_ptr<PreparedFrame> referenceFrame_;      // the reference's first view
-  std::optional<bool> gpuClock_;                       // timed by the forward pass's GPU time
+  std::vector<runtime::FrameResult> referenceImages_;               // per view
+  std::vector<runtime::FrameResult> groundTruth_;                   // per view; empty unless measured
+  std::vector<std::array<float, 3>> backgrounds_;                   // per view: the clear colour
+  std::unique_ptr<PreparedFrame> referenceFrame_;                   // the reference's first view
+  std::optional<bool> gpuClock_;                                    // timed by the forward pass's GPU time
+  std::map<std::string, std::vector<RenderedView>> renderedViews_;  // by renderedBytes()
 };
 
 }  // namespace

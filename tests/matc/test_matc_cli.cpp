@@ -886,10 +886,23 @@ TEST(MatcCli, TuneGateAndItsErrors) {
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.err.find(budgets + ": error: /tiers/mid/min_psnr_db: expected a number"), std::string::npos) << bad.err;
 
-  // The committed choices still meet the budgets (ASAN_OPTIONS: see EvalWritesItsReportOrFailsClearly).
-  for (const char* name : {"red_plastic", "brushed_gold"}) {
-    auto gate = run("ASAN_OPTIONS=detect_leaks=0 " + kMatc + " tune " +
-                    facet::test::examplePath(std::string("materials/") + name + ".mat") + " --check");
+  // Every committed tuning file's choices still meet the budgets (ASAN_OPTIONS: see
+  // EvalWritesItsReportOrFailsClearly): each <stem>.tuning.json beside its material, so that a
+  // newly tuned example is gated without a change here.
+  std::vector<std::string> tuned;
+  for (const auto& entry : fs::directory_iterator(facet::test::examplePath("materials"))) {
+    const std::string file = entry.path().filename().string();
+    const std::string suffix = ".tuning.json";
+    if (file.size() > suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0)
+      tuned.push_back(file.substr(0, file.size() - suffix.size()));
+  }
+  std::sort(tuned.begin(), tuned.end());
+  for (const char* name : {"red_plastic", "brushed_gold", "velvet"})
+    EXPECT_NE(std::find(tuned.begin(), tuned.end(), name), tuned.end()) << name;
+  for (const std::string& name : tuned) {
+    auto gate =
+        run("ASAN_OPTIONS=detect_leaks=0 " + kMatc + " tune " + facet::test::examplePath("materials/" + name + ".mat") +
+            " --budgets " + facet::test::examplePath("lint/tune_budgets.json") + " --check");
     EXPECT_EQ(gate.exitCode, 0) << name << ": " << gate.err;
     EXPECT_NE(gate.out.find("high: "), std::string::npos) << gate.out;
   }

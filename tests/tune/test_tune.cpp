@@ -190,14 +190,24 @@ TEST(TuneChoices, WrittenDeterministicallyAndReadBack) {
 // input it once got wrong (tests/fuzz/tune_regressions/): each file is refused naming it, or read
 // within the documented ranges; a tuning file read writes back to the same text once written.
 TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
-  const facet::ir::Material materials[] = {example("red_plastic"), example("brushed_gold")};
-  std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json"),
-                                    facet::test::examplePath("materials/red_plastic.tuning.json"),
-                                    facet::test::examplePath("materials/brushed_gold.tuning.json")};
+  // The committed tuning files, each read against its own material too.
+  std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json")};
+  std::vector<facet::ir::Material> materials = {example("red_plastic"), example("brushed_gold")};
+  const std::string suffix = ".tuning.json";
+  for (const auto& entry : std::filesystem::directory_iterator(facet::test::examplePath("materials"))) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    files.push_back(entry.path().string());
+    const std::string stem = name.substr(0, name.size() - suffix.size());
+    if (stem != "red_plastic" && stem != "brushed_gold") materials.push_back(example(stem));
+  }
+  std::sort(files.begin() + 1, files.end());
+  const size_t seeds = files.size();
+  ASSERT_GE(seeds, 4u);  // the budgets file, red_plastic's, brushed_gold's and velvet's tuning files
   const std::string regressions = facet::test::sourceDir() + "/tests/fuzz/tune_regressions";
   for (const auto& entry : std::filesystem::directory_iterator(regressions))
     if (entry.path().filename() != "README.md") files.push_back(entry.path().string());
-  std::sort(files.begin() + 3, files.end());
+  std::sort(files.begin() + std::ptrdiff_t(seeds), files.end());
   size_t read = 0;
   for (const std::string& path : files) {
     const std::string text = facet::test::readText(path);
@@ -224,7 +234,7 @@ TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
       }
     }
   }
-  EXPECT_GE(read, 3u);  // the budgets file and each committed tuning file against its material
+  EXPECT_GE(read, seeds);  // the budgets file and each committed tuning file against its material
 }
 
 TEST(TuneSearch, CandidatesAreEveryCombinationOnceWithTheTiersAsShippedAmongThem) {
@@ -370,6 +380,57 @@ TEST(TuneSearch, ScreeningOnTheFirstViewChangesNoChoiceAndNoBestReached) {
   const std::string text = tune::plotSvg(*screened);
   EXPECT_NE(text.find("fill=\"white\" stroke="), std::string::npos);  // a screened candidate, hollow
   EXPECT_NE(text.find("<polyline"), std::string::npos);               // the front
+}
+
+// A candidate whose views' build is byte for byte an earlier one's takes that render's figures:
+// on velvet (cloth) without its sheen, the ambient forms, which then have no specular ambient to
+// shape, build the same shaders. Every figure of the reports, and so every choice and best
+// reached, is the one rendering each candidate gives.
+TEST(TuneSearch, ReusingTheRenderOfAnIdenticalBuildChangesNoChoiceAndNoFigure) {
+  const facet::ir::Material m = example("velvet");
+  tune::TuneOptions o = tinyGrid();
+  o.eval.cacheDir = facet::test::scratchDir("tune-reuse") + "/cache";
+  auto axis = [](const std::string& name) {
+    for (const facet::eval::Axis& a : facet::eval::axes())
+      if (a.name == name) return &a;
+    return static_cast<const facet::eval::Axis*>(nullptr);
+  };
+  const facet::eval::Axis* ambient = axis("ambient");
+  const facet::eval::Axis* sheen = axis("sheen");
+  ASSERT_TRUE(ambient && sheen);
+  for (const facet::eval::Configuration& c : facet::eval::configurations(m, {Tier::Mid, Tier::Low}, false))
+    if (c.tier != Tier::Reference)
+      for (const std::string& s : sheen->options)
+        for (const std::string& a : ambient->options) {
+          TierConfig t = c.config;
+          sheen->set(&t, s);
+          ambient->set(&t, a);
+          if (std::find(o.space.begin(), o.space.end(), t) == o.space.end()) o.space.push_back(t);
+        }
+  o.budgets.tiers[Tier::High].minPsnrDb = 150;  // none meets it: every candidate is rendered
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 40;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 30;
+  facet::eval::EvalError error;
+  auto reused = tune::tune(m, o, &error);
+  ASSERT_TRUE(reused) << error.message;
+  o.reuseIdenticalViews = false;
+  auto rendered = tune::tune(m, o, &error);
+  ASSERT_TRUE(rendered) << error.message;
+  EXPECT_GT(reused->reused, 0u);
+  EXPECT_EQ(rendered->reused, 0u);
+  EXPECT_EQ(tune::markdownReport(*reused), tune::markdownReport(*rendered));
+  EXPECT_EQ(tune::jsonReport(*reused), tune::jsonReport(*rendered));
+  EXPECT_EQ(tune::plotSvg(*reused), tune::plotSvg(*rendered));
+  ASSERT_EQ(reused->tiers.size(), rendered->tiers.size());
+  for (size_t t = 0; t < reused->tiers.size(); ++t) {
+    ASSERT_EQ(bool(reused->tiers[t].chosen), bool(rendered->tiers[t].chosen)) << t;
+    if (reused->tiers[t].chosen) {
+      EXPECT_TRUE(reused->tiers[t].chosen->result.configuration.config ==
+                  rendered->tiers[t].chosen->result.configuration.config)
+          << t;
+    }
+  }
+  EXPECT_FALSE(reused->tiers[0].chosen);
 }
 
 // The gate: committed choices re-scored; a worse configuration in their place fails with figures.

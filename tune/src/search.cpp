@@ -243,6 +243,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     eval::MeasureOptions how;
     how.costed = &costed[i];
     how.images = false;
+    how.reuseIdenticalViews = options.reuseIdenticalViews;
     if (screen)
       how.worthFinishing = [&](double psnrAtMost) {
         for (const TierOutcome& o : report.tiers)
@@ -257,13 +258,14 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     };
     if (!session->measure(configs[i], &r, error, how)) return false;
     *s = score(r, *gpu, report);
-    char line[256];
+    const char* reused = r.viewsReused > 0 ? "  (an earlier candidate's render: the same build)" : "";
+    char line[320];
     if (r.psnrAtMost)
-      std::snprintf(line, sizeof line, "[%zu] %.3f ≤%5.1f dB  %s (first view)", report.rendered + 1, s->cost.total,
-                    *r.psnrAtMost, s->result.configuration.name.c_str());
+      std::snprintf(line, sizeof line, "[%zu] %.3f ≤%5.1f dB  %s (first view)%s", report.rendered + 1, s->cost.total,
+                    *r.psnrAtMost, s->result.configuration.name.c_str(), reused);
     else
-      std::snprintf(line, sizeof line, "[%zu] %.3f  %5.1f dB  %s", report.rendered + 1, s->cost.total,
-                    s->result.error.psnr, s->result.configuration.name.c_str());
+      std::snprintf(line, sizeof line, "[%zu] %.3f  %5.1f dB  %s%s", report.rendered + 1, s->cost.total,
+                    s->result.error.psnr, s->result.configuration.name.c_str(), reused);
     say(line);
     return true;
   };
@@ -283,6 +285,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     Scored s;
     if (!render(i, options.screen, &s)) return std::nullopt;
     ++report.rendered;
+    report.reused += s.result.viewsReused > 0 ? 1 : 0;
     frontCandidate.push_back(i);
     for (TierOutcome& o : report.tiers) {
       if (o.chosen || s.result.psnrAtMost || !meets(s, o.budget, report.referenceFurnaceGain)) continue;

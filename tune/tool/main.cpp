@@ -148,8 +148,10 @@ int run(const TuneArgs& args) {
   }
   if (!cli::writeOutputs({outDir}, tune::reportFiles(*report, outDir))) return 1;
   const int status = finish(*report, args.input);
-  std::printf("%s: %zu candidates, %zu rendered (%zu only in the first view) -> %s/report.md, report.json, plot.svg\n",
-              material->name.c_str(), report->candidates, report->rendered, report->screened, outDir.c_str());
+  std::printf(
+      "%s: %zu candidates, %zu rendered (%zu only in the first view, %zu the same build as an earlier one) -> "
+      "%s/report.md, report.json, plot.svg\n",
+      material->name.c_str(), report->candidates, report->rendered, report->screened, report->reused, outDir.c_str());
   if (status != 0) {
     if (args.write) cli::printError(tune::choicesPath(args.input) + ": not written: a tier has no choice");
     return status;

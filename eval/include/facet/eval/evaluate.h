@@ -99,6 +99,8 @@ struct ConfigurationResult {
   // Set when Session::measure() stopped after the first views (MeasureOptions::worthFinishing):
   // `error` is theirs, and this bounds the PSNR all the views together could have reached.
   std::optional<double> psnrAtMost;
+  // Views whose figures came from an earlier render of the same bytes (MeasureOptions::reuseIdenticalViews).
+  size_t viewsReused = 0;
 };
 
 // A furnace gain above this factor is flagged as energy gain: the RGBA16F target and the
@@ -163,6 +165,12 @@ struct MeasureOptions {
   std::function<bool(double psnrAtMost)> worthFinishing;
   // Encode each view's image as PNG (ViewResult::png); `matc tune` writes none.
   bool images = true;
+  // A view whose shaders and inputs an earlier measure() of this session rendered already (the
+  // package's SPIR-V and everything else the renderer reads, byte for byte, and the colour
+  // encoding) takes that render's figures instead of rendering again: lavapipe renders the same
+  // bytes to the same pixels, so every figure is the one a render would give
+  // (ConfigurationResult::viewsReused). Untimed sessions, without images or ground truth only.
+  bool reuseIdenticalViews = false;
 };
 
 // One evaluation's renderer, views and `reference`'s images, for measuring configurations one at a

@@ -59,6 +59,11 @@ struct TuneOptions {
   // to meet an open tier's budget (eval::MeasureOptions::worthFinishing). The choice and every
   // reported figure of a fully measured candidate are the same either way; false renders all of it.
   bool screen = true;
+  // A candidate whose views' build is byte for byte one an earlier candidate rendered (a metal's
+  // SH bands and diffuse, which its shaders never read) takes that render's figures
+  // (eval::MeasureOptions::reuseIdenticalViews): the same figures, so the same choice and reports;
+  // false renders every candidate.
+  bool reuseIdenticalViews = true;
   eval::EvalOptions eval;  // the grid; fp16 emulation is turned on, timing and the BRDF sweep off
   std::function<void(const std::string&)> progress;
 };
@@ -87,6 +92,9 @@ struct TuneReport {
   double referenceFurnaceGain = 0;
   size_t candidates = 0, rendered = 0;
   size_t screened = 0;  // of the rendered, stopped after the first view (ConfigurationResult::psnrAtMost)
+  // Of the rendered, those whose views took an earlier render's figures (TuneOptions::reuseIdenticalViews);
+  // the reports leave it out: their figures are the same either way.
+  size_t reused = 0;
   std::vector<TierOutcome> tiers;
   std::vector<Scored> front;  // every rendered candidate, in cost order, the screened ones too
 };

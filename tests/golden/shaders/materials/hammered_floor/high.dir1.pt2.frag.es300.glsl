@@ -5,6 +5,7 @@ in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
 in highp vec2 v_uv0;
 in mediump vec4 v_tangent;
+in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -78,9 +79,6 @@ if(dot(t,t)==0.0)return normalize(n);
 vec3 b=v_tangent.w*cross(n,t);
 return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 }
-float diffuse_lambert(){
-return 0.31830988618;
-}
 float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
 vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
@@ -106,20 +104,6 @@ float D=distribution_ggx(alpha,NoH,n,h);
 float V=visibility_smith_ggx_correlated(alpha,NoV,NoL);
 return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
 }
-vec3 sh_irradiance_over_pi(vec3 n){
-vec3 c0=frame.sh[0].rgb;
-vec3 c1=frame.sh[1].rgb;
-vec3 c2=frame.sh[2].rgb;
-vec3 c3=frame.sh[3].rgb;
-vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-vec3 c4=frame.sh[4].rgb;
-vec3 c5=frame.sh[5].rgb;
-vec3 c6=frame.sh[6].rgb;
-vec3 c7=frame.sh[7].rgb;
-vec3 c8=frame.sh[8].rgb;
-e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
-return max(e,vec3(0.0));
-}
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
@@ -128,9 +112,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
@@ -145,7 +126,6 @@ float material_alpha(MaterialInputs material){
 float perceptualRoughness=material_perceptual_roughness(material);
 return perceptualRoughness*perceptualRoughness;
 }
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 half_vector(highp vec3 v,highp vec3 l){
 return normalize(v+l);
 }
@@ -161,10 +141,8 @@ float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
-specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
-vec3 diffuseColor=material_diffuse_color(material);
-return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
+return min(specular*irradiance,65504.0);
 }
 float specular_aa_roughness(float perceptualRoughness,vec3 normal){
 highp vec3 du=dFdx(normal);
@@ -177,9 +155,6 @@ return sqrt(sqrt(min(alpha*alpha+kernel,1.0)));
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
-vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
-return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
-}
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
 float perceptualRoughness=material_perceptual_roughness(material);
@@ -187,9 +162,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){
@@ -225,7 +198,7 @@ MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);
 material.roughness=specular_aa_roughness(material_perceptual_roughness(material),shading_normal);
-vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
+vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;

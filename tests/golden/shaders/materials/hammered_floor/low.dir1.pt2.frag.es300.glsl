@@ -40,6 +40,7 @@ uniform mediump sampler2D facet_material_ripples;
 uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -102,9 +103,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
 }
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
-}
 vec3 material_diffuse_color(MaterialInputs material){
 return params.facet_diffuseColor;
 }
@@ -112,13 +110,13 @@ vec3 material_f0(MaterialInputs material){
 return params.facet_f0;
 }
 float material_perceptual_roughness(MaterialInputs material){
-return params.facet_perceptualRoughness;
+return clamp(material.roughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
 float material_alpha(MaterialInputs material){
-return params.facet_alpha;
+float perceptualRoughness=material_perceptual_roughness(material);
+return perceptualRoughness*perceptualRoughness;
 }
 vec3 shading_specular_albedo=vec3(0.0);
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
@@ -137,6 +135,14 @@ vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,sh
 vec3 irradiance=lightColor*NoL;
 return min(specular*irradiance,65504.0);
 }
+float specular_aa_roughness(float perceptualRoughness,vec3 normal){
+highp vec3 du=dFdx(normal);
+highp vec3 dv=dFdy(normal);
+highp float variance=0.02*(dot(du,du)+dot(dv,dv));
+highp float alpha=perceptualRoughness*perceptualRoughness;
+highp float kernel=min(2.0*variance,0.2);
+return sqrt(sqrt(min(alpha*alpha+kernel,1.0)));
+}
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
@@ -147,9 +153,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }
@@ -185,6 +189,7 @@ shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);
+material.roughness=specular_aa_roughness(material_perceptual_roughness(material),shading_normal);
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));

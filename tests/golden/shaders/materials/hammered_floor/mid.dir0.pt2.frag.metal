@@ -53,50 +53,55 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_ripples [[texture(8)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_ripplesSmplr [[sampler(8)]])
 {
     main0_out out = {};
-    float3 _653 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float4 _779 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
-    half3 _783 = (half4(_779).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1563;
+    float3 _675 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float4 _808 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
+    half3 _812 = (half4(_808).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1680;
     do
     {
-        half3 _796 = half4(in.v_tangent).xyz;
-        if (float(dot(_796, _796)) == 0.0)
+        half3 _825 = half4(in.v_tangent).xyz;
+        if (float(dot(_825, _825)) == 0.0)
         {
-            _1563 = normalize(half3(in.v_normal));
+            _1680 = normalize(half3(in.v_normal));
             break;
         }
-        _1563 = normalize(((_796 * _783.x) + ((cross(half3(in.v_normal), _796) * half(in.v_tangent.w)) * _783.y)) + (half3(in.v_normal) * _783.z));
+        _1680 = normalize(((_825 * _812.x) + ((cross(half3(in.v_normal), _825) * half(in.v_tangent.w)) * _812.y)) + (half3(in.v_normal) * _812.z));
         break;
     } while(false);
-    half _866 = max(dot(_1563, half3(_653)), half(9.9999997473787516355514526367188e-05));
-    float4 _905 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_866, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _924 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_905).y) - half(1.0)));
-    float4 _934 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_653), _1563)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    float3 _979 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _982 = dot(_979, _979);
-    float3 _987 = _979 * rsqrt(fast::max(_982, 9.9999999392252902907785028219223e-09));
-    float _991 = _982 * float(frame.punctualLights[0].positionFalloff.w);
-    float _996 = fast::clamp(fma(-_991, _991, 1.0), 0.0, 1.0);
-    float _1015 = fast::clamp(fma(dot(-_987, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1125 = normalize(half3(_653) + half3(_987));
-    half _1076 = clamp(dot(_1563, half3(_987)), half(0.0), half(1.0));
-    half4 _1194 = half4(cross(_1563, _1125), half(params.facet_alpha) * clamp(dot(_1563, _1125), half(0.0), half(1.0))) * half(64.0);
-    half _1168 = half(4096.0) * half(params.facet_alpha);
-    half _1171 = half(6.283185482025146484375) * max(mix((half(2.0) * _1076) * _866, _1076 + _866, half(params.facet_alpha)), half(0.000244140625));
-    half _1173 = _1168 / (dot(_1194, _1194) * _1171);
-    float3 _1238 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1241 = dot(_1238, _1238);
-    float3 _1246 = _1238 * rsqrt(fast::max(_1241, 9.9999999392252902907785028219223e-09));
-    float _1250 = _1241 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1255 = fast::clamp(fma(-_1250, _1250, 1.0), 0.0, 1.0);
-    float _1274 = fast::clamp(fma(dot(-_1246, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1384 = normalize(half3(_653) + half3(_1246));
-    half _1335 = clamp(dot(_1563, half3(_1246)), half(0.0), half(1.0));
-    half4 _1453 = half4(cross(_1563, _1384), half(params.facet_alpha) * clamp(dot(_1563, _1384), half(0.0), half(1.0))) * half(64.0);
-    half _1430 = half(6.283185482025146484375) * max(mix((half(2.0) * _1335) * _866, _1335 + _866, half(params.facet_alpha)), half(0.000244140625));
-    half _1432 = _1168 / (dot(_1453, _1453) * _1430);
-    half3 _1461 = (fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_934).xyz * (mix(half4(_905).xxx, half4(_905).yyy, half3(float3(params.facet_f0))) * _924)) + min(((half3(float3(params.facet_f0)) * min(_1173 * (_1173 * _1171), half(65504.0))) * _924) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_996) * half(_996)) / fast::max(_982, 9.9999997473787516355514526367188e-05)) * half(_1015)) * half(_1015)), float3(65504.0))) * _1076), half3(float3(65504.0)))) + min(((half3(float3(params.facet_f0)) * min(_1432 * (_1432 * _1430), half(65504.0))) * _924) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1255) * half(_1255)) / fast::max(_1241, 9.9999997473787516355514526367188e-05)) * half(_1274)) * half(_1274)), float3(65504.0))) * _1335), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1461, half(1.0)));
+    half _861 = clamp(half(params.roughness), half(0.08900000154972076416015625), half(1.0));
+    float3 _871 = dfdx(float3(_1680));
+    float3 _873 = dfdy(float3(_1680));
+    half _884 = _861 * _861;
+    half _960 = clamp(half(sqrt(sqrt(fast::min(fma(float(_884), float(_884), fast::min((dot(_871, _871) + dot(_873, _873)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
+    half _933 = max(dot(_1680, half3(_675)), half(9.9999997473787516355514526367188e-05));
+    float4 _967 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_933, _960)), level(0.0));
+    float4 _986 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_675), _1680)), level(_960 * (half(4.0) * (half(2.0) - _960))));
+    float3 _1031 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1034 = dot(_1031, _1031);
+    float3 _1039 = _1031 * rsqrt(fast::max(_1034, 9.9999999392252902907785028219223e-09));
+    float _1043 = _1034 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1048 = fast::clamp(fma(-_1043, _1043, 1.0), 0.0, 1.0);
+    float _1067 = fast::clamp(fma(dot(-_1039, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1174 = _960 * _960;
+    half3 _1185 = normalize(half3(_675) + half3(_1039));
+    half _1128 = clamp(dot(_1680, half3(_1039)), half(0.0), half(1.0));
+    half4 _1254 = half4(cross(_1680, _1185), _1174 * clamp(dot(_1680, _1185), half(0.0), half(1.0))) * half(64.0);
+    half _1228 = half(4096.0) * _1174;
+    half _1231 = half(6.283185482025146484375) * max(mix((half(2.0) * _1128) * _933, _1128 + _933, _1174), half(0.000244140625));
+    half _1233 = _1228 / (dot(_1254, _1254) * _1231);
+    float3 _1298 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1301 = dot(_1298, _1298);
+    float3 _1306 = _1298 * rsqrt(fast::max(_1301, 9.9999999392252902907785028219223e-09));
+    float _1310 = _1301 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1315 = fast::clamp(fma(-_1310, _1310, 1.0), 0.0, 1.0);
+    float _1334 = fast::clamp(fma(dot(-_1306, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half3 _1452 = normalize(half3(_675) + half3(_1306));
+    half _1395 = clamp(dot(_1680, half3(_1306)), half(0.0), half(1.0));
+    half4 _1521 = half4(cross(_1680, _1452), _1174 * clamp(dot(_1680, _1452), half(0.0), half(1.0))) * half(64.0);
+    half _1498 = half(6.283185482025146484375) * max(mix((half(2.0) * _1395) * _933, _1395 + _933, _1174), half(0.000244140625));
+    half _1500 = _1228 / (dot(_1521, _1521) * _1498);
+    half3 _1529 = (fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_986).xyz * mix(half4(_967).xxx, half4(_967).yyy, half3(float3(params.facet_f0)))) + min((half3(float3(params.facet_f0)) * min(_1233 * (_1233 * _1231), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1048) * half(_1048)) / fast::max(_1034, 9.9999997473787516355514526367188e-05)) * half(_1067)) * half(_1067)), float3(65504.0))) * _1128), half3(float3(65504.0)))) + min((half3(float3(params.facet_f0)) * min(_1500 * (_1500 * _1498), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1315) * half(_1315)) / fast::max(_1301, 9.9999997473787516355514526367188e-05)) * half(_1334)) * half(_1334)), float3(65504.0))) * _1395), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1529, half(1.0)));
     return out;
 }
 

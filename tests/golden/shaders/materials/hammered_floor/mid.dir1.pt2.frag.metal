@@ -53,56 +53,61 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_ripples [[texture(8)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_ripplesSmplr [[sampler(8)]])
 {
     main0_out out = {};
-    float3 _653 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float4 _800 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
-    half3 _804 = (half4(_800).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    half3 _1759;
+    float3 _675 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float4 _829 = facet_material_ripples.sample(facet_material_ripplesSmplr, (in.v_uv0 * params.tiling));
+    half3 _833 = (half4(_829).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    half3 _1886;
     do
     {
-        half3 _817 = half4(in.v_tangent).xyz;
-        if (float(dot(_817, _817)) == 0.0)
+        half3 _846 = half4(in.v_tangent).xyz;
+        if (float(dot(_846, _846)) == 0.0)
         {
-            _1759 = normalize(half3(in.v_normal));
+            _1886 = normalize(half3(in.v_normal));
             break;
         }
-        _1759 = normalize(((_817 * _804.x) + ((cross(half3(in.v_normal), _817) * half(in.v_tangent.w)) * _804.y)) + (half3(in.v_normal) * _804.z));
+        _1886 = normalize(((_846 * _833.x) + ((cross(half3(in.v_normal), _846) * half(in.v_tangent.w)) * _833.y)) + (half3(in.v_normal) * _833.z));
         break;
     } while(false);
-    half _887 = max(dot(_1759, half3(_653)), half(9.9999997473787516355514526367188e-05));
-    float4 _926 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_887, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _945 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_926).y) - half(1.0)));
-    float4 _955 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_653), _1759)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _694 = half4(frame.lightDirection).xyz;
-    half3 _1062 = normalize(half3(_653) + _694);
-    half _1013 = clamp(dot(_1759, _694), half(0.0), half(1.0));
-    half4 _1131 = half4(cross(_1759, _1062), half(params.facet_alpha) * clamp(dot(_1759, _1062), half(0.0), half(1.0))) * half(64.0);
-    half _1105 = half(4096.0) * half(params.facet_alpha);
-    half _1108 = half(6.283185482025146484375) * max(mix((half(2.0) * _1013) * _887, _1013 + _887, half(params.facet_alpha)), half(0.000244140625));
-    half _1110 = _1105 / (dot(_1131, _1131) * _1108);
-    float3 _1175 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1178 = dot(_1175, _1175);
-    float3 _1183 = _1175 * rsqrt(fast::max(_1178, 9.9999999392252902907785028219223e-09));
-    float _1187 = _1178 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1192 = fast::clamp(fma(-_1187, _1187, 1.0), 0.0, 1.0);
-    float _1211 = fast::clamp(fma(dot(-_1183, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1321 = normalize(half3(_653) + half3(_1183));
-    half _1272 = clamp(dot(_1759, half3(_1183)), half(0.0), half(1.0));
-    half4 _1390 = half4(cross(_1759, _1321), half(params.facet_alpha) * clamp(dot(_1759, _1321), half(0.0), half(1.0))) * half(64.0);
-    half _1367 = half(6.283185482025146484375) * max(mix((half(2.0) * _1272) * _887, _1272 + _887, half(params.facet_alpha)), half(0.000244140625));
-    half _1369 = _1105 / (dot(_1390, _1390) * _1367);
-    float3 _1434 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1437 = dot(_1434, _1434);
-    float3 _1442 = _1434 * rsqrt(fast::max(_1437, 9.9999999392252902907785028219223e-09));
-    float _1446 = _1437 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1451 = fast::clamp(fma(-_1446, _1446, 1.0), 0.0, 1.0);
-    float _1470 = fast::clamp(fma(dot(-_1442, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1580 = normalize(half3(_653) + half3(_1442));
-    half _1531 = clamp(dot(_1759, half3(_1442)), half(0.0), half(1.0));
-    half4 _1649 = half4(cross(_1759, _1580), half(params.facet_alpha) * clamp(dot(_1759, _1580), half(0.0), half(1.0))) * half(64.0);
-    half _1626 = half(6.283185482025146484375) * max(mix((half(2.0) * _1531) * _887, _1531 + _887, half(params.facet_alpha)), half(0.000244140625));
-    half _1628 = _1105 / (dot(_1649, _1649) * _1626);
-    half3 _1657 = ((fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_955).xyz * (mix(half4(_926).xxx, half4(_926).yyy, half3(float3(params.facet_f0))) * _945)) + min(((half3(float3(params.facet_f0)) * min(_1110 * (_1110 * _1108), half(65504.0))) * _945) * (half4(frame.lightColor).xyz * _1013), half3(float3(65504.0)))) + min(((half3(float3(params.facet_f0)) * min(_1369 * (_1369 * _1367), half(65504.0))) * _945) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1192) * half(_1192)) / fast::max(_1178, 9.9999997473787516355514526367188e-05)) * half(_1211)) * half(_1211)), float3(65504.0))) * _1272), half3(float3(65504.0)))) + min(((half3(float3(params.facet_f0)) * min(_1628 * (_1628 * _1626), half(65504.0))) * _945) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1451) * half(_1451)) / fast::max(_1437, 9.9999997473787516355514526367188e-05)) * half(_1470)) * half(_1470)), float3(65504.0))) * _1531), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1657, half(1.0)));
+    half _882 = clamp(half(params.roughness), half(0.08900000154972076416015625), half(1.0));
+    float3 _892 = dfdx(float3(_1886));
+    float3 _894 = dfdy(float3(_1886));
+    half _905 = _882 * _882;
+    half _981 = clamp(half(sqrt(sqrt(fast::min(fma(float(_905), float(_905), fast::min((dot(_892, _892) + dot(_894, _894)) * 0.039999999105930328369140625, 0.20000000298023223876953125)), 1.0)))), half(0.08900000154972076416015625), half(1.0));
+    half _954 = max(dot(_1886, half3(_675)), half(9.9999997473787516355514526367188e-05));
+    float4 _988 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_954, _981)), level(0.0));
+    float4 _1007 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_675), _1886)), level(_981 * (half(4.0) * (half(2.0) - _981))));
+    half3 _724 = half4(frame.lightDirection).xyz;
+    half _1111 = _981 * _981;
+    half3 _1122 = normalize(half3(_675) + _724);
+    half _1065 = clamp(dot(_1886, _724), half(0.0), half(1.0));
+    half4 _1191 = half4(cross(_1886, _1122), _1111 * clamp(dot(_1886, _1122), half(0.0), half(1.0))) * half(64.0);
+    half _1165 = half(4096.0) * _1111;
+    half _1168 = half(6.283185482025146484375) * max(mix((half(2.0) * _1065) * _954, _1065 + _954, _1111), half(0.000244140625));
+    half _1170 = _1165 / (dot(_1191, _1191) * _1168);
+    float3 _1235 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1238 = dot(_1235, _1235);
+    float3 _1243 = _1235 * rsqrt(fast::max(_1238, 9.9999999392252902907785028219223e-09));
+    float _1247 = _1238 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1252 = fast::clamp(fma(-_1247, _1247, 1.0), 0.0, 1.0);
+    float _1271 = fast::clamp(fma(dot(-_1243, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half3 _1389 = normalize(half3(_675) + half3(_1243));
+    half _1332 = clamp(dot(_1886, half3(_1243)), half(0.0), half(1.0));
+    half4 _1458 = half4(cross(_1886, _1389), _1111 * clamp(dot(_1886, _1389), half(0.0), half(1.0))) * half(64.0);
+    half _1435 = half(6.283185482025146484375) * max(mix((half(2.0) * _1332) * _954, _1332 + _954, _1111), half(0.000244140625));
+    half _1437 = _1165 / (dot(_1458, _1458) * _1435);
+    float3 _1502 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1505 = dot(_1502, _1502);
+    float3 _1510 = _1502 * rsqrt(fast::max(_1505, 9.9999999392252902907785028219223e-09));
+    float _1514 = _1505 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1519 = fast::clamp(fma(-_1514, _1514, 1.0), 0.0, 1.0);
+    float _1538 = fast::clamp(fma(dot(-_1510, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half3 _1656 = normalize(half3(_675) + half3(_1510));
+    half _1599 = clamp(dot(_1886, half3(_1510)), half(0.0), half(1.0));
+    half4 _1725 = half4(cross(_1886, _1656), _1111 * clamp(dot(_1886, _1656), half(0.0), half(1.0))) * half(64.0);
+    half _1702 = half(6.283185482025146484375) * max(mix((half(2.0) * _1599) * _954, _1599 + _954, _1111), half(0.000244140625));
+    half _1704 = _1165 / (dot(_1725, _1725) * _1702);
+    half3 _1733 = ((fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_1007).xyz * mix(half4(_988).xxx, half4(_988).yyy, half3(float3(params.facet_f0)))) + min((half3(float3(params.facet_f0)) * min(_1170 * (_1170 * _1168), half(65504.0))) * (half4(frame.lightColor).xyz * _1065), half3(float3(65504.0)))) + min((half3(float3(params.facet_f0)) * min(_1437 * (_1437 * _1435), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1252) * half(_1252)) / fast::max(_1238, 9.9999997473787516355514526367188e-05)) * half(_1271)) * half(_1271)), float3(65504.0))) * _1332), half3(float3(65504.0)))) + min((half3(float3(params.facet_f0)) * min(_1704 * (_1704 * _1702), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1519) * half(_1519)) / fast::max(_1505, 9.9999997473787516355514526367188e-05)) * half(_1538)) * half(_1538)), float3(65504.0))) * _1599), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1733, half(1.0)));
     return out;
 }
 

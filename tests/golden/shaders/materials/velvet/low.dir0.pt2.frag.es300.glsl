@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -30,8 +29,6 @@ mediump float facet_pad44;
 mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump float facet_alpha;
-mediump vec3 facet_sheenColor;
-mediump float facet_sheenLod;
 }
 params;
 uniform mediump sampler2D facet_specularLut;
@@ -72,6 +69,20 @@ material.roughness=params.roughness;
 material.sheenColor=params.sheen;
 material.subsurfaceColor=params.subsurface;
 }
+float diffuse_lambert(){
+return 0.31830988618;
+}
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
+}
+vec3 prefiltered_radiance(vec3 direction,float r){
+return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
+}
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
 float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
 float k=1.0/(alpha*scaledQ);
@@ -102,11 +113,14 @@ return normalize(v+l);
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
+}
 vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
 }
 vec3 sheen_color(MaterialInputs material){
-return params.facet_sheenColor;
+return clamp(material.sheenColor,0.0,1.0);
 }
 float sheen_perceptual_roughness(MaterialInputs material){
 return material_perceptual_roughness(material);
@@ -124,7 +138,7 @@ shading_sheen_color=sheenColor;
 shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
-vec3 radiance=textureLod(facet_environment,reflect(-v,n),params.facet_sheenLod).rgb;
+vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
 vec3 specular=radiance*(sheenColor*sheenTerms.x);
 return base*baseScale+specular;
 }
@@ -137,7 +151,10 @@ vec3 h=half_vector(viewHighp,lightHighp);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoH=clamp(dot(n,h),0.0,1.0);
 vec3 sheen=sheen_light(NoV,NoL,NoH);
-return min(sheen*lightColor,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+vec3 diffuse=diffuseColor*(diffuse_lambert()*clamp((NoLSigned+0.5)*(1.0/2.25),0.0,1.0))*clamp(material.subsurfaceColor+NoL,0.0,1.0);
+diffuse*=shading_sheen_base_scale;
+return min((diffuse+sheen)*lightColor,65504.0);
 }
 vec3 linear_from_shading_space(vec3 color){
 return color;
@@ -167,7 +184,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=sheen_layer(material,color,shading_normal,shading_view);
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));

@@ -13,9 +13,6 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
-    char _m8_pad[12];
-    packed_float3 facet_sheenColor;
-    float facet_sheenLod;
 };
 
 struct PunctualLightData
@@ -46,44 +43,49 @@ struct main0_in
 {
     float3 v_worldPosition [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float3 v_diffuseLight [[user(locn2)]];
 };
 
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _486 = normalize(half3(in.v_normal));
-    float3 _502 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half _642 = max(dot(_486, half3(_502)), half(9.9999997473787516355514526367188e-05));
-    float4 _647 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_642, half(params.facet_perceptualRoughness))), level(0.0));
-    half4 _1231 = half4(_647);
-    half _660 = _1231.z;
-    half4 _1235 = half4(_647);
-    half _667 = _1235.w;
-    float4 _676 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_502), _486)), level(params.facet_sheenLod));
-    float3 _746 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _749 = dot(_746, _746);
-    float3 _754 = _746 * rsqrt(fast::max(_749, 9.9999999392252902907785028219223e-09));
-    float _758 = _749 * float(frame.punctualLights[0].positionFalloff.w);
-    float _763 = fast::clamp(fma(-_758, _758, 1.0), 0.0, 1.0);
-    float _782 = fast::clamp(fma(dot(-_754, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half _815 = clamp(dot(_486, half3(_754)), half(0.0), half(1.0));
-    half _827 = clamp(dot(_486, normalize(half3(_502) + half3(_754))), half(0.0), half(1.0));
-    half _872 = half(8192.0) * fma(half(-float(_815)), _642, _815 + _642);
-    half _876 = half(1.0) / (half(params.facet_alpha) * _872);
-    half _883 = half(2048.0) * half(params.facet_alpha);
-    float3 _941 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _944 = dot(_941, _941);
-    float3 _949 = _941 * rsqrt(fast::max(_944, 9.9999999392252902907785028219223e-09));
-    float _953 = _944 * float(frame.punctualLights[1].positionFalloff.w);
-    float _958 = fast::clamp(fma(-_953, _953, 1.0), 0.0, 1.0);
-    float _977 = fast::clamp(fma(dot(-_949, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half _1010 = clamp(dot(_486, half3(_949)), half(0.0), half(1.0));
-    half _1022 = clamp(dot(_486, normalize(half3(_502) + half3(_949))), half(0.0), half(1.0));
-    half _1067 = half(8192.0) * fma(half(-float(_1010)), _642, _1010 + _642);
-    half _1071 = half(1.0) / (half(params.facet_alpha) * _1067);
-    half3 _1100 = (fma(half4(_676).xyz, half3(float3(params.facet_sheenColor)) * _660, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _660, half(1.0))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_876, _872, half(2.0)) * pow(max(fma(half(-float(_827)), _827, half(1.0)), half(0.0)), half(0.5) * (_876 * _872))) * half(0.15915493667125701904296875)) * (_815 * (_876 * _883))) * _667)) * half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_763) * half(_763)) / fast::max(_749, 9.9999997473787516355514526367188e-05)) * half(_782)) * half(_782)), float3(65504.0))), half3(float3(65504.0)))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_1071, _1067, half(2.0)) * pow(max(fma(half(-float(_1022)), _1022, half(1.0)), half(0.0)), half(0.5) * (_1071 * _1067))) * half(0.15915493667125701904296875)) * (_1010 * (_1071 * _883))) * _667)) * half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_958) * half(_958)) / fast::max(_944, 9.9999997473787516355514526367188e-05)) * half(_977)) * half(_977)), float3(65504.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1100, half(1.0)));
+    half3 _604 = normalize(half3(in.v_normal));
+    float3 _610 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half _797 = max(dot(_604, half3(_610)), half(9.9999997473787516355514526367188e-05));
+    float4 _802 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_797, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _856 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _1480 = half4(_802);
+    half _815 = _1480.z;
+    half _817 = fma(half(-float(max(_856.x, max(_856.y, _856.z)))), _815, half(1.0));
+    half4 _1484 = half4(_802);
+    half _822 = _1484.w;
+    float4 _875 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_610), _604)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    float3 _912 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _915 = dot(_912, _912);
+    float3 _920 = _912 * rsqrt(fast::max(_915, 9.9999999392252902907785028219223e-09));
+    float _924 = _915 * float(frame.punctualLights[0].positionFalloff.w);
+    float _929 = fast::clamp(fma(-_924, _924, 1.0), 0.0, 1.0);
+    float _948 = fast::clamp(fma(dot(-_920, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _982 = dot(_604, half3(_920));
+    half _984 = clamp(_982, half(0.0), half(1.0));
+    half _996 = clamp(dot(_604, normalize(half3(_610) + half3(_920))), half(0.0), half(1.0));
+    half _1065 = half(8192.0) * fma(half(-float(_984)), _797, _984 + _797);
+    half _1069 = half(1.0) / (half(params.facet_alpha) * _1065);
+    half _1076 = half(2048.0) * half(params.facet_alpha);
+    half3 _1029 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_982 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_984), half3(float3(0.0)), half3(float3(1.0)))) * _817) + (_856 * ((((fma(_1069, _1065, half(2.0)) * pow(max(fma(half(-float(_996)), _996, half(1.0)), half(0.0)), half(0.5) * (_1069 * _1065))) * half(0.15915493667125701904296875)) * (_984 * (_1069 * _1076))) * _822))) * half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_929) * half(_929)) / fast::max(_915, 9.9999997473787516355514526367188e-05)) * half(_948)) * half(_948)), float3(65504.0))), half3(float3(65504.0)));
+    float3 _1140 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1143 = dot(_1140, _1140);
+    float3 _1148 = _1140 * rsqrt(fast::max(_1143, 9.9999999392252902907785028219223e-09));
+    float _1152 = _1143 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1157 = fast::clamp(fma(-_1152, _1152, 1.0), 0.0, 1.0);
+    float _1176 = fast::clamp(fma(dot(-_1148, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1210 = dot(_604, half3(_1148));
+    half _1212 = clamp(_1210, half(0.0), half(1.0));
+    half _1224 = clamp(dot(_604, normalize(half3(_610) + half3(_1148))), half(0.0), half(1.0));
+    half _1293 = half(8192.0) * fma(half(-float(_1212)), _797, _1212 + _797);
+    half _1297 = half(1.0) / (half(params.facet_alpha) * _1293);
+    half3 _1257 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_1210 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_1212), half3(float3(0.0)), half3(float3(1.0)))) * _817) + (_856 * ((((fma(_1297, _1293, half(2.0)) * pow(max(fma(half(-float(_1224)), _1224, half(1.0)), half(0.0)), half(0.5) * (_1297 * _1293))) * half(0.15915493667125701904296875)) * (_1212 * (_1297 * _1076))) * _822))) * half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1157) * half(_1157)) / fast::max(_1143, 9.9999997473787516355514526367188e-05)) * half(_1176)) * half(_1176)), float3(65504.0))), half3(float3(65504.0)));
+    half3 _1332 = (fma(half4(_875).xyz, _856 * _815, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _604.y)) + (half4(frame.sh[2]).xyz * _604.z)) + (half4(frame.sh[3]).xyz * _604.x), half3(float3(0.0)))) * _817) + _1029) + _1257;
+    out.fragColor = float4(half4(_1332, half(1.0)));
     return out;
 }
 

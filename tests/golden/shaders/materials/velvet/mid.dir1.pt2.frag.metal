@@ -13,9 +13,6 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
-    char _m8_pad[12];
-    packed_float3 facet_sheenColor;
-    float facet_sheenLod;
 };
 
 struct PunctualLightData
@@ -46,49 +43,56 @@ struct main0_in
 {
     float3 v_worldPosition [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float3 v_diffuseLight [[user(locn2)]];
 };
 
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _486 = normalize(half3(in.v_normal));
-    float3 _502 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half _663 = max(dot(_486, half3(_502)), half(9.9999997473787516355514526367188e-05));
-    float4 _668 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_663, half(params.facet_perceptualRoughness))), level(0.0));
-    half4 _1365 = half4(_668);
-    half _681 = _1365.z;
-    half4 _1369 = half4(_668);
-    half _688 = _1369.w;
-    float4 _697 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_502), _486)), level(params.facet_sheenLod));
-    half3 _537 = half4(frame.lightDirection).xyz;
-    half _752 = clamp(dot(_486, _537), half(0.0), half(1.0));
-    half _764 = clamp(dot(_486, normalize(half3(_502) + _537)), half(0.0), half(1.0));
-    half _809 = half(8192.0) * fma(half(-float(_752)), _663, _752 + _663);
-    half _813 = half(1.0) / (half(params.facet_alpha) * _809);
-    half _820 = half(2048.0) * half(params.facet_alpha);
-    float3 _878 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _881 = dot(_878, _878);
-    float3 _886 = _878 * rsqrt(fast::max(_881, 9.9999999392252902907785028219223e-09));
-    float _890 = _881 * float(frame.punctualLights[0].positionFalloff.w);
-    float _895 = fast::clamp(fma(-_890, _890, 1.0), 0.0, 1.0);
-    float _914 = fast::clamp(fma(dot(-_886, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half _947 = clamp(dot(_486, half3(_886)), half(0.0), half(1.0));
-    half _959 = clamp(dot(_486, normalize(half3(_502) + half3(_886))), half(0.0), half(1.0));
-    half _1004 = half(8192.0) * fma(half(-float(_947)), _663, _947 + _663);
-    half _1008 = half(1.0) / (half(params.facet_alpha) * _1004);
-    half3 _1037 = (fma(half4(_697).xyz, half3(float3(params.facet_sheenColor)) * _681, (half3(float3(params.facet_diffuseColor)) * half3(in.v_diffuseLight)) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _681, half(1.0))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_813, _809, half(2.0)) * pow(max(fma(half(-float(_764)), _764, half(1.0)), half(0.0)), half(0.5) * (_813 * _809))) * half(0.15915493667125701904296875)) * (_752 * (_813 * _820))) * _688)) * half4(frame.lightColor).xyz, half3(float3(65504.0)))) + min((half3(float3(params.facet_sheenColor)) * ((((fma(_1008, _1004, half(2.0)) * pow(max(fma(half(-float(_959)), _959, half(1.0)), half(0.0)), half(0.5) * (_1008 * _1004))) * half(0.15915493667125701904296875)) * (_947 * (_1008 * _820))) * _688)) * half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_895) * half(_895)) / fast::max(_881, 9.9999997473787516355514526367188e-05)) * half(_914)) * half(_914)), float3(65504.0))), half3(float3(65504.0)));
-    float3 _1073 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1076 = dot(_1073, _1073);
-    float3 _1081 = _1073 * rsqrt(fast::max(_1076, 9.9999999392252902907785028219223e-09));
-    float _1085 = _1076 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1090 = fast::clamp(fma(-_1085, _1085, 1.0), 0.0, 1.0);
-    float _1109 = fast::clamp(fma(dot(-_1081, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half _1142 = clamp(dot(_486, half3(_1081)), half(0.0), half(1.0));
-    half _1154 = clamp(dot(_486, normalize(half3(_502) + half3(_1081))), half(0.0), half(1.0));
-    half _1199 = half(8192.0) * fma(half(-float(_1142)), _663, _1142 + _663);
-    half _1203 = half(1.0) / (half(params.facet_alpha) * _1199);
-    out.fragColor = float4(half4(_1037 + min((half3(float3(params.facet_sheenColor)) * ((((fma(_1203, _1199, half(2.0)) * pow(max(fma(half(-float(_1154)), _1154, half(1.0)), half(0.0)), half(0.5) * (_1203 * _1199))) * half(0.15915493667125701904296875)) * (_1142 * (_1203 * _820))) * _688)) * half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1090) * half(_1090)) / fast::max(_1076, 9.9999997473787516355514526367188e-05)) * half(_1109)) * half(_1109)), float3(65504.0))), half3(float3(65504.0))), half(1.0)));
+    half3 _604 = normalize(half3(in.v_normal));
+    float3 _610 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half _818 = max(dot(_604, half3(_610)), half(9.9999997473787516355514526367188e-05));
+    float4 _823 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_818, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _877 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
+    half4 _1664 = half4(_823);
+    half _836 = _1664.z;
+    half _838 = fma(half(-float(max(_877.x, max(_877.y, _877.z)))), _836, half(1.0));
+    half4 _1668 = half4(_823);
+    half _843 = _1668.w;
+    float4 _896 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_610), _604)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _642 = half4(frame.lightDirection).xyz;
+    half _919 = dot(_604, _642);
+    half _921 = clamp(_919, half(0.0), half(1.0));
+    half _933 = clamp(dot(_604, normalize(half3(_610) + _642)), half(0.0), half(1.0));
+    half _1002 = half(8192.0) * fma(half(-float(_921)), _818, _921 + _818);
+    half _1006 = half(1.0) / (half(params.facet_alpha) * _1002);
+    half _1013 = half(2048.0) * half(params.facet_alpha);
+    float3 _1077 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1080 = dot(_1077, _1077);
+    float3 _1085 = _1077 * rsqrt(fast::max(_1080, 9.9999999392252902907785028219223e-09));
+    float _1089 = _1080 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1094 = fast::clamp(fma(-_1089, _1089, 1.0), 0.0, 1.0);
+    float _1113 = fast::clamp(fma(dot(-_1085, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1147 = dot(_604, half3(_1085));
+    half _1149 = clamp(_1147, half(0.0), half(1.0));
+    half _1161 = clamp(dot(_604, normalize(half3(_610) + half3(_1085))), half(0.0), half(1.0));
+    half _1230 = half(8192.0) * fma(half(-float(_1149)), _818, _1149 + _818);
+    half _1234 = half(1.0) / (half(params.facet_alpha) * _1230);
+    half3 _1194 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_1147 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_1149), half3(float3(0.0)), half3(float3(1.0)))) * _838) + (_877 * ((((fma(_1234, _1230, half(2.0)) * pow(max(fma(half(-float(_1161)), _1161, half(1.0)), half(0.0)), half(0.5) * (_1234 * _1230))) * half(0.15915493667125701904296875)) * (_1149 * (_1234 * _1013))) * _843))) * half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1094) * half(_1094)) / fast::max(_1080, 9.9999997473787516355514526367188e-05)) * half(_1113)) * half(_1113)), float3(65504.0))), half3(float3(65504.0)));
+    half3 _1269 = (fma(half4(_896).xyz, _877 * _836, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _604.y)) + (half4(frame.sh[2]).xyz * _604.z)) + (half4(frame.sh[3]).xyz * _604.x), half3(float3(0.0)))) * _838) + min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_919 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_921), half3(float3(0.0)), half3(float3(1.0)))) * _838) + (_877 * ((((fma(_1006, _1002, half(2.0)) * pow(max(fma(half(-float(_933)), _933, half(1.0)), half(0.0)), half(0.5) * (_1006 * _1002))) * half(0.15915493667125701904296875)) * (_921 * (_1006 * _1013))) * _843))) * half4(frame.lightColor).xyz, half3(float3(65504.0)))) + _1194;
+    float3 _1305 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1308 = dot(_1305, _1305);
+    float3 _1313 = _1305 * rsqrt(fast::max(_1308, 9.9999999392252902907785028219223e-09));
+    float _1317 = _1308 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1322 = fast::clamp(fma(-_1317, _1317, 1.0), 0.0, 1.0);
+    float _1341 = fast::clamp(fma(dot(-_1313, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1375 = dot(_604, half3(_1313));
+    half _1377 = clamp(_1375, half(0.0), half(1.0));
+    half _1389 = clamp(dot(_604, normalize(half3(_610) + half3(_1313))), half(0.0), half(1.0));
+    half _1458 = half(8192.0) * fma(half(-float(_1377)), _818, _1377 + _818);
+    half _1462 = half(1.0) / (half(params.facet_alpha) * _1458);
+    half3 _1422 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_1375 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_1377), half3(float3(0.0)), half3(float3(1.0)))) * _838) + (_877 * ((((fma(_1462, _1458, half(2.0)) * pow(max(fma(half(-float(_1389)), _1389, half(1.0)), half(0.0)), half(0.5) * (_1462 * _1458))) * half(0.15915493667125701904296875)) * (_1377 * (_1462 * _1013))) * _843))) * half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1322) * half(_1322)) / fast::max(_1308, 9.9999997473787516355514526367188e-05)) * half(_1341)) * half(_1341)), float3(65504.0))), half3(float3(65504.0)));
+    half3 _1497 = _1269 + _1422;
+    out.fragColor = float4(half4(_1497, half(1.0)));
     return out;
 }
 
