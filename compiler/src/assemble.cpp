@@ -53,10 +53,7 @@ bool vertexDiffuse(const AssemblyInput& in) {
 
 // The `cube` diffuse reads the frame's irradiance cube per pixel; the sampled ground truth
 // integrates its own diffuse instead.
-bool cubeDiffuse(const AssemblyInput& in) {
-  return in.tier.diffuse == permutations::DiffuseModel::Cube && in.material.shading == "lit" &&
-         in.tier.ambient != permutations::AmbientModel::Sampled;
-}
+bool cubeDiffuse(const AssemblyInput& in) { return samplesIrradianceCube(in.tier, in.material.shading); }
 
 // The tangent frame is needed only to apply a tangent-space normal, and only lit shading reads it.
 bool usesNormalOutput(const AssemblyInput& in) {
@@ -642,6 +639,11 @@ bool assembleDepth(const AssemblyInput& in, Flavour flavour, StageSources* out, 
 }  // namespace
 
 bool samplesEnvironment(const AssemblyInput& in) { return in.material.shading == "lit" && !in.key.depthOnly; }
+
+bool samplesIrradianceCube(const permutations::TierConfig& tier, const std::string& shading) {
+  return tier.diffuse == permutations::DiffuseModel::Cube && shading == "lit" &&
+         tier.ambient != permutations::AmbientModel::Sampled;
+}
 
 bool samplesShadowAtlas(const AssemblyInput& in) { return readsShadowAtlas(in); }
 

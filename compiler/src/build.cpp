@@ -511,7 +511,10 @@ std::optional<BuildResult> buildMaterial(const ir::Material& checked, const Buil
   VariantCache cache(options.cacheDir);
   const bool shadowReceivers =
       std::any_of(keys.begin(), keys.end(), [](const permutations::VariantKey& k) { return k.receivesShadow(); });
-  result.package.mslBindings = package::mslBindingsFor(result.package.material, shadowReceivers);
+  const bool irradianceCube = std::any_of(keys.begin(), keys.end(), [&](const permutations::VariantKey& k) {
+    return !k.depthOnly && samplesIrradianceCube(tierConfig(material, k.tier, options), material.shading);
+  });
+  result.package.mslBindings = package::mslBindingsFor(result.package.material, shadowReceivers, irradianceCube);
   MaterialContext ctx{material, surface, alphaSurface, layout, preshade, options, cache, result.package.mslBindings};
   VariantJobs jobs(ctx, keys);
   jobs.run(options.jobs);

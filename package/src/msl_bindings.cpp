@@ -1,13 +1,15 @@
 // MSLB section (format 1.2): where a Metal app binds each block and sampler of the package's MSL,
 // and the slots shader_abi.h pins for a material (what the compiler records and the reader expects).
+#include <algorithm>
 #include <set>
+#include <string_view>
 
 #include "facet/abi/shader_abi.h"
 #include "sections.h"
 
 namespace facet::package {
 
-std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadowReceivers) {
+std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadowReceivers, bool irradianceCube) {
   std::vector<MslBinding> out;
   auto block = [&](const abi::BlockDesc& b) {
     out.push_back({std::string(b.name), MslResource::Buffer, b.set, b.binding, abi::mslBufferIndex(b)});
@@ -19,7 +21,9 @@ std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadow
   block(abi::kObjectBlock);
   if (material.paramBlockSize != 0) block(abi::kMaterialBlock);
   if (material.shading == "lit")
-    for (const abi::SamplerDesc& s : abi::kFrameSamplers) sampler(std::string(s.name), s.set, s.binding);
+    for (const abi::SamplerDesc& s : abi::kFrameSamplers)
+      if (irradianceCube || std::string_view(s.name) != abi::kIrradianceName)
+        sampler(std::string(s.name), s.set, s.binding);
   // Only packages holding receivers (.sh, .sp1 variants) declare the shadow's block and atlas: the others'
   // bytes stay as they were.
   if (material.shading == "lit" && shadowReceivers) {
@@ -35,7 +39,11 @@ std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadow
 std::string mslBindingsError(const MaterialInfo& material, const std::vector<MslBinding>& bindings,
                              bool shadowReceivers) {
   if (bindings.empty()) return "";  // none recorded: a package before format 1.2
-  const std::vector<MslBinding> pinned = mslBindingsFor(material, shadowReceivers);
+  // Whether a variant reads the irradiance cube is the tier's maths, which the package does not
+  // record: its slot is pinned when listed and not required otherwise.
+  const bool irradianceCube =
+      std::any_of(bindings.begin(), bindings.end(), [](const MslBinding& b) { return b.name == abi::kIrradianceName; });
+  const std::vector<MslBinding> pinned = mslBindingsFor(material, shadowReceivers, irradianceCube);
   for (const MslBinding& b : bindings) {
     const MslBinding* expected = nullptr;
     for (const MslBinding& p : pinned)

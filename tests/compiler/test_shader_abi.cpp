@@ -464,3 +464,37 @@ TEST(ShaderAbi, MslSlotOfEverySamplerAndBlockIsTheSameInEveryVariantAndMaterial)
   EXPECT_EQ(everywhere.at({"sampler", facet::abi::kEnvironmentName}), facet::abi::kEnvironmentBinding);
   EXPECT_EQ(everywhere.at({"buffer", "MaterialParams"}), facet::abi::kMaterialBinding);
 }
+
+// The irradiance cube's Metal slot is listed only by a package whose variants read it (a tier with
+// the `cube` diffuse): every other lit package keeps the slots, and bytes, it had before the cube,
+// and a package built before it still passes the loader's check.
+TEST(ShaderAbi, OnlyAPackageReadingTheIrradianceCubeListsItsMetalSlot) {
+  const std::string path = facet::test::examplePath("materials/red_plastic.mat");
+  const std::string text = facet::test::readText(path);
+  const auto listsIrradiance = [](const facet::package::Package& p) {
+    return std::any_of(p.mslBindings.begin(), p.mslBindings.end(),
+                       [](const facet::package::MslBinding& b) { return b.name == facet::abi::kIrradianceName; });
+  };
+  auto plain = facet::test::buildText(text, path);
+  ASSERT_TRUE(plain);
+  EXPECT_FALSE(listsIrradiance(plain->package));
+  EXPECT_EQ(facet::package::semanticError(plain->package), "");
+
+  const size_t end = text.rfind('}');
+  ASSERT_NE(end, std::string::npos);
+  auto cube = facet::test::buildText(text.substr(0, end) + "    tier high { diffuse = cube }\n}\n", path);
+  ASSERT_TRUE(cube);
+  EXPECT_TRUE(listsIrradiance(cube->package));
+  EXPECT_EQ(facet::package::semanticError(cube->package), "");
+  bool declared = false;
+  for (const auto& v : cube->package.variants)
+    for (const auto& shader : v.shaders)
+      if (shader.target == facet::package::Target::Msl && shader.stage == facet::package::Stage::Fragment) {
+        const std::string msl(shader.code.begin(), shader.code.end());
+        const bool reads = msl.find(std::string(facet::abi::kIrradianceName) + " [[texture(" +
+                                    std::to_string(facet::abi::kIrradianceBinding) + ")]]") != std::string::npos;
+        EXPECT_EQ(reads, v.key.rfind("high.", 0) == 0) << v.key;
+        declared = declared || reads;
+      }
+  EXPECT_TRUE(declared);
+}

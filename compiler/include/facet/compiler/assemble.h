@@ -56,6 +56,10 @@ bool samplesDfgLut(const AssemblyInput& input);
 // Shadow receivers (VariantKey::receivesShadow: the sun's, a spot's) read ShadowUniforms and the
 // shadow atlas.
 bool samplesShadowAtlas(const AssemblyInput& input);
+// Whether a tier's lit variants read the irradiance cube (diffuse `cube`, unless the tier samples
+// the environment for its ambient): only packages with one list its Metal slot, so every other
+// package keeps its bytes and packages built before the cube keep loading.
+bool samplesIrradianceCube(const permutations::TierConfig& tier, const std::string& shading);
 
 // Whether the variant's fragment stage samples the specular table (a lit variant with a light
 // whose tier uses `lut` specular): the package must then carry the table (compiler/specular_lut.h).

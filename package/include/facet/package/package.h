@@ -131,10 +131,12 @@ struct MslBinding {
 inline constexpr uint32_t kMslBufferSlots = 31;
 inline constexpr uint32_t kMslSamplerSlots = 16;
 // The Metal slots of a material's shaders, pinned from shader_abi.h: the frame and object blocks,
-// the material's block when it has one, the frame samplers of lit materials, and one sampler per
-// texture parameter with a sampler slot, and in a package holding shadow receivers (.sh variants)
-// the shadow's block and atlas. The same for every variant; what the compiler records.
-std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadowReceivers = false);
+// the material's block when it has one, the frame samplers of lit materials (the irradiance cube
+// only in a package whose variants read it: diffuse `cube`), and one sampler per texture parameter
+// with a sampler slot, and in a package holding shadow receivers (.sh variants) the shadow's block
+// and atlas. The same for every variant; what the compiler records.
+std::vector<MslBinding> mslBindingsFor(const MaterialInfo& material, bool shadowReceivers = false,
+                                       bool irradianceCube = false);
 // Recorded slots against the material (part of semanticError): each names a block or sampler the
 // material's shaders declare, with that resource's kind, Vulkan set and binding and pinned index,
 // and every such resource has one. "" when they agree or none are recorded (before format 1.2).

@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
+    float facet_sheenRoughness;
+    float facet_sheenAlpha;
 };
 
 struct main0_out
@@ -30,18 +34,16 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _349 = normalize(half3(in.v_normal));
-    float3 _353 = fast::normalize(in.v_toEye);
-    half _483 = max(dot(_349, half3(_353)), half(9.9999997473787516355514526367188e-05));
-    half3 _487 = reflect(-half3(_353), _349);
-    float4 _516 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_483, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _535 = facet_environment.sample(facet_environmentSmplr, float3(_487), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _612 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _619 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _742 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_483, _612)), level(0.0)));
-    half _582 = _742.z;
-    float4 _643 = facet_environment.sample(facet_environmentSmplr, float3(_487), level(_612 * (half(4.0) * (half(2.0) - _612))));
-    out.fragColor = float4(half4(fma(half4(_643).xyz, _619 * _582, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_535).xyz * mix(half4(_516).xxx, half4(_516).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(_619.x, max(_619.y, _619.z)))), _582, half(1.0))), half(1.0)));
+    half3 _342 = normalize(half3(in.v_normal));
+    float3 _346 = fast::normalize(in.v_toEye);
+    half _477 = max(dot(_342, half3(_346)), half(9.9999997473787516355514526367188e-05));
+    half3 _481 = reflect(-half3(_346), _342);
+    float4 _510 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_477, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _529 = facet_environment.sample(facet_environmentSmplr, float3(_481), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half4 _706 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_477, half(params.facet_sheenRoughness))), level(0.0)));
+    half _574 = _706.z;
+    float4 _590 = facet_environment.sample(facet_environmentSmplr, float3(_481), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_590).xyz, half3(float3(params.facet_sheenColor)) * _574, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_529).xyz * mix(half4(_510).xxx, half4(_510).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _574, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
+    float facet_sheenRoughness;
+    float facet_sheenAlpha;
 };
 
 struct PunctualLightData
@@ -49,33 +53,30 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _689 = normalize(half3(in.v_normal));
-    float3 _693 = fast::normalize(in.v_toEye);
-    half _845 = max(dot(_689, half3(_693)), half(9.9999997473787516355514526367188e-05));
-    half3 _849 = reflect(-half3(_693), _689);
-    float4 _878 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_845, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _897 = facet_environment.sample(facet_environmentSmplr, float3(_849), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _974 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    float4 _931 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_845, _974)), level(0.0));
-    half3 _981 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _1389 = half4(_931);
-    half _944 = _1389.z;
-    half _946 = fma(half(-float(max(_981.x, max(_981.y, _981.z)))), _944, half(1.0));
-    half _990 = _974 * _974;
-    float4 _1005 = facet_environment.sample(facet_environmentSmplr, float3(_849), level(_974 * (half(4.0) * (half(2.0) - _974))));
-    half3 _761 = half4(frame.lightColor).xyz;
-    float3 _1119 = fast::normalize(_693 + frame.lightDirection.xyz);
-    half _1060 = clamp(dot(_689, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
-    half _1064 = clamp(dot(_689, half3(_1119)), half(0.0), half(1.0));
-    half4 _1184 = half4(cross(_689, half3(_1119)), half(params.facet_alpha) * _1064) * half(64.0);
-    half _1165 = (half(4096.0) * half(params.facet_alpha)) / dot(_1184, _1184);
-    half _1197 = _1060 + _845;
-    half _1209 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1119)), half(0.0), half(1.0));
-    half _1212 = _1209 * _1209;
-    half _1253 = half(8192.0) * fma(half(-float(_1060)), _845, _1197);
-    half _1257 = half(1.0) / (_990 * _1253);
-    half3 _1100 = min(fma((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1212 * _1212) * _1209))) * min(min((_1165 * _1165) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / mix((half(2.0) * _1060) * _845, _1197, half(params.facet_alpha)), half(65504.0)), half(65504.0)), (_761 * _1060) * _946, (_981 * ((((fma(_1257, _1253, half(2.0)) * pow(max(fma(half(-float(_1064)), _1064, half(1.0)), half(0.0)), half(0.5) * (_1257 * _1253))) * half(0.15915493667125701904296875)) * (_1060 * (_1257 * (half(2048.0) * _990)))) * half4(_931).w)) * _761), half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_1005).xyz, _981 * _944, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_897).xyz * mix(half4(_878).xxx, half4(_878).yyy, half3(float3(params.facet_f0)))) * _946) + _1100, half(1.0)));
+    half3 _682 = normalize(half3(in.v_normal));
+    float3 _686 = fast::normalize(in.v_toEye);
+    half _839 = max(dot(_682, half3(_686)), half(9.9999997473787516355514526367188e-05));
+    half3 _843 = reflect(-half3(_686), _682);
+    float4 _872 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_839, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _891 = facet_environment.sample(facet_environmentSmplr, float3(_843), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    float4 _923 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_839, half(params.facet_sheenRoughness))), level(0.0));
+    half4 _1351 = half4(_923);
+    half _936 = _1351.z;
+    half _938 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _936, half(1.0));
+    float4 _952 = facet_environment.sample(facet_environmentSmplr, float3(_843), level(params.facet_sheenLod));
+    half3 _754 = half4(frame.lightColor).xyz;
+    float3 _1089 = fast::normalize(_686 + frame.lightDirection.xyz);
+    half _1030 = clamp(dot(_682, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    half _1034 = clamp(dot(_682, half3(_1089)), half(0.0), half(1.0));
+    half4 _1154 = half4(cross(_682, half3(_1089)), half(params.facet_alpha) * _1034) * half(64.0);
+    half _1135 = (half(4096.0) * half(params.facet_alpha)) / dot(_1154, _1154);
+    half _1167 = _1030 + _839;
+    half _1179 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1089)), half(0.0), half(1.0));
+    half _1182 = _1179 * _1179;
+    half _1223 = half(8192.0) * fma(half(-float(_1030)), _839, _1167);
+    half _1227 = half(1.0) / (half(params.facet_sheenAlpha) * _1223);
+    half3 _1070 = min(fma((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1182 * _1182) * _1179))) * min(min((_1135 * _1135) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / mix((half(2.0) * _1030) * _839, _1167, half(params.facet_alpha)), half(65504.0)), half(65504.0)), (_754 * _1030) * _938, (half3(float3(params.facet_sheenColor)) * ((((fma(_1227, _1223, half(2.0)) * pow(max(fma(half(-float(_1034)), _1034, half(1.0)), half(0.0)), half(0.5) * (_1227 * _1223))) * half(0.15915493667125701904296875)) * (_1030 * (_1227 * (half(2048.0) * half(params.facet_sheenAlpha))))) * half4(_923).w)) * _754), half3(float3(65504.0)));
+    out.fragColor = float4(half4(fma(half4(_952).xyz, half3(float3(params.facet_sheenColor)) * _936, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_891).xyz * mix(half4(_872).xxx, half4(_872).yyy, half3(float3(params.facet_f0)))) * _938) + _1070, half(1.0)));
     return out;
 }
 

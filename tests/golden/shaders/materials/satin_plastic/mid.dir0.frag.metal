@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
+    float facet_sheenRoughness;
+    float facet_sheenAlpha;
 };
 
 struct main0_out
@@ -30,18 +34,16 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _349 = normalize(half3(in.v_normal));
-    float3 _353 = fast::normalize(in.v_toEye);
-    half _484 = max(dot(_349, half3(_353)), half(9.9999997473787516355514526367188e-05));
-    half3 _488 = reflect(-half3(_353), _349);
-    float4 _517 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_484, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _536 = facet_environment.sample(facet_environmentSmplr, float3(_488), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _613 = clamp(half(params.sheenRoughness), half(0.08900000154972076416015625), half(1.0));
-    half3 _620 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _743 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_484, _613)), level(0.0)));
-    half _583 = _743.z;
-    float4 _644 = facet_environment.sample(facet_environmentSmplr, float3(_488), level(_613 * (half(4.0) * (half(2.0) - _613))));
-    out.fragColor = float4(half4(fma(half4(_644).xyz, _620 * _583, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_536).xyz * mix(half4(_517).xxx, half4(_517).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(_620.x, max(_620.y, _620.z)))), _583, half(1.0))), half(1.0)));
+    half3 _342 = normalize(half3(in.v_normal));
+    float3 _346 = fast::normalize(in.v_toEye);
+    half _478 = max(dot(_342, half3(_346)), half(9.9999997473787516355514526367188e-05));
+    half3 _482 = reflect(-half3(_346), _342);
+    float4 _511 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_478, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _530 = facet_environment.sample(facet_environmentSmplr, float3(_482), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half4 _707 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_478, half(params.facet_sheenRoughness))), level(0.0)));
+    half _575 = _707.z;
+    float4 _591 = facet_environment.sample(facet_environmentSmplr, float3(_482), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_591).xyz, half3(float3(params.facet_sheenColor)) * _575, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_530).xyz * mix(half4(_511).xxx, half4(_511).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _575, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -29,6 +29,8 @@ mediump float facet_pad44;
 mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump float facet_alpha;
+mediump vec3 facet_sheenColor;
+mediump float facet_sheenLod;
 }
 params;
 uniform mediump sampler2D facet_specularLut;
@@ -80,9 +82,6 @@ vec3 c3=frame.sh[3].rgb;
 vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
 return max(e,vec3(0.0));
 }
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
-}
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
 float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
 float k=1.0/(alpha*scaledQ);
@@ -120,7 +119,7 @@ vec3 add_light(vec3 color,vec3 radiance){
 return color+radiance;
 }
 vec3 sheen_color(MaterialInputs material){
-return clamp(material.sheenColor,0.0,1.0);
+return params.facet_sheenColor;
 }
 float sheen_perceptual_roughness(MaterialInputs material){
 return material_perceptual_roughness(material);
@@ -138,7 +137,7 @@ shading_sheen_color=sheenColor;
 shading_sheen_alpha=sheen_alpha(material);
 shading_sheen_scale=sheenTerms.y;
 shading_sheen_base_scale=baseScale;
-vec3 radiance=prefiltered_radiance(reflect(-v,n),perceptualRoughness);
+vec3 radiance=textureLod(facet_environment,reflect(-v,n),params.facet_sheenLod).rgb;
 vec3 specular=radiance*(sheenColor*sheenTerms.x);
 return base*baseScale+specular;
 }

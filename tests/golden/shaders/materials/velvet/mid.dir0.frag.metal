@@ -13,6 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
+    char _m8_pad[12];
+    packed_float3 facet_sheenColor;
+    float facet_sheenLod;
 };
 
 struct PunctualLightData
@@ -48,13 +51,13 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _333 = normalize(half3(in.v_normal));
-    float3 _337 = fast::normalize(in.v_toEye);
-    half3 _546 = clamp(half3(float3(params.sheen)), half3(float3(0.0)), half3(float3(1.0)));
-    half4 _657 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_333, half3(_337)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _505 = _657.z;
-    float4 _565 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_337), _333)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half4(_565).xyz, _546 * _505, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _333.y)) + (half4(frame.sh[2]).xyz * _333.z)) + (half4(frame.sh[3]).xyz * _333.x), half3(float3(0.0)))) * fma(half(-float(max(_546.x, max(_546.y, _546.z)))), _505, half(1.0))), half(1.0)));
+    half3 _313 = normalize(half3(in.v_normal));
+    float3 _317 = fast::normalize(in.v_toEye);
+    half4 _622 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_313, half3(_317)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _483 = _622.z;
+    float4 _499 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_317), _313)), level(params.facet_sheenLod));
+    float4 _631 = float4(half4(fma(half4(_499).xyz, half3(float3(params.facet_sheenColor)) * _483, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _313.y)) + (half4(frame.sh[2]).xyz * _313.z)) + (half4(frame.sh[3]).xyz * _313.x), half3(float3(0.0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _483, half(1.0))), half(1.0)));
+    out.fragColor = _631;
     return out;
 }
 
