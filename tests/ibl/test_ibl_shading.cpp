@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <stb_image_write.h>
@@ -60,6 +62,33 @@ Vec3 testSky(Vec3 d) {
   return horizon * (1 - w) + (d.y >= 0 ? zenith : ground) * w;
 }
 const char* kSkyEnvironment = R"("environment": {"sky": {"luminance": 8000}})";
+
+// The rough white dielectric under the softboxes at 128², its `high` tier adjusted, prepared for
+// both backends: what the band-4 and irradiance-cube tests render.
+struct SoftboxBall {
+  std::unique_ptr<facet::runtime::RenderBackend> vk, gl;
+  std::optional<facet::runtime::Scene> scene;
+  std::unique_ptr<facet::runtime::SceneFrame> frame;
+};
+void prepareSoftboxBall(const std::string& name,
+                        const std::function<void(facet::permutations::TierConfig*)>& adjustHigh, SoftboxBall* out) {
+  facet::compiler::BuildOptions options;
+  options.adjustTier = [&](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
+    if (tier == facet::permutations::Tier::High) adjustHigh(config);
+  };
+  const std::string packages = facet::test::writePackagesFromTexts(name, {kBall}, options);
+  std::string error;
+  out->vk = facet::runtime::createVulkanBackend({true}, &error);
+  out->gl = facet::runtime::createGlBackend(&error);
+  ASSERT_TRUE(out->vk && out->gl) << error;
+  const std::string json =
+      sceneJson("high", R"("environment": {"image": "environments/softboxes.hdr", "luminance": 8000})",
+                R"("metal": 0, "rough": 1, "refl": 0)", 128);
+  out->scene = facet::runtime::parseScene(facet::test::sourceDir() + "/tests/data/scenes/inline.json", json, &error);
+  ASSERT_TRUE(out->scene) << error;
+  out->frame = facet::runtime::SceneFrame::prepare(*out->scene, packages, &error);
+  ASSERT_TRUE(out->frame) << error;
+}
 
 }  // namespace
 
@@ -276,22 +305,11 @@ TEST(IblShading, DiffuseAmbientMatchesShIrradianceOfTheSky) {
 // times each backend's RMS error, so the check sees band 4, not SH3; that it is closer to the true irradiance is
 // Sh.BrightCapBand4IrradianceBeatsSh3's and EvalGroundTruth.ShBand4ClosesMostOfTheDielectricsGap's.
 TEST(IblShading, Band4IrradianceReachesBothBackends) {
-  facet::compiler::BuildOptions options;
-  options.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
-    if (tier == facet::permutations::Tier::High) config->shBands = 5;
-  };
-  const std::string packages = facet::test::writePackagesFromTexts("ibl-band4", {kBall}, options);
+  SoftboxBall ball;
+  ASSERT_NO_FATAL_FAILURE(prepareSoftboxBall(
+      "ibl-band4", [](facet::permutations::TierConfig* config) { config->shBands = 5; }, &ball));
+  auto& [vk, gl, scene, frame] = ball;
   std::string error;
-  auto vk = facet::runtime::createVulkanBackend({true}, &error);
-  auto gl = facet::runtime::createGlBackend(&error);
-  ASSERT_TRUE(vk && gl) << error;
-  const std::string json =
-      sceneJson("high", R"("environment": {"image": "environments/softboxes.hdr", "luminance": 8000})",
-                R"("metal": 0, "rough": 1, "refl": 0)", 128);
-  auto scene = facet::runtime::parseScene(facet::test::sourceDir() + "/tests/data/scenes/inline.json", json, &error);
-  ASSERT_TRUE(scene) << error;
-  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
-  ASSERT_TRUE(frame) << error;
   FrameResult vkImage, glImage;
   ASSERT_TRUE(vk->render(frame->frame(), &vkImage, &error)) << error;
   ASSERT_TRUE(gl->render(frame->frame(), &glImage, &error)) << error;
@@ -349,22 +367,13 @@ TEST(IblShading, Band4IrradianceReachesBothBackends) {
 // the SH tests' 1 % + 0.002. What reaches the pixels is the frame's irradiance cube: with that
 // texture replaced by a black one the diffuse must vanish from both (the specular stays).
 TEST(IblShading, IrradianceCubeRendersTheSh3DiffuseOnBothBackends) {
-  facet::compiler::BuildOptions options;
-  options.adjustTier = [](facet::permutations::Tier tier, facet::permutations::TierConfig* config) {
-    if (tier == facet::permutations::Tier::High) config->diffuse = facet::permutations::DiffuseModel::Cube;
-  };
-  const std::string packages = facet::test::writePackagesFromTexts("ibl-irradiance-cube", {kBall}, options);
+  SoftboxBall ball;
+  ASSERT_NO_FATAL_FAILURE(prepareSoftboxBall(
+      "ibl-irradiance-cube",
+      [](facet::permutations::TierConfig* config) { config->diffuse = facet::permutations::DiffuseModel::Cube; },
+      &ball));
+  auto& [vk, gl, scene, frame] = ball;
   std::string error;
-  auto vk = facet::runtime::createVulkanBackend({true}, &error);
-  auto gl = facet::runtime::createGlBackend(&error);
-  ASSERT_TRUE(vk && gl) << error;
-  const std::string json =
-      sceneJson("high", R"("environment": {"image": "environments/softboxes.hdr", "luminance": 8000})",
-                R"("metal": 0, "rough": 1, "refl": 0)", 128);
-  auto scene = facet::runtime::parseScene(facet::test::sourceDir() + "/tests/data/scenes/inline.json", json, &error);
-  ASSERT_TRUE(scene) << error;
-  auto frame = facet::runtime::SceneFrame::prepare(*scene, packages, &error);
-  ASSERT_TRUE(frame) << error;
   // The same frame with a black irradiance cube in place of the environment's.
   facet::runtime::EnvironmentLighting dark = frame->environment();
   for (auto& c : dark.sh) c = {0, 0, 0};
