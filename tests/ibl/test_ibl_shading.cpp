@@ -308,7 +308,10 @@ TEST(IblShading, Band4IrradianceReachesBothBackends) {
   SoftboxBall ball;
   ASSERT_NO_FATAL_FAILURE(prepareSoftboxBall(
       "ibl-band4", [](facet::permutations::TierConfig* config) { config->shBands = 5; }, &ball));
-  auto& [vk, gl, scene, frame] = ball;
+  auto& vk = ball.vk;
+  auto& gl = ball.gl;
+  auto& scene = ball.scene;
+  auto& frame = ball.frame;
   std::string error;
   FrameResult vkImage, glImage;
   ASSERT_TRUE(vk->render(frame->frame(), &vkImage, &error)) << error;
@@ -372,7 +375,10 @@ TEST(IblShading, IrradianceCubeRendersTheSh3DiffuseOnBothBackends) {
       "ibl-irradiance-cube",
       [](facet::permutations::TierConfig* config) { config->diffuse = facet::permutations::DiffuseModel::Cube; },
       &ball));
-  auto& [vk, gl, scene, frame] = ball;
+  auto& vk = ball.vk;
+  auto& gl = ball.gl;
+  auto& scene = ball.scene;
+  auto& frame = ball.frame;
   std::string error;
   // The same frame with a black irradiance cube in place of the environment's.
   facet::runtime::EnvironmentLighting dark = frame->environment();
