@@ -51,19 +51,15 @@ class ProgramBuilder {
       }
       case ir::Op::Add:
       case ir::Op::Sub:
-      case ir::Op::Mul: {
+      case ir::Op::Mul:
+      case ir::Op::Div: {
         auto a = value(v.args[0]);
         auto b = a ? value(v.args[1]) : std::nullopt;
         PreshaderOpcode code = v.op == ir::Op::Add   ? PreshaderOpcode::Add
                                : v.op == ir::Op::Sub ? PreshaderOpcode::Sub
-                                                     : PreshaderOpcode::Mul;
+                               : v.op == ir::Op::Mul ? PreshaderOpcode::Mul
+                                                     : PreshaderOpcode::Div;
         if (a && b) out = binary(code, *a, *b);
-        break;
-      }
-      case ir::Op::Div: {
-        auto a = value(v.args[0]);
-        auto b = a ? value(v.args[1]) : std::nullopt;
-        if (a && b) out = binary(PreshaderOpcode::Div, *a, *b);
         break;
       }
       case ir::Op::Builtin: out = builtin(v); break;

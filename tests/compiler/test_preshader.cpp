@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -428,6 +429,25 @@ EmittedPreshade emittedPreshade(const facet::compiler::BuildResult& built, const
 // variants compute them per pixel. The environment's lods formed from parameters per pixel are the
 // base specular's alone (red_plastic's count: the standard model's lod is not preshaded); the
 // cloth model has none.
+namespace {
+
+// The block the runtime uploads for an instance: the parameters (their defaults, or `overrides` by
+// name; linear colours, as the runtime writes them), then the package's first program run over it.
+std::optional<std::vector<uint8_t>> preshadedBlock(const pkg::Package& p, const std::map<std::string, float>& overrides,
+                                                   std::string* error) {
+  std::vector<uint8_t> block(p.preshader.blockSize, 0);
+  for (const pkg::Param& param : p.material.params)
+    for (size_t i = 0; i < param.defaultValue.size() && param.size != 0; ++i) {
+      const float v = overrides.count(param.name) ? overrides.at(param.name) : float(param.defaultValue[i]);
+      std::memcpy(block.data() + param.offset + 4 * i, &v, 4);
+    }
+  if (!facet::runtime::runPreshader(p.preshader.programs[0].ops, p.material.paramBlockSize, block, error))
+    return std::nullopt;
+  return block;
+}
+
+}  // namespace
+
 TEST(PreshaderCompiler, NoParameterOnlyWorkLeftInTheModelsFragmentStages) {
   auto reference = facet::test::buildFile(facet::test::examplePath("materials/red_plastic.mat"));
   ASSERT_TRUE(reference);
@@ -488,17 +508,11 @@ TEST(PreshaderCompiler, TheGltfAnisotropyMappingOfParametersIsPreshaded) {
   }
   // The program run on the defaults gives back the extension's two alphas as (α_t, α_b) = r'² (1 ± k):
   // α_along = mix(0.16, 1, 0.36) and α_across = 0.16.
-  const pkg::Package& p = preshaded->package;
-  std::vector<uint8_t> block(p.preshader.blockSize, 0);
-  for (const pkg::Param& param : p.material.params)
-    for (size_t i = 0; i < param.defaultValue.size() && param.size != 0; ++i) {
-      const float v = float(param.defaultValue[i]);
-      std::memcpy(block.data() + param.offset + 4 * i, &v, 4);
-    }
   std::string error;
-  ASSERT_FALSE(p.preshader.programs.empty());
-  ASSERT_TRUE(facet::runtime::runPreshader(p.preshader.programs[0].ops, params, block, &error)) << error;
-  const std::vector<float> all = floatsOf(block);
+  ASSERT_FALSE(preshaded->package.preshader.programs.empty());
+  const auto block = preshadedBlock(preshaded->package, {}, &error);
+  ASSERT_TRUE(block) << error;
+  const std::vector<float> all = floatsOf(*block);
   const std::vector<float> derived(all.begin() + params / 4, all.end());
   const auto holds = [&](float expected) {
     return std::any_of(derived.begin(), derived.end(), [&](float m) { return std::abs(m - expected) < 1e-6f; });
@@ -564,16 +578,10 @@ TEST(PreshaderCompiler, TheModelsMembersHoldTheirChunksFormulas) {
     const EmittedPreshade e = emittedPreshade(*built, std::string(c.material) + ".high.dir1.frag.vulkan.glsl");
     EXPECT_EQ(e.defines, c.defines);
     ASSERT_EQ(p.preshader.programs.size(), 1u);
-    // The parameters' defaults (linear colours, as the runtime writes them), then the program.
-    std::vector<uint8_t> block(p.preshader.blockSize, 0);
-    for (const pkg::Param& param : p.material.params)
-      for (size_t i = 0; i < param.defaultValue.size() && param.size != 0; ++i) {
-        const float v = c.params.count(param.name) ? c.params.at(param.name) : float(param.defaultValue[i]);
-        std::memcpy(block.data() + param.offset + 4 * i, &v, 4);
-      }
     std::string error;
-    ASSERT_TRUE(facet::runtime::runPreshader(p.preshader.programs[0].ops, p.material.paramBlockSize, block, &error))
-        << error;
+    const auto preshadedBytes = preshadedBlock(p, c.params, &error);
+    ASSERT_TRUE(preshadedBytes) << error;
+    const std::vector<uint8_t>& block = *preshadedBytes;
     for (const auto& [member, values] : c.members) {
       ASSERT_TRUE(e.offsets.count(member)) << member;
       for (size_t i = 0; i < values.size(); ++i) {
