@@ -1,7 +1,7 @@
 // Diffuse ambient from the irradiance cube (the `cube` diffuse, permutations::DiffuseModel::Cube):
 //   E(n)/π = textureLod(facet_irradiance, n, 0)
 // an irradiance environment map (Ramamoorthi & Hanrahan 2001, "An Efficient Representation for
-// Irradiance Environment Maps": SH3 holds E to a few percent) tabulated from the same SH3 sum as
+// Irradiance Environment Maps"; SH3's own error, 5.15 % of the peak on docs/ibl.md's bright cap) tabulated from the same SH3 sum as
 // ambient_sh.glsl, max(Σ_{k<9} c_k p_k(n), 0), which the runtime evaluates at
 // each texel's centre direction (runtime::irradianceTexture; abi::kIrradianceMapSize² a face) and
 // the sampler interpolates bilinearly, across faces: one texture read on the texture pipe in place

@@ -62,7 +62,7 @@ const Texture& dfgTexture();
 // The irradiance cube the `cube` diffuse reads (chunks/ambient_irradiance_cube.glsl): SH3's
 // irradiance / π from lighting.sh[0..8] (what the SH diffuse sums per pixel) at every texel's
 // centre, an RGBA16F cube of one level, abi::kIrradianceMapSize² a face, bilinear across faces
-// (facet::ibl::tabulateIrradiance; 6144 texels, well under a millisecond).
+// (facet::ibl::tabulateIrradiance; 0.50 ms of CPU, docs/ibl.md).
 Texture irradianceTexture(const EnvironmentLighting& lighting);
 
 // An app's frame lit by `lighting`: its SH coefficients into the frame block, its mean radiance
