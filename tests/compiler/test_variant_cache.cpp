@@ -43,6 +43,16 @@ std::vector<fs::path> entryFiles(const std::string& dir) {
   return entries;
 }
 
+// The first two-hex-digit entry-folder name that <dir> does not hold and is not `besides`.
+std::string unusedEntryFolder(const std::string& dir, const std::string& besides = "") {
+  const char* hex = "0123456789abcdef";
+  for (int i = 0; i < 256; ++i) {
+    const std::string name = {hex[i / 16], hex[i % 16]};
+    if (name != besides && !fs::exists(fs::path(dir) / name)) return name;
+  }
+  return "";
+}
+
 }  // namespace
 
 TEST(VariantCache, WarmBuildTakesEveryVariantFromTheCacheAndWritesTheSameBytes) {
@@ -253,15 +263,19 @@ TEST(VariantCache, OnlyANewEmptyOrMarkedFolderIsTakenAsTheCache) {
 TEST(VariantCache, TrimRemovesNothingButTheCachesOwnEntries) {
   const std::string dir = facet::test::scratchDir("variant-cache-foreign-files");
   ASSERT_TRUE(facet::test::buildText(kMaterial, "test.mat", withCache(dir)));
+  // The foreign folders take entry-folder names the build did not use: which names it uses
+  // follows the variants' hashes, which change with every chunk.
+  const std::string linked = unusedEntryFolder(dir), plain = unusedEntryFolder(dir, linked);
   const std::string elsewhere = facet::test::scratchDir("variant-cache-elsewhere");
-  const std::string key = "cd" + std::string(30, '0');
+  const std::string key = linked + std::string(30, '0');
   std::ofstream(elsewhere + "/" + key) << "theirs";
-  fs::create_directory_symlink(elsewhere, dir + "/cd");
-  fs::create_directories(dir + "/ab");
+  fs::create_directory_symlink(elsewhere, dir + "/" + linked);
+  fs::create_directories(dir + "/" + plain);
+  const std::string folder = dir + "/" + plain;
   const std::vector<std::string> theirs = {dir + "/notes.txt",
-                                           dir + "/ab/notes.txt",
-                                           dir + "/ab/ab" + std::string(30, '1') + ".bak",
-                                           dir + "/ab/draft.tmp.1.2.3",
+                                           folder + "/notes.txt",
+                                           folder + "/" + plain + std::string(30, '1') + ".bak",
+                                           folder + "/draft.tmp.1.2.3",
                                            dir + "/AB" + std::string(30, '2'),
                                            elsewhere + "/" + key};
   for (const std::string& f : theirs) {
