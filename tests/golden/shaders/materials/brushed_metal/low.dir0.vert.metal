@@ -3,6 +3,14 @@
 
 using namespace metal;
 
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
 struct PunctualLightData
 {
     float4 positionFalloff;
@@ -22,19 +30,10 @@ struct FrameUniforms
     float4 sh[9];
 };
 
-struct ObjectUniforms
-{
-    float4 positionScale;
-    float4 positionOffset;
-    float4 uv0ScaleOffset;
-    float4 uv1ScaleOffset;
-};
-
 struct main0_out
 {
     float3 v_toEye [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -50,22 +49,21 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _96 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float4 _111 = float4(dot(in.a_instanceRow0, _96), dot(in.a_instanceRow1, _96), dot(in.a_instanceRow2, _96), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _111.xyz;
-    float3 _132 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _231;
-    if (dot(in.a_instanceRow0.xyz, _132) < 0.0)
+    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
+    float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _134;
+    if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
     {
-        _231 = -in.a_normal;
+        _134 = -in.a_normal;
     }
     else
     {
-        _231 = in.a_normal;
+        _134 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_231 * float3x3(_132, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.v_diffuseLight = fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0));
-    out.gl_Position = frame.viewProjection * _111;
+    out.v_normal = fast::normalize(_134 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.gl_Position = frame.viewProjection * _51;
     return out;
 }
 

@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -74,6 +73,9 @@ material.metallic=1.0;
 material.roughness=params.roughness;
 material.anisotropy=params.anisotropy;
 }
+float diffuse_lambert(){
+return 0.31830988618;
+}
 const vec2 SPECULAR_LUT_SIZE=vec2(128.0,64.0);
 const float SPECULAR_LUT_SCALE=5.0929582;
 float specular_lut(mediump sampler2D lut,float RoL,float perceptualRoughness){
@@ -88,6 +90,14 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 vec3 r=reflect(-v,n);
 return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
 }
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
+}
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
@@ -96,9 +106,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -113,7 +120,6 @@ float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
 vec3 shading_specular_albedo=vec3(0.0);
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
@@ -130,10 +136,14 @@ float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -142,9 +152,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }
@@ -179,7 +187,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;

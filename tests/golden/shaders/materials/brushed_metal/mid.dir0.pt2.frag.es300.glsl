@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -36,6 +35,7 @@ mediump float facet_anisotropicBend;
 mediump vec2 facet_anisotropicAlpha;
 }
 params;
+uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
 const float MIN_N_DOT_V=1e-4;
@@ -73,19 +73,30 @@ material.metallic=1.0;
 material.roughness=params.roughness;
 material.anisotropy=params.anisotropy;
 }
-float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
-return dot(t,t);
+float diffuse_lambert(){
+return 0.31830988618;
 }
-const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
-float d=ggx_d_scaled(alpha,NoH,n,h);
-float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
-return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
+const vec2 SPECULAR_LUT_SIZE=vec2(128.0,64.0);
+const float SPECULAR_LUT_SCALE=5.0929582;
+float specular_lut(mediump sampler2D lut,float RoL,float perceptualRoughness){
+float c=clamp(RoL,0.0,1.0);
+float c2=c*c;
+vec2 t=vec2(c2*c2,perceptualRoughness);
+vec2 uv=t*((SPECULAR_LUT_SIZE-1.0)/SPECULAR_LUT_SIZE)+0.5/SPECULAR_LUT_SIZE;
+float encoded=textureLod(lut,uv,0.0).r;
+return encoded*encoded*SPECULAR_LUT_SCALE;
 }
-vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 albedo){
+vec3 r=reflect(-v,n);
+return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
+}
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -95,9 +106,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -111,7 +119,7 @@ return params.facet_perceptualRoughness;
 float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
-vec3 shading_energy_compensation=vec3(1.0);
+vec3 shading_specular_albedo=vec3(0.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
@@ -126,13 +134,16 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
-vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
-specular*=shading_energy_compensation;
+vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -141,9 +152,8 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
+shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){
@@ -177,7 +187,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));

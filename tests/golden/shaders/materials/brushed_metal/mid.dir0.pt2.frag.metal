@@ -50,40 +50,37 @@ struct main0_in
     float3 v_normal [[user(locn1)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _586 = normalize(half3(in.v_normal));
-    float3 _602 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half _760 = max(dot(_586, half3(_602)), half(9.9999997473787516355514526367188e-05));
-    float4 _799 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_760, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _818 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_799).y) - half(1.0)));
-    float4 _828 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_602), _586)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    float3 _873 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _876 = dot(_873, _873);
-    float3 _881 = _873 * rsqrt(fast::max(_876, 9.9999999392252902907785028219223e-09));
-    float _885 = _876 * float(frame.punctualLights[0].positionFalloff.w);
-    float _890 = fast::clamp(fma(-_885, _885, 1.0), 0.0, 1.0);
-    float _909 = fast::clamp(fma(dot(-_881, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1019 = normalize(half3(_602) + half3(_881));
-    half _970 = clamp(dot(_586, half3(_881)), half(0.0), half(1.0));
-    half4 _1088 = half4(cross(_586, _1019), half(params.facet_alpha) * clamp(dot(_586, _1019), half(0.0), half(1.0))) * half(64.0);
-    half _1062 = half(4096.0) * half(params.facet_alpha);
-    half _1065 = half(6.283185482025146484375) * max(mix((half(2.0) * _970) * _760, _970 + _760, half(params.facet_alpha)), half(0.000244140625));
-    half _1067 = _1062 / (dot(_1088, _1088) * _1065);
-    float3 _1132 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1135 = dot(_1132, _1132);
-    float3 _1140 = _1132 * rsqrt(fast::max(_1135, 9.9999999392252902907785028219223e-09));
-    float _1144 = _1135 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1149 = fast::clamp(fma(-_1144, _1144, 1.0), 0.0, 1.0);
-    float _1168 = fast::clamp(fma(dot(-_1140, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1278 = normalize(half3(_602) + half3(_1140));
-    half _1229 = clamp(dot(_586, half3(_1140)), half(0.0), half(1.0));
-    half4 _1347 = half4(cross(_586, _1278), half(params.facet_alpha) * clamp(dot(_586, _1278), half(0.0), half(1.0))) * half(64.0);
-    half _1324 = half(6.283185482025146484375) * max(mix((half(2.0) * _1229) * _760, _1229 + _760, half(params.facet_alpha)), half(0.000244140625));
-    half _1326 = _1062 / (dot(_1347, _1347) * _1324);
-    half3 _1355 = fma(half4(_828).xyz, mix(half4(_799).xxx, half4(_799).yyy, half3(float3(params.facet_f0))) * _818, min(((half3(float3(params.facet_f0)) * min(_1067 * (_1067 * _1065), half(65504.0))) * _818) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_890) * half(_890)) / fast::max(_876, 9.9999997473787516355514526367188e-05)) * half(_909)) * half(_909)), float3(65504.0))) * _970), half3(float3(65504.0)))) + min(((half3(float3(params.facet_f0)) * min(_1326 * (_1326 * _1324), half(65504.0))) * _818) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1149) * half(_1149)) / fast::max(_1135, 9.9999997473787516355514526367188e-05)) * half(_1168)) * half(_1168)), float3(65504.0))) * _1229), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1355, half(1.0)));
+    half3 _608 = normalize(half3(in.v_normal));
+    float3 _614 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half3 _822 = reflect(-half3(_614), _608);
+    float4 _852 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_608, half3(_614)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _861 = mix(half4(_852).xxx, half4(_852).yyy, half3(float3(params.facet_f0)));
+    float4 _871 = facet_environment.sample(facet_environmentSmplr, float3(_822), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    float3 _916 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _919 = dot(_916, _916);
+    float3 _924 = _916 * rsqrt(fast::max(_919, 9.9999999392252902907785028219223e-09));
+    float _928 = _919 * float(frame.punctualLights[0].positionFalloff.w);
+    float _933 = fast::clamp(fma(-_928, _928, 1.0), 0.0, 1.0);
+    float _952 = fast::clamp(fma(dot(-_924, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1092 = clamp(dot(_822, half3(_924)), half(0.0), half(1.0));
+    half _1095 = _1092 * _1092;
+    half4 _1546 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1095 * _1095, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1107 = _1546.x;
+    float3 _1166 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1169 = dot(_1166, _1166);
+    float3 _1174 = _1166 * rsqrt(fast::max(_1169, 9.9999999392252902907785028219223e-09));
+    float _1178 = _1169 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1183 = fast::clamp(fma(-_1178, _1178, 1.0), 0.0, 1.0);
+    float _1202 = fast::clamp(fma(dot(-_1174, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1342 = clamp(dot(_822, half3(_1174)), half(0.0), half(1.0));
+    half _1345 = _1342 * _1342;
+    half4 _1572 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1345 * _1345, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1357 = _1572.x;
+    half3 _1380 = fma(half4(_871).xyz, _861, min((_861 * ((_1107 * _1107) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_933) * half(_933)) / fast::max(_919, 9.9999997473787516355514526367188e-05)) * half(_952)) * half(_952)), float3(65504.0))) * clamp(dot(_608, half3(_924)), half(0.0), half(1.0))), half3(float3(65504.0)))) + min((_861 * ((_1357 * _1357) * half(5.092957973480224609375))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1183) * half(_1183)) / fast::max(_1169, 9.9999997473787516355514526367188e-05)) * half(_1202)) * half(_1202)), float3(65504.0))) * clamp(dot(_608, half3(_1174)), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1380, half(1.0)));
     return out;
 }
 

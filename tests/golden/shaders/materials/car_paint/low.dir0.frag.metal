@@ -34,17 +34,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _347 = normalize(half3(in.v_normal));
-    float3 _351 = fast::normalize(in.v_toEye);
-    half _498 = max(dot(_347, half3(_351)), half(9.9999997473787516355514526367188e-05));
-    half3 _502 = reflect(-half3(_351), _347);
-    float4 _538 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_498, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _567 = facet_environment.sample(facet_environmentSmplr, float3(_502), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _614 = half(1.0) - _498;
-    half _617 = _614 * _614;
-    float4 _602 = facet_environment.sample(facet_environmentSmplr, float3(_502), level(params.facet_clearCoatLod));
-    half3 _608 = mix(half4(_567).xyz * (mix(half4(_538).xxx, half4(_538).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_538).y) - half(1.0))))), half4(_602).xyz, half3(fma(half(0.959999978542327880859375), (_617 * _617) * _614, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
-    out.fragColor = float4(half4(_608, half(1.0)));
+    half3 _414 = normalize(half3(in.v_normal));
+    float3 _418 = fast::normalize(in.v_toEye);
+    half _602 = max(dot(_414, half3(_418)), half(9.9999997473787516355514526367188e-05));
+    half3 _606 = reflect(-half3(_418), _414);
+    float4 _642 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_602, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _671 = facet_environment.sample(facet_environmentSmplr, float3(_606), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _718 = half(1.0) - _602;
+    half _721 = _718 * _718;
+    float4 _706 = facet_environment.sample(facet_environmentSmplr, float3(_606), level(params.facet_clearCoatLod));
+    half3 _712 = mix(half4(_671).xyz * (mix(half4(_642).xxx, half4(_642).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_642).y) - half(1.0))))), half4(_706).xyz, half3(fma(half(0.959999978542327880859375), (_721 * _721) * _718, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_712, half(1.0)));
     return out;
 }
 

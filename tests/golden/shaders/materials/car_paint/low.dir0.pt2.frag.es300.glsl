@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -77,6 +76,9 @@ material.roughness=params.roughness;
 material.clearCoat=params.coat;
 material.clearCoatRoughness=params.coatRoughness;
 }
+float diffuse_lambert(){
+return 0.31830988618;
+}
 const vec2 SPECULAR_LUT_SIZE=vec2(128.0,64.0);
 const float SPECULAR_LUT_SCALE=5.0929582;
 float specular_lut(mediump sampler2D lut,float RoL,float perceptualRoughness){
@@ -91,6 +93,14 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 vec3 r=reflect(-v,n);
 return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
 }
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
+}
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
@@ -103,10 +113,18 @@ return mix(dfg.xxx,dfg.yyy,f0);
 vec3 energy_compensation(vec2 dfg,vec3 f0){
 return 1.0+f0*(1.0/dfg.y-1.0);
 }
+float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
+vec3 t=64.0*cross(n,h);
+float q=64.0*alpha*NoH;
+return dot(t,t)+q*q;
+}
 vec3 shading_clear_coat_normal;
 float shading_clear_coat_attenuation=1.0;
 float clear_coat_strength(MaterialInputs material){
 return params.facet_clearCoat;
+}
+float clear_coat_alpha(MaterialInputs material){
+return params.facet_clearCoatAlpha;
 }
 float clear_coat_fresnel(float cosTheta){
 float f=1.0-cosTheta;
@@ -119,6 +137,20 @@ float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(mater
 shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=textureLod(facet_environment,reflect(-v,n),params.facet_clearCoatLod).rgb;
 return mix(base,coat,Fc);
+}
+const float CLEAR_COAT_LOH2_MIN=6.103515625e-5;
+float clear_coat_lobe(MaterialInputs material,vec3 h,float LoH){
+vec3 n=shading_clear_coat_normal;
+float NoH=clamp(dot(n,h),0.0,1.0);
+float alpha=clear_coat_alpha(material);
+float d=ggx_d_scaled(alpha,NoH,n,h);
+float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
+float k=(4096.0*alpha)/(d*x);
+float DV=min(k*(k*x),65504.0);
+float s=clear_coat_strength(material);
+float f=1.0-LoH;
+float f2=f*f;
+return DV*(0.04*s+(0.96*s)*(f2*f2*f));
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -150,10 +182,16 @@ float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+float coatLobe=clear_coat_lobe(material,h,LoH);
+vec3 diffuseColor=material_diffuse_color(material);
+vec3 lobes=diffuseColor*diffuse_lambert()+specular;
+return min(min(lobes*shading_clear_coat_attenuation+coatLobe,65504.0)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -200,11 +238,11 @@ shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_clear_coat_normal=shading_normal;
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
+color=clear_coat_layer(material,color,shading_view);
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));
 color=add_light(color,shade_punctual(material,frame.punctualLights[1]));
-color=clear_coat_layer(material,color,shading_view);
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }

@@ -3,6 +3,14 @@
 
 using namespace metal;
 
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
 struct PunctualLightData
 {
     float4 positionFalloff;
@@ -22,19 +30,10 @@ struct FrameUniforms
     float4 sh[9];
 };
 
-struct ObjectUniforms
-{
-    float4 positionScale;
-    float4 positionOffset;
-    float4 uv0ScaleOffset;
-    float4 uv1ScaleOffset;
-};
-
 struct main0_out
 {
     float3 v_worldPosition [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -50,35 +49,21 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _192 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float4 _207 = float4(dot(in.a_instanceRow0, _192), dot(in.a_instanceRow1, _192), dot(in.a_instanceRow2, _192), 1.0);
-    float3 _211 = _207.xyz;
-    out.v_worldPosition = _211;
-    float3 _224 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _566;
-    if (dot(in.a_instanceRow0.xyz, _224) < 0.0)
+    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
+    out.v_worldPosition = _51.xyz;
+    float3 _68 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _130;
+    if (dot(in.a_instanceRow0.xyz, _68) < 0.0)
     {
-        _566 = -in.a_normal;
+        _130 = -in.a_normal;
     }
     else
     {
-        _566 = in.a_normal;
+        _130 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_566 * float3x3(_224, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    float3 _391 = float3(frame.punctualLights[0].positionFalloff.xyz) - _211;
-    float _394 = dot(_391, _391);
-    float3 _399 = _391 * rsqrt(fast::max(_394, 9.9999999392252902907785028219223e-09));
-    float _403 = _394 * float(frame.punctualLights[0].positionFalloff.w);
-    float _408 = fast::clamp(fma(-_403, _403, 1.0), 0.0, 1.0);
-    float _427 = fast::clamp(fma(dot(-_399, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _469 = float3(frame.punctualLights[1].positionFalloff.xyz) - _211;
-    float _472 = dot(_469, _469);
-    float3 _477 = _469 * rsqrt(fast::max(_472, 9.9999999392252902907785028219223e-09));
-    float _481 = _472 * float(frame.punctualLights[1].positionFalloff.w);
-    float _486 = fast::clamp(fma(-_481, _481, 1.0), 0.0, 1.0);
-    float _505 = fast::clamp(fma(dot(-_477, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    out.v_diffuseLight = (fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_408 * _408) / fast::max(_394, 9.9999997473787516355514526367188e-05)) * _427) * _427), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _399), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_486 * _486) / fast::max(_472, 9.9999997473787516355514526367188e-05)) * _505) * _505), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _477), 0.0, 1.0) * 0.3183098733425140380859375));
-    out.gl_Position = frame.viewProjection * _207;
+    out.v_normal = fast::normalize(_130 * float3x3(_68, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.gl_Position = frame.viewProjection * _51;
     return out;
 }
 

@@ -53,23 +53,32 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _523 = normalize(half3(in.v_normal));
-    float3 _527 = fast::normalize(in.v_toEye);
-    half _694 = max(dot(_523, half3(_527)), half(9.9999997473787516355514526367188e-05));
-    half3 _698 = reflect(-half3(_527), _523);
-    float4 _734 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_694, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _763 = facet_environment.sample(facet_environmentSmplr, float3(_698), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _713 = mix(half4(_734).xxx, half4(_734).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_734).y) - half(1.0))));
-    half3 _575 = half4(frame.lightDirection).xyz;
-    half _892 = clamp(dot(_698, _575), half(0.0), half(1.0));
-    half _895 = _892 * _892;
-    half4 _1091 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_895 * _895, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _907 = _1091.x;
-    half _954 = half(1.0) - _694;
-    half _957 = _954 * _954;
-    float4 _942 = facet_environment.sample(facet_environmentSmplr, float3(_698), level(params.facet_clearCoatLod));
-    half3 _948 = mix(fma(half4(_763).xyz, _713, min((_713 * ((_907 * _907) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_523, _575), half(0.0), half(1.0))), half3(float3(65504.0)))), half4(_942).xyz, half3(fma(half(0.959999978542327880859375), (_957 * _957) * _954, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
-    out.fragColor = float4(half4(_948, half(1.0)));
+    half3 _730 = normalize(half3(in.v_normal));
+    float3 _734 = fast::normalize(in.v_toEye);
+    half _935 = max(dot(_730, half3(_734)), half(9.9999997473787516355514526367188e-05));
+    half3 _939 = reflect(-half3(_734), _730);
+    float4 _975 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_935, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _1004 = facet_environment.sample(facet_environmentSmplr, float3(_939), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _954 = mix(half4(_975).xxx, half4(_975).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_975).y) - half(1.0))));
+    half _1051 = half(1.0) - _935;
+    half _1054 = _1051 * _1051;
+    half _1061 = fma(half(0.959999978542327880859375), (_1054 * _1054) * _1051, half(0.039999999105930328369140625));
+    float4 _1039 = facet_environment.sample(facet_environmentSmplr, float3(_939), level(params.facet_clearCoatLod));
+    half3 _776 = half4(frame.lightDirection).xyz;
+    half3 _1185 = normalize(half3(_734) + _776);
+    half _1129 = clamp(dot(_776, _1185), half(0.0), half(1.0));
+    half _1210 = clamp(dot(_939, _776), half(0.0), half(1.0));
+    half _1213 = _1210 * _1210;
+    half4 _1471 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1213 * _1213, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1225 = _1471.x;
+    half3 _1308 = cross(_730, _1185) * half(64.0);
+    half _1312 = (half(64.0) * half(params.facet_clearCoatAlpha)) * clamp(dot(_730, _1185), half(0.0), half(1.0));
+    half _1264 = half(12.56637096405029296875) * max(_1129 * _1129, half(6.103515625e-05));
+    half _1270 = (half(4096.0) * half(params.facet_clearCoatAlpha)) / (fma(_1312, _1312, dot(_1308, _1308)) * _1264);
+    half _1280 = half(1.0) - _1129;
+    half _1283 = _1280 * _1280;
+    half3 _1342 = mix(half4(_1004).xyz * _954, half4(_1039).xyz, half3(_1061 * half(params.facet_clearCoat))) + min(min(((_954 * ((_1225 * _1225) * half(5.092957973480224609375))) * fma(half(-float(_1061)), half(params.facet_clearCoat), half(1.0))) + half3(min(_1270 * (_1270 * _1264), half(65504.0)) * fma(half(0.039999999105930328369140625), half(params.facet_clearCoat), (half(0.959999978542327880859375) * half(params.facet_clearCoat)) * ((_1283 * _1283) * _1280))), half3(float3(65504.0))) * (half4(frame.lightColor).xyz * clamp(dot(_730, _776), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1342, half(1.0)));
     return out;
 }
 

@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_toEye;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -76,6 +75,14 @@ material.roughness=params.roughness;
 material.clearCoat=params.coat;
 material.clearCoatRoughness=params.coatRoughness;
 }
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
+}
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
@@ -118,6 +125,9 @@ vec3 shading_energy_compensation=vec3(1.0);
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
+}
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
 float perceptualRoughness=material_perceptual_roughness(material);
@@ -147,7 +157,7 @@ shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_clear_coat_normal=shading_normal;
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 color=clear_coat_layer(material,color,shading_view);

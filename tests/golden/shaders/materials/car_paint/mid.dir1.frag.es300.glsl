@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_toEye;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -76,9 +75,13 @@ material.roughness=params.roughness;
 material.clearCoat=params.coat;
 material.clearCoatRoughness=params.coatRoughness;
 }
+float diffuse_lambert(){
+return 0.31830988618;
+}
 float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
-return dot(t,t);
+vec3 t=64.0*cross(n,h);
+float q=64.0*alpha*NoH;
+return dot(t,t)+q*q;
 }
 const float FUSED_HAMMON_M_MIN=2.44140625e-4;
 float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
@@ -89,6 +92,14 @@ return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
 return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+}
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+return max(e,vec3(0.0));
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -107,6 +118,9 @@ float shading_clear_coat_attenuation=1.0;
 float clear_coat_strength(MaterialInputs material){
 return params.facet_clearCoat;
 }
+float clear_coat_alpha(MaterialInputs material){
+return params.facet_clearCoatAlpha;
+}
 float clear_coat_fresnel(float cosTheta){
 float f=1.0-cosTheta;
 float f2=f*f;
@@ -118,6 +132,20 @@ float Fc=clear_coat_fresnel(max(dot(n,v),MIN_N_DOT_V))*clear_coat_strength(mater
 shading_clear_coat_attenuation=1.0-Fc;
 vec3 coat=textureLod(facet_environment,reflect(-v,n),params.facet_clearCoatLod).rgb;
 return mix(base,coat,Fc);
+}
+const float CLEAR_COAT_LOH2_MIN=6.103515625e-5;
+float clear_coat_lobe(MaterialInputs material,vec3 h,float LoH){
+vec3 n=shading_clear_coat_normal;
+float NoH=clamp(dot(n,h),0.0,1.0);
+float alpha=clear_coat_alpha(material);
+float d=ggx_d_scaled(alpha,NoH,n,h);
+float x=(4.0*3.14159265359)*max(LoH*LoH,CLEAR_COAT_LOH2_MIN);
+float k=(4096.0*alpha)/(d*x);
+float DV=min(k*(k*x),65504.0);
+float s=clear_coat_strength(material);
+float f=1.0-LoH;
+float f2=f*f;
+return DV*(0.04*s+(0.96*s)*(f2*f2*f));
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -149,10 +177,16 @@ float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+float coatLobe=clear_coat_lobe(material,h,LoH);
+vec3 diffuseColor=material_diffuse_color(material);
+vec3 lobes=diffuseColor*diffuse_lambert()+specular;
+return min(min(lobes*shading_clear_coat_attenuation+coatLobe,65504.0)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -183,11 +217,11 @@ shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_clear_coat_normal=shading_normal;
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
+color=clear_coat_layer(material,color,shading_view);
 highp vec3 l=frame.lightDirection.xyz;
 color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
-color=clear_coat_layer(material,color,shading_view);
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }

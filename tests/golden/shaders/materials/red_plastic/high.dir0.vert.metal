@@ -3,6 +3,14 @@
 
 using namespace metal;
 
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
 struct PunctualLightData
 {
     float4 positionFalloff;
@@ -22,19 +30,10 @@ struct FrameUniforms
     float4 sh[9];
 };
 
-struct ObjectUniforms
-{
-    float4 positionScale;
-    float4 positionOffset;
-    float4 uv0ScaleOffset;
-    float4 uv1ScaleOffset;
-};
-
 struct main0_out
 {
     float3 v_toEye [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
-    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -50,29 +49,21 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
-    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _386;
-    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
+    float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _134;
+    if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
     {
-        _386 = -in.a_normal;
+        _134 = -in.a_normal;
     }
     else
     {
-        _386 = in.a_normal;
+        _134 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_386 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    half3 _392 = half3(out.v_normal);
-    half _292 = _392.y;
-    half3 _394 = half3(out.v_normal);
-    half _297 = _394.z;
-    half3 _396 = half3(out.v_normal);
-    half _302 = _396.x;
-    float3 _370 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_292))) + (frame.sh[2].xyz * float(_297))) + (frame.sh[3].xyz * float(_302))) + (((((frame.sh[4].xyz * (float(_302) * float(_292))) + (frame.sh[5].xyz * (float(_292) * float(_297)))) + (frame.sh[6].xyz * fma(3.0 * float(_297), float(_297), -1.0))) + (frame.sh[7].xyz * (float(_302) * float(_297)))) + (frame.sh[8].xyz * fma(float(_302), float(_302), -(float(_292) * float(_292))))), float3(0.0));
-    out.v_diffuseLight = _370;
-    out.gl_Position = frame.viewProjection * _185;
+    out.v_normal = fast::normalize(_134 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.gl_Position = frame.viewProjection * _51;
     return out;
 }
 

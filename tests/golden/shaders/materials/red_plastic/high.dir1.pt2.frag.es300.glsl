@@ -3,7 +3,6 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -36,6 +35,7 @@ mediump float facet_alpha;
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -67,6 +67,9 @@ material.metallic=0.0;
 material.roughness=params.roughness;
 material.reflectance=params.reflectance;
 }
+float diffuse_lambert(){
+return 0.31830988618;
+}
 float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
 vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
@@ -89,6 +92,9 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 float D=distribution_ggx(alpha,NoH,n,h);
 float V=visibility_hammon(alpha,NoV,NoL);
 return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
+}
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -127,10 +133,14 @@ float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -173,7 +183,7 @@ shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_highp;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;
