@@ -269,9 +269,9 @@ TEST(VariantCache, TrimRemovesNothingButTheCachesOwnEntries) {
   const std::string elsewhere = facet::test::scratchDir("variant-cache-elsewhere");
   const std::string key = linked + std::string(30, '0');
   std::ofstream(elsewhere + "/" + key) << "theirs";
-  fs::create_directory_symlink(elsewhere, dir + "/" + linked);
-  fs::create_directories(dir + "/" + plain);
   const std::string folder = dir + "/" + plain;
+  fs::create_directory_symlink(elsewhere, dir + "/" + linked);
+  fs::create_directories(folder);
   const std::vector<std::string> theirs = {dir + "/notes.txt",
                                            folder + "/notes.txt",
                                            folder + "/" + plain + std::string(30, '1') + ".bak",

@@ -871,32 +871,16 @@ TEST(MatcCli, EvalRunsFacetEvalBesideMatcOrOnPath) {
   EXPECT_NE(itself.err.find("facet-eval: error: cannot read '" + dir + "/nope.mat'"), std::string::npos) << itself.err;
 }
 
-// matc tune (docs/tune.md): usage errors exit 2, a bad budgets or tuning file 1 at its JSON
-// pointer; the gate (--check) passes the committed choices of the tuned examples and fails, with
-// the figures, a tuning file whose high tier takes a worse lobe.
 namespace {
 
-// The stems of the committed tuning files, <stem>.tuning.json beside <stem>.mat in
-// examples/materials: each is gated by its own test, so that a newly tuned example is gated
+// Each committed tuning file is gated by its own test, so that a newly tuned example is gated
 // without a change here and one render's time is one test's.
-std::vector<std::string> committedTuningFiles() {
-  std::vector<std::string> tuned;
-  const std::string suffix = ".tuning.json";
-  for (const auto& entry : fs::directory_iterator(facet::test::examplePath("materials"))) {
-    const std::string file = entry.path().filename().string();
-    if (file.size() > suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0)
-      tuned.push_back(file.substr(0, file.size() - suffix.size()));
-  }
-  std::sort(tuned.begin(), tuned.end());
-  return tuned;
-}
-
 class CommittedTuning : public testing::TestWithParam<std::string> {};
 
 }  // namespace
 
 TEST(MatcCli, EveryTunedExampleIsGated) {
-  const std::vector<std::string> tuned = committedTuningFiles();
+  const std::vector<std::string> tuned = facet::test::exampleTunedMaterials();
   for (const char* name : {"red_plastic", "brushed_gold", "velvet", "car_paint", "brushed_metal"})
     EXPECT_NE(std::find(tuned.begin(), tuned.end(), name), tuned.end()) << name;
 }
@@ -910,9 +894,11 @@ TEST_P(CommittedTuning, StillMeetsItsBudgets) {
   EXPECT_NE(gate.out.find("high: "), std::string::npos) << gate.out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, CommittedTuning, testing::ValuesIn(committedTuningFiles()),
+INSTANTIATE_TEST_SUITE_P(Examples, CommittedTuning, testing::ValuesIn(facet::test::exampleTunedMaterials()),
                          [](const testing::TestParamInfo<std::string>& param) { return param.param; });
 
+// matc tune (docs/tune.md): usage errors exit 2, a bad budgets or tuning file 1 at its JSON
+// pointer; the gate (--check) fails, with the figures, a tuning file whose high tier takes a worse lobe.
 TEST(MatcCli, TuneGateAndItsErrors) {
   const std::string dir = facet::test::scratchDir("cli-tune");
   const std::string red = facet::test::examplePath("materials/red_plastic.mat");

@@ -41,6 +41,18 @@ std::vector<std::string> exampleMaterials() {
   return files;
 }
 
+std::vector<std::string> exampleTunedMaterials() {
+  const std::string suffix = ".tuning.json";
+  std::vector<std::string> stems;
+  for (const auto& entry : fs::directory_iterator(examplePath("materials"))) {
+    const std::string file = entry.path().filename().string();
+    if (file.size() > suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0)
+      stems.push_back(file.substr(0, file.size() - suffix.size()));
+  }
+  std::sort(stems.begin(), stems.end());
+  return stems;
+}
+
 std::string scratchDir(const std::string& name) {
   // ctest runs test cases as parallel processes: the pid keeps their folders apart.
   fs::path dir = fs::path(binaryDir()) / "test-scratch" / (name + "." + std::to_string(getpid()));

@@ -20,6 +20,8 @@ std::string readText(const std::string& path);
 
 // Every examples/materials/*.mat, sorted.
 std::vector<std::string> exampleMaterials();
+// The stems of every examples/materials/<stem>.tuning.json (the committed tuning files), sorted.
+std::vector<std::string> exampleTunedMaterials();
 
 // A fresh, empty folder under the build tree, removed at the start of each use.
 std::string scratchDir(const std::string& name);

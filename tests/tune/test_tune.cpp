@@ -193,15 +193,10 @@ TEST(TuneFiles, FuzzSeedsAndRegressionsReadOrAreRefused) {
   // The committed tuning files, each read against its own material too.
   std::vector<std::string> files = {facet::test::examplePath("lint/tune_budgets.json")};
   std::vector<facet::ir::Material> materials = {example("red_plastic"), example("brushed_gold")};
-  const std::string suffix = ".tuning.json";
-  for (const auto& entry : std::filesystem::directory_iterator(facet::test::examplePath("materials"))) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-    files.push_back(entry.path().string());
-    const std::string stem = name.substr(0, name.size() - suffix.size());
+  for (const std::string& stem : facet::test::exampleTunedMaterials()) {
+    files.push_back(facet::test::examplePath("materials/" + stem + ".tuning.json"));
     if (stem != "red_plastic" && stem != "brushed_gold") materials.push_back(example(stem));
   }
-  std::sort(files.begin() + 1, files.end());
   const size_t seeds = files.size();
   ASSERT_GE(seeds, 4u);  // the budgets file, red_plastic's, brushed_gold's and velvet's tuning files
   const std::string regressions = facet::test::sourceDir() + "/tests/fuzz/tune_regressions";
