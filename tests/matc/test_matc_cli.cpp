@@ -897,6 +897,24 @@ TEST_P(CommittedTuning, StillMeetsItsBudgets) {
 INSTANTIATE_TEST_SUITE_P(Examples, CommittedTuning, testing::ValuesIn(facet::test::exampleTunedMaterials()),
                          [](const testing::TestParamInfo<std::string>& param) { return param.param; });
 
+// matc tune compiles lavapipe's pipelines without LLVM's optimisation passes (GALLIVM_PERF=nopt,
+// docs/tune.md "Time"): every candidate's figures, to the last digit of report.json, are the ones
+// the optimised code gives (a GALLIVM_PERF the user sets, even empty, is kept).
+TEST(MatcCli, TuneScoresTheSameWithoutLavapipesOptimisationPasses) {
+  const std::string dir = facet::test::scratchDir("cli-tune-nopt");
+  const std::string tune = kMatc + " tune " + facet::test::examplePath("materials/red_plastic.mat") + " --budgets " +
+                           facet::test::examplePath("lint/tune_budgets.json") +
+                           " --max-changes 1 --sphere-pixels 16 --cache " + dir + "/cache --out ";
+  auto optimised = run("ASAN_OPTIONS=detect_leaks=0 GALLIVM_PERF= " + tune + dir + "/optimised");
+  auto unoptimised = run("ASAN_OPTIONS=detect_leaks=0 env -u GALLIVM_PERF " + tune + dir + "/default");
+  ASSERT_EQ(optimised.exitCode, 0) << optimised.err;
+  ASSERT_EQ(unoptimised.exitCode, 0) << unoptimised.err;
+  const std::string report = facet::test::readText(dir + "/default/report.json");
+  EXPECT_NE(report.find("\"psnr_db\""), std::string::npos);
+  EXPECT_TRUE(report == facet::test::readText(dir + "/optimised/report.json"))
+      << "diff " << dir << "/default/report.json " << dir << "/optimised/report.json";
+}
+
 // matc tune (docs/tune.md): usage errors exit 2, a bad budgets or tuning file 1 at its JSON
 // pointer; the gate (--check) fails, with the figures, a tuning file whose high tier takes a worse lobe.
 TEST(MatcCli, TuneGateAndItsErrors) {

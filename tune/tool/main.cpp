@@ -165,9 +165,18 @@ int run(const TuneArgs& args) {
   return 0;
 }
 
+// Tune renders to measure error, never speed, and a cold run spends most of its time in lavapipe
+// compiling pipelines. Under GALLIVM_PERF=nopt Mesa's gallivm skips its LLVM optimisation passes;
+// it sets no fast-math flags, so the passes may not change a result, and the test
+// MatcCli.TuneScoresTheSameWithoutLavapipesOptimisationPasses holds the figures to that. lavapipe keys
+// its disk cache by these flags, so `matc eval`'s timed renders never run the unoptimised code
+// (docs/tune.md, "Time"). A value the user set is kept.
+void compilePipelinesForLatency() { setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  compilePipelinesForLatency();
   facet::removeTemporaryFilesOnSignals();
   facet::cli::setProgramName(std::string_view(argv[0]).ends_with(" tune") ? "matc" : "facet-tune");
   CLI::App app{"choose each tier's cheapest configuration that meets its error budget (docs/tune.md)"};
