@@ -4,7 +4,9 @@
 Runs only where scripts/build-mesa-shader-compilers.sh has built them: elsewhere it prints why
 and exits 77, which ctest reports as "Skipped" (never as a pass)."""
 
+import json
 import os
+import subprocess
 import sys
 import unittest
 
@@ -66,6 +68,21 @@ class MesaCompilers(unittest.TestCase):
             tex = self.shaders(gpu, "texture.frag")["fragment"]
             pw = self.shaders(gpu, "pow.frag")["fragment"]
             self.assertGreater(pw["instructions"], tex["instructions"], gpu)
+
+    def test_disassembly_goes_to_stderr_and_leaves_the_figures(self):
+        # --disassembly: each compiler's final code on stderr (Valhall's texture instruction,
+        # ir3's program summary line), and the same JSON on stdout.
+        run = subprocess.run([sys.executable, mesa_compile.__file__, "--gpu", "mali-g57,adreno-630",
+                              "--vertex", os.path.join(DATA, "pair.vert"), "--fragment",
+                              os.path.join(DATA, "texture.frag"), "--disassembly"],
+                             capture_output=True, text=True, check=True)
+        shown = json.loads(run.stdout)["gpus"]
+        for gpu in ("mali-g57", "adreno-630"):
+            self.assertEqual(shown[gpu]["shaders"]["texture.frag"], self.shaders(gpu, "texture.frag"), gpu)
+        mali, adreno = run.stderr.split("=== adreno-630\n")
+        self.assertIn("=== mali-g57\n", mali)
+        self.assertIn("TEX_SINGLE", mali)
+        self.assertIn("; FRAG prog", adreno)
 
 
 if __name__ == "__main__":

@@ -40,6 +40,11 @@ GPUS = {
                                                 "MESA_LOADER_DRIVER_OVERRIDE": "msm"}},
 }
 
+# The compilers' own variables for printing what they emit (--disassembly): panfrost's Bifrost and
+# Valhall backend prints its NIR and final code under BIFROST_MESA_DEBUG=shaders, ir3 the vertex
+# and fragment shaders' under IR3_SHADER_DEBUG=vs,fs.
+DISASSEMBLY_ENV = {"panfrost": {"BIFROST_MESA_DEBUG": "shaders"}, "freedreno": {"IR3_SHADER_DEBUG": "vs,fs"}}
+
 EXIT_NOT_BUILT = 2
 
 
@@ -82,7 +87,7 @@ def gpus_to_collect(args, tool):
     return gpus
 
 
-def child_environment(prefix, gpu):
+def child_environment(prefix, gpu, disassembly=False):
     env = dict(os.environ)
     lib = os.path.join(prefix, "lib")
     env["LD_PRELOAD"] = find_shim(prefix, GPUS[gpu]["shim"])
@@ -98,6 +103,8 @@ def child_environment(prefix, gpu):
     env["GALLIUM_THREAD"] = "0"
     env.pop("MESA_LOADER_DRIVER_OVERRIDE", None)
     env.update(GPUS[gpu]["env"])
+    if disassembly:
+        env.update(DISASSEMBLY_ENV[GPUS[gpu]["shim"]])
     return env
 
 
@@ -252,15 +259,18 @@ def run_child(prefix, gpu, pairs):
 
 # --- the parent: one child process per GPU ---------------------------------------------------
 
-def collect(prefix, gpus, pairs):
-    """{gpu: child result}; raises RuntimeError with the child's stderr on failure."""
+def collect(prefix, gpus, pairs, disassembly=False):
+    """{gpu: child result}; raises RuntimeError with the child's stderr on failure. disassembly:
+    the compilers print their code, passed on to stderr."""
     out = {}
     for gpu in gpus:
         proc = subprocess.run([sys.executable, os.path.abspath(__file__), "--child", gpu, "--prefix", prefix],
                               input=json.dumps(pairs), capture_output=True, text=True,
-                              env=child_environment(prefix, gpu))
+                              env=child_environment(prefix, gpu, disassembly))
         if proc.returncode != 0:
             raise RuntimeError("compiling on %s failed (exit %d):\n%s" % (gpu, proc.returncode, proc.stderr))
+        if disassembly:
+            sys.stderr.write("=== %s\n%s" % (gpu, proc.stderr))
         out[gpu] = json.loads(proc.stdout)
     return out
 
@@ -275,13 +285,20 @@ def main(argv):
     ap.add_argument("--matc", default="matc", help="matc to read --package with (default: %(default)s)")
     ap.add_argument("--messages", action="store_true",
                     help="print the driver's debug messages as received (statistics fixtures), not JSON")
+    ap.add_argument("--disassembly", action="store_true",
+                    help="print each compiler's NIR and final code on stderr (the JSON is unchanged)")
     ap.add_argument("--child", help=argparse.SUPPRESS)
     ap.add_argument("pairs", nargs="?", help="JSON list of {name, vertex, fragment}")
     args = ap.parse_args(argv)
 
     if args.child:
+        # A driver prints what its debug variables ask for on stdout: the result goes to a copy of
+        # stdout taken first, and the driver's stdout is this process's stderr.
+        result_out = os.fdopen(os.dup(1), "w")
+        os.dup2(2, 1)
         code, result = run_child(args.prefix, args.child, json.load(sys.stdin))
-        json.dump(result, sys.stdout)
+        json.dump(result, result_out)
+        result_out.close()
         return code
 
     if not (args.package or args.pairs or (args.vertex and args.fragment)):
@@ -303,7 +320,7 @@ def main(argv):
         else:
             pairs = [{"name": os.path.basename(args.fragment), "vertex": args.vertex, "fragment": args.fragment}]
         try:
-            result = collect(args.prefix, gpus, pairs)
+            result = collect(args.prefix, gpus, pairs, args.disassembly)
         except RuntimeError as e:
             sys.stderr.write("mesa_compile: %s\n" % e)
             return 1
