@@ -2,6 +2,9 @@
 // fragment stage in highp/mediump as the precision policy says: positions far from the origin
 // need fp32 (a fp16 world position 1 km away has 0.5 m steps).
 #include "math.glsl"
+#if defined(FACET_VIEW_VECTOR_MEDIUMP)
+#include "view_vector.glsl"
+#endif
 #if defined(FACET_SHADOW_CASCADES)
 #include "shadow_cascade.glsl"
 #endif
@@ -26,8 +29,12 @@ void main() {
 #else
     // Nothing in the fragment stage reads the position itself: it gets the vector to the eye,
     // exact once interpolated (affine in the position), one highp subtraction per vertex instead
-    // of per pixel.
+    // of per pixel. A mediump varying takes it scaled into binary16's range (view_vector.glsl).
+#if defined(FACET_VIEW_VECTOR_MEDIUMP)
+    v_toEye = (frame.cameraPosition.xyz - worldPosition.xyz) * VIEW_VECTOR_SCALE;
+#else
     v_toEye = frame.cameraPosition.xyz - worldPosition.xyz;
+#endif
 #endif
     // Normalized before it becomes a mediump varying: the normal matrix carries the inverse of
     // the object's scale (a 1000 m sphere's normals come out 1/1000 long), and a binary16

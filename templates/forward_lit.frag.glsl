@@ -5,6 +5,9 @@
 // indexing). Writes pre-exposed linear HDR.
 #include "math.glsl"
 #include "precision.glsl"
+#if defined(FACET_VIEW_VECTOR_MEDIUMP)
+#include "view_vector.glsl"
+#endif
 #include "facet:material"
 #if defined(FACET_MATERIAL_NORMAL) || defined(FACET_MATERIAL_CLEAR_COAT_NORMAL)
 #include "normal_mapping.glsl"
@@ -83,9 +86,15 @@
 #include "shading_cloth.glsl"
 #endif
 #include "output_blending.glsl"
-// The view vector at highp, for the half vector of each light (shading_standard.glsl,
-// half_vector: at a grazing glint v ≈ −l and v + l cancels in fp16).
-highp vec3 shading_view_highp;
+// The view vector for the half vector of each light: highp where the tier's lobe sums the half
+// vector in highp (shading_standard.glsl, half_vector: at a grazing glint v ≈ −l and v + l
+// cancels in fp16); at the tier's precision where the view varying is mediump (a lobe without
+// that sum, FACET_VIEW_VECTOR_MEDIUMP), which a highp copy would only convert back.
+#if defined(FACET_VIEW_VECTOR_MEDIUMP)
+vec3 shading_view_for_lights;
+#else
+highp vec3 shading_view_for_lights;
+#endif
 // The filter both receivers share, placed (first included) where either is built.
 #if defined(FACET_SHADOW_CASCADES) || defined(FACET_SPOT_SHADOW)
 #include "shadow_filter.glsl"
@@ -103,9 +112,9 @@ vec3 shade_punctual(MaterialInputs material, PunctualLightData light) {
     highp vec3 l;
     vec3 illuminance = punctual_light_illuminance(light, v_worldPosition, l);
 #if defined(FACET_SHADING_CLOTH)
-    return shade_cloth_direct(material, shading_normal, shading_view_highp, l, illuminance);
+    return shade_cloth_direct(material, shading_normal, shading_view_for_lights, l, illuminance);
 #else
-    return shade_standard_direct(material, shading_normal, shading_view_highp, l, illuminance);
+    return shade_standard_direct(material, shading_normal, shading_view_for_lights, l, illuminance);
 #endif
 }
 #endif
@@ -118,10 +127,14 @@ void main() {
 #if defined(FACET_SPOT_SHADOW)
     float spotVisibility = shadow_spot_visibility();
 #endif
-    // The view vector comes from highp positions; the surface program and the ambient terms read
-    // it at the tier's precision, the lights' half vectors at highp.
-    shading_view_highp = normalize(FACET_TO_EYE);
-    shading_view = shading_view_highp;
+    // The surface program and the ambient terms read the view vector at the tier's precision, the
+    // lights' half vectors at shading_view_for_lights's.
+#if defined(FACET_VIEW_VECTOR_MEDIUMP)
+    shading_view_for_lights = view_direction(FACET_TO_EYE);
+#else
+    shading_view_for_lights = normalize(FACET_TO_EYE);
+#endif
+    shading_view = shading_view_for_lights;
     MaterialInputs material = material_defaults();
     evaluate_surface(material);
 #if defined(FACET_MATERIAL_CLEAR_COAT_NORMAL)
@@ -214,15 +227,15 @@ void main() {
     // normalizes it once per frame on the CPU instead of every pixel doing so.
     highp vec3 l = frame.lightDirection.xyz;
 #if defined(FACET_SHADING_CLOTH) && defined(FACET_SHADOW_CASCADES)
-    color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_highp, l,
+    color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_for_lights, l,
                                                 frame.lightColor.rgb * sunVisibility));
 #elif defined(FACET_SHADING_CLOTH)
-    color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
+    color = add_light(color, shade_cloth_direct(material, shading_normal, shading_view_for_lights, l, frame.lightColor.rgb));
 #elif defined(FACET_SHADOW_CASCADES)
-    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l,
+    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_for_lights, l,
                                                    frame.lightColor.rgb * sunVisibility));
 #else
-    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_highp, l, frame.lightColor.rgb));
+    color = add_light(color, shade_standard_direct(material, shading_normal, shading_view_for_lights, l, frame.lightColor.rgb));
 #endif
 #endif
 #if FACET_POINT_LIGHTS > 0 && defined(FACET_SPOT_SHADOW)

@@ -118,6 +118,22 @@ bool worldPositionVarying(const AssemblyInput& in) {
   return in.key.pointLights > 0 || in.surface.attributes.count("worldPosition") > 0;
 }
 
+// The vector to the eye (the v_toEye varying) is interpolated and normalized at the tier's
+// precision where no lobe needs its fp32 bits: mediump saves 3 of the varying pipe's 16-bit
+// channels per pixel and the normalize's conversions (docs/fp16-emulation.md, "The view
+// vector"). The lobes that sum the half vector in highp (SPECULAR_HALF_VECTOR_HIGHP in
+// specular_ggx_smith.glsl, specular_ggx_fastv.glsl, anisotropy_ggx_smith.glsl: at a grazing glint
+// v + l cancels, chunks/shading_standard.glsl) keep it highp, and so does a world-position
+// varying (a binary16 position 1 km away has 0.5 m steps).
+bool viewVectorMediump(const AssemblyInput& in) {
+  if (worldPositionVarying(in) || in.tier.precision != permutations::PrecisionPolicy::Mediump) return false;
+  if (in.material.shading != "lit") return true;
+  const bool highpHalfLobe = in.tier.specular == permutations::SpecularModel::GgxSmith ||
+                             in.tier.specular == permutations::SpecularModel::GgxFastV ||
+                             (writesAnisotropy(in) && in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith);
+  return !highpHalfLobe;
+}
+
 bool needs(const AssemblyInput& in, const OptionalInput& v) {
   if (v.location == abi::kAttribTangent) return needsTangentFrame(in);
   return in.surface.attributes.count(std::string(v.name())) > 0;
@@ -234,10 +250,13 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) s += "#define FACET_VARYING_" + upper(std::string(v.name())) + " 1\n";
   if (usesNormalOutput(in)) s += "#define FACET_MATERIAL_NORMAL 1\n";
-  // FACET_TO_EYE: the unnormalised highp vector from the surface to the eye, for the fragment
-  // templates, from whichever of the two varyings the variant has (worldPositionVarying).
+  // FACET_TO_EYE: the unnormalised vector from the surface to the eye, for the fragment templates
+  // to normalize, from whichever of the two varyings the variant has (worldPositionVarying); highp,
+  // or mediump and scaled into binary16's range (viewVectorMediump, templates/forward.vert.glsl).
   if (worldPositionVarying(in))
     s += "#define FACET_VARYING_WORLD_POSITION 1\n#define FACET_TO_EYE (frame.cameraPosition.xyz - v_worldPosition)\n";
+  else if (viewVectorMediump(in))
+    s += "#define FACET_VIEW_VECTOR_MEDIUMP 1\n#define FACET_TO_EYE v_toEye\n";
   else
     s += "#define FACET_TO_EYE v_toEye\n";
   if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0) {
@@ -377,7 +396,10 @@ struct VaryingDeclarations {
 
 std::string varyings(const AssemblyInput& in, Flavour flavour, const char* direction) {
   VaryingDeclarations declare{in, flavour, direction};
-  declare("highp vec3", worldPositionVarying(in) ? "v_worldPosition" : "v_toEye");
+  if (worldPositionVarying(in))
+    declare("highp vec3", "v_worldPosition");
+  else
+    declare(viewVectorMediump(in) ? "vec3" : "highp vec3", "v_toEye");
   declare("vec3", "v_normal");
   for (const OptionalInput& v : kOptionalInputs)
     if (needs(in, v)) declare(v.varyingType, v.varying);

@@ -87,10 +87,12 @@ class VariantRules {
   // The precision policy (docs/architecture.md, "Tiers"): positions and texture coordinates stay
   // highp in every tier (fp16's 11-bit mantissa steps by 1/1024 between 1 and 2: a 2048-texel
   // texture misses every other texel, a position 1 km away moves in 0.5 m steps). Names are the
-  // templates' varyings and shader_abi.h's attributes.
+  // templates' varyings and shader_abi.h's attributes. The vector to the eye (v_toEye) is not
+  // among them: only its direction is read, and the mediump tiers send it scaled into binary16's
+  // range (chunks/view_vector.glsl; the fp16 hard cases render it 3 km away).
   void highpInputs(const std::string& key, const char* stage, const StageFigures& f) {
-    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_toEye", "v_uv0", "v_uv1",
-                                                      "a_position",      "a_uv0",   "a_uv1"};
+    static const std::set<std::string> mustBeHighp = {"v_worldPosition", "v_uv0", "v_uv1",
+                                                      "a_position",      "a_uv0", "a_uv1"};
     for (const std::string& name : f.interface.relaxedInputs)
       if (mustBeHighp.count(name))
         finding(ir::Severity::Error,

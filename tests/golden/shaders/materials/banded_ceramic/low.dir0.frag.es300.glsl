@@ -124,11 +124,11 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+highp vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
-shading_view=shading_view_highp;
+shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);

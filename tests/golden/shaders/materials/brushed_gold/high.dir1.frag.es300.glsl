@@ -174,17 +174,17 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+highp vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize(v_toEye);
-shading_view=shading_view_highp;
+shading_view_for_lights=normalize(v_toEye);
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;
-color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
+color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_for_lights,l,frame.lightColor.rgb));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }

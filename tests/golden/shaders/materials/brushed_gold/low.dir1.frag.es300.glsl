@@ -1,7 +1,7 @@
 #version 300 es
 precision mediump float;
 precision highp int;
-in highp vec3 v_toEye;
+in mediump vec3 v_toEye;
 in mediump vec3 v_normal;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
@@ -31,6 +31,10 @@ params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
 const float MIN_N_DOT_V=1e-4;
+const float VIEW_VECTOR_MIN_SQUARE=6.103515625e-05;
+vec3 view_direction(vec3 scaledToEye){
+return scaledToEye*inversesqrt(max(dot(scaledToEye,scaledToEye),VIEW_VECTOR_MIN_SQUARE));
+}
 struct MaterialInputs{
 vec3 baseColor;
 float alpha;
@@ -157,17 +161,17 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize(v_toEye);
-shading_view=shading_view_highp;
+shading_view_for_lights=view_direction(v_toEye);
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;
-color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
+color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_for_lights,l,frame.lightColor.rgb));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }

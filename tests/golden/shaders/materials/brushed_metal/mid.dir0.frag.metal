@@ -34,11 +34,11 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _317 = normalize(half3(in.v_normal));
-    float3 _321 = fast::normalize(in.v_toEye);
-    float4 _524 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_317, half3(_321)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _543 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_321), _317)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(half4(_543).xyz * mix(half4(_524).xxx, half4(_524).yyy, half3(float3(params.facet_f0))), half(1.0)));
+    half3 _330 = normalize(half3(in.v_normal));
+    half3 _396 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _548 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_330, _396), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _567 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_396, _330)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(half4(_567).xyz * mix(half4(_548).xxx, half4(_548).yyy, half3(float3(params.facet_f0))), half(1.0)));
     return out;
 }
 

@@ -34,17 +34,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _414 = normalize(half3(in.v_normal));
-    float3 _418 = fast::normalize(in.v_toEye);
-    half _602 = max(dot(_414, half3(_418)), half(9.9999997473787516355514526367188e-05));
-    half3 _606 = reflect(-half3(_418), _414);
-    float4 _642 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_602, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _671 = facet_environment.sample(facet_environmentSmplr, float3(_606), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _718 = half(1.0) - _602;
-    half _721 = _718 * _718;
-    float4 _706 = facet_environment.sample(facet_environmentSmplr, float3(_606), level(params.facet_clearCoatLod));
-    half3 _712 = mix(half4(_671).xyz * (mix(half4(_642).xxx, half4(_642).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_642).y) - half(1.0))))), half4(_706).xyz, half3(fma(half(0.959999978542327880859375), (_721 * _721) * _718, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
-    out.fragColor = float4(half4(_712, half(1.0)));
+    half3 _427 = normalize(half3(in.v_normal));
+    half3 _501 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    half _625 = max(dot(_427, _501), half(9.9999997473787516355514526367188e-05));
+    half3 _629 = reflect(-_501, _427);
+    float4 _665 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_625, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _694 = facet_environment.sample(facet_environmentSmplr, float3(_629), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _741 = half(1.0) - _625;
+    half _744 = _741 * _741;
+    float4 _729 = facet_environment.sample(facet_environmentSmplr, float3(_629), level(params.facet_clearCoatLod));
+    half3 _735 = mix(half4(_694).xyz * (mix(half4(_665).xxx, half4(_665).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_665).y) - half(1.0))))), half4(_729).xyz, half3(fma(half(0.959999978542327880859375), (_744 * _744) * _741, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_735, half(1.0)));
     return out;
 }
 

@@ -34,17 +34,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _412 = normalize(half3(in.v_normal));
-    float3 _416 = fast::normalize(in.v_toEye);
-    half _596 = max(dot(_412, half3(_416)), half(9.9999997473787516355514526367188e-05));
-    half3 _600 = reflect(-half3(_416), _412);
-    float4 _635 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_596, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _664 = facet_environment.sample(facet_environmentSmplr, float3(_600), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _711 = half(1.0) - _596;
-    half _714 = _711 * _711;
-    float4 _699 = facet_environment.sample(facet_environmentSmplr, float3(_600), level(params.facet_clearCoatLod));
-    half3 _705 = mix(half4(_664).xyz * (mix(half4(_635).xxx, half4(_635).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_635).y) - half(1.0))))), half4(_699).xyz, half3(fma(half(0.959999978542327880859375), (_714 * _714) * _711, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
-    out.fragColor = float4(half4(_705, half(1.0)));
+    half3 _425 = normalize(half3(in.v_normal));
+    half3 _495 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    half _619 = max(dot(_425, _495), half(9.9999997473787516355514526367188e-05));
+    half3 _623 = reflect(-_495, _425);
+    float4 _658 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_619, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _687 = facet_environment.sample(facet_environmentSmplr, float3(_623), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half _734 = half(1.0) - _619;
+    half _737 = _734 * _734;
+    float4 _722 = facet_environment.sample(facet_environmentSmplr, float3(_623), level(params.facet_clearCoatLod));
+    half3 _728 = mix(half4(_687).xyz * (mix(half4(_658).xxx, half4(_658).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_658).y) - half(1.0))))), half4(_722).xyz, half3(fma(half(0.959999978542327880859375), (_737 * _737) * _734, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_728, half(1.0)));
     return out;
 }
 

@@ -3,6 +3,14 @@
 
 using namespace metal;
 
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
 struct PunctualLightData
 {
     float4 positionFalloff;
@@ -22,21 +30,12 @@ struct FrameUniforms
     float4 sh[9];
 };
 
-struct ObjectUniforms
-{
-    float4 positionScale;
-    float4 positionOffset;
-    float4 uv0ScaleOffset;
-    float4 uv1ScaleOffset;
-};
-
 struct main0_out
 {
     float3 v_toEye [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
     float2 v_uv0 [[user(locn2)]];
     float4 v_tangent [[user(locn3)]];
-    float3 v_diffuseLight [[user(locn4)]];
     float4 gl_Position [[position]];
 };
 
@@ -54,32 +53,24 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
-    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _438;
-    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
+    out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
+    float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _187;
+    if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
     {
-        _438 = -in.a_normal;
+        _187 = -in.a_normal;
     }
     else
     {
-        _438 = in.a_normal;
+        _187 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_438 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_187 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
-    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
-    half3 _444 = half3(out.v_normal);
-    half _344 = _444.y;
-    half3 _446 = half3(out.v_normal);
-    half _349 = _446.z;
-    half3 _448 = half3(out.v_normal);
-    half _354 = _448.x;
-    float3 _422 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_344))) + (frame.sh[2].xyz * float(_349))) + (frame.sh[3].xyz * float(_354))) + (((((frame.sh[4].xyz * (float(_354) * float(_344))) + (frame.sh[5].xyz * (float(_344) * float(_349)))) + (frame.sh[6].xyz * fma(3.0 * float(_349), float(_349), -1.0))) + (frame.sh[7].xyz * (float(_354) * float(_349)))) + (frame.sh[8].xyz * fma(float(_354), float(_354), -(float(_344) * float(_344))))), float3(0.0));
-    out.v_diffuseLight = _422;
-    out.gl_Position = frame.viewProjection * _185;
+    float3 _159 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_159 * rsqrt(fast::max(dot(_159, _159), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    out.gl_Position = frame.viewProjection * _51;
     return out;
 }
 

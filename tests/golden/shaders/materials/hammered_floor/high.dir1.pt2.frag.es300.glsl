@@ -5,7 +5,6 @@ in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
 in highp vec2 v_uv0;
 in mediump vec4 v_tangent;
-in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -39,6 +38,7 @@ params;
 uniform mediump sampler2D facet_material_ripples;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
@@ -79,6 +79,9 @@ if(dot(t,t)==0.0)return normalize(n);
 vec3 b=v_tangent.w*cross(n,t);
 return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 }
+float diffuse_lambert(){
+return 0.31830988618;
+}
 float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
 vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
@@ -103,6 +106,9 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 float D=distribution_ggx(alpha,NoH,n,h);
 float V=visibility_smith_ggx_correlated(alpha,NoV,NoL);
 return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
+}
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -142,7 +148,8 @@ float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+vec3 diffuseColor=material_diffuse_color(material);
+return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
 }
 float specular_aa_roughness(float perceptualRoughness,vec3 normal){
 highp vec3 du=dFdx(normal);
@@ -154,6 +161,9 @@ return sqrt(sqrt(min(alpha*alpha+kernel,1.0)));
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
+}
+vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
+return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -174,7 +184,7 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+highp vec3 shading_view_for_lights;
 vec3 punctual_light_illuminance(PunctualLightData light,highp vec3 worldPosition,out highp vec3 l){
 highp vec3 toLight=light.positionFalloff.xyz-worldPosition;
 highp float distanceSquared=dot(toLight,toLight);
@@ -188,21 +198,21 @@ return min(light.colorIntensity.rgb*(attenuation*cone*cone),65504.0);
 vec3 shade_punctual(MaterialInputs material,PunctualLightData light){
 highp vec3 l;
 vec3 illuminance=punctual_light_illuminance(light,v_worldPosition,l);
-return shade_standard_direct(material,shading_normal,shading_view_highp,l,illuminance);
+return shade_standard_direct(material,shading_normal,shading_view_for_lights,l,illuminance);
 }
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
-shading_view=shading_view_highp;
+shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);
 material.roughness=specular_aa_roughness(material_perceptual_roughness(material),shading_normal);
-vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 highp vec3 l=frame.lightDirection.xyz;
-color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
+color=add_light(color,shade_standard_direct(material,shading_normal,shading_view_for_lights,l,frame.lightColor.rgb));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));
 color=add_light(color,shade_punctual(material,frame.punctualLights[1]));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

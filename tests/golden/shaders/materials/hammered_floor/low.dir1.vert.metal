@@ -56,21 +56,21 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _96 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _111 = float4(dot(in.a_instanceRow0, _96), dot(in.a_instanceRow1, _96), dot(in.a_instanceRow2, _96), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _111.xyz;
-    float3 _132 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _297;
-    if (dot(in.a_instanceRow0.xyz, _132) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _111.xyz) * 0.0625;
+    float3 _134 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _300;
+    if (dot(in.a_instanceRow0.xyz, _134) < 0.0)
     {
-        _297 = -in.a_normal;
+        _300 = -in.a_normal;
     }
     else
     {
-        _297 = in.a_normal;
+        _300 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_297 * float3x3(_132, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_300 * float3x3(_134, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    float3 _207 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
-    out.v_tangent = float4(_207 * rsqrt(fast::max(dot(_207, _207), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    float3 _209 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_209 * rsqrt(fast::max(dot(_209, _209), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
     out.v_diffuseLight = fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _111;
     return out;

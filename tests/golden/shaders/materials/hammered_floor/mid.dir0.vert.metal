@@ -56,29 +56,29 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
-    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _438;
-    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _185.xyz) * 0.0625;
+    float3 _208 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _441;
+    if (dot(in.a_instanceRow0.xyz, _208) < 0.0)
     {
-        _438 = -in.a_normal;
+        _441 = -in.a_normal;
     }
     else
     {
-        _438 = in.a_normal;
+        _441 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_438 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_441 * float3x3(_208, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
-    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
-    half3 _444 = half3(out.v_normal);
-    half _344 = _444.y;
-    half3 _446 = half3(out.v_normal);
-    half _349 = _446.z;
-    half3 _448 = half3(out.v_normal);
-    half _354 = _448.x;
-    float3 _422 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_344))) + (frame.sh[2].xyz * float(_349))) + (frame.sh[3].xyz * float(_354))) + (((((frame.sh[4].xyz * (float(_354) * float(_344))) + (frame.sh[5].xyz * (float(_344) * float(_349)))) + (frame.sh[6].xyz * fma(3.0 * float(_349), float(_349), -1.0))) + (frame.sh[7].xyz * (float(_354) * float(_349)))) + (frame.sh[8].xyz * fma(float(_354), float(_354), -(float(_344) * float(_344))))), float3(0.0));
-    out.v_diffuseLight = _422;
+    float3 _283 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_283 * rsqrt(fast::max(dot(_283, _283), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _447 = half3(out.v_normal);
+    half _347 = _447.y;
+    half3 _449 = half3(out.v_normal);
+    half _352 = _449.z;
+    half3 _451 = half3(out.v_normal);
+    half _357 = _451.x;
+    float3 _425 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_347))) + (frame.sh[2].xyz * float(_352))) + (frame.sh[3].xyz * float(_357))) + (((((frame.sh[4].xyz * (float(_357) * float(_347))) + (frame.sh[5].xyz * (float(_347) * float(_352)))) + (frame.sh[6].xyz * fma(3.0 * float(_352), float(_352), -1.0))) + (frame.sh[7].xyz * (float(_357) * float(_352)))) + (frame.sh[8].xyz * fma(float(_357), float(_357), -(float(_347) * float(_347))))), float3(0.0));
+    out.v_diffuseLight = _425;
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

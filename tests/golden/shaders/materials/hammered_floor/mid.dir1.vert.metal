@@ -56,29 +56,29 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
-    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _452;
-    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _185.xyz) * 0.0625;
+    float3 _208 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _455;
+    if (dot(in.a_instanceRow0.xyz, _208) < 0.0)
     {
-        _452 = -in.a_normal;
+        _455 = -in.a_normal;
     }
     else
     {
-        _452 = in.a_normal;
+        _455 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_452 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_455 * float3x3(_208, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
-    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
-    half3 _458 = half3(out.v_normal);
-    half _358 = _458.y;
-    half3 _460 = half3(out.v_normal);
-    half _363 = _460.z;
-    half3 _462 = half3(out.v_normal);
-    half _368 = _462.x;
-    float3 _436 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_358))) + (frame.sh[2].xyz * float(_363))) + (frame.sh[3].xyz * float(_368))) + (((((frame.sh[4].xyz * (float(_368) * float(_358))) + (frame.sh[5].xyz * (float(_358) * float(_363)))) + (frame.sh[6].xyz * fma(3.0 * float(_363), float(_363), -1.0))) + (frame.sh[7].xyz * (float(_368) * float(_363)))) + (frame.sh[8].xyz * fma(float(_368), float(_368), -(float(_358) * float(_358))))), float3(0.0));
-    out.v_diffuseLight = _436 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    float3 _283 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_283 * rsqrt(fast::max(dot(_283, _283), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _461 = half3(out.v_normal);
+    half _361 = _461.y;
+    half3 _463 = half3(out.v_normal);
+    half _366 = _463.z;
+    half3 _465 = half3(out.v_normal);
+    half _371 = _465.x;
+    float3 _439 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_361))) + (frame.sh[2].xyz * float(_366))) + (frame.sh[3].xyz * float(_371))) + (((((frame.sh[4].xyz * (float(_371) * float(_361))) + (frame.sh[5].xyz * (float(_361) * float(_366)))) + (frame.sh[6].xyz * fma(3.0 * float(_366), float(_366), -1.0))) + (frame.sh[7].xyz * (float(_371) * float(_366)))) + (frame.sh[8].xyz * fma(float(_371), float(_371), -(float(_361) * float(_361))))), float3(0.0));
+    out.v_diffuseLight = _439 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

@@ -31,31 +31,31 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    float3 _488 = fast::normalize(in.v_toEye);
-    float2 _615 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _618 = facet_material_albedo.sample(facet_material_albedoSmplr, _615);
-    float4 _628 = facet_material_relief.sample(facet_material_reliefSmplr, _615);
-    half3 _632 = (half4(_628).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _638 = fract(_615 * 4.0);
-    float _640 = _638.x;
-    float _647 = _638.y;
-    half3 _1019;
+    half3 _599 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float2 _639 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _642 = facet_material_albedo.sample(facet_material_albedoSmplr, _639);
+    float4 _652 = facet_material_relief.sample(facet_material_reliefSmplr, _639);
+    half3 _656 = (half4(_652).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _662 = fract(_639 * 4.0);
+    float _664 = _662.x;
+    float _671 = _662.y;
+    half3 _1043;
     do
     {
-        half3 _672 = half4(in.v_tangent).xyz;
-        if (float(dot(_672, _672)) == 0.0)
+        half3 _696 = half4(in.v_tangent).xyz;
+        if (float(dot(_696, _696)) == 0.0)
         {
-            _1019 = normalize(half3(in.v_normal));
+            _1043 = normalize(half3(in.v_normal));
             break;
         }
-        _1019 = normalize(((_672 * _632.x) + ((cross(half3(in.v_normal), _672) * half(in.v_tangent.w)) * _632.y)) + (half3(in.v_normal) * _632.z));
+        _1043 = normalize(((_696 * _656.x) + ((cross(half3(in.v_normal), _696) * half(in.v_tangent.w)) * _656.y)) + (half3(in.v_normal) * _656.z));
         break;
     } while(false);
-    half3 _715 = clamp(half4(_618).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _724 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_640, 1.0 - _640), fast::min(_647, 1.0 - _647))))), half(0.0), half(1.0));
-    float4 _883 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1019, half3(_488)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _912 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_488), _1019)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(_715 * half3(in.v_diffuseLight), max(half3(_724), ((((((_715 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _724) + ((_715 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _724) + ((_715 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _724), _715 * half3(in.v_directDiffuse)) + ((half4(_912).xyz * (mix(half4(_883).xxx, half4(_883).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_883).y) - half(1.0)))))) * _724), half(1.0)));
+    half3 _739 = clamp(half4(_642).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _748 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_664, 1.0 - _664), fast::min(_671, 1.0 - _671))))), half(0.0), half(1.0));
+    float4 _907 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1043, _599), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _936 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_599, _1043)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(_739 * half3(in.v_diffuseLight), max(half3(_748), ((((((_739 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _748) + ((_739 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _748) + ((_739 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _748), _739 * half3(in.v_directDiffuse)) + ((half4(_936).xyz * (mix(half4(_907).xxx, half4(_907).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_907).y) - half(1.0)))))) * _748), half(1.0)));
     return out;
 }
 

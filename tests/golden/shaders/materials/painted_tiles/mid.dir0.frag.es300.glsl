@@ -1,7 +1,7 @@
 #version 300 es
 precision mediump float;
 precision highp int;
-in highp vec3 v_toEye;
+in mediump vec3 v_toEye;
 in mediump vec3 v_normal;
 in highp vec2 v_uv0;
 in mediump vec4 v_tangent;
@@ -38,6 +38,10 @@ uniform mediump sampler2D facet_material_relief;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
 const float MIN_N_DOT_V=1e-4;
+const float VIEW_VECTOR_MIN_SQUARE=6.103515625e-05;
+vec3 view_direction(vec3 scaledToEye){
+return scaledToEye*inversesqrt(max(dot(scaledToEye,scaledToEye),VIEW_VECTOR_MIN_SQUARE));
+}
 struct MaterialInputs{
 vec3 baseColor;
 float alpha;
@@ -151,11 +155,11 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize(v_toEye);
-shading_view=shading_view_highp;
+shading_view_for_lights=view_direction(v_toEye);
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);

@@ -57,30 +57,30 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
-    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _442;
-    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _185.xyz) * 0.0625;
+    float3 _208 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _445;
+    if (dot(in.a_instanceRow0.xyz, _208) < 0.0)
     {
-        _442 = -in.a_normal;
+        _445 = -in.a_normal;
     }
     else
     {
-        _442 = in.a_normal;
+        _445 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_442 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_445 * float3x3(_208, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
-    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
-    half3 _448 = half3(out.v_normal);
-    half _348 = _448.y;
-    half3 _450 = half3(out.v_normal);
-    half _353 = _450.z;
-    half3 _452 = half3(out.v_normal);
-    half _358 = _452.x;
-    float3 _426 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_348))) + (frame.sh[2].xyz * float(_353))) + (frame.sh[3].xyz * float(_358))) + (((((frame.sh[4].xyz * (float(_358) * float(_348))) + (frame.sh[5].xyz * (float(_348) * float(_353)))) + (frame.sh[6].xyz * fma(3.0 * float(_353), float(_353), -1.0))) + (frame.sh[7].xyz * (float(_358) * float(_353)))) + (frame.sh[8].xyz * fma(float(_358), float(_358), -(float(_348) * float(_348))))), float3(0.0));
+    float3 _283 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_283 * rsqrt(fast::max(dot(_283, _283), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _451 = half3(out.v_normal);
+    half _351 = _451.y;
+    half3 _453 = half3(out.v_normal);
+    half _356 = _453.z;
+    half3 _455 = half3(out.v_normal);
+    half _361 = _455.x;
+    float3 _429 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_351))) + (frame.sh[2].xyz * float(_356))) + (frame.sh[3].xyz * float(_361))) + (((((frame.sh[4].xyz * (float(_361) * float(_351))) + (frame.sh[5].xyz * (float(_351) * float(_356)))) + (frame.sh[6].xyz * fma(3.0 * float(_356), float(_356), -1.0))) + (frame.sh[7].xyz * (float(_361) * float(_356)))) + (frame.sh[8].xyz * fma(float(_361), float(_361), -(float(_351) * float(_351))))), float3(0.0));
     out.v_directDiffuse = float3(0.0);
-    out.v_diffuseLight = _426;
+    out.v_diffuseLight = _429;
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

@@ -57,30 +57,30 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _185.xyz;
-    float3 _206 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _456;
-    if (dot(in.a_instanceRow0.xyz, _206) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _185.xyz) * 0.0625;
+    float3 _208 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _459;
+    if (dot(in.a_instanceRow0.xyz, _208) < 0.0)
     {
-        _456 = -in.a_normal;
+        _459 = -in.a_normal;
     }
     else
     {
-        _456 = in.a_normal;
+        _459 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_456 * float3x3(_206, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_459 * float3x3(_208, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_uv0 = fma(in.a_uv0, object.uv0ScaleOffset.xy, object.uv0ScaleOffset.zw);
-    float3 _281 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
-    out.v_tangent = float4(_281 * rsqrt(fast::max(dot(_281, _281), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
-    half3 _462 = half3(out.v_normal);
-    half _362 = _462.y;
-    half3 _464 = half3(out.v_normal);
-    half _367 = _464.z;
-    half3 _466 = half3(out.v_normal);
-    half _372 = _466.x;
-    float3 _440 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_362))) + (frame.sh[2].xyz * float(_367))) + (frame.sh[3].xyz * float(_372))) + (((((frame.sh[4].xyz * (float(_372) * float(_362))) + (frame.sh[5].xyz * (float(_362) * float(_367)))) + (frame.sh[6].xyz * fma(3.0 * float(_367), float(_367), -1.0))) + (frame.sh[7].xyz * (float(_372) * float(_367)))) + (frame.sh[8].xyz * fma(float(_372), float(_372), -(float(_362) * float(_362))))), float3(0.0));
+    float3 _283 = in.a_tangent.xyz * float3x3(float3(in.a_instanceRow0.xyz), float3(in.a_instanceRow1.xyz), float3(in.a_instanceRow2.xyz));
+    out.v_tangent = float4(_283 * rsqrt(fast::max(dot(_283, _283), 1.0000000031710768509710513471353e-30)), in.a_tangent.w);
+    half3 _465 = half3(out.v_normal);
+    half _365 = _465.y;
+    half3 _467 = half3(out.v_normal);
+    half _370 = _467.z;
+    half3 _469 = half3(out.v_normal);
+    half _375 = _469.x;
+    float3 _443 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_365))) + (frame.sh[2].xyz * float(_370))) + (frame.sh[3].xyz * float(_375))) + (((((frame.sh[4].xyz * (float(_375) * float(_365))) + (frame.sh[5].xyz * (float(_365) * float(_370)))) + (frame.sh[6].xyz * fma(3.0 * float(_370), float(_370), -1.0))) + (frame.sh[7].xyz * (float(_375) * float(_370)))) + (frame.sh[8].xyz * fma(float(_375), float(_375), -(float(_365) * float(_365))))), float3(0.0));
     out.v_directDiffuse = frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375);
-    out.v_diffuseLight = _440;
+    out.v_diffuseLight = _443;
     out.gl_Position = frame.viewProjection * _185;
     return out;
 }

@@ -113,11 +113,11 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+highp vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize(v_toEye);
-shading_view=shading_view_highp;
+shading_view_for_lights=normalize(v_toEye);
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));

@@ -51,19 +51,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _414 = normalize(half3(in.v_normal));
-    float3 _418 = fast::normalize(in.v_toEye);
-    half3 _565 = reflect(-half3(_418), _414);
-    float4 _595 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_414, half3(_418)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _604 = mix(half4(_595).xxx, half4(_595).yyy, half3(float3(params.facet_f0)));
-    float4 _614 = facet_environment.sample(facet_environmentSmplr, float3(_565), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _465 = half4(frame.lightDirection).xyz;
-    half _743 = clamp(dot(_565, _465), half(0.0), half(1.0));
-    half _746 = _743 * _743;
-    half4 _857 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_746 * _746, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _758 = _857.x;
-    half3 _767 = fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_614).xyz * _604) + min((_604 * ((_758 * _758) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_414, _465), half(0.0), half(1.0))), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_767, half(1.0)));
+    half3 _427 = normalize(half3(in.v_normal));
+    half3 _525 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    half3 _589 = reflect(-_525, _427);
+    float4 _619 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_427, _525), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _628 = mix(half4(_619).xxx, half4(_619).yyy, half3(float3(params.facet_f0)));
+    float4 _638 = facet_environment.sample(facet_environmentSmplr, float3(_589), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _479 = half4(frame.lightDirection).xyz;
+    half _767 = clamp(dot(_589, _479), half(0.0), half(1.0));
+    half _770 = _767 * _767;
+    half4 _883 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_770 * _770, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _782 = _883.x;
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_638).xyz * _628) + min((_628 * ((_782 * _782) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_427, _479), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

@@ -52,18 +52,18 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _96 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _111 = float4(dot(in.a_instanceRow0, _96), dot(in.a_instanceRow1, _96), dot(in.a_instanceRow2, _96), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _111.xyz;
-    float3 _132 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _245;
-    if (dot(in.a_instanceRow0.xyz, _132) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _111.xyz) * 0.0625;
+    float3 _134 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _248;
+    if (dot(in.a_instanceRow0.xyz, _134) < 0.0)
     {
-        _245 = -in.a_normal;
+        _248 = -in.a_normal;
     }
     else
     {
-        _245 = in.a_normal;
+        _248 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_245 * float3x3(_132, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_248 * float3x3(_134, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.v_diffuseLight = fast::max(((frame.sh[0].xyz + (frame.sh[1].xyz * float(half3(out.v_normal).y))) + (frame.sh[2].xyz * float(half3(out.v_normal).z))) + (frame.sh[3].xyz * float(half3(out.v_normal).x)), float3(0.0)) + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
     out.gl_Position = frame.viewProjection * _111;
     return out;

@@ -180,7 +180,7 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+highp vec3 shading_view_for_lights;
 vec3 punctual_light_illuminance(PunctualLightData light,highp vec3 worldPosition,out highp vec3 l){
 highp vec3 toLight=light.positionFalloff.xyz-worldPosition;
 highp float distanceSquared=dot(toLight,toLight);
@@ -194,12 +194,12 @@ return(light.colorIntensity.rgb*(attenuation*cone*cone));
 vec3 shade_punctual(MaterialInputs material,PunctualLightData light){
 highp vec3 l;
 vec3 illuminance=punctual_light_illuminance(light,v_worldPosition,l);
-return shade_standard_direct(material,shading_normal,shading_view_highp,l,illuminance);
+return shade_standard_direct(material,shading_normal,shading_view_for_lights,l,illuminance);
 }
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
-shading_view=shading_view_highp;
+shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));

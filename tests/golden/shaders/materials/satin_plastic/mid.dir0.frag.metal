@@ -34,16 +34,16 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _342 = normalize(half3(in.v_normal));
-    float3 _346 = fast::normalize(in.v_toEye);
-    half _478 = max(dot(_342, half3(_346)), half(9.9999997473787516355514526367188e-05));
-    half3 _482 = reflect(-half3(_346), _342);
-    float4 _511 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_478, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _530 = facet_environment.sample(facet_environmentSmplr, float3(_482), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half4 _707 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_478, half(params.facet_sheenRoughness))), level(0.0)));
-    half _575 = _707.z;
-    float4 _591 = facet_environment.sample(facet_environmentSmplr, float3(_482), level(params.facet_sheenLod));
-    out.fragColor = float4(half4(fma(half4(_591).xyz, half3(float3(params.facet_sheenColor)) * _575, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_530).xyz * mix(half4(_511).xxx, half4(_511).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _575, half(1.0))), half(1.0)));
+    half3 _355 = normalize(half3(in.v_normal));
+    half3 _438 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    half _502 = max(dot(_355, _438), half(9.9999997473787516355514526367188e-05));
+    half3 _506 = reflect(-_438, _355);
+    float4 _535 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_502, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _554 = facet_environment.sample(facet_environmentSmplr, float3(_506), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half4 _733 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_502, half(params.facet_sheenRoughness))), level(0.0)));
+    half _599 = _733.z;
+    float4 _615 = facet_environment.sample(facet_environmentSmplr, float3(_506), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_615).xyz, half3(float3(params.facet_sheenColor)) * _599, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_554).xyz * mix(half4(_535).xxx, half4(_535).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _599, half(1.0))), half(1.0)));
     return out;
 }
 

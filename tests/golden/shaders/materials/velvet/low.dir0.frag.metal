@@ -18,25 +18,6 @@ struct MaterialParams
     float facet_sheenLod;
 };
 
-struct PunctualLightData
-{
-    float4 positionFalloff;
-    float4 colorIntensity;
-    float4 direction;
-    float4 spotScaleOffset;
-};
-
-struct FrameUniforms
-{
-    float4x4 viewProjection;
-    float4 cameraPosition;
-    float4 lightDirection;
-    float4 lightColor;
-    float4 ambient;
-    PunctualLightData punctualLights[4];
-    float4 sh[9];
-};
-
 struct main0_out
 {
     float4 fragColor [[color(0)]];
@@ -48,16 +29,16 @@ struct main0_in
     float3 v_normal [[user(locn1)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _314 = normalize(half3(in.v_normal));
-    float3 _318 = fast::normalize(in.v_toEye);
-    half4 _627 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_314, half3(_318)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _488 = _627.z;
-    float4 _504 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_318), _314)), level(params.facet_sheenLod));
-    float4 _636 = float4(half4(fma(half4(_504).xyz, half3(float3(params.facet_sheenColor)) * _488, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _314.y)) + (half4(frame.sh[2]).xyz * _314.z)) + (half4(frame.sh[3]).xyz * _314.x), half3(float3(0.0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _488, half(1.0))), half(1.0)));
-    out.fragColor = _636;
+    half3 _287 = normalize(half3(in.v_normal));
+    half3 _360 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _392 = facet_irradiance.sample(facet_irradianceSmplr, float3(_287), level(0.0));
+    half4 _582 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_287, _360), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _450 = _582.z;
+    float4 _466 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_360, _287)), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_466).xyz, half3(float3(params.facet_sheenColor)) * _450, (half3(float3(params.facet_diffuseColor)) * half4(_392).xyz) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _450, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -48,25 +48,27 @@ struct main0_in
     float3 v_normal [[user(locn1)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _484 = normalize(half3(in.v_normal));
-    float3 _488 = fast::normalize(in.v_toEye);
-    half _661 = max(dot(_484, half3(_488)), half(9.9999997473787516355514526367188e-05));
-    float4 _666 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_661, half(params.facet_perceptualRoughness))), level(0.0));
-    half4 _983 = half4(_666);
-    half _679 = _983.z;
-    half _681 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _679, half(1.0));
-    float4 _695 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_488), _484)), level(params.facet_sheenLod));
-    half3 _520 = half4(frame.lightDirection).xyz;
-    half _751 = dot(_484, _520);
-    half _753 = clamp(_751, half(0.0), half(1.0));
-    half _765 = clamp(dot(_484, normalize(half3(_488) + _520)), half(0.0), half(1.0));
-    half _834 = half(8192.0) * fma(half(-float(_753)), _661, _753 + _661);
-    half _838 = half(1.0) / (half(params.facet_alpha) * _834);
-    half3 _798 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_751 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_753), half3(float3(0.0)), half3(float3(1.0)))) * _681) + (half3(float3(params.facet_sheenColor)) * ((((fma(_838, _834, half(2.0)) * pow(max(fma(half(-float(_765)), _765, half(1.0)), half(0.0)), half(0.5) * (_838 * _834))) * half(0.15915493667125701904296875)) * (_753 * (_838 * (half(2048.0) * half(params.facet_alpha))))) * half4(_666).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_695).xyz, half3(float3(params.facet_sheenColor)) * _679, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _484.y)) + (half4(frame.sh[2]).xyz * _484.z)) + (half4(frame.sh[3]).xyz * _484.x), half3(float3(0.0)))) * _681) + _798, half(1.0)));
+    half3 _457 = normalize(half3(in.v_normal));
+    half3 _552 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _584 = facet_irradiance.sample(facet_irradianceSmplr, float3(_457), level(0.0));
+    half _624 = max(dot(_457, _552), half(9.9999997473787516355514526367188e-05));
+    float4 _629 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_624, half(params.facet_perceptualRoughness))), level(0.0));
+    half4 _939 = half4(_629);
+    half _642 = _939.z;
+    half _644 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _642, half(1.0));
+    float4 _658 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_552, _457)), level(params.facet_sheenLod));
+    half3 _504 = half4(frame.lightDirection).xyz;
+    half _714 = dot(_457, _504);
+    half _716 = clamp(_714, half(0.0), half(1.0));
+    half _728 = clamp(dot(_457, normalize(_552 + _504)), half(0.0), half(1.0));
+    half _797 = half(8192.0) * fma(half(-float(_716)), _624, _716 + _624);
+    half _801 = half(1.0) / (half(params.facet_alpha) * _797);
+    half3 _761 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_714 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_716), half3(float3(0.0)), half3(float3(1.0)))) * _644) + (half3(float3(params.facet_sheenColor)) * ((((fma(_801, _797, half(2.0)) * pow(max(fma(half(-float(_728)), _728, half(1.0)), half(0.0)), half(0.5) * (_801 * _797))) * half(0.15915493667125701904296875)) * (_716 * (_801 * (half(2048.0) * half(params.facet_alpha))))) * half4(_629).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    half3 _836 = fma(half4(_658).xyz, half3(float3(params.facet_sheenColor)) * _642, (half3(float3(params.facet_diffuseColor)) * half4(_584).xyz) * _644) + _761;
+    out.fragColor = float4(half4(_836, half(1.0)));
     return out;
 }
 

@@ -36,6 +36,7 @@ params;
 uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -74,13 +75,8 @@ material.subsurfaceColor=params.subsurface;
 float diffuse_lambert(){
 return 0.31830988618;
 }
-vec3 sh_irradiance_over_pi(vec3 n){
-vec3 c0=frame.sh[0].rgb;
-vec3 c1=frame.sh[1].rgb;
-vec3 c2=frame.sh[2].rgb;
-vec3 c3=frame.sh[3].rgb;
-vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-return max(e,vec3(0.0));
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
 float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
@@ -161,7 +157,7 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+highp vec3 shading_view_for_lights;
 vec3 punctual_light_illuminance(PunctualLightData light,highp vec3 worldPosition,out highp vec3 l){
 highp vec3 toLight=light.positionFalloff.xyz-worldPosition;
 highp float distanceSquared=dot(toLight,toLight);
@@ -175,19 +171,19 @@ return min(light.colorIntensity.rgb*(attenuation*cone*cone),65504.0);
 vec3 shade_punctual(MaterialInputs material,PunctualLightData light){
 highp vec3 l;
 vec3 illuminance=punctual_light_illuminance(light,v_worldPosition,l);
-return shade_cloth_direct(material,shading_normal,shading_view_highp,l,illuminance);
+return shade_cloth_direct(material,shading_normal,shading_view_for_lights,l,illuminance);
 }
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize((frame.cameraPosition.xyz-v_worldPosition));
-shading_view=shading_view_highp;
+shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=sheen_layer(material,color,shading_normal,shading_view);
 highp vec3 l=frame.lightDirection.xyz;
-color=add_light(color,shade_cloth_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
+color=add_light(color,shade_cloth_direct(material,shading_normal,shading_view_for_lights,l,frame.lightColor.rgb));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));
 color=add_light(color,shade_punctual(material,frame.punctualLights[1]));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

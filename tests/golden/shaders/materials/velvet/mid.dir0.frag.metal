@@ -18,25 +18,6 @@ struct MaterialParams
     float facet_sheenLod;
 };
 
-struct PunctualLightData
-{
-    float4 positionFalloff;
-    float4 colorIntensity;
-    float4 direction;
-    float4 spotScaleOffset;
-};
-
-struct FrameUniforms
-{
-    float4x4 viewProjection;
-    float4 cameraPosition;
-    float4 lightDirection;
-    float4 lightColor;
-    float4 ambient;
-    PunctualLightData punctualLights[4];
-    float4 sh[9];
-};
-
 struct main0_out
 {
     float4 fragColor [[color(0)]];
@@ -48,16 +29,16 @@ struct main0_in
     float3 v_normal [[user(locn1)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
+fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _313 = normalize(half3(in.v_normal));
-    float3 _317 = fast::normalize(in.v_toEye);
-    half4 _622 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_313, half3(_317)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _483 = _622.z;
-    float4 _499 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_317), _313)), level(params.facet_sheenLod));
-    float4 _631 = float4(half4(fma(half4(_499).xyz, half3(float3(params.facet_sheenColor)) * _483, (half3(float3(params.facet_diffuseColor)) * max(((half4(frame.sh[0]).xyz + (half4(frame.sh[1]).xyz * _313.y)) + (half4(frame.sh[2]).xyz * _313.z)) + (half4(frame.sh[3]).xyz * _313.x), half3(float3(0.0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _483, half(1.0))), half(1.0)));
-    out.fragColor = _631;
+    half3 _286 = normalize(half3(in.v_normal));
+    half3 _355 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _387 = facet_irradiance.sample(facet_irradianceSmplr, float3(_286), level(0.0));
+    half4 _577 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_286, _355), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _445 = _577.z;
+    float4 _461 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_355, _286)), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_461).xyz, half3(float3(params.facet_sheenColor)) * _445, (half3(float3(params.facet_diffuseColor)) * half4(_387).xyz) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _445, half(1.0))), half(1.0)));
     return out;
 }
 

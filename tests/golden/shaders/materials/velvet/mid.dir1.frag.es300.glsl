@@ -1,7 +1,7 @@
 #version 300 es
 precision mediump float;
 precision highp int;
-in highp vec3 v_toEye;
+in mediump vec3 v_toEye;
 in mediump vec3 v_normal;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
@@ -35,7 +35,12 @@ mediump float facet_sheenLod;
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_N_DOT_V=1e-4;
+const float VIEW_VECTOR_MIN_SQUARE=6.103515625e-05;
+vec3 view_direction(vec3 scaledToEye){
+return scaledToEye*inversesqrt(max(dot(scaledToEye,scaledToEye),VIEW_VECTOR_MIN_SQUARE));
+}
 struct MaterialInputs{
 vec3 baseColor;
 float alpha;
@@ -73,13 +78,8 @@ material.subsurfaceColor=params.subsurface;
 float diffuse_lambert(){
 return 0.31830988618;
 }
-vec3 sh_irradiance_over_pi(vec3 n){
-vec3 c0=frame.sh[0].rgb;
-vec3 c1=frame.sh[1].rgb;
-vec3 c2=frame.sh[2].rgb;
-vec3 c3=frame.sh[3].rgb;
-vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-return max(e,vec3(0.0));
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 float sheen_lobe_times_n_dot_l(float alpha,float NoV,float NoL,float NoH){
 float scaledQ=8192.0*(NoL+NoV-NoL*NoV);
@@ -160,17 +160,17 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_highp;
+vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_highp=normalize(v_toEye);
-shading_view=shading_view_highp;
+shading_view_for_lights=view_direction(v_toEye);
+shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=sheen_layer(material,color,shading_normal,shading_view);
 highp vec3 l=frame.lightDirection.xyz;
-color=add_light(color,shade_cloth_direct(material,shading_normal,shading_view_highp,l,frame.lightColor.rgb));
+color=add_light(color,shade_cloth_direct(material,shading_normal,shading_view_for_lights,l,frame.lightColor.rgb));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);
 }
