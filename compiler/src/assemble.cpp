@@ -84,6 +84,12 @@ bool shadesAnisotropy(const AssemblyInput& in) {
   return writesAnisotropy(in) && in.tier.anisotropy != permutations::AnisotropyModel::None;
 }
 
+// The anisotropic GGX lobe replaces the tier's isotropic one for every light
+// (anisotropy_ggx_smith.glsl, FACET_ANISOTROPY_LOBE).
+bool shadesAnisotropicLobe(const AssemblyInput& in) {
+  return writesAnisotropy(in) && in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith;
+}
+
 // A material asking for specular anti-aliasing (lit or cloth: the checker rejects it in unlit ones);
 // the tier says in which form, or drops it (permutations::SpecularAntiAliasingModel).
 bool shadesSpecularAntiAliasing(const AssemblyInput& in) {
@@ -129,8 +135,7 @@ bool viewVectorMediump(const AssemblyInput& in) {
   if (worldPositionVarying(in) || in.tier.precision != permutations::PrecisionPolicy::Mediump) return false;
   if (in.material.shading != "lit") return true;
   const bool highpHalfLobe = in.tier.specular == permutations::SpecularModel::GgxSmith ||
-                             in.tier.specular == permutations::SpecularModel::GgxFastV ||
-                             (writesAnisotropy(in) && in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith);
+                             in.tier.specular == permutations::SpecularModel::GgxFastV || shadesAnisotropicLobe(in);
   return !highpHalfLobe;
 }
 
@@ -255,10 +260,9 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   // or mediump and scaled into binary16's range (viewVectorMediump, templates/forward.vert.glsl).
   if (worldPositionVarying(in))
     s += "#define FACET_VARYING_WORLD_POSITION 1\n#define FACET_TO_EYE (frame.cameraPosition.xyz - v_worldPosition)\n";
-  else if (viewVectorMediump(in))
-    s += "#define FACET_VIEW_VECTOR_MEDIUMP 1\n#define FACET_TO_EYE v_toEye\n";
   else
     s += "#define FACET_TO_EYE v_toEye\n";
+  if (viewVectorMediump(in)) s += "#define FACET_VIEW_VECTOR_MEDIUMP 1\n";
   if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0) {
     s += "#define FACET_MATERIAL_AMBIENT_OCCLUSION 1\n";
     s += "// Ambient occlusion: " +
@@ -286,8 +290,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
                            "the bent reflection vector, the tier's isotropic lobe per light", "dropped in this tier"};
     s += "// Anisotropy: " + std::string(permutations::kAnisotropyModelNames[int(in.tier.anisotropy)]) + ", " +
          forms[int(in.tier.anisotropy)] + " (docs/material-models.md).\n";
-    if (in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith)
-      s += "#define FACET_ANISOTROPY_LOBE 1\n#define FACET_ANISOTROPY 1\n";
+    if (shadesAnisotropicLobe(in)) s += "#define FACET_ANISOTROPY_LOBE 1\n#define FACET_ANISOTROPY 1\n";
     if (in.tier.anisotropy == permutations::AnisotropyModel::BentIbl) s += "#define FACET_ANISOTROPY 1\n";
     // Without it the direction is the mesh's tangent, with no frame to apply (anisotropy_frame.glsl).
     if (shadesAnisotropy(in) && in.material.surface.outputs.count("anisotropyDirection") > 0)
@@ -681,9 +684,8 @@ bool samplesDfgLut(const AssemblyInput& in) {
 // Every light of a lut tier reads the table (specular_lut_lobe.glsl): the sun and each point or
 // spot light; unless the anisotropic lobe replaces the tier's (anisotropy_ggx_smith.glsl).
 bool samplesSpecularLut(const AssemblyInput& in) {
-  bool anisotropicLobe = shadesAnisotropy(in) && in.tier.anisotropy == permutations::AnisotropyModel::GgxSmith;
-  return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" && !anisotropicLobe &&
-         !shadesCloth(in) && (in.key.directionalLight || in.key.pointLights > 0);
+  return in.tier.specular == permutations::SpecularModel::Lut && in.material.shading == "lit" &&
+         !shadesAnisotropicLobe(in) && !shadesCloth(in) && (in.key.directionalLight || in.key.pointLights > 0);
 }
 
 bool assemble(const AssemblyInput& in, Flavour flavour, StageSources* out, std::string* error) {
