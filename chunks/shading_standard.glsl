@@ -113,8 +113,13 @@ vec3 shading_energy_compensation = vec3(1.0);
 // §4.4's precision notes). Cost: the add, dot and scale in fp32 instead of fp16, +0.07
 // estimated cycles (docs/eval.md's model). mid's Zioma lobe, whose fused V·F already misses a
 // grazing glint by far more (26 dB on grazing_glint in fp32 and fp16 alike), keeps the mediump
-// sum: measured no worse there (docs/fp16-emulation.md).
-#if defined(SPECULAR_HALF_VECTOR_HIGHP)
+// sum: measured no worse there (docs/fp16-emulation.md). The cloth model reads no GGX lobe, only
+// Charlie's sheen, whose lobe is wide: D ∝ sin(θ_h)^(1/α) ≈ exp(−(π/2 − θ_h)² / 2α) about its
+// peak falls to half of it 1.18 √α = 0.105 rad away at the floor, 20× GGX's. The tilt then needs
+// only l·h ≫ u / 0.105 = 0.0047 (v and l more than ~0.5° from opposite), so cloth sums in
+// mediump whatever the tier's lobe (Fp16Cloth.HighAbove50DbWhereTheViewGrazes holds it; on
+// llvmpipe's true fp16, 3 rim pixels of examples/scenes/velvet.json move by 3–4 8-bit steps).
+#if defined(SPECULAR_HALF_VECTOR_HIGHP) && !defined(FACET_SHADING_CLOTH)
 vec3 half_vector(highp vec3 v, highp vec3 l) {
     return normalize(v + l);
 }

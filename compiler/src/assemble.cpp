@@ -130,13 +130,14 @@ bool worldPositionVarying(const AssemblyInput& in) {
 // vector"). The lobes that sum the half vector in highp (SPECULAR_HALF_VECTOR_HIGHP in
 // specular_ggx_smith.glsl, specular_ggx_fastv.glsl, anisotropy_ggx_smith.glsl: at a grazing glint
 // v + l cancels, chunks/shading_standard.glsl) keep it highp, and so does a world-position
-// varying (a binary16 position 1 km away has 0.5 m steps).
+// varying (a binary16 position 1 km away has 0.5 m steps). The cloth model reads none of those
+// lobes, whatever the tier's specular: its sheen sums the half vector at the tier's precision.
 bool viewVectorMediump(const AssemblyInput& in) {
   if (worldPositionVarying(in) || in.tier.precision != permutations::PrecisionPolicy::Mediump) return false;
   if (in.material.shading != "lit") return true;
   const bool highpHalfLobe = in.tier.specular == permutations::SpecularModel::GgxSmith ||
                              in.tier.specular == permutations::SpecularModel::GgxFastV || shadesAnisotropicLobe(in);
-  return !highpHalfLobe;
+  return !highpHalfLobe || shadesCloth(in);
 }
 
 bool needs(const AssemblyInput& in, const OptionalInput& v) {

@@ -152,7 +152,12 @@ TEST(RenderPath, GlesMergedAndSeparatePathsGiveTheSameImageOnEveryExampleSceneAn
     // (11 steps at variance 0.04, 6 at 0.15). Drawn in the same row order, measured 3 at 0.02, 0.04
     // and 0.15 and without the filter alike (the floor's own difference, not isolated further): 4.
     const bool hammeredFloor = path.find("hammered_floor.json") != std::string::npos;
-    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : occludedTiles ? 3 : hammeredFloor ? 4 : 2);
+    // velvet.json: the cloth model sums its sheen's half vector in mediump in every tier
+    // (chunks/shading_standard.glsl, half_vector); llvmpipe's fp16 sum and normalize put 3 pixels
+    // of the roughest sphere's rim (r = 0.85) 3 and 4 steps from lavapipe's fp32, 2 with the sum
+    // in highp (measured; 67.8 and 68.0 dB over the image), as velvet's mid and low always did.
+    const bool cloth = path.find("velvet.json") != std::string::npos;
+    EXPECT_LE(maxLdrDifference(a, v), mirrorGrid ? 4 : astc ? 5 : occludedTiles ? 3 : hammeredFloor || cloth ? 4 : 2);
   }
   for (const auto* backend : {mergedBackend.get(), separateBackend.get(), osmesaBackend.get(), vulkan.get()}) {
     for (const std::string& message : backend->validationErrors()) ADD_FAILURE() << backend->name() << ": " << message;

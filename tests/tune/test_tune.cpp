@@ -11,6 +11,7 @@
 
 #include "facet/eval/configurations.h"
 #include "facet/ir/check.h"
+#include "facet/lint/lint.h"
 #include "facet/tune/choices.h"
 #include "facet/tune/report.h"
 #include "facet/tune/search.h"
@@ -119,6 +120,15 @@ TEST(TuneBudgets, DefaultsProjectFileAndPerMaterialEntries) {
   EXPECT_EQ(b->forMaterial("red_plastic", Tier::High).minPsnrDb, 50);  // the default stays
   EXPECT_EQ(b->forMaterial("brushed_gold", Tier::Low).minPsnrDb, 30);
   EXPECT_EQ(b->forMaterial("red_plastic", Tier::Low).minPsnrDb, 34);
+  EXPECT_TRUE(b->lintBudgetsPath.empty());
+
+  // lint's budgets file, beside the budgets file unless the path is absolute.
+  auto named = tune::parseBudgets("project/lint/tune.json", R"({"lint_budgets": "budgets.json"})", &error);
+  ASSERT_TRUE(named) << error;
+  EXPECT_EQ(named->lintBudgetsPath, "project/lint/budgets.json");
+  named = tune::parseBudgets("project/lint/tune.json", R"({"lint_budgets": "/etc/lint.json"})", &error);
+  ASSERT_TRUE(named) << error;
+  EXPECT_EQ(named->lintBudgetsPath, "/etc/lint.json");
 }
 
 TEST(TuneBudgets, BadFilesFailAtTheirJsonPointer) {
@@ -139,7 +149,11 @@ TEST(TuneBudgets, BadFilesFailAtTheirJsonPointer) {
   EXPECT_EQ(budgetError(R"({"vertices_per_pixel": 100})"),
             "b.json: error: /vertices_per_pixel: expected a number from 0 to 16");
   EXPECT_EQ(budgetError(R"({"tier": {}})"),
-            "b.json: error: /tier: unknown key 'tier' (known: tiers, materials, vertices_per_pixel)");
+            "b.json: error: /tier: unknown key 'tier' (known: tiers, materials, vertices_per_pixel, lint_budgets)");
+  EXPECT_EQ(budgetError(R"({"lint_budgets": 1})"),
+            "b.json: error: /lint_budgets: expected the path of lint's budgets file");
+  EXPECT_EQ(budgetError(R"({"lint_budgets": ""})"),
+            "b.json: error: /lint_budgets: expected the path of lint's budgets file");
   EXPECT_EQ(budgetError("[]"), "b.json: error: /: expected an object");
   EXPECT_NE(budgetError(R"({"tiers": {}, "tiers": {}})").find("duplicate key"), std::string::npos);
   EXPECT_NE(budgetError(R"({"tiers": )").find("b.json:1:"), std::string::npos);
@@ -314,6 +328,73 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
   EXPECT_FALSE(tune::choicesOf(*none));  // nothing partial to --write
 }
 
+// A tier takes only what fits its lint budgets. With mid's fragment texture reads capped below
+// what the unconstrained choice (the lut lobe's table read) makes, mid moves to a configuration
+// within the cap while low, which the cap does not bind, keeps that choice; every cheaper rendered
+// candidate that meets mid's error budget is over the cap, and the reports say so.
+TEST(TuneSearch, AChoiceFitsItsTiersLintBudgets) {
+  const facet::ir::Material m = example("red_plastic");
+  tune::TuneOptions o = tinyGrid();
+  o.space = smallSpace(m);
+  o.tiers = {Tier::Mid, Tier::Low};
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 36;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 28;
+  facet::eval::EvalError error;
+  auto free = tune::tune(m, o, &error);
+  ASSERT_TRUE(free) << error.message;
+  ASSERT_TRUE(free->tiers[0].chosen) << free->tiers[0].failure;
+  ASSERT_TRUE(free->tiers[1].chosen) << free->tiers[1].failure;
+  EXPECT_FALSE(free->lintBudgets);
+  auto texturesOf = [](const tune::Scored& s) {
+    facet::lint::StageFigures fragment;
+    fragment.mobile = s.result.costFragment;
+    for (const auto& [name, value] : facet::lint::namedFigures(fragment))
+      if (name == "textures") return value;
+    return -1.0;
+  };
+  const double freeTextures = texturesOf(*free->tiers[0].chosen);
+  ASSERT_GT(freeTextures, 1);
+
+  facet::lint::Budgets lintBudgets;
+  lintBudgets.tiers["mid"]["fragment"].max["textures"] = freeTextures - 1;
+  o.lintBudgets = lintBudgets;
+  auto capped = tune::tune(m, o, &error);
+  ASSERT_TRUE(capped) << error.message;
+  EXPECT_TRUE(capped->lintBudgets);
+  ASSERT_TRUE(capped->tiers[0].chosen) << capped->tiers[0].failure;
+  ASSERT_TRUE(capped->tiers[1].chosen) << capped->tiers[1].failure;
+  const tune::Scored& mid = *capped->tiers[0].chosen;
+  EXPECT_FALSE(mid.result.configuration.config == free->tiers[0].chosen->result.configuration.config);
+  EXPECT_LE(texturesOf(mid), freeTextures - 1);
+  EXPECT_EQ(mid.lintBreaches.count(Tier::Mid), 0u);
+  EXPECT_TRUE(capped->tiers[1].chosen->result.configuration.config ==
+              free->tiers[1].chosen->result.configuration.config);
+  bool sawBreach = false;
+  for (const tune::Scored& s : capped->front) {
+    if (!(s.cost.total < mid.cost.total) || s.result.psnrAtMost ||
+        !tune::meets(s, capped->tiers[0].budget, capped->referenceFurnaceGain))
+      continue;
+    ASSERT_EQ(s.lintBreaches.count(Tier::Mid), 1u) << s.result.configuration.name;
+    EXPECT_NE(s.lintBreaches.at(Tier::Mid)[0].find("mid.dir1 fragment stage: textures"), std::string::npos)
+        << s.lintBreaches.at(Tier::Mid)[0];
+    sawBreach = true;
+  }
+  EXPECT_TRUE(sawBreach);  // low's choice, mid's unconstrained one, is among them
+  const std::string md = tune::markdownReport(*capped);
+  EXPECT_NE(md.find("(over lint's mid budget: mid.dir1 fragment stage: textures "), std::string::npos) << md;
+  EXPECT_NE(tune::jsonReport(*capped).find("\"lint_breaches\""), std::string::npos);
+
+  // A cap nothing fits: no choice for mid, and the diagnostic says why; low is not bound by it.
+  lintBudgets.tiers["mid"]["fragment"].max["textures"] = 0;
+  o.lintBudgets = lintBudgets;
+  auto none = tune::tune(m, o, &error);
+  ASSERT_TRUE(none) << error.message;
+  EXPECT_FALSE(none->tiers[0].chosen);
+  EXPECT_NE(none->tiers[0].failure.find("none is within its cost cap and lint's budgets"), std::string::npos)
+      << none->tiers[0].failure;
+  EXPECT_TRUE(none->tiers[1].chosen);
+}
+
 // Screening (a candidate's second view and furnace rendered only where its first view's error
 // leaves it able to meet an open budget) changes no choice, no best reached by a tier that finds
 // none, and no figure of a fully measured candidate; it stops some candidates after one view.
@@ -450,4 +531,16 @@ TEST(TuneGate, CommittedChoicesPassAndAWorseOneFailsWithItsFigures) {
       std::string::npos)
       << failing->tiers[0].failure;
   EXPECT_NE(failing->tiers[0].failure.find(" dB, furnace "), std::string::npos);
+
+  // Within its error budget but over the lint budget the choice was held to: the gate fails too.
+  facet::lint::Budgets lintBudgets;
+  lintBudgets.tiers["low"]["fragment"].max["textures"] = 1;
+  o.lintBudgets = lintBudgets;
+  auto overLint = tune::rescore(m, {{Tier::Low, worse}}, o, &error);
+  ASSERT_TRUE(overLint) << error.message;
+  ASSERT_FALSE(overLint->tiers[0].chosen);
+  EXPECT_NE(overLint->tiers[0].failure.find("tier low: the tuned configuration no longer fits its lint budget: "
+                                            "material 'red_plastic' variant low.dir1 fragment stage: textures "),
+            std::string::npos)
+      << overLint->tiers[0].failure;
 }

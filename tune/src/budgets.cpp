@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
@@ -65,11 +66,14 @@ std::optional<Budgets> parseBudgets(const std::string& path, const std::string& 
       const std::string p = child("", key);
       if (key == "vertices_per_pixel") {
         b.verticesPerPixel = number(value, p, 0, kMaxVerticesPerPixel);
+      } else if (key == "lint_budgets") {
+        if (!value.is_string() || value.get<std::string>().empty()) fail(p, "expected the path of lint's budgets file");
+        b.lintBudgetsPath = (std::filesystem::path(path).parent_path() / value.get<std::string>()).string();
       } else if (key == "tiers") {
         for (const auto& [tier, budget] : object(value, p).items())
           readTier(budget, child(p, tier), &b.tiers[tunedTier(tier, child(p, tier))]);
       } else if (key != "materials") {
-        fail(p, "unknown key '" + key + "' (known: tiers, materials, vertices_per_pixel)");
+        fail(p, "unknown key '" + key + "' (known: tiers, materials, vertices_per_pixel, lint_budgets)");
       }
     }
     // After "tiers", whatever the file's order: a material's entry starts from the project's budget.

@@ -43,6 +43,16 @@ std::string budgetText(const TierBudget& b) {
   return out;
 }
 
+// lint's budget findings from the variant on: "mid.dir1 fragment stage: textures 6 exceeds the mid budget 4".
+std::string lintFigures(const std::vector<std::string>& messages) {
+  std::string out;
+  for (const std::string& m : messages) {
+    const size_t variant = m.find("variant ");
+    out += (out.empty() ? "" : "; ") + (variant == std::string::npos ? m : m.substr(variant + 8));
+  }
+  return out;
+}
+
 json scoredJson(const Scored& s, const TuneReport& r) {
   json j = json::object();
   j["name"] = s.result.configuration.name;
@@ -60,6 +70,11 @@ json scoredJson(const Scored& s, const TuneReport& r) {
   if (s.result.psnrAtMost) j["psnr_db_at_most"] = *s.result.psnrAtMost;
   j["white_furnace_gain"] = std::isnan(s.result.furnaceGain) ? json(nullptr) : json(s.result.furnaceGain);
   j["pareto"] = s.pareto;
+  if (!s.lintBreaches.empty()) {
+    json breaches = json::object();
+    for (const auto& [tier, messages] : s.lintBreaches) breaches[permutations::toString(tier)] = messages;
+    j["lint_breaches"] = breaches;  // the tiers that may not take it: lint's budget findings
+  }
   return j;
 }
 
@@ -97,6 +112,10 @@ std::string markdownReport(const TuneReport& r) {
         std::to_string(r.screened) +
         " of them only in the first view: the second could not have brought them to an open tier's budget; "
         "their dB is that bound, ≤).\n\n";
+  if (r.lintBudgets)
+    md +=
+        "A tier takes only a configuration whose <tier>.dir1 fits that tier's `matc lint` budgets (the "
+        "budgets file's `lint_budgets`); the candidates a tier may not take for that name it below.\n\n";
   md +=
       "| tier | budget | before: cost | dB | after: cost | dB | furnace | change "
       "|\n|---|---|--:|--:|--:|--:|--:|---|\n";
@@ -126,7 +145,14 @@ std::string markdownReport(const TuneReport& r) {
       for (double b : s.besideFragment) md.append(" ").append(fixed(b, 3)).append(" |");
       md.append(s.result.psnrAtMost ? " ≤ " + fixed(*s.result.psnrAtMost, 1) : " " + fixed(s.result.error.psnr, 1));
       md.append(" | ").append(fixed(s.result.furnaceGain, 3));
-      md.append(" | ").append(s.result.configuration.name).append(" |\n");
+      md.append(" | ").append(s.result.configuration.name);
+      for (const auto& [tier, messages] : s.lintBreaches)
+        md.append(" (over lint's ")
+            .append(permutations::toString(tier))
+            .append(" budget: ")
+            .append(lintFigures(messages))
+            .append(")");
+      md.append(" |\n");
     }
   }
   return md;

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "facet/eval/configurations.h"
+#include "facet/lint/lint.h"
 
 namespace facet::tune {
 namespace {
@@ -32,15 +33,38 @@ std::vector<std::string> besideGpus(const std::string& target) {
   return out;
 }
 
-Scored score(const eval::ConfigurationResult& r, const compiler::GpuCalibration& gpu, const TuneReport& report) {
+// lint's budget rules over the candidate's <tier>.dir1 stages (the cost model's figures of both;
+// costFragment and costVertex are that variant's), for each tier searched.
+void checkLintBudgets(const std::string& material, const TuneOptions& options, Scored* s) {
+  if (!options.lintBudgets) return;
+  lint::LintOptions rules;
+  rules.budgets = &*options.lintBudgets;
+  for (Tier t : options.tiers) {
+    lint::VariantFigures figures;
+    figures.key = std::string(permutations::toString(t)) + ".dir1";
+    figures.vertex.mobile = s->result.costVertex;
+    figures.fragment.mobile = s->result.costFragment;
+    std::vector<ir::Diagnostic> findings;
+    lint::lintVariant(material, figures, rules, &findings);
+    for (const ir::Diagnostic& d : findings)
+      if (d.code == "budget") s->lintBreaches[t].push_back(d.message);
+  }
+}
+
+Scored score(const eval::ConfigurationResult& r, const compiler::GpuCalibration& gpu, const TuneReport& report,
+             const TuneOptions& options) {
   Scored s;
   s.result = r;
   s.cost = oneNumberCost(r, gpu, report.verticesPerPixel);
   for (const std::string& name : report.beside)
     s.besideFragment.push_back(
         compiler::calibratedEstimate(r.costFragment.counts, *compiler::findGpuCalibration(name)));
+  checkLintBudgets(report.material, options, &s);
   return s;
 }
+
+// The tier may take the candidate as far as lint's budgets go.
+bool fitsLint(const Scored& s, Tier tier) { return s.lintBreaches.find(tier) == s.lintBreaches.end(); }
 
 // Among the fully measured: a screened candidate's PSNR is only bounded.
 void markPareto(std::vector<Scored>* front) {
@@ -87,6 +111,7 @@ std::unique_ptr<eval::Session> startSession(const ir::Material& material, const 
   report->gpu = options.gpu;
   report->beside = besideGpus(options.gpu);
   report->verticesPerPixel = options.budgets.verticesPerPixel;
+  report->lintBudgets = options.lintBudgets.has_value();
   report->referenceFurnaceGain = session->report().results[0].furnaceGain;
   return session;
 }
@@ -219,7 +244,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   say(costedLine);
 
   std::vector<Scored> scored;
-  for (const eval::ConfigurationResult& r : costed) scored.push_back(score(r, *gpu, report));
+  for (const eval::ConfigurationResult& r : costed) scored.push_back(score(r, *gpu, report, options));
   std::vector<size_t> order(scored.size());
   std::iota(order.begin(), order.end(), size_t(0));
   std::stable_sort(order.begin(), order.end(),
@@ -232,7 +257,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     const eval::Configuration shipped = eval::configurations(material, {t}, false).at(1);
     eval::ConfigurationResult r;
     if (!session->measure(shipped, &r, error)) return std::nullopt;
-    o.shipped = score(r, *gpu, report);
+    o.shipped = score(r, *gpu, report, options);
     report.tiers.push_back(std::move(o));
   }
 
@@ -247,17 +272,19 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     if (screen)
       how.worthFinishing = [&](double psnrAtMost) {
         for (const TierOutcome& o : report.tiers)
-          if (!o.chosen && withinCap(o.budget, scored[i].cost.total) && psnrAtMost >= o.budget.minPsnrDb) return true;
+          if (!o.chosen && withinCap(o.budget, scored[i].cost.total) && fitsLint(scored[i], o.tier) &&
+              psnrAtMost >= o.budget.minPsnrDb)
+            return true;
         return false;
       };
     // The furnace only where the error would meet an open tier's budget: elsewhere it decides nothing.
     how.furnaceWanted = [&](const eval::ConfigurationResult& scoredViews) {
       for (const TierOutcome& o : report.tiers)
-        if (!o.chosen && scoredViews.error.psnr >= o.budget.minPsnrDb) return true;
+        if (!o.chosen && fitsLint(scored[i], o.tier) && scoredViews.error.psnr >= o.budget.minPsnrDb) return true;
       return false;
     };
     if (!session->measure(configs[i], &r, error, how)) return false;
-    *s = score(r, *gpu, report);
+    *s = score(r, *gpu, report, options);
     const char* reused = r.viewsReused > 0 ? "  (an earlier candidate's render: the same build)" : "";
     char line[320];
     if (r.psnrAtMost)
@@ -271,14 +298,15 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   };
 
   // Cheapest first; a candidate is rendered only while some tier without a choice could take it
-  // (its cost within that tier's cap): the first that meets a tier's budget is its cheapest.
+  // (its cost within that tier's cap, its variant within the tier's lint budgets): the first that
+  // meets a tier's budget is its cheapest.
   std::vector<size_t> frontCandidate;  // report.front[k] is candidate frontCandidate[k]
   for (size_t i : order) {
     bool wanted = false, anyOpen = false;
     for (const TierOutcome& o : report.tiers) {
       if (o.chosen) continue;
       anyOpen = true;
-      wanted = wanted || withinCap(o.budget, scored[i].cost.total);
+      wanted = wanted || (withinCap(o.budget, scored[i].cost.total) && fitsLint(scored[i], o.tier));
     }
     if (!anyOpen) break;
     if (!wanted) continue;
@@ -288,13 +316,15 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     report.reused += s.result.viewsReused > 0 ? 1 : 0;
     frontCandidate.push_back(i);
     for (TierOutcome& o : report.tiers) {
-      if (o.chosen || s.result.psnrAtMost || !meets(s, o.budget, report.referenceFurnaceGain)) continue;
+      if (o.chosen || s.result.psnrAtMost || !fitsLint(s, o.tier) || !meets(s, o.budget, report.referenceFurnaceGain))
+        continue;
       o.chosen = s;
       o.chosen->result.configuration.config =
           withAxesOf(material, o.shipped->result.configuration.config, s.result.configuration.config);
       // Nothing strictly cheaper than the tier as shipped meets the budget and it does: it stays
       // (a candidate of equal cost is another spelling of the same shader, e.g. SH bands on a metal).
-      if (s.cost.total >= o.shipped->cost.total && meets(*o.shipped, o.budget, report.referenceFurnaceGain))
+      if (s.cost.total >= o.shipped->cost.total && fitsLint(*o.shipped, o.tier) &&
+          meets(*o.shipped, o.budget, report.referenceFurnaceGain))
         o.chosen = o.shipped;
     }
     report.front.push_back(std::move(s));
@@ -304,7 +334,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   // cheapest first): a screened candidate whose bound reaches the best measured is measured in full.
   for (TierOutcome& o : report.tiers) {
     if (o.chosen) continue;
-    auto within = [&](const Scored& s) { return withinCap(o.budget, s.cost.total); };
+    auto within = [&](const Scored& s) { return withinCap(o.budget, s.cost.total) && fitsLint(s, o.tier); };
     auto measuredBest = [&]() -> const Scored* {
       const Scored* best = nullptr;
       for (const Scored& s : report.front)
@@ -334,8 +364,9 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
                     permutations::toString(o.tier), describeBudget(o.budget).c_str(), o.best->result.error.psnr,
                     o.best->cost.total, o.best->result.configuration.name.c_str());
     else
-      std::snprintf(text, sizeof text, "tier %s: no configuration meets its budget (%s): none is within its cost cap",
-                    permutations::toString(o.tier), describeBudget(o.budget).c_str());
+      std::snprintf(text, sizeof text, "tier %s: no configuration meets its budget (%s): none is within its cost cap%s",
+                    permutations::toString(o.tier), describeBudget(o.budget).c_str(),
+                    report.lintBudgets ? " and lint's budgets" : "");
     o.failure = text;
   }
   markPareto(&report.front);
@@ -361,9 +392,13 @@ std::optional<TuneReport> rescore(const ir::Material& material, const std::vecto
     TierOutcome o;
     o.tier = tier;
     o.budget = options.budgets.forMaterial(material.name, tier);
-    Scored s = score(r, *gpu, report);
-    if (meets(s, o.budget, report.referenceFurnaceGain)) {
+    Scored s = score(r, *gpu, report, options);
+    if (meets(s, o.budget, report.referenceFurnaceGain) && fitsLint(s, tier)) {
       o.chosen = s;
+    } else if (!fitsLint(s, tier)) {
+      o.failure = std::string("tier ") + permutations::toString(tier) +
+                  ": the tuned configuration no longer fits its lint budget: " + s.lintBreaches.at(tier).front();
+      o.best = s;
     } else {
       char text[512];
       std::snprintf(text, sizeof text,

@@ -125,6 +125,16 @@ int run(const TuneArgs& args) {
       return 1;
     }
     options.budgets = *budgets;
+    if (!budgets->lintBudgetsPath.empty()) {
+      std::optional<std::string> lintText =
+          readText("the lint budgets file (lint_budgets in " + args.budgets + ")", budgets->lintBudgetsPath);
+      if (!lintText) return 1;
+      options.lintBudgets = lint::parseBudgets(budgets->lintBudgetsPath, *lintText, &message);
+      if (!options.lintBudgets) {
+        printLocated(message);
+        return 1;
+      }
+    }
   }
   ir::SourceFile source;
   std::optional<ir::Material> material = cli::loadMaterial(args.input, &source);
@@ -134,6 +144,8 @@ int run(const TuneArgs& args) {
   const std::string outDir = args.out.empty() ? fs::path(args.input).stem().string() + ".tune" : args.out;
   std::vector<cli::NamedFile> inputs{{"the input material", args.input}};
   if (!args.budgets.empty()) inputs.push_back({"the --budgets file", args.budgets});
+  if (!options.budgets.lintBudgetsPath.empty())
+    inputs.push_back({"the lint budgets file", options.budgets.lintBudgetsPath});
   std::vector<cli::NamedFile> outputs{{"--out", (fs::path(outDir) / "report.md").string()},
                                       {"--out", (fs::path(outDir) / "report.json").string()},
                                       {"--out", (fs::path(outDir) / "plot.svg").string()}};

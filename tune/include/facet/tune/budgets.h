@@ -26,6 +26,9 @@ struct Budgets {
   double verticesPerPixel = kDefaultVerticesPerPixel;
   // material name -> tier -> its budget (complete: the file's tier budget with the entry's keys over it)
   std::map<std::string, std::map<permutations::Tier, TierBudget>> materials;
+  // "lint_budgets": `matc lint`'s budgets file, which every chosen tier must also fit (TuneOptions::
+  // lintBudgets), its path resolved against the budgets file's folder; empty: none named.
+  std::string lintBudgetsPath;
 
   // The budget of `tier` for `material`: its own entry, else the project's, else the default.
   TierBudget forMaterial(const std::string& material, permutations::Tier tier) const;
@@ -34,7 +37,7 @@ struct Budgets {
 // high ≥ 50 dB, mid ≥ 40, low ≥ 34; no energy gain; no cost cap (docs/tune.md says why).
 Budgets defaultBudgets();
 
-// A budgets file over the defaults. On failure nullopt with
+// A budgets file over the defaults (lint's budgets file it names is not read here). On failure nullopt with
 // *error = "<path>: error: <JSON pointer>: <what>" (or the JSON reader's "<path>:<line>:<col>: ...").
 std::optional<Budgets> parseBudgets(const std::string& path, const std::string& text, std::string* error);
 

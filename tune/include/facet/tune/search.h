@@ -6,11 +6,13 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/eval/evaluate.h"
+#include "facet/lint/budgets.h"
 #include "facet/tune/budgets.h"
 
 namespace facet::tune {
@@ -64,6 +66,10 @@ struct TuneOptions {
   // (eval::MeasureOptions::reuseIdenticalViews): the same figures, so the same choice and reports;
   // false renders every candidate.
   bool reuseIdenticalViews = true;
+  // `matc lint`'s budgets (Budgets::lintBudgetsPath): a tier may take only a candidate whose
+  // <tier>.dir1 stages fit its tier's budget there, so that no tuned package fails the lint gate.
+  // dir1 is the variant with the most work of those lint builds (the sun's terms over dir0's).
+  std::optional<lint::Budgets> lintBudgets;
   eval::EvalOptions eval;  // the grid; fp16 emulation is turned on, timing and the BRDF sweep off
   std::function<void(const std::string&)> progress;
 };
@@ -73,6 +79,9 @@ struct Scored {
   Cost cost;
   std::vector<double> besideFragment;  // the other calibrated GPUs' fragment estimates, in TuneReport::beside order
   bool pareto = false;                 // among the fully measured: nothing both cheaper and more accurate
+  // Per tier searched, the lint budgets its <tier>.dir1 breaks (lint's messages); absent: it fits,
+  // or no lint budgets were given. Such a candidate is not that tier's to take.
+  std::map<permutations::Tier, std::vector<std::string>> lintBreaches;
 };
 
 struct TierOutcome {
@@ -89,6 +98,7 @@ struct TuneReport {
   std::string gpu;
   std::vector<std::string> beside;  // other calibrated GPUs reported beside the target
   double verticesPerPixel = 0;
+  bool lintBudgets = false;  // the choices also fit lint's budgets (TuneOptions::lintBudgets)
   double referenceFurnaceGain = 0;
   size_t candidates = 0, rendered = 0;
   size_t screened = 0;  // of the rendered, stopped after the first view (ConfigurationResult::psnrAtMost)

@@ -31,6 +31,7 @@ mediump float bandSharpness;
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
@@ -71,19 +72,8 @@ material.roughness=t5;
 highp float t6=mix(0.35,0.6,m_glaze);
 material.reflectance=t6;
 }
-vec3 sh_irradiance_over_pi(vec3 n){
-vec3 c0=frame.sh[0].rgb;
-vec3 c1=frame.sh[1].rgb;
-vec3 c2=frame.sh[2].rgb;
-vec3 c3=frame.sh[3].rgb;
-vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-vec3 c4=frame.sh[4].rgb;
-vec3 c5=frame.sh[5].rgb;
-vec3 c6=frame.sh[6].rgb;
-vec3 c7=frame.sh[7].rgb;
-vec3 c8=frame.sh[8].rgb;
-e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
-return max(e,vec3(0.0));
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -93,9 +83,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -109,7 +96,6 @@ return vec3(0.16*reflectance*reflectance*(1.0-metallic))+metallic*baseColor;
 float material_perceptual_roughness(MaterialInputs material){
 return clamp(material.roughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
 }
@@ -123,9 +109,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){
@@ -144,7 +128,7 @@ shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

@@ -31,6 +31,7 @@ mediump float bandSharpness;
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
@@ -78,40 +79,18 @@ float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
 vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
 }
-float distribution_ggx(float alpha,float NoH,vec3 n,vec3 h){
-float k=4096.0*alpha/ggx_d_scaled(alpha,NoH,n,h);
-return min(k*k*0.31830988618,65504.0);
-}
-float visibility_smith_ggx_correlated(float alpha,float NoV,float NoL){
-float a2=alpha*alpha;
-float lambdaV=NoL*sqrt(NoV*NoV*(1.0-a2)+a2);
-float lambdaL=NoV*sqrt(NoL*NoL*(1.0-a2)+a2);
-return min(0.5/(lambdaV+lambdaL),65504.0);
-}
-vec3 fresnel_schlick(vec3 f0,float LoH){
-float f=1.0-LoH;
-float f2=f*f;
-float f5=f2*f2*f;
-return f0+(vec3(1.0)-f0)*f5;
+const float FUSED_HAMMON_M_MIN=2.44140625e-4;
+float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
+float d=ggx_d_scaled(alpha,NoH,n,h);
+float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
+float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
+return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-float D=distribution_ggx(alpha,NoH,n,h);
-float V=visibility_smith_ggx_correlated(alpha,NoV,NoL);
-return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
+return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
 }
-vec3 sh_irradiance_over_pi(vec3 n){
-vec3 c0=frame.sh[0].rgb;
-vec3 c1=frame.sh[1].rgb;
-vec3 c2=frame.sh[2].rgb;
-vec3 c3=frame.sh[3].rgb;
-vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-vec3 c4=frame.sh[4].rgb;
-vec3 c5=frame.sh[5].rgb;
-vec3 c6=frame.sh[6].rgb;
-vec3 c7=frame.sh[7].rgb;
-vec3 c8=frame.sh[8].rgb;
-e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
-return max(e,vec3(0.0));
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -121,9 +100,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -141,8 +117,7 @@ float material_alpha(MaterialInputs material){
 float perceptualRoughness=material_perceptual_roughness(material);
 return perceptualRoughness*perceptualRoughness;
 }
-vec3 shading_energy_compensation=vec3(1.0);
-vec3 half_vector(highp vec3 v,highp vec3 l){
+vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
 vec3 shade_standard_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
@@ -151,13 +126,12 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
+vec3 h=half_vector(v,l);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
-specular*=shading_energy_compensation;
 vec3 irradiance=lightColor*NoL;
 vec3 diffuseColor=material_diffuse_color(material);
 return min((diffuseColor*diffuse_lambert()+specular)*irradiance,65504.0);
@@ -175,9 +149,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){
@@ -211,7 +183,7 @@ shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 color=add_light(color,shade_punctual(material,frame.punctualLights[0]));

@@ -47,15 +47,14 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _338 = normalize(half3(in.v_normal));
-    float3 _355 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _448 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _557 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _448)), half(0.0), half(1.0));
-    half3 _565 = half3((half(0.1599999964237213134765625) * _557) * _557);
-    half _574 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _448)), half(0.08900000154972076416015625), half(1.0));
-    float4 _581 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_338, half3(_355)), half(9.9999997473787516355514526367188e-05)), _574)), level(0.0));
-    float4 _610 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_355), _338)), level(_574 * (half(4.0) * (half(2.0) - _574))));
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_448))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_610).xyz * (mix(half4(_581).xxx, half4(_581).yyy, _565) * (half3(float3(1.0)) + (_565 * ((half(1.0) / half4(_581).y) - half(1.0)))))), half(1.0)));
+    half3 _315 = normalize(half3(in.v_normal));
+    float3 _332 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float _425 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _526 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _425)), half(0.0), half(1.0));
+    half _543 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _425)), half(0.08900000154972076416015625), half(1.0));
+    float4 _550 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_315, half3(_332)), half(9.9999997473787516355514526367188e-05)), _543)), level(0.0));
+    float4 _569 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_332), _315)), level(_543 * (half(4.0) * (half(2.0) - _543))));
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_425))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_569).xyz * mix(half4(_550).xxx, half4(_550).yyy, half3((half(0.1599999964237213134765625) * _526) * _526))), half(1.0)));
     return out;
 }
 

@@ -96,9 +96,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
 }
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
-}
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
 }
@@ -116,7 +113,6 @@ float perceptualRoughness=material_perceptual_roughness(material);
 return perceptualRoughness*perceptualRoughness;
 }
 vec3 shading_specular_albedo=vec3(0.0);
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
@@ -145,9 +141,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }

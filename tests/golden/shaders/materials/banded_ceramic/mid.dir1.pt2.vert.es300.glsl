@@ -38,12 +38,6 @@ vec3 c1=frame.sh[1].rgb;
 vec3 c2=frame.sh[2].rgb;
 vec3 c3=frame.sh[3].rgb;
 vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-vec3 c4=frame.sh[4].rgb;
-vec3 c5=frame.sh[5].rgb;
-vec3 c6=frame.sh[6].rgb;
-vec3 c7=frame.sh[7].rgb;
-vec3 c8=frame.sh[8].rgb;
-e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
 return max(e,vec3(0.0));
 }
 vec3 punctual_light_illuminance(PunctualLightData light,highp vec3 worldPosition,out highp vec3 l){

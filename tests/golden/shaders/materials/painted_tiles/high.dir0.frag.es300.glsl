@@ -35,6 +35,7 @@ uniform mediump sampler2D facet_material_albedo;
 uniform mediump sampler2D facet_material_relief;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
+uniform mediump samplerCube facet_irradiance;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -90,19 +91,8 @@ if(dot(t,t)==0.0)return normalize(n);
 vec3 b=v_tangent.w*cross(n,t);
 return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 }
-vec3 sh_irradiance_over_pi(vec3 n){
-vec3 c0=frame.sh[0].rgb;
-vec3 c1=frame.sh[1].rgb;
-vec3 c2=frame.sh[2].rgb;
-vec3 c3=frame.sh[3].rgb;
-vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
-vec3 c4=frame.sh[4].rgb;
-vec3 c5=frame.sh[5].rgb;
-vec3 c6=frame.sh[6].rgb;
-vec3 c7=frame.sh[7].rgb;
-vec3 c8=frame.sh[8].rgb;
-e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
-return max(e,vec3(0.0));
+vec3 cube_irradiance_over_pi(vec3 n){
+return textureLod(facet_irradiance,n,0.0).rgb;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -112,9 +102,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -128,23 +115,18 @@ return vec3(0.16*reflectance*reflectance*(1.0-metallic))+metallic*baseColor;
 float material_perceptual_roughness(MaterialInputs material){
 return params.facet_perceptualRoughness;
 }
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 multi_bounce_ao(float visibility,vec3 albedo){
 vec3 a=2.0404*albedo-0.3324;
 vec3 b= -4.7951*albedo+0.6417;
 vec3 c=2.7552*albedo+0.6903;
 return max(vec3(visibility),((visibility*a+b)*visibility+c)*visibility);
 }
-float specular_occlusion_lagarde(float NoV,float visibility,float alpha){
-float exponent=exp2(-16.0*alpha-1.0);
-return clamp(exp2(exponent*log2(NoV+visibility))-1.0+visibility,0.0,1.0);
-}
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient*multi_bounce_ao(clamp(material.ambientOcclusion,0.0,1.0),material_diffuse_color(material));
 }
 vec3 apply_specular_occlusion(MaterialInputs material,vec3 specular,float NoV,float perceptualRoughness){
 float visibility=clamp(material.ambientOcclusion,0.0,1.0);
-return specular*specular_occlusion_lagarde(NoV,visibility,perceptualRoughness*perceptualRoughness);
+return specular*visibility;
 }
 vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
 return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
@@ -156,9 +138,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }
 vec3 add_light(vec3 color,vec3 radiance){
@@ -178,7 +158,7 @@ shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
 shading_normal=tangent_to_world(material.normal);
-vec3 color=shade_standard_ambient(material,sh_irradiance_over_pi(shading_normal));
+vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

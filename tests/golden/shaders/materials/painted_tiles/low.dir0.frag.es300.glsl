@@ -106,9 +106,6 @@ return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 vec3 split_sum_albedo(vec2 dfg,vec3 f0){
 return mix(dfg.xxx,dfg.yyy,f0);
 }
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
-}
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
 }
@@ -122,7 +119,6 @@ float material_perceptual_roughness(MaterialInputs material){
 return params.facet_perceptualRoughness;
 }
 vec3 shading_specular_albedo=vec3(0.0);
-vec3 shading_energy_compensation=vec3(1.0);
 vec3 multi_bounce_ao(float visibility,vec3 albedo){
 vec3 a=2.0404*albedo-0.3324;
 vec3 b= -4.7951*albedo+0.6417;
@@ -143,9 +139,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
 shading_specular_albedo=albedo;
 return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }

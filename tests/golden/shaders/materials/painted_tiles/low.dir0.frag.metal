@@ -31,31 +31,31 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    half3 _599 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    float2 _639 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _642 = facet_material_albedo.sample(facet_material_albedoSmplr, _639);
-    float4 _652 = facet_material_relief.sample(facet_material_reliefSmplr, _639);
-    half3 _656 = (half4(_652).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _662 = fract(_639 * 4.0);
-    float _664 = _662.x;
-    float _671 = _662.y;
-    half3 _1043;
+    half3 _576 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float2 _616 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _619 = facet_material_albedo.sample(facet_material_albedoSmplr, _616);
+    float4 _629 = facet_material_relief.sample(facet_material_reliefSmplr, _616);
+    half3 _633 = (half4(_629).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _639 = fract(_616 * 4.0);
+    float _641 = _639.x;
+    float _648 = _639.y;
+    half3 _1001;
     do
     {
-        half3 _696 = half4(in.v_tangent).xyz;
-        if (float(dot(_696, _696)) == 0.0)
+        half3 _673 = half4(in.v_tangent).xyz;
+        if (float(dot(_673, _673)) == 0.0)
         {
-            _1043 = normalize(half3(in.v_normal));
+            _1001 = normalize(half3(in.v_normal));
             break;
         }
-        _1043 = normalize(((_696 * _656.x) + ((cross(half3(in.v_normal), _696) * half(in.v_tangent.w)) * _656.y)) + (half3(in.v_normal) * _656.z));
+        _1001 = normalize(((_673 * _633.x) + ((cross(half3(in.v_normal), _673) * half(in.v_tangent.w)) * _633.y)) + (half3(in.v_normal) * _633.z));
         break;
     } while(false);
-    half3 _739 = clamp(half4(_642).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _748 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_664, 1.0 - _664), fast::min(_671, 1.0 - _671))))), half(0.0), half(1.0));
-    float4 _907 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1043, _599), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _936 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_599, _1043)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(_739 * half3(in.v_diffuseLight), max(half3(_748), ((((((_739 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _748) + ((_739 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _748) + ((_739 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _748), _739 * half3(in.v_directDiffuse)) + ((half4(_936).xyz * (mix(half4(_907).xxx, half4(_907).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_907).y) - half(1.0)))))) * _748), half(1.0)));
+    half3 _716 = clamp(half4(_619).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _725 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_641, 1.0 - _641), fast::min(_648, 1.0 - _648))))), half(0.0), half(1.0));
+    float4 _876 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1001, _576), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _895 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_576, _1001)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    out.fragColor = float4(half4(fma(_716 * half3(in.v_diffuseLight), max(half3(_725), ((((((_716 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _725) + ((_716 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _725) + ((_716 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _725), _716 * half3(in.v_directDiffuse)) + ((half4(_895).xyz * mix(half4(_876).xxx, half4(_876).yyy, half3(float3(0.039999999105930328369140625)))) * _725), half(1.0)));
     return out;
 }
 

@@ -50,38 +50,39 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texture2d<float> facet_specularLut [[texture(1)]], texturecube<float> facet_environment [[texture(2)]], texture2d<float> facet_material_albedo [[texture(8)]], texture2d<float> facet_material_relief [[texture(9)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_specularLutSmplr [[sampler(1)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_material_albedoSmplr [[sampler(8)]], sampler facet_material_reliefSmplr [[sampler(9)]])
 {
     main0_out out = {};
-    half3 _794 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    float2 _834 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
-    float4 _837 = facet_material_albedo.sample(facet_material_albedoSmplr, _834);
-    float4 _847 = facet_material_relief.sample(facet_material_reliefSmplr, _834);
-    half3 _851 = (half4(_847).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
-    float2 _857 = fract(_834 * 4.0);
-    float _859 = _857.x;
-    float _866 = _857.y;
-    half3 _1406;
+    half3 _771 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float2 _811 = in.v_uv0 * float2(half2(half(2.0) * half(params.tiling), half(params.tiling)));
+    float4 _814 = facet_material_albedo.sample(facet_material_albedoSmplr, _811);
+    float4 _824 = facet_material_relief.sample(facet_material_reliefSmplr, _811);
+    half3 _828 = (half4(_824).xyz * half(2.007874011993408203125)) - half3(float3(1.007874011993408203125));
+    float2 _834 = fract(_811 * 4.0);
+    float _836 = _834.x;
+    float _843 = _834.y;
+    half3 _1364;
     do
     {
-        half3 _891 = half4(in.v_tangent).xyz;
-        if (float(dot(_891, _891)) == 0.0)
+        half3 _868 = half4(in.v_tangent).xyz;
+        if (float(dot(_868, _868)) == 0.0)
         {
-            _1406 = normalize(half3(in.v_normal));
+            _1364 = normalize(half3(in.v_normal));
             break;
         }
-        _1406 = normalize(((_891 * _851.x) + ((cross(half3(in.v_normal), _891) * half(in.v_tangent.w)) * _851.y)) + (half3(in.v_normal) * _851.z));
+        _1364 = normalize(((_868 * _828.x) + ((cross(half3(in.v_normal), _868) * half(in.v_tangent.w)) * _828.y)) + (half3(in.v_normal) * _828.z));
         break;
     } while(false);
-    half3 _934 = clamp(half4(_837).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
-    half _943 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_859, 1.0 - _859), fast::min(_866, 1.0 - _866))))), half(0.0), half(1.0));
-    half3 _1040 = reflect(-_794, _1406);
-    float4 _1102 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1406, _794), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _1131 = facet_environment.sample(facet_environmentSmplr, float3(_1040), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half3 _1055 = mix(half4(_1102).xxx, half4(_1102).yyy, half3(float3(0.039999999105930328369140625))) * (half3(float3(1.0)) + (half3(float3(0.039999999105930328369140625)) * ((half(1.0) / half4(_1102).y) - half(1.0))));
-    half3 _740 = half4(frame.lightDirection).xyz;
-    half _1290 = clamp(dot(_1040, _740), half(0.0), half(1.0));
-    half _1293 = _1290 * _1290;
-    half4 _1486 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1293 * _1293, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
-    half _1305 = _1486.x;
-    out.fragColor = float4(half4((fma(_934 * half3(in.v_diffuseLight), max(half3(_943), ((((((_934 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _943) + ((_934 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _943) + ((_934 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _943), _934 * half3(in.v_directDiffuse)) + ((half4(_1131).xyz * _1055) * _943)) + min((_1055 * ((_1305 * _1305) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1406, _740), half(0.0), half(1.0))), half3(float3(65504.0))), half(1.0)));
+    half3 _911 = clamp(half4(_814).xyz, half3(float3(0.0)), half3(float3(1.0))) * half(1.0);
+    half _920 = clamp(half(mix(0.4000000059604644775390625, 1.0, smoothstep(0.0, 0.3499999940395355224609375, fast::min(fast::min(_836, 1.0 - _836), fast::min(_843, 1.0 - _843))))), half(0.0), half(1.0));
+    half3 _1015 = reflect(-_771, _1364);
+    float4 _1071 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_1364, _771), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _1080 = mix(half4(_1071).xxx, half4(_1071).yyy, half3(float3(0.039999999105930328369140625)));
+    float4 _1090 = facet_environment.sample(facet_environmentSmplr, float3(_1015), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
+    half3 _717 = half4(frame.lightDirection).xyz;
+    half _1249 = clamp(dot(_1015, _717), half(0.0), half(1.0));
+    half _1252 = _1249 * _1249;
+    half4 _1439 = half4(facet_specularLut.sample(facet_specularLutSmplr, float2(fma(half2(_1252 * _1252, half(params.facet_perceptualRoughness)), half2(float2(0.9921875, 0.984375)), half2(float2(0.00390625, 0.0078125)))), level(0.0)));
+    half _1264 = _1439.x;
+    half3 _1273 = (fma(_911 * half3(in.v_diffuseLight), max(half3(_920), ((((((_911 * half(2.040400028228759765625)) - half3(float3(0.3323999941349029541015625))) * _920) + ((_911 * half(-4.79510021209716796875)) + half3(float3(0.6417000293731689453125)))) * _920) + ((_911 * half(2.755199909210205078125)) + half3(float3(0.69029998779296875)))) * _920), _911 * half3(in.v_directDiffuse)) + ((half4(_1090).xyz * _1080) * _920)) + min((_1080 * ((_1264 * _1264) * half(5.092957973480224609375))) * (half4(frame.lightColor).xyz * clamp(dot(_1364, _717), half(0.0), half(1.0))), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1273, half(1.0)));
     return out;
 }
 

@@ -35,8 +35,8 @@ mediump float facet_alpha;
 params;
 uniform mediump sampler2D facet_material_albedo;
 uniform mediump sampler2D facet_material_relief;
+uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
-uniform mediump sampler2D facet_dfgLut;
 const float MIN_N_DOT_V=1e-4;
 const float VIEW_VECTOR_MIN_SQUARE=6.103515625e-05;
 vec3 view_direction(vec3 scaledToEye){
@@ -99,14 +99,11 @@ return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
-vec2 dfg_terms(float NoV,float perceptualRoughness){
-return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
-}
-vec3 split_sum_albedo(vec2 dfg,vec3 f0){
-return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
+vec3 env_brdf_karis(vec3 f0,float NoV,float perceptualRoughness){
+vec4 k=perceptualRoughness*vec4(-1.0,-0.0275,-0.572,0.022)+vec4(1.0,0.0425,1.04,-0.04);
+float s=min(k.x*k.x,exp2(-9.28*NoV))*k.x+k.y;
+vec2 ab=vec2(-1.04,1.04)*s+k.zw;
+return f0*ab.x+ab.y;
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -120,7 +117,7 @@ return vec3(0.16*reflectance*reflectance*(1.0-metallic))+metallic*baseColor;
 float material_perceptual_roughness(MaterialInputs material){
 return params.facet_perceptualRoughness;
 }
-vec3 shading_energy_compensation=vec3(1.0);
+vec3 shading_specular_albedo=vec3(0.0);
 vec3 multi_bounce_ao(float visibility,vec3 albedo){
 vec3 a=2.0404*albedo-0.3324;
 vec3 b= -4.7951*albedo+0.6417;
@@ -139,11 +136,9 @@ vec3 f0=material_f0(material);
 float perceptualRoughness=material_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
-vec2 dfg=dfg_terms(NoV,perceptualRoughness);
-vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
+vec3 albedo=env_brdf_karis(f0,NoV,perceptualRoughness);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
+shading_specular_albedo=albedo;
 return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }
 vec3 add_light(vec3 color,vec3 radiance){

@@ -35,8 +35,8 @@ mediump float facet_alpha;
 params;
 uniform mediump sampler2D facet_material_albedo;
 uniform mediump sampler2D facet_material_relief;
+uniform mediump sampler2D facet_specularLut;
 uniform mediump samplerCube facet_environment;
-uniform mediump sampler2D facet_dfgLut;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
 vec3 baseColor;
@@ -92,31 +92,28 @@ if(dot(t,t)==0.0)return normalize(n);
 vec3 b=v_tangent.w*cross(n,t);
 return normalize(tangentNormal.x*t+tangentNormal.y*b+tangentNormal.z*n);
 }
-float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
-return dot(t,t);
+const vec2 SPECULAR_LUT_SIZE=vec2(128.0,64.0);
+const float SPECULAR_LUT_SCALE=5.0929582;
+float specular_lut(mediump sampler2D lut,float RoL,float perceptualRoughness){
+float c=clamp(RoL,0.0,1.0);
+float c2=c*c;
+vec2 t=vec2(c2*c2,perceptualRoughness);
+vec2 uv=t*((SPECULAR_LUT_SIZE-1.0)/SPECULAR_LUT_SIZE)+0.5/SPECULAR_LUT_SIZE;
+float encoded=textureLod(lut,uv,0.0).r;
+return encoded*encoded*SPECULAR_LUT_SCALE;
 }
-const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
-float d=ggx_d_scaled(alpha,NoH,n,h);
-float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
-return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
-}
-vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 albedo){
+vec3 r=reflect(-v,n);
+return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
-vec2 dfg_terms(float NoV,float perceptualRoughness){
-return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
-}
-vec3 split_sum_albedo(vec2 dfg,vec3 f0){
-return mix(dfg.xxx,dfg.yyy,f0);
-}
-vec3 energy_compensation(vec2 dfg,vec3 f0){
-return 1.0+f0*(1.0/dfg.y-1.0);
+vec3 env_brdf_karis(vec3 f0,float NoV,float perceptualRoughness){
+vec4 k=perceptualRoughness*vec4(-1.0,-0.0275,-0.572,0.022)+vec4(1.0,0.0425,1.04,-0.04);
+float s=min(k.x*k.x,exp2(-9.28*NoV))*k.x+k.y;
+vec2 ab=vec2(-1.04,1.04)*s+k.zw;
+return f0*ab.x+ab.y;
 }
 vec3 material_diffuse_color(MaterialInputs material){
 return(1.0-clamp(material.metallic,0.0,1.0))*clamp(material.baseColor,0.0,1.0);
@@ -133,7 +130,7 @@ return params.facet_perceptualRoughness;
 float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
-vec3 shading_energy_compensation=vec3(1.0);
+vec3 shading_specular_albedo=vec3(0.0);
 vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
@@ -148,8 +145,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
-vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
-specular*=shading_energy_compensation;
+vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
 vec3 irradiance=lightColor*NoL;
 return min(specular*irradiance,65504.0);
 }
@@ -171,11 +167,9 @@ vec3 f0=material_f0(material);
 float perceptualRoughness=material_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
-vec2 dfg=dfg_terms(NoV,perceptualRoughness);
-vec3 albedo=split_sum_albedo(dfg,f0);
-shading_energy_compensation=energy_compensation(dfg,f0);
+vec3 albedo=env_brdf_karis(f0,NoV,perceptualRoughness);
 vec3 specular=prefiltered_radiance(r,perceptualRoughness);
-albedo*=shading_energy_compensation;
+shading_specular_albedo=albedo;
 return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }
 vec3 add_light(vec3 color,vec3 radiance){

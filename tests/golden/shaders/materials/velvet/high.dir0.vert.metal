@@ -51,18 +51,18 @@ vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [
     main0_out out = {};
     float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
     float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
-    out.v_toEye = frame.cameraPosition.xyz - _51.xyz;
-    float3 _82 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _134;
-    if (dot(in.a_instanceRow0.xyz, _82) < 0.0)
+    out.v_toEye = (frame.cameraPosition.xyz - _51.xyz) * 0.0625;
+    float3 _84 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _137;
+    if (dot(in.a_instanceRow0.xyz, _84) < 0.0)
     {
-        _134 = -in.a_normal;
+        _137 = -in.a_normal;
     }
     else
     {
-        _134 = in.a_normal;
+        _137 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_134 * float3x3(_82, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    out.v_normal = fast::normalize(_137 * float3x3(_84, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
     out.gl_Position = frame.viewProjection * _51;
     return out;
 }

@@ -1,7 +1,7 @@
 #version 300 es
 precision mediump float;
 precision highp int;
-in highp vec3 v_toEye;
+in mediump vec3 v_toEye;
 in mediump vec3 v_normal;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
@@ -37,6 +37,10 @@ uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
 uniform mediump samplerCube facet_irradiance;
 const float MIN_N_DOT_V=1e-4;
+const float VIEW_VECTOR_MIN_SQUARE=6.103515625e-05;
+vec3 view_direction(vec3 scaledToEye){
+return scaledToEye*inversesqrt(max(dot(scaledToEye,scaledToEye),VIEW_VECTOR_MIN_SQUARE));
+}
 struct MaterialInputs{
 vec3 baseColor;
 float alpha;
@@ -101,7 +105,7 @@ return params.facet_perceptualRoughness;
 float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
-vec3 half_vector(highp vec3 v,highp vec3 l){
+vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
@@ -156,10 +160,10 @@ return color;
 vec4 blend_output(vec3 color,float alpha){
 return vec4(color,1.0);
 }
-highp vec3 shading_view_for_lights;
+vec3 shading_view_for_lights;
 void main(){
 shading_normal=normalize(v_normal);
-shading_view_for_lights=normalize(v_toEye);
+shading_view_for_lights=view_direction(v_toEye);
 shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);

@@ -51,22 +51,24 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _445 = normalize(half3(in.v_normal));
-    float3 _449 = fast::normalize(in.v_toEye);
-    float4 _556 = facet_irradiance.sample(facet_irradianceSmplr, float3(_445), level(0.0));
-    half _596 = max(dot(_445, half3(_449)), half(9.9999997473787516355514526367188e-05));
-    float4 _601 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_596, half(params.facet_perceptualRoughness))), level(0.0));
-    half4 _910 = half4(_601);
-    half _614 = _910.z;
-    half _616 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _614, half(1.0));
-    float4 _630 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_449), _445)), level(params.facet_sheenLod));
-    half _686 = dot(_445, half3(frame.lightDirection.xyz));
-    half _688 = clamp(_686, half(0.0), half(1.0));
-    half _700 = clamp(dot(_445, half3(fast::normalize(_449 + frame.lightDirection.xyz))), half(0.0), half(1.0));
-    half _771 = half(8192.0) * fma(half(-float(_688)), _596, _688 + _596);
-    half _775 = half(1.0) / (half(params.facet_alpha) * _771);
-    half3 _733 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_686 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_688), half3(float3(0.0)), half3(float3(1.0)))) * _616) + (half3(float3(params.facet_sheenColor)) * ((((fma(_775, _771, half(2.0)) * pow(max(fma(half(-float(_700)), _700, half(1.0)), half(0.0)), half(0.5) * (_775 * _771))) * half(0.15915493667125701904296875)) * (_688 * (_775 * (half(2048.0) * half(params.facet_alpha))))) * half4(_601).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    out.fragColor = float4(half4(fma(half4(_630).xyz, half3(float3(params.facet_sheenColor)) * _614, (half3(float3(params.facet_diffuseColor)) * half4(_556).xyz) * _616) + _733, half(1.0)));
+    half3 _456 = normalize(half3(in.v_normal));
+    half3 _546 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _578 = facet_irradiance.sample(facet_irradianceSmplr, float3(_456), level(0.0));
+    half _618 = max(dot(_456, _546), half(9.9999997473787516355514526367188e-05));
+    float4 _623 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_618, half(params.facet_perceptualRoughness))), level(0.0));
+    half4 _933 = half4(_623);
+    half _636 = _933.z;
+    half _638 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _636, half(1.0));
+    float4 _652 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_546, _456)), level(params.facet_sheenLod));
+    half3 _503 = half4(frame.lightDirection).xyz;
+    half _708 = dot(_456, _503);
+    half _710 = clamp(_708, half(0.0), half(1.0));
+    half _722 = clamp(dot(_456, normalize(_546 + _503)), half(0.0), half(1.0));
+    half _791 = half(8192.0) * fma(half(-float(_710)), _618, _710 + _618);
+    half _795 = half(1.0) / (half(params.facet_alpha) * _791);
+    half3 _755 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_708 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_710), half3(float3(0.0)), half3(float3(1.0)))) * _638) + (half3(float3(params.facet_sheenColor)) * ((((fma(_795, _791, half(2.0)) * pow(max(fma(half(-float(_722)), _722, half(1.0)), half(0.0)), half(0.5) * (_795 * _791))) * half(0.15915493667125701904296875)) * (_710 * (_795 * (half(2048.0) * half(params.facet_alpha))))) * half4(_623).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    half3 _830 = fma(half4(_652).xyz, half3(float3(params.facet_sheenColor)) * _636, (half3(float3(params.facet_diffuseColor)) * half4(_578).xyz) * _638) + _755;
+    out.fragColor = float4(half4(_830, half(1.0)));
     return out;
 }
 

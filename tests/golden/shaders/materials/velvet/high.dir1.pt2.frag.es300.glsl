@@ -101,7 +101,7 @@ return params.facet_perceptualRoughness;
 float material_alpha(MaterialInputs material){
 return params.facet_alpha;
 }
-vec3 half_vector(highp vec3 v,highp vec3 l){
+vec3 half_vector(vec3 v,vec3 l){
 return normalize(v+l);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){

@@ -6,7 +6,7 @@ layout(location=1)in highp vec3 a_normal;
 layout(location=6)in highp vec4 a_instanceRow0;
 layout(location=7)in highp vec4 a_instanceRow1;
 layout(location=8)in highp vec4 a_instanceRow2;
-out highp vec3 v_toEye;
+out mediump vec3 v_toEye;
 out mediump vec3 v_normal;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -31,11 +31,12 @@ highp vec4 uv0ScaleOffset;
 highp vec4 uv1ScaleOffset;
 }
 object;
+const highp float VIEW_VECTOR_SCALE=0.0625;
 void main(){
 highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
 highp vec4 objectPosition=vec4(position,1.0);
 highp vec4 worldPosition=vec4(dot(a_instanceRow0,objectPosition),dot(a_instanceRow1,objectPosition),dot(a_instanceRow2,objectPosition),1.0);
-v_toEye=frame.cameraPosition.xyz-worldPosition.xyz;
+v_toEye=(frame.cameraPosition.xyz-worldPosition.xyz)*VIEW_VECTOR_SCALE;
 highp vec3 row0=a_instanceRow0.xyz,row1=a_instanceRow1.xyz,row2=a_instanceRow2.xyz;
 highp vec3 cofactor0=cross(row1,row2);
 highp vec3 objectNormal=dot(row0,cofactor0)<0.0?-a_normal:a_normal;
