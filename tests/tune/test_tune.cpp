@@ -393,6 +393,11 @@ TEST(TuneSearch, AChoiceFitsItsTiersLintBudgets) {
   EXPECT_NE(none->tiers[0].failure.find("none is within its cost cap and lint's budgets"), std::string::npos)
       << none->tiers[0].failure;
   EXPECT_TRUE(none->tiers[1].chosen);
+  // Once low has its choice, mid may take nothing: the rest are costed, not rendered, and counted.
+  EXPECT_GT(none->overLintBudgets, 0u);
+  EXPECT_EQ(free->overLintBudgets, 0u);
+  EXPECT_NE(tune::markdownReport(*none).find(std::to_string(none->overLintBudgets) + " candidates were not rendered"),
+            std::string::npos);
 }
 
 // Screening (a candidate's second view and furnace rendered only where its first view's error

@@ -115,7 +115,10 @@ std::string markdownReport(const TuneReport& r) {
   if (r.lintBudgets)
     md +=
         "A tier takes only a configuration whose <tier>.dir1 fits that tier's `matc lint` budgets (the "
-        "budgets file's `lint_budgets`); the candidates a tier may not take for that name it below.\n\n";
+        "budgets file's `lint_budgets`); below, a candidate over one names the tier and the figure it breaks. " +
+        std::to_string(r.overLintBudgets) +
+        " candidates were not rendered: each was over the lint budgets of every tier still open that could take "
+        "it.\n\n";
   md +=
       "| tier | budget | before: cost | dB | after: cost | dB | furnace | change "
       "|\n|---|---|--:|--:|--:|--:|--:|---|\n";
@@ -169,6 +172,7 @@ std::string jsonReport(const TuneReport& r) {
   j["candidates"] = r.candidates;
   j["rendered"] = r.rendered;
   j["screened"] = r.screened;
+  j["over_lint_budgets"] = r.overLintBudgets;
   j["tiers"] = json::array();
   for (const TierOutcome& o : r.tiers) {
     json t = json::object();

@@ -302,14 +302,18 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   // meets a tier's budget is its cheapest.
   std::vector<size_t> frontCandidate;  // report.front[k] is candidate frontCandidate[k]
   for (size_t i : order) {
-    bool wanted = false, anyOpen = false;
+    bool wanted = false, anyOpen = false, anyWithinCap = false;
     for (const TierOutcome& o : report.tiers) {
       if (o.chosen) continue;
       anyOpen = true;
+      anyWithinCap = anyWithinCap || withinCap(o.budget, scored[i].cost.total);
       wanted = wanted || (withinCap(o.budget, scored[i].cost.total) && fitsLint(scored[i], o.tier));
     }
     if (!anyOpen) break;
-    if (!wanted) continue;
+    if (!wanted) {
+      report.overLintBudgets += anyWithinCap ? 1 : 0;
+      continue;
+    }
     Scored s;
     if (!render(i, options.screen, &s)) return std::nullopt;
     ++report.rendered;

@@ -102,6 +102,8 @@ struct TuneReport {
   double referenceFurnaceGain = 0;
   size_t candidates = 0, rendered = 0;
   size_t screened = 0;  // of the rendered, stopped after the first view (ConfigurationResult::psnrAtMost)
+  // Costed and not rendered because every open tier whose cap it is within may not take it (its lint budgets).
+  size_t overLintBudgets = 0;
   // Of the rendered, those whose views took an earlier render's figures (TuneOptions::reuseIdenticalViews);
   // the reports leave it out: their figures are the same either way.
   size_t reused = 0;
