@@ -9,7 +9,7 @@
 #
 # Adds the custom target <name> (built by `all`) producing <OUTPUT_DIR>/<material>.matpkg per
 # material. Each package is rebuilt when its material, its tuning file (<stem>.tuning.json, when
-# it has one), the scene, matc, or any template/chunk its
+# it has one, or once one is added), the scene, matc, or any template/chunk its
 # variants used changes: matc writes a depfile (matc compile --depfile) that Ninja and Make read.
 # Works in Facet's own tree and through find_package(Facet) (docs/build-integration.md).
 function(facet_add_materials)
@@ -49,11 +49,16 @@ function(facet_add_materials)
     get_filename_component(source "${material}" ABSOLUTE)
     get_filename_component(name "${material}" NAME_WE)
     set(package ${FA_OUTPUT_DIR}/${name}.matpkg)
+    # The depfile names the tuning file only once a compile has read it, so one added beside the
+    # material later would not rebuild its package: the glob finds it at configure time, and
+    # CONFIGURE_DEPENDS re-runs the glob on every build, reconfiguring when the file appears.
+    get_filename_component(folder "${source}" DIRECTORY)
+    file(GLOB tuning CONFIGURE_DEPENDS "${folder}/${name}.tuning.json")
     add_custom_command(
       OUTPUT ${package}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${FA_OUTPUT_DIR}
       COMMAND Facet::matc compile ${source} -o ${package} --depfile ${package}.d ${options}
-      DEPENDS ${source} ${depends} Facet::matc
+      DEPENDS ${source} ${tuning} ${depends} Facet::matc
       DEPFILE ${package}.d
       COMMENT "Compiling Facet material ${name}"
       VERBATIM)

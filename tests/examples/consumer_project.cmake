@@ -5,7 +5,8 @@
 # facet-texture), that every installed header compiles from the prefix (no private
 # header included), that an app including the headers' old paths still compiles
 # (consumer_old_include_paths.cpp), the depfile-driven rebuilds
-# (nothing to do when nothing changed; touching one material rebuilds only its package), and
+# (nothing to do when nothing changed; touching one material, or adding its tuning file, rebuilds
+# only its package), and
 # runs the consumer's program: it lists both packages and renders one frame with the runtime on
 # lavapipe (FACET_VK_VALIDATION from the test's environment: a validation error fails it).
 # Inputs: -DFACET_BINARY_DIR -DFACET_SOURCE_DIR -DWORK (a scratch folder, recreated),
@@ -85,6 +86,17 @@ file(TOUCH ${WORK}/materials/red_plastic.mat)
 run(${CMAKE_COMMAND} --build ${WORK}/build)
 if(NOT out MATCHES "Compiling Facet material red_plastic" OR out MATCHES "brushed_gold")
   message(FATAL_ERROR "touching red_plastic.mat should rebuild exactly its package:\n${out}")
+endif()
+
+# A tuning file added beside a material (matc tune --write) rebuilds exactly its package, with its tiers.
+file(READ ${WORK}/build/packages/red_plastic.matpkg presets HEX)
+# (written, as matc tune --write writes it: file(COPY) would keep the source's older time)
+file(READ ${FACET_SOURCE_DIR}/examples/materials/red_plastic.tuning.json tuning)
+file(WRITE ${WORK}/materials/red_plastic.tuning.json "${tuning}")
+run(${CMAKE_COMMAND} --build ${WORK}/build)
+file(READ ${WORK}/build/packages/red_plastic.matpkg tuned HEX)
+if(NOT out MATCHES "Compiling Facet material red_plastic" OR out MATCHES "brushed_gold" OR tuned STREQUAL presets)
+  message(FATAL_ERROR "adding red_plastic.tuning.json should rebuild exactly its package, tuned:\n${out}")
 endif()
 
 # The app's program against the packages its build made. Under ASan the driver's per-load bytes
