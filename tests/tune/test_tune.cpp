@@ -96,6 +96,17 @@ tune::TuneOptions tinyGrid() {
   return o;
 }
 
+// The small space searched for mid (≥ 36 dB) and low (≥ 28 dB) on the tiny grid: budgets the
+// cheap lobes meet, so the searches stop early.
+tune::TuneOptions midAndLowSearch(const facet::ir::Material& m) {
+  tune::TuneOptions o = tinyGrid();
+  o.space = smallSpace(m);
+  o.tiers = {Tier::Mid, Tier::Low};
+  o.budgets.tiers[Tier::Mid].minPsnrDb = 36;
+  o.budgets.tiers[Tier::Low].minPsnrDb = 28;
+  return o;
+}
+
 }  // namespace
 
 TEST(TuneBudgets, DefaultsProjectFileAndPerMaterialEntries) {
@@ -277,11 +288,7 @@ TEST(TuneSearch, TargetGpuIsACycleCalibration) {
 // meets names the tier, the best reached and its cost.
 TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration) {
   const facet::ir::Material m = example("red_plastic");
-  tune::TuneOptions o = tinyGrid();
-  o.space = smallSpace(m);
-  o.tiers = {Tier::Mid, Tier::Low};
-  o.budgets.tiers[Tier::Mid].minPsnrDb = 36;
-  o.budgets.tiers[Tier::Low].minPsnrDb = 28;
+  tune::TuneOptions o = midAndLowSearch(m);
   o.jobs = 1;
   facet::eval::EvalError error;
   auto one = tune::tune(m, o, &error);
@@ -334,11 +341,7 @@ TEST(TuneSearch, DeterministicAndARaisedBudgetIsMetByAMoreAccurateConfiguration)
 // candidate that meets mid's error budget is over the cap, and the reports say so.
 TEST(TuneSearch, AChoiceFitsItsTiersLintBudgets) {
   const facet::ir::Material m = example("red_plastic");
-  tune::TuneOptions o = tinyGrid();
-  o.space = smallSpace(m);
-  o.tiers = {Tier::Mid, Tier::Low};
-  o.budgets.tiers[Tier::Mid].minPsnrDb = 36;
-  o.budgets.tiers[Tier::Low].minPsnrDb = 28;
+  tune::TuneOptions o = midAndLowSearch(m);
   facet::eval::EvalError error;
   auto free = tune::tune(m, o, &error);
   ASSERT_TRUE(free) << error.message;
