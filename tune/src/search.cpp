@@ -189,6 +189,8 @@ std::vector<TierConfig> neighbourhood(const ir::Material& material, const std::v
 namespace {
 // A tier may take a candidate of this cost (its optional cap).
 bool withinCap(const TierBudget& budget, double cost) { return !budget.maxCost || cost <= *budget.maxCost; }
+// The tier may take the candidate whatever its error: within its cost cap and its lint budgets.
+bool mayTake(const TierOutcome& o, const Scored& s) { return withinCap(o.budget, s.cost.total) && fitsLint(s, o.tier); }
 }  // namespace
 
 bool meets(const Scored& s, const TierBudget& budget, double referenceFurnaceGain) {
@@ -272,9 +274,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
     if (screen)
       how.worthFinishing = [&](double psnrAtMost) {
         for (const TierOutcome& o : report.tiers)
-          if (!o.chosen && withinCap(o.budget, scored[i].cost.total) && fitsLint(scored[i], o.tier) &&
-              psnrAtMost >= o.budget.minPsnrDb)
-            return true;
+          if (!o.chosen && mayTake(o, scored[i]) && psnrAtMost >= o.budget.minPsnrDb) return true;
         return false;
       };
     // The furnace only where the error would meet an open tier's budget: elsewhere it decides nothing.
@@ -307,7 +307,7 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
       if (o.chosen) continue;
       anyOpen = true;
       anyWithinCap = anyWithinCap || withinCap(o.budget, scored[i].cost.total);
-      wanted = wanted || (withinCap(o.budget, scored[i].cost.total) && fitsLint(scored[i], o.tier));
+      wanted = wanted || mayTake(o, scored[i]);
     }
     if (!anyOpen) break;
     if (!wanted) {
@@ -338,17 +338,17 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   // cheapest first): a screened candidate whose bound reaches the best measured is measured in full.
   for (TierOutcome& o : report.tiers) {
     if (o.chosen) continue;
-    auto within = [&](const Scored& s) { return withinCap(o.budget, s.cost.total) && fitsLint(s, o.tier); };
     auto measuredBest = [&]() -> const Scored* {
       const Scored* best = nullptr;
       for (const Scored& s : report.front)
-        if (!s.result.psnrAtMost && within(s) && (!best || s.result.error.psnr > best->result.error.psnr)) best = &s;
+        if (!s.result.psnrAtMost && mayTake(o, s) && (!best || s.result.error.psnr > best->result.error.psnr))
+          best = &s;
       return best;
     };
     for (size_t k = 0; k < report.front.size(); ++k) {
       const Scored* best = measuredBest();
       const Scored& s = report.front[k];
-      if (!s.result.psnrAtMost || !within(s) || (best && *s.result.psnrAtMost < best->result.error.psnr)) continue;
+      if (!s.result.psnrAtMost || !mayTake(o, s) || (best && *s.result.psnrAtMost < best->result.error.psnr)) continue;
       Scored full;
       if (!render(frontCandidate[k], false, &full)) return std::nullopt;
       report.front[k] = std::move(full);
