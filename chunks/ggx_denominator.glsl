@@ -42,6 +42,15 @@ float ggx_d_scaled(float alpha, float NoH, vec3 n, vec3 h) {
     float q = GGX_D_SCALE * alpha * NoH;
     return dot(t, t) + q * q;
 }
+#elif defined(FACET_HALF_VECTOR_SCALED)
+// h and n·h arrive scaled by 2^6, folded into the half vector's normalization
+// (shade_standard_direct): d' = |(n × h', α n·h')|² with h' = 2^6 h, the same terms. fp16: 2^6 is
+// exact, so every term is the one above, and a component of n × h' is flushed only below 2^-14,
+// where the form above flushed below 2^-14 before scaling.
+float ggx_d_scaled(float alpha, float NoH, vec3 n, vec3 h) {
+    vec4 t = vec4(cross(n, h), alpha * NoH);
+    return dot(t, t);
+}
 #else
 // d' = 2^12 (|n × h|² + (α n·h)²) = |2^6 (n × h, α n·h)|², one 4-vector.
 float ggx_d_scaled(float alpha, float NoH, vec3 n, vec3 h) {

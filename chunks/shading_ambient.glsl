@@ -63,6 +63,16 @@ vec3 specular_dominant_direction(vec3 n, vec3 r, float perceptualRoughness) {
 }
 #endif
 
+// The prefiltered environment along r at the material's roughness: with FACET_PRESHADED_ROUGHNESS
+// the preshader forms ibl_prefiltered.glsl's lod r (2 − r) · (levels − 1) once per instance
+// (facet_environmentLod, compiler/preshader.h), 3 FMA-pipe ops fewer per pixel (Mali-G57,
+// docs/tune.md's mid ablation); per pixel otherwise. A macro, as prefiltered_radiance_at_lod.
+#if defined(FACET_PRESHADED_ROUGHNESS) && !defined(FACET_SPECULAR_AA)
+#define material_prefiltered_radiance(r, perceptualRoughness) prefiltered_radiance_at_lod(r, params.facet_environmentLod)
+#else
+#define material_prefiltered_radiance(r, perceptualRoughness) prefiltered_radiance(r, perceptualRoughness)
+#endif
+
 // Specular ambient: the environment reflected about n, weighted by the tier's environment BRDF.
 vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
     vec3 f0 = material_f0(material);
@@ -82,10 +92,10 @@ vec3 shade_standard_ambient_specular(MaterialInputs material, vec3 n, vec3 v) {
 #if defined(FACET_ENERGY_COMPENSATION)
     shading_energy_compensation = energy_compensation(dfg, f0);
 #endif
-    vec3 specular = prefiltered_radiance(r, perceptualRoughness);
+    vec3 specular = material_prefiltered_radiance(r, perceptualRoughness);
 #elif defined(FACET_IBL_ANALYTIC)
     vec3 albedo = env_brdf_karis(f0, NoV, perceptualRoughness);
-    vec3 specular = prefiltered_radiance(r, perceptualRoughness);
+    vec3 specular = material_prefiltered_radiance(r, perceptualRoughness);
 #elif defined(FACET_IBL_SAMPLED)
     // The integral has f0 and Fresnel in it; the table gives only the compensation.
     vec3 albedo = vec3(1.0);

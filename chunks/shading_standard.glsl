@@ -138,15 +138,26 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
 
     vec3 v = viewHighp;
     vec3 l = lightHighp;
+    float NoV = max(dot(n, v), MIN_N_DOT_V);
+    float NoL = clamp(dot(n, l), 0.0, 1.0);
+#if defined(FACET_HALF_VECTOR_SCALED)
+    // h' = 2^6 h (GGX_D_SCALE), the scale folded into the normalization, where the only reader of
+    // h and n·h is the lobe's GGX denominator (ggx_denominator.glsl; the assembler's
+    // halfVectorScaled): 2 FMA-pipe ops fewer on Mali-G57 (docs/tune.md's mid ablation). l·h is
+    // l·h' / 2^6, exactly. fp16: for |v + l|² ≥ 2^-14 (a normal), 2^6 / |v + l| ≤ 2^13 and each
+    // component of h' is ≤ 2^6, n·h' and l·h' too; below it, as normalize, the sum is lost.
+    vec3 h = (v + l) * (GGX_D_SCALE * inversesqrt(dot(v + l, v + l)));
+    float NoH = clamp(dot(n, h), 0.0, GGX_D_SCALE);
+    float LoH = clamp(dot(l, h) * (1.0 / GGX_D_SCALE), 0.0, 1.0);
+#else
 #if defined(SPECULAR_HALF_VECTOR_HIGHP)
     vec3 h = half_vector(viewHighp, lightHighp);
 #else
     vec3 h = half_vector(v, l);
 #endif
-    float NoV = max(dot(n, v), MIN_N_DOT_V);
-    float NoL = clamp(dot(n, l), 0.0, 1.0);
     float NoH = clamp(dot(n, h), 0.0, 1.0);
     float LoH = clamp(dot(l, h), 0.0, 1.0);
+#endif
 
 #if defined(FACET_ANISOTROPY_LOBE)
     // The anisotropic lobe replaces the tier's (anisotropy_ggx_smith.glsl), without the energy
@@ -212,6 +223,12 @@ vec3 shade_standard_direct(MaterialInputs material, vec3 n, highp vec3 viewHighp
     // Diffuse is lit per vertex (forward.vert.glsl): only specular remains per pixel.
 #if defined(FACET_CLEAR_COAT_LOBE) || (defined(FACET_SHEEN_LAYER) && defined(FACET_SHEEN_LOBE))
     return min(specular * irradiance + coat, MEDIUMP_FLT_MAX);
+#elif defined(SPECULAR_LOBE_SCALAR) && !defined(FACET_ENERGY_COMPENSATION) && !defined(FACET_ANISOTROPY_LOBE)
+    // A scalar lobe s (times f0) as (s · n·l) · (f0 · E): the same product, one FMA-pipe op fewer
+    // on Mali-G57 than (s f0)(E n·l), which the shader compiler does not reassociate itself
+    // (docs/tune.md's mid ablation). fp16: s ≤ 65504 (saturated) and n·l ∈ [0, 1], so s · n·l is
+    // finite and 0 where n·l = 0; f0 · E is finite; their product, at worst +inf, is clamped.
+    return min((specular_lobe_scalar(alpha, NoH, LoH, n, h) * NoL) * (f0 * lightColor), MEDIUMP_FLT_MAX);
 #else
     return min(specular * irradiance, MEDIUMP_FLT_MAX);
 #endif

@@ -140,6 +140,16 @@ bool viewVectorMediump(const AssemblyInput& in) {
   return !highpHalfLobe || shadesCloth(in);
 }
 
+// The Zioma lobe alone over the base takes the half vector scaled by GGX_D_SCALE = 2^6, folded into
+// its normalization (FACET_HALF_VECTOR_SCALED: chunks/shading_standard.glsl, ggx_denominator.glsl).
+// Every reader of h and n·h in such a variant is that lobe's GGX denominator; a clear coat's lobe,
+// a sheen layer and the anisotropic lobe read them unscaled, and the cloth model has no such lobe.
+bool halfVectorScaled(const AssemblyInput& in) {
+  const bool clearCoatLobe = writesClearCoat(in) && in.tier.clearCoat == permutations::ClearCoatModel::GgxKelemen;
+  return in.material.shading == "lit" && !shadesCloth(in) && in.tier.specular == permutations::SpecularModel::Zioma &&
+         !clearCoatLobe && !shadesSheenLayer(in) && !shadesAnisotropicLobe(in);
+}
+
 bool needs(const AssemblyInput& in, const OptionalInput& v) {
   if (v.location == abi::kAttribTangent) return needsTangentFrame(in);
   return in.surface.attributes.count(std::string(v.name())) > 0;
@@ -264,6 +274,7 @@ std::string prologue(const AssemblyInput& in, Flavour flavour, const char* stage
   else
     s += "#define FACET_TO_EYE v_toEye\n";
   if (viewVectorMediump(in)) s += "#define FACET_VIEW_VECTOR_MEDIUMP 1\n";
+  if (halfVectorScaled(in)) s += "#define FACET_HALF_VECTOR_SCALED 1\n";
   if (in.material.shading == "lit" && in.material.surface.outputs.count("ambientOcclusion") > 0) {
     s += "#define FACET_MATERIAL_AMBIENT_OCCLUSION 1\n";
     s += "// Ambient occlusion: " +

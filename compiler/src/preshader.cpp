@@ -267,13 +267,15 @@ const PreshadedMember* member(const PreshadeLayout& layout, std::string_view nam
   return nullptr;
 }
 
-// A `const float NAME = value;` of a chunk: the preshader's bounds are the chunks' own.
+// A chunk's `const float NAME = value;` or `#define NAME value`: the preshader's bounds and
+// coefficients are the chunks' own.
 float chunkConstant(const char* chunk, const char* name) {
   const std::string& text = glslLibrary().at(chunk);
-  const std::string decl = std::string("const float ") + name + " = ";
-  const size_t at = text.find(decl);
-  if (at == std::string::npos) throw std::logic_error(std::string("chunks/") + chunk + " defines no " + name);
-  return std::strtof(text.c_str() + at + decl.size(), nullptr);
+  for (const std::string& decl : {std::string("const float ") + name + " = ", std::string("#define ") + name + " "}) {
+    const size_t at = text.find(decl);
+    if (at != std::string::npos) return std::strtof(text.c_str() + at + decl.size(), nullptr);
+  }
+  throw std::logic_error(std::string("chunks/") + chunk + " defines no " + name);
 }
 
 // lod = r · ((levels − 1) · (2 − r)): chunks/ibl_prefiltered.glsl's prefiltered_radiance, in its
@@ -339,7 +341,12 @@ PreshadeLayout planPreshade(const ir::Material& material, const ParamLayout& par
   if (layout.diffuseColor) addMember(layout, &offset, "vec3", "facet_diffuseColor", 3);
   if (layout.roughness) addMember(layout, &offset, "float", "facet_perceptualRoughness", 1);
   if (layout.f0) addMember(layout, &offset, "vec3", "facet_f0", 3);
-  if (layout.roughness) addMember(layout, &offset, "float", "facet_alpha", 1);
+  if (layout.roughness) {
+    addMember(layout, &offset, "float", "facet_alpha", 1);
+    addMember(layout, &offset, "float", "facet_environmentLod", 1);
+    addMember(layout, &offset, "float", "facet_ggxAlphaScaled", 1);
+    addMember(layout, &offset, "float", "facet_ziomaRoughnessFactor", 1);
+  }
   if (layout.sheenColor) addMember(layout, &offset, "vec3", "facet_sheenColor", 3);
   if (layout.sheenRoughness) addMember(layout, &offset, "float", "facet_sheenLod", 1);
   if (layout.sheenRoughness && !material.cloth) {
@@ -398,9 +405,29 @@ std::vector<PreshaderOp> preshaderProgram(const ir::Material& material, const Pa
   }
   b.endGroup(standardGroup);
   if (layout.roughness) {
+    const unsigned group = b.groupStart();
     auto alpha = b.binary(PreshaderOpcode::Mul, *in.roughness, *in.roughness);
     b.store(*in.roughness, member(layout, "facet_perceptualRoughness")->offset, 1);
     b.store(*alpha, member(layout, "facet_alpha")->offset, 1);
+    // The environment's lod (material_prefiltered_radiance, shading_ambient.glsl).
+    b.store(*environmentLod(b, *in.roughness), member(layout, "facet_environmentLod")->offset, 1);
+    b.endGroup(group);
+  }
+  // 2^12 α (GGX_D_SCALE2 · α, ggx_denominator.glsl) and Zioma's 4π (p α + q) (specular_zioma.glsl),
+  // which specular_zioma_lobe.glsl reads (a cloth variant compiles the tier's lobe too, unread).
+  if (layout.roughness) {
+    const unsigned group = b.groupStart();
+    auto broadcast = [&](float k) { return *b.constant({k, k, k, k}); };
+    auto alpha = b.binary(PreshaderOpcode::Mul, *in.roughness, *in.roughness);
+    b.store(*b.binary(PreshaderOpcode::Mul, broadcast(chunkConstant("ggx_denominator.glsl", "GGX_D_SCALE2")), *alpha),
+            member(layout, "facet_ggxAlphaScaled")->offset, 1);
+    auto pAlpha =
+        b.binary(PreshaderOpcode::Mul, broadcast(chunkConstant("specular_zioma.glsl", "ZIOMA_ROUGH_SCALE")), *alpha);
+    auto sum =
+        b.binary(PreshaderOpcode::Add, *pAlpha, broadcast(chunkConstant("specular_zioma.glsl", "ZIOMA_ROUGH_BIAS")));
+    auto factor = b.binary(PreshaderOpcode::Mul, broadcast(4.0f * chunkConstant("math.glsl", "PI")), *sum);
+    b.store(*factor, member(layout, "facet_ziomaRoughnessFactor")->offset, 1);
+    b.endGroup(group);
   }
   auto store = [&](std::optional<uint8_t> r, const char* name) {
     const PreshadedMember* m = member(layout, name);

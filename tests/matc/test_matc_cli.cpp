@@ -183,7 +183,7 @@ TEST(MatcCli, CompileIsQuietOnAPipeAndInfoJsonDescribesThePackage) {
   nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["material"], "red_plastic");
   EXPECT_EQ(doc["format"], "1.6");                 // 1.6: shaders read per-instance transforms
-  EXPECT_EQ(doc["preshadedBlockSize"], 64);        // 32 bytes of parameters, 32 of derived inputs
+  EXPECT_EQ(doc["preshadedBlockSize"], 80);        // 32 bytes of parameters, 48 of derived inputs
   ASSERT_EQ(doc["preshaderPrograms"].size(), 1u);  // every tier is linear: one program
   EXPECT_EQ(doc["preshaderPrograms"][0]["variants"].size(), 8u);
   ASSERT_EQ(doc["variants"].size(), 8u);

@@ -165,11 +165,11 @@ TEST(PackageInterface, DroppedPreshaderIsABlockSizeErrorOnBothBackends) {
   p.preshader = {};
   expectContains(
       programError(p, "high.dir1"),
-      "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) reads MaterialParams as 64 bytes, "
+      "material 'red_plastic' variant high.dir1: the fragment shader (SPIR-V) reads MaterialParams as 76 bytes, "
       "but the runtime binds 32");
   expectContains(
       glDrawError(withoutSpirv(p), "scenes/sphere.json", "high"),
-      "draw 0: material 'red_plastic' variant high.dir1: the fragment shader (GLSL ES) reads MaterialParams as 64 "
+      "draw 0: material 'red_plastic' variant high.dir1: the fragment shader (GLSL ES) reads MaterialParams as 80 "
       "bytes, but the runtime binds 32");
 }
 

@@ -107,7 +107,7 @@ TEST(PreshaderRender, AnInstancesParameterChangeRerunsThePreshader) {
   auto material = facet::runtime::Material::create(std::move(*loaded), {scene->tier, true, 0}, &error);
   ASSERT_NE(material, nullptr) << error;
   auto instance = material->createInstance();
-  ASSERT_EQ(instance->block().bytes.size(), 64u) << "32 bytes of parameters and 32 of derived inputs";
+  ASSERT_EQ(instance->block().bytes.size(), 80u) << "32 bytes of parameters and 48 of derived inputs (std140)";
   auto derived = [&](uint32_t offset) {
     float v;
     std::memcpy(&v, instance->block().bytes.data() + offset, 4);

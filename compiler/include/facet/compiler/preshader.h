@@ -1,12 +1,14 @@
 // The preshader (Unreal's term): the shading inputs that depend only on parameters leave the
 // fragment stage: the standard model's (diffuse colour, f0, clamped perceptual roughness and
-// α = r², chunks/shading_standard.glsl) and the other models' terms of their own inputs (the clear
-// coat's strength, α_c and environment lod; anisotropy's k, (α_t, α_b) and bend; the sheen's colour, r_s,
-// α_s and environment lod: docs/material-models.md). The compiler appends them to "MaterialParams" as members after the
-// parameters and writes, per variant, a program (package::PreshaderProgram) that the runtime runs
-// on the CPU whenever an instance's parameters change. The program holds the surface program's
-// expressions for the inputs and the model's derivations as plain ops, so the runtime needs no
-// shading knowledge. docs/package-format.md ("PRSH") and docs/eval.md (what it saves).
+// α = r², chunks/shading_standard.glsl, and the roughness's terms the lit chunks read: the
+// environment's lod, 2^12 α and the Zioma lobe's 4π (p α + q)) and the other models' terms of
+// their own inputs (the clear coat's strength, α_c and environment lod; anisotropy's k, (α_t, α_b)
+// and bend; the sheen's colour, r_s, α_s and environment lod: docs/material-models.md). The
+// compiler appends them to "MaterialParams" as members after the parameters and writes, per
+// variant, a program (package::PreshaderProgram) that the runtime runs on the CPU whenever an
+// instance's parameters change. The program holds the surface program's expressions for the
+// inputs and the model's derivations as plain ops, so the runtime needs no shading knowledge.
+// docs/package-format.md ("PRSH") and docs/eval.md (what it saves).
 #pragma once
 
 #include <cstdint>
@@ -35,8 +37,10 @@ struct PreshadedMember {
 struct PreshadeLayout {
   bool diffuseColor = false;  // FACET_PRESHADED_DIFFUSE_COLOR: from baseColor, metallic
   bool f0 = false;            // FACET_PRESHADED_F0: from baseColor, metallic, reflectance
-  bool roughness = false;     // FACET_PRESHADED_ROUGHNESS: perceptual roughness and α, from roughness
-  bool clearCoat = false;     // FACET_PRESHADED_CLEAR_COAT: the coat's strength, from clearCoat
+  // FACET_PRESHADED_ROUGHNESS: perceptual roughness, α, the environment's lod, 2^12 α and Zioma's
+  // 4π (p α + q), from roughness
+  bool roughness = false;
+  bool clearCoat = false;  // FACET_PRESHADED_CLEAR_COAT: the coat's strength, from clearCoat
   // FACET_PRESHADED_CLEAR_COAT_ROUGHNESS: α_c = r_c² and the coat's environment lod, from clearCoatRoughness
   bool clearCoatRoughness = false;
   // FACET_PRESHADED_ANISOTROPY: k, (α_t, α_b) and the reflection's bend, from anisotropy and roughness

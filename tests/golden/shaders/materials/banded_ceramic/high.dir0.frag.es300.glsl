@@ -3,6 +3,7 @@ precision mediump float;
 precision highp int;
 in highp vec3 v_worldPosition;
 in mediump vec3 v_normal;
+in mediump vec3 v_diffuseLight;
 layout(location=0)out mediump vec4 fragColor;
 struct PunctualLightData{
 highp vec4 positionFalloff;
@@ -31,7 +32,6 @@ mediump float bandSharpness;
 params;
 uniform mediump samplerCube facet_environment;
 uniform mediump sampler2D facet_dfgLut;
-uniform mediump samplerCube facet_irradiance;
 const float MIN_PERCEPTUAL_ROUGHNESS=0.089;
 const float MIN_N_DOT_V=1e-4;
 struct MaterialInputs{
@@ -72,9 +72,6 @@ material.roughness=t5;
 highp float t6=mix(0.35,0.6,m_glaze);
 material.reflectance=t6;
 }
-vec3 cube_irradiance_over_pi(vec3 n){
-return textureLod(facet_irradiance,n,0.0).rgb;
-}
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
@@ -98,9 +95,6 @@ return clamp(material.roughness,MIN_PERCEPTUAL_ROUGHNESS,1.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;
-}
-vec3 shade_standard_ambient(MaterialInputs material,vec3 irradianceOverPi){
-return apply_ambient_occlusion(material,material_diffuse_color(material)*irradianceOverPi);
 }
 vec3 shade_standard_ambient_specular(MaterialInputs material,vec3 n,vec3 v){
 vec3 f0=material_f0(material);
@@ -128,7 +122,7 @@ shading_view_for_lights=normalize((frame.cameraPosition.xyz-v_worldPosition));
 shading_view=shading_view_for_lights;
 MaterialInputs material=material_defaults();
 evaluate_surface(material);
-vec3 color=shade_standard_ambient(material,cube_irradiance_over_pi(shading_normal));
+vec3 color=apply_ambient_occlusion(material,material_diffuse_color(material)*v_diffuseLight);
 color=linear_from_shading_space(color);
 color=add_light(color,shade_standard_ambient_specular(material,shading_normal,shading_view));
 fragColor=blend_output(add_light(color,linear_from_shading_space(material.emissive)),material.alpha);

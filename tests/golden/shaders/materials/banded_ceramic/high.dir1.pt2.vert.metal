@@ -3,14 +3,6 @@
 
 using namespace metal;
 
-struct ObjectUniforms
-{
-    float4 positionScale;
-    float4 positionOffset;
-    float4 uv0ScaleOffset;
-    float4 uv1ScaleOffset;
-};
-
 struct PunctualLightData
 {
     float4 positionFalloff;
@@ -30,10 +22,19 @@ struct FrameUniforms
     float4 sh[9];
 };
 
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
 struct main0_out
 {
     float3 v_worldPosition [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
+    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -49,21 +50,42 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
-    out.v_worldPosition = _51.xyz;
-    float3 _68 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _130;
-    if (dot(in.a_instanceRow0.xyz, _68) < 0.0)
+    float4 _266 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _281 = float4(dot(in.a_instanceRow0, _266), dot(in.a_instanceRow1, _266), dot(in.a_instanceRow2, _266), 1.0);
+    float3 _285 = _281.xyz;
+    out.v_worldPosition = _285;
+    float3 _298 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _733;
+    if (dot(in.a_instanceRow0.xyz, _298) < 0.0)
     {
-        _130 = -in.a_normal;
+        _733 = -in.a_normal;
     }
     else
     {
-        _130 = in.a_normal;
+        _733 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_130 * float3x3(_68, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.gl_Position = frame.viewProjection * _51;
+    out.v_normal = fast::normalize(_733 * float3x3(_298, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    half3 _742 = half3(out.v_normal);
+    half _437 = _742.y;
+    half3 _744 = half3(out.v_normal);
+    half _442 = _744.z;
+    half3 _746 = half3(out.v_normal);
+    half _447 = _746.x;
+    float3 _515 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_437))) + (frame.sh[2].xyz * float(_442))) + (frame.sh[3].xyz * float(_447))) + (((((frame.sh[4].xyz * (float(_447) * float(_437))) + (frame.sh[5].xyz * (float(_437) * float(_442)))) + (frame.sh[6].xyz * fma(3.0 * float(_442), float(_442), -1.0))) + (frame.sh[7].xyz * (float(_447) * float(_442)))) + (frame.sh[8].xyz * fma(float(_447), float(_447), -(float(_437) * float(_437))))), float3(0.0));
+    float3 _546 = float3(frame.punctualLights[0].positionFalloff.xyz) - _285;
+    float _549 = dot(_546, _546);
+    float3 _554 = _546 * rsqrt(fast::max(_549, 9.9999999392252902907785028219223e-09));
+    float _558 = _549 * float(frame.punctualLights[0].positionFalloff.w);
+    float _563 = fast::clamp(fma(-_558, _558, 1.0), 0.0, 1.0);
+    float _582 = fast::clamp(fma(dot(-_554, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float3 _624 = float3(frame.punctualLights[1].positionFalloff.xyz) - _285;
+    float _627 = dot(_624, _624);
+    float3 _632 = _624 * rsqrt(fast::max(_627, 9.9999999392252902907785028219223e-09));
+    float _636 = _627 * float(frame.punctualLights[1].positionFalloff.w);
+    float _641 = fast::clamp(fma(-_636, _636, 1.0), 0.0, 1.0);
+    float _660 = fast::clamp(fma(dot(-_632, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    out.v_diffuseLight = ((_515 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_563 * _563) / fast::max(_549, 9.9999997473787516355514526367188e-05)) * _582) * _582), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _554), 0.0, 1.0) * 0.3183098733425140380859375))) + (fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_641 * _641) / fast::max(_627, 9.9999997473787516355514526367188e-05)) * _660) * _660), float3(65504.0)) * (fast::clamp(dot(out.v_normal, _632), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _281;
     return out;
 }
 

@@ -8,6 +8,7 @@ layout(location=7)in highp vec4 a_instanceRow1;
 layout(location=8)in highp vec4 a_instanceRow2;
 out highp vec3 v_worldPosition;
 out mediump vec3 v_normal;
+out mediump vec3 v_diffuseLight;
 struct PunctualLightData{
 highp vec4 positionFalloff;
 highp vec4 colorIntensity;
@@ -31,6 +32,20 @@ highp vec4 uv0ScaleOffset;
 highp vec4 uv1ScaleOffset;
 }
 object;
+vec3 sh_irradiance_over_pi(vec3 n){
+vec3 c0=frame.sh[0].rgb;
+vec3 c1=frame.sh[1].rgb;
+vec3 c2=frame.sh[2].rgb;
+vec3 c3=frame.sh[3].rgb;
+vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
+vec3 c4=frame.sh[4].rgb;
+vec3 c5=frame.sh[5].rgb;
+vec3 c6=frame.sh[6].rgb;
+vec3 c7=frame.sh[7].rgb;
+vec3 c8=frame.sh[8].rgb;
+e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
+return max(e,vec3(0.0));
+}
 void main(){
 highp vec3 position=a_position*object.positionScale.xyz+object.positionOffset.xyz;
 highp vec4 objectPosition=vec4(position,1.0);
@@ -40,5 +55,9 @@ highp vec3 row0=a_instanceRow0.xyz,row1=a_instanceRow1.xyz,row2=a_instanceRow2.x
 highp vec3 cofactor0=cross(row1,row2);
 highp vec3 objectNormal=dot(row0,cofactor0)<0.0?-a_normal:a_normal;
 v_normal=normalize(objectNormal*mat3(cofactor0,cross(row2,row0),cross(row0,row1)));
+vec3 n=v_normal;
+vec3 irradiance=sh_irradiance_over_pi(n);
+irradiance+=frame.lightColor.rgb*(clamp(dot(n,frame.lightDirection.xyz),0.0,1.0)*0.31830988618);
+v_diffuseLight=irradiance;
 gl_Position=frame.viewProjection*worldPosition;
 }

@@ -3,14 +3,6 @@
 
 using namespace metal;
 
-struct ObjectUniforms
-{
-    float4 positionScale;
-    float4 positionOffset;
-    float4 uv0ScaleOffset;
-    float4 uv1ScaleOffset;
-};
-
 struct PunctualLightData
 {
     float4 positionFalloff;
@@ -30,10 +22,19 @@ struct FrameUniforms
     float4 sh[9];
 };
 
+struct ObjectUniforms
+{
+    float4 positionScale;
+    float4 positionOffset;
+    float4 uv0ScaleOffset;
+    float4 uv1ScaleOffset;
+};
+
 struct main0_out
 {
     float3 v_worldPosition [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
+    float3 v_diffuseLight [[user(locn2)]];
     float4 gl_Position [[position]];
 };
 
@@ -49,21 +50,29 @@ struct main0_in
 vertex main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant ObjectUniforms& object [[buffer(1)]])
 {
     main0_out out = {};
-    float4 _36 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
-    float4 _51 = float4(dot(in.a_instanceRow0, _36), dot(in.a_instanceRow1, _36), dot(in.a_instanceRow2, _36), 1.0);
-    out.v_worldPosition = _51.xyz;
-    float3 _68 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
-    float3 _130;
-    if (dot(in.a_instanceRow0.xyz, _68) < 0.0)
+    float4 _170 = float4(fma(in.a_position, object.positionScale.xyz, object.positionOffset.xyz), 1.0);
+    float4 _185 = float4(dot(in.a_instanceRow0, _170), dot(in.a_instanceRow1, _170), dot(in.a_instanceRow2, _170), 1.0);
+    out.v_worldPosition = _185.xyz;
+    float3 _202 = cross(in.a_instanceRow1.xyz, in.a_instanceRow2.xyz);
+    float3 _396;
+    if (dot(in.a_instanceRow0.xyz, _202) < 0.0)
     {
-        _130 = -in.a_normal;
+        _396 = -in.a_normal;
     }
     else
     {
-        _130 = in.a_normal;
+        _396 = in.a_normal;
     }
-    out.v_normal = fast::normalize(_130 * float3x3(_68, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
-    out.gl_Position = frame.viewProjection * _51;
+    out.v_normal = fast::normalize(_396 * float3x3(_202, cross(in.a_instanceRow2.xyz, in.a_instanceRow0.xyz), cross(in.a_instanceRow0.xyz, in.a_instanceRow1.xyz)));
+    half3 _402 = half3(out.v_normal);
+    half _302 = _402.y;
+    half3 _404 = half3(out.v_normal);
+    half _307 = _404.z;
+    half3 _406 = half3(out.v_normal);
+    half _312 = _406.x;
+    float3 _380 = fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * float(_302))) + (frame.sh[2].xyz * float(_307))) + (frame.sh[3].xyz * float(_312))) + (((((frame.sh[4].xyz * (float(_312) * float(_302))) + (frame.sh[5].xyz * (float(_302) * float(_307)))) + (frame.sh[6].xyz * fma(3.0 * float(_307), float(_307), -1.0))) + (frame.sh[7].xyz * (float(_312) * float(_307)))) + (frame.sh[8].xyz * fma(float(_312), float(_312), -(float(_302) * float(_302))))), float3(0.0));
+    out.v_diffuseLight = _380 + (frame.lightColor.xyz * (fast::clamp(dot(out.v_normal, frame.lightDirection.xyz), 0.0, 1.0) * 0.3183098733425140380859375));
+    out.gl_Position = frame.viewProjection * _185;
     return out;
 }
 

@@ -49,12 +49,12 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     main0_out out = {};
     half3 _313 = normalize(half3(in.v_normal));
     float3 _330 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _419 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
-    half _519 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _419)), half(0.0), half(1.0));
-    half _536 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _419)), half(0.08900000154972076416015625), half(1.0));
-    float4 _543 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_313, half3(_330)), half(9.9999997473787516355514526367188e-05)), _536)), level(0.0));
-    float4 _562 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_330), _313)), level(_536 * (half(4.0) * (half(2.0) - _536))));
-    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_419))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_562).xyz * mix(half4(_543).xxx, half4(_543).yyy, half3((half(0.1599999964237213134765625) * _519) * _519))), half(1.0)));
+    float _421 = smoothstep(float(-half(params.bandSharpness)), params.bandSharpness, sin((in.v_worldPosition.y * params.bandsPerUnit) * 6.283185482025146484375));
+    half _521 = clamp(half(mix(0.3499999940395355224609375, 0.60000002384185791015625, _421)), half(0.0), half(1.0));
+    half _538 = clamp(half(mix(params.clayRoughness, params.glazeRoughness, _421)), half(0.08900000154972076416015625), half(1.0));
+    float4 _545 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_313, half3(_330)), half(9.9999997473787516355514526367188e-05)), _538)), level(0.0));
+    float4 _564 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_330), _313)), level(_538 * (half(4.0) * (half(2.0) - _538))));
+    out.fragColor = float4(half4(fma(clamp(half3(mix(float3(params.clayColor), params.glazeColor, float3(_421))), half3(float3(0.0)), half3(float3(1.0))) * half(1.0), half3(in.v_diffuseLight), half4(_564).xyz * mix(half4(_545).xxx, half4(_545).yyy, half3((half(0.1599999964237213134765625) * _521) * _521))), half(1.0)));
     return out;
 }
 

@@ -73,18 +73,26 @@ highp float t6=mix(0.35,0.6,m_glaze);
 material.reflectance=t6;
 }
 float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
-vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
+vec4 t=vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
 }
-const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
-float d=ggx_d_scaled(alpha,NoH,n,h);
-float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
-return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
+const float ZIOMA_LOH2_MIN=0.15;
+const float ZIOMA_ROUGH_SCALE= -0.3125;
+const float ZIOMA_ROUGH_BIAS=1.0082;
+float specular_zioma_form_d(float alpha,float d,float LoH,float loH2Min,float roughScale,float roughBias){
+float x=(4.0*3.14159265359)*max(LoH*LoH,loH2Min)*(roughScale*alpha+roughBias);
+float k=alpha/(d*x);
+return min(k*k*x,65504.0);
+}
+float specular_zioma_nxh(float alpha,float NoH,vec3 n,vec3 h,float LoH){
+float d=ggx_d_scaled(alpha,NoH,n,h)*(1.0/4096.0);
+return specular_zioma_form_d(alpha,d,LoH,ZIOMA_LOH2_MIN,ZIOMA_ROUGH_SCALE,ZIOMA_ROUGH_BIAS);
+}
+float specular_lobe_scalar(float alpha,float NoH,float LoH,vec3 n,vec3 h){
+return specular_zioma_nxh(alpha,NoH,n,h,LoH);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
+return specular_lobe_scalar(alpha,NoH,LoH,n,h)*f0;
 }
 vec3 prefiltered_radiance(vec3 direction,float r){
 return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
@@ -111,23 +119,20 @@ float material_alpha(MaterialInputs material){
 float perceptualRoughness=material_perceptual_roughness(material);
 return perceptualRoughness*perceptualRoughness;
 }
-vec3 half_vector(vec3 v,vec3 l){
-return normalize(v+l);
-}
 vec3 shade_standard_direct(MaterialInputs material,vec3 n,highp vec3 viewHighp,highp vec3 lightHighp,vec3 lightColor){
 vec3 f0=material_f0(material);
 float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(v,l);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
-float NoH=clamp(dot(n,h),0.0,1.0);
-float LoH=clamp(dot(l,h),0.0,1.0);
+vec3 h=(v+l)*(64.0*inversesqrt(dot(v+l,v+l)));
+float NoH=clamp(dot(n,h),0.0,64.0);
+float LoH=clamp(dot(l,h)*(1.0/64.0),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
 vec3 irradiance=lightColor*NoL;
-return min(specular*irradiance,65504.0);
+return min((specular_lobe_scalar(alpha,NoH,LoH,n,h)*NoL)*(f0*lightColor),65504.0);
 }
 vec3 apply_ambient_occlusion(MaterialInputs material,vec3 ambient){
 return ambient;

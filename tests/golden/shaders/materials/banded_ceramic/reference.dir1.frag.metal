@@ -60,15 +60,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float4 _1121 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1057, _1114), level(0.0));
     float3 _1140 = float3(1.0) + (_1105 * ((1.0 / _1121.y) - 1.0));
     float _1289 = _1114 * _1114;
+    float _1207 = fast::clamp(dot(_759, frame.lightDirection.xyz), 0.0, 1.0);
     float3 _1300 = fast::normalize(_766 + frame.lightDirection.xyz);
-    float _1210 = fast::clamp(dot(_759, frame.lightDirection.xyz), 0.0, 1.0);
     float4 _1362 = float4(cross(_759, _1300), _1289 * fast::clamp(dot(_759, _1300), 0.0, 1.0)) * 64.0;
     float _1344 = (4096.0 * _1289) / dot(_1362, _1362);
     float _1373 = _1289 * _1289;
     float _1379 = fma(-_1289, _1289, 1.0);
     float _1406 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1300), 0.0, 1.0);
     float _1409 = _1406 * _1406;
-    float3 _1439 = fma(_1022, fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _921)) + (frame.sh[2].xyz * _926)) + (frame.sh[3].xyz * _931)) + (((((frame.sh[4].xyz * (_931 * _921)) + (frame.sh[5].xyz * (_921 * _926))) + (frame.sh[6].xyz * fma(3.0 * _926, _926, -1.0))) + (frame.sh[7].xyz * (_931 * _926))) + (frame.sh[8].xyz * fma(_931, _931, -(_921 * _921)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_766, _759), level(_1114 * (4.0 * (2.0 - _1114)))).xyz * (mix(_1121.xxx, _1121.yyy, _1105) * _1140)) + fast::min(fma((_1105 + ((float3(1.0) - _1105) * ((_1409 * _1409) * _1406))) * (((_1344 * _1344) * 0.3183098733425140380859375) * (0.5 / fma(_1210, sqrt(fma(_1057 * _1057, _1379, _1373)), _1057 * sqrt(fma(_1210 * _1210, _1379, _1373))))), _1140, _1022 * 0.3183098733425140380859375) * (frame.lightColor.xyz * _1210), float3(65504.0));
+    float3 _1439 = fma(_1022, fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _921)) + (frame.sh[2].xyz * _926)) + (frame.sh[3].xyz * _931)) + (((((frame.sh[4].xyz * (_931 * _921)) + (frame.sh[5].xyz * (_921 * _926))) + (frame.sh[6].xyz * fma(3.0 * _926, _926, -1.0))) + (frame.sh[7].xyz * (_931 * _926))) + (frame.sh[8].xyz * fma(_931, _931, -(_921 * _921)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_766, _759), level(_1114 * (4.0 * (2.0 - _1114)))).xyz * (mix(_1121.xxx, _1121.yyy, _1105) * _1140)) + fast::min(fma((_1105 + ((float3(1.0) - _1105) * ((_1409 * _1409) * _1406))) * (((_1344 * _1344) * 0.3183098733425140380859375) * (0.5 / fma(_1207, sqrt(fma(_1057 * _1057, _1379, _1373)), _1057 * sqrt(fma(_1207 * _1207, _1379, _1373))))), _1140, _1022 * 0.3183098733425140380859375) * (frame.lightColor.xyz * _1207), float3(65504.0));
     out.fragColor = float4(_1439, 1.0);
     return out;
 }

@@ -11,6 +11,9 @@ struct MaterialParams
     char _m3_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct main0_out
@@ -27,11 +30,11 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _401 = normalize(half3(in.v_normal));
-    float3 _405 = fast::normalize(in.v_toEye);
-    float4 _674 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_401, half3(_405)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _703 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_405), _401)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(half4(_703).xyz * (mix(half4(_674).xxx, half4(_674).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_674).y) - half(1.0))))), half(1.0)));
+    half3 _384 = normalize(half3(in.v_normal));
+    float3 _388 = fast::normalize(in.v_toEye);
+    float4 _658 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_384, half3(_388)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _634 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_388), _384)), level(params.facet_environmentLod));
+    out.fragColor = float4(half4(half4(_634).xyz * (mix(half4(_658).xxx, half4(_658).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_658).y) - half(1.0))))), half(1.0)));
     return out;
 }
 

@@ -11,6 +11,9 @@ struct MaterialParams
     char _m3_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -46,22 +49,22 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _686 = normalize(half3(in.v_normal));
-    float3 _690 = fast::normalize(in.v_toEye);
-    half _941 = max(dot(_686, half3(_690)), half(9.9999997473787516355514526367188e-05));
-    float4 _980 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_941, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _999 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_980).y) - half(1.0)));
-    float4 _1009 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_690), _686)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    float3 _1125 = fast::normalize(_690 + frame.lightDirection.xyz);
-    half _1069 = clamp(dot(_686, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
-    half4 _1190 = half4(cross(_686, half3(_1125)), half(params.facet_alpha) * clamp(dot(_686, half3(_1125)), half(0.0), half(1.0))) * half(64.0);
-    half _1171 = (half(4096.0) * half(params.facet_alpha)) / dot(_1190, _1190);
-    half _1201 = half(params.facet_alpha) * half(params.facet_alpha);
-    half _1207 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
-    half _1235 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1125)), half(0.0), half(1.0));
-    half _1238 = _1235 * _1235;
-    half4 _1283 = half4(fma(half4(_1009).xyz, mix(half4(_980).xxx, half4(_980).yyy, half3(float3(params.facet_f0))) * _999, min((((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1238 * _1238) * _1235))) * min(min((_1171 * _1171) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1069, sqrt(fma(_941 * _941, _1207, _1201)), _941 * sqrt(fma(_1069 * _1069, _1207, _1201))), half(65504.0)), half(65504.0))) * _999) * (half4(frame.lightColor).xyz * _1069), half3(float3(65504.0)))), half(1.0));
-    out.fragColor = float4(_1283);
+    half3 _670 = normalize(half3(in.v_normal));
+    float3 _674 = fast::normalize(in.v_toEye);
+    half _923 = max(dot(_670, half3(_674)), half(9.9999997473787516355514526367188e-05));
+    float4 _965 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_923, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _984 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_965).y) - half(1.0)));
+    float4 _941 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_674), _670)), level(params.facet_environmentLod));
+    half _1040 = clamp(dot(_670, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
+    float3 _1099 = fast::normalize(_674 + frame.lightDirection.xyz);
+    half4 _1164 = half4(cross(_670, half3(_1099)), half(params.facet_alpha) * clamp(dot(_670, half3(_1099)), half(0.0), half(1.0))) * half(64.0);
+    half _1145 = (half(4096.0) * half(params.facet_alpha)) / dot(_1164, _1164);
+    half _1175 = half(params.facet_alpha) * half(params.facet_alpha);
+    half _1181 = fma(half(-params.facet_alpha), half(params.facet_alpha), half(1.0));
+    half _1209 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1099)), half(0.0), half(1.0));
+    half _1212 = _1209 * _1209;
+    half4 _1257 = half4(fma(half4(_941).xyz, mix(half4(_965).xxx, half4(_965).yyy, half3(float3(params.facet_f0))) * _984, min((((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1212 * _1212) * _1209))) * min(min((_1145 * _1145) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1040, sqrt(fma(_923 * _923, _1181, _1175)), _923 * sqrt(fma(_1040 * _1040, _1181, _1175))), half(65504.0)), half(65504.0))) * _984) * (half4(frame.lightColor).xyz * _1040), half3(float3(65504.0)))), half(1.0));
+    out.fragColor = float4(_1257);
     return out;
 }
 

@@ -11,6 +11,9 @@ struct MaterialParams
     char _m3_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -46,37 +49,37 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _658 = normalize(half3(in.v_normal));
-    float3 _664 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    half _862 = max(dot(_658, half3(_664)), half(9.9999997473787516355514526367188e-05));
-    float4 _901 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_862, half(params.facet_perceptualRoughness))), level(0.0));
-    half3 _920 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_901).y) - half(1.0)));
-    float4 _930 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_664), _658)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    float3 _975 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _978 = dot(_975, _975);
-    float3 _983 = _975 * rsqrt(fast::max(_978, 9.9999999392252902907785028219223e-09));
-    float _987 = _978 * float(frame.punctualLights[0].positionFalloff.w);
-    float _992 = fast::clamp(fma(-_987, _987, 1.0), 0.0, 1.0);
-    float _1011 = fast::clamp(fma(dot(-_983, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1129 = normalize(half3(_664) + half3(_983));
-    half _1074 = clamp(dot(_658, half3(_983)), half(0.0), half(1.0));
-    half4 _1198 = half4(cross(_658, _1129), half(params.facet_alpha) * clamp(dot(_658, _1129), half(0.0), half(1.0))) * half(64.0);
-    half _1172 = half(4096.0) * half(params.facet_alpha);
-    half _1175 = half(6.283185482025146484375) * max(mix((half(2.0) * _1074) * _862, _1074 + _862, half(params.facet_alpha)), half(0.000244140625));
-    half _1177 = _1172 / (dot(_1198, _1198) * _1175);
-    float3 _1256 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1259 = dot(_1256, _1256);
-    float3 _1264 = _1256 * rsqrt(fast::max(_1259, 9.9999999392252902907785028219223e-09));
-    float _1268 = _1259 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1273 = fast::clamp(fma(-_1268, _1268, 1.0), 0.0, 1.0);
-    float _1292 = fast::clamp(fma(dot(-_1264, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    half3 _1410 = normalize(half3(_664) + half3(_1264));
-    half _1355 = clamp(dot(_658, half3(_1264)), half(0.0), half(1.0));
-    half4 _1479 = half4(cross(_658, _1410), half(params.facet_alpha) * clamp(dot(_658, _1410), half(0.0), half(1.0))) * half(64.0);
-    half _1456 = half(6.283185482025146484375) * max(mix((half(2.0) * _1355) * _862, _1355 + _862, half(params.facet_alpha)), half(0.000244140625));
-    half _1458 = _1172 / (dot(_1479, _1479) * _1456);
-    half3 _1501 = fma(half4(_930).xyz, mix(half4(_901).xxx, half4(_901).yyy, half3(float3(params.facet_f0))) * _920, min(((half3(float3(params.facet_f0)) * min(_1177 * (_1177 * _1175), half(65504.0))) * _920) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_992) * half(_992)) / fast::max(_978, 9.9999997473787516355514526367188e-05)) * half(_1011)) * half(_1011)), float3(65504.0))) * _1074), half3(float3(65504.0)))) + min(((half3(float3(params.facet_f0)) * min(_1458 * (_1458 * _1456), half(65504.0))) * _920) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1273) * half(_1273)) / fast::max(_1259, 9.9999997473787516355514526367188e-05)) * half(_1292)) * half(_1292)), float3(65504.0))) * _1355), half3(float3(65504.0)));
-    out.fragColor = float4(half4(_1501, half(1.0)));
+    half3 _642 = normalize(half3(in.v_normal));
+    float3 _648 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    half _844 = max(dot(_642, half3(_648)), half(9.9999997473787516355514526367188e-05));
+    float4 _886 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_844, half(params.facet_perceptualRoughness))), level(0.0));
+    half3 _905 = half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_886).y) - half(1.0)));
+    float4 _862 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_648), _642)), level(params.facet_environmentLod));
+    float3 _949 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _952 = dot(_949, _949);
+    float3 _957 = _949 * rsqrt(fast::max(_952, 9.9999999392252902907785028219223e-09));
+    float _961 = _952 * float(frame.punctualLights[0].positionFalloff.w);
+    float _966 = fast::clamp(fma(-_961, _961, 1.0), 0.0, 1.0);
+    float _985 = fast::clamp(fma(dot(-_957, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    half _1045 = clamp(dot(_642, half3(_957)), half(0.0), half(1.0));
+    half3 _1103 = normalize(half3(_648) + half3(_957));
+    half4 _1172 = half4(cross(_642, _1103), half(params.facet_alpha) * clamp(dot(_642, _1103), half(0.0), half(1.0))) * half(64.0);
+    half _1146 = half(4096.0) * half(params.facet_alpha);
+    half _1149 = half(6.283185482025146484375) * max(mix((half(2.0) * _1045) * _844, _1045 + _844, half(params.facet_alpha)), half(0.000244140625));
+    half _1151 = _1146 / (dot(_1172, _1172) * _1149);
+    float3 _1230 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1233 = dot(_1230, _1230);
+    float3 _1238 = _1230 * rsqrt(fast::max(_1233, 9.9999999392252902907785028219223e-09));
+    float _1242 = _1233 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1247 = fast::clamp(fma(-_1242, _1242, 1.0), 0.0, 1.0);
+    float _1266 = fast::clamp(fma(dot(-_1238, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1326 = clamp(dot(_642, half3(_1238)), half(0.0), half(1.0));
+    half3 _1384 = normalize(half3(_648) + half3(_1238));
+    half4 _1453 = half4(cross(_642, _1384), half(params.facet_alpha) * clamp(dot(_642, _1384), half(0.0), half(1.0))) * half(64.0);
+    half _1430 = half(6.283185482025146484375) * max(mix((half(2.0) * _1326) * _844, _1326 + _844, half(params.facet_alpha)), half(0.000244140625));
+    half _1432 = _1146 / (dot(_1453, _1453) * _1430);
+    half3 _1475 = fma(half4(_862).xyz, mix(half4(_886).xxx, half4(_886).yyy, half3(float3(params.facet_f0))) * _905, min(((half3(float3(params.facet_f0)) * min(_1151 * (_1151 * _1149), half(65504.0))) * _905) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_966) * half(_966)) / fast::max(_952, 9.9999997473787516355514526367188e-05)) * half(_985)) * half(_985)), float3(65504.0))) * _1045), half3(float3(65504.0)))) + min(((half3(float3(params.facet_f0)) * min(_1432 * (_1432 * _1430), half(65504.0))) * _905) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1247) * half(_1247)) / fast::max(_1233, 9.9999997473787516355514526367188e-05)) * half(_1266)) * half(_1266)), float3(65504.0))) * _1326), half3(float3(65504.0)));
+    out.fragColor = float4(half4(_1475, half(1.0)));
     return out;
 }
 

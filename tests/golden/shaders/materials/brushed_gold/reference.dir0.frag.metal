@@ -11,6 +11,9 @@ struct MaterialParams
     char _m3_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct main0_out
@@ -27,10 +30,10 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _401 = fast::normalize(in.v_normal);
-    float3 _405 = fast::normalize(in.v_toEye);
-    float4 _674 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_401, _405), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
-    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, reflect(-_405, _401), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_674.xxx, _674.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _674.y) - 1.0)))), 1.0);
+    float3 _384 = fast::normalize(in.v_normal);
+    float3 _388 = fast::normalize(in.v_toEye);
+    float4 _658 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_384, _388), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    out.fragColor = float4(facet_environment.sample(facet_environmentSmplr, reflect(-_388, _384), level(params.facet_environmentLod)).xyz * (mix(_658.xxx, _658.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _658.y) - 1.0)))), 1.0);
     return out;
 }
 

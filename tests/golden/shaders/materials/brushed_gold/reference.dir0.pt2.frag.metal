@@ -11,6 +11,9 @@ struct MaterialParams
     char _m3_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -46,42 +49,42 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _778 = fast::normalize(in.v_normal);
-    float3 _784 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
-    float _1051 = fast::max(dot(_778, _784), 9.9999997473787516355514526367188e-05);
-    float4 _1090 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1051, params.facet_perceptualRoughness), level(0.0));
-    float3 _1109 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1090.y) - 1.0));
-    float3 _1163 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
-    float _1166 = dot(_1163, _1163);
-    float3 _1171 = _1163 * rsqrt(fast::max(_1166, 9.9999999392252902907785028219223e-09));
-    float _1175 = _1166 * float(frame.punctualLights[0].positionFalloff.w);
-    float _1180 = fast::clamp(fma(-_1175, _1175, 1.0), 0.0, 1.0);
-    float _1199 = fast::clamp(fma(dot(-_1171, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1314 = fast::normalize(_784 + _1171);
-    float _1259 = fast::clamp(dot(_778, _1171), 0.0, 1.0);
-    float _1352 = 4096.0 * params.facet_alpha;
-    float4 _1376 = float4(cross(_778, _1314), params.facet_alpha * fast::clamp(dot(_778, _1314), 0.0, 1.0)) * 64.0;
-    float _1358 = _1352 / dot(_1376, _1376);
-    float _1387 = params.facet_alpha * params.facet_alpha;
-    float _1393 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
-    float _1397 = sqrt(fma(_1051 * _1051, _1393, _1387));
-    float _1420 = 1.0 - fast::clamp(dot(_1171, _1314), 0.0, 1.0);
-    float _1423 = _1420 * _1420;
-    float3 _1431 = float3(1.0) - float3(params.facet_f0);
-    float3 _1488 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
-    float _1491 = dot(_1488, _1488);
-    float3 _1496 = _1488 * rsqrt(fast::max(_1491, 9.9999999392252902907785028219223e-09));
-    float _1500 = _1491 * float(frame.punctualLights[1].positionFalloff.w);
-    float _1505 = fast::clamp(fma(-_1500, _1500, 1.0), 0.0, 1.0);
-    float _1524 = fast::clamp(fma(dot(-_1496, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
-    float3 _1639 = fast::normalize(_784 + _1496);
-    float _1584 = fast::clamp(dot(_778, _1496), 0.0, 1.0);
-    float4 _1701 = float4(cross(_778, _1639), params.facet_alpha * fast::clamp(dot(_778, _1639), 0.0, 1.0)) * 64.0;
-    float _1683 = _1352 / dot(_1701, _1701);
-    float _1745 = 1.0 - fast::clamp(dot(_1496, _1639), 0.0, 1.0);
-    float _1748 = _1745 * _1745;
-    float3 _1778 = fma(facet_environment.sample(facet_environmentSmplr, reflect(-_784, _778), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz, mix(_1090.xxx, _1090.yyy, float3(params.facet_f0)) * _1109, fast::min((((float3(params.facet_f0) + (_1431 * ((_1423 * _1423) * _1420))) * (((_1358 * _1358) * 0.3183098733425140380859375) * (0.5 / fma(_1259, _1397, _1051 * sqrt(fma(_1259 * _1259, _1393, _1387)))))) * _1109) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1180 * _1180) / fast::max(_1166, 9.9999997473787516355514526367188e-05)) * _1199) * _1199)) * _1259), float3(65504.0))) + fast::min((((float3(params.facet_f0) + (_1431 * ((_1748 * _1748) * _1745))) * (((_1683 * _1683) * 0.3183098733425140380859375) * (0.5 / fma(_1584, _1397, _1051 * sqrt(fma(_1584 * _1584, _1393, _1387)))))) * _1109) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1505 * _1505) / fast::max(_1491, 9.9999997473787516355514526367188e-05)) * _1524) * _1524)) * _1584), float3(65504.0));
-    out.fragColor = float4(_1778, 1.0);
+    float3 _762 = fast::normalize(in.v_normal);
+    float3 _768 = fast::normalize(frame.cameraPosition.xyz - in.v_worldPosition);
+    float _1033 = fast::max(dot(_762, _768), 9.9999997473787516355514526367188e-05);
+    float4 _1075 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1033, params.facet_perceptualRoughness), level(0.0));
+    float3 _1094 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1075.y) - 1.0));
+    float3 _1137 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
+    float _1140 = dot(_1137, _1137);
+    float3 _1145 = _1137 * rsqrt(fast::max(_1140, 9.9999999392252902907785028219223e-09));
+    float _1149 = _1140 * float(frame.punctualLights[0].positionFalloff.w);
+    float _1154 = fast::clamp(fma(-_1149, _1149, 1.0), 0.0, 1.0);
+    float _1173 = fast::clamp(fma(dot(-_1145, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float _1230 = fast::clamp(dot(_762, _1145), 0.0, 1.0);
+    float3 _1288 = fast::normalize(_768 + _1145);
+    float _1326 = 4096.0 * params.facet_alpha;
+    float4 _1350 = float4(cross(_762, _1288), params.facet_alpha * fast::clamp(dot(_762, _1288), 0.0, 1.0)) * 64.0;
+    float _1332 = _1326 / dot(_1350, _1350);
+    float _1361 = params.facet_alpha * params.facet_alpha;
+    float _1367 = fma(-params.facet_alpha, params.facet_alpha, 1.0);
+    float _1371 = sqrt(fma(_1033 * _1033, _1367, _1361));
+    float _1394 = 1.0 - fast::clamp(dot(_1145, _1288), 0.0, 1.0);
+    float _1397 = _1394 * _1394;
+    float3 _1405 = float3(1.0) - float3(params.facet_f0);
+    float3 _1462 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
+    float _1465 = dot(_1462, _1462);
+    float3 _1470 = _1462 * rsqrt(fast::max(_1465, 9.9999999392252902907785028219223e-09));
+    float _1474 = _1465 * float(frame.punctualLights[1].positionFalloff.w);
+    float _1479 = fast::clamp(fma(-_1474, _1474, 1.0), 0.0, 1.0);
+    float _1498 = fast::clamp(fma(dot(-_1470, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float _1555 = fast::clamp(dot(_762, _1470), 0.0, 1.0);
+    float3 _1613 = fast::normalize(_768 + _1470);
+    float4 _1675 = float4(cross(_762, _1613), params.facet_alpha * fast::clamp(dot(_762, _1613), 0.0, 1.0)) * 64.0;
+    float _1657 = _1326 / dot(_1675, _1675);
+    float _1719 = 1.0 - fast::clamp(dot(_1470, _1613), 0.0, 1.0);
+    float _1722 = _1719 * _1719;
+    float3 _1752 = fma(facet_environment.sample(facet_environmentSmplr, reflect(-_768, _762), level(params.facet_environmentLod)).xyz, mix(_1075.xxx, _1075.yyy, float3(params.facet_f0)) * _1094, fast::min((((float3(params.facet_f0) + (_1405 * ((_1397 * _1397) * _1394))) * (((_1332 * _1332) * 0.3183098733425140380859375) * (0.5 / fma(_1230, _1371, _1033 * sqrt(fma(_1230 * _1230, _1367, _1361)))))) * _1094) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1154 * _1154) / fast::max(_1140, 9.9999997473787516355514526367188e-05)) * _1173) * _1173)) * _1230), float3(65504.0))) + fast::min((((float3(params.facet_f0) + (_1405 * ((_1722 * _1722) * _1719))) * (((_1657 * _1657) * 0.3183098733425140380859375) * (0.5 / fma(_1555, _1371, _1033 * sqrt(fma(_1555 * _1555, _1367, _1361)))))) * _1094) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1479 * _1479) / fast::max(_1465, 9.9999997473787516355514526367188e-05)) * _1498) * _1498)) * _1555), float3(65504.0));
+    out.fragColor = float4(_1752, 1.0);
     return out;
 }
 

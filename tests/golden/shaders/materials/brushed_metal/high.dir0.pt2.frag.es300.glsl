@@ -31,6 +31,9 @@ mediump float facet_pad28;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 mediump float facet_anisotropy;
 mediump float facet_anisotropicBend;
 mediump vec2 facet_anisotropicAlpha;
@@ -95,9 +98,6 @@ vec3 c7=frame.sh[7].rgb;
 vec3 c8=frame.sh[8].rgb;
 e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
 return max(e,vec3(0.0));
-}
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
@@ -178,9 +178,9 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
+vec3 h=half_vector(viewHighp,lightHighp);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=anisotropic_ggx_smith(NoV,NoL,NoH,l,h)*fresnel_schlick(f0,LoH);
@@ -202,7 +202,7 @@ vec3 r=anisotropic_reflection(material,n,v,NoV,perceptualRoughness);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
 shading_energy_compensation=energy_compensation(dfg,f0);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 albedo*=shading_energy_compensation;
 return apply_ambient_occlusion(material,specular*albedo);
 }

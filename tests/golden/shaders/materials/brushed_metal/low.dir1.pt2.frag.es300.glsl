@@ -30,6 +30,9 @@ mediump float facet_pad28;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 mediump float facet_anisotropy;
 mediump float facet_anisotropicBend;
 mediump vec2 facet_anisotropicAlpha;
@@ -98,9 +101,6 @@ vec3 c3=frame.sh[3].rgb;
 vec3 e=c0+c1*n.y+c2*n.z+c3*n.x;
 return max(e,vec3(0.0));
 }
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
-}
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
@@ -129,9 +129,9 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(v,l);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
+vec3 h=half_vector(v,l);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
@@ -152,7 +152,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }

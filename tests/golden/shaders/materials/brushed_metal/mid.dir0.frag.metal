@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
     float facet_anisotropy;
     float facet_anisotropicBend;
     float2 facet_anisotropicAlpha;
@@ -34,11 +37,11 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _330 = normalize(half3(in.v_normal));
-    half3 _396 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    float4 _548 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_330, _396), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _567 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_396, _330)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(half4(_567).xyz * mix(half4(_548).xxx, half4(_548).yyy, half3(float3(params.facet_f0))), half(1.0)));
+    half3 _313 = normalize(half3(in.v_normal));
+    half3 _379 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _532 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_313, _379), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _510 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_379, _313)), level(params.facet_environmentLod));
+    out.fragColor = float4(half4(half4(_510).xyz * mix(half4(_532).xxx, half4(_532).yyy, half3(float3(params.facet_f0))), half(1.0)));
     return out;
 }
 

@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
     float facet_clearCoat;
     float facet_clearCoatAlpha;
     float facet_clearCoatLod;
@@ -34,17 +37,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _482 = normalize(half3(in.v_normal));
-    float3 _486 = fast::normalize(in.v_toEye);
-    half _734 = max(dot(_482, half3(_486)), half(9.9999997473787516355514526367188e-05));
-    half3 _738 = reflect(-half3(_486), _482);
-    float4 _773 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_734, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _802 = facet_environment.sample(facet_environmentSmplr, float3(_738), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _849 = half(1.0) - _734;
-    half _852 = _849 * _849;
-    float4 _837 = facet_environment.sample(facet_environmentSmplr, float3(_738), level(params.facet_clearCoatLod));
-    half3 _843 = mix(half4(_802).xyz * (mix(half4(_773).xxx, half4(_773).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_773).y) - half(1.0))))), half4(_837).xyz, half3(fma(half(0.959999978542327880859375), (_852 * _852) * _849, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
-    out.fragColor = float4(half4(_843, half(1.0)));
+    half3 _466 = normalize(half3(in.v_normal));
+    float3 _470 = fast::normalize(in.v_toEye);
+    half _716 = max(dot(_466, half3(_470)), half(9.9999997473787516355514526367188e-05));
+    half3 _720 = reflect(-half3(_470), _466);
+    float4 _758 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_716, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _734 = facet_environment.sample(facet_environmentSmplr, float3(_720), level(params.facet_environmentLod));
+    half _823 = half(1.0) - _716;
+    half _826 = _823 * _823;
+    float4 _811 = facet_environment.sample(facet_environmentSmplr, float3(_720), level(params.facet_clearCoatLod));
+    half3 _817 = mix(half4(_734).xyz * (mix(half4(_758).xxx, half4(_758).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_758).y) - half(1.0))))), half4(_811).xyz, half3(fma(half(0.959999978542327880859375), (_826 * _826) * _823, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_817, half(1.0)));
     return out;
 }
 

@@ -15,6 +15,9 @@ struct MaterialParams
     char _m7_pad[12];
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
     float facet_clearCoat;
     float facet_clearCoatAlpha;
     float facet_clearCoatLod;
@@ -34,17 +37,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _427 = normalize(half3(in.v_normal));
-    half3 _501 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    half _625 = max(dot(_427, _501), half(9.9999997473787516355514526367188e-05));
-    half3 _629 = reflect(-_501, _427);
-    float4 _665 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_625, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _694 = facet_environment.sample(facet_environmentSmplr, float3(_629), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half _741 = half(1.0) - _625;
-    half _744 = _741 * _741;
-    float4 _729 = facet_environment.sample(facet_environmentSmplr, float3(_629), level(params.facet_clearCoatLod));
-    half3 _735 = mix(half4(_694).xyz * (mix(half4(_665).xxx, half4(_665).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_665).y) - half(1.0))))), half4(_729).xyz, half3(fma(half(0.959999978542327880859375), (_744 * _744) * _741, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
-    out.fragColor = float4(half4(_735, half(1.0)));
+    half3 _411 = normalize(half3(in.v_normal));
+    half3 _485 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    half _607 = max(dot(_411, _485), half(9.9999997473787516355514526367188e-05));
+    half3 _611 = reflect(-_485, _411);
+    float4 _650 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_607, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _625 = facet_environment.sample(facet_environmentSmplr, float3(_611), level(params.facet_environmentLod));
+    half _715 = half(1.0) - _607;
+    half _718 = _715 * _715;
+    float4 _703 = facet_environment.sample(facet_environmentSmplr, float3(_611), level(params.facet_clearCoatLod));
+    half3 _709 = mix(half4(_625).xyz * (mix(half4(_650).xxx, half4(_650).yyy, half3(float3(params.facet_f0))) * (half3(float3(1.0)) + (half3(float3(params.facet_f0)) * ((half(1.0) / half4(_650).y) - half(1.0))))), half4(_703).xyz, half3(fma(half(0.959999978542327880859375), (_718 * _718) * _715, half(0.039999999105930328369140625)) * half(params.facet_clearCoat)));
+    out.fragColor = float4(half4(_709, half(1.0)));
     return out;
 }
 

@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -83,8 +86,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1159 = fast::clamp(fma(-_1154, _1154, 1.0), 0.0, 1.0);
     float _1178 = fast::clamp(fma(dot(-_1150, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
     half _1293 = _1071 * _1071;
+    half _1238 = clamp(dot(_1925, half3(_1150)), half(0.0), half(1.0));
     float3 _1305 = fast::normalize(_772 + _1150);
-    half _1241 = clamp(dot(_1925, half3(_1150)), half(0.0), half(1.0));
     half _1345 = half(4096.0) * _1293;
     half4 _1370 = half4(cross(_1925, half3(_1305)), _1293 * clamp(dot(_1925, half3(_1305)), half(0.0), half(1.0))) * half(64.0);
     half _1351 = _1345 / dot(_1370, _1370);
@@ -101,13 +104,13 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1488 = _1479 * float(frame.punctualLights[1].positionFalloff.w);
     float _1493 = fast::clamp(fma(-_1488, _1488, 1.0), 0.0, 1.0);
     float _1512 = fast::clamp(fma(dot(-_1484, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1572 = clamp(dot(_1925, half3(_1484)), half(0.0), half(1.0));
     float3 _1639 = fast::normalize(_772 + _1484);
-    half _1575 = clamp(dot(_1925, half3(_1484)), half(0.0), half(1.0));
     half4 _1704 = half4(cross(_1925, half3(_1639)), _1293 * clamp(dot(_1925, half3(_1639)), half(0.0), half(1.0))) * half(64.0);
     half _1685 = _1345 / dot(_1704, _1704);
     half _1749 = half(1.0) - clamp(dot(half3(_1484), half3(_1639)), half(0.0), half(1.0));
     half _1752 = _1749 * _1749;
-    half3 _1774 = (fma(half3(float3(params.facet_diffuseColor)), half4(_995).xyz, half4(_1097).xyz * mix(half4(_1078).xxx, half4(_1078).yyy, half3(float3(params.facet_f0)))) + min((_1269 + ((half3(float3(params.facet_f0)) + (_1426 * ((_1418 * _1418) * _1415))) * min(min((_1351 * _1351) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1241, _1391, _1044 * sqrt(fma(_1241 * _1241, _1387, _1381))), half(65504.0)), half(65504.0)))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1159) * half(_1159)) / fast::max(_1145, 9.9999997473787516355514526367188e-05)) * half(_1178)) * half(_1178)), float3(65504.0))) * _1241), half3(float3(65504.0)))) + min((_1269 + ((half3(float3(params.facet_f0)) + (_1426 * ((_1752 * _1752) * _1749))) * min(min((_1685 * _1685) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1575, _1391, _1044 * sqrt(fma(_1575 * _1575, _1387, _1381))), half(65504.0)), half(65504.0)))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1493) * half(_1493)) / fast::max(_1479, 9.9999997473787516355514526367188e-05)) * half(_1512)) * half(_1512)), float3(65504.0))) * _1575), half3(float3(65504.0)));
+    half3 _1774 = (fma(half3(float3(params.facet_diffuseColor)), half4(_995).xyz, half4(_1097).xyz * mix(half4(_1078).xxx, half4(_1078).yyy, half3(float3(params.facet_f0)))) + min((_1269 + ((half3(float3(params.facet_f0)) + (_1426 * ((_1418 * _1418) * _1415))) * min(min((_1351 * _1351) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1238, _1391, _1044 * sqrt(fma(_1238 * _1238, _1387, _1381))), half(65504.0)), half(65504.0)))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1159) * half(_1159)) / fast::max(_1145, 9.9999997473787516355514526367188e-05)) * half(_1178)) * half(_1178)), float3(65504.0))) * _1238), half3(float3(65504.0)))) + min((_1269 + ((half3(float3(params.facet_f0)) + (_1426 * ((_1752 * _1752) * _1749))) * min(min((_1685 * _1685) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1572, _1391, _1044 * sqrt(fma(_1572 * _1572, _1387, _1381))), half(65504.0)), half(65504.0)))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1493) * half(_1493)) / fast::max(_1479, 9.9999997473787516355514526367188e-05)) * half(_1512)) * half(_1512)), float3(65504.0))) * _1572), half3(float3(65504.0)));
     out.fragColor = float4(half4(_1774, half(1.0)));
     return out;
 }

@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -77,15 +80,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float4 _960 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_926, _953)), level(0.0));
     float4 _979 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_660), _1341)), level(_953 * (half(4.0) * (half(2.0) - _953))));
     half _1091 = _953 * _953;
+    half _1036 = clamp(dot(_1341, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
     float3 _1103 = fast::normalize(_660 + frame.lightDirection.xyz);
-    half _1039 = clamp(dot(_1341, half3(frame.lightDirection.xyz)), half(0.0), half(1.0));
     half4 _1168 = half4(cross(_1341, half3(_1103)), _1091 * clamp(dot(_1341, half3(_1103)), half(0.0), half(1.0))) * half(64.0);
     half _1149 = (half(4096.0) * _1091) / dot(_1168, _1168);
     half _1179 = _1091 * _1091;
     half _1185 = fma(half(-float(_1091)), _1091, half(1.0));
     half _1213 = half(1.0) - clamp(dot(half3(frame.lightDirection.xyz), half3(_1103)), half(0.0), half(1.0));
     half _1216 = _1213 * _1213;
-    half3 _1238 = fma(half3(float3(params.facet_diffuseColor)), half4(_877).xyz, half4(_979).xyz * mix(half4(_960).xxx, half4(_960).yyy, half3(float3(params.facet_f0)))) + min(((half3(float3(params.facet_diffuseColor)) * half(0.3183098733425140380859375)) + ((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1216 * _1216) * _1213))) * min(min((_1149 * _1149) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1039, sqrt(fma(_926 * _926, _1185, _1179)), _926 * sqrt(fma(_1039 * _1039, _1185, _1179))), half(65504.0)), half(65504.0)))) * (half4(frame.lightColor).xyz * _1039), half3(float3(65504.0)));
+    half3 _1238 = fma(half3(float3(params.facet_diffuseColor)), half4(_877).xyz, half4(_979).xyz * mix(half4(_960).xxx, half4(_960).yyy, half3(float3(params.facet_f0)))) + min(((half3(float3(params.facet_diffuseColor)) * half(0.3183098733425140380859375)) + ((half3(float3(params.facet_f0)) + ((half3(float3(1.0)) - half3(float3(params.facet_f0))) * ((_1216 * _1216) * _1213))) * min(min((_1149 * _1149) * half(0.3183098733425140380859375), half(65504.0)) * min(half(0.5) / fma(_1036, sqrt(fma(_926 * _926, _1185, _1179)), _926 * sqrt(fma(_1036 * _1036, _1185, _1179))), half(65504.0)), half(65504.0)))) * (half4(frame.lightColor).xyz * _1036), half3(float3(65504.0)));
     out.fragColor = float4(half4(_1238, half(1.0)));
     return out;
 }

@@ -34,6 +34,9 @@ mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 }
 params;
 uniform mediump sampler2D facet_material_ripples;

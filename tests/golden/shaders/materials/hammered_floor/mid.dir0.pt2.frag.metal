@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -83,11 +86,11 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1048 = fast::clamp(fma(-_1043, _1043, 1.0), 0.0, 1.0);
     float _1067 = fast::clamp(fma(dot(-_1039, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
     half _1174 = _960 * _960;
+    half _1125 = clamp(dot(_1680, half3(_1039)), half(0.0), half(1.0));
     half3 _1185 = normalize(half3(_675) + half3(_1039));
-    half _1128 = clamp(dot(_1680, half3(_1039)), half(0.0), half(1.0));
     half4 _1254 = half4(cross(_1680, _1185), _1174 * clamp(dot(_1680, _1185), half(0.0), half(1.0))) * half(64.0);
     half _1228 = half(4096.0) * _1174;
-    half _1231 = half(6.283185482025146484375) * max(mix((half(2.0) * _1128) * _933, _1128 + _933, _1174), half(0.000244140625));
+    half _1231 = half(6.283185482025146484375) * max(mix((half(2.0) * _1125) * _933, _1125 + _933, _1174), half(0.000244140625));
     half _1233 = _1228 / (dot(_1254, _1254) * _1231);
     float3 _1298 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
     float _1301 = dot(_1298, _1298);
@@ -95,12 +98,12 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1310 = _1301 * float(frame.punctualLights[1].positionFalloff.w);
     float _1315 = fast::clamp(fma(-_1310, _1310, 1.0), 0.0, 1.0);
     float _1334 = fast::clamp(fma(dot(-_1306, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    half _1392 = clamp(dot(_1680, half3(_1306)), half(0.0), half(1.0));
     half3 _1452 = normalize(half3(_675) + half3(_1306));
-    half _1395 = clamp(dot(_1680, half3(_1306)), half(0.0), half(1.0));
     half4 _1521 = half4(cross(_1680, _1452), _1174 * clamp(dot(_1680, _1452), half(0.0), half(1.0))) * half(64.0);
-    half _1498 = half(6.283185482025146484375) * max(mix((half(2.0) * _1395) * _933, _1395 + _933, _1174), half(0.000244140625));
+    half _1498 = half(6.283185482025146484375) * max(mix((half(2.0) * _1392) * _933, _1392 + _933, _1174), half(0.000244140625));
     half _1500 = _1228 / (dot(_1521, _1521) * _1498);
-    half3 _1529 = (fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_986).xyz * mix(half4(_967).xxx, half4(_967).yyy, half3(float3(params.facet_f0)))) + min((half3(float3(params.facet_f0)) * min(_1233 * (_1233 * _1231), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1048) * half(_1048)) / fast::max(_1034, 9.9999997473787516355514526367188e-05)) * half(_1067)) * half(_1067)), float3(65504.0))) * _1128), half3(float3(65504.0)))) + min((half3(float3(params.facet_f0)) * min(_1500 * (_1500 * _1498), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1315) * half(_1315)) / fast::max(_1301, 9.9999997473787516355514526367188e-05)) * half(_1334)) * half(_1334)), float3(65504.0))) * _1395), half3(float3(65504.0)));
+    half3 _1529 = (fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_986).xyz * mix(half4(_967).xxx, half4(_967).yyy, half3(float3(params.facet_f0)))) + min((half3(float3(params.facet_f0)) * min(_1233 * (_1233 * _1231), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[0].colorIntensity.xyz) * float((half(float(half(_1048) * half(_1048)) / fast::max(_1034, 9.9999997473787516355514526367188e-05)) * half(_1067)) * half(_1067)), float3(65504.0))) * _1125), half3(float3(65504.0)))) + min((half3(float3(params.facet_f0)) * min(_1500 * (_1500 * _1498), half(65504.0))) * (half3(fast::min(float3(frame.punctualLights[1].colorIntensity.xyz) * float((half(float(half(_1315) * half(_1315)) / fast::max(_1301, 9.9999997473787516355514526367188e-05)) * half(_1334)) * half(_1334)), float3(65504.0))) * _1392), half3(float3(65504.0)));
     out.fragColor = float4(half4(_1529, half(1.0)));
     return out;
 }

@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -78,12 +81,12 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float4 _892 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_686, _1187)), level(_866 * (half(4.0) * (half(2.0) - _866))));
     half3 _636 = half4(frame.lightDirection).xyz;
     half _996 = _866 * _866;
+    half _947 = clamp(dot(_1187, _636), half(0.0), half(1.0));
     half3 _1007 = normalize(_686 + _636);
-    half _950 = clamp(dot(_1187, _636), half(0.0), half(1.0));
     half4 _1076 = half4(cross(_1187, _1007), _996 * clamp(dot(_1187, _1007), half(0.0), half(1.0))) * half(64.0);
-    half _1053 = half(6.283185482025146484375) * max(mix((half(2.0) * _950) * _839, _950 + _839, _996), half(0.000244140625));
+    half _1053 = half(6.283185482025146484375) * max(mix((half(2.0) * _947) * _839, _947 + _839, _996), half(0.000244140625));
     half _1055 = (half(4096.0) * _996) / (dot(_1076, _1076) * _1053);
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_892).xyz * mix(half4(_873).xxx, half4(_873).yyy, half3(float3(params.facet_f0)))) + min((half3(float3(params.facet_f0)) * min(_1055 * (_1055 * _1053), half(65504.0))) * (half4(frame.lightColor).xyz * _950), half3(float3(65504.0))), half(1.0)));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_892).xyz * mix(half4(_873).xxx, half4(_873).yyy, half3(float3(params.facet_f0)))) + min((half3(float3(params.facet_f0)) * min(_1055 * (_1055 * _1053), half(65504.0))) * (half4(frame.lightColor).xyz * _947), half3(float3(65504.0))), half(1.0)));
     return out;
 }
 

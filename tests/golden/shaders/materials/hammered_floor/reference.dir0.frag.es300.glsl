@@ -33,6 +33,9 @@ highp vec3 facet_diffuseColor;
 highp float facet_perceptualRoughness;
 highp vec3 facet_f0;
 highp float facet_alpha;
+highp float facet_environmentLod;
+highp float facet_ggxAlphaScaled;
+highp float facet_ziomaRoughnessFactor;
 }
 params;
 uniform highp sampler2D facet_material_ripples;

@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -81,8 +84,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1389 = fast::clamp(fma(-_1384, _1384, 1.0), 0.0, 1.0);
     float _1408 = fast::clamp(fma(dot(-_1380, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
     float _1523 = _1292 * _1292;
+    float _1465 = fast::clamp(dot(_2160, _1380), 0.0, 1.0);
     float3 _1534 = fast::normalize(_887 + _1380);
-    float _1468 = fast::clamp(dot(_2160, _1380), 0.0, 1.0);
     float _1572 = 4096.0 * _1523;
     float4 _1596 = float4(cross(_2160, _1534), _1523 * fast::clamp(dot(_2160, _1534), 0.0, 1.0)) * 64.0;
     float _1578 = _1572 / dot(_1596, _1596);
@@ -93,20 +96,20 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1643 = _1640 * _1640;
     float3 _1651 = float3(1.0) - float3(params.facet_f0);
     float3 _1499 = float3(params.facet_diffuseColor) * 0.3183098733425140380859375;
-    float3 _1665 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _2160.y)) + (frame.sh[2].xyz * _2160.z)) + (frame.sh[3].xyz * _2160.x)) + (((((frame.sh[4].xyz * (_2160.x * _2160.y)) + (frame.sh[5].xyz * (_2160.y * _2160.z))) + (frame.sh[6].xyz * fma(3.0 * _2160.z, _2160.z, -1.0))) + (frame.sh[7].xyz * (_2160.x * _2160.z))) + (frame.sh[8].xyz * fma(_2160.x, _2160.x, -(_2160.y * _2160.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_887, _2160), level(_1292 * (4.0 * (2.0 - _1292)))).xyz * (mix(_1299.xxx, _1299.yyy, float3(params.facet_f0)) * _1318)) + fast::min(fma((float3(params.facet_f0) + (_1651 * ((_1643 * _1643) * _1640))) * (((_1578 * _1578) * 0.3183098733425140380859375) * (0.5 / fma(_1468, _1617, _1259 * sqrt(fma(_1468 * _1468, _1613, _1607))))), _1318, _1499) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1389 * _1389) / fast::max(_1375, 9.9999997473787516355514526367188e-05)) * _1408) * _1408)) * _1468), float3(65504.0));
+    float3 _1665 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _2160.y)) + (frame.sh[2].xyz * _2160.z)) + (frame.sh[3].xyz * _2160.x)) + (((((frame.sh[4].xyz * (_2160.x * _2160.y)) + (frame.sh[5].xyz * (_2160.y * _2160.z))) + (frame.sh[6].xyz * fma(3.0 * _2160.z, _2160.z, -1.0))) + (frame.sh[7].xyz * (_2160.x * _2160.z))) + (frame.sh[8].xyz * fma(_2160.x, _2160.x, -(_2160.y * _2160.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_887, _2160), level(_1292 * (4.0 * (2.0 - _1292)))).xyz * (mix(_1299.xxx, _1299.yyy, float3(params.facet_f0)) * _1318)) + fast::min(fma((float3(params.facet_f0) + (_1651 * ((_1643 * _1643) * _1640))) * (((_1578 * _1578) * 0.3183098733425140380859375) * (0.5 / fma(_1465, _1617, _1259 * sqrt(fma(_1465 * _1465, _1613, _1607))))), _1318, _1499) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1389 * _1389) / fast::max(_1375, 9.9999997473787516355514526367188e-05)) * _1408) * _1408)) * _1465), float3(65504.0));
     float3 _1700 = float3(frame.punctualLights[1].positionFalloff.xyz) - in.v_worldPosition;
     float _1703 = dot(_1700, _1700);
     float3 _1708 = _1700 * rsqrt(fast::max(_1703, 9.9999999392252902907785028219223e-09));
     float _1712 = _1703 * float(frame.punctualLights[1].positionFalloff.w);
     float _1717 = fast::clamp(fma(-_1712, _1712, 1.0), 0.0, 1.0);
     float _1736 = fast::clamp(fma(dot(-_1708, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float _1793 = fast::clamp(dot(_2160, _1708), 0.0, 1.0);
     float3 _1862 = fast::normalize(_887 + _1708);
-    float _1796 = fast::clamp(dot(_2160, _1708), 0.0, 1.0);
     float4 _1924 = float4(cross(_2160, _1862), _1523 * fast::clamp(dot(_2160, _1862), 0.0, 1.0)) * 64.0;
     float _1906 = _1572 / dot(_1924, _1924);
     float _1968 = 1.0 - fast::clamp(dot(_1708, _1862), 0.0, 1.0);
     float _1971 = _1968 * _1968;
-    out.fragColor = float4(_1665 + fast::min(fma((float3(params.facet_f0) + (_1651 * ((_1971 * _1971) * _1968))) * (((_1906 * _1906) * 0.3183098733425140380859375) * (0.5 / fma(_1796, _1617, _1259 * sqrt(fma(_1796 * _1796, _1613, _1607))))), _1318, _1499) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1717 * _1717) / fast::max(_1703, 9.9999997473787516355514526367188e-05)) * _1736) * _1736)) * _1796), float3(65504.0)), 1.0);
+    out.fragColor = float4(_1665 + fast::min(fma((float3(params.facet_f0) + (_1651 * ((_1971 * _1971) * _1968))) * (((_1906 * _1906) * 0.3183098733425140380859375) * (0.5 / fma(_1793, _1617, _1259 * sqrt(fma(_1793 * _1793, _1613, _1607))))), _1318, _1499) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1717 * _1717) / fast::max(_1703, 9.9999997473787516355514526367188e-05)) * _1736) * _1736)) * _1793), float3(65504.0)), 1.0);
     return out;
 }
 

@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -75,15 +78,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float4 _1185 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1145, _1178), level(0.0));
     float3 _1204 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1185.y) - 1.0));
     float _1329 = _1178 * _1178;
+    float _1271 = fast::clamp(dot(_1590, frame.lightDirection.xyz), 0.0, 1.0);
     float3 _1340 = fast::normalize(_789 + frame.lightDirection.xyz);
-    float _1274 = fast::clamp(dot(_1590, frame.lightDirection.xyz), 0.0, 1.0);
     float4 _1402 = float4(cross(_1590, _1340), _1329 * fast::clamp(dot(_1590, _1340), 0.0, 1.0)) * 64.0;
     float _1384 = (4096.0 * _1329) / dot(_1402, _1402);
     float _1413 = _1329 * _1329;
     float _1419 = fma(-_1329, _1329, 1.0);
     float _1446 = 1.0 - fast::clamp(dot(frame.lightDirection.xyz, _1340), 0.0, 1.0);
     float _1449 = _1446 * _1446;
-    float3 _1471 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1590.y)) + (frame.sh[2].xyz * _1590.z)) + (frame.sh[3].xyz * _1590.x)) + (((((frame.sh[4].xyz * (_1590.x * _1590.y)) + (frame.sh[5].xyz * (_1590.y * _1590.z))) + (frame.sh[6].xyz * fma(3.0 * _1590.z, _1590.z, -1.0))) + (frame.sh[7].xyz * (_1590.x * _1590.z))) + (frame.sh[8].xyz * fma(_1590.x, _1590.x, -(_1590.y * _1590.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_789, _1590), level(_1178 * (4.0 * (2.0 - _1178)))).xyz * (mix(_1185.xxx, _1185.yyy, float3(params.facet_f0)) * _1204)) + fast::min(fma((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1449 * _1449) * _1446))) * (((_1384 * _1384) * 0.3183098733425140380859375) * (0.5 / fma(_1274, sqrt(fma(_1145 * _1145, _1419, _1413)), _1145 * sqrt(fma(_1274 * _1274, _1419, _1413))))), _1204, float3(params.facet_diffuseColor) * 0.3183098733425140380859375) * (frame.lightColor.xyz * _1274), float3(65504.0));
+    float3 _1471 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _1590.y)) + (frame.sh[2].xyz * _1590.z)) + (frame.sh[3].xyz * _1590.x)) + (((((frame.sh[4].xyz * (_1590.x * _1590.y)) + (frame.sh[5].xyz * (_1590.y * _1590.z))) + (frame.sh[6].xyz * fma(3.0 * _1590.z, _1590.z, -1.0))) + (frame.sh[7].xyz * (_1590.x * _1590.z))) + (frame.sh[8].xyz * fma(_1590.x, _1590.x, -(_1590.y * _1590.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_789, _1590), level(_1178 * (4.0 * (2.0 - _1178)))).xyz * (mix(_1185.xxx, _1185.yyy, float3(params.facet_f0)) * _1204)) + fast::min(fma((float3(params.facet_f0) + ((float3(1.0) - float3(params.facet_f0)) * ((_1449 * _1449) * _1446))) * (((_1384 * _1384) * 0.3183098733425140380859375) * (0.5 / fma(_1271, sqrt(fma(_1145 * _1145, _1419, _1413)), _1145 * sqrt(fma(_1271 * _1271, _1419, _1413))))), _1204, float3(params.facet_diffuseColor) * 0.3183098733425140380859375) * (frame.lightColor.xyz * _1271), float3(65504.0));
     out.fragColor = float4(_1471, 1.0);
     return out;
 }

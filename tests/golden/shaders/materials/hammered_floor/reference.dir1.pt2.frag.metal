@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -75,8 +78,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float4 _1320 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_1280, _1313), level(0.0));
     float3 _1339 = float3(1.0) + (float3(params.facet_f0) * ((1.0 / _1320.y) - 1.0));
     float _1464 = _1313 * _1313;
+    float _1406 = fast::clamp(dot(_2431, frame.lightDirection.xyz), 0.0, 1.0);
     float3 _1475 = fast::normalize(_887 + frame.lightDirection.xyz);
-    float _1409 = fast::clamp(dot(_2431, frame.lightDirection.xyz), 0.0, 1.0);
     float _1513 = 4096.0 * _1464;
     float4 _1537 = float4(cross(_2431, _1475), _1464 * fast::clamp(dot(_2431, _1475), 0.0, 1.0)) * 64.0;
     float _1519 = _1513 / dot(_1537, _1537);
@@ -87,15 +90,15 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1584 = _1581 * _1581;
     float3 _1592 = float3(1.0) - float3(params.facet_f0);
     float3 _1440 = float3(params.facet_diffuseColor) * 0.3183098733425140380859375;
-    float3 _1606 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _2431.y)) + (frame.sh[2].xyz * _2431.z)) + (frame.sh[3].xyz * _2431.x)) + (((((frame.sh[4].xyz * (_2431.x * _2431.y)) + (frame.sh[5].xyz * (_2431.y * _2431.z))) + (frame.sh[6].xyz * fma(3.0 * _2431.z, _2431.z, -1.0))) + (frame.sh[7].xyz * (_2431.x * _2431.z))) + (frame.sh[8].xyz * fma(_2431.x, _2431.x, -(_2431.y * _2431.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_887, _2431), level(_1313 * (4.0 * (2.0 - _1313)))).xyz * (mix(_1320.xxx, _1320.yyy, float3(params.facet_f0)) * _1339)) + fast::min(fma((float3(params.facet_f0) + (_1592 * ((_1584 * _1584) * _1581))) * (((_1519 * _1519) * 0.3183098733425140380859375) * (0.5 / fma(_1409, _1558, _1280 * sqrt(fma(_1409 * _1409, _1554, _1548))))), _1339, _1440) * (frame.lightColor.xyz * _1409), float3(65504.0));
+    float3 _1606 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _2431.y)) + (frame.sh[2].xyz * _2431.z)) + (frame.sh[3].xyz * _2431.x)) + (((((frame.sh[4].xyz * (_2431.x * _2431.y)) + (frame.sh[5].xyz * (_2431.y * _2431.z))) + (frame.sh[6].xyz * fma(3.0 * _2431.z, _2431.z, -1.0))) + (frame.sh[7].xyz * (_2431.x * _2431.z))) + (frame.sh[8].xyz * fma(_2431.x, _2431.x, -(_2431.y * _2431.y)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_887, _2431), level(_1313 * (4.0 * (2.0 - _1313)))).xyz * (mix(_1320.xxx, _1320.yyy, float3(params.facet_f0)) * _1339)) + fast::min(fma((float3(params.facet_f0) + (_1592 * ((_1584 * _1584) * _1581))) * (((_1519 * _1519) * 0.3183098733425140380859375) * (0.5 / fma(_1406, _1558, _1280 * sqrt(fma(_1406 * _1406, _1554, _1548))))), _1339, _1440) * (frame.lightColor.xyz * _1406), float3(65504.0));
     float3 _1641 = float3(frame.punctualLights[0].positionFalloff.xyz) - in.v_worldPosition;
     float _1644 = dot(_1641, _1641);
     float3 _1649 = _1641 * rsqrt(fast::max(_1644, 9.9999999392252902907785028219223e-09));
     float _1653 = _1644 * float(frame.punctualLights[0].positionFalloff.w);
     float _1658 = fast::clamp(fma(-_1653, _1653, 1.0), 0.0, 1.0);
     float _1677 = fast::clamp(fma(dot(-_1649, float3(frame.punctualLights[0].direction.xyz)), float(frame.punctualLights[0].spotScaleOffset.x), float(frame.punctualLights[0].spotScaleOffset.y)), 0.0, 1.0);
+    float _1734 = fast::clamp(dot(_2431, _1649), 0.0, 1.0);
     float3 _1803 = fast::normalize(_887 + _1649);
-    float _1737 = fast::clamp(dot(_2431, _1649), 0.0, 1.0);
     float4 _1865 = float4(cross(_2431, _1803), _1464 * fast::clamp(dot(_2431, _1803), 0.0, 1.0)) * 64.0;
     float _1847 = _1513 / dot(_1865, _1865);
     float _1909 = 1.0 - fast::clamp(dot(_1649, _1803), 0.0, 1.0);
@@ -106,13 +109,13 @@ fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame
     float _1981 = _1972 * float(frame.punctualLights[1].positionFalloff.w);
     float _1986 = fast::clamp(fma(-_1981, _1981, 1.0), 0.0, 1.0);
     float _2005 = fast::clamp(fma(dot(-_1977, float3(frame.punctualLights[1].direction.xyz)), float(frame.punctualLights[1].spotScaleOffset.x), float(frame.punctualLights[1].spotScaleOffset.y)), 0.0, 1.0);
+    float _2062 = fast::clamp(dot(_2431, _1977), 0.0, 1.0);
     float3 _2131 = fast::normalize(_887 + _1977);
-    float _2065 = fast::clamp(dot(_2431, _1977), 0.0, 1.0);
     float4 _2193 = float4(cross(_2431, _2131), _1464 * fast::clamp(dot(_2431, _2131), 0.0, 1.0)) * 64.0;
     float _2175 = _1513 / dot(_2193, _2193);
     float _2237 = 1.0 - fast::clamp(dot(_1977, _2131), 0.0, 1.0);
     float _2240 = _2237 * _2237;
-    float3 _2262 = (_1606 + fast::min(fma((float3(params.facet_f0) + (_1592 * ((_1912 * _1912) * _1909))) * (((_1847 * _1847) * 0.3183098733425140380859375) * (0.5 / fma(_1737, _1558, _1280 * sqrt(fma(_1737 * _1737, _1554, _1548))))), _1339, _1440) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1658 * _1658) / fast::max(_1644, 9.9999997473787516355514526367188e-05)) * _1677) * _1677)) * _1737), float3(65504.0))) + fast::min(fma((float3(params.facet_f0) + (_1592 * ((_2240 * _2240) * _2237))) * (((_2175 * _2175) * 0.3183098733425140380859375) * (0.5 / fma(_2065, _1558, _1280 * sqrt(fma(_2065 * _2065, _1554, _1548))))), _1339, _1440) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1986 * _1986) / fast::max(_1972, 9.9999997473787516355514526367188e-05)) * _2005) * _2005)) * _2065), float3(65504.0));
+    float3 _2262 = (_1606 + fast::min(fma((float3(params.facet_f0) + (_1592 * ((_1912 * _1912) * _1909))) * (((_1847 * _1847) * 0.3183098733425140380859375) * (0.5 / fma(_1734, _1558, _1280 * sqrt(fma(_1734 * _1734, _1554, _1548))))), _1339, _1440) * ((float3(frame.punctualLights[0].colorIntensity.xyz) * ((((_1658 * _1658) / fast::max(_1644, 9.9999997473787516355514526367188e-05)) * _1677) * _1677)) * _1734), float3(65504.0))) + fast::min(fma((float3(params.facet_f0) + (_1592 * ((_2240 * _2240) * _2237))) * (((_2175 * _2175) * 0.3183098733425140380859375) * (0.5 / fma(_2062, _1558, _1280 * sqrt(fma(_2062 * _2062, _1554, _1548))))), _1339, _1440) * ((float3(frame.punctualLights[1].colorIntensity.xyz) * ((((_1986 * _1986) / fast::max(_1972, 9.9999997473787516355514526367188e-05)) * _2005) * _2005)) * _2062), float3(65504.0));
     out.fragColor = float4(_2262, 1.0);
     return out;
 }

@@ -31,6 +31,9 @@ mediump float facet_pad8;
 mediump float facet_pad12;
 mediump float facet_perceptualRoughness;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 }
 params;
 uniform mediump sampler2D facet_material_albedo;
@@ -106,9 +109,6 @@ vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,flo
 vec3 r=reflect(-v,n);
 return specular_lut(facet_specularLut,dot(r,l),perceptualRoughness)*albedo;
 }
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
-}
 vec3 env_brdf_karis(vec3 f0,float NoV,float perceptualRoughness){
 vec4 k=perceptualRoughness*vec4(-1.0,-0.0275,-0.572,0.022)+vec4(1.0,0.0425,1.04,-0.04);
 float s=min(k.x*k.x,exp2(-9.28*NoV))*k.x+k.y;
@@ -140,9 +140,9 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(v,l);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
+vec3 h=half_vector(v,l);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,shading_specular_albedo);
@@ -168,7 +168,7 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec3 albedo=env_brdf_karis(f0,NoV,perceptualRoughness);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 shading_specular_albedo=albedo;
 return apply_specular_occlusion(material,specular*albedo,NoV,perceptualRoughness);
 }

@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct main0_out
@@ -31,12 +34,12 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _259 = normalize(half3(in.v_normal));
-    float3 _263 = fast::normalize(in.v_toEye);
-    float4 _347 = facet_irradiance.sample(facet_irradianceSmplr, float3(_259), level(0.0));
-    float4 _429 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_259, half3(_263)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _448 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_263), _259)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half4(_347).xyz, half4(_448).xyz * mix(half4(_429).xxx, half4(_429).yyy, half3(float3(params.facet_f0)))), half(1.0)));
+    half3 _243 = normalize(half3(in.v_normal));
+    float3 _247 = fast::normalize(in.v_toEye);
+    float4 _331 = facet_irradiance.sample(facet_irradianceSmplr, float3(_243), level(0.0));
+    float4 _414 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_243, half3(_247)), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _393 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-half3(_247), _243)), level(params.facet_environmentLod));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half4(_331).xyz, half4(_393).xyz * mix(half4(_414).xxx, half4(_414).yyy, half3(float3(params.facet_f0)))), half(1.0)));
     return out;
 }
 

@@ -31,6 +31,9 @@ mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 }
 params;
 uniform mediump samplerCube facet_environment;
@@ -96,9 +99,6 @@ return min(D*V,65504.0)*fresnel_schlick(f0,LoH);
 vec3 cube_irradiance_over_pi(vec3 n){
 return textureLod(facet_irradiance,n,0.0).rgb;
 }
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
-}
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
@@ -126,9 +126,9 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(viewHighp,lightHighp);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
+vec3 h=half_vector(viewHighp,lightHighp);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
@@ -149,7 +149,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){

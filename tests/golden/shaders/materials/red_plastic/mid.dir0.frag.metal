@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct main0_out
@@ -32,11 +35,11 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _247 = normalize(half3(in.v_normal));
-    half3 _324 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    float4 _417 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_247, _324), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _436 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_324, _247)), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_436).xyz * mix(half4(_417).xxx, half4(_417).yyy, half3(float3(params.facet_f0)))), half(1.0)));
+    half3 _231 = normalize(half3(in.v_normal));
+    half3 _308 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _402 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_231, _308), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _381 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_308, _231)), level(params.facet_environmentLod));
+    out.fragColor = float4(half4(fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_381).xyz * mix(half4(_402).xxx, half4(_402).yyy, half3(float3(params.facet_f0)))), half(1.0)));
     return out;
 }
 

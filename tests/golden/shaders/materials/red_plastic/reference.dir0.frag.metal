@@ -15,6 +15,9 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
 };
 
 struct PunctualLightData
@@ -50,14 +53,14 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _396 = fast::normalize(in.v_normal);
-    float3 _400 = fast::normalize(in.v_toEye);
-    float _497 = _396.y;
-    float _502 = _396.z;
-    float _507 = _396.x;
-    float4 _664 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_396, _400), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
-    float3 _702 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _497)) + (frame.sh[2].xyz * _502)) + (frame.sh[3].xyz * _507)) + (((((frame.sh[4].xyz * (_507 * _497)) + (frame.sh[5].xyz * (_497 * _502))) + (frame.sh[6].xyz * fma(3.0 * _502, _502, -1.0))) + (frame.sh[7].xyz * (_507 * _502))) + (frame.sh[8].xyz * fma(_507, _507, -(_497 * _497)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_400, _396), level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_664.xxx, _664.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _664.y) - 1.0)))));
-    out.fragColor = float4(_702, 1.0);
+    float3 _380 = fast::normalize(in.v_normal);
+    float3 _384 = fast::normalize(in.v_toEye);
+    float _481 = _380.y;
+    float _486 = _380.z;
+    float _491 = _380.x;
+    float4 _649 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(fast::max(dot(_380, _384), 9.9999997473787516355514526367188e-05), params.facet_perceptualRoughness), level(0.0));
+    float3 _676 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _481)) + (frame.sh[2].xyz * _486)) + (frame.sh[3].xyz * _491)) + (((((frame.sh[4].xyz * (_491 * _481)) + (frame.sh[5].xyz * (_481 * _486))) + (frame.sh[6].xyz * fma(3.0 * _486, _486, -1.0))) + (frame.sh[7].xyz * (_491 * _486))) + (frame.sh[8].xyz * fma(_491, _491, -(_481 * _481)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, reflect(-_384, _380), level(params.facet_environmentLod)).xyz * (mix(_649.xxx, _649.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _649.y) - 1.0)))));
+    out.fragColor = float4(_676, 1.0);
     return out;
 }
 

@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
+    char _m11_pad[4];
     packed_float3 facet_sheenColor;
     float facet_sheenLod;
     float facet_sheenRoughness;
@@ -34,16 +38,17 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _342 = normalize(half3(in.v_normal));
-    float3 _346 = fast::normalize(in.v_toEye);
-    half _477 = max(dot(_342, half3(_346)), half(9.9999997473787516355514526367188e-05));
-    half3 _481 = reflect(-half3(_346), _342);
-    float4 _510 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_477, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _529 = facet_environment.sample(facet_environmentSmplr, float3(_481), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half4 _706 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_477, half(params.facet_sheenRoughness))), level(0.0)));
-    half _574 = _706.z;
-    float4 _590 = facet_environment.sample(facet_environmentSmplr, float3(_481), level(params.facet_sheenLod));
-    out.fragColor = float4(half4(fma(half4(_590).xyz, half3(float3(params.facet_sheenColor)) * _574, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_529).xyz * mix(half4(_510).xxx, half4(_510).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _574, half(1.0))), half(1.0)));
+    half3 _327 = normalize(half3(in.v_normal));
+    float3 _331 = fast::normalize(in.v_toEye);
+    half _460 = max(dot(_327, half3(_331)), half(9.9999997473787516355514526367188e-05));
+    half3 _464 = reflect(-half3(_331), _327);
+    float4 _496 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_460, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _475 = facet_environment.sample(facet_environmentSmplr, float3(_464), level(params.facet_environmentLod));
+    half4 _677 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_460, half(params.facet_sheenRoughness))), level(0.0)));
+    half _549 = _677.z;
+    float4 _565 = facet_environment.sample(facet_environmentSmplr, float3(_464), level(params.facet_sheenLod));
+    half3 _577 = fma(half4(_565).xyz, half3(float3(params.facet_sheenColor)) * _549, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_475).xyz * mix(half4(_496).xxx, half4(_496).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _549, half(1.0)));
+    out.fragColor = float4(half4(_577, half(1.0)));
     return out;
 }
 

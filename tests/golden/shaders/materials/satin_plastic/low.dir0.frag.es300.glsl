@@ -30,6 +30,9 @@ mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 mediump vec3 facet_sheenColor;
 mediump float facet_sheenLod;
 mediump float facet_sheenRoughness;
@@ -78,9 +81,6 @@ material.roughness=params.roughness;
 material.sheenColor=params.sheen;
 material.sheenRoughness=params.sheenRoughness;
 }
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
-}
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
@@ -111,7 +111,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 shading_specular_albedo=albedo;
 return apply_ambient_occlusion(material,specular*albedo);
 }

@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
+    char _m11_pad[4];
     packed_float3 facet_sheenColor;
     float facet_sheenLod;
     float facet_sheenRoughness;
@@ -34,16 +38,16 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    half3 _355 = normalize(half3(in.v_normal));
-    half3 _438 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    half _502 = max(dot(_355, _438), half(9.9999997473787516355514526367188e-05));
-    half3 _506 = reflect(-_438, _355);
-    float4 _535 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_502, half(params.facet_perceptualRoughness))), level(0.0));
-    float4 _554 = facet_environment.sample(facet_environmentSmplr, float3(_506), level(half(params.facet_perceptualRoughness) * (half(4.0) * (half(2.0) - half(params.facet_perceptualRoughness)))));
-    half4 _733 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_502, half(params.facet_sheenRoughness))), level(0.0)));
-    half _599 = _733.z;
-    float4 _615 = facet_environment.sample(facet_environmentSmplr, float3(_506), level(params.facet_sheenLod));
-    out.fragColor = float4(half4(fma(half4(_615).xyz, half3(float3(params.facet_sheenColor)) * _599, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_554).xyz * mix(half4(_535).xxx, half4(_535).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _599, half(1.0))), half(1.0)));
+    half3 _340 = normalize(half3(in.v_normal));
+    half3 _425 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    half _487 = max(dot(_340, _425), half(9.9999997473787516355514526367188e-05));
+    half3 _491 = reflect(-_425, _340);
+    float4 _523 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_487, half(params.facet_perceptualRoughness))), level(0.0));
+    float4 _502 = facet_environment.sample(facet_environmentSmplr, float3(_491), level(params.facet_environmentLod));
+    half4 _706 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_487, half(params.facet_sheenRoughness))), level(0.0)));
+    half _576 = _706.z;
+    float4 _592 = facet_environment.sample(facet_environmentSmplr, float3(_491), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_592).xyz, half3(float3(params.facet_sheenColor)) * _576, fma(half3(float3(params.facet_diffuseColor)), half3(in.v_diffuseLight), half4(_502).xyz * mix(half4(_523).xxx, half4(_523).yyy, half3(float3(params.facet_f0)))) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _576, half(1.0))), half(1.0)));
     return out;
 }
 

@@ -30,6 +30,9 @@ mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump vec3 facet_f0;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 mediump vec3 facet_sheenColor;
 mediump float facet_sheenLod;
 mediump float facet_sheenRoughness;
@@ -81,18 +84,14 @@ float ggx_d_scaled(float alpha,float NoH,vec3 n,vec3 h){
 vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
 }
-const float FUSED_HAMMON_M_MIN=2.44140625e-4;
-float specular_fused_hammon(float alpha,float NoV,float NoL,float NoH,vec3 n,vec3 h){
-float d=ggx_d_scaled(alpha,NoH,n,h);
-float m=max(mix(2.0*NoL*NoV,NoL+NoV,alpha),FUSED_HAMMON_M_MIN);
-float k=(4096.0*alpha)/(d*((2.0*3.14159265359)*m));
-return min(k*(k*((2.0*3.14159265359)*m)),65504.0);
+const float ZIOMA_LOH2_MIN=0.15;
+float specular_lobe_scalar(float alpha,float NoH,float LoH,vec3 n,vec3 h){
+float x=max(LoH*LoH,ZIOMA_LOH2_MIN)*params.facet_ziomaRoughnessFactor;
+float k=params.facet_ggxAlphaScaled/(ggx_d_scaled(alpha,NoH,n,h)*x);
+return min(k*k*x,65504.0);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
-return specular_fused_hammon(alpha,NoV,NoL,NoH,n,h)*f0;
-}
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
+return specular_lobe_scalar(alpha,NoH,LoH,n,h)*f0;
 }
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
@@ -136,9 +135,9 @@ float perceptualRoughness=material_perceptual_roughness(material);
 float alpha=material_alpha(material);
 vec3 v=viewHighp;
 vec3 l=lightHighp;
-vec3 h=half_vector(v,l);
 float NoV=max(dot(n,v),MIN_N_DOT_V);
 float NoL=clamp(dot(n,l),0.0,1.0);
+vec3 h=half_vector(v,l);
 float NoH=clamp(dot(n,h),0.0,1.0);
 float LoH=clamp(dot(l,h),0.0,1.0);
 vec3 specular=specular_lobe(perceptualRoughness,alpha,NoV,NoL,NoH,LoH,n,v,l,h,f0);
@@ -158,7 +157,7 @@ float NoV=max(dot(n,v),MIN_N_DOT_V);
 vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 return apply_ambient_occlusion(material,specular*albedo);
 }
 vec3 add_light(vec3 color,vec3 radiance){

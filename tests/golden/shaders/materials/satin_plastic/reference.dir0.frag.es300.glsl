@@ -29,6 +29,9 @@ highp vec3 facet_diffuseColor;
 highp float facet_perceptualRoughness;
 highp vec3 facet_f0;
 highp float facet_alpha;
+highp float facet_environmentLod;
+highp float facet_ggxAlphaScaled;
+highp float facet_ziomaRoughnessFactor;
 highp vec3 facet_sheenColor;
 highp float facet_sheenLod;
 highp float facet_sheenRoughness;
@@ -86,9 +89,6 @@ vec3 c8=frame.sh[8].rgb;
 e+=c4*(n.x*n.y)+c5*(n.y*n.z)+c6*(3.0*n.z*n.z-1.0)+c7*(n.x*n.z)+c8*(n.x*n.x-n.y*n.y);
 return max(e,vec3(0.0));
 }
-vec3 prefiltered_radiance(vec3 direction,float r){
-return textureLod(facet_environment,direction,r*(float(5-1)*(2.0-r))).rgb;
-}
 vec2 dfg_terms(float NoV,float perceptualRoughness){
 return textureLod(facet_dfgLut,vec2(NoV,perceptualRoughness),0.0).rg;
 }
@@ -126,7 +126,7 @@ vec3 r=reflect(-v,n);
 vec2 dfg=dfg_terms(NoV,perceptualRoughness);
 vec3 albedo=split_sum_albedo(dfg,f0);
 shading_energy_compensation=energy_compensation(dfg,f0);
-vec3 specular=prefiltered_radiance(r,perceptualRoughness);
+vec3 specular=textureLod(facet_environment,r,params.facet_environmentLod).rgb;
 albedo*=shading_energy_compensation;
 return apply_ambient_occlusion(material,specular*albedo);
 }

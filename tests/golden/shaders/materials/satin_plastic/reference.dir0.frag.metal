@@ -13,6 +13,10 @@ struct MaterialParams
     float facet_perceptualRoughness;
     packed_float3 facet_f0;
     float facet_alpha;
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
+    char _m11_pad[4];
     packed_float3 facet_sheenColor;
     float facet_sheenLod;
     float facet_sheenRoughness;
@@ -52,18 +56,18 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]])
 {
     main0_out out = {};
-    float3 _500 = fast::normalize(in.v_normal);
-    float3 _504 = fast::normalize(in.v_toEye);
-    float _614 = _500.y;
-    float _619 = _500.z;
-    float _624 = _500.x;
-    float _742 = fast::max(dot(_500, _504), 9.9999997473787516355514526367188e-05);
-    float3 _746 = reflect(-_504, _500);
-    float4 _781 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_742, params.facet_perceptualRoughness), level(0.0));
-    float4 _842 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_742, params.facet_sheenRoughness), level(0.0));
-    float _855 = _842.z;
-    float3 _881 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _614)) + (frame.sh[2].xyz * _619)) + (frame.sh[3].xyz * _624)) + (((((frame.sh[4].xyz * (_624 * _614)) + (frame.sh[5].xyz * (_614 * _619))) + (frame.sh[6].xyz * fma(3.0 * _619, _619, -1.0))) + (frame.sh[7].xyz * (_624 * _619))) + (frame.sh[8].xyz * fma(_624, _624, -(_614 * _614)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _746, level(params.facet_perceptualRoughness * (4.0 * (2.0 - params.facet_perceptualRoughness)))).xyz * (mix(_781.xxx, _781.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _781.y) - 1.0))))) * fma(-fast::max(params.facet_sheenColor[0], fast::max(params.facet_sheenColor[1], params.facet_sheenColor[2])), _855, 1.0);
-    out.fragColor = float4(fma(facet_environment.sample(facet_environmentSmplr, _746, level(params.facet_sheenLod)).xyz, float3(params.facet_sheenColor) * _855, _881), 1.0);
+    float3 _485 = fast::normalize(in.v_normal);
+    float3 _489 = fast::normalize(in.v_toEye);
+    float _599 = _485.y;
+    float _604 = _485.z;
+    float _609 = _485.x;
+    float _725 = fast::max(dot(_485, _489), 9.9999997473787516355514526367188e-05);
+    float3 _729 = reflect(-_489, _485);
+    float4 _767 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_725, params.facet_perceptualRoughness), level(0.0));
+    float4 _817 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(_725, params.facet_sheenRoughness), level(0.0));
+    float _830 = _817.z;
+    float3 _856 = fma(float3(params.facet_diffuseColor), fast::max((((frame.sh[0].xyz + (frame.sh[1].xyz * _599)) + (frame.sh[2].xyz * _604)) + (frame.sh[3].xyz * _609)) + (((((frame.sh[4].xyz * (_609 * _599)) + (frame.sh[5].xyz * (_599 * _604))) + (frame.sh[6].xyz * fma(3.0 * _604, _604, -1.0))) + (frame.sh[7].xyz * (_609 * _604))) + (frame.sh[8].xyz * fma(_609, _609, -(_599 * _599)))), float3(0.0)), facet_environment.sample(facet_environmentSmplr, _729, level(params.facet_environmentLod)).xyz * (mix(_767.xxx, _767.yyy, float3(params.facet_f0)) * (float3(1.0) + (float3(params.facet_f0) * ((1.0 / _767.y) - 1.0))))) * fma(-fast::max(params.facet_sheenColor[0], fast::max(params.facet_sheenColor[1], params.facet_sheenColor[2])), _830, 1.0);
+    out.fragColor = float4(fma(facet_environment.sample(facet_environmentSmplr, _729, level(params.facet_sheenLod)).xyz, float3(params.facet_sheenColor) * _830, _856), 1.0);
     return out;
 }
 

@@ -29,6 +29,9 @@ mediump float facet_pad44;
 mediump vec3 facet_diffuseColor;
 mediump float facet_perceptualRoughness;
 mediump float facet_alpha;
+mediump float facet_environmentLod;
+mediump float facet_ggxAlphaScaled;
+mediump float facet_ziomaRoughnessFactor;
 mediump vec3 facet_sheenColor;
 mediump float facet_sheenLod;
 }

@@ -13,7 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
-    char _m8_pad[12];
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
     packed_float3 facet_sheenColor;
     float facet_sheenLod;
 };
@@ -32,13 +34,13 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _286 = normalize(half3(in.v_normal));
-    half3 _355 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    float4 _387 = facet_irradiance.sample(facet_irradianceSmplr, float3(_286), level(0.0));
-    half4 _577 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_286, _355), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
-    half _445 = _577.z;
-    float4 _461 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_355, _286)), level(params.facet_sheenLod));
-    out.fragColor = float4(half4(fma(half4(_461).xyz, half3(float3(params.facet_sheenColor)) * _445, (half3(float3(params.facet_diffuseColor)) * half4(_387).xyz) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _445, half(1.0))), half(1.0)));
+    half3 _288 = normalize(half3(in.v_normal));
+    half3 _357 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _389 = facet_irradiance.sample(facet_irradianceSmplr, float3(_288), level(0.0));
+    half4 _579 = half4(facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(max(dot(_288, _357), half(9.9999997473787516355514526367188e-05)), half(params.facet_perceptualRoughness))), level(0.0)));
+    half _447 = _579.z;
+    float4 _463 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_357, _288)), level(params.facet_sheenLod));
+    out.fragColor = float4(half4(fma(half4(_463).xyz, half3(float3(params.facet_sheenColor)) * _447, (half3(float3(params.facet_diffuseColor)) * half4(_389).xyz) * fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _447, half(1.0))), half(1.0)));
     return out;
 }
 

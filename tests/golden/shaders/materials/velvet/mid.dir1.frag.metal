@@ -13,7 +13,9 @@ struct MaterialParams
     packed_float3 facet_diffuseColor;
     float facet_perceptualRoughness;
     float facet_alpha;
-    char _m8_pad[12];
+    float facet_environmentLod;
+    float facet_ggxAlphaScaled;
+    float facet_ziomaRoughnessFactor;
     packed_float3 facet_sheenColor;
     float facet_sheenLod;
 };
@@ -51,24 +53,24 @@ struct main0_in
 fragment main0_out main0(main0_in in [[stage_in]], constant FrameUniforms& frame [[buffer(0)]], constant MaterialParams& params [[buffer(2)]], texture2d<float> facet_dfgLut [[texture(0)]], texturecube<float> facet_environment [[texture(2)]], texturecube<float> facet_irradiance [[texture(4)]], sampler facet_dfgLutSmplr [[sampler(0)]], sampler facet_environmentSmplr [[sampler(2)]], sampler facet_irradianceSmplr [[sampler(4)]])
 {
     main0_out out = {};
-    half3 _456 = normalize(half3(in.v_normal));
-    half3 _547 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
-    float4 _579 = facet_irradiance.sample(facet_irradianceSmplr, float3(_456), level(0.0));
-    half _619 = max(dot(_456, _547), half(9.9999997473787516355514526367188e-05));
-    float4 _624 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_619, half(params.facet_perceptualRoughness))), level(0.0));
-    half4 _934 = half4(_624);
-    half _637 = _934.z;
-    half _639 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _637, half(1.0));
-    float4 _653 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_547, _456)), level(params.facet_sheenLod));
-    half3 _503 = half4(frame.lightDirection).xyz;
-    half _709 = dot(_456, _503);
-    half _711 = clamp(_709, half(0.0), half(1.0));
-    half _723 = clamp(dot(_456, normalize(_547 + _503)), half(0.0), half(1.0));
-    half _792 = half(8192.0) * fma(half(-float(_711)), _619, _711 + _619);
-    half _796 = half(1.0) / (half(params.facet_alpha) * _792);
-    half3 _756 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_709 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_711), half3(float3(0.0)), half3(float3(1.0)))) * _639) + (half3(float3(params.facet_sheenColor)) * ((((fma(_796, _792, half(2.0)) * pow(max(fma(half(-float(_723)), _723, half(1.0)), half(0.0)), half(0.5) * (_796 * _792))) * half(0.15915493667125701904296875)) * (_711 * (_796 * (half(2048.0) * half(params.facet_alpha))))) * half4(_624).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
-    half3 _831 = fma(half4(_653).xyz, half3(float3(params.facet_sheenColor)) * _637, (half3(float3(params.facet_diffuseColor)) * half4(_579).xyz) * _639) + _756;
-    out.fragColor = float4(half4(_831, half(1.0)));
+    half3 _458 = normalize(half3(in.v_normal));
+    half3 _549 = half3(in.v_toEye) * rsqrt(max(dot(half3(in.v_toEye), half3(in.v_toEye)), half(6.103515625e-05)));
+    float4 _581 = facet_irradiance.sample(facet_irradianceSmplr, float3(_458), level(0.0));
+    half _621 = max(dot(_458, _549), half(9.9999997473787516355514526367188e-05));
+    float4 _626 = facet_dfgLut.sample(facet_dfgLutSmplr, float2(half2(_621, half(params.facet_perceptualRoughness))), level(0.0));
+    half4 _936 = half4(_626);
+    half _639 = _936.z;
+    half _641 = fma(half(-float(max(half3(float3(params.facet_sheenColor)).x, max(half3(float3(params.facet_sheenColor)).y, half3(float3(params.facet_sheenColor)).z)))), _639, half(1.0));
+    float4 _655 = facet_environment.sample(facet_environmentSmplr, float3(reflect(-_549, _458)), level(params.facet_sheenLod));
+    half3 _505 = half4(frame.lightDirection).xyz;
+    half _711 = dot(_458, _505);
+    half _713 = clamp(_711, half(0.0), half(1.0));
+    half _725 = clamp(dot(_458, normalize(_549 + _505)), half(0.0), half(1.0));
+    half _794 = half(8192.0) * fma(half(-float(_713)), _621, _713 + _621);
+    half _798 = half(1.0) / (half(params.facet_alpha) * _794);
+    half3 _758 = min(((((half3(float3(params.facet_diffuseColor)) * (half(0.3183098733425140380859375) * clamp((_711 + half(0.5)) * half(0.4444444477558135986328125), half(0.0), half(1.0)))) * clamp(half3(float3(params.subsurface)) + half3(_713), half3(float3(0.0)), half3(float3(1.0)))) * _641) + (half3(float3(params.facet_sheenColor)) * ((((fma(_798, _794, half(2.0)) * pow(max(fma(half(-float(_725)), _725, half(1.0)), half(0.0)), half(0.5) * (_798 * _794))) * half(0.15915493667125701904296875)) * (_713 * (_798 * (half(2048.0) * half(params.facet_alpha))))) * half4(_626).w))) * half4(frame.lightColor).xyz, half3(float3(65504.0)));
+    half3 _833 = fma(half4(_655).xyz, half3(float3(params.facet_sheenColor)) * _639, (half3(float3(params.facet_diffuseColor)) * half4(_581).xyz) * _641) + _758;
+    out.fragColor = float4(half4(_833, half(1.0)));
     return out;
 }
 

@@ -29,6 +29,9 @@ highp float facet_pad44;
 highp vec3 facet_diffuseColor;
 highp float facet_perceptualRoughness;
 highp float facet_alpha;
+highp float facet_environmentLod;
+highp float facet_ggxAlphaScaled;
+highp float facet_ziomaRoughnessFactor;
 highp vec3 facet_sheenColor;
 highp float facet_sheenLod;
 }
