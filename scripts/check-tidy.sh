@@ -20,7 +20,9 @@ if [ "$runs" -eq 0 ]; then
   echo "check-tidy: clang-tidy ran on no file" >&2
   exit 2
 fi
-findings=$(grep -E ': (warning|error): ' "$log" | sed 's/\x1b\[[0-9;]*m//g' | sort -u || true)
+# run-clang-tidy colours its output (--use-color) even into a file: strip the escapes before
+# matching, or no finding would ever match.
+findings=$(sed 's/\x1b\[[0-9;]*m//g' "$log" | grep -E ': (warning|error): ' | sort -u || true)
 if [ -n "$findings" ]; then
   echo "$findings"
   echo "check-tidy: $(echo "$findings" | wc -l) finding(s) (.clang-tidy says which names are whose)" >&2

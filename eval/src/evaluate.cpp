@@ -188,14 +188,16 @@ class Evaluation {
     view.image = (fs::path("images") / (fileStem(c.name) + "." + view.name + ".png")).string();
     if (how.images && !runtime::encodePng(image.width, image.height, image.ldr, &view.png, &message))
       return fail(c, message, error);
+    const runtime::FrameResult* measured = &image;
     if (isReference) {
       if (backgrounds_.size() == vi)
         backgrounds_.push_back({frame.clearColor[0], frame.clearColor[1], frame.clearColor[2]});
       referenceImages_.push_back(std::move(image));
+      measured = &referenceImages_.back();
       if (vi == 0) referenceFrame_ = std::move(prepared);  // for the paired timing of the others
     }
     const runtime::FrameResult& ref = referenceImages_[vi];
-    const runtime::FrameResult& mine = isReference ? ref : image;
+    const runtime::FrameResult& mine = *measured;
     std::vector<bool> mask = coverageMask(mine.hdr, ref.hdr, backgrounds_[vi]);
     ErrorAccumulator one;
     one.add(mine.ldr, ref.ldr, mine.hdr, ref.hdr, mask);

@@ -15,7 +15,7 @@ namespace facet::runtime {
 namespace {
 
 namespace fs = std::filesystem;
-using ordered = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 const char* const kSlotParameters[kGltfSlots] = {
     "baseColorTexture",          "metallicRoughnessTexture", "normalTexture",         "occlusionTexture",
@@ -37,7 +37,7 @@ std::string imageExtension(const GltfImage& image) {
 }
 
 // A scene object's sampler (scene-format.md, "samplers"), every field spelled out.
-ordered samplerJson(const TextureSampler& s) {
+OrderedJson samplerJson(const TextureSampler& s) {
   const char* const wraps[] = {"repeat", "clampToEdge", "mirroredRepeat"};
   std::string min = s.minLinear ? "linear" : "nearest";
   if (s.mipmaps) min += s.mipLinear ? "MipmapLinear" : "MipmapNearest";
@@ -47,7 +47,7 @@ ordered samplerJson(const TextureSampler& s) {
           {"minFilter", min}};
 }
 
-ordered camera(const GltfMaterialSet& set) {
+OrderedJson camera(const GltfMaterialSet& set) {
   std::array<double, 3> centre;
   double radius = 0;
   for (size_t c = 0; c < 3; ++c) {
@@ -121,7 +121,7 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
     return imagePaths[index] = relative;
   };
 
-  ordered objects = ordered::array();
+  OrderedJson objects = OrderedJson::array();
   std::set<std::string> written;
   for (const GltfMaterial& m : set->materials) {
     const std::string name = m.features.name();
@@ -130,7 +130,7 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
       files.push_back({(out / (name + ".mat")).string(), {source.begin(), source.end()}});
       result->materials.push_back((out / (name + ".mat")).string());
     }
-    ordered params, samplers;
+    OrderedJson params, samplers;
     params["baseColorFactor"] = m.baseColorFactor;
     params["metallicFactor"] = m.metallicFactor;
     params["roughnessFactor"] = m.roughnessFactor;
@@ -167,17 +167,18 @@ bool importGltf(const std::string& path, const std::string& outDir, const std::s
       }
       if (!(t.sampler == TextureSampler{})) samplers[p] = samplerJson(t.sampler);
     }
-    ordered object = {{"mesh", mesh}, {"gltfMaterial", m.index}, {"material", name}, {"params", params}};
+    OrderedJson object = {{"mesh", mesh}, {"gltfMaterial", m.index}, {"material", name}, {"params", params}};
     if (!samplers.empty()) object["samplers"] = samplers;
     objects.push_back(object);
   }
-  ordered scene = {{"width", 480},
-                   {"height", 360},
-                   {"tier", "high"},
-                   {"camera", camera(*set)},
-                   {"sun", {{"direction", {-0.4, -0.55, -0.73}}, {"illuminance", 110000}, {"color", {1.0, 0.96, 0.9}}}},
-                   {"sky", {{"luminance", 6000}}},
-                   {"objects", objects}};
+  OrderedJson scene = {
+      {"width", 480},
+      {"height", 360},
+      {"tier", "high"},
+      {"camera", camera(*set)},
+      {"sun", {{"direction", {-0.4, -0.55, -0.73}}, {"illuminance", 110000}, {"color", {1.0, 0.96, 0.9}}}},
+      {"sky", {{"luminance", 6000}}},
+      {"objects", objects}};
   const std::string text = scene.dump(2) + "\n";
   result->scene = (out / (stem + ".json")).string();
   files.push_back({result->scene, {text.begin(), text.end()}});
