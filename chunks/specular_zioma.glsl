@@ -40,11 +40,17 @@ const float ZIOMA_LOH2_MIN = 0.15;
 const float ZIOMA_ROUGH_SCALE = -0.3125;
 const float ZIOMA_ROUGH_BIAS = 1.0082;
 
+// spec = k · k · X with k = a / (d · X): α²/(d² X) for a = α and d unscaled, and the same for
+// a = 2^12 α and d' = 2^12 d (specular_zioma_lobe.glsl's preshaded form). fp16 as above.
+float specular_zioma_kkx(float a, float d, float x) {
+    float k = a / (d * x);
+    return saturateMediump(k * k * x);
+}
+
 // The shared form, given the GGX denominator d = NoH²(α² − 1) + 1 however the caller computed it.
 float specular_zioma_form_d(float alpha, float d, float LoH, float loH2Min, float roughScale, float roughBias) {
     float x = (4.0 * PI) * max(LoH * LoH, loH2Min) * (roughScale * alpha + roughBias);
-    float k = alpha / (d * x);
-    return saturateMediump(k * k * x);
+    return specular_zioma_kkx(alpha, d, x);
 }
 
 float specular_zioma_form(float alpha, float NoH, float LoH, float loH2Min, float roughScale, float roughBias) {

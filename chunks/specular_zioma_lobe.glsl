@@ -15,8 +15,7 @@
 #if defined(FACET_PRESHADED_ROUGHNESS) && !defined(FACET_SPECULAR_AA)
 float specular_lobe_scalar(float alpha, float NoH, float LoH, vec3 n, vec3 h) {
     float x = max(LoH * LoH, ZIOMA_LOH2_MIN) * params.facet_ziomaRoughnessFactor;
-    float k = params.facet_ggxAlphaScaled / (ggx_d_scaled(alpha, NoH, n, h) * x);
-    return saturateMediump(k * k * x);
+    return specular_zioma_kkx(params.facet_ggxAlphaScaled, ggx_d_scaled(alpha, NoH, n, h), x);
 }
 #else
 float specular_lobe_scalar(float alpha, float NoH, float LoH, vec3 n, vec3 h) {

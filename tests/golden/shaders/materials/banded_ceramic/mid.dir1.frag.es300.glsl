@@ -79,10 +79,13 @@ return dot(t,t);
 const float ZIOMA_LOH2_MIN=0.15;
 const float ZIOMA_ROUGH_SCALE= -0.3125;
 const float ZIOMA_ROUGH_BIAS=1.0082;
+float specular_zioma_kkx(float a,float d,float x){
+float k=a/(d*x);
+return min(k*k*x,65504.0);
+}
 float specular_zioma_form_d(float alpha,float d,float LoH,float loH2Min,float roughScale,float roughBias){
 float x=(4.0*3.14159265359)*max(LoH*LoH,loH2Min)*(roughScale*alpha+roughBias);
-float k=alpha/(d*x);
-return min(k*k*x,65504.0);
+return specular_zioma_kkx(alpha,d,x);
 }
 float specular_zioma_nxh(float alpha,float NoH,vec3 n,vec3 h,float LoH){
 float d=ggx_d_scaled(alpha,NoH,n,h)*(1.0/4096.0);

@@ -85,10 +85,13 @@ vec4 t=64.0*vec4(cross(n,h),alpha*NoH);
 return dot(t,t);
 }
 const float ZIOMA_LOH2_MIN=0.15;
+float specular_zioma_kkx(float a,float d,float x){
+float k=a/(d*x);
+return min(k*k*x,65504.0);
+}
 float specular_lobe_scalar(float alpha,float NoH,float LoH,vec3 n,vec3 h){
 float x=max(LoH*LoH,ZIOMA_LOH2_MIN)*params.facet_ziomaRoughnessFactor;
-float k=params.facet_ggxAlphaScaled/(ggx_d_scaled(alpha,NoH,n,h)*x);
-return min(k*k*x,65504.0);
+return specular_zioma_kkx(params.facet_ggxAlphaScaled,ggx_d_scaled(alpha,NoH,n,h),x);
 }
 vec3 specular_lobe(float perceptualRoughness,float alpha,float NoV,float NoL,float NoH,float LoH,vec3 n,vec3 v,vec3 l,vec3 h,vec3 f0){
 return specular_lobe_scalar(alpha,NoH,LoH,n,h)*f0;
