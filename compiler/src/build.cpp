@@ -182,10 +182,11 @@ std::vector<uint32_t> wordsOf(const std::vector<uint8_t>& bytes) {
 // checksum only catches damage, not an edit resealed with a new checksum. So it ships only after
 // the checks fresh output passes on its way: spirv-val on each SPIR-V stage (finishSpirv) and
 // glslang on the GLSL ES pair (shippedGlslEs). The MSL has no checker on either path.
-bool passesOutputChecks(const CompiledShaders& shaders) {
+bool passesOutputChecks(const CompiledShaders& shaders, bool spirvOnly) {
   std::string log;
   for (size_t spirv : {2, 3})
     if (shaders[spirv].size() % 4 != 0 || !validateSpirv(wordsOf(shaders[spirv]), &log)) return false;
+  if (spirvOnly) return true;
   StageSources es;
   es.vertex.assign(shaders[0].begin(), shaders[0].end());
   es.fragment.assign(shaders[1].begin(), shaders[1].end());
@@ -208,8 +209,8 @@ struct CostModel {
   static double glslEs(const VariantBuild& v) {
     return kGlslEsPerByte * double(v.es.vertex.size() + v.es.fragment.size());
   }
-  // fp16 emulation optimizes and validates a second copy of the stage.
-  static double stage(size_t words, bool emulated) { return kStagePerWord * double(words) * (emulated ? 2 : 1); }
+  // fp16 emulation optimizes and validates a second copy of the stage (BuildOptions::spirvOnly: instead).
+  static double stage(size_t words, bool secondCopy) { return kStagePerWord * double(words) * (secondCopy ? 2 : 1); }
 };
 
 // A material's variants as jobs on one pool. Each job starts with the variant's assembly and
@@ -283,23 +284,25 @@ class VariantJobs {
     if (!key.depthOnly) v.preshader = preshaderProgram(ctx_.material, ctx_.layout, ctx_.preshade, v.tier);
     if (!v.preshader.empty()) input.preshade = &ctx_.preshade;
     std::string* error = &v.failures[Assemble].message;
-    if (!assemble(input, Flavour::GlslEs300, &v.es, error) || !assemble(input, Flavour::Vulkan, &v.vk, error)) {
+    const bool es = !ctx_.options.spirvOnly;
+    if ((es && !assemble(input, Flavour::GlslEs300, &v.es, error)) || !assemble(input, Flavour::Vulkan, &v.vk, error)) {
       fail(i, Assemble);
       return finish(i);
     }
     v.samplesSpecularLut = samplesSpecularLut(input);
     // The same text compiles to the same code, so a cached variant skips every backend.
-    v.cacheKey = variantCacheKey(compilerVersion(), v.es, v.vk, ctx_.options.fp16Emulation, ctx_.options.fp16TrueHalf);
+    v.cacheKey = variantCacheKey(compilerVersion(), v.es, v.vk,
+                                 {ctx_.options.fp16Emulation, ctx_.options.fp16TrueHalf, ctx_.options.spirvOnly});
     if (std::optional<CompiledShaders> cached = ctx_.cache.load(v.cacheKey)) {
-      if (passesOutputChecks(*cached)) {
+      if (passesOutputChecks(*cached, ctx_.options.spirvOnly)) {
         v.shaders = std::move(*cached);
         v.cacheHit = true;
         return finish(i);
       }
       v.cacheRejected = true;  // compiled below, and the entry replaced
     }
-    v.pending = 2;
-    add(pool, CostModel::glslEs(v), [this, i](JobPool&) { glslEsStep(i); });
+    v.pending = es ? 2 : 1;
+    if (es) add(pool, CostModel::glslEs(v), [this, i](JobPool&) { glslEsStep(i); });
     add(pool, CostModel::kFirst, [this, i](JobPool& p) { spirvStep(i, p); });
   }
 
@@ -342,14 +345,16 @@ class VariantJobs {
       return stepDone(i);
     }
     v.pending += 2;  // before this job counts itself done
-    const bool emulate = emulated(v);
-    add(pool, CostModel::stage(v.spirv.vertex.size(), emulate), [this, i](JobPool&) { stageStep(i, VertexStage); });
-    add(pool, CostModel::stage(v.spirv.fragment.size(), emulate), [this, i](JobPool&) { stageStep(i, FragmentStage); });
+    const bool twoCopies = emulated(v) && !ctx_.options.spirvOnly;
+    add(pool, CostModel::stage(v.spirv.vertex.size(), twoCopies), [this, i](JobPool&) { stageStep(i, VertexStage); });
+    add(pool, CostModel::stage(v.spirv.fragment.size(), twoCopies),
+        [this, i](JobPool&) { stageStep(i, FragmentStage); });
     stepDone(i);
   }
 
   // One stage from glslang's SPIR-V to what ships: the fp16-emulated copy when asked for (it must
-  // see the stage before spirv-opt), validated and optimized SPIR-V, and MSL from it.
+  // see the stage before spirv-opt), validated and optimized SPIR-V, and MSL from it. SPIR-V only:
+  // the emulated copy is the only one an emulated stage needs.
   void stageStep(size_t i, Step step) {
     VariantBuild& v = variants_[i];
     if (skip(i)) {
@@ -371,8 +376,16 @@ class VariantJobs {
       if (!lowerRelaxedToQuantized(&*emulatedWords, &counts, error) ||
           !finishSpirv(&*emulatedWords, (std::string("fp16-emulated ") + stage).c_str(), error))
         return false;
+      if (ctx_.options.spirvOnly) {  // the un-emulated copy would only feed the MSL
+        v.shaders[2 + slot] = bytesOf(*emulatedWords);
+        return true;
+      }
     }
     if (!finishSpirv(words, stage, error)) return false;
+    if (ctx_.options.spirvOnly && !trueHalf(v)) {  // true half goes on: it ships the converted stage
+      v.shaders[2 + slot] = bytesOf(*words);
+      return true;
+    }
     // Metal: mediump becomes `half` (16-bit) through spirv-opt, as on GLES drivers.
     std::vector<uint32_t> metal = *words;
     std::string log, msl;
@@ -380,7 +393,7 @@ class VariantJobs {
       *error = "internal error: spirv-opt --convert-relaxed-to-half failed for variant " + v.keyText + ":\n" + log;
       return false;
     }
-    if (!spirvToMsl(metal, ctx_.mslBindings, &msl, error)) return false;
+    if (!ctx_.options.spirvOnly && !spirvToMsl(metal, ctx_.mslBindings, &msl, error)) return false;
     if (trueHalf(v)) {
       // The same conversion as Metal's, then 32-bit image operands (lavapipe cannot compile half
       // ones); validated, since it ships in place of the stage.
@@ -443,6 +456,8 @@ class VariantJobs {
         {Stage::Vertex, Target::Msl, std::move(shaders[4])},
         {Stage::Fragment, Target::Msl, std::move(shaders[5])},
     };
+    if (ctx_.options.spirvOnly)
+      std::erase_if(v.variant.shaders, [](const package::Shader& s) { return s.target != Target::Spirv; });
     v.libraryFiles = v.es.libraryFiles;
     v.libraryFiles.insert(v.vk.libraryFiles.begin(), v.vk.libraryFiles.end());
   }

@@ -77,7 +77,7 @@ const std::string& compilerBuildIdentity() {
 }
 
 std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
-                            bool fp16Emulation, bool fp16TrueHalf) {
+                            const VariantOutputOptions& output) {
   // Length-prefixed fields, so no two different inputs concatenate to the same bytes.
   std::string input;
   for (const std::string* field :
@@ -85,8 +85,9 @@ std::string variantCacheKey(const std::string& compilerVersion, const StageSourc
     appendLE(input, field->size(), 8);
     input += *field;
   }
-  input += fp16Emulation ? '1' : '0';
-  input += fp16TrueHalf ? '1' : '0';
+  input += output.fp16Emulation ? '1' : '0';
+  input += output.fp16TrueHalf ? '1' : '0';
+  input += output.spirvOnly ? '1' : '0';
   XXH128_hash_t h = XXH3_128bits(input.data(), input.size());
   char hex[33];
   std::snprintf(hex, sizeof hex, "%016llx%016llx", static_cast<unsigned long long>(h.high64),

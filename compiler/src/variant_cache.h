@@ -26,9 +26,16 @@ using CompiledShaders = std::array<std::vector<uint8_t>, 6>;
 // from the same GLSL text.
 const std::string& compilerBuildIdentity();
 
+// The build options (BuildOptions) that change a variant's compiled output beyond its text.
+struct VariantOutputOptions {
+  bool fp16Emulation = false;
+  bool fp16TrueHalf = false;
+  bool spirvOnly = false;  // the entry holds the two SPIR-V stages alone (the other slots empty)
+};
+
 // 32 hex digits (XXH3-128) naming a variant's compiled output.
 std::string variantCacheKey(const std::string& compilerVersion, const StageSources& es, const StageSources& vulkan,
-                            bool fp16Emulation, bool fp16TrueHalf);
+                            const VariantOutputOptions& output);
 
 // The folder is the cache's own (prepareVariantCache, build.h): its marker file, entries
 // dir/xx/<key> (xx: the key's first two digits) and their temporary files dir/xx/<key>.tmp.*.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <map>
 #include <optional>
@@ -101,7 +102,9 @@ class Evaluation {
     r->configuration = c;
     // With the cost given, only the views' variants: the furnace's is built when it is rendered.
     const Variants variants = how.costed ? Variants::Views : Variants::All;
-    std::optional<compiler::BuildResult> built = build(c, options_.fp16Emulation, variants, &r->variantKey, error);
+    std::optional<compiler::BuildResult> built =
+        how.costed ? aheadOrBuild(c, &r->variantKey, error)
+                   : build(c, options_.fp16Emulation, variants, &r->variantKey, error);
     const fs::path packageDir = workDir_ / fileStem(c.name);
     if (!built || !writePackage(built->package, packageDir, error)) return false;
 
@@ -162,6 +165,21 @@ class Evaluation {
         build(c, options_.fp16Emulation, Variants::Furnace, &furnaceKey, error);
     return lights && writePackage(lights->package, packageDir / "furnace", error) &&
            furnace(c, packageDir / "furnace", r, error);
+  }
+
+  // Starts measure()'s build of a configuration given its cost (Variants::Views) on a thread of its
+  // own, one core, so that it overlaps the renders before it; measure() takes it from there. Two
+  // are kept: the one measure() is about to take and this one. An older one nobody took is
+  // waited for and dropped.
+  void buildAhead(const Configuration& c) {
+    for (const AheadBuild& a : ahead_)
+      if (sameConfiguration(a.configuration, c)) return;
+    if (ahead_.size() == 2) ahead_.erase(ahead_.begin());  // std::future's destructor waits for its thread
+    ahead_.emplace_back(c, std::async(std::launch::async, [this, c] {
+                          AheadBuild::Outcome o;
+                          o.built = build(c, options_.fp16Emulation, Variants::Views, &o.firstKey, &o.error, 1);
+                          return o;
+                        }));
   }
 
   // One view rendered and scored against reference's (the reference's own image kept), added to
@@ -319,6 +337,34 @@ class Evaluation {
     return package::writeFile((dir / (material_.name + ".matpkg")).string(), package::write(pkg), &error->message);
   }
 
+  // A build started by buildAhead(): the same bytes build() would give, computed earlier.
+  struct AheadBuild {
+    struct Outcome {
+      std::optional<compiler::BuildResult> built;
+      std::string firstKey;
+      EvalError error;
+    };
+    AheadBuild(Configuration c, std::future<Outcome> f) : configuration(std::move(c)), outcome(std::move(f)) {}
+    Configuration configuration;
+    std::future<Outcome> outcome;
+  };
+
+  static bool sameConfiguration(const Configuration& a, const Configuration& b) {
+    return a.name == b.name && a.tier == b.tier && a.config == b.config;
+  }
+
+  // measure()'s build of a configuration given its cost: buildAhead()'s when it started this one.
+  std::optional<compiler::BuildResult> aheadOrBuild(const Configuration& c, std::string* firstKey, EvalError* error) {
+    auto a = std::find_if(ahead_.begin(), ahead_.end(),
+                          [&](const AheadBuild& b) { return sameConfiguration(b.configuration, c); });
+    if (a == ahead_.end()) return build(c, options_.fp16Emulation, Variants::Views, firstKey, error);
+    AheadBuild::Outcome o = a->outcome.get();
+    ahead_.erase(a);
+    *firstKey = std::move(o.firstKey);
+    if (!o.built) *error = std::move(o.error);
+    return std::move(o.built);
+  }
+
   // Which of a configuration's variants a build makes. All: the views', the sun + IBL variant
   // <tier>.dir1 the cost goals refer to, and (lit materials) the white furnace's. Cost: <tier>.dir1
   // alone. Views and Furnace: the views' alone, the furnace's alone.
@@ -326,13 +372,17 @@ class Evaluation {
 
   // The configuration's package: its tier only, the variants asked for. *firstKey: the first
   // view's variant (Cost: <tier>.dir1; Furnace: the furnace's).
+  // jobs: BuildOptions::jobs (0: as many as the machine has; Cost always builds on one).
   std::optional<compiler::BuildResult> build(const Configuration& c, bool fp16Emulation, Variants variants,
-                                             std::string* firstKey, EvalError* error) const {
+                                             std::string* firstKey, EvalError* error, unsigned jobs = 0) const {
     compiler::BuildOptions options;
     options.tiers = {c.tier};
     options.cacheDir = options_.cacheDir;
-    if (variants == Variants::Cost) options.jobs = 1;
+    options.jobs = variants == Variants::Cost ? 1 : jobs;
     options.fp16Emulation = fp16Emulation;
+    // The renderer and the cost model read SPIR-V; the GLSL ES is read only by the Mesa figures
+    // (addGpuFigures), from the package measure() costs: the one built with everything, unemulated.
+    options.spirvOnly = fp16Emulation || variants != Variants::All;
     options.adjustTier = [config = c.config](permutations::Tier, TierConfig* t) { *t = config; };
     const permutations::MaterialNeeds needs{material_.shading == "lit",
                                             permutations::blendingCastsShadows(material_.blending)};
@@ -451,6 +501,7 @@ class Evaluation {
   std::unique_ptr<PreparedFrame> referenceFrame_;                   // the reference's first view
   std::optional<bool> gpuClock_;                                    // timed by the forward pass's GPU time
   std::map<std::string, std::vector<RenderedView>> renderedViews_;  // by renderedBytes()
+  std::vector<AheadBuild> ahead_;  // last: their threads read the members above until joined
 };
 
 }  // namespace
@@ -543,6 +594,8 @@ bool Session::cost(const Configuration& c, ConfigurationResult* r, EvalError* er
 bool Session::measure(const Configuration& c, ConfigurationResult* r, EvalError* error, const MeasureOptions& how) {
   return state_->evaluation->measure(c, false, r, error, how);
 }
+
+void Session::buildAhead(const Configuration& c) { state_->evaluation->buildAhead(c); }
 
 std::string Session::timingClock() const { return state_->evaluation->timingClock(); }
 

@@ -580,7 +580,8 @@ const char* kHardCaseMaterial = R"(material hard_case {
     }
 })";
 
-std::optional<compiler::BuildResult> build(const std::string& text, bool emulate, bool trueHalf = false) {
+std::optional<compiler::BuildResult> build(const std::string& text, bool emulate, bool trueHalf = false,
+                                           bool spirvOnly = false) {
   ir::SourceFile file{"hard_case.mat", text};
   ir::Diagnostics diags(file);
   auto material = ir::compileSource(file, diags);
@@ -589,6 +590,7 @@ std::optional<compiler::BuildResult> build(const std::string& text, bool emulate
   compiler::BuildOptions options;
   options.fp16Emulation = emulate;
   options.fp16TrueHalf = trueHalf;
+  options.spirvOnly = spirvOnly;
   compiler::BuildError error;
   auto built = compiler::buildMaterial(*material, options, &error);
   EXPECT_TRUE(built) << error.message;
@@ -643,6 +645,28 @@ TEST(Fp16Build, EmulationChangesOnlyTheSpirvOfMediumpTiers) {
                                     EXPECT_GT(countOf(text, "OpQuantizeToF16"), 10u);
                                   }
                                 });
+}
+
+// matc eval and matc tune build SPIR-V alone (BuildOptions::spirvOnly): the same SPIR-V as the
+// full build, fp16-emulated or not, and no other target (an emulated stage skips the un-emulated
+// copy that only fed the MSL, so this also shows that copy was not what ships).
+TEST(Fp16Build, SpirvOnlyHoldsTheFullBuildsSpirvAndNoOtherTarget) {
+  for (bool emulate : {false, true}) {
+    SCOPED_TRACE(emulate ? "fp16-emulated" : "plain");
+    auto full = build(kHardCaseMaterial, emulate), spirv = build(kHardCaseMaterial, emulate, false, true);
+    ASSERT_TRUE(full && spirv);
+    ASSERT_EQ(full->package.variants.size(), spirv->package.variants.size());
+    for (size_t i = 0; i < full->package.variants.size(); ++i) {
+      const package::Variant& v = spirv->package.variants[i];
+      SCOPED_TRACE(v.key);
+      EXPECT_EQ(v.key, full->package.variants[i].key);
+      ASSERT_EQ(v.shaders.size(), 2u);
+      for (const package::Shader& s : v.shaders) {
+        EXPECT_EQ(s.target, package::Target::Spirv);
+        EXPECT_EQ(s.code, shaderOf(*full, v.key, s.stage, package::Target::Spirv)->code);
+      }
+    }
+  }
 }
 
 // The true-half build (BuildOptions::fp16TrueHalf) changes only the SPIR-V of mediump tiers: it

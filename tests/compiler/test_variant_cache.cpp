@@ -68,6 +68,27 @@ TEST(VariantCache, WarmBuildTakesEveryVariantFromTheCacheAndWritesTheSameBytes) 
   EXPECT_EQ(facet::package::write(warm->package), bytes);
 }
 
+// A SPIR-V-only build (BuildOptions::spirvOnly, matc eval's) keeps entries of its own: it neither
+// takes a full build's entry (which holds code it does not ship) nor leaves its own where a full
+// build would find a variant without GLSL ES or MSL.
+TEST(VariantCache, SpirvOnlyAndFullBuildsKeepEntriesOfTheirOwn) {
+  const std::string dir = facet::test::scratchDir("variant-cache-spirv-only");
+  facet::compiler::BuildOptions full = withCache(dir), spirvOnly = withCache(dir);
+  spirvOnly.spirvOnly = true;
+  auto fullCold = facet::test::buildText(kMaterial, "test.mat", full);
+  auto spirvCold = facet::test::buildText(kMaterial, "test.mat", spirvOnly);
+  auto spirvWarm = facet::test::buildText(kMaterial, "test.mat", spirvOnly);
+  auto fullWarm = facet::test::buildText(kMaterial, "test.mat", full);
+  ASSERT_TRUE(fullCold && spirvCold && spirvWarm && fullWarm);
+  EXPECT_EQ(spirvCold->cacheHits, 0u);
+  EXPECT_EQ(spirvWarm->cacheHits, spirvWarm->package.variants.size());
+  EXPECT_EQ(fullWarm->cacheHits, fullWarm->package.variants.size());
+  EXPECT_EQ(entryFiles(dir).size(), 2 * fullCold->package.variants.size());
+  EXPECT_EQ(facet::package::write(spirvWarm->package), facet::package::write(spirvCold->package));
+  EXPECT_EQ(facet::package::write(fullWarm->package), facet::package::write(fullCold->package));
+  for (const auto& v : spirvWarm->package.variants) EXPECT_EQ(v.shaders.size(), 2u) << v.key;
+}
+
 // A change that reaches one tier's text (here a tier override; a chunk only that tier includes
 // behaves alike) compiles that tier's variants again and takes the others from the cache.
 TEST(VariantCache, ChangingOneTiersTextRecompilesOnlyThatTiersVariants) {

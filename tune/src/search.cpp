@@ -300,20 +300,33 @@ std::optional<TuneReport> tune(const ir::Material& material, const TuneOptions& 
   // Cheapest first; a candidate is rendered only while some tier without a choice could take it
   // (its cost within that tier's cap, its variant within the tier's lint budgets): the first that
   // meets a tier's budget is its cheapest.
+  auto wanted = [&](size_t i) {
+    for (const TierOutcome& o : report.tiers)
+      if (!o.chosen && mayTake(o, scored[i])) return true;
+    return false;
+  };
   std::vector<size_t> frontCandidate;  // report.front[k] is candidate frontCandidate[k]
-  for (size_t i : order) {
-    bool wanted = false, anyOpen = false, anyWithinCap = false;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const size_t i = order[k];
+    bool anyOpen = false, anyWithinCap = false;
     for (const TierOutcome& o : report.tiers) {
       if (o.chosen) continue;
       anyOpen = true;
       anyWithinCap = anyWithinCap || withinCap(o.budget, scored[i].cost.total);
-      wanted = wanted || mayTake(o, scored[i]);
     }
     if (!anyOpen) break;
-    if (!wanted) {
+    if (!wanted(i)) {
       report.overLintBudgets += anyWithinCap ? 1 : 0;
       continue;
     }
+    // The next candidate this one's render leaves wanted (unless it closes a tier) is built
+    // meanwhile on the other core: the build and lavapipe's compile of this one overlap.
+    if (threads > 1)
+      for (size_t later = k + 1; later < order.size(); ++later)
+        if (wanted(order[later])) {
+          session->buildAhead(configs[order[later]]);
+          break;
+        }
     Scored s;
     if (!render(i, options.screen, &s)) return std::nullopt;
     ++report.rendered;

@@ -80,6 +80,11 @@ struct BuildOptions {
   // (VulkanOptions::float16Arithmetic): the fp16 arithmetic the emulation models, done by the
   // device. Not with fp16Emulation. docs/fp16-emulation.md, "True half".
   bool fp16TrueHalf = false;
+  // Evaluation only (`matc eval`, `matc tune`): each variant carries its SPIR-V stages alone, the
+  // code the Vulkan renderer runs and the cost model reads. The GLSL ES 3.00 is neither made nor
+  // checked, no MSL is made, and an fp16-emulated stage is optimized once (its un-emulated copy
+  // only fed the MSL). Not for shipping: a package's readers expect all three targets.
+  bool spirvOnly = false;
   // Fill BuildResult::sources: the readable assembled GLSL of both flavours and the SPIR-V
   // disassembly cost time and are only wanted for debugging.
   bool emitSources = false;

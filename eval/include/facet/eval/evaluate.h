@@ -94,7 +94,8 @@ struct ConfigurationResult {
   double furnaceGain = 0;
   bool pareto = false;  // no other configuration has both fewer cycles and a higher PSNR
   // The GLSL ES 3.00 pair of variantKey as shipped, for per-GPU figures (addGpuFigures); empty
-  // for a configuration with the same maths as an earlier one.
+  // for a configuration with the same maths as an earlier one, and from Session::cost() and a
+  // measure() given its cost (both build SPIR-V alone).
   std::vector<gpu_stats::ShaderPair> glslEs;
   // Set when Session::measure() stopped after the first views (MeasureOptions::worthFinishing):
   // `error` is theirs, and this bounds the PSNR all the views together could have reached.
@@ -189,6 +190,11 @@ class Session {
   // Builds, costs, renders and scores one configuration against `reference`.
   bool measure(const Configuration& configuration, ConfigurationResult* result, EvalError* error,
                const MeasureOptions& how = {});
+  // Starts building what measure() with MeasureOptions::costed builds for this configuration, on
+  // one core of its own, so that the build overlaps the renders of the measure() calls before it
+  // (`matc tune` names its next candidate). The result is the same; a build that measure() is not
+  // asked for before the next buildAhead() is dropped.
+  void buildAhead(const Configuration& configuration);
   // The report's fields known at the start, and reference's result.
   const EvalReport& report() const { return report_; }
   std::string timingClock() const;
