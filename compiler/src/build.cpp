@@ -209,7 +209,8 @@ struct CostModel {
   static double glslEs(const VariantBuild& v) {
     return kGlslEsPerByte * double(v.es.vertex.size() + v.es.fragment.size());
   }
-  // fp16 emulation optimizes and validates a second copy of the stage (BuildOptions::spirvOnly: instead).
+  // fp16 emulation optimizes and validates a second copy of the stage, except under
+  // BuildOptions::spirvOnly, where the emulated copy is the only one.
   static double stage(size_t words, bool secondCopy) { return kStagePerWord * double(words) * (secondCopy ? 2 : 1); }
 };
 
