@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace facet::runtime {
 namespace {
@@ -101,13 +102,20 @@ void bounds(const Mesh& mesh, size_t offset, int components, double* low, double
   }
 }
 
+// The float scale of an axis whose values span `extent` (finite, >= 0). A flat axis keeps scale 1
+// (every q is 0): a zero scale is what checkPackedMesh refuses. So does an extent under the
+// smallest normal float, 2^-126: it is zero as a float or a denormal, which GPUs that flush
+// denormals read as zero; on that axis every vertex then decodes to the offset.
+float quantizationScale(double extent) {
+  return extent >= double(std::numeric_limits<float>::min()) ? float(extent) : 1.0f;
+}
+
 void packPositions16(const Mesh& mesh, PackedMesh* out) {
   double low[3], high[3];
   bounds(mesh, 0, 3, low, high);
   for (int c = 0; c < 3; ++c) {
-    // A flat axis keeps scale 1 (every q is 0): a zero scale is what checkPackedMesh refuses.
     const double half = (high[c] - low[c]) / 2;
-    out->decode.positionScale[c] = half > 0 ? float(half) : 1.0f;
+    out->decode.positionScale[c] = quantizationScale(half);
     out->decode.positionOffset[c] = float(low[c] + half);
   }
   std::vector<uint8_t>& bytes = out->streams[kPositionStream];
@@ -136,7 +144,7 @@ bool packUvs(const Mesh& mesh, int set, PackedMesh* out, std::string* error) {
                ", too far apart to pack with a finite scale";
       return false;
     }
-    decode[c] = extent > 0 ? float(extent) : 1.0f;
+    decode[c] = quantizationScale(extent);
     decode[2 + c] = float(low[c]);
   }
   std::vector<uint8_t>& bytes = out->streams[kAttributeStream];

@@ -14,7 +14,9 @@
 
 #include "facet/runtime/gltf_mesh.h"
 #include "facet/runtime/mesh.h"
+#include "facet/runtime/mesh_optimize.h"
 #include "facet/runtime/scene_frame.h"
+#include "facet/runtime/vertex_packing.h"
 #include "facet/scene/scene.h"
 #include "fuzz/gltf_fuzz_input.h"
 #include "gltf_test_files.h"
@@ -541,7 +543,9 @@ TEST(GltfHostile, SpecRulesTinygltfIgnoresAreEnforced) {
 
 // The fuzzer's seeds are valid files that load (so fuzzing starts from inputs reaching the mesh
 // builder), and every input it ever failed on ends in a mesh or an error naming the file, read
-// as fuzz_gltf reads them (tests/fuzz/gltf_fuzz_input.h). Run in the ASan + UBSan build too.
+// as fuzz_gltf reads them (tests/fuzz/gltf_fuzz_input.h). A mesh that loads also packs for
+// upload, as in fuzz_gltf: only UV bounds too far apart for a finite scale may stop it. Run in
+// the ASan + UBSan build too.
 TEST(GltfHostile, FuzzSeedsLoadAndFindingsEndInErrors) {
   const std::string dir = test::scratchDir("gltf-fuzz-inputs");
   size_t seeds = 0, findings = 0;
@@ -559,6 +563,11 @@ TEST(GltfHostile, FuzzSeedsLoadAndFindingsEndInErrors) {
         EXPECT_TRUE(mesh || error.rfind(path + ":", 0) == 0) << error;
         ++findings;
       }
+      if (!mesh) continue;
+      optimizeMesh(&*mesh);
+      PackedMesh packed;
+      EXPECT_TRUE(packMesh(*mesh, VertexPacking::Packed, &packed, &error) || error.find(" spans ") != std::string::npos)
+          << error;
     }
   }
   EXPECT_GE(seeds, 8u);  // quantized.gltf: KHR_mesh_quantization

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -220,6 +221,18 @@ TEST(VertexPacking, PositionsKeepFp32WhereSixteenBitsWouldMoveThemTooFar) {
   ASSERT_TRUE(packMesh(flat, VertexPacking::Packed, &packed, &error)) << error;
   EXPECT_EQ(packed.decode.positionScale[2], 1.0f);
   EXPECT_EQ(decode(packed, 3).position[2], 0.25);
+  // An axis spanning less than the smallest normal float is flat too: half of one denormal step
+  // rounds to a zero float scale, which checkPackedMesh would refuse (found by fuzz_gltf).
+  const size_t uv0 = abi::vertexAttribute(abi::kAttribUv0).offsetFloats;
+  for (size_t v = 0; v < flat.vertices.size(); v += abi::kVertexFloats) {
+    const bool odd = (v / abi::kVertexFloats) % 2 == 1;
+    flat.vertices[v + 2] = odd ? std::numeric_limits<float>::denorm_min() : 0.0f;
+    flat.vertices[v + uv0] = odd ? std::numeric_limits<float>::denorm_min() : 0.0f;
+  }
+  ASSERT_TRUE(packMesh(flat, VertexPacking::Packed, &packed, &error)) << error;
+  EXPECT_EQ(packed.decode.positionScale[2], 1.0f);
+  EXPECT_EQ(packed.decode.uvScaleOffset[0][0], 1.0f);
+  EXPECT_EQ(decode(packed, 3).position[2], 0.0);
 }
 
 TEST(VertexPacking, WhatMustNotReachTheGpuIsRefusedWithAMessage) {
