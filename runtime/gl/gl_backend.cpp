@@ -15,6 +15,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/gl_backend.h"
 #include "facet/runtime/render_backend.h"
 #include "gl_app_target.h"
@@ -129,6 +130,8 @@ class GlBackend final : public GlRenderer {
                           materialBlocks_.uploadCount()};
     counts.compressedTextureUploads = textures_.compressedUploads();
     counts.decodedTextureUploads = textures_.decodedUploads();
+    counts.programs = programs_.size();
+    counts.programBuilds = programBuilds_;
     return counts;
   }
 
@@ -138,6 +141,7 @@ class GlBackend final : public GlRenderer {
     std::string fragmentSource;
     gl::LinkedProgram linked;
     gl::SamplerUnits samplerUnits;  // sampler uniforms already pointed at their units
+    uint64_t lastUsedFrame = 0;     // deleted after kEvictAfterFrames frames unused (frame_eviction.h)
   };
 
   GlBackend() = default;
@@ -217,7 +221,11 @@ class GlBackend final : public GlRenderer {
   // timer queries (GL 3.3 core has them; GLES needs GL_EXT_disjoint_timer_query).
   bool timed_ = false;
   gl::Query forwardTimer_, postTimer_;
+  // Keyed by the app's ShaderProgram, which may be freed without the backend knowing: a program
+  // no draw asked for in kEvictAfterFrames frames is deleted, as meshes and blocks are.
   std::unordered_map<const ShaderProgram*, CachedProgram> programs_;
+  uint64_t programFrame_ = 0;  // frames begun (beginFrame)
+  uint64_t programBuilds_ = 0;
 };
 
 std::unique_ptr<GlBackend> GlBackend::create(std::unique_ptr<GlContext> host, const GlOptions& options,
@@ -365,6 +373,7 @@ bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
     return false;
   // Every draw's program linked (and a package's checked against its interface) before anything
   // is drawn: a refused program fails the frame, not half of it.
+  ++programFrame_;
   const FrameDraws draws(frame);
   for (size_t i = 0; i < draws.size(); ++i) {
     if (draws[i].program && !programFor(*draws[i].program, error)) {
@@ -372,6 +381,7 @@ bool GlBackend::beginFrame(const FrameDesc& frame, std::string* error) {
       return false;
     }
   }
+  evictUnusedEntries(programs_, programFrame_, [](auto&) {});  // GL objects delete themselves
   return true;
 }
 
@@ -790,6 +800,7 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   auto found = programs_.find(&program);
   if (found != programs_.end() && found->second.vertexSource == program.vertexGlslEs &&
       found->second.fragmentSource == program.fragmentGlslEs) {
+    found->second.lastUsedFrame = programFrame_;
     return &found->second;
   }
   std::optional<gl::LinkedProgram> linked = gl::buildProgram(program.vertexGlslEs, program.fragmentGlslEs, error);
@@ -814,6 +825,8 @@ GlBackend::CachedProgram* GlBackend::programFor(const ShaderProgram& program, st
   cached.fragmentSource = program.fragmentGlslEs;
   cached.linked = std::move(*linked);
   cached.samplerUnits.clear();  // a new program: every sampler uniform starts at unit 0
+  cached.lastUsedFrame = programFrame_;
+  ++programBuilds_;
   // The ABI's frame samplers get their units once, at link, whether or not a frame binds them: a
   // sampler left at unit 0 would share it with facet_dfgLut, and a samplerCube (the environment)
   // beside a sampler2D on one unit makes a draw invalid (GL_INVALID_OPERATION).

@@ -102,6 +102,7 @@ struct CachedPipeline {
   std::vector<uint32_t> vertexSpirv;
   std::vector<uint32_t> fragmentSpirv;
   VkPipeline pipeline = VK_NULL_HANDLE;
+  uint64_t lastUsedFrame = 0;  // released after kEvictAfterFrames frames unused (frame_eviction.h)
 };
 
 class VulkanBackend final : public VulkanRenderer {
@@ -134,6 +135,8 @@ class VulkanBackend final : public VulkanRenderer {
                           materialBlocks_.uploadCount(), ctx_.memoryAllocations, uploads_.stagedBytes()};
     counts.compressedTextureUploads = textures_.compressedUploads();
     counts.decodedTextureUploads = textures_.decodedUploads();
+    counts.programs = pipelines_.size();
+    counts.programBuilds = pipelineBuilds_;
     return counts;
   }
 
@@ -272,8 +275,10 @@ class VulkanBackend final : public VulkanRenderer {
   bool recordedSinceIdle_ = false;
   // Keyed by program, the fixed-function state a draw asks for (blending, culling, masked, at the far plane), its
   // mesh's vertex layout (packed with 16-bit or fp32 positions, or full precision) and the pass
-  // (forward, or the shadow pass's depth only).
+  // (forward, or the shadow pass's depth only). A program may be freed without the backend knowing:
+  // a pipeline no draw asked for in kEvictAfterFrames frames is destroyed, as meshes and blocks are released.
   std::map<std::tuple<const ShaderProgram*, Blending, bool, bool, VertexLayout, bool, bool>, CachedPipeline> pipelines_;
+  uint64_t pipelineBuilds_ = 0;
 
   // Set when a submission failed or did not finish: the command buffer and fence may still be
   // in use, so no further frame is attempted. Holds the original error.
@@ -894,6 +899,7 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   if (found != pipelines_.end()) {
     CachedPipeline& cached = found->second;
     if (cached.vertexSpirv == program.vertexSpirv && cached.fragmentSpirv == program.fragmentSpirv) {
+      cached.lastUsedFrame = frameNumber_;
       *out = cached.pipeline;
       return true;
     }
@@ -924,7 +930,8 @@ bool VulkanBackend::pipelineFor(const ShaderProgram& program, const DrawItem& dr
   }
   VkPipeline pipeline = VK_NULL_HANDLE;
   if (!createGraphicsPipeline(ctx_.device, desc, &pipeline, error)) return false;
-  pipelines_[key] = CachedPipeline{program.vertexSpirv, program.fragmentSpirv, pipeline};
+  pipelines_[key] = CachedPipeline{program.vertexSpirv, program.fragmentSpirv, pipeline, frameNumber_};
+  ++pipelineBuilds_;
   *out = pipeline;
   return true;
 }
@@ -954,6 +961,11 @@ bool VulkanBackend::uploadFrame(const FrameDesc& frame, std::vector<DrawSlot>* s
       return false;
     }
   }
+  // Frames in flight may still draw with an evicted pipeline: destroyed once they have finished.
+  VkDevice device = ctx_.device;
+  evictUnusedEntries(pipelines_, frameNumber_, [&](const CachedPipeline& cached) {
+    retire_.retire([device, pipeline = cached.pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
+  });
   if (!materialBlocks_.prepare(frame, error) || !ensureArena(size, error)) return false;
   for (size_t i = 0; i < draws.size(); ++i) {
     DrawSlot& slot = (*slots)[i];

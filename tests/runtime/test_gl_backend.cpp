@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <EGL/egl.h>
 
+#include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/gl_backend.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/render_backend.h"
@@ -265,6 +267,42 @@ TEST(GlBackend, MaterialParamsReachFragmentShader) {
   std::string error;
   ASSERT_TRUE(backend->render(frame, &result, &error)) << error;
   EXPECT_RGBA(hdrAt(result, 4, 4), 0.25f, 0.75f, 0.75f, 1.0f);
+}
+
+// A linked program is kept while draws ask for it and deleted after kEvictAfterFrames frames
+// without one: a new ShaderProgram for each frame holds a bounded number of programs, one drawn
+// every frame is linked once, and a program drawn again after it went is linked again and draws
+// as before.
+TEST(GlBackend, ProgramsNoLongerDrawnAreReleased) {
+  auto backend = makeBackend();
+  ASSERT_NE(backend, nullptr);
+  const Mesh left = quad(-1, -1, -0.5f, 1, 0);
+  const Mesh right = quad(0.5f, -1, 1, 1, 0);
+  const ShaderProgram steady = program(kMaterialFragmentShader);
+  // Kept alive, so each frame's program has an address of its own.
+  std::vector<std::unique_ptr<ShaderProgram>> programs;
+  const auto frameWith = [&](const ShaderProgram& changing) {
+    FrameDesc frame = makeFrame(16, 16);
+    frame.draws.push_back(makeDraw(left, steady));
+    frame.draws.back().materialParams = materialBytes({1, 0, 0, 1}, {0, 0, 0, 0});
+    frame.draws.push_back(makeDraw(right, changing));
+    frame.draws.back().materialParams = materialBytes({0, 0, 1, 1}, {0, 0, 0, 0});
+    return frame;
+  };
+  constexpr uint64_t kFrames = 3 * kEvictAfterFrames;
+  FrameResult result;
+  std::string error;
+  for (uint64_t i = 0; i < kFrames; ++i) {
+    programs.push_back(std::make_unique<ShaderProgram>(program(kMaterialFragmentShader)));
+    ASSERT_TRUE(backend->render(frameWith(*programs.back()), &result, &error)) << error;
+    EXPECT_LE(backend->resources().programs, kEvictAfterFrames + 1) << "frame " << i;
+  }
+  EXPECT_EQ(backend->resources().programBuilds, kFrames + 1);  // the left strip's once
+  ASSERT_TRUE(backend->render(frameWith(*programs.front()), &result, &error)) << error;
+  EXPECT_EQ(backend->resources().programBuilds, kFrames + 2);
+  EXPECT_RGBA(hdrAt(result, 8, 0), 1.0f, 0.0f, 0.0f, 1.0f);
+  EXPECT_RGBA(hdrAt(result, 8, 15), 0.0f, 0.0f, 1.0f, 1.0f);
+  EXPECT_TRUE(noValidationErrors(*backend));
 }
 
 // 2,000 objects sharing one mesh: one set of mesh buffers, uploaded once across frames, every

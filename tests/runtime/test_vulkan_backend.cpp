@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "facet/abi/shader_abi.h"
+#include "facet/runtime/frame_eviction.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/render_backend.h"
 #include "facet/runtime/vulkan_backend.h"
@@ -313,6 +314,39 @@ TEST(VulkanBackend, TwoThousandDrawsShareOneMeshBuffer) {
   renderOrFail(*backend, frame);
   EXPECT_EQ(backend->resources().meshBuffers, 1u);
   EXPECT_EQ(backend->resources().meshUploads, 2u);
+  EXPECT_TRUE(backend->validationErrors().empty())
+      << (backend->validationErrors().empty() ? "" : backend->validationErrors().front());
+}
+
+// A pipeline is kept while draws ask for it and destroyed after kEvictAfterFrames frames without
+// one, through the retire queue: an app (or matc tune) that makes a new ShaderProgram for each
+// frame holds a bounded number of pipelines, one drawn every frame is built once, and a program
+// drawn again after its pipeline went is built again and draws as before.
+TEST(VulkanBackend, PipelinesOfProgramsNoLongerDrawnAreReleased) {
+  auto backend = makeBackend(/*validation=*/true);
+  ASSERT_NE(backend, nullptr);
+  const Mesh left = triangle({{-1, -1, 0}, {-1, 3, 0}, {-0.5f, -1, 0}});
+  const Mesh right = triangle({{0.5f, -1, 0}, {0.5f, 3, 0}, {1, -1, 0}});
+  // Kept alive, so each frame's program has an address of its own.
+  std::vector<std::unique_ptr<ShaderProgram>> programs;
+  const auto frameWith = [&](const ShaderProgram& program) {
+    FrameDesc frame = emptyFrame(16, 16, kBlack);
+    frame.draws.push_back(solidDraw(left, kRed));
+    frame.draws.push_back(solidDraw(right, kBlue));
+    frame.draws.back().program = &program;
+    return frame;
+  };
+  constexpr uint64_t kFrames = 3 * kEvictAfterFrames;
+  for (uint64_t i = 0; i < kFrames; ++i) {
+    programs.push_back(std::make_unique<ShaderProgram>(solidProgram()));
+    renderOrFail(*backend, frameWith(*programs.back()));
+    EXPECT_LE(backend->resources().programs, kEvictAfterFrames + 1) << "frame " << i;
+  }
+  EXPECT_EQ(backend->resources().programBuilds, kFrames + 1);  // the left strip's once
+  const FrameResult again = renderOrFail(*backend, frameWith(*programs.front()));
+  EXPECT_EQ(backend->resources().programBuilds, kFrames + 2);
+  expectHdr(again, 15, 0, kRed);
+  expectHdr(again, 15, 13, kBlue);
   EXPECT_TRUE(backend->validationErrors().empty())
       << (backend->validationErrors().empty() ? "" : backend->validationErrors().front());
 }

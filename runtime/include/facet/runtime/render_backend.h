@@ -321,6 +321,11 @@ struct ResourceCounts {
   // device samples them, or decoded on the CPU first, because it does not.
   uint64_t compressedTextureUploads = 0;
   uint64_t decodedTextureUploads = 0;
+  // Programs kept for the draws' ShaderPrograms: Vulkan pipelines (one per program, fixed-function
+  // state, vertex layout and pass) or GL linked programs (one per program), each released after
+  // kEvictAfterFrames frames without a draw (frame_eviction.h); and how many were built since creation.
+  size_t programs = 0;
+  uint64_t programBuilds = 0;
 };
 
 class RenderBackend {
