@@ -2,13 +2,18 @@
 // into glTF files: the bytes before the first "--bin--" are the glTF file, m.glb when they start
 // with the GLB magic "glTF" and m.gltf otherwise; the bytes after it, when it is there, are b.bin
 // beside it (the external buffer the seeds name). So one input drives the JSON, the container
-// and an external buffer together.
+// and an external buffer together. And what both then ask of a mesh that loads
+// (packsAfterLoading).
 #pragma once
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
+
+#include "facet/runtime/mesh.h"
+#include "facet/runtime/mesh_optimize.h"
+#include "facet/runtime/vertex_packing.h"
 
 namespace facet::fuzz {
 
@@ -27,6 +32,16 @@ inline std::string writeGltfFuzzInput(std::string_view input, const std::string&
     std::ofstream(dir + "/b.bin", std::ios::binary).write(bin.data(), std::streamsize(bin.size()));
   }
   return path;
+}
+
+// What a scene does with a loaded mesh next: reorders it for the vertex cache and packs it for
+// upload. A loaded mesh holds only finite values, so packing may fail only on UV bounds too far
+// apart for a finite scale; false, with *error, on any other failure.
+inline bool packsAfterLoading(runtime::Mesh& mesh, std::string* error) {
+  runtime::optimizeMesh(&mesh);
+  runtime::PackedMesh packed;
+  return runtime::packMesh(mesh, runtime::VertexPacking::Packed, &packed, error) ||
+         error->find(" spans ") != std::string::npos;
 }
 
 }  // namespace facet::fuzz
